@@ -1,0 +1,156 @@
+package gcnc.diag;
+
+/**
+ * Every diagnostic gcnc can report, with a stable number that is never reused.
+ * 1-54 are the thesis's Table 5; gcnc's own codes start at 100:
+ * 100-199 checker (G-code semantics), 200-299 Galil backend, 300-399 simulator,
+ * 400-499 tables and machine profiles, 500-599 command line and files.
+ * Message texts live in tables/errors.csv; {@code CodeTableTest} keeps the two in step.
+ */
+public enum Code {
+    /** Table 5, error 1. */
+    E001_G_NUMBER_EXPECTED(1),
+    /** Table 5, error 2. */
+    E002_M_NUMBER_EXPECTED(2),
+    /** Table 5, error 3. */
+    E003_ILLEGAL_CHARACTER(3),
+    /** Table 5, error 4. */
+    E004_UNDEFINED_FUNCTION(4),
+    /** Table 5, error 5. */
+    E005_COMMENT_NOT_CLOSED(5),
+    /** Table 5, error 6. */
+    E006_NUMBER_EXPECTED(6),
+    /** Table 5, error 7. */
+    E007_DUPLICATE_PARAMETER(7),
+    /** Table 5, error 8. */
+    E008_PARAMETER_TOO_SMALL(8),
+    /** Table 5, error 9. */
+    E009_PARAMETER_TOO_LARGE(9),
+    /** Table 5, error 10. */
+    E010_SYNTAX(10),
+    /** Table 5, error 11. */
+    E011_UNDEFINED_G(11),
+    /** Table 5, error 12. */
+    E012_UNDEFINED_M(12),
+    /** Table 5, error 13. */
+    E013_INTEGER_EXPECTED(13),
+    /** Table 5, error 14. */
+    E014_DECIMAL_EXPECTED(14),
+    /** Table 5, error 15. */
+    E015_OUT_OF_RANGE(15),
+    /** Table 5, error 16. */
+    E016_GROUP_CONFLICT(16),
+    /** Table 5, error 17. */
+    E017_G04_WITH_OTHER(17),
+    /** Table 5, error 18. */
+    E018_G28_WITH_OTHER(18),
+    /** Table 5, error 19. */
+    E019_G29_WITH_OTHER(19),
+    /** Table 5, error 20. */
+    E020_G50_G92_WITH_OTHER(20),
+    /** Table 5, error 21. */
+    E021_X_NOT_ALLOWED(21),
+    /** Table 5, error 22. */
+    E022_Z_NOT_ALLOWED(22),
+    /** Table 5, error 23. */
+    E023_U_NOT_ALLOWED(23),
+    /** Table 5, error 24. */
+    E024_W_NOT_ALLOWED(24),
+    /** Table 5, error 25. */
+    E025_R_NOT_ALLOWED(25),
+    /** Table 5, error 26. */
+    E026_I_NOT_ALLOWED(26),
+    /** Table 5, error 27. */
+    E027_K_NOT_ALLOWED(27),
+    /** Table 5, error 28. */
+    E028_X_AND_U(28),
+    /** Table 5, error 29. */
+    E029_Z_AND_W(29),
+    /** Table 5, error 30. */
+    E030_PARAMETER_EXPECTED(30),
+    /** Table 5, error 31. */
+    E031_S_EXPECTED(31),
+    /** Table 5, error 32. */
+    E032_UNASSOCIATED_PARAMETER(32),
+    /** Table 5, error 33. */
+    E033_PROGRAM_NAME_TWICE(33),
+    /** Table 5, error 34. */
+    E034_PROGRAM_NAME_LATE(34),
+    /** Table 5, error 35. */
+    E035_TWO_G_WITH_PARAMETERS(35),
+    /** Table 5, error 36. */
+    E036_P_NOT_ALLOWED(36),
+    /** Table 5, error 37. */
+    E037_SPINDLE_DIRECTION_BEFORE_CUT(37),
+    /** Table 5, error 38. */
+    E038_CHUCK_OPEN_CUT(38),
+    /** Table 5, error 39. */
+    E039_FEED_NOT_SET(39),
+    /** Table 5, error 40. */
+    E040_SPINDLE_RUNNING_CHUCK_OPEN(40),
+    /** Table 5, error 41. */
+    E041_G50_NOT_SET_BEFORE_CUT(41),
+    /** Table 5, error 42. */
+    E042_G29_WITHOUT_G28(42),
+    /** Table 5, error 43. */
+    E043_LINE_NUMBER_ORDER(43),
+    /** Table 5, error 44. */
+    E044_NO_MOTION_G(44),
+    /** Table 5, error 45. */
+    E045_OUT_OF_MEMORY(45),
+    /** Table 5, error 46. */
+    E046_UNDEFINED_TOOL(46),
+    /** Table 5, error 47. */
+    E047_TOOL_OFFSET_RANGE(47),
+    /** Table 5, error 48. */
+    E048_S_ABOVE_G50(48),
+    /** Table 5, error 49. */
+    E049_NO_ARC_RADIUS(49),
+    /** Table 5, error 50. */
+    E050_S_BEFORE_G50(50),
+    /** Table 5, error 51. */
+    E051_SPINDLE_DIRECTION(51),
+    /** Table 5, error 52. */
+    E052_NO_M30(52),
+    /** Table 5, error 53. */
+    E053_M30_NOT_LAST(53),
+    /** Table 5, error 54. */
+    E054_NESTED_COMMENT(54),
+
+    // ---- gcnc's own codes ----
+    // 100-199: checker (parse and check packages). Add new codes in number order below this line.
+
+    // 200-299: Galil backend (galil package).
+
+    // 300-399: simulator (sim package).
+
+    // 400-499: tables and machine profiles.
+    /** A table file or machine profile is malformed; the message says what and where. */
+    E400_TABLE(400),
+    /** An input file could not be read or an output file written. */
+    E500_IO(500);
+
+    private final int number;
+
+    Code(int number) {
+        this.number = number;
+    }
+
+    public int number() {
+        return number;
+    }
+
+    /** The form users see and search for: {@code E037}. */
+    public String id() {
+        return String.format("E%03d", number);
+    }
+
+    public static Code byNumber(int n) {
+        for (Code c : values()) {
+            if (c.number == n) {
+                return c;
+            }
+        }
+        throw new IllegalArgumentException("no diagnostic code " + n);
+    }
+}

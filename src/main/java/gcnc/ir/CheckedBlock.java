@@ -1,0 +1,28 @@
+package gcnc.ir;
+
+import java.util.List;
+import java.util.OptionalDouble;
+import java.util.OptionalInt;
+
+/**
+ * A block that passed every check, in the order its effects reach the machine (thesis §4.5,
+ * decision D2): spindle speed, tool change, the M functions applied at the start, the motions,
+ * then the M functions applied at the end.
+ *
+ * @param line        source line, for source maps and findings
+ * @param spindleRpm  the spindle speed to set before the block's motion, if it changes here
+ *                    (S word, or G96 constant surface speed at this block's diameter; G50-clamped)
+ * @param tool        tool number of a T word in this block
+ * @param before      M functions of moments 0 and 1, in source order
+ * @param motions     motions in order (empty for a block without motion)
+ * @param after       M functions of moment 99, in source order
+ * @param end         position after the block, machine counts
+ */
+public record CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
+                           List<Motion> motions, List<MCall> after, Point end) {
+    public CheckedBlock {
+        before = List.copyOf(before);
+        motions = List.copyOf(motions);
+        after = List.copyOf(after);
+    }
+}

@@ -1,0 +1,61 @@
+package gcnc.machine;
+
+import gcnc.ir.Point;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * A lathe and its Galil controller, read from {@code tables/machines/<name>.machine}.
+ * All positions and offsets are machine counts (the loader converts the file's millimetres).
+ * Parts of gcnc with settings of their own (the simulator's chuck and stock) read them from
+ * {@link #file()}.
+ *
+ * @param name            profile name
+ * @param galilModel      controller model, e.g. DMC-4020
+ * @param x               lathe X (radial) axis
+ * @param z               lathe Z axis
+ * @param diameterX       X and U are programmed as diameters (I is always a radius)
+ * @param noPointMm       value of a whole number written without decimal point in G21, in mm
+ *                        (1 = read literally as the thesis does; 0.001 = Fanuc least increment)
+ * @param noPointInch     the same in G20, in inches
+ * @param home            where the machine starts, and the G28 reference point, machine counts
+ * @param rapidSpeed      G00 vector speed, counts/s
+ * @param maxFeed         fastest cutting feed, counts/s
+ * @param acceleration    vector acceleration, counts/s^2
+ * @param deceleration    vector deceleration, counts/s^2
+ * @param maxRpm          spindle speed the machine can reach
+ * @param rpmPerVolt      spindle drive gain for OF
+ * @param spindleAxis     Galil channel whose OF drives the spindle (thesis: the third, C)
+ * @param rearToolPost    the tool post is behind the spindle centre (G02/G03 sense flips)
+ * @param workOffsets     G54..G59 (keys 54..59), machine counts of the work zero
+ * @param toolOffsets     offset number (1..) to tool offset, counts
+ * @param tools           how many tools the turret holds (T numbers 1..tools)
+ * @param outputs         M code to the Galil output directives it becomes (e.g. 3 -> [CB4, SB3])
+ * @param thesisFeedFactor the thesis dialect's VS = F x factor (20 on the thesis machine)
+ * @param file            the profile text, for keys read elsewhere
+ */
+public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
+                             double noPointMm, double noPointInch, Point home, double rapidSpeed,
+                             double maxFeed, double acceleration, double deceleration, double maxRpm,
+                             double rpmPerVolt, char spindleAxis, boolean rearToolPost,
+                             Map<Integer, Point> workOffsets, Map<Integer, Point> toolOffsets, int tools,
+                             Map<Integer, List<String>> outputs, double thesisFeedFactor, ProfileFile file) {
+    public MachineProfile {
+        workOffsets = Map.copyOf(workOffsets);
+        toolOffsets = Map.copyOf(toolOffsets);
+        outputs = Map.copyOf(outputs);
+    }
+
+    public Optional<Point> workOffset(int g) {
+        return Optional.ofNullable(workOffsets.get(g));
+    }
+
+    public Optional<Point> toolOffset(int n) {
+        return Optional.ofNullable(toolOffsets.get(n));
+    }
+
+    public List<String> outputsFor(int m) {
+        return outputs.getOrDefault(m, List.of());
+    }
+}

@@ -1,0 +1,174 @@
+package gcnc.machine;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Span;
+import gcnc.tables.TableException;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * The text of a machine profile: {@code key = value} lines, {@code #} comments (whole-line or
+ * trailing), keys in any order, each at most once. Every value remembers its line and column so
+ * that a bad value is reported where the user typed it. Typed readers are below; each part of
+ * gcnc (checker, backend, simulator) reads the keys it owns.
+ */
+public final class ProfileFile {
+    /** A value as written, with its place. */
+    public record Entry(String key, String value, int line, int column) {
+    }
+
+    private final String path;
+    private final Map<String, Entry> entries;
+
+    private ProfileFile(String path, Map<String, Entry> entries) {
+        this.path = path;
+        this.entries = Collections.unmodifiableMap(entries);
+    }
+
+    public static ProfileFile parse(String path, String text) throws TableException {
+        Map<String, Entry> map = new LinkedHashMap<>();
+        String[] lines = text.split("\r?\n", -1);
+        for (int n = 0; n < lines.length; n++) {
+            String raw = lines[n];
+            int hash = raw.indexOf('#');
+            String l = hash >= 0 ? raw.substring(0, hash) : raw;
+            if (l.isBlank()) {
+                continue;
+            }
+            int eq = l.indexOf('=');
+            int indent = l.length() - l.stripLeading().length();
+            if (eq < 0) {
+                throw fault(path, n + 1, indent + 1, "expected 'key = value'");
+            }
+            String key = l.substring(0, eq).trim();
+            String value = l.substring(eq + 1).trim();
+            int valueCol = eq + 2 + (l.substring(eq + 1).length() - l.substring(eq + 1).stripLeading().length());
+            if (key.isEmpty()) {
+                throw fault(path, n + 1, indent + 1, "missing key before '='");
+            }
+            if (map.containsKey(key)) {
+                throw fault(path, n + 1, indent + 1, "'" + key + "' given twice (first on line " + map.get(key).line() + ")");
+            }
+            map.put(key, new Entry(key, value, n + 1, valueCol));
+        }
+        return new ProfileFile(path, map);
+    }
+
+    public String path() {
+        return path;
+    }
+
+    public Optional<Entry> entry(String key) {
+        return Optional.ofNullable(entries.get(key));
+    }
+
+    /** All keys that start with a prefix, in file order (e.g. "tool." for the tool table). */
+    public List<Entry> withPrefix(String prefix) {
+        List<Entry> out = new ArrayList<>();
+        for (Entry e : entries.values()) {
+            if (e.key().startsWith(prefix)) {
+                out.add(e);
+            }
+        }
+        return out;
+    }
+
+    public List<String> keys() {
+        return List.copyOf(entries.keySet());
+    }
+
+    public Entry required(String key) throws TableException {
+        Entry e = entries.get(key);
+        if (e == null) {
+            throw fault(path, 1, 1, "missing required key '" + key + "'");
+        }
+        return e;
+    }
+
+    public String text(String key) throws TableException {
+        return required(key).value();
+    }
+
+    public String text(String key, String otherwise) {
+        Entry e = entries.get(key);
+        return e == null ? otherwise : e.value();
+    }
+
+    public double number(String key) throws TableException {
+        return number(required(key));
+    }
+
+    public double number(String key, double otherwise) throws TableException {
+        Entry e = entries.get(key);
+        return e == null ? otherwise : number(e);
+    }
+
+    public double positive(String key) throws TableException {
+        Entry e = required(key);
+        double v = number(e);
+        if (!(v > 0)) {
+            throw fault(e, "'" + key + "' must be greater than 0");
+        }
+        return v;
+    }
+
+    public double number(Entry e) throws TableException {
+        try {
+            double v = Double.parseDouble(e.value());
+            if (!Double.isFinite(v)) {
+                throw new NumberFormatException();
+            }
+            return v;
+        } catch (NumberFormatException x) {
+            throw fault(e, "'" + e.value() + "' is not a number (" + e.key() + ")");
+        }
+    }
+
+    /** A value written as {@code a, b} (two numbers). */
+    public double[] pair(Entry e) throws TableException {
+        String[] parts = e.value().split(",", -1);
+        if (parts.length != 2) {
+            throw fault(e, "'" + e.key() + "' needs two numbers 'a, b'");
+        }
+        double[] out = new double[2];
+        for (int i = 0; i < 2; i++) {
+            try {
+                out[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException x) {
+                throw fault(e, "'" + parts[i].trim() + "' is not a number (" + e.key() + ")");
+            }
+        }
+        return out;
+    }
+
+    public double[] pair(String key) throws TableException {
+        return pair(required(key));
+    }
+
+    /** One of a closed set of words; the fault lists the choices. */
+    public String choice(String key, String otherwise, String... choices) throws TableException {
+        Entry e = entries.get(key);
+        if (e == null) {
+            return otherwise;
+        }
+        for (String c : choices) {
+            if (c.equalsIgnoreCase(e.value())) {
+                return c;
+            }
+        }
+        throw fault(e, "'" + key + "' must be one of " + String.join(", ", choices) + ", not '" + e.value() + "'");
+    }
+
+    public TableException fault(Entry e, String message) {
+        return fault(path, e.line(), e.column(), message);
+    }
+
+    public static TableException fault(String path, int line, int column, String message) {
+        return new TableException(path, Diagnostic.error(Code.E400_TABLE, Span.of(line, column), message));
+    }
+}

@@ -1,0 +1,4 @@
+package gcnc.machine;
+
+/** Input units: G21 millimetres, G20 inches. */
+public enum Units { MM, INCH }

@@ -1,0 +1,62 @@
+package gcnc.tables;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+
+/**
+ * Where table files come from: the copy inside the jar, or a directory the user points at
+ * with {@code --tables DIR} (an edited copy, no rebuild needed).
+ */
+public interface TableSource {
+    /** The text of the named file, e.g. {@code g_codes.csv} or {@code machines/generic.machine}. */
+    String read(String name) throws TableException;
+
+    /** A name to print in diagnostics for the named file. */
+    String describe(String name);
+
+    static TableSource builtIn() {
+        return new TableSource() {
+            @Override
+            public String read(String name) throws TableException {
+                try (InputStream in = TableSource.class.getResourceAsStream("/tables/" + name)) {
+                    if (in == null) {
+                        throw Csv.fault(describe(name), 1, 1, "no such table in gcnc.jar");
+                    }
+                    return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+                } catch (IOException e) {
+                    throw Csv.fault(describe(name), 1, 1, e.getMessage());
+                }
+            }
+
+            @Override
+            public String describe(String name) {
+                return "gcnc.jar!/tables/" + name;
+            }
+        };
+    }
+
+    static TableSource directory(Path dir) {
+        return new TableSource() {
+            @Override
+            public String read(String name) throws TableException {
+                Path p = dir.resolve(name);
+                try {
+                    return Files.readString(p, StandardCharsets.UTF_8);
+                } catch (NoSuchFileException e) {
+                    throw Csv.fault(describe(name), 1, 1, "file not found");
+                } catch (IOException e) {
+                    throw Csv.fault(describe(name), 1, 1, e.getMessage());
+                }
+            }
+
+            @Override
+            public String describe(String name) {
+                return dir.resolve(name).toString();
+            }
+        };
+    }
+}
