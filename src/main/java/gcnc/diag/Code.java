@@ -123,6 +123,36 @@ public enum Code {
     // 200-299: Galil backend (galil package).
 
     // 300-399: simulator (sim package).
+    /** A DMC line the simulator does not know. */
+    E300_SIM_UNKNOWN_INSTRUCTION(300),
+    /** A DMC instruction with missing or malformed arguments. */
+    E301_SIM_BAD_ARGUMENTS(301),
+    /** The path leaves an axis's travel somewhere along a segment. */
+    E302_SIM_TRAVEL(302),
+    /** The tool tip or holder enters the chuck. */
+    E303_SIM_CHUCK_COLLISION(303),
+    /** The tool tip or holder enters the tailstock. */
+    E304_SIM_TAILSTOCK_COLLISION(304),
+    /** A rapid move goes through material that has not been cut. */
+    E305_SIM_RAPID_INTO_STOCK(305),
+    /** A cutting move while the outputs say the spindle is stopped. */
+    E306_SIM_FEED_SPINDLE_STOPPED(306),
+    /** A cutting move while the outputs say the chuck is open. */
+    E307_SIM_FEED_CHUCK_OPEN(307),
+    /** A replayed sequence does not end where, or run the way, the G-code block says. */
+    E308_SIM_PATH_MISMATCH(308),
+    /** A CR arc with zero sweep: the machine does not move but the program expects an arc. */
+    E309_SIM_ZERO_SWEEP_ARC(309),
+    /** A position or argument outside the controller's 32-bit range. */
+    E310_SIM_COUNT_RANGE(310),
+    /** The DMC of a block makes a different number of moves than the block has. */
+    E311_SIM_SEQUENCE_COUNT(311),
+    /** A directive after EN is never executed. */
+    E312_SIM_AFTER_END(312),
+    /** VM or SH names axes other than the profile's vector plane. */
+    E313_SIM_VECTOR_PLANE(313),
+    /** Vector segments that no BGS starts. */
+    E314_SIM_SEQUENCE_NOT_STARTED(314),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -1,0 +1,309 @@
+package gcnc.sim;
+
+import gcnc.diag.Code;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Replays the DMC that gcnc emits (docs/dmc-format.md, both dialects), one line at a time, and
+ * hands what the machine does to a {@link Listener}: vector sequences when BGS starts them,
+ * dwells, tool changes, output changes. An instruction it does not know, or bad arguments, is
+ * reported (E300/E301), never skipped silently. Positions are Galil coordinates in the vector
+ * plane; {@link Plane} turns them into machine counts.
+ */
+final class DmcInterpreter {
+    /** What the replayed program makes the machine do. */
+    interface Listener {
+        void sequence(List<Segment> segments, double speed, int line, String text);
+
+        void dwell(double seconds, int line);
+
+        void tool(int n, int line);
+
+        void output(int bit, boolean on, int line);
+
+        void spindleVolts(double volts, int line);
+
+        void report(Code code, int line, Object... args);
+    }
+
+    private static final double INT32 = 2147483647;
+
+    private final Plane plane;
+    private final Listener out;
+    private double g1;
+    private double g2;
+    private double seqStart1;
+    private double seqStart2;
+    private double cursor1;
+    private double cursor2;
+    private final List<Segment> pending = new ArrayList<>();
+    private double speed;
+    double acceleration;
+    double deceleration;
+    private boolean ended;
+    private final int spindleChannel;
+
+    DmcInterpreter(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
+                   Listener out) {
+        this.plane = plane;
+        this.out = out;
+        this.acceleration = acc;
+        this.deceleration = dec;
+        this.speed = speed;
+        this.spindleChannel = Plane.channel(spindleAxis);
+        moveTo(x, z);
+    }
+
+    /** Puts the machine at a position (machine counts): the start, or a resync after a mismatch. */
+    void moveTo(double x, double z) {
+        g1 = Math.rint(plane.galil1(x, z));
+        g2 = Math.rint(plane.galil2(x, z));
+    }
+
+    double x() {
+        return plane.machineX(g1, g2);
+    }
+
+    double z() {
+        return plane.machineZ(g1, g2);
+    }
+
+    boolean hasPending() {
+        return !pending.isEmpty();
+    }
+
+    void dropPending() {
+        pending.clear();
+    }
+
+    void line(String raw, int line) {
+        String t = raw.strip();
+        if (t.isEmpty() || t.startsWith("'") || t.equals("NO") || t.startsWith("NO ")) {
+            return;
+        }
+        if (t.startsWith("#")) {
+            if (!t.matches("#[A-Za-z][A-Za-z0-9_]{0,7}")) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "#", t);
+            }
+            return;
+        }
+        if (ended) {
+            out.report(Code.E312_SIM_AFTER_END, line, t);
+            return;
+        }
+        if (t.startsWith("TOOL=")) {
+            out.tool(integer(t.substring(5), "TOOL", t, line, 0, 9999), line);
+            return;
+        }
+        if (t.regionMatches(true, 0, "Revolver ", 0, 9)) {
+            out.tool(integer(t.substring(9).strip(), "Revolver", t, line, 0, 9999), line);
+            return;
+        }
+        if (t.length() >= 2 && t.charAt(0) == 'M' && Character.isDigit(t.charAt(1))) {
+            integer(t.substring(1), "M", t, line, 0, 999); // thesis pass-through: no output, no effect
+            return;
+        }
+        if (t.length() < 2) {
+            out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, line, t);
+            return;
+        }
+        command(t.substring(0, 2), t.substring(2).strip(), t, line);
+    }
+
+    private void command(String cmd, String args, String text, int line) {
+        switch (cmd) {
+            case "SH", "VM" -> {
+                if (!plane.sameChannels(args)) {
+                    out.report(Code.E313_SIM_VECTOR_PLANE, line, cmd, args, plane.letters);
+                }
+            }
+            case "VA" -> acceleration = positive(args, cmd, text, line, acceleration);
+            case "VD" -> deceleration = positive(args, cmd, text, line, deceleration);
+            case "VS" -> speed = positive(args, cmd, text, line, speed);
+            case "VP" -> vp(args, text, line);
+            case "CR" -> cr(args, text, line);
+            case "VE", "EN" -> {
+                if (!args.isEmpty()) {
+                    out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
+                }
+                ended = cmd.equals("EN");
+            }
+            case "BG" -> {
+                if (args.equals("S")) {
+                    begin(line, text);
+                } else {
+                    out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
+                }
+            }
+            case "AM" -> {
+                if (!args.equals("S")) {
+                    out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
+                }
+            }
+            case "WT" -> out.dwell(integer(args, cmd, text, line, 0, Integer.MAX_VALUE) / 1000.0, line);
+            case "SB", "CB" -> {
+                int bit = integer(args, cmd, text, line, 0, 999);
+                if (bit >= 0) {
+                    out.output(bit, cmd.equals("SB"), line);
+                }
+            }
+            case "OF" -> of(args, text, line);
+            default -> out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, line, text);
+        }
+    }
+
+    private void vp(String args, String text, int line) {
+        String[] a = args.split(",", -1);
+        if (a.length != 2) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "VP", text);
+            return;
+        }
+        int p = integerOrNan(a[0]);
+        int q = integerOrNan(a[1]);
+        if (p == Integer.MIN_VALUE || q == Integer.MIN_VALUE) {
+            boolean tooBig = !Double.isNaN(number(a[0])) && !Double.isNaN(number(a[1]))
+                    && (Math.abs(number(a[0])) > INT32 || Math.abs(number(a[1])) > INT32);
+            if (tooBig) {
+                out.report(Code.E310_SIM_COUNT_RANGE, line, text);
+            } else {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "VP", text);
+            }
+            return;
+        }
+        startIfNeeded();
+        double e1 = seqStart1 + p;
+        double e2 = seqStart2 + q;
+        add(new Segment(plane.machineX(cursor1, cursor2), plane.machineZ(cursor1, cursor2),
+                plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, text), e1, e2, line);
+    }
+
+    private void cr(String args, String text, int line) {
+        String[] a = args.split(",", -1);
+        double[] v = new double[3];
+        boolean ok = a.length == 3;
+        for (int i = 0; ok && i < 3; i++) {
+            v[i] = number(a[i]);
+            ok = !Double.isNaN(v[i]);
+        }
+        if (!ok || v[0] <= 0 || Math.abs(v[2]) > 360 * 1000) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "CR", text);
+            return;
+        }
+        startIfNeeded();
+        double r = v[0];
+        double th = Math.toRadians(v[1]);
+        double end = Math.toRadians(v[1] + v[2]);
+        double c1 = cursor1 - r * Math.cos(th);
+        double c2 = cursor2 - r * Math.sin(th);
+        double e1 = c1 + r * Math.cos(end);
+        double e2 = c2 + r * Math.sin(end);
+        double fx = plane.machineX(cursor1, cursor2);
+        double fz = plane.machineZ(cursor1, cursor2);
+        double cx = plane.machineX(c1, c2);
+        double cz = plane.machineZ(c1, c2);
+        double start = Math.toDegrees(Math.atan2(fx - cx, fz - cz));
+        add(new Segment(fx, fz, plane.machineX(e1, e2), plane.machineZ(e1, e2), true, cx, cz, r, start,
+                v[2] * plane.handedness(), text), e1, e2, line);
+    }
+
+    private void startIfNeeded() {
+        if (pending.isEmpty()) {
+            seqStart1 = g1;
+            seqStart2 = g2;
+            cursor1 = g1;
+            cursor2 = g2;
+        }
+    }
+
+    private void add(Segment s, double e1, double e2, int line) {
+        if (Math.abs(e1) > INT32 || Math.abs(e2) > INT32) {
+            out.report(Code.E310_SIM_COUNT_RANGE, line, "the end point of '" + s.text() + "'");
+        }
+        pending.add(s);
+        cursor1 = e1;
+        cursor2 = e2;
+    }
+
+    private void begin(int line, String text) {
+        if (pending.isEmpty()) {
+            return;
+        }
+        g1 = cursor1;
+        g2 = cursor2;
+        List<Segment> segs = List.copyOf(pending);
+        pending.clear();
+        out.sequence(segs, speed, line, text);
+    }
+
+    private void of(String args, String text, int line) {
+        String[] a = args.split(",", -1);
+        for (int i = 0; i < a.length; i++) {
+            if (a[i].isBlank()) {
+                continue;
+            }
+            double v = number(a[i]);
+            if (Double.isNaN(v) || Math.abs(v) > 9.998) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "OF", text);
+                return;
+            }
+            if (i == spindleChannel) {
+                out.spindleVolts(v, line);
+            }
+        }
+    }
+
+    private double positive(String s, String cmd, String text, int line, double otherwise) {
+        double v = number(s);
+        if (Double.isNaN(v) || v <= 0) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
+            return otherwise;
+        }
+        if (v > INT32) {
+            out.report(Code.E310_SIM_COUNT_RANGE, line, cmd + " " + s);
+        }
+        return v;
+    }
+
+    /** The integer, or -1 after reporting E301 when it is not one in [min, max]. */
+    private int integer(String s, String cmd, String text, int line, int min, int max) {
+        int v = integerOrNan(s);
+        if (v == Integer.MIN_VALUE || v < min || v > max) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
+            return -1;
+        }
+        return v;
+    }
+
+    /** Integer.MIN_VALUE when s is not an integer that fits 32 bits. */
+    private static int integerOrNan(String s) {
+        String t = s.strip();
+        if (t.isEmpty() || t.length() > 11) {
+            return Integer.MIN_VALUE;
+        }
+        try {
+            long v = Long.parseLong(t.startsWith("+") ? t.substring(1) : t);
+            return v > INT32 || v < -INT32 ? Integer.MIN_VALUE : (int) v;
+        } catch (NumberFormatException x) {
+            return Integer.MIN_VALUE;
+        }
+    }
+
+    private static double number(String s) {
+        String t = s.strip();
+        if (t.isEmpty()) {
+            return Double.NaN;
+        }
+        for (int i = 0; i < t.length(); i++) {
+            char c = t.charAt(i);
+            if (!(Character.isDigit(c) || c == '.' || c == '-' || c == '+')) {
+                return Double.NaN;
+            }
+        }
+        try {
+            return Double.parseDouble(t);
+        } catch (NumberFormatException x) {
+            return Double.NaN;
+        }
+    }
+}

@@ -1,0 +1,324 @@
+package gcnc.sim;
+
+import gcnc.diag.Code;
+import gcnc.ir.ArcGeometry;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * The geometric checks on each replayed sequence (travel, chuck, tailstock, rapid into stock,
+ * path conformance), the stock removal, and what the report measures (envelope, cycle time,
+ * drawing). One finding per check per sequence, so one bad move is one finding.
+ */
+final class MotionChecks {
+    interface Reporter {
+        void report(Code code, int line, Object... args);
+    }
+
+    private final MachineProfile profile;
+    private final SimMachine machine;
+    private final Reporter out;
+    private final double tol;
+    private final StockProfile stock;
+    private final List<Drawing.Move> moves;
+    private final List<Drawing.Mark> marks;
+    private int tool;
+    private SimMachine.ToolShape toolShape;
+    private int sequences;
+    private int segments;
+    private double seconds;
+    private double xMin = Double.POSITIVE_INFINITY;
+    private double xMax = Double.NEGATIVE_INFINITY;
+    private double zMin = Double.POSITIVE_INFINITY;
+    private double zMax = Double.NEGATIVE_INFINITY;
+
+    MotionChecks(MachineProfile profile, SimMachine machine, SimOptions options, Reporter out) {
+        this.profile = profile;
+        this.machine = machine;
+        this.out = out;
+        this.tol = options.tolerance();
+        StockSize s = options.stock().orElse(machine == null ? null : machine.stock().orElse(null));
+        if (s != null && machine != null && !Double.isNaN(machine.chuckFace())) {
+            double face = machine.chuckFace() + s.stickout() * profile.z().countsPerMm();
+            stock = new StockProfile(face - s.length() * profile.z().countsPerMm(), face,
+                    s.diameter() / 2 * profile.x().countsPerMm());
+        } else {
+            stock = null;
+        }
+        moves = options.keepPath() ? new ArrayList<>() : null;
+        marks = options.keepPath() ? new ArrayList<>() : null;
+        toolShape = machine == null ? null : machine.defaultTool();
+    }
+
+    int tool() {
+        return tool;
+    }
+
+    void selectTool(int n) {
+        tool = n;
+        if (machine != null) {
+            toolShape = machine.tool(n);
+        }
+    }
+
+    void dwell(double s) {
+        seconds += s;
+    }
+
+    void sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec) {
+        sequences++;
+        segments += segs.size();
+        double length = 0;
+        boolean travelX = false;
+        boolean travelZ = false;
+        boolean chuckHit = false;
+        boolean tailHit = false;
+        boolean stockHit = false;
+        List<double[]> poly = moves == null ? null : new ArrayList<>();
+        for (Segment s : segs) {
+            length += s.length();
+            double[] box = bounds(s);
+            xMin = Math.min(xMin, box[0]);
+            xMax = Math.max(xMax, box[1]);
+            zMin = Math.min(zMin, box[2]);
+            zMax = Math.max(zMax, box[3]);
+            travelX = travelX || travel(line, "X", box[0], box[1], profile.x().min(), profile.x().max(),
+                    profile.x().countsPerMm());
+            travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
+                    profile.z().countsPerMm());
+            int n = s.pieces();
+            double[] a = s.at(0);
+            if (poly != null) {
+                poly.add(a);
+            }
+            for (int i = 1; i <= n; i++) {
+                double[] b = i == n ? new double[] {s.toX(), s.toZ()} : s.at((double) i / n);
+                if (poly != null) {
+                    poly.add(b);
+                }
+                if (machine != null) {
+                    double ar = a[0] - machine.centreX();
+                    double br = b[0] - machine.centreX();
+                    if (!chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
+                        chuckHit = true;
+                        mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
+                    }
+                    if (!tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
+                        tailHit = true;
+                        mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
+                    }
+                    if (stock != null) {
+                        int cell = stock.cut(a[1], ar, b[1], br, tol);
+                        if (rapid && cell >= 0 && !stockHit) {
+                            stockHit = true;
+                            double z = stock.cellZ(cell);
+                            double t = b[1] == a[1] ? 0 : (z - a[1]) / (b[1] - a[1]);
+                            mark(Code.E305_SIM_RAPID_INTO_STOCK, line, new double[] {a[0] + (b[0] - a[0]) * t, z});
+                        }
+                    }
+                }
+                a = b;
+            }
+        }
+        seconds += time(length, speed, acc, dec);
+        if (poly != null) {
+            double[] z = new double[poly.size()];
+            double[] r = new double[poly.size()];
+            for (int i = 0; i < z.length; i++) {
+                z[i] = poly.get(i)[1] / profile.z().countsPerMm();
+                r[i] = (poly.get(i)[0] - centre()) / profile.x().countsPerMm();
+            }
+            moves.add(new Drawing.Move(rapid, z, r));
+        }
+    }
+
+    private double centre() {
+        return machine == null ? 0 : machine.centreX();
+    }
+
+    private boolean hits(Shape[] obstacles, double az, double ar, double bz, double br) {
+        for (Shape o : obstacles) {
+            for (Shape part : toolShape.parts()) {
+                if (Geometry.sweptHits(part, az, ar, bz, br, o, tol)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /** The finding, at machine position p = {x, z} (counts), with its place kept for the SVG. */
+    private void mark(Code code, int line, double[] p, Object... lead) {
+        Object[] args = new Object[lead.length + 2];
+        System.arraycopy(lead, 0, args, 0, lead.length);
+        args[lead.length] = mm(p[0] / profile.x().countsPerMm());
+        args[lead.length + 1] = mm(p[1] / profile.z().countsPerMm());
+        out.report(code, line, args);
+        if (marks != null) {
+            marks.add(new Drawing.Mark(code.id(), p[1] / profile.z().countsPerMm(),
+                    (p[0] - centre()) / profile.x().countsPerMm()));
+        }
+    }
+
+    private boolean travel(int line, String axis, double lo, double hi, double min, double max, double perMm) {
+        if (lo >= min - tol && hi <= max + tol) {
+            return false;
+        }
+        double bad = lo < min - tol ? lo : hi;
+        out.report(Code.E302_SIM_TRAVEL, line, axis, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
+        return true;
+    }
+
+    /** {xMin, xMax, zMin, zMax} of a segment: an arc's extremes where it crosses 0/90/180/270 degrees. */
+    static double[] bounds(Segment s) {
+        double[] b = {Math.min(s.fromX(), s.toX()), Math.max(s.fromX(), s.toX()),
+                Math.min(s.fromZ(), s.toZ()), Math.max(s.fromZ(), s.toZ())};
+        if (s.arc()) {
+            double lo = Math.min(s.startDeg(), s.startDeg() + s.sweepDeg());
+            double hi = Math.max(s.startDeg(), s.startDeg() + s.sweepDeg());
+            for (double q = Math.ceil(lo / 90) * 90; q <= hi; q += 90) {
+                int k = Math.floorMod((int) Math.round(q / 90), 4);
+                // angle 0 = +z, 90 = +x in the machine drawing
+                switch (k) {
+                    case 0 -> b[3] = Math.max(b[3], s.centreZ() + s.radius());
+                    case 1 -> b[1] = Math.max(b[1], s.centreX() + s.radius());
+                    case 2 -> b[2] = Math.min(b[2], s.centreZ() - s.radius());
+                    default -> b[0] = Math.min(b[0], s.centreX() - s.radius());
+                }
+            }
+        }
+        return b;
+    }
+
+    /** Trapezoidal speed profile from rest to rest; a triangle when the move is too short to reach v. */
+    static double time(double length, double v, double acc, double dec) {
+        if (length <= 0 || v <= 0) {
+            return 0;
+        }
+        double ramps = v * v / (2 * acc) + v * v / (2 * dec);
+        if (length >= ramps) {
+            return length / v + v / (2 * acc) + v / (2 * dec);
+        }
+        double peak = Math.sqrt(2 * length * acc * dec / (acc + dec));
+        return peak / acc + peak / dec;
+    }
+
+    /**
+     * Compares the replayed sequence with the motion the block meant. Returns the intended end
+     * {x, z} to resynchronise to after a finding (one bad sequence is one finding), else null.
+     */
+    double[] conformance(Motion m, List<Segment> segs, int line) {
+        Segment last = segs.get(segs.size() - 1);
+        Point to;
+        if (m instanceof Motion.Linear lin) {
+            to = lin.to();
+            if (segs.size() == 1 && last.arc()) {
+                return mismatch(line, "path (an arc for a straight move)", last.length(), to);
+            }
+        } else {
+            Motion.Arc arc = (Motion.Arc) m;
+            to = arc.to();
+            if (!last.arc()) {
+                return mismatch(line, "path (a straight move for an arc)", distance(last, arc.to()), to);
+            }
+            if (last.sweepDeg() == 0) {
+                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, last.text());
+                mark(null, arc.to());
+                return new double[] {to.x(), to.z()};
+            }
+            double centre = Math.hypot(last.centreX() - arc.centre().x(), last.centreZ() - arc.centre().z());
+            if (centre > tol) {
+                return mismatch(line, "arc centre", centre, to);
+            }
+            double sweep = ArcGeometry.sweepDegrees(arc.from(), arc.to(), arc.centre(), arc.clockwise());
+            double a = Math.toRadians(Math.toDegrees(Math.atan2(arc.from().x() - arc.centre().x(),
+                    arc.from().z() - arc.centre().z())) + sweep / 2);
+            double[] mid = last.at(0.5);
+            double off = Math.hypot(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
+                    mid[1] - (arc.centre().z() + arc.radius() * Math.cos(a)));
+            if (off > tol) {
+                return mismatch(line, "arc direction or sweep (midpoint)", off, to);
+            }
+        }
+        double d = distance(last, to);
+        return d > tol ? mismatch(line, "end point", d, to) : null;
+    }
+
+    private static double distance(Segment s, Point p) {
+        return Math.hypot(s.toX() - p.x(), s.toZ() - p.z());
+    }
+
+    private double[] mismatch(int line, String what, double by, Point to) {
+        out.report(Code.E308_SIM_PATH_MISMATCH, line, what, mm(by), mm(tol));
+        mark(null, to);
+        return new double[] {to.x(), to.z()};
+    }
+
+    private void mark(Code code, Point p) {
+        if (marks != null) {
+            marks.add(new Drawing.Mark(code == null ? "path" : code.id(), p.z() / profile.z().countsPerMm(),
+                    (p.x() - centre()) / profile.x().countsPerMm()));
+        }
+    }
+
+    /** Up to 3 decimals, no trailing zeros: 12.5, -3, 0.001. */
+    static String mm(double v) {
+        double r = Math.rint(v * 1000) / 1000;
+        if (r == Math.rint(r) && Math.abs(r) < 1e15) {
+            return Long.toString((long) r);
+        }
+        return java.math.BigDecimal.valueOf(r).stripTrailingZeros().toPlainString();
+    }
+
+    SimReport report(int findings) {
+        Drawing d = null;
+        if (moves != null) {
+            d = drawing();
+        }
+        boolean moved = sequences > 0;
+        return new SimReport(sequences, segments, findings,
+                moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
+                moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
+                seconds, d);
+    }
+
+    private Drawing drawing() {
+        double kx = profile.x().countsPerMm();
+        double kz = profile.z().countsPerMm();
+        List<Shape> chuck = new ArrayList<>();
+        List<Shape> tail = new ArrayList<>();
+        if (machine != null) {
+            for (Shape s : machine.chuck()) {
+                chuck.add(scale(s, kz, kx));
+            }
+            for (Shape s : machine.tailstock()) {
+                tail.add(scale(s, kz, kx));
+            }
+        }
+        if (stock == null) {
+            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks);
+        }
+        double[] z = new double[stock.cells()];
+        double[] r = new double[stock.cells()];
+        for (int i = 0; i < z.length; i++) {
+            z[i] = stock.cellZ(i) / kz;
+            r[i] = stock.radiusAt(i) / kx;
+        }
+        return new Drawing(chuck, tail, stock.back() / kz, stock.face() / kz, stock.initialRadius() / kx, z, r,
+                moves, marks);
+    }
+
+    private static Shape scale(Shape s, double kz, double kx) {
+        double[] z = Arrays.copyOf(s.z(), s.size());
+        double[] r = Arrays.copyOf(s.r(), s.size());
+        for (int i = 0; i < z.length; i++) {
+            z[i] = Math.max(-1e6, Math.min(1e6, z[i] / kz));
+            r[i] /= kx;
+        }
+        return new Shape(z, r);
+    }
+}

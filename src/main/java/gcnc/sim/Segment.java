@@ -1,0 +1,31 @@
+package gcnc.sim;
+
+/**
+ * One replayed vector segment in the machine frame (counts; x = machine X, not the radius).
+ * A line has {@code arc == false}; an arc carries its centre, radius and signed sweep in the
+ * machine drawing (z right, x up; counter-clockwise positive), as the Galil CR made it.
+ */
+record Segment(double fromX, double fromZ, double toX, double toZ, boolean arc, double centreX, double centreZ,
+               double radius, double startDeg, double sweepDeg, String text) {
+    /** Point at fraction t of the way along (arcs by angle). Returns {x, z}. */
+    double[] at(double t) {
+        if (!arc) {
+            return new double[] {fromX + (toX - fromX) * t, fromZ + (toZ - fromZ) * t};
+        }
+        double a = Math.toRadians(startDeg + sweepDeg * t);
+        return new double[] {centreX + radius * Math.sin(a), centreZ + radius * Math.cos(a)};
+    }
+
+    double length() {
+        return arc ? Math.abs(Math.toRadians(sweepDeg)) * radius : Math.hypot(toX - fromX, toZ - fromZ);
+    }
+
+    /** How many straight pieces approximate it within half a count (1 for a line). */
+    int pieces() {
+        if (!arc || radius < 1) {
+            return 1;
+        }
+        double step = Math.toDegrees(2 * Math.acos(Math.max(-1, 1 - 0.5 / radius)));
+        return (int) Math.max(1, Math.min(256, Math.ceil(Math.abs(sweepDeg) / Math.max(step, 1e-3))));
+    }
+}

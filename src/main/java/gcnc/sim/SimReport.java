@@ -1,0 +1,18 @@
+package gcnc.sim;
+
+/**
+ * What a simulation found and measured.
+ *
+ * @param sequences     vector sequences replayed (one per motion)
+ * @param segments      VP/CR segments replayed
+ * @param findings      diagnostics the simulator reported (they are in the run's Diagnostics)
+ * @param xMinMm        travel envelope of machine X (mm), NaN when nothing moved
+ * @param xMaxMm        ...
+ * @param zMinMm        travel envelope of machine Z (mm)
+ * @param zMaxMm        ...
+ * @param cycleSeconds  estimated run time: trapezoidal speed profile per sequence plus dwells
+ * @param drawing       the path and machine for an SVG, null unless {@link SimOptions#keepPath()}
+ */
+public record SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
+                        double zMaxMm, double cycleSeconds, Drawing drawing) {
+}

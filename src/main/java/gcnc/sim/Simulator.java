@@ -1,0 +1,159 @@
+package gcnc.sim;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Motion;
+import gcnc.machine.MachineProfile;
+import gcnc.tables.TableException;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Replays the emitted DMC on a model of the lathe (docs/simulator.md): streams block by block in
+ * constant memory (the path is kept only for an SVG), and reports each problem as a located
+ * diagnostic at the G-code line of the DMC line that caused it, column 1.
+ */
+public final class Simulator {
+    private final MachineProfile profile;
+    private final SimOptions options;
+    private final Diagnostics diagnostics;
+    private final Plane plane;
+    private final DmcInterpreter dmc;
+    private final OutputState outputs;
+    private final MotionChecks checks;
+    private final Trace trace;
+    private List<Motion> expected = List.of();
+    private int nextMotion;
+    private int findings;
+
+    public Simulator(MachineProfile profile, SimOptions options, Diagnostics diagnostics) {
+        this.profile = profile;
+        this.options = options;
+        this.diagnostics = diagnostics;
+        this.plane = new Plane(profile);
+        SimMachine machine = null;
+        try {
+            machine = SimMachine.read(profile);
+        } catch (TableException e) {
+            diagnostics.report(e.diagnostic());
+        }
+        this.outputs = new OutputState(profile);
+        this.checks = new MotionChecks(profile, machine, options, this::report);
+        this.dmc = new DmcInterpreter(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
+                profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
+        this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
+    }
+
+    public void begin(List<DmcLine> header) {
+        run(header);
+    }
+
+    /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
+    public void block(CheckedBlock intended, List<DmcLine> emitted) {
+        expected = new ArrayList<>(intended.motions().size());
+        for (Motion m : intended.motions()) {
+            if (!(m instanceof Motion.Dwell)) {
+                expected.add(m);
+            }
+        }
+        nextMotion = 0;
+        run(emitted);
+        closeSequences(intended.line());
+        if (nextMotion != expected.size()) {
+            report(Code.E311_SIM_SEQUENCE_COUNT, intended.line(), expected.size(), nextMotion);
+        }
+        expected = List.of();
+    }
+
+    public void end(List<DmcLine> footer) {
+        run(footer);
+        int last = footer.isEmpty() ? 1 : footer.get(footer.size() - 1).sourceLine();
+        closeSequences(last);
+    }
+
+    /** Replays DMC with no G-code to compare against: a hand-edited file, or --trace. */
+    public void replay(List<DmcLine> lines) {
+        expected = null;
+        run(lines);
+    }
+
+    public SimReport report() {
+        return checks.report(findings);
+    }
+
+    private void run(List<DmcLine> lines) {
+        for (DmcLine l : lines) {
+            dmc.line(l.text(), l.sourceLine());
+            if (trace != null) {
+                trace.line(l, dmc.x(), dmc.z(), checks.tool(), outputs.describe());
+            }
+        }
+    }
+
+    private void closeSequences(int line) {
+        if (dmc.hasPending()) {
+            report(Code.E314_SIM_SEQUENCE_NOT_STARTED, line);
+            dmc.dropPending();
+        }
+    }
+
+    private void report(Code code, int line, Object... args) {
+        findings++;
+        diagnostics.report(Diagnostic.error(code, Span.of(Math.max(1, line), 1), args));
+    }
+
+    /** The interpreter's events, turned into machine state and checks. */
+    private final class Events implements DmcInterpreter.Listener {
+        @Override
+        public void sequence(List<Segment> segments, double speed, int line, String text) {
+            Motion m = null;
+            if (expected != null) {
+                m = nextMotion < expected.size() ? expected.get(nextMotion) : null;
+                nextMotion++;
+            }
+            boolean rapid = m == null ? speed == profile.rapidSpeed()
+                    : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
+            if (!rapid && outputs.spindleKnown && !outputs.running) {
+                report(Code.E306_SIM_FEED_SPINDLE_STOPPED, line, outputs.describe());
+            }
+            if (!rapid && outputs.chuckKnown && !outputs.closed) {
+                report(Code.E307_SIM_FEED_CHUCK_OPEN, line, outputs.describe());
+            }
+            checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration);
+            if (m != null) {
+                double[] resync = checks.conformance(m, segments, line);
+                if (resync != null) {
+                    dmc.moveTo(resync[0], resync[1]);
+                }
+            }
+        }
+
+        @Override
+        public void dwell(double seconds, int line) {
+            checks.dwell(seconds);
+        }
+
+        @Override
+        public void tool(int n, int line) {
+            checks.selectTool(n);
+        }
+
+        @Override
+        public void output(int bit, boolean on, int line) {
+            outputs.set(bit, on);
+        }
+
+        @Override
+        public void spindleVolts(double volts, int line) {
+            // The run/stop state comes from the outputs; the speed does not affect any check.
+        }
+
+        @Override
+        public void report(Code code, int line, Object... args) {
+            Simulator.this.report(code, line, args);
+        }
+    }
+}

@@ -1,0 +1,85 @@
+package gcnc.sim;
+
+/**
+ * The workpiece as a radius-versus-Z profile on a fixed grid (constant memory, fine for turning):
+ * cell i covers z in [z0 + i*step, z0 + (i+1)*step) and holds the radius of material left at its
+ * centre. The tool tip lowers a cell when it passes its centre below the current radius; a rapid
+ * that passes a centre more than {@code slack} below the radius there is inside uncut material.
+ */
+final class StockProfile {
+    static final int CELLS = 4096;
+
+    private final double z0;
+    private final double step;
+    private final double[] radius = new double[CELLS];
+    private final double initialRadius;
+
+    StockProfile(double backZ, double faceZ, double radius) {
+        this.z0 = backZ;
+        this.step = (faceZ - backZ) / CELLS;
+        this.initialRadius = radius;
+        java.util.Arrays.fill(this.radius, radius);
+    }
+
+    double back() {
+        return z0;
+    }
+
+    double face() {
+        return z0 + step * CELLS;
+    }
+
+    double initialRadius() {
+        return initialRadius;
+    }
+
+    int cells() {
+        return CELLS;
+    }
+
+    double cellZ(int i) {
+        return z0 + (i + 0.5) * step;
+    }
+
+    double radiusAt(int i) {
+        return radius[i];
+    }
+
+    /**
+     * Walks the tip's straight move (a -> b, radii from the centreline) over the cell centres it
+     * crosses: lowers the profile to the tip, and returns the index of the first cell where the tip
+     * was more than slack inside material that was still there, or -1.
+     */
+    int cut(double az, double ar, double bz, double br, double slack) {
+        double lo = Math.min(az, bz);
+        double hi = Math.max(az, bz);
+        int first = (int) Math.ceil((lo - z0) / step - 0.5);
+        int last = (int) Math.floor((hi - z0) / step - 0.5);
+        int hit = -1;
+        if (hi - lo < step) {
+            // A (nearly) radial move: the cell holding its z, if it is inside the stock.
+            int i = (int) Math.floor(((lo + hi) / 2 - z0) / step);
+            if (i >= 0 && i < CELLS && (lo + hi) / 2 > z0 + slack && (lo + hi) / 2 < face() - slack) {
+                double r = Math.min(ar, br);
+                if (r < radius[i] - slack) {
+                    hit = i;
+                    radius[i] = Math.max(0, r);
+                }
+            }
+            return hit;
+        }
+        first = Math.max(first, 0);
+        last = Math.min(last, CELLS - 1);
+        double slope = (br - ar) / (bz - az);
+        for (int i = first; i <= last; i++) {
+            double r = ar + (cellZ(i) - az) * slope;
+            if (r < radius[i] - slack) {
+                if (hit < 0) {
+                    hit = i;
+                }
+                radius[i] = Math.max(0, r);
+            }
+        }
+        return hit;
+    }
+}
