@@ -42,6 +42,8 @@ final class DmcInterpreter {
     double acceleration;
     double deceleration;
     private boolean ended;
+    /** When a G-code block is there to compare with, conformance reports zero sweeps instead. */
+    boolean checkedByCaller;
     private final int spindleChannel;
 
     DmcInterpreter(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
@@ -189,6 +191,9 @@ final class DmcInterpreter {
         if (!ok || v[0] <= 0 || Math.abs(v[2]) > 360 * 1000) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "CR", text);
             return;
+        }
+        if (v[2] == 0 && !checkedByCaller) {
+            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, text);
         }
         startIfNeeded();
         double r = v[0];

@@ -28,6 +28,7 @@ public final class Simulator {
     private List<Motion> expected = List.of();
     private int nextMotion;
     private int findings;
+    private int lastLine = 1;
 
     public Simulator(MachineProfile profile, SimOptions options, Diagnostics diagnostics) {
         this.profile = profile;
@@ -60,7 +61,9 @@ public final class Simulator {
             }
         }
         nextMotion = 0;
+        dmc.checkedByCaller = true;
         run(emitted);
+        dmc.checkedByCaller = false;
         closeSequences(intended.line());
         if (nextMotion != expected.size()) {
             report(Code.E311_SIM_SEQUENCE_COUNT, intended.line(), expected.size(), nextMotion);
@@ -70,8 +73,7 @@ public final class Simulator {
 
     public void end(List<DmcLine> footer) {
         run(footer);
-        int last = footer.isEmpty() ? 1 : footer.get(footer.size() - 1).sourceLine();
-        closeSequences(last);
+        closeSequences(lastLine);
     }
 
     /** Replays DMC with no G-code to compare against: a hand-edited file, or --trace. */
@@ -87,6 +89,7 @@ public final class Simulator {
     private void run(List<DmcLine> lines) {
         for (DmcLine l : lines) {
             dmc.line(l.text(), l.sourceLine());
+            lastLine = Math.max(1, l.sourceLine());
             if (trace != null) {
                 trace.line(l, dmc.x(), dmc.z(), checks.tool(), outputs.describe());
             }

@@ -1,0 +1,38 @@
+package gcnc.sim;
+
+import java.util.Optional;
+
+/**
+ * The stock header a program may open with, as EMCO controls write it: a comment on the first
+ * line holding numbers, of which the first two are the blank's length and diameter in mm, e.g.
+ * bishop's {@code (120.00 22.00 5.00 5.00)}. Further numbers are ignored. Anything else in the
+ * comment (a word, a single number) means the line is not a stock header.
+ */
+public final class StockHeader {
+    private StockHeader() {
+    }
+
+    /** The blank of a first line, with the stick-out taken from the profile's default. */
+    public static Optional<StockSize> parse(String firstLine, double stickout) {
+        String t = firstLine.strip();
+        if (!t.startsWith("(") || !t.endsWith(")")) {
+            return Optional.empty();
+        }
+        String[] parts = t.substring(1, t.length() - 1).trim().split("[\\s,]+");
+        if (parts.length < 2) {
+            return Optional.empty();
+        }
+        double[] v = new double[parts.length];
+        for (int i = 0; i < parts.length; i++) {
+            try {
+                v[i] = Double.parseDouble(parts[i]);
+            } catch (NumberFormatException e) {
+                return Optional.empty();
+            }
+            if (!(v[i] > 0) && i < 2) {
+                return Optional.empty();
+            }
+        }
+        return Optional.of(new StockSize(v[1], v[0], stickout));
+    }
+}

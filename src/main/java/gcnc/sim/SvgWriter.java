@@ -1,0 +1,142 @@
+package gcnc.sim;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.util.Locale;
+
+/**
+ * Draws a simulation as an SVG half-section (Z to the right, radius up, machine mm): chuck,
+ * tailstock, the blank, the finished part outline, the tool path (rapids dashed, feeds solid)
+ * and the findings. The view fits the blank with a margin (the path is clipped to it), or the
+ * path when there is no blank.
+ */
+public final class SvgWriter {
+    private static final double WIDTH = 1000;
+
+    private SvgWriter() {
+    }
+
+    public static void write(SimReport report, String title, Writer w) throws IOException {
+        Drawing d = report.drawing();
+        if (d == null) {
+            throw new IllegalStateException("simulate with SimOptions.withPath() to draw");
+        }
+        double[] v = view(d);
+        double s = WIDTH / (v[1] - v[0]);
+        double height = (v[3] - v[2]) * s;
+        View t = new View(v[0], v[3], s);
+        w.write(String.format(Locale.ROOT, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\""
+                + " viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" font-size=\"14\">\n",
+                WIDTH, height + 90, WIDTH, height + 90));
+        w.write("<title>" + escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
+        w.write(String.format(Locale.ROOT, "<defs><clipPath id=\"view\"><rect x=\"0\" y=\"0\" width=\"%.0f\" height=\"%.1f\"/>"
+                + "</clipPath></defs>\n<g clip-path=\"url(#view)\">\n", WIDTH, height));
+        if (!Double.isNaN(d.stockRadius())) {
+            w.write("<polygon fill=\"#f3e3c3\" stroke=\"#c8a870\" points=\"" + t.pt(d.stockBack(), 0) + t.pt(d.stockBack(), d.stockRadius())
+                    + t.pt(d.stockFace(), d.stockRadius()) + t.pt(d.stockFace(), 0) + "\"/>\n");
+            StringBuilder part = new StringBuilder(t.pt(d.stockBack(), 0));
+            for (int i = 0; i < d.finalZ().length; i++) {
+                if (i == 0 || i == d.finalZ().length - 1 || d.finalR()[i] != d.finalR()[i - 1]
+                        || d.finalR()[i] != d.finalR()[i + 1]) {
+                    part.append(t.pt(d.finalZ()[i], d.finalR()[i]));
+                }
+            }
+            part.append(t.pt(d.stockFace(), 0));
+            w.write("<polygon fill=\"#b08040\" stroke=\"#603010\" stroke-width=\"1.5\" points=\"" + part + "\"/>\n");
+        }
+        for (Shape sh : d.chuck()) {
+            w.write(shape(sh, t, "#888888"));
+        }
+        for (Shape sh : d.tailstock()) {
+            w.write(shape(sh, t, "#6688aa"));
+        }
+        w.write(String.format(Locale.ROOT, "<line x1=\"0\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"black\""
+                + " stroke-dasharray=\"12 4 2 4\"/>\n", t.y(0), WIDTH, t.y(0)));
+        for (Drawing.Move m : d.moves()) {
+            StringBuilder pts = new StringBuilder();
+            for (int i = 0; i < m.z().length; i++) {
+                pts.append(t.pt(m.z()[i], m.r()[i]));
+            }
+            w.write("<polyline fill=\"none\" stroke=\"" + (m.rapid() ? "#d03030\" stroke-dasharray=\"6 4\"" : "#1040c0\"")
+                    + " stroke-width=\"1.2\" points=\"" + pts + "\"/>\n");
+        }
+        for (Drawing.Mark m : d.marks()) {
+            w.write(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"7\" fill=\"none\" stroke=\"#ff00ff\""
+                    + " stroke-width=\"2.5\"/><text x=\"%.1f\" y=\"%.1f\" fill=\"#ff00ff\">%s</text>\n",
+                    t.x(m.z()), t.y(m.r()), t.x(m.z()) + 9, t.y(m.r()) - 9, escape(m.code())));
+        }
+        w.write("</g>\n");
+        legend(w, height, v);
+        w.write("</svg>\n");
+    }
+
+    private static void legend(Writer w, double top, double[] v) throws IOException {
+        double y = top + 25;
+        w.write(String.format(Locale.ROOT, "<line x1=\"10\" y1=\"%.0f\" x2=\"50\" y2=\"%.0f\" stroke=\"#d03030\" stroke-dasharray=\"6 4\"/>"
+                + "<text x=\"56\" y=\"%.0f\">rapid</text>\n", y, y, y + 5));
+        w.write(String.format(Locale.ROOT, "<line x1=\"120\" y1=\"%.0f\" x2=\"160\" y2=\"%.0f\" stroke=\"#1040c0\"/>"
+                + "<text x=\"166\" y=\"%.0f\">feed</text>\n", y, y, y + 5));
+        w.write(String.format(Locale.ROOT, "<rect x=\"220\" y=\"%.0f\" width=\"30\" height=\"12\" fill=\"#f3e3c3\" stroke=\"#c8a870\"/>"
+                + "<text x=\"256\" y=\"%.0f\">blank</text>\n", y - 6, y + 5));
+        w.write(String.format(Locale.ROOT, "<rect x=\"310\" y=\"%.0f\" width=\"30\" height=\"12\" fill=\"#b08040\"/>"
+                + "<text x=\"346\" y=\"%.0f\">part</text>\n", y - 6, y + 5));
+        w.write(String.format(Locale.ROOT, "<rect x=\"390\" y=\"%.0f\" width=\"30\" height=\"12\" fill=\"#888888\"/>"
+                + "<text x=\"426\" y=\"%.0f\">chuck</text>\n", y - 6, y + 5));
+        w.write(String.format(Locale.ROOT, "<rect x=\"480\" y=\"%.0f\" width=\"30\" height=\"12\" fill=\"#6688aa\"/>"
+                + "<text x=\"516\" y=\"%.0f\">tailstock</text>\n", y - 6, y + 5));
+        w.write(String.format(Locale.ROOT, "<circle cx=\"600\" cy=\"%.0f\" r=\"7\" fill=\"none\" stroke=\"#ff00ff\" stroke-width=\"2.5\"/>"
+                + "<text x=\"612\" y=\"%.0f\">finding</text>\n", y, y + 5));
+        w.write(String.format(Locale.ROOT, "<text x=\"10\" y=\"%.0f\">Z %s .. %s mm (right = +Z), radius %s .. %s mm;"
+                + " machine frame, half-section above the spindle centreline</text>\n",
+                y + 35, MotionChecks.mm(v[0]), MotionChecks.mm(v[1]), MotionChecks.mm(v[2]), MotionChecks.mm(v[3])));
+    }
+
+    /** {zMin, zMax, rMin, rMax} to show. */
+    private static double[] view(Drawing d) {
+        double[] b = {Double.MAX_VALUE, -Double.MAX_VALUE, 0, -Double.MAX_VALUE};
+        if (!Double.isNaN(d.stockRadius())) {
+            b = new double[] {d.stockBack(), d.stockFace(), 0, d.stockRadius()};
+        } else {
+            for (Drawing.Move m : d.moves()) {
+                for (int i = 0; i < m.z().length; i++) {
+                    b[0] = Math.min(b[0], m.z()[i]);
+                    b[1] = Math.max(b[1], m.z()[i]);
+                    b[3] = Math.max(b[3], m.r()[i]);
+                }
+            }
+            if (b[0] > b[1]) {
+                b = new double[] {0, 1, 0, 1};
+            }
+        }
+        double mz = Math.max(b[1] - b[0], 1e-9) * 0.15;
+        double mr = Math.max(b[3] - b[2], 1e-9) * 0.4;
+        return new double[] {b[0] - mz, b[1] + mz, b[2] - mr * 0.25, b[3] + mr};
+    }
+
+    private static String shape(Shape sh, View t, String fill) {
+        StringBuilder p = new StringBuilder();
+        for (int i = 0; i < sh.size(); i++) {
+            p.append(t.pt(Math.max(-1e5, Math.min(1e5, sh.z()[i])), sh.r()[i]));
+        }
+        return "<polygon fill=\"" + fill + "\" fill-opacity=\"0.8\" stroke=\"#333\" points=\"" + p + "\"/>\n";
+    }
+
+    private static String escape(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    }
+
+    /** Machine mm to SVG pixels: z right, radius up. */
+    private record View(double z0, double rTop, double scale) {
+        double x(double z) {
+            return (z - z0) * scale;
+        }
+
+        double y(double r) {
+            return (rTop - r) * scale;
+        }
+
+        String pt(double z, double r) {
+            return String.format(Locale.ROOT, "%.2f,%.2f ", x(z), y(r));
+        }
+    }
+}
