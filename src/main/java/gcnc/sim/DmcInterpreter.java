@@ -98,7 +98,7 @@ final class DmcInterpreter {
             out.tool(integer(t.substring(5), "TOOL", t, line, 0, 9999), line);
             return;
         }
-        if (t.regionMatches(true, 0, "Revolver ", 0, 9)) {
+        if ((t.charAt(0) == 'R' || t.charAt(0) == 'r') && t.regionMatches(true, 0, "Revolver ", 0, 9)) {
             out.tool(integer(t.substring(9).strip(), "Revolver", t, line, 0, 9999), line);
             return;
         }

@@ -8,17 +8,21 @@ package gcnc.sim;
  */
 final class StockProfile {
     static final int CELLS = 4096;
+    private static final int BLOCK = 64;
 
     private final double z0;
     private final double step;
     private final double[] radius = new double[CELLS];
     private final double initialRadius;
+    /** Largest radius in each run of BLOCK cells: a move above it skips the whole run. */
+    private final double[] blockMax = new double[CELLS / BLOCK];
 
     StockProfile(double backZ, double faceZ, double radius) {
         this.z0 = backZ;
         this.step = (faceZ - backZ) / CELLS;
         this.initialRadius = radius;
         java.util.Arrays.fill(this.radius, radius);
+        java.util.Arrays.fill(this.blockMax, radius);
     }
 
     double back() {
@@ -71,14 +75,28 @@ final class StockProfile {
         first = Math.max(first, 0);
         last = Math.min(last, CELLS - 1);
         double slope = (br - ar) / (bz - az);
-        for (int i = first; i <= last; i++) {
-            double r = ar + (cellZ(i) - az) * slope;
-            if (r < radius[i] - slack) {
-                if (hit < 0) {
-                    hit = i;
-                }
-                radius[i] = Math.max(0, r);
+        for (int b = first / BLOCK; b <= last / BLOCK && b < blockMax.length; b++) {
+            int from = Math.max(first, b * BLOCK);
+            int to = Math.min(last, b * BLOCK + BLOCK - 1);
+            double r0 = ar + (cellZ(from) - az) * slope;
+            double r1 = ar + (cellZ(to) - az) * slope;
+            if (Math.min(r0, r1) >= blockMax[b] - slack) {
+                continue;
             }
+            double max = 0;
+            for (int i = b * BLOCK; i < b * BLOCK + BLOCK; i++) {
+                if (i >= from && i <= to) {
+                    double r = ar + (cellZ(i) - az) * slope;
+                    if (r < radius[i] - slack) {
+                        if (hit < 0) {
+                            hit = i;
+                        }
+                        radius[i] = Math.max(0, r);
+                    }
+                }
+                max = Math.max(max, radius[i]);
+            }
+            blockMax[b] = max;
         }
         return hit;
     }
