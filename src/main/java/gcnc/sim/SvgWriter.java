@@ -91,26 +91,37 @@ public final class SvgWriter {
                 y + 35, MotionChecks.mm(v[0]), MotionChecks.mm(v[1]), MotionChecks.mm(v[2]), MotionChecks.mm(v[3])));
     }
 
-    /** {zMin, zMax, rMin, rMax} to show. */
+    /**
+     * {zMin, zMax, rMin, rMax} to show: where the tool cut (feed moves and findings) and the blank's
+     * face, so the part fills the picture; the whole path when there is no blank.
+     */
     private static double[] view(Drawing d) {
-        double[] b = {Double.MAX_VALUE, -Double.MAX_VALUE, 0, -Double.MAX_VALUE};
-        if (!Double.isNaN(d.stockRadius())) {
-            b = new double[] {d.stockBack(), d.stockFace(), 0, d.stockRadius()};
-        } else {
-            for (Drawing.Move m : d.moves()) {
-                for (int i = 0; i < m.z().length; i++) {
-                    b[0] = Math.min(b[0], m.z()[i]);
-                    b[1] = Math.max(b[1], m.z()[i]);
-                    b[3] = Math.max(b[3], m.r()[i]);
-                }
+        boolean stock = !Double.isNaN(d.stockRadius());
+        double[] b = {Double.MAX_VALUE, -Double.MAX_VALUE, 0, stock ? d.stockRadius() : -Double.MAX_VALUE};
+        for (Drawing.Move m : d.moves()) {
+            if (stock && m.rapid()) {
+                continue;
             }
-            if (b[0] > b[1]) {
-                b = new double[] {0, 1, 0, 1};
+            for (int i = 0; i < m.z().length; i++) {
+                b[0] = Math.min(b[0], m.z()[i]);
+                b[1] = Math.max(b[1], m.z()[i]);
+                b[3] = Math.max(b[3], stock ? Math.min(m.r()[i], 1.2 * d.stockRadius()) : m.r()[i]);
             }
         }
-        double mz = Math.max(b[1] - b[0], 1e-9) * 0.15;
-        double mr = Math.max(b[3] - b[2], 1e-9) * 0.4;
-        return new double[] {b[0] - mz, b[1] + mz, b[2] - mr * 0.25, b[3] + mr};
+        for (Drawing.Mark m : d.marks()) {
+            b[0] = Math.min(b[0], m.z());
+            b[1] = Math.max(b[1], m.z());
+        }
+        if (stock) {
+            b[0] = Math.max(Math.min(b[0], d.stockFace()), d.stockBack());
+            b[1] = Math.min(Math.max(b[1], d.stockFace()), d.stockFace() + 0.2 * (d.stockFace() - d.stockBack()));
+        }
+        if (b[0] > b[1]) {
+            b = new double[] {0, 1, 0, 1};
+        }
+        double mz = Math.max(b[1] - b[0], 1e-9) * 0.08;
+        double mr = Math.max(b[3] - b[2], 1e-9) * 0.15;
+        return new double[] {b[0] - mz, b[1] + mz, b[2] - mr * 0.3, b[3] + mr};
     }
 
     private static String shape(Shape sh, View t, String fill) {
