@@ -188,6 +188,19 @@ class SimulatorTest {
         assertEquals(List.of("E311@1"), f.codes());
     }
 
+    /** G28 U0 W0: the intermediate point is where the tool stands, so the backend may skip that move. */
+    @Test
+    void standingMotionMayHaveNoSequence() throws Exception {
+        SimFixture f = new SimFixture();
+        Point here = new Point(90, 250);
+        Point ref = new Point(80, 240);
+        f.block(List.of(new Motion.Linear(true, here, here, null), new Motion.Linear(true, here, ref, null)),
+                "VS 1000", "VP -10,-10", "VE", "BGS", "AMS");
+        f.block(List.of(new Motion.Linear(true, ref, ref, null), new Motion.Linear(true, ref, here, null)),
+                "VS 1000", "VP 0,0", "VE", "BGS", "AMS", "VP 10,10", "VE", "BGS", "AMS");
+        assertEquals(List.of(), f.codes());
+    }
+
     @Test
     void segmentsNeverStartedAreFound() throws Exception {
         SimFixture f = new SimFixture();
