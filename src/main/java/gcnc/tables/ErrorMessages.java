@@ -9,6 +9,11 @@ import java.util.Map;
 
 /** Table 5 and gcnc's own codes: the message template of every code, in English and Spanish. */
 public final class ErrorMessages {
+    /** The same messages bound to one language, for renderers. */
+    public gcnc.diag.Messages in(Lang lang) {
+        return (code, args) -> render(code, args, lang);
+    }
+
     public enum Lang { EN, ES }
 
     private final Map<Code, String[]> templates;
