@@ -26,6 +26,12 @@ public final class ErrorMessages {
         return templates.containsKey(code);
     }
 
+    /** The message template as written in errors.csv, placeholders {0}, {1}... unfilled. */
+    public String template(Code code, Lang lang) {
+        String[] t = templates.get(code);
+        return t == null ? "" : t[lang.ordinal()];
+    }
+
     /** The message of a code with its arguments filled in. */
     public String render(Code code, List<String> args, Lang lang) {
         String[] t = templates.get(code);
