@@ -2,6 +2,7 @@ package gcnc.check;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import gcnc.diag.Code;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -84,6 +85,27 @@ class ErrorsTest {
     })
     void reportsTheErrorWhereItIs(String program, String expected) {
         assertEquals(expected, run(program).errors());
+    }
+
+    /** With the shipped Table 7 every function takes X; a table that forbids it makes 21 reachable. */
+    @Test
+    void e021WithATable7ThatForbidsX() throws Exception {
+        java.nio.file.Path dir = java.nio.file.Files.createTempDirectory("gcnc-tables");
+        java.nio.file.Path src = java.nio.file.Path.of("tables");
+        java.nio.file.Files.createDirectories(dir.resolve("machines"));
+        for (String f : new String[] {"g_codes.csv", "m_codes.csv", "parameter_limits.csv", "tool_offsets.csv",
+            "work_offsets.csv", "errors.csv", "machines/generic.machine"}) {
+            java.nio.file.Files.copy(src.resolve(f), dir.resolve(f));
+        }
+        String usage = java.nio.file.Files.readString(src.resolve("word_usage.csv")).replace("4,1,0,1,0,0,0,0,1", "4,0,0,1,0,0,0,0,1");
+        java.nio.file.Files.writeString(dir.resolve("word_usage.csv"), usage);
+        gcnc.tables.Tables t = gcnc.tables.Tables.load(gcnc.tables.TableSource.directory(dir));
+        gcnc.machine.MachineProfile p = gcnc.machine.ProfileLoader.load("generic", gcnc.tables.TableSource.directory(dir), t);
+        gcnc.diag.Diagnostics out = new gcnc.diag.Diagnostics();
+        Checker c = new Checker(t, p, out);
+        c.check(Run.block(1, "G04 X1."));
+        assertEquals(Code.E021_X_NOT_ALLOWED, out.sorted().get(0).code());
+        assertEquals(gcnc.diag.Span.of(1, 5), out.sorted().get(0).span());
     }
 
     @Test
