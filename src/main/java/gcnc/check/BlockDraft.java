@@ -21,6 +21,7 @@ import java.util.List;
 public final class BlockDraft {
     public static final int NONE = -1;
     private static final int GROUPS = 20;
+    private static final int LETTERS = Letter.values().length;
 
     public final RawBlock block;
     public final ModalState prior;
@@ -34,8 +35,8 @@ public final class BlockDraft {
     /** No block was counted before this one (O must come first: error 34). */
     public final boolean first;
 
-    private final Word[] words = new Word[Letter.values().length];
-    private final double[] values = new double[Letter.values().length];
+    private final Word[] words = new Word[LETTERS];
+    private final double[] values = new double[LETTERS];
     private final Word[] gGroups = new Word[GROUPS];
     private final Word[] mGroups = new Word[GROUPS];
 

@@ -109,6 +109,22 @@ class ErrorsTest {
     }
 
     @Test
+    void malformedBlocksAreCountedButNotChecked() {
+        gcnc.diag.Diagnostics out = new gcnc.diag.Diagnostics();
+        Checker c = new Checker(Run.TABLES, Run.profile("generic"), out);
+        gcnc.ir.RawBlock bad = Run.block(1, "G07 X");
+        gcnc.ir.RawBlock malformed = new gcnc.ir.RawBlock(1, bad.words(), bad.last(), true);
+        assertEquals(java.util.Optional.empty(), c.check(malformed));
+        assertEquals(0, out.size());
+        c.check(Run.block(2, "M30"));
+        gcnc.ir.RawBlock late = new gcnc.ir.RawBlock(3, bad.words(), bad.last(), true);
+        c.check(late);
+        c.finish(3);
+        assertEquals(1, out.size());
+        assertEquals(Code.E053_M30_NOT_LAST, out.sorted().get(0).code());
+    }
+
+    @Test
     void e052ProgramWithoutM30() {
         assertEquals("2:1:E052", Run.generic("G21\nG00 X10.").errors());
     }
