@@ -16,9 +16,16 @@ import gcnc.machine.Units;
  */
 public final class Coordinates {
     private final MachineProfile p;
+    /** G54..G59 and tool offsets 0..99 as arrays: no map look-up per block. */
+    private final Point[] work = new Point[100];
+    private final Point[] tool = new Point[100];
 
     public Coordinates(MachineProfile p) {
         this.p = p;
+        for (int i = 0; i < 100; i++) {
+            work[i] = p.workOffset(i).orElse(Point.ORIGIN);
+            tool[i] = i == 0 ? Point.ORIGIN : p.toolOffset(i).orElse(Point.ORIGIN);
+        }
     }
 
     /** Counts per programmed unit of X and U (half when X is a diameter). */
@@ -37,8 +44,8 @@ public final class Coordinates {
 
     /** Work offset + tool offset, machine counts (no G50/G92 shift). */
     public Point offsets(ModalState.Next s) {
-        Point w = p.workOffset(s.workOffset).orElse(Point.ORIGIN);
-        Point t = s.toolOffset == 0 ? Point.ORIGIN : p.toolOffset(s.toolOffset).orElse(Point.ORIGIN);
+        Point w = work[s.workOffset];
+        Point t = tool[s.toolOffset];
         return new Point(w.x() + t.x(), w.z() + t.z());
     }
 
