@@ -84,7 +84,14 @@ class ErrorsTest {
         "$|G00 X40. Z0.|G02 X40. Z0. R5. F100.; 7:14:E105",
     })
     void reportsTheErrorWhereItIs(String program, String expected) {
-        assertEquals(expected, run(program).errors());
+        Run r = run(program);
+        assertEquals(expected, r.errors());
+        for (gcnc.diag.Diagnostic d : r.diagnostics.sorted()) {
+            for (gcnc.tables.ErrorMessages.Lang lang : gcnc.tables.ErrorMessages.Lang.values()) {
+                String text = Run.TABLES.messages().render(d.code(), d.args(), lang);
+                assertEquals(false, text.contains("{"), "every placeholder filled: " + text);
+            }
+        }
     }
 
     /** With the shipped Table 7 every function takes X; a table that forbids it makes 21 reachable. */
