@@ -119,6 +119,16 @@ public enum Code {
 
     // ---- gcnc's own codes ----
     // 100-199: checker (parse and check packages). Add new codes in number order below this line.
+    /** Checker: an arc's R is shorter than half the chord between its start and end points. */
+    E101_ARC_RADIUS_TOO_SMALL(101),
+    /** Checker: an I/K arc's end point is off the circle by more than the tolerance. */
+    E102_ARC_END_OFF_CIRCLE(102),
+    /** Checker: the feed exceeds the machine's maximum (feed.max). */
+    E103_FEED_ABOVE_MAXIMUM(103),
+    /** Checker: feed per revolution (G95/G99) with no spindle speed programmed. */
+    E104_FEED_PER_REV_NO_SPEED(104),
+    /** Checker: an R arc whose end point is its start point (a full circle needs I/K). */
+    E105_ARC_FULL_CIRCLE_WITH_R(105),
 
     // 200-299: Galil backend (galil package).
 

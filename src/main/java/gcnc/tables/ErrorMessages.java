@@ -9,6 +9,11 @@ import java.util.Map;
 
 /** Table 5 and gcnc's own codes: the message template of every code, in English and Spanish. */
 public final class ErrorMessages {
+    /** The same messages bound to one language, for renderers. */
+    public gcnc.diag.Messages in(Lang lang) {
+        return (code, args) -> render(code, args, lang);
+    }
+
     public enum Lang { EN, ES }
 
     private final Map<Code, String[]> templates;
@@ -19,6 +24,12 @@ public final class ErrorMessages {
 
     public boolean has(Code code) {
         return templates.containsKey(code);
+    }
+
+    /** The message template as written in errors.csv, placeholders {0}, {1}... unfilled. */
+    public String template(Code code, Lang lang) {
+        String[] t = templates.get(code);
+        return t == null ? "" : t[lang.ordinal()];
     }
 
     /** The message of a code with its arguments filled in. */

@@ -1,0 +1,37 @@
+#!/usr/bin/env python3
+"""Writes a long, valid turning program for the generic profile: roughing passes with arcs.
+
+usage: gen_program.py BLOCKS OUT.nc   (BLOCKS counts every block, header and footer included)
+"""
+import sys
+
+def main():
+    blocks, out = int(sys.argv[1]), sys.argv[2]
+    header = ["G21 G90 G98", "G50 S2500", "M11", "T0101", "S1200 M03", "G00 X52. Z2."]
+    footer = ["G00 X60. Z5.", "M05", "M30"]
+    body = blocks - len(header) - len(footer)
+    n = 10
+    with open(out, "w") as f:
+        f.write("O2000\n")
+        body -= 1
+        for b in header:
+            f.write(f"N{n} {b}\n"); n += 1
+        written = 0
+        d = 50.0
+        while written < body:
+            pass_blocks = [
+                f"G00 X{d:.3f} Z2.",
+                f"G01 Z-40.5 F120.",
+                f"G02 X{d + 2:.3f} Z-41.5 R1.",
+                f"G01 X{d + 4:.3f}",
+                "G00 Z2.",
+            ]
+            for b in pass_blocks[: body - written]:
+                f.write(f"N{n} {b}\n"); n += 1
+            written += len(pass_blocks)
+            d = d - 0.25 if d > 21 else 50.0
+        for b in footer:
+            f.write(f"N{n} {b}\n"); n += 1
+
+if __name__ == "__main__":
+    main()

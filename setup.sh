@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs what gcnc needs on a fresh Debian 12 machine with JDK 17: Debian's Gradle (4.4.1).
+# Safe to run again; it installs nothing that is already there.
+set -eu
+need=()
+command -v gradle >/dev/null 2>&1 || need+=(gradle)
+command -v java >/dev/null 2>&1 || need+=(openjdk-17-jdk-headless)
+if [ ${#need[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+java -version 2>&1 | grep -q '"17' || { echo "setup.sh: gcnc needs JDK 17 (java -version)" >&2; exit 2; }

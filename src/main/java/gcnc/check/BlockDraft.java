@@ -1,0 +1,160 @@
+package gcnc.check;
+
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.Letter;
+import gcnc.ir.MCall;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.Units;
+import gcnc.tables.Tables;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One block while it is being checked: the words each syntax action accepted, the block's
+ * functions, and the next modal state. Thrown away when the block has an error.
+ */
+public final class BlockDraft {
+    public static final int NONE = -1;
+    private static final int GROUPS = 20;
+    private static final int LETTERS = Letter.values().length;
+
+    public final RawBlock block;
+    public final ModalState prior;
+    public final ModalState.Next next;
+    public final Tables tables;
+    public final FunctionIndex functions;
+    public final MachineProfile profile;
+    public final gcnc.check.geom.Coordinates coordinates;
+    /** Units of the whole block: a G20/G21 anywhere in it (thesis applied them per word, §12.12). */
+    public final Units units;
+    /** No block was counted before this one (O must come first: error 34). */
+    public final boolean first;
+
+    private final Word[] words = new Word[LETTERS];
+    private final double[] values = new double[LETTERS];
+    private final Word[] gGroups = new Word[GROUPS];
+    private final Word[] mGroups = new Word[GROUPS];
+
+    /** The block's motion G (group 1) or NONE. */
+    public int motionG = NONE;
+    /** The block's one-shot G with parameters (4, 28, 29, 50, 92) or NONE (thesis GWP). */
+    public int oneShot = NONE;
+    public Word oneShotWord;
+    /** The function the block's parameters belong to (thesis nf), decided by Eb01. */
+    public int function = NONE;
+    /** The spindle M (3, 4, 19) applied before this block's motion, or NONE. */
+    public int spindleBefore = NONE;
+    public boolean g96;
+    public final List<MCall> before = new ArrayList<>(2);
+    public final List<MCall> after = new ArrayList<>(2);
+    private boolean failed;
+
+    public BlockDraft(RawBlock block, ModalState prior, Tables tables, FunctionIndex functions,
+                      MachineProfile profile, gcnc.check.geom.Coordinates coordinates, boolean first) {
+        this.block = block;
+        this.prior = prior;
+        this.next = prior.next();
+        this.tables = tables;
+        this.functions = functions;
+        this.profile = profile;
+        this.coordinates = coordinates;
+        this.first = first;
+        this.units = blockUnits(block, prior.units());
+        next.units = units;
+    }
+
+    private static Units blockUnits(RawBlock b, Units u) {
+        List<Word> ws = b.words();
+        for (int i = 0; i < ws.size(); i++) {
+            Word w = ws.get(i);
+            if (w.letter() == Letter.G) {
+                long g = NumberText.integer(w.number());
+                if (g == 20) {
+                    u = Units.INCH;
+                } else if (g == 21) {
+                    u = Units.MM;
+                }
+            }
+        }
+        return u;
+    }
+
+    /** Reports the block's first error; the checker stops working on the block after it. */
+    public void fail(Diagnostics out, Code code, Span where, Object... args) {
+        if (!failed) {
+            out.error(code, where, args);
+            failed = true;
+        }
+    }
+
+    public boolean failed() {
+        return failed;
+    }
+
+    public Word word(Letter l) {
+        return words[l.ordinal()];
+    }
+
+    public boolean has(Letter l) {
+        return words[l.ordinal()] != null;
+    }
+
+    /** The value of an accepted word: coordinates after the no-point rule, others as written. */
+    public double value(Letter l) {
+        return values[l.ordinal()];
+    }
+
+    public void accept(Word w, double value) {
+        words[w.letter().ordinal()] = w;
+        values[w.letter().ordinal()] = value;
+    }
+
+    /** The G already given in this block for a group, or null. */
+    public Word gInGroup(int group) {
+        return group >= 0 && group < GROUPS ? gGroups[group] : null;
+    }
+
+    public void setG(int group, Word w) {
+        if (group >= 0 && group < GROUPS) {
+            gGroups[group] = w;
+        }
+    }
+
+    public Word mInGroup(int group) {
+        return group > 0 && group < GROUPS ? mGroups[group] : null;
+    }
+
+    public void setM(int group, Word w) {
+        if (group > 0 && group < GROUPS) {
+            mGroups[group] = w;
+        }
+    }
+
+    /** Number of axis and radius words (thesis "mov": X Z U W R I K). */
+    public int motionWords() {
+        int n = 0;
+        for (Letter l : MOTION_WORDS) {
+            if (has(l)) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    public static final Letter[] MOTION_WORDS = {Letter.X, Letter.Z, Letter.U, Letter.W, Letter.R, Letter.I, Letter.K};
+
+    /** The first word of the block, where block-level errors such as 53 are reported. */
+    public Span firstSpan() {
+        return block.words().isEmpty() ? block.last() : block.words().get(0).span();
+    }
+
+    /** Where end-of-block errors go: the last word (thesis §10). */
+    public Span end() {
+        return block.last();
+    }
+}

@@ -1,0 +1,97 @@
+package gcnc.check;
+
+import gcnc.ir.Point;
+import gcnc.machine.Units;
+
+/**
+ * What the control remembers between blocks (thesis §9 of the reading). A new value per accepted
+ * block; a block with an error leaves it as it was (Grbl's atomic commit). NaN means "never set".
+ *
+ * @param motion       modal motion G (0-3), or -1 before the first one (thesis: coordinates then give 44)
+ * @param units        G20/G21
+ * @param incremental  G91 in force
+ * @param workOffset   54..59
+ * @param tool         tool number of the last T word (thesis default 1)
+ * @param toolOffset   tool offset number in force, 0 = none (thesis default 1)
+ * @param feed         F as programmed
+ * @param feedPerRev   G95/G99 in force (else G94/G98 per minute)
+ * @param css          G96 constant surface speed in force
+ * @param surfaceSpeed G96 S (m/min or ft/min)
+ * @param rpm          spindle speed commanded (G97 S or the last CSS speed)
+ * @param rpmClamp     G50 S maximum spindle speed
+ * @param spindle      last M of group 2 (3, 4, 5, 19) or -1 if none yet
+ * @param chuck        10 open, 11 closed, -1 unknown
+ * @param position     machine counts
+ * @param shift        G50/G92 position-register shift of the work coordinates, counts
+ * @param g28          intermediate point of the last G28, or null
+ * @param lastN        last N number, -1 before the first
+ * @param named        an O word was given
+ * @param ended        M30 was given
+ */
+public record ModalState(int motion, Units units, boolean incremental, int workOffset, int tool, int toolOffset,
+                         double feed, boolean feedPerRev, boolean css, double surfaceSpeed, double rpm,
+                         double rpmClamp, int spindle, int chuck, Point position, Point shift, Point g28,
+                         long lastN, boolean named, boolean ended) {
+
+    /** The state at program start: home, G21, G90, G54, tool 1 offset 1 (IniVariablesPrg). */
+    public static ModalState initial(Point home) {
+        return new ModalState(-1, Units.MM, false, 54, 1, 1, Double.NaN, false, false, Double.NaN, Double.NaN,
+                Double.NaN, -1, -1, home, Point.ORIGIN, null, -1, false, false);
+    }
+
+    public Next next() {
+        return new Next(this);
+    }
+
+    /** The state being built by one block; {@link #build()} commits it. */
+    public static final class Next {
+        public int motion;
+        public Units units;
+        public boolean incremental;
+        public int workOffset;
+        public int tool;
+        public int toolOffset;
+        public double feed;
+        public boolean feedPerRev;
+        public boolean css;
+        public double surfaceSpeed;
+        public double rpm;
+        public double rpmClamp;
+        public int spindle;
+        public int chuck;
+        public Point position;
+        public Point shift;
+        public Point g28;
+        public long lastN;
+        public boolean named;
+        public boolean ended;
+
+        Next(ModalState s) {
+            motion = s.motion;
+            units = s.units;
+            incremental = s.incremental;
+            workOffset = s.workOffset;
+            tool = s.tool;
+            toolOffset = s.toolOffset;
+            feed = s.feed;
+            feedPerRev = s.feedPerRev;
+            css = s.css;
+            surfaceSpeed = s.surfaceSpeed;
+            rpm = s.rpm;
+            rpmClamp = s.rpmClamp;
+            spindle = s.spindle;
+            chuck = s.chuck;
+            position = s.position;
+            shift = s.shift;
+            g28 = s.g28;
+            lastN = s.lastN;
+            named = s.named;
+            ended = s.ended;
+        }
+
+        public ModalState build() {
+            return new ModalState(motion, units, incremental, workOffset, tool, toolOffset, feed, feedPerRev, css,
+                    surfaceSpeed, rpm, rpmClamp, spindle, chuck, position, shift, g28, lastN, named, ended);
+        }
+    }
+}

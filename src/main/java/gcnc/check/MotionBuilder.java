@@ -1,0 +1,142 @@
+package gcnc.check;
+
+import gcnc.check.geom.Arcs;
+import gcnc.check.geom.Coordinates;
+import gcnc.check.geom.Feeds;
+import gcnc.check.geom.NumberText;
+import gcnc.check.geom.SpindleSpeed;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Feed;
+import gcnc.ir.Letter;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.ir.Word;
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.OptionalDouble;
+import java.util.OptionalInt;
+
+/**
+ * Turns a block that passed its checks into what the machine does (reading §7): the end point of
+ * each motion in machine counts, checked against the travel (E015 at the axis word), the arc
+ * geometry, the spindle speed and the feed. Returns null after reporting an error.
+ */
+final class MotionBuilder {
+    private final MachineProfile p;
+    private final Coordinates coordinates;
+    private final Arcs arcs;
+    private final Feeds feeds;
+    private final SpindleSpeed spindle;
+
+    MotionBuilder(MachineProfile p, Coordinates coordinates) {
+        this.p = p;
+        this.coordinates = coordinates;
+        this.arcs = new Arcs(p, coordinates);
+        this.feeds = new Feeds(p);
+        this.spindle = new SpindleSpeed(p, coordinates);
+    }
+
+    CheckedBlock build(BlockDraft d, Diagnostics out) {
+        Point from = d.prior.position();
+        List<Motion> motions = new ArrayList<>(2);
+        Point end = from;
+        boolean axis = d.has(Letter.X) || d.has(Letter.Z) || d.has(Letter.U) || d.has(Letter.W);
+        switch (d.function) {
+            case 0, 1, 2, 3 -> {
+                if (axis || d.function >= 2) {
+                    end = checked(d, coordinates.target(d, from), out);
+                }
+            }
+            case 4 -> motions.add(new Motion.Dwell(dwellSeconds(d)));
+            case 28 -> {
+                Point via = d.next.g28;
+                Point home = p.home();
+                end = new Point(has(d, Letter.X, Letter.U) ? home.x() : via.x(),
+                        has(d, Letter.Z, Letter.W) ? home.z() : via.z());
+                motions.add(new Motion.Linear(true, from, via, null));
+                motions.add(new Motion.Linear(true, via, end, null));
+            }
+            case 29 -> {
+                Point via = d.prior.g28();
+                end = checked(d, coordinates.target(d, via), out);
+                if (end != null) {
+                    motions.add(new Motion.Linear(true, from, via, null));
+                    motions.add(new Motion.Linear(true, via, end, null));
+                }
+            }
+            case 50, 92 -> register(d);
+            default -> {
+            }
+        }
+        if (end == null) {
+            return null;
+        }
+        double rpm = spindle.rpm(d, end);
+        d.next.rpm = rpm;
+        if (d.function >= 0 && d.function <= 3 && (axis || d.function >= 2)) {
+            Motion m = move(d, from, end, rpm, out);
+            if (m == null) {
+                return null;
+            }
+            motions.add(m);
+        }
+        d.next.position = end;
+        boolean speedChanged = d.has(Letter.S) && d.function != 50
+                || d.next.css && Double.compare(rpm, d.prior.rpm()) != 0;
+        return new CheckedBlock(d.block.line(), speedChanged && !Double.isNaN(rpm) ? OptionalDouble.of(rpm)
+                : OptionalDouble.empty(), d.has(Letter.T) ? OptionalInt.of(d.next.tool) : OptionalInt.empty(),
+                d.before, motions, d.after, end);
+    }
+
+    private Motion move(BlockDraft d, Point from, Point end, double rpm, Diagnostics out) {
+        if (d.function == 0) {
+            return new Motion.Linear(true, from, end, null);
+        }
+        Feed feed = feeds.feed(d, rpm, out);
+        if (feed == null) {
+            return null;
+        }
+        return d.function == 1 ? new Motion.Linear(false, from, end, feed) : arcs.arc(d, from, end, feed, out);
+    }
+
+    private Point checked(BlockDraft d, Point end, Diagnostics out) {
+        Word bad = coordinates.outOfTravel(d, end);
+        if (bad != null) {
+            d.fail(out, Code.E015_OUT_OF_RANGE, bad.span(), bad.letter(), bad.number());
+            return null;
+        }
+        return end;
+    }
+
+    private static boolean has(BlockDraft d, Letter a, Letter b) {
+        return d.has(a) || d.has(b);
+    }
+
+    /** G04: P milliseconds, else X or U seconds (no-point rule of mm: X1 = 1 ms on a Fanuc). */
+    private double dwellSeconds(BlockDraft d) {
+        if (d.has(Letter.P)) {
+            return d.value(Letter.P) / 1000;
+        }
+        Word w = d.has(Letter.X) ? d.word(Letter.X) : d.word(Letter.U);
+        double v = NumberText.decimal(w.number());
+        return NumberText.hasPoint(w.number()) ? v : v * p.noPointMm();
+    }
+
+    /** G50/G92 X Z: shift the work coordinates so the current position reads X Z. */
+    private void register(BlockDraft d) {
+        Point pos = d.prior.position();
+        Point o = coordinates.offsets(d.next);
+        double sx = d.next.shift.x();
+        double sz = d.next.shift.z();
+        if (d.has(Letter.X)) {
+            sx = pos.x() - o.x() - d.value(Letter.X) * coordinates.perX(d.units);
+        }
+        if (d.has(Letter.Z)) {
+            sz = pos.z() - o.z() - d.value(Letter.Z) * coordinates.perZ(d.units);
+        }
+        d.next.shift = new Point(sx, sz);
+    }
+}

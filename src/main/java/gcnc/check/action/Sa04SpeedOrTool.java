@@ -1,0 +1,61 @@
+package gcnc.check.action;
+
+import gcnc.check.BlockDraft;
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
+import gcnc.ir.Word;
+
+/**
+ * Thesis §4.2.2 action 4 ({@code ChkActiveParameter} for S and T, reading §5). S: once, an
+ * integer within Table 6 (its meaning is settled at the end of the block: G50 clamp, G96 surface
+ * speed or rpm). T{@code tt}{@code oo}: tool = all digits but the last two, offset = the last two;
+ * one or two digits ({@code T1}, {@code T01}) select that tool with the offset of the same number
+ * (the thesis crashed on them, §12.14). Offset 0 cancels the tool offset.
+ * Emits E006, E007, E008, E009, E013, E046, E047. Writes next.tool, next.toolOffset.
+ */
+public final class Sa04SpeedOrTool implements SyntaxAction {
+    @Override
+    public int number() {
+        return 4;
+    }
+
+    @Override
+    public void apply(Word w, BlockDraft d, Diagnostics out) {
+        Letter l = w.letter();
+        if (d.has(l)) {
+            d.fail(out, Code.E007_DUPLICATE_PARAMETER, w.span(), l);
+            return;
+        }
+        if (w.number().isEmpty()) {
+            d.fail(out, Code.E006_NUMBER_EXPECTED, w.span(), l);
+            return;
+        }
+        long n = NumberText.integer(w.number());
+        if (n == NumberText.NOT_INTEGER) {
+            d.fail(out, Code.E013_INTEGER_EXPECTED, w.span(), l);
+            return;
+        }
+        if (l == Letter.S) {
+            if (Limits.within(w, n, d, out)) {
+                d.accept(w, n);
+            }
+            return;
+        }
+        int digits = w.number().length();
+        long tool = digits <= 2 ? n : n / 100;
+        long offset = digits <= 2 ? n : n % 100;
+        if (tool < 1 || tool > d.profile.tools()) {
+            d.fail(out, Code.E046_UNDEFINED_TOOL, w.span(), tool);
+            return;
+        }
+        if (offset != 0 && d.profile.toolOffset((int) offset).isEmpty()) {
+            d.fail(out, Code.E047_TOOL_OFFSET_RANGE, w.span(), offset);
+            return;
+        }
+        d.accept(w, tool);
+        d.next.tool = (int) tool;
+        d.next.toolOffset = (int) offset;
+    }
+}

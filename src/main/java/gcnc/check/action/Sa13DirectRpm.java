@@ -1,0 +1,29 @@
+package gcnc.check.action;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Word;
+
+/**
+ * Thesis §4.2.2 action 13: G97, direct rpm (cancels G96). The thesis made it a one-shot that
+ * demanded S; gcnc treats it as the modal group-17 code it is (Fanuc): S in the same or a later
+ * block is an rpm. Emits E016 (G96 and G97 together). Writes next.css.
+ */
+public final class Sa13DirectRpm implements SyntaxAction {
+    @Override
+    public int number() {
+        return 13;
+    }
+
+    @Override
+    public void apply(Word w, BlockDraft d, Diagnostics out) {
+        Word earlier = d.gInGroup(17);
+        if (earlier != null) {
+            d.fail(out, Code.E016_GROUP_CONFLICT, w.span(), earlier);
+            return;
+        }
+        d.setG(17, w);
+        d.next.css = false;
+    }
+}

@@ -1,0 +1,15 @@
+package gcnc.check.block;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Diagnostics;
+
+/**
+ * One of the 8 end-of-block operations of thesis §4.2.2 (L879-887; reading §6, §7.2), run once
+ * every word of the block has been read. Reports through {@link BlockDraft#fail}.
+ */
+public interface BlockCheck {
+    /** The thesis's operation number, 1..8. */
+    int number();
+
+    void run(BlockDraft d, Diagnostics out);
+}

@@ -1,0 +1,84 @@
+package gcnc.check.block;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
+import gcnc.tables.Tables.Param;
+import java.util.Set;
+
+/**
+ * Thesis end-of-block operation 1: the block's parameters belong to a function (Table 7). The
+ * function is the block's one-shot G, else its motion G, else (axis words only) the modal motion;
+ * axis words with no motion in force are 44, a P with no function 32. Then Table 7, which was dead
+ * code in the thesis (§12.1): X 21, Z 22, U 23, W 24, R 25, I 26, K 27, X with U 28, Z with W 29,
+ * P 36. Emits E021-E029, E032, E036, E044. Writes d.function.
+ */
+public final class Eb01ParameterOwner implements BlockCheck {
+    private static final Letter[] ORDER = {Letter.X, Letter.Z, Letter.U, Letter.W, Letter.R, Letter.I, Letter.K};
+    private static final Code[] NOT_ALLOWED = {Code.E021_X_NOT_ALLOWED, Code.E022_Z_NOT_ALLOWED,
+        Code.E023_U_NOT_ALLOWED, Code.E024_W_NOT_ALLOWED, Code.E025_R_NOT_ALLOWED, Code.E026_I_NOT_ALLOWED,
+        Code.E027_K_NOT_ALLOWED};
+    private static final Param[] PARAMS = {Param.X, Param.Z, Param.U, Param.W, Param.R, Param.I, Param.K};
+
+    @Override
+    public int number() {
+        return 1;
+    }
+
+    @Override
+    public void run(BlockDraft d, Diagnostics out) {
+        int mov = d.motionWords();
+        if (d.oneShot != BlockDraft.NONE) {
+            d.function = d.oneShot;
+        } else if (d.motionG != BlockDraft.NONE) {
+            d.function = d.motionG;
+        } else if (mov > 0) {
+            if (d.prior.motion() == BlockDraft.NONE) {
+                d.fail(out, Code.E044_NO_MOTION_G, d.end(), firstMotionWord(d));
+                return;
+            }
+            d.function = d.prior.motion();
+        } else if (d.has(Letter.P)) {
+            d.fail(out, Code.E032_UNASSOCIATED_PARAMETER, d.end(), Letter.P);
+            return;
+        }
+        if (d.function != BlockDraft.NONE) {
+            allowed(d, out);
+        }
+    }
+
+    private static void allowed(BlockDraft d, Diagnostics out) {
+        Set<Param> ok = d.functions.allowed(d.function);
+        if (ok == null) {
+            return;
+        }
+        String name = gName(d.function);
+        for (int i = 0; i < ORDER.length; i++) {
+            if (d.has(ORDER[i]) && !ok.contains(PARAMS[i])) {
+                d.fail(out, NOT_ALLOWED[i], d.word(ORDER[i]).span(), name);
+                return;
+            }
+        }
+        if (d.has(Letter.X) && d.has(Letter.U)) {
+            d.fail(out, Code.E028_X_AND_U, d.word(Letter.U).span());
+        } else if (d.has(Letter.Z) && d.has(Letter.W)) {
+            d.fail(out, Code.E029_Z_AND_W, d.word(Letter.W).span());
+        } else if (d.has(Letter.P) && !ok.contains(Param.P)) {
+            d.fail(out, Code.E036_P_NOT_ALLOWED, d.word(Letter.P).span(), name);
+        }
+    }
+
+    private static Letter firstMotionWord(BlockDraft d) {
+        for (Letter l : BlockDraft.MOTION_WORDS) {
+            if (d.has(l)) {
+                return l;
+            }
+        }
+        return Letter.X;
+    }
+
+    static String gName(int g) {
+        return g < 10 ? "G0" + g : "G" + g;
+    }
+}

@@ -1,0 +1,33 @@
+package gcnc.check.block;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Point;
+import gcnc.ir.Word;
+
+/**
+ * Thesis end-of-block operation 2: G28 remembers its intermediate point (for G29). The point is
+ * the block's X/Z (G90/G91) or U/W, in machine counts; it must be inside the travel (E015).
+ * The thesis's G28 fell through into G29 and forgot it (§12.7). Emits E015. Writes next.g28.
+ */
+public final class Eb02G28Point implements BlockCheck {
+    @Override
+    public int number() {
+        return 2;
+    }
+
+    @Override
+    public void run(BlockDraft d, Diagnostics out) {
+        if (d.function != 28) {
+            return;
+        }
+        Point via = d.coordinates.target(d, d.prior.position());
+        Word bad = d.coordinates.outOfTravel(d, via);
+        if (bad != null) {
+            d.fail(out, Code.E015_OUT_OF_RANGE, bad.span(), bad.letter(), bad.number());
+            return;
+        }
+        d.next.g28 = via;
+    }
+}

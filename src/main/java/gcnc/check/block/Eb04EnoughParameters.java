@@ -1,0 +1,51 @@
+package gcnc.check.block;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
+
+/**
+ * Thesis end-of-block operation 4: a function has the parameters it needs. G04 needs X, U or P;
+ * G28, G29 and G92 an axis word (30); G50 S or X/Z (31); G96 an S (31, gcnc: the surface speed
+ * belongs with the mode); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
+ * raised 52 for a missing I/K, §12.10). Emits E030, E031, E049.
+ */
+public final class Eb04EnoughParameters implements BlockCheck {
+    @Override
+    public int number() {
+        return 4;
+    }
+
+    @Override
+    public void run(BlockDraft d, Diagnostics out) {
+        boolean axis = d.has(Letter.X) || d.has(Letter.Z) || d.has(Letter.U) || d.has(Letter.W);
+        switch (d.function) {
+            case 4 -> {
+                if (!d.has(Letter.X) && !d.has(Letter.U) && !d.has(Letter.P)) {
+                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), "G04");
+                }
+            }
+            case 28, 29, 92 -> {
+                if (!axis) {
+                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), Eb01ParameterOwner.gName(d.function));
+                }
+            }
+            case 50 -> {
+                if (!axis && !d.has(Letter.S)) {
+                    d.fail(out, Code.E031_S_EXPECTED, d.end(), "G50");
+                }
+            }
+            case 2, 3 -> {
+                if (!d.has(Letter.R) && !d.has(Letter.I) && !d.has(Letter.K)) {
+                    d.fail(out, Code.E049_NO_ARC_RADIUS, d.end());
+                }
+            }
+            default -> {
+            }
+        }
+        if (d.g96 && !d.has(Letter.S)) {
+            d.fail(out, Code.E031_S_EXPECTED, d.end(), "G96");
+        }
+    }
+}

@@ -1,0 +1,25 @@
+package gcnc.check.block;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+
+/**
+ * Thesis end-of-block operation 5: only one function of the block may take its parameters, so a
+ * one-shot G with parameters (G04, G28, G29, G50, G92) and a motion G cannot share a block.
+ * (Two one-shots are already 17-20 in actions 5-9.) Emits E035.
+ */
+public final class Eb05SingleParameterFunction implements BlockCheck {
+    @Override
+    public int number() {
+        return 5;
+    }
+
+    @Override
+    public void run(BlockDraft d, Diagnostics out) {
+        if (d.oneShot != BlockDraft.NONE && d.motionG != BlockDraft.NONE) {
+            d.fail(out, Code.E035_TWO_G_WITH_PARAMETERS, d.end(), Eb01ParameterOwner.gName(d.motionG),
+                    Eb01ParameterOwner.gName(d.oneShot));
+        }
+    }
+}

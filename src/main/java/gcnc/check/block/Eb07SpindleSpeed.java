@@ -1,0 +1,46 @@
+package gcnc.check.block;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
+import gcnc.ir.Word;
+
+/**
+ * Thesis end-of-block operation 7: an S outside a G50 block needs a G50 clamp first (50). Under
+ * G96 it is the surface speed; otherwise an rpm that may not exceed the G50 clamp (48, which the
+ * thesis never raised: it compared volts with rpm, §12.9) nor the machine (15 at the S word).
+ * Emits E015, E048, E050. Writes next.rpm, next.surfaceSpeed.
+ */
+public final class Eb07SpindleSpeed implements BlockCheck {
+    @Override
+    public int number() {
+        return 7;
+    }
+
+    @Override
+    public void run(BlockDraft d, Diagnostics out) {
+        if (!d.has(Letter.S) || d.function == 50) {
+            return;
+        }
+        double s = d.value(Letter.S);
+        if (Double.isNaN(d.next.rpmClamp)) {
+            d.fail(out, Code.E050_S_BEFORE_G50, d.end());
+            return;
+        }
+        if (d.next.css) {
+            d.next.surfaceSpeed = s;
+            return;
+        }
+        Word w = d.word(Letter.S);
+        if (s > d.next.rpmClamp) {
+            d.fail(out, Code.E048_S_ABOVE_G50, d.end(), w.number(), (long) d.next.rpmClamp);
+            return;
+        }
+        if (s > d.profile.maxRpm()) {
+            d.fail(out, Code.E015_OUT_OF_RANGE, w.span(), Letter.S, w.number());
+            return;
+        }
+        d.next.rpm = s;
+    }
+}

@@ -1,0 +1,110 @@
+package gcnc.check.geom;
+
+import gcnc.check.BlockDraft;
+import gcnc.check.ModalState;
+import gcnc.ir.Letter;
+import gcnc.ir.Point;
+import gcnc.ir.Word;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.Units;
+
+/**
+ * Programmed coordinates to machine counts: units of the whole block, X/U as diameters when the
+ * profile says so, G90/G91 (X/Z absolute or incremental, U/W always incremental), and the work
+ * coordinate origin = work offset (G54-G59) + tool offset (T) + the G50/G92 shift, all taken
+ * from the block's own new state, so they apply to the block they appear in.
+ */
+public final class Coordinates {
+    private final MachineProfile p;
+    /** G54..G59 and tool offsets 0..99 as arrays: no map look-up per block. */
+    private final Point[] work = new Point[100];
+    private final Point[] tool = new Point[100];
+
+    public Coordinates(MachineProfile p) {
+        this.p = p;
+        for (int i = 0; i < 100; i++) {
+            work[i] = p.workOffset(i).orElse(Point.ORIGIN);
+            tool[i] = i == 0 ? Point.ORIGIN : p.toolOffset(i).orElse(Point.ORIGIN);
+        }
+    }
+
+    /** Counts per programmed unit of X and U (half when X is a diameter). */
+    public double perX(Units u) {
+        return p.x().countsPer(u) / (p.diameterX() ? 2 : 1);
+    }
+
+    /** Counts per programmed unit of a radius along X (I, R: always a radius). */
+    public double perRadius(Units u) {
+        return p.x().countsPer(u);
+    }
+
+    public double perZ(Units u) {
+        return p.z().countsPer(u);
+    }
+
+    /** Work offset + tool offset, machine counts (no G50/G92 shift). */
+    public Point offsets(ModalState.Next s) {
+        Point w = work[s.workOffset];
+        Point t = tool[s.toolOffset];
+        return new Point(w.x() + t.x(), w.z() + t.z());
+    }
+
+    /** Where the block's work coordinate zero is, machine counts. */
+    public Point origin(ModalState.Next s) {
+        Point o = offsets(s);
+        return o.plus(s.shift.x(), s.shift.z());
+    }
+
+    /**
+     * The end of the block's X/Z/U/W words: absolute words from the work origin (or from
+     * {@code base} under G91), U/W from {@code base}. Axes without a word stay at {@code base}.
+     */
+    public Point target(BlockDraft d, Point base) {
+        Point o = origin(d.next);
+        Units u = d.units;
+        double x = base.x();
+        double z = base.z();
+        if (d.has(Letter.X)) {
+            double v = d.value(Letter.X) * perX(u);
+            x = d.next.incremental ? base.x() + v : o.x() + v;
+        } else if (d.has(Letter.U)) {
+            x = base.x() + d.value(Letter.U) * perX(u);
+        }
+        if (d.has(Letter.Z)) {
+            double v = d.value(Letter.Z) * perZ(u);
+            z = d.next.incremental ? base.z() + v : o.z() + v;
+        } else if (d.has(Letter.W)) {
+            z = base.z() + d.value(Letter.W) * perZ(u);
+        }
+        return new Point(x, z);
+    }
+
+    /** The X/U or Z/W word that puts {@code end} outside the machine's travel; null when inside. */
+    public Word outOfTravel(BlockDraft d, Point end) {
+        if (!p.x().inTravel(end.x())) {
+            return axisWord(d, Letter.X, Letter.U);
+        }
+        if (!p.z().inTravel(end.z())) {
+            return axisWord(d, Letter.Z, Letter.W);
+        }
+        return null;
+    }
+
+    /** Whether {@code end} is inside the travel of both axes. */
+    public boolean inTravel(Point end) {
+        return p.x().inTravel(end.x()) && p.z().inTravel(end.z());
+    }
+
+    private static Word axisWord(BlockDraft d, Letter a, Letter b) {
+        Word w = d.word(a);
+        if (w == null) {
+            w = d.word(b);
+        }
+        return w != null ? w : d.block.words().get(d.block.words().size() - 1);
+    }
+
+    /** The part diameter at a machine point, mm (G96): twice its distance from work X zero. */
+    public double diameterMm(Point machine, ModalState.Next s) {
+        return 2 * Math.abs(machine.x() - origin(s).x()) / p.x().countsPerMm();
+    }
+}

@@ -1,0 +1,45 @@
+package gcnc.check.geom;
+
+import gcnc.check.BlockDraft;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.Feed;
+import gcnc.ir.Letter;
+import gcnc.machine.MachineProfile;
+
+/**
+ * F to a path speed in counts per second: G94/G98 units per minute, G95/G99 units per
+ * revolution at the spindle speed of the move. A feed above the profile's maximum is an error
+ * (E103), not a silent clamp: the part would be cut slower than programmed. Per revolution
+ * without any spindle speed is E104.
+ */
+public final class Feeds {
+    private final MachineProfile p;
+
+    public Feeds(MachineProfile p) {
+        this.p = p;
+    }
+
+    /** The feed of a cutting move at {@code rpm}, or null after reporting. */
+    public Feed feed(BlockDraft d, double rpm, Diagnostics out) {
+        double f = d.next.feed;
+        double perUnit = p.z().countsPer(d.units);
+        Span at = d.has(Letter.F) ? d.word(Letter.F).span() : d.end();
+        double cps;
+        if (d.next.feedPerRev) {
+            if (!(rpm > 0)) {
+                d.fail(out, Code.E104_FEED_PER_REV_NO_SPEED, at);
+                return null;
+            }
+            cps = f * rpm / 60 * perUnit;
+        } else {
+            cps = f / 60 * perUnit;
+        }
+        if (cps > p.maxFeed()) {
+            d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, Arcs.round(cps), Arcs.round(p.maxFeed()));
+            return null;
+        }
+        return new Feed(f, cps);
+    }
+}

@@ -1,0 +1,67 @@
+package gcnc.check;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.Random;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Seeded word soup: the checker never throws, and each block is either accepted without a
+ * finding or rejected with exactly one numbered diagnostic; a rejected block keeps the state.
+ */
+class RandomProgramTest {
+    private static final String[] NUMBERS = {"", "0", "1", "01", "03", "30", "00", "5", "10", "11", "20", "28",
+        "29", "50", "92", "96", "97", "99", "1.5", "-2.", "+3", "-.5", ".", "-", "1.2.3", "0101", "9999999999999999999",
+        "12345678901234567890.5", "x", "40.", "-30.", "1e5", "2500", "1200"};
+    private static final Letter[] LETTERS = Letter.values();
+
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {1, 2, 3, 42, 2004, 31337})
+    void neverThrowsAndEveryRejectionIsOneDiagnostic(long seed) {
+        Random rnd = new Random(seed);
+        for (String profile : new String[] {"generic", "thesis-2004"}) {
+            MachineProfile p = Run.profile(profile);
+            for (int prog = 0; prog < 100; prog++) {
+                Diagnostics out = new Diagnostics();
+                Checker c = new Checker(Run.TABLES, p, out);
+                for (int line = 1; line <= 40; line++) {
+                    RawBlock b = block(rnd, line);
+                    int before = out.size();
+                    ModalState state = c.state();
+                    Optional<CheckedBlock> r = c.check(b);
+                    String where = "seed " + seed + " " + profile + " program " + prog + " line " + line + ": " + b.words();
+                    if (r.isPresent()) {
+                        assertEquals(before, out.size(), where);
+                    } else {
+                        assertEquals(before + 1, out.size(), where);
+                        assertEquals(state, c.state(), where);
+                    }
+                }
+                c.finish(40);
+                assertTrue(out.sorted().stream().allMatch(d -> d.code().number() > 0));
+            }
+        }
+    }
+
+    private static RawBlock block(Random rnd, int line) {
+        int n = 1 + rnd.nextInt(6);
+        List<Word> words = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            Letter l = LETTERS[rnd.nextInt(LETTERS.length)];
+            words.add(new Word(l, NUMBERS[rnd.nextInt(NUMBERS.length)], Span.of(line, 1 + 6 * i)));
+        }
+        return new RawBlock(line, words, words.get(n - 1).span(), false);
+    }
+}

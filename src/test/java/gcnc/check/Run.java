@@ -1,0 +1,122 @@
+package gcnc.check;
+
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileLoader;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Test utility: runs the checker over a program without the parser. Words are split on spaces;
+ * a token is a letter and its number text; "(..." tokens are comments and skipped; blank lines
+ * count as lines but make no block.
+ */
+final class Run {
+    static final Tables TABLES = Tables.builtIn();
+
+    final Diagnostics diagnostics = new Diagnostics();
+    final List<CheckedBlock> blocks = new ArrayList<>();
+    final Checker checker;
+
+    private Run(MachineProfile p, int cap) {
+        checker = new Checker(TABLES, p, diagnostics, cap);
+    }
+
+    static MachineProfile profile(String name) {
+        try {
+            return ProfileLoader.load(name, TableSource.builtIn(), TABLES);
+        } catch (TableException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    static Run generic(String program) {
+        return of("generic", program);
+    }
+
+    static Run thesis(String program) {
+        return of("thesis-2004", program);
+    }
+
+    static Run of(String profile, String program) {
+        return of(profile(profile), program, Checker.ERROR_CAP);
+    }
+
+    static Run of(MachineProfile p, String program, int cap) {
+        Run r = new Run(p, cap);
+        String[] lines = program.split("\n", -1);
+        int last = 0;
+        for (int i = 0; i < lines.length; i++) {
+            RawBlock b = block(i + 1, lines[i]);
+            if (b != null) {
+                last = i + 1;
+                r.checker.check(b).ifPresent(r.blocks::add);
+            }
+        }
+        r.checker.finish(last);
+        return r;
+    }
+
+    /** One line as the parser would hand it over (null when it has no word). */
+    static RawBlock block(int line, String program) {
+        char[] cs = program.toCharArray();
+        boolean comment = false;
+        for (int k = 0; k < cs.length; k++) {
+            comment |= cs[k] == '(';
+            if (comment) {
+                comment = cs[k] != ')';
+                cs[k] = ' ';
+            }
+        }
+        String text = new String(cs);
+        List<Word> words = new ArrayList<>();
+        int i = 0;
+        while (i < text.length()) {
+            if (text.charAt(i) == ' ') {
+                i++;
+                continue;
+            }
+            int end = text.indexOf(' ', i);
+            end = end < 0 ? text.length() : end;
+            {
+                Letter l = Letter.of(text.charAt(i));
+                if (l == null) {
+                    throw new IllegalArgumentException("test program has no such letter: " + text.substring(i, end));
+                }
+                words.add(new Word(l, text.substring(i + 1, end), Span.of(line, i + 1)));
+            }
+            i = end;
+        }
+        return words.isEmpty() ? null : new RawBlock(line, words, words.get(words.size() - 1).span(), false);
+    }
+
+    /** The findings as "line:column:E0nn", in report order, comma separated. */
+    String errors() {
+        StringBuilder sb = new StringBuilder();
+        for (Diagnostic d : diagnostics.sorted()) {
+            if (sb.length() > 0) {
+                sb.append(", ");
+            }
+            sb.append(d.span().line()).append(':').append(d.span().column()).append(':').append(d.code().id());
+        }
+        return sb.toString();
+    }
+
+    CheckedBlock line(int n) {
+        for (CheckedBlock b : blocks) {
+            if (b.line() == n) {
+                return b;
+            }
+        }
+        throw new AssertionError("no checked block for line " + n + "; errors: " + errors());
+    }
+}
