@@ -27,6 +27,11 @@ final class MotionChecks {
     private final List<Drawing.Move> moves;
     private final List<Drawing.Mark> marks;
     private int tool;
+    /** {rMin, rMax, zMin, zMax} of the chuck and tailstock (counts, radius), empty = none. */
+    private final double[] chuckBox;
+    private final double[] tailBox;
+    /** How far the tool outline reaches from its tip: {dr-, dr+, dz-, dz+}. */
+    private double[] reach = new double[4];
     private SimMachine.ToolShape toolShape;
     private int sequences;
     private int segments;
@@ -52,6 +57,43 @@ final class MotionChecks {
         moves = options.keepPath() ? new ArrayList<>() : null;
         marks = options.keepPath() ? new ArrayList<>() : null;
         toolShape = machine == null ? null : machine.defaultTool();
+        chuckBox = machine == null ? null : box(machine.chuck());
+        tailBox = machine == null ? null : box(machine.tailstock());
+        reach = reach(toolShape);
+    }
+
+    private static double[] box(Shape[] shapes) {
+        if (shapes.length == 0) {
+            return null;
+        }
+        double[] b = {Double.MAX_VALUE, -Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (Shape s : shapes) {
+            for (int i = 0; i < s.size(); i++) {
+                b[0] = Math.min(b[0], s.r()[i]);
+                b[1] = Math.max(b[1], s.r()[i]);
+                b[2] = Math.min(b[2], s.z()[i]);
+                b[3] = Math.max(b[3], s.z()[i]);
+            }
+        }
+        return b;
+    }
+
+    private static double[] reach(SimMachine.ToolShape t) {
+        if (t == null) {
+            return new double[4];
+        }
+        double[] b = box(t.parts());
+        return new double[] {Math.min(0, b[0]), Math.max(0, b[1]), Math.min(0, b[2]), Math.max(0, b[3])};
+    }
+
+    /** Can the tool, its tip anywhere in the segment box {xMin, xMax, zMin, zMax}, reach the obstacle box? */
+    private boolean near(double[] obstacle, double[] seg) {
+        if (obstacle == null) {
+            return false;
+        }
+        double c = machine.centreX();
+        return seg[0] - c + reach[0] < obstacle[1] + tol && seg[1] - c + reach[1] > obstacle[0] - tol
+                && seg[2] + reach[2] < obstacle[3] + tol && seg[3] + reach[3] > obstacle[2] - tol;
     }
 
     int tool() {
@@ -62,6 +104,7 @@ final class MotionChecks {
         tool = n;
         if (machine != null) {
             toolShape = machine.tool(n);
+            reach = reach(toolShape);
         }
     }
 
@@ -90,6 +133,13 @@ final class MotionChecks {
                     profile.x().countsPerMm());
             travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
+            double rMin = box[0] - centre();
+            boolean nearChuck = machine != null && near(chuckBox, box);
+            boolean nearTail = machine != null && near(tailBox, box);
+            boolean nearStock = stock != null && stock.mayTouch(box[2], box[3], rMin, tol);
+            if (poly == null && !nearChuck && !nearTail && !nearStock) {
+                continue;
+            }
             int n = s.pieces();
             double[] a = s.at(0);
             if (poly != null) {
@@ -103,15 +153,15 @@ final class MotionChecks {
                 if (machine != null) {
                     double ar = a[0] - machine.centreX();
                     double br = b[0] - machine.centreX();
-                    if (!chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
+                    if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
                         chuckHit = true;
                         mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
                     }
-                    if (!tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
+                    if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
                         tailHit = true;
                         mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
                     }
-                    if (stock != null) {
+                    if (nearStock) {
                         int cell = stock.cut(a[1], ar, b[1], br, tol);
                         if (rapid && cell >= 0 && !stockHit) {
                             stockHit = true;

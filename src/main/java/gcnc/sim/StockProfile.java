@@ -33,6 +33,21 @@ final class StockProfile {
         return z0 + step * CELLS;
     }
 
+    /** Could a move whose tip stays in this box (z range, smallest radius) touch material? */
+    boolean mayTouch(double zLo, double zHi, double rMin, double slack) {
+        if (zHi < z0 || zLo > face()) {
+            return false;
+        }
+        int lo = Math.max(0, (int) ((zLo - z0) / step) / BLOCK);
+        int hi = Math.min(blockMax.length - 1, (int) ((zHi - z0) / step) / BLOCK);
+        for (int b = lo; b <= hi; b++) {
+            if (rMin < blockMax[b] - slack) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     double initialRadius() {
         return initialRadius;
     }
