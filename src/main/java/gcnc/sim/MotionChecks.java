@@ -1,12 +1,9 @@
 package gcnc.sim;
 
 import gcnc.diag.Code;
-import gcnc.ir.ArcGeometry;
 import gcnc.ir.Motion;
-import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -24,8 +21,8 @@ final class MotionChecks {
     private final Reporter out;
     private final double tol;
     private final StockProfile stock;
-    private final List<Drawing.Move> moves;
-    private final List<Drawing.Mark> marks;
+    private final PathRecorder path;
+    private final Conformance conformance;
     private int tool;
     /** {rMin, rMax, zMin, zMax} of the chuck and tailstock (counts, radius), empty = none. */
     private final double[] chuckBox;
@@ -54,8 +51,8 @@ final class MotionChecks {
         } else {
             stock = null;
         }
-        moves = options.keepPath() ? new ArrayList<>() : null;
-        marks = options.keepPath() ? new ArrayList<>() : null;
+        path = options.keepPath() ? new PathRecorder(profile, machine == null ? 0 : machine.centreX()) : null;
+        conformance = new Conformance(out, path, tol);
         toolShape = machine == null ? null : machine.defaultTool();
         chuckBox = machine == null ? null : box(machine.chuck());
         tailBox = machine == null ? null : box(machine.tailstock());
@@ -121,7 +118,7 @@ final class MotionChecks {
         boolean chuckHit = false;
         boolean tailHit = false;
         boolean stockHit = false;
-        List<double[]> poly = moves == null ? null : new ArrayList<>();
+        List<double[]> poly = path == null ? null : new ArrayList<>();
         for (Segment s : segs) {
             length += s.length();
             double[] box = bounds(s);
@@ -176,14 +173,13 @@ final class MotionChecks {
         }
         seconds += time(length, speed, acc, dec);
         if (poly != null) {
-            double[] z = new double[poly.size()];
-            double[] r = new double[poly.size()];
-            for (int i = 0; i < z.length; i++) {
-                z[i] = poly.get(i)[1] / profile.z().countsPerMm();
-                r[i] = (poly.get(i)[0] - centre()) / profile.x().countsPerMm();
-            }
-            moves.add(new Drawing.Move(rapid, z, r));
+            path.move(rapid, poly);
         }
+    }
+
+    /** See {@link Conformance#check}. */
+    double[] conformance(Motion m, List<Segment> segs, int line) {
+        return conformance.check(m, segs, line);
     }
 
     private double centre() {
@@ -208,9 +204,8 @@ final class MotionChecks {
         args[lead.length] = mm(p[0] / profile.x().countsPerMm());
         args[lead.length + 1] = mm(p[1] / profile.z().countsPerMm());
         out.report(code, line, args);
-        if (marks != null) {
-            marks.add(new Drawing.Mark(code.id(), p[1] / profile.z().countsPerMm(),
-                    (p[0] - centre()) / profile.x().countsPerMm()));
+        if (path != null) {
+            path.mark(code.id(), p[0], p[1]);
         }
     }
 
@@ -257,64 +252,6 @@ final class MotionChecks {
         return peak / acc + peak / dec;
     }
 
-    /**
-     * Compares the replayed sequence with the motion the block meant. Returns the intended end
-     * {x, z} to resynchronise to after a finding (one bad sequence is one finding), else null.
-     */
-    double[] conformance(Motion m, List<Segment> segs, int line) {
-        Segment last = segs.get(segs.size() - 1);
-        Point to;
-        if (m instanceof Motion.Linear lin) {
-            to = lin.to();
-            if (segs.size() == 1 && last.arc()) {
-                return mismatch(line, "path (an arc for a straight move)", last.length(), to);
-            }
-        } else {
-            Motion.Arc arc = (Motion.Arc) m;
-            to = arc.to();
-            if (!last.arc()) {
-                return mismatch(line, "path (a straight move for an arc)", distance(last, arc.to()), to);
-            }
-            if (last.sweepDeg() == 0) {
-                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, last.text());
-                mark(null, arc.to());
-                return new double[] {to.x(), to.z()};
-            }
-            double centre = Math.hypot(last.centreX() - arc.centre().x(), last.centreZ() - arc.centre().z());
-            if (centre > tol) {
-                return mismatch(line, "arc centre", centre, to);
-            }
-            double sweep = ArcGeometry.sweepDegrees(arc.from(), arc.to(), arc.centre(), arc.clockwise());
-            double a = Math.toRadians(Math.toDegrees(Math.atan2(arc.from().x() - arc.centre().x(),
-                    arc.from().z() - arc.centre().z())) + sweep / 2);
-            double[] mid = last.at(0.5);
-            double off = Math.hypot(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
-                    mid[1] - (arc.centre().z() + arc.radius() * Math.cos(a)));
-            if (off > tol) {
-                return mismatch(line, "arc direction or sweep (midpoint)", off, to);
-            }
-        }
-        double d = distance(last, to);
-        return d > tol ? mismatch(line, "end point", d, to) : null;
-    }
-
-    private static double distance(Segment s, Point p) {
-        return Math.hypot(s.toX() - p.x(), s.toZ() - p.z());
-    }
-
-    private double[] mismatch(int line, String what, double by, Point to) {
-        out.report(Code.E308_SIM_PATH_MISMATCH, line, what, mm(by), mm(tol));
-        mark(null, to);
-        return new double[] {to.x(), to.z()};
-    }
-
-    private void mark(Code code, Point p) {
-        if (marks != null) {
-            marks.add(new Drawing.Mark(code == null ? "path" : code.id(), p.z() / profile.z().countsPerMm(),
-                    (p.x() - centre()) / profile.x().countsPerMm()));
-        }
-    }
-
     /** Up to 3 decimals, no trailing zeros: 12.5, -3, 0.001. */
     static String mm(double v) {
         double r = Math.rint(v * 1000) / 1000;
@@ -325,50 +262,11 @@ final class MotionChecks {
     }
 
     SimReport report(int findings) {
-        Drawing d = null;
-        if (moves != null) {
-            d = drawing();
-        }
+        Drawing d = path == null ? null : path.drawing(machine, stock);
         boolean moved = sequences > 0;
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
                 seconds, d);
-    }
-
-    private Drawing drawing() {
-        double kx = profile.x().countsPerMm();
-        double kz = profile.z().countsPerMm();
-        List<Shape> chuck = new ArrayList<>();
-        List<Shape> tail = new ArrayList<>();
-        if (machine != null) {
-            for (Shape s : machine.chuck()) {
-                chuck.add(scale(s, kz, kx));
-            }
-            for (Shape s : machine.tailstock()) {
-                tail.add(scale(s, kz, kx));
-            }
-        }
-        if (stock == null) {
-            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks);
-        }
-        double[] z = new double[stock.cells()];
-        double[] r = new double[stock.cells()];
-        for (int i = 0; i < z.length; i++) {
-            z[i] = stock.cellZ(i) / kz;
-            r[i] = stock.radiusAt(i) / kx;
-        }
-        return new Drawing(chuck, tail, stock.back() / kz, stock.face() / kz, stock.initialRadius() / kx, z, r,
-                moves, marks);
-    }
-
-    private static Shape scale(Shape s, double kz, double kx) {
-        double[] z = Arrays.copyOf(s.z(), s.size());
-        double[] r = Arrays.copyOf(s.r(), s.size());
-        for (int i = 0; i < z.length; i++) {
-            z[i] = Math.max(-1e6, Math.min(1e6, z[i] / kz));
-            r[i] /= kx;
-        }
-        return new Shape(z, r);
     }
 }

@@ -1,0 +1,82 @@
+package gcnc.sim;
+
+import gcnc.diag.Code;
+import gcnc.ir.ArcGeometry;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+
+/**
+ * Path conformance: does a replayed sequence do what its G-code motion meant? End point within
+ * the tolerance; for arcs also the centre and the midpoint (which catches a wrong direction or a
+ * long-way/short-way swap); a zero-sweep CR is its own finding (E309).
+ */
+final class Conformance {
+    private final MotionChecks.Reporter out;
+    private final PathRecorder path;
+    private final double tol;
+
+    Conformance(MotionChecks.Reporter out, PathRecorder path, double tolerance) {
+        this.out = out;
+        this.path = path;
+        this.tol = tolerance;
+    }
+
+    /**
+     * Compares; returns the intended end {x, z} to resynchronise to after a finding (one bad
+     * sequence is one finding), else null.
+     */
+    double[] check(Motion m, java.util.List<Segment> segs, int line) {
+        Segment last = segs.get(segs.size() - 1);
+        if (m instanceof Motion.Linear lin) {
+            if (segs.size() == 1 && last.arc()) {
+                return mismatch(line, "path (an arc for a straight move)", last.length(), lin.to());
+            }
+            return endPoint(last, lin.to(), line);
+        }
+        Motion.Arc arc = (Motion.Arc) m;
+        Point to = arc.to();
+        if (!last.arc()) {
+            return mismatch(line, "path (a straight move for an arc)", distance(last, to), to);
+        }
+        if (last.sweepDeg() == 0) {
+            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, last.text());
+            mark("E309", to);
+            return new double[] {to.x(), to.z()};
+        }
+        double centre = Math.hypot(last.centreX() - arc.centre().x(), last.centreZ() - arc.centre().z());
+        if (centre > tol) {
+            return mismatch(line, "arc centre", centre, to);
+        }
+        double sweep = ArcGeometry.sweepDegrees(arc.from(), to, arc.centre(), arc.clockwise());
+        double a = Math.atan2(arc.from().x() - arc.centre().x(), arc.from().z() - arc.centre().z())
+                + Math.toRadians(sweep / 2);
+        double[] mid = last.at(0.5);
+        double off = Math.hypot(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
+                mid[1] - (arc.centre().z() + arc.radius() * Math.cos(a)));
+        if (off > tol) {
+            return mismatch(line, "arc direction or sweep (midpoint)", off, to);
+        }
+        return endPoint(last, to, line);
+    }
+
+    private double[] endPoint(Segment last, Point to, int line) {
+        double d = distance(last, to);
+        return d > tol ? mismatch(line, "end point", d, to) : null;
+    }
+
+    private static double distance(Segment s, Point p) {
+        return Math.hypot(s.toX() - p.x(), s.toZ() - p.z());
+    }
+
+    private double[] mismatch(int line, String what, double by, Point to) {
+        out.report(Code.E308_SIM_PATH_MISMATCH, line, what, MotionChecks.mm(by), MotionChecks.mm(tol));
+        mark("E308", to);
+        return new double[] {to.x(), to.z()};
+    }
+
+    private void mark(String code, Point p) {
+        if (path != null) {
+            path.mark(code, p.x(), p.z());
+        }
+    }
+}

@@ -1,0 +1,75 @@
+package gcnc.sim;
+
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Keeps the tool path and the places of findings for the SVG (only when one is asked for: this
+ * is the one part of the simulator whose memory grows with the program), in the drawing's
+ * half-section millimetres.
+ */
+final class PathRecorder {
+    private final double kx;
+    private final double kz;
+    private final double centre;
+    private final List<Drawing.Move> moves = new ArrayList<>();
+    private final List<Drawing.Mark> marks = new ArrayList<>();
+
+    PathRecorder(MachineProfile profile, double centreX) {
+        this.kx = profile.x().countsPerMm();
+        this.kz = profile.z().countsPerMm();
+        this.centre = centreX;
+    }
+
+    /** One sequence as points {x, z} in machine counts. */
+    void move(boolean rapid, List<double[]> points) {
+        double[] z = new double[points.size()];
+        double[] r = new double[points.size()];
+        for (int i = 0; i < z.length; i++) {
+            z[i] = points.get(i)[1] / kz;
+            r[i] = (points.get(i)[0] - centre) / kx;
+        }
+        moves.add(new Drawing.Move(rapid, z, r));
+    }
+
+    /** A finding at machine counts (x, z). */
+    void mark(String code, double x, double z) {
+        marks.add(new Drawing.Mark(code, z / kz, (x - centre) / kx));
+    }
+
+    Drawing drawing(SimMachine machine, StockProfile stock) {
+        List<Shape> chuck = new ArrayList<>();
+        List<Shape> tail = new ArrayList<>();
+        if (machine != null) {
+            for (Shape s : machine.chuck()) {
+                chuck.add(scale(s));
+            }
+            for (Shape s : machine.tailstock()) {
+                tail.add(scale(s));
+            }
+        }
+        if (stock == null) {
+            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks);
+        }
+        double[] z = new double[stock.cells()];
+        double[] r = new double[stock.cells()];
+        for (int i = 0; i < z.length; i++) {
+            z[i] = stock.cellZ(i) / kz;
+            r[i] = stock.radiusAt(i) / kx;
+        }
+        return new Drawing(chuck, tail, stock.back() / kz, stock.face() / kz, stock.initialRadius() / kx, z, r,
+                moves, marks);
+    }
+
+    private Shape scale(Shape s) {
+        double[] z = Arrays.copyOf(s.z(), s.size());
+        double[] r = Arrays.copyOf(s.r(), s.size());
+        for (int i = 0; i < z.length; i++) {
+            z[i] = Math.max(-1e6, Math.min(1e6, z[i] / kz));
+            r[i] /= kx;
+        }
+        return new Shape(z, r);
+    }
+}
