@@ -1,0 +1,41 @@
+package gcnc.parse;
+
+import gcnc.diag.Diagnostics;
+import java.io.CharArrayReader;
+import java.io.IOException;
+
+/**
+ * Throwaway measurement, not a test: generates 1,000,000 typical blocks in memory and prints how
+ * many blocks per second BlockReader returns. Run: gradle -q speedParse (see docs/grammar.md).
+ */
+public final class BlockReaderSpeed {
+    private BlockReaderSpeed() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        int count = args.length > 0 ? Integer.parseInt(args[0]) : 1_000_000;
+        StringBuilder sb = new StringBuilder(count * 34);
+        for (int i = 1; i <= count; i++) {
+            sb.append('N').append(i).append(" G01 X").append(i % 100).append(".345 Z-45.678 F0.2\n");
+        }
+        char[] text = sb.toString().toCharArray();
+        for (int round = 1; round <= 5; round++) {
+            Diagnostics d = new Diagnostics();
+            BlockReader reader = new BlockReader(new CharArrayReader(text), d);
+            long t0 = System.nanoTime();
+            int n = 0;
+            int words = 0;
+            while (true) {
+                var b = reader.next();
+                if (b == null) {
+                    break;
+                }
+                n++;
+                words += b.words().size();
+            }
+            double s = (System.nanoTime() - t0) / 1e9;
+            System.out.printf("round %d: %d blocks (%d words, %d errors) in %.3f s = %.0f blocks/s%n",
+                    round, n, words, d.errorCount(), s, n / s);
+        }
+    }
+}
