@@ -113,7 +113,10 @@ public final class BlockReader {
                 case GCodeLexer.UNDEFINED_LETTER -> fail(Code.E004_UNDEFINED_FUNCTION, start, text(start));
                 case GCodeLexer.STRAY -> fail(Code.E010_SYNTAX, start, "'" + text(start) + "'");
                 case GCodeLexer.ILLEGAL -> fail(Code.E003_ILLEGAL_CHARACTER, start, text(start));
-                case GCodeLexer.UNCLOSED_COMMENT -> openComment(start);
+                case GCodeLexer.UNCLOSED_COMMENT -> {
+                    openComment(start);
+                    inComment = true; // it runs to the end of the line
+                }
                 case GCodeLexer.NESTED_COMMENT -> {
                     openComment(start);
                     fail(Code.E054_NESTED_COMMENT, t.getStopIndex());
@@ -148,12 +151,11 @@ public final class BlockReader {
         }
     }
 
-    /** Remembers where a comment that runs past this line was opened (for error 5). */
+    /** Remembers where a comment was opened, in case it is never closed (error 5). */
     private void openComment(int start) {
         if (!stream.isVirtual(start)) {
             commentStart = span(start);
         }
-        inComment = true;
     }
 
     /** Reports the line's first error; later ones on the same line are dropped (thesis §10). */
