@@ -101,8 +101,9 @@ final class FastScanner {
                 return -1;
             }
         }
-        // A longer match of NOT_INTEGER or BAD_NUMBER would win in the lexer: leave it to the lexer.
-        return j < end && isNumberChar(buf[j]) ? -1 : j;
+        // Where the lexer would find a longer NOT_INTEGER or BAD_NUMBER (N1.5, X1.2.3), the next
+        // character is a digit, sign or point, which starts nothing here, so scan() gives up.
+        return j;
     }
 
     /** UNSIGNED : DIGIT+ ('.' DIGIT*)? | '.' DIGIT+ ; the end offset, or -1. */
@@ -123,9 +124,5 @@ final class FastScanner {
             j++;
         }
         return j;
-    }
-
-    private static boolean isNumberChar(char c) {
-        return c >= '0' && c <= '9' || c == '.' || c == '+' || c == '-';
     }
 }
