@@ -98,4 +98,14 @@ class BlockReaderLayoutTest {
         assertEquals(List.of(), p.blocks());
         assertEquals(0, p.lines());
     }
+
+    @Test
+    void theSamplesParseCleanly() throws java.io.IOException {
+        for (String name : List.of("samples/bishop.nc", "samples/turning.nc")) {
+            Parsed p = Parsed.of(new String(java.nio.file.Files.readAllBytes(java.nio.file.Path.of(name)),
+                    java.nio.charset.StandardCharsets.UTF_8));
+            assertEquals(List.of(), p.errors(), name);
+            assertTrue(p.blocks().size() > 10, name);
+        }
+    }
 }
