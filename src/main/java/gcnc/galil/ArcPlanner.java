@@ -9,12 +9,17 @@ package gcnc.galil;
  * angles say. With the radius rounded, the true centre in general no longer lies at that radius
  * from both rounded ends, so we use the centre C' on the same side of the chord SE that lies at the
  * rounded radius from both. Rounding the printed start angle moves the centre slightly again, so the
- * sweep is measured about the centre that the printed start angle implies. The result is checked.
+ * sweep is measured about the centre that the printed start angle implies. The result is checked:
+ * on each axis the arc must end less than half a count from the target count, so the controller's
+ * whole-count position is exactly the target and the next sequence starts where gcnc thinks.
  */
 public final class ArcPlanner {
     /** An arc as CR prints it: radius in counts, start angle and signed sweep in degrees (as printed). */
     public record Cr(long radius, double start, double sweep) {
     }
+
+    /** The smallest printed angle step, degrees. */
+    private static final double STEP = 0.0001;
 
     private ArcPlanner() {
     }
@@ -25,7 +30,7 @@ public final class ArcPlanner {
      * @param cu,cv        the exact centre, unrounded
      * @param radius       the exact radius
      * @param sweep        the intended signed sweep in Galil's sense (CCW positive), degrees
-     * @return the CR arguments, or null when no printable arc ends within one count of (eu, ev)
+     * @return the CR arguments, or null when no printable arc ends on (eu, ev)
      */
     public static Cr plan(long su, long sv, long eu, long ev, double cu, double cv, double radius, double sweep) {
         long r = GalilNumbers.round(radius);
@@ -56,6 +61,9 @@ public final class ArcPlanner {
             ccv = sv + dv / 2 + side * h * du / d;
         }
         double start = GalilNumbers.printedAngle(Math.toDegrees(Math.atan2(sv - ccv, su - ccu)));
+        if (start <= -180) {
+            start += 360;                            // keep the start angle in (-180, 180]
+        }
         double sr = Math.toRadians(start);
         double ou = su - r * Math.cos(sr);          // centre implied by the printed start angle
         double ov = sv - r * Math.sin(sr);
@@ -63,12 +71,23 @@ public final class ArcPlanner {
         double delta = end - start;
         delta -= 360 * Math.rint((delta - sweep) / 360); // the turn nearest the intended sweep
         delta = GalilNumbers.printedAngle(delta);
-        double er = Math.toRadians(start + delta);
-        double fu = ou + r * Math.cos(er);
-        double fv = ov + r * Math.sin(er);
-        if (Math.hypot(fu - eu, fv - ev) > 1) {
+        // The printed sweep may land a fraction of a count off; its neighbours may land closer.
+        double best = Double.NaN;
+        double bestMiss = Double.MAX_VALUE;
+        for (int step = -1; step <= 1; step++) {
+            double candidate = delta + step * STEP;
+            double er = Math.toRadians(start + candidate);
+            double miss = Math.max(Math.abs(ou + r * Math.cos(er) - eu), Math.abs(ov + r * Math.sin(er) - ev));
+            if (miss < bestMiss) {
+                bestMiss = miss;
+                best = GalilNumbers.printedAngle(candidate);
+            }
+        }
+        // The controller holds whole counts: the arc must end nearer the target count than any other.
+        if (!(bestMiss < 0.5)) {
             return null;
         }
+        delta = best;
         return new Cr(r, start, delta);
     }
 }
