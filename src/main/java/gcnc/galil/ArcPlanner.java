@@ -33,7 +33,22 @@ public final class ArcPlanner {
      * @return the CR arguments, or null when no printable arc ends on (eu, ev)
      */
     public static Cr plan(long su, long sv, long eu, long ev, double cu, double cv, double radius, double sweep) {
-        long r = GalilNumbers.round(radius);
+        // The nearest whole radius first; when the rounded ends are farther apart than its diameter
+        // (small half circles), the next whole radius up or down may still fit.
+        long r0 = GalilNumbers.round(radius);
+        long[] candidates = radius >= r0 ? new long[] {r0, r0 + 1, r0 - 1} : new long[] {r0, r0 - 1, r0 + 1};
+        for (long r : candidates) {
+            if (Math.abs(r - radius) <= 1.5) { // rounded ends move the half chord up to 0.71
+                Cr cr = withRadius(su, sv, eu, ev, cu, cv, r, sweep);
+                if (cr != null) {
+                    return cr;
+                }
+            }
+        }
+        return null;
+    }
+
+    private static Cr withRadius(long su, long sv, long eu, long ev, double cu, double cv, long r, double sweep) {
         if (r < 1) {
             return null;
         }
