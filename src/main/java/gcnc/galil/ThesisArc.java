@@ -55,7 +55,7 @@ final class ThesisArc {
         float b0 = z2 - m * x2;
         float qa = m * m + 1;
         float qb = 2 * m * b0 - 2 * xc - 2 * m * zc;
-        float qc = zc * zc + b0 * b0 - 2 * zc * b0 - r2; // xc*xc is missing in the thesis too
+        float qc = zc * zc + b0 * b0 - 2 * zc * b0 - r2; // xc*xc is missing in the thesis too (L4414)
         double disc = (double) qb * qb - 4.0 * qa * qc;
         if (!(disc >= 0)) {
             return null;

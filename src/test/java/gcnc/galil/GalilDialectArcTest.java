@@ -122,4 +122,23 @@ class GalilDialectArcTest {
             assertEnds(p, out, ends);
         }
     }
+
+    @Test
+    void bishopN240IsATrueArcOfRadius2100() {
+        // N240 G03 X+1000 R1400 from X800 Z0 under thesis-2004: machine (x -18800, z -20000) to
+        // (-18500, -20000), r 2100. G03 moving +x: centre to the left, at z -20000 - sqrt(2100^2 - 150^2)
+        // = -22094.636, x -18650. Galil (u, v) = (-x, -z): start relative to the centre (150, -2094.636),
+        // angle atan2(-2094.636, 150) = -85.9040; sweep 2 asin(150/2100) = 8.1921, mirrored: -8.1921.
+        MachineProfile thesis = Fixtures.profile("thesis-2004");
+        Point from = new Point(-18800, -20000);
+        Point to = new Point(-18500, -20000);
+        Point c = new Point(-18650, -20000 - Math.sqrt(2100.0 * 2100 - 150 * 150));
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", thesis, d, motions(2, from, rapid(Point.ORIGIN, from)),
+                motions(32, to, new Motion.Arc(false, from, to, c, 2100, new Feed(50, 1000),
+                        new Motion.ArcWords(2100.0, null, null))));
+        assertEquals(0, d.size());
+        assertTrue(out.contains("CR 2100,-85.904,-8.1921"), out.toString());
+        assertTrue(out.contains("VP 18800,20000"), out.toString());
+    }
 }
