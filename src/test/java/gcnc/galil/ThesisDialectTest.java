@@ -108,4 +108,31 @@ class ThesisDialectTest {
         // 1000 div 300 = 3 in OF's third field (spindle.axis = Z)
         assertEquals(List.of("OF ,,3", "Revolver 5", "M41", "WT 1500", "CB5"), thesis(b));
     }
+
+    @Test
+    void ikEndOffTheCircleGivesTheTwoPieceOutput() {
+        // Start (x 100, z 100), I 0 K 100: centre (100, 200), r 100; end (200, 210) is 100.5 away.
+        // m = atan(10/100) = 0.09967 (the angle used as a slope), b0 = 210 - 200 m = 190.066;
+        // A = m^2 + 1, B = 2 m b0 - 2 xc - 2 m zc = -201.980, C = zc^2 + b0^2 - 2 zc b0 - r^2;
+        // neither root lies in [xc, x2], so xf is the second: -40.727, zf = m xf + b0 = 186.007.
+        // CR radius |(xf, zf) - start| = 164.93; theta = atan(100/100) = 45;
+        // dtheta = atan(86.007 / -140.727) = -31.43 (G02: kept); VP -(end - (xf, zf)) = -240.73, -23.99.
+        Point a = new Point(100, 100);
+        Point b = new Point(200, 210);
+        Motion.Arc arc = new Motion.Arc(true, a, b, new Point(100, 200), 100, new Feed(10, 200),
+                new Motion.ArcWords(null, 0.0, 100.0));
+        assertEquals(List.of("VS 200", "CR 165,45.0000,-31.4000", "BGS", "VS 200", "VP -241,-24", "BGS"),
+                thesis(motions(8, b, arc)));
+    }
+
+    @Test
+    void ikEndOnTheCircleIsOneChordArc() {
+        // Centre (100, 200) r 100; end (200, 200) is on it: chord hypot(100, 100) = 141.42;
+        // theta = atan(100/100) = 45; dtheta = atan(100/100) = 45, negated for G03.
+        Point a = new Point(100, 100);
+        Point b = new Point(200, 200);
+        Motion.Arc arc = new Motion.Arc(false, a, b, new Point(100, 200), 100, new Feed(10, 200),
+                new Motion.ArcWords(null, 0.0, 100.0));
+        assertEquals(List.of("VS 200", "CR 141,45.0000,-45.0000", "BGS"), thesis(motions(8, b, arc)));
+    }
 }
