@@ -133,6 +133,8 @@ public enum Code {
     E205_THESIS_NUMBER(205),
     /** The thesis's I/K two-piece arc formula (GenCirInterp) has no real solution. */
     E206_THESIS_ARC(206),
+    /** A cutting feed is below one count per second, the slowest vector speed VS can give. */
+    E207_FEED_TOO_SLOW(207),
 
     // 300-399: simulator (sim package).
 

@@ -156,8 +156,13 @@ final class GalilDialect implements Dialect {
 
     /** The vector speed in counts/s, or -1 (reported) when the controller cannot take it. */
     private long speed(CheckedBlock b, gcnc.ir.Feed feed) {
-        long s = GalilNumbers.round(feed == null ? profile.rapidSpeed() : feed.countsPerSecond());
-        if (s < 1 || !GalilNumbers.inRange(s)) {
+        double cps = feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
+        long s = GalilNumbers.round(cps);
+        if (s < 1) {
+            diagnostics.error(Code.E207_FEED_TOO_SLOW, at(b), GalilNumbers.angle(cps));
+            return -1;
+        }
+        if (!GalilNumbers.inRange(s)) {
             diagnostics.error(Code.E201_GALIL_RANGE, at(b), "VS", s);
             return -1;
         }

@@ -163,4 +163,16 @@ class GalilDialectTest {
     void unknownDialectIsRefused() {
         assertThrows(IllegalArgumentException.class, () -> Dialect.create("fanuc", GENERIC, new Diagnostics()));
     }
+
+    @Test
+    void feedBelowOneCountPerSecondIsALocatedError() {
+        Point a = new Point(0, 100);
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, d,
+                motions(21, a, new Motion.Linear(false, Point.ORIGIN, a, new Feed(4, 0.1))));
+        assertEquals(Code.E207_FEED_TOO_SLOW, d.sorted().get(0).code());
+        assertEquals(Span.of(21, 1), d.sorted().get(0).span());
+        assertEquals(List.of("0.1"), d.sorted().get(0).args());
+        assertEquals(0, out.stream().filter(l -> l.startsWith("VP")).count());
+    }
 }
