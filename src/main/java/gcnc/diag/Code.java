@@ -131,6 +131,20 @@ public enum Code {
     E105_ARC_FULL_CIRCLE_WITH_R(105),
 
     // 200-299: Galil backend (galil package).
+    /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */
+    E201_GALIL_RANGE(201),
+    /** No CR with a whole-count radius ends within one count of the arc's programmed end point. */
+    E202_ARC_NOT_REPRESENTABLE(202),
+    /** The spindle speed needs more than the 10 V an OF output gives. */
+    E203_SPINDLE_VOLTS(203),
+    /** The spindle speed needs between 9.998 V and 10 V; OF is clamped to 9.998 V. */
+    E204_SPINDLE_VOLTS_CLAMPED(204),
+    /** A number has more integer digits than the thesis dialect's FloatToStrF format prints. */
+    E205_THESIS_NUMBER(205),
+    /** The thesis's I/K two-piece arc formula (GenCirInterp) has no real solution. */
+    E206_THESIS_ARC(206),
+    /** A cutting feed is below one count per second, the slowest vector speed VS can give. */
+    E207_FEED_TOO_SLOW(207),
 
     // 300-399: simulator (sim package).
     /** A DMC line the simulator does not know. */

@@ -1,0 +1,108 @@
+package gcnc.galil;
+
+/**
+ * Turns an arc into Galil's {@code CR r,theta,delta} so that the arc the controller runs, with the
+ * radius rounded to whole counts and the angles to the 4 decimals printed, ends within one count
+ * of the intended end. All inputs are in the Galil plane (first, second channel), counts.
+ *
+ * <p>The controller starts the arc where it is (the integer start S) and ends wherever radius and
+ * angles say. With the radius rounded, the true centre in general no longer lies at that radius
+ * from both rounded ends, so we use the centre C' on the same side of the chord SE that lies at the
+ * rounded radius from both. Rounding the printed start angle moves the centre slightly again, so the
+ * sweep is measured about the centre that the printed start angle implies. The result is checked:
+ * on each axis the arc must end less than half a count from the target count, so the controller's
+ * whole-count position is exactly the target and the next sequence starts where gcnc thinks.
+ */
+public final class ArcPlanner {
+    /** An arc as CR prints it: radius in counts, start angle and signed sweep in degrees (as printed). */
+    public record Cr(long radius, double start, double sweep) {
+    }
+
+    /** The smallest printed angle step, degrees. */
+    private static final double STEP = 0.0001;
+
+    private ArcPlanner() {
+    }
+
+    /**
+     * @param su,sv        where the sequence starts (the controller's position)
+     * @param eu,ev        where the arc must end
+     * @param cu,cv        the exact centre, unrounded
+     * @param radius       the exact radius
+     * @param sweep        the intended signed sweep in Galil's sense (CCW positive), degrees
+     * @return the CR arguments, or null when no printable arc ends on (eu, ev)
+     */
+    public static Cr plan(long su, long sv, long eu, long ev, double cu, double cv, double radius, double sweep) {
+        // The nearest whole radius first; when the rounded ends are farther apart than its diameter
+        // (small half circles), the next whole radius up or down may still fit.
+        long r0 = GalilNumbers.round(radius);
+        long[] candidates = radius >= r0 ? new long[] {r0, r0 + 1, r0 - 1} : new long[] {r0, r0 - 1, r0 + 1};
+        for (long r : candidates) {
+            if (Math.abs(r - radius) <= 1.5) { // rounded ends move the half chord up to 0.71
+                Cr cr = withRadius(su, sv, eu, ev, cu, cv, r, sweep);
+                if (cr != null) {
+                    return cr;
+                }
+            }
+        }
+        return null;
+    }
+
+    private static Cr withRadius(long su, long sv, long eu, long ev, double cu, double cv, long r, double sweep) {
+        if (r < 1) {
+            return null;
+        }
+        double du = eu - su;
+        double dv = ev - sv;
+        double d = Math.hypot(du, dv);
+        double ccu;
+        double ccv;
+        if (d == 0) {
+            // Full circle (or an arc shorter than a count): keep the true centre's direction.
+            double tu = cu - su;
+            double tv = cv - sv;
+            double t = Math.hypot(tu, tv);
+            if (t == 0) {
+                return null;
+            }
+            ccu = su + r * tu / t;
+            ccv = sv + r * tv / t;
+        } else {
+            double half = d / 2;
+            double h = half >= r ? 0 : Math.sqrt((double) r * r - half * half);
+            double cross = du * (cv - sv) - dv * (cu - su);
+            double side = cross >= 0 ? 1 : -1;     // the true centre's side of the chord
+            ccu = su + du / 2 - side * h * dv / d;
+            ccv = sv + dv / 2 + side * h * du / d;
+        }
+        double start = GalilNumbers.printedAngle(Math.toDegrees(Math.atan2(sv - ccv, su - ccu)));
+        if (start <= -180) {
+            start += 360;                            // keep the start angle in (-180, 180]
+        }
+        double sr = Math.toRadians(start);
+        double ou = su - r * Math.cos(sr);          // centre implied by the printed start angle
+        double ov = sv - r * Math.sin(sr);
+        double end = Math.toDegrees(Math.atan2(ev - ov, eu - ou));
+        double delta = end - start;
+        delta -= 360 * Math.rint((delta - sweep) / 360); // the turn nearest the intended sweep
+        delta = GalilNumbers.printedAngle(delta);
+        // The printed sweep may land a fraction of a count off; its neighbours may land closer.
+        double best = Double.NaN;
+        double bestMiss = Double.MAX_VALUE;
+        for (int step = -1; step <= 1; step++) {
+            double candidate = delta + step * STEP;
+            double er = Math.toRadians(start + candidate);
+            double miss = Math.max(Math.abs(ou + r * Math.cos(er) - eu), Math.abs(ov + r * Math.sin(er) - ev));
+            if (miss < bestMiss) {
+                bestMiss = miss;
+                best = GalilNumbers.printedAngle(candidate);
+            }
+        }
+        // The controller holds whole counts: the arc must end nearer the target count than any other.
+        if (!(bestMiss < 0.5)) {
+            return null;
+        }
+        delta = best;
+        return new Cr(r, start, delta);
+    }
+}

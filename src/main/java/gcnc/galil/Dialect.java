@@ -1,0 +1,42 @@
+package gcnc.galil;
+
+import gcnc.diag.Diagnostics;
+import gcnc.ir.CheckedBlock;
+import gcnc.machine.MachineProfile;
+
+/**
+ * A DMC code generator (docs/dmc-format.md). One instance per program: it keeps the controller's
+ * position between blocks. Faults in the output (a count beyond 32 bits, an arc no CR can draw)
+ * are reported to {@link Diagnostics} at the block's line, column 1; the faulty motion is left out.
+ */
+public interface Dialect {
+    /** Writes what comes before the first block. */
+    void begin(LineSink out);
+
+    /** Writes one block's directives, in the order of decision D2. */
+    void block(CheckedBlock block, LineSink out);
+
+    /** Writes what comes after the last block. */
+    void end(LineSink out);
+
+    /** The dialect called {@code name} ("galil" or "thesis"), without inline source-map comments. */
+    static Dialect create(String name, MachineProfile profile, Diagnostics diagnostics) {
+        return create(name, profile, diagnostics, false);
+    }
+
+    /**
+     * @param inlineSourceMap put a {@code NO L<line>} comment before each block's lines
+     *                        ({@code --source-map}); otherwise use a {@link SourceMap} side file
+     * @throws IllegalArgumentException for an unknown dialect name
+     */
+    static Dialect create(String name, MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
+        switch (name) {
+            case "galil":
+                return new GalilDialect(profile, diagnostics, inlineSourceMap);
+            case "thesis":
+                return new ThesisDialect(profile, diagnostics, inlineSourceMap);
+            default:
+                throw new IllegalArgumentException("unknown dialect '" + name + "' (galil or thesis)");
+        }
+    }
+}

@@ -1,0 +1,132 @@
+package gcnc.galil;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.MCall;
+import gcnc.ir.Motion;
+import gcnc.machine.MachineProfile;
+import java.util.List;
+
+/**
+ * The thesis's own output (thesis-reading §7; Table 5.2): {@code VS / VP|CR / BGS} per motion,
+ * {@code OF ,,<S div 300>}, {@code Revolver n}, M outputs or {@code M<n>}, {@code WT}; no header,
+ * no VM/VE/AMS/EN. Numbers go through {@link DelphiFormat}. VP is the increment in Galil
+ * coordinates (for thesis-2004, whose signs are -1, exactly the thesis's {@code -(new-old)}).
+ * It is kept for the record and for the simulator to show what goes wrong (docs/galil.md).
+ */
+final class ThesisDialect implements Dialect {
+    private final MachineProfile profile;
+    private final Diagnostics diagnostics;
+    private final boolean inlineSourceMap;
+    private final GalilFrame frame;
+
+    ThesisDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
+        this.profile = profile;
+        this.diagnostics = diagnostics;
+        this.inlineSourceMap = inlineSourceMap;
+        this.frame = new GalilFrame(profile);
+    }
+
+    @Override
+    public void begin(LineSink out) {
+    }
+
+    @Override
+    public void end(LineSink out) {
+    }
+
+    @Override
+    public void block(CheckedBlock b, LineSink sink) {
+        BlockWriter out = new BlockWriter(sink, b.line(), inlineSourceMap);
+        if (b.spindleRpm().isPresent()) {
+            // The thesis divides the integer S by 300 as integers (L4236).
+            long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
+            out.emit(BlockWriter.offset(frame.spindleIndex(), Long.toString(volts)));
+        }
+        if (b.tool().isPresent()) {
+            out.emit("Revolver " + b.tool().getAsInt());
+        }
+        outputs(b.before(), out);
+        for (Motion m : b.motions()) {
+            if (m instanceof Motion.Linear) {
+                Motion.Linear l = (Motion.Linear) m;
+                double dx = l.to().x() - l.from().x();
+                double dz = l.to().z() - l.from().z();
+                group(b, speed(l.rapid() ? null : l.feed()), vp(b, dx, dz), out);
+            } else if (m instanceof Motion.Arc) {
+                arc(b, (Motion.Arc) m, out);
+            } else {
+                String ms = number(b, "WT", ((Motion.Dwell) m).seconds() * 1000);
+                if (ms != null) {
+                    out.emit("WT " + ms);
+                }
+            }
+        }
+        outputs(b.after(), out);
+    }
+
+    private void outputs(List<MCall> calls, BlockWriter out) {
+        for (MCall m : calls) {
+            List<String> directives = profile.outputsFor(m.code());
+            if (directives.isEmpty()) {
+                out.emit("M" + m.code()); // §7.2: any other M passes through unpadded
+            }
+            for (String d : directives) {
+                out.emit(d);
+            }
+        }
+    }
+
+    private void arc(CheckedBlock b, Motion.Arc a, BlockWriter out) {
+        double dx = a.to().x() - a.from().x();
+        double dz = a.to().z() - a.from().z();
+        if (dx == 0 && dz == 0) {
+            return; // §7.2: full circles give no output and no error
+        }
+        ThesisArc.Result r = ThesisArc.of(a);
+        if (r == null) {
+            diagnostics.error(Code.E206_THESIS_ARC, Span.of(b.line(), 1));
+            return;
+        }
+        String radius = number(b, "CR", r.radius());
+        String cr = radius == null ? null
+                : "CR " + radius + "," + DelphiFormat.fmt3x4(r.theta()) + "," + DelphiFormat.fmt3x4(r.delta());
+        double speed = speed(a.feed());
+        group(b, speed, cr, out);
+        if (r.twoPiece()) {
+            group(b, speed, vp(b, a.to().x() - r.xm(), a.to().z() - r.zm()), out);
+        }
+    }
+
+    private double speed(gcnc.ir.Feed feed) {
+        return feed == null ? profile.rapidSpeed() : feed.programmed() * profile.thesisFeedFactor();
+    }
+
+    /** {@code VS / <move> / BGS}, or nothing when a number did not fit (already reported). */
+    private void group(CheckedBlock b, double speed, String move, BlockWriter out) {
+        String vs = number(b, "VS", speed);
+        if (vs == null || move == null) {
+            return;
+        }
+        out.emit("VS " + vs);
+        out.emit(move);
+        out.emit("BGS");
+    }
+
+    private String vp(CheckedBlock b, double dx, double dz) {
+        String u = number(b, "VP", frame.u(dx, dz));
+        String v = number(b, "VP", frame.v(dx, dz));
+        return u == null || v == null ? null : "VP " + u + "," + v;
+    }
+
+    /** fmt8, or null (reported) when Delphi would have switched to scientific notation. */
+    private String number(CheckedBlock b, String command, double v) {
+        if (!DelphiFormat.fits(v, 8)) {
+            diagnostics.error(Code.E205_THESIS_NUMBER, Span.of(b.line(), 1), command, v);
+            return null;
+        }
+        return DelphiFormat.fmt8(v);
+    }
+}

@@ -1,0 +1,144 @@
+package gcnc.galil;
+
+import static gcnc.galil.Fixtures.motions;
+import static gcnc.galil.Fixtures.rapid;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.diag.Diagnostics;
+import gcnc.ir.ArcGeometry;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Feed;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.api.Test;
+
+/**
+ * CR for arcs in every quadrant, both senses, R > 0 and R < 0 and I/K, on three axis mappings.
+ * Working: write a point relative to the centre as the lathe drawing's angle phi (z right, x up,
+ * G03 = counter-clockwise). Then
+ * <ul>
+ * <li>G (generic: Galil X = +Z, Y = +X): u = z, v = x, so the Galil start angle is phi and the
+ *     sweep keeps its sign;</li>
+ * <li>V (Galil X = -X, Y = +Z): (u, v) = (-sin phi, cos phi) = angle phi + 90, sweep keeps its sign;</li>
+ * <li>W (thesis-2004's mapping, Galil X = -X, Y = -Z): (u, v) = (-sin phi, -cos phi) = angle
+ *     -90 - phi, and the sweep changes sign (a mirror).</li>
+ * </ul>
+ * Centre (x 5000, z 5000), r 1000: phi 0 = (x 5000, z 6000), 90 = (6000, 5000), 180 = (5000, 4000),
+ * -90 = (4000, 5000). The R &lt; 0 arcs from phi-0 point to phi-90 point go the long way about the
+ * other centre (6000, 6000) for G03 (phi -90 to 180, +270), about (5000, 5000) for G02 (0 to 90 the
+ * long way, -270). The I/K arc: centre (1000, 2000), start + (x 4000, z 3000) at phi = atan(4/3)
+ * = 53.1301, G02 to + (x 0, z 5000) at phi 0, sweep -53.1301, r 5000.
+ */
+class GalilDialectArcTest {
+    private static final MachineProfile GENERIC = Fixtures.profile("generic");
+    private static final MachineProfile G = Fixtures.mapped(GENERIC, 'Y', 1, 'X', 1, Point.ORIGIN);
+    private static final MachineProfile V = Fixtures.mapped(GENERIC, 'X', -1, 'Y', 1, Point.ORIGIN);
+    private static final MachineProfile W = Fixtures.mapped(GENERIC, 'X', -1, 'Y', -1, Point.ORIGIN);
+    private static final Feed FEED = new Feed(100, 2000);
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({
+        "Q1 G03 0 to 90,          false, 5000, 6000, 6000, 5000, 5000, 5000, 1000, 'CR 1000,0,90',    'CR 1000,90,90',    'CR 1000,-90,-90'",
+        "Q1 G02 90 to 0,          true,  6000, 5000, 5000, 6000, 5000, 5000, 1000, 'CR 1000,90,-90',  'CR 1000,180,-90',  'CR 1000,180,90'",
+        "Q2 G03 90 to 180,        false, 6000, 5000, 5000, 4000, 5000, 5000, 1000, 'CR 1000,90,90',   'CR 1000,180,90',   'CR 1000,180,-90'",
+        "Q2 G02 180 to 90,        true,  5000, 4000, 6000, 5000, 5000, 5000, 1000, 'CR 1000,180,-90', 'CR 1000,-90,-90',  'CR 1000,90,90'",
+        "Q3 G03 180 to 270,       false, 5000, 4000, 4000, 5000, 5000, 5000, 1000, 'CR 1000,180,90',  'CR 1000,-90,90',   'CR 1000,90,-90'",
+        "Q3 G02 -90 to -180,      true,  4000, 5000, 5000, 4000, 5000, 5000, 1000, 'CR 1000,-90,-90', 'CR 1000,0,-90',    'CR 1000,0,90'",
+        "Q4 G03 -90 to 0,         false, 4000, 5000, 5000, 6000, 5000, 5000, 1000, 'CR 1000,-90,90',  'CR 1000,0,90',     'CR 1000,0,-90'",
+        "Q4 G02 0 to -90,         true,  5000, 6000, 4000, 5000, 5000, 5000, 1000, 'CR 1000,0,-90',   'CR 1000,90,-90',   'CR 1000,-90,90'",
+        "R<0 G03 the long way,    false, 5000, 6000, 6000, 5000, 6000, 6000, 1000, 'CR 1000,-90,270', 'CR 1000,0,270',    'CR 1000,0,-270'",
+        "R<0 G02 the long way,    true,  5000, 6000, 6000, 5000, 5000, 5000, 1000, 'CR 1000,0,-270',  'CR 1000,90,-270',  'CR 1000,-90,270'",
+        "I/K G02 3-4-5,           true,  5000, 5000, 1000, 7000, 1000, 2000, 5000, 'CR 5000,53.1301,-53.1301', 'CR 5000,143.1301,-53.1301', 'CR 5000,-143.1301,53.1301'",
+    })
+    void handWorkedCr(String name, boolean g02, double fx, double fz, double tx, double tz, double cx, double cz,
+                      double r, String onG, String onV, String onW) {
+        Point from = new Point(fx, fz);
+        Point to = new Point(tx, tz);
+        Motion.Arc arc = new Motion.Arc(g02, from, to, new Point(cx, cz), r, FEED, new Motion.ArcWords(null, cx - fx, cz - fz));
+        assertEquals(onG, crOf(G, from, arc), "generic mapping");
+        assertEquals(onV, crOf(V, from, arc), "X first, X negative");
+        assertEquals(onW, crOf(W, from, arc), "thesis-2004 mapping");
+    }
+
+    /** Rapid from home to the arc's start, then the arc: returns the CR line, after checking the path. */
+    private static String crOf(MachineProfile p, Point from, Motion.Arc arc) {
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", p, d, motions(1, from, rapid(Point.ORIGIN, from)),
+                motions(2, arc.to(), arc));
+        assertEquals(0, d.size(), () -> d.sorted().toString());
+        assertEnds(p, out, List.of(from, arc.to()));
+        return out.stream().filter(l -> l.startsWith("CR ")).findFirst().orElseThrow();
+    }
+
+    /** Every sequence ends within one count (each axis) of its motion's end. */
+    private static void assertEnds(MachineProfile p, List<String> out, List<Point> ends) {
+        List<long[]> got = new PathReader(0, 0).read(out);
+        assertEquals(ends.size(), got.size(), "one sequence per motion");
+        GalilFrame f = new GalilFrame(p);
+        for (int i = 0; i < ends.size(); i++) {
+            double eu = f.u(ends.get(i));
+            double ev = f.v(ends.get(i));
+            long[] g = got.get(i);
+            assertTrue(Math.abs(g[0] - eu) <= 1 && Math.abs(g[1] - ev) <= 1,
+                    "sequence " + (i + 1) + " ends at " + g[0] + "," + g[1] + ", expected " + eu + "," + ev);
+        }
+    }
+
+    @Test
+    void chainsOfRandomArcsEndWhereTheBlocksEnd() {
+        Random rnd = new Random(20041);
+        for (MachineProfile p : new MachineProfile[] {G, V, W}) {
+            List<CheckedBlock> blocks = new ArrayList<>();
+            List<Point> ends = new ArrayList<>();
+            Point at = new Point(rnd.nextDouble() * 1000, rnd.nextDouble() * 1000);
+            blocks.add(motions(1, at, rapid(Point.ORIGIN, at)));
+            ends.add(at);
+            for (int i = 0; i < 400; i++) {
+                double r = 5 + Math.pow(10, rnd.nextDouble() * 5);         // 5 .. 100005 counts
+                double toward = rnd.nextDouble() * 2 * Math.PI;
+                Point c = new Point(at.x() + r * Math.sin(toward), at.z() + r * Math.cos(toward));
+                double sweep = (rnd.nextDouble() * 2 - 1) * 359;          // degrees in the drawing
+                double start = Math.atan2(at.x() - c.x(), at.z() - c.z());
+                double end = start + Math.toRadians(sweep);
+                Point to = new Point(c.x() + r * Math.sin(end), c.z() + r * Math.cos(end));
+                boolean g02 = sweep < 0;
+                double radius = at.distanceTo(c);
+                blocks.add(motions(i + 2, to, new Motion.Arc(g02, at, to, c, radius, FEED,
+                        new Motion.ArcWords(null, c.x() - at.x(), c.z() - at.z()))));
+                ends.add(to);
+                assertEquals(sweep, ArcGeometry.sweepDegrees(at, to, c, g02), 1e-6);
+                at = to;
+            }
+            Diagnostics d = new Diagnostics();
+            List<String> out = Fixtures.run("galil", p, d, blocks.toArray(new CheckedBlock[0]));
+            assertEquals(0, d.size(), () -> p.name() + d.sorted());
+            assertEnds(p, out, ends);
+        }
+    }
+
+    @Test
+    void bishopN240IsATrueArcOfRadius2100() {
+        // N240 G03 X+1000 R1400 from X800 Z0 under thesis-2004: machine (x -18800, z -20000) to
+        // (-18500, -20000), r 2100. G03 moving +x: centre to the left, at z -20000 - sqrt(2100^2 - 150^2)
+        // = -22094.636, x -18650. Galil (u, v) = (-x, -z): start relative to the centre (150, -2094.636),
+        // angle atan2(-2094.636, 150) = -85.9040; sweep 2 asin(150/2100) = 8.1921, mirrored: -8.1921.
+        MachineProfile thesis = Fixtures.profile("thesis-2004");
+        Point from = new Point(-18800, -20000);
+        Point to = new Point(-18500, -20000);
+        Point c = new Point(-18650, -20000 - Math.sqrt(2100.0 * 2100 - 150 * 150));
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", thesis, d, motions(2, from, rapid(Point.ORIGIN, from)),
+                motions(32, to, new Motion.Arc(false, from, to, c, 2100, new Feed(50, 1000),
+                        new Motion.ArcWords(2100.0, null, null))));
+        assertEquals(0, d.size());
+        assertTrue(out.contains("CR 2100,-85.904,-8.1921"), out.toString());
+        assertTrue(out.contains("VP 18800,20000"), out.toString());
+    }
+}

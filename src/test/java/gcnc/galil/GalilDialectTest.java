@@ -1,0 +1,178 @@
+package gcnc.galil;
+
+import static gcnc.galil.Fixtures.motions;
+import static gcnc.galil.Fixtures.rapid;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Severity;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Feed;
+import gcnc.ir.MCall;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.OptionalDouble;
+import java.util.OptionalInt;
+import org.junit.jupiter.api.Test;
+
+class GalilDialectTest {
+    private static final MachineProfile GENERIC = Fixtures.profile("generic");
+    /** The generic machine starting at the machine origin, so positions read easily. */
+    private static final MachineProfile AT_ORIGIN = Fixtures.mapped(GENERIC, 'Y', 1, 'X', 1, Point.ORIGIN);
+
+    @Test
+    void headerSequencePerMotionAndFooter() {
+        Point a = new Point(1000, 2000);
+        Point b = new Point(1000, 500.4);
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, d, motions(3, a, rapid(Point.ORIGIN, a)),
+                motions(4, b, new Motion.Linear(false, a, b, new Feed(0.1, 1666.7))));
+        // Generic: Galil X = lathe Z, Y = lathe X; VP is relative to where each sequence starts.
+        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 1000000", "VD 1000000",
+                "VS 100000", "VP 2000,1000", "VE", "BGS", "AMS",
+                "VS 1667", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out);
+        assertEquals(0, d.size());
+    }
+
+    @Test
+    void roundingNeverAccumulates() {
+        // Three moves of 0.4 counts: a dialect that rounded each increment would never move.
+        Point p0 = Point.ORIGIN;
+        Point p1 = p0.plus(0, 0.4);
+        Point p2 = p1.plus(0, 0.4);
+        Point p3 = p2.plus(0, 0.4);
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, new Diagnostics(), motions(1, p1, rapid(p0, p1)),
+                motions(2, p2, rapid(p1, p2)), motions(3, p3, rapid(p2, p3)));
+        assertEquals(List.of("VP 1,0"), out.stream().filter(l -> l.startsWith("VP")).toList());
+    }
+
+    @Test
+    void spindleToolOutputsAndDwellInBlockOrder() {
+        CheckedBlock b = new CheckedBlock(9, OptionalDouble.of(1200), OptionalInt.of(3),
+                List.of(new MCall(11), new MCall(3), new MCall(41)), List.of(new Motion.Dwell(0.25)),
+                List.of(new MCall(9)), Point.ORIGIN);
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, new Diagnostics(), b);
+        // 1200 rpm / 400 rpm per volt = 3 V on C, the third channel; M41 has no outputs.
+        assertEquals(List.of("OF ,,3.0000", "TOOL=3", "CB4", "CB2", "SB1", "WT 250", "CB3", "CB7"),
+                out.subList(5, out.size() - 1));
+    }
+
+    @Test
+    void spindleAboveTenVoltsIsAnErrorAndJustBelowIsClamped() {
+        Diagnostics d = new Diagnostics();
+        CheckedBlock over = new CheckedBlock(5, OptionalDouble.of(4400), OptionalInt.empty(), List.of(),
+                List.of(), List.of(), Point.ORIGIN);
+        CheckedBlock max = new CheckedBlock(6, OptionalDouble.of(4000), OptionalInt.empty(), List.of(),
+                List.of(), List.of(), Point.ORIGIN);
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, d, over, max);
+        assertEquals(List.of("OF ,,9.9980"), out.stream().filter(l -> l.startsWith("OF")).toList());
+        List<Diagnostic> all = d.sorted();
+        assertEquals(Code.E203_SPINDLE_VOLTS, all.get(0).code());
+        assertEquals(Span.of(5, 1), all.get(0).span());
+        assertEquals(Code.E204_SPINDLE_VOLTS_CLAMPED, all.get(1).code());
+        assertEquals(Severity.WARNING, all.get(1).severity());
+    }
+
+    @Test
+    void countsBeyondThirtyTwoBitsAreLocatedErrors() {
+        Point far = new Point(0, 3_000_000_000.0);
+        Point back = new Point(0, 1000);
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, d, motions(12, far, rapid(Point.ORIGIN, far)),
+                motions(13, back, rapid(far, back)));
+        assertEquals(1, d.errorCount());
+        Diagnostic e = d.sorted().get(0);
+        assertEquals(Code.E201_GALIL_RANGE, e.code());
+        assertEquals(Span.of(12, 1), e.span());
+        assertEquals(List.of("VP", "3000000000"), e.args());
+        // The faulty move is left out; the next one starts from where the controller really is.
+        assertEquals(List.of("VP 1000,0"), out.stream().filter(l -> l.startsWith("VP")).toList());
+    }
+
+    @Test
+    void arcTooBigForFourDecimalAnglesIsALocatedError() {
+        // r = 2e9 counts: one printed angle step (0.0001 deg) moves the end ~3500 counts.
+        double r = 2e9;
+        Point c = new Point(0, 0);
+        Point from = new Point(0, r);
+        double a = Math.toRadians(0.00012345);
+        Point to = new Point(r * Math.sin(a), r * Math.cos(a));
+        Diagnostics d = new Diagnostics();
+        MachineProfile start = Fixtures.mapped(GENERIC, 'Y', 1, 'X', 1, from);
+        Fixtures.run("galil", start, d, motions(7, to, new Motion.Arc(false, from, to, c, r, new Feed(1, 100),
+                new Motion.ArcWords(null, 0.0, -r))));
+        assertEquals(Code.E202_ARC_NOT_REPRESENTABLE, d.sorted().get(0).code());
+        assertEquals(Span.of(7, 1), d.sorted().get(0).span());
+    }
+
+    @Test
+    void everyLineFitsEightyCharactersAtTheExtremes() {
+        double big = Integer.MAX_VALUE;
+        Point a = new Point(-big, -big);
+        Point b = new Point(big / 2, big / 2);
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", Fixtures.mapped(GENERIC, 'H', -1, 'G', -1, a), d,
+                new CheckedBlock(1, OptionalDouble.of(3999.9), OptionalInt.of(99999), List.of(), List.of(
+                        new Motion.Linear(false, a, b, new Feed(1, 1e9)),
+                        new Motion.Dwell(1e6)), List.of(), b));
+        assertTrue(out.contains("VM GH"), out.toString());
+        for (String l : out) {
+            assertTrue(l.length() <= 80, l);
+        }
+    }
+
+    @Test
+    void inlineSourceMapNamesEachBlocksLine() {
+        List<GalilLine> out = new ArrayList<>();
+        Dialect g = Dialect.create("galil", AT_ORIGIN, new Diagnostics(), true);
+        Point a = new Point(10, 10);
+        g.begin(out::add);
+        g.block(motions(17, a, rapid(Point.ORIGIN, a)), out::add);
+        g.block(motions(18, a), out::add); // nothing to emit: no comment either
+        g.end(out::add);
+        assertEquals(new GalilLine("NO L17", 17), out.get(5));
+        assertEquals(new GalilLine("VS 100000", 17), out.get(6));
+        assertEquals(new GalilLine("EN", 0), out.get(out.size() - 1));
+        assertEquals(1, out.stream().filter(l -> l.text().startsWith("NO")).count());
+    }
+
+    @Test
+    void sideSourceMapListsOutputLinesOfBlocks() {
+        SourceMap map = new SourceMap();
+        List<GalilLine> out = new ArrayList<>();
+        LineSink sink = map.wrap(out::add);
+        Dialect g = Dialect.create("galil", AT_ORIGIN, new Diagnostics());
+        Point a = new Point(10, 10);
+        g.begin(sink);
+        g.block(motions(4, a, rapid(Point.ORIGIN, a)), sink);
+        g.end(sink);
+        // Lines 1-5 are the header, 6-10 the sequence of line 4, 11 EN.
+        assertEquals(List.of("6 4", "7 4", "8 4", "9 4", "10 4"), map.lines());
+        assertEquals(11, out.size());
+    }
+
+    @Test
+    void unknownDialectIsRefused() {
+        assertThrows(IllegalArgumentException.class, () -> Dialect.create("fanuc", GENERIC, new Diagnostics()));
+    }
+
+    @Test
+    void feedBelowOneCountPerSecondIsALocatedError() {
+        Point a = new Point(0, 100);
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", AT_ORIGIN, d,
+                motions(21, a, new Motion.Linear(false, Point.ORIGIN, a, new Feed(4, 0.1))));
+        assertEquals(Code.E207_FEED_TOO_SLOW, d.sorted().get(0).code());
+        assertEquals(Span.of(21, 1), d.sorted().get(0).span());
+        assertEquals(List.of("0.1"), d.sorted().get(0).args());
+        assertEquals(0, out.stream().filter(l -> l.startsWith("VP")).count());
+    }
+}

@@ -1,0 +1,111 @@
+package gcnc.parse;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.diag.Span;
+import gcnc.ir.Letter;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The accepted language: words, spacing, case, comments and line ends. */
+class BlockReaderLayoutTest {
+
+    private static void expectClean(String source, List<String> blocks) {
+        Parsed p = Parsed.of(source);
+        assertEquals(List.of(), p.errors(), "diagnostics of: " + source);
+        assertEquals(blocks, p.shapes(), "blocks of: " + source);
+    }
+
+    @Test
+    void wordsKeepTheirTextLetterAndStartColumn() {
+        RawBlock b = Parsed.of("N1230 G01 X12.345 Z-45.678 F0.2\n").blocks().get(0);
+        assertEquals(List.of(new Word(Letter.N, "1230", Span.of(1, 1)), new Word(Letter.G, "01", Span.of(1, 7)),
+                new Word(Letter.X, "12.345", Span.of(1, 11)), new Word(Letter.Z, "-45.678", Span.of(1, 19)),
+                new Word(Letter.F, "0.2", Span.of(1, 28))), b.words());
+        assertEquals(Span.of(1, 28), b.last());
+        assertEquals(1, b.line());
+    }
+
+    @Test
+    void lettersInEitherCaseAndShortFormsKeepTheirText() {
+        expectClean("g1 m3 x+5. z.5 f.2\n", List.of("1: G1 M3 X+5. Z.5 F.2"));
+    }
+
+    @Test
+    void wordsWithoutSpacesAndWithTabs() {
+        expectClean("G01X10Z5\n\tN20\tM03 S1200\n", List.of("1: G01 X10 Z5", "2: N20 M03 S1200"));
+    }
+
+    @Test
+    void everyLetterOfTheLanguageTakesItsNumberShape() {
+        expectClean("N1 O2 G3 M4 X-1 Z+2 U.3 W4. I-5.5 K6 R7 P8 S9 F10 T0101\n",
+                List.of("1: N1 O2 G3 M4 X-1 Z+2 U.3 W4. I-5.5 K6 R7 P8 S9 F10 T0101"));
+    }
+
+    @Test
+    void commentsMidLineAndTrailingAreWhitespace() {
+        expectClean("N10 (rough) G00 X5 ; rapid\nN20 (a)(b)Z1 (end)\n", List.of("1: N10 G00 X5", "2: N20 Z1"));
+    }
+
+    @Test
+    void aMultiLineCommentSplitsBlocksByTheLineEachWordStandsOn() {
+        expectClean("N10 X5 (begin\nmiddle\nend) Z7\nN20\n", List.of("1: N10 X5", "3: Z7", "4: N20"));
+    }
+
+    @Test
+    void blankWhitespaceAndCommentOnlyLinesGiveNoBlock() {
+        Parsed p = Parsed.of("%\n\n   \t\n(header)\n; note\nO1000\n%\n");
+        assertEquals(List.of("6: O1000"), p.shapes());
+        assertEquals(List.of(), p.errors());
+        assertEquals(7, p.lines());
+    }
+
+    @Test
+    void tapeMarkIgnoresTheRestOfItsLine() {
+        expectClean("% anything $ Y goes\nN1\n", List.of("2: N1"));
+    }
+
+    @Test
+    void crlfLoneCrAndMissingFinalNewline() {
+        expectClean("N1 X1\r\nN2 X2\rN3 X3\r\n\r\nN5 X5", List.of("1: N1 X1", "2: N2 X2", "3: N3 X3", "5: N5 X5"));
+        assertEquals(5, Parsed.of("N1 X1\r\nN2 X2\rN3 X3\r\n\r\nN5 X5").lines());
+    }
+
+    @Test
+    void aByteOrderMarkIsIgnored() {
+        expectClean("\uFEFFN1\n", List.of("1: N1"));
+    }
+
+    @Test
+    void crlfColumnsAreUnaffected() {
+        Parsed p = Parsed.of("N1\r\nN2 $\r\n");
+        assertEquals(List.of("2:4 E003 [$]"), p.errors());
+    }
+
+    @Test
+    void lastIsTheStartOfTheLastWord() {
+        RawBlock b = Parsed.of("  N5   X10.5  \n").blocks().get(0);
+        assertEquals(Span.of(1, 8), b.last());
+        assertTrue(!b.malformed());
+    }
+
+    @Test
+    void emptyInput() {
+        Parsed p = Parsed.of("");
+        assertEquals(List.of(), p.blocks());
+        assertEquals(0, p.lines());
+    }
+
+    @Test
+    void theSamplesParseCleanly() throws java.io.IOException {
+        for (String name : List.of("samples/bishop.nc", "samples/turning.nc")) {
+            Parsed p = Parsed.of(new String(java.nio.file.Files.readAllBytes(java.nio.file.Path.of(name)),
+                    java.nio.charset.StandardCharsets.UTF_8));
+            assertEquals(List.of(), p.errors(), name);
+            assertTrue(p.blocks().size() > 10, name);
+        }
+    }
+}

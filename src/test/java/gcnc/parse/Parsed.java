@@ -1,0 +1,48 @@
+package gcnc.parse;
+
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.RawBlock;
+import java.io.IOException;
+import java.io.StringReader;
+import java.io.UncheckedIOException;
+import java.util.ArrayList;
+import java.util.List;
+
+/** Test helper: everything BlockReader makes of one source text. */
+record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
+
+    static Parsed of(String source) {
+        Diagnostics diagnostics = new Diagnostics();
+        BlockReader reader = new BlockReader(new StringReader(source), diagnostics);
+        List<RawBlock> blocks = new ArrayList<>();
+        try {
+            for (RawBlock b = reader.next(); b != null; b = reader.next()) {
+                blocks.add(b);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return new Parsed(blocks, diagnostics.sorted(), reader.lines());
+    }
+
+    /** Diagnostics as "line:column E<n> args", easy to compare. */
+    List<String> errors() {
+        List<String> out = new ArrayList<>();
+        for (Diagnostic d : diagnostics) {
+            out.add(d.span().line() + ":" + d.span().column() + " " + d.code().id() + " " + d.args());
+        }
+        return out;
+    }
+
+    /** Blocks as "line: words" with a trailing "!" when malformed. */
+    List<String> shapes() {
+        List<String> out = new ArrayList<>();
+        for (RawBlock b : blocks) {
+            StringBuilder sb = new StringBuilder().append(b.line()).append(':');
+            b.words().forEach(w -> sb.append(' ').append(w.letter()).append(w.number()));
+            out.add(b.malformed() ? sb.append(" !").toString() : sb.toString());
+        }
+        return out;
+    }
+}

@@ -1,0 +1,107 @@
+package gcnc.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.check.Checker;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.galil.Dialect;
+import gcnc.galil.GalilLine;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.RawBlock;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileLoader;
+import gcnc.parse.BlockReader;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.Reader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+
+/** The whole pipeline on the samples: parse, check, write DMC, replay it. */
+class PipelineTest {
+    private static List<DmcLine> dmc(List<GalilLine> lines) {
+        List<DmcLine> out = new ArrayList<>(lines.size());
+        for (GalilLine g : lines) {
+            out.add(new DmcLine(g.text(), g.sourceLine()));
+        }
+        return out;
+    }
+
+    /** Runs a sample through every stage; returns the simulator's findings as "E309@36". */
+    static List<String> simulate(String sample, String machine, String dialect, SimOptions options,
+                                 SimReport[] report) throws Exception {
+        Tables tables = Tables.builtIn();
+        MachineProfile profile = ProfileLoader.load(machine, TableSource.builtIn(), tables);
+        Diagnostics d = new Diagnostics();
+        Simulator sim = new Simulator(profile, options, d);
+        Dialect out = Dialect.create(dialect, profile, d);
+        Checker checker = new Checker(tables, profile, d);
+        List<GalilLine> buf = new ArrayList<>();
+        out.begin(buf::add);
+        sim.begin(dmc(buf));
+        int last = 1;
+        try (Reader in = Files.newBufferedReader(Path.of("samples", sample))) {
+            BlockReader reader = new BlockReader(in, d);
+            for (RawBlock b = reader.next(); b != null; b = reader.next()) {
+                last = b.line();
+                Optional<CheckedBlock> cb = checker.check(b);
+                if (cb.isPresent()) {
+                    buf.clear();
+                    out.block(cb.get(), buf::add);
+                    sim.block(cb.get(), dmc(buf));
+                }
+            }
+        }
+        checker.finish(last);
+        buf.clear();
+        out.end(buf::add);
+        sim.end(dmc(buf));
+        if (report != null) {
+            report[0] = sim.report();
+        }
+        List<String> codes = new ArrayList<>();
+        for (Diagnostic x : d.sorted()) {
+            codes.add(x.code().id() + "@" + x.span().line());
+        }
+        return codes;
+    }
+
+    @Test
+    void bishopInTheGalilDialectSimulatesClean() throws Exception {
+        SimReport[] r = new SimReport[1];
+        assertEquals(List.of(), simulate("bishop.nc", "thesis-2004", "galil", SimOptions.defaults(), r));
+        assertEquals(57, r[0].sequences());
+    }
+
+    /** Table 5.2's three zero-sweep arcs: N240, N260 and N410, nothing else. */
+    @Test
+    void bishopInTheThesisDialectHasExactlyTheThreeZeroSweepArcs() throws Exception {
+        List<String> src = Files.readAllLines(Path.of("samples", "bishop.nc"));
+        List<String> expected = List.of("E309@" + (lineOf(src, "N240") + 1), "E309@" + (lineOf(src, "N260") + 1),
+                "E309@" + (lineOf(src, "N410") + 1));
+        assertEquals(expected, simulate("bishop.nc", "thesis-2004", "thesis", SimOptions.defaults(), null));
+    }
+
+    @Test
+    void turningOnTheGenericLatheSimulatesClean() throws Exception {
+        SimReport[] r = new SimReport[1];
+        assertEquals(List.of(), simulate("turning.nc", "generic", "galil", SimOptions.defaults(), r));
+        assertEquals(20, r[0].xMinMm(), 1e-9);  // X40. as a radius
+        assertTrue(r[0].cycleSeconds() > 0);
+    }
+
+    private static int lineOf(List<String> src, String prefix) {
+        for (int i = 0; i < src.size(); i++) {
+            if (src.get(i).startsWith(prefix)) {
+                return i;
+            }
+        }
+        throw new AssertionError(prefix);
+    }
+}
