@@ -3,6 +3,7 @@ package gcnc.sim;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
+import gcnc.galil.GalilLine;
 import gcnc.machine.MachineProfile;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -22,7 +23,7 @@ public final class DmcReplay {
     public static SimReport replay(BufferedReader in, MachineProfile profile, SimOptions options,
                                    Diagnostics diagnostics) {
         Simulator sim = new Simulator(profile, options, diagnostics);
-        List<DmcLine> chunk = new ArrayList<>();
+        List<GalilLine> chunk = new ArrayList<>();
         int dmcLine = 0;
         int source = -1;
         try {
@@ -32,7 +33,7 @@ public final class DmcReplay {
                 if (t.startsWith("NO L")) {
                     source = sourceLine(t.substring(4), source);
                 }
-                chunk.add(new DmcLine(l, source > 0 ? source : dmcLine));
+                chunk.add(new GalilLine(l, source > 0 ? source : dmcLine));
                 if (chunk.size() == 1024) {
                     sim.replay(chunk);
                     chunk.clear();

@@ -4,6 +4,7 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
+import gcnc.galil.GalilLine;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
@@ -48,12 +49,12 @@ public final class Simulator {
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
     }
 
-    public void begin(List<DmcLine> header) {
+    public void begin(List<GalilLine> header) {
         run(header);
     }
 
     /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
-    public void block(CheckedBlock intended, List<DmcLine> emitted) {
+    public void block(CheckedBlock intended, List<GalilLine> emitted) {
         expected = new ArrayList<>(intended.motions().size());
         for (Motion m : intended.motions()) {
             if (!(m instanceof Motion.Dwell)) {
@@ -72,13 +73,13 @@ public final class Simulator {
         expected = List.of();
     }
 
-    public void end(List<DmcLine> footer) {
+    public void end(List<GalilLine> footer) {
         run(footer);
         closeSequences(lastLine);
     }
 
     /** Replays DMC with no G-code to compare against: a hand-edited file, or --trace. */
-    public void replay(List<DmcLine> lines) {
+    public void replay(List<GalilLine> lines) {
         expected = null;
         run(lines);
     }
@@ -87,8 +88,8 @@ public final class Simulator {
         return checks.report(findings);
     }
 
-    private void run(List<DmcLine> lines) {
-        for (DmcLine l : lines) {
+    private void run(List<GalilLine> lines) {
+        for (GalilLine l : lines) {
             dmc.line(l.text(), l.sourceLine());
             lastLine = Math.max(1, l.sourceLine());
             if (trace != null) {

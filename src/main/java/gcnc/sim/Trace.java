@@ -1,5 +1,6 @@
 package gcnc.sim;
 
+import gcnc.galil.GalilLine;
 import gcnc.machine.MachineProfile;
 import java.io.IOException;
 
@@ -20,7 +21,7 @@ final class Trace {
         this.kz = p.z().countsPerMm();
     }
 
-    void line(DmcLine l, double x, double z, int tool, String outputs) {
+    void line(GalilLine l, double x, double z, int tool, String outputs) {
         if (broken) {
             return;
         }

@@ -25,14 +25,6 @@ import org.junit.jupiter.api.Test;
 
 /** The whole pipeline on the samples: parse, check, write DMC, replay it. */
 class PipelineTest {
-    private static List<DmcLine> dmc(List<GalilLine> lines) {
-        List<DmcLine> out = new ArrayList<>(lines.size());
-        for (GalilLine g : lines) {
-            out.add(new DmcLine(g.text(), g.sourceLine()));
-        }
-        return out;
-    }
-
     /** Runs a sample through every stage; returns the simulator's findings as "E309@36". */
     static List<String> simulate(String sample, String machine, String dialect, SimOptions options,
                                  SimReport[] report) throws Exception {
@@ -44,7 +36,7 @@ class PipelineTest {
         Checker checker = new Checker(tables, profile, d);
         List<GalilLine> buf = new ArrayList<>();
         out.begin(buf::add);
-        sim.begin(dmc(buf));
+        sim.begin(buf);
         int last = 1;
         try (Reader in = Files.newBufferedReader(Path.of("samples", sample))) {
             BlockReader reader = new BlockReader(in, d);
@@ -54,14 +46,14 @@ class PipelineTest {
                 if (cb.isPresent()) {
                     buf.clear();
                     out.block(cb.get(), buf::add);
-                    sim.block(cb.get(), dmc(buf));
+                    sim.block(cb.get(), buf);
                 }
             }
         }
         checker.finish(last);
         buf.clear();
         out.end(buf::add);
-        sim.end(dmc(buf));
+        sim.end(buf);
         if (report != null) {
             report[0] = sim.report();
         }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.galil.GalilLine;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;

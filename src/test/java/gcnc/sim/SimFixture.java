@@ -2,6 +2,7 @@ package gcnc.sim;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.galil.GalilLine;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Feed;
 import gcnc.ir.MCall;
@@ -74,10 +75,10 @@ final class SimFixture {
         sim.begin(lines(0, "#GCNC", "SH XY", "VM XY", "VA 10000", "VD 10000"));
     }
 
-    static List<DmcLine> lines(int source, String... text) {
-        List<DmcLine> out = new ArrayList<>();
+    static List<GalilLine> lines(int source, String... text) {
+        List<GalilLine> out = new ArrayList<>();
         for (String t : text) {
-            out.add(new DmcLine(t, source));
+            out.add(new GalilLine(t, source));
         }
         return out;
     }
