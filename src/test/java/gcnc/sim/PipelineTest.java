@@ -88,6 +88,16 @@ class PipelineTest {
         assertTrue(r[0].cycleSeconds() > 0);
     }
 
+    /** samples/bishop.svg is this drawing, byte for byte (regenerate it when the drawing changes). */
+    @Test
+    void bishopSvgIsTheCommittedSample() throws Exception {
+        SimReport[] r = new SimReport[1];
+        simulate("bishop.nc", "thesis-2004", "galil", SimOptions.defaults().withPath(), r);
+        java.io.StringWriter w = new java.io.StringWriter();
+        SvgWriter.write(r[0], "bishop.nc on thesis-2004, galil dialect", w);
+        assertEquals(Files.readString(Path.of("samples", "bishop.svg")), w.toString());
+    }
+
     private static int lineOf(List<String> src, String prefix) {
         for (int i = 0; i < src.size(); i++) {
             if (src.get(i).startsWith(prefix)) {
