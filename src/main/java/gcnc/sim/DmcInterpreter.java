@@ -156,21 +156,15 @@ final class DmcInterpreter {
     }
 
     private void vp(String args, String text, int line) {
-        String[] a = args.split(",", -1);
-        if (a.length != 2) {
+        int comma = args.indexOf(',');
+        long p = comma < 0 ? BAD : parseLong(args, 0, comma);
+        long q = comma < 0 ? BAD : parseLong(args, comma + 1, args.length());
+        if (p == BAD || q == BAD) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "VP", text);
             return;
         }
-        int p = integerOrNan(a[0]);
-        int q = integerOrNan(a[1]);
-        if (p == Integer.MIN_VALUE || q == Integer.MIN_VALUE) {
-            boolean tooBig = !Double.isNaN(number(a[0])) && !Double.isNaN(number(a[1]))
-                    && (Math.abs(number(a[0])) > INT32 || Math.abs(number(a[1])) > INT32);
-            if (tooBig) {
-                out.report(Code.E310_SIM_COUNT_RANGE, line, text);
-            } else {
-                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "VP", text);
-            }
+        if (Math.abs(p) > INT32 || Math.abs(q) > INT32) {
+            out.report(Code.E310_SIM_COUNT_RANGE, line, text);
             return;
         }
         startIfNeeded();
@@ -236,9 +230,9 @@ final class DmcInterpreter {
         }
         g1 = cursor1;
         g2 = cursor2;
-        List<Segment> segs = List.copyOf(pending);
+        // The listener reads the segments during the call and keeps none of them.
+        out.sequence(pending, speed, line, text);
         pending.clear();
-        out.sequence(segs, speed, line, text);
     }
 
     private void of(String args, String text, int line) {
@@ -278,6 +272,36 @@ final class DmcInterpreter {
             return -1;
         }
         return v;
+    }
+
+    private static final long BAD = Long.MIN_VALUE;
+
+    /** The optionally signed decimal integer in s[from, to) (at most 15 digits), or BAD. */
+    private static long parseLong(String s, int from, int to) {
+        int i = from;
+        while (i < to && s.charAt(i) == ' ') {
+            i++;
+        }
+        while (to > i && s.charAt(to - 1) == ' ') {
+            to--;
+        }
+        boolean negative = false;
+        if (i < to && (s.charAt(i) == '-' || s.charAt(i) == '+')) {
+            negative = s.charAt(i) == '-';
+            i++;
+        }
+        if (i == to || to - i > 15) {
+            return BAD;
+        }
+        long v = 0;
+        for (; i < to; i++) {
+            char c = s.charAt(i);
+            if (c < '0' || c > '9') {
+                return BAD;
+            }
+            v = v * 10 + (c - '0');
+        }
+        return negative ? -v : v;
     }
 
     /** Integer.MIN_VALUE when s is not an integer that fits 32 bits. */

@@ -26,6 +26,7 @@ public final class Simulator {
     private final OutputState outputs;
     private final MotionChecks checks;
     private final Trace trace;
+    private final List<Motion> motions = new ArrayList<>();
     private List<Motion> expected = List.of();
     private int nextMotion;
     private int findings;
@@ -55,7 +56,8 @@ public final class Simulator {
 
     /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
     public void block(CheckedBlock intended, List<GalilLine> emitted) {
-        expected = new ArrayList<>(intended.motions().size());
+        expected = motions;
+        motions.clear();
         for (Motion m : intended.motions()) {
             if (!(m instanceof Motion.Dwell)) {
                 expected.add(m);
