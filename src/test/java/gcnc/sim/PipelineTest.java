@@ -88,6 +88,14 @@ class PipelineTest {
         assertTrue(r[0].cycleSeconds() > 0);
     }
 
+    /** Arcs in every quadrant, G28/G29, offsets and units: the machine does what each block says. */
+    @Test
+    void otherGenericSamplesSimulateClean() throws Exception {
+        for (String sample : new String[] {"arcs.nc", "home.nc", "offsets.nc", "units.nc"}) {
+            assertEquals(List.of(), simulate(sample, "generic", "galil", SimOptions.defaults(), null), sample);
+        }
+    }
+
     /** samples/bishop.svg is this drawing, byte for byte (regenerate it when the drawing changes). */
     @Test
     void bishopSvgIsTheCommittedSample() throws Exception {
