@@ -101,7 +101,7 @@ final class ThesisDialect implements Dialect {
     }
 
     private double speed(gcnc.ir.Feed feed) {
-        return feed == null ? profile.rapidSpeed() : feed.programmed() * profile.thesisFeedFactor();
+        return feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
     }
 
     /** {@code VS / <move> / BGS}, or nothing when a number did not fit (already reported). */

@@ -32,7 +32,8 @@ import java.util.Optional;
  * @param toolOffsets     offset number (1..) to tool offset, counts
  * @param tools           how many tools the turret holds (T numbers 1..tools)
  * @param outputs         M code to the Galil output directives it becomes (e.g. 3 -> [CB4, SB3])
- * @param thesisFeedFactor the thesis dialect's VS = F x factor (20 on the thesis machine)
+ * @param feedPerF        counts/s per unit/min of F, when the machine is calibrated that way
+ *                        (the thesis machine: VS = F x 20); 0 = from counts per mm or inch
  * @param file            the profile text, for keys read elsewhere
  */
 public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
@@ -40,7 +41,7 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
                              double maxFeed, double acceleration, double deceleration, double maxRpm,
                              double rpmPerVolt, char spindleAxis, boolean rearToolPost,
                              Map<Integer, Point> workOffsets, Map<Integer, Point> toolOffsets, int tools,
-                             Map<Integer, List<String>> outputs, double thesisFeedFactor, ProfileFile file) {
+                             Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file) {
     public MachineProfile {
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);

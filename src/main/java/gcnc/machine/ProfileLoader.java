@@ -104,7 +104,14 @@ public final class ProfileLoader {
                 f.number("vector.acceleration", 256000), f.number("vector.deceleration", 256000),
                 f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis.charAt(0),
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
-                work, tools, toolCount, outputs, f.number("thesis.feed_factor", 20), f);
+                work, tools, toolCount, outputs, feedPerF(f), f);
+    }
+
+    private static double feedPerF(ProfileFile f) throws TableException {
+        if (f.entry("feed.per_f").isEmpty()) {
+            return 0;
+        }
+        return f.positive("feed.per_f");
     }
 
     private static Axis axis(ProfileFile f, String a) throws TableException {

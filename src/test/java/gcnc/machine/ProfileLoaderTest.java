@@ -28,7 +28,7 @@ class ProfileLoaderTest {
         assertEquals(1200, p.z().countsPerInch());
         assertEquals(new Point(-20000, -20000), p.workOffset(54).orElseThrow());
         assertEquals(20000, p.rapidSpeed());
-        assertEquals(20, p.thesisFeedFactor());
+        assertEquals(20, p.feedPerF());
         assertEquals(300, p.rpmPerVolt());
         assertTrue(p.maxRpm() >= 5000);
         assertFalse(p.diameterX());

@@ -10,7 +10,7 @@ import gcnc.machine.MachineProfile;
 
 /**
  * F to a path speed in counts per second: G94/G98 units per minute, G95/G99 units per
- * revolution at the spindle speed of the move. A feed above the profile's maximum is an error
+ * revolution at the spindle speed of the move; a profile may calibrate F directly ({@code feed.per_f}). A feed above the profile's maximum is an error
  * (E103), not a silent clamp: the part would be cut slower than programmed. Per revolution
  * without any spindle speed is E104.
  */
@@ -24,7 +24,8 @@ public final class Feeds {
     /** The feed of a cutting move at {@code rpm}, or null after reporting. */
     public Feed feed(BlockDraft d, double rpm, Diagnostics out) {
         double f = d.next.feed;
-        double perUnit = p.z().countsPer(d.units);
+        // counts/s for one unit/min of F: the machine's own calibration, else its encoder scale
+        double perUnitPerMin = p.feedPerF() > 0 ? p.feedPerF() : p.z().countsPer(d.units) / 60;
         Span at = d.has(Letter.F) ? d.word(Letter.F).span() : d.end();
         double cps;
         if (d.next.feedPerRev) {
@@ -32,9 +33,9 @@ public final class Feeds {
                 d.fail(out, Code.E104_FEED_PER_REV_NO_SPEED, at);
                 return null;
             }
-            cps = f * rpm / 60 * perUnit;
+            cps = f * rpm * perUnitPerMin;
         } else {
-            cps = f / 60 * perUnit;
+            cps = f * perUnitPerMin;
         }
         if (cps > p.maxFeed()) {
             d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, Arcs.round(cps), Arcs.round(p.maxFeed()));

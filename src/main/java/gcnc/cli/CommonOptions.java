@@ -1,0 +1,41 @@
+package gcnc.cli;
+
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileLoader;
+import gcnc.tables.ErrorMessages;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.nio.file.Path;
+import picocli.CommandLine.Option;
+
+/** Options every command shares: where tables come from, which machine, which language. */
+final class CommonOptions {
+    @Option(names = "--tables", paramLabel = "DIR",
+            description = "Read the tables from DIR (an edited copy of tables/) instead of the built-in ones.")
+    Path tables;
+
+    @Option(names = "--machine", paramLabel = "NAME|PATH", defaultValue = ProfileLoader.DEFAULT,
+            description = "Machine profile: a name under tables/machines/ or a .machine file (default: ${DEFAULT-VALUE}).")
+    String machine;
+
+    @Option(names = "--lang", paramLabel = "en|es", defaultValue = "en",
+            description = "Language of the messages: en (default) or es.")
+    ErrorMessages.Lang lang;
+
+    TableSource source() {
+        return tables == null ? TableSource.builtIn() : TableSource.directory(tables);
+    }
+
+    Tables loadTables() throws TableException {
+        return Tables.load(source());
+    }
+
+    MachineProfile loadProfile(Tables t) throws TableException {
+        return ProfileLoader.load(machine, source(), t);
+    }
+
+    ErrorMessages.Lang language() {
+        return lang;
+    }
+}

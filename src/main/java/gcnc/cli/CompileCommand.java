@@ -1,0 +1,114 @@
+package gcnc.cli;
+
+import gcnc.Compiler;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Span;
+import gcnc.galil.SourceMap;
+import gcnc.machine.MachineProfile;
+import gcnc.tables.TableException;
+import gcnc.tables.Tables;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.Reader;
+import java.nio.file.Path;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+@Command(name = "compile", mixinStandardHelpOptions = true,
+        description = {"Check a program, translate it to a Galil DMC program and verify that in the simulator.",
+                "Writes the output file only when there is no error; never a half-written one."})
+final class CompileCommand implements Callable<Integer> {
+    @Mixin
+    CommonOptions common;
+
+    @Mixin
+    DialectOptions dialect;
+
+    @Parameters(paramLabel = "FILE", description = "The G-code program.")
+    Path file;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT", description = "Output file (default: FILE with extension .dmc).")
+    Path output;
+
+    @Option(names = "--source-map", description = "Put a Galil comment (NO L<line>) naming the G-code line before each block's directives.")
+    boolean sourceMap;
+
+    @Option(names = "--no-simulate", description = "Skip the simulation (travel, collisions, path conformance are then NOT verified).")
+    boolean noSimulate;
+
+    @Mixin
+    StockOptions stock;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Tables tables;
+        MachineProfile profile;
+        try {
+            tables = common.loadTables();
+            profile = common.loadProfile(tables);
+        } catch (TableException e) {
+            return Reporter.tableFault(err, e, common.language());
+        }
+        Reporter reporter = new Reporter(err, tables, common.language());
+        boolean simulate = !noSimulate && dialect.simulatedByDefault();
+        if (noSimulate) {
+            err.println("gcnc: warning: --no-simulate: travel limits, collisions and path conformance were NOT verified");
+        } else if (!simulate) {
+            err.println("gcnc: note: the thesis dialect is a record of the thesis's Table 5.2, not a program for a real"
+                    + " controller; it is not simulated (see why: gcnc simulate --dialect thesis)");
+        }
+        Path target = output != null ? output : defaultOutput(file);
+        Compiler.Result r;
+        try (Reader in = SourceFiles.open(file); AtomicOutput dmc = new AtomicOutput(target);
+             AtomicOutput map = new AtomicOutput(mapFile(target))) {
+            SourceMap mapper = new SourceMap(map::line);
+            r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(),
+                    simulate ? Optional.of(stock.options(file, profile)) : Optional.empty(), sourceMap),
+                    mapper.wrap(line -> dmc.line(line.text())));
+            reporter.report(file.toString(), r.diagnostics());
+            if (r.ok()) {
+                dmc.commit();
+                if (!sourceMap) {
+                    map.commit();
+                }
+                out.println(file + ": " + Reporter.plural(r.blocks(), "block") + " -> " + target
+                        + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
+                r.simulation().ifPresent(s -> out.println(SimSummary.format(s)));
+            } else {
+                out.println(file + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
+            }
+        } catch (IOException e) {
+            reporter.report(file.toString(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), SourceFiles.reason(e)));
+            return ExitCode.USAGE;
+        } catch (TableException e) {
+            return Reporter.tableFault(err, e, common.language());
+        } catch (StockOptions.BadStock e) {
+            err.println("gcnc: " + e.getMessage());
+            return ExitCode.USAGE;
+        }
+        out.flush();
+        return r.ok() ? ExitCode.CLEAN : ExitCode.PROGRAM_ERRORS;
+    }
+
+    static Path defaultOutput(Path file) {
+        String name = file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return file.resolveSibling((dot > 0 ? name.substring(0, dot) : name) + ".dmc");
+    }
+
+    static Path mapFile(Path target) {
+        return target.resolveSibling(target.getFileName() + ".map");
+    }
+}

@@ -1,0 +1,72 @@
+package gcnc.cli;
+
+import gcnc.machine.MachineProfile;
+import gcnc.sim.SimMachine;
+import gcnc.sim.SimOptions;
+import gcnc.sim.StockHeader;
+import gcnc.sim.StockSize;
+import gcnc.tables.TableException;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Optional;
+import picocli.CommandLine.Option;
+
+/**
+ * The blank the simulator starts from: {@code --stock}, else the program's stock header
+ * (an EMCO-style first-line comment {@code (length diameter ...)}), else the profile's default.
+ * A profile whose frame is not millimetres (thesis-2004) sets {@code stock.header = ignore}.
+ */
+final class StockOptions {
+    /** A --stock value that is not three (or two) positive numbers. */
+    static final class BadStock extends Exception {
+        BadStock(String message) {
+            super(message);
+        }
+    }
+
+    @Option(names = "--stock", paramLabel = "DIA,LENGTH[,STICKOUT]",
+            description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws.")
+    String stock;
+
+    SimOptions options(Path program, MachineProfile profile) throws BadStock, TableException, IOException {
+        SimOptions o = SimOptions.defaults();
+        Optional<StockSize> profileStock = SimMachine.read(profile).stock();
+        double stickout = profileStock.map(StockSize::stickout).orElse(0.0);
+        if (stock != null) {
+            return o.withStock(parse(stock, stickout));
+        }
+        if (profile.file().choice("stock.header", "use", "use", "ignore").equals("use")) {
+            try (BufferedReader in = new BufferedReader(SourceFiles.open(program))) {
+                String first = in.readLine();
+                if (first != null) {
+                    Optional<StockSize> header = StockHeader.parse(first, stickout);
+                    if (header.isPresent()) {
+                        return o.withStock(header.get());
+                    }
+                }
+            }
+        }
+        return o;
+    }
+
+    static StockSize parse(String text, double defaultStickout) throws BadStock {
+        String[] parts = text.split(",");
+        if (parts.length < 2 || parts.length > 3) {
+            throw new BadStock("--stock takes DIA,LENGTH or DIA,LENGTH,STICKOUT in mm, not '" + text + "'");
+        }
+        double[] v = new double[3];
+        v[2] = defaultStickout;
+        for (int i = 0; i < parts.length; i++) {
+            try {
+                v[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException e) {
+                throw new BadStock("--stock: '" + parts[i].trim() + "' is not a number");
+            }
+            if (!(v[i] > 0)) {
+                throw new BadStock("--stock: every value must be greater than 0");
+            }
+        }
+        return new StockSize(v[0], v[1], v[2]);
+    }
+}

@@ -1,0 +1,80 @@
+package gcnc;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.DynamicTest.dynamicTest;
+
+import gcnc.galil.GalilLine;
+import gcnc.machine.ProfileLoader;
+import gcnc.sim.SimOptions;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.TestFactory;
+
+/**
+ * Whole programs through the whole pipeline, compared byte for byte with reviewed output in
+ * src/test/resources/golden/. After a deliberate change, regenerate with
+ * {@code gradle junitPlatformTest -PupdateGolden} and review the diff before committing.
+ */
+class GoldenTest {
+    /** sample program, machine profile, dialect. */
+    record Case(String sample, String machine, String dialect) {
+        Path golden() {
+            return Path.of("src/test/resources/golden", sample + "." + machine + "." + dialect + ".dmc");
+        }
+    }
+
+    static final List<Case> CASES = List.of(
+            new Case("bishop", "thesis-2004", "thesis"),
+            new Case("bishop", "thesis-2004", "galil"),
+            new Case("turning", "generic", "galil"),
+            new Case("arcs", "generic", "galil"),
+            new Case("units", "generic", "galil"),
+            new Case("offsets", "generic", "galil"),
+            new Case("home", "generic", "galil"),
+            new Case("dwell-css", "generic", "galil"));
+
+    static String compile(Case c) throws Exception {
+        Tables tables = Tables.builtIn();
+        Compiler.Settings s = new Compiler.Settings(tables, ProfileLoader.load(c.machine(), TableSource.builtIn(), tables),
+                c.dialect(), c.dialect().equals("galil") ? Optional.of(SimOptions.defaults()) : Optional.empty());
+        StringBuilder out = new StringBuilder();
+        try (Reader in = Files.newBufferedReader(Path.of("samples", c.sample() + ".nc"))) {
+            Compiler.Result r = Compiler.compile(in, s, (GalilLine l) -> out.append(l.text()).append('\n'));
+            assertTrue(r.ok(), () -> c + " has findings: " + r.diagnostics().sorted());
+        }
+        return out.toString();
+    }
+
+    @TestFactory
+    Stream<DynamicTest> everySampleMatchesItsGoldenFile() {
+        boolean update = Boolean.getBoolean("gcnc.updateGolden");
+        return CASES.stream().map(c -> dynamicTest(c.sample() + " on " + c.machine() + ", " + c.dialect() + " dialect", () -> {
+            String actual = compile(c);
+            if (update) {
+                Files.createDirectories(c.golden().getParent());
+                Files.writeString(c.golden(), actual, StandardCharsets.UTF_8);
+            }
+            assertEquals(Files.readString(c.golden(), StandardCharsets.UTF_8), actual);
+        }));
+    }
+
+    @TestFactory
+    Stream<DynamicTest> compilingTwiceGivesTheSameBytes() {
+        return CASES.stream().map(c -> dynamicTest(c.sample() + " is deterministic", () -> assertEquals(compile(c), compile(c))));
+    }
+
+    static List<String> lines(Path p) throws IOException {
+        return new ArrayList<>(Files.readAllLines(p));
+    }
+}

@@ -1,0 +1,163 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+/** gcnc as a user runs it: arguments in, exit status and text out (picocli execute, no System.exit). */
+class CliTest {
+    record Run(int status, String out, String err) {
+    }
+
+    static Run gcnc(String... args) {
+        CommandLine cl = Main.commandLine();
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        int status = cl.execute(args);
+        return new Run(status, out.toString(), err.toString());
+    }
+
+    static Path program(String text) throws IOException {
+        Path dir = Files.createTempDirectory("gcnc-cli");
+        Path p = dir.resolve("part.nc");
+        Files.writeString(p, text);
+        return p;
+    }
+
+    @Test
+    void theSampleProgramChecksClean() {
+        Run r = gcnc("check", "samples/turning.nc");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("samples/turning.nc: 13 blocks, no errors"), r.out());
+        assertEquals("", r.err());
+    }
+
+    @Test
+    void everyErrorOfTheProgramInOneRunSortedWithExitOne() throws IOException {
+        Path p = program(String.join("\n",
+                "O1001",
+                "N10 G21 G90 G98",
+                "N20 G50 S2500",
+                "N30 M11",
+                "N40 T0101",
+                "N50 G01 X40. Z2. F120.",       // cut before M03
+                "N60 S1200 M03",
+                "N70 G01 X40. Z-10. F120.",   // the failed N50 set no F: a block with an error changes nothing
+                "N80 G01 Z-12. $",              // illegal character
+                "N90 G02 X46. Z-40. R3.",       // R cannot span the chord
+                "N100 M05",
+                "N110 M30", ""));
+        Run r = gcnc("check", p.toString());
+        assertEquals(1, r.status(), r.err());
+        String[] lines = r.err().strip().split("\n");
+        assertEquals(3, lines.length, r.err());
+        assertTrue(lines[0].startsWith(p + ":6:"), lines[0]);
+        assertTrue(lines[1].startsWith(p + ":9:15: error[E003]:"), lines[1]);
+        assertTrue(lines[2].startsWith(p + ":10:"), lines[2]);
+        assertTrue(r.out().contains("3 errors"), r.out());
+    }
+
+    @Test
+    void spanishMessagesOnRequest() throws IOException {
+        Path p = program("G21\nM30\nG00 X1. Z1.\n");
+        Run r = gcnc("check", "--lang", "es", p.toString());
+        assertEquals(1, r.status());
+        assertTrue(r.err().contains("error[E053]: La función M30 solo puede estar al final del programa"), r.err());
+    }
+
+    @Test
+    void aMissingFileIsAnIoProblemExitTwo() {
+        Run r = gcnc("check", "no/such/file.nc");
+        assertEquals(2, r.status());
+        assertEquals("no/such/file.nc:1:1: error[E500]: cannot read: no such file\n", r.err());
+    }
+
+    @Test
+    void aBrokenProfileIsReportedWhereItIsBroken() throws IOException {
+        Path bad = Files.createTempFile("lathe", ".machine");
+        Files.writeString(bad, Files.readString(Path.of("tables/machines/generic.machine")).replace("x.sign = 1", "x.sign = up"));
+        Run r = gcnc("check", "--machine", bad.toString(), "samples/turning.nc");
+        assertEquals(2, r.status());
+        assertTrue(r.err().startsWith(bad + ":"), r.err());
+        assertTrue(r.err().contains("error[E400]: 'up' is not a number (x.sign)"), r.err());
+    }
+
+    @Test
+    void unknownOptionsAndCommandsAreUsageErrors() {
+        assertEquals(2, gcnc("check", "--frobnicate", "x.nc").status());
+        assertEquals(2, gcnc("launch").status());
+        assertEquals(2, gcnc().status());
+        assertEquals(2, gcnc("check", "--lang", "fr", "samples/turning.nc").status());
+    }
+
+    @Test
+    void helpAndVersion() {
+        Run help = gcnc("--help");
+        assertEquals(0, help.status());
+        assertTrue(help.out().contains("compile"), help.out());
+        Run version = gcnc("--version");
+        assertEquals(0, version.status());
+        assertTrue(version.out().startsWith("gcnc "), version.out());
+    }
+
+    @Test
+    void tablesPrintsTheThesisTables() {
+        Run r = gcnc("tables");
+        assertEquals(0, r.status());
+        assertTrue(r.out().contains("G02       01  Circular interpolation clockwise"), r.out());
+        assertTrue(r.out().contains("M03       02  start    Spindle rotation normal (CW)"), r.out());
+        assertTrue(r.out().contains("E054  comment opened inside a comment"), r.out());
+    }
+
+    @Test
+    void compileReproducesTableFiveTwoByteForByte() throws IOException {
+        Path out = Files.createTempDirectory("gcnc-out").resolve("bishop.dmc");
+        Run r = gcnc("compile", "samples/bishop.nc", "--machine", "thesis-2004", "--dialect", "thesis", "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertArrayEquals(Files.readAllBytes(Path.of("src/test/resources/golden/bishop.thesis-2004.thesis.dmc")), Files.readAllBytes(out));
+    }
+
+    @Test
+    void aProgramWithErrorsLeavesNoOutputAtAll() throws IOException {
+        Path p = program("G21\nG01 X10. Z5.\nM30\n");
+        Path out = p.resolveSibling("part.dmc");
+        Files.writeString(out, "old output\n");
+        Run r = gcnc("compile", p.toString());
+        assertEquals(1, r.status(), r.err());
+        assertEquals("old output\n", Files.readString(out), "a failed compile must not touch an existing output");
+        try (Stream<Path> s = Files.list(p.getParent())) {
+            assertFalse(s.anyMatch(f -> f.getFileName().toString().endsWith(".part")), "no temporary file left behind");
+        }
+    }
+
+    @Test
+    void compileWritesTheDefaultDialectAndASourceMap() throws IOException {
+        Path p = program(Files.readString(Path.of("samples/turning.nc")));
+        Run r = gcnc("compile", p.toString());
+        assertEquals(0, r.status(), r.err());
+        Path dmc = p.resolveSibling("part.dmc");
+        String text = Files.readString(dmc);
+        assertTrue(text.startsWith("#GCNC\n"), text);
+        assertTrue(text.endsWith("EN\n"), text);
+        // The side map lists every line that came from a block: header (5 lines) and EN are not.
+        List<String> map = Files.readAllLines(p.resolveSibling("part.dmc.map"));
+        assertEquals(text.lines().count() - 6, map.size());
+        assertEquals("6 4", map.get(0), "DMC line 6 (CB4) comes from G-code line 4 (N30 M11)");
+        Run inline = gcnc("compile", "--source-map", p.toString(), "-o", p.resolveSibling("inline.dmc").toString());
+        assertEquals(0, inline.status(), inline.err());
+        assertTrue(Files.readString(p.resolveSibling("inline.dmc")).contains("NO L7\n"));
+    }
+}
