@@ -2,11 +2,13 @@ package gcnc.cli;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.PosixFilePermissions;
 
 /**
  * An output file that appears whole or not at all: lines go to a temporary file beside the target,
@@ -22,7 +24,11 @@ final class AtomicOutput implements AutoCloseable {
     AtomicOutput(Path target) throws IOException {
         this.target = target.toAbsolutePath();
         this.temp = Files.createTempFile(this.target.getParent(), "." + target.getFileName(), ".part");
-        this.out = Files.newBufferedWriter(temp, StandardCharsets.UTF_8);
+        // A temporary file is private (rw-------); the output is an ordinary file others may read.
+        if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
+            Files.setPosixFilePermissions(temp, PosixFilePermissions.fromString("rw-r--r--"));
+        }
+        this.out = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp), StandardCharsets.UTF_8), 1 << 16);
     }
 
     Writer writer() {

@@ -152,10 +152,11 @@ class CliTest {
         String text = Files.readString(dmc);
         assertTrue(text.startsWith("#GCNC\n"), text);
         assertTrue(text.endsWith("EN\n"), text);
-        // The side map lists every line that came from a block: header (5 lines) and EN are not.
+        // The side map is a line-number table: header from no block, then a run per emitting block.
         List<String> map = Files.readAllLines(p.resolveSibling("part.dmc.map"));
-        assertEquals(text.lines().count() - 6, map.size());
-        assertEquals("6 4", map.get(0), "DMC line 6 (CB4) comes from G-code line 4 (N30 M11)");
+        assertEquals("1 0", map.get(0), "DMC lines 1-5 are the header");
+        assertEquals("6 4", map.get(1), "DMC line 6 (CB4) comes from G-code line 4 (N30 M11)");
+        assertEquals(text.lines().count() + " 0", map.get(map.size() - 1), "the last line, EN, is the footer");
         Run inline = gcnc("compile", "--source-map", p.toString(), "-o", p.resolveSibling("inline.dmc").toString());
         assertEquals(0, inline.status(), inline.err());
         assertTrue(Files.readString(p.resolveSibling("inline.dmc")).contains("NO L7\n"));
