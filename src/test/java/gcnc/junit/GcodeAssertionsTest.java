@@ -1,0 +1,48 @@
+package gcnc.junit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.Test;
+
+class GcodeAssertionsTest {
+    @Test
+    void aCleanProgramPasses() {
+        GcodeAssertions.assertCompilesClean(Path.of("samples/turning.nc"), "generic");
+    }
+
+    @Test
+    void aBadProgramFailsWithEveryFindingGccStyle() throws Exception {
+        Path p = Files.createTempFile("part", ".nc");
+        Files.writeString(p, "G21 G98\nG50 S2000\nM11\nG01 X10. Z5. F100.\nG00 X20. Y5.\nM30\n");
+        AssertionError e = assertThrows(AssertionError.class, () -> GcodeAssertions.assertCompilesClean(p, "generic"));
+        assertTrue(e.getMessage().contains(p + ":4:1: error[E051]"), e.getMessage());
+        assertTrue(e.getMessage().contains(p + ":5:10: error[E004]"), e.getMessage());
+        GcodeAssertions.assertFindings(p, "generic", "E051", "E004");
+        assertThrows(AssertionError.class, () -> GcodeAssertions.assertFindings(p, "generic", "E051"));
+    }
+
+    @Test
+    void oneDynamicTestPerProgramInAFolder() throws Exception {
+        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(Path.of("samples"), "generic").collect(Collectors.toList());
+        assertEquals(List.of("samples/arcs.nc", "samples/bishop.nc", "samples/dwell-css.nc", "samples/home.nc",
+                "samples/offsets.nc", "samples/turning.nc", "samples/units.nc"),
+                tests.stream().map(DynamicTest::getDisplayName).collect(Collectors.toList()));
+        for (DynamicTest t : tests) {
+            t.getExecutable().execute();
+        }
+    }
+
+    @Test
+    void anUnknownMachineIsAClearFailure() {
+        AssertionError e = assertThrows(AssertionError.class,
+                () -> GcodeAssertions.assertCompilesClean(Path.of("samples/turning.nc"), "no-such-lathe"));
+        assertTrue(e.getMessage().contains("no-such-lathe"), e.getMessage());
+    }
+}
