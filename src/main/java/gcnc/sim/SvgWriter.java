@@ -6,7 +6,7 @@ import java.util.Locale;
 
 /**
  * Draws a simulation as an SVG half-section (Z to the right, radius up, machine mm): chuck,
- * tailstock, the blank, the finished part outline, the tool path (rapids dashed, feeds solid)
+ * tailstock, the blank, the finished part outline (mirrored below the centreline too), the tool path (rapids dashed, feeds solid)
  * and the findings. The view fits the blank with a margin (the path is clipped to it), or the
  * path when there is no blank.
  */
@@ -43,6 +43,9 @@ public final class SvgWriter {
             }
             part.append(t.pt(d.stockFace(), 0));
             w.write("<polygon fill=\"#b08040\" stroke=\"#603010\" stroke-width=\"1.5\" points=\"" + part + "\"/>\n");
+            // The same outline mirrored below the centreline shows the whole turned silhouette.
+            w.write("<polygon fill=\"#b08040\" fill-opacity=\"0.55\" stroke=\"#603010\" transform=\"translate(0 "
+                    + String.format(Locale.ROOT, "%.2f", 2 * t.y(0)) + ") scale(1 -1)\" points=\"" + part + "\"/>\n");
         }
         for (Shape sh : d.chuck()) {
             w.write(shape(sh, t, "#888888"));
@@ -87,7 +90,7 @@ public final class SvgWriter {
         w.write(String.format(Locale.ROOT, "<circle cx=\"600\" cy=\"%.0f\" r=\"7\" fill=\"none\" stroke=\"#ff00ff\" stroke-width=\"2.5\"/>"
                 + "<text x=\"612\" y=\"%.0f\">finding</text>\n", y, y + 5));
         w.write(String.format(Locale.ROOT, "<text x=\"10\" y=\"%.0f\">Z %s .. %s mm (right = +Z), radius %s .. %s mm;"
-                + " machine frame, half-section above the spindle centreline</text>\n",
+                + " machine frame; path above the centreline, part mirrored below</text>\n",
                 y + 35, MotionChecks.mm(v[0]), MotionChecks.mm(v[1]), MotionChecks.mm(v[2]), MotionChecks.mm(v[3])));
     }
 
@@ -121,7 +124,8 @@ public final class SvgWriter {
         }
         double mz = Math.max(b[1] - b[0], 1e-9) * 0.08;
         double mr = Math.max(b[3] - b[2], 1e-9) * 0.15;
-        return new double[] {b[0] - mz, b[1] + mz, b[2] - mr * 0.3, b[3] + mr};
+        // With a blank the part is mirrored below the centreline, so show both halves.
+        return new double[] {b[0] - mz, b[1] + mz, stock ? -(b[3] + mr) : b[2] - mr * 0.3, b[3] + mr};
     }
 
     private static String shape(Shape sh, View t, String fill) {
