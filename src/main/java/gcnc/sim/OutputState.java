@@ -68,7 +68,7 @@ final class OutputState {
         return mine;
     }
 
-    /** The outputs known to be on, for findings and the trace: "on 1 3" or "none on". */
+    /** The outputs known to be on, for findings and the trace: "on 1 3" or "all off". */
     String describe() {
         StringBuilder b = new StringBuilder();
         for (int i = 0; i <= highest; i++) {
@@ -76,6 +76,6 @@ final class OutputState {
                 b.append(b.length() == 0 ? "on " : " ").append(i);
             }
         }
-        return b.length() == 0 ? "none on" : b.toString();
+        return b.length() == 0 ? "all off" : b.toString();
     }
 }

@@ -29,7 +29,7 @@ class GcodeAssertionsTest {
     }
 
     @Test
-    void oneDynamicTestPerProgramInAFolder() throws Exception {
+    void oneDynamicTestPerProgramInAFolder() throws Throwable {
         List<DynamicTest> tests = GcodeAssertions.everyProgramIn(Path.of("samples"), "generic").collect(Collectors.toList());
         assertEquals(List.of("samples/arcs.nc", "samples/bishop.nc", "samples/dwell-css.nc", "samples/home.nc",
                 "samples/offsets.nc", "samples/turning.nc", "samples/units.nc"),

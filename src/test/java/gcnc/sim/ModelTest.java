@@ -118,7 +118,7 @@ class ModelTest {
         f.start();
         f.move(true, 22, 102);
         String[] lines = trace.toString().split("\n");
-        assertEquals("CB2\t; L1 X90 Z250 T0 outputs none on", lines[6]);
+        assertEquals("CB2\t; L1 X90 Z250 T0 outputs all off", lines[6]);
         assertEquals("SB1\t; L1 X90 Z250 T0 outputs on 1", lines[7]);
         assertEquals("BGS\t; L2 X22 Z102 T0 outputs on 1", lines[11]);
         assertFalse(trace.toString().contains("NaN"));
