@@ -141,4 +141,18 @@ class GalilDialectArcTest {
         assertTrue(out.contains("CR 2100,-85.904,-8.1921"), out.toString());
         assertTrue(out.contains("VP 18800,20000"), out.toString());
     }
+
+    @Test
+    void fullCirclesSweepThreeHundredSixty() {
+        // From phi 0 (x 5000, z 6000) round the centre (5000, 5000) back to itself. Generic: start 0,
+        // G02 -360, G03 +360. Thesis mapping W: start -90 - 0 = -90, senses mirrored.
+        Point p = new Point(5000, 6000);
+        Point c = new Point(5000, 5000);
+        Motion.Arc cw = new Motion.Arc(true, p, p, c, 1000, FEED, new Motion.ArcWords(null, 0.0, -1000.0));
+        Motion.Arc ccw = new Motion.Arc(false, p, p, c, 1000, FEED, new Motion.ArcWords(null, 0.0, -1000.0));
+        assertEquals("CR 1000,0,-360", crOf(G, p, cw));
+        assertEquals("CR 1000,0,360", crOf(G, p, ccw));
+        assertEquals("CR 1000,-90,360", crOf(W, p, cw));
+        assertEquals("CR 1000,-90,-360", crOf(W, p, ccw));
+    }
 }
