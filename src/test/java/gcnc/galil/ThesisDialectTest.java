@@ -135,4 +135,29 @@ class ThesisDialectTest {
                 new Motion.ArcWords(null, 0.0, 100.0));
         assertEquals(List.of("VS 200", "CR 141,45.0000,-45.0000", "BGS"), thesis(motions(8, b, arc)));
     }
+
+    @Test
+    void aNumberTooLongForTheThesisFormatIsE205() {
+        Diagnostics d = new Diagnostics();
+        Point far = new Point(1e9, 0);
+        List<String> out = Fixtures.run("thesis", THESIS, d, motions(4, far, rapid(Point.ORIGIN, far)));
+        assertEquals(List.of(), out, "the group that does not fit is left out");
+        assertEquals(gcnc.diag.Code.E205_THESIS_NUMBER, d.sorted().get(0).code());
+        assertEquals(gcnc.diag.Span.of(4, 1), d.sorted().get(0).span());
+    }
+
+    @Test
+    void anIkArcTheThesisFormulaCannotSolveIsE206() {
+        // From (x5, z0) about (0, 0), r = 5, to (x1, z100), far off the circle. The thesis takes
+        // m = atan(100/1) = 1.5608 as the slope of a line through the end point; that line passes
+        // 98.4 from the centre (D^2 = 9690 > (1 + m^2) r^2 = 85.9): no intersection to cut to.
+        Point a = new Point(5, 0);
+        Point b = new Point(1, 100);
+        Motion.Arc arc = new Motion.Arc(false, a, b, Point.ORIGIN, 5, new Feed(10, 200),
+                new Motion.ArcWords(null, -5.0, 0.0));
+        Diagnostics d = new Diagnostics();
+        Fixtures.run("thesis", THESIS, d, motions(9, b, arc));
+        assertEquals(gcnc.diag.Code.E206_THESIS_ARC, d.sorted().get(0).code());
+        assertEquals(gcnc.diag.Span.of(9, 1), d.sorted().get(0).span());
+    }
 }
