@@ -23,6 +23,16 @@ final class CommonOptions {
             description = "Language of the messages: en (default) or es.")
     ErrorMessages.Lang lang;
 
+    /** What every command needs once its options are read: tables, machine, a reporter. */
+    record Setup(Tables tables, MachineProfile profile, Reporter reporter) {
+    }
+
+    /** Loads the tables and the machine; a broken one is reported by the caller with {@link Reporter#tableFault}. */
+    Setup load(java.io.PrintWriter err) throws TableException {
+        Tables t = loadTables();
+        return new Setup(t, loadProfile(t), new Reporter(err, t, lang));
+    }
+
     TableSource source() {
         return tables == null ? TableSource.builtIn() : TableSource.directory(tables);
     }

@@ -1,9 +1,6 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
-import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
-import gcnc.diag.Span;
 import gcnc.galil.SourceMap;
 import gcnc.machine.MachineProfile;
 import gcnc.tables.TableException;
@@ -13,21 +10,15 @@ import java.io.PrintWriter;
 import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Optional;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 @Command(name = "compile", mixinStandardHelpOptions = true,
         description = {"Check a program, translate it to a Galil DMC program and verify that in the simulator.",
                 "Writes the output file only when there is no error; never a half-written one."})
-final class CompileCommand implements Callable<Integer> {
-    @Mixin
-    CommonOptions common;
-
+final class CompileCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;
 
@@ -46,22 +37,11 @@ final class CompileCommand implements Callable<Integer> {
     @Mixin
     StockOptions stock;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
-        Tables tables;
-        MachineProfile profile;
-        try {
-            tables = common.loadTables();
-            profile = common.loadProfile(tables);
-        } catch (TableException e) {
-            return Reporter.tableFault(err, e, common.language());
-        }
-        Reporter reporter = new Reporter(err, tables, common.language());
+    int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
+        Tables tables = setup.tables();
+        MachineProfile profile = setup.profile();
+        Reporter reporter = setup.reporter();
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
         if (noSimulate) {
             err.println("gcnc: warning: --no-simulate: travel limits, collisions and path conformance were NOT verified");
@@ -90,15 +70,11 @@ final class CompileCommand implements Callable<Integer> {
                 out.println(file + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
             }
         } catch (IOException e) {
-            reporter.report(file.toString(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), SourceFiles.reason(e)));
-            return ExitCode.USAGE;
-        } catch (TableException e) {
-            return Reporter.tableFault(err, e, common.language());
+            return reporter.ioFault(file, "cannot read or write", e);
         } catch (StockOptions.BadStock e) {
             err.println("gcnc: " + e.getMessage());
             return ExitCode.USAGE;
         }
-        out.flush();
         return r.ok() ? ExitCode.CLEAN : ExitCode.PROGRAM_ERRORS;
     }
 

@@ -1,10 +1,7 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
-import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
-import gcnc.diag.Span;
 import gcnc.galil.LineSink;
 import gcnc.machine.MachineProfile;
 import gcnc.sim.DmcReplay;
@@ -19,22 +16,16 @@ import java.io.PrintWriter;
 import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Optional;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = {"Check and translate a program, then replay the Galil program on a model of the lathe:",
                 "travel, chuck, tailstock, rapids into stock, spindle and chuck state, path conformance.",
                 "A .dmc FILE is replayed as it is (no G-code to compare it with)."})
-final class SimulateCommand implements Callable<Integer> {
-    @Mixin
-    CommonOptions common;
-
+final class SimulateCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;
 
@@ -50,28 +41,16 @@ final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--trace", description = "Print every directive with the position and outputs after it.")
     boolean trace;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
-        Tables tables;
-        MachineProfile profile;
+    int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         SimOptions options;
         try {
-            tables = common.loadTables();
-            profile = common.loadProfile(tables);
-            options = stock.options(file, profile);
-        } catch (TableException e) {
-            return Reporter.tableFault(err, e, common.language());
+            options = stock.options(file, setup.profile());
         } catch (StockOptions.BadStock e) {
             err.println("gcnc: " + e.getMessage());
             return ExitCode.USAGE;
         } catch (IOException e) {
-            err.println(file + ":1:1: error[E500]: cannot read: " + SourceFiles.reason(e));
-            return ExitCode.USAGE;
+            return setup.reporter().ioFault(file, "cannot read", e);
         }
         if (svg != null) {
             options = options.withPath();
@@ -79,7 +58,9 @@ final class SimulateCommand implements Callable<Integer> {
         if (trace) {
             options = options.withTrace(out);
         }
-        Reporter reporter = new Reporter(err, tables, common.language());
+        Tables tables = setup.tables();
+        MachineProfile profile = setup.profile();
+        Reporter reporter = setup.reporter();
         Diagnostics diags;
         Optional<SimReport> report;
         try (Reader in = SourceFiles.open(file)) {
@@ -93,8 +74,7 @@ final class SimulateCommand implements Callable<Integer> {
                 report = r.simulation();
             }
         } catch (IOException e) {
-            reporter.report(file.toString(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), "cannot read: " + SourceFiles.reason(e)));
-            return ExitCode.USAGE;
+            return reporter.ioFault(file, "cannot read", e);
         }
         out.flush();
         reporter.report(file.toString(), diags);
@@ -106,14 +86,12 @@ final class SimulateCommand implements Callable<Integer> {
                     o.commit();
                     out.println("drawing: " + svg);
                 } catch (IOException e) {
-                    reporter.report(svg.toString(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), "cannot write: " + SourceFiles.reason(e)));
-                    return ExitCode.USAGE;
+                    return reporter.ioFault(svg, "cannot write", e);
                 }
             }
         } else {
             out.println(file + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
         }
-        out.flush();
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
     }
 }
