@@ -109,30 +109,50 @@ public final class BlockDraft {
         return values[l.ordinal()];
     }
 
+    /**
+     * Whether a parameter word may be read (actions 2 and 4): not already in the block (E007) and
+     * with a number (E006; the parser reports bare letters first, this guards the contract).
+     */
+    public boolean fresh(Word w, Diagnostics out) {
+        if (has(w.letter())) {
+            fail(out, Code.E007_DUPLICATE_PARAMETER, w.span(), w.letter());
+            return false;
+        }
+        if (w.number().isEmpty()) {
+            fail(out, Code.E006_NUMBER_EXPECTED, w.span(), w.letter());
+            return false;
+        }
+        return true;
+    }
+
     public void accept(Word w, double value) {
         words[w.letter().ordinal()] = w;
         values[w.letter().ordinal()] = value;
     }
 
-    /** The G already given in this block for a group, or null. */
-    public Word gInGroup(int group) {
-        return group >= 0 && group < GROUPS ? gGroups[group] : null;
+    /**
+     * Claims a G function's modal group for this block: false, after reporting E016 with the G
+     * that holds it, when another G of the group came first (thesis §12.19: every group, not only 1).
+     */
+    public boolean claimG(int group, Word w, Diagnostics out) {
+        return claim(gGroups, group >= 0 && group < GROUPS ? group : -1, w, out);
     }
 
-    public void setG(int group, Word w) {
-        if (group >= 0 && group < GROUPS) {
-            gGroups[group] = w;
+    /** The same for an M function's group (group 0, no group, never conflicts). */
+    public boolean claimM(int group, Word w, Diagnostics out) {
+        return claim(mGroups, group > 0 && group < GROUPS ? group : -1, w, out);
+    }
+
+    private boolean claim(Word[] groups, int group, Word w, Diagnostics out) {
+        if (group < 0) {
+            return true;
         }
-    }
-
-    public Word mInGroup(int group) {
-        return group > 0 && group < GROUPS ? mGroups[group] : null;
-    }
-
-    public void setM(int group, Word w) {
-        if (group > 0 && group < GROUPS) {
-            mGroups[group] = w;
+        if (groups[group] != null) {
+            fail(out, Code.E016_GROUP_CONFLICT, w.span(), groups[group]);
+            return false;
         }
+        groups[group] = w;
+        return true;
     }
 
     /** Number of axis and radius words (thesis "mov": X Z U W R I K). */

@@ -2,7 +2,6 @@ package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
 import gcnc.check.geom.NumberText;
-import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
 import gcnc.tables.GFunction;
@@ -22,12 +21,9 @@ public final class Sa01ModalG implements SyntaxAction {
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         int code = (int) NumberText.integer(w.number());
         GFunction f = d.functions.g(code);
-        Word earlier = d.gInGroup(f.group());
-        if (earlier != null) {
-            d.fail(out, Code.E016_GROUP_CONFLICT, w.span(), earlier);
+        if (!d.claimG(f.group(), w, out)) {
             return;
         }
-        d.setG(f.group(), w);
         switch (f.group()) {
             case 1 -> {
                 d.motionG = code;

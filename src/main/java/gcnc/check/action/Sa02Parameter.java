@@ -23,12 +23,7 @@ public final class Sa02Parameter implements SyntaxAction {
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         Letter l = w.letter();
-        if (d.has(l)) {
-            d.fail(out, Code.E007_DUPLICATE_PARAMETER, w.span(), l);
-            return;
-        }
-        if (w.number().isEmpty()) {
-            d.fail(out, Code.E006_NUMBER_EXPECTED, w.span(), l);
+        if (!d.fresh(w, out)) {
             return;
         }
         double v;

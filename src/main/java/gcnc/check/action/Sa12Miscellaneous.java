@@ -25,9 +25,7 @@ public final class Sa12Miscellaneous implements SyntaxAction {
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         int code = (int) NumberText.integer(w.number());
         MFunction f = d.functions.m(code);
-        Word earlier = d.mInGroup(f.group());
-        if (earlier != null) {
-            d.fail(out, Code.E016_GROUP_CONFLICT, w.span(), earlier);
+        if (!d.claimM(f.group(), w, out)) {
             return;
         }
         if (code == 10 && (running(d.prior.spindle()) || running(d.spindleBefore))
@@ -35,7 +33,6 @@ public final class Sa12Miscellaneous implements SyntaxAction {
             d.fail(out, Code.E040_SPINDLE_RUNNING_CHUCK_OPEN, w.span());
             return;
         }
-        d.setM(f.group(), w);
         if (f.group() == 2) {
             d.next.spindle = code;
             if (f.beforeMotion()) {

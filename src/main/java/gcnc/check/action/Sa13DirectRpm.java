@@ -1,7 +1,6 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
-import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
 
@@ -18,12 +17,9 @@ public final class Sa13DirectRpm implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        Word earlier = d.gInGroup(17);
-        if (earlier != null) {
-            d.fail(out, Code.E016_GROUP_CONFLICT, w.span(), earlier);
+        if (!d.claimG(17, w, out)) {
             return;
         }
-        d.setG(17, w);
         d.next.css = false;
     }
 }

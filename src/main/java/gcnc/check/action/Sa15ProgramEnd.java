@@ -1,7 +1,6 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
-import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
 
@@ -18,12 +17,9 @@ public final class Sa15ProgramEnd implements SyntaxAction {
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         int group = d.functions.m(30).group();
-        Word earlier = d.mInGroup(group);
-        if (earlier != null) {
-            d.fail(out, Code.E016_GROUP_CONFLICT, w.span(), earlier);
+        if (!d.claimM(group, w, out)) {
             return;
         }
-        d.setM(group, w);
         d.next.ended = true;
     }
 }
