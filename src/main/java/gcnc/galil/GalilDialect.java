@@ -136,6 +136,9 @@ final class GalilDialect implements Dialect {
         }
         out.emit("VS " + speed);
         out.emit("CR " + cr.radius() + "," + GalilNumbers.angle(cr.start()) + "," + GalilNumbers.angle(cr.sweep()));
+        if (cr.closing()) {
+            out.emit("VP " + (tu - posU) + "," + (tv - posV)); // VP is measured from the sequence start
+        }
         finishSequence(out);
         posU = tu;
         posV = tv;

@@ -35,22 +35,25 @@ final class Conformance {
         }
         Motion.Arc arc = (Motion.Arc) m;
         Point to = arc.to();
-        if (!last.arc()) {
+        // The arc is the sequence's first segment; a closing VP of a count or two may follow it
+        // (the galil dialect's whole-count radius), so the end point is the last segment's.
+        Segment first = segs.get(0);
+        if (!first.arc()) {
             return mismatch(line, "path (a straight move for an arc)", distance(last, to), to);
         }
-        if (last.sweepDeg() == 0) {
-            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, last.text());
+        if (first.sweepDeg() == 0) {
+            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, first.text());
             mark("E309", to);
             return new double[] {to.x(), to.z()};
         }
-        double centre = Math.hypot(last.centreX() - arc.centre().x(), last.centreZ() - arc.centre().z());
+        double centre = Math.hypot(first.centreX() - arc.centre().x(), first.centreZ() - arc.centre().z());
         if (centre > tol) {
             return mismatch(line, "arc centre", centre, to);
         }
         double sweep = ArcGeometry.sweepDegrees(arc.from(), to, arc.centre(), arc.clockwise());
         double a = Math.atan2(arc.from().x() - arc.centre().x(), arc.from().z() - arc.centre().z())
                 + Math.toRadians(sweep / 2);
-        double[] mid = last.at(0.5);
+        double[] mid = first.at(0.5);
         double off = Math.hypot(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
                 mid[1] - (arc.centre().z() + arc.radius() * Math.cos(a)));
         if (off > tol) {

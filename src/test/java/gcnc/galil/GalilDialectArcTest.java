@@ -155,4 +155,28 @@ class GalilDialectArcTest {
         assertEquals("CR 1000,-90,360", crOf(W, p, cw));
         assertEquals("CR 1000,-90,-360", crOf(W, p, ccw));
     }
+
+    /**
+     * A half circle of radius 7600.5 counts on the generic mapping (u = z, v = x), from (0, 0) to
+     * (u 15201, v 0), G02. No whole radius reaches both ends without moving the centre about 87
+     * counts off the chord (r 7601: h = sqrt(7601^2 - 7600.5^2) = 87.2), so the arc keeps the true
+     * centre (7600.5, 0): radius 7601, start angle 180 (S is left of the centre), sweep -180 (clockwise
+     * over the top). It ends at u = 7601 - 1 + 7601 = 15202, a count past the target, and a closing
+     * VP 15201,0 in the same sequence brings the sequence to the block's end exactly.
+     */
+    @Test
+    void aHalfCircleOfHalfCountRadiusKeepsItsCentreAndClosesWithAVp() {
+        Point from = Point.ORIGIN;
+        Point to = new Point(0, 15201);
+        Motion.Arc arc = new Motion.Arc(true, from, to, new Point(0, 7600.5), 7600.5, FEED, new Motion.ArcWords(7600.5, null, null));
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", G, d, motions(3, to, arc));
+        assertEquals(0, d.size(), () -> d.sorted().toString());
+        int cr = out.indexOf("CR 7601,180,-180");
+        assertTrue(cr > 0, out.toString());
+        assertEquals(List.of("VP 15201,0", "VE", "BGS", "AMS"), out.subList(cr + 1, cr + 5));
+        List<long[]> ends = new PathReader(0, 0).read(out);
+        assertEquals(15201, ends.get(0)[0]);
+        assertEquals(0, ends.get(0)[1]);
+    }
 }

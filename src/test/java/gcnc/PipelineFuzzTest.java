@@ -1,0 +1,137 @@
+package gcnc;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.DynamicTest.dynamicTest;
+
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Severity;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileLoader;
+import gcnc.sim.SimOptions;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.StringReader;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Random;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.TestFactory;
+
+/**
+ * The whole pipeline (parse, check, both dialects, simulation) on seeded random turning programs:
+ * plausible blocks with random values, some of them mutated. Nothing may throw; every finding is a
+ * numbered diagnostic on a line of the program; a clean result has emitted a program ending in EN.
+ * A failure names its seed: rerun with -Dgcnc.fuzz.seed=N.
+ */
+class PipelineFuzzTest {
+    private static final Tables TABLES = Tables.builtIn();
+
+    @TestFactory
+    Stream<DynamicTest> randomProgramsNeverBreakThePipeline() throws Exception {
+        MachineProfile generic = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
+        MachineProfile thesis = ProfileLoader.load("thesis-2004", TableSource.builtIn(), TABLES);
+        long first = Long.getLong("gcnc.fuzz.seed", 20261122L);
+        List<DynamicTest> tests = new ArrayList<>();
+        for (long seed = first; seed < first + 60; seed++) {
+            long s = seed;
+            tests.add(dynamicTest("seed " + s, () -> {
+                String program = program(new Random(s));
+                run(program, generic, "galil", s);
+                run(program, thesis, "thesis", s);
+            }));
+        }
+        return tests.stream();
+    }
+
+    private static void run(String program, MachineProfile profile, String dialect, long seed) throws Exception {
+        List<String> out = new ArrayList<>();
+        Compiler.Result r;
+        try {
+            r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, profile, dialect,
+                    Optional.of(SimOptions.defaults().withPath())), l -> out.add(l.text()));
+        } catch (RuntimeException e) {
+            throw new AssertionError("seed " + seed + " (" + dialect + ") threw on:\n" + program, e);
+        }
+        long lines = program.lines().count() + 1;
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            assertTrue(d.span().line() >= 1 && d.span().line() <= lines, () -> "seed " + seed + ": " + d);
+            assertTrue(d.code().number() >= 1, () -> "seed " + seed + ": " + d);
+        }
+        if (r.ok() && dialect.equals("galil")) {
+            assertEquals("EN", out.get(out.size() - 1), "seed " + seed);
+            assertTrue(r.simulation().isPresent(), "seed " + seed);
+        }
+        if (!r.ok()) {
+            assertTrue(r.diagnostics().sorted().stream().anyMatch(d -> d.severity() == Severity.ERROR), "seed " + seed);
+        }
+    }
+
+    /** A turning program: a valid header, then random blocks (a few of them mutated) that track the position. */
+    static String program(Random rnd) {
+        StringBuilder p = new StringBuilder("G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\nG00 X60. Z5.\n");
+        double[] at = {60, 5}; // X diameter, Z, as programmed
+        int blocks = 5 + rnd.nextInt(40);
+        for (int i = 0; i < blocks; i++) {
+            String b = block(rnd, at);
+            if (rnd.nextInt(10) == 0) {
+                b = mutate(b, rnd);
+            }
+            p.append(b).append('\n');
+        }
+        return p.append("G00 X100.\nZ50.\nM05\nM30\n").toString();
+    }
+
+    private static String block(Random rnd, double[] at) {
+        double x = Math.round(rnd.nextDouble() * 80000) / 1000.0;
+        double z = Math.round((5 - rnd.nextDouble() * 90) * 1000) / 1000.0;
+        switch (rnd.nextInt(8)) {
+            case 0: // retract, then rapid along Z above the stock
+                at[0] = 50 + Math.round(rnd.nextDouble() * 30);
+                return "G00 " + n("X", at[0]) + "\nG00 " + n("Z", at[1] = Math.round(z));
+            case 1:
+                at[0] = x;
+                at[1] = z;
+                return "G01 " + n("X", x) + " " + n("Z", z) + " F" + (20 + rnd.nextInt(200)) + ".";
+            case 2: // an R arc that may or may not span its chord (E101)
+                at[0] = x;
+                at[1] = z;
+                return "G02 " + n("X", x) + " " + n("Z", z) + " " + n("R", Math.round(rnd.nextDouble() * 6000) / 100.0 - 10);
+            case 3: { // an I/K arc that ends on its circle, from wherever the tool is
+                double i = Math.round(rnd.nextDouble() * 2000 - 1000) / 100.0;
+                double k = Math.round(rnd.nextDouble() * 2000 - 1000) / 100.0;
+                double a = rnd.nextDouble() * 2 * Math.PI;
+                double r = Math.hypot(i, k);
+                double cx = at[0] / 2 + i;
+                double cz = at[1] + k;
+                at[0] = Math.round(2 * (cx + r * Math.cos(a)) * 1e6) / 1e6;
+                at[1] = Math.round((cz + r * Math.sin(a)) * 1e6) / 1e6;
+                return (rnd.nextBoolean() ? "G02 " : "G03 ") + n("X", at[0]) + " " + n("Z", at[1]) + " " + n("I", i) + " " + n("K", k);
+            }
+            case 4:
+                return "G04 P" + (1 + rnd.nextInt(900));
+            case 5:
+                at[0] += 2;
+                at[1] -= 1;
+                return "G91 G01 U2. W-1. F80.\nG90";
+            case 6:
+                return "M0" + (7 + rnd.nextInt(3));
+            default:
+                return "G96 S" + (50 + rnd.nextInt(200)) + "\nG97 S1000";
+        }
+    }
+
+    private static String n(String letter, double v) {
+        return letter + String.format(Locale.ROOT, "%.6f", v).replaceAll("0+$", "");
+    }
+
+    private static String mutate(String b, Random rnd) {
+        int at = rnd.nextInt(b.length() + 1);
+        String chars = "XZ.-+GM(;%$ \t0123456789";
+        String junk = String.valueOf(chars.charAt(rnd.nextInt(chars.length())));
+        return rnd.nextBoolean() ? b.substring(0, at) + junk + b.substring(at) : b.substring(0, Math.max(0, at - 1)) + b.substring(at);
+    }
+}
