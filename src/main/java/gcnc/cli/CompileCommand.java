@@ -51,26 +51,29 @@ final class CompileCommand extends RunCommand {
         }
         Path target = output != null ? output : defaultOutput(file);
         Compiler.Result r;
-        try (Reader in = SourceFiles.open(file); AtomicOutput dmc = new AtomicOutput(target);
-             AtomicOutput map = new AtomicOutput(mapFile(target))) {
-            SourceMap mapper = new SourceMap(map::line);
-            r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(),
-                    simulate ? Optional.of(stock.options(file, profile)) : Optional.empty(), sourceMap),
-                    mapper.wrap(line -> dmc.line(line.text())));
-            reporter.report(file.toString(), r.diagnostics());
-            if (r.ok()) {
-                dmc.commit();
-                if (!sourceMap) {
-                    map.commit();
+        try (Reader in = SourceFiles.open(file)) {
+            try (AtomicOutput dmc = new AtomicOutput(target); AtomicOutput map = new AtomicOutput(mapFile(target))) {
+                SourceMap mapper = new SourceMap(map::line);
+                r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(),
+                        simulate ? Optional.of(stock.options(file, profile)) : Optional.empty(), sourceMap),
+                        mapper.wrap(line -> dmc.line(line.text())));
+                reporter.report(file.toString(), r.diagnostics());
+                if (r.ok()) {
+                    dmc.commit();
+                    if (!sourceMap) {
+                        map.commit();
+                    }
+                    out.println(file + ": " + Reporter.plural(r.blocks(), "block") + " -> " + target
+                            + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
+                    r.simulation().ifPresent(s -> out.println(SimSummary.format(s)));
+                } else {
+                    out.println(file + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
                 }
-                out.println(file + ": " + Reporter.plural(r.blocks(), "block") + " -> " + target
-                        + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
-                r.simulation().ifPresent(s -> out.println(SimSummary.format(s)));
-            } else {
-                out.println(file + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
+            } catch (IOException e) {
+                return reporter.ioFault(target, "cannot write", e);
             }
         } catch (IOException e) {
-            return reporter.ioFault(file, "cannot read or write", e);
+            return reporter.ioFault(file, "cannot read", e);
         } catch (StockOptions.BadStock e) {
             err.println("gcnc: " + e.getMessage());
             return ExitCode.USAGE;

@@ -24,7 +24,7 @@ final class SourceFiles {
     /** The short reason an I/O exception gives, without Java's class names. */
     static String reason(IOException e) {
         if (e instanceof java.nio.file.NoSuchFileException) {
-            return "no such file";
+            return "no such file or directory";
         }
         if (e instanceof java.nio.file.AccessDeniedException) {
             return "permission denied";

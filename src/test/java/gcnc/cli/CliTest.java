@@ -82,7 +82,7 @@ class CliTest {
     void aMissingFileIsAnIoProblemExitTwo() {
         Run r = gcnc("check", "no/such/file.nc");
         assertEquals(2, r.status());
-        assertEquals("no/such/file.nc:1:1: error[E500]: cannot read: no such file\n", r.err());
+        assertEquals("no/such/file.nc:1:1: error[E500]: cannot read: no such file or directory\n", r.err());
     }
 
     @Test
@@ -160,5 +160,12 @@ class CliTest {
         Run inline = gcnc("compile", "--source-map", p.toString(), "-o", p.resolveSibling("inline.dmc").toString());
         assertEquals(0, inline.status(), inline.err());
         assertTrue(Files.readString(p.resolveSibling("inline.dmc")).contains("NO L7\n"));
+    }
+
+    @Test
+    void anUnwritableOutputIsNamedAsTheProblem() {
+        Run r = gcnc("compile", "samples/turning.nc", "-o", "no/such/dir/part.dmc");
+        assertEquals(2, r.status());
+        assertEquals("no/such/dir/part.dmc:1:1: error[E500]: cannot write: no such file or directory\n", r.err());
     }
 }
