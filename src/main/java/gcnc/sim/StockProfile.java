@@ -16,6 +16,8 @@ final class StockProfile {
     private final double initialRadius;
     /** Largest radius in each run of BLOCK cells: a move above it skips the whole run. */
     private final double[] blockMax = new double[CELLS / BLOCK];
+    /** Blocks whose cells all hold blockMax (radius[] is stale there): a level pass updates them in one step. */
+    private final boolean[] uniform = new boolean[CELLS / BLOCK];
 
     StockProfile(double backZ, double faceZ, double radius) {
         this.z0 = backZ;
@@ -23,6 +25,7 @@ final class StockProfile {
         this.initialRadius = radius;
         java.util.Arrays.fill(this.radius, radius);
         java.util.Arrays.fill(this.blockMax, radius);
+        java.util.Arrays.fill(this.uniform, true);
     }
 
     double back() {
@@ -61,7 +64,7 @@ final class StockProfile {
     }
 
     double radiusAt(int i) {
-        return radius[i];
+        return uniform[i / BLOCK] ? blockMax[i / BLOCK] : radius[i];
     }
 
     /**
@@ -80,9 +83,11 @@ final class StockProfile {
             int i = (int) Math.floor(((lo + hi) / 2 - z0) / step);
             if (i >= 0 && i < CELLS && (lo + hi) / 2 > z0 + slack && (lo + hi) / 2 < face() - slack) {
                 double r = Math.min(ar, br);
-                if (r < radius[i] - slack) {
+                if (r < radiusAt(i) - slack) {
                     hit = i;
+                    materialise(i / BLOCK);
                     radius[i] = Math.max(0, r);
+                    blockMax[i / BLOCK] = maxOf(i / BLOCK);
                 }
             }
             return hit;
@@ -98,21 +103,49 @@ final class StockProfile {
             if (Math.min(r0, r1) >= blockMax[b] - slack) {
                 continue;
             }
-            double max = 0;
-            for (int i = b * BLOCK; i < b * BLOCK + BLOCK; i++) {
-                if (i >= from && i <= to) {
-                    double r = ar + (cellZ(i) - az) * slope;
-                    if (r < radius[i] - slack) {
-                        if (hit < 0) {
-                            hit = i;
-                        }
-                        radius[i] = Math.max(0, r);
-                    }
+            if (uniform[b] && slope == 0 && from == b * BLOCK && to == from + BLOCK - 1) {
+                // A level pass over a whole level block (most turning passes): one value, not 64.
+                if (hit < 0) {
+                    hit = from;
                 }
-                max = Math.max(max, radius[i]);
+                blockMax[b] = Math.max(0, r0);
+                continue;
             }
-            blockMax[b] = max;
+            materialise(b);
+            int lowered = 0;
+            for (int i = from; i <= to; i++) {
+                double r = ar + (cellZ(i) - az) * slope;
+                if (r < radius[i] - slack) {
+                    if (hit < 0) {
+                        hit = i;
+                    }
+                    radius[i] = Math.max(0, r);
+                    lowered++;
+                }
+            }
+            if (slope == 0 && lowered == BLOCK) {
+                uniform[b] = true;
+                blockMax[b] = Math.max(0, r0);
+            } else if (lowered > 0) {
+                blockMax[b] = maxOf(b);
+            }
         }
         return hit;
+    }
+
+    /** Writes a level block's one value into its cells before they are changed one by one. */
+    private void materialise(int b) {
+        if (uniform[b]) {
+            java.util.Arrays.fill(radius, b * BLOCK, b * BLOCK + BLOCK, blockMax[b]);
+            uniform[b] = false;
+        }
+    }
+
+    private double maxOf(int b) {
+        double max = 0;
+        for (int i = b * BLOCK; i < b * BLOCK + BLOCK; i++) {
+            max = Math.max(max, radius[i]);
+        }
+        return max;
     }
 }
