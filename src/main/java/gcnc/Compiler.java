@@ -11,7 +11,7 @@ import gcnc.machine.MachineProfile;
 import gcnc.parse.BlockReader;
 import gcnc.sim.SimOptions;
 import gcnc.sim.SimReport;
-import gcnc.sim.Simulator;
+import gcnc.sim.SimulatorThread;
 import gcnc.tables.Tables;
 import java.io.IOException;
 import java.io.Reader;
@@ -61,48 +61,52 @@ public final class Compiler {
     /**
      * Checks, translates and (if asked) simulates; Galil lines go to {@code out}. Emission and
      * simulation stop at the first error of the checker or the backend (the output is void then),
-     * while the simulator's own findings do not stop it: every one of them is reported.
+     * while the simulator's own findings do not stop it: every one of them is reported. The
+     * simulator runs on a thread of its own, a few blocks behind.
      */
     public static Result compile(Reader source, Settings settings, LineSink out) throws IOException {
         Diagnostics diags = new Diagnostics();
         BlockReader reader = new BlockReader(source, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
-        Simulator sim = settings.simulation().map(o -> new Simulator(settings.profile(), o, diags)).orElse(null);
         List<GalilLine> lines = new ArrayList<>();
         LineSink collect = lines::add;
-        int simFindings = 0;
-
-        dialect.begin(collect);
-        if (sim != null) {
-            sim.begin(lines);
-        }
-        flush(lines, out);
         long blocks = 0;
-        for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
-            blocks++;
-            Optional<CheckedBlock> checked = checker.check(raw);
-            if (checked.isEmpty() || diags.errorCount() > simFindings) {
-                continue;
-            }
-            dialect.block(checked.get(), collect);
-            if (sim != null && diags.errorCount() == simFindings) {
-                sim.block(checked.get(), lines);
-                simFindings = diags.errorCount();
-            }
-            flush(lines, out);
-        }
-        checker.finish(reader.lines());
-        boolean translated = diags.errorCount() == simFindings;
-        if (translated) {
-            dialect.end(collect);
+        Optional<SimOptions> simulate = settings.simulation();
+        try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get()) : null) {
+            dialect.begin(collect);
             if (sim != null) {
-                sim.end(lines);
+                sim.begin(List.copyOf(lines));
             }
             flush(lines, out);
+            for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
+                blocks++;
+                Optional<CheckedBlock> checked = checker.check(raw);
+                if (checked.isEmpty() || diags.hasErrors()) {
+                    continue;
+                }
+                dialect.block(checked.get(), collect);
+                if (sim != null && !diags.hasErrors()) {
+                    sim.block(checked.get(), List.copyOf(lines));
+                }
+                flush(lines, out);
+            }
+            checker.finish(reader.lines());
+            boolean translated = !diags.hasErrors();
+            if (translated) {
+                dialect.end(collect);
+                if (sim != null) {
+                    sim.end(List.copyOf(lines));
+                }
+                flush(lines, out);
+            }
+            Optional<SimReport> report = Optional.empty();
+            if (sim != null) {
+                diags.addAll(sim.finish());
+                report = translated ? Optional.of(sim.report()) : Optional.empty();
+            }
+            return new Result(diags, blocks, report);
         }
-        Optional<SimReport> report = sim != null && translated ? Optional.of(sim.report()) : Optional.empty();
-        return new Result(diags, blocks, report);
     }
 
     private static void flush(List<GalilLine> lines, LineSink out) {

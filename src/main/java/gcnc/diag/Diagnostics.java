@@ -19,6 +19,11 @@ public final class Diagnostics {
         }
     }
 
+    /** Takes over every finding of another part of the run (the simulator's), in its order. */
+    public void addAll(Diagnostics other) {
+        other.all.forEach(this::report);
+    }
+
     public void error(Code code, Span span, Object... args) {
         report(Diagnostic.error(code, span, args));
     }

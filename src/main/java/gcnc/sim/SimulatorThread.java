@@ -1,0 +1,133 @@
+package gcnc.sim;
+
+import gcnc.diag.Diagnostics;
+import gcnc.galil.GalilLine;
+import gcnc.ir.CheckedBlock;
+import gcnc.machine.MachineProfile;
+import java.io.InterruptedIOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+
+/**
+ * A {@link Simulator} on a thread of its own, so that replaying block n overlaps with checking and
+ * translating the blocks after it. Blocks reach it in order through a small bounded queue (memory
+ * stays flat); it reports into a {@link Diagnostics} of its own, which the caller reads after
+ * {@link #finish()}. A bug that throws in the simulator is rethrown by {@link #finish()} on the
+ * caller's thread.
+ */
+public final class SimulatorThread implements AutoCloseable {
+    private static final int BATCH = 256;
+    private static final int QUEUED_BATCHES = 8;
+    /** Ends the queue (compared by identity). */
+    private static final List<Step> DONE = new ArrayList<>();
+
+    private enum Kind { BEGIN, BLOCK, END }
+
+    /** One call to make on the simulator: the program's header, a block, or the footer. */
+    private record Step(Kind kind, CheckedBlock block, List<GalilLine> lines) {
+    }
+
+    private final Diagnostics diagnostics = new Diagnostics();
+    private final Simulator simulator;
+    private final BlockingQueue<List<Step>> queue = new ArrayBlockingQueue<>(QUEUED_BATCHES);
+    private final Thread thread;
+    private List<Step> batch = new ArrayList<>(BATCH);
+    private Throwable failure; // written by the worker, read after join()
+    private boolean finished;
+
+    public SimulatorThread(MachineProfile profile, SimOptions options) {
+        this.simulator = new Simulator(profile, options, diagnostics);
+        this.thread = new Thread(this::work, "gcnc-simulator");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /** The program's header lines. The lists passed in must not change afterwards. */
+    public void begin(List<GalilLine> header) throws InterruptedIOException {
+        add(new Step(Kind.BEGIN, null, header));
+    }
+
+    public void block(CheckedBlock intended, List<GalilLine> emitted) throws InterruptedIOException {
+        add(new Step(Kind.BLOCK, intended, emitted));
+    }
+
+    public void end(List<GalilLine> footer) throws InterruptedIOException {
+        add(new Step(Kind.END, null, footer));
+    }
+
+    /** Waits until the simulator has replayed all it was given; its findings, in reporting order. */
+    public Diagnostics finish() throws InterruptedIOException {
+        if (!finished) {
+            finished = true;
+            send(batch);
+            send(DONE);
+            try {
+                thread.join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new InterruptedIOException("interrupted while waiting for the simulator");
+            }
+            if (failure instanceof RuntimeException r) {
+                throw r;
+            }
+            if (failure instanceof Error e) {
+                throw e;
+            }
+        }
+        return diagnostics;
+    }
+
+    /** The summary; call after {@link #finish()}. */
+    public SimReport report() {
+        return simulator.report();
+    }
+
+    /** Ends the worker also when the caller gave up early (an I/O error): it drains the queue and stops. */
+    @Override
+    public void close() throws InterruptedIOException {
+        finish();
+    }
+
+    private void add(Step step) throws InterruptedIOException {
+        batch.add(step);
+        if (batch.size() == BATCH) {
+            send(batch);
+            batch = new ArrayList<>(BATCH);
+        }
+    }
+
+    private void send(List<Step> steps) throws InterruptedIOException {
+        try {
+            queue.put(steps);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new InterruptedIOException("interrupted while feeding the simulator");
+        }
+    }
+
+    private void work() {
+        try {
+            for (List<Step> steps = queue.take(); steps != DONE; steps = queue.take()) {
+                if (failure == null) {
+                    try {
+                        steps.forEach(this::run);
+                    } catch (RuntimeException | Error e) {
+                        failure = e; // keep draining, so that the feeding thread never blocks for ever
+                    }
+                }
+            }
+        } catch (InterruptedException e) {
+            failure = new IllegalStateException("simulator thread interrupted", e);
+        }
+    }
+
+    private void run(Step s) {
+        switch (s.kind()) {
+            case BEGIN -> simulator.begin(s.lines());
+            case BLOCK -> simulator.block(s.block(), s.lines());
+            case END -> simulator.end(s.lines());
+        }
+    }
+}
