@@ -1,6 +1,5 @@
 package gcnc.cli;
 
-import java.io.BufferedOutputStream;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -21,6 +20,9 @@ final class AtomicOutput implements AutoCloseable {
     private final Path target;
     private final Path temp;
     private final OutputStream out;
+    /** Our own buffer for {@link #line}: no lock and no copy per line (a compile writes millions). */
+    private final byte[] buffer = new byte[1 << 16];
+    private int buffered;
     private Writer writer;
     private boolean committed;
 
@@ -31,7 +33,7 @@ final class AtomicOutput implements AutoCloseable {
         if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
             Files.setPosixFilePermissions(temp, PosixFilePermissions.fromString("rw-r--r--"));
         }
-        this.out = new BufferedOutputStream(Files.newOutputStream(temp), 1 << 16);
+        this.out = Files.newOutputStream(temp);
     }
 
     /** For text written in pieces (the SVG); a file takes either this or {@link #line}, not both. */
@@ -45,13 +47,32 @@ final class AtomicOutput implements AutoCloseable {
     /** Writes one line with an LF end (decision D5: files use LF; the sender sends CR). */
     void line(String text) {
         try {
-            // Bytes straight to the stream: for ASCII text getBytes is a plain copy, whereas a
-            // Writer's charset encoder per line was a tenth of a compile's time.
-            out.write(text.getBytes(StandardCharsets.UTF_8));
-            out.write('\n');
+            int n = text.length();
+            if (buffered + n + 1 > buffer.length) {
+                drain();
+            }
+            for (int i = 0; i < n; i++) {
+                char c = text.charAt(i);
+                if (c >= 0x80 || buffered == buffer.length) {
+                    // Not ASCII (a comment in a tool name, say) or longer than the buffer: the slow way.
+                    drain();
+                    out.write(text.substring(i).getBytes(StandardCharsets.UTF_8));
+                    break;
+                }
+                buffer[buffered++] = (byte) c;
+            }
+            if (buffered == buffer.length) {
+                drain();
+            }
+            buffer[buffered++] = '\n';
         } catch (IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
+    }
+
+    private void drain() throws IOException {
+        out.write(buffer, 0, buffered);
+        buffered = 0;
     }
 
     void commit() throws IOException {
@@ -63,8 +84,11 @@ final class AtomicOutput implements AutoCloseable {
     @Override
     public void close() throws IOException {
         if (!committed) {
-            closeStreams();
-            Files.deleteIfExists(temp);
+            try {
+                closeStreams();
+            } finally {
+                Files.deleteIfExists(temp);
+            }
         }
     }
 
@@ -72,6 +96,7 @@ final class AtomicOutput implements AutoCloseable {
         if (writer != null) {
             writer.close();
         } else {
+            drain();
             out.close();
         }
     }

@@ -46,7 +46,7 @@ final class Conformance {
             mark("E309", to);
             return new double[] {to.x(), to.z()};
         }
-        double centre = Math.hypot(first.centreX() - arc.centre().x(), first.centreZ() - arc.centre().z());
+        double centre = Geometry.length(first.centreX() - arc.centre().x(), first.centreZ() - arc.centre().z());
         if (centre > tol) {
             return mismatch(line, "arc centre", centre, to);
         }
@@ -54,7 +54,7 @@ final class Conformance {
         double a = Math.atan2(arc.from().x() - arc.centre().x(), arc.from().z() - arc.centre().z())
                 + Math.toRadians(sweep / 2);
         double[] mid = first.at(0.5);
-        double off = Math.hypot(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
+        double off = Geometry.length(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
                 mid[1] - (arc.centre().z() + arc.radius() * Math.cos(a)));
         if (off > tol) {
             return mismatch(line, "arc direction or sweep (midpoint)", off, to);
@@ -68,7 +68,7 @@ final class Conformance {
     }
 
     private static double distance(Segment s, Point p) {
-        return Math.hypot(s.toX() - p.x(), s.toZ() - p.z());
+        return Geometry.length(s.toX() - p.x(), s.toZ() - p.z());
     }
 
     private double[] mismatch(int line, String what, double by, Point to) {

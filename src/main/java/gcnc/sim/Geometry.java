@@ -11,6 +11,14 @@ final class Geometry {
     private Geometry() {
     }
 
+    /**
+     * Length of (dx, dz). Math.hypot guards against overflow we cannot have (counts stay far below
+     * 1e150) at many times the cost of a square root, and the simulator asks this per segment.
+     */
+    static double length(double dx, double dz) {
+        return Math.sqrt(dx * dx + dz * dz);
+    }
+
     /** Does {@code tool} (relative to the tip) moved from tip a to tip b overlap {@code obstacle}? */
     static boolean sweptHits(Shape tool, double az, double ar, double bz, double br, Shape obstacle, double slack) {
         double dz = bz - az;
@@ -19,7 +27,7 @@ final class Geometry {
                 || separatedByEdges(obstacle, tool, az, ar, dz, dr, obstacle, slack)) {
             return false;
         }
-        double len = Math.hypot(dz, dr);
+        double len = length(dz, dr);
         return len == 0 || !separatedOn(-dr / len, dz / len, tool, az, ar, dz, dr, obstacle, slack);
     }
 
@@ -30,7 +38,7 @@ final class Geometry {
             int j = (i + 1) % n;
             double nz = edges.r()[j] - edges.r()[i];
             double nr = -(edges.z()[j] - edges.z()[i]);
-            double len = Math.hypot(nz, nr);
+            double len = length(nz, nr);
             if (len > 0 && separatedOn(nz / len, nr / len, tool, az, ar, dz, dr, obstacle, slack)) {
                 return true;
             }

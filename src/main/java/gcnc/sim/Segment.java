@@ -17,7 +17,7 @@ record Segment(double fromX, double fromZ, double toX, double toZ, boolean arc, 
     }
 
     double length() {
-        return arc ? Math.abs(Math.toRadians(sweepDeg)) * radius : Math.hypot(toX - fromX, toZ - fromZ);
+        return arc ? Math.abs(Math.toRadians(sweepDeg)) * radius : Geometry.length(toX - fromX, toZ - fromZ);
     }
 
     /** How many straight pieces approximate it within half a count (1 for a line). */

@@ -106,7 +106,7 @@ public final class Simulator {
      */
     private void skipStandingMotions(List<Segment> next) {
         while (nextMotion < expected.size() && expected.get(nextMotion) instanceof Motion.Linear l
-                && l.from().distanceTo(l.to()) <= options.tolerance()
+                && Geometry.length(l.to().x() - l.from().x(), l.to().z() - l.from().z()) <= options.tolerance()
                 && (next == null || moves(next))) {
             nextMotion++;
         }

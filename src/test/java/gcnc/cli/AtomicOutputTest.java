@@ -1,0 +1,52 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/** The output file holds exactly the lines written, across buffer ends and in any script, or nothing. */
+class AtomicOutputTest {
+    private final Path dir;
+
+    AtomicOutputTest() throws java.io.IOException {
+        dir = Files.createTempDirectory("gcnc-out");
+        dir.toFile().deleteOnExit();
+    }
+
+    @Test
+    void linesOfEveryLengthAndScriptComeOutExactly() throws Exception {
+        Random rnd = new Random(3);
+        String[] pieces = {"VP 1000,-2000", "NO L12", "é", "ñ (Spanish)", "€", "x".repeat(70_000), "", "CR 2100,87,8.2"};
+        StringBuilder expected = new StringBuilder();
+        Path target = dir.resolve("out.dmc");
+        try (AtomicOutput out = new AtomicOutput(target)) {
+            for (int i = 0; i < 1_000; i++) {
+                String line = pieces[rnd.nextInt(pieces.length)] + (rnd.nextBoolean() ? pieces[rnd.nextInt(3)] : "");
+                out.line(line);
+                expected.append(line).append('\n');
+            }
+            out.commit();
+        }
+        assertEquals(expected.toString(), Files.readString(target, StandardCharsets.UTF_8));
+        Files.delete(target);
+    }
+
+    @Test
+    void withoutCommitNothingIsLeft() throws Exception {
+        Path target = dir.resolve("out.dmc");
+        try (AtomicOutput out = new AtomicOutput(target)) {
+            for (int i = 0; i < 100_000; i++) {
+                out.line("VP 1000,-2000");
+            }
+        }
+        assertFalse(Files.exists(target));
+        try (var files = Files.list(dir)) {
+            assertEquals(0, files.count(), "no temporary file left behind");
+        }
+    }
+}
