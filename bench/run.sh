@@ -3,6 +3,8 @@
 # Reports blocks/second (end to end, JVM start included) and peak resident memory for
 #   gcnc check      (parse + all checks)
 #   gcnc compile    (check + Galil code generation + simulation, output written)
+# first on every core (the simulator has a thread of its own; the JIT compiler uses a core too),
+# then pinned to one core with taskset, the JIT compiler included.
 # usage: bench/run.sh [BLOCKS]      (default 1000000; needs build/libs/gcnc.jar: gradle assemble)
 set -eu
 cd "$(dirname "$0")/.."
@@ -16,10 +18,17 @@ prog=bench/out/turning-$blocks.nc
 jvm=(java -Xms64m -Xmx64m -XX:+UseSerialGC -jar "$jar")
 run() {
     local name=$1; shift
-    /usr/bin/time -f "%e %M" -o bench/out/time.txt "${jvm[@]}" "$@" >/dev/null
+    /usr/bin/time -f "%e %M" -o bench/out/time.txt $pin "${jvm[@]}" "$@" >/dev/null
     read -r secs kib < bench/out/time.txt
     python3 -c "import sys; b,s,k=$blocks,$secs,$kib; print(f'{sys.argv[1]:8s} {b} blocks in {s:.2f} s = {b/s:,.0f} blocks/s, peak RSS {k/1024:.0f} MiB')" "$name"
 }
 echo "gcnc benchmark: $(nproc) cores, $(java -version 2>&1 | head -1)"
+pin=""
 run check check "$prog"
 run compile compile "$prog" -o bench/out/turning.dmc
+if command -v taskset >/dev/null; then
+    echo "one core (taskset -c 0):"
+    pin="taskset -c 0"
+    run check check "$prog"
+    run compile compile "$prog" -o bench/out/turning.dmc
+fi
