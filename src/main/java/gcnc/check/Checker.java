@@ -19,7 +19,8 @@ import java.util.Optional;
 /**
  * The checking stage: each block's words go through the thesis's syntax actions, then the
  * end-of-block operations in their fixed order, then motion building. The first error of a block
- * is reported and the block is dropped; the modal state changes only for a block without errors.
+ * is reported and the block is dropped; the modal state changes only for a block without errors,
+ * or one whose only errors are broken prerequisites ({@link #recover}).
  */
 public final class Checker {
     /** After this many errors the checker reports 45 ("not enough memory") once and stops. */
@@ -76,15 +77,30 @@ public final class Checker {
             return Optional.empty();
         }
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
-        CheckedBlock result = run(d);
+        CheckedBlock result = run(d, out, true);
         if (result == null) {
+            recover(b, isFirst);
             return Optional.empty();
         }
         state = d.next.build();
         return Optional.of(result);
     }
 
-    private CheckedBlock run(BlockDraft d) {
+    /**
+     * After an error: if the block is clean but for prerequisite rules (an F, M11, M03 or G50 S
+     * missing before a cut, an S above the clamp), take the state it would have left, as if the
+     * programmer had fixed what was reported. Otherwise its F, G01, S or M03 would be lost and
+     * every later block would report an echo of this one instead of its own errors. The re-run
+     * reports nothing; a block with any other error leaves the state alone (atomic commit).
+     */
+    private void recover(RawBlock b, boolean isFirst) {
+        BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
+        if (run(d, new Diagnostics(), false) != null) {
+            state = d.next.build();
+        }
+    }
+
+    private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
         List<Word> words = d.block.words();
         for (int i = 0; i < words.size() && !d.failed(); i++) {
             Word w = words.get(i);
@@ -95,7 +111,9 @@ public final class Checker {
         }
         for (int i = 0; i < BlockChecks.ORDER.size() && !d.failed(); i++) {
             BlockCheck c = BlockChecks.ORDER.get(i);
-            c.run(d, out);
+            if (prerequisites || !c.prerequisite()) {
+                c.run(d, out);
+            }
         }
         return d.failed() ? null : motions.build(d, out);
     }

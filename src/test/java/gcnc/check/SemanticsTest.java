@@ -160,6 +160,32 @@ class SemanticsTest {
         assertEquals(before.checker.state(), after.checker.state());
     }
 
+    /** Recovery: the cut was meant; its F, G01 and end point hold, so the next cut has no error of its own. */
+    @Test
+    void aCutThatBreaksOnlyAPrerequisiteStillSetsTheState() {
+        Run r = Run.generic("G21 G90 G98\nG50 S2500\nT0101\nS1200 M03\nG01 X40. Z1. F100.\nM11\nG01 Z-10.\nM30");
+        assertEquals("5:14:E038", r.errors());
+        ModalState s = r.checker.state();
+        assertEquals(100, s.feed());
+        assertEquals(1, s.motion());
+        Run fixed = Run.generic("G21 G90 G98\nG50 S2500\nM11\nT0101\nS1200 M03\nG01 X40. Z1. F100.\nG01 Z-10.\nM30");
+        assertEquals("", fixed.errors());
+        assertEquals(fixed.checker.state().position(), s.position());
+    }
+
+    @Test
+    void aSpeedAboveTheClampStillStartsTheSpindle() {
+        Run r = Run.generic("G21 G90 G98\nG50 S2500\nM11\nT0101\nS3000 M03\nG01 X40. Z1. F100.\nM30");
+        assertEquals("5:7:E048", r.errors());
+    }
+
+    @Test
+    void anErrorInTheBlocksFormIsNotRecovered() {
+        Run r = Run.generic(PRE + "G01 X40. F100. G00\nG01 Z-10.\nM30");
+        assertTrue(r.errors().startsWith("6:16:E016"), r.errors());
+        assertTrue(r.errors().contains("7:"), "the F of the rejected block was not taken: " + r.errors());
+    }
+
     @Test
     void theGenericProgramChecksClean() {
         String program = String.join("\n", "O1001", "N10 G21 G90 G98", "N20 G50 S2500", "N30 M11", "N40 T0101",

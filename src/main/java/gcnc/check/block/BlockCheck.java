@@ -12,4 +12,13 @@ public interface BlockCheck {
     int number();
 
     void run(BlockDraft d, Diagnostics out);
+
+    /**
+     * A rule about the machine's state (spindle, chuck, feed, S limits) rather than the block's
+     * form. A block that breaks only such rules is still what the programmer meant, so the
+     * checker carries on from the state it would have left (see {@code Checker#recover}).
+     */
+    default boolean prerequisite() {
+        return false;
+    }
 }

@@ -19,6 +19,11 @@ public final class Eb07SpindleSpeed implements BlockCheck {
     }
 
     @Override
+    public boolean prerequisite() {
+        return true;
+    }
+
+    @Override
     public void run(BlockDraft d, Diagnostics out) {
         if (!d.has(Letter.S) || d.function == 50) {
             return;

@@ -17,6 +17,11 @@ public final class Eb08CuttingPrerequisites implements BlockCheck {
     }
 
     @Override
+    public boolean prerequisite() {
+        return true;
+    }
+
+    @Override
     public void run(BlockDraft d, Diagnostics out) {
         if (d.function < 1 || d.function > 3 || d.motionWords() == 0) {
             return;
