@@ -37,6 +37,20 @@ class CliTest {
         return p;
     }
 
+    /** The README shows the output of docs/examples/mistakes.nc; it must be what gcnc prints. */
+    @Test
+    void theReadmeExampleIsWhatGcncPrints() throws IOException {
+        String readme = Files.readString(Path.of("README.md"));
+        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/mistakes.nc\n";
+        int from = readme.indexOf(command);
+        assertTrue(from >= 0, "README lost its example");
+        from += command.length();
+        String shown = readme.substring(from, readme.indexOf("```", from));
+        Run r = gcnc("check", "docs/examples/mistakes.nc");
+        assertEquals(1, r.status());
+        assertEquals(shown, r.err() + r.out());
+    }
+
     @Test
     void theSampleProgramChecksClean() {
         Run r = gcnc("check", "samples/turning.nc");
