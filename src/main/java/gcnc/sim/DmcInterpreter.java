@@ -278,6 +278,31 @@ final class DmcInterpreter {
 
     /** The optionally signed decimal integer in s[from, to) (at most 15 digits), or BAD. */
     private static long parseLong(String s, int from, int to) {
+        double v = decimal(s, from, to, true);
+        return Double.isNaN(v) ? BAD : (long) v;
+    }
+
+    /** Integer.MIN_VALUE when s is not an integer that fits 32 bits. */
+    private static int integerOrNan(String s) {
+        long v = parseLong(s, 0, s.length());
+        return v == BAD || v > INT32 || v < -INT32 ? Integer.MIN_VALUE : (int) v;
+    }
+
+    private static final double[] TENS = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
+        1e13, 1e14, 1e15};
+
+    /** The plain decimal number in s ([+-]digits[.digits], blanks around it), or NaN. */
+    static double number(String s) {
+        return decimal(s, 0, s.length(), false);
+    }
+
+    /**
+     * The number in s[from, to), blanks around it allowed, or NaN; {@code integer} refuses a point
+     * and more than 15 digits. Up to 15 digits the value is digits / 10^k, both exact in a double,
+     * so the one division rounds correctly: the value Double.parseDouble gives, without its cost
+     * on every VP, CR and VS.
+     */
+    private static double decimal(String s, int from, int to, boolean integer) {
         int i = from;
         while (i < to && s.charAt(i) == ' ') {
             i++;
@@ -290,62 +315,13 @@ final class DmcInterpreter {
             negative = s.charAt(i) == '-';
             i++;
         }
-        if (i == to || to - i > 15) {
-            return BAD;
-        }
-        long v = 0;
-        for (; i < to; i++) {
-            char c = s.charAt(i);
-            if (c < '0' || c > '9') {
-                return BAD;
-            }
-            v = v * 10 + (c - '0');
-        }
-        return negative ? -v : v;
-    }
-
-    /** Integer.MIN_VALUE when s is not an integer that fits 32 bits. */
-    private static int integerOrNan(String s) {
-        String t = s.strip();
-        if (t.isEmpty() || t.length() > 11) {
-            return Integer.MIN_VALUE;
-        }
-        try {
-            long v = Long.parseLong(t.startsWith("+") ? t.substring(1) : t);
-            return v > INT32 || v < -INT32 ? Integer.MIN_VALUE : (int) v;
-        } catch (NumberFormatException x) {
-            return Integer.MIN_VALUE;
-        }
-    }
-
-    private static final double[] TENS = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
-        1e13, 1e14, 1e15};
-
-    /**
-     * The plain decimal number in s ([+-]digits[.digits], blanks around it), or NaN. Up to 15
-     * digits the value is digits / 10^k, both exact in a double, so the one division rounds
-     * correctly (the same value Double.parseDouble gives, without its cost on every CR and VS).
-     */
-    static double number(String s) {
-        int i = 0;
-        int to = s.length();
-        while (i < to && s.charAt(i) == ' ') {
-            i++;
-        }
-        while (to > i && s.charAt(to - 1) == ' ') {
-            to--;
-        }
-        boolean negative = false;
-        if (i < to && (s.charAt(i) == '-' || s.charAt(i) == '+')) {
-            negative = s.charAt(i) == '-';
-            i++;
-        }
+        int start = i;
         long digits = 0;
         int count = 0;
         int decimals = -1;
         for (; i < to; i++) {
             char c = s.charAt(i);
-            if (c == '.' && decimals < 0) {
+            if (c == '.' && decimals < 0 && !integer) {
                 decimals = 0;
             } else if (c >= '0' && c <= '9') {
                 digits = digits * 10 + (c - '0');
@@ -355,11 +331,12 @@ final class DmcInterpreter {
                 return Double.NaN;
             }
         }
-        if (count == 0) {
+        if (count == 0 || count > 15 && integer) {
             return Double.NaN;
         }
         if (count > 15) {
-            return Double.parseDouble(s.strip());
+            double v = Double.parseDouble(s.substring(start, to));
+            return negative ? -v : v;
         }
         double v = decimals > 0 ? digits / TENS[decimals] : digits;
         return negative ? -v : v;
