@@ -69,7 +69,7 @@ class CliTest {
                 "N40 T0101",
                 "N50 G01 X40. Z2. F120.",       // cut before M03
                 "N60 S1200 M03",
-                "N70 G01 X40. Z-10. F120.",   // the failed N50 set no F: a block with an error changes nothing
+                "N70 G01 X40. Z-10. F120.",   // clean: N50 broke only a prerequisite, so its state was taken
                 "N80 G01 Z-12. $",              // illegal character
                 "N90 G02 X46. Z-40. R3.",       // R cannot span the chord
                 "N100 M05",
