@@ -18,7 +18,10 @@ package gcnc.galil;
  * along the chord's bisector by about r/h per count of radius), and the middle of the arc with
  * it. Then the true centre is kept instead: the arc stays within a count of the programmed one and
  * ends a count or two short, and the same sequence closes the gap with a VP to the target
- * ({@link Cr#closing()}), so the sequence still ends exactly where the block ends.
+ * ({@link Cr#closing()}), so the sequence still ends exactly where the block ends. The same holds
+ * for an I/K arc whose end point is off its circle by less than the checker's tolerance (a Fanuc
+ * control would run a spiral): the arc keeps the centre and the start radius, and the closing VP
+ * covers the miss.
  */
 public final class ArcPlanner {
     /**
@@ -28,7 +31,18 @@ public final class ArcPlanner {
     public record Cr(long radius, double start, double sweep, boolean closing) {
     }
 
-    /** The longest closing VP, counts per axis: beyond it the arc itself is off, not its rounding. */
+    /**
+     * The arc the program means, in the Galil plane: exact start, centre and radius in counts
+     * (unrounded), signed sweep in degrees (counter-clockwise positive).
+     */
+    public record Intended(double fromU, double fromV, double centreU, double centreV, double radius, double sweep) {
+    }
+
+    /**
+     * The longest closing VP due to rounding, counts per axis; an I/K end point off its circle (by
+     * less than the checker's E102 tolerance) may add its own miss. Beyond that the arc itself is
+     * off, not its rounding.
+     */
     private static final long MAX_CLOSING = 2;
 
     /** How far, in counts, an arc that lands exactly on its target may stray from the programmed arc. */
@@ -41,46 +55,74 @@ public final class ArcPlanner {
     }
 
     /**
-     * @param su,sv        where the sequence starts (the controller's position)
-     * @param eu,ev        where the arc must end
-     * @param cu,cv        the exact centre, unrounded
-     * @param radius       the exact radius
-     * @param sweep        the intended signed sweep in Galil's sense (CCW positive), degrees
+     * @param su,sv  where the sequence starts (the controller's whole-count position)
+     * @param eu,ev  where the arc must end
+     * @param arc    the arc the program means
      * @return the CR arguments, or null when no printable arc ends on (eu, ev)
      */
-    public static Cr plan(long su, long sv, long eu, long ev, double cu, double cv, double radius, double sweep) {
+    public static Cr plan(long su, long sv, long eu, long ev, Intended arc) {
+        double cu = arc.centreU();
+        double cv = arc.centreV();
+        double sweep = arc.sweep();
         // The nearest whole radius first; when the rounded ends are farther apart than its diameter
         // (small half circles), the next whole radius up or down may still fit.
-        long r0 = GalilNumbers.round(radius);
-        long[] candidates = radius >= r0 ? new long[] {r0, r0 + 1, r0 - 1} : new long[] {r0, r0 - 1, r0 + 1};
+        long r0 = GalilNumbers.round(arc.radius());
+        long[] candidates = arc.radius() >= r0 ? new long[] {r0, r0 + 1, r0 - 1} : new long[] {r0, r0 - 1, r0 + 1};
         Cr best = null;
-        double bestShift = Double.MAX_VALUE;
+        double bestStray = Double.MAX_VALUE;
         for (long r : candidates) {
-            if (Math.abs(r - radius) <= 1.5) { // rounded ends move the half chord up to 0.71
+            if (Math.abs(r - arc.radius()) <= 1.5) { // rounded ends move the half chord up to 0.71
                 Cr cr = withRadius(su, sv, eu, ev, cu, cv, r, sweep);
-                // How far the arc can stray from the programmed one: centre moved plus radius changed.
-                double shift = cr == null ? Double.MAX_VALUE : centreShift(cr, su, sv, cu, cv) + Math.abs(r - radius);
-                if (shift <= MAX_STRAY) {
+                double stray = cr == null ? Double.MAX_VALUE : stray(cr, su, sv, arc);
+                if (stray <= MAX_STRAY) {
                     return cr;
                 }
-                if (shift < bestShift) {
+                if (stray < bestStray) {
                     best = cr;
-                    bestShift = shift;
+                    bestStray = stray;
                 }
             }
         }
-        Cr kept = aboutTrueCentre(su, sv, eu, ev, cu, cv, r0, sweep);
-        return kept != null ? kept : best; // best may bow: the simulator's conformance check says so
+        // About the true centre, with the programmed radius or the one from the controller's
+        // whole-count start, whichever strays less; the closing VP may also cover how far the
+        // target lies off that circle.
+        double fromStart = Math.hypot(su - cu, sv - cv);
+        long offCircle = (long) Math.ceil(Math.abs(Math.hypot(eu - cu, ev - cv) - fromStart));
+        for (long r : new long[] {r0, GalilNumbers.round(fromStart)}) {
+            Cr kept = aboutTrueCentre(su, sv, eu, ev, cu, cv, r, sweep, MAX_CLOSING + offCircle);
+            double stray = kept == null ? Double.MAX_VALUE : stray(kept, su, sv, arc);
+            if (stray < bestStray) {
+                best = kept;
+                bestStray = stray;
+            }
+        }
+        return best; // may bow: the simulator's conformance check says so
     }
 
-    /** Distance from the true centre to the centre the controller derives from S, r and the start angle. */
-    private static double centreShift(Cr cr, long su, long sv, double cu, double cv) {
+    /**
+     * How far the planned arc strays from the programmed one: its centre and radius, and its
+     * quarter points against the programmed arc's (both circles pass near S and E, so on a long
+     * arc the far side moves by up to twice the centre's shift). The simulator's conformance
+     * check measures the same way.
+     */
+    private static double stray(Cr cr, long su, long sv, Intended arc) {
         double sr = Math.toRadians(cr.start());
-        return Math.hypot(su - cr.radius() * Math.cos(sr) - cu, sv - cr.radius() * Math.sin(sr) - cv);
+        double ou = su - cr.radius() * Math.cos(sr);   // the centre the controller derives
+        double ov = sv - cr.radius() * Math.sin(sr);
+        double programmedStart = Math.atan2(arc.fromV() - arc.centreV(), arc.fromU() - arc.centreU());
+        double worst = Math.hypot(ou - arc.centreU(), ov - arc.centreV()) + Math.abs(cr.radius() - arc.radius());
+        for (double t = 0.25; t < 1; t += 0.25) {
+            double a = sr + Math.toRadians(t * cr.sweep());
+            double b = programmedStart + Math.toRadians(t * arc.sweep());
+            worst = Math.max(worst, Math.hypot(ou + cr.radius() * Math.cos(a) - arc.centreU() - arc.radius() * Math.cos(b),
+                    ov + cr.radius() * Math.sin(a) - arc.centreV() - arc.radius() * Math.sin(b)));
+        }
+        return worst;
     }
 
     /** The arc about the true centre with the nearest whole radius, ending near E (a closing VP follows), or null. */
-    private static Cr aboutTrueCentre(long su, long sv, long eu, long ev, double cu, double cv, long r, double sweep) {
+    private static Cr aboutTrueCentre(long su, long sv, long eu, long ev, double cu, double cv, long r, double sweep,
+                                      long maxClosing) {
         if (r < 1 || (su == cu && sv == cv)) {
             return null;
         }
@@ -96,7 +138,7 @@ public final class ArcPlanner {
         double er = Math.toRadians(start + delta);
         long endU = GalilNumbers.round(ou + r * Math.cos(er));
         long endV = GalilNumbers.round(ov + r * Math.sin(er));
-        if (Math.abs(endU - eu) > MAX_CLOSING || Math.abs(endV - ev) > MAX_CLOSING) {
+        if (Math.abs(endU - eu) > maxClosing || Math.abs(endV - ev) > maxClosing) {
             return null;
         }
         return new Cr(r, start, delta, endU != eu || endV != ev);

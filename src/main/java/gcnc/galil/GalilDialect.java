@@ -125,7 +125,11 @@ final class GalilDialect implements Dialect {
         }
         Point c = m.centre();
         double sweep = frame.handedness() * ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
-        ArcPlanner.Cr cr = ArcPlanner.plan(posU, posV, tu, tv, frame.u(c), frame.v(c), m.radius(), sweep);
+        if (tu == posU && tv == posV && Math.abs(sweep) <= 180) {
+            return; // a short arc between ends a count apart at most: no move (CR would sweep 0)
+        }
+        ArcPlanner.Cr cr = ArcPlanner.plan(posU, posV, tu, tv, new ArcPlanner.Intended(frame.u(m.from()),
+                frame.v(m.from()), frame.u(c), frame.v(c), m.radius(), sweep));
         if (cr == null) {
             diagnostics.error(Code.E202_ARC_NOT_REPRESENTABLE, at(b), GalilNumbers.round(m.radius()));
             return;

@@ -228,8 +228,10 @@ final class DmcInterpreter {
         if (pending.isEmpty()) {
             return;
         }
-        g1 = cursor1;
-        g2 = cursor2;
+        // The controller's position is whole counts: an arc that ends a fraction off its target
+        // leaves the axes at the nearest count, and the next sequence starts from there.
+        g1 = Math.rint(cursor1);
+        g2 = Math.rint(cursor2);
         // The listener reads the segments during the call and keeps none of them.
         out.sequence(pending, speed, line, text);
         pending.clear();

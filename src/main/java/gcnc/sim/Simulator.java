@@ -5,8 +5,10 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.galil.GalilLine;
+import gcnc.ir.ArcGeometry;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
+import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import gcnc.tables.TableException;
 import java.util.ArrayList;
@@ -101,20 +103,41 @@ public final class Simulator {
     }
 
     /**
-     * A straight motion that does not move (G28 U0 W0's intermediate point) needs no sequence:
-     * the backend may leave it out. Skips such motions unless the sequence at hand stands still too.
+     * A motion that does not move (G28 U0 W0's intermediate point, an arc shorter than a count)
+     * needs no sequence: the backend may leave it out. Skips such motions unless the sequence at
+     * hand is that motion (the backend kept it: a move of a count or two after rounding).
      */
     private void skipStandingMotions(List<Segment> next) {
-        while (nextMotion < expected.size() && expected.get(nextMotion) instanceof Motion.Linear l
-                && Geometry.length(l.to().x() - l.from().x(), l.to().z() - l.from().z()) <= options.tolerance()
-                && (next == null || moves(next))) {
+        while (nextMotion < expected.size() && standing(expected.get(nextMotion))
+                && (next == null || !sameMove(expected.get(nextMotion), next))) {
             nextMotion++;
         }
     }
 
-    private boolean moves(List<Segment> segs) {
+    /** Ends within the tolerance, and for an arc no more than half a turn (so it bulges no more). */
+    private boolean standing(Motion m) {
+        if (m instanceof Motion.Linear l) {
+            return distance(l.from(), l.to()) <= options.tolerance();
+        }
+        Motion.Arc a = (Motion.Arc) m;
+        return distance(a.from(), a.to()) <= options.tolerance()
+                && Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180;
+    }
+
+    /** Is the sequence that motion: the same kind, and its displacement within the tolerance? */
+    private boolean sameMove(Motion m, List<Segment> segs) {
+        Segment first = segs.get(0);
         Segment last = segs.get(segs.size() - 1);
-        return segs.size() > 1 || last.arc() || last.length() > options.tolerance();
+        boolean arc = m instanceof Motion.Arc;
+        Point from = arc ? ((Motion.Arc) m).from() : ((Motion.Linear) m).from();
+        Point to = arc ? ((Motion.Arc) m).to() : ((Motion.Linear) m).to();
+        return first.arc() == arc && (arc || segs.size() == 1)
+                && Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
+                        last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
+    }
+
+    private static double distance(Point a, Point b) {
+        return Geometry.length(b.x() - a.x(), b.z() - a.z());
     }
 
     private void closeSequences(int line) {

@@ -51,7 +51,10 @@ public final class Arcs {
                         round(from.distanceTo(to) / c.perRadius(d.units)));
                 return null;
             }
-            return new Motion.Arc(cw, from, to, centre.get(), Math.abs(r), feed, new Motion.ArcWords(r, null, null));
+            // The radius from the centre, not |R|: an R a little short of half the chord (within the
+            // tolerance) puts the centre on the chord, and the arc then has half the chord as radius.
+            return new Motion.Arc(cw, from, to, centre.get(), from.distanceTo(centre.get()), feed,
+                    new Motion.ArcWords(r, null, null));
         }
         double i = d.has(Letter.I) ? d.value(Letter.I) * c.perRadius(d.units) : 0;
         double k = d.has(Letter.K) ? d.value(Letter.K) * c.perZ(d.units) : 0;
