@@ -125,8 +125,10 @@ final class GalilDialect implements Dialect {
         }
         Point c = m.centre();
         double sweep = frame.handedness() * ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
-        if (tu == posU && tv == posV && Math.abs(sweep) <= 180) {
-            return; // a short arc between ends a count apart at most: no move (CR would sweep 0)
+        if (tu == posU && tv == posV && (Math.abs(sweep) <= 180 || 2 * m.radius() < 1)) {
+            // The arc stays within a count of where it starts: no move (CR would sweep 0, or draw
+            // a circle of a whole count where the program has a smaller one).
+            return;
         }
         ArcPlanner.Cr cr = ArcPlanner.plan(posU, posV, tu, tv, new ArcPlanner.Intended(frame.u(m.from()),
                 frame.v(m.from()), frame.u(c), frame.v(c), m.radius(), sweep));

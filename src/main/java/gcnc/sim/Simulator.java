@@ -114,14 +114,18 @@ public final class Simulator {
         }
     }
 
-    /** Ends within the tolerance, and for an arc no more than half a turn (so it bulges no more). */
+    /**
+     * Ends within the tolerance; for an arc also no more than half a turn (so it bulges no more)
+     * or a diameter within the tolerance (a circle that small).
+     */
     private boolean standing(Motion m) {
         if (m instanceof Motion.Linear l) {
             return distance(l.from(), l.to()) <= options.tolerance();
         }
         Motion.Arc a = (Motion.Arc) m;
         return distance(a.from(), a.to()) <= options.tolerance()
-                && Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180;
+                && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
+                        || 2 * a.radius() <= options.tolerance());
     }
 
     /** Is the sequence that motion: the same kind, and its displacement within the tolerance? */
