@@ -103,7 +103,7 @@ public final class ArcPlanner {
      * How far the planned arc strays from the programmed one: its centre and radius, and its
      * quarter points against the programmed arc's (both circles pass near S and E, so on a long
      * arc the far side moves by up to twice the centre's shift). The simulator's conformance
-     * check measures the same way.
+     * check compares the centre and the midpoint.
      */
     private static double stray(Cr cr, long su, long sv, Intended arc) {
         double sr = Math.toRadians(cr.start());
@@ -120,7 +120,7 @@ public final class ArcPlanner {
         return worst;
     }
 
-    /** The arc about the true centre with the nearest whole radius, ending near E (a closing VP follows), or null. */
+    /** The arc of whole radius r about the true centre, ending near E (a closing VP follows), or null. */
     private static Cr aboutTrueCentre(long su, long sv, long eu, long ev, double cu, double cv, long r, double sweep,
                                       long maxClosing) {
         if (r < 1 || (su == cu && sv == cv)) {

@@ -123,6 +123,18 @@ class SemanticsTest {
         assertTrue(Math.abs(ArcGeometry.sweepDegrees(longWay.from(), longWay.to(), longWay.centre(), true)) > 180);
     }
 
+    /** R 0.005 mm short of half the chord (tolerance 0.01): the centre is the chord's midpoint, the radius half the chord. */
+    @Test
+    void anRJustShortOfHalfTheChordKeepsHalfTheChordAsRadius() {
+        Run r = Run.generic(PRE + "G00 X40. Z0.\nG02 X40. Z-20. R9.995 F100.\nM30");
+        assertEquals("", r.errors());
+        Motion.Arc a = (Motion.Arc) r.line(7).motions().get(0);
+        assertEquals(a.from().distanceTo(a.centre()), a.radius(), 1e-9);
+        assertEquals(a.to().distanceTo(a.centre()), a.radius(), 1e-6);
+        assertEquals(new Point(20000, 140000), a.centre());
+        assertEquals(10000, a.radius(), 1e-6);
+    }
+
     @Test
     void arcsWithIAndKAndAFullCircle() {
         Run r = Run.generic(PRE + "G00 X40. Z0.\nG03 X60. Z-10. I0. K-10. F100.\nG02 X60. Z-10. I5.\nM30");

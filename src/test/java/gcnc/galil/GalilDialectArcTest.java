@@ -169,6 +169,25 @@ class GalilDialectArcTest {
         assertTrue(out.contains("VP 18800,20000"), out.toString());
     }
 
+    /** An I/K end 6 counts outside its circle (the checker allows 10): same centre and radius, and a VP closes the gap. */
+    @Test
+    void anIkEndOffItsCircleWithinToleranceIsClosedByAVp() {
+        Point from = new Point(5000, 6000);
+        Point c = new Point(5000, 3000);
+        double a = Math.toRadians(170);
+        Point to = new Point(c.x() + 3006 * Math.sin(a), c.z() + 3006 * Math.cos(a));
+        Motion.Arc arc = new Motion.Arc(false, from, to, c, 3000, FEED, new Motion.ArcWords(null, 0.0, -3000.0));
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", G, d, motions(1, from, rapid(Point.ORIGIN, from)), motions(2, to, arc));
+        assertEquals(0, d.size(), () -> d.sorted().toString());
+        assertEnds(G, out, List.of(from, to));
+        int cr = 0;
+        while (cr < out.size() && !out.get(cr).startsWith("CR ")) {
+            cr++;
+        }
+        assertTrue(out.get(cr).startsWith("CR 3000,") && out.get(cr + 1).startsWith("VP "), out.toString());
+    }
+
     @Test
     void fullCirclesSweepThreeHundredSixty() {
         // From phi 0 (x 5000, z 6000) round the centre (5000, 5000) back to itself. Generic: start 0,
