@@ -44,6 +44,13 @@ class PipelineFuzzTest {
     Stream<DynamicTest> randomProgramsNeverBreakThePipeline() throws Exception {
         MachineProfile generic = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
         MachineProfile thesis = ProfileLoader.load("thesis-2004", TableSource.builtIn(), TABLES);
+        // The generic lathe with the axes swapped on the controller, X mirrored and a front post.
+        String text = java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/generic.machine"))
+                .replace("z.galil = X", "z.galil = Y").replace("x.galil = Y", "x.galil = X")
+                .replace("x.sign = 1", "x.sign = -1").replace("tool_post = rear", "tool_post = front");
+        MachineProfile mirrored = ProfileLoader.read(gcnc.machine.ProfileFile.parse("mirrored.machine", text), TABLES);
+        assertEquals("X -1 Y front", mirrored.x().galil() + " " + mirrored.x().sign() + " " + mirrored.z().galil() + " "
+                + (mirrored.rearToolPost() ? "rear" : "front"));
         long first = Long.getLong("gcnc.fuzz.seed", 20261122L);
         List<DynamicTest> tests = new ArrayList<>();
         List<Long> seeds = new ArrayList<>();
@@ -58,6 +65,7 @@ class PipelineFuzzTest {
             tests.add(dynamicTest("seed " + s, () -> {
                 String program = program(new Random(s));
                 run(program, generic, "galil", s);
+                run(program, mirrored, "galil", s);
                 run(program, thesis, "galil", s);
                 run(program, thesis, "thesis", s);
             }));
