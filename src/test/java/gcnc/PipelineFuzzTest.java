@@ -68,9 +68,39 @@ class PipelineFuzzTest {
                 run(program, mirrored, "galil", s);
                 run(program, thesis, "galil", s);
                 run(program, thesis, "thesis", s);
+                // The same program with modal round trips between its blocks (units, feed per
+                // revolution, tools, work offsets, spindle, dwell): same path, more state.
+                String busier = withRoundTrips(program, new Random(~s));
+                run(busier, generic, "galil", s);
+                run(busier, mirrored, "galil", s);
             }));
         }
         return tests.stream();
+    }
+
+    /** Excursions that end where they start, so the program's own arcs still fit where they are. */
+    private static final String[] ROUND_TRIPS = {
+        "G20\nG01 U0.04 W-0.04 F4.\nG01 U-0.04 W0.04\nG21",
+        "G99 G01 U1. W-1. F0.1\nG01 U-1. W1.\nG98",
+        "T0202\nT0101",
+        "G55\nG54",
+        "M05\nM03",
+        "G04 X0.3",
+        "G00 U4.\nG00 U-4.",
+        "G96 S120\nG01 W-0.5 F100.\nG01 W0.5\nG97 S1000",
+    };
+
+    static String withRoundTrips(String program, Random rnd) {
+        StringBuilder out = new StringBuilder();
+        List<String> lines = program.lines().toList();
+        for (int i = 0; i < lines.size(); i++) {
+            out.append(lines.get(i)).append('\n');
+            boolean body = i >= 5 && i < lines.size() - 4 && !lines.get(i).startsWith("G91");
+            if (body && rnd.nextInt(5) == 0) {
+                out.append(ROUND_TRIPS[rnd.nextInt(ROUND_TRIPS.length)]).append('\n');
+            }
+        }
+        return out.toString();
     }
 
     private static void run(String program, MachineProfile profile, String dialect, long seed) throws Exception {
