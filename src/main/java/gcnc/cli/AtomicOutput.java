@@ -14,7 +14,9 @@ import java.nio.file.attribute.PosixFilePermissions;
 /**
  * An output file that appears whole or not at all: lines go to a temporary file beside the target,
  * which replaces the target only on {@link #commit()}. {@link #close()} without commit deletes it,
- * so a program with errors never leaves a half-written .dmc behind.
+ * so a program with errors never leaves a half-written .dmc behind. A write that fails (a full
+ * disk) is kept and the lines after it dropped: the compile goes on reporting the program's own
+ * findings, and {@link #commit()} then throws that failure instead of replacing the target.
  */
 final class AtomicOutput implements AutoCloseable {
     private final Path target;
@@ -25,15 +27,26 @@ final class AtomicOutput implements AutoCloseable {
     private int buffered;
     private Writer writer;
     private boolean committed;
+    /** The first write error, or null. */
+    private IOException failure;
+
+    /** Opens the temporary file's stream (a seam for tests that need a failing disk). */
+    interface Opener {
+        OutputStream open(Path temp) throws IOException;
+    }
 
     AtomicOutput(Path target) throws IOException {
+        this(target, p -> Files.newOutputStream(p));
+    }
+
+    AtomicOutput(Path target, Opener opener) throws IOException {
         this.target = target.toAbsolutePath();
         this.temp = Files.createTempFile(this.target.getParent(), "." + target.getFileName(), ".part");
         // A temporary file is private (rw-------); the output is an ordinary file others may read.
         if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
             Files.setPosixFilePermissions(temp, PosixFilePermissions.fromString("rw-r--r--"));
         }
-        this.out = Files.newOutputStream(temp);
+        this.out = opener.open(temp);
     }
 
     /** For text written in pieces (the SVG); a file takes either this or {@link #line}, not both. */
@@ -46,6 +59,9 @@ final class AtomicOutput implements AutoCloseable {
 
     /** Writes one line with an LF end (decision D5: files use LF; the sender sends CR). */
     void line(String text) {
+        if (failure != null) {
+            return;
+        }
         try {
             int n = text.length();
             if (buffered + n + 1 > buffer.length) {
@@ -66,7 +82,7 @@ final class AtomicOutput implements AutoCloseable {
             }
             buffer[buffered++] = '\n';
         } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
+            failure = e;
         }
     }
 
@@ -76,6 +92,9 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     void commit() throws IOException {
+        if (failure != null) {
+            throw failure;
+        }
         closeStreams();
         Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
         committed = true;
@@ -96,7 +115,9 @@ final class AtomicOutput implements AutoCloseable {
         if (writer != null) {
             writer.close();
         } else {
-            drain();
+            if (failure == null) {
+                drain();
+            }
             out.close();
         }
     }

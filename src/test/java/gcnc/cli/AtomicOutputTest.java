@@ -2,6 +2,7 @@ package gcnc.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -45,6 +46,37 @@ class AtomicOutputTest {
             }
         }
         assertFalse(Files.exists(target));
+        try (var files = Files.list(dir)) {
+            assertEquals(0, files.count(), "no temporary file left behind");
+        }
+    }
+
+    /** A full disk: lines after the failure are dropped quietly, commit reports it, nothing is left. */
+    @Test
+    void aFullDiskFailsTheCommitNotTheLinesAndLeavesNothing() throws Exception {
+        Path target = dir.resolve("full.dmc");
+        Files.writeString(target, "the previous output\n");
+        AtomicOutput.Opener fullAfter100k = temp -> new java.io.FilterOutputStream(Files.newOutputStream(temp)) {
+            private long written;
+
+            @Override
+            public void write(byte[] b, int off, int len) throws java.io.IOException {
+                if (written + len > 100_000) {
+                    throw new java.io.IOException("No space left on device");
+                }
+                written += len;
+                out.write(b, off, len);
+            }
+        };
+        try (AtomicOutput out = new AtomicOutput(target, fullAfter100k)) {
+            for (int i = 0; i < 100_000; i++) {
+                out.line("VP 1000,-2000");
+            }
+            java.io.IOException e = assertThrows(java.io.IOException.class, out::commit);
+            assertEquals("No space left on device", e.getMessage());
+        }
+        assertEquals("the previous output\n", Files.readString(target), "the old output stays whole");
+        Files.delete(target);
         try (var files = Files.list(dir)) {
             assertEquals(0, files.count(), "no temporary file left behind");
         }
