@@ -29,7 +29,8 @@ public final class BlockReader {
     private final LineSource source;
     private final Diagnostics diagnostics;
     private final LineCharStream stream = new LineCharStream();
-    private final GCodeLexer lexer = new GCodeLexer(stream);
+    /** Made on the first line the fast scanner leaves to it: most programs never load ANTLR. */
+    private GCodeLexer lexer;
     private final List<Word> words = new ArrayList<>();
     /** Try {@link FastScanner} before the ANTLR lexer (off only in tests that compare the two). */
     private final boolean fastPath;
@@ -47,8 +48,6 @@ public final class BlockReader {
         this.source = new LineSource(in);
         this.diagnostics = diagnostics;
         this.fastPath = fastPath;
-        lexer.removeErrorListeners();
-        lexer.addErrorListener(new ToDiagnostics());
     }
 
     /** The next block, or null at the end of the input. */
@@ -102,6 +101,11 @@ public final class BlockReader {
      */
     private int lexSegment(int from, boolean open) {
         stream.reset(source.chars(), from, source.length(), open);
+        if (lexer == null) {
+            lexer = new GCodeLexer(stream);
+            lexer.removeErrorListeners();
+            lexer.addErrorListener(new ToDiagnostics());
+        }
         lexer.setInputStream(stream);
         for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
             int start = t.getStartIndex();
