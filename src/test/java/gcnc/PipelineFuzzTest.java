@@ -38,7 +38,7 @@ class PipelineFuzzTest {
      * Seeds long campaigns found broken (arcs near a half or a full turn, I/K end
      * points off their circle within tolerance, R a little short, sub-count moves, arcs and circles).
      */
-    private static final long[] FOUND = {212, 3269, 3287, 3873, 5730, 12893, 14770, 17282, 23808, 88905, 113719};
+    private static final long[] FOUND = {212, 3269, 3287, 3873, 5730, 12893, 14770, 17282, 23808, 88905, 113719, 276991};
 
     @TestFactory
     Stream<DynamicTest> randomProgramsNeverBreakThePipeline() throws Exception {

@@ -99,14 +99,19 @@ final class GalilDialect implements Dialect {
     }
 
     private void linear(CheckedBlock b, Motion.Linear m, BlockWriter out) {
-        long tu = GalilNumbers.round(frame.u(m.to()));
-        long tv = GalilNumbers.round(frame.v(m.to()));
+        straight(b, m.to(), m.rapid() ? null : m.feed(), out);
+    }
+
+    /** One VP sequence to {@code to} (feed null = rapid); nothing when it is the same count. */
+    private void straight(CheckedBlock b, Point to, gcnc.ir.Feed feed, BlockWriter out) {
+        long tu = GalilNumbers.round(frame.u(to));
+        long tv = GalilNumbers.round(frame.v(to));
         long du = tu - posU;
         long dv = tv - posV;
         if (!inRange(b, "VP", tu) || !inRange(b, "VP", tv) || !inRange(b, "VP", du) || !inRange(b, "VP", dv)) {
             return;
         }
-        long speed = speed(b, m.rapid() ? null : m.feed());
+        long speed = speed(b, feed);
         if (speed < 0 || (du == 0 && dv == 0)) {
             return; // no move: an empty sequence would be TC 30 "segment too short"
         }
@@ -125,9 +130,11 @@ final class GalilDialect implements Dialect {
         }
         Point c = m.centre();
         double sweep = frame.handedness() * ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
-        if (tu == posU && tv == posV && (Math.abs(sweep) <= 180 || 2 * m.radius() < 1)) {
-            // The arc stays within a count of where it starts: no move (CR would sweep 0, or draw
-            // a circle of a whole count where the program has a smaller one).
+        if (2 * m.radius() < 1 || tu == posU && tv == posV && Math.abs(sweep) <= 180) {
+            // The arc stays within a count of where it starts: a straight move to its end count,
+            // or none (a CR would sweep 0, or draw a circle of a whole count where the program
+            // has a smaller one).
+            straight(b, m.to(), m.feed(), out);
             return;
         }
         ArcPlanner.Cr cr = ArcPlanner.plan(posU, posV, tu, tv, new ArcPlanner.Intended(frame.u(m.from()),

@@ -38,6 +38,9 @@ final class Conformance {
         // The arc is the sequence's first segment; a closing VP of a count or two may follow it
         // (the galil dialect's whole-count radius), so the end point is the last segment's.
         Segment first = segs.get(0);
+        if (!first.arc() && 2 * arc.radius() <= tol) {
+            return endPoint(last, to, line); // a circle within the tolerance: a straight move is as good
+        }
         if (!first.arc()) {
             return mismatch(line, "path (a straight move for an arc)", distance(last, to), to);
         }

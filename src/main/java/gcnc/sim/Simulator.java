@@ -128,16 +128,20 @@ public final class Simulator {
                         || 2 * a.radius() <= options.tolerance());
     }
 
-    /** Is the sequence that motion: the same kind, and its displacement within the tolerance? */
+    /**
+     * Is the sequence that motion: the same kind (an arc within the tolerance may be written as a
+     * straight move), and its displacement within the tolerance?
+     */
     private boolean sameMove(Motion m, List<Segment> segs) {
         Segment first = segs.get(0);
         Segment last = segs.get(segs.size() - 1);
         boolean arc = m instanceof Motion.Arc;
         Point from = arc ? ((Motion.Arc) m).from() : ((Motion.Linear) m).from();
         Point to = arc ? ((Motion.Arc) m).to() : ((Motion.Linear) m).to();
-        return first.arc() == arc && (arc || segs.size() == 1)
-                && Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
-                        last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
+        boolean kind = arc ? first.arc() || 2 * ((Motion.Arc) m).radius() <= options.tolerance()
+                : segs.size() == 1 && !first.arc();
+        return kind && Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
+                last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
     }
 
     private static double distance(Point a, Point b) {

@@ -169,6 +169,22 @@ class GalilDialectArcTest {
         assertTrue(out.contains("VP 18800,20000"), out.toString());
     }
 
+    /** A circle under a count across (here 0.8) whose ends round to neighbouring counts: one straight count. */
+    @Test
+    void anArcUnderACountAcrossIsAStraightMove() {
+        Point c = new Point(5000.0, 6000.2);
+        Point from = new Point(5000.0, 6000.6);                    // counts (5000, 6001)
+        double a = Math.toRadians(150);
+        Point to = new Point(c.x() + 0.4 * Math.sin(a), c.z() + 0.4 * Math.cos(a)); // counts (5000, 6000)
+        Motion.Arc arc = new Motion.Arc(false, from, to, c, 0.4, FEED, new Motion.ArcWords(null, 0.0, -0.4));
+        assertEquals(150, ArcGeometry.sweepDegrees(from, to, c, false), 1e-9);
+        Diagnostics d = new Diagnostics();
+        List<String> out = Fixtures.run("galil", G, d, motions(1, from, rapid(Point.ORIGIN, from)), motions(2, to, arc));
+        assertEquals(0, d.size(), () -> d.sorted().toString());
+        assertTrue(out.stream().noneMatch(l -> l.startsWith("CR")), out.toString());
+        assertEnds(G, out, List.of(from, to));
+    }
+
     /** An I/K end 6 counts outside its circle (the checker allows 10): same centre and radius, and a VP closes the gap. */
     @Test
     void anIkEndOffItsCircleWithinToleranceIsClosedByAVp() {
