@@ -135,13 +135,17 @@ public final class Simulator {
     private boolean sameMove(Motion m, List<Segment> segs) {
         Segment first = segs.get(0);
         Segment last = segs.get(segs.size() - 1);
-        boolean arc = m instanceof Motion.Arc;
-        Point from = arc ? ((Motion.Arc) m).from() : ((Motion.Linear) m).from();
-        Point to = arc ? ((Motion.Arc) m).to() : ((Motion.Linear) m).to();
-        boolean kind = arc ? first.arc() || 2 * ((Motion.Arc) m).radius() <= options.tolerance()
-                : segs.size() == 1 && !first.arc();
-        return kind && Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
-                last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
+        double dx = last.toX() - first.fromX();
+        double dz = last.toZ() - first.fromZ();
+        if (m instanceof Motion.Linear l) {
+            return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, l.from(), l.to());
+        }
+        Motion.Arc a = (Motion.Arc) m;
+        return (first.arc() || 2 * a.radius() <= options.tolerance()) && sameDisplacement(dx, dz, a.from(), a.to());
+    }
+
+    private boolean sameDisplacement(double dx, double dz, Point from, Point to) {
+        return Geometry.length(dx - (to.x() - from.x()), dz - (to.z() - from.z())) <= options.tolerance();
     }
 
     private static double distance(Point a, Point b) {
