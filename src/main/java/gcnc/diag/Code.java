@@ -129,6 +129,8 @@ public enum Code {
     E104_FEED_PER_REV_NO_SPEED(104),
     /** Checker: an R arc whose end point is its start point (a full circle needs I/K). */
     E105_ARC_FULL_CIRCLE_WITH_R(105),
+    /** Checker: an arc leaves the travel between end points that are inside it. */
+    E106_ARC_BEYOND_TRAVEL(106),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

@@ -66,4 +66,33 @@ public final class ArcGeometry {
         }
         return sweep;
     }
+
+    /**
+     * {xMin, xMax, zMin, zMax} of an arc in the (z right, x up) drawing: its end points and the
+     * points where it crosses 0, 90, 180 or 270 degrees (0 = +z, 90 = +x), where it bulges most.
+     */
+    public static double[] bounds(double fromX, double fromZ, double toX, double toZ, double centreX, double centreZ,
+                                  double radius, double startDeg, double sweepDeg) {
+        double[] b = {Math.min(fromX, toX), Math.max(fromX, toX), Math.min(fromZ, toZ), Math.max(fromZ, toZ)};
+        double lo = Math.min(startDeg, startDeg + sweepDeg);
+        double hi = Math.max(startDeg, startDeg + sweepDeg);
+        for (double q = Math.ceil(lo / 90) * 90; q <= hi; q += 90) {
+            switch (Math.floorMod((int) Math.round(q / 90), 4)) {
+                case 0 -> b[3] = Math.max(b[3], centreZ + radius);
+                case 1 -> b[1] = Math.max(b[1], centreX + radius);
+                case 2 -> b[2] = Math.min(b[2], centreZ - radius);
+                default -> b[0] = Math.min(b[0], centreX - radius);
+            }
+        }
+        return b;
+    }
+
+    /** The same for an arc motion. */
+    public static double[] bounds(Motion.Arc a) {
+        Point f = a.from();
+        Point c = a.centre();
+        double start = Math.toDegrees(Math.atan2(f.x() - c.x(), f.z() - c.z()));
+        return bounds(f.x(), f.z(), a.to().x(), a.to().z(), c.x(), c.z(), a.radius(), start,
+                sweepDegrees(f, a.to(), c, a.clockwise()));
+    }
 }

@@ -1,6 +1,7 @@
 package gcnc.sim;
 
 import gcnc.diag.Code;
+import gcnc.ir.ArcGeometry;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
@@ -220,23 +221,12 @@ final class MotionChecks {
 
     /** {xMin, xMax, zMin, zMax} of a segment: an arc's extremes where it crosses 0/90/180/270 degrees. */
     static double[] bounds(Segment s) {
-        double[] b = {Math.min(s.fromX(), s.toX()), Math.max(s.fromX(), s.toX()),
+        if (!s.arc()) {
+            return new double[] {Math.min(s.fromX(), s.toX()), Math.max(s.fromX(), s.toX()),
                 Math.min(s.fromZ(), s.toZ()), Math.max(s.fromZ(), s.toZ())};
-        if (s.arc()) {
-            double lo = Math.min(s.startDeg(), s.startDeg() + s.sweepDeg());
-            double hi = Math.max(s.startDeg(), s.startDeg() + s.sweepDeg());
-            for (double q = Math.ceil(lo / 90) * 90; q <= hi; q += 90) {
-                int k = Math.floorMod((int) Math.round(q / 90), 4);
-                // angle 0 = +z, 90 = +x in the machine drawing
-                switch (k) {
-                    case 0 -> b[3] = Math.max(b[3], s.centreZ() + s.radius());
-                    case 1 -> b[1] = Math.max(b[1], s.centreX() + s.radius());
-                    case 2 -> b[2] = Math.min(b[2], s.centreZ() - s.radius());
-                    default -> b[0] = Math.min(b[0], s.centreX() - s.radius());
-                }
-            }
         }
-        return b;
+        return ArcGeometry.bounds(s.fromX(), s.fromZ(), s.toX(), s.toZ(), s.centreX(), s.centreZ(), s.radius(),
+                s.startDeg(), s.sweepDeg());
     }
 
     /** Trapezoidal speed profile from rest to rest; a triangle when the move is too short to reach v. */

@@ -82,6 +82,7 @@ class ErrorsTest {
         "$|G99|G01 X40. F3.; 7:10:E103",
         "G21 G90 G99|G50 S2500|M11|T0101|M03|G01 X40. F0.2; 6:10:E104",
         "$|G00 X40. Z0.|G02 X40. Z0. R5. F100.; 7:14:E105",
+        "$|G00 X210. Z0.|G03 X210. Z-20. R10. F100.; 7:17:E106",
     })
     void reportsTheErrorWhereItIs(String program, String expected) {
         Run r = run(program);

@@ -9,6 +9,7 @@ import gcnc.ir.Feed;
 import gcnc.ir.Letter;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
+import gcnc.machine.Axis;
 import gcnc.machine.MachineProfile;
 import java.util.Optional;
 
@@ -16,7 +17,8 @@ import java.util.Optional;
  * G02/G03 with their true geometry (reading §8 [REC], §12.10). R: centre on the chord's
  * perpendicular, R &lt; 0 the long way; an R shorter than half the chord is E101, an R arc ending
  * where it starts E105. I/K: centre = start + (I, K), I a radius even in diameter mode; an end
- * point off that circle by more than {@link #TOLERANCE_MM} is E102. A full circle needs I/K.
+ * point off that circle by more than {@link #TOLERANCE_MM} is E102. A full circle needs I/K. An arc
+ * that bulges out of the travel between its end points is E106.
  */
 public final class Arcs {
     /** How far an end point may miss the circle, and R may miss half the chord, in mm. */
@@ -53,8 +55,8 @@ public final class Arcs {
             }
             // The radius from the centre, not |R|: an R a little short of half the chord (within the
             // tolerance) puts the centre on the chord, and the arc then has half the chord as radius.
-            return new Motion.Arc(cw, from, to, centre.get(), from.distanceTo(centre.get()), feed,
-                    new Motion.ArcWords(r, null, null));
+            return inTravel(d, new Motion.Arc(cw, from, to, centre.get(), from.distanceTo(centre.get()), feed,
+                    new Motion.ArcWords(r, null, null)), at, out);
         }
         double i = d.has(Letter.I) ? d.value(Letter.I) * c.perRadius(d.units) : 0;
         double k = d.has(Letter.K) ? d.value(Letter.K) * c.perZ(d.units) : 0;
@@ -65,7 +67,33 @@ public final class Arcs {
             d.fail(out, Code.E102_ARC_END_OFF_CIRCLE, at, round(miss / p.x().countsPerMm()), TOLERANCE_MM);
             return null;
         }
-        return new Motion.Arc(cw, from, to, centre, from.distanceTo(centre), feed, new Motion.ArcWords(null, i, k));
+        return inTravel(d, new Motion.Arc(cw, from, to, centre, from.distanceTo(centre), feed,
+                new Motion.ArcWords(null, i, k)), at, out);
+    }
+
+    /**
+     * The arc, or null after E106 when it bulges out of the travel between its end points (which
+     * are inside: the caller checked them). Half a count of slack: less cannot be commanded.
+     */
+    private Motion.Arc inTravel(BlockDraft d, Motion.Arc a, Span at, Diagnostics out) {
+        double[] b = ArcGeometry.bounds(a);
+        Axis x = p.x();
+        Axis z = p.z();
+        if (b[0] < x.min() - 0.5 || b[1] > x.max() + 0.5) {
+            beyond(d, "X", b[0] < x.min() - 0.5 ? b[0] : b[1], x, at, out);
+            return null;
+        }
+        if (b[2] < z.min() - 0.5 || b[3] > z.max() + 0.5) {
+            beyond(d, "Z", b[2] < z.min() - 0.5 ? b[2] : b[3], z, at, out);
+            return null;
+        }
+        return a;
+    }
+
+    private static void beyond(BlockDraft d, String axis, double counts, Axis a, Span at, Diagnostics out) {
+        double perMm = a.countsPerMm();
+        d.fail(out, Code.E106_ARC_BEYOND_TRAVEL, at, axis, round(counts / perMm), round(a.min() / perMm),
+                round(a.max() / perMm));
     }
 
     static double round(double v) {
