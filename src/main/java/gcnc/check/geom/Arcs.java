@@ -76,9 +76,14 @@ public final class Arcs {
      * are inside: the caller checked them). Half a count of slack: less cannot be commanded.
      */
     private Motion.Arc inTravel(BlockDraft d, Motion.Arc a, Span at, Diagnostics out) {
-        double[] b = ArcGeometry.bounds(a);
         Axis x = p.x();
         Axis z = p.z();
+        Point c = a.centre();
+        double r = a.radius();
+        if (x.inTravel(c.x() - r) && x.inTravel(c.x() + r) && z.inTravel(c.z() - r) && z.inTravel(c.z() + r)) {
+            return a; // the whole circle is inside: no need to find where the arc turns (most arcs)
+        }
+        double[] b = ArcGeometry.bounds(a);
         if (b[0] < x.min() - 0.5 || b[1] > x.max() + 0.5) {
             beyond(d, "X", b[0] < x.min() - 0.5 ? b[0] : b[1], x, at, out);
             return null;
