@@ -38,7 +38,7 @@ final class Conformance {
         // The arc is the sequence's first segment; a closing VP of a count or two may follow it
         // (the galil dialect's whole-count radius), so the end point is the last segment's.
         Segment first = segs.get(0);
-        if (!first.arc() && 2 * arc.radius() <= tol) {
+        if (!first.arc() && pointLike(arc, tol)) {
             return endPoint(last, to, line); // a circle within the tolerance: a straight move is as good
         }
         if (!first.arc()) {
@@ -63,6 +63,14 @@ final class Conformance {
             return mismatch(line, "arc direction or sweep (midpoint)", off, to);
         }
         return endPoint(last, to, line);
+    }
+
+    /**
+     * A circle no wider than the tolerance: the backend may write its arc as a straight move, and
+     * the simulator pairs and checks it so (one rule for {@code Simulator} and this class).
+     */
+    static boolean pointLike(Motion.Arc arc, double tolerance) {
+        return 2 * arc.radius() <= tolerance;
     }
 
     private double[] endPoint(Segment last, Point to, int line) {

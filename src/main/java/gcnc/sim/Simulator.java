@@ -125,7 +125,7 @@ public final class Simulator {
         Motion.Arc a = (Motion.Arc) m;
         return distance(a.from(), a.to()) <= options.tolerance()
                 && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
-                        || 2 * a.radius() <= options.tolerance());
+                        || Conformance.pointLike(a, options.tolerance()));
     }
 
     /**
@@ -141,7 +141,7 @@ public final class Simulator {
             return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, l.from(), l.to());
         }
         Motion.Arc a = (Motion.Arc) m;
-        return (first.arc() || 2 * a.radius() <= options.tolerance()) && sameDisplacement(dx, dz, a.from(), a.to());
+        return (first.arc() || Conformance.pointLike(a, options.tolerance())) && sameDisplacement(dx, dz, a.from(), a.to());
     }
 
     private boolean sameDisplacement(double dx, double dz, Point from, Point to) {
