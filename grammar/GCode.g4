@@ -1,40 +1,60 @@
 /*
- * The part-program language of the thesis (§3.3, Tables 11/12), as gcnc accepts it.
- * See docs/grammar.md for the language, the error numbers and the deviations from the thesis.
+ * The part-program language of the thesis (§3.3, Tables 11/12), widened to read real Haas and
+ * Fanuc lathe programs. See docs/grammar.md for the language, the error numbers and the
+ * deviations from the thesis.
  *
  * The lexer rules replace the thesis's transition matrix. They cover EVERY character, so the
  * lexer itself never fails: malformed input becomes an error token (NOT_INTEGER, BAD_NUMBER,
- * BARE_LETTER, UNDEFINED_LETTER, STRAY, ILLEGAL, NESTED_COMMENT, UNCLOSED_COMMENT) that
+ * BARE_LETTER, TEXT, MACRO, STRAY, ILLEGAL, NESTED_COMMENT, UNCLOSED_COMMENT) that
  * gcnc.parse.BlockReader turns into a numbered diagnostic. Ties between rules of equal match
  * length go to the rule written first, so the valid word rules come before the error rules.
  *
+ * Every letter A-Z is a word letter: which letters a control reads is the checker's business
+ * (error 4), not the grammar's.
+ *
  * The parser rules document the block structure. BlockReader follows them in a small loop over
- * the lexer's tokens, one physical line at a time (streaming); BlockReaderGrammarTest checks that
- * the two agree.
+ * the lexer's tokens, one physical line at a time (streaming); BlockReaderAgreementTest checks
+ * that the two agree.
  */
 grammar GCode;
 
 // ---- parser: one physical line is one block -------------------------------------------------
 
-/** A program: blocks separated by line ends. Blank and comment-only lines are empty. */
-program   : block? (separator block?)* EOF ;
+/** A program: lines separated by line ends. Blank and comment-only lines are empty. */
+program   : line? (separator line?)* EOF ;
 
 /** A comment that spans lines ends the block it opened in; words after it belong to its last line. */
 separator : NEWLINE | SPANNING_COMMENT ;
 
-/** The words of one line, in any order, with or without spaces between them (G01X10Z5). */
-block     : word+ ;
+/** A line with words is a block; a line holding only a block delete '/' makes no block. */
+line      : block | BLOCK_DELETE ;
 
-word      : INT_WORD     // G M N O P S T: unsigned digits (G1 = G01; the checker normalises)
-          | FEED_WORD    // F: unsigned decimal
-          | COORD_WORD   // I K R U W X Z: signed decimal
+/**
+ * The words of one line, in any order, with or without spaces between them (G01X10Z5), marked
+ * for block delete by a '/' before the first word or right after a first N word (/N10, N10/).
+ */
+block     : BLOCK_DELETE word+
+          | SEQUENCE_WORD BLOCK_DELETE word*
+          | word+
+          ;
+
+word      : SEQUENCE_WORD  // N: unsigned digits
+          | INT_WORD       // G M O S T: unsigned digits (G1 = G01; the checker normalises)
+          | TAPE_PROGRAM   // ':' and digits: Fanuc's ISO tape program number, the word O
+          | FEED_WORD      // F: unsigned decimal
+          | COORD_WORD     // every other letter: signed decimal
           ;
 
 // ---- lexer: words ----------------------------------------------------------------------------
 
-INT_WORD    : [GgMmNnOoPpSsTt] DIGIT+ ;
-FEED_WORD   : [Ff] UNSIGNED ;
-COORD_WORD  : [IiKkRrUuWwXxZz] [+-]? UNSIGNED ;
+SEQUENCE_WORD : [Nn] DIGIT+ ;
+INT_WORD      : [GgMmOoSsTt] DIGIT+ ;
+TAPE_PROGRAM  : ':' DIGIT+ ;
+FEED_WORD     : [Ff] UNSIGNED ;
+COORD_WORD    : [A-EH-LP-RU-Za-eh-lp-ru-z] [+-]? UNSIGNED ;
+
+/** Block delete, with its optional skip level 1-9 (a bare '/' is level 1). */
+BLOCK_DELETE  : '/' [1-9]? ;
 
 // ---- lexer: comments and layout --------------------------------------------------------------
 
@@ -50,20 +70,22 @@ NEWLINE          : '\r\n' | '\r' | '\n' ;
 
 // ---- lexer: errors (never in a parser rule; each is one numbered diagnostic) -----------------
 
-/** A word letter with no number: G -> error 1, M -> error 2, any other -> error 6. */
-BARE_LETTER      : [GgMmNnOoPpSsTtFfIiKkRrUuWwXxZz] ;
-/** An integer word with a sign or decimal point (N1.5, S-100): error 13. */
-NOT_INTEGER      : [GgMmNnOoPpSsTt] [+\-.0-9]+ ;
+/** A letter with no number: G -> error 1, M -> error 2, any other -> error 6. */
+BARE_LETTER      : [A-Za-z] ;
+/** A letter followed by letters: a note outside a comment ("roughing pass", "Xabc"): error 109. */
+TEXT             : [A-Za-z] [A-Za-z]+ ;
+/** An integer word with a sign or decimal point (N1.5, S-100, :12.5): error 13. */
+NOT_INTEGER      : [GgMmNnOoSsTt] [+\-.0-9]+ | ':' DIGIT [+\-.0-9]* ;
 /** A decimal word whose number is malformed (X+, X., X1.2.3, X--1, F-1): error 14. */
-BAD_NUMBER       : [FfIiKkRrUuWwXxZz] [+\-.0-9]+ ;
-/** A letter the language does not have: error 4. */
-UNDEFINED_LETTER : [AaBbCcDdEeHhJjLlQqVvYy] ;
+BAD_NUMBER       : [A-FH-LP-RU-Za-fh-lp-ru-z] [+\-.0-9]+ ;
+/** Fanuc macro B: a '#' variable or a '[ ]' expression: error 111 (the line's first error). */
+MACRO            : [#[\]] ;
 /** '(' inside a comment: error 54 (the thesis printed 150). The token ends at the inner '('. */
 NESTED_COMMENT   : '(' ~[()]* '(' ;
 /** A comment with no ')' before the end of the input: error 5. */
 UNCLOSED_COMMENT : '(' ~[()]* ;
-/** A number, sign, point or punctuation where a word should start: error 10. */
-STRAY            : [0-9.+\-:,*/=#)[\]] ;
+/** A number, sign, point or punctuation where a word should start: error 10 (so is a misplaced '/'). */
+STRAY            : [0-9.+\-:,*=)] ;
 /** Any other character ($, ", control characters, non-ASCII ...): error 3. */
 ILLEGAL          : . ;
 

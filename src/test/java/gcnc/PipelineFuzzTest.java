@@ -51,6 +51,8 @@ class PipelineFuzzTest {
         MachineProfile mirrored = ProfileLoader.read(gcnc.machine.ProfileFile.parse("mirrored.machine", text), TABLES);
         assertEquals("X -1 Y front", mirrored.x().galil() + " " + mirrored.x().sign() + " " + mirrored.z().galil() + " "
                 + (mirrored.rearToolPost() ? "rear" : "front"));
+        MachineProfile haas = ProfileLoader.load("haas", TableSource.builtIn(), TABLES);
+        MachineProfile fanuc = ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES);
         long first = Long.getLong("gcnc.fuzz.seed", 20261122L);
         List<DynamicTest> tests = new ArrayList<>();
         List<Long> seeds = new ArrayList<>();
@@ -73,6 +75,11 @@ class PipelineFuzzTest {
                 String busier = withRoundTrips(program, new Random(~s));
                 run(busier, generic, "galil", s);
                 run(busier, mirrored, "galil", s);
+                // The same programs as a Haas and a Fanuc (system A) control write them.
+                run(inSystemA(program, "M10"), haas, "galil", s);
+                run(inSystemA(busier, "M10"), haas, "galil", s);
+                run(inSystemA(program, "M11"), fanuc, "galil", s);
+                run(inSystemA(busier, "M11"), fanuc, "galil", s);
             }));
         }
         return tests.stream();
@@ -93,6 +100,24 @@ class PipelineFuzzTest {
         "G96 S120\nG01 W-0.5 F100.\nG01 W0.5\nG97 S1000",
         "G28 U0. W0.\nG29 U0. W0.",
     };
+
+    /**
+     * A program in Fanuc system A and Haas terms: no G90/G91 (X/Z absolute, U/W incremental in
+     * any block), the chuck closed with the control's own code, G04 P in seconds on Haas.
+     */
+    static String inSystemA(String program, String chuckClose) {
+        String a = program.replace("G21 G90 G98\n", "G21 G98\n").replace("\nM11\n", "\n" + chuckClose + "\n")
+                .replace("G91 G01 U2. W-1. F80.\nG90\n", "G01 U2. W-1. F80.\n");
+        if (chuckClose.equals("M10")) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("G04 P(\\d+)").matcher(a);
+            StringBuilder sb = new StringBuilder();
+            while (m.find()) {
+                m.appendReplacement(sb, "G04 P" + Integer.parseInt(m.group(1)) / 1000.0);
+            }
+            a = m.appendTail(sb).toString();
+        }
+        return a;
+    }
 
     static String withRoundTrips(String program, Random rnd) {
         StringBuilder out = new StringBuilder();

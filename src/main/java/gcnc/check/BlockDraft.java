@@ -8,6 +8,8 @@ import gcnc.ir.Letter;
 import gcnc.ir.MCall;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 import gcnc.tables.Tables;
@@ -40,9 +42,11 @@ public final class BlockDraft {
     private final Word[] gGroups = new Word[GROUPS];
     private final Word[] mGroups = new Word[GROUPS];
 
-    /** The block's motion G (group 1) or NONE. */
+    /** The block's motion G (group 1) or NONE, by thesis number (0-3). */
     public int motionG = NONE;
-    /** The block's one-shot G with parameters (4, 28, 29, 50, 92) or NONE (thesis GWP). */
+    /** The word that set motionG, or null. */
+    public Word motionWord;
+    /** The block's one-shot G with parameters (4, 28, 29, 50, 53, 92 by thesis number) or NONE (thesis GWP). */
     public int oneShot = NONE;
     public Word oneShotWord;
     /** The function the block's parameters belong to (thesis nf), decided by Eb01. */
@@ -51,6 +55,8 @@ public final class BlockDraft {
     public int spindleBefore = NONE;
     public boolean g96;
     public final List<MCall> before = new ArrayList<>(2);
+    /** M words whose function needs an output that the machine profile does not give (E113). */
+    public final List<Word> unpowered = new ArrayList<>(1);
     public final List<MCall> after = new ArrayList<>(2);
     private boolean failed;
 
@@ -64,24 +70,48 @@ public final class BlockDraft {
         this.profile = profile;
         this.coordinates = coordinates;
         this.first = first;
-        this.units = blockUnits(block, prior.units());
+        this.units = blockUnits(block, prior.units(), functions);
         next.units = units;
     }
 
-    private static Units blockUnits(RawBlock b, Units u) {
+    private static Units blockUnits(RawBlock b, Units u, FunctionIndex functions) {
         List<Word> ws = b.words();
         for (int i = 0; i < ws.size(); i++) {
             Word w = ws.get(i);
             if (w.letter() == Letter.G) {
-                long g = NumberText.integer(w.number());
-                if (g == 20) {
+                GFunction f = functions.g(NumberText.integer(w.number()));
+                if (f != null && f.role() == GRole.INCH) {
                     u = Units.INCH;
-                } else if (g == 21) {
+                } else if (f != null && f.role() == GRole.METRIC) {
                     u = Units.MM;
                 }
             }
         }
         return u;
+    }
+
+    /** The G function whose parameters the block's words are (Eb01), or null. */
+    public GFunction owner() {
+        if (oneShotWord != null) {
+            return functions.g(NumberText.integer(oneShotWord.number()));
+        }
+        if (motionWord != null) {
+            return functions.g(NumberText.integer(motionWord.number()));
+        }
+        return function >= 0 && function <= 3 ? functions.g(GRole.values()[function]) : null;
+    }
+
+    /** The owner function as the program wrote it ("G92" on Fanuc B, whose thesis number is 50). */
+    public String ownerName() {
+        GFunction f = owner();
+        return f != null ? f.name() : "G" + function;
+    }
+
+    /** Notes an M word that does nothing on this machine: it needs an output the profile lacks. */
+    public void unpoweredM(gcnc.machine.MFunction f, Word w) {
+        if (f.needsOutput() && profile.outputsFor(f.code()).isEmpty()) {
+            unpowered.add(w);
+        }
     }
 
     /** Reports the block's first error; the checker stops working on the block after it. */

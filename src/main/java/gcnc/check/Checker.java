@@ -6,25 +6,46 @@ import gcnc.check.block.BlockCheck;
 import gcnc.check.block.BlockChecks;
 import gcnc.check.geom.Coordinates;
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.diag.Severity;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
+import gcnc.machine.Control;
 import gcnc.machine.MachineProfile;
 import gcnc.tables.Tables;
+import java.util.BitSet;
+import java.util.EnumMap;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * The checking stage: each block's words go through the thesis's syntax actions, then the
  * end-of-block operations in their fixed order, then motion building. The first error of a block
  * is reported and the block is dropped; the modal state changes only for a block without errors,
- * or one whose only errors are broken prerequisites ({@link #recover}).
+ * or one whose only errors are broken prerequisites ({@link #recover}); a block rejected for
+ * anything else still keeps its unambiguous modal words ({@link Salvage}).
+ *
+ * <p>One root cause, one error: a prerequisite broken again by later blocks (a program that never
+ * starts the spindle) is reported at its first block, with a note that counts the later ones.
+ * <p>Block delete: once a '/' block appears, a second checker follows the program with the
+ * switch in the other position, so both variants are checked; what only the other finds is
+ * reported with a note saying so.
  */
 public final class Checker {
-    /** After this many errors the checker reports 45 ("not enough memory") once and stops. */
+    /** After this many errors the checker reports E116 once and stops. */
     public static final int ERROR_CAP = 10_000;
+    /** Prerequisite errors that later blocks repeat until the program fixes the cause. */
+    private static final Set<Code> ROOT_CAUSES = Set.of(Code.E037_SPINDLE_DIRECTION_BEFORE_CUT,
+            Code.E038_CHUCK_OPEN_CUT, Code.E039_FEED_NOT_SET, Code.E041_G50_NOT_SET_BEFORE_CUT,
+            Code.E050_S_BEFORE_G50, Code.E051_SPINDLE_DIRECTION, Code.E103_FEED_ABOVE_MAXIMUM,
+            Code.E104_FEED_PER_REV_NO_SPEED);
+    private static final int NOTE_LINES = 5;
 
     private final Tables tables;
     private final MachineProfile profile;
@@ -34,23 +55,52 @@ public final class Checker {
     private final Coordinates coordinates;
     private final MotionBuilder motions;
     private final int errorCap;
+    /** One block's findings before they are reported (reused: nothing allocated per block). */
+    private final Diagnostics scratch = new Diagnostics();
+    private final Map<Code, Cause> causes = new EnumMap<>(Code.class);
+    /** M codes already warned about (E113), N numbers seen (E114, controls where N may repeat). */
+    private final BitSet warnedM = new BitSet();
+    private final BitSet seenN = new BitSet();
+    /** The block delete switch as this checker follows the program: true = '/' blocks are skipped. */
+    private final boolean skipDeleted;
+    /** The other position of the switch, from the first '/' block on; null before (and in the other itself). */
+    private Checker other;
+    private final boolean isOther;
     private ModalState state;
     private long blocks;
     private boolean stopped;
+
+    /** A root cause already reported, and the later blocks that broke the same rule. */
+    private static final class Cause {
+        final Diagnostic first;
+        int later;
+        final StringBuilder lines = new StringBuilder();
+
+        Cause(Diagnostic first) {
+            this.first = first;
+        }
+    }
 
     public Checker(Tables tables, MachineProfile profile, Diagnostics out) {
         this(tables, profile, out, ERROR_CAP);
     }
 
     Checker(Tables tables, MachineProfile profile, Diagnostics out, int errorCap) {
+        this(tables, profile, out, errorCap, profile.control().blockDelete() == Control.BlockDelete.ON, false);
+    }
+
+    private Checker(Tables tables, MachineProfile profile, Diagnostics out, int errorCap, boolean skipDeleted,
+                    boolean isOther) {
         this.tables = tables;
         this.profile = profile;
         this.out = out;
-        this.functions = new FunctionIndex(tables);
+        this.functions = new FunctionIndex(tables, profile.control());
         this.coordinates = new Coordinates(profile);
         this.motions = new MotionBuilder(profile, coordinates);
         this.errorCap = errorCap;
-        this.state = ModalState.initial(profile.home());
+        this.skipDeleted = skipDeleted;
+        this.isOther = isOther;
+        this.state = ModalState.initial(profile);
     }
 
     /** The modal state after the last accepted block. */
@@ -64,8 +114,24 @@ public final class Checker {
         }
         Span first = b.words().isEmpty() ? b.last() : b.words().get(0).span();
         if (out.errorCount() >= errorCap) {
-            out.error(Code.E045_OUT_OF_MEMORY, first, out.errorCount());
+            out.error(Code.E116_ERROR_CAP, first, out.errorCount());
             stopped = true;
+            return Optional.empty();
+        }
+        if (b.blockDelete() > 0) {
+            if (profile.control().blockDelete() == Control.BlockDelete.NONE) {
+                blocks++;
+                out.error(Code.E010_SYNTAX, Span.of(b.line(), Math.max(1, first.column() - 1)), "'/'");
+                return Optional.empty();
+            }
+            if (other == null && !isOther) {
+                other = fork();
+            }
+        }
+        if (other != null) {
+            other.check(b);
+        }
+        if (b.blockDelete() > 0 && skipDeleted) {
             return Optional.empty();
         }
         boolean isFirst = blocks++ == 0;
@@ -74,16 +140,103 @@ public final class Checker {
             return Optional.empty();
         }
         if (b.malformed()) {
+            state = Salvage.keep(b, state, functions, profile);
             return Optional.empty();
         }
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
-        CheckedBlock result = run(d, out, true);
+        scratch.clear();
+        CheckedBlock result = run(d, scratch, true);
+        report(b);
         if (result == null) {
             recover(b, isFirst);
             return Optional.empty();
         }
-        state = d.next.build();
+        commit(d);
+        if (!causes.isEmpty() && cuts(result)) {
+            closeCauses();
+        }
         return Optional.of(result);
+    }
+
+    /** The checker for the other position of the block delete switch, from the state reached so far. */
+    private Checker fork() {
+        Checker c = new Checker(tables, profile, new Diagnostics(), errorCap, !skipDeleted, true);
+        c.state = state;
+        c.blocks = blocks;
+        c.seenN.or(seenN);
+        c.warnedM.or(warnedM);
+        return c;
+    }
+
+    /** Reports the block's findings, folding a repeated root cause into its first report. */
+    private void report(RawBlock b) {
+        if (scratch.size() == 0) {
+            return;
+        }
+        for (Diagnostic diag : scratch.sorted()) {
+            Cause c = causes.get(diag.code());
+            if (c != null && diag.severity() == Severity.ERROR) {
+                c.later++;
+                if (c.later <= NOTE_LINES) {
+                    c.lines.append(c.lines.length() == 0 ? "" : ", ").append(b.line());
+                } else if (c.later == NOTE_LINES + 1) {
+                    c.lines.append(", ...");
+                }
+                continue;
+            }
+            if (ROOT_CAUSES.contains(diag.code())) {
+                causes.put(diag.code(), new Cause(diag));
+            }
+            out.report(diag);
+        }
+    }
+
+    private static boolean cuts(CheckedBlock b) {
+        for (gcnc.ir.Motion m : b.motions()) {
+            if (m instanceof gcnc.ir.Motion.Arc || m instanceof gcnc.ir.Motion.Linear l && !l.rapid()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** A clean cut: every prerequisite holds again, so a later break is a new cause. */
+    private void closeCauses() {
+        if (causes.isEmpty()) {
+            return;
+        }
+        for (Cause c : causes.values()) {
+            note(c);
+        }
+        causes.clear();
+    }
+
+    private void note(Cause c) {
+        if (c.later > 0) {
+            out.report(new Diagnostic(Code.E115_SAME_CAUSE, Severity.NOTE, c.first.span(),
+                    List.of(Integer.toString(c.later), c.lines.toString())));
+        }
+    }
+
+    /** Takes the block's next state, with its warnings: M codes without output (E113), a repeated N (E114). */
+    private void commit(BlockDraft d) {
+        for (Word w : d.unpowered) {
+            int m = (int) gcnc.check.geom.NumberText.integer(w.number());
+            if (!warnedM.get(m)) {
+                warnedM.set(m);
+                out.report(Diagnostic.warning(Code.E113_M_WITHOUT_OUTPUT, w.span(), m, profile.name()));
+            }
+        }
+        if (d.has(gcnc.ir.Letter.N) && !profile.control().increasingN()) {
+            long n = (long) d.value(gcnc.ir.Letter.N);
+            if (n >= 0 && n < Integer.MAX_VALUE) {
+                if (seenN.get((int) n)) {
+                    out.report(Diagnostic.warning(Code.E114_DUPLICATE_SEQUENCE_NUMBER, d.word(gcnc.ir.Letter.N).span(), n));
+                }
+                seenN.set((int) n);
+            }
+        }
+        state = d.next.build();
     }
 
     /**
@@ -91,16 +244,43 @@ public final class Checker {
      * missing before a cut, an S above the clamp), take the state it would have left, as if the
      * programmer had fixed what was reported. Otherwise its F, G01, S or M03 would be lost and
      * every later block would report an echo of this one instead of its own errors. The re-run
-     * reports nothing; a block with any other error leaves the state alone (atomic commit).
+     * reports nothing. A block with any other error keeps only its unambiguous modal words.
      */
     private void recover(RawBlock b, boolean isFirst) {
+        b = withoutNoseCompensation(b);
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         if (run(d, new Diagnostics(), false) != null) {
-            state = d.next.build();
+            commit(d);
+        } else {
+            state = Salvage.keep(b, state, functions, profile);
         }
     }
 
+    /**
+     * The block without its G41/G42 (reported as not supported yet): its move is then judged on
+     * the programmed path, so the blocks after it are not judged from a point the tool never left.
+     */
+    private RawBlock withoutNoseCompensation(RawBlock b) {
+        List<Word> kept = new java.util.ArrayList<>(b.words().size());
+        for (Word w : b.words()) {
+            gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty()
+                    ? functions.g(gcnc.check.geom.NumberText.integer(w.number())) : null;
+            if (f == null || f.role() != gcnc.machine.GRole.NOSE_COMP_LEFT && f.role() != gcnc.machine.GRole.NOSE_COMP_RIGHT) {
+                kept.add(w);
+            }
+        }
+        if (kept.size() == b.words().size() || kept.isEmpty()) {
+            return b;
+        }
+        return new RawBlock(b.line(), kept, kept.get(kept.size() - 1).span(), b.malformed(), b.blockDelete());
+    }
+
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
+        Word unsupported = actions.firstUnsupported(d);
+        if (unsupported != null) {
+            actions.action(17).apply(unsupported, d, out);
+            return null;
+        }
         List<Word> words = d.block.words();
         for (int i = 0; i < words.size() && !d.failed(); i++) {
             Word w = words.get(i);
@@ -118,10 +298,39 @@ public final class Checker {
         return d.failed() ? null : motions.build(d, out);
     }
 
-    /** End of the program: it must have ended with M30 (52). */
+    /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */
     public void finish(int lastLine) {
-        if (!stopped && !state.ended()) {
-            out.error(Code.E052_NO_M30, Span.of(Math.max(1, lastLine), 1));
+        for (Cause c : causes.values()) {
+            note(c);
         }
+        causes.clear();
+        if (!stopped && !state.ended()) {
+            out.error(Code.E052_NO_M30, Span.of(Math.max(1, lastLine), 1), profile.control().endCodes());
+        }
+        if (other != null) {
+            other.finish(lastLine);
+            merge(other.out, !skipDeleted);
+        }
+    }
+
+    /** Adds what only the other position of the block delete switch found, each with a note saying so. */
+    private void merge(Diagnostics found, boolean switchOn) {
+        Set<String> mine = new HashSet<>();
+        for (Diagnostic d : out.sorted()) {
+            mine.add(key(d));
+        }
+        for (Diagnostic d : found.sorted()) {
+            if (mine.add(key(d))) {
+                out.report(d);
+                if (d.severity() != Severity.NOTE) {
+                    out.report(new Diagnostic(Code.E118_BLOCK_DELETE_VARIANT, Severity.NOTE, d.span(),
+                            List.of(switchOn ? "on" : "off")));
+                }
+            }
+        }
+    }
+
+    private static String key(Diagnostic d) {
+        return d.code() + "@" + d.span() + d.args();
     }
 }

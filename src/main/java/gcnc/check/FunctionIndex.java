@@ -1,49 +1,70 @@
 package gcnc.check;
 
 import gcnc.ir.Letter;
-import gcnc.tables.GFunction;
-import gcnc.tables.MFunction;
+import gcnc.machine.Control;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.MFunction;
+import gcnc.machine.MRole;
 import gcnc.tables.ParameterLimit;
 import gcnc.tables.Tables;
+import java.util.Set;
 
-/** Tables 3, 4 and 6 as arrays, built once, so a block is checked without map look-ups or boxing. */
+/**
+ * The control's G and M tables and the thesis's Table 6 as arrays, built once, so a block is
+ * checked without map look-ups or boxing.
+ */
 public final class FunctionIndex {
-    /** G and M numbers of the tables are two digits (Tables 3 and 4). */
-    public static final int SIZE = 100;
+    /** G and M numbers are 0..999 (Haas has G codes above 100). */
+    public static final int SIZE = 1000;
 
+    private final Control control;
     private final GFunction[] g = new GFunction[SIZE];
     private final MFunction[] m = new MFunction[SIZE];
+    private final GFunction[] byRole = new GFunction[GRole.values().length];
     private final ParameterLimit[] limits = new ParameterLimit[Letter.values().length];
-    @SuppressWarnings("unchecked")
-    private final java.util.Set<Tables.Param>[] usage = new java.util.Set[SIZE];
+    private final boolean[] letters = new boolean[Letter.values().length];
 
-    public FunctionIndex(Tables tables) {
-        for (GFunction f : tables.allG()) {
-            if (f.code() >= 0 && f.code() < SIZE) {
-                g[f.code()] = f;
+    public FunctionIndex(Tables tables, Control control) {
+        this.control = control;
+        for (GFunction f : control.allG()) {
+            g[f.code()] = f;
+            if (byRole[f.role().ordinal()] == null) {
+                byRole[f.role().ordinal()] = f;
             }
         }
-        for (MFunction f : tables.allM()) {
-            if (f.code() >= 0 && f.code() < SIZE) {
-                m[f.code()] = f;
-            }
-        }
-        for (int f = 0; f < SIZE; f++) {
-            usage[f] = tables.allowedParameters(f).orElse(null);
+        for (MFunction f : control.allM()) {
+            m[f.code()] = f;
         }
         for (Letter l : Letter.values()) {
             limits[l.ordinal()] = tables.limit(l.name().charAt(0)).orElse(null);
+            letters[l.ordinal()] = control.letters().contains(l);
+        }
+        for (int code = 0; code < SIZE; code++) {
+            if (m[code] == null && control.builderM()) {
+                m[code] = new MFunction(code, 0, 0, MRole.OUTPUT, true, "machine-builder M code",
+                        "función M del fabricante de la máquina");
+            }
         }
     }
 
-    /** The G function, or null when Table 3 has no such code. */
+    public Control control() {
+        return control;
+    }
+
+    /** The G function, or null when the control's table has no such code. */
     public GFunction g(long code) {
         return code >= 0 && code < SIZE ? g[(int) code] : null;
     }
 
-    /** The M function, or null when Table 4 has no such code. */
+    /** The M function, or null when the control has no such code. */
     public MFunction m(long code) {
         return code >= 0 && code < SIZE ? m[(int) code] : null;
+    }
+
+    /** The control's first G code for a function (the modal motion's code, for messages). */
+    public GFunction g(GRole role) {
+        return byRole[role.ordinal()];
     }
 
     /** The Table 6 row of a word, or null when the word has none. */
@@ -51,8 +72,13 @@ public final class FunctionIndex {
         return limits[l.ordinal()];
     }
 
-    /** Table 7: the parameters function f accepts, or null when f has no row. */
-    public java.util.Set<Tables.Param> allowed(int f) {
-        return f >= 0 && f < SIZE ? usage[f] : null;
+    /** Whether the control reads this address letter (else E004). */
+    public boolean reads(Letter l) {
+        return letters[l.ordinal()];
+    }
+
+    /** Table 7 for the function with thesis number {@code f}: its parameters, or null when unrestricted. */
+    public Set<Tables.Param> allowed(GFunction f) {
+        return f == null ? null : f.words();
     }
 }

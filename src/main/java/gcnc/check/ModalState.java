@@ -1,6 +1,10 @@
 package gcnc.check;
 
 import gcnc.ir.Point;
+import gcnc.machine.Control;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 
 /**
@@ -19,8 +23,9 @@ import gcnc.machine.Units;
  * @param surfaceSpeed G96 S (m/min or ft/min)
  * @param rpm          spindle speed commanded (G97 S or the last CSS speed)
  * @param rpmClamp     G50 S maximum spindle speed
- * @param spindle      last M of group 2 (3, 4, 5, 19) or -1 if none yet
- * @param chuck        10 open, 11 closed, -1 unknown
+ * @param spindle      the last spindle M by thesis number (3, 4, 5, 19), -1 if none yet, UNKNOWN
+ *                     after an M gcnc could not read
+ * @param chuck        10 open, 11 closed (thesis numbers), -1 not closed yet, UNKNOWN as spindle
  * @param position     machine counts
  * @param shift        G50/G92 position-register shift of the work coordinates, counts
  * @param g28          intermediate point of the last G28, or null
@@ -33,11 +38,39 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
                          double rpmClamp, int spindle, int chuck, Point position, Point shift, Point g28,
                          long lastN, boolean named, boolean ended) {
 
-    /** The state at program start: home, G21, G90, G54, tool 1 offset 1 (IniVariablesPrg). */
-    public static ModalState initial(Point home) {
-        return new ModalState(-1, Units.MM, false, 54, 1, 1, Double.NaN, false, false, Double.NaN, Double.NaN,
-                Double.NaN, -1, -1, home, Point.ORIGIN, null, -1, false, false);
+    /**
+     * The state at cycle start: at home, with the control's power-up G codes, tool and offset,
+     * the machine's power-up units, and the chuck closed unless the program must close it
+     * (thesis-2004: no motion G, G21 G90 G54, tool 1 offset 1, chuck unknown: IniVariablesPrg).
+     */
+    public static ModalState initial(MachineProfile p) {
+        Control c = p.control();
+        int motion = -1;
+        boolean incremental = false;
+        boolean perRev = false;
+        boolean css = false;
+        int work = 54;
+        for (GFunction f : c.powerUp()) {
+            GRole r = f.role();
+            if (r.motion()) {
+                motion = r.number();
+            } else if (r == GRole.INCREMENTAL || r == GRole.ABSOLUTE) {
+                incremental = r == GRole.INCREMENTAL;
+            } else if (r == GRole.FEED_PER_REV || r == GRole.FEED_PER_MINUTE) {
+                perRev = r == GRole.FEED_PER_REV;
+            } else if (r == GRole.CSS || r == GRole.RPM) {
+                css = r == GRole.CSS;
+            } else if (r.number() >= 54 && r.number() <= 59) {
+                work = r.number();
+            }
+        }
+        return new ModalState(motion, p.units(), incremental, work, c.powerUpTool(), c.powerUpOffset(), Double.NaN,
+                perRev, css, Double.NaN, Double.NaN, Double.NaN, -1, p.chuckByProgram() ? -1 : 11, p.home(),
+                Point.ORIGIN, null, -1, false, false);
     }
+
+    /** Spindle or chuck after a block gcnc could not read that may have changed it: not judged. */
+    public static final int UNKNOWN = -2;
 
     public Next next() {
         return new Next(this);

@@ -54,8 +54,8 @@ final class MotionBuilder {
             case 28 -> {
                 Point via = d.next.g28;
                 Point home = p.home();
-                end = new Point(has(d, Letter.X, Letter.U) ? home.x() : via.x(),
-                        has(d, Letter.Z, Letter.W) ? home.z() : via.z());
+                end = new Point(!axis || has(d, Letter.X, Letter.U) ? home.x() : via.x(),
+                        !axis || has(d, Letter.Z, Letter.W) ? home.z() : via.z());
                 motions.add(new Motion.Linear(true, from, via, null));
                 motions.add(new Motion.Linear(true, via, end, null));
             }
@@ -67,6 +67,12 @@ final class MotionBuilder {
                     motions.add(new Motion.Linear(true, via, end, null));
                 }
             }
+            case 53 -> {
+                end = machineCoordinates(d, from, out);
+                if (end != null) {
+                    motions.add(new Motion.Linear(true, from, end, null));
+                }
+            }
             case 50, 92 -> register(d);
             default -> {
             }
@@ -74,6 +80,7 @@ final class MotionBuilder {
         if (end == null) {
             return null;
         }
+        speed(d);
         double rpm = spindle.rpm(d, end);
         d.next.rpm = rpm;
         if (d.function >= 0 && d.function <= 3 && (axis || d.function >= 2)) {
@@ -89,6 +96,24 @@ final class MotionBuilder {
         return new CheckedBlock(d.block.line(), speedChanged && !Double.isNaN(rpm) ? OptionalDouble.of(rpm)
                 : OptionalDouble.empty(), d.has(Letter.T) ? OptionalInt.of(d.next.tool) : OptionalInt.empty(),
                 d.before, motions, d.after, end);
+    }
+
+    /**
+     * The block's S outside a G50 block: the surface speed under G96, else the rpm, at most the
+     * clamp and the machine's maximum (what the control would run; Eb07 has reported an S above
+     * them, and a recovered block keeps the speed the control would have used).
+     */
+    private void speed(BlockDraft d) {
+        if (!d.has(Letter.S) || d.function == 50) {
+            return;
+        }
+        double s = d.value(Letter.S);
+        if (d.next.css) {
+            d.next.surfaceSpeed = s;
+        } else {
+            double clamp = Double.isNaN(d.next.rpmClamp) ? p.maxRpm() : Math.min(d.next.rpmClamp, p.maxRpm());
+            d.next.rpm = Math.min(s, clamp);
+        }
     }
 
     private Motion move(BlockDraft d, Point from, Point end, double rpm, Diagnostics out) {
@@ -111,14 +136,36 @@ final class MotionBuilder {
         return end;
     }
 
+    /**
+     * G53: X and Z in the control's machine coordinates, whose zero is the profile's
+     * {@code machine_zero} (the reference point on a Fanuc or Haas), X as a diameter where X is;
+     * always absolute (E117 for U/W or under G91), the travel checked (E015).
+     */
+    private Point machineCoordinates(BlockDraft d, Point from, Diagnostics out) {
+        for (Letter l : new Letter[] {Letter.U, Letter.W, Letter.X, Letter.Z}) {
+            if (d.has(l) && (l == Letter.U || l == Letter.W || d.next.incremental)) {
+                d.fail(out, Code.E117_G53_ABSOLUTE_ONLY, d.word(l).span(), d.word(l));
+                return null;
+            }
+        }
+        Point zero = p.machineZero();
+        double x = d.has(Letter.X) ? zero.x() + d.value(Letter.X) * coordinates.perX(d.units) : from.x();
+        double z = d.has(Letter.Z) ? zero.z() + d.value(Letter.Z) * coordinates.perZ(d.units) : from.z();
+        return checked(d, new Point(x, z), out);
+    }
+
     private static boolean has(BlockDraft d, Letter a, Letter b) {
         return d.has(a) || d.has(b);
     }
 
-    /** G04: P milliseconds, else X or U seconds (no-point rule of mm: X1 = 1 ms on a Fanuc). */
+    /**
+     * G04: P milliseconds (where the control reads P in seconds, Haas, a P with a point is
+     * seconds: P3. = 3 s, P3 = 3 ms), else X or U seconds (no-point rule of mm: X1 = 1 ms on a Fanuc).
+     */
     private double dwellSeconds(BlockDraft d) {
         if (d.has(Letter.P)) {
-            return d.value(Letter.P) / 1000;
+            boolean seconds = p.control().dwellPSeconds() && NumberText.hasPoint(d.word(Letter.P).number());
+            return seconds ? d.value(Letter.P) : d.value(Letter.P) / 1000;
         }
         Word w = d.has(Letter.X) ? d.word(Letter.X) : d.word(Letter.U);
         double v = NumberText.decimal(w.number());

@@ -19,6 +19,11 @@ final class CommonOptions {
             description = "Machine profile: a name under tables/machines/ or a .machine file (default: ${DEFAULT-VALUE}).")
     String machine;
 
+    @Option(names = "--control", paramLabel = "NAME|PATH",
+            description = "Control whose G and M codes and rules apply: a name under tables/controls/ or a folder"
+                    + " (default: the one the machine profile names).")
+    String control;
+
     @Option(names = "--lang", paramLabel = "en|es", defaultValue = "en",
             description = "Language of the messages: en (default) or es.")
     ErrorMessages.Lang lang;
@@ -42,7 +47,7 @@ final class CommonOptions {
     }
 
     MachineProfile loadProfile(Tables t) throws TableException {
-        return ProfileLoader.load(machine, source(), t);
+        return ProfileLoader.load(machine, source(), t, control);
     }
 
     ErrorMessages.Lang language() {

@@ -131,6 +131,30 @@ public enum Code {
     E105_ARC_FULL_CIRCLE_WITH_R(105),
     /** Checker: an arc leaves the travel between end points that are inside it. */
     E106_ARC_BEYOND_TRAVEL(106),
+    /** Checker (warning): a coordinate without a decimal point, read in least increments, far from its neighbours. */
+    E107_NO_DECIMAL_POINT(107),
+    /** Checker: a word the control knows that has no meaning in this block (Q in a G01 block). */
+    E108_WORD_NOT_USED(108),
+    /** Parser: words of text outside a comment (a note the programmer forgot to put in parentheses). */
+    E109_TEXT_OUTSIDE_COMMENT(109),
+    /** Checker: a function the control has that gcnc cannot follow yet (cycles, compensation, subprograms). */
+    E110_NOT_SUPPORTED_YET(110),
+    /** Parser: Fanuc macro B (# variables, [ ] expressions) is not supported yet. */
+    E111_MACRO_NOT_SUPPORTED_YET(111),
+    /** Checker: G17 or G19 on a lathe, which cuts in the ZX plane (G18) only. */
+    E112_PLANE_NOT_ZX(112),
+    /** Checker (warning): an M code the machine profile gives no output: it does nothing on that machine. */
+    E113_M_WITHOUT_OUTPUT(113),
+    /** Checker (warning): a sequence number that an earlier block already has. */
+    E114_DUPLICATE_SEQUENCE_NUMBER(114),
+    /** Checker (note): later blocks that broke the same prerequisite as the first one reported. */
+    E115_SAME_CAUSE(115),
+    /** Checker: the error cap was reached; checking stopped there. */
+    E116_ERROR_CAP(116),
+    /** Checker: G53 with an incremental word or under G91: machine coordinates are absolute. */
+    E117_G53_ABSOLUTE_ONLY(117),
+    /** Checker (note): the finding before it occurs only with the block delete switch in the other position. */
+    E118_BLOCK_DELETE_VARIANT(118),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

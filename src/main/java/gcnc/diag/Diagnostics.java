@@ -28,6 +28,12 @@ public final class Diagnostics {
         report(Diagnostic.error(code, span, args));
     }
 
+    /** Forgets every finding (a scratch collection reused block after block). */
+    public void clear() {
+        all.clear();
+        errors = 0;
+    }
+
     public boolean hasErrors() {
         return errors > 0;
     }

@@ -36,10 +36,13 @@ public final class GcodeAssertions {
     private GcodeAssertions() {
     }
 
-    /** Fails with every finding unless the program compiles and simulates clean on the machine. */
+    /**
+     * Fails with every finding unless the program compiles and simulates without an error on the
+     * machine (warnings and notes, like the command line's exit status 0, do not fail it).
+     */
     public static void assertCompilesClean(Path program, String machine) {
         List<String> findings = findings(program, machine);
-        if (!findings.isEmpty()) {
+        if (findings.stream().anyMatch(f -> f.contains(": error["))) {
             throw new AssertionError(program + " is not clean on " + machine + ":\n" + String.join("\n", findings));
         }
     }

@@ -35,13 +35,18 @@ import java.util.Optional;
  * @param feedPerF        counts/s per unit/min of F, when the machine is calibrated that way
  *                        (the thesis machine: VS = F x 20); 0 = from counts per mm or inch
  * @param file            the profile text, for keys read elsewhere
+ * @param control         the control the machine runs (what the program's words mean)
+ * @param units           G20/G21 in force at power-up (Haas setting 9), from the profile or its control
+ * @param machineZero     where G53 X0 Z0 is, machine counts (the reference point unless the profile says)
+ * @param chuckByProgram  the program must close the chuck before it cuts (else the operator did)
  */
 public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
                              double maxFeed, double acceleration, double deceleration, double maxRpm,
                              double rpmPerVolt, char spindleAxis, boolean rearToolPost,
                              Map<Integer, Point> workOffsets, Map<Integer, Point> toolOffsets, int tools,
-                             Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file) {
+                             Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file,
+                             Control control, Units units, Point machineZero, boolean chuckByProgram) {
     public MachineProfile {
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);

@@ -27,6 +27,12 @@ public final class ProfileLoader {
     }
 
     public static MachineProfile load(String nameOrPath, TableSource tables, Tables data) throws TableException {
+        return load(nameOrPath, tables, data, null);
+    }
+
+    /** Loads a profile; {@code control}, when not null, replaces the control the profile names. */
+    public static MachineProfile load(String nameOrPath, TableSource tables, Tables data, String control)
+            throws TableException {
         ProfileFile f;
         if (nameOrPath.contains("/") || nameOrPath.endsWith(".machine")) {
             Path p = Path.of(nameOrPath);
@@ -41,11 +47,38 @@ public final class ProfileLoader {
             String name = "machines/" + nameOrPath + ".machine";
             f = ProfileFile.parse(tables.describe(name), tables.read(name));
         }
-        return read(f, data);
+        return read(f, data, tables, control);
     }
 
     public static MachineProfile read(ProfileFile f, Tables data) throws TableException {
-        boolean literal = f.choice("input.no_point", "increment", "literal", "increment").equals("literal");
+        return read(f, data, TableSource.builtIn(), null);
+    }
+
+    /**
+     * Reads a profile. Its control comes from {@code control} when not null, else from its
+     * {@code control} key (default thesis-2004, the control gcnc began with), among {@code tables}.
+     */
+    public static MachineProfile read(ProfileFile f, Tables data, TableSource tables, String control)
+            throws TableException {
+        String controlName = control != null ? control : f.text("control", "thesis-2004");
+        Control c;
+        try {
+            c = ControlLoader.load(controlName, tables);
+        } catch (TableException e) {
+            if (control == null && f.entry("control").isPresent()) {
+                throw f.fault(f.required("control"), "control '" + controlName + "': " + e.getMessage());
+            }
+            throw e;
+        }
+        String noPoint = f.choice("input.no_point", c.noPointLiteral() ? "literal" : "increment", "literal", "increment");
+        boolean literal = noPoint.equals("literal");
+        Units units = switch (f.choice("units", "", "mm", "inch")) {
+            case "mm" -> Units.MM;
+            case "inch" -> Units.INCH;
+            default -> c.powerUpUnits().orElse(Units.MM);
+        };
+        boolean chuckByProgram = f.choice("chuck.driven_by", c.chuckByProgram() ? "program" : "operator",
+                "program", "operator").equals("program");
         Axis x = axis(f, "x");
         Axis z = axis(f, "z");
         boolean counts = f.choice("offsets.unit", "mm", "mm", "counts").equals("counts");
@@ -78,7 +111,21 @@ public final class ProfileLoader {
             int n = positiveInt(f, e, e.key().substring(5));
             tools.put(n, offset(f.pair(e), counts, x, z));
         }
+        if (f.entry("tools.offsets").isPresent()) {
+            double n = f.positive("tools.offsets");
+            if (n != Math.rint(n) || n > 99) {
+                throw f.fault(f.required("tools.offsets"), "tools.offsets is a whole number of offsets, 1 to 99");
+            }
+            for (int i = 1; i <= n; i++) {
+                tools.putIfAbsent(i, Point.ORIGIN);
+            }
+        }
         int toolCount = (int) f.number("tools.count", tools.keySet().stream().mapToInt(i -> i).max().orElse(1));
+        Point machineZero = homeCounts;
+        if (f.entry("machine_zero").isPresent()) {
+            double[] mz = f.pair("machine_zero");
+            machineZero = new Point(mz[0] * x.countsPerMm(), mz[1] * z.countsPerMm());
+        }
 
         Map<Integer, List<String>> outputs = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("m.")) {
@@ -104,7 +151,7 @@ public final class ProfileLoader {
                 f.number("vector.acceleration", 256000), f.number("vector.deceleration", 256000),
                 f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis.charAt(0),
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
-                work, tools, toolCount, outputs, feedPerF(f), f);
+                work, tools, toolCount, outputs, feedPerF(f), f, c, units, machineZero, chuckByProgram);
     }
 
     private static double feedPerF(ProfileFile f) throws TableException {

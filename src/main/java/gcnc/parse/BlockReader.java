@@ -20,9 +20,10 @@ import org.antlr.v4.runtime.Token;
  * The parse stage: reads a part program one physical line at a time and returns each line that
  * holds words as a {@link RawBlock} (grammar/GCode.g4, rule {@code block}). Memory holds one line.
  *
- * <p>Recovery (thesis §10 [REC], fixing §12 items 2-4): only the first error of a line is reported;
- * the line then comes back {@code malformed} with the words read before the error, and the next
- * line is read normally. The rest of a bad line is still tokenised, only so that a comment opened
+ * <p>Recovery (thesis §10 [REC], fixing §12 items 2-4): only the first error of a line is reported
+ * (a Fanuc macro character, error 111, takes the place of any earlier one); the line then comes
+ * back {@code malformed} with the words read before its first bad token, and the next line is read
+ * normally. The rest of a bad line is still tokenised, only so that a comment opened
  * there is followed onto the next lines.
  */
 public final class BlockReader {
@@ -37,8 +38,15 @@ public final class BlockReader {
     /** The previous line ended inside a comment; where that comment's '(' stands. */
     private boolean inComment;
     private Span commentStart;
-    /** The current line's first error, or null. */
+    /**
+     * The current line's first error, or null; it is reported when the whole line has been read,
+     * because a macro character later on the line takes its place (error 111).
+     */
     private Span errorAt;
+    private Code errorCode;
+    private Object[] errorArgs;
+    /** The current line's block delete level (0 = none). */
+    private int blockDelete;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
         this(in, diagnostics, true);
@@ -70,7 +78,7 @@ public final class BlockReader {
         return source.number();
     }
 
-    /** The current line as a block; null for a blank, whitespace- or comment-only line. */
+    /** The current line as a block; null for a line with no word and no error (blank, comments, '/'). */
     private RawBlock readLine() {
         words.clear();
         errorAt = null;
@@ -79,15 +87,18 @@ public final class BlockReader {
             return words.isEmpty() ? null : new RawBlock(source.number(), words, lastSpan(), false);
         }
         words.clear();
+        blockDelete = 0;
         inComment = false;
         for (int from = 0; from >= 0; open = true) {
             from = lexSegment(from, open);
         }
-        if (words.isEmpty() && errorAt == null) {
-            return null;
+        if (errorAt != null) {
+            diagnostics.error(errorCode, errorAt, errorArgs);
+        } else if (words.isEmpty()) {
+            return null; // blank, comments, a lone '/'
         }
         Span last = words.isEmpty() ? errorAt : lastSpan();
-        return new RawBlock(source.number(), words, last, errorAt != null);
+        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete);
     }
 
     private Span lastSpan() {
@@ -110,11 +121,14 @@ public final class BlockReader {
         for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
             int start = t.getStartIndex();
             switch (t.getType()) {
-                case GCodeLexer.INT_WORD, GCodeLexer.FEED_WORD, GCodeLexer.COORD_WORD -> word(t);
+                case GCodeLexer.SEQUENCE_WORD, GCodeLexer.INT_WORD, GCodeLexer.TAPE_PROGRAM,
+                        GCodeLexer.FEED_WORD, GCodeLexer.COORD_WORD -> word(t);
+                case GCodeLexer.BLOCK_DELETE -> blockDelete(t);
                 case GCodeLexer.BARE_LETTER -> bareLetter(start);
+                case GCodeLexer.TEXT -> fail(Code.E109_TEXT_OUTSIDE_COMMENT, start, excerpt(start));
                 case GCodeLexer.NOT_INTEGER -> fail(Code.E013_INTEGER_EXPECTED, start, letterAt(start));
                 case GCodeLexer.BAD_NUMBER -> fail(Code.E014_DECIMAL_EXPECTED, start, letterAt(start));
-                case GCodeLexer.UNDEFINED_LETTER -> fail(Code.E004_UNDEFINED_FUNCTION, start, text(start));
+                case GCodeLexer.MACRO -> macro(start);
                 case GCodeLexer.STRAY -> fail(Code.E010_SYNTAX, start, "'" + text(start) + "'");
                 case GCodeLexer.ILLEGAL -> fail(Code.E003_ILLEGAL_CHARACTER, start, text(start));
                 case GCodeLexer.UNCLOSED_COMMENT -> {
@@ -139,13 +153,42 @@ public final class BlockReader {
         int start = t.getStartIndex();
         int at = stream.offset(start);
         int length = t.getStopIndex() - start + 1;
-        Letter letter = Letter.of(source.chars()[at]);
+        Letter letter = letter(source.chars()[at]);
         words.add(new Word(letter, new String(source.chars(), at + 1, length - 1), span(start)));
     }
 
-    /** A word letter with no number: thesis errors 1 (G) and 2 (M); error 6 for the others. */
+    /**
+     * A block delete '/' (with its level): the first thing on the line, or right after a first
+     * word that is an N word, once per line (grammar rule {@code block}); anywhere else error 10.
+     */
+    private void blockDelete(Token t) {
+        if (errorAt != null) {
+            return;
+        }
+        int start = t.getStartIndex();
+        boolean placed = blockDelete == 0
+                && (words.isEmpty() || words.size() == 1 && words.get(0).letter() == Letter.N);
+        if (!placed) {
+            fail(Code.E010_SYNTAX, start, "'" + text(start) + "'");
+        } else {
+            blockDelete = t.getStopIndex() > start ? source.chars()[stream.offset(start) + 1] - '0' : 1;
+        }
+    }
+
+    /**
+     * Fanuc macro B ('#', '[' or ']'): error 111. The first one on a line is the line's error even
+     * when an earlier error was found: a macro line is reported as what it is.
+     */
+    private void macro(int start) {
+        if (errorAt == null || errorCode != Code.E111_MACRO_NOT_SUPPORTED_YET) {
+            errorAt = null; // takes the place of an earlier error
+            fail(Code.E111_MACRO_NOT_SUPPORTED_YET, start, excerpt(start));
+        }
+    }
+
+    /** A letter with no number: thesis errors 1 (G) and 2 (M); error 6 for the others. */
     private void bareLetter(int start) {
-        Letter letter = Letter.of(source.chars()[stream.offset(start)]);
+        Letter letter = letter(source.chars()[stream.offset(start)]);
         if (letter == Letter.G) {
             fail(Code.E001_G_NUMBER_EXPECTED, start);
         } else if (letter == Letter.M) {
@@ -162,11 +205,15 @@ public final class BlockReader {
         }
     }
 
-    /** Reports the line's first error; later ones on the same line are dropped (thesis §10). */
+    /**
+     * Keeps the line's first error, reported at the end of the line; later ones on the same line
+     * are dropped (thesis §10).
+     */
     private void fail(Code code, int index, Object... args) {
         if (errorAt == null) {
             errorAt = span(index);
-            diagnostics.error(code, errorAt, args);
+            errorCode = code;
+            errorArgs = args;
         }
     }
 
@@ -175,7 +222,17 @@ public final class BlockReader {
     }
 
     private String letterAt(int index) {
-        return Letter.of(source.chars()[stream.offset(index)]).name();
+        return letter(source.chars()[stream.offset(index)]).name();
+    }
+
+    /** The letter a word starts with; ':' is Fanuc's tape form of O. */
+    private static Letter letter(char c) {
+        return c == ':' ? Letter.O : Letter.of(c);
+    }
+
+    /** What the user wrote from a stream index on, for errors 109 and 111. */
+    private String excerpt(int index) {
+        return Chars.excerpt(source.chars(), stream.offset(index), source.length());
     }
 
     /** The character at a stream index as users should read it in a message. */

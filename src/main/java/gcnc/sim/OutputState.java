@@ -1,14 +1,16 @@
 package gcnc.sim;
 
 import gcnc.machine.MachineProfile;
+import gcnc.machine.MRole;
 import java.util.List;
 
 /**
  * The controller's digital outputs as SB/CB left them, read back as machine states through the
- * profile's M output map: the spindle runs once an M03 or M04 pattern is completed and stops
+ * profile's M output map, by what each M does in the machine's control: the spindle runs once an M03 or M04 pattern is completed and stops
  * once an M05 pattern is; the chuck closes with M11's pattern and opens with M10's. A pattern
  * counts when the directive just written belongs to it and all its bits now match. At start
- * the spindle is stopped and the chuck is treated as open (unknown) until M11's pattern is seen.
+ * the spindle is stopped; the chuck is closed where the operator clamps it before cycle start
+ * (the profile's chuck.driven_by), else treated as open (unknown) until M11's pattern is seen.
  * With no outputs for M03/M04 (or M10/M11) in the profile the matching check is off.
  */
 final class OutputState {
@@ -22,8 +24,11 @@ final class OutputState {
     final boolean chuckKnown;
 
     OutputState(MachineProfile p) {
-        for (int m : new int[] {3, 4, 5, 10, 11}) {
-            List<String> dirs = p.outputsFor(m);
+        for (MRole role : new MRole[] {MRole.SPINDLE_CW, MRole.SPINDLE_CCW, MRole.SPINDLE_STOP, MRole.CHUCK_OPEN,
+            MRole.CHUCK_CLOSE}) {
+            int m = role.number();
+            // the control's own code for it (Haas clamps the chuck with M10, the thesis with M11)
+            List<String> dirs = p.control().mFor(role).map(f -> p.outputsFor(f.code())).orElse(List.of());
             int[] pat = new int[dirs.size()];
             for (int i = 0; i < pat.length; i++) {
                 String d = dirs.get(i);
@@ -32,6 +37,8 @@ final class OutputState {
             }
             patterns[m] = pat;
         }
+        // the operator clamps the part before cycle start unless the program drives the chuck
+        closed = !p.chuckByProgram();
         spindleKnown = patterns[3].length > 0 || patterns[4].length > 0;
         chuckKnown = patterns[10].length > 0 || patterns[11].length > 0;
     }

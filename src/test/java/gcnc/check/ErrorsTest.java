@@ -101,12 +101,14 @@ class ErrorsTest {
         java.nio.file.Path dir = java.nio.file.Files.createTempDirectory("gcnc-tables");
         java.nio.file.Path src = java.nio.file.Path.of("tables");
         java.nio.file.Files.createDirectories(dir.resolve("machines"));
-        for (String f : new String[] {"g_codes.csv", "m_codes.csv", "parameter_limits.csv", "tool_offsets.csv",
-            "work_offsets.csv", "errors.csv", "machines/generic.machine"}) {
+        java.nio.file.Files.createDirectories(dir.resolve("controls/thesis-2004"));
+        for (String f : new String[] {"controls/thesis-2004/control.cfg", "controls/thesis-2004/m_codes.csv",
+            "parameter_limits.csv", "tool_offsets.csv", "work_offsets.csv", "errors.csv", "machines/generic.machine"}) {
             java.nio.file.Files.copy(src.resolve(f), dir.resolve(f));
         }
-        String usage = java.nio.file.Files.readString(src.resolve("word_usage.csv")).replace("4,1,0,1,0,0,0,0,1", "4,0,0,1,0,0,0,0,1");
-        java.nio.file.Files.writeString(dir.resolve("word_usage.csv"), usage);
+        String usage = java.nio.file.Files.readString(src.resolve("controls/thesis-2004/g_codes.csv"))
+                .replace("4,0,dwell,X U P,", "4,0,dwell,U P,");
+        java.nio.file.Files.writeString(dir.resolve("controls/thesis-2004/g_codes.csv"), usage);
         gcnc.tables.Tables t = gcnc.tables.Tables.load(gcnc.tables.TableSource.directory(dir));
         gcnc.machine.MachineProfile p = gcnc.machine.ProfileLoader.load("generic", gcnc.tables.TableSource.directory(dir), t);
         gcnc.diag.Diagnostics out = new gcnc.diag.Diagnostics();
@@ -143,10 +145,10 @@ class ErrorsTest {
     }
 
     @Test
-    void e045AfterTheErrorCapReportsOnceAndStops() {
+    void e116AfterTheErrorCapReportsOnceAndStops() {
         String program = "G07\nG07\nG07\nG07\nG07\n";
         Run r = Run.of(Run.profile("generic"), program, 3);
-        assertEquals("1:1:E011, 2:1:E011, 3:1:E011, 4:1:E045", r.errors());
+        assertEquals("1:1:E011, 2:1:E011, 3:1:E011, 4:1:E116", r.errors());
     }
 
     @Test

@@ -131,8 +131,9 @@ class CliTest {
     void tablesPrintsTheThesisTables() {
         Run r = gcnc("tables");
         assertEquals(0, r.status());
-        assertTrue(r.out().contains("G02       01  Circular interpolation clockwise"), r.out());
-        assertTrue(r.out().contains("M03       02  start    Spindle rotation normal (CW)"), r.out());
+        assertTrue(r.out().contains("Control thesis-2004:"), r.out());
+        assertTrue(r.out().contains("G02       01  arc_cw                Circular interpolation clockwise"), r.out());
+        assertTrue(r.out().contains("M03       02  start    spindle_cw      Spindle rotation normal (CW)"), r.out());
         assertTrue(r.out().contains("E054  comment opened inside a comment"), r.out());
     }
 

@@ -16,6 +16,7 @@ import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.tree.TerminalNode;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -44,13 +45,20 @@ class BlockReaderAgreementTest {
             @Override
             public Void visitBlock(GCodeParser.BlockContext ctx) {
                 StringBuilder sb = new StringBuilder().append(ctx.getStart().getLine()).append(':');
-                for (GCodeParser.WordContext w : ctx.word()) {
-                    Token t = w.getStart();
+                StringBuilder words = new StringBuilder();
+                for (int i = 0; i < ctx.getChildCount(); i++) {
+                    Token t = ctx.getChild(i) instanceof TerminalNode n ? n.getSymbol()
+                            : ((GCodeParser.WordContext) ctx.getChild(i)).getStart();
                     String text = t.getText();
-                    sb.append(' ').append(Character.toUpperCase(text.charAt(0))).append(text.substring(1))
+                    if (t.getType() == GCodeLexer.BLOCK_DELETE) {
+                        sb.append(" /").append(text.length() > 1 ? text.substring(1) : "1");
+                        continue;
+                    }
+                    char letter = text.charAt(0) == ':' ? 'O' : Character.toUpperCase(text.charAt(0));
+                    words.append(' ').append(letter).append(text.substring(1))
                             .append('@').append(t.getCharPositionInLine() + 1);
                 }
-                out.add(sb.toString());
+                out.add(sb.append(words).toString());
                 return null;
             }
         }.visit(parser.program());
@@ -61,6 +69,9 @@ class BlockReaderAgreementTest {
         List<String> out = new ArrayList<>();
         p.blocks().forEach(b -> {
             StringBuilder sb = new StringBuilder().append(b.line()).append(':');
+            if (b.blockDelete() > 0) {
+                sb.append(" /").append(b.blockDelete());
+            }
             b.words().forEach(w -> sb.append(' ').append(w).append('@').append(w.span().column()));
             out.add(sb.toString());
         });

@@ -33,9 +33,9 @@ class BlockReaderErrorTest {
     }
 
     @Test
-    void letterOutsideTheLanguageIsError4WithTheLetter() {
-        expect("G00 Y10\n", List.of("1:5 E004 [Y]"), List.of("1: G00 !"));
-        expect("a1\n", List.of("1:1 E004 [a]"), List.of("1: !"));
+    void theParserReadsEveryLetterAndLeavesError4ToTheChecker() {
+        expect("G00 Y10\n", List.of(), List.of("1: G00 Y10"));
+        expect("a1 q-2.5\n", List.of(), List.of("1: A1 Q-2.5"));
     }
 
     @Test
@@ -48,13 +48,41 @@ class BlockReaderErrorTest {
         expect("G01 X Z5\n", List.of("1:5 E006 [X]"), List.of("1: G01 !"));
         expect("f\n", List.of("1:1 E006 [F]"), List.of("1: !"));
         expect("N\n", List.of("1:1 E006 [N]"), List.of("1: !"));
+        expect("G00 Y Z5\n", List.of("1:5 E006 [Y]"), List.of("1: G00 !"));
+        expect("q\n", List.of("1:1 E006 [Q]"), List.of("1: !"));
     }
 
     @Test
     void strayNumberSignPointOrPunctuationIsError10() {
-        for (String stray : List.of("5", ".", "+", "-", ":", ",", "*", "/", "=", "#", ")", "[", "]")) {
+        for (String stray : List.of("5", ".", "+", "-", ":", ",", "*", "=", ")")) {
             expect("N10 " + stray + " X1\n", List.of("1:5 E010 ['" + stray + "']"), List.of("1: N10 !"));
         }
+    }
+
+    @Test
+    void aSlashAnywhereButTheStartOrRightAfterAFirstNWordIsError10() {
+        expect("G00 /X1\n", List.of("1:5 E010 ['/']"), List.of("1: G00 !"));
+        expect("N10 G00 /X1\n", List.of("1:9 E010 ['/']"), List.of("1: N10 G00 !"));
+        expect("X1 N10/\n", List.of("1:7 E010 ['/']"), List.of("1: X1 N10 !"));
+        expect("N10 X1 /2\n", List.of("1:8 E010 ['/']"), List.of("1: N10 X1 !"));
+        expect(":10/X1\n", List.of("1:4 E010 ['/']"), List.of("1: O10 !"));
+    }
+
+    @Test
+    void aSecondBlockDeleteOnALineIsError10() {
+        expect("/N10 /X1\n", List.of("1:6 E010 ['/']"), List.of("1: /1 N10 !"));
+        expect("//X1\n", List.of("1:2 E010 ['/']"), List.of("1: /1 !"));
+    }
+
+    @Test
+    void theSkipLevelIsOneDigitFromOneToNine() {
+        expect("/0 X1\n", List.of("1:2 E010 ['0']"), List.of("1: /1 !"));
+        expect("/12 X1\n", List.of("1:3 E010 ['2']"), List.of("1: /1 !"));
+    }
+
+    @Test
+    void aColonNotFollowedByADigitIsError10() {
+        expect(":O100\n", List.of("1:1 E010 [':']"), List.of("1: !"));
     }
 
     @Test
@@ -63,14 +91,61 @@ class BlockReaderErrorTest {
         expect("G01 S-100\n", List.of("1:5 E013 [S]"), List.of("1: G01 !"));
         expect("g1.\n", List.of("1:1 E013 [G]"), List.of("1: !"));
         expect("T.1\n", List.of("1:1 E013 [T]"), List.of("1: !"));
+        expect(":12.5\n", List.of("1:1 E013 [O]"), List.of("1: !"));
     }
 
     @Test
     void malformedNumberIsError14() {
-        for (String bad : List.of("X+", "X.", "X1.2.3", "X--1", "x-.", "F-1", "F+0.2", "Z1-2")) {
+        for (String bad : List.of("X+", "X.", "X1.2.3", "X--1", "x-.", "F-1", "F+0.2", "Z1-2", "P1.2.", "y+-1")) {
             String letter = bad.substring(0, 1).toUpperCase();
             expect("G01 " + bad + " F1\n", List.of("1:5 E014 [" + letter + "]"), List.of("1: G01 !"));
         }
+    }
+
+    @Test
+    void textOutsideACommentIsError109WithTheText() {
+        expect("roughing pass\n", List.of("1:1 E109 [roughing pass]"), List.of("1: !"));
+        expect("G00 Xabc\n", List.of("1:5 E109 [Xabc]"), List.of("1: G00 !"));
+        expect("N10 finish  here (done)\n", List.of("1:5 E109 [finish  here]"), List.of("1: N10 !"));
+        expect("GO HOME; now\n", List.of("1:1 E109 [GO HOME]"), List.of("1: !"));
+        expect("Mind X1 % tape\n", List.of("1:1 E109 [Mind X1]"), List.of("1: !"));
+    }
+
+    @Test
+    void longTextIsCutAtThirtyCharacters() {
+        expect("this note is much longer than thirty characters\n",
+                List.of("1:1 E109 [this note is much longer than...]"), List.of("1: !"));
+        expect("abcdefghijklmnopqrstuvwxyzabcd\n", List.of("1:1 E109 [abcdefghijklmnopqrstuvwxyzabcd]"), List.of("1: !"));
+        expect("abcdefghijklmnopqrstuvwxyzabcde\n",
+                List.of("1:1 E109 [abcdefghijklmnopqrstuvwxyzabcd...]"), List.of("1: !"));
+    }
+
+    @Test
+    void aMacroVariableIsError111WithTheMacroText() {
+        expect("#501=350.(FLANGE DIA.)\n", List.of("1:1 E111 [#501=350.]"), List.of("1: !"));
+        expect("  #502=-23 ; depth\n", List.of("1:3 E111 [#502=-23]"), List.of("1: !"));
+        expect("G0X#501\n", List.of("1:4 E111 [#501]"), List.of("1: G0 !"));
+    }
+
+    @Test
+    void aMacroExpressionIsError111AtItsBracket() {
+        expect("G1Z[#502]F0.35\n", List.of("1:4 E111 [[#502]F0.35]"), List.of("1: G1 !"));
+        expect("N1 ]\n", List.of("1:4 E111 []]"), List.of("1: N1 !"));
+        expect("G0G96X[#501]Z[#505+50.]S250M3M8(ROUGH SPIGOT)\n",
+                List.of("1:7 E111 [[#501]Z[#505+50.]S250M3M8]"), List.of("1: G0 G96 !"));
+        expect("X[#504+#505*#506/#507-#508+#509]\n",
+                List.of("1:2 E111 [[#504+#505*#506/#507-#508+#509...]"), List.of("1: !"));
+    }
+
+    @Test
+    void aMacroCharacterIsTheLineErrorEvenAfterAnotherError() {
+        expect("N10 X5 $ Y#1\n", List.of("1:11 E111 [#1]"), List.of("1: N10 X5 !"));
+        expect("N10 G X[#1]\n", List.of("1:8 E111 [[#1]]"), List.of("1: N10 !"));
+    }
+
+    @Test
+    void aMacroCharacterInACommentIsNothing() {
+        expect("N10 (#1 [x]) X1 ; #2\n", List.of(), List.of("1: N10 X1"));
     }
 
     @Test
@@ -95,8 +170,8 @@ class BlockReaderErrorTest {
 
     @Test
     void severalBadBlocksAreEachReportedOnTheirOwnLine() {
-        String src = "N10 G00 X0\nN20 X1$\nN30 G01 Z-5 F0.2\nN40 Y1\n\nN50 X1..\nN60 M30\n";
-        expect(src, List.of("2:7 E003 [$]", "4:5 E004 [Y]", "6:5 E014 [X]"),
+        String src = "N10 G00 X0\nN20 X1$\nN30 G01 Z-5 F0.2\nN40 #1=2\n\nN50 X1..\nN60 M30\n";
+        expect(src, List.of("2:7 E003 [$]", "4:5 E111 [#1=2]", "6:5 E014 [X]"),
                 List.of("1: N10 G00 X0", "2: N20 X1 !", "3: N30 G01 Z-5 F0.2", "4: N40 !", "6: N50 !", "7: N60 M30"));
     }
 }

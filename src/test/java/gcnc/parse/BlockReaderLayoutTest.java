@@ -46,6 +46,69 @@ class BlockReaderLayoutTest {
     }
 
     @Test
+    void everyOtherLetterIsASignedDecimalWord() {
+        expectClean("A1 B-2 C+3. D.4 E5 H6 J-7 L8 Q9.5 V-.1 Y10 a1 y-2.\n",
+                List.of("1: A1 B-2 C+3. D.4 E5 H6 J-7 L8 Q9.5 V-.1 Y10 A1 Y-2."));
+    }
+
+    @Test
+    void pIsADecimalWordForTheCheckerToJudge() {
+        expectClean("G04 P3.\nG04P-1\np+.5\n", List.of("1: G04 P3.", "2: G04 P-1", "3: P+.5"));
+    }
+
+    @Test
+    void aColonAndDigitsIsTheProgramNumberWordO() {
+        RawBlock b = Parsed.of("%\n:0100( FLANGE OP.2 )\n").blocks().get(0);
+        assertEquals(List.of(new Word(Letter.O, "0100", Span.of(2, 1))), b.words());
+        expectClean("N5:12 X1\n", List.of("1: N5 O12 X1"));
+    }
+
+    @Test
+    void aSlashFirstOnTheLineMarksTheBlockForBlockDelete() {
+        expectClean("/G00 X1.\n  / N10 X2\n\t/X3\n", List.of("1: /1 G00 X1.", "2: /1 N10 X2", "3: /1 X3"));
+        RawBlock b = Parsed.of("/G00 X1.\n").blocks().get(0);
+        assertEquals(1, b.blockDelete());
+        assertEquals(Span.of(1, 6), b.last());
+    }
+
+    @Test
+    void aSlashRightAfterAFirstNWordMarksTheBlock() {
+        expectClean("N20 /G00 X1.\nN30/G01 Z-1\nn40 / x1\n",
+                List.of("1: /1 N20 G00 X1.", "2: /1 N30 G01 Z-1", "3: /1 N40 X1"));
+    }
+
+    @Test
+    void aDigitAfterTheSlashIsTheSkipLevel() {
+        expectClean("/3 G00 X1\nN10 /9X2\n/1N1\n", List.of("1: /3 G00 X1", "2: /9 N10 X2", "3: /1 N1"));
+    }
+
+    @Test
+    void commentsBeforeTheSlashAreWhitespace() {
+        expectClean("(skip me) /2 X1\nN5 (then) / X2\n", List.of("1: /2 X1", "2: /1 N5 X2"));
+    }
+
+    @Test
+    void aLineWithOnlyASlashAndCommentsMakesNoBlock() {
+        Parsed p = Parsed.of("/\n/3 (nothing)\n / ; note\nN1\n");
+        assertEquals(List.of("4: N1"), p.shapes());
+        assertEquals(List.of(), p.errors());
+        assertEquals(4, p.lines());
+    }
+
+    @Test
+    void aMalformedBlockKeepsItsBlockDelete() {
+        Parsed p = Parsed.of("/2 X1 $\n");
+        assertEquals(List.of("1: /2 X1 !"), p.shapes());
+        assertEquals(List.of("1:7 E003 [$]"), p.errors());
+    }
+
+    @Test
+    void blocksWithoutASlashHaveNoBlockDelete() {
+        assertEquals(0, Parsed.of("N1 X1\n").blocks().get(0).blockDelete());
+        assertEquals(0, Parsed.of("N1 X1 :5\n").blocks().get(0).blockDelete());
+    }
+
+    @Test
     void commentsMidLineAndTrailingAreWhitespace() {
         expectClean("N10 (rough) G00 X5 ; rapid\nN20 (a)(b)Z1 (end)\n", List.of("1: N10 G00 X5", "2: N20 Z1"));
     }

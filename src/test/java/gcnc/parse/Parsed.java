@@ -35,11 +35,14 @@ record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
         return out;
     }
 
-    /** Blocks as "line: words" with a trailing "!" when malformed. */
+    /** Blocks as "line: words", "line: /level words" when marked for block delete, "!" when malformed. */
     List<String> shapes() {
         List<String> out = new ArrayList<>();
         for (RawBlock b : blocks) {
             StringBuilder sb = new StringBuilder().append(b.line()).append(':');
+            if (b.blockDelete() > 0) {
+                sb.append(" /").append(b.blockDelete());
+            }
             b.words().forEach(w -> sb.append(' ').append(w.letter()).append(w.number()));
             out.add(b.malformed() ? sb.append(" !").toString() : sb.toString());
         }

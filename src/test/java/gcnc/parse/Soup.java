@@ -4,11 +4,14 @@ import java.util.Random;
 
 /** Random programs for the fuzz and agreement tests: valid ones and token soup. */
 final class Soup {
-    private static final String[] INTEGER = {"G", "M", "N", "O", "P", "S", "T", "g", "m", "n", "o", "p", "s", "t"};
-    private static final String[] DECIMAL = {"I", "K", "R", "U", "W", "X", "Z", "i", "k", "r", "u", "w", "x", "z"};
+    private static final String[] INTEGER = {"G", "M", "N", "O", "S", "T", "g", "m", "n", "o", "s", "t"};
+    private static final String[] DECIMAL = {"A", "B", "C", "D", "E", "H", "I", "J", "K", "L", "P", "Q", "R", "U",
+        "V", "W", "X", "Y", "Z", "a", "b", "c", "d", "e", "h", "i", "j", "k", "l", "p", "q", "r", "u", "v", "w", "x",
+        "y", "z"};
     private static final String[] LAYOUT = {" ", "  ", "\t", "", "(c)", " (a b) ", ";x", "%", "\n", "\r\n", "\r",
         "(line\nbreak)", "(", ")", "((", "$", "é", "\u0000", "\uD83D\uDE00", "Y", "b", "5", ".", "+", "-", "..",
-        "1.2.3", "-1.5", "+2", "07", ".5", ":", "#", "[", "\"", "\uFEFF"};
+        "1.2.3", "-1.5", "+2", "07", ".5", ":", ":12", ":1.5", "/", "/3", "/0", "#", "#501=2.", "[", "]", "[#1+2]",
+        "ab", "roughing pass", "\"", "\uFEFF"};
 
     private final Random random;
 
@@ -37,7 +40,7 @@ final class Soup {
     /** One word the language accepts. */
     String validWord() {
         switch (random.nextInt(3)) {
-            case 0: return INTEGER[random.nextInt(INTEGER.length)] + digits(1);
+            case 0: return (random.nextInt(20) == 0 ? ":" : INTEGER[random.nextInt(INTEGER.length)]) + digits(1);
             case 1: return (random.nextBoolean() ? "F" : "f") + unsigned();
             default:
                 String sign = new String[] {"", "+", "-"}[random.nextInt(3)];
@@ -51,9 +54,18 @@ final class Soup {
         String[] gaps = {" ", "\t", "  ", " (note) ", "(x)"};
         for (int l = 0; l < lines; l++) {
             int words = random.nextInt(6);
+            int slash = random.nextInt(8); // 0: block delete first, 1: after a first N word
+            if (slash == 0) {
+                sb.append(random.nextBoolean() ? " " : "").append(blockDelete());
+            }
             for (int w = 0; w < words; w++) {
                 sb.append(random.nextInt(4) == 0 ? "" : gaps[random.nextInt(gaps.length)]);
-                sb.append(validWord());
+                if (w == 0 && slash == 1) {
+                    sb.append(random.nextBoolean() ? "N" : "n").append(digits(1))
+                            .append(random.nextBoolean() ? " " : "").append(blockDelete());
+                } else {
+                    sb.append(validWord());
+                }
             }
             switch (random.nextInt(8)) {
                 case 0: sb.append(" ; end"); break;
@@ -64,6 +76,11 @@ final class Soup {
             sb.append(random.nextBoolean() ? "\n" : "\r\n");
         }
         return sb.toString();
+    }
+
+    /** A block delete mark: '/' or '/' and a level 1-9. */
+    private String blockDelete() {
+        return random.nextBoolean() ? "/" : "/" + (1 + random.nextInt(9));
     }
 
     /** Valid words mixed with every kind of junk the lexer must survive. */

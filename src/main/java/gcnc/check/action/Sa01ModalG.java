@@ -4,12 +4,14 @@ import gcnc.check.BlockDraft;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
-import gcnc.tables.GFunction;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
 
 /**
- * Thesis §4.2.2 action 1: a modal G (groups 1 motion, 3 G90/G91, 5 and 10 feed mode, 6 units,
- * 12 work offset). One G per group per block: the thesis only checked group 1, gcnc checks all
- * (reading §12.19). Emits E016. Writes d.motionG, next.motion/incremental/feedPerRev/workOffset.
+ * Thesis §4.2.2 action 1: a modal G (motion, absolute/incremental, feed mode, units, work offset),
+ * by what it does in the control (Fanuc B's G94 is the feed per minute of Fanuc A's G98). One G
+ * per group per block: the thesis only checked group 1, gcnc checks all (reading §12.19).
+ * Emits E016. Writes d.motionG, next.motion/incremental/feedPerRev/workOffset.
  */
 public final class Sa01ModalG implements SyntaxAction {
     @Override
@@ -19,21 +21,22 @@ public final class Sa01ModalG implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        int code = (int) NumberText.integer(w.number());
-        GFunction f = d.functions.g(code);
+        GFunction f = d.functions.g(NumberText.integer(w.number()));
         if (!d.claimG(f.group(), w, out)) {
             return;
         }
-        switch (f.group()) {
-            case 1 -> {
-                d.motionG = code;
-                d.next.motion = code;
+        GRole r = f.role();
+        switch (r) {
+            case RAPID, LINEAR, ARC_CW, ARC_CCW -> {
+                d.motionG = r.number();
+                d.motionWord = w;
+                d.next.motion = r.number();
             }
-            case 3 -> d.next.incremental = code == 91;
-            case 5, 10 -> d.next.feedPerRev = code == 95 || code == 99;
-            case 12 -> d.next.workOffset = code;
+            case ABSOLUTE, INCREMENTAL -> d.next.incremental = r == GRole.INCREMENTAL;
+            case FEED_PER_MINUTE, FEED_PER_REV -> d.next.feedPerRev = r == GRole.FEED_PER_REV;
+            case WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6 -> d.next.workOffset = r.number();
             default -> {
-                // group 6 (units) was applied to the whole block before any word (BlockDraft.units)
+                // units (G20/G21) were applied to the whole block before any word (BlockDraft.units)
             }
         }
     }

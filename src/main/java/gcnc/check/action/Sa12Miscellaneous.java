@@ -6,12 +6,14 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.MCall;
 import gcnc.ir.Word;
-import gcnc.tables.MFunction;
+import gcnc.machine.MFunction;
+import gcnc.machine.MRole;
 
 /**
- * Thesis §4.2.2 action 12: an M function (every M but M30). One M per group per block (the text
+ * Thesis §4.2.2 action 12: an M function (every M but the program end), by what it does in the
+ * control (Haas's M10 closes the chuck, the thesis's M11). One M per group per block (the text
  * asks for it, the code never checked: §12.19). The chuck may not open while the spindle runs
- * (error 40, thesis §4.5; only M03/M04 count as running, not "M05 never given"). The M goes to
+ * (error 40, thesis §4.5; only a running spindle counts, not "never stopped"). The M goes to
  * {@code before} (moments 0, 1) or {@code after} (99) in source order (decision D2).
  * Emits E016, E040. Writes next.spindle, next.chuck, d.spindleBefore.
  */
@@ -28,23 +30,26 @@ public final class Sa12Miscellaneous implements SyntaxAction {
         if (!d.claimM(f.group(), w, out)) {
             return;
         }
-        if (code == 10 && (running(d.prior.spindle()) || running(d.spindleBefore))
-                || running(code) && d.next.chuck == 10 && d.prior.chuck() != 10) {
+        MRole r = f.role();
+        if (r == MRole.CHUCK_OPEN && (running(d.prior.spindle()) || running(d.spindleBefore))
+                || running(r.number()) && d.next.chuck == MRole.CHUCK_OPEN.number()
+                && d.prior.chuck() != MRole.CHUCK_OPEN.number()) {
             d.fail(out, Code.E040_SPINDLE_RUNNING_CHUCK_OPEN, w.span());
             return;
         }
-        if (f.group() == 2) {
-            d.next.spindle = code;
+        if (r.spindleGroup()) {
+            d.next.spindle = r.number();
             if (f.beforeMotion()) {
-                d.spindleBefore = code;
+                d.spindleBefore = r.number();
             }
-        } else if (code == 10 || code == 11) {
-            d.next.chuck = code;
+        } else if (r == MRole.CHUCK_OPEN || r == MRole.CHUCK_CLOSE) {
+            d.next.chuck = r.number();
         }
+        d.unpoweredM(f, w);
         (f.beforeMotion() ? d.before : d.after).add(new MCall(code));
     }
 
     private static boolean running(int spindle) {
-        return spindle == 3 || spindle == 4;
+        return spindle == MRole.SPINDLE_CW.number() || spindle == MRole.SPINDLE_CCW.number();
     }
 }

@@ -2,14 +2,18 @@ package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
 import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
-import gcnc.tables.GFunction;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
 
 /**
- * Thesis §4.2.2 action 14: G40 (nose-radius compensation cancel; gcnc has no compensation, so it
- * only records the group) and G96 (constant surface speed: S of this and later blocks is m/min or
- * ft/min). Emits E016. Writes next.css, d.g96.
+ * Thesis §4.2.2 action 14: modal G codes without motion or parameters. G40 (nose-radius
+ * compensation cancel; G41/G42 are not supported yet, so it only records the group), G96
+ * (constant surface speed: S of this and later blocks is m/min or ft/min), and, added by gcnc for
+ * real safe-start lines, G80 (canned cycle cancel) and the plane: G18 (ZX, the lathe's plane) is
+ * accepted, G17 and G19 are E112. Emits E016, E112. Writes next.css, d.g96.
  */
 public final class Sa14ModalNoMotion implements SyntaxAction {
     @Override
@@ -19,12 +23,13 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        int code = (int) NumberText.integer(w.number());
-        GFunction f = d.functions.g(code);
+        GFunction f = d.functions.g(NumberText.integer(w.number()));
         if (!d.claimG(f.group(), w, out)) {
             return;
         }
-        if (code == 96) {
+        if (f.role() == GRole.PLANE_XY || f.role() == GRole.PLANE_YZ) {
+            d.fail(out, Code.E112_PLANE_NOT_ZX, w.span(), w);
+        } else if (f.role() == GRole.CSS) {
             d.next.css = true;
             d.g96 = true;
         }

@@ -5,8 +5,9 @@ import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
 
 /**
- * Thesis §4.2.2 action 15: M30 ends the program. It emits nothing (code and Table 5.2 agree);
- * any later block is error 53. Shares group 1 with M00-M02 (E016). Writes next.ended.
+ * Thesis §4.2.2 action 15: M30 ends the program (and M02 on the controls whose table says
+ * {@code end}: Fanuc, Haas). It emits nothing (code and Table 5.2 agree); any later block is
+ * error 53. Shares group 1 with M00-M02 (E016). Writes next.ended.
  */
 public final class Sa15ProgramEnd implements SyntaxAction {
     @Override
@@ -16,7 +17,7 @@ public final class Sa15ProgramEnd implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        int group = d.functions.m(30).group();
+        int group = d.functions.m(gcnc.check.geom.NumberText.integer(w.number())).group();
         if (!d.claimM(group, w, out)) {
             return;
         }

@@ -4,78 +4,113 @@ import gcnc.check.BlockDraft;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
 import gcnc.ir.Word;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.MFunction;
+import gcnc.machine.MRole;
+import java.util.List;
 
 /**
  * Table 10 of the thesis (the parse matrix) as a look-up: a word to its syntax action. Every word
  * is looked up afresh, so an error in one word cannot leave the matrix stuck (the thesis's
- * "stuck parser", reading §4 and §12.2). G and M numbers are read as integers, so G1 = G01 (D5).
+ * "stuck parser", reading §4 and §12.2). G and M numbers are read as integers, so G1 = G01 (D5),
+ * and looked up in the control's tables: the action follows what a code does, not its number.
  */
 public final class SyntaxActions {
-    /** The actions by thesis number; index 0 unused. */
+    /** The actions by number: the thesis's 1-15, then gcnc's own 16-17; index 0 unused. */
     private final SyntaxAction[] byNumber = {null, new Sa01ModalG(), new Sa02Parameter(), new Sa03FeedOrName(),
         new Sa04SpeedOrTool(), new Sa05G04Dwell(), new Sa06G28Home(), new Sa07G29FromHome(), new Sa08G50Register(),
         new Sa09G92Register(), new Sa10SkipNoOp(), new Sa11ExactStop(), new Sa12Miscellaneous(),
-        new Sa13DirectRpm(), new Sa14ModalNoMotion(), new Sa15ProgramEnd()};
+        new Sa13DirectRpm(), new Sa14ModalNoMotion(), new Sa15ProgramEnd(), new Sa16MachineCoordinates(),
+        new Sa17NotSupportedYet()};
 
-    /** The action of thesis number n (1..15). */
+    /** The action of number n (1..17). */
     public SyntaxAction action(int n) {
         return byNumber[n];
     }
 
-    /** Table 10's action column for a G code, or 0 when gcnc has no action for it. */
-    static int forG(int g) {
-        return switch (g) {
-            case 0, 1, 2, 3, 20, 21, 54, 55, 56, 57, 58, 59, 90, 91, 94, 95, 98, 99 -> 1;
-            case 4 -> 5;
-            case 28 -> 6;
-            case 29 -> 7;
-            case 50 -> 8;
-            case 92 -> 9;
-            case 31 -> 10;
-            case 9 -> 11;
-            case 97 -> 13;
-            case 40, 96 -> 14;
-            default -> 0;
+    /** Table 10's action column for a G function (by what it does, whatever its number in the control). */
+    static int forG(GRole role) {
+        return switch (role) {
+            case RAPID, LINEAR, ARC_CW, ARC_CCW, INCH, METRIC, WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6,
+                 ABSOLUTE, INCREMENTAL, FEED_PER_MINUTE, FEED_PER_REV -> 1;
+            case DWELL -> 5;
+            case HOME -> 6;
+            case FROM_HOME -> 7;
+            case REGISTER_AND_CLAMP -> 8;
+            case REGISTER -> 9;
+            case SKIP -> 10;
+            case EXACT_STOP -> 11;
+            case RPM -> 13;
+            case NOSE_COMP_CANCEL, CSS, CYCLE_CANCEL, PLANE_XY, PLANE_ZX, PLANE_YZ -> 14;
+            case MACHINE_COORDINATES -> 16;
+            case UNSUPPORTED, NOSE_COMP_LEFT, NOSE_COMP_RIGHT -> 17;
         };
     }
 
-    /** The action for a word, or null after reporting why there is none (E001, E002, E011, E012). */
+    /**
+     * The block's first G or M word whose function gcnc cannot follow yet, or null. The checker
+     * reports it before anything else in the block (at the G71, not at its later P or Q).
+     */
+    public Word firstUnsupported(BlockDraft d) {
+        List<Word> words = d.block.words();
+        for (int i = 0; i < words.size(); i++) {
+            Word w = words.get(i);
+            if (w.letter() == Letter.G && !w.number().isEmpty()) {
+                GFunction f = d.functions.g(NumberText.integer(w.number()));
+                if (f != null && f.role().unsupported()) {
+                    return w;
+                }
+            } else if (w.letter() == Letter.M && !w.number().isEmpty()) {
+                MFunction f = d.functions.m(NumberText.integer(w.number()));
+                if (f != null && f.role() == MRole.UNSUPPORTED) {
+                    return w;
+                }
+            }
+        }
+        return null;
+    }
+
+    /** The action for a word, or null after reporting why there is none (E001, E002, E004, E011, E012). */
     public SyntaxAction lookUp(Word w, BlockDraft d, Diagnostics out) {
+        if (!d.functions.reads(w.letter())) {
+            d.fail(out, Code.E004_UNDEFINED_FUNCTION, w.span(), w.letter());
+            return null;
+        }
         switch (w.letter()) {
-            case N, X, Z, U, W, I, K, R, P:
-                return byNumber[2];
             case F, O:
                 return byNumber[3];
             case S, T:
                 return byNumber[4];
             case G: {
-                long g = NumberText.integer(w.number());
                 if (w.number().isEmpty()) {
                     d.fail(out, Code.E001_G_NUMBER_EXPECTED, w.span());
                     return null;
                 }
-                int n = d.functions.g(g) == null ? 0 : forG((int) g);
-                if (n == 0) {
+                GFunction f = d.functions.g(NumberText.integer(w.number()));
+                if (f == null) {
                     d.fail(out, Code.E011_UNDEFINED_G, w.span(), w);
                     return null;
                 }
-                return byNumber[n];
+                return byNumber[forG(f.role())];
             }
             case M: {
-                long m = NumberText.integer(w.number());
                 if (w.number().isEmpty()) {
                     d.fail(out, Code.E002_M_NUMBER_EXPECTED, w.span());
                     return null;
                 }
-                if (d.functions.m(m) == null) {
+                MFunction f = d.functions.m(NumberText.integer(w.number()));
+                if (f == null) {
                     d.fail(out, Code.E012_UNDEFINED_M, w.span(), w);
                     return null;
                 }
-                return byNumber[m == 30 ? 15 : 12];
+                return byNumber[f.role() == MRole.UNSUPPORTED ? 17 : f.role() == MRole.END ? 15 : 12];
             }
             default:
-                throw new IllegalStateException("letter without an action: " + w.letter());
+                // N X Z U W I K R P, and the letters of cycles and threads (Q D A E ...)
+                return byNumber[2];
         }
     }
 }

@@ -4,6 +4,7 @@ import gcnc.check.BlockDraft;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
+import gcnc.ir.Word;
 import gcnc.tables.Tables.Param;
 import java.util.Set;
 
@@ -46,14 +47,36 @@ public final class Eb01ParameterOwner implements BlockCheck {
         if (d.function != BlockDraft.NONE) {
             allowed(d, out);
         }
+        if (!d.failed()) {
+            unused(d, out);
+        }
     }
 
+    /**
+     * Grbl's "unused words": a letter the control reads for its cycles and threads (Q, D, A, E ...)
+     * that no function of this block takes is E108, naming it (never ignored).
+     */
+    private static void unused(BlockDraft d, Diagnostics out) {
+        for (Word w : d.block.words()) {
+            if (!THESIS_LETTERS.contains(w.letter())) {
+                String owner = d.function != BlockDraft.NONE ? d.ownerName() : "parameterless";
+                d.fail(out, Code.E108_WORD_NOT_USED, w.span(), w.letter(), owner);
+                return;
+            }
+        }
+    }
+
+    /** The thesis's letters; the others belong to functions gcnc does not support yet. */
+    private static final java.util.Set<Letter> THESIS_LETTERS = java.util.EnumSet.of(Letter.N, Letter.O, Letter.G,
+            Letter.M, Letter.X, Letter.Z, Letter.U, Letter.W, Letter.I, Letter.K, Letter.R, Letter.P, Letter.S,
+            Letter.F, Letter.T);
+
     private static void allowed(BlockDraft d, Diagnostics out) {
-        Set<Param> ok = d.functions.allowed(d.function);
+        Set<Param> ok = d.functions.allowed(d.owner());
         if (ok == null) {
             return;
         }
-        String name = gName(d.function);
+        String name = d.ownerName();
         for (int i = 0; i < ORDER.length; i++) {
             if (d.has(ORDER[i]) && !ok.contains(PARAMS[i])) {
                 d.fail(out, NOT_ALLOWED[i], d.word(ORDER[i]).span(), name);
@@ -76,9 +99,5 @@ public final class Eb01ParameterOwner implements BlockCheck {
             }
         }
         return Letter.X;
-    }
-
-    static String gName(int g) {
-        return g < 10 ? "G0" + g : "G" + g;
     }
 }

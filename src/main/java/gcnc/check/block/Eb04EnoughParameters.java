@@ -7,7 +7,8 @@ import gcnc.ir.Letter;
 
 /**
  * Thesis end-of-block operation 4: a function has the parameters it needs. G04 needs X, U or P;
- * G28, G29 and G92 an axis word (30); G50 S or X/Z (31); G96 an S (31, gcnc: the surface speed
+ * G28, G29, G53 and G92 an axis word (30; a bare G28 homes both axes where the control says so,
+ * Haas); G50 (Fanuc B: G92) S or X/Z (31); G96 an S (31, gcnc: the surface speed
  * belongs with the mode); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
  * raised 52 for a missing I/K, §12.10). Emits E030, E031, E049.
  */
@@ -26,14 +27,15 @@ public final class Eb04EnoughParameters implements BlockCheck {
                     d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), "G04");
                 }
             }
-            case 28, 29, 92 -> {
-                if (!axis) {
-                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), Eb01ParameterOwner.gName(d.function));
+            case 28, 29, 53, 92 -> {
+                boolean bareHome = d.function == 28 && d.functions.control().bareG28Homes();
+                if (!axis && !bareHome) {
+                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), d.ownerName());
                 }
             }
             case 50 -> {
                 if (!axis && !d.has(Letter.S)) {
-                    d.fail(out, Code.E031_S_EXPECTED, d.end(), "G50");
+                    d.fail(out, Code.E031_S_EXPECTED, d.end(), d.ownerName());
                 }
             }
             case 2, 3 -> {

@@ -7,7 +7,9 @@ import gcnc.diag.Diagnostics;
 /**
  * Thesis end-of-block operation 5: only one function of the block may take its parameters, so a
  * one-shot G with parameters (G04, G28, G29, G50, G92) and a motion G cannot share a block.
- * (Two one-shots are already 17-20 in actions 5-9.) Emits E035.
+ * (Two one-shots are already 17-20 in actions 5-9.) gcnc accepts a G00 beside G28, G29 or G53,
+ * as real safe-start and homing lines have it ({@code G28 G00 U0 W0}): their move is a rapid
+ * anyway, and the G00 stays the modal motion. Emits E035.
  */
 public final class Eb05SingleParameterFunction implements BlockCheck {
     @Override
@@ -17,9 +19,9 @@ public final class Eb05SingleParameterFunction implements BlockCheck {
 
     @Override
     public void run(BlockDraft d, Diagnostics out) {
-        if (d.oneShot != BlockDraft.NONE && d.motionG != BlockDraft.NONE) {
-            d.fail(out, Code.E035_TWO_G_WITH_PARAMETERS, d.end(), Eb01ParameterOwner.gName(d.motionG),
-                    Eb01ParameterOwner.gName(d.oneShot));
+        boolean rapidAlong = d.motionG == 0 && (d.oneShot == 28 || d.oneShot == 29 || d.oneShot == 53);
+        if (d.oneShot != BlockDraft.NONE && d.motionG != BlockDraft.NONE && !rapidAlong) {
+            d.fail(out, Code.E035_TWO_G_WITH_PARAMETERS, d.end(), d.motionWord, d.oneShotWord);
         }
     }
 }

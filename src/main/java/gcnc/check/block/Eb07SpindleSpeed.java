@@ -7,10 +7,13 @@ import gcnc.ir.Letter;
 import gcnc.ir.Word;
 
 /**
- * Thesis end-of-block operation 7: an S outside a G50 block needs a G50 clamp first (50). Under
+ * Thesis end-of-block operation 7: an S outside a G50 block needs a G50 clamp first (50) on a
+ * control whose rule that is (thesis-2004; elsewhere the machine's maximum is the clamp until the
+ * program sets one). Under
  * G96 it is the surface speed; otherwise an rpm that may not exceed the G50 clamp (48, which the
  * thesis never raised: it compared volts with rpm, §12.9) nor the machine (15 at the S word).
- * Emits E015, E048, E050. Writes next.rpm, next.surfaceSpeed.
+ * Emits E015, E048, E050. Writes nothing: the S takes effect in {@code MotionBuilder}, so a block
+ * that breaks only this check still sets its speed when the checker recovers from it.
  */
 public final class Eb07SpindleSpeed implements BlockCheck {
     @Override
@@ -29,23 +32,21 @@ public final class Eb07SpindleSpeed implements BlockCheck {
             return;
         }
         double s = d.value(Letter.S);
-        if (Double.isNaN(d.next.rpmClamp)) {
+        boolean clamped = !Double.isNaN(d.next.rpmClamp);
+        if (!clamped && d.functions.control().clampFromG50()) {
             d.fail(out, Code.E050_S_BEFORE_G50, d.end());
             return;
         }
         if (d.next.css) {
-            d.next.surfaceSpeed = s;
             return;
         }
         Word w = d.word(Letter.S);
-        if (s > d.next.rpmClamp) {
+        if (clamped && s > d.next.rpmClamp) {
             d.fail(out, Code.E048_S_ABOVE_G50, d.end(), w.number(), (long) d.next.rpmClamp);
             return;
         }
         if (s > d.profile.maxRpm()) {
             d.fail(out, Code.E015_OUT_OF_RANGE, w.span(), Letter.S, w.number());
-            return;
         }
-        d.next.rpm = s;
     }
 }

@@ -1,13 +1,16 @@
 package gcnc.check.block;
 
 import gcnc.check.BlockDraft;
+import gcnc.check.ModalState;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 
 /**
  * Thesis end-of-block operation 8 ({@code GenOutputRecord}, reading §7.2, §12.8): before a cut
  * (G01-G03 that moves), in this order: F set (39), chuck closed by M11 (38), spindle turning
- * (51 when no spindle M was ever given, 37 when it was stopped by M05/M19), G50 clamp set (41).
+ * (51 when no spindle M was ever given, 37 when it was stopped by M05/M19), G50 clamp set (41,
+ * only where the control requires it). On a control where the operator closes the chuck, the
+ * chuck starts closed ({@code ModalState.initial}), so 38 comes only after the program opened it.
  * The M functions applied before the motion in this same block count. Emits E037-E039, E041, E051.
  */
 public final class Eb08CuttingPrerequisites implements BlockCheck {
@@ -29,13 +32,15 @@ public final class Eb08CuttingPrerequisites implements BlockCheck {
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
         if (Double.isNaN(d.next.feed)) {
             d.fail(out, Code.E039_FEED_NOT_SET, d.end());
-        } else if (d.next.chuck != 11) {
+        } else if (d.next.chuck != 11 && d.next.chuck != ModalState.UNKNOWN) {
             d.fail(out, Code.E038_CHUCK_OPEN_CUT, d.end());
+        } else if (spindle == ModalState.UNKNOWN) {
+            return;
         } else if (spindle == BlockDraft.NONE) {
             d.fail(out, Code.E051_SPINDLE_DIRECTION, d.end());
         } else if (spindle != 3 && spindle != 4) {
             d.fail(out, Code.E037_SPINDLE_DIRECTION_BEFORE_CUT, d.end());
-        } else if (Double.isNaN(d.next.rpmClamp)) {
+        } else if (Double.isNaN(d.next.rpmClamp) && d.functions.control().clampFromG50()) {
             d.fail(out, Code.E041_G50_NOT_SET_BEFORE_CUT, d.end());
         }
     }

@@ -80,4 +80,9 @@ public final class NumberText {
     public static boolean hasPoint(String s) {
         return s.indexOf('.') >= 0;
     }
+
+    /** A value as a person writes it: 0.042, 42, -1.5 (no exponent, no trailing zeros). */
+    public static String plain(double v) {
+        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+    }
 }

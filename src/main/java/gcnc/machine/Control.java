@@ -1,0 +1,73 @@
+package gcnc.machine;
+
+import gcnc.ir.Letter;
+import gcnc.machine.Units;
+import java.util.Collection;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+
+/**
+ * What the words of a program mean and which rules apply: one folder of {@code tables/controls/}
+ * (control.cfg, g_codes.csv, m_codes.csv; the format is in tables/controls/README.md). A machine
+ * profile names its control. The thesis's own rules are those of the control {@code thesis-2004}.
+ *
+ * @param name              the control's name
+ * @param description       one line for {@code gcnc tables}
+ * @param letters           the address letters it reads (others: E004)
+ * @param g                 its G table by code
+ * @param m                 its M table by code
+ * @param powerUp           the G functions in force at cycle start
+ * @param powerUpUnits      G20/G21 at cycle start, when the control says (else the machine's)
+ * @param powerUpTool       tool in the turret at cycle start
+ * @param powerUpOffset     tool offset in force at cycle start (0 = none)
+ * @param clampFromG50      an S needs a G50 S clamp first (E050, E041); else the machine's maximum
+ * @param chuckByProgram    the program must close the chuck before a cut (E038 at the first cut)
+ * @param increasingN       N must increase (E043); else a repeat is a warning (E114)
+ * @param noPointLiteral    X42 is 42 mm; else 0.042 mm (least increments)
+ * @param dwellPSeconds     G04 P is seconds (Haas); else milliseconds
+ * @param bareG28Homes      a G28 with no axis word homes both axes; else E030
+ * @param blockDelete       how a '/' block is treated
+ * @param builderM          an M code not in the table is passed to the machine; else E012
+ */
+public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
+                      Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
+                      int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
+                      boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
+                      BlockDelete blockDelete, boolean builderM) {
+    /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
+    public enum BlockDelete { NONE, OFF, ON }
+
+    public Control {
+        letters = Set.copyOf(letters);
+        g = java.util.Collections.unmodifiableMap(new TreeMap<>(g));
+        m = java.util.Collections.unmodifiableMap(new TreeMap<>(m));
+        powerUp = List.copyOf(powerUp);
+    }
+
+    public Collection<GFunction> allG() {
+        return g.values();
+    }
+
+    public Collection<MFunction> allM() {
+        return m.values();
+    }
+
+    /** The first G code of this control that does {@code role}, for messages ("G01"). */
+    public Optional<GFunction> gFor(GRole role) {
+        return g.values().stream().filter(f -> f.role() == role).findFirst();
+    }
+
+    /** The M code of this control that does {@code role} (Haas: CHUCK_CLOSE is M10). */
+    public Optional<MFunction> mFor(MRole role) {
+        return m.values().stream().filter(f -> f.role() == role).findFirst();
+    }
+
+    /** How the program must end, for E052: "M30", or "M02 or M30". */
+    public String endCodes() {
+        List<String> ends = m.values().stream().filter(f -> f.role() == MRole.END).map(MFunction::name).toList();
+        return ends.isEmpty() ? "M30" : String.join(" or ", ends);
+    }
+}

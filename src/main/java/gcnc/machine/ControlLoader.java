@@ -1,0 +1,157 @@
+package gcnc.machine;
+
+import gcnc.ir.Letter;
+import gcnc.tables.Csv;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables.Param;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * Reads and validates a control (tables/controls/README.md). {@code NAME} is the folder
+ * {@code controls/NAME/} among the tables; anything with a '/' is a folder path. Every fault
+ * names the file, line and column.
+ */
+public final class ControlLoader {
+    private static final Set<String> KEYS = Set.of("name", "description", "letters", "power_up", "power_up.tool",
+            "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
+            "m.unlisted");
+
+    private ControlLoader() {
+    }
+
+    public static Control load(String nameOrPath, TableSource tables) throws TableException {
+        if (nameOrPath.contains("/")) {
+            return read(TableSource.directory(Path.of(nameOrPath)), "");
+        }
+        return read(tables, "controls/" + nameOrPath + "/");
+    }
+
+    private static Control read(TableSource src, String dir) throws TableException {
+        ProfileFile f = ProfileFile.parse(src.describe(dir + "control.cfg"), src.read(dir + "control.cfg"));
+        for (String key : f.keys()) {
+            if (!KEYS.contains(key)) {
+                throw f.fault(f.required(key), "unknown key '" + key + "' (the keys are in tables/controls/README.md)");
+            }
+        }
+        Map<Integer, GFunction> g = gTable(Csv.parse(src.describe(dir + "g_codes.csv"), src.read(dir + "g_codes.csv")));
+        Map<Integer, MFunction> m = mTable(Csv.parse(src.describe(dir + "m_codes.csv"), src.read(dir + "m_codes.csv")));
+
+        Set<Letter> letters = EnumSet.noneOf(Letter.class);
+        ProfileFile.Entry le = f.required("letters");
+        for (String s : le.value().split("\\s+")) {
+            Letter l = s.length() == 1 ? Letter.of(s.charAt(0)) : null;
+            if (l == null) {
+                throw f.fault(le, "letters are single address letters separated by spaces, not '" + s + "'");
+            }
+            letters.add(l);
+        }
+        List<GFunction> powerUp = new ArrayList<>();
+        Optional<Units> units = Optional.empty();
+        ProfileFile.Entry pe = f.required("power_up");
+        for (String s : pe.value().split("\\s+")) {
+            GFunction fn = s.matches("[Gg][0-9]{1,3}") ? g.get(Integer.parseInt(s.substring(1))) : null;
+            if (fn == null) {
+                throw f.fault(pe, "power_up lists G codes of this control's g_codes.csv, not '" + s + "'");
+            }
+            if (fn.role() == GRole.INCH || fn.role() == GRole.METRIC) {
+                units = Optional.of(fn.role() == GRole.INCH ? Units.INCH : Units.MM);
+            }
+            powerUp.add(fn);
+        }
+        double[] tool = f.pair("power_up.tool");
+        return new Control(f.text("name"), f.text("description", ""), letters, g, m, powerUp, units,
+                (int) tool[0], (int) tool[1],
+                f.choice("spindle_clamp", "machine", "g50", "machine").equals("g50"),
+                f.choice("chuck", "operator", "program", "operator").equals("program"),
+                f.choice("sequence_numbers", "any", "increasing", "any").equals("increasing"),
+                f.choice("no_point", "increment", "literal", "increment").equals("literal"),
+                f.choice("dwell.p", "milliseconds", "milliseconds", "seconds").equals("seconds"),
+                f.choice("g28.bare", "error", "error", "home").equals("home"),
+                Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
+                f.choice("m.unlisted", "error", "error", "builder").equals("builder"));
+    }
+
+    private static Map<Integer, GFunction> gTable(Csv csv) throws TableException {
+        Map<Integer, GFunction> g = new HashMap<>();
+        for (Csv.Row r : csv.rows()) {
+            int code = code(r, 999);
+            if (g.containsKey(code)) {
+                throw r.faultAt("code", "G" + code + " is listed twice");
+            }
+            GRole role = GRole.named(r.get("function"));
+            if (role == null) {
+                throw r.faultAt("function", "unknown function '" + r.get("function") + "' (see tables/controls/README.md)");
+            }
+            g.put(code, new GFunction(code, group(r), role, words(r), r.get("en"), r.get("es")));
+        }
+        return g;
+    }
+
+    private static Map<Integer, MFunction> mTable(Csv csv) throws TableException {
+        Map<Integer, MFunction> m = new HashMap<>();
+        for (Csv.Row r : csv.rows()) {
+            int code = code(r, 999);
+            if (m.containsKey(code)) {
+                throw r.faultAt("code", "M" + code + " is listed twice");
+            }
+            int moment = r.integer("moment");
+            if (moment != 0 && moment != 1 && moment != 99) {
+                throw r.faultAt("moment", "moment must be 0, 1 or 99, not " + moment);
+            }
+            MRole role = MRole.named(r.get("function"));
+            if (role == null) {
+                throw r.faultAt("function", "unknown function '" + r.get("function") + "' (see tables/controls/README.md)");
+            }
+            String out = r.get("output");
+            if (!out.equals("yes") && !out.equals("no")) {
+                throw r.faultAt("output", "output is yes or no, not '" + out + "'");
+            }
+            m.put(code, new MFunction(code, group(r), moment, role, out.equals("yes"), r.get("en"), r.get("es")));
+        }
+        return m;
+    }
+
+    private static int code(Csv.Row r, int max) throws TableException {
+        int code = r.integer("code");
+        if (code < 0 || code > max) {
+            throw r.faultAt("code", "codes are 0 to " + max + ", not " + code);
+        }
+        return code;
+    }
+
+    private static int group(Csv.Row r) throws TableException {
+        int group = r.integer("group");
+        if (group < 0 || group > 99) {
+            throw r.faultAt("group", "groups are 0 to 99, not " + group);
+        }
+        return group;
+    }
+
+    /** The words column: letters of Table 7 separated by spaces, '-' none, '*' not restricted (null). */
+    private static Set<Param> words(Csv.Row r) throws TableException {
+        String w = r.get("words").trim();
+        if (w.equals("*")) {
+            return null;
+        }
+        Set<Param> set = EnumSet.noneOf(Param.class);
+        if (w.equals("-")) {
+            return set;
+        }
+        for (String s : w.split("\\s+")) {
+            try {
+                set.add(Param.valueOf(s));
+            } catch (IllegalArgumentException e) {
+                throw r.faultAt("words", "words are X Z U W I K R P separated by spaces, '-' or '*', not '" + s + "'");
+            }
+        }
+        return set;
+    }
+}

@@ -1,0 +1,53 @@
+package gcnc.machine;
+
+/**
+ * What a G code does, in gcnc's terms: the {@code function} column of a control's g_codes.csv.
+ * The checker works on these, not on the numbers a control happens to use (Fanuc B's G92 is
+ * Fanuc A's G50). {@link #number()} is the function's number in the thesis's Table 3, the
+ * checker's function numbers (reading §6); gcnc's additions take the number Fanuc A gives them.
+ */
+public enum GRole {
+    RAPID(0), LINEAR(1), ARC_CW(2), ARC_CCW(3), DWELL(4), EXACT_STOP(9),
+    PLANE_XY(17), PLANE_ZX(18), PLANE_YZ(19), INCH(20), METRIC(21), HOME(28), FROM_HOME(29), SKIP(31),
+    NOSE_COMP_CANCEL(40),
+    /**
+     * G41/G42, not supported yet (E110): the block is then checked without them, on the
+     * programmed path, which the compensated one follows within a nose radius.
+     */
+    NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
+    REGISTER_AND_CLAMP(50), MACHINE_COORDINATES(53),
+    WORK_1(54), WORK_2(55), WORK_3(56), WORK_4(57), WORK_5(58), WORK_6(59), CYCLE_CANCEL(80),
+    ABSOLUTE(90), INCREMENTAL(91), REGISTER(92), FEED_PER_MINUTE(94), FEED_PER_REV(95), CSS(96), RPM(97),
+    /** A function gcnc cannot follow yet: using it is E110, never a misreading. */
+    UNSUPPORTED(-2);
+
+    private final int number;
+
+    GRole(int number) {
+        this.number = number;
+    }
+
+    /** The thesis's Table 3 number of this function (the checker's function number). */
+    public int number() {
+        return number;
+    }
+
+    /** A function gcnc names as not supported yet (E110). */
+    public boolean unsupported() {
+        return this == UNSUPPORTED || this == NOSE_COMP_LEFT || this == NOSE_COMP_RIGHT;
+    }
+
+    public boolean motion() {
+        return number >= 0 && number <= 3;
+    }
+
+    /** The role named in a control's table ({@code arc_cw}), or null. */
+    public static GRole named(String s) {
+        for (GRole r : values()) {
+            if (r.name().equalsIgnoreCase(s)) {
+                return r;
+            }
+        }
+        return null;
+    }
+}

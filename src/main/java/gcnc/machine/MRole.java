@@ -1,0 +1,38 @@
+package gcnc.machine;
+
+/**
+ * What an M code does, in gcnc's terms: the {@code function} column of a control's m_codes.csv.
+ * {@link #number()} is the code the thesis's Table 4 gives it, the checker's number for it
+ * (Haas's M10 clamps the chuck: it is {@link #CHUCK_CLOSE}, the thesis's M11).
+ */
+public enum MRole {
+    STOP(0), OPTIONAL_STOP(1), SPINDLE_CW(3), SPINDLE_CCW(4), SPINDLE_STOP(5), SPINDLE_ORIENT(19),
+    CHUCK_OPEN(10), CHUCK_CLOSE(11), END(30),
+    /** Anything else the machine does through its outputs (coolant, tailstock, conveyor, gears). */
+    OUTPUT(-1),
+    /** A function gcnc cannot follow yet (subprograms): using it is E110. */
+    UNSUPPORTED(-2);
+
+    private final int number;
+
+    MRole(int number) {
+        this.number = number;
+    }
+
+    public int number() {
+        return number;
+    }
+
+    public boolean spindleGroup() {
+        return this == SPINDLE_CW || this == SPINDLE_CCW || this == SPINDLE_STOP || this == SPINDLE_ORIENT;
+    }
+
+    public static MRole named(String s) {
+        for (MRole r : values()) {
+            if (r.name().equalsIgnoreCase(s)) {
+                return r;
+            }
+        }
+        return null;
+    }
+}
