@@ -27,11 +27,21 @@ public final class ControlLoader {
     private ControlLoader() {
     }
 
+    /** The controls gcnc ships (folders of tables/controls/), for the message of an unknown name. */
+    public static final java.util.List<String> SHIPPED = java.util.List.of("thesis-2004", "fanuc-a", "fanuc-b", "haas");
+
     public static Control load(String nameOrPath, TableSource tables) throws TableException {
         if (nameOrPath.contains("/")) {
             return read(TableSource.directory(Path.of(nameOrPath)), "");
         }
-        return read(tables, "controls/" + nameOrPath + "/");
+        String dir = "controls/" + nameOrPath + "/";
+        try {
+            tables.read(dir + "control.cfg");
+        } catch (TableException e) {
+            throw ProfileFile.fault(tables.describe(dir + "control.cfg"), 1, 1, "no control '" + nameOrPath
+                    + "' (shipped: " + String.join(", ", SHIPPED) + "; or give a folder path)");
+        }
+        return read(tables, dir);
     }
 
     private static Control read(TableSource src, String dir) throws TableException {

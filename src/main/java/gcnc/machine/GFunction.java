@@ -18,6 +18,6 @@ public record GFunction(int code, int group, GRole role, Set<Param> words, Strin
     }
 
     public String name() {
-        return String.format("G%02d", code);
+        return code < 10 ? "G0" + code : "G" + code;
     }
 }

@@ -13,6 +13,6 @@ public record MFunction(int code, int group, int moment, MRole role, boolean nee
     }
 
     public String name() {
-        return String.format("M%02d", code);
+        return code < 10 ? "M0" + code : "M" + code;
     }
 }

@@ -84,6 +84,19 @@ class ControlLoaderTest {
         assertTrue(e.getMessage().contains("G4 is listed twice"), e.getMessage());
     }
 
+    @Test
+    void theShippedListIsTheFoldersAndAnUnknownNameListsThem() throws Exception {
+        try (Stream<Path> s = Files.list(Path.of("tables/controls"))) {
+            assertEquals(new java.util.TreeSet<>(ControlLoader.SHIPPED), s.filter(Files::isDirectory)
+                    .map(p -> p.getFileName().toString()).collect(java.util.stream.Collectors.toCollection(java.util.TreeSet::new)));
+        }
+        for (String name : ControlLoader.SHIPPED) {
+            assertEquals(name, builtIn(name).name());
+        }
+        TableException e = assertThrows(TableException.class, () -> builtIn("fanuc"));
+        assertTrue(e.getMessage().contains("no control 'fanuc' (shipped: thesis-2004, fanuc-a, fanuc-b, haas"), e.getMessage());
+    }
+
     static Path copyOf(String control) throws IOException {
         Path dir = Files.createTempDirectory("gcnc-control");
         try (Stream<Path> s = Files.list(Path.of("tables/controls", control))) {

@@ -76,10 +76,9 @@ public final class Eb01ParameterOwner implements BlockCheck {
         if (ok == null) {
             return;
         }
-        String name = d.ownerName();
         for (int i = 0; i < ORDER.length; i++) {
             if (d.has(ORDER[i]) && !ok.contains(PARAMS[i])) {
-                d.fail(out, NOT_ALLOWED[i], d.word(ORDER[i]).span(), name);
+                d.fail(out, NOT_ALLOWED[i], d.word(ORDER[i]).span(), d.ownerName());
                 return;
             }
         }
@@ -88,7 +87,7 @@ public final class Eb01ParameterOwner implements BlockCheck {
         } else if (d.has(Letter.Z) && d.has(Letter.W)) {
             d.fail(out, Code.E029_Z_AND_W, d.word(Letter.W).span());
         } else if (d.has(Letter.P) && !ok.contains(Param.P)) {
-            d.fail(out, Code.E036_P_NOT_ALLOWED, d.word(Letter.P).span(), name);
+            d.fail(out, Code.E036_P_NOT_ALLOWED, d.word(Letter.P).span(), d.ownerName());
         }
     }
 
