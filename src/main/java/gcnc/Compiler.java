@@ -66,7 +66,9 @@ public final class Compiler {
      */
     public static Result compile(Reader source, Settings settings, LineSink out) throws IOException {
         Diagnostics diags = new Diagnostics();
-        BlockReader reader = new BlockReader(source, diags);
+        java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
+        settings = withStockHeader(buffered, settings);
+        BlockReader reader = new BlockReader(buffered, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
         List<GalilLine> lines = new ArrayList<>();
@@ -106,6 +108,50 @@ public final class Compiler {
                 report = translated ? Optional.of(sim.report()) : Optional.empty();
             }
             return new Result(diags, blocks, report);
+        }
+    }
+
+    /** The longest first line read for a stock header; the program is read once, from the start. */
+    private static final int HEADER_PEEK = 1 << 16;
+
+    /**
+     * The blank from the program's stock header (an EMCO-style first-line comment, {@code (length
+     * diameter ...)}), when the simulation has none given and the profile reads headers: the same
+     * for the command line, the JUnit fixtures and any other front end. The first line is peeked
+     * at and the program is then read from its start.
+     */
+    private static Settings withStockHeader(java.io.BufferedReader in, Settings settings) throws IOException {
+        if (settings.simulation().isEmpty() || settings.simulation().get().stock().isPresent()) {
+            return settings;
+        }
+        in.mark(HEADER_PEEK);
+        StringBuilder first = new StringBuilder();
+        for (int c = in.read(); c >= 0 && c != '\n' && c != '\r' && first.length() < HEADER_PEEK - 1; c = in.read()) {
+            first.append((char) c);
+        }
+        in.reset();
+        SimOptions o = withStockHeader(first.toString(), settings.profile(), settings.simulation().get());
+        return new Settings(settings.tables(), settings.profile(), settings.dialect(), Optional.of(o),
+                settings.inlineSourceMap());
+    }
+
+    /**
+     * {@code options} with the blank of a program's first line if it is a stock header, the
+     * options have no blank yet and the profile reads headers ({@code stock.header = use}); else
+     * {@code options} as they are (a broken profile is the simulator's to report).
+     */
+    public static SimOptions withStockHeader(String firstLine, MachineProfile profile, SimOptions options) {
+        if (options.stock().isPresent()) {
+            return options;
+        }
+        try {
+            if (!profile.file().choice("stock.header", "use", "use", "ignore").equals("use")) {
+                return options;
+            }
+            double stickout = gcnc.sim.SimMachine.read(profile).stock().map(gcnc.sim.StockSize::stickout).orElse(0.0);
+            return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
+        } catch (gcnc.tables.TableException e) {
+            return options;
         }
     }
 

@@ -45,12 +45,10 @@ final class SimulateCommand extends RunCommand {
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         SimOptions options;
         try {
-            options = stock.options(file, setup.profile());
+            options = stock.options(setup.profile());
         } catch (StockOptions.BadStock e) {
             err.println("gcnc: " + e.getMessage());
             return ExitCode.USAGE;
-        } catch (IOException e) {
-            return setup.reporter().ioFault(file, "cannot read", e);
         }
         if (svg != null) {
             options = options.withPath();

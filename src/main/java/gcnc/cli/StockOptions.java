@@ -3,19 +3,15 @@ package gcnc.cli;
 import gcnc.machine.MachineProfile;
 import gcnc.sim.SimMachine;
 import gcnc.sim.SimOptions;
-import gcnc.sim.StockHeader;
 import gcnc.sim.StockSize;
 import gcnc.tables.TableException;
-import java.io.BufferedReader;
-import java.io.IOException;
-import java.nio.file.Path;
 import java.util.Optional;
 import picocli.CommandLine.Option;
 
 /**
- * The blank the simulator starts from: {@code --stock}, else the program's stock header
- * (an EMCO-style first-line comment {@code (length diameter ...)}), else the profile's default.
- * A profile whose frame is not millimetres (thesis-2004) sets {@code stock.header = ignore}.
+ * The blank the simulator starts from: {@code --stock}. Without it the library ({@code
+ * Compiler}) takes the program's stock header (an EMCO-style first-line comment {@code (length
+ * diameter ...)}), else the profile's default, the same for every front end.
  */
 final class StockOptions {
     /** A --stock value that is not three (or two) positive numbers. */
@@ -29,23 +25,12 @@ final class StockOptions {
             description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws.")
     String stock;
 
-    SimOptions options(Path program, MachineProfile profile) throws BadStock, TableException, IOException {
+    SimOptions options(MachineProfile profile) throws BadStock, TableException {
         SimOptions o = SimOptions.defaults();
         Optional<StockSize> profileStock = SimMachine.read(profile).stock();
         double stickout = profileStock.map(StockSize::stickout).orElse(0.0);
         if (stock != null) {
             return o.withStock(parse(stock, stickout));
-        }
-        if (profile.file().choice("stock.header", "use", "use", "ignore").equals("use")) {
-            try (BufferedReader in = new BufferedReader(SourceFiles.open(program))) {
-                String first = in.readLine();
-                if (first != null) {
-                    Optional<StockSize> header = StockHeader.parse(first, stickout);
-                    if (header.isPresent()) {
-                        return o.withStock(header.get());
-                    }
-                }
-            }
         }
         return o;
     }

@@ -203,6 +203,10 @@ public enum Code {
     E313_SIM_VECTOR_PLANE(313),
     /** Vector segments that no BGS starts. */
     E314_SIM_SEQUENCE_NOT_STARTED(314),
+    /** The tool holder (not the insert) reaches into stock during a cut: the insert is too small for the cut. */
+    E315_SIM_HOLDER_IN_STOCK(315),
+    /** Note: no blank was given, so the stock checks were skipped. */
+    E316_SIM_NO_STOCK(316),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

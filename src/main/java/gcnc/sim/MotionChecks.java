@@ -21,7 +21,12 @@ final class MotionChecks {
     private final SimMachine machine;
     private final Reporter out;
     private final double tol;
-    private final StockProfile stock;
+    private final Stock stock;
+    private final double kx;
+    private final double kz;
+    /** The current tool's insert and holder relative to its tip, mm ({z[], r[]}; holder null if none). */
+    private double[][] insertMm;
+    private double[][] holderMm;
     private final PathRecorder path;
     private final Conformance conformance;
     private int tool;
@@ -44,11 +49,12 @@ final class MotionChecks {
         this.machine = machine;
         this.out = out;
         this.tol = options.tolerance();
+        this.kx = profile.x().countsPerMm();
+        this.kz = profile.z().countsPerMm();
         StockSize s = options.stock().orElse(machine == null ? null : machine.stock().orElse(null));
         if (s != null && machine != null && !Double.isNaN(machine.chuckFace())) {
-            double face = machine.chuckFace() + s.stickout() * profile.z().countsPerMm();
-            stock = new StockProfile(face - s.length() * profile.z().countsPerMm(), face,
-                    s.diameter() / 2 * profile.x().countsPerMm());
+            double face = machine.chuckFace() / kz + s.stickout();
+            stock = new Stock(face - s.length(), face, s.diameter() / 2);
         } else {
             stock = null;
         }
@@ -58,6 +64,27 @@ final class MotionChecks {
         chuckBox = machine == null ? null : box(machine.chuck());
         tailBox = machine == null ? null : box(machine.tailstock());
         reach = reach(toolShape);
+        outlines();
+    }
+
+    /** Whether the run has a blank to cut (from --stock, the program's stock header or the profile). */
+    boolean hasStock() {
+        return stock != null;
+    }
+
+    private void outlines() {
+        insertMm = toolShape == null ? null : mm(toolShape.insert());
+        holderMm = toolShape == null || toolShape.holder() == null ? null : mm(toolShape.holder());
+    }
+
+    private double[][] mm(Shape s) {
+        double[] z = new double[s.size()];
+        double[] r = new double[s.size()];
+        for (int i = 0; i < z.length; i++) {
+            z[i] = s.z()[i] / kz;
+            r[i] = s.r()[i] / kx;
+        }
+        return new double[][] {z, r};
     }
 
     private static double[] box(Shape[] shapes) {
@@ -103,6 +130,7 @@ final class MotionChecks {
         if (machine != null) {
             toolShape = machine.tool(n);
             reach = reach(toolShape);
+            outlines();
         }
     }
 
@@ -119,6 +147,7 @@ final class MotionChecks {
         boolean chuckHit = false;
         boolean tailHit = false;
         boolean stockHit = false;
+        boolean holderHit = false;
         List<double[]> poly = path == null ? null : new ArrayList<>();
         for (Segment s : segs) {
             length += s.length();
@@ -134,7 +163,8 @@ final class MotionChecks {
             double rMin = box[0] - centre();
             boolean nearChuck = machine != null && near(chuckBox, box);
             boolean nearTail = machine != null && near(tailBox, box);
-            boolean nearStock = stock != null && stock.mayTouch(box[2], box[3], rMin, tol);
+            boolean nearStock = stock != null && insertMm != null && stock.mayTouch((box[2] + reach[2]) / kz,
+                    (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
             if (poly == null && !nearChuck && !nearTail && !nearStock) {
                 continue;
             }
@@ -160,12 +190,25 @@ final class MotionChecks {
                         mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
                     }
                     if (nearStock) {
-                        int cell = stock.cut(a[1], ar, b[1], br, tol);
-                        if (rapid && cell >= 0 && !stockHit) {
-                            stockHit = true;
-                            double z = stock.cellZ(cell);
-                            double t = b[1] == a[1] ? 0 : (z - a[1]) / (b[1] - a[1]);
-                            mark(Code.E305_SIM_RAPID_INTO_STOCK, line, new double[] {a[0] + (b[0] - a[0]) * t, z});
+                        double az = a[1] / kz;
+                        double bz = b[1] / kz;
+                        org.locationtech.jts.geom.Geometry cut = stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx);
+                        org.locationtech.jts.geom.Geometry holder = holderMm == null ? null
+                                : stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx);
+                        if (rapid && !stockHit) {
+                            double[] at = stock.deepOverlap(holder == null ? cut : cut.union(holder));
+                            if (at != null) {
+                                stockHit = true;
+                                mark(Code.E305_SIM_RAPID_INTO_STOCK, line, machinePoint(at));
+                            }
+                        }
+                        stock.remove(cut);
+                        if (!rapid && holder != null && !holderHit) {
+                            double[] at = stock.deepOverlap(holder);
+                            if (at != null) {
+                                holderHit = true;
+                                mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tool);
+                            }
                         }
                     }
                 }
@@ -176,6 +219,11 @@ final class MotionChecks {
         if (poly != null) {
             path.move(rapid, poly);
         }
+    }
+
+    /** A point {z, r} of the stock's frame (mm) as machine counts {x, z}. */
+    private double[] machinePoint(double[] zr) {
+        return new double[] {zr[1] * kx + centre(), zr[0] * kz};
     }
 
     /** See {@link Conformance#check}. */

@@ -39,7 +39,7 @@ final class PathRecorder {
         marks.add(new Drawing.Mark(code, z / kz, (x - centre) / kx));
     }
 
-    Drawing drawing(SimMachine machine, StockProfile stock) {
+    Drawing drawing(SimMachine machine, Stock stock) {
         List<Shape> chuck = new ArrayList<>();
         List<Shape> tail = new ArrayList<>();
         if (machine != null) {
@@ -53,13 +53,8 @@ final class PathRecorder {
         if (stock == null) {
             return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks);
         }
-        double[] z = new double[stock.cells()];
-        double[] r = new double[stock.cells()];
-        for (int i = 0; i < z.length; i++) {
-            z[i] = stock.cellZ(i) / kz;
-            r[i] = stock.radiusAt(i) / kx;
-        }
-        return new Drawing(chuck, tail, stock.back() / kz, stock.face() / kz, stock.initialRadius() / kx, z, r,
+        double[][] part = stock.profile();
+        return new Drawing(chuck, tail, stock.back(), stock.face(), stock.initialRadius(), part[0], part[1],
                 moves, marks);
     }
 

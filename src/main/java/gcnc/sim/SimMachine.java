@@ -97,6 +97,15 @@ public record SimMachine(double centreX, Shape[] chuck, double chuckFace, Shape[
 
     private static ToolShape toolShape(ProfileFile f, String prefix, double kx, double kz, ToolShape otherwise)
             throws TableException {
+        Optional<ProfileFile.Entry> named = f.entry(prefix);
+        if (named.isPresent()) {
+            otherwise = ToolLibrary.shape(named.get().value(), kx, kz);
+            if (otherwise == null) {
+                throw f.fault(named.get(), "'" + prefix + "' is a tool from the library: C, D or V and the inscribed"
+                        + " circle (C 12.7), T and the edge (T 16), G or P and the width [and reach] (P 3), B and the"
+                        + " bar diameter (B 16), not '" + named.get().value() + "'");
+            }
+        }
         Optional<ProfileFile.Entry> ins = f.entry(prefix + ".insert");
         Optional<ProfileFile.Entry> hol = f.entry(prefix + ".holder");
         for (ProfileFile.Entry e : f.withPrefix(prefix + ".")) {

@@ -47,6 +47,10 @@ public final class Simulator {
         }
         this.outputs = new OutputState(profile);
         this.checks = new MotionChecks(profile, machine, options, this::report);
+        if (machine != null && !checks.hasStock()) {
+            // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
+            diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
+        }
         this.dmc = new DmcInterpreter(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
                 profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);

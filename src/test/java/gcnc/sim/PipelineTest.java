@@ -31,7 +31,8 @@ class PipelineTest {
         Tables tables = Tables.builtIn();
         MachineProfile profile = ProfileLoader.load(machine, TableSource.builtIn(), tables);
         Diagnostics d = new Diagnostics();
-        Simulator sim = new Simulator(profile, options, d);
+        String first = Files.readAllLines(Path.of("samples", sample)).get(0);
+        Simulator sim = new Simulator(profile, gcnc.Compiler.withStockHeader(first, profile, options), d);
         Dialect out = Dialect.create(dialect, profile, d);
         Checker checker = new Checker(tables, profile, d);
         List<GalilLine> buf = new ArrayList<>();

@@ -54,8 +54,8 @@ final class SimFixture {
             stock.stickout = 100
             tailstock.centre_z = 200
             tailstock.quill_diameter = 30
-            sim.tool.default.insert = 0, 0; 3, 1; 1, 3
-            sim.tool.default.holder = 0, 3; 10, 3; 10, 20; 0, 20
+            sim.tool.default.insert = 0, 0; 3, 0; 3, 6; 0, 6
+            sim.tool.default.holder = 0, 6; 10, 6; 10, 20; 0, 20
             """;
 
     static final Feed FEED = new Feed(100, 100);

@@ -82,7 +82,7 @@ class SimulatorTest {
         f.move(true, 10, 150);
         f.move(true, 10, 190);
         assertEquals(List.of(), f.codes());
-        f.move(true, 2, 195); // line 4
+        f.move(true, -1, 195); // line 4: the tip below the quill (r 15), the holder (r 5 and up) in it
         assertEquals(List.of("E304@4"), f.codes());
     }
 

@@ -83,7 +83,8 @@ class SimulatorThreadTest {
                 new Compiler.Settings(tables, profile, "galil", Optional.of(SimOptions.defaults())), l -> { });
 
         Diagnostics d = new Diagnostics();
-        Simulator sim = new Simulator(profile, SimOptions.defaults(), d);
+        Simulator sim = new Simulator(profile, Compiler.withStockHeader(program.lines().findFirst().orElse(""), profile,
+                SimOptions.defaults()), d);
         Dialect out = Dialect.create("galil", profile, d);
         Checker checker = new Checker(tables, profile, d);
         List<GalilLine> buf = new ArrayList<>();

@@ -1,0 +1,219 @@
+package gcnc.sim;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.locationtech.jts.algorithm.ConvexHull;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Envelope;
+import org.locationtech.jts.geom.Geometry;
+import org.locationtech.jts.geom.GeometryFactory;
+import org.locationtech.jts.geom.LineString;
+import org.locationtech.jts.geom.Polygon;
+import org.locationtech.jts.geom.prep.PreparedGeometry;
+import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
+
+/**
+ * The workpiece as an exact half-section: polygons in the (z, r) plane, millimetres of the
+ * machine frame, r the radius from the spindle centreline. Every move removes exactly the area its
+ * insert sweeps (the convex hull of the insert at both ends of each straight piece; an arc is cut
+ * into pieces within half a count of it), with JTS doing the polygon booleans.
+ *
+ * <p>An overlap counts only when it is real: thicker than {@link #DEPTH} (the overlap, shrunk by
+ * half of it, is not empty), never because of how the stock is held. A conservative upper
+ * envelope of the material (the largest radius in each of {@value #CELLS} slices along z) lets
+ * the many moves that pass above the material skip the polygon work: memory stays flat.
+ */
+final class Stock {
+    /** How deep a tool must reach into material before it counts: 0.01 mm. */
+    static final double DEPTH = 0.01;
+    static final int CELLS = 4096;
+    private static final int GROUP = 64;
+
+    private final GeometryFactory factory = new GeometryFactory();
+    private final double back;
+    private final double face;
+    private final double radius;
+    private final double step;
+    /** Largest radius of material in each slice (never below the truth). */
+    private final double[] upper = new double[CELLS];
+    private final double[] groupMax = new double[CELLS / GROUP];
+    private Geometry material;
+    private PreparedGeometry prepared;
+
+    Stock(double back, double face, double radius) {
+        this.back = back;
+        this.face = face;
+        this.radius = radius;
+        this.step = (face - back) / CELLS;
+        this.material = factory.toGeometry(new Envelope(back, face, 0, radius));
+        java.util.Arrays.fill(upper, radius);
+        java.util.Arrays.fill(groupMax, radius);
+    }
+
+    double back() {
+        return back;
+    }
+
+    double face() {
+        return face;
+    }
+
+    double initialRadius() {
+        return radius;
+    }
+
+    /** Could anything in z [zLo, zHi] no nearer the centreline than rMin touch material? */
+    boolean mayTouch(double zLo, double zHi, double rMin) {
+        if (zHi < back || zLo > face) {
+            return false;
+        }
+        int lo = slice(zLo);
+        int hi = slice(zHi);
+        for (int g = lo / GROUP; g <= hi / GROUP; g++) {
+            if (rMin >= groupMax[g]) {
+                continue;
+            }
+            for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
+                if (rMin < upper[i]) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The area a convex outline ({@code z}, {@code r} relative to the tip, mm) sweeps while its tip
+     * moves in a straight line from (az, ar) to (bz, br): the convex hull of both positions.
+     */
+    Geometry sweep(double[] z, double[] r, double az, double ar, double bz, double br) {
+        Coordinate[] c = new Coordinate[z.length * 2];
+        for (int i = 0; i < z.length; i++) {
+            c[i] = new Coordinate(az + z[i], ar + r[i]);
+            c[z.length + i] = new Coordinate(bz + z[i], br + r[i]);
+        }
+        return new ConvexHull(c, factory).getConvexHull();
+    }
+
+    /** A point where {@code region} reaches more than {@link #DEPTH} into material, {z, r}; null if nowhere. */
+    double[] deepOverlap(Geometry region) {
+        if (!touches(region)) {
+            return null;
+        }
+        Geometry overlap = material.intersection(region);
+        if (overlap.isEmpty() || overlap.getArea() == 0) {
+            return null;
+        }
+        Geometry core = overlap.buffer(-DEPTH / 2);
+        if (core.isEmpty()) {
+            return null;
+        }
+        Coordinate p = core.getInteriorPoint().getCoordinate();
+        return new double[] {p.x, p.y};
+    }
+
+    /** Removes {@code region} from the material (what the insert cuts away). */
+    void remove(Geometry region) {
+        if (!touches(region)) {
+            return;
+        }
+        material = material.difference(region);
+        prepared = null;
+        Envelope e = region.getEnvelopeInternal();
+        refresh(slice(e.getMinX()), slice(e.getMaxX()));
+    }
+
+    private boolean touches(Geometry region) {
+        Envelope e = region.getEnvelopeInternal();
+        if (!mayTouch(e.getMinX(), e.getMaxX(), e.getMinY())) {
+            return false;
+        }
+        if (prepared == null) {
+            prepared = PreparedGeometryFactory.prepare(material);
+        }
+        return prepared.intersects(region);
+    }
+
+    /** Recomputes the upper envelope of slices lo..hi from the material's edges. */
+    private void refresh(int lo, int hi) {
+        for (int i = lo; i <= hi; i++) {
+            upper[i] = 0;
+        }
+        for (int n = 0; n < material.getNumGeometries(); n++) {
+            if (!(material.getGeometryN(n) instanceof Polygon p)) {
+                continue; // a difference leaves polygons; anything else has no area
+            }
+            edges(p.getExteriorRing(), lo, hi);
+            for (int h = 0; h < p.getNumInteriorRing(); h++) {
+                edges(p.getInteriorRingN(h), lo, hi);
+            }
+        }
+        for (int g = lo / GROUP; g <= hi / GROUP; g++) {
+            double m = 0;
+            for (int i = g * GROUP; i < g * GROUP + GROUP; i++) {
+                m = Math.max(m, upper[i]);
+            }
+            groupMax[g] = m;
+        }
+    }
+
+    private void edges(LineString ring, int lo, int hi) {
+        Coordinate[] c = ring.getCoordinates();
+        double zLo = back + lo * step;
+        double zHi = back + (hi + 1) * step;
+        for (int k = 1; k < c.length; k++) {
+            Coordinate a = c[k - 1];
+            Coordinate b = c[k];
+            double z0 = Math.max(Math.min(a.x, b.x), zLo);
+            double z1 = Math.min(Math.max(a.x, b.x), zHi);
+            if (z0 > z1) {
+                continue;
+            }
+            for (int i = Math.max(lo, slice(z0)); i <= Math.min(hi, slice(z1)); i++) {
+                double s0 = Math.max(z0, back + i * step);
+                double s1 = Math.min(z1, back + (i + 1) * step);
+                upper[i] = Math.max(upper[i], Math.max(rAt(a, b, s0), rAt(a, b, s1)));
+            }
+        }
+    }
+
+    private static double rAt(Coordinate a, Coordinate b, double z) {
+        if (a.x == b.x) {
+            return Math.max(a.y, b.y);
+        }
+        double t = Math.max(0, Math.min(1, (z - a.x) / (b.x - a.x)));
+        return a.y + (b.y - a.y) * t;
+    }
+
+    private int slice(double z) {
+        return (int) Math.max(0, Math.min(CELLS - 1, Math.floor((z - back) / step)));
+    }
+
+    /** The finished part's outline: for each slice, the largest radius of material left (mm). */
+    double[][] profile() {
+        double[] z = new double[CELLS];
+        double[] r = new double[CELLS];
+        for (int i = 0; i < CELLS; i++) {
+            z[i] = back + (i + 0.5) * step;
+            r[i] = upper[i];
+        }
+        return new double[][] {z, r};
+    }
+
+    /** The material's polygons as rings of {z, r} points (mm), for the drawing. */
+    List<double[][]> outline() {
+        List<double[][]> rings = new ArrayList<>();
+        for (int n = 0; n < material.getNumGeometries(); n++) {
+            if (!(material.getGeometryN(n) instanceof Polygon p)) {
+                continue;
+            }
+            Coordinate[] c = p.getExteriorRing().getCoordinates();
+            double[][] ring = new double[c.length][];
+            for (int k = 0; k < c.length; k++) {
+                ring[k] = new double[] {c[k].x, c[k].y};
+            }
+            rings.add(ring);
+        }
+        return rings;
+    }
+}

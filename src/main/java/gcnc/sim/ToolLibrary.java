@@ -1,0 +1,122 @@
+package gcnc.sim;
+
+import java.util.Locale;
+
+/**
+ * Tool outlines from a short name, as a machine profile gives them per turret station
+ * ({@code sim.tool.3 = T 16}, {@code sim.tool.default = C 12.7}): the ISO insert shapes of a
+ * turning tool, a threading insert, grooving and parting blades, a boring bar. Each outline is in
+ * millimetres relative to the tip (dz toward the tailstock, dx away from the centreline) and is
+ * convex; the holder sits on the insert's back, as wide along Z as the insert, so that a cut
+ * deeper than the insert is tall puts the holder into the stock (E315).
+ *
+ * <ul>
+ *   <li>{@code C size}, {@code D size}, {@code V size}: 80°, 55° and 35° rhombic inserts of
+ *       inscribed circle {@code size} on a right-hand holder: the major edge rises radially
+ *       from the tip, the minor edge trails toward the tailstock.</li>
+ *   <li>{@code T size}: a 60° threading insert, edge {@code size}, symmetric about the radial line.</li>
+ *   <li>{@code G width [reach]}, {@code P width [reach]}: a grooving or parting blade, the tip at
+ *       its chuck-side corner, {@code reach} deep (default 10 × width, at most 25, for G; 32 for P).</li>
+ *   <li>{@code B diameter}: a boring bar along +Z below the tip, its insert facing outward.</li>
+ * </ul>
+ * These are simplified outlines (no clearance angles, no nose radius): what matters for the
+ * checks is how tall and wide the cutting part is and where the holder starts.
+ */
+final class ToolLibrary {
+    /** How far the holder extends beyond the insert, away from the cut (mm). */
+    static final double HOLDER = 30;
+
+    private ToolLibrary() {
+    }
+
+    /** The outline for a spec such as "C 12.7", in counts ({@code kx}, {@code kz} per mm); null if the spec is not one. */
+    static SimMachine.ToolShape shape(String spec, double kx, double kz) {
+        String[] p = spec.trim().split("\\s+");
+        if (p.length < 2 || p.length > 3 || p[0].length() != 1) {
+            return null;
+        }
+        double size;
+        double reach = Double.NaN;
+        try {
+            size = Double.parseDouble(p[1]);
+            if (p.length == 3) {
+                reach = Double.parseDouble(p[2]);
+            }
+        } catch (NumberFormatException e) {
+            return null;
+        }
+        if (!(size > 0) || !Double.isFinite(size) || p.length == 3 && !(reach > 0 && Double.isFinite(reach))) {
+            return null;
+        }
+        double[][] insert;
+        switch (p[0].toUpperCase(Locale.ROOT)) {
+            case "C" -> insert = rhombus(80, size);
+            case "D" -> insert = rhombus(55, size);
+            case "V" -> insert = rhombus(35, size);
+            case "T" -> insert = new double[][] {{0, size * cos(60), size * cos(120)}, {0, size * sin(60), size * sin(120)}};
+            case "G", "P" -> {
+                double deep = p.length == 3 ? reach : p[0].equalsIgnoreCase("G") ? Math.min(25, 10 * size) : 32;
+                insert = new double[][] {{0, size, size, 0}, {0, 0, deep, deep}};
+            }
+            case "B" -> {
+                // the insert at the bar's end, its corner at the tip; the bar below it, 150 mm along +Z
+                double[][] tip = {{0, 0.4 * size, 0.4 * size, 0}, {-0.3 * size, -0.3 * size, 0, 0}};
+                double[][] bar = {{0, 150, 150, 0}, {-size, -size, -0.3 * size, -0.3 * size}};
+                return new SimMachine.ToolShape(counts(tip, kx, kz), counts(bar, kx, kz));
+            }
+            default -> {
+                return null;
+            }
+        }
+        return new SimMachine.ToolShape(counts(insert, kx, kz), counts(holder(insert), kx, kz));
+    }
+
+    /**
+     * A rhombus with corner angle {@code corner} at the tip, inscribed circle {@code ic} (edges of
+     * length ic / sin(corner)), its major edge radial (lead angle 90°): the shoulder it leaves is
+     * square, so the usual straight retract at the end of a pass ({@code G00 U2.}) slides along it.
+     * A real 93-95° holder leans the edge a few degrees; the few hundredths of a millimetre it then
+     * rubs on the retract are not a collision, and this model does not report them.
+     */
+    private static double[][] rhombus(double corner, double ic) {
+        double side = ic / sin(corner);
+        double major = 90;
+        double minor = major - corner;
+        double mz = side * cos(major);
+        double mr = side * sin(major);
+        double nz = side * cos(minor);
+        double nr = side * sin(minor);
+        return new double[][] {{0, mz, mz + nz, nz}, {0, mr, mr + nr, nr}};
+    }
+
+    /** The holder: on the insert's back (above its highest point), as wide along Z as the insert. */
+    private static double[][] holder(double[][] insert) {
+        double z0 = Double.MAX_VALUE;
+        double z1 = -Double.MAX_VALUE;
+        double top = -Double.MAX_VALUE;
+        for (int i = 0; i < insert[0].length; i++) {
+            z0 = Math.min(z0, insert[0][i]);
+            z1 = Math.max(z1, insert[0][i]);
+            top = Math.max(top, insert[1][i]);
+        }
+        return new double[][] {{z0, z1, z1, z0}, {top, top, top + HOLDER, top + HOLDER}};
+    }
+
+    private static Shape counts(double[][] mm, double kx, double kz) {
+        double[] z = new double[mm[0].length];
+        double[] r = new double[mm[0].length];
+        for (int i = 0; i < z.length; i++) {
+            z[i] = mm[0][i] * kz;
+            r[i] = mm[1][i] * kx;
+        }
+        return new Shape(z, r);
+    }
+
+    private static double cos(double deg) {
+        return Math.cos(Math.toRadians(deg));
+    }
+
+    private static double sin(double deg) {
+        return Math.sin(Math.toRadians(deg));
+    }
+}
