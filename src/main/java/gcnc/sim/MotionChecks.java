@@ -195,8 +195,10 @@ final class MotionChecks {
                         org.locationtech.jts.geom.Geometry cut = stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx);
                         org.locationtech.jts.geom.Geometry holder = holderMm == null ? null
                                 : stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx);
+                        // A crash is reported once, and what it went through is gone: no echo in the next moves.
+                        org.locationtech.jts.geom.Geometry whole = holder == null ? cut : cut.union(holder);
                         if (rapid && !stockHit) {
-                            double[] at = stock.deepOverlap(holder == null ? cut : cut.union(holder));
+                            double[] at = stock.deepOverlap(whole);
                             if (at != null) {
                                 stockHit = true;
                                 mark(Code.E305_SIM_RAPID_INTO_STOCK, line, machinePoint(at));
@@ -209,6 +211,9 @@ final class MotionChecks {
                                 holderHit = true;
                                 mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tool);
                             }
+                        }
+                        if (stockHit || holderHit) {
+                            stock.remove(whole);
                         }
                     }
                 }

@@ -89,17 +89,36 @@ final class ToolLibrary {
         return new double[][] {{0, mz, mz + nz, nz}, {0, mr, mr + nr, nr}};
     }
 
-    /** The holder: on the insert's back (above its highest point), as wide along Z as the insert. */
+    /**
+     * The holder: the insert's pocket and the body above it, as wide along Z as the insert: the
+     * convex hull of the insert and a band {@link #HOLDER} mm above its highest point (no gap
+     * between insert and holder that a sweep could leave material in). It contains the insert,
+     * which does no harm: the insert's sweep is cut away before the holder is checked.
+     */
     private static double[][] holder(double[][] insert) {
         double z0 = Double.MAX_VALUE;
         double z1 = -Double.MAX_VALUE;
         double top = -Double.MAX_VALUE;
-        for (int i = 0; i < insert[0].length; i++) {
+        int n = insert[0].length;
+        for (int i = 0; i < n; i++) {
             z0 = Math.min(z0, insert[0][i]);
             z1 = Math.max(z1, insert[0][i]);
             top = Math.max(top, insert[1][i]);
         }
-        return new double[][] {{z0, z1, z1, z0}, {top, top, top + HOLDER, top + HOLDER}};
+        org.locationtech.jts.geom.Coordinate[] c = new org.locationtech.jts.geom.Coordinate[n + 2];
+        for (int i = 0; i < n; i++) {
+            c[i] = new org.locationtech.jts.geom.Coordinate(insert[0][i], insert[1][i]);
+        }
+        c[n] = new org.locationtech.jts.geom.Coordinate(z0, top + HOLDER);
+        c[n + 1] = new org.locationtech.jts.geom.Coordinate(z1, top + HOLDER);
+        org.locationtech.jts.geom.Coordinate[] hull = new org.locationtech.jts.algorithm.ConvexHull(c,
+                new org.locationtech.jts.geom.GeometryFactory()).getConvexHull().getCoordinates();
+        double[][] out = new double[2][hull.length - 1];
+        for (int i = 0; i < hull.length - 1; i++) {
+            out[0][i] = hull[i].x;
+            out[1][i] = hull[i].y;
+        }
+        return out;
     }
 
     private static Shape counts(double[][] mm, double kx, double kz) {
