@@ -27,6 +27,9 @@ final class MotionChecks {
     /** The current tool's insert and holder relative to its tip, mm ({z[], r[]}; holder null if none). */
     private double[][] insertMm;
     private double[][] holderMm;
+    /** The same outlines drawn a little smaller ({@link Stock#smaller}), to tell a real bite from a touch. */
+    private double[][] insertIn;
+    private double[][] holderIn;
     private final PathRecorder path;
     private final Conformance conformance;
     private int tool;
@@ -75,6 +78,8 @@ final class MotionChecks {
     private void outlines() {
         insertMm = toolShape == null ? null : mm(toolShape.insert());
         holderMm = toolShape == null || toolShape.holder() == null ? null : mm(toolShape.holder());
+        insertIn = insertMm == null ? null : Stock.smaller(insertMm[0], insertMm[1]);
+        holderIn = holderMm == null ? null : Stock.smaller(holderMm[0], holderMm[1]);
     }
 
     private double[][] mm(Shape s) {
@@ -168,7 +173,9 @@ final class MotionChecks {
             if (poly == null && !nearChuck && !nearTail && !nearStock) {
                 continue;
             }
-            int n = s.pieces();
+            int n = nearStock && poly == null && !nearChuck && !nearTail ? stockPieces(s) : s.pieces();
+            List<org.locationtech.jts.geom.Geometry> cuts = nearStock ? new ArrayList<>(n) : List.of();
+            List<org.locationtech.jts.geom.Geometry> holders = nearStock ? new ArrayList<>(n) : List.of();
             double[] a = s.at(0);
             if (poly != null) {
                 poly.add(a);
@@ -189,41 +196,81 @@ final class MotionChecks {
                         tailHit = true;
                         mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
                     }
-                    if (nearStock) {
+                    if (nearStock && stock.mayTouch((Math.min(a[1], b[1]) + reach[2]) / kz,
+                            (Math.max(a[1], b[1]) + reach[3]) / kz, (Math.min(ar, br) + reach[0]) / kx)) {
                         double az = a[1] / kz;
                         double bz = b[1] / kz;
-                        org.locationtech.jts.geom.Geometry cut = stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx);
-                        org.locationtech.jts.geom.Geometry holder = holderMm == null ? null
-                                : stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx);
-                        // A crash is reported once, and what it went through is gone: no echo in the next moves.
-                        org.locationtech.jts.geom.Geometry whole = holder == null ? cut : cut.union(holder);
-                        if (rapid && !stockHit) {
-                            double[] at = stock.deepOverlap(whole);
-                            if (at != null) {
-                                stockHit = true;
-                                mark(Code.E305_SIM_RAPID_INTO_STOCK, line, machinePoint(at));
-                            }
+                        if (stock.bites(stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx))) {
+                            cuts.add(stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx));
                         }
-                        stock.remove(cut);
-                        if (!rapid && holder != null && !holderHit) {
-                            double[] at = stock.deepOverlap(holder);
-                            if (at != null) {
-                                holderHit = true;
-                                mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tool);
-                            }
-                        }
-                        if (stockHit || holderHit) {
-                            stock.remove(whole);
+                        if (holderMm != null && stock.bites(stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx))) {
+                            holders.add(stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx));
                         }
                     }
                 }
                 a = b;
+            }
+            if (!cuts.isEmpty() || !holders.isEmpty()) {
+                boolean[] hit = stockMove(cuts, holders, rapid, line, stockHit, holderHit);
+                stockHit = hit[0];
+                holderHit = hit[1];
             }
         }
         seconds += time(length, speed, acc, dec);
         if (poly != null) {
             path.move(rapid, poly);
         }
+    }
+
+    /**
+     * One segment's effect on the stock, its pieces' sweeps taken together (one polygon boolean
+     * per segment): a rapid reaching into material is E305; a cut removes what its insert sweeps,
+     * and its holder reaching into what is left is E315. A crash is reported once, and what it went
+     * through is gone: no echo in the next moves. Returns {stockHit, holderHit}.
+     */
+    private boolean[] stockMove(List<org.locationtech.jts.geom.Geometry> cuts,
+                                List<org.locationtech.jts.geom.Geometry> holders, boolean rapid, int line,
+                                boolean stockHit, boolean holderHit) {
+        org.locationtech.jts.geom.Geometry cut = cuts.isEmpty() ? null : union(cuts);
+        org.locationtech.jts.geom.Geometry holder = holders.isEmpty() ? null : union(holders);
+        boolean crashed = false;
+        if (rapid && !stockHit) {
+            double[] at = cut == null ? null : stock.deepOverlap(cut);
+            at = at != null || holder == null ? at : stock.deepOverlap(holder);
+            if (at != null) {
+                stockHit = crashed = true;
+                mark(Code.E305_SIM_RAPID_INTO_STOCK, line, machinePoint(at));
+            }
+        }
+        if (cut != null) {
+            stock.remove(cut);
+        }
+        if (!rapid && holder != null && !holderHit) {
+            double[] at = stock.deepOverlap(holder);
+            if (at != null) {
+                holderHit = crashed = true;
+                mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tool);
+            }
+        }
+        if (crashed && holder != null) {
+            stock.remove(holder);
+        }
+        return new boolean[] {stockHit, holderHit};
+    }
+
+    private static org.locationtech.jts.geom.Geometry union(List<org.locationtech.jts.geom.Geometry> parts) {
+        return parts.size() == 1 ? parts.get(0) : org.locationtech.jts.operation.union.UnaryUnionOp.union(parts);
+    }
+
+    /** Pieces of a segment for the stock: chords within half the stock's depth of an arc (a finer cut leaves no deeper scallop). */
+    private int stockPieces(Segment s) {
+        if (!s.arc()) {
+            return 1;
+        }
+        double r = s.radius() / Math.min(kx, kz);
+        double sag = Stock.DEPTH / 2;
+        double step = r <= sag ? 180 : Math.toDegrees(2 * Math.acos(1 - sag / r));
+        return (int) Math.max(1, Math.min(256, Math.ceil(Math.abs(s.sweepDeg()) / step)));
     }
 
     /** A point {z, r} of the stock's frame (mm) as machine counts {x, z}. */

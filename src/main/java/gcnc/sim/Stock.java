@@ -20,13 +20,14 @@ import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
  *
  * <p>An overlap counts only when it is real: thicker than {@link #DEPTH} (the overlap, shrunk by
  * half of it, is not empty), never because of how the stock is held. A conservative upper
- * envelope of the material (the largest radius in each of {@value #CELLS} slices along z) lets
+ * envelope of the material (the largest radius in each slice along z, a quarter of the depth wide) lets
  * the many moves that pass above the material skip the polygon work: memory stays flat.
  */
 final class Stock {
     /** How deep a tool must reach into material before it counts: 0.01 mm. */
     static final double DEPTH = 0.01;
-    static final int CELLS = 4096;
+    /** At most this many slices (2 MiB): a quarter of the depth each on a blank up to 655 mm long. */
+    private static final int MAX_SLICES = 1 << 18;
     private static final int GROUP = 64;
 
     private final GeometryFactory factory = new GeometryFactory();
@@ -35,8 +36,11 @@ final class Stock {
     private final double radius;
     private final double step;
     /** Largest radius of material in each slice (never below the truth). */
-    private final double[] upper = new double[CELLS];
-    private final double[] groupMax = new double[CELLS / GROUP];
+    private final int slices;
+    private final double[] upper;
+    private final double[] groupMax;
+    /** Largest radius in each run of GROUP groups: a long move over cut material skips whole runs. */
+    private final double[] superMax;
     private Geometry material;
     private PreparedGeometry prepared;
 
@@ -44,10 +48,17 @@ final class Stock {
         this.back = back;
         this.face = face;
         this.radius = radius;
-        this.step = (face - back) / CELLS;
+        // slices no wider than a quarter of the depth, so that a face a move runs along shares no
+        // slice with the material beyond it (the envelope skips those moves)
+        this.slices = (int) Math.min(MAX_SLICES, GROUP * Math.ceil((face - back) / (DEPTH / 4) / GROUP));
+        this.step = (face - back) / slices;
+        this.upper = new double[slices];
+        this.groupMax = new double[slices / GROUP];
+        this.superMax = new double[(groupMax.length + GROUP - 1) / GROUP];
         this.material = factory.toGeometry(new Envelope(back, face, 0, radius));
         java.util.Arrays.fill(upper, radius);
         java.util.Arrays.fill(groupMax, radius);
+        java.util.Arrays.fill(superMax, radius);
     }
 
     double back() {
@@ -62,20 +73,34 @@ final class Stock {
         return radius;
     }
 
-    /** Could anything in z [zLo, zHi] no nearer the centreline than rMin touch material? */
+    /**
+     * Could anything in z [zLo, zHi] no nearer the centreline than rMin reach more than
+     * {@link #DEPTH} into material? A contact within the depth (a tool running along a face it
+     * has just cut) is not: those moves skip the polygon work.
+     */
     boolean mayTouch(double zLo, double zHi, double rMin) {
-        if (zHi < back || zLo > face) {
+        zLo += DEPTH / 2;
+        zHi -= DEPTH / 2;
+        rMin += DEPTH / 2;
+        if (zHi < back || zLo > face || zHi < zLo) {
             return false;
         }
         int lo = slice(zLo);
         int hi = slice(zHi);
-        for (int g = lo / GROUP; g <= hi / GROUP; g++) {
-            if (rMin >= groupMax[g]) {
+        int glo = lo / GROUP;
+        int ghi = hi / GROUP;
+        for (int sg = glo / GROUP; sg <= ghi / GROUP; sg++) {
+            if (rMin >= superMax[sg]) {
                 continue;
             }
-            for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
-                if (rMin < upper[i]) {
-                    return true;
+            for (int g = Math.max(glo, sg * GROUP); g <= Math.min(ghi, sg * GROUP + GROUP - 1); g++) {
+                if (rMin >= groupMax[g]) {
+                    continue;
+                }
+                for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
+                    if (rMin < upper[i]) {
+                        return true;
+                    }
                 }
             }
         }
@@ -93,6 +118,40 @@ final class Stock {
             c[z.length + i] = new Coordinate(bz + z[i], br + r[i]);
         }
         return new ConvexHull(c, factory).getConvexHull();
+    }
+
+    /**
+     * Whether a region reaches into material at all, given the region drawn a little smaller (its
+     * outline moved in by up to half the {@link #DEPTH}): a move that only runs along a face it
+     * has just cut never does, and costs no polygon boolean.
+     */
+    boolean bites(Geometry smaller) {
+        return touches(smaller);
+    }
+
+    /**
+     * A convex outline ({@code z}, {@code r}) moved toward its centre so that no point moves more
+     * than half the {@link #DEPTH}: the outline {@link #bites} is given.
+     */
+    static double[][] smaller(double[] z, double[] r) {
+        double cz = 0;
+        double cr = 0;
+        for (int i = 0; i < z.length; i++) {
+            cz += z[i] / z.length;
+            cr += r[i] / z.length;
+        }
+        double far = 0;
+        for (int i = 0; i < z.length; i++) {
+            far = Math.max(far, Math.hypot(z[i] - cz, r[i] - cr));
+        }
+        double k = far == 0 ? 1 : Math.max(0, 1 - DEPTH / 2 / far);
+        double[] sz = new double[z.length];
+        double[] sr = new double[r.length];
+        for (int i = 0; i < z.length; i++) {
+            sz[i] = cz + (z[i] - cz) * k;
+            sr[i] = cr + (r[i] - cr) * k;
+        }
+        return new double[][] {sz, sr};
     }
 
     /** A point where {@code region} reaches more than {@link #DEPTH} into material, {z, r}; null if nowhere. */
@@ -155,6 +214,13 @@ final class Stock {
             }
             groupMax[g] = m;
         }
+        for (int sg = lo / GROUP / GROUP; sg <= hi / GROUP / GROUP; sg++) {
+            double m = 0;
+            for (int g = sg * GROUP; g < Math.min(groupMax.length, sg * GROUP + GROUP); g++) {
+                m = Math.max(m, groupMax[g]);
+            }
+            superMax[sg] = m;
+        }
     }
 
     private void edges(LineString ring, int lo, int hi) {
@@ -186,16 +252,22 @@ final class Stock {
     }
 
     private int slice(double z) {
-        return (int) Math.max(0, Math.min(CELLS - 1, Math.floor((z - back) / step)));
+        return (int) Math.max(0, Math.min(slices - 1, Math.floor((z - back) / step)));
     }
 
     /** The finished part's outline: for each slice, the largest radius of material left (mm). */
     double[][] profile() {
-        double[] z = new double[CELLS];
-        double[] r = new double[CELLS];
-        for (int i = 0; i < CELLS; i++) {
-            z[i] = back + (i + 0.5) * step;
-            r[i] = upper[i];
+        int n = Math.min(slices, 4096); // the drawing needs no finer outline
+        double[] z = new double[n];
+        double[] r = new double[n];
+        int per = slices / n;
+        for (int i = 0; i < n; i++) {
+            z[i] = back + (i * per + per / 2.0) * step;
+            double m = 0;
+            for (int k = i * per; k < (i + 1) * per; k++) {
+                m = Math.max(m, upper[k]);
+            }
+            r[i] = m;
         }
         return new double[][] {z, r};
     }

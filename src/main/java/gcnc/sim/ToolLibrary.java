@@ -90,35 +90,47 @@ final class ToolLibrary {
     }
 
     /**
-     * The holder: the insert's pocket and the body above it, as wide along Z as the insert: the
-     * convex hull of the insert and a band {@link #HOLDER} mm above its highest point (no gap
-     * between insert and holder that a sweep could leave material in). It contains the insert,
-     * which does no harm: the insert's sweep is cut away before the holder is checked.
+     * The holder: the body above the insert, as wide along Z as the insert, its underside the
+     * insert's upper edges (so no gap is left between them for a sweep to miss) and its top
+     * {@link #HOLDER} mm above the insert's highest point.
      */
     private static double[][] holder(double[][] insert) {
-        double z0 = Double.MAX_VALUE;
-        double z1 = -Double.MAX_VALUE;
-        double top = -Double.MAX_VALUE;
         int n = insert[0].length;
+        Integer[] order = new Integer[n];
         for (int i = 0; i < n; i++) {
-            z0 = Math.min(z0, insert[0][i]);
-            z1 = Math.max(z1, insert[0][i]);
-            top = Math.max(top, insert[1][i]);
+            order[i] = i;
         }
-        org.locationtech.jts.geom.Coordinate[] c = new org.locationtech.jts.geom.Coordinate[n + 2];
-        for (int i = 0; i < n; i++) {
-            c[i] = new org.locationtech.jts.geom.Coordinate(insert[0][i], insert[1][i]);
+        java.util.Arrays.sort(order, (p, q) -> insert[0][p] != insert[0][q] ? Double.compare(insert[0][p], insert[0][q])
+                : Double.compare(insert[1][p], insert[1][q]));
+        // the upper chain of the insert (Andrew's monotone chain, upper half), left to right
+        java.util.List<double[]> upper = new java.util.ArrayList<>();
+        for (Integer i : order) {
+            double[] pt = {insert[0][i], insert[1][i]};
+            while (upper.size() >= 2 && cross(upper.get(upper.size() - 2), upper.get(upper.size() - 1), pt) >= 0) {
+                upper.remove(upper.size() - 1);
+            }
+            upper.add(pt);
         }
-        c[n] = new org.locationtech.jts.geom.Coordinate(z0, top + HOLDER);
-        c[n + 1] = new org.locationtech.jts.geom.Coordinate(z1, top + HOLDER);
-        org.locationtech.jts.geom.Coordinate[] hull = new org.locationtech.jts.algorithm.ConvexHull(c,
-                new org.locationtech.jts.geom.GeometryFactory()).getConvexHull().getCoordinates();
-        double[][] out = new double[2][hull.length - 1];
-        for (int i = 0; i < hull.length - 1; i++) {
-            out[0][i] = hull[i].x;
-            out[1][i] = hull[i].y;
+        double top = -Double.MAX_VALUE;
+        for (double[] pt : upper) {
+            top = Math.max(top, pt[1]);
         }
+        double z0 = upper.get(0)[0];
+        double z1 = upper.get(upper.size() - 1)[0];
+        double[][] out = new double[2][upper.size() + 2];
+        for (int i = 0; i < upper.size(); i++) {
+            out[0][i] = upper.get(i)[0];
+            out[1][i] = upper.get(i)[1];
+        }
+        out[0][upper.size()] = z1;
+        out[1][upper.size()] = top + HOLDER;
+        out[0][upper.size() + 1] = z0;
+        out[1][upper.size() + 1] = top + HOLDER;
         return out;
+    }
+
+    private static double cross(double[] o, double[] a, double[] b) {
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
     }
 
     private static Shape counts(double[][] mm, double kx, double kz) {
