@@ -53,7 +53,8 @@ public final class BlockDraft {
     public int function = NONE;
     /** The spindle M (3, 4, 19) applied before this block's motion, or NONE. */
     public int spindleBefore = NONE;
-    public boolean g96;
+    /** The block's G96 word (its S is then a surface speed), or null. */
+    public Word g96;
     public final List<MCall> before = new ArrayList<>(2);
     /** M words whose function needs an output that the machine profile does not give (E113). */
     public final List<Word> unpowered = new ArrayList<>(1);
@@ -198,12 +199,69 @@ public final class BlockDraft {
 
     public static final Letter[] MOTION_WORDS = {Letter.X, Letter.Z, Letter.U, Letter.W, Letter.R, Letter.I, Letter.K};
 
+    /**
+     * The word written right after {@code w} with no space between them, or null. Only a number
+     * can end a word, so an O there is a zero typed as a letter inside that number ({@code Z-1O0}).
+     */
+    public Word gluedAfter(Word w) {
+        List<Word> ws = block.words();
+        for (int i = 0; i + 1 < ws.size(); i++) {
+            if (ws.get(i) == w) {
+                Word next = ws.get(i + 1);
+                return w.span().column() + 1 + w.number().length() == next.span().column() ? next : null;
+            }
+        }
+        return null;
+    }
+
+    /** The word written right before {@code w} with no space between them, or null. */
+    public Word gluedBefore(Word w) {
+        List<Word> ws = block.words();
+        for (int i = 1; i < ws.size(); i++) {
+            if (ws.get(i) == w) {
+                return gluedAfter(ws.get(i - 1)) == w ? ws.get(i - 1) : null;
+            }
+        }
+        return null;
+    }
+
     /** The first word of the block, where block-level errors such as 53 are reported. */
     public Span firstSpan() {
         return block.words().isEmpty() ? block.last() : block.words().get(0).span();
     }
 
-    /** Where end-of-block errors go: the last word (thesis §10). */
+    /**
+     * The block's first axis or radius word (X Z U W R I K) in the order written, or null. A block
+     * that moves under a modal G01 ({@code Z-10.}) is to blame there: it is the word that moves.
+     */
+    public Word firstMotionWord() {
+        List<Word> ws = block.words();
+        for (int i = 0; i < ws.size(); i++) {
+            Word w = ws.get(i);
+            for (Letter l : MOTION_WORDS) {
+                if (w.letter() == l && words[l.ordinal()] == w) {
+                    return w;
+                }
+            }
+        }
+        return null;
+    }
+
+    /**
+     * Where an error about the block's motion goes (a cut before M03, an arc without R): at the
+     * word that asks for the motion, its G01/G02/G03, else its first axis word. The thesis put
+     * every end-of-block error at the last word (§10), which pointed a machinist at an innocent
+     * F120. and not at the G01 that broke the rule.
+     */
+    public Span blame() {
+        if (motionWord != null) {
+            return motionWord.span();
+        }
+        Word w = firstMotionWord();
+        return w != null ? w.span() : end();
+    }
+
+    /** The last word: where an end-of-block error goes when no word is to blame (thesis §10). */
     public Span end() {
         return block.last();
     }

@@ -231,7 +231,8 @@ public final class Checker {
             long n = (long) d.value(gcnc.ir.Letter.N);
             if (n >= 0 && n < Integer.MAX_VALUE) {
                 if (seenN.get((int) n)) {
-                    out.report(Diagnostic.warning(Code.E114_DUPLICATE_SEQUENCE_NUMBER, d.word(gcnc.ir.Letter.N).span(), n));
+                    Word w = d.word(gcnc.ir.Letter.N);
+                    out.report(Diagnostic.warning(Code.E114_DUPLICATE_SEQUENCE_NUMBER, w.span(), w.number()));
                 }
                 seenN.set((int) n);
             }

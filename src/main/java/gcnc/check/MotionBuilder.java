@@ -47,7 +47,7 @@ final class MotionBuilder {
         switch (d.function) {
             case 0, 1, 2, 3 -> {
                 if (axis || d.function >= 2) {
-                    end = checked(d, coordinates.target(d, from), out);
+                    end = checked(d, coordinates.target(d, from), coordinates.origin(d.next), out);
                 }
             }
             case 4 -> motions.add(new Motion.Dwell(dwellSeconds(d)));
@@ -61,7 +61,7 @@ final class MotionBuilder {
             }
             case 29 -> {
                 Point via = d.prior.g28();
-                end = checked(d, coordinates.target(d, via), out);
+                end = checked(d, coordinates.target(d, via), coordinates.origin(d.next), out);
                 if (end != null) {
                     motions.add(new Motion.Linear(true, from, via, null));
                     motions.add(new Motion.Linear(true, via, end, null));
@@ -127,13 +127,9 @@ final class MotionBuilder {
         return d.function == 1 ? new Motion.Linear(false, from, end, feed) : arcs.arc(d, from, end, feed, out);
     }
 
-    private Point checked(BlockDraft d, Point end, Diagnostics out) {
-        Word bad = coordinates.outOfTravel(d, end);
-        if (bad != null) {
-            d.fail(out, Code.E015_OUT_OF_RANGE, bad.span(), bad.letter(), bad.number());
-            return null;
-        }
-        return end;
+    /** The end point, or null after E015 when it is beyond the travel ({@code zero}: the block's coordinate zero). */
+    private Point checked(BlockDraft d, Point end, Point zero, Diagnostics out) {
+        return coordinates.beyondTravel(d, end, zero, out) ? null : end;
     }
 
     /**
@@ -151,7 +147,7 @@ final class MotionBuilder {
         Point zero = p.machineZero();
         double x = d.has(Letter.X) ? zero.x() + d.value(Letter.X) * coordinates.perX(d.units) : from.x();
         double z = d.has(Letter.Z) ? zero.z() + d.value(Letter.Z) * coordinates.perZ(d.units) : from.z();
-        return checked(d, new Point(x, z), out);
+        return checked(d, new Point(x, z), zero, out);
     }
 
     private static boolean has(BlockDraft d, Letter a, Letter b) {

@@ -155,6 +155,12 @@ public enum Code {
     E117_G53_ABSOLUTE_ONLY(117),
     /** Checker (note): the finding before it occurs only with the block delete switch in the other position. */
     E118_BLOCK_DELETE_VARIANT(118),
+    /** Checker: an rpm above the machine's spindle.max_rpm (E015 is the travel's: the two need different words). */
+    E119_S_ABOVE_MACHINE_MAXIMUM(119),
+    /** Parser: the letter O typed for a zero inside a number (Z-3O.), with the number it surely meant. */
+    E120_LETTER_O_IN_NUMBER(120),
+    /** Parser: a decimal comma (Z-30,5), with the number written with a point. */
+    E121_DECIMAL_COMMA(121),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

@@ -24,12 +24,15 @@ import org.antlr.v4.runtime.Token;
  * (a Fanuc macro character, error 111, takes the place of any earlier one); the line then comes
  * back {@code malformed} with the words read before its first bad token, and the next line is read
  * normally. The rest of a bad line is still tokenised, only so that a comment opened
- * there is followed onto the next lines.
+ * there is followed onto the next lines. Where a typing slip explains the error (the letter O
+ * for a zero, a decimal comma: {@link Slips}), the hint that names the fix takes its place.
  */
 public final class BlockReader {
     private final LineSource source;
     private final Diagnostics diagnostics;
     private final LineCharStream stream = new LineCharStream();
+    /** The lexer's view of a line with its typing slips fixed ({@link #slip}). */
+    private final LineCharStream probe = new LineCharStream();
     /** Made on the first line the fast scanner leaves to it: most programs never load ANTLR. */
     private GCodeLexer lexer;
     private final List<Word> words = new ArrayList<>();
@@ -89,10 +92,12 @@ public final class BlockReader {
         words.clear();
         blockDelete = 0;
         inComment = false;
+        boolean startsInComment = open;
         for (int from = 0; from >= 0; open = true) {
             from = lexSegment(from, open);
         }
         if (errorAt != null) {
+            slip(startsInComment);
             diagnostics.error(errorCode, errorAt, errorArgs);
         } else if (words.isEmpty()) {
             return null; // blank, comments, a lone '/'
@@ -103,6 +108,41 @@ public final class BlockReader {
 
     private Span lastSpan() {
         return words.get(words.size() - 1).span();
+    }
+
+    /**
+     * Puts a hint in the place of the line's error when a typing slip explains it (errors 120 and
+     * 121, {@link Slips}): the error lies in a word with the letter O in its number or a decimal
+     * comma, and the line, with its slips fixed, reads cleanly. A macro line stays error 111.
+     */
+    private void slip(boolean open) {
+        if (errorCode == Code.E111_MACRO_NOT_SUPPORTED_YET) {
+            return;
+        }
+        int end = source.length();
+        char[] fixed = java.util.Arrays.copyOf(source.chars(), end);
+        Slips.Slip s = Slips.find(fixed, end, open, errorAt.column() - 1);
+        if (s != null && readsCleanly(fixed, end, open)) {
+            errorAt = Span.of(source.number(), s.at() + 1);
+            errorCode = s.code();
+            errorArgs = new Object[] {s.written(), s.meant()};
+        }
+    }
+
+    /** Whether the lexer finds no error token in {@code text[0, end)} (the grammar's verdict on a fixed line). */
+    private boolean readsCleanly(char[] text, int end, boolean open) {
+        probe.reset(text, 0, end, open);
+        lexer.setInputStream(probe);
+        for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
+            switch (t.getType()) {
+                case GCodeLexer.BARE_LETTER, GCodeLexer.TEXT, GCodeLexer.NOT_INTEGER, GCodeLexer.BAD_NUMBER,
+                        GCodeLexer.MACRO, GCodeLexer.STRAY, GCodeLexer.ILLEGAL, GCodeLexer.NESTED_COMMENT -> {
+                    return false;
+                }
+                default -> { }
+            }
+        }
+        return true;
     }
 
     /**

@@ -38,7 +38,7 @@ class BlockChecksTest {
 
     @Test
     void eb03() {
-        assertEquals("1:5:E042", Run.generic("G29 U0.\nM30").errors());
+        assertEquals("1:1:E042", Run.generic("G29 U0.\nM30").errors());
         assertEquals("", Run.generic("G28 U0.\nG00 X40.\nG29 X40.\nM30").errors());
     }
 
@@ -46,12 +46,12 @@ class BlockChecksTest {
     void eb04() {
         assertEquals("1:1:E030", Run.generic("G04\nM30").errors());
         assertEquals("1:1:E031", Run.generic("G50\nM30").errors());
-        assertEquals("6:10:E049", Run.generic(PRE + "G02 X46. F100.\nM30").errors());
+        assertEquals("6:1:E049", Run.generic(PRE + "G02 X46. F100.\nM30").errors());
     }
 
     @Test
     void eb05() {
-        assertEquals("1:9:E035", Run.generic("G01 G04 X1.\nM30").errors());
+        assertEquals("1:5:E035", Run.generic("G01 G04 X1.\nM30").errors());
     }
 
     @Test
@@ -71,11 +71,11 @@ class BlockChecksTest {
 
     @Test
     void eb08() {
-        assertEquals("6:5:E039", Run.generic(PRE + "G01 X40.\nM30").errors());
-        assertEquals("4:10:E038", Run.generic("G21 G90 G98\nG50 S2500\nS1200 M03\nG01 X40. F100.\nM30").errors());
-        assertEquals("3:10:E051", Run.generic("G50 S2500\nM11\nG01 X40. F100.\nM30").errors());
-        assertEquals("4:10:E037", Run.generic("G50 S2500\nM11\nM05\nG01 X40. F100.\nM30").errors());
-        assertEquals("3:10:E041", Run.generic("M11\nM03\nG01 X40. F100.\nM30").errors());
+        assertEquals("6:1:E039", Run.generic(PRE + "G01 X40.\nM30").errors());
+        assertEquals("4:1:E038", Run.generic("G21 G90 G98\nG50 S2500\nS1200 M03\nG01 X40. F100.\nM30").errors());
+        assertEquals("3:1:E051", Run.generic("G50 S2500\nM11\nG01 X40. F100.\nM30").errors());
+        assertEquals("4:1:E037", Run.generic("G50 S2500\nM11\nM05\nG01 X40. F100.\nM30").errors());
+        assertEquals("3:1:E041", Run.generic("M11\nM03\nG01 X40. F100.\nM30").errors());
         // M03 and M11 in the cutting block itself are applied before its motion
         assertEquals("", Run.generic("G50 S2500\nG01 X40. F100. M11 M03\nM30").errors());
         // M05 in the cutting block is applied after it

@@ -71,7 +71,7 @@ class ControlRulesTest {
     @Test
     void theChuckIsClosedByTheOperatorExceptOnTheThesisControl() {
         String p = "G50 S2500\nS1000 M03\n" + CUT + "M30\n";
-        assertEquals("5:10:E038, 5:10:E115", check("generic", "thesis-2004", "G21 G90 G98\n" + p.replace("F0.2", "F100.")));
+        assertEquals("5:1:E038, 5:1:E115", check("generic", "thesis-2004", "G21 G90 G98\n" + p.replace("F0.2", "F100.")));
         assertEquals("", check("generic", "fanuc-a", p));
         assertEquals("", check("generic", "haas", p));
     }
@@ -81,7 +81,7 @@ class ControlRulesTest {
         // fanuc: M10 opens the chuck; haas: M11 unclamps it (M10 clamps)
         assertEquals("5:1:E040", check("generic", "fanuc-a", "S1000 M03\n" + CUT + "M10\nM30\n"));
         assertEquals("5:1:E040", check("generic", "haas", "S1000 M03\n" + CUT + "M11\nM30\n"));
-        assertEquals("4:10:E038", check("generic", "haas", "M11\nS1000 M03\n" + CUT + "M30\n").split(", ")[0]);
+        assertEquals("4:1:E038", check("generic", "haas", "M11\nS1000 M03\n" + CUT + "M30\n").split(", ")[0]);
         assertEquals("", check("generic", "haas", "M10\nS1000 M03\n" + CUT + "M30\n"));
     }
 
@@ -96,11 +96,11 @@ class ControlRulesTest {
 
     @Test
     void sWithoutAG50ClampIsClampedByTheMachine() {
-        assertEquals("1:7:E050", check("generic", "thesis-2004", "S1000 M03\nM30\n"));
+        assertEquals("1:1:E050", check("generic", "thesis-2004", "S1000 M03\nM30\n"));
         assertEquals("", check("generic", "haas", "S1000 M03\n" + CUT + "M30\n"));
         // the generic machine turns at most 4000 rpm
-        assertEquals("1:1:E015", check("generic", "haas", "S5000 M03\nM30\n"));
-        assertEquals("2:7:E048", check("generic", "haas", "G50 S2000\nS2500 M03\nM30\n"));
+        assertEquals("1:1:E119", check("generic", "haas", "S5000 M03\nM30\n"));
+        assertEquals("2:1:E048", check("generic", "haas", "G50 S2000\nS2500 M03\nM30\n"));
     }
 
     @Test
@@ -150,7 +150,7 @@ class ControlRulesTest {
         assertEquals("2:1:E030", check("generic", "thesis-2004", "G00 X42. Z2.\nG28\nM30\n"));
         assertEquals("", check("generic", "haas", "G28 G00 U0 W0\nM30\n"));
         assertEquals("", check("generic", "thesis-2004", "G28 G00 U0 W0\nM30\n"));
-        assertEquals("1:12:E035", check("generic", "haas", "G28 G01 U0 W0\nM30\n").split(", ")[0]);
+        assertEquals("1:5:E035", check("generic", "haas", "G28 G01 U0 W0\nM30\n").split(", ")[0]);
     }
 
     @Test
@@ -178,7 +178,7 @@ class ControlRulesTest {
     void bothPositionsOfTheBlockDeleteSwitchAreChecked() {
         // switch off (as compiled): the block runs and the cut is clean; switch on: no spindle for the cut
         String p = "G00 X42. Z2.\n/S1000 M03\nG01 X40. F0.2\nM30\n";
-        assertEquals("3:10:E051, 3:10:E118", check("generic", "haas", p));
+        assertEquals("3:1:E051, 3:1:E118", check("generic", "haas", p));
         assertTrue(messages("generic", "haas", p).contains("note[E118]: this occurs with the block delete switch on"),
                 messages("generic", "haas", p));
         // an error in the deleted block itself is found with the switch off
@@ -248,13 +248,13 @@ class ControlRulesTest {
         String p = String.join("\n", "O1003", "N10 G21 G90 G99", "N20 G50 S2500", "N30 M11", "N40 T0101",
                 "N50 G00 X42. Z2.", "N60 G01 X40. F0.2", "N70 S3000 M03", "N80 G01 Z-30.", "N90 G01 X44. Z-31.",
                 "N100 G02 X50. Z-60. R3.", "N110 G00 X300. Z5.", "N120 M05", "N130 M30");
-        assertEquals("7:14:E051, 8:11:E048, 11:21:E101, 12:10:E015", check("generic", "thesis-2004", p));
+        assertEquals("7:5:E051, 8:5:E048, 11:21:E101, 12:10:E015", check("generic", "thesis-2004", p));
     }
 
     @Test
     void aSpindleNeverStartedIsOneErrorWithANote() {
         String p = "G00 X42. Z2.\nG01 X40. F0.2\nG01 Z-10.\nG01 X44.\nG00 Z2.\nG01 X38.\nM30\n";
-        assertEquals("2:10:E051, 2:10:E115", check("generic", "haas", p));
+        assertEquals("2:1:E051, 2:1:E115", check("generic", "haas", p));
         assertTrue(messages("generic", "haas", p).contains("note[E115]: 3 later blocks have the same cause (lines 3, 4, 6)"),
                 messages("generic", "haas", p));
     }

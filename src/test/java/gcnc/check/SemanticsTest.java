@@ -183,7 +183,7 @@ class SemanticsTest {
     @Test
     void aCutThatBreaksOnlyAPrerequisiteStillSetsTheState() {
         Run r = Run.generic("G21 G90 G98\nG50 S2500\nT0101\nS1200 M03\nG01 X40. Z1. F100.\nM11\nG01 Z-10.\nM30");
-        assertEquals("5:14:E038", r.errors());
+        assertEquals("5:1:E038", r.errors());
         ModalState s = r.checker.state();
         assertEquals(100, s.feed());
         assertEquals(1, s.motion());
@@ -195,7 +195,7 @@ class SemanticsTest {
     @Test
     void aSpeedAboveTheClampStillStartsTheSpindle() {
         Run r = Run.generic("G21 G90 G98\nG50 S2500\nM11\nT0101\nS3000 M03\nG01 X40. Z1. F100.\nM30");
-        assertEquals("5:7:E048", r.errors());
+        assertEquals("5:1:E048", r.errors());
     }
 
     @Test

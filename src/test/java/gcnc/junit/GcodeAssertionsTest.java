@@ -22,7 +22,7 @@ class GcodeAssertionsTest {
         Path p = Files.createTempFile("part", ".nc");
         Files.writeString(p, "G21 G98\nG50 S2000\nM11\nG01 X10. Z5. F100.\nG00 X20. Y5.\nM30\n");
         AssertionError e = assertThrows(AssertionError.class, () -> GcodeAssertions.assertCompilesClean(p, "generic"));
-        assertTrue(e.getMessage().contains(p + ":4:14: error[E051]"), e.getMessage());
+        assertTrue(e.getMessage().contains(p + ":4:1: error[E051]"), e.getMessage());
         assertTrue(e.getMessage().contains(p + ":5:10: error[E004]"), e.getMessage());
         GcodeAssertions.assertFindings(p, "generic", "E051", "E004");
         assertThrows(AssertionError.class, () -> GcodeAssertions.assertFindings(p, "generic", "E051"));

@@ -106,6 +106,30 @@ class BlockReaderAgreementTest {
         }
     }
 
+    /** The slip hints (120, 121) only name lines the grammar rejects anyway, the same on both paths. */
+    @Test
+    void slipHintsAreOnlyGivenForLinesTheGrammarRejects() throws IOException {
+        String src = "G01 Z-3O. F.2\nG00 Z,15\nG00 Z-30,5 (note)\nG0OX1.\nN10 G00 X1O5\nG00 X1. Z2.\n";
+        boolean[] rejected = {false};
+        grammarBlocks(src, rejected);
+        assertEquals(true, rejected[0]);
+        Parsed fast = Parsed.of(src);
+        assertEquals(List.of("1:5 E120 [Z-3O., Z-30.]", "2:5 E121 [Z,15, Z.15]", "3:5 E121 [Z-30,5, Z-30.5]",
+                "4:1 E120 [G0O, G00]"), fast.errors());
+        Diagnostics d = new Diagnostics();
+        BlockReader slow = new BlockReader(new StringReader(src), d, false);
+        List<gcnc.ir.RawBlock> blocks = new ArrayList<>();
+        for (var b = slow.next(); b != null; b = slow.next()) {
+            blocks.add(b);
+        }
+        assertEquals(blocks, fast.blocks());
+        assertEquals(d.sorted(), fast.diagnostics());
+        // X1O5 lexes (X1 and a program number O5): the grammar's to accept, the checker's to name
+        boolean[] fine = {false};
+        grammarBlocks("N10 G00 X1O5\n", fine);
+        assertEquals(false, fine[0]);
+    }
+
     @Test
     void fastPathAndLexerPathAgree() throws IOException {
         for (long seed = 1; seed <= 400; seed++) {

@@ -149,6 +149,42 @@ class BlockReaderErrorTest {
     }
 
     @Test
+    void theLetterOForAZeroIsError120WithTheNumberMeant() {
+        // without the hint: error 13 for 'O.', 6 for a bare O, 109 for 'OX1.', 10 for a stray '.'
+        expect("G01 Z-3O. F.2\n", List.of("1:5 E120 [Z-3O., Z-30.]"), List.of("1: G01 Z-3 !"));
+        expect("G01 Z-3O\n", List.of("1:5 E120 [Z-3O, Z-30]"), List.of("1: G01 Z-3 !"));
+        expect("G0OX1.\n", List.of("1:1 E120 [G0O, G00]"), List.of("1: G0 !"));
+        expect("G00 z-1o0. (rough)\n", List.of("1:5 E120 [z-1o0., z-100.]"), List.of("1: G00 Z-1 !"));
+        expect("G00 ZO\n", List.of("1:5 E120 [ZO, Z0]"), List.of("1: G00 !"));
+        expect("S1OOO M3\n", List.of("1:1 E120 [S1OOO, S1000]"), List.of("1: S1 !"));
+    }
+
+    @Test
+    void aDecimalCommaIsError121WithTheNumberWrittenWithAPoint() {
+        expect("G00 Z-30,5\n", List.of("1:5 E121 [Z-30,5, Z-30.5]"), List.of("1: G00 Z-30 !"));
+        expect("G00 Z,15\n", List.of("1:5 E121 [Z,15, Z.15]"), List.of("1: G00 !"));
+        expect("G01 X1,5 F0,2\n", List.of("1:5 E121 [X1,5, X1.5]"), List.of("1: G01 X1 !"));
+        // both slips in one word: the O first, the fix shows both
+        expect("Z-3O,5\n", List.of("1:1 E120 [Z-3O,5, Z-30.5]"), List.of("1: Z-3 !"));
+    }
+
+    @Test
+    void aSlipIsNamedOnlyWhenFixingItMakesTheLineRead() {
+        // text stays text; a thousands separator in an integer word, a comma between words and a
+        // second, unrelated error keep their own errors; a macro line stays a macro line
+        expect("GO HOME\n", List.of("1:1 E109 [GO HOME]"), List.of("1: !"));
+        expect("GOTO\n", List.of("1:1 E109 [GOTO]"), List.of("1: !"));
+        expect("S1,200\n", List.of("1:3 E010 [',']"), List.of("1: S1 !"));
+        expect("X10,Z5\n", List.of("1:4 E010 [',']"), List.of("1: X10 !"));
+        expect("Z-30,5 $\n", List.of("1:5 E010 [',']"), List.of("1: Z-30 !"));
+        expect("Z-3O. #1\n", List.of("1:7 E111 [#1]"), List.of("1: Z-3 !"));
+        // two slips on a line: the one where the lexer stumbled is named, the line reads once both are fixed
+        expect("G00 X5O (note) X1,5\n", List.of("1:5 E120 [X5O, X50]"), List.of("1: G00 X5 !"));
+        // a slip that is not where the line's error is does not take its place
+        expect("X1O5 N10 /X1\n", List.of("1:10 E010 ['/']"), List.of("1: X1 O5 N10 !"));
+    }
+
+    @Test
     void parenthesisInsideCommentIsError54AtTheInnerParenthesis() {
         expect("N10 (a (b) c) X5\nN20\n", List.of("1:8 E054 []"), List.of("1: N10 !", "2: N20"));
     }

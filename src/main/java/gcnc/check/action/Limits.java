@@ -1,6 +1,7 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
+import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
@@ -32,7 +33,8 @@ final class Limits {
         return true;
     }
 
+    /** A limit as the table writes it (0.0001, not Double's 1.0E-4). */
     private static String plain(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+        return NumberText.plain(v);
     }
 }

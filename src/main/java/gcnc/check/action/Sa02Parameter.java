@@ -59,7 +59,7 @@ public final class Sa02Parameter implements SyntaxAction {
         }
         if (l == Letter.N) {
             if (v <= d.prior.lastN() && d.functions.control().increasingN()) {
-                d.fail(out, Code.E043_LINE_NUMBER_ORDER, w.span(), (long) v, d.prior.lastN());
+                d.fail(out, Code.E043_LINE_NUMBER_ORDER, w.span(), w.number(), d.prior.lastN());
                 return;
             }
             d.next.lastN = (long) v;
@@ -87,11 +87,16 @@ public final class Sa02Parameter implements SyntaxAction {
         double last = w.letter() == Letter.X
                 ? (d.prior.position().x() - origin.x()) / d.coordinates.perX(d.units)
                 : (d.prior.position().z() - origin.z()) / d.coordinates.perZ(d.units);
-        if (Math.abs(last) >= FAR * Math.abs(read)) {
-            String unit = d.units == Units.INCH ? "in" : "mm";
-            out.report(Diagnostic.warning(Code.E107_NO_DECIMAL_POINT, w.span(), w, NumberText.plain(read), unit,
-                    NumberText.plain(literal)));
+        if (Math.abs(last) < FAR * Math.abs(read)) {
+            return;
         }
+        Word next = d.gluedAfter(w);
+        if (next != null && next.letter() == Letter.O) {
+            return; // Z-1O0: not Z-1 without its point but Z-100 with an O for a zero (E120, Sa03)
+        }
+        String unit = d.units == Units.INCH ? "in" : "mm";
+        out.report(Diagnostic.warning(Code.E107_NO_DECIMAL_POINT, w.span(), w, NumberText.plain(read), unit,
+                NumberText.plain(literal)));
     }
 
     /** A dwell P in seconds with a point (Haas {@code G04 P0.5}): above zero, Table 6's upper limit. */

@@ -10,7 +10,9 @@ import gcnc.ir.Word;
 /**
  * Thesis §4.2.2 action 3 ({@code AssUniqueParameters}): F (feed, modal, takes effect in its own
  * block) and O (program name: once, and only before the first block). The thesis had no duplicate
- * check for F; gcnc reports 7. Emits E006, E007, E008, E009, E013, E014, E033, E034.
+ * check for F; gcnc reports 7. An O written against the number before it ({@code Z-1O0}) is not
+ * a program number but the letter O typed for a zero (120). Emits E006, E007, E008, E009, E013,
+ * E014, E033, E034, E120.
  * Writes next.feed, next.named.
  */
 public final class Sa03FeedOrName implements SyntaxAction {
@@ -45,6 +47,14 @@ public final class Sa03FeedOrName implements SyntaxAction {
     }
 
     private static void name(Word w, BlockDraft d, Diagnostics out) {
+        Word before = d.gluedBefore(w);
+        if (before != null && before.letter() != Letter.O) {
+            // Z-1O5 lexes as Z-1 and a program number O5: the O is a zero typed as a letter, even in
+            // the first block (a program number stands on its own, not against a number)
+            d.fail(out, Code.E120_LETTER_O_IN_NUMBER, before.span(), before + "O" + w.number(),
+                    before + "0" + w.number());
+            return;
+        }
         if (d.prior.named() || d.has(Letter.O)) {
             d.fail(out, Code.E033_PROGRAM_NAME_TWICE, w.span());
             return;

@@ -38,15 +38,17 @@ public final class Sa04SpeedOrTool implements SyntaxAction {
             }
             return;
         }
-        int digits = w.number().length();
+        String text = w.number();
+        int digits = text.length();
         long tool = digits <= 2 ? n : n / 100;
         long offset = digits <= 2 ? n : n % 100;
+        // the messages quote the digits as written: a long T saturates when read, its text does not
         if (tool < 1 || tool > d.profile.tools()) {
-            d.fail(out, Code.E046_UNDEFINED_TOOL, w.span(), tool);
+            d.fail(out, Code.E046_UNDEFINED_TOOL, w.span(), digits <= 2 ? text : text.substring(0, digits - 2));
             return;
         }
         if (offset != 0 && d.profile.toolOffset((int) offset).isEmpty()) {
-            d.fail(out, Code.E047_TOOL_OFFSET_RANGE, w.span(), offset);
+            d.fail(out, Code.E047_TOOL_OFFSET_RANGE, w.span(), digits <= 2 ? text : text.substring(digits - 2));
             return;
         }
         d.accept(w, tool);

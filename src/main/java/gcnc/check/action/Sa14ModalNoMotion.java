@@ -31,7 +31,7 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
             d.fail(out, Code.E112_PLANE_NOT_ZX, w.span(), w);
         } else if (f.role() == GRole.CSS) {
             d.next.css = true;
-            d.g96 = true;
+            d.g96 = w;
         }
     }
 }

@@ -13,7 +13,8 @@ import java.util.Set;
  * function is the block's one-shot G, else its motion G, else (axis words only) the modal motion;
  * axis words with no motion in force are 44, a P with no function 32. Then Table 7, which was dead
  * code in the thesis (§12.1): X 21, Z 22, U 23, W 24, R 25, I 26, K 27, X with U 28, Z with W 29,
- * P 36. Emits E021-E029, E032, E036, E044. Writes d.function.
+ * P 36. Each at the word to blame: 44 at the first axis word, 32 at the P. Emits E021-E029, E032,
+ * E036, E044. Writes d.function.
  */
 public final class Eb01ParameterOwner implements BlockCheck {
     private static final Letter[] ORDER = {Letter.X, Letter.Z, Letter.U, Letter.W, Letter.R, Letter.I, Letter.K};
@@ -36,12 +37,13 @@ public final class Eb01ParameterOwner implements BlockCheck {
             d.function = d.motionG;
         } else if (mov > 0) {
             if (d.prior.motion() == BlockDraft.NONE) {
-                d.fail(out, Code.E044_NO_MOTION_G, d.end(), firstMotionWord(d));
+                Word w = d.firstMotionWord();
+                d.fail(out, Code.E044_NO_MOTION_G, w.span(), w.letter());
                 return;
             }
             d.function = d.prior.motion();
         } else if (d.has(Letter.P)) {
-            d.fail(out, Code.E032_UNASSOCIATED_PARAMETER, d.end(), Letter.P);
+            d.fail(out, Code.E032_UNASSOCIATED_PARAMETER, d.word(Letter.P).span(), Letter.P);
             return;
         }
         if (d.function != BlockDraft.NONE) {
@@ -89,14 +91,5 @@ public final class Eb01ParameterOwner implements BlockCheck {
         } else if (d.has(Letter.P) && !ok.contains(Param.P)) {
             d.fail(out, Code.E036_P_NOT_ALLOWED, d.word(Letter.P).span(), d.ownerName());
         }
-    }
-
-    private static Letter firstMotionWord(BlockDraft d) {
-        for (Letter l : BlockDraft.MOTION_WORDS) {
-            if (d.has(l)) {
-                return l;
-            }
-        }
-        return Letter.X;
     }
 }

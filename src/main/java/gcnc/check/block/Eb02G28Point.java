@@ -1,10 +1,8 @@
 package gcnc.check.block;
 
 import gcnc.check.BlockDraft;
-import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Point;
-import gcnc.ir.Word;
 
 /**
  * Thesis end-of-block operation 2: G28 remembers its intermediate point (for G29). The point is
@@ -23,9 +21,7 @@ public final class Eb02G28Point implements BlockCheck {
             return;
         }
         Point via = d.coordinates.target(d, d.prior.position());
-        Word bad = d.coordinates.outOfTravel(d, via);
-        if (bad != null) {
-            d.fail(out, Code.E015_OUT_OF_RANGE, bad.span(), bad.letter(), bad.number());
+        if (d.coordinates.beyondTravel(d, via, d.coordinates.origin(d.next), out)) {
             return;
         }
         d.next.g28 = via;

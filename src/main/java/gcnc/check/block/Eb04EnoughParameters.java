@@ -10,7 +10,8 @@ import gcnc.ir.Letter;
  * G28, G29, G53 and G92 an axis word (30; a bare G28 homes both axes where the control says so,
  * Haas); G50 (Fanuc B: G92) S or X/Z (31); G96 an S (31, gcnc: the surface speed
  * belongs with the mode); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
- * raised 52 for a missing I/K, §12.10). Emits E030, E031, E049.
+ * raised 52 for a missing I/K, §12.10). Each is reported at the function that lacks its
+ * parameters (the G04, G28, G50, G96, or the arc's G02/G03), not at the last word. Emits E030, E031, E049.
  */
 public final class Eb04EnoughParameters implements BlockCheck {
     @Override
@@ -24,30 +25,30 @@ public final class Eb04EnoughParameters implements BlockCheck {
         switch (d.function) {
             case 4 -> {
                 if (!d.has(Letter.X) && !d.has(Letter.U) && !d.has(Letter.P)) {
-                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), "G04");
+                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.oneShotWord.span(), "G04");
                 }
             }
             case 28, 29, 53, 92 -> {
                 boolean bareHome = d.function == 28 && d.functions.control().bareG28Homes();
                 if (!axis && !bareHome) {
-                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.end(), d.ownerName());
+                    d.fail(out, Code.E030_PARAMETER_EXPECTED, d.oneShotWord.span(), d.ownerName());
                 }
             }
             case 50 -> {
                 if (!axis && !d.has(Letter.S)) {
-                    d.fail(out, Code.E031_S_EXPECTED, d.end(), d.ownerName());
+                    d.fail(out, Code.E031_S_EXPECTED, d.oneShotWord.span(), d.ownerName());
                 }
             }
             case 2, 3 -> {
                 if (!d.has(Letter.R) && !d.has(Letter.I) && !d.has(Letter.K)) {
-                    d.fail(out, Code.E049_NO_ARC_RADIUS, d.end());
+                    d.fail(out, Code.E049_NO_ARC_RADIUS, d.blame());
                 }
             }
             default -> {
             }
         }
-        if (d.g96 && !d.has(Letter.S)) {
-            d.fail(out, Code.E031_S_EXPECTED, d.end(), "G96");
+        if (d.g96 != null && !d.has(Letter.S)) {
+            d.fail(out, Code.E031_S_EXPECTED, d.g96.span(), "G96");
         }
     }
 }

@@ -1,6 +1,7 @@
 package gcnc.check.block;
 
 import gcnc.check.BlockDraft;
+import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
@@ -9,10 +10,11 @@ import gcnc.ir.Word;
 /**
  * Thesis end-of-block operation 7: an S outside a G50 block needs a G50 clamp first (50) on a
  * control whose rule that is (thesis-2004; elsewhere the machine's maximum is the clamp until the
- * program sets one). Under
- * G96 it is the surface speed; otherwise an rpm that may not exceed the G50 clamp (48, which the
- * thesis never raised: it compared volts with rpm, §12.9) nor the machine (15 at the S word).
- * Emits E015, E048, E050. Writes nothing: the S takes effect in {@code MotionBuilder}, so a block
+ * program sets one). Under G96 it is the surface speed; otherwise an rpm that may not exceed the
+ * G50 clamp (48, which the thesis never raised: it compared volts with rpm, §12.9) nor the
+ * machine's maximum (E119, which names it and the machine; the thesis used 15). Every one of them
+ * is the S word's fault, so it is reported at the S word.
+ * Emits E048, E050, E119. Writes nothing: the S takes effect in {@code MotionBuilder}, so a block
  * that breaks only this check still sets its speed when the checker recovers from it.
  */
 public final class Eb07SpindleSpeed implements BlockCheck {
@@ -32,21 +34,22 @@ public final class Eb07SpindleSpeed implements BlockCheck {
             return;
         }
         double s = d.value(Letter.S);
+        Word w = d.word(Letter.S);
         boolean clamped = !Double.isNaN(d.next.rpmClamp);
         if (!clamped && d.functions.control().clampFromG50()) {
-            d.fail(out, Code.E050_S_BEFORE_G50, d.end());
+            d.fail(out, Code.E050_S_BEFORE_G50, w.span());
             return;
         }
         if (d.next.css) {
             return;
         }
-        Word w = d.word(Letter.S);
         if (clamped && s > d.next.rpmClamp) {
-            d.fail(out, Code.E048_S_ABOVE_G50, d.end(), w.number(), (long) d.next.rpmClamp);
+            d.fail(out, Code.E048_S_ABOVE_G50, w.span(), w.number(), NumberText.plain(d.next.rpmClamp));
             return;
         }
         if (s > d.profile.maxRpm()) {
-            d.fail(out, Code.E015_OUT_OF_RANGE, w.span(), Letter.S, w.number());
+            d.fail(out, Code.E119_S_ABOVE_MACHINE_MAXIMUM, w.span(), w, NumberText.plain(d.profile.maxRpm()),
+                    d.profile.name());
         }
     }
 }

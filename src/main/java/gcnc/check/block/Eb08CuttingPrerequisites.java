@@ -11,7 +11,9 @@ import gcnc.diag.Diagnostics;
  * (51 when no spindle M was ever given, 37 when it was stopped by M05/M19), G50 clamp set (41,
  * only where the control requires it). On a control where the operator closes the chuck, the
  * chuck starts closed ({@code ModalState.initial}), so 38 comes only after the program opened it.
- * The M functions applied before the motion in this same block count. Emits E037-E039, E041, E051.
+ * The M functions applied before the motion in this same block count. Each is reported at the
+ * cut's G01/G02/G03, or at its first axis word under a modal motion ({@link BlockDraft#blame}),
+ * not at the block's last word as in the thesis. Emits E037-E039, E041, E051.
  */
 public final class Eb08CuttingPrerequisites implements BlockCheck {
     @Override
@@ -31,17 +33,17 @@ public final class Eb08CuttingPrerequisites implements BlockCheck {
         }
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
         if (Double.isNaN(d.next.feed)) {
-            d.fail(out, Code.E039_FEED_NOT_SET, d.end());
+            d.fail(out, Code.E039_FEED_NOT_SET, d.blame());
         } else if (d.next.chuck != 11 && d.next.chuck != ModalState.UNKNOWN) {
-            d.fail(out, Code.E038_CHUCK_OPEN_CUT, d.end());
+            d.fail(out, Code.E038_CHUCK_OPEN_CUT, d.blame());
         } else if (spindle == ModalState.UNKNOWN) {
             return;
         } else if (spindle == BlockDraft.NONE) {
-            d.fail(out, Code.E051_SPINDLE_DIRECTION, d.end());
+            d.fail(out, Code.E051_SPINDLE_DIRECTION, d.blame());
         } else if (spindle != 3 && spindle != 4) {
-            d.fail(out, Code.E037_SPINDLE_DIRECTION_BEFORE_CUT, d.end());
+            d.fail(out, Code.E037_SPINDLE_DIRECTION_BEFORE_CUT, d.blame());
         } else if (Double.isNaN(d.next.rpmClamp) && d.functions.control().clampFromG50()) {
-            d.fail(out, Code.E041_G50_NOT_SET_BEFORE_CUT, d.end());
+            d.fail(out, Code.E041_G50_NOT_SET_BEFORE_CUT, d.blame());
         }
     }
 }

@@ -11,6 +11,7 @@ import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.machine.Axis;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Units;
 import java.util.Optional;
 
 /**
@@ -49,8 +50,9 @@ public final class Arcs {
             }
             Optional<Point> centre = ArcGeometry.centreFromRadius(from, to, r, cw, tol);
             if (centre.isEmpty()) {
-                d.fail(out, Code.E101_ARC_RADIUS_TOO_SMALL, at, d.word(Letter.R).number(),
-                        round(from.distanceTo(to) / c.perRadius(d.units)));
+                double chord = from.distanceTo(to) / c.perRadius(d.units);
+                d.fail(out, Code.E101_ARC_RADIUS_TOO_SMALL, at, d.word(Letter.R).number(), text(chord),
+                        smallestRadius(chord, r < 0, d.units));
                 return null;
             }
             // The radius from the centre, not |R|: an R a little short of half the chord (within the
@@ -64,7 +66,7 @@ public final class Arcs {
         double miss = ArcGeometry.endPointError(from, to, centre);
         Span at = d.has(Letter.I) ? d.word(Letter.I).span() : d.word(Letter.K).span();
         if (miss > tol || from.distanceTo(centre) <= tol) {
-            d.fail(out, Code.E102_ARC_END_OFF_CIRCLE, at, round(miss / p.x().countsPerMm()), TOLERANCE_MM);
+            d.fail(out, Code.E102_ARC_END_OFF_CIRCLE, at, text(miss / p.x().countsPerMm()), text(TOLERANCE_MM));
             return null;
         }
         return inTravel(d, new Motion.Arc(cw, from, to, centre, from.distanceTo(centre), feed,
@@ -97,11 +99,24 @@ public final class Arcs {
 
     private static void beyond(BlockDraft d, String axis, double counts, Axis a, Span at, Diagnostics out) {
         double perMm = a.countsPerMm();
-        d.fail(out, Code.E106_ARC_BEYOND_TRAVEL, at, axis, round(counts / perMm), round(a.min() / perMm),
-                round(a.max() / perMm));
+        d.fail(out, Code.E106_ARC_BEYOND_TRAVEL, at, axis, text(counts / perMm), text(a.min() / perMm),
+                text(a.max() / perMm));
     }
 
-    static double round(double v) {
-        return Math.round(v * 1000) / 1000.0;
+    /**
+     * The R that just spans a chord (half of it), as a word's number: rounded up to the units'
+     * last digit (0.001 mm, 0.0001 in) so that the R shown is long enough, with a decimal point
+     * (on a Fanuc-style control R15 would be 0.015 mm), and the sign of the R written (the long way
+     * round stays the long way).
+     */
+    static String smallestRadius(double chord, boolean negative, Units u) {
+        double scale = u == Units.INCH ? 1e4 : 1e3;
+        String r = NumberText.plain(Math.ceil(chord / 2 * scale - 1e-6) / scale);
+        return (negative ? "-" : "") + (NumberText.hasPoint(r) ? r : r + ".");
+    }
+
+    /** A length or speed for a message, to 0.001, as a person writes it (30.414, 60000; never 6.0E4). */
+    static String text(double v) {
+        return NumberText.plain(v, 3);
     }
 }

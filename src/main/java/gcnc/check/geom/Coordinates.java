@@ -2,9 +2,12 @@ package gcnc.check.geom;
 
 import gcnc.check.BlockDraft;
 import gcnc.check.ModalState;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.Word;
+import gcnc.machine.Axis;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 
@@ -79,15 +82,41 @@ public final class Coordinates {
         return new Point(x, z);
     }
 
-    /** The X/U or Z/W word that puts {@code end} outside the machine's travel; null when inside. */
-    public Word outOfTravel(BlockDraft d, Point end) {
-        if (!p.x().inTravel(end.x())) {
-            return axisWord(d, Letter.X, Letter.U);
+    /**
+     * Reports E015 and returns true when {@code end} is outside the machine's travel, at the X/U
+     * or Z/W word that took it there. The message gives the travel in the block's own terms (see
+     * {@link #programTravel}), so the machinist reads the limit beside the word that broke it:
+     * {@code Z-170. is beyond the Z travel -150..200 of machine generic}. {@code zero} is where the
+     * block's coordinates start: the work origin, or machine zero for G53.
+     */
+    public boolean beyondTravel(BlockDraft d, Point end, Point zero, Diagnostics out) {
+        boolean x = !p.x().inTravel(end.x());
+        if (!x && p.z().inTravel(end.z())) {
+            return false;
         }
-        if (!p.z().inTravel(end.z())) {
-            return axisWord(d, Letter.Z, Letter.W);
-        }
-        return null;
+        Word w = x ? axisWord(d, Letter.X, Letter.U) : axisWord(d, Letter.Z, Letter.W);
+        double[] travel = programTravel(x, zero, d.units);
+        d.fail(out, Code.E015_OUT_OF_RANGE, w.span(), w, x ? "X" : "Z", NumberText.plain(travel[0]),
+                NumberText.plain(travel[1]), p.name());
+        return true;
+    }
+
+    /**
+     * The travel of X ({@code x}) or Z as the block's words read it: the machine's limits (counts)
+     * measured from {@code zero} and divided by the counts per programmed unit, so X is a diameter
+     * where the machine programs diameters, in the block's units. Rounded inward to the last digit
+     * a word of those units carries (0.001 mm, 0.0001 in), so that every value shown can be reached.
+     */
+    public double[] programTravel(boolean x, Point zero, Units u) {
+        Axis a = x ? p.x() : p.z();
+        double per = x ? perX(u) : perZ(u);
+        double from = x ? zero.x() : zero.z();
+        double lo = (a.min() - from) / per;
+        double hi = (a.max() - from) / per;
+        double scale = u == Units.INCH ? 1e4 : 1e3;
+        // the 1e-6 keeps a limit that is a whole number of digits from being pushed off it by rounding noise
+        return new double[] {Math.ceil(Math.min(lo, hi) * scale - 1e-6) / scale,
+            Math.floor(Math.max(lo, hi) * scale + 1e-6) / scale};
     }
 
     /** Whether {@code end} is inside the travel of both axes. */

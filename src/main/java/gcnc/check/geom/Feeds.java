@@ -26,7 +26,7 @@ public final class Feeds {
         double f = d.next.feed;
         // counts/s for one unit/min of F: the machine's own calibration, else its encoder scale
         double perUnitPerMin = p.feedPerF() > 0 ? p.feedPerF() : p.z().countsPer(d.units) / 60;
-        Span at = d.has(Letter.F) ? d.word(Letter.F).span() : d.end();
+        Span at = d.has(Letter.F) ? d.word(Letter.F).span() : d.blame();
         double cps;
         if (d.next.feedPerRev) {
             if (!(rpm > 0)) {
@@ -38,7 +38,7 @@ public final class Feeds {
             cps = f * perUnitPerMin;
         }
         if (cps > p.maxFeed()) {
-            d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, Arcs.round(cps), Arcs.round(p.maxFeed()));
+            d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, Arcs.text(cps), Arcs.text(p.maxFeed()));
             return null;
         }
         return new Feed(f, cps);

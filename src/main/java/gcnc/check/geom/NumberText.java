@@ -83,6 +83,18 @@ public final class NumberText {
 
     /** A value as a person writes it: 0.042, 42, -1.5 (no exponent, no trailing zeros). */
     public static String plain(double v) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
         return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+    }
+
+    /** The same, rounded half up to {@code decimals} digits after the point (exactly, at any size). */
+    public static String plain(double v, int decimals) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        return java.math.BigDecimal.valueOf(v).setScale(decimals, java.math.RoundingMode.HALF_UP)
+                .stripTrailingZeros().toPlainString();
     }
 }
