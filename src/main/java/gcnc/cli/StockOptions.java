@@ -1,11 +1,10 @@
 package gcnc.cli;
 
+import gcnc.machine.MachineModel;
 import gcnc.machine.MachineProfile;
-import gcnc.sim.SimMachine;
 import gcnc.sim.SimOptions;
 import gcnc.sim.StockHeader;
 import gcnc.sim.StockSize;
-import gcnc.tables.TableException;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -29,14 +28,13 @@ final class StockOptions {
             description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws.")
     String stock;
 
-    SimOptions options(Path program, MachineProfile profile) throws BadStock, TableException, IOException {
+    SimOptions options(Path program, MachineProfile profile) throws BadStock, IOException {
         SimOptions o = SimOptions.defaults();
-        Optional<StockSize> profileStock = SimMachine.read(profile).stock();
-        double stickout = profileStock.map(StockSize::stickout).orElse(0.0);
+        double stickout = profile.model().stock().map(MachineModel.Blank::stickout).orElse(0.0);
         if (stock != null) {
             return o.withStock(parse(stock, stickout));
         }
-        if (profile.file().choice("stock.header", "use", "use", "ignore").equals("use")) {
+        if (profile.model().stockHeader()) {
             try (BufferedReader in = new BufferedReader(SourceFiles.open(program))) {
                 String first = in.readLine();
                 if (first != null) {

@@ -44,19 +44,19 @@ final class MotionChecks {
         this.machine = machine;
         this.out = out;
         this.tol = options.tolerance();
-        StockSize s = options.stock().orElse(machine == null ? null : machine.stock().orElse(null));
-        if (s != null && machine != null && !Double.isNaN(machine.chuckFace())) {
+        StockSize s = options.stock().orElse(machine.stock().orElse(null));
+        if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() + s.stickout() * profile.z().countsPerMm();
             stock = new StockProfile(face - s.length() * profile.z().countsPerMm(), face,
                     s.diameter() / 2 * profile.x().countsPerMm());
         } else {
             stock = null;
         }
-        path = options.keepPath() ? new PathRecorder(profile, machine == null ? 0 : machine.centreX()) : null;
+        path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
         conformance = new Conformance(out, path, tol);
-        toolShape = machine == null ? null : machine.defaultTool();
-        chuckBox = machine == null ? null : box(machine.chuck());
-        tailBox = machine == null ? null : box(machine.tailstock());
+        toolShape = machine.defaultTool();
+        chuckBox = box(machine.chuck());
+        tailBox = box(machine.tailstock());
         reach = reach(toolShape);
     }
 
@@ -77,9 +77,6 @@ final class MotionChecks {
     }
 
     private static double[] reach(SimMachine.ToolShape t) {
-        if (t == null) {
-            return new double[4];
-        }
         double[] b = box(t.parts());
         return new double[] {Math.min(0, b[0]), Math.max(0, b[1]), Math.min(0, b[2]), Math.max(0, b[3])};
     }
@@ -100,10 +97,8 @@ final class MotionChecks {
 
     void selectTool(int n) {
         tool = n;
-        if (machine != null) {
-            toolShape = machine.tool(n);
-            reach = reach(toolShape);
-        }
+        toolShape = machine.tool(n);
+        reach = reach(toolShape);
     }
 
     void dwell(double s) {
@@ -132,8 +127,8 @@ final class MotionChecks {
             travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
             double rMin = box[0] - centre();
-            boolean nearChuck = machine != null && near(chuckBox, box);
-            boolean nearTail = machine != null && near(tailBox, box);
+            boolean nearChuck = near(chuckBox, box);
+            boolean nearTail = near(tailBox, box);
             boolean nearStock = stock != null && stock.mayTouch(box[2], box[3], rMin, tol);
             if (poly == null && !nearChuck && !nearTail && !nearStock) {
                 continue;
@@ -148,25 +143,23 @@ final class MotionChecks {
                 if (poly != null) {
                     poly.add(b);
                 }
-                if (machine != null) {
-                    double ar = a[0] - machine.centreX();
-                    double br = b[0] - machine.centreX();
-                    if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
-                        chuckHit = true;
-                        mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
-                    }
-                    if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
-                        tailHit = true;
-                        mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
-                    }
-                    if (nearStock) {
-                        int cell = stock.cut(a[1], ar, b[1], br, tol);
-                        if (rapid && cell >= 0 && !stockHit) {
-                            stockHit = true;
-                            double z = stock.cellZ(cell);
-                            double t = b[1] == a[1] ? 0 : (z - a[1]) / (b[1] - a[1]);
-                            mark(Code.E305_SIM_RAPID_INTO_STOCK, line, new double[] {a[0] + (b[0] - a[0]) * t, z});
-                        }
+                double ar = a[0] - machine.centreX();
+                double br = b[0] - machine.centreX();
+                if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
+                    chuckHit = true;
+                    mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
+                }
+                if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
+                    tailHit = true;
+                    mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
+                }
+                if (nearStock) {
+                    int cell = stock.cut(a[1], ar, b[1], br, tol);
+                    if (rapid && cell >= 0 && !stockHit) {
+                        stockHit = true;
+                        double z = stock.cellZ(cell);
+                        double t = b[1] == a[1] ? 0 : (z - a[1]) / (b[1] - a[1]);
+                        mark(Code.E305_SIM_RAPID_INTO_STOCK, line, new double[] {a[0] + (b[0] - a[0]) * t, z});
                     }
                 }
                 a = b;
@@ -184,7 +177,7 @@ final class MotionChecks {
     }
 
     private double centre() {
-        return machine == null ? 0 : machine.centreX();
+        return machine.centreX();
     }
 
     private boolean hits(Shape[] obstacles, double az, double ar, double bz, double br) {

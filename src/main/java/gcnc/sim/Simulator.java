@@ -10,7 +10,6 @@ import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
-import gcnc.tables.TableException;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -39,14 +38,8 @@ public final class Simulator {
         this.options = options;
         this.diagnostics = diagnostics;
         this.plane = new Plane(profile);
-        SimMachine machine = null;
-        try {
-            machine = SimMachine.read(profile);
-        } catch (TableException e) {
-            diagnostics.report(e.diagnostic());
-        }
         this.outputs = new OutputState(profile);
-        this.checks = new MotionChecks(profile, machine, options, this::report);
+        this.checks = new MotionChecks(profile, SimMachine.read(profile), options, this::report);
         this.dmc = new DmcInterpreter(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
                 profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
