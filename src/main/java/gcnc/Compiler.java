@@ -138,21 +138,17 @@ public final class Compiler {
     /**
      * {@code options} with the blank of a program's first line if it is a stock header, the
      * options have no blank yet and the profile reads headers ({@code stock.header = use}); else
-     * {@code options} as they are (a broken profile is the simulator's to report).
+     * {@code options} as they are.
      */
     public static SimOptions withStockHeader(String firstLine, MachineProfile profile, SimOptions options) {
         if (options.stock().isPresent()) {
             return options;
         }
-        try {
-            if (!profile.file().choice("stock.header", "use", "use", "ignore").equals("use")) {
-                return options;
-            }
-            double stickout = gcnc.sim.SimMachine.read(profile).stock().map(gcnc.sim.StockSize::stickout).orElse(0.0);
-            return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
-        } catch (gcnc.tables.TableException e) {
+        if (!profile.model().stockHeader()) {
             return options;
         }
+        double stickout = profile.model().stock().map(gcnc.machine.MachineModel.Blank::stickout).orElse(0.0);
+        return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
     }
 
     private static void flush(List<GalilLine> lines, LineSink out) {

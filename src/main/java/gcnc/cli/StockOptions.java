@@ -1,7 +1,7 @@
 package gcnc.cli;
 
+import gcnc.machine.MachineModel;
 import gcnc.machine.MachineProfile;
-import gcnc.sim.SimMachine;
 import gcnc.sim.SimOptions;
 import gcnc.sim.StockSize;
 import gcnc.tables.TableException;
@@ -25,10 +25,9 @@ final class StockOptions {
             description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws.")
     String stock;
 
-    SimOptions options(MachineProfile profile) throws BadStock, TableException {
+SimOptions options(MachineProfile profile) throws BadStock {
         SimOptions o = SimOptions.defaults();
-        Optional<StockSize> profileStock = SimMachine.read(profile).stock();
-        double stickout = profileStock.map(StockSize::stickout).orElse(0.0);
+        double stickout = profile.model().stock().map(MachineModel.Blank::stickout).orElse(0.0);
         if (stock != null) {
             return o.withStock(parse(stock, stickout));
         }

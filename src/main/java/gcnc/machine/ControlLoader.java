@@ -20,7 +20,8 @@ import java.util.Set;
  * names the file, line and column.
  */
 public final class ControlLoader {
-    private static final Set<String> KEYS = Set.of("name", "description", "letters", "power_up", "power_up.tool",
+    /** The keys of control.cfg (tables/controls/README.md); any other is a fault, with a suggestion. */
+    private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted");
 
@@ -48,7 +49,8 @@ public final class ControlLoader {
         ProfileFile f = ProfileFile.parse(src.describe(dir + "control.cfg"), src.read(dir + "control.cfg"));
         for (String key : f.keys()) {
             if (!KEYS.contains(key)) {
-                throw f.fault(f.required(key), "unknown key '" + key + "' (the keys are in tables/controls/README.md)");
+                throw f.faultAtKey(f.required(key), "unknown key '" + key + "' (" + Spelling.suggest(key, KEYS)
+                        .map(k -> "did you mean '" + k + "'?").orElse("the keys are in tables/controls/README.md") + ")");
             }
         }
         Map<Integer, GFunction> g = gTable(Csv.parse(src.describe(dir + "g_codes.csv"), src.read(dir + "g_codes.csv")));

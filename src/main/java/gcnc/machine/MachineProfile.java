@@ -7,9 +7,9 @@ import java.util.Optional;
 
 /**
  * A lathe and its Galil controller, read from {@code tables/machines/<name>.machine}.
- * All positions and offsets are machine counts (the loader converts the file's millimetres).
- * Parts of gcnc with settings of their own (the simulator's chuck and stock) read them from
- * {@link #file()}.
+ * All positions and offsets are machine counts (the loader converts the file's millimetres);
+ * the simulator's chuck, tailstock, stock and tool outlines are in {@link #model()}. Everything
+ * here was checked when the profile was loaded ({@link ProfileLoader}).
  *
  * @param name            profile name
  * @param galilModel      controller model, e.g. DMC-4020
@@ -34,11 +34,12 @@ import java.util.Optional;
  * @param outputs         M code to the Galil output directives it becomes (e.g. 3 -> [CB4, SB3])
  * @param feedPerF        counts/s per unit/min of F, when the machine is calibrated that way
  *                        (the thesis machine: VS = F x 20); 0 = from counts per mm or inch
- * @param file            the profile text, for keys read elsewhere
+ * @param file            the profile as written (its path, and each value's place)
  * @param control         the control the machine runs (what the program's words mean)
  * @param units           G20/G21 in force at power-up (Haas setting 9), from the profile or its control
  * @param machineZero     where G53 X0 Z0 is, machine counts (the reference point unless the profile says)
  * @param chuckByProgram  the program must close the chuck before it cuts (else the operator did)
+ * @param model           the lathe's solid parts and the tools' outlines, for the simulator
  */
 public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
@@ -46,7 +47,8 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
                              double rpmPerVolt, char spindleAxis, boolean rearToolPost,
                              Map<Integer, Point> workOffsets, Map<Integer, Point> toolOffsets, int tools,
                              Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file,
-                             Control control, Units units, Point machineZero, boolean chuckByProgram) {
+                             Control control, Units units, Point machineZero, boolean chuckByProgram,
+                             MachineModel model) {
     public MachineProfile {
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);

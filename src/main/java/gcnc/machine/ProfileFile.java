@@ -3,6 +3,7 @@ package gcnc.machine;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Span;
+import gcnc.tables.Decimal;
 import gcnc.tables.TableException;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -10,16 +11,21 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalDouble;
 
 /**
  * The text of a machine profile: {@code key = value} lines, {@code #} comments (whole-line or
  * trailing), keys in any order, each at most once. Every value remembers its line and column so
- * that a bad value is reported where the user typed it. Typed readers are below; each part of
- * gcnc (checker, backend, simulator) reads the keys it owns.
+ * that a bad value is reported where the user typed it. Typed readers are below. A machine
+ * profile's keys are all read when it is loaded (ProfileLoader, MachineModel), so no part of gcnc
+ * reads one later; control.cfg has the same form (ControlLoader).
  */
 public final class ProfileFile {
-    /** A value as written, with its place. */
-    public record Entry(String key, String value, int line, int column) {
+    /**
+     * A value as written, with its place: {@code keyColumn} where the key starts (for a fault in
+     * the key itself, e.g. an unknown one), {@code column} where the value starts.
+     */
+    public record Entry(String key, String value, int line, int keyColumn, int column) {
     }
 
     private final String path;
@@ -54,7 +60,7 @@ public final class ProfileFile {
             if (map.containsKey(key)) {
                 throw fault(path, n + 1, indent + 1, "'" + key + "' given twice (first on line " + map.get(key).line() + ")");
             }
-            map.put(key, new Entry(key, value, n + 1, valueCol));
+            map.put(key, new Entry(key, value, n + 1, indent + 1, valueCol));
         }
         return new ProfileFile(path, map);
     }
@@ -117,16 +123,23 @@ public final class ProfileFile {
         return v;
     }
 
+    /** An optional value that must be greater than 0 when given. */
+    public double positive(String key, double otherwise) throws TableException {
+        return entries.containsKey(key) ? positive(key) : otherwise;
+    }
+
+    /** A finite decimal number ({@link Decimal}): NaN, infinities and hexadecimal are faults. */
     public double number(Entry e) throws TableException {
-        try {
-            double v = Double.parseDouble(e.value());
-            if (!Double.isFinite(v)) {
-                throw new NumberFormatException();
-            }
-            return v;
-        } catch (NumberFormatException x) {
-            throw fault(e, "'" + e.value() + "' is not a number (" + e.key() + ")");
+        return number(e, e.value());
+    }
+
+    /** One number written inside the value of {@code e} (a pair, a list of points). */
+    public double number(Entry e, String text) throws TableException {
+        OptionalDouble v = Decimal.parse(text.trim());
+        if (v.isEmpty()) {
+            throw fault(e, "'" + text.trim() + "' is not a number (" + e.key() + ")");
         }
+        return v.getAsDouble();
     }
 
     /** A value written as {@code a, b} (two numbers). */
@@ -135,15 +148,7 @@ public final class ProfileFile {
         if (parts.length != 2) {
             throw fault(e, "'" + e.key() + "' needs two numbers 'a, b'");
         }
-        double[] out = new double[2];
-        for (int i = 0; i < 2; i++) {
-            try {
-                out[i] = Double.parseDouble(parts[i].trim());
-            } catch (NumberFormatException x) {
-                throw fault(e, "'" + parts[i].trim() + "' is not a number (" + e.key() + ")");
-            }
-        }
-        return out;
+        return new double[] {number(e, parts[0]), number(e, parts[1])};
     }
 
     public double[] pair(String key) throws TableException {
@@ -164,8 +169,19 @@ public final class ProfileFile {
         throw fault(e, "'" + key + "' must be one of " + String.join(", ", choices) + ", not '" + e.value() + "'");
     }
 
+    /** A number for a message as a person would write it in a profile (no 1.0E7, no trailing zeros). */
+    public static String written(double v) {
+        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+    }
+
+    /** A fault in the value of {@code e}, at the value's column. */
     public TableException fault(Entry e, String message) {
         return fault(path, e.line(), e.column(), message);
+    }
+
+    /** A fault in the key of {@code e} (unknown, misplaced), at the key's column. */
+    public TableException faultAtKey(Entry e, String message) {
+        return fault(path, e.line(), e.keyColumn(), message);
     }
 
     public static TableException fault(String path, int line, int column, String message) {

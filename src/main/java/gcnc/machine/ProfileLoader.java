@@ -1,12 +1,14 @@
 package gcnc.machine;
 
+import static gcnc.machine.ProfileFile.written;
+
 import gcnc.ir.Point;
 import gcnc.tables.Offset;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
+import gcnc.tables.Utf8;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -18,10 +20,16 @@ import java.util.Map;
 /**
  * Reads and validates a machine profile. {@code --machine NAME} finds
  * {@code machines/NAME.machine} among the tables; anything with a '/' or ending in
- * {@code .machine} is a file path. Every fault names the file, line and column.
+ * {@code .machine} is a file path. Every key is read and checked here, the simulator's too
+ * ({@link MachineModel}), so that every fault names the profile's file, line and column when gcnc
+ * starts, and none is left to surface later as a finding at a line of the program
+ * (docs/profiles.md, "Checked when loaded").
  */
 public final class ProfileLoader {
     public static final String DEFAULT = "generic";
+
+    /** The largest value of a Galil register (positions, VS, VA, VD are 32-bit). */
+    private static final double REGISTER_MAX = Integer.MAX_VALUE;
 
     private ProfileLoader() {
     }
@@ -36,18 +44,23 @@ public final class ProfileLoader {
         ProfileFile f;
         if (nameOrPath.contains("/") || nameOrPath.endsWith(".machine")) {
             Path p = Path.of(nameOrPath);
-            try {
-                f = ProfileFile.parse(p.toString(), Files.readString(p, StandardCharsets.UTF_8));
-            } catch (NoSuchFileException e) {
-                throw ProfileFile.fault(p.toString(), 1, 1, "machine profile not found");
-            } catch (IOException e) {
-                throw ProfileFile.fault(p.toString(), 1, 1, e.getMessage());
-            }
+            f = ProfileFile.parse(p.toString(), readFile(p));
         } else {
             String name = "machines/" + nameOrPath + ".machine";
             f = ProfileFile.parse(tables.describe(name), tables.read(name));
         }
         return read(f, data, tables, control);
+    }
+
+    /** A profile given as a path, decoded as the tables are ({@link Utf8}). */
+    private static String readFile(Path p) throws TableException {
+        try {
+            return Utf8.decode(p.toString(), Files.readAllBytes(p));
+        } catch (NoSuchFileException e) {
+            throw ProfileFile.fault(p.toString(), 1, 1, "machine profile not found");
+        } catch (IOException e) {
+            throw ProfileFile.fault(p.toString(), 1, 1, e.getMessage());
+        }
     }
 
     public static MachineProfile read(ProfileFile f, Tables data) throws TableException {
@@ -60,16 +73,8 @@ public final class ProfileLoader {
      */
     public static MachineProfile read(ProfileFile f, Tables data, TableSource tables, String control)
             throws TableException {
-        String controlName = control != null ? control : f.text("control", "thesis-2004");
-        Control c;
-        try {
-            c = ControlLoader.load(controlName, tables);
-        } catch (TableException e) {
-            if (control == null && f.entry("control").isPresent()) {
-                throw f.fault(f.required("control"), "control '" + controlName + "': " + e.getMessage());
-            }
-            throw e;
-        }
+        ProfileKeys.check(f);
+        Control c = control(f, tables, control);
         String noPoint = f.choice("input.no_point", c.noPointLiteral() ? "literal" : "increment", "literal", "increment");
         boolean literal = noPoint.equals("literal");
         Units units = switch (f.choice("units", "", "mm", "inch")) {
@@ -81,77 +86,38 @@ public final class ProfileLoader {
                 "program", "operator").equals("program");
         Axis x = axis(f, "x");
         Axis z = axis(f, "z");
+        if (channel(x.galil()) == channel(z.galil())) {
+            throw f.fault(f.required("z.galil"), "x.galil and z.galil are the same Galil channel");
+        }
+        char spindleAxis = spindleAxis(f, x, z);
         boolean counts = f.choice("offsets.unit", "mm", "mm", "counts").equals("counts");
-        double[] home = f.pair("home");
-        Point homeCounts = new Point(home[0] * x.countsPerMm(), home[1] * z.countsPerMm());
-
-        Map<Integer, Point> work = new HashMap<>();
-        for (ProfileFile.Entry e : f.withPrefix("work.")) {
-            String g = e.key().substring(5);
-            int n = switch (g) {
-                case "G54" -> 54; case "G55" -> 55; case "G56" -> 56;
-                case "G57" -> 57; case "G58" -> 58; case "G59" -> 59;
-                default -> throw f.fault(e, "work offsets are work.G54 .. work.G59, not '" + e.key() + "'");
-            };
-            work.put(n, offset(f.pair(e), counts, x, z));
-        }
-        for (int g = 54; g <= 59; g++) {
-            work.putIfAbsent(g, Point.ORIGIN);
-        }
-
-        Map<Integer, Point> tools = new HashMap<>();
-        String toolTable = f.choice("tools.table", "none", "none", "thesis");
-        if (toolTable.equals("thesis")) {
-            List<Offset> t8 = data.toolOffsets();
-            for (int i = 0; i < t8.size(); i++) {
-                tools.put(i + 1, offset(new double[] {t8.get(i).x(), t8.get(i).z()}, counts, x, z));
-            }
-        }
-        for (ProfileFile.Entry e : f.withPrefix("tool.")) {
-            int n = positiveInt(f, e, e.key().substring(5));
-            tools.put(n, offset(f.pair(e), counts, x, z));
-        }
-        if (f.entry("tools.offsets").isPresent()) {
-            double n = f.positive("tools.offsets");
-            if (n != Math.rint(n) || n > 99) {
-                throw f.fault(f.required("tools.offsets"), "tools.offsets is a whole number of offsets, 1 to 99");
-            }
-            for (int i = 1; i <= n; i++) {
-                tools.putIfAbsent(i, Point.ORIGIN);
-            }
-        }
-        int toolCount = (int) f.number("tools.count", tools.keySet().stream().mapToInt(i -> i).max().orElse(1));
-        Point machineZero = homeCounts;
-        if (f.entry("machine_zero").isPresent()) {
-            double[] mz = f.pair("machine_zero");
-            machineZero = new Point(mz[0] * x.countsPerMm(), mz[1] * z.countsPerMm());
-        }
-
-        Map<Integer, List<String>> outputs = new HashMap<>();
-        for (ProfileFile.Entry e : f.withPrefix("m.")) {
-            int m = positiveIntOrZero(f, e, e.key().substring(2));
-            List<String> dirs = new ArrayList<>();
-            for (String d : e.value().split(",")) {
-                String t = d.trim();
-                if (!t.matches("(SB|CB) ?[0-9]{1,3}")) {
-                    throw f.fault(e, "output directives are SBn or CBn, not '" + t + "'");
-                }
-                dirs.add(t);
-            }
-            outputs.put(m, List.copyOf(dirs));
-        }
-        String spindleAxis = f.text("spindle.axis", "C");
-        if (!spindleAxis.matches("[A-HXYZW]")) {
-            throw f.fault(f.required("spindle.axis"), "spindle.axis is one Galil channel letter (A-H, X, Y, Z, W)");
-        }
+        Point home = position(f, "home", x, z);
+        Point machineZero = f.entry("machine_zero").isPresent() ? position(f, "machine_zero", x, z) : home;
+        Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
-                literal ? 1 : 0.001, literal ? 1 : 0.0001, homeCounts,
-                f.positive("rapid.speed"), f.positive("feed.max"),
-                f.number("vector.acceleration", 256000), f.number("vector.deceleration", 256000),
-                f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis.charAt(0),
+                literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
+                register(f, "rapid.speed", "a vector speed (VS), counts/s"),
+                register(f, "feed.max", "a vector speed (VS), counts/s"),
+                register(f, "vector.acceleration", 256000, "a vector acceleration (VA), counts/s^2"),
+                register(f, "vector.deceleration", 256000, "a vector deceleration (VD), counts/s^2"),
+                f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
-                work, tools, toolCount, outputs, feedPerF(f), f, c, units, machineZero, chuckByProgram);
+                workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
+                machineZero, chuckByProgram, MachineModel.read(f));
+    }
+
+    /** The control the profile names (or {@code override}); a fault in it is also shown at the profile's key. */
+    private static Control control(ProfileFile f, TableSource tables, String override) throws TableException {
+        String name = override != null ? override : f.text("control", "thesis-2004");
+        try {
+            return ControlLoader.load(name, tables);
+        } catch (TableException e) {
+            if (override == null && f.entry("control").isPresent()) {
+                throw f.fault(f.required("control"), "control '" + name + "': " + e.getMessage());
+            }
+            throw e;
+        }
     }
 
     private static double feedPerF(ProfileFile f) throws TableException {
@@ -162,40 +128,183 @@ public final class ProfileLoader {
     }
 
     private static Axis axis(ProfileFile f, String a) throws TableException {
-        String letter = f.text(a + ".galil");
-        if (!letter.matches("[A-HXYZW]")) {
-            throw f.fault(f.required(a + ".galil"), a + ".galil is one Galil channel letter (A-H, X, Y, Z, W)");
-        }
+        char letter = channelLetter(f, a + ".galil", null);
         double perMm = f.positive(a + ".counts_per_mm");
-        double perInch = f.number(a + ".counts_per_inch", perMm * 25.4);
+        double perInch = f.positive(a + ".counts_per_inch", perMm * 25.4);
         double sign = f.number(a + ".sign", 1);
         if (sign != 1 && sign != -1) {
             throw f.fault(f.required(a + ".sign"), a + ".sign is 1 or -1");
         }
-        double[] travel = f.pair(a + ".travel");
+        ProfileFile.Entry te = f.required(a + ".travel");
+        double[] travel = f.pair(te);
         if (travel[0] >= travel[1]) {
-            throw f.fault(f.required(a + ".travel"), a + ".travel is 'min, max' with min < max");
+            throw f.fault(te, a + ".travel is 'min, max' with min < max");
         }
-        return new Axis(letter.charAt(0), perMm, perInch, (int) sign, travel[0] * perMm, travel[1] * perMm);
+        for (double end : travel) {
+            if (Math.abs(end * perMm) > REGISTER_MAX) {
+                throw f.fault(te, a + ".travel " + written(end) + " mm is " + written(Math.rint(end * perMm))
+                        + " counts: beyond the 32-bit position register of the controller");
+            }
+        }
+        return new Axis(letter, perMm, perInch, (int) sign, travel[0] * perMm, travel[1] * perMm);
     }
 
-    private static Point offset(double[] v, boolean counts, Axis x, Axis z) {
-        return counts ? new Point(v[0], v[1]) : new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm());
+    /** One Galil channel letter; {@code otherwise} when the key is absent (null: required). */
+    private static char channelLetter(ProfileFile f, String key, String otherwise) throws TableException {
+        String letter = otherwise == null ? f.text(key) : f.text(key, otherwise);
+        if (!letter.matches("[A-HXYZW]")) {
+            throw f.fault(f.required(key), key + " is one Galil channel letter (A-H, X, Y, Z, W)");
+        }
+        return letter.charAt(0);
     }
 
-    private static int positiveInt(ProfileFile f, ProfileFile.Entry e, String s) throws TableException {
-        int n = positiveIntOrZero(f, e, s);
-        if (n < 1) {
-            throw f.fault(e, "numbers in '" + e.key() + "' start at 1");
+    /** The spindle's OF channel, which cannot be one of the two that move the tool. */
+    private static char spindleAxis(ProfileFile f, Axis x, Axis z) throws TableException {
+        char s = channelLetter(f, "spindle.axis", "C");
+        for (Axis a : new Axis[] {x, z}) {
+            if (channel(s) == channel(a.galil())) {
+                throw f.fault(f.required("spindle.axis"), "spindle.axis " + s + " is the channel that drives lathe "
+                        + (a == x ? "X" : "Z") + " (" + (a == x ? "x" : "z") + ".galil = " + a.galil() + ")");
+            }
+        }
+        return s;
+    }
+
+    /** A Galil channel's number: X, Y, Z, W are the first four channels, A, B, C, D. */
+    private static int channel(char letter) {
+        int xyzw = "XYZW".indexOf(letter);
+        return xyzw >= 0 ? xyzw : letter - 'A';
+    }
+
+    /**
+     * A machine position {@code x, z} in mm (home, machine_zero), in counts. It must be inside the
+     * travel: the machine cannot start at, or return to, a place its axes cannot reach.
+     */
+    private static Point position(ProfileFile f, String key, Axis x, Axis z) throws TableException {
+        ProfileFile.Entry e = f.required(key);
+        double[] v = f.pair(e);
+        inTravel(f, e, "x", v[0]);
+        inTravel(f, e, "z", v[1]);
+        return new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm());
+    }
+
+    private static void inTravel(ProfileFile f, ProfileFile.Entry e, String axis, double mm) throws TableException {
+        double[] travel = f.pair(axis + ".travel");
+        if (mm < travel[0] || mm > travel[1]) {
+            throw f.fault(e, "'" + e.key() + "' " + axis.toUpperCase() + " " + written(mm) + " is outside " + axis
+                    + ".travel (" + written(travel[0]) + " .. " + written(travel[1]) + ")");
+        }
+    }
+
+    /**
+     * A value the backend writes into a 32-bit Galil register (VS, VA, VD): below 1 it rounds to
+     * 0, which the controller refuses, above 2^31 - 1 it does not fit. Either way every move, or
+     * the program's header, would fail at a line of the program.
+     */
+    private static double register(ProfileFile f, String key, String what) throws TableException {
+        ProfileFile.Entry e = f.required(key);
+        double v = f.positive(key);
+        if (v < 1 || v > REGISTER_MAX) {
+            throw f.fault(e, "'" + key + "' is " + what + ": 1 to " + written(REGISTER_MAX) + ", not " + written(v));
+        }
+        return v;
+    }
+
+    private static double register(ProfileFile f, String key, double otherwise, String what) throws TableException {
+        return f.entry(key).isPresent() ? register(f, key, what) : otherwise;
+    }
+
+    private static Map<Integer, Point> workOffsets(ProfileFile f, boolean counts, Axis x, Axis z) throws TableException {
+        Map<Integer, Point> work = new HashMap<>();
+        for (ProfileFile.Entry e : f.withPrefix("work.")) {
+            int g = Integer.parseInt(e.key().substring("work.G".length())); // ProfileKeys: work.G54 .. work.G59
+            work.put(g, offset(f.pair(e), counts, x, z));
+        }
+        for (int g = 54; g <= 59; g++) {
+            work.putIfAbsent(g, Point.ORIGIN);
+        }
+        return work;
+    }
+
+    private static Map<Integer, Point> toolOffsets(ProfileFile f, Tables data, boolean counts, Axis x, Axis z)
+            throws TableException {
+        Map<Integer, Point> tools = new HashMap<>();
+        String toolTable = f.choice("tools.table", "none", "none", "thesis");
+        if (toolTable.equals("thesis")) {
+            List<Offset> t8 = data.toolOffsets();
+            for (int i = 0; i < t8.size(); i++) {
+                tools.put(i + 1, offset(new double[] {t8.get(i).x(), t8.get(i).z()}, counts, x, z));
+            }
+        }
+        Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
+        for (ProfileFile.Entry e : f.withPrefix("tool.")) {
+            int n = numberOf(f, e, "tool.", seen);
+            if (n < 1) {
+                throw f.faultAtKey(e, "tool offsets are numbered from 1: T0101 is tool 1, offset 1 ('" + e.key() + "')");
+            }
+            tools.put(n, offset(f.pair(e), counts, x, z));
+        }
+        if (f.entry("tools.offsets").isPresent()) {
+            int n = whole(f, "tools.offsets", "tools.offsets is a whole number of offsets, 1 to 99");
+            for (int i = 1; i <= n; i++) {
+                tools.putIfAbsent(i, Point.ORIGIN);
+            }
+        }
+        return tools;
+    }
+
+    /** Turret stations: T numbers 1..count; by default the highest tool offset number. */
+    private static int toolCount(ProfileFile f, Map<Integer, Point> tools) throws TableException {
+        if (f.entry("tools.count").isEmpty()) {
+            return tools.keySet().stream().mapToInt(i -> i).max().orElse(1);
+        }
+        return whole(f, "tools.count", "tools.count is a whole number of turret stations, 1 to 99");
+    }
+
+    /** A count of tools or offsets, which T's two-digit fields bound to 1..99. */
+    private static int whole(ProfileFile f, String key, String rule) throws TableException {
+        ProfileFile.Entry e = f.required(key);
+        double n = f.number(e);
+        if (n != Math.rint(n) || n < 1 || n > 99) {
+            throw f.fault(e, rule + ", not " + written(n));
+        }
+        return (int) n;
+    }
+
+    private static Map<Integer, List<String>> outputs(ProfileFile f) throws TableException {
+        Map<Integer, List<String>> outputs = new HashMap<>();
+        Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
+        for (ProfileFile.Entry e : f.withPrefix("m.")) {
+            int m = numberOf(f, e, "m.", seen);
+            List<String> dirs = new ArrayList<>();
+            for (String d : e.value().split(",")) {
+                String t = d.trim();
+                if (!t.matches("(SB|CB) ?[0-9]{1,3}")) {
+                    throw f.fault(e, "output directives are SBn or CBn, not '" + t + "'");
+                }
+                dirs.add(t);
+            }
+            outputs.put(m, List.copyOf(dirs));
+        }
+        return outputs;
+    }
+
+    /**
+     * The number that ends a numbered key ({@code tool.3}, {@code m.03}; ProfileKeys has checked
+     * that it is digits). Two keys for one number are a fault rather than one silently winning.
+     */
+    private static int numberOf(ProfileFile f, ProfileFile.Entry e, String prefix, Map<Integer, ProfileFile.Entry> seen)
+            throws TableException {
+        int n = Integer.parseInt(e.key().substring(prefix.length()));
+        ProfileFile.Entry before = seen.putIfAbsent(n, e);
+        if (before != null) {
+            throw f.faultAtKey(e, "'" + e.key() + "' is number " + n + " again ('" + before.key() + "' on line "
+                    + before.line() + ")");
         }
         return n;
     }
 
-    private static int positiveIntOrZero(ProfileFile f, ProfileFile.Entry e, String s) throws TableException {
-        try {
-            return Integer.parseInt(s);
-        } catch (NumberFormatException x) {
-            throw f.fault(e, "'" + e.key() + "' must end in a number");
-        }
+    private static Point offset(double[] v, boolean counts, Axis x, Axis z) {
+        return counts ? new Point(v[0], v[1]) : new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm());
     }
 }

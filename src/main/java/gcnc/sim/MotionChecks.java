@@ -61,11 +61,11 @@ final class MotionChecks {
         } else {
             stock = null;
         }
-        path = options.keepPath() ? new PathRecorder(profile, machine == null ? 0 : machine.centreX()) : null;
+        path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
         conformance = new Conformance(out, path, tol);
-        toolShape = machine == null ? null : machine.defaultTool();
-        chuckBox = machine == null ? null : box(machine.chuck());
-        tailBox = machine == null ? null : box(machine.tailstock());
+        toolShape = machine.defaultTool();
+        chuckBox = box(machine.chuck());
+        tailBox = box(machine.tailstock());
         reach = reach(toolShape);
         outlines();
     }
@@ -109,9 +109,6 @@ final class MotionChecks {
     }
 
     private static double[] reach(SimMachine.ToolShape t) {
-        if (t == null) {
-            return new double[4];
-        }
         double[] b = box(t.parts());
         return new double[] {Math.min(0, b[0]), Math.max(0, b[1]), Math.min(0, b[2]), Math.max(0, b[3])};
     }
@@ -284,7 +281,7 @@ final class MotionChecks {
     }
 
     private double centre() {
-        return machine == null ? 0 : machine.centreX();
+        return machine.centreX();
     }
 
     private boolean hits(Shape[] obstacles, double az, double ar, double bz, double br) {

@@ -42,13 +42,11 @@ final class PathRecorder {
     Drawing drawing(SimMachine machine, Stock stock) {
         List<Shape> chuck = new ArrayList<>();
         List<Shape> tail = new ArrayList<>();
-        if (machine != null) {
-            for (Shape s : machine.chuck()) {
-                chuck.add(scale(s));
-            }
-            for (Shape s : machine.tailstock()) {
-                tail.add(scale(s));
-            }
+        for (Shape s : machine.chuck()) {
+            chuck.add(scale(s));
+        }
+        for (Shape s : machine.tailstock()) {
+            tail.add(scale(s));
         }
         if (stock == null) {
             return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks);

@@ -10,7 +10,6 @@ import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
-import gcnc.tables.TableException;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -39,15 +38,9 @@ public final class Simulator {
         this.options = options;
         this.diagnostics = diagnostics;
         this.plane = new Plane(profile);
-        SimMachine machine = null;
-        try {
-            machine = SimMachine.read(profile);
-        } catch (TableException e) {
-            diagnostics.report(e.diagnostic());
-        }
         this.outputs = new OutputState(profile);
-        this.checks = new MotionChecks(profile, machine, options, this::report);
-        if (machine != null && !checks.hasStock()) {
+        this.checks = new MotionChecks(profile, SimMachine.read(profile), options, this::report);
+        if (!checks.hasStock()) {
             // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
             diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
         }

@@ -5,6 +5,7 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Span;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.OptionalDouble;
 
 /**
  * The small CSV dialect of tables/: '#' starts a comment line, the first other line names the
@@ -52,19 +53,37 @@ public final class Csv {
             }
         }
 
+        /** A finite decimal number ({@link Decimal}): NaN and infinities are faults like any other text. */
         public double decimal(String column) throws TableException {
             String v = get(column);
-            try {
-                return Double.parseDouble(v);
-            } catch (NumberFormatException e) {
+            OptionalDouble d = Decimal.parse(v);
+            if (d.isEmpty()) {
                 throw fault(path, line, columns[header.indexOf(column)], "'" + v + "' is not a number (" + column + ")");
             }
+            return d.getAsDouble();
         }
 
         /** Reports a fault in this row's given column (for range and consistency checks). */
         public TableException faultAt(String column, String message) {
             int i = header.indexOf(column);
             return fault(path, line, i < 0 || i >= columns.length ? 1 : columns[i], message);
+        }
+
+        /**
+         * Reports a fault {@code offset} characters into the value of a column as {@link #get} returns
+         * it (trimmed), so that a fault inside a long text points at the character itself.
+         */
+        public TableException faultAt(String column, int offset, String message) {
+            int i = header.indexOf(column);
+            if (i < 0 || i >= columns.length) {
+                return faultAt(column, message);
+            }
+            String raw = fields[i];
+            int lead = 0;
+            while (lead < raw.length() && raw.charAt(lead) <= ' ') {
+                lead++;
+            }
+            return fault(path, line, columns[i] + lead + offset, message);
         }
     }
 

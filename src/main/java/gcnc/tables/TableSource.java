@@ -2,14 +2,14 @@ package gcnc.tables;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 
 /**
  * Where table files come from: the copy inside the jar, or a directory the user points at
- * with {@code --tables DIR} (an edited copy, no rebuild needed).
+ * with {@code --tables DIR} (an edited copy, no rebuild needed). Both decode with {@link Utf8}:
+ * a byte-order mark is dropped, a byte that is not UTF-8 is a located fault.
  */
 public interface TableSource {
     /** The text of the named file, e.g. {@code g_codes.csv} or {@code machines/generic.machine}. */
@@ -26,7 +26,7 @@ public interface TableSource {
                     if (in == null) {
                         throw Csv.fault(describe(name), 1, 1, "no such table in gcnc.jar");
                     }
-                    return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+                    return Utf8.decode(describe(name), in.readAllBytes());
                 } catch (IOException e) {
                     throw Csv.fault(describe(name), 1, 1, e.getMessage());
                 }
@@ -45,7 +45,7 @@ public interface TableSource {
             public String read(String name) throws TableException {
                 Path p = dir.resolve(name);
                 try {
-                    return Files.readString(p, StandardCharsets.UTF_8);
+                    return Utf8.decode(describe(name), Files.readAllBytes(p));
                 } catch (NoSuchFileException e) {
                     throw Csv.fault(describe(name), 1, 1, "file not found");
                 } catch (IOException e) {

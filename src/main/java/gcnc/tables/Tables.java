@@ -40,21 +40,40 @@ public final class Tables {
     }
 
     public static Tables load(TableSource src) throws TableException {
+        return new Tables(limits(csv(src, "parameter_limits.csv")), offsets(src, "tool_offsets.csv"),
+                offsets(src, "work_offsets.csv"), ErrorMessages.load(csv(src, "errors.csv")));
+    }
+
+    /** Table 6: one row per word; a second row for a word would silently replace the first. */
+    private static Map<Character, ParameterLimit> limits(Csv csv) throws TableException {
         Map<Character, ParameterLimit> limits = new HashMap<>();
-        for (Csv.Row r : csv(src, "parameter_limits.csv").rows()) {
+        Map<Character, Integer> lines = new HashMap<>();
+        for (Csv.Row r : csv.rows()) {
             String w = r.get("word");
             if (w.length() != 1) {
                 throw r.faultAt("word", "word must be one letter, not '" + w + "'");
             }
-            ParameterLimit l = new ParameterLimit(w.charAt(0), r.get("sign").equals("P"), r.get("type").equals("E"),
-                    r.decimal("lower"), r.decimal("upper"));
+            Integer first = lines.putIfAbsent(w.charAt(0), r.line());
+            if (first != null) {
+                throw r.faultAt("word", "word " + w + " is listed twice (first on line " + first + ")");
+            }
+            ParameterLimit l = new ParameterLimit(w.charAt(0), letter(r, "sign", "P", "N").equals("P"),
+                    letter(r, "type", "E", "D").equals("E"), r.decimal("lower"), r.decimal("upper"));
             if (l.lower() > l.upper()) {
                 throw r.faultAt("lower", "lower limit above upper limit");
             }
             limits.put(l.word(), l);
         }
-        return new Tables(limits, offsets(src, "tool_offsets.csv"), offsets(src, "work_offsets.csv"),
-                ErrorMessages.load(csv(src, "errors.csv")));
+        return limits;
+    }
+
+    /** A column that holds one of two letters: anything else would silently read as the second. */
+    private static String letter(Csv.Row r, String column, String first, String second) throws TableException {
+        String v = r.get(column);
+        if (!v.equals(first) && !v.equals(second)) {
+            throw r.faultAt(column, column + " is " + first + " or " + second + ", not '" + v + "'");
+        }
+        return v;
     }
 
     private static List<Offset> offsets(TableSource src, String name) throws TableException {

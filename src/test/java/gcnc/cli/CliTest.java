@@ -109,6 +109,21 @@ class CliTest {
         assertTrue(r.err().contains("error[E400]: 'up' is not a number (x.sign)"), r.err());
     }
 
+    /** A bad simulator key was once reported by the simulator, at the program's line of that number. */
+    @Test
+    void aSimulatorKeyFaultIsTheProfilesNeverTheProgramsLine() throws IOException {
+        Path bad = Files.createTempFile("lathe", ".machine");
+        String text = Files.readString(Path.of("tables/machines/generic.machine"))
+                + "sim.tool.default.holder = 0, 5; 20, 5; 2, 9; 20, 40; 0, 40\n";
+        Files.writeString(bad, text);
+        Run r = gcnc("simulate", "--machine", bad.toString(), "samples/turning.nc");
+        assertEquals(2, r.status(), r.err());
+        int line = text.substring(0, text.indexOf("sim.tool.default.holder")).split("\n", -1).length;
+        assertTrue(r.err().startsWith(bad + ":" + line + ":"), r.err());
+        assertTrue(r.err().contains("error[E400]: 'sim.tool.default.holder' must be a convex outline"), r.err());
+        assertFalse(r.err().contains("turning.nc"), r.err());
+    }
+
     @Test
     void unknownOptionsAndCommandsAreUsageErrors() {
         assertEquals(2, gcnc("check", "--frobnicate", "x.nc").status());

@@ -38,7 +38,8 @@ final class Fixtures {
                 base.diameterX(), base.noPointMm(), base.noPointInch(), home, base.rapidSpeed(), base.maxFeed(),
                 base.acceleration(), base.deceleration(), base.maxRpm(), base.rpmPerVolt(), base.spindleAxis(),
                 base.rearToolPost(), base.workOffsets(), base.toolOffsets(), base.tools(), base.outputs(),
-                base.feedPerF(), base.file(), base.control(), base.units(), base.machineZero(), base.chuckByProgram());
+                base.feedPerF(), base.file(), base.control(), base.units(), base.machineZero(), base.chuckByProgram(),
+                base.model());
     }
 
     static CheckedBlock motions(int line, Point end, Motion... ms) {

@@ -76,6 +76,16 @@ class ControlLoaderTest {
     }
 
     @Test
+    void aMisspeltControlKeyGetsASuggestionAtItsColumn() throws Exception {
+        Path dir = copyOf("thesis-2004");
+        Path cfg = dir.resolve("control.cfg");
+        Files.writeString(cfg, Files.readString(cfg) + "  dwell.q = seconds\n");
+        TableException e = assertThrows(TableException.class, () -> ControlLoader.load(dir.toString(), TableSource.builtIn()));
+        assertEquals("unknown key 'dwell.q' (did you mean 'dwell.p'?)", e.diagnostic().args().get(0));
+        assertEquals(3, e.diagnostic().span().column());
+    }
+
+    @Test
     void aCodeListedTwiceIsAFault() throws Exception {
         Path dir = copyOf("thesis-2004");
         Path g = dir.resolve("g_codes.csv");

@@ -5,13 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import gcnc.diag.Code;
 import gcnc.ir.Point;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 class ProfileLoaderTest {
@@ -66,12 +69,190 @@ class ProfileLoaderTest {
         assertFault(good + "x.sign = 1\n", "x.sign = 1\n", "given twice");
     }
 
-    private static void assertFault(String text, String badLine, String message) throws Exception {
+    @Test
+    void everyShippedProfileLoadsByNameAndByPath() throws Exception {
+        List<Path> files;
+        try (Stream<Path> s = Files.list(Path.of("tables/machines"))) {
+            files = s.filter(p -> p.toString().endsWith(".machine")).sorted().toList();
+        }
+        assertEquals(List.of("fanuc.machine", "generic.machine", "haas.machine", "thesis-2004.machine"),
+                files.stream().map(p -> p.getFileName().toString()).toList());
+        for (Path p : files) {
+            String name = p.getFileName().toString().replace(".machine", "");
+            assertEquals(name, load(name).name());
+            assertEquals(name, ProfileLoader.load(p.toString(), TableSource.builtIn(), TABLES).name());
+        }
+    }
+
+    // ---- numbers ----
+
+    @Test
+    void nanAndInfinityAreNotNumbers() throws Exception {
+        assertFault(GOOD.replace("home = 105, 340", "home = NaN, 340"), "home = NaN", "'NaN' is not a number (home)");
+        assertFault(GOOD.replace("x.travel = -2, 110", "x.travel = -2, Infinity"), "x.travel =",
+                "'Infinity' is not a number (x.travel)");
+        assertFault(GOOD.replace("feed.max = 50000", "feed.max = -Infinity"), "feed.max =", "not a number");
+        assertFault(GOOD.replace("spindle.max_rpm = 4000", "spindle.max_rpm = 1e999"), "spindle.max_rpm =", "not a number");
+        assertFault(GOOD.replace("sim.centre_x = 0", "sim.centre_x = 0x10"), "sim.centre_x =", "not a number");
+        assertFault(GOOD + "\nsim.tool.4.insert = NaN, 0; 6, 1; 2, 5\n", "sim.tool.4.insert", "'NaN' is not a number");
+    }
+
+    @Test
+    void countsPerMmAndInchArePositive() throws Exception {
+        assertFault(GOOD.replace("z.counts_per_mm = 1000", "z.counts_per_mm = 0"), "z.counts_per_mm", "greater than 0");
+        assertFault(GOOD.replace("x.programming", "x.counts_per_inch = -25400\nx.programming"), "x.counts_per_inch",
+                "'x.counts_per_inch' must be greater than 0");
+    }
+
+    @Test
+    void travelMustFitTheControllersPositionRegister() throws Exception {
+        assertFault(GOOD.replace("z.travel = 0, 350", "z.travel = 0, 3000000"), "z.travel",
+                "z.travel 3000000 mm is 3000000000 counts: beyond the 32-bit position register");
+    }
+
+    // ---- positions ----
+
+    @Test
+    void homeMustBeInsideTheTravel() throws Exception {
+        assertFault(GOOD.replace("home = 105, 340", "home = 105, 351"), "home =", "'home' Z 351 is outside z.travel (0 .. 350)");
+        assertFault(GOOD.replace("home = 105, 340", "home = 110.5, 340"), "home =", "'home' X 110.5 is outside x.travel");
+        assertEquals(new Point(110_000, 350_000), loadText(GOOD.replace("home = 105, 340", "home = 110, 350")).home(),
+                "the ends of the travel are inside it");
+    }
+
+    @Test
+    void machineZeroMustBeInsideTheTravel() throws Exception {
+        assertFault(GOOD.replace("home = 105, 340", "home = 105, 340\nmachine_zero = 0, -1"), "machine_zero",
+                "'machine_zero' Z -1 is outside z.travel (0 .. 350)");
+    }
+
+    // ---- the simulator's keys, checked at load time ----
+
+    @Test
+    void chuckFaceAtOrBeyondTheEndOfTheZTravelIsAFault() throws Exception {
+        assertFault(GOOD.replace("chuck.face_z = 0 ", "chuck.face_z = 350 "), "chuck.face_z",
+                "chuck.face_z 350 is at or beyond the end of z.travel (350): no tool could reach");
+        loadText(GOOD.replace("chuck.face_z = 0 ", "chuck.face_z = -100 ")); // behind the travel: the jaws are out of reach, fine
+    }
+
+    @Test
+    void aChuckIsGivenWholeOrNotAtAll() throws Exception {
+        assertFault(GOOD.replace("chuck.jaw_length = 25", "# no jaw length"), "chuck.face_z",
+                "'chuck.face_z' needs 'chuck.jaw_length' too");
+        assertFault(GOOD.replace("# tailstock.quill_diameter = 40", "tailstock.quill_diameter = 40"),
+                "tailstock.quill_diameter", "'tailstock.quill_diameter' needs 'tailstock.centre_z' too");
+    }
+
+    @Test
+    void theTailstockCentreIsInFrontOfTheJaws() throws Exception {
+        String tail = GOOD.replace("# tailstock.quill_diameter = 40", "tailstock.quill_diameter = 40");
+        assertFault(tail.replace("# tailstock.centre_z = 300", "tailstock.centre_z = -5"), "tailstock.centre_z",
+                "tailstock.centre_z -5 must be in front of chuck.face_z 0");
+        assertEquals(300, loadText(tail.replace("# tailstock.centre_z = 300", "tailstock.centre_z = 300"))
+                .model().tailstock().orElseThrow().centreZ());
+    }
+
+    @Test
+    void theBlankReachesIntoTheJaws() throws Exception {
+        assertFault(GOOD.replace("stock.stickout = 150", "stock.stickout = 200"), "stock.stickout",
+                "stock.stickout 200 must be less than stock.length 200");
+    }
+
+    @Test
+    void stockHeaderIsReadWithTheProfile() throws Exception {
+        assertFault(GOOD + "stock.header = skip\n", "stock.header", "'stock.header' must be one of use, ignore");
+        assertFalse(load("thesis-2004").model().stockHeader());
+        assertTrue(load(ProfileLoader.DEFAULT).model().stockHeader());
+    }
+
+    // ---- speeds, counts, channels ----
+
+    @Test
+    void speedsAndRatesArePositiveAndFitAGalilRegister() throws Exception {
+        assertFault(GOOD.replace("rapid.speed = 100000", "rapid.speed = 0"), "rapid.speed", "must be greater than 0");
+        assertFault(GOOD.replace("rapid.speed = 100000", "rapid.speed = 3000000000"), "rapid.speed",
+                "'rapid.speed' is a vector speed (VS), counts/s: 1 to 2147483647, not 3000000000");
+        assertFault(GOOD.replace("vector.acceleration = 1000000", "vector.acceleration = 0.4"), "vector.acceleration",
+                "1 to 2147483647, not 0.4");
+        assertFault(GOOD.replace("vector.deceleration = 1000000", "vector.deceleration = -5"), "vector.deceleration",
+                "must be greater than 0");
+        assertFault(GOOD.replace("spindle.max_rpm = 4000", "spindle.max_rpm = 0"), "spindle.max_rpm", "greater than 0");
+        assertFault(GOOD.replace("spindle.rpm_per_volt = 400", "spindle.rpm_per_volt = -400"), "spindle.rpm_per_volt",
+                "greater than 0");
+    }
+
+    @Test
+    void toolsCountIsAWholeNumberFromOne() throws Exception {
+        assertFault(GOOD.replace("tools.count = 12", "tools.count = 0"), "tools.count",
+                "tools.count is a whole number of turret stations, 1 to 99, not 0");
+        assertFault(GOOD.replace("tools.count = 12", "tools.count = 2.5"), "tools.count", "not 2.5");
+    }
+
+    @Test
+    void theAxesAndTheSpindleAreThreeChannels() throws Exception {
+        assertFault(GOOD.replace("x.galil = Y", "x.galil = A"), "z.galil", "x.galil and z.galil are the same Galil channel");
+        assertFault(GOOD.replace("spindle.axis = C", "spindle.axis = Y"), "spindle.axis",
+                "spindle.axis Y is the channel that drives lathe X (x.galil = Y)");
+    }
+
+    @Test
+    void oneNumberTwiceIsAFault() throws Exception {
+        assertFault(GOOD + "m.05 = CB1\n", "m.05", "'m.05' is number 5 again ('m.5' on line");
+        assertFault(GOOD + "sim.tool.3.insert = 0, 0; 1, 1; 0, 1\nsim.tool.03.holder = 0, 0; 1, 1; 0, 1\n",
+                "sim.tool.03", "'sim.tool.03.holder' is tool 3 again");
+    }
+
+    // ---- encoding ----
+
+    @Test
+    void aByteOrderMarkIsAccepted() throws Exception {
+        Path f = Files.createTempFile("bom", ".machine");
+        Files.write(f, concat(new byte[] {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF}, GOOD.getBytes(StandardCharsets.UTF_8)));
+        assertEquals("generic", ProfileLoader.load(f.toString(), TableSource.builtIn(), TABLES).name());
+    }
+
+    @Test
+    void aByteThatIsNotUtf8IsAFaultAtItsLineAndColumn() throws Exception {
+        Path f = Files.createTempFile("latin1", ".machine");
+        String text = GOOD.replace("name = generic", "name = torno-peque\u00f1o"); // ñ in Latin-1: one byte 0xF1
+        Files.write(f, text.getBytes(StandardCharsets.ISO_8859_1));
+        TableException e = assertThrows(TableException.class, () -> ProfileLoader.load(f.toString(), TableSource.builtIn(), TABLES));
+        assertEquals(f.toString(), e.path());
+        assertEquals(lineOf(text, "name = torno"), e.diagnostic().span().line());
+        assertEquals("name = torno-peque".length() + 1, e.diagnostic().span().column());
+        assertTrue(e.diagnostic().args().get(0).contains("byte 0xF1 is not UTF-8"), e.getMessage());
+    }
+
+    private static final String GOOD = readGeneric();
+
+    private static String readGeneric() {
+        try {
+            return Files.readString(Path.of("tables/machines/generic.machine"));
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private static MachineProfile loadText(String text) throws TableException {
+        return ProfileLoader.read(ProfileFile.parse("t.machine", text), TABLES);
+    }
+
+    private static byte[] concat(byte[] a, byte[] b) {
+        byte[] out = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
+
+    static int lineOf(String text, String badLine) {
+        return text.substring(0, text.lastIndexOf(badLine)).split("\n", -1).length;
+    }
+
+    static void assertFault(String text, String badLine, String message) throws Exception {
         Path f = Files.createTempFile("bad", ".machine");
         Files.writeString(f, text);
         TableException e = assertThrows(TableException.class, () -> ProfileLoader.load(f.toString(), TableSource.builtIn(), TABLES));
-        int line = text.substring(0, text.lastIndexOf(badLine)).split("\n", -1).length;
-        assertEquals(line, e.diagnostic().span().line(), e.getMessage());
+        assertEquals(Code.E400_TABLE, e.diagnostic().code());
+        assertEquals(lineOf(text, badLine), e.diagnostic().span().line(), e.getMessage());
         assertTrue(e.diagnostic().args().get(0).contains(message), e.diagnostic().args().toString());
     }
 }

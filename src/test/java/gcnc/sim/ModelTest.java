@@ -22,7 +22,8 @@ class ModelTest {
 
     @Test
     void stockWithoutAChuckIsALocatedProfileError() {
-        String text = SimFixture.PROFILE.replace("chuck.face_z = 0\n", "");
+        String text = SimFixture.PROFILE.replace("chuck.face_z = 0\n", "").replace("chuck.jaw_diameter = 80\n", "")
+                .replace("chuck.jaw_length = 20\n", "").replace("chuck.diameter = 120\n", "");
         TableException e = assertThrows(TableException.class, () -> read(text));
         assertEquals(Code.E400_TABLE, e.diagnostic().code());
         assertEquals(text.lines().toList().indexOf("stock.diameter = 40") + 1, e.diagnostic().span().line());

@@ -1,4 +1,4 @@
-package gcnc.sim;
+package gcnc.machine;
 
 import java.util.Locale;
 
@@ -29,8 +29,8 @@ final class ToolLibrary {
     private ToolLibrary() {
     }
 
-    /** The outline for a spec such as "C 12.7", in counts ({@code kx}, {@code kz} per mm); null if the spec is not one. */
-    static SimMachine.ToolShape shape(String spec, double kx, double kz) {
+    /** The outline for a spec such as "C 12.7", in mm from the tip; null if the spec is not one. */
+    static MachineModel.ToolOutline shape(String spec) {
         String[] p = spec.trim().split("\\s+");
         if (p.length < 2 || p.length > 3 || p[0].length() != 1) {
             return null;
@@ -62,13 +62,13 @@ final class ToolLibrary {
                 // the insert at the bar's end, its corner at the tip; the bar below it, 150 mm along +Z
                 double[][] tip = {{0, 0.4 * size, 0.4 * size, 0}, {-0.3 * size, -0.3 * size, 0, 0}};
                 double[][] bar = {{0, 150, 150, 0}, {-size, -size, -0.3 * size, -0.3 * size}};
-                return new SimMachine.ToolShape(counts(tip, kx, kz), counts(bar, kx, kz));
+                return new MachineModel.ToolOutline(outline(tip), outline(bar));
             }
             default -> {
                 return null;
             }
         }
-        return new SimMachine.ToolShape(counts(insert, kx, kz), counts(holder(insert), kx, kz));
+        return new MachineModel.ToolOutline(outline(insert), outline(holder(insert)));
     }
 
     /**
@@ -133,14 +133,8 @@ final class ToolLibrary {
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
     }
 
-    private static Shape counts(double[][] mm, double kx, double kz) {
-        double[] z = new double[mm[0].length];
-        double[] r = new double[mm[0].length];
-        for (int i = 0; i < z.length; i++) {
-            z[i] = mm[0][i] * kz;
-            r[i] = mm[1][i] * kx;
-        }
-        return new Shape(z, r);
+    private static MachineModel.Outline outline(double[][] mm) {
+        return new MachineModel.Outline(mm[0], mm[1]);
     }
 
     private static double cos(double deg) {

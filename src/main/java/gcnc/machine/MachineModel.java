@@ -1,0 +1,210 @@
+package gcnc.machine;
+
+import static gcnc.machine.ProfileFile.written;
+
+import gcnc.tables.TableException;
+import java.util.HashMap;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * The lathe's solid parts as the simulator models them (docs/simulator.md): the spindle
+ * centreline, the chuck, the tailstock, the default blank and the tools' outlines, in the
+ * profile's millimetres (machine frame, X as a radius). They are read with the rest of the profile
+ * so that a bad value is a fault at its line of the profile when gcnc starts, never an error
+ * blamed on a line of the program in the middle of a simulation.
+ *
+ * @param centreX     machine X of the spindle centreline
+ * @param chuck       the jaws and the body behind them; empty when the profile has no chuck
+ * @param tailstock   the live centre and its quill; empty when there is none
+ * @param stock       the default blank; empty when the profile gives none
+ * @param stockHeader a program's stock-header comment may give the blank ({@code stock.header = use});
+ *                    false for a profile whose frame is not real millimetres (thesis-2004)
+ * @param defaultTool outline of a tool that has none of its own
+ * @param tools       tool number to its own outline
+ */
+public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tailstock> tailstock,
+                           Optional<Blank> stock, boolean stockHeader, ToolOutline defaultTool,
+                           Map<Integer, ToolOutline> tools) {
+    public MachineModel {
+        tools = Map.copyOf(tools);
+    }
+
+    /** The jaws (from {@code faceZ - jawLength} to {@code faceZ}) and the body behind them. */
+    public record Chuck(double faceZ, double jawDiameter, double jawLength, double diameter) {
+    }
+
+    /** The live centre's tip on the axis at {@code centreZ}, then its quill toward +Z. */
+    public record Tailstock(double centreZ, double quillDiameter) {
+    }
+
+    /** A blank sticking out {@code stickout} in front of the jaws' face; its back end is in the jaws. */
+    public record Blank(double diameter, double length, double stickout) {
+    }
+
+    /** A convex polygon of (dz, dx) points from the tool tip; dx radial, + away from the centreline. */
+    public record Outline(double[] dz, double[] dx) {
+    }
+
+    /** A tool's insert and holder; {@code holder} is null when there is none (the tip-only default). */
+    public record ToolOutline(Outline insert, Outline holder) {
+    }
+
+    private static final String[] CHUCK = {"chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter"};
+    private static final String[] TAILSTOCK = {"tailstock.centre_z", "tailstock.quill_diameter"};
+    private static final String[] STOCK = {"stock.diameter", "stock.length", "stock.stickout"};
+    private static final ToolOutline TIP_ONLY = new ToolOutline(new Outline(new double[] {0}, new double[] {0}), null);
+
+    /** Reads and checks the simulator's keys of a profile whose other keys ProfileLoader has read. */
+    static MachineModel read(ProfileFile f) throws TableException {
+        Optional<Chuck> chuck = chuck(f);
+        ToolOutline def = toolOutline(f, "sim.tool.default", TIP_ONLY);
+        return new MachineModel(f.number("sim.centre_x", 0), chuck, tailstock(f, chuck), stock(f, chuck),
+                f.choice("stock.header", "use", "use", "ignore").equals("use"), def, tools(f, def));
+    }
+
+    /**
+     * The chuck, if the profile has one. Its face must be short of the end of the Z travel: a
+     * part is held in front of the jaws, and with the face at or past the end no tool could reach it.
+     */
+    private static Optional<Chuck> chuck(ProfileFile f) throws TableException {
+        if (!given(f, CHUCK)) {
+            return Optional.empty();
+        }
+        ProfileFile.Entry face = f.required("chuck.face_z");
+        double faceZ = f.number(face);
+        double zMax = f.pair("z.travel")[1];
+        if (faceZ >= zMax) {
+            throw f.fault(face, "chuck.face_z " + written(faceZ) + " is at or beyond the end of z.travel ("
+                    + written(zMax) + "): no tool could reach a part held in front of the jaws");
+        }
+        return Optional.of(new Chuck(faceZ, f.positive("chuck.jaw_diameter"), f.positive("chuck.jaw_length"),
+                f.positive("chuck.diameter")));
+    }
+
+    /** The tailstock, if any; its centre's tip must be in front of the jaws, not inside them. */
+    private static Optional<Tailstock> tailstock(ProfileFile f, Optional<Chuck> chuck) throws TableException {
+        if (!given(f, TAILSTOCK)) {
+            return Optional.empty();
+        }
+        ProfileFile.Entry centre = f.required("tailstock.centre_z");
+        double z = f.number(centre);
+        if (chuck.isPresent() && z <= chuck.get().faceZ()) {
+            throw f.fault(centre, "tailstock.centre_z " + written(z) + " must be in front of chuck.face_z "
+                    + written(chuck.get().faceZ()) + ": the centre's tip cannot be inside the jaws");
+        }
+        return Optional.of(new Tailstock(z, f.positive("tailstock.quill_diameter")));
+    }
+
+    /** The default blank, if any: measured from the chuck's face, and long enough to reach into the jaws. */
+    private static Optional<Blank> stock(ProfileFile f, Optional<Chuck> chuck) throws TableException {
+        if (!given(f, STOCK)) {
+            return Optional.empty();
+        }
+        if (chuck.isEmpty()) {
+            throw f.faultAtKey(f.required("stock.diameter"),
+                    "stock.stickout is measured from chuck.face_z: give the chuck too");
+        }
+        Blank b = new Blank(f.positive("stock.diameter"), f.positive("stock.length"), f.positive("stock.stickout"));
+        if (b.stickout() >= b.length()) {
+            throw f.fault(f.required("stock.stickout"), "stock.stickout " + written(b.stickout())
+                    + " must be less than stock.length " + written(b.length()) + ": the blank's back end is held in the jaws");
+        }
+        return Optional.of(b);
+    }
+
+    /**
+     * Whether a group of keys that only make sense together is given: all of them (true) or none
+     * (false). Part of one is a fault at the first key given, naming a missing one: a chuck without
+     * its jaws is not a smaller chuck but a mistake.
+     */
+    private static boolean given(ProfileFile f, String... group) throws TableException {
+        ProfileFile.Entry first = null;
+        String missing = null;
+        for (String key : group) {
+            Optional<ProfileFile.Entry> e = f.entry(key);
+            if (e.isPresent() && first == null) {
+                first = e.get();
+            } else if (e.isEmpty() && missing == null) {
+                missing = key;
+            }
+        }
+        if (first != null && missing != null) {
+            throw f.faultAtKey(first, "'" + first.key() + "' needs '" + missing + "' too (give all of "
+                    + String.join(", ", group) + ", or none)");
+        }
+        return first != null;
+    }
+
+    /** Per-tool outlines; a tool that gives only an insert or a holder takes the other from the default. */
+    private static Map<Integer, ToolOutline> tools(ProfileFile f, ToolOutline def) throws TableException {
+        Map<Integer, ToolOutline> tools = new HashMap<>();
+        Map<Integer, String> ids = new HashMap<>();
+        for (ProfileFile.Entry e : f.withPrefix("sim.tool.")) {
+            String id = e.key().split("\\.")[2]; // ProfileKeys checked the form: sim.tool.<id>[.insert|.holder]
+            if (id.equals("default")) {
+                continue;
+            }
+            int n = Integer.parseInt(id);
+            String before = ids.putIfAbsent(n, id);
+            if (before != null && !before.equals(id)) {
+                throw f.faultAtKey(e, "'" + e.key() + "' is tool " + n + " again (as sim.tool." + before + ")");
+            }
+            tools.put(n, toolOutline(f, "sim.tool." + id, def));
+        }
+        return tools;
+    }
+
+    private static ToolOutline toolOutline(ProfileFile f, String prefix, ToolOutline otherwise) throws TableException {
+        Optional<ProfileFile.Entry> named = f.entry(prefix);
+        if (named.isPresent()) {
+            otherwise = ToolLibrary.shape(named.get().value());
+            if (otherwise == null) {
+                throw f.fault(named.get(), "'" + prefix + "' is a tool from the library: C, D or V and the inscribed"
+                        + " circle (C 12.7), T and the edge (T 16), G or P and the width [and reach] (P 3), B and the"
+                        + " bar diameter (B 16), not '" + named.get().value() + "'");
+            }
+        }
+        Optional<ProfileFile.Entry> insert = f.entry(prefix + ".insert");
+        Optional<ProfileFile.Entry> holder = f.entry(prefix + ".holder");
+        return new ToolOutline(insert.isPresent() ? outline(f, insert.get()) : otherwise.insert(),
+                holder.isPresent() ? outline(f, holder.get()) : otherwise.holder());
+    }
+
+    /** "dz, dx; dz, dx; ..." in mm from the tip, convex (the simulator's collision test needs it). */
+    private static Outline outline(ProfileFile f, ProfileFile.Entry e) throws TableException {
+        String[] points = e.value().split(";", -1);
+        double[] dz = new double[points.length];
+        double[] dx = new double[points.length];
+        for (int i = 0; i < points.length; i++) {
+            String[] zx = points[i].split(",", -1);
+            if (zx.length != 2) {
+                throw f.fault(e, "'" + e.key() + "' is a list of 'dz, dx' points separated by ';'");
+            }
+            dz[i] = f.number(e, zx[0]);
+            dx[i] = f.number(e, zx[1]);
+        }
+        if (!convex(dz, dx)) {
+            throw f.fault(e, "'" + e.key() + "' must be a convex outline (split a concave one into insert and holder)");
+        }
+        return new Outline(dz, dx);
+    }
+
+    private static boolean convex(double[] z, double[] r) {
+        int n = z.length;
+        int sign = 0;
+        for (int i = 0; i < n && n >= 3; i++) {
+            int j = (i + 1) % n;
+            int k = (i + 2) % n;
+            double c = (z[j] - z[i]) * (r[k] - r[j]) - (r[j] - r[i]) * (z[k] - z[j]);
+            int s = c > 0 ? 1 : c < 0 ? -1 : 0;
+            if (s != 0 && sign != 0 && s != sign) {
+                return false;
+            }
+            if (s != 0) {
+                sign = s;
+            }
+        }
+        return true;
+    }
+}

@@ -1,0 +1,84 @@
+package gcnc.machine;
+
+import gcnc.tables.TableException;
+import java.util.List;
+import java.util.Optional;
+import java.util.regex.Pattern;
+
+/**
+ * Every key a machine profile may hold: the one list, so that a misspelt key is a fault at its
+ * line instead of a setting silently left at its default (a {@code x.counts_per_m} would leave the
+ * required key missing; a {@code stock.stick_out} would leave the blank where the default puts it).
+ * When a key is added to {@link ProfileLoader} or {@link MachineModel}, it is added here and to
+ * docs/profiles.md or docs/simulator.md; ProfileKeysTest holds the three together.
+ */
+final class ProfileKeys {
+    /** Keys read by name: ProfileLoader (docs/profiles.md), then MachineModel (docs/simulator.md). */
+    static final List<String> NAMED = List.of(
+            "name", "control", "units", "machine_zero", "chuck.driven_by", "galil.model",
+            "x.galil", "z.galil", "x.sign", "z.sign", "x.counts_per_mm", "z.counts_per_mm",
+            "x.counts_per_inch", "z.counts_per_inch", "x.travel", "z.travel", "x.programming",
+            "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",
+            "spindle.max_rpm", "spindle.rpm_per_volt", "spindle.axis", "tool_post", "offsets.unit",
+            "tools.table", "tools.offsets", "tools.count", "feed.per_f",
+            // the simulator's machine model
+            "sim.centre_x", "chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter",
+            "stock.diameter", "stock.length", "stock.stickout", "stock.header",
+            "tailstock.centre_z", "tailstock.quill_diameter");
+
+    /** Keys numbered or named by pattern; {@code shape} says how to write them, for the fault. */
+    record Family(String prefix, Pattern form, String shape) {
+        Family(String prefix, String form, String shape) {
+            this(prefix, Pattern.compile(form), shape);
+        }
+
+        boolean matches(String key) {
+            return form.matcher(key).matches();
+        }
+    }
+
+    static final List<Family> FAMILIES = List.of(
+            new Family("work.", "work\\.G5[4-9]", "work offsets are work.G54 .. work.G59"),
+            // T's last two digits pick the offset: 1 to 99 (tool.0 is refused by ProfileLoader, with its reason)
+            new Family("tool.", "tool\\.[0-9]{1,2}", "tool offsets are tool.<n>, n = 1 to 99"),
+            new Family("m.", "m\\.[0-9]{1,3}", "M code outputs are m.<n>, n = 0 to 999"),
+            new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
+                    "tools are sim.tool.default or sim.tool.<n> (from the library: C 12.7) and their"
+                    + " .insert/.holder outlines"));
+
+    private ProfileKeys() {
+    }
+
+    /** Faults at the first key (in file order) that gcnc does not read. */
+    static void check(ProfileFile f) throws TableException {
+        for (String key : f.keys()) {
+            if (!known(key)) {
+                throw f.faultAtKey(f.required(key), unknown(key));
+            }
+        }
+    }
+
+    static boolean known(String key) {
+        return NAMED.contains(key) || FAMILIES.stream().anyMatch(fam -> fam.matches(key));
+    }
+
+    /**
+     * The message for an unknown key: a known key within a couple of letters first (a typo), then
+     * how its family is written when it starts like one ({@code work.G60}), then a known key with
+     * the same last part ({@code lathe.home}), else where the keys are listed.
+     */
+    static String unknown(String key) {
+        String head = "unknown key '" + key + "'";
+        Optional<String> typo = Spelling.typo(key, NAMED);
+        if (typo.isPresent()) {
+            return head + " (did you mean '" + typo.get() + "'?)";
+        }
+        for (Family fam : FAMILIES) {
+            if (key.startsWith(fam.prefix())) {
+                return head + " (" + fam.shape() + ")";
+            }
+        }
+        return Spelling.sameLastPart(key, NAMED).map(k -> head + " (did you mean '" + k + "'?)")
+                .orElse(head + " (docs/profiles.md and docs/simulator.md list the keys)");
+    }
+}

@@ -1,0 +1,61 @@
+package gcnc.tables;
+
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * The one way gcnc turns the bytes of a table, control or machine profile into text: UTF-8,
+ * strictly. A byte-order mark at the start is dropped (editors on Windows write one); a byte that
+ * is not UTF-8 is a fault at its line and column, because a silently replaced character would turn
+ * a value into something else and surface later as a strange finding.
+ */
+public final class Utf8 {
+    private static final byte[] BOM = {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF};
+
+    private Utf8() {
+    }
+
+    /** The text of {@code bytes}, read from the file {@code path} (the name faults carry). */
+    public static String decode(String path, byte[] bytes) throws TableException {
+        int start = startsWithBom(bytes) ? BOM.length : 0;
+        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT);
+        ByteBuffer in = ByteBuffer.wrap(bytes, start, bytes.length - start);
+        CharBuffer out = CharBuffer.allocate(bytes.length);
+        CoderResult result = decoder.decode(in, out, true);
+        if (!result.isError()) {
+            result = decoder.flush(out);
+        }
+        out.flip();
+        if (result.isError()) {
+            // The decoder stops at the first byte of the bad sequence; out holds the text before it.
+            throw badByte(path, out, bytes[in.position()]);
+        }
+        return out.toString();
+    }
+
+    private static boolean startsWithBom(byte[] bytes) {
+        return bytes.length >= BOM.length && bytes[0] == BOM[0] && bytes[1] == BOM[1] && bytes[2] == BOM[2];
+    }
+
+    /** The fault at the place of the bad byte, counted in the characters before it as an editor shows them. */
+    private static TableException badByte(String path, CharSequence before, byte bad) {
+        int line = 1;
+        int column = 1;
+        for (int i = 0; i < before.length(); i++) {
+            if (before.charAt(i) == '\n') {
+                line++;
+                column = 1;
+            } else {
+                column++;
+            }
+        }
+        return Csv.fault(path, line, column, String.format(
+                "byte 0x%02X is not UTF-8: save the file as UTF-8", bad & 0xFF));
+    }
+}
