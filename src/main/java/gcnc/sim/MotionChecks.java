@@ -256,7 +256,7 @@ final class MotionChecks {
     }
 
     private static org.locationtech.jts.geom.Geometry union(List<org.locationtech.jts.geom.Geometry> parts) {
-        return parts.size() == 1 ? parts.get(0) : org.locationtech.jts.operation.union.UnaryUnionOp.union(parts);
+        return parts.size() == 1 ? parts.get(0) : org.locationtech.jts.operation.overlayng.OverlayNGRobust.union(parts);
     }
 
     /** Pieces of a segment for the stock: chords within half the stock's depth of an arc (a finer cut leaves no deeper scallop). */

@@ -10,6 +10,8 @@ import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.geom.LineString;
 import org.locationtech.jts.geom.Polygon;
 import org.locationtech.jts.geom.prep.PreparedGeometry;
+import org.locationtech.jts.operation.overlayng.OverlayNG;
+import org.locationtech.jts.operation.overlayng.OverlayNGRobust;
 import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
 
 /**
@@ -159,7 +161,7 @@ final class Stock {
         if (!touches(region)) {
             return null;
         }
-        Geometry overlap = material.intersection(region);
+        Geometry overlap = OverlayNGRobust.overlay(material, region, OverlayNG.INTERSECTION);
         if (overlap.isEmpty() || overlap.getArea() == 0) {
             return null;
         }
@@ -176,7 +178,7 @@ final class Stock {
         if (!touches(region)) {
             return;
         }
-        material = material.difference(region);
+        material = OverlayNGRobust.overlay(material, region, OverlayNG.DIFFERENCE);
         prepared = null;
         Envelope e = region.getEnvelopeInternal();
         refresh(slice(e.getMinX()), slice(e.getMaxX()));
