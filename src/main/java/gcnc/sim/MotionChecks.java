@@ -54,8 +54,8 @@ final class MotionChecks {
         this.tol = options.tolerance();
         this.kx = profile.x().countsPerMm();
         this.kz = profile.z().countsPerMm();
-        StockSize s = options.stock().orElse(machine == null ? null : machine.stock().orElse(null));
-        if (s != null && machine != null && !Double.isNaN(machine.chuckFace())) {
+        StockSize s = options.stock().orElse(machine.stock().orElse(null));
+        if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
             stock = new Stock(face - s.length(), face, s.diameter() / 2);
         } else {
@@ -163,8 +163,8 @@ final class MotionChecks {
             travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
             double rMin = box[0] - centre();
-            boolean nearChuck = machine != null && near(chuckBox, box);
-            boolean nearTail = machine != null && near(tailBox, box);
+            boolean nearChuck = near(chuckBox, box);
+            boolean nearTail = near(tailBox, box);
             boolean nearStock = stock != null && insertMm != null && stock.mayTouch((box[2] + reach[2]) / kz,
                     (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
             if (poly == null && !nearChuck && !nearTail && !nearStock) {
