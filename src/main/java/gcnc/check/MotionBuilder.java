@@ -50,7 +50,15 @@ final class MotionBuilder {
                     end = checked(d, coordinates.target(d, from), coordinates.origin(d.next), out);
                 }
             }
-            case 4 -> motions.add(new Motion.Dwell(dwellSeconds(d)));
+            case 4 -> {
+                double seconds = dwellSeconds(d);
+                if (seconds < 0) {
+                    Word w = d.has(Letter.P) ? d.word(Letter.P) : d.has(Letter.X) ? d.word(Letter.X) : d.word(Letter.U);
+                    d.fail(out, Code.E122_NEGATIVE_DWELL, w.span(), w);
+                    return null;
+                }
+                motions.add(new Motion.Dwell(seconds));
+            }
             case 28 -> {
                 Point via = d.next.g28;
                 Point home = p.home();

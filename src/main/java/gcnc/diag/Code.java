@@ -161,6 +161,8 @@ public enum Code {
     E120_LETTER_O_IN_NUMBER(120),
     /** Parser: a decimal comma (Z-30,5), with the number written with a point. */
     E121_DECIMAL_COMMA(121),
+    /** Checker: a G04 dwell of negative time (the backend would write WT with a negative time). */
+    E122_NEGATIVE_DWELL(122),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

@@ -105,6 +105,23 @@ class TrustTest {
         assertEquals(List.of("E316@1"), compile(machine(noStock), p));
     }
 
+    /** check and compile give one verdict: the backend's limits are found by check too. */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"G01 Z-10. F0.001|E207@8", "G04 X-1.|E122@8", "G04 P-5|E013@8"})
+    void checkFindsWhatCompileFinds(String spec) throws Exception {
+        String[] p = spec.split("\\|");
+        String program = HEAD + "G00 X46. Z2.\n" + p[0] + "\nM05\nM30\n";
+        MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
+        Compiler.Result checked = Compiler.check(new StringReader(program),
+                new Compiler.Settings(TABLES, m, "galil", Optional.empty()));
+        List<String> fromCheck = new ArrayList<>();
+        for (Diagnostic d : checked.diagnostics().sorted()) {
+            fromCheck.add(d.code().id() + "@" + d.span().line());
+        }
+        assertEquals(List.of(p[1]), fromCheck);
+        assertEquals(fromCheck, compile(program));
+    }
+
     private static MachineProfile machineWith(String line) throws Exception {
         return machine(java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/generic.machine")) + line + "\n");
     }

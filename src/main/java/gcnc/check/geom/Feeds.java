@@ -12,7 +12,8 @@ import gcnc.machine.MachineProfile;
  * F to a path speed in counts per second: G94/G98 units per minute, G95/G99 units per
  * revolution at the spindle speed of the move; a profile may calibrate F directly ({@code feed.per_f}). A feed above the profile's maximum is an error
  * (E103), not a silent clamp: the part would be cut slower than programmed. Per revolution
- * without any spindle speed is E104.
+ * without any spindle speed is E104. A feed the controller cannot give at all (under one count
+ * per second, VS 1) is E207 here already, so check and compile give one verdict.
  */
 public final class Feeds {
     private final MachineProfile p;
@@ -36,6 +37,11 @@ public final class Feeds {
             cps = f * rpm * perUnitPerMin;
         } else {
             cps = f * perUnitPerMin;
+        }
+        if (Math.round(cps) < 1) {
+            // the slowest vector speed the controller has (VS 1): the same verdict as compile's backend
+            d.fail(out, Code.E207_FEED_TOO_SLOW, at, Arcs.text(cps));
+            return null;
         }
         if (cps > p.maxFeed()) {
             d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, Arcs.text(cps), Arcs.text(p.maxFeed()));
