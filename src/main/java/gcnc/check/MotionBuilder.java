@@ -103,7 +103,7 @@ final class MotionBuilder {
                 || d.next.css && Double.compare(rpm, d.prior.rpm()) != 0;
         return new CheckedBlock(d.block.line(), speedChanged && !Double.isNaN(rpm) ? OptionalDouble.of(rpm)
                 : OptionalDouble.empty(), d.has(Letter.T) ? OptionalInt.of(d.next.tool) : OptionalInt.empty(),
-                d.before, motions, d.after, end);
+                d.before, motions, d.after, end, frame(d));
     }
 
     /**
@@ -122,6 +122,12 @@ final class MotionBuilder {
             double clamp = Double.isNaN(d.next.rpmClamp) ? p.maxRpm() : Math.min(d.next.rpmClamp, p.maxRpm());
             d.next.rpm = Math.min(s, clamp);
         }
+    }
+
+    /** The block's program coordinates in the machine, for the simulator's findings. */
+    private gcnc.ir.ProgramFrame frame(BlockDraft d) {
+        return new gcnc.ir.ProgramFrame(coordinates.origin(d.next), coordinates.perX(d.units), coordinates.perZ(d.units),
+                d.has(Letter.N) ? "N" + d.word(Letter.N).number() : "");
     }
 
     private Motion move(BlockDraft d, Point from, Point end, double rpm, Diagnostics out) {

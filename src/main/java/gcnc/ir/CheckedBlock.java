@@ -17,12 +17,19 @@ import java.util.OptionalInt;
  * @param motions     motions in order (empty for a block without motion)
  * @param after       M functions of moment 99, in source order
  * @param end         position after the block, machine counts
+ * @param frame       the block's program coordinates in the machine, for findings; null when unknown
  */
 public record CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
-                           List<Motion> motions, List<MCall> after, Point end) {
+                           List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame) {
     public CheckedBlock {
         before = List.copyOf(before);
         motions = List.copyOf(motions);
         after = List.copyOf(after);
+    }
+
+    /** A block whose program frame is not known (built by hand, as the backend's tests do). */
+    public CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
+                        List<Motion> motions, List<MCall> after, Point end) {
+        this(line, spindleRpm, tool, before, motions, after, end, null);
     }
 }

@@ -127,6 +127,13 @@ final class MotionChecks {
         return tool;
     }
 
+    /** The program coordinates of the block being replayed (null for a bare DMC replay). */
+    private gcnc.ir.ProgramFrame frame;
+
+    void frame(gcnc.ir.ProgramFrame f) {
+        frame = f;
+    }
+
     void selectTool(int n) {
         tool = n;
         if (machine != null) {
@@ -295,16 +302,35 @@ final class MotionChecks {
         return false;
     }
 
-    /** The finding, at machine position p = {x, z} (counts), with its place kept for the SVG. */
+    /**
+     * The finding, at machine position p = {x, z} (counts), with its place kept for the SVG: after
+     * the lead arguments, where it is as the program writes it (X as a diameter, Z from work zero,
+     * "?" when the program frame is not known), the block's N word ("N110; " or ""), and the
+     * machine position in mm.
+     */
     private void mark(Code code, int line, double[] p, Object... lead) {
-        Object[] args = new Object[lead.length + 2];
+        Object[] args = new Object[lead.length + 4];
         System.arraycopy(lead, 0, args, 0, lead.length);
-        args[lead.length] = mm(p[0] / profile.x().countsPerMm());
-        args[lead.length + 1] = mm(p[1] / profile.z().countsPerMm());
+        if (frame == null) {
+            args[lead.length] = "?";
+            args[lead.length + 1] = "";
+        } else {
+            args[lead.length] = "X" + programmed((p[0] - frame.origin().x()) / frame.perX())
+                    + " Z" + programmed((p[1] - frame.origin().z()) / frame.perZ());
+            args[lead.length + 1] = frame.sequence().isEmpty() ? "" : frame.sequence() + "; ";
+        }
+        args[lead.length + 2] = mm(p[0] / profile.x().countsPerMm());
+        args[lead.length + 3] = mm(p[1] / profile.z().countsPerMm());
         out.report(code, line, args);
         if (path != null) {
             path.mark(code.id(), p[0], p[1]);
         }
+    }
+
+    /** A program coordinate as a program writes it, always with its decimal point: 42., -20.5. */
+    private static String programmed(double v) {
+        String t = mm(v);
+        return t.contains(".") ? t : t + ".";
     }
 
     private boolean travel(int line, String axis, double lo, double hi, double min, double max, double perMm) {

@@ -55,6 +55,7 @@ public final class Simulator {
 
     /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
     public void block(CheckedBlock intended, List<GalilLine> emitted) {
+        checks.frame(intended.frame());
         expected = motions;
         motions.clear();
         for (Motion m : intended.motions()) {
@@ -82,6 +83,7 @@ public final class Simulator {
     /** Replays DMC with no G-code to compare against: a hand-edited file, or --trace. */
     public void replay(List<GalilLine> lines) {
         expected = null;
+        checks.frame(null);
         run(lines);
     }
 

@@ -89,6 +89,19 @@ class TrustTest {
         assertEquals(List.of("E305@9"), compile(p));
     }
 
+    /** A finding says where, as the program writes it (X a diameter, Z from work zero), with its N word, then the machine frame. */
+    @Test
+    void aFindingIsPlacedInProgramCoordinatesFirst() throws Exception {
+        String p = HEAD + "N60 G00 X46. Z2.\nN70 G00 X40.\nN110 G00 Z-40.\nN120 G00 X46.\nM05\nM30\n";
+        MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
+        Compiler.Result r = Compiler.compile(new StringReader(p),
+                new Compiler.Settings(TABLES, m, "galil", Optional.of(SimOptions.defaults())), l -> { });
+        Diagnostic d = r.diagnostics().sorted().get(0);
+        assertEquals(gcnc.diag.Code.E305_SIM_RAPID_INTO_STOCK, d.code());
+        String text = TABLES.messages().render(d.code(), d.args(), gcnc.tables.ErrorMessages.Lang.EN);
+        assertEquals(true, text.matches("rapid move enters the blank at X4[0-4]\\.?[0-9]* Z-[0-9.]+ \\(N110; machine X2[01][0-9.]* Z1[0-4][0-9.]* mm\\)"), text);
+    }
+
     /** A 10 mm radial cut with an insert 5 mm tall: the holder ploughs through the stock. */
     @Test
     void aCutDeeperThanTheInsertPutsTheHolderInTheStock() throws Exception {
