@@ -2,7 +2,6 @@ package gcnc.sim;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.locationtech.jts.algorithm.ConvexHull;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
@@ -114,12 +113,56 @@ final class Stock {
      * moves in a straight line from (az, ar) to (bz, br): the convex hull of both positions.
      */
     Geometry sweep(double[] z, double[] r, double az, double ar, double bz, double br) {
-        Coordinate[] c = new Coordinate[z.length * 2];
-        for (int i = 0; i < z.length; i++) {
-            c[i] = new Coordinate(az + z[i], ar + r[i]);
-            c[z.length + i] = new Coordinate(bz + z[i], br + r[i]);
+        int n = z.length;
+        double[] pz = new double[2 * n];
+        double[] pr = new double[2 * n];
+        for (int i = 0; i < n; i++) {
+            pz[i] = az + z[i];
+            pr[i] = ar + r[i];
+            pz[n + i] = bz + z[i];
+            pr[n + i] = br + r[i];
         }
-        return new ConvexHull(c, factory).getConvexHull();
+        return hull(pz, pr);
+    }
+
+    /**
+     * The convex hull of a dozen points (Andrew's monotone chain) as a polygon: the sweep of a
+     * convex outline along a straight piece. Written here rather than with JTS's general
+     * ConvexHull, which is far heavier for so few points and is called for every piece near the part.
+     */
+    private Geometry hull(double[] z, double[] r) {
+        int n = z.length;
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (p, q) -> z[p] != z[q] ? Double.compare(z[p], z[q]) : Double.compare(r[p], r[q]));
+        int[] h = new int[2 * n + 1];
+        int k = 0;
+        for (int pass = 0; pass < 2; pass++) {
+            int start = k;
+            for (int j = 0; j < n; j++) {
+                int i = order[pass == 0 ? j : n - 1 - j];
+                while (k >= start + 2 && cross(z, r, h[k - 2], h[k - 1], i) <= 0) {
+                    k--;
+                }
+                h[k++] = i;
+            }
+            k--; // the last point of one chain is the first of the other
+        }
+        if (k < 3) {
+            return factory.createPolygon(); // all points on one line: no area
+        }
+        Coordinate[] c = new Coordinate[k + 1];
+        for (int i = 0; i < k; i++) {
+            c[i] = new Coordinate(z[h[i]], r[h[i]]);
+        }
+        c[k] = c[0];
+        return factory.createPolygon(c);
+    }
+
+    private static double cross(double[] z, double[] r, int o, int a, int b) {
+        return (z[a] - z[o]) * (r[b] - r[o]) - (r[a] - r[o]) * (z[b] - z[o]);
     }
 
     /**
