@@ -1,0 +1,172 @@
+package gcnc.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.DynamicTest.dynamicTest;
+
+import gcnc.Compiler;
+import gcnc.diag.Diagnostic;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileFile;
+import gcnc.machine.ProfileLoader;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.StringReader;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Random;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.TestFactory;
+
+/**
+ * Random stepped parts turned from random blanks the way a machinist programs them, on every
+ * shipped machine: facing, roughing passes with a radial retract, a finishing pass up the
+ * shoulders. The generator knows nothing of the simulator: it only keeps each pass's depth under
+ * the insert and stops each pass at the shoulder it must leave. Such programs simulate with no
+ * finding; the same program with one rapid moved into the blank is flagged on that block, and
+ * with an insert smaller than the depth of cut the holder is found in the stock.
+ * {@code gradle junitPlatformTest -PpartSeed=1 -PpartCount=2000} runs a long campaign.
+ */
+class TurnedPartPropertyTest {
+    private static final Tables TABLES = Tables.builtIn();
+
+    /** A machine, the program head its control wants, and the feed in its feed mode. */
+    private record Machine(String name, String head, String feed) {
+    }
+
+    private static final Machine[] MACHINES = {
+        new Machine("generic", "G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\n", "F150."),
+        new Machine("haas", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15"),
+        new Machine("fanuc", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15"),
+    };
+
+    /** A stepped part: zone k runs from Z -z[k-1] to -z[k] at diameter d[k], d increasing away from the face. */
+    record Part(double blank, double[] d, double[] z) {
+    }
+
+    static Part part(Random rnd) {
+        double blank = 30 + rnd.nextInt(31);
+        int zones = 1 + rnd.nextInt(3);
+        double[] d = new double[zones];
+        double[] z = new double[zones];
+        double dia = blank - 4 - rnd.nextInt(8);
+        double at = 0;
+        for (int k = zones - 1; k >= 0; k--) {
+            d[k] = dia;
+            dia = Math.max(6, dia - 2 - rnd.nextInt(10));
+        }
+        for (int k = 0; k < zones; k++) {
+            at += 5 + rnd.nextInt(20);
+            z[k] = at;
+        }
+        return new Part(blank, d, z);
+    }
+
+    /** The program; {@code lines} gets, for each G-code line (1-based), what it is ("rapid", "rough" ...). */
+    static String program(Part p, Machine m, List<String> lines) {
+        StringBuilder out = new StringBuilder();
+        for (String h : m.head().split("\n")) {
+            add(out, lines, h, "head");
+        }
+        double outside = p.blank() + 4;
+        // face 0.5 mm
+        add(out, lines, "G00 X" + n(outside) + " Z-0.5", "rapid");
+        add(out, lines, "G01 X-1.6 " + m.feed(), "face");
+        add(out, lines, "G00 Z2.", "rapid");
+        // rough: 1 mm a side, each pass stopping at the first zone at least as large as it
+        for (double c = p.blank() - 2; c > p.d()[0]; c -= 2) {
+            double end = p.z()[p.d().length - 1];
+            for (int k = 0; k < p.d().length; k++) {
+                if (p.d()[k] >= c) {
+                    end = k == 0 ? 0 : p.z()[k - 1];
+                    break;
+                }
+            }
+            if (end == 0) {
+                continue;
+            }
+            add(out, lines, "G00 X" + n(c), "rapid");
+            add(out, lines, "G01 Z" + n(-end), "rough");
+            add(out, lines, "G00 U2.", "rapid");
+            add(out, lines, "G00 Z2.", "rapid");
+        }
+        // finish: along each zone, up each shoulder, out past the blank
+        add(out, lines, "G00 X" + n(p.d()[0]), "rapid");
+        for (int k = 0; k < p.d().length; k++) {
+            add(out, lines, "G01 Z" + n(-p.z()[k]), "finish");
+            add(out, lines, "G01 X" + n(k + 1 < p.d().length ? p.d()[k + 1] : outside), "finish");
+        }
+        add(out, lines, "G00 Z2.", "rapid");
+        add(out, lines, "M05", "tail");
+        add(out, lines, "M30", "tail");
+        return out.toString();
+    }
+
+    private static void add(StringBuilder out, List<String> lines, String block, String what) {
+        out.append(block).append('\n');
+        for (String l : block.split("\n")) {
+            lines.add(what);
+        }
+    }
+
+    private static String n(double v) {
+        String t = String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
+        return t.endsWith(".") ? t : t.contains(".") ? t : t + ".";
+    }
+
+    static List<String> run(MachineProfile m, Part p, String program) throws Exception {
+        double stickout = m.model().stock().orElseThrow().stickout();
+        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, m, "galil",
+                Optional.of(SimOptions.defaults().withStock(new StockSize(p.blank(), 120, stickout)))), l -> { });
+        List<String> out = new ArrayList<>();
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            out.add(d.code().id() + "@" + d.span().line());
+        }
+        return out;
+    }
+
+    @TestFactory
+    Stream<DynamicTest> turnedPartsSimulateCleanAndMistakesAreFound() throws Exception {
+        long first = Long.getLong("gcnc.part.seed", 20261123L);
+        long count = Long.getLong("gcnc.part.count", 12);
+        List<DynamicTest> tests = new ArrayList<>();
+        for (long seed = first; seed < first + count; seed++) {
+            long s = seed;
+            tests.add(dynamicTest("part seed " + s, () -> {
+                Random rnd = new Random(s);
+                Part p = part(rnd);
+                for (Machine m : MACHINES) {
+                    MachineProfile profile = ProfileLoader.load(m.name(), TableSource.builtIn(), TABLES);
+                    List<String> what = new ArrayList<>();
+                    String program = program(p, m, what);
+                    assertEquals(List.of(), run(profile, p, program), "seed " + s + " on " + m.name() + ":\n" + program);
+
+                    // one rapid moved into the blank: the first roughing pass's approach goes to Z-5 at full depth
+                    int rough = what.indexOf("rough");
+                    if (rough > 0) {
+                        List<String> lines = new ArrayList<>(List.of(program.split("\n")));
+                        lines.add(rough, "G00 Z-5."); // before the cut: a rapid along the blank at the cut's diameter
+                        String bad = String.join("\n", lines) + "\n";
+                        List<String> found = run(profile, p, bad);
+                        assertTrue(found.contains("E305@" + (rough + 1)), "seed " + s + " on " + m.name() + ": " + found
+                                + "\n" + bad);
+                    }
+
+                    // an insert smaller than the 1 mm depth of cut: the holder ploughs through the stock
+                    if (rough > 0) {
+                        String text = java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/" + m.name() + ".machine"))
+                                .replaceAll("(?m)^sim\\.tool\\.1 = .*$", "") + "sim.tool.1 = C 0.5\n";
+                        MachineProfile small = ProfileLoader.read(ProfileFile.parse(m.name() + "-small.machine", text),
+                                TABLES, TableSource.builtIn(), null);
+                        List<String> found = run(small, p, program);
+                        assertTrue(found.contains("E315@" + (rough + 1)), "seed " + s + " on " + m.name() + ": " + found);
+                    }
+                }
+            }));
+        }
+        return tests.stream();
+    }
+}
