@@ -30,6 +30,9 @@ final class MotionChecks {
     /** The same outlines drawn a little smaller ({@link Stock#smaller}), to tell a real bite from a touch. */
     private double[][] insertIn;
     private double[][] holderIn;
+    /** How far each part reaches from the tip, mm: {dr-, dz-, dz+} of the insert and of the holder. */
+    private double[] insertReach;
+    private double[] holderReach;
     private final PathRecorder path;
     private final Conformance conformance;
     private int tool;
@@ -80,6 +83,18 @@ final class MotionChecks {
         holderMm = toolShape == null || toolShape.holder() == null ? null : mm(toolShape.holder());
         insertIn = insertMm == null ? null : Stock.smaller(insertMm[0], insertMm[1]);
         holderIn = holderMm == null ? null : Stock.smaller(holderMm[0], holderMm[1]);
+        insertReach = insertMm == null ? null : partReach(insertMm);
+        holderReach = holderMm == null ? null : partReach(holderMm);
+    }
+
+    private static double[] partReach(double[][] outline) {
+        double[] r = {Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (int i = 0; i < outline[0].length; i++) {
+            r[0] = Math.min(r[0], outline[1][i]);
+            r[1] = Math.min(r[1], outline[0][i]);
+            r[2] = Math.max(r[2], outline[0][i]);
+        }
+        return r;
     }
 
     private double[][] mm(Shape s) {
@@ -200,16 +215,8 @@ final class MotionChecks {
                         tailHit = true;
                         mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
                     }
-                    if (nearStock && stock.mayTouch((Math.min(a[1], b[1]) + reach[2]) / kz,
-                            (Math.max(a[1], b[1]) + reach[3]) / kz, (Math.min(ar, br) + reach[0]) / kx)) {
-                        double az = a[1] / kz;
-                        double bz = b[1] / kz;
-                        if (stock.bites(stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx))) {
-                            cuts.add(stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx));
-                        }
-                        if (holderMm != null && stock.bites(stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx))) {
-                            holders.add(stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx));
-                        }
+                    if (nearStock) {
+                        stockPiece(a[1], ar, b[1], br, cuts, holders);
                     }
                 }
                 a = b;
@@ -223,6 +230,29 @@ final class MotionChecks {
         seconds += time(length, speed, acc, dec);
         if (poly != null) {
             path.move(rapid, poly);
+        }
+    }
+
+    /**
+     * One straight piece near the stock (tip from z a, radius ar to z b, radius br; counts): the
+     * sweeps of the insert and the holder that really bite into material, for {@link #stockMove}.
+     */
+    private void stockPiece(double a, double ar, double b, double br, List<org.locationtech.jts.geom.Geometry> cuts,
+                            List<org.locationtech.jts.geom.Geometry> holders) {
+        double az = a / kz;
+        double bz = b / kz;
+        double lo = Math.min(az, bz);
+        double hi = Math.max(az, bz);
+        double r = Math.min(ar, br) / kx;
+        // each part against the material with its own box: the holder sits above the insert, so it
+        // rarely comes near, and most pieces along a surface just cut need neither test
+        if (stock.mayTouch(lo + insertReach[1], hi + insertReach[2], r + insertReach[0])
+                && stock.bites(stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx))) {
+            cuts.add(stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx));
+        }
+        if (holderMm != null && stock.mayTouch(lo + holderReach[1], hi + holderReach[2], r + holderReach[0])
+                && stock.bites(stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx))) {
+            holders.add(stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx));
         }
     }
 
