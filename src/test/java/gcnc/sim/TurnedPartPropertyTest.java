@@ -26,21 +26,25 @@ import org.junit.jupiter.api.TestFactory;
  * shipped machine: facing, roughing passes with a radial retract, a finishing pass up the
  * shoulders. The generator knows nothing of the simulator: it only keeps each pass's depth under
  * the insert and stops each pass at the shoulder it must leave. Such programs simulate with no
- * finding; the same program with one rapid moved into the blank is flagged on that block, and
+ * finding (an inch program on the haas, a groove with the grooving blade where the machine has
+ * one); the same program with one rapid moved into the blank is flagged on that block, and
  * with an insert smaller than the depth of cut the holder is found in the stock.
  * {@code gradle junitPlatformTest -PpartSeed=1 -PpartCount=2000} runs a long campaign.
  */
 class TurnedPartPropertyTest {
     private static final Tables TABLES = Tables.builtIn();
 
-    /** A machine, the program head its control wants, and the feed in its feed mode. */
-    private record Machine(String name, String head, String feed) {
+    /**
+     * A machine, the program head its control wants, the feed in its feed mode, the program's
+     * units (mm per unit: 25.4 for an inch program) and the grooving tool's T word ("" = none).
+     */
+    private record Machine(String name, String head, String feed, double unit, String groover) {
     }
 
     private static final Machine[] MACHINES = {
-        new Machine("generic", "G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\n", "F150."),
-        new Machine("haas", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15"),
-        new Machine("fanuc", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15"),
+        new Machine("generic", "G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\n", "F150.", 1, ""),
+        new Machine("haas", "G20\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.006", 25.4, "T0909"),
+        new Machine("fanuc", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15", 1, "T0505"),
     };
 
     /** A stepped part: zone k runs from Z -z[k-1] to -z[k] at diameter d[k], d increasing away from the face. */
@@ -67,15 +71,16 @@ class TurnedPartPropertyTest {
 
     /** The program; {@code lines} gets, for each G-code line (1-based), what it is ("rapid", "rough" ...). */
     static String program(Part p, Machine m, List<String> lines) {
+        unit = m.unit();
         StringBuilder out = new StringBuilder();
         for (String h : m.head().split("\n")) {
             add(out, lines, h, "head");
         }
         double outside = p.blank() + 4;
         // face 0.5 mm
-        add(out, lines, "G00 X" + n(outside) + " Z-0.5", "rapid");
-        add(out, lines, "G01 X-1.6 " + m.feed(), "face");
-        add(out, lines, "G00 Z2.", "rapid");
+        add(out, lines, "G00 X" + n(outside) + " Z" + n(-0.5), "rapid");
+        add(out, lines, "G01 X" + n(-1.6) + " " + m.feed(), "face");
+        add(out, lines, "G00 Z" + n(2), "rapid");
         // rough: 1 mm a side, each pass stopping at the first zone at least as large as it
         for (double c = p.blank() - 2; c > p.d()[0]; c -= 2) {
             double end = p.z()[p.d().length - 1];
@@ -90,8 +95,8 @@ class TurnedPartPropertyTest {
             }
             add(out, lines, "G00 X" + n(c), "rapid");
             add(out, lines, "G01 Z" + n(-end), "rough");
-            add(out, lines, "G00 U2.", "rapid");
-            add(out, lines, "G00 Z2.", "rapid");
+            add(out, lines, "G00 U" + n(2), "rapid");
+            add(out, lines, "G00 Z" + n(2), "rapid");
         }
         // finish: along each zone, up each shoulder, out past the blank
         add(out, lines, "G00 X" + n(p.d()[0]), "rapid");
@@ -99,7 +104,18 @@ class TurnedPartPropertyTest {
             add(out, lines, "G01 Z" + n(-p.z()[k]), "finish");
             add(out, lines, "G01 X" + n(k + 1 < p.d().length ? p.d()[k + 1] : outside), "finish");
         }
-        add(out, lines, "G00 Z2.", "rapid");
+        add(out, lines, "G00 Z" + n(2), "rapid");
+        // a 3 mm groove, 1 mm deep, in the middle of the largest zone, with the grooving blade
+        int last = p.d().length - 1;
+        double from = last == 0 ? 0 : p.z()[last - 1];
+        if (!m.groover().isEmpty() && p.z()[last] - from >= 8) {
+            double zg = (from + p.z()[last]) / 2 + 1.5; // the blade's tip is its chuck-side corner
+            add(out, lines, m.groover(), "tool");
+            add(out, lines, "G00 X" + n(outside) + " Z" + n(-zg), "rapid");
+            add(out, lines, "G01 X" + n(p.d()[last] - 2) + " " + m.feed(), "groove");
+            add(out, lines, "G00 X" + n(outside), "rapid");
+            add(out, lines, "G00 Z" + n(2), "rapid");
+        }
         add(out, lines, "M05", "tail");
         add(out, lines, "M30", "tail");
         return out.toString();
@@ -112,8 +128,12 @@ class TurnedPartPropertyTest {
         }
     }
 
-    private static String n(double v) {
-        String t = String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
+    /** mm per program unit of the program being written (25.4 for inch). */
+    private static double unit = 1;
+
+    private static String n(double mm) {
+        double v = mm / unit;
+        String t = String.format(Locale.ROOT, unit == 1 ? "%.3f" : "%.4f", v).replaceAll("0+$", "");
         return t.endsWith(".") ? t : t.contains(".") ? t : t + ".";
     }
 
@@ -148,7 +168,7 @@ class TurnedPartPropertyTest {
                     int rough = what.indexOf("rough");
                     if (rough > 0) {
                         List<String> lines = new ArrayList<>(List.of(program.split("\n")));
-                        lines.add(rough, "G00 Z-5."); // before the cut: a rapid along the blank at the cut's diameter
+                        lines.add(rough, "G00 Z" + n(-5)); // before the cut: a rapid along the blank at the cut's diameter
                         String bad = String.join("\n", lines) + "\n";
                         List<String> found = run(profile, p, bad);
                         assertTrue(found.contains("E305@" + (rough + 1)), "seed " + s + " on " + m.name() + ": " + found
