@@ -151,11 +151,9 @@ final class MotionChecks {
 
     void selectTool(int n) {
         tool = n;
-        if (machine != null) {
-            toolShape = machine.tool(n);
-            reach = reach(toolShape);
-            outlines();
-        }
+        toolShape = machine.tool(n);
+        reach = reach(toolShape);
+        outlines();
     }
 
     void dwell(double s) {
@@ -204,20 +202,18 @@ final class MotionChecks {
                 if (poly != null) {
                     poly.add(b);
                 }
-                if (machine != null) {
-                    double ar = a[0] - machine.centreX();
-                    double br = b[0] - machine.centreX();
-                    if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
-                        chuckHit = true;
-                        mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
-                    }
-                    if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
-                        tailHit = true;
-                        mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
-                    }
-                    if (nearStock) {
-                        stockPiece(a[1], ar, b[1], br, cuts, holders);
-                    }
+                double ar = a[0] - machine.centreX();
+                double br = b[0] - machine.centreX();
+                if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
+                    chuckHit = true;
+                    mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
+                }
+                if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
+                    tailHit = true;
+                    mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
+                }
+                if (nearStock) {
+                    stockPiece(a[1], ar, b[1], br, cuts, holders);
                 }
                 a = b;
             }

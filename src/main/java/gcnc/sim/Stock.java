@@ -1,7 +1,5 @@
 package gcnc.sim;
 
-import java.util.ArrayList;
-import java.util.List;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
@@ -315,22 +313,5 @@ final class Stock {
             r[i] = m;
         }
         return new double[][] {z, r};
-    }
-
-    /** The material's polygons as rings of {z, r} points (mm), for the drawing. */
-    List<double[][]> outline() {
-        List<double[][]> rings = new ArrayList<>();
-        for (int n = 0; n < material.getNumGeometries(); n++) {
-            if (!(material.getGeometryN(n) instanceof Polygon p)) {
-                continue;
-            }
-            Coordinate[] c = p.getExteriorRing().getCoordinates();
-            double[][] ring = new double[c.length][];
-            for (int k = 0; k < c.length; k++) {
-                ring[k] = new double[] {c[k].x, c[k].y};
-            }
-            rings.add(ring);
-        }
-        return rings;
     }
 }
