@@ -4,6 +4,7 @@ import gcnc.ir.Point;
 import gcnc.machine.Control;
 import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
+import gcnc.machine.MRole;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 
@@ -45,28 +46,14 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
      */
     public static ModalState initial(MachineProfile p) {
         Control c = p.control();
-        int motion = -1;
-        boolean incremental = false;
-        boolean perRev = false;
-        boolean css = false;
-        int work = 54;
+        Next n = new ModalState(-1, p.units(), false, 54, c.powerUpTool(), c.powerUpOffset(), Double.NaN, false,
+                false, Double.NaN, Double.NaN, Double.NaN, -1, p.chuckByProgram() ? -1 : 11, p.home(), Point.ORIGIN,
+                null, -1, false, false).next();
         for (GFunction f : c.powerUp()) {
-            GRole r = f.role();
-            if (r.motion()) {
-                motion = r.number();
-            } else if (r == GRole.INCREMENTAL || r == GRole.ABSOLUTE) {
-                incremental = r == GRole.INCREMENTAL;
-            } else if (r == GRole.FEED_PER_REV || r == GRole.FEED_PER_MINUTE) {
-                perRev = r == GRole.FEED_PER_REV;
-            } else if (r == GRole.CSS || r == GRole.RPM) {
-                css = r == GRole.CSS;
-            } else if (r.number() >= 54 && r.number() <= 59) {
-                work = r.number();
-            }
+            n.set(f.role());
         }
-        return new ModalState(motion, p.units(), incremental, work, c.powerUpTool(), c.powerUpOffset(), Double.NaN,
-                perRev, css, Double.NaN, Double.NaN, Double.NaN, -1, p.chuckByProgram() ? -1 : 11, p.home(),
-                Point.ORIGIN, null, -1, false, false);
+        n.units = p.units(); // the machine's setting, over the control's (Haas setting 9)
+        return n.build();
     }
 
     /** Spindle or chuck after a block gcnc could not read that may have changed it: not judged. */
@@ -120,6 +107,33 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
             lastN = s.lastN;
             named = s.named;
             ended = s.ended;
+        }
+
+        /**
+         * What a modal G does to the state, whatever its number in the control: the one place the
+         * syntax actions, the power-up state and the salvage of a rejected block all use.
+         */
+        public void set(GRole r) {
+            switch (r) {
+                case RAPID, LINEAR, ARC_CW, ARC_CCW -> motion = r.number();
+                case INCH -> units = Units.INCH;
+                case METRIC -> units = Units.MM;
+                case ABSOLUTE, INCREMENTAL -> incremental = r == GRole.INCREMENTAL;
+                case FEED_PER_MINUTE, FEED_PER_REV -> feedPerRev = r == GRole.FEED_PER_REV;
+                case CSS, RPM -> css = r == GRole.CSS;
+                case WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6 -> workOffset = r.number();
+                default -> {
+                }
+            }
+        }
+
+        /** What a spindle or chuck M does to the state (Haas's M10 closes the chuck, the thesis's M11). */
+        public void set(MRole r) {
+            if (r.spindleGroup()) {
+                spindle = r.number();
+            } else if (r == MRole.CHUCK_OPEN || r == MRole.CHUCK_CLOSE) {
+                chuck = r.number();
+            }
         }
 
         public ModalState build() {

@@ -7,9 +7,7 @@ import gcnc.ir.Word;
 import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import gcnc.machine.MFunction;
-import gcnc.machine.MRole;
 import gcnc.machine.MachineProfile;
-import gcnc.machine.Units;
 import gcnc.tables.ParameterLimit;
 
 /**
@@ -71,19 +69,10 @@ final class Salvage {
         return w.number().isEmpty() ? null : functions.g(NumberText.integer(w.number()));
     }
 
+    /** A modal G of a rejected block: its mode, but not its motion (the move was not made). */
     private static void modalG(GFunction f, ModalState.Next n) {
-        if (f == null) {
-            return;
-        }
-        switch (f.role()) {
-            case INCH -> n.units = Units.INCH;
-            case METRIC -> n.units = Units.MM;
-            case FEED_PER_MINUTE, FEED_PER_REV -> n.feedPerRev = f.role() == GRole.FEED_PER_REV;
-            case CSS, RPM -> n.css = f.role() == GRole.CSS;
-            case ABSOLUTE, INCREMENTAL -> n.incremental = f.role() == GRole.INCREMENTAL;
-            case WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6 -> n.workOffset = f.role().number();
-            default -> {
-            }
+        if (f != null && !f.role().motion()) {
+            n.set(f.role());
         }
     }
 
@@ -92,10 +81,8 @@ final class Salvage {
         if (f == null) {
             n.spindle = ModalState.UNKNOWN;
             n.chuck = ModalState.UNKNOWN;
-        } else if (f.role().spindleGroup()) {
-            n.spindle = f.role().number();
-        } else if (f.role() == MRole.CHUCK_OPEN || f.role() == MRole.CHUCK_CLOSE) {
-            n.chuck = f.role().number();
+        } else {
+            n.set(f.role());
         }
     }
 

@@ -26,18 +26,10 @@ public final class Sa01ModalG implements SyntaxAction {
             return;
         }
         GRole r = f.role();
-        switch (r) {
-            case RAPID, LINEAR, ARC_CW, ARC_CCW -> {
-                d.motionG = r.number();
-                d.motionWord = w;
-                d.next.motion = r.number();
-            }
-            case ABSOLUTE, INCREMENTAL -> d.next.incremental = r == GRole.INCREMENTAL;
-            case FEED_PER_MINUTE, FEED_PER_REV -> d.next.feedPerRev = r == GRole.FEED_PER_REV;
-            case WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6 -> d.next.workOffset = r.number();
-            default -> {
-                // units (G20/G21) were applied to the whole block before any word (BlockDraft.units)
-            }
+        if (r.motion()) {
+            d.motionG = r.number();
+            d.motionWord = w;
         }
+        d.next.set(r); // units were applied to the whole block already (BlockDraft.units): the same value
     }
 }

@@ -37,13 +37,9 @@ public final class Sa12Miscellaneous implements SyntaxAction {
             d.fail(out, Code.E040_SPINDLE_RUNNING_CHUCK_OPEN, w.span());
             return;
         }
-        if (r.spindleGroup()) {
-            d.next.spindle = r.number();
-            if (f.beforeMotion()) {
-                d.spindleBefore = r.number();
-            }
-        } else if (r == MRole.CHUCK_OPEN || r == MRole.CHUCK_CLOSE) {
-            d.next.chuck = r.number();
+        d.next.set(r);
+        if (r.spindleGroup() && f.beforeMotion()) {
+            d.spindleBefore = r.number();
         }
         d.unpoweredM(f, w);
         (f.beforeMotion() ? d.before : d.after).add(new MCall(code));
