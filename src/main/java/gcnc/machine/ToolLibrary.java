@@ -95,42 +95,22 @@ final class ToolLibrary {
      * {@link #HOLDER} mm above the insert's highest point.
      */
     private static double[][] holder(double[][] insert) {
-        int n = insert[0].length;
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        java.util.Arrays.sort(order, (p, q) -> insert[0][p] != insert[0][q] ? Double.compare(insert[0][p], insert[0][q])
-                : Double.compare(insert[1][p], insert[1][q]));
-        // the upper chain of the insert (Andrew's monotone chain, upper half), left to right
-        java.util.List<double[]> upper = new java.util.ArrayList<>();
-        for (Integer i : order) {
-            double[] pt = {insert[0][i], insert[1][i]};
-            while (upper.size() >= 2 && cross(upper.get(upper.size() - 2), upper.get(upper.size() - 1), pt) >= 0) {
-                upper.remove(upper.size() - 1);
-            }
-            upper.add(pt);
-        }
+        int[] upper = MonotoneChain.upper(insert[0], insert[1]);
         double top = -Double.MAX_VALUE;
-        for (double[] pt : upper) {
-            top = Math.max(top, pt[1]);
+        for (int i : upper) {
+            top = Math.max(top, insert[1][i]);
         }
-        double z0 = upper.get(0)[0];
-        double z1 = upper.get(upper.size() - 1)[0];
-        double[][] out = new double[2][upper.size() + 2];
-        for (int i = 0; i < upper.size(); i++) {
-            out[0][i] = upper.get(i)[0];
-            out[1][i] = upper.get(i)[1];
+        int n = upper.length;
+        double[][] out = new double[2][n + 2];
+        for (int k = 0; k < n; k++) {
+            out[0][k] = insert[0][upper[k]];
+            out[1][k] = insert[1][upper[k]];
         }
-        out[0][upper.size()] = z1;
-        out[1][upper.size()] = top + HOLDER;
-        out[0][upper.size() + 1] = z0;
-        out[1][upper.size() + 1] = top + HOLDER;
+        out[0][n] = out[0][n - 1];
+        out[1][n] = top + HOLDER;
+        out[0][n + 1] = out[0][0];
+        out[1][n + 1] = top + HOLDER;
         return out;
-    }
-
-    private static double cross(double[] o, double[] a, double[] b) {
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
     }
 
     private static MachineModel.Outline outline(double[][] mm) {

@@ -123,44 +123,18 @@ final class Stock {
         return hull(pz, pr);
     }
 
-    /**
-     * The convex hull of a dozen points (Andrew's monotone chain) as a polygon: the sweep of a
-     * convex outline along a straight piece. Written here rather than with JTS's general
-     * ConvexHull, which is far heavier for so few points and is called for every piece near the part.
-     */
+    /** The convex hull of a dozen points as a polygon: the sweep of a convex outline along a straight piece. */
     private Geometry hull(double[] z, double[] r) {
-        int n = z.length;
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        java.util.Arrays.sort(order, (p, q) -> z[p] != z[q] ? Double.compare(z[p], z[q]) : Double.compare(r[p], r[q]));
-        int[] h = new int[2 * n + 1];
-        int k = 0;
-        for (int pass = 0; pass < 2; pass++) {
-            int start = k;
-            for (int j = 0; j < n; j++) {
-                int i = order[pass == 0 ? j : n - 1 - j];
-                while (k >= start + 2 && cross(z, r, h[k - 2], h[k - 1], i) <= 0) {
-                    k--;
-                }
-                h[k++] = i;
-            }
-            k--; // the last point of one chain is the first of the other
-        }
-        if (k < 3) {
+        int[] h = gcnc.machine.MonotoneChain.hull(z, r);
+        if (h.length < 3) {
             return factory.createPolygon(); // all points on one line: no area
         }
-        Coordinate[] c = new Coordinate[k + 1];
-        for (int i = 0; i < k; i++) {
+        Coordinate[] c = new Coordinate[h.length + 1];
+        for (int i = 0; i < h.length; i++) {
             c[i] = new Coordinate(z[h[i]], r[h[i]]);
         }
-        c[k] = c[0];
+        c[h.length] = c[0];
         return factory.createPolygon(c);
-    }
-
-    private static double cross(double[] z, double[] r, int o, int a, int b) {
-        return (z[a] - z[o]) * (r[b] - r[o]) - (r[a] - r[o]) * (z[b] - z[o]);
     }
 
     /**
