@@ -160,16 +160,19 @@ final class MotionChecks {
         seconds += s;
     }
 
+    /** What this sequence has already reported: one finding per check per sequence, so one bad move is one finding. */
+    private boolean chuckHit;
+    private boolean tailHit;
+    private boolean stockHit;
+    private boolean holderHit;
+
     void sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec) {
         sequences++;
         segments += segs.size();
         double length = 0;
         boolean travelX = false;
         boolean travelZ = false;
-        boolean chuckHit = false;
-        boolean tailHit = false;
-        boolean stockHit = false;
-        boolean holderHit = false;
+        chuckHit = tailHit = stockHit = holderHit = false;
         List<double[]> poly = path == null ? null : new ArrayList<>();
         for (Segment s : segs) {
             length += s.length();
@@ -187,40 +190,8 @@ final class MotionChecks {
             boolean nearTail = near(tailBox, box);
             boolean nearStock = stock != null && insertMm != null && stock.mayTouch((box[2] + reach[2]) / kz,
                     (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
-            if (poly == null && !nearChuck && !nearTail && !nearStock) {
-                continue;
-            }
-            int n = nearStock && poly == null && !nearChuck && !nearTail ? stockPieces(s) : s.pieces();
-            List<org.locationtech.jts.geom.Geometry> cuts = nearStock ? new ArrayList<>(n) : List.of();
-            List<org.locationtech.jts.geom.Geometry> holders = nearStock ? new ArrayList<>(n) : List.of();
-            double[] a = s.at(0);
-            if (poly != null) {
-                poly.add(a);
-            }
-            for (int i = 1; i <= n; i++) {
-                double[] b = i == n ? new double[] {s.toX(), s.toZ()} : s.at((double) i / n);
-                if (poly != null) {
-                    poly.add(b);
-                }
-                double ar = a[0] - machine.centreX();
-                double br = b[0] - machine.centreX();
-                if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
-                    chuckHit = true;
-                    mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
-                }
-                if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
-                    tailHit = true;
-                    mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
-                }
-                if (nearStock) {
-                    stockPiece(a[1], ar, b[1], br, cuts, holders);
-                }
-                a = b;
-            }
-            if (!cuts.isEmpty() || !holders.isEmpty()) {
-                boolean[] hit = stockMove(cuts, holders, rapid, line, stockHit, holderHit);
-                stockHit = hit[0];
-                holderHit = hit[1];
+            if (poly != null || nearChuck || nearTail || nearStock) {
+                closeUp(s, rapid, line, poly, nearChuck, nearTail, nearStock);
             }
         }
         seconds += time(length, speed, acc, dec);
@@ -228,6 +199,67 @@ final class MotionChecks {
             path.move(rapid, poly);
         }
     }
+
+    /**
+     * A segment that may come near the chuck, the tailstock or the stock (or whose path is kept for
+     * the drawing), followed piece by piece. Kept out of {@link #sequence}, whose loop runs for
+     * every segment: the JIT compiles that loop small and this once, on its own.
+     */
+    private void closeUp(Segment s, boolean rapid, int line, List<double[]> poly, boolean nearChuck,
+                         boolean nearTail, boolean nearStock) {
+        Quiet key = poly == null && !nearChuck && !nearTail ? new Quiet(tool, s.fromX(), s.fromZ(), s.toX(), s.toZ(),
+                s.arc() ? s.centreX() : 0, s.arc() ? s.centreZ() : 0, s.arc() ? s.sweepDeg() : 0) : null;
+        if (key != null && quiet.contains(key)) {
+            return;
+        }
+        int n = nearStock && poly == null && !nearChuck && !nearTail ? stockPieces(s) : s.pieces();
+        List<org.locationtech.jts.geom.Geometry> cuts = nearStock ? new ArrayList<>(n) : List.of();
+        List<org.locationtech.jts.geom.Geometry> holders = nearStock ? new ArrayList<>(n) : List.of();
+        double[] a = s.at(0);
+        if (poly != null) {
+            poly.add(a);
+        }
+        for (int i = 1; i <= n; i++) {
+            double[] b = i == n ? new double[] {s.toX(), s.toZ()} : s.at((double) i / n);
+            if (poly != null) {
+                poly.add(b);
+            }
+            double ar = a[0] - machine.centreX();
+            double br = b[0] - machine.centreX();
+            if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
+                chuckHit = true;
+                mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
+            }
+            if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
+                tailHit = true;
+                mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
+            }
+            if (nearStock) {
+                stockPiece(a[1], ar, b[1], br, cuts, holders);
+            }
+            a = b;
+        }
+        if (!cuts.isEmpty() || !holders.isEmpty()) {
+            stockMove(cuts, holders, rapid, line);
+        } else if (key != null) {
+            if (quiet.size() >= QUIET_MAX) {
+                quiet.clear();
+            }
+            quiet.add(key);
+        }
+    }
+
+    /**
+     * A segment of a tool that came near the stock and did not reach into it. Material is only ever
+     * taken away, so the same segment again (a pass retraced, a roughing cycle run twice, a
+     * finishing pass over the finished part) cannot reach into it either: {@link #closeUp} skips it.
+     */
+    private record Quiet(int tool, double fromX, double fromZ, double toX, double toZ, double centreX, double centreZ,
+                         double sweepDeg) {
+    }
+
+    private static final int QUIET_MAX = 1 << 16;
+    private final java.util.Set<Quiet> quiet = new java.util.HashSet<>();
 
     /**
      * One straight piece near the stock (tip from z a, radius ar to z b, radius br; counts): the
@@ -243,12 +275,18 @@ final class MotionChecks {
         // each part against the material with its own box: the holder sits above the insert, so it
         // rarely comes near, and most pieces along a surface just cut need neither test
         if (stock.mayTouch(lo + insertReach[1], hi + insertReach[2], r + insertReach[0])
-                && stock.bites(stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx))) {
-            cuts.add(stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx));
+                && stock.bites(Stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx))) {
+            add(cuts, Stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx));
         }
         if (holderMm != null && stock.mayTouch(lo + holderReach[1], hi + holderReach[2], r + holderReach[0])
-                && stock.bites(stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx))) {
-            holders.add(stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx));
+                && stock.bites(Stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx))) {
+            add(holders, Stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx));
+        }
+    }
+
+    private void add(List<org.locationtech.jts.geom.Geometry> regions, Stock.Hull h) {
+        if (h != null) {
+            regions.add(stock.polygon(h));
         }
     }
 
@@ -256,11 +294,10 @@ final class MotionChecks {
      * One segment's effect on the stock, its pieces' sweeps taken together (one polygon boolean
      * per segment): a rapid reaching into material is E305; a cut removes what its insert sweeps,
      * and its holder reaching into what is left is E315. A crash is reported once, and what it went
-     * through is gone: no echo in the next moves. Returns {stockHit, holderHit}.
+     * through is gone: no echo in the next moves.
      */
-    private boolean[] stockMove(List<org.locationtech.jts.geom.Geometry> cuts,
-                                List<org.locationtech.jts.geom.Geometry> holders, boolean rapid, int line,
-                                boolean stockHit, boolean holderHit) {
+    private void stockMove(List<org.locationtech.jts.geom.Geometry> cuts,
+                           List<org.locationtech.jts.geom.Geometry> holders, boolean rapid, int line) {
         org.locationtech.jts.geom.Geometry cut = cuts.isEmpty() ? null : union(cuts);
         org.locationtech.jts.geom.Geometry holder = holders.isEmpty() ? null : union(holders);
         boolean crashed = false;
@@ -285,7 +322,6 @@ final class MotionChecks {
         if (crashed && holder != null) {
             stock.remove(holder);
         }
-        return new boolean[] {stockHit, holderHit};
     }
 
     private static org.locationtech.jts.geom.Geometry union(List<org.locationtech.jts.geom.Geometry> parts) {

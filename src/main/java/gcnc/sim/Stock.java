@@ -106,11 +106,44 @@ final class Stock {
         return false;
     }
 
+    /** A convex polygon in the stock's frame (mm): its corners counterclockwise from the lowest z, the lower chain first. */
+    record Hull(double[] z, double[] r) {
+        /** The hull's lowest r over z in [a, b] (its lower chain is convex, so a corner or an end of the range). */
+        double lowest(double a, double b) {
+            double m = Double.POSITIVE_INFINITY;
+            for (int i = 0; i + 1 < z.length && z[i] < z[i + 1]; i++) {
+                double lo = Math.max(a, z[i]);
+                double hi = Math.min(b, z[i + 1]);
+                if (lo <= hi) {
+                    m = Math.min(m, Math.min(at(i, lo), at(i, hi)));
+                }
+            }
+            return m;
+        }
+
+        private double at(int i, double v) {
+            return r[i] + (r[i + 1] - r[i]) * (v - z[i]) / (z[i + 1] - z[i]);
+        }
+
+        double zMin() {
+            return z[0];
+        }
+
+        double zMax() {
+            double m = z[0];
+            for (double v : z) {
+                m = Math.max(m, v);
+            }
+            return m;
+        }
+    }
+
     /**
      * The area a convex outline ({@code z}, {@code r} relative to the tip, mm) sweeps while its tip
-     * moves in a straight line from (az, ar) to (bz, br): the convex hull of both positions.
+     * moves in a straight line from (az, ar) to (bz, br): the convex hull of both positions; null
+     * when it has no area.
      */
-    Geometry sweep(double[] z, double[] r, double az, double ar, double bz, double br) {
+    static Hull sweep(double[] z, double[] r, double az, double ar, double bz, double br) {
         int n = z.length;
         double[] pz = new double[2 * n];
         double[] pr = new double[2 * n];
@@ -120,30 +153,72 @@ final class Stock {
             pz[n + i] = bz + z[i];
             pr[n + i] = br + r[i];
         }
-        return hull(pz, pr);
+        int[] h = gcnc.machine.MonotoneChain.hull(pz, pr);
+        if (h.length < 3) {
+            return null; // all points on one line: no area
+        }
+        double[] hz = new double[h.length];
+        double[] hr = new double[h.length];
+        for (int i = 0; i < h.length; i++) {
+            hz[i] = pz[h[i]];
+            hr[i] = pr[h[i]];
+        }
+        return new Hull(hz, hr);
     }
 
-    /** The convex hull of a dozen points as a polygon: the sweep of a convex outline along a straight piece. */
-    private Geometry hull(double[] z, double[] r) {
-        int[] h = gcnc.machine.MonotoneChain.hull(z, r);
-        if (h.length < 3) {
-            return factory.createPolygon(); // all points on one line: no area
+    /** The hull as a JTS polygon. */
+    Geometry polygon(Hull h) {
+        Coordinate[] c = new Coordinate[h.z().length + 1];
+        for (int i = 0; i < h.z().length; i++) {
+            c[i] = new Coordinate(h.z()[i], h.r()[i]);
         }
-        Coordinate[] c = new Coordinate[h.length + 1];
-        for (int i = 0; i < h.length; i++) {
-            c[i] = new Coordinate(z[h[i]], r[h[i]]);
-        }
-        c[h.length] = c[0];
+        c[c.length - 1] = c[0];
         return factory.createPolygon(c);
     }
 
     /**
      * Whether a region reaches into material at all, given the region drawn a little smaller (its
      * outline moved in by up to half the {@link #DEPTH}): a move that only runs along a face it
-     * has just cut never does, and costs no polygon boolean.
+     * has just cut never does. The upper envelope answers most of these without a polygon
+     * boolean: where the hull's lower edge stays above the material's largest radius in every
+     * slice it spans, it cannot touch.
      */
-    boolean bites(Geometry smaller) {
-        return touches(smaller);
+    boolean bites(Hull smaller) {
+        return smaller != null && under(smaller) && touches(polygon(smaller));
+    }
+
+    /** Whether the hull dips below the upper envelope in some slice (the envelope is never below the material). */
+    private boolean under(Hull h) {
+        double zLo = h.zMin();
+        double zHi = h.zMax();
+        if (zHi < back || zLo > face) {
+            return false;
+        }
+        int lo = slice(zLo);
+        int hi = slice(zHi);
+        int glo = lo / GROUP;
+        int ghi = hi / GROUP;
+        for (int sg = glo / GROUP; sg <= ghi / GROUP; sg++) {
+            if (h.lowest(zOf(sg * GROUP * GROUP), zOf((sg + 1) * GROUP * GROUP)) >= superMax[sg]) {
+                continue;
+            }
+            for (int g = Math.max(glo, sg * GROUP); g <= Math.min(ghi, sg * GROUP + GROUP - 1); g++) {
+                if (h.lowest(zOf(g * GROUP), zOf((g + 1) * GROUP)) >= groupMax[g]) {
+                    continue;
+                }
+                for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
+                    if (h.lowest(zOf(i), zOf(i + 1)) < upper[i]) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    /** Where slice i begins (mm). */
+    private double zOf(int i) {
+        return back + i * step;
     }
 
     /**
@@ -188,7 +263,7 @@ final class Stock {
         return new double[] {p.x, p.y};
     }
 
-    /** Removes {@code region} from the material (what the insert cuts away). */
+    /** Removes {@code region} from the material (what the insert cuts away). Material is never added. */
     void remove(Geometry region) {
         if (!touches(region)) {
             return;

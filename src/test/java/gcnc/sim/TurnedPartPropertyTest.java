@@ -164,6 +164,15 @@ class TurnedPartPropertyTest {
                     String program = program(p, m, what);
                     assertEquals(List.of(), run(profile, p, program), "seed " + s + " on " + m.name() + ":\n" + program);
 
+                    // facing, roughing and finishing run a second time: every move retraces cut material
+                    int start = what.indexOf("rapid");
+                    int end = what.contains("tool") ? what.indexOf("tool") : what.indexOf("tail");
+                    List<String> all = List.of(program.split("\n"));
+                    List<String> again = new ArrayList<>(all.subList(0, end));
+                    again.addAll(all.subList(start, all.size()));
+                    String twice = String.join("\n", again) + "\n";
+                    assertEquals(List.of(), run(profile, p, twice), "seed " + s + " on " + m.name() + ", twice:\n" + twice);
+
                     // one rapid moved into the blank: the first roughing pass's approach goes to Z-5 at full depth
                     int rough = what.indexOf("rough");
                     if (rough > 0) {
