@@ -9,6 +9,7 @@ import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
 import gcnc.parse.BlockReader;
+import gcnc.parse.BlockSource;
 import gcnc.sim.SimOptions;
 import gcnc.sim.SimReport;
 import gcnc.sim.SimulatorThread;
@@ -47,7 +48,7 @@ public final class Compiler {
     /** Checks a program: parse and every thesis check and semantic rule, no output. */
     public static Result check(Reader source, Settings settings) throws IOException {
         Diagnostics diags = new Diagnostics();
-        BlockReader reader = new BlockReader(source, diags);
+        BlockSource reader = blocks(source, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         long blocks = 0;
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
@@ -68,7 +69,7 @@ public final class Compiler {
         Diagnostics diags = new Diagnostics();
         java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
         settings = withStockHeader(buffered, settings);
-        BlockReader reader = new BlockReader(buffered, diags);
+        BlockSource reader = blocks(buffered, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
         List<GalilLine> lines = new ArrayList<>();
@@ -109,6 +110,14 @@ public final class Compiler {
             }
             return new Result(diags, blocks, report);
         }
+    }
+
+    /**
+     * The blocks of a program as the control would run them: the one place where the stages
+     * between the parser and the checker are put together, for check and compile alike.
+     */
+    private static BlockSource blocks(Reader source, Settings settings, Diagnostics diags) {
+        return new BlockReader(source, diags);
     }
 
     /** The longest first line read for a stock header; the program is read once, from the start. */

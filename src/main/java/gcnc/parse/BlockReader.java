@@ -27,7 +27,7 @@ import org.antlr.v4.runtime.Token;
  * there is followed onto the next lines. Where a typing slip explains the error (the letter O
  * for a zero, a decimal comma: {@link Slips}), the hint that names the fix takes its place.
  */
-public final class BlockReader {
+public final class BlockReader implements BlockSource {
     private final LineSource source;
     private final Diagnostics diagnostics;
     private final LineCharStream stream = new LineCharStream();
@@ -62,6 +62,7 @@ public final class BlockReader {
     }
 
     /** The next block, or null at the end of the input. */
+    @Override
     public RawBlock next() throws IOException {
         while (source.next()) {
             RawBlock block = readLine();
@@ -77,6 +78,7 @@ public final class BlockReader {
     }
 
     /** Lines read so far (at the end: the number of lines in the input). */
+    @Override
     public int lines() {
         return source.number();
     }
