@@ -38,6 +38,9 @@ final class SimulateCommand extends RunCommand {
     @Option(names = "--svg", paramLabel = "OUT", description = "Draw the XZ half-section: chuck, tailstock, stock, part, tool path, findings.")
     Path svg;
 
+    @Option(names = "--hide-rapids", description = "Leave the rapid moves out of the --svg drawing (feeds and findings only).")
+    boolean hideRapids;
+
     @Option(names = "--trace", description = "Print every directive with the position and outputs after it.")
     boolean trace;
 
@@ -80,7 +83,7 @@ final class SimulateCommand extends RunCommand {
             out.println(SimSummary.format(report.get()));
             if (svg != null) {
                 try (AtomicOutput o = new AtomicOutput(svg)) {
-                    SvgWriter.write(report.get(), file.getFileName().toString(), o.writer());
+                    SvgWriter.write(report.get(), file.getFileName().toString(), o.writer(), !hideRapids);
                     o.commit();
                     out.println("drawing: " + svg);
                 } catch (IOException e) {

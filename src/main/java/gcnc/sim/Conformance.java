@@ -46,7 +46,7 @@ final class Conformance {
         }
         if (first.sweepDeg() == 0) {
             out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, first.text());
-            mark("E309", to);
+            mark("E309", line, to);
             return new double[] {to.x(), to.z()};
         }
         double centre = Geometry.length(first.centreX() - arc.centre().x(), first.centreZ() - arc.centre().z());
@@ -84,13 +84,13 @@ final class Conformance {
 
     private double[] mismatch(int line, String what, double by, Point to) {
         out.report(Code.E308_SIM_PATH_MISMATCH, line, what, MotionChecks.mm(by), MotionChecks.mm(tol));
-        mark("E308", to);
+        mark("E308", line, to);
         return new double[] {to.x(), to.z()};
     }
 
-    private void mark(String code, Point p) {
+    private void mark(String code, int line, Point p) {
         if (path != null) {
-            path.mark(code, p.x(), p.z());
+            path.mark(code, "line " + line, p.x(), p.z());
         }
     }
 }

@@ -15,14 +15,38 @@ import java.util.List;
  * @param finalR      final part profile: radii
  * @param moves       the tool path, one polyline per sequence
  * @param marks       where findings were reported
+ * @param program     where the program's coordinates are, for the grid; null when not known (a bare DMC replay)
  */
 public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace,
-                      double stockRadius, double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks) {
+                      double stockRadius, double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks,
+                      ProgramAxes program) {
+    /**
+     * The program's coordinates in the drawing: programmed Z value q is at z = z0 + q * zPer mm,
+     * programmed X value p (a diameter where the control reads one) at radius r0 + p * xPer mm.
+     */
+    public record ProgramAxes(double z0, double zPer, double r0, double xPer) {
+        double z(double q) {
+            return z0 + q * zPer;
+        }
+
+        double r(double p) {
+            return r0 + p * xPer;
+        }
+
+        double programZ(double z) {
+            return (z - z0) / zPer;
+        }
+
+        double programX(double r) {
+            return (r - r0) / xPer;
+        }
+    }
+
     /** One sequence of the path as a polyline; rapid ones are drawn dashed. */
     public record Move(boolean rapid, double[] z, double[] r) {
     }
 
-    /** A finding at a place: its code (E305 ...) and the point. */
-    public record Mark(String code, double z, double r) {
+    /** A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12") and the point. */
+    public record Mark(String code, String block, double z, double r) {
     }
 }

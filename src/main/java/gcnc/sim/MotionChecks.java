@@ -197,6 +197,7 @@ final class MotionChecks {
         seconds += time(length, speed, acc, dec);
         if (poly != null) {
             path.move(rapid, poly);
+            path.frame(frame, rapid);
         }
     }
 
@@ -385,7 +386,8 @@ final class MotionChecks {
         args[lead.length + 3] = mm(p[1] / profile.z().countsPerMm());
         out.report(code, line, args);
         if (path != null) {
-            path.mark(code.id(), p[0], p[1]);
+            String block = frame != null && !frame.sequence().isEmpty() ? frame.sequence() : "line " + line;
+            path.mark(code.id(), block, p[0], p[1]);
         }
     }
 

@@ -34,9 +34,26 @@ final class PathRecorder {
         moves.add(new Drawing.Move(rapid, z, r));
     }
 
-    /** A finding at machine counts (x, z). */
-    void mark(String code, double x, double z) {
-        marks.add(new Drawing.Mark(code, z / kz, (x - centre) / kx));
+    /** A finding on a block ("N110", "line 12") at machine counts (x, z). */
+    void mark(String code, String block, double x, double z) {
+        marks.add(new Drawing.Mark(code, block, z / kz, (x - centre) / kx));
+    }
+
+    /** The program frame of the first feed move (else of the first move): the grid of the drawing is in its coordinates. */
+    private Drawing.ProgramAxes program;
+    private Drawing.ProgramAxes firstMove;
+
+    void frame(gcnc.ir.ProgramFrame f, boolean rapid) {
+        if (f == null || program != null) {
+            return;
+        }
+        Drawing.ProgramAxes a = new Drawing.ProgramAxes(f.origin().z() / kz, f.perZ() / kz,
+                (f.origin().x() - centre) / kx, f.perX() / kx);
+        if (!rapid) {
+            program = a;
+        } else if (firstMove == null) {
+            firstMove = a;
+        }
     }
 
     Drawing drawing(SimMachine machine, Stock stock) {
@@ -49,11 +66,15 @@ final class PathRecorder {
             tail.add(scale(s));
         }
         if (stock == null) {
-            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks);
+            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes());
         }
         double[][] part = stock.profile();
         return new Drawing(chuck, tail, stock.back(), stock.face(), stock.initialRadius(), part[0], part[1],
-                moves, marks);
+                moves, marks, axes());
+    }
+
+    private Drawing.ProgramAxes axes() {
+        return program != null ? program : firstMove;
     }
 
     private Shape scale(Shape s) {

@@ -349,18 +349,20 @@ final class Stock {
 
     /** The finished part's outline: for each slice, the largest radius of material left (mm). */
     double[][] profile() {
-        int n = Math.min(slices, 4096); // the drawing needs no finer outline
+        int per = (slices + 4095) / 4096; // the drawing needs no finer outline than 4096 points
+        int n = (slices + per - 1) / per;
         double[] z = new double[n];
         double[] r = new double[n];
-        int per = slices / n;
         for (int i = 0; i < n; i++) {
-            z[i] = back + (i * per + per / 2.0) * step;
+            int end = Math.min(slices, (i + 1) * per);
+            z[i] = back + (i * per + end) / 2.0 * step;
             double m = 0;
-            for (int k = i * per; k < (i + 1) * per; k++) {
+            for (int k = i * per; k < end; k++) {
                 m = Math.max(m, upper[k]);
             }
             r[i] = m;
         }
         return new double[][] {z, r};
     }
+
 }

@@ -107,7 +107,7 @@ class ModelTest {
         String svg = w.toString();
         assertTrue(svg.startsWith("<svg"));
         assertTrue(svg.contains("stroke-dasharray=\"6 4\""), "rapids dashed");
-        assertTrue(svg.contains(">E305</text>"), "finding marked");
+        assertTrue(svg.contains(">E305 line 5</text>"), "finding marked with its line: " + svg);
         assertEquals(4, svg.split("<polyline").length - 1);
         assertTrue(svg.trim().endsWith("</svg>"));
     }
