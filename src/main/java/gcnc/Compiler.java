@@ -78,6 +78,8 @@ public final class Compiler {
         Optional<SimOptions> simulate = settings.simulation();
         try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get()) : null) {
             dialect.begin(collect);
+            simulate.flatMap(SimOptions::stock).ifPresent(b -> dialect.blank(
+                    new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout()), collect));
             if (sim != null) {
                 sim.begin(List.copyOf(lines));
             }

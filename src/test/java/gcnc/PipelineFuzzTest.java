@@ -137,10 +137,12 @@ class PipelineFuzzTest {
 
     private static void run(String program, MachineProfile profile, String dialect, long seed) throws Exception {
         List<String> out = new ArrayList<>();
+        List<String> mapLines = new ArrayList<>();
+        gcnc.galil.SourceMap map = new gcnc.galil.SourceMap(mapLines::add);
         Compiler.Result r;
         try {
             r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, profile, dialect,
-                    Optional.of(SimOptions.defaults().withPath())), l -> out.add(l.text()));
+                    Optional.of(SimOptions.defaults().withPath())), map.wrap(l -> out.add(l.text())));
         } catch (RuntimeException e) {
             throw new AssertionError("seed " + seed + " (" + dialect + ") threw on:\n" + program, e);
         }
@@ -162,6 +164,32 @@ class PipelineFuzzTest {
         if (!r.ok()) {
             assertTrue(r.diagnostics().sorted().stream().anyMatch(d -> d.severity() == Severity.ERROR), "seed " + seed);
         }
+        // One verdict: check reports every error compile reports, but the simulator's (E3xx)
+        Compiler.Result checked = Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, profile,
+                dialect, Optional.empty()));
+        assertEquals(errors(r, false), errors(checked, false), () -> "check and compile differ, seed " + seed + " on "
+                + profile.name() + " (" + dialect + "):\n" + program);
+        // ... and replaying the DMC compile wrote, with its source map, finds what compile's simulation found
+        if (r.ok() && dialect.equals("galil")) {
+            gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
+            gcnc.sim.DmcReplay.replay(new java.io.BufferedReader(new StringReader(String.join("\n", out))), profile,
+                    SimOptions.defaults(), replayed, gcnc.galil.SourceMap.read(new java.io.BufferedReader(
+                            new StringReader(String.join("\n", mapLines)))).lines());
+            assertEquals(errors(r, true), errors(new Compiler.Result(replayed, 0, Optional.empty()), true),
+                    () -> "replay differs, seed " + seed + " on " + profile.name() + ":\n" + program);
+        }
+    }
+
+    /** The errors of a result as code@line: the simulator's (E3xx) only, or all others. */
+    private static List<String> errors(Compiler.Result r, boolean simulator) {
+        List<String> e = new ArrayList<>();
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            boolean sim = d.code().number() >= 300 && d.code().number() < 400;
+            if (d.severity() == Severity.ERROR && sim == simulator) {
+                e.add(d.code().id() + "@" + d.span().line());
+            }
+        }
+        return e;
     }
 
     /** A turning program: a valid header, then random blocks (a few of them mutated) that track the position. */

@@ -54,6 +54,7 @@ final class CompileCommand extends RunCommand {
         try (Reader in = SourceFiles.open(file)) {
             try (AtomicOutput dmc = new AtomicOutput(target); AtomicOutput map = new AtomicOutput(mapFile(target))) {
                 SourceMap mapper = new SourceMap(map::line);
+                map.line(SourceMap.sourceLine(file.getFileName().toString()));
                 r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(),
                         simulate ? Optional.of(stock.options(profile)) : Optional.empty(), sourceMap),
                         mapper.wrap(line -> dmc.line(line.text())));

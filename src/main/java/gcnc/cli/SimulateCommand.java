@@ -64,10 +64,17 @@ final class SimulateCommand extends RunCommand {
         Reporter reporter = setup.reporter();
         Diagnostics diags;
         Optional<SimReport> report;
+        String shown = file.toString();
         try (Reader in = SourceFiles.open(file)) {
             if (file.toString().endsWith(".dmc")) {
                 diags = new Diagnostics();
-                report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags));
+                gcnc.galil.SourceMap.Table map = sourceMap(file);
+                report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
+                        map == null ? null : map.lines()));
+                if (map != null) {
+                    // the findings are at G-code lines: name the G-code file the map names
+                    shown = map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);
+                }
             } else {
                 LineSink discard = line -> { };
                 Compiler.Result r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(), Optional.of(options)), discard);
@@ -78,7 +85,7 @@ final class SimulateCommand extends RunCommand {
             return reporter.ioFault(file, "cannot read", e);
         }
         out.flush();
-        reporter.report(file.toString(), diags);
+        reporter.report(shown, diags);
         if (report.isPresent()) {
             out.println(SimSummary.format(report.get()));
             if (svg != null) {
@@ -94,5 +101,18 @@ final class SimulateCommand extends RunCommand {
             out.println(file + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
         }
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
+    }
+
+    /** The source map beside a .dmc ({@code OUT.dmc.map}, as compile writes it), or null when there is none or it cannot be read. */
+    private static gcnc.galil.SourceMap.Table sourceMap(Path dmc) {
+        Path map = CompileCommand.mapFile(dmc);
+        if (!java.nio.file.Files.isRegularFile(map)) {
+            return null;
+        }
+        try (BufferedReader r = java.nio.file.Files.newBufferedReader(map)) {
+            return gcnc.galil.SourceMap.read(r);
+        } catch (IOException | java.io.UncheckedIOException e) {
+            return null; // located at DMC lines instead
+        }
     }
 }

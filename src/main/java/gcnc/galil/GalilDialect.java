@@ -49,6 +49,12 @@ final class GalilDialect implements Dialect {
         out.accept(new GalilLine("VD " + GalilNumbers.round(profile.deceleration()), 0));
     }
 
+    /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm (docs/dmc-format.md). */
+    @Override
+    public void blank(gcnc.machine.MachineModel.Blank blank, LineSink out) {
+        out.accept(new GalilLine(StockComment.write(blank), 0));
+    }
+
     @Override
     public void end(LineSink out) {
         out.accept(new GalilLine("EN", 0));
@@ -115,7 +121,7 @@ final class GalilDialect implements Dialect {
         if (speed < 0 || (du == 0 && dv == 0)) {
             return; // no move: an empty sequence would be TC 30 "segment too short"
         }
-        out.emit("VS " + speed);
+        speedLine(speed, feed != null, out);
         out.emit("VP " + du + "," + dv);
         finishSequence(out);
         posU = tu;
@@ -147,7 +153,7 @@ final class GalilDialect implements Dialect {
         if (speed < 0) {
             return;
         }
-        out.emit("VS " + speed);
+        speedLine(speed, true, out);
         out.emit("CR " + cr.radius() + "," + GalilNumbers.angle(cr.start()) + "," + GalilNumbers.angle(cr.sweep()));
         if (cr.closing()) {
             out.emit("VP " + (tu - posU) + "," + (tv - posV)); // VP is measured from the sequence start
@@ -171,6 +177,17 @@ final class GalilDialect implements Dialect {
     }
 
     /** The vector speed in counts/s, or -1 (reported) when the controller cannot take it. */
+    /**
+     * The sequence's VS; a feed as fast as a rapid is marked with a {@code NO G01} comment first, so
+     * that a replay of the DMC by itself knows it for a feed (docs/dmc-format.md).
+     */
+    private void speedLine(long speed, boolean feed, BlockWriter out) {
+        if (feed && speed == GalilNumbers.round(profile.rapidSpeed())) {
+            out.emit("NO G01");
+        }
+        out.emit("VS " + speed);
+    }
+
     private long speed(CheckedBlock b, gcnc.ir.Feed feed) {
         double cps = feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
         long s = GalilNumbers.round(cps);

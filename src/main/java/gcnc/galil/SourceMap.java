@@ -35,4 +35,47 @@ public final class SourceMap {
     public int lines() {
         return dmcLines;
     }
+
+    /** The first line of a map file: the G-code file the DMC was compiled from. */
+    public static String sourceLine(String fileName) {
+        return "# source " + fileName;
+    }
+
+    /**
+     * A map file read back: the G-code line of each DMC line (0 where a run came from no block,
+     * or before the first entry), and the G-code file's name when the map names it.
+     */
+    public record Table(java.util.function.IntUnaryOperator lines, java.util.Optional<String> source) {
+    }
+
+    /** Reads a map file back; lines that are neither an entry nor {@code # source} are skipped. */
+    public static Table read(java.io.BufferedReader in) throws java.io.IOException {
+        java.util.List<int[]> runs = new java.util.ArrayList<>();
+        String source = null;
+        for (String l = in.readLine(); l != null; l = in.readLine()) {
+            if (l.startsWith("# source ") && source == null) {
+                source = l.substring("# source ".length());
+                continue;
+            }
+            String[] f = l.strip().split(" ");
+            if (f.length == 2 && number(f[0]) && number(f[1])) {
+                runs.add(new int[] {Integer.parseInt(f[0]), Integer.parseInt(f[1])});
+            }
+        }
+        int[] start = new int[runs.size()];
+        int[] from = new int[runs.size()];
+        for (int i = 0; i < start.length; i++) {
+            start[i] = runs.get(i)[0];
+            from[i] = runs.get(i)[1];
+        }
+        return new Table(dmcLine -> {
+            int i = java.util.Arrays.binarySearch(start, dmcLine);
+            int run = i >= 0 ? i : -i - 2;
+            return run < 0 ? 0 : from[run];
+        }, java.util.Optional.ofNullable(source));
+    }
+
+    private static boolean number(String s) {
+        return !s.isEmpty() && s.length() < 10 && s.chars().allMatch(c -> c >= '0' && c <= '9');
+    }
 }

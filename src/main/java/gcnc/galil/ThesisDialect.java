@@ -33,6 +33,11 @@ final class ThesisDialect implements Dialect {
     public void begin(LineSink out) {
     }
 
+    /** The thesis's format has no place for it: nothing. */
+    @Override
+    public void blank(gcnc.machine.MachineModel.Blank blank, LineSink out) {
+    }
+
     @Override
     public void end(LineSink out) {
     }

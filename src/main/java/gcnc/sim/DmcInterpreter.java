@@ -28,6 +28,8 @@ final class DmcInterpreter {
     }
 
     private static final double INT32 = 2147483647;
+    /** The comment gcnc writes before a feed at the rapid speed ({@link #feedMarked}). */
+    static final String FEED_MARK = "NO G01";
 
     private final Plane plane;
     private final Listener out;
@@ -79,8 +81,22 @@ final class DmcInterpreter {
         pending.clear();
     }
 
+    /**
+     * A {@code NO G01} comment came before this sequence: gcnc marks a feed whose speed equals the
+     * rapid speed so that a bare replay does not take it for a rapid (docs/dmc-format.md).
+     */
+    private boolean feedMarked;
+
+    boolean feedMarked() {
+        return feedMarked;
+    }
+
     void line(String raw, int line) {
         String t = raw.strip();
+        if (t.equals(FEED_MARK)) {
+            feedMarked = true;
+            return;
+        }
         if (t.isEmpty() || t.startsWith("'") || t.equals("NO") || t.startsWith("NO ")) {
             return;
         }
@@ -235,6 +251,7 @@ final class DmcInterpreter {
         // The listener reads the segments during the call and keeps none of them.
         out.sequence(pending, speed, line, text);
         pending.clear();
+        feedMarked = false;
     }
 
     private void of(String args, String text, int line) {

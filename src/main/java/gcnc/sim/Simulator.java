@@ -173,7 +173,7 @@ public final class Simulator {
                 m = nextMotion < expected.size() ? expected.get(nextMotion) : null;
                 nextMotion++;
             }
-            boolean rapid = m == null ? speed == profile.rapidSpeed()
+            boolean rapid = m == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
             if (!rapid && outputs.spindleKnown && !outputs.running) {
                 report(Code.E306_SIM_FEED_SPINDLE_STOPPED, line, outputs.describe());

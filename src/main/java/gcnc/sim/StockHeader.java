@@ -33,6 +33,7 @@ public final class StockHeader {
                 return Optional.empty();
             }
         }
-        return Optional.of(new StockSize(v[1], v[0], stickout));
+        // a blank shorter than the machine's usual stickout cannot stick out further than its length
+        return Optional.of(new StockSize(v[1], v[0], Math.min(stickout, v[0])));
     }
 }

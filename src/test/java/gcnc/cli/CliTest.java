@@ -184,6 +184,8 @@ class CliTest {
         assertTrue(text.endsWith("EN\n"), text);
         // The side map is a line-number table: header from no block, then a run per emitting block.
         List<String> map = Files.readAllLines(p.resolveSibling("part.dmc.map"));
+        assertEquals("# source part.nc", map.get(0), "the map names the G-code file");
+        map = map.subList(1, map.size());
         assertEquals("1 0", map.get(0), "DMC lines 1-5 are the header");
         assertEquals("6 4", map.get(1), "DMC line 6 (CB4) comes from G-code line 4 (N30 M11)");
         assertEquals(text.lines().count() + " 0", map.get(map.size() - 1), "the last line, EN, is the footer");

@@ -60,7 +60,9 @@ class ModelTest {
 
     @Test
     void emcoStockHeaderGivesLengthAndDiameter() {
-        assertEquals(Optional.of(new StockSize(22, 120, 150)), StockHeader.parse("(120.00 22.00 5.00 5.00)", 150));
+        assertEquals(Optional.of(new StockSize(22, 120, 100)), StockHeader.parse("(120.00 22.00 5.00 5.00)", 100));
+        // never further out of the chuck than the blank is long
+        assertEquals(Optional.of(new StockSize(22, 120, 120)), StockHeader.parse("(120.00 22.00 5.00 5.00)", 150));
         assertEquals(Optional.empty(), StockHeader.parse("(ROUGH FACE)", 150));
         assertEquals(Optional.empty(), StockHeader.parse("N10 G00 X1", 150));
         assertEquals(Optional.empty(), StockHeader.parse("(120)", 150));

@@ -74,4 +74,60 @@ class ReplayTest {
             assertEquals(2, m.chuck().length, name);
         }
     }
+
+    /** Compiles with the simulator on and returns the DMC text (the program must be clean). */
+    static String compile(String program, String machine) throws Exception {
+        StringBuilder dmc = new StringBuilder();
+        gcnc.Compiler.Result r = gcnc.Compiler.compile(new StringReader(program), new gcnc.Compiler.Settings(
+                Tables.builtIn(), profile(machine), "galil", java.util.Optional.of(SimOptions.defaults())),
+                l -> dmc.append(l.text()).append('\n'));
+        assertEquals(List.of(), codes(r.diagnostics()), program);
+        return dmc.toString();
+    }
+
+    static List<String> replay(String dmc, String machine) throws Exception {
+        Diagnostics d = new Diagnostics();
+        DmcReplay.replay(new BufferedReader(new StringReader(dmc)), profile(machine), SimOptions.defaults(), d);
+        return codes(d);
+    }
+
+    /**
+     * On thesis-2004 a feed of F1000 has the VS of a rapid: the DMC marks it (NO G01), so that a
+     * replay of the DMC by itself cuts with it instead of reporting a rapid into the blank.
+     */
+    @Test
+    void aFeedAsFastAsARapidIsMarkedAndReplayedAsAFeed() throws Exception {
+        String program = "N100 G00 X+3234 Z+00500\nG50 S5000 M11 M03 F150\nN130 G00 X+2034 Z+00100\n"
+                + "N135 G01 Z-01000 F1000\nN137 G00 X+2234 Z+00100\nN140 G00 X+3234 Z+00500\nM05\nM30\n";
+        String dmc = compile(program, "thesis-2004");
+        assertEquals(1, dmc.split("\nNO G01\n", -1).length - 1, dmc);
+        assertEquals(List.of(), replay(dmc, "thesis-2004"));
+        List<String> unmarked = replay(dmc.replace("NO G01\n", ""), "thesis-2004");
+        assertEquals(1, unmarked.size(), "without the mark: a rapid into the blank " + unmarked);
+        assertTrue(unmarked.get(0).startsWith("E305@"), unmarked.toString());
+    }
+
+    /** The blank of a program's stock header goes into the DMC, and a replay cuts that blank, not the profile's. */
+    @Test
+    void theProgramsBlankTravelsWithTheDmc() throws Exception {
+        // a D30 blank: the pass at X36. runs in the air; the generic profile's D44 blank would be hit
+        String program = "(100 30)\nG21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\nG00 X36. Z2.\n"
+                + "G00 Z-20.\nG00 X60.\nM05\nM30\n";
+        String dmc = compile(program, "generic");
+        assertTrue(dmc.contains("\nNO STOCK D30 L100 S100\n"), dmc);
+        assertEquals(List.of(), replay(dmc, "generic"));
+        List<String> profiles = replay(dmc.replace("NO STOCK D30 L100 S100\n", ""), "generic");
+        assertTrue(profiles.size() == 1 && profiles.get(0).startsWith("E305@"), "the profile's D44 blank is in the way: "
+                + profiles);
+    }
+
+    @Test
+    void aSourceMapFileLocatesReplayFindingsAtGcodeLines() throws Exception {
+        gcnc.galil.SourceMap.Table t = gcnc.galil.SourceMap.read(new BufferedReader(new StringReader(
+                "# source part.nc\n1 0\n6 4\n9 7\n")));
+        assertEquals(java.util.Optional.of("part.nc"), t.source());
+        assertEquals(List.of(0, 0, 4, 4, 4, 7, 7), List.of(t.lines().applyAsInt(1), t.lines().applyAsInt(5),
+                t.lines().applyAsInt(6), t.lines().applyAsInt(7), t.lines().applyAsInt(8), t.lines().applyAsInt(9),
+                t.lines().applyAsInt(500)));
+    }
 }

@@ -1,0 +1,33 @@
+package gcnc.galil;
+
+import gcnc.machine.MachineModel;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * The Galil comment that records the blank a program was verified against,
+ * {@code NO STOCK D<diameter> L<length> S<stickout>} in mm (docs/dmc-format.md): written after the
+ * header when the program or the user gave a blank, read back by a replay of the DMC by itself.
+ */
+public final class StockComment {
+    private static final Pattern FORM = Pattern.compile("NO STOCK D([0-9]+(?:\\.[0-9]+)?) L([0-9]+(?:\\.[0-9]+)?)"
+            + " S(-?[0-9]+(?:\\.[0-9]+)?)");
+
+    private StockComment() {
+    }
+
+    public static String write(MachineModel.Blank b) {
+        return "NO STOCK D" + GalilNumbers.angle(b.diameter()) + " L" + GalilNumbers.angle(b.length())
+                + " S" + GalilNumbers.angle(b.stickout());
+    }
+
+    /** The blank of a {@code NO STOCK} comment, or null when the line is not one. */
+    public static MachineModel.Blank read(String line) {
+        Matcher m = FORM.matcher(line.strip());
+        if (!m.matches()) {
+            return null;
+        }
+        return new MachineModel.Blank(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)),
+                Double.parseDouble(m.group(3)));
+    }
+}
