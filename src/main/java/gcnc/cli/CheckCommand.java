@@ -1,14 +1,11 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
-import gcnc.machine.MachineProfile;
-import gcnc.tables.Tables;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Reader;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Optional;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Parameters;
@@ -21,13 +18,11 @@ final class CheckCommand extends RunCommand {
 
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) {
-        Tables tables = setup.tables();
-        MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
         int status = ExitCode.CLEAN;
         for (Path file : files) {
             try (Reader in = SourceFiles.open(file)) {
-                Compiler.Result r = Compiler.check(in, new Compiler.Settings(tables, profile, "galil", Optional.empty()));
+                Compiler.Result r = setup.session().check(in);
                 int errors = reporter.report(file.toString(), r.diagnostics());
                 out.println(file + ": " + Reporter.plural(r.blocks(), "block") + ", "
                         + (errors == 0 ? "no errors" : Reporter.plural(errors, "error")));

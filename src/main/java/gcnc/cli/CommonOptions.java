@@ -28,14 +28,28 @@ final class CommonOptions {
             description = "Language of the messages: en (default) or es.")
     ErrorMessages.Lang lang;
 
-    /** What every command needs once its options are read: tables, machine, a reporter. */
-    record Setup(Tables tables, MachineProfile profile, Reporter reporter) {
+    /** What every command needs once its options are read: the library session (tables, machine), a reporter. */
+    record Setup(gcnc.Session session, Reporter reporter) {
+        Tables tables() {
+            return session.tables();
+        }
+
+        MachineProfile profile() {
+            return session.profile();
+        }
     }
 
     /** Loads the tables and the machine; a broken one is reported by the caller with {@link Reporter#tableFault}. */
     Setup load(java.io.PrintWriter err) throws TableException {
-        Tables t = loadTables();
-        return new Setup(t, loadProfile(t), new Reporter(err, t, lang));
+        gcnc.Session.Options o = gcnc.Session.Options.defaults().withMachine(machine);
+        if (tables != null) {
+            o = o.withTables(tables);
+        }
+        if (control != null) {
+            o = o.withControl(control);
+        }
+        gcnc.Session s = gcnc.Session.open(o);
+        return new Setup(s, new Reporter(err, s.tables(), lang));
     }
 
     TableSource source() {

@@ -4,7 +4,6 @@ import gcnc.Compiler;
 import gcnc.galil.SourceMap;
 import gcnc.machine.MachineProfile;
 import gcnc.tables.TableException;
-import gcnc.tables.Tables;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Reader;
@@ -39,7 +38,6 @@ final class CompileCommand extends RunCommand {
 
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
-        Tables tables = setup.tables();
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
@@ -55,8 +53,8 @@ final class CompileCommand extends RunCommand {
             try (AtomicOutput dmc = new AtomicOutput(target); AtomicOutput map = new AtomicOutput(mapFile(target))) {
                 SourceMap mapper = new SourceMap(map::line);
                 map.line(SourceMap.sourceLine(file.getFileName().toString()));
-                r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(),
-                        simulate ? Optional.of(stock.options(profile)) : Optional.empty(), sourceMap),
+                r = setup.session().withDialect(dialect.name()).compile(in,
+                        simulate ? Optional.of(stock.options(profile)) : Optional.empty(), sourceMap,
                         mapper.wrap(line -> dmc.line(line.text())));
                 reporter.report(file.toString(), r.diagnostics());
                 if (r.ok()) {

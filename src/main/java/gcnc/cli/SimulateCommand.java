@@ -9,7 +9,6 @@ import gcnc.sim.SimOptions;
 import gcnc.sim.SimReport;
 import gcnc.sim.SvgWriter;
 import gcnc.tables.TableException;
-import gcnc.tables.Tables;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -59,7 +58,6 @@ final class SimulateCommand extends RunCommand {
         if (trace) {
             options = options.withTrace(out);
         }
-        Tables tables = setup.tables();
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
         Diagnostics diags;
@@ -77,7 +75,7 @@ final class SimulateCommand extends RunCommand {
                 }
             } else {
                 LineSink discard = line -> { };
-                Compiler.Result r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(), Optional.of(options)), discard);
+                Compiler.Result r = setup.session().withDialect(dialect.name()).compile(in, Optional.of(options), false, discard);
                 diags = r.diagnostics();
                 report = r.simulation();
             }

@@ -1,18 +1,12 @@
 package gcnc.junit;
 
 import gcnc.Compiler;
+import gcnc.Session;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.GnuRenderer;
-import gcnc.galil.LineSink;
-import gcnc.machine.MachineProfile;
-import gcnc.machine.ProfileLoader;
-import gcnc.sim.SimOptions;
 import gcnc.tables.ErrorMessages;
 import gcnc.tables.TableException;
-import gcnc.tables.TableSource;
-import gcnc.tables.Tables;
 import java.io.IOException;
-import java.io.Reader;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -41,15 +35,30 @@ public final class GcodeAssertions {
      * machine (warnings and notes, like the command line's exit status 0, do not fail it).
      */
     public static void assertCompilesClean(Path program, String machine) {
-        List<String> findings = findings(program, machine);
+        assertCompilesClean(program, session(machine));
+    }
+
+    /**
+     * The same with every input the command line takes (tables, machine, control, dialect, blank):
+     * {@code Session.open(Session.Options.defaults().withMachine("haas").withStock(...))}. The
+     * verdict is the command line's {@code gcnc compile} on the same inputs.
+     */
+    public static void assertCompilesClean(Path program, Session session) {
+        List<String> findings = findings(program, session);
         if (findings.stream().anyMatch(f -> f.contains(": error["))) {
-            throw new AssertionError(program + " is not clean on " + machine + ":\n" + String.join("\n", findings));
+            throw new AssertionError(program + " is not clean on " + session.profile().name() + ":\n"
+                    + String.join("\n", findings));
         }
     }
 
     /** Fails unless the program has exactly these diagnostic codes, in order (e.g. "E037", "E101"). */
     public static void assertFindings(Path program, String machine, String... codes) {
-        List<String> findings = findings(program, machine);
+        assertFindings(program, session(machine), codes);
+    }
+
+    /** Fails unless the program has exactly these diagnostic codes, in order, with these inputs. */
+    public static void assertFindings(Path program, Session session, String... codes) {
+        List<String> findings = findings(program, session);
         List<String> actual = new ArrayList<>();
         for (String f : findings) {
             int open = f.indexOf('[');
@@ -60,36 +69,60 @@ public final class GcodeAssertions {
         }
     }
 
-    /** One dynamic test per {@code *.nc} file below a folder. */
+    /** The file names a shop's part programs have (any case): .nc, .ngc, .tap. */
+    public static final List<String> PROGRAM_EXTENSIONS = List.of("nc", "ngc", "tap");
+
+    /** One dynamic test per part program below a folder ({@link #PROGRAM_EXTENSIONS}, any case). */
     public static Stream<DynamicTest> everyProgramIn(Path folder, String machine) {
-        try (Stream<Path> files = Files.walk(folder)) {
-            List<Path> programs = files.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
-            return programs.stream().map(p -> DynamicTest.dynamicTest(p.toString(), () -> assertCompilesClean(p, machine)));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        return everyProgramIn(folder, session(machine));
     }
 
-    private static List<String> findings(Path program, String machine) {
-        Tables tables = Tables.builtIn();
-        MachineProfile profile;
+    /**
+     * One dynamic test per part program below a folder, named after its file; a folder with no
+     * program in it is a failing test (a misspelt path must not pass a build).
+     */
+    public static Stream<DynamicTest> everyProgramIn(Path folder, Session session) {
+        List<Path> programs;
+        try (Stream<Path> files = Files.walk(folder)) {
+            programs = files.filter(Files::isRegularFile).filter(GcodeAssertions::isProgram).sorted().toList();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot read the folder " + folder, e);
+        }
+        if (programs.isEmpty()) {
+            return Stream.of(DynamicTest.dynamicTest(folder.toString(), () -> {
+                throw new AssertionError("no part program (" + String.join(", ", PROGRAM_EXTENSIONS) + ") in " + folder);
+            }));
+        }
+        return programs.stream().map(p -> DynamicTest.dynamicTest(folder.relativize(p).toString(),
+                () -> assertCompilesClean(p, session)));
+    }
+
+    private static boolean isProgram(Path p) {
+        String name = p.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return dot > 0 && PROGRAM_EXTENSIONS.contains(name.substring(dot + 1).toLowerCase(java.util.Locale.ROOT));
+    }
+
+    /** The built-in tables and a shipped machine profile (or a .machine file). */
+    public static Session session(String machine) {
         try {
-            profile = ProfileLoader.load(machine, TableSource.builtIn(), tables);
+            return Session.open(Session.Options.defaults().withMachine(machine));
         } catch (TableException e) {
             throw new AssertionError("machine profile " + machine + ": " + e.getMessage(), e);
         }
-        GnuRenderer renderer = new GnuRenderer(tables.messages().in(ErrorMessages.Lang.EN));
-        LineSink discard = line -> { };
-        try (Reader in = Files.newBufferedReader(program)) {
-            Compiler.Result r = Compiler.compile(in, new Compiler.Settings(tables, profile, "galil",
-                    java.util.Optional.of(SimOptions.defaults())), discard);
+    }
+
+    private static List<String> findings(Path program, Session session) {
+        GnuRenderer renderer = new GnuRenderer(session.tables().messages().in(ErrorMessages.Lang.EN));
+        try {
+            Compiler.Result r = session.compile(program);
             List<String> out = new ArrayList<>();
             for (Diagnostic d : r.diagnostics().sorted()) {
                 out.add(renderer.render(program.toString(), d));
             }
             return out;
         } catch (IOException e) {
-            throw new UncheckedIOException(e);
+            throw new UncheckedIOException("cannot read " + program, e);
         }
     }
 }

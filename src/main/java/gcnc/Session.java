@@ -1,0 +1,130 @@
+package gcnc;
+
+import gcnc.galil.LineSink;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileLoader;
+import gcnc.sim.SimOptions;
+import gcnc.sim.StockSize;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+
+/**
+ * The one way in for every front end (the command line, the JUnit fixtures, later the Gradle
+ * plugin and the studio): what a run is given (tables, machine, control, dialect, blank) is
+ * resolved here, once, the same for all of them, so that they give the same verdict on the same
+ * program. A session is immutable and can check or compile any number of programs.
+ */
+public final class Session {
+    /**
+     * What a run is given, as a user gives it.
+     *
+     * @param tables  a folder with an edited copy of tables/, or empty for the built-in tables
+     * @param machine a profile name under tables/machines/ or a path to a .machine file
+     * @param control a control name or folder that replaces the one the profile names, or empty
+     * @param dialect "galil" or "thesis"
+     * @param stock   the blank (else the program's stock header, else the profile's blank)
+     */
+    public record Options(Optional<Path> tables, String machine, Optional<String> control, String dialect,
+                          Optional<StockSize> stock) {
+        /** The built-in tables, the default machine, its own control, the galil dialect, no blank given. */
+        public static Options defaults() {
+            return new Options(Optional.empty(), ProfileLoader.DEFAULT, Optional.empty(), "galil", Optional.empty());
+        }
+
+        public Options withTables(Path folder) {
+            return new Options(Optional.of(folder), machine, control, dialect, stock);
+        }
+
+        public Options withMachine(String nameOrPath) {
+            return new Options(tables, nameOrPath, control, dialect, stock);
+        }
+
+        public Options withControl(String nameOrPath) {
+            return new Options(tables, machine, Optional.of(nameOrPath), dialect, stock);
+        }
+
+        public Options withDialect(String name) {
+            return new Options(tables, machine, control, name, stock);
+        }
+
+        public Options withStock(StockSize blank) {
+            return new Options(tables, machine, control, dialect, Optional.of(blank));
+        }
+
+        TableSource source() {
+            return tables.map(TableSource::directory).orElse(TableSource.builtIn());
+        }
+    }
+
+    private final Options options;
+    private final Tables tables;
+    private final MachineProfile profile;
+
+    private Session(Options options, Tables tables, MachineProfile profile) {
+        this.options = options;
+        this.tables = tables;
+        this.profile = profile;
+    }
+
+    /** Loads the tables and the machine profile; a broken table or profile is a {@link TableException} at its file and line. */
+    public static Session open(Options options) throws TableException {
+        Tables t = Tables.load(options.source());
+        MachineProfile p = ProfileLoader.load(options.machine(), options.source(), t, options.control().orElse(null));
+        return new Session(options, t, p);
+    }
+
+    public Options options() {
+        return options;
+    }
+
+    /** The same tables and machine in another dialect. */
+    public Session withDialect(String dialect) {
+        return new Session(options.withDialect(dialect), tables, profile);
+    }
+
+    /** The same tables and machine with this blank (a blank's default stick-out comes from the profile, so it is given after opening). */
+    public Session withStock(StockSize blank) {
+        return new Session(options.withStock(blank), tables, profile);
+    }
+
+    public Tables tables() {
+        return tables;
+    }
+
+    public MachineProfile profile() {
+        return profile;
+    }
+
+    /** How a simulation starts: the blank given, else (in {@link Compiler}) the program's header, else the profile's. */
+    public SimOptions simulation() {
+        return options.stock().map(SimOptions.defaults()::withStock).orElse(SimOptions.defaults());
+    }
+
+    /** Parse and every check: no output, no simulation. */
+    public Compiler.Result check(Reader program) throws IOException {
+        return Compiler.check(program, settings(Optional.empty(), false));
+    }
+
+    /** Check, translate and simulate (with {@code simulation}, or not at all when empty); Galil lines go to {@code out}. */
+    public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
+                                   LineSink out) throws IOException {
+        return Compiler.compile(program, settings(simulation, inlineSourceMap), out);
+    }
+
+    /** Check, translate and simulate a program file as the command line's {@code compile} does, output discarded. */
+    public Compiler.Result compile(Path program) throws IOException {
+        try (Reader in = Files.newBufferedReader(program)) {
+            return compile(in, Optional.of(simulation()), false, line -> { });
+        }
+    }
+
+    private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {
+        return new Compiler.Settings(tables, profile, options.dialect(), simulation, inlineSourceMap);
+    }
+}
