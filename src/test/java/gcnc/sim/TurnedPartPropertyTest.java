@@ -38,13 +38,13 @@ class TurnedPartPropertyTest {
      * A machine, the program head its control wants, the feed in its feed mode, the program's
      * units (mm per unit: 25.4 for an inch program) and the grooving tool's T word ("" = none).
      */
-    private record Machine(String name, String head, String feed, double unit, String groover) {
+    private record Machine(String name, String head, String feed, double unit, String groover, String parter) {
     }
 
     private static final Machine[] MACHINES = {
-        new Machine("generic", "G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\n", "F150.", 1, ""),
-        new Machine("haas", "G20\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.006", 25.4, "T0909"),
-        new Machine("fanuc", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15", 1, "T0505"),
+        new Machine("generic", "G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\n", "F150.", 1, "", ""),
+        new Machine("haas", "G20\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.006", 25.4, "T0909", "T1212"),
+        new Machine("fanuc", "G21\nG50 S2500\nT0101\nG97 S1000 M03\n", "F0.15", 1, "T0505", ""),
     };
 
     /** A stepped part: zone k runs from Z -z[k-1] to -z[k] at diameter d[k], d increasing away from the face. */
@@ -98,11 +98,20 @@ class TurnedPartPropertyTest {
             add(out, lines, "G00 U" + n(2), "rapid");
             add(out, lines, "G00 Z" + n(2), "rapid");
         }
-        // finish: along each zone, up each shoulder, out past the blank
-        add(out, lines, "G00 X" + n(p.d()[0]), "rapid");
+        // finish: a 1 mm radius from the face onto each zone (G03, convex), along each zone, up each
+        // shoulder to the next radius, out past the blank
+        double r = 1;
+        add(out, lines, "G00 X" + n(p.d()[0] - 2 * r), "rapid");
+        add(out, lines, "G01 Z" + n(-0.5), "finish");
+        add(out, lines, "G03 X" + n(p.d()[0]) + " Z" + n(-0.5 - r) + " R" + n(r), "finish");
         for (int k = 0; k < p.d().length; k++) {
             add(out, lines, "G01 Z" + n(-p.z()[k]), "finish");
-            add(out, lines, "G01 X" + n(k + 1 < p.d().length ? p.d()[k + 1] : outside), "finish");
+            if (k + 1 < p.d().length) {
+                add(out, lines, "G01 X" + n(p.d()[k + 1] - 2 * r), "finish");
+                add(out, lines, "G03 X" + n(p.d()[k + 1]) + " Z" + n(-p.z()[k] - r) + " R" + n(r), "finish");
+            } else {
+                add(out, lines, "G01 X" + n(outside), "finish");
+            }
         }
         add(out, lines, "G00 Z" + n(2), "rapid");
         // a 3 mm groove, 1 mm deep, in the middle of the largest zone, with the grooving blade
@@ -113,6 +122,15 @@ class TurnedPartPropertyTest {
             add(out, lines, m.groover(), "tool");
             add(out, lines, "G00 X" + n(outside) + " Z" + n(-zg), "rapid");
             add(out, lines, "G01 X" + n(p.d()[last] - 2) + " " + m.feed(), "groove");
+            add(out, lines, "G00 X" + n(outside), "rapid");
+            add(out, lines, "G00 Z" + n(2), "rapid");
+        }
+        // part off 1 mm behind the last zone with the parting blade, where the machine has one
+        if (!m.parter().isEmpty()) {
+            double zp = p.z()[last] + 1 + 3; // the blade's tip is its chuck-side corner; the blade is 3 mm wide
+            add(out, lines, m.parter(), "tool");
+            add(out, lines, "G00 X" + n(outside) + " Z" + n(-zp), "rapid");
+            add(out, lines, "G01 X" + n(-1) + " " + m.feed(), "part");
             add(out, lines, "G00 X" + n(outside), "rapid");
             add(out, lines, "G00 Z" + n(2), "rapid");
         }
