@@ -95,7 +95,14 @@ final class ToolLibrary {
      * {@link #HOLDER} mm above the insert's highest point.
      */
     private static double[][] holder(double[][] insert) {
-        int[] upper = MonotoneChain.upper(insert[0], insert[1]);
+        int[] chain = MonotoneChain.upper(insert[0], insert[1]);
+        // the chain starts with the insert's radial edge when that edge is vertical: the holder's
+        // underside begins at its top, not at the tip
+        int first = 0;
+        while (first + 1 < chain.length && insert[0][chain[first + 1]] == insert[0][chain[first]]) {
+            first++;
+        }
+        int[] upper = java.util.Arrays.copyOfRange(chain, first, chain.length);
         double top = -Double.MAX_VALUE;
         for (int i : upper) {
             top = Math.max(top, insert[1][i]);
@@ -117,11 +124,12 @@ final class ToolLibrary {
         return new MachineModel.Outline(mm[0], mm[1]);
     }
 
+    /** cos and sin in degrees, exact at multiples of 90° (Math.cos(Math.toRadians(90)) is 6e-17, not 0). */
     private static double cos(double deg) {
-        return Math.cos(Math.toRadians(deg));
+        return deg % 90 == 0 ? Math.rint(Math.cos(Math.toRadians(deg))) : Math.cos(Math.toRadians(deg));
     }
 
     private static double sin(double deg) {
-        return Math.sin(Math.toRadians(deg));
+        return deg % 90 == 0 ? Math.rint(Math.sin(Math.toRadians(deg))) : Math.sin(Math.toRadians(deg));
     }
 }
