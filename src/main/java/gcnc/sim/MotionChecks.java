@@ -214,8 +214,8 @@ final class MotionChecks {
             return;
         }
         int n = nearStock && poly == null && !nearChuck && !nearTail ? stockPieces(s) : s.pieces();
-        List<org.locationtech.jts.geom.Geometry> cuts = nearStock ? new ArrayList<>(n) : List.of();
-        List<org.locationtech.jts.geom.Geometry> holders = nearStock ? new ArrayList<>(n) : List.of();
+        List<Stock.Sweep> cuts = nearStock ? new ArrayList<>(n) : List.of();
+        List<Stock.Sweep> holders = nearStock ? new ArrayList<>(n) : List.of();
         double[] a = s.at(0);
         if (poly != null) {
             poly.add(a);
@@ -240,9 +240,8 @@ final class MotionChecks {
             }
             a = b;
         }
-        if (!cuts.isEmpty() || !holders.isEmpty()) {
-            stockMove(cuts, holders, rapid, line);
-        } else if (key != null) {
+        boolean touched = (!cuts.isEmpty() || !holders.isEmpty()) && stockMove(cuts, holders, rapid, line);
+        if (!touched && key != null) {
             if (quiet.size() >= QUIET_MAX) {
                 quiet.clear();
             }
@@ -264,10 +263,10 @@ final class MotionChecks {
 
     /**
      * One straight piece near the stock (tip from z a, radius ar to z b, radius br; counts): the
-     * sweeps of the insert and the holder that really bite into material, for {@link #stockMove}.
+     * sweeps of the insert and the holder that may reach into material, for {@link #stockMove}.
      */
-    private void stockPiece(double a, double ar, double b, double br, List<org.locationtech.jts.geom.Geometry> cuts,
-                            List<org.locationtech.jts.geom.Geometry> holders) {
+    private void stockPiece(double a, double ar, double b, double br, List<Stock.Sweep> cuts,
+                            List<Stock.Sweep> holders) {
         double az = a / kz;
         double bz = b / kz;
         double lo = Math.min(az, bz);
@@ -275,58 +274,61 @@ final class MotionChecks {
         double r = Math.min(ar, br) / kx;
         // each part against the material with its own box: the holder sits above the insert, so it
         // rarely comes near, and most pieces along a surface just cut need neither test
-        if (stock.mayTouch(lo + insertReach[1], hi + insertReach[2], r + insertReach[0])
-                && stock.bites(Stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx))) {
-            add(cuts, Stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx));
+        if (stock.mayTouch(lo + insertReach[1], hi + insertReach[2], r + insertReach[0])) {
+            Stock.Hull smaller = Stock.sweep(insertIn[0], insertIn[1], az, ar / kx, bz, br / kx);
+            if (stock.mayBite(smaller)) {
+                cuts.add(new Stock.Sweep(Stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx), smaller));
+            }
         }
-        if (holderMm != null && stock.mayTouch(lo + holderReach[1], hi + holderReach[2], r + holderReach[0])
-                && stock.bites(Stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx))) {
-            add(holders, Stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx));
-        }
-    }
-
-    private void add(List<org.locationtech.jts.geom.Geometry> regions, Stock.Hull h) {
-        if (h != null) {
-            regions.add(stock.polygon(h));
+        if (holderMm != null && stock.mayTouch(lo + holderReach[1], hi + holderReach[2], r + holderReach[0])) {
+            Stock.Hull smaller = Stock.sweep(holderIn[0], holderIn[1], az, ar / kx, bz, br / kx);
+            if (stock.mayBite(smaller)) {
+                holders.add(new Stock.Sweep(Stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx), smaller));
+            }
         }
     }
 
     /**
-     * One segment's effect on the stock, its pieces' sweeps taken together (one polygon boolean
-     * per segment): a rapid reaching into material is E305; a cut removes what its insert sweeps,
-     * and its holder reaching into what is left is E315. A crash is reported once, and what it went
-     * through is gone: no echo in the next moves.
+     * One segment's effect on the stock, from the sweeps of its pieces that may reach into
+     * material. A cut takes away what its insert sweeps (lazily: {@link Stock#cut}); a rapid that
+     * really reaches into material is E305, and a holder that reaches into what is left after the
+     * cut is E315 (both settled on the polygons). A crash is reported once, and what it went
+     * through is gone: no echo in the next moves. Returns whether the segment reached into
+     * material at all (a rapid or holder that only came near did not: the segment is quiet).
      */
-    private void stockMove(List<org.locationtech.jts.geom.Geometry> cuts,
-                           List<org.locationtech.jts.geom.Geometry> holders, boolean rapid, int line) {
-        org.locationtech.jts.geom.Geometry cut = cuts.isEmpty() ? null : union(cuts);
-        org.locationtech.jts.geom.Geometry holder = holders.isEmpty() ? null : union(holders);
+    private boolean stockMove(List<Stock.Sweep> cuts, List<Stock.Sweep> holders, boolean rapid, int line) {
+        if (rapid) {
+            cuts = stock.biting(cuts);
+        }
+        holders = stock.biting(holders);
+        if (cuts.isEmpty() && holders.isEmpty()) {
+            return false;
+        }
         boolean crashed = false;
         if (rapid && !stockHit) {
-            double[] at = cut == null ? null : stock.deepOverlap(cut);
-            at = at != null || holder == null ? at : stock.deepOverlap(holder);
+            double[] at = cuts.isEmpty() ? null : stock.deepOverlap(cuts);
+            at = at != null || holders.isEmpty() ? at : stock.deepOverlap(holders);
             if (at != null) {
                 stockHit = crashed = true;
                 mark(Code.E305_SIM_RAPID_INTO_STOCK, line, machinePoint(at));
             }
         }
-        if (cut != null) {
-            stock.remove(cut);
+        for (Stock.Sweep s : cuts) {
+            stock.cut(s.full());
         }
-        if (!rapid && holder != null && !holderHit) {
-            double[] at = stock.deepOverlap(holder);
+        if (!rapid && !holders.isEmpty() && !holderHit) {
+            double[] at = stock.deepOverlap(holders);
             if (at != null) {
                 holderHit = crashed = true;
                 mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tool);
             }
         }
-        if (crashed && holder != null) {
-            stock.remove(holder);
+        if (crashed) {
+            for (Stock.Sweep s : holders) {
+                stock.cut(s.full());
+            }
         }
-    }
-
-    private static org.locationtech.jts.geom.Geometry union(List<org.locationtech.jts.geom.Geometry> parts) {
-        return parts.size() == 1 ? parts.get(0) : org.locationtech.jts.operation.overlayng.OverlayNGRobust.union(parts);
+        return true;
     }
 
     /** Pieces of a segment for the stock: chords within half the stock's depth of an arc (a finer cut leaves no deeper scallop). */

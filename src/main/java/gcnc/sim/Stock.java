@@ -19,8 +19,12 @@ import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
  *
  * <p>An overlap counts only when it is real: thicker than {@link #DEPTH} (the overlap, shrunk by
  * half of it, is not empty), never because of how the stock is held. A conservative upper
- * envelope of the material (the largest radius in each slice along z, a quarter of the depth wide) lets
- * the many moves that pass above the material skip the polygon work: memory stays flat.
+ * envelope of the material (the largest radius in each slice along z, a quarter of the depth
+ * wide, never below the material) lets the many moves that pass above the material skip the
+ * polygon work: memory stays flat. A cut is taken from the envelope at once and from the
+ * polygons only when they are next asked (a rapid or a holder that may reach into material, the
+ * drawing), many cuts in one boolean ({@link #cut}): a program whose rapids stay clear of the
+ * material does almost no polygon work.
  */
 final class Stock {
     /** How deep a tool must reach into material before it counts: 0.01 mm. */
@@ -125,6 +129,25 @@ final class Stock {
             return r[i] + (r[i + 1] - r[i]) * (v - z[i]) / (z[i + 1] - z[i]);
         }
 
+        /** {lowest, highest} r of the hull at z (it must lie within the hull's z range). */
+        double[] extent(double at) {
+            double lo = Double.POSITIVE_INFINITY;
+            double hi = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < z.length; i++) {
+                int j = (i + 1) % z.length;
+                double z0 = Math.min(z[i], z[j]);
+                double z1 = Math.max(z[i], z[j]);
+                if (at < z0 || at > z1) {
+                    continue;
+                }
+                double v = z[i] == z[j] ? r[i] : r[i] + (r[j] - r[i]) * (at - z[i]) / (z[j] - z[i]);
+                double w = z[i] == z[j] ? r[j] : v;
+                lo = Math.min(lo, Math.min(v, w));
+                hi = Math.max(hi, Math.max(v, w));
+            }
+            return new double[] {lo, hi};
+        }
+
         double zMin() {
             return z[0];
         }
@@ -177,14 +200,99 @@ final class Stock {
     }
 
     /**
-     * Whether a region reaches into material at all, given the region drawn a little smaller (its
+     * Whether a region may reach into material, given the region drawn a little smaller (its
      * outline moved in by up to half the {@link #DEPTH}): a move that only runs along a face it
-     * has just cut never does. The upper envelope answers most of these without a polygon
-     * boolean: where the hull's lower edge stays above the material's largest radius in every
-     * slice it spans, it cannot touch.
+     * has just cut never does. The upper envelope answers without a polygon boolean (where the
+     * hull's lower edge stays above the material's largest radius in every slice it spans, it
+     * cannot touch); a yes is only a may, which {@link #deepOverlap} and {@link #cut} settle exactly.
      */
-    boolean bites(Hull smaller) {
-        return smaller != null && under(smaller) && touches(polygon(smaller));
+    boolean mayBite(Hull smaller) {
+        return smaller != null && under(smaller);
+    }
+
+    /**
+     * Takes what a sweep covers away from the material: at once from the upper envelope, from the
+     * polygons when they are next needed (a rapid or a holder that may reach into the material, the
+     * drawing), many cuts in one boolean. A program whose rapids stay clear of the material never
+     * needs the polygons at all.
+     */
+    void cut(Hull full) {
+        if (full == null || !under(full)) {
+            return;
+        }
+        pending.add(polygon(full));
+        lower(full);
+        if (pending.size() >= PENDING_MAX) {
+            settle();
+        }
+    }
+
+    /** A piece's sweep at full size, and drawn a little smaller ({@link #smaller}) to tell a real bite from a touch. */
+    record Sweep(Hull full, Hull smaller) {
+    }
+
+    /**
+     * The sweeps whose smaller outline really reaches into material (the polygons' answer, with
+     * the pending cuts taken first): what a rapid or a holder is checked with.
+     */
+    java.util.List<Sweep> biting(java.util.List<Sweep> sweeps) {
+        if (sweeps.isEmpty()) {
+            return sweeps;
+        }
+        settle();
+        java.util.List<Sweep> out = new java.util.ArrayList<>(sweeps.size());
+        for (Sweep s : sweeps) {
+            if (s.full() != null && s.smaller() != null && touches(polygon(s.smaller()))) {
+                out.add(s);
+            }
+        }
+        return out;
+    }
+
+    /** Cuts taken from the envelope but not yet from the polygons ({@link #cut}). */
+    private final java.util.List<Geometry> pending = new java.util.ArrayList<>();
+    private static final int PENDING_MAX = 256;
+
+    /** Takes the pending cuts from the polygons (one union, one difference). */
+    private void settle() {
+        if (pending.isEmpty()) {
+            return;
+        }
+        Geometry region = pending.size() == 1 ? pending.get(0) : OverlayNGRobust.union(pending);
+        pending.clear();
+        remove(region);
+    }
+
+    /**
+     * Lowers the envelope under a sweep: in each slice the hull spans from side to side and covers
+     * from its lower edge to above the material, nothing is left above the lower edge's highest
+     * point (the lower edge is convex, the upper concave: both are read at the slice's ends).
+     */
+    private void lower(Hull h) {
+        int lo = slice(h.zMin());
+        int hi = slice(h.zMax());
+        boolean changed = false;
+        double[] left = null;
+        for (int i = lo; i <= hi; i++) {
+            double a = zOf(i);
+            double b = zOf(i + 1);
+            if (a < h.zMin() || b > h.zMax()) {
+                left = null;
+                continue;
+            }
+            double[] ea = left != null ? left : h.extent(a);
+            double[] eb = h.extent(b);
+            left = eb;
+            double highestLow = Math.max(ea[0], eb[0]);
+            double lowestHigh = Math.min(ea[1], eb[1]);
+            if (lowestHigh >= upper[i] && highestLow < upper[i]) {
+                upper[i] = Math.max(0, highestLow);
+                changed = true;
+            }
+        }
+        if (changed) {
+            regroup(lo, hi);
+        }
     }
 
     /** Whether the hull dips below the upper envelope in some slice (the envelope is never below the material). */
@@ -223,7 +331,7 @@ final class Stock {
 
     /**
      * A convex outline ({@code z}, {@code r}) moved toward its centre so that no point moves more
-     * than half the {@link #DEPTH}: the outline {@link #bites} is given.
+     * than half the {@link #DEPTH}: the outline {@link #mayBite} is given.
      */
     static double[][] smaller(double[] z, double[] r) {
         double cz = 0;
@@ -246,8 +354,19 @@ final class Stock {
         return new double[][] {sz, sr};
     }
 
-    /** A point where {@code region} reaches more than {@link #DEPTH} into material, {z, r}; null if nowhere. */
-    double[] deepOverlap(Geometry region) {
+    /** A point where the sweeps reach more than {@link #DEPTH} into material, {z, r}; null if nowhere. */
+    double[] deepOverlap(java.util.List<Sweep> sweeps) {
+        java.util.List<Geometry> parts = new java.util.ArrayList<>(sweeps.size());
+        for (Sweep s : sweeps) {
+            if (s.full() != null) {
+                parts.add(polygon(s.full()));
+            }
+        }
+        if (parts.isEmpty()) {
+            return null;
+        }
+        settle();
+        Geometry region = parts.size() == 1 ? parts.get(0) : OverlayNGRobust.union(parts);
         if (!touches(region)) {
             return null;
         }
@@ -263,9 +382,10 @@ final class Stock {
         return new double[] {p.x, p.y};
     }
 
-    /** Removes {@code region} from the material (what the insert cuts away). Material is never added. */
-    void remove(Geometry region) {
-        if (!touches(region)) {
+    /** Removes {@code region} from the polygons (what the insert cuts away). Material is never added. */
+    private void remove(Geometry region) {
+        // not the envelope's answer: it was lowered under this region already ({@link #lower})
+        if (!polygons().intersects(region)) {
             return;
         }
         material = OverlayNGRobust.overlay(material, region, OverlayNG.DIFFERENCE);
@@ -279,10 +399,15 @@ final class Stock {
         if (!mayTouch(e.getMinX(), e.getMaxX(), e.getMinY())) {
             return false;
         }
+        return polygons().intersects(region);
+    }
+
+    /** The material's polygons, prepared for many intersection tests until they change. */
+    private PreparedGeometry polygons() {
         if (prepared == null) {
             prepared = PreparedGeometryFactory.prepare(material);
         }
-        return prepared.intersects(region);
+        return prepared;
     }
 
     /** Recomputes the upper envelope of slices lo..hi from the material's edges. */
@@ -299,6 +424,11 @@ final class Stock {
                 edges(p.getInteriorRingN(h), lo, hi);
             }
         }
+        regroup(lo, hi);
+    }
+
+    /** Recomputes the group and super-group maxima over slices lo..hi. */
+    private void regroup(int lo, int hi) {
         for (int g = lo / GROUP; g <= hi / GROUP; g++) {
             double m = 0;
             for (int i = g * GROUP; i < g * GROUP + GROUP; i++) {
@@ -349,6 +479,7 @@ final class Stock {
 
     /** The finished part's outline: for each slice, the largest radius of material left (mm). */
     double[][] profile() {
+        settle();
         int per = (slices + 4095) / 4096; // the drawing needs no finer outline than 4096 points
         int n = (slices + per - 1) / per;
         double[] z = new double[n];
