@@ -10,13 +10,14 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Parameters;
 
 @Command(name = "check", mixinStandardHelpOptions = true,
-        description = "Check programs and report every error with line and column. Writes nothing.")
+        description = "Check programs and report every error with line and column. Writes nothing.",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:no errors", "1:a program has errors", "2:usage, unreadable file, broken table or profile"})
 final class CheckCommand extends RunCommand {
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "G-code programs to check.")
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "G-code programs to check; - reads standard input.")
     List<Path> files;
 
     @Override
@@ -26,16 +27,17 @@ final class CheckCommand extends RunCommand {
         Reporter reporter = setup.reporter();
         int status = ExitCode.CLEAN;
         for (Path file : files) {
-            try (Reader in = SourceFiles.open(file)) {
+            String name = SourceFiles.display(file);
+            try (Reader in = SourceFiles.open(file, streams().in())) {
                 Compiler.Result r = Compiler.check(in, new Compiler.Settings(tables, profile, "galil", Optional.empty()));
-                int errors = reporter.report(file.toString(), r.diagnostics());
-                out.println(file + ": " + Reporter.plural(r.blocks(), "block") + ", "
+                int errors = reporter.report(name, r.diagnostics());
+                reporter.say(name + ": " + Reporter.plural(r.blocks(), "block") + ", "
                         + (errors == 0 ? "no errors" : Reporter.plural(errors, "error")));
                 if (errors > 0) {
                     status = Math.max(status, ExitCode.PROGRAM_ERRORS);
                 }
             } catch (IOException e) {
-                status = reporter.ioFault(file, "cannot read", e);
+                status = reporter.ioFault(name, "cannot read", e);
             }
         }
         return status;

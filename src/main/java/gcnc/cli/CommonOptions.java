@@ -32,10 +32,14 @@ final class CommonOptions {
     record Setup(Tables tables, MachineProfile profile, Reporter reporter) {
     }
 
-    /** Loads the tables and the machine; a broken one is reported by the caller with {@link Reporter#tableFault}. */
-    Setup load(java.io.PrintWriter err) throws TableException {
+    /**
+     * Loads the tables and the machine, and gives the tables' messages to {@code reporter}; a broken
+     * one is reported by the caller with {@link Reporter#tableFault}.
+     */
+    Setup load(Reporter reporter) throws TableException {
         Tables t = loadTables();
-        return new Setup(t, loadProfile(t), new Reporter(err, t, lang));
+        reporter.use(t, source());
+        return new Setup(t, loadProfile(t), reporter);
     }
 
     TableSource source() {

@@ -24,7 +24,10 @@ import picocli.CommandLine.Parameters;
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = {"Check and translate a program, then replay the Galil program on a model of the lathe:",
                 "travel, chuck, tailstock, rapids into stock, spindle and chuck state, path conformance.",
-                "A .dmc FILE is replayed as it is (no G-code to compare it with)."})
+                "A .dmc FILE is replayed as it is (no G-code to compare it with)."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:no errors", "1:the program has errors, or the simulation found a fault",
+                "2:usage, unreadable input, unwritable drawing, broken table or profile"})
 final class SimulateCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;
@@ -32,7 +35,7 @@ final class SimulateCommand extends RunCommand {
     @Mixin
     StockOptions stock;
 
-    @Parameters(paramLabel = "FILE", description = "A G-code program, or a .dmc program to replay by itself.")
+    @Parameters(paramLabel = "FILE", description = "A G-code program, or a .dmc program to replay by itself; - reads G-code from standard input.")
     Path file;
 
     @Option(names = "--svg", paramLabel = "OUT", description = "Draw the XZ half-section: chuck, tailstock, stock, part, tool path, findings.")
@@ -50,8 +53,7 @@ final class SimulateCommand extends RunCommand {
         try {
             options = stock.options(setup.profile());
         } catch (StockOptions.BadStock e) {
-            err.println("gcnc: " + e.getMessage());
-            return ExitCode.USAGE;
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
         if (svg != null) {
             options = options.withPath();
@@ -62,9 +64,17 @@ final class SimulateCommand extends RunCommand {
         Tables tables = setup.tables();
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
+        String name = SourceFiles.display(file);
+        if (svg != null) {
+            try {
+                AtomicOutput.refuseInput(SourceFiles.fileOf(file), svg);
+            } catch (AtomicOutput.Refused e) {
+                return reporter.ioFault(svg.toString(), "cannot write", e);
+            }
+        }
         Diagnostics diags;
         Optional<SimReport> report;
-        try (Reader in = SourceFiles.open(file)) {
+        try (Reader in = SourceFiles.open(file, streams().in())) {
             if (file.toString().endsWith(".dmc")) {
                 diags = new Diagnostics();
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags));
@@ -75,23 +85,24 @@ final class SimulateCommand extends RunCommand {
                 report = r.simulation();
             }
         } catch (IOException e) {
-            return reporter.ioFault(file, "cannot read", e);
+            return reporter.ioFault(name, "cannot read", e);
         }
         out.flush();
-        reporter.report(file.toString(), diags);
+        reporter.report(name, diags);
         if (report.isPresent()) {
-            out.println(SimSummary.format(report.get()));
+            reporter.say(SimSummary.format(report.get()));
             if (svg != null) {
                 try (AtomicOutput o = new AtomicOutput(svg)) {
-                    SvgWriter.write(report.get(), file.getFileName().toString(), o.writer(), !hideRapids);
+                    String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
+                    SvgWriter.write(report.get(), title, o.writer(), !hideRapids);
                     o.commit();
-                    out.println("drawing: " + svg);
+                    reporter.say("drawing: " + svg);
                 } catch (IOException e) {
-                    return reporter.ioFault(svg, "cannot write", e);
+                    return reporter.ioFault(svg.toString(), "cannot write", e);
                 }
             }
         } else {
-            out.println(file + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
+            reporter.say(name + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
         }
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
     }

@@ -1,0 +1,15 @@
+package gcnc.cli;
+
+import picocli.CommandLine.Option;
+
+/** {@code --format} and {@code --quiet}: how findings are written, and whether summaries are. */
+final class ReportOptions {
+    @Option(names = "--format", paramLabel = "gnu|json|sarif", defaultValue = "gnu",
+            description = {"gnu (default): file:line:column: error[E037]: message, on standard error.",
+                    "json: one document on standard output (docs/command-line.md).",
+                    "sarif: SARIF 2.1.0 on standard output, for code-scanning annotations in CI."})
+    Reporter.Format format;
+
+    @Option(names = {"-q", "--quiet"}, description = "Print the findings only: no summary lines.")
+    boolean quiet;
+}
