@@ -79,9 +79,10 @@ public final class Main implements Runnable {
         try {
             return Path.of(name);
         } catch (InvalidPathException e) {
-            throw new CommandLine.TypeConversionException("'" + Printable.escape(name) + "' cannot be a file name in"
-                    + " this locale's character set (" + System.getProperty("sun.jnu.encoding") + "): run gcnc in a"
-                    + " UTF-8 locale, e.g. LC_ALL=C.UTF-8 (scripts/gcnc does)");
+            throw new CommandLine.TypeConversionException("'" + Printable.escape(name) + "' cannot be a file name ("
+                    + e.getReason() + "; names are read in " + System.getProperty("sun.jnu.encoding")
+                    + "): a name with letters outside ASCII needs a UTF-8 locale, e.g. LC_ALL=C.UTF-8, which"
+                    + " scripts/gcnc sets");
         }
     }
 
