@@ -14,7 +14,7 @@ import picocli.CommandLine.Command;
 @Command(name = "gcnc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "Checks lathe G-code completely, translates it for a Galil controller and verifies it in a simulator.",
         subcommands = {CheckCommand.class, CompileCommand.class, SimulateCommand.class, TablesCommand.class,
-                CommandLine.HelpCommand.class},
+                ExplainCommand.class, MachinesCommand.class, CompletionCommand.class, CommandLine.HelpCommand.class},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {
             "0:no errors (warnings and notes may have been printed)",
@@ -40,7 +40,7 @@ public final class Main implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate or tables");
+        throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate, tables, explain, machines or completion");
     }
 
     public static void main(String[] args) {
