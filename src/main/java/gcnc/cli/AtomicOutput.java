@@ -108,6 +108,10 @@ final class AtomicOutput implements AutoCloseable {
         } else {
             this.kind = Kind.REPLACE;
             this.target = Files.isSymbolicLink(absolute) && Files.exists(absolute) ? absolute.toRealPath() : absolute;
+            if (Files.exists(this.target) && !Files.isWritable(this.target)) {
+                // A rename would replace a file its owner made read-only to keep it: write nothing.
+                throw new java.nio.file.AccessDeniedException(target.toString());
+            }
             this.temp = TempFiles.create(this.target.getParent(), "." + this.target.getFileName(), ".part");
             keepPermissions();
         }

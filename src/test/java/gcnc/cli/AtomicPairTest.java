@@ -108,6 +108,17 @@ class AtomicPairTest {
         assertEquals("new\n", Files.readString(real));
     }
 
+    /** A file made read-only to keep it is not replaced behind its owner's back (root may write anything). */
+    @Test
+    void aReadOnlyFileIsNotReplaced() throws IOException {
+        Files.writeString(dmc, "kept\n");
+        Files.setPosixFilePermissions(dmc, java.nio.file.attribute.PosixFilePermissions.fromString("r--r--r--"));
+        org.junit.jupiter.api.Assumptions.assumeFalse(Files.isWritable(dmc), "run as root: every file is writable");
+        assertThrows(java.nio.file.AccessDeniedException.class, () -> new AtomicOutput(dmc).close());
+        assertEquals("kept\n", Files.readString(dmc));
+        assertEquals(List.of(), leftovers());
+    }
+
     @Test
     void aReplacedFileKeepsItsPermissions() throws IOException {
         Files.writeString(dmc, "old\n");
