@@ -84,9 +84,11 @@ final class CompileCommand extends RunCommand {
             }
             dmc = toStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(target);
             if (!sourceMap && dmc.replacesFile()) {
-                targetName = mapFile(target).toString();
-                map = new AtomicOutput(mapFile(target));
-                targetName = target.toString();
+                try {
+                    map = new AtomicOutput(mapFile(target));
+                } catch (IOException e) {
+                    return reporter.ioFault(mapFile(target).toString(), "cannot write", e);
+                }
             }
             SourceMap mapper = new SourceMap(map == null ? line -> { } : map::line);
             AtomicOutput dmcOut = dmc;

@@ -38,13 +38,15 @@ final class SimulateCommand extends RunCommand {
     @Parameters(paramLabel = "FILE", description = "A G-code program, or a .dmc program to replay by itself; - reads G-code from standard input.")
     Path file;
 
-    @Option(names = "--svg", paramLabel = "OUT", description = "Draw the XZ half-section: chuck, tailstock, stock, part, tool path, findings.")
+    @Option(names = "--svg", paramLabel = "OUT", description = "Draw the XZ half-section: chuck, tailstock, stock, part, tool path,"
+            + " findings; - writes standard output.")
     Path svg;
 
     @Option(names = "--hide-rapids", description = "Leave the rapid moves out of the --svg drawing (feeds and findings only).")
     boolean hideRapids;
 
-    @Option(names = "--trace", description = "Print every directive with the position and outputs after it.")
+    @Option(names = "--trace", description = "Print every directive with the position and outputs after it"
+            + " (on standard error when standard output carries a report or the drawing).")
     boolean trace;
 
     @Override
@@ -55,17 +57,25 @@ final class SimulateCommand extends RunCommand {
         } catch (StockOptions.BadStock e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
+        Reporter reporter = setup.reporter();
+        boolean svgToStdout = svg != null && SourceFiles.isStdin(svg);
+        if (svgToStdout && reporter.format() != Reporter.Format.GNU) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--svg - and --format "
+                    + reporter.format().name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name a file");
+        }
+        if (svgToStdout) {
+            reporter.stdoutTaken();
+        }
         if (svg != null) {
             options = options.withPath();
         }
         if (trace) {
-            options = options.withTrace(out);
+            options = options.withTrace(svgToStdout || reporter.format() != Reporter.Format.GNU ? err : out);
         }
         Tables tables = setup.tables();
         MachineProfile profile = setup.profile();
-        Reporter reporter = setup.reporter();
         String name = SourceFiles.display(file);
-        if (svg != null) {
+        if (svg != null && !svgToStdout) {
             try {
                 AtomicOutput.refuseInput(SourceFiles.fileOf(file), svg);
             } catch (AtomicOutput.Refused e) {
@@ -92,13 +102,14 @@ final class SimulateCommand extends RunCommand {
         if (report.isPresent()) {
             reporter.say(SimSummary.format(report.get()));
             if (svg != null) {
-                try (AtomicOutput o = new AtomicOutput(svg)) {
+                out.flush();
+                try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(svg)) {
                     String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
                     SvgWriter.write(report.get(), title, o.writer(), !hideRapids);
                     o.commit();
-                    reporter.say("drawing: " + svg);
+                    reporter.say("drawing: " + (svgToStdout ? "<stdout>" : svg));
                 } catch (IOException e) {
-                    return reporter.ioFault(svg.toString(), "cannot write", e);
+                    return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), "cannot write", e);
                 }
             }
         } else {

@@ -231,4 +231,24 @@ class OutputSafetyTest {
         assertEquals(0, mk.waitFor());
         return p;
     }
+
+    @Test
+    void theDrawingCanGoToStandardOutputAndTheTraceThenToStandardError() {
+        Run r = gcnc("simulate", program.toString(), "--svg", "-", "--trace");
+        assertEquals(0, r.status(), r.err());
+        String svg = new String(r.stdout(), StandardCharsets.UTF_8);
+        assertTrue(svg.startsWith("<svg") || svg.startsWith("<?xml"), svg.substring(0, Math.min(80, svg.length())));
+        assertTrue(svg.strip().endsWith("</svg>"));
+        assertEquals("", r.out(), "nothing but the drawing on standard output");
+        assertTrue(r.err().contains("drawing: <stdout>"), r.err());
+        assertFalse(Files.exists(Path.of("-")));
+    }
+
+    @Test
+    void theTraceNeverBreaksAJsonReport() throws IOException {
+        Run r = gcnc("simulate", program.toString(), "--trace", "--format", "json");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("gcnc-diagnostics", new com.fasterxml.jackson.databind.ObjectMapper().readTree(r.out()).get("format").asText());
+        assertFalse(r.err().isEmpty(), "the trace went to standard error");
+    }
 }
