@@ -48,14 +48,62 @@ final class CompileCommand extends RunCommand {
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
         boolean toStdout = output != null && SourceFiles.isStdin(output);
-        if (toStdout && reporter.format() != Reporter.Format.GNU) {
+        refuseUsage(reporter.format(), toStdout);
+        Optional<SimOptions> sim = simulation(profile, err);
+        if (toStdout) {
+            reporter.stdoutTaken();
+        }
+        Path target = output != null ? output : defaultOutput(file);
+        String name = SourceFiles.display(file);
+        String targetName = toStdout ? "<stdout>" : target.toString();
+        Outputs outputs;
+        try {
+            outputs = toStdout ? Outputs.toStream(streams().out())
+                    : Outputs.open(SourceFiles.fileOf(file), target, !sourceMap);
+        } catch (Outputs.Failed e) {
+            return reporter.ioFault(e.path, "cannot write", e.cause);
+        }
+        try (outputs) {
+            SourceMap mapper = new SourceMap(outputs.map == null ? line -> { } : outputs.map::line);
+            Compiler.Result r;
+            try (Reader in = SourceFiles.open(file, streams().in())) {
+                r = Compiler.compile(in, new Compiler.Settings(setup.tables(), profile, dialect.name(), sim, sourceMap),
+                        mapper.wrap(line -> outputs.dmc.line(line.text())));
+            } catch (IOException e) {
+                return reporter.ioFault(name, "cannot read", e);
+            }
+            reporter.report(name, r.diagnostics());
+            if (!r.ok()) {
+                reporter.say(name + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
+                return ExitCode.PROGRAM_ERRORS;
+            }
+            out.flush();
+            try {
+                outputs.commit();
+            } catch (IOException e) {
+                return reporter.ioFault(targetName, "cannot write", e);
+            }
+            reporter.say(name + ": " + Reporter.plural(r.blocks(), "block") + " -> " + targetName
+                    + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
+            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s)));
+            return ExitCode.CLEAN;
+        }
+    }
+
+    /** Combinations that cannot work, refused before anything is read or written. */
+    private void refuseUsage(Reporter.Format format, boolean toStdout) {
+        if (toStdout && format != Reporter.Format.GNU) {
             throw new ParameterException(spec.commandLine(), "-o - and --format "
-                    + reporter.format().name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name an output file");
+                    + format.name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name an output file");
         }
         if (output == null && SourceFiles.isStdin(file)) {
             throw new ParameterException(spec.commandLine(),
                     "the program comes from standard input: name the output with -o (- for standard output)");
         }
+    }
+
+    /** The simulation to run (none for --no-simulate and the thesis dialect), said on standard error. */
+    private Optional<SimOptions> simulation(MachineProfile profile, PrintWriter err) {
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
         Optional<SimOptions> sim;
         try {
@@ -69,68 +117,88 @@ final class CompileCommand extends RunCommand {
             err.println("gcnc: note: the thesis dialect is a record of the thesis's Table 5.2, not a program for a real"
                     + " controller; it is not simulated (see why: gcnc simulate --dialect thesis)");
         }
-        if (toStdout) {
-            reporter.stdoutTaken();
+        return sim;
+    }
+
+    /** The DMC and, beside a regular file, its map: opened together, committed together, discarded together. */
+    private static final class Outputs implements AutoCloseable {
+        /** An output that could not be opened, and which one. */
+        static final class Failed extends Exception {
+            final String path;
+            final IOException cause;
+
+            Failed(Object path, IOException cause) {
+                super(cause);
+                this.path = path.toString();
+                this.cause = cause;
+            }
         }
-        Path target = output != null ? output : defaultOutput(file);
-        String name = SourceFiles.display(file);
-        String targetName = toStdout ? "<stdout>" : target.toString();
-        AtomicOutput dmc = null;
-        AtomicOutput map = null;
-        try {
-            if (!toStdout) {
-                AtomicOutput.refuseInput(SourceFiles.fileOf(file), target);
-                AtomicOutput.refuseInput(SourceFiles.fileOf(file), mapFile(target));
-            }
-            dmc = toStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(target);
-            if (!sourceMap && dmc.replacesFile()) {
-                try {
-                    map = new AtomicOutput(mapFile(target));
-                } catch (IOException e) {
-                    return reporter.ioFault(mapFile(target).toString(), "cannot write", e);
-                }
-            }
-            SourceMap mapper = new SourceMap(map == null ? line -> { } : map::line);
-            AtomicOutput dmcOut = dmc;
-            Compiler.Result r;
-            try (Reader in = SourceFiles.open(file, streams().in())) {
-                r = Compiler.compile(in, new Compiler.Settings(setup.tables(), profile, dialect.name(), sim, sourceMap),
-                        mapper.wrap(line -> dmcOut.line(line.text())));
+
+        final AtomicOutput dmc;
+        final AtomicOutput map;
+
+        Outputs(AtomicOutput dmc, AtomicOutput map) {
+            this.dmc = dmc;
+            this.map = map;
+        }
+
+        /** {@code -o -}: the DMC alone, to standard output once committed. */
+        static Outputs toStream(java.io.OutputStream stdout) throws Failed {
+            try {
+                return new Outputs(AtomicOutput.toStream(stdout), null);
             } catch (IOException e) {
-                return reporter.ioFault(name, "cannot read", e);
+                throw new Failed("<stdout>", e);
             }
-            reporter.report(name, r.diagnostics());
-            if (!r.ok()) {
-                reporter.say(name + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
-                return ExitCode.PROGRAM_ERRORS;
+        }
+
+        /** Refuses the program itself as either file (E501), then opens both. */
+        static Outputs open(Path input, Path target, boolean withMap) throws Failed {
+            Path mapPath = mapFile(target);
+            AtomicOutput dmc;
+            try {
+                AtomicOutput.refuseInput(input, target);
+                if (withMap) {
+                    AtomicOutput.refuseInput(input, mapPath);
+                }
+                dmc = new AtomicOutput(target);
+            } catch (IOException e) {
+                throw new Failed(target, e);
             }
-            out.flush();
+            if (!withMap || !dmc.replacesFile()) {
+                return new Outputs(dmc, null);
+            }
+            try {
+                return new Outputs(dmc, new AtomicOutput(mapPath));
+            } catch (IOException e) {
+                discard(dmc);
+                throw new Failed(mapPath, e);
+            }
+        }
+
+        void commit() throws IOException {
             if (map != null) {
                 AtomicOutput.commitAll(dmc, map);
             } else {
                 dmc.commit();
             }
-            reporter.say(name + ": " + Reporter.plural(r.blocks(), "block") + " -> " + targetName
-                    + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
-            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s)));
-            return ExitCode.CLEAN;
-        } catch (IOException e) {
-            return reporter.ioFault(targetName, "cannot write", e);
-        } finally {
+        }
+
+        /** Removes what was not committed; a temporary file that cannot be removed is no reason to fail the run. */
+        @Override
+        public void close() {
             discard(map);
             discard(dmc);
         }
-    }
 
-    /** Removes what was not committed; a temporary file that cannot be removed is no reason to fail the run. */
-    private static void discard(AtomicOutput o) {
-        if (o == null) {
-            return;
-        }
-        try {
-            o.close();
-        } catch (IOException e) {
-            // The shutdown hook (TempFiles) tries once more at exit.
+        private static void discard(AtomicOutput o) {
+            if (o == null) {
+                return;
+            }
+            try {
+                o.close();
+            } catch (IOException e) {
+                // The shutdown hook (TempFiles) tries once more at exit.
+            }
         }
     }
 
