@@ -32,8 +32,10 @@ import java.util.Set;
  * <ul>
  * <li>a regular file, or none yet: the temporary file is made beside it and renamed over it (a
  * symbolic link is followed, so the link stays and its file is replaced);</li>
- * <li>something else that exists, such as {@code /dev/null}, a terminal or a named pipe: it is
- * written through, never replaced (the temporary file is in the system's temporary folder);</li>
+ * <li>something else that exists, such as {@code /dev/null}, a terminal or a named pipe, or a name
+ * for a descriptor ({@code /dev/stdout}, {@code /proc/self/fd/N}) whatever it leads to: it is
+ * written through (appended to), never replaced (the temporary file is in the system's temporary
+ * folder);</li>
  * <li>a stream ({@link #toStream}, standard output for {@code -o -}): copied into it on commit.</li>
  * </ul>
  * A directory, or a path with no file name ({@code /}), is refused when the output is made.
@@ -101,7 +103,7 @@ final class AtomicOutput implements AutoCloseable {
             throw new Refused(Code.E502_OUTPUT_IS_DIRECTORY);
         }
         this.stream = null;
-        if (Files.exists(absolute) && !Files.isRegularFile(absolute)) {
+        if (Files.exists(absolute) && (!Files.isRegularFile(absolute) || isDescriptor(absolute))) {
             this.kind = Kind.WRITE_THROUGH;
             this.target = absolute;
             this.temp = TempFiles.create(null, "gcnc-", ".part");
@@ -124,6 +126,15 @@ final class AtomicOutput implements AutoCloseable {
         this.stream = stream;
         this.temp = TempFiles.create(null, "gcnc-", ".part");
         this.out = open(p -> Files.newOutputStream(p));
+    }
+
+    /**
+     * A name under /dev or /proc, such as /dev/stdout or /proc/self/fd/3: it stands for a descriptor
+     * the caller opened, which may be a regular file ({@code >> log}). Replacing that file would throw
+     * away what it held; it is written through (appended to) instead.
+     */
+    private static boolean isDescriptor(Path absolute) {
+        return absolute.startsWith("/dev") || absolute.startsWith("/proc");
     }
 
     /** An output that goes to {@code stream} (standard output) once committed, and nowhere otherwise. */
@@ -282,7 +293,7 @@ final class AtomicOutput implements AutoCloseable {
                 }
             }
             case WRITE_THROUGH -> {
-                try (OutputStream o = Files.newOutputStream(target, StandardOpenOption.WRITE)) {
+                try (OutputStream o = Files.newOutputStream(target, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
                     Files.copy(temp, o);
                 }
                 TempFiles.delete(temp);

@@ -25,6 +25,10 @@ final class CheckCommand extends RunCommand {
         Tables tables = setup.tables();
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
+        if (files.stream().filter(SourceFiles::isStdin).count() > 1) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "- names standard input, which can be read once: give it once");
+        }
         int status = ExitCode.CLEAN;
         for (Path file : files) {
             String name = SourceFiles.display(file);

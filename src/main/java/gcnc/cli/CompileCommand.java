@@ -61,7 +61,7 @@ final class CompileCommand extends RunCommand {
             outputs = toStdout ? Outputs.toStream(streams().out())
                     : Outputs.open(SourceFiles.fileOf(file), target, !sourceMap);
         } catch (Outputs.Failed e) {
-            return reporter.ioFault(e.path, "cannot write", e.cause);
+            return reporter.ioFault(e.path, "cannot write", e.problem);
         }
         try (outputs) {
             SourceMap mapper = new SourceMap(outputs.map == null ? line -> { } : outputs.map::line);
@@ -125,12 +125,12 @@ final class CompileCommand extends RunCommand {
         /** An output that could not be opened, and which one. */
         static final class Failed extends Exception {
             final String path;
-            final IOException cause;
+            final IOException problem;
 
             Failed(Object path, IOException cause) {
                 super(cause);
                 this.path = path.toString();
-                this.cause = cause;
+                this.problem = cause;
             }
         }
 

@@ -251,4 +251,28 @@ class OutputSafetyTest {
         assertEquals("gcnc-diagnostics", new com.fasterxml.jackson.databind.ObjectMapper().readTree(r.out()).get("format").asText());
         assertFalse(r.err().isEmpty(), "the trace went to standard error");
     }
+
+    /** {@code -o /dev/stdout >> log}: the log is appended to, never replaced by the DMC. */
+    @Test
+    void devStdoutAppendsToWhatStandardOutputIs() throws Exception {
+        Path log = dir.resolve("log");
+        Files.writeString(log, "earlier entries\n");
+        String javaCommand = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(javaCommand, "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main",
+                "compile", "--quiet", program.toString(), "-o", "/dev/stdout")
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()))
+                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS));
+        assertEquals(0, p.exitValue());
+        Path expected = dir.resolve("expected.dmc");
+        assertEquals(0, gcnc("compile", program.toString(), "-o", expected.toString()).status());
+        assertEquals("earlier entries\n" + Files.readString(expected), Files.readString(log));
+    }
+
+    @Test
+    void checkReadsStandardInputOnlyOnce() {
+        Run r = gcnc(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), "check", "-", "-");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("standard input, which can be read once"), r.err());
+    }
 }
