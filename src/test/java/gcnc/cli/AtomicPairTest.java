@@ -131,16 +131,23 @@ class AtomicPairTest {
     }
 
     /**
-     * SIGTERM in the middle of a compile (here: while it waits for the rest of its program on a named
-     * pipe, with its .part files open) leaves no temporary file behind.
+     * SIGTERM or Ctrl-C (SIGINT) in the middle of a compile (here: while it waits for the rest of its
+     * program on a named pipe, with its .part files open) leaves no temporary file behind.
      */
     @Test
     void aKilledCompileLeavesNoTemporaryFiles() throws Exception {
-        Path fifo = OutputSafetyTest.mkfifo(dir.resolve("in.fifo"));
+        for (String signal : new String[] {"TERM", "INT"}) {
+            killedWith(signal);
+        }
+    }
+
+    private void killedWith(String signal) throws Exception {
+        Path fifo = OutputSafetyTest.mkfifo(dir.resolve(signal + ".fifo"));
+        Path log = Files.createTempFile("gcnc-killed", ".log");
         String javaCommand = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         Process gcnc = new ProcessBuilder(javaCommand, "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main",
                 "compile", fifo.toString(), "-o", dmc.toString())
-                .redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile()).start();
+                .redirectErrorStream(true).redirectOutput(log.toFile()).start();
         try (OutputStream program = Files.newOutputStream(fifo)) {
             program.write("O1\nG21 G90\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
             program.flush();
@@ -149,15 +156,17 @@ class AtomicPairTest {
                 Thread.sleep(20);
             }
             assertTrue(leftovers().stream().anyMatch(n -> n.endsWith(".part")), "the compile never opened its output: "
-                    + Files.readString(dir.resolve("log")));
-            gcnc.destroy();
+                    + Files.readString(log));
+            Process kill = new ProcessBuilder("kill", "-s", signal, Long.toString(gcnc.pid())).inheritIO().start();
+            assertEquals(0, kill.waitFor());
             assertTrue(gcnc.waitFor(60, TimeUnit.SECONDS));
         } catch (IOException brokenPipe) {
             // The program's end was never written; the pipe breaks when gcnc goes.
         } finally {
             gcnc.destroyForcibly();
         }
-        assertEquals(List.of(), leftovers(), Files.readString(dir.resolve("log")));
+        assertEquals(List.of(), leftovers(), "SIG" + signal + " left temporary files; gcnc said: " + Files.readString(log));
         assertFalse(Files.exists(dmc));
+        Files.delete(fifo);
     }
 }

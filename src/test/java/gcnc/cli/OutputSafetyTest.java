@@ -60,6 +60,7 @@ class OutputSafetyTest {
         try (Stream<Path> s = Files.list(dir)) {
             assertFalse(s.anyMatch(f -> f.getFileName().toString().contains(".part")), "a temporary file was left behind");
         }
+        assertEquals(java.util.Set.of(), TempFiles.open(), "temporary files the shutdown hook still has to remove");
     }
 
     @Test
