@@ -100,6 +100,9 @@ final class MachinesCommand implements Callable<Integer> {
             if (uri.getScheme().equals("jar")) {
                 try (FileSystem jar = FileSystems.newFileSystem(uri, Map.of())) {
                     return names(list(jar.getPath("/tables/machines")));
+                } catch (java.nio.file.FileSystemAlreadyExistsException open) {
+                    // Someone else in this JVM has the jar open: read through theirs, and leave it open.
+                    return names(list(FileSystems.getFileSystem(uri).getPath("/tables/machines")));
                 }
             }
             return names(list(Path.of(uri)));

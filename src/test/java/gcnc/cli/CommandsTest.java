@@ -75,6 +75,42 @@ class CommandsTest {
         assertTrue(r.out().contains("haas           control haas"), r.out());
     }
 
+    /** A shop's --tables folder: its own profiles are listed, and a broken one is reported where it is broken. */
+    @Test
+    void machinesInATablesFolderListsItsProfilesAndReportsABrokenOne() throws IOException {
+        Path dir = Files.createTempDirectory("gcnc-machines");
+        try (var s = Files.list(Path.of("tables"))) {
+            for (Path p : s.filter(Files::isRegularFile).toList()) {
+                Files.copy(p, dir.resolve(p.getFileName()));
+            }
+        }
+        copyTree(Path.of("tables/controls"), dir.resolve("controls"));
+        Files.createDirectory(dir.resolve("machines"));
+        String generic = Files.readString(Path.of("tables/machines/generic.machine"));
+        Files.writeString(dir.resolve("machines/shop.machine"), generic.replace("name = generic", "name = shop"));
+        Files.writeString(dir.resolve("machines/broken.machine"), generic.replace("x.sign = 1", "x.sign = up"));
+        CliTest.Run r = CliTest.gcnc("machines", "--tables", dir.toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.out().startsWith("shop "), r.out());
+        assertEquals(1, r.out().split("\n").length, r.out());
+        assertTrue(r.err().contains("broken.machine:") && r.err().contains("error[E400]"), r.err());
+        CliTest.Run none = CliTest.gcnc("machines", "--tables", dir.resolve("nowhere").toString());
+        assertEquals(2, none.status());
+    }
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        try (var s = Files.walk(from)) {
+            for (Path p : s.toList()) {
+                Path t = to.resolve(from.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(t);
+                } else {
+                    Files.copy(p, t);
+                }
+            }
+        }
+    }
+
     @Test
     void machinesShowPrintsTheProfileAsWritten() throws IOException {
         CliTest.Run r = CliTest.gcnc("machines", "show", "haas");
