@@ -171,6 +171,9 @@ final class MachinesCommand implements Callable<Integer> {
         @Mixin
         CommonOptions common;
 
+        @Mixin
+        ReportOptions report;
+
         @Parameters(arity = "1..*", paramLabel = "FILE", description = ".machine files to validate (or profile names).")
         List<String> files;
 
@@ -181,23 +184,32 @@ final class MachinesCommand implements Callable<Integer> {
         public Integer call() {
             PrintWriter out = spec.commandLine().getOut();
             PrintWriter err = spec.commandLine().getErr();
+            Reporter reporter = new Reporter(report.format, report.quiet, out, err, common.language());
+            int status = validate(reporter);
+            reporter.finish();
+            out.flush();
+            return status;
+        }
+
+        private int validate(Reporter reporter) {
             Tables tables;
             try {
                 tables = common.loadTables();
             } catch (TableException e) {
-                return Reporter.tableFault(err, e, common.language());
+                return reporter.tableFault(e);
             }
+            reporter.use(tables, common.source());
             int status = ExitCode.CLEAN;
             for (String f : files) {
-                String path = Files.isRegularFile(Path.of(f)) && !f.contains("/") ? "./" + f : f;
+                // A file in the current folder named without ".machine" would be taken for a profile name.
+                String path = Files.isRegularFile(Path.of(f)) && !f.contains("/") && !f.endsWith(".machine") ? "./" + f : f;
                 try {
                     MachineProfile p = ProfileLoader.load(path, common.source(), tables, common.control);
-                    out.println(Printable.escape(f) + ": valid (machine " + p.name() + ", control " + p.control().name() + ")");
+                    reporter.say(f + ": valid (machine " + p.name() + ", control " + p.control().name() + ")");
                 } catch (TableException e) {
-                    status = Reporter.tableFault(err, e, common.language());
+                    status = reporter.tableFault(e);
                 }
             }
-            out.flush();
             return status;
         }
     }

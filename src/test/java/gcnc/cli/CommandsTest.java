@@ -130,6 +130,11 @@ class CommandsTest {
         assertEquals(2, r.status());
         assertTrue(r.err().startsWith(bad + ":"), r.err());
         assertTrue(r.err().contains("error[E400]: 'up' is not a number (x.sign)"), r.err());
+        CliTest.Run sarif = CliTest.gcnc("machines", "validate", "--format", "sarif", bad.toString());
+        assertEquals(2, sarif.status());
+        com.fasterxml.jackson.databind.JsonNode doc = new com.fasterxml.jackson.databind.ObjectMapper().readTree(sarif.out());
+        ReportFormatTest.assertValidSarif(doc);
+        assertEquals("E400", doc.get("runs").get(0).get("results").get(0).get("ruleId").asText());
     }
 
     @Test
