@@ -313,9 +313,14 @@ final class AtomicOutput implements AutoCloseable {
         Path b = temp.resolveSibling(temp.getFileName() + ".old");
         TempFiles.remember(b);
         try {
-            Files.createLink(b, target);
-        } catch (IOException | UnsupportedOperationException e) {
-            Files.copy(target, b, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.COPY_ATTRIBUTES);
+            try {
+                Files.createLink(b, target);
+            } catch (IOException | UnsupportedOperationException e) {
+                Files.copy(target, b, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.COPY_ATTRIBUTES);
+            }
+        } catch (IOException | RuntimeException e) {
+            TempFiles.delete(b);
+            throw e;
         }
         backup = b;
     }
