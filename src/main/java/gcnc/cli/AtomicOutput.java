@@ -1,5 +1,6 @@
 package gcnc.cli;
 
+import gcnc.diag.Code;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -7,46 +8,188 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Set;
 
 /**
- * An output file that appears whole or not at all: lines go to a temporary file beside the target,
- * which replaces the target only on {@link #commit()}. {@link #close()} without commit deletes it,
- * so a program with errors never leaves a half-written .dmc behind. A write that fails (a full
- * disk) is kept and the lines after it dropped: the compile goes on reporting the program's own
- * findings, and {@link #commit()} then throws that failure instead of replacing the target.
+ * An output that appears whole or not at all. Lines go to a temporary file; only {@link #commit()}
+ * puts them where they belong, and {@link #close()} without commit deletes the temporary file, so a
+ * program with errors, a full disk or a killed run ({@link TempFiles}) never leaves a half-written
+ * .dmc, nor a {@code .part} file, behind. A write that fails (a full disk) is kept and the lines
+ * after it dropped: the compile goes on reporting the program's own findings, and {@link #commit()}
+ * then throws that failure instead of touching the target.
+ *
+ * <p>Where the lines end up depends on what the target is:
+ * <ul>
+ * <li>a regular file, or none yet: the temporary file is made beside it and renamed over it (a
+ * symbolic link is followed, so the link stays and its file is replaced);</li>
+ * <li>something else that exists, such as {@code /dev/null}, a terminal or a named pipe, or a name
+ * for a descriptor ({@code /dev/stdout}, {@code /proc/self/fd/N}) whatever it leads to: it is
+ * written through (appended to), never replaced (the temporary file is in the system's temporary
+ * folder);</li>
+ * <li>a stream ({@link #toStream}, standard output for {@code -o -}): copied into it on commit.</li>
+ * </ul>
+ * A directory, or a path with no file name ({@code /}), is refused when the output is made.
  */
 final class AtomicOutput implements AutoCloseable {
-    private final Path target;
-    private final Path temp;
-    private final OutputStream out;
-    /** Our own buffer for {@link #line}: no lock and no copy per line (a compile writes millions). */
-    private final byte[] buffer = new byte[1 << 16];
-    private int buffered;
-    private Writer writer;
-    private boolean committed;
-    /** The first write error, or null. */
-    private IOException failure;
+    /** How the finished temporary file reaches the target; also the order of a joint commit. */
+    private enum Kind {
+        /** Renamed over a regular file: can be undone while a later output of the same commit fails. */
+        REPLACE,
+        /** Copied into an existing file that is not a regular one (a device, a pipe). */
+        WRITE_THROUGH,
+        /** Copied into a stream. */
+        STREAM
+    }
+
+    /** An output gcnc will not write, with the diagnostic that says why. */
+    static final class Refused extends IOException {
+        private final Code code;
+        private final List<String> args;
+
+        Refused(Code code, String... args) {
+            super(code.id() + " " + Arrays.toString(args));
+            this.code = code;
+            this.args = List.of(args);
+        }
+
+        Code code() {
+            return code;
+        }
+
+        List<String> args() {
+            return args;
+        }
+    }
 
     /** Opens the temporary file's stream (a seam for tests that need a failing disk). */
     interface Opener {
         OutputStream open(Path temp) throws IOException;
     }
 
+    private final Kind kind;
+    /** Where the lines end up (a link's own file for a symbolic link); null for a stream. */
+    private final Path target;
+    private final OutputStream stream;
+    private final Path temp;
+    private final OutputStream out;
+    /** Our own buffer for {@link #line}: no lock and no copy per line (a compile writes millions). */
+    private final byte[] buffer = new byte[1 << 16];
+    private int buffered;
+    private Writer writer;
+    private boolean closed;
+    private boolean committed;
+    /** The first write error, or null. */
+    private IOException failure;
+    /** The target as it was before {@link #install} replaced it, kept until the whole commit is done. */
+    private Path backup;
+
     AtomicOutput(Path target) throws IOException {
         this(target, p -> Files.newOutputStream(p));
     }
 
     AtomicOutput(Path target, Opener opener) throws IOException {
-        this.target = target.toAbsolutePath();
-        this.temp = Files.createTempFile(this.target.getParent(), "." + target.getFileName(), ".part");
-        // A temporary file is private (rw-------); the output is an ordinary file others may read.
-        if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
-            Files.setPosixFilePermissions(temp, PosixFilePermissions.fromString("rw-r--r--"));
+        Path absolute = target.toAbsolutePath();
+        if (absolute.getFileName() == null || Files.isDirectory(absolute)) {
+            throw new Refused(Code.E502_OUTPUT_IS_DIRECTORY);
         }
-        this.out = opener.open(temp);
+        this.stream = null;
+        if (Files.exists(absolute) && (!Files.isRegularFile(absolute) || isDescriptor(absolute))) {
+            this.kind = Kind.WRITE_THROUGH;
+            this.target = absolute;
+            this.temp = TempFiles.create(null, "gcnc-", ".part");
+        } else {
+            this.kind = Kind.REPLACE;
+            this.target = Files.isSymbolicLink(absolute) && Files.exists(absolute) ? absolute.toRealPath() : absolute;
+            if (Files.exists(this.target) && !Files.isWritable(this.target)) {
+                // A rename would replace a file its owner made read-only to keep it: write nothing.
+                throw new java.nio.file.AccessDeniedException(target.toString());
+            }
+            this.temp = TempFiles.create(this.target.getParent(), "." + this.target.getFileName(), ".part");
+            keepPermissions();
+        }
+        this.out = open(opener);
+    }
+
+    private AtomicOutput(OutputStream stream) throws IOException {
+        this.kind = Kind.STREAM;
+        this.target = null;
+        this.stream = stream;
+        this.temp = TempFiles.create(null, "gcnc-", ".part");
+        this.out = open(p -> Files.newOutputStream(p));
+    }
+
+    /**
+     * A name under /dev or /proc, such as /dev/stdout or /proc/self/fd/3: it stands for a descriptor
+     * the caller opened, which may be a regular file ({@code >> log}). Replacing that file would throw
+     * away what it held; it is written through (appended to) instead.
+     */
+    private static boolean isDescriptor(Path absolute) {
+        return absolute.startsWith("/dev") || absolute.startsWith("/proc");
+    }
+
+    /** An output that goes to {@code stream} (standard output) once committed, and nowhere otherwise. */
+    static AtomicOutput toStream(OutputStream stream) throws IOException {
+        return new AtomicOutput(stream);
+    }
+
+    /** True when the target is a regular file (or will be one): only then does a side file belong beside it. */
+    boolean replacesFile() {
+        return kind == Kind.REPLACE;
+    }
+
+    /**
+     * Refuses an output that is the program being read, under any name: the same path, {@code ./}, a
+     * symbolic or a hard link ({@link Files#isSameFile}). Standard input ({@code input} null) has no file.
+     */
+    static void refuseInput(Path input, Path output) throws Refused {
+        if (input == null || !Files.exists(output) || !Files.exists(input)) {
+            return;
+        }
+        try {
+            if (Files.isSameFile(input, output)) {
+                throw new Refused(Code.E501_OUTPUT_IS_INPUT, input.toString());
+            }
+        } catch (Refused r) {
+            throw r;
+        } catch (IOException e) {
+            // Cannot tell (no permission to look): writing will report the real problem, if any.
+        }
+    }
+
+    private OutputStream open(Opener opener) throws IOException {
+        try {
+            return opener.open(temp);
+        } catch (IOException | RuntimeException e) {
+            TempFiles.delete(temp);
+            throw e;
+        }
+    }
+
+    /** A new file is ordinary (rw-r--r--), not private like a temporary one; a replaced file keeps its mode. */
+    private void keepPermissions() throws IOException {
+        if (!Files.getFileStore(temp).supportsFileAttributeView("posix")) {
+            return;
+        }
+        Set<PosixFilePermission> mode = PosixFilePermissions.fromString("rw-r--r--");
+        if (Files.isRegularFile(target)) {
+            mode = Files.getPosixFilePermissions(target);
+        }
+        try {
+            Files.setPosixFilePermissions(temp, mode);
+        } catch (IOException | RuntimeException e) {
+            TempFiles.delete(temp);
+            throw e;
+        }
     }
 
     /** For text written in pieces (the SVG); a file takes either this or {@link #line}, not both. */
@@ -92,12 +235,116 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     void commit() throws IOException {
+        commitAll(this);
+    }
+
+    /**
+     * Puts several outputs in place as one: all or none. Every temporary file is finished first (a
+     * full disk stops the commit before any target is touched); then the regular files are renamed
+     * into place one by one, and when a rename fails the ones already done get their old contents
+     * back (or are removed if they did not exist) before the failure is thrown.
+     */
+    static void commitAll(AtomicOutput... outputs) throws IOException {
+        for (AtomicOutput o : outputs) {
+            o.finish();
+        }
+        List<AtomicOutput> order = new ArrayList<>(List.of(outputs));
+        order.sort(Comparator.comparing(o -> o.kind));
+        List<AtomicOutput> done = new ArrayList<>();
+        try {
+            for (AtomicOutput o : order) {
+                o.install();
+                done.add(o);
+            }
+        } catch (IOException | RuntimeException e) {
+            for (int i = done.size() - 1; i >= 0; i--) {
+                try {
+                    done.get(i).undo();
+                } catch (IOException | RuntimeException u) {
+                    e.addSuppressed(u);
+                }
+            }
+            throw e;
+        }
+        for (AtomicOutput o : done) {
+            o.dropBackup();
+        }
+    }
+
+    /** Ends the temporary file: the first write failure, or one on closing, is thrown. */
+    private void finish() throws IOException {
         if (failure != null) {
             throw failure;
         }
         closeStreams();
-        Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+
+    private void install() throws IOException {
+        switch (kind) {
+            case REPLACE -> {
+                if (Files.exists(target, LinkOption.NOFOLLOW_LINKS)) {
+                    keepBackup();
+                }
+                try {
+                    Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+                } catch (IOException | RuntimeException e) {
+                    dropBackup();
+                    throw e;
+                }
+            }
+            case WRITE_THROUGH -> {
+                try (OutputStream o = Files.newOutputStream(target, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
+                    Files.copy(temp, o);
+                }
+                TempFiles.delete(temp);
+            }
+            case STREAM -> {
+                Files.copy(temp, stream);
+                stream.flush();
+                TempFiles.delete(temp);
+            }
+        }
+        TempFiles.forget(temp);
         committed = true;
+    }
+
+    /** A second name for the old target (a hard link; a copy where links are not possible). */
+    private void keepBackup() throws IOException {
+        Path b = temp.resolveSibling(temp.getFileName() + ".old");
+        TempFiles.remember(b);
+        try {
+            try {
+                Files.createLink(b, target);
+            } catch (IOException | UnsupportedOperationException e) {
+                Files.copy(target, b, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.COPY_ATTRIBUTES);
+            }
+        } catch (IOException | RuntimeException e) {
+            TempFiles.delete(b);
+            throw e;
+        }
+        backup = b;
+    }
+
+    /** Takes back {@link #install}: the old file returns, or the new one goes if there was none. */
+    private void undo() throws IOException {
+        if (kind != Kind.REPLACE) {
+            return;
+        }
+        if (backup != null) {
+            // Should the move back fail, the old contents stay in the backup file: never deleted.
+            TempFiles.forget(backup);
+            Files.move(backup, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            backup = null;
+        } else {
+            Files.deleteIfExists(target);
+        }
+    }
+
+    private void dropBackup() throws IOException {
+        if (backup != null) {
+            TempFiles.delete(backup);
+            backup = null;
+        }
     }
 
     @Override
@@ -106,12 +353,16 @@ final class AtomicOutput implements AutoCloseable {
             try {
                 closeStreams();
             } finally {
-                Files.deleteIfExists(temp);
+                TempFiles.delete(temp);
             }
         }
     }
 
     private void closeStreams() throws IOException {
+        if (closed) {
+            return;
+        }
+        closed = true;
         if (writer != null) {
             writer.close();
         } else {

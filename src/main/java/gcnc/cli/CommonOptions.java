@@ -39,8 +39,12 @@ final class CommonOptions {
         }
     }
 
-    /** Loads the tables and the machine; a broken one is reported by the caller with {@link Reporter#tableFault}. */
-    Setup load(java.io.PrintWriter err) throws TableException {
+    /**
+     * Loads the tables and the machine through the library's {@link gcnc.Session}, and gives the
+     * tables' messages to {@code reporter}; a broken one is reported by the caller with
+     * {@link Reporter#tableFault}.
+     */
+    Setup load(Reporter reporter) throws TableException {
         gcnc.Session.Options o = gcnc.Session.Options.defaults().withMachine(machine);
         if (tables != null) {
             o = o.withTables(tables);
@@ -49,7 +53,8 @@ final class CommonOptions {
             o = o.withControl(control);
         }
         gcnc.Session s = gcnc.Session.open(o);
-        return new Setup(s, new Reporter(err, s.tables(), lang));
+        reporter.use(s.tables(), source());
+        return new Setup(s, reporter);
     }
 
     TableSource source() {

@@ -3,6 +3,7 @@ package gcnc.cli;
 import gcnc.Compiler;
 import gcnc.galil.SourceMap;
 import gcnc.machine.MachineProfile;
+import gcnc.sim.SimOptions;
 import gcnc.tables.TableException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -12,19 +13,25 @@ import java.util.Optional;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 
 @Command(name = "compile", mixinStandardHelpOptions = true,
         description = {"Check a program, translate it to a Galil DMC program and verify that in the simulator.",
-                "Writes the output file only when there is no error; never a half-written one."})
+                "Writes the output (and its .map) only when there is no error; never a half-written one."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:no errors; the output was written", "1:the program has errors; nothing was written",
+                "2:usage, unreadable input, unwritable or refused output, broken table or profile"})
 final class CompileCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;
 
-    @Parameters(paramLabel = "FILE", description = "The G-code program.")
+    @Parameters(paramLabel = "FILE", description = "The G-code program; - reads standard input (then give -o).")
     Path file;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT", description = "Output file (default: FILE with extension .dmc).")
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT",
+            description = "Output file (default: FILE with extension .dmc); - writes standard output. Never the program"
+                    + " itself; a device or named pipe is written through, not replaced.")
     Path output;
 
     @Option(names = "--source-map", description = "Put a Galil comment (NO L<line>) naming the G-code line before each block's directives.")
@@ -40,44 +47,162 @@ final class CompileCommand extends RunCommand {
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
+        boolean toStdout = output != null && SourceFiles.isStdin(output);
+        refuseUsage(reporter.format(), toStdout);
+        Optional<SimOptions> sim = simulation(profile, err);
+        if (toStdout) {
+            reporter.stdoutTaken();
+        }
+        Path target = output != null ? output : defaultOutput(file);
+        String name = SourceFiles.display(file);
+        String targetName = toStdout ? "<stdout>" : target.toString();
+        Outputs outputs;
+        try {
+            outputs = toStdout ? Outputs.toStream(streams().out())
+                    : Outputs.open(SourceFiles.fileOf(file), target, !sourceMap);
+        } catch (Outputs.Failed e) {
+            return reporter.ioFault(e.path, "cannot write", e.problem);
+        }
+        try (outputs) {
+            SourceMap mapper = new SourceMap(outputs.map == null ? line -> { } : outputs.map::line);
+            if (outputs.map != null) {
+                outputs.map.line(SourceMap.sourceLine(SourceFiles.isStdin(file) ? name : file.getFileName().toString()));
+            }
+            Compiler.Result r;
+            try (Reader in = SourceFiles.open(file, streams().in())) {
+                r = setup.session().withDialect(dialect.name()).compile(in, sim, sourceMap,
+                        mapper.wrap(line -> outputs.dmc.line(line.text())));
+            } catch (IOException e) {
+                return reporter.ioFault(name, "cannot read", e);
+            }
+            reporter.report(name, r.diagnostics());
+            if (!r.ok()) {
+                reporter.say(name + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
+                return ExitCode.PROGRAM_ERRORS;
+            }
+            out.flush();
+            try {
+                outputs.commit();
+            } catch (IOException e) {
+                return reporter.ioFault(targetName, "cannot write", e);
+            }
+            reporter.say(name + ": " + Reporter.plural(r.blocks(), "block") + " -> " + targetName
+                    + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
+            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s)));
+            return ExitCode.CLEAN;
+        }
+    }
+
+    /** Combinations that cannot work, refused before anything is read or written. */
+    private void refuseUsage(Reporter.Format format, boolean toStdout) {
+        if (toStdout && format != Reporter.Format.GNU) {
+            throw new ParameterException(spec.commandLine(), "-o - and --format "
+                    + format.name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name an output file");
+        }
+        if (output == null && SourceFiles.isStdin(file)) {
+            throw new ParameterException(spec.commandLine(),
+                    "the program comes from standard input: name the output with -o (- for standard output)");
+        }
+    }
+
+    /** The simulation to run (none for --no-simulate and the thesis dialect), said on standard error. */
+    private Optional<SimOptions> simulation(MachineProfile profile, PrintWriter err) {
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
+        Optional<SimOptions> sim;
+        try {
+            sim = simulate ? Optional.of(stock.options(profile)) : Optional.empty();
+        } catch (StockOptions.BadStock e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
         if (noSimulate) {
             err.println("gcnc: warning: --no-simulate: travel limits, collisions and path conformance were NOT verified");
         } else if (!simulate) {
             err.println("gcnc: note: the thesis dialect is a record of the thesis's Table 5.2, not a program for a real"
                     + " controller; it is not simulated (see why: gcnc simulate --dialect thesis)");
         }
-        Path target = output != null ? output : defaultOutput(file);
-        Compiler.Result r;
-        try (Reader in = SourceFiles.open(file)) {
-            try (AtomicOutput dmc = new AtomicOutput(target); AtomicOutput map = new AtomicOutput(mapFile(target))) {
-                SourceMap mapper = new SourceMap(map::line);
-                map.line(SourceMap.sourceLine(file.getFileName().toString()));
-                r = setup.session().withDialect(dialect.name()).compile(in,
-                        simulate ? Optional.of(stock.options(profile)) : Optional.empty(), sourceMap,
-                        mapper.wrap(line -> dmc.line(line.text())));
-                reporter.report(file.toString(), r.diagnostics());
-                if (r.ok()) {
-                    dmc.commit();
-                    if (!sourceMap) {
-                        map.commit();
-                    }
-                    out.println(file + ": " + Reporter.plural(r.blocks(), "block") + " -> " + target
-                            + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
-                    r.simulation().ifPresent(s -> out.println(SimSummary.format(s)));
-                } else {
-                    out.println(file + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
-                }
-            } catch (IOException e) {
-                return reporter.ioFault(target, "cannot write", e);
+        return sim;
+    }
+
+    /** The DMC and, beside a regular file, its map: opened together, committed together, discarded together. */
+    private static final class Outputs implements AutoCloseable {
+        /** An output that could not be opened, and which one. */
+        static final class Failed extends Exception {
+            final String path;
+            final IOException problem;
+
+            Failed(Object path, IOException cause) {
+                super(cause);
+                this.path = path.toString();
+                this.problem = cause;
             }
-        } catch (IOException e) {
-            return reporter.ioFault(file, "cannot read", e);
-        } catch (StockOptions.BadStock e) {
-            err.println("gcnc: " + e.getMessage());
-            return ExitCode.USAGE;
         }
-        return r.ok() ? ExitCode.CLEAN : ExitCode.PROGRAM_ERRORS;
+
+        final AtomicOutput dmc;
+        final AtomicOutput map;
+
+        Outputs(AtomicOutput dmc, AtomicOutput map) {
+            this.dmc = dmc;
+            this.map = map;
+        }
+
+        /** {@code -o -}: the DMC alone, to standard output once committed. */
+        static Outputs toStream(java.io.OutputStream stdout) throws Failed {
+            try {
+                return new Outputs(AtomicOutput.toStream(stdout), null);
+            } catch (IOException e) {
+                throw new Failed("<stdout>", e);
+            }
+        }
+
+        /** Refuses the program itself as either file (E501), then opens both. */
+        static Outputs open(Path input, Path target, boolean withMap) throws Failed {
+            Path mapPath = mapFile(target);
+            AtomicOutput dmc;
+            try {
+                AtomicOutput.refuseInput(input, target);
+                if (withMap) {
+                    AtomicOutput.refuseInput(input, mapPath);
+                }
+                dmc = new AtomicOutput(target);
+            } catch (IOException e) {
+                throw new Failed(target, e);
+            }
+            if (!withMap || !dmc.replacesFile()) {
+                return new Outputs(dmc, null);
+            }
+            try {
+                return new Outputs(dmc, new AtomicOutput(mapPath));
+            } catch (IOException e) {
+                discard(dmc);
+                throw new Failed(mapPath, e);
+            }
+        }
+
+        void commit() throws IOException {
+            if (map != null) {
+                AtomicOutput.commitAll(dmc, map);
+            } else {
+                dmc.commit();
+            }
+        }
+
+        /** Removes what was not committed; a temporary file that cannot be removed is no reason to fail the run. */
+        @Override
+        public void close() {
+            discard(map);
+            discard(dmc);
+        }
+
+        private static void discard(AtomicOutput o) {
+            if (o == null) {
+                return;
+            }
+            try {
+                o.close();
+            } catch (IOException e) {
+                // The shutdown hook (TempFiles) tries once more at exit.
+            }
+        }
     }
 
     static Path defaultOutput(Path file) {
@@ -87,6 +212,7 @@ final class CompileCommand extends RunCommand {
     }
 
     static Path mapFile(Path target) {
-        return target.resolveSibling(target.getFileName() + ".map");
+        Path name = target.getFileName();
+        return target.resolveSibling((name == null ? "" : name.toString()) + ".map");
     }
 }

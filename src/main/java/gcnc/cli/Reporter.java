@@ -3,46 +3,156 @@ package gcnc.cli;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.diag.Finding;
 import gcnc.diag.GnuRenderer;
+import gcnc.diag.JsonRenderer;
+import gcnc.diag.Messages;
+import gcnc.diag.SarifRenderer;
 import gcnc.diag.Span;
 import gcnc.tables.ErrorMessages;
 import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.List;
 
-/** Prints findings GCC-style on standard error, sorted by position, and a one-line count. */
+/**
+ * Where a run's findings and its one-line summaries go. In the GNU format (the default) each
+ * finding is printed GCC-style on standard error as it is reported, and the summaries on standard
+ * output. In JSON and SARIF the findings are kept and written as one document on standard output
+ * by {@link #finish}, and the summaries go to standard error, so that {@code gcnc check --format
+ * sarif *.nc > gcnc.sarif} is a valid file. {@code --quiet} drops the summaries, never a finding.
+ * Text from outside (file names, words of the program) is escaped in GNU lines ({@link Printable});
+ * the JSON writer escapes it its own way.
+ */
 final class Reporter {
-    private final PrintWriter err;
-    private final GnuRenderer renderer;
+    /** The formats of {@code --format}. */
+    enum Format { GNU, JSON, SARIF }
 
-    Reporter(PrintWriter err, Tables tables, ErrorMessages.Lang lang) {
+    private final Format format;
+    private final boolean quiet;
+    private final PrintWriter out;
+    private final PrintWriter err;
+    private final ErrorMessages.Lang lang;
+    private final List<Finding> findings = new ArrayList<>();
+    private TableSource source = TableSource.builtIn();
+    private Messages messages;
+    private PrintWriter human;
+
+    Reporter(Format format, boolean quiet, PrintWriter out, PrintWriter err, ErrorMessages.Lang lang) {
+        this.format = format;
+        this.quiet = quiet;
+        this.out = out;
         this.err = err;
-        this.renderer = new GnuRenderer(tables.messages().in(lang));
+        this.lang = lang;
+        this.human = format == Format.GNU ? out : err;
     }
 
-    /** Prints every finding of one file; returns how many were errors. */
+    /** A GNU reporter with the built-in messages (the tables command, tests). */
+    Reporter(PrintWriter out, PrintWriter err, ErrorMessages.Lang lang) {
+        this(Format.GNU, false, out, err, lang);
+    }
+
+    /** The user's tables are loaded: their messages (and, for SARIF, their codes) are used from now on. */
+    void use(Tables loaded, TableSource from) {
+        this.source = from;
+        this.messages = loaded.messages().in(lang);
+    }
+
+    Format format() {
+        return format;
+    }
+
+    /** Standard output carries the program (-o -): summaries move to standard error. */
+    void stdoutTaken() {
+        human = err;
+    }
+
+    /** A one-line summary for a person ("part.nc: 13 blocks, no errors"). */
+    void say(String line) {
+        if (!quiet) {
+            human.println(Printable.escape(line));
+        }
+    }
+
+    /** Every finding of one file; returns how many were errors. */
     int report(String path, Diagnostics diags) {
         for (Diagnostic d : diags.sorted()) {
-            err.println(renderer.render(path, d));
+            report(path, d);
         }
         return diags.errorCount();
     }
 
     void report(String path, Diagnostic d) {
-        err.println(renderer.render(path, d));
+        report(path, d, messages());
     }
 
-    /** A file that cannot be read or written: E500 at its first line; returns exit status 2. */
-    int ioFault(Object path, String what, IOException e) {
-        report(path.toString(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), what + ": " + SourceFiles.reason(e)));
+    private void report(String path, Diagnostic d, Messages m) {
+        if (format == Format.GNU) {
+            err.println(Printable.escape(new GnuRenderer(m).render(path, d)));
+        } else {
+            findings.add(new Finding(path, d, m.render(d.code(), d.args())));
+        }
+    }
+
+    /** A file that cannot be read or written, or an output gcnc refuses: at its first line; returns status 2. */
+    int ioFault(String path, String what, IOException e) {
+        if (e instanceof AtomicOutput.Refused r) {
+            report(path, new Diagnostic(r.code(), gcnc.diag.Severity.ERROR, Span.of(1, 1), r.args()));
+        } else {
+            report(path, Diagnostic.error(Code.E500_IO, Span.of(1, 1), what + ": " + SourceFiles.reason(e)));
+        }
         return ExitCode.USAGE;
     }
 
     /** A broken table or profile: reported with the built-in messages, since the user's may be the broken ones. */
-    static int tableFault(PrintWriter err, TableException e, ErrorMessages.Lang lang) {
-        err.println(new GnuRenderer(Tables.builtIn().messages().in(lang)).render(e.path(), e.diagnostic()));
+    int tableFault(TableException e) {
+        report(e.path(), e.diagnostic(), Tables.builtIn().messages().in(lang));
         return ExitCode.USAGE;
+    }
+
+    /** Writes the JSON or SARIF document, findings sorted by file and place; nothing for GNU. */
+    void finish() {
+        if (format == Format.GNU) {
+            return;
+        }
+        try {
+            if (format == Format.JSON) {
+                JsonRenderer.write(findings, Main.version(), out);
+            } else {
+                SarifRenderer.write(findings, rules(), Main.version(), out);
+            }
+        } catch (IOException e) {
+            // A PrintWriter does not throw; its errors are seen by checkError, reported by Main.
+            err.println("gcnc: cannot write the report: " + SourceFiles.reason(e));
+        }
+        out.flush();
+    }
+
+    private List<SarifRenderer.Rule> rules() {
+        try {
+            return CodeTable.load(source).rules(lang);
+        } catch (TableException e) {
+            try {
+                return CodeTable.load(TableSource.builtIn()).rules(lang);
+            } catch (TableException builtIn) {
+                throw new IllegalStateException("the tables built into gcnc.jar are broken", builtIn);
+            }
+        }
+    }
+
+    private Messages messages() {
+        if (messages == null) {
+            messages = Tables.builtIn().messages().in(lang);
+        }
+        return messages;
+    }
+
+    /** A broken table or profile, for commands without a run (tables): GNU on {@code err}. */
+    static int tableFault(PrintWriter err, TableException e, ErrorMessages.Lang lang) {
+        return new Reporter(err, err, lang).tableFault(e);
     }
 
     static String plural(long n, String what) {

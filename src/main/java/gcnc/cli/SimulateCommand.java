@@ -23,7 +23,10 @@ import picocli.CommandLine.Parameters;
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = {"Check and translate a program, then replay the Galil program on a model of the lathe:",
                 "travel, chuck, tailstock, rapids into stock, spindle and chuck state, path conformance.",
-                "A .dmc FILE is replayed as it is (no G-code to compare it with)."})
+                "A .dmc FILE is replayed as it is (no G-code to compare it with)."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:no errors", "1:the program has errors, or the simulation found a fault",
+                "2:usage, unreadable input, unwritable drawing, broken table or profile"})
 final class SimulateCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;
@@ -31,16 +34,18 @@ final class SimulateCommand extends RunCommand {
     @Mixin
     StockOptions stock;
 
-    @Parameters(paramLabel = "FILE", description = "A G-code program, or a .dmc program to replay by itself.")
+    @Parameters(paramLabel = "FILE", description = "A G-code program, or a .dmc program to replay by itself; - reads G-code from standard input.")
     Path file;
 
-    @Option(names = "--svg", paramLabel = "OUT", description = "Draw the XZ half-section: chuck, tailstock, stock, part, tool path, findings.")
+    @Option(names = "--svg", paramLabel = "OUT", description = "Draw the XZ half-section: chuck, tailstock, stock, part, tool path,"
+            + " findings; - writes standard output.")
     Path svg;
 
     @Option(names = "--hide-rapids", description = "Leave the rapid moves out of the --svg drawing (feeds and findings only).")
     boolean hideRapids;
 
-    @Option(names = "--trace", description = "Print every directive with the position and outputs after it.")
+    @Option(names = "--trace", description = "Print every directive with the position and outputs after it"
+            + " (on standard error when standard output carries a report or the drawing).")
     boolean trace;
 
     @Override
@@ -49,21 +54,36 @@ final class SimulateCommand extends RunCommand {
         try {
             options = stock.options(setup.profile());
         } catch (StockOptions.BadStock e) {
-            err.println("gcnc: " + e.getMessage());
-            return ExitCode.USAGE;
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
+        Reporter reporter = setup.reporter();
+        boolean svgToStdout = svg != null && SourceFiles.isStdin(svg);
+        if (svgToStdout && reporter.format() != Reporter.Format.GNU) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--svg - and --format "
+                    + reporter.format().name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name a file");
+        }
+        if (svgToStdout) {
+            reporter.stdoutTaken();
         }
         if (svg != null) {
             options = options.withPath();
         }
         if (trace) {
-            options = options.withTrace(out);
+            options = options.withTrace(svgToStdout || reporter.format() != Reporter.Format.GNU ? err : out);
         }
         MachineProfile profile = setup.profile();
-        Reporter reporter = setup.reporter();
+        String name = SourceFiles.display(file);
+        if (svg != null && !svgToStdout) {
+            try {
+                AtomicOutput.refuseInput(SourceFiles.fileOf(file), svg);
+            } catch (AtomicOutput.Refused e) {
+                return reporter.ioFault(svg.toString(), "cannot write", e);
+            }
+        }
         Diagnostics diags;
         Optional<SimReport> report;
-        String shown = file.toString();
-        try (Reader in = SourceFiles.open(file)) {
+        String shown = name;
+        try (Reader in = SourceFiles.open(file, streams().in())) {
             if (file.toString().endsWith(".dmc")) {
                 diags = new Diagnostics();
                 gcnc.galil.SourceMap.Table map = sourceMap(file);
@@ -75,34 +95,40 @@ final class SimulateCommand extends RunCommand {
                 }
             } else {
                 LineSink discard = line -> { };
-                Compiler.Result r = setup.session().withDialect(dialect.name()).compile(in, Optional.of(options), false, discard);
+                Compiler.Result r = setup.session().withDialect(dialect.name()).compile(in, Optional.of(options), false,
+                        discard);
                 diags = r.diagnostics();
                 report = r.simulation();
             }
         } catch (IOException e) {
-            return reporter.ioFault(file, "cannot read", e);
+            return reporter.ioFault(name, "cannot read", e);
         }
         out.flush();
         reporter.report(shown, diags);
         if (report.isPresent()) {
-            out.println(SimSummary.format(report.get()));
+            reporter.say(SimSummary.format(report.get()));
             if (svg != null) {
-                try (AtomicOutput o = new AtomicOutput(svg)) {
-                    SvgWriter.write(report.get(), file.getFileName().toString(), o.writer(), !hideRapids);
+                out.flush();
+                try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(svg)) {
+                    String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
+                    SvgWriter.write(report.get(), title, o.writer(), !hideRapids);
                     o.commit();
-                    out.println("drawing: " + svg);
+                    reporter.say("drawing: " + (svgToStdout ? "<stdout>" : svg));
                 } catch (IOException e) {
-                    return reporter.ioFault(svg, "cannot write", e);
+                    return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), "cannot write", e);
                 }
             }
         } else {
-            out.println(file + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
+            reporter.say(name + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
         }
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
     }
 
     /** The source map beside a .dmc ({@code OUT.dmc.map}, as compile writes it), or null when there is none or it cannot be read. */
     private static gcnc.galil.SourceMap.Table sourceMap(Path dmc) {
+        if (SourceFiles.isStdin(dmc)) {
+            return null;
+        }
         Path map = CompileCommand.mapFile(dmc);
         if (!java.nio.file.Files.isRegularFile(map)) {
             return null;

@@ -2,6 +2,7 @@ package gcnc.cli;
 
 import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.CodingErrorAction;
@@ -9,13 +10,42 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** Opens part programs. Bytes that are not UTF-8 become U+FFFD, which the lexer reports (error 3). */
+/**
+ * Opens part programs, each read once from start to end, so a pipe, a named pipe or standard
+ * input ({@code -}) works like a file. Bytes that are not UTF-8 become U+FFFD, which the lexer
+ * reports (error 3).
+ */
 final class SourceFiles {
+    /** The name that stands for standard input, as in most Unix tools; a file named "-" is "./-". */
+    static final String STDIN = "-";
+
     private SourceFiles() {
     }
 
+    static boolean isStdin(Path file) {
+        return file.toString().equals(STDIN);
+    }
+
+    /** The program's file, or null for standard input (which has none to compare outputs with). */
+    static Path fileOf(Path file) {
+        return isStdin(file) ? null : file;
+    }
+
+    /** How messages name the program: its path as given, or {@code <stdin>} as GCC does. */
+    static String display(Path file) {
+        return isStdin(file) ? "<stdin>" : file.toString();
+    }
+
+    static Reader open(Path file, InputStream stdin) throws IOException {
+        return reader(isStdin(file) ? stdin : Files.newInputStream(file));
+    }
+
     static Reader open(Path file) throws IOException {
-        return new BufferedReader(new InputStreamReader(Files.newInputStream(file),
+        return reader(Files.newInputStream(file));
+    }
+
+    private static Reader reader(InputStream in) {
+        return new BufferedReader(new InputStreamReader(in,
                 StandardCharsets.UTF_8.newDecoder()
                         .onMalformedInput(CodingErrorAction.REPLACE)
                         .onUnmappableCharacter(CodingErrorAction.REPLACE)), 1 << 16);

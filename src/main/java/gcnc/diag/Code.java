@@ -220,7 +220,11 @@ public enum Code {
     /** A table file or machine profile is malformed; the message says what and where. */
     E400_TABLE(400),
     /** An input file could not be read or an output file written. */
-    E500_IO(500);
+    E500_IO(500),
+    /** The output named (-o, --svg) is the program being read, under this or another name. */
+    E501_OUTPUT_IS_INPUT(501),
+    /** The output named is a directory (or {@code /}), not a file. */
+    E502_OUTPUT_IS_DIRECTORY(502);
 
     private final int number;
 

@@ -1,0 +1,80 @@
+package gcnc.cli;
+
+import gcnc.diag.Code;
+import gcnc.diag.SarifRenderer;
+import gcnc.diag.Severity;
+import gcnc.tables.Csv;
+import gcnc.tables.ErrorMessages;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+
+/**
+ * errors.csv as a catalogue of codes, for {@code gcnc explain} and SARIF's rules: each code's
+ * severity and its message in both languages, and an explanation when the table has an
+ * {@code explanation} column. (The messages a run prints come from {@link ErrorMessages}.)
+ */
+final class CodeTable {
+    /** One row of errors.csv. */
+    record Entry(Code code, Severity severity, String english, String spanish, String explanation) {
+        String text(ErrorMessages.Lang lang) {
+            return lang == ErrorMessages.Lang.ES ? spanish : english;
+        }
+    }
+
+    private final List<Entry> entries;
+
+    private CodeTable(List<Entry> entries) {
+        this.entries = List.copyOf(entries);
+    }
+
+    static CodeTable load(TableSource source) throws TableException {
+        String name = "errors.csv";
+        Csv csv = Csv.parse(source.describe(name), source.read(name));
+        List<Entry> entries = new ArrayList<>();
+        for (Csv.Row r : csv.rows()) {
+            Code code;
+            try {
+                code = Code.byNumber(r.integer("code"));
+            } catch (IllegalArgumentException e) {
+                throw r.faultAt("code", e.getMessage());
+            }
+            entries.add(new Entry(code, severity(r), r.get("en"), r.get("es"), explanation(r)));
+        }
+        return new CodeTable(entries);
+    }
+
+    private static Severity severity(Csv.Row r) throws TableException {
+        String s = r.get("severity");
+        try {
+            return Severity.valueOf(s.toUpperCase(Locale.ROOT));
+        } catch (IllegalArgumentException e) {
+            throw r.faultAt("severity", "'" + s + "' is not a severity (error, warning or note)");
+        }
+    }
+
+    /** The optional explanation column; a table without it explains nothing beyond the message. */
+    private static String explanation(Csv.Row r) {
+        try {
+            return r.get("explanation");
+        } catch (TableException e) {
+            return "";
+        }
+    }
+
+    List<Entry> entries() {
+        return entries;
+    }
+
+    Optional<Entry> find(Code code) {
+        return entries.stream().filter(e -> e.code() == code).findFirst();
+    }
+
+    /** Every code as a SARIF rule, its description in {@code lang}. */
+    List<SarifRenderer.Rule> rules(ErrorMessages.Lang lang) {
+        return entries.stream().map(e -> new SarifRenderer.Rule(e.code(), e.severity(), e.text(lang))).toList();
+    }
+}

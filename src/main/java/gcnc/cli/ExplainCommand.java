@@ -1,0 +1,81 @@
+package gcnc.cli;
+
+import gcnc.diag.Code;
+import gcnc.tables.ErrorMessages;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code gcnc explain E305}: what a diagnostic code means, from errors.csv. */
+@Command(name = "explain", mixinStandardHelpOptions = true,
+        description = "Explain diagnostic codes: severity, the message in English and Spanish, and the table's"
+                + " explanation if it has one.",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:every code was explained", "2:no such code, or a broken errors.csv"})
+final class ExplainCommand implements Callable<Integer> {
+    @Parameters(arity = "1..*", paramLabel = "CODE", description = "E305, e305 or 305.")
+    List<String> codes;
+
+    @Option(names = "--tables", paramLabel = "DIR", description = "Read errors.csv from DIR instead of the built-in one.")
+    Path tables;
+
+    @Option(names = "--lang", paramLabel = "en|es", defaultValue = "en", description = "The language shown first: en (default) or es.")
+    ErrorMessages.Lang lang;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        List<Code> wanted = codes.stream().map(this::code).toList();
+        CodeTable table;
+        try {
+            table = CodeTable.load(tables == null ? TableSource.builtIn() : TableSource.directory(tables));
+        } catch (TableException e) {
+            return Reporter.tableFault(spec.commandLine().getErr(), e, lang);
+        }
+        boolean placeholders = false;
+        for (Code c : wanted) {
+            CodeTable.Entry e = table.find(c).orElseThrow(() ->
+                    new ParameterException(spec.commandLine(), c.id() + " has no row in errors.csv"));
+            out.println(c.id() + " (" + e.severity().label() + ")");
+            ErrorMessages.Lang other = lang == ErrorMessages.Lang.EN ? ErrorMessages.Lang.ES : ErrorMessages.Lang.EN;
+            out.println("  " + lang.name().toLowerCase(Locale.ROOT) + ": " + e.text(lang));
+            out.println("  " + other.name().toLowerCase(Locale.ROOT) + ": " + e.text(other));
+            if (!e.explanation().isEmpty()) {
+                out.println();
+                out.println("  " + e.explanation());
+            }
+            placeholders |= e.english().contains("{0}");
+        }
+        if (placeholders) {
+            out.println("({0}, {1}... stand for the word or value each finding names.)");
+        }
+        out.flush();
+        return ExitCode.CLEAN;
+    }
+
+    private Code code(String text) {
+        String digits = text.trim().toUpperCase(Locale.ROOT);
+        if (digits.startsWith("E")) {
+            digits = digits.substring(1);
+        }
+        try {
+            return Code.byNumber(Integer.parseInt(digits));
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), "'" + Printable.escape(text)
+                    + "' is not a diagnostic code of this gcnc (gcnc tables lists them all)");
+        }
+    }
+}

@@ -1,0 +1,216 @@
+package gcnc.cli;
+
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileLoader;
+import gcnc.tables.TableException;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.net.URI;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.FileSystem;
+import java.nio.file.FileSystems;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.stream.Stream;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code gcnc machines}: the machine profiles gcnc ships (or --tables holds), one shown, one file validated. */
+@Command(name = "machines", mixinStandardHelpOptions = true,
+        description = "List the machine profiles (tables/machines/, or --tables DIR/machines/): name, control,"
+                + " Galil model and what the lathe is.",
+        subcommands = {MachinesCommand.Show.class, MachinesCommand.Validate.class},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:listed; every profile loads", "2:a profile is broken (reported where), or a broken table"})
+final class MachinesCommand implements Callable<Integer> {
+    @Mixin
+    CommonOptions common;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Tables tables;
+        List<String> names;
+        try {
+            tables = common.loadTables();
+            names = names(common.tables);
+        } catch (TableException e) {
+            return Reporter.tableFault(err, e, common.language());
+        } catch (IOException e) {
+            err.println("gcnc: cannot list the machine profiles: " + SourceFiles.reason(e));
+            return ExitCode.USAGE;
+        }
+        int status = ExitCode.CLEAN;
+        for (String name : names) {
+            try {
+                MachineProfile p = ProfileLoader.load(name, common.source(), tables, null);
+                String text = common.source().read("machines/" + name + ".machine");
+                out.printf("%-14s control %-12s %-9s %s%n", name, p.control().name(), p.galilModel(), summary(text));
+            } catch (TableException e) {
+                status = Reporter.tableFault(err, e, common.language());
+            }
+        }
+        out.flush();
+        return status;
+    }
+
+    /** The profile's own description: the first sentence of its opening comment, after "name --". */
+    static String summary(String text) {
+        StringBuilder b = new StringBuilder();
+        for (String line : text.split("\n")) {
+            if (!line.startsWith("#")) {
+                break;
+            }
+            b.append(line.substring(1).strip()).append(' ');
+        }
+        String s = b.toString().strip();
+        int dash = s.indexOf("--");
+        if (dash >= 0) {
+            s = s.substring(dash + 2).strip();
+        }
+        int end = s.indexOf(". ");
+        return end >= 0 ? s.substring(0, end + 1) : s;
+    }
+
+    /** The names of the profiles in DIR/machines, or in the jar's (or the build's) tables/machines. */
+    static List<String> names(Path dir) throws IOException {
+        if (dir != null) {
+            return names(list(dir.resolve("machines")));
+        }
+        URL url = TableSource.class.getResource("/tables/machines");
+        if (url == null) {
+            throw new IOException("no tables/machines in gcnc's class path");
+        }
+        try {
+            URI uri = url.toURI();
+            if (uri.getScheme().equals("jar")) {
+                try (FileSystem jar = FileSystems.newFileSystem(uri, Map.of())) {
+                    return names(list(jar.getPath("/tables/machines")));
+                } catch (java.nio.file.FileSystemAlreadyExistsException open) {
+                    // Someone else in this JVM has the jar open: read through theirs, and leave it open.
+                    return names(list(FileSystems.getFileSystem(uri).getPath("/tables/machines")));
+                }
+            }
+            return names(list(Path.of(uri)));
+        } catch (URISyntaxException e) {
+            throw new IOException(e.getMessage(), e);
+        }
+    }
+
+    private static List<Path> list(Path dir) throws IOException {
+        try (Stream<Path> s = Files.list(dir)) {
+            return s.toList();
+        }
+    }
+
+    private static List<String> names(List<Path> files) {
+        List<String> names = new ArrayList<>();
+        for (Path f : files) {
+            String n = f.getFileName().toString();
+            if (n.endsWith(".machine")) {
+                names.add(n.substring(0, n.length() - ".machine".length()));
+            }
+        }
+        names.sort(null);
+        return names;
+    }
+
+    /** {@code gcnc machines show NAME}: the profile file as it is, after checking that it loads. */
+    @Command(name = "show", mixinStandardHelpOptions = true,
+            description = "Print a machine profile (a name or a .machine file) as written, once it has loaded.")
+    static final class Show implements Callable<Integer> {
+        @Mixin
+        CommonOptions common;
+
+        @Parameters(paramLabel = "NAME|PATH", description = "A profile name (gcnc machines lists them) or a .machine file.")
+        String name;
+
+        @Spec
+        CommandSpec spec;
+
+        @Override
+        public Integer call() {
+            PrintWriter out = spec.commandLine().getOut();
+            try {
+                Tables tables = common.loadTables();
+                ProfileLoader.load(name, common.source(), tables, null);
+                boolean file = name.contains("/") || name.endsWith(".machine");
+                String text = file ? Files.readString(Path.of(name)) : common.source().read("machines/" + name + ".machine");
+                out.print(text);
+                out.flush();
+                return ExitCode.CLEAN;
+            } catch (TableException e) {
+                return Reporter.tableFault(spec.commandLine().getErr(), e, common.language());
+            } catch (IOException e) {
+                spec.commandLine().getErr().println("gcnc: " + Printable.escape(name) + ": " + SourceFiles.reason(e));
+                return ExitCode.USAGE;
+            }
+        }
+    }
+
+    /** {@code gcnc machines validate FILE}: the load-time validation of a profile, for a shop's own file. */
+    @Command(name = "validate", mixinStandardHelpOptions = true,
+            description = "Load machine profiles as a run would and report every fault found, with its line.",
+            exitCodeListHeading = "%nExit status:%n",
+            exitCodeList = {"0:every profile is valid", "2:a profile has a fault (printed with its line and column)"})
+    static final class Validate implements Callable<Integer> {
+        @Mixin
+        CommonOptions common;
+
+        @Mixin
+        ReportOptions report;
+
+        @Parameters(arity = "1..*", paramLabel = "FILE", description = ".machine files to validate (or profile names).")
+        List<String> files;
+
+        @Spec
+        CommandSpec spec;
+
+        @Override
+        public Integer call() {
+            PrintWriter out = spec.commandLine().getOut();
+            PrintWriter err = spec.commandLine().getErr();
+            Reporter reporter = new Reporter(report.format, report.quiet, out, err, common.language());
+            int status = validate(reporter);
+            reporter.finish();
+            out.flush();
+            return status;
+        }
+
+        private int validate(Reporter reporter) {
+            Tables tables;
+            try {
+                tables = common.loadTables();
+            } catch (TableException e) {
+                return reporter.tableFault(e);
+            }
+            reporter.use(tables, common.source());
+            int status = ExitCode.CLEAN;
+            for (String f : files) {
+                // A file in the current folder named without ".machine" would be taken for a profile name.
+                String path = Files.isRegularFile(Path.of(f)) && !f.contains("/") && !f.endsWith(".machine") ? "./" + f : f;
+                try {
+                    MachineProfile p = ProfileLoader.load(path, common.source(), tables, common.control);
+                    reporter.say(f + ": valid (machine " + p.name() + ", control " + p.control().name() + ")");
+                } catch (TableException e) {
+                    status = reporter.tableFault(e);
+                }
+            }
+            return status;
+        }
+    }
+}

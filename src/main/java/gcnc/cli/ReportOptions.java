@@ -1,0 +1,24 @@
+package gcnc.cli;
+
+import picocli.CommandLine.Option;
+
+/** {@code --format} and {@code --quiet}: how findings are written, and whether summaries are. */
+final class ReportOptions {
+    /** What shell completion offers for --format: the values as a user types them. */
+    static final class FormatNames implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return java.util.Arrays.stream(Reporter.Format.values())
+                    .map(f -> f.name().toLowerCase(java.util.Locale.ROOT)).iterator();
+        }
+    }
+
+    @Option(names = "--format", paramLabel = "gnu|json|sarif", defaultValue = "gnu", completionCandidates = FormatNames.class,
+            description = {"gnu (default): file:line:column: error[E037]: message, on standard error.",
+                    "json: one document on standard output (docs/command-line.md).",
+                    "sarif: SARIF 2.1.0 on standard output, for code-scanning annotations in CI."})
+    Reporter.Format format;
+
+    @Option(names = {"-q", "--quiet"}, description = "Print the findings only: no summary lines.")
+    boolean quiet;
+}

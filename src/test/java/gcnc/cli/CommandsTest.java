@@ -1,0 +1,185 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.diag.Code;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+
+/** explain, machines, completion, exit codes in --help and picocli's suggestions. */
+class CommandsTest {
+    @Test
+    void explainGivesSeverityAndBothLanguages() {
+        for (String name : new String[] {"E305", "e305", "305"}) {
+            CliTest.Run r = CliTest.gcnc("explain", name);
+            assertEquals(0, r.status(), r.err());
+            assertTrue(r.out().startsWith("E305 (error)\n"), r.out());
+            assertTrue(r.out().contains("  en: rapid move enters the blank at {0}"), r.out());
+            assertTrue(r.out().contains("  es: movimiento rápido entra en la pieza en bruto"), r.out());
+        }
+        CliTest.Run es = CliTest.gcnc("explain", "--lang", "es", "E316");
+        assertTrue(es.out().startsWith("E316 (note)\n  es: no se dio la pieza en bruto"), es.out());
+    }
+
+    @Test
+    void explainShowsTheTablesExplanationWhenItHasOne() throws IOException {
+        Path dir = Files.createTempDirectory("gcnc-explain");
+        StringBuilder csv = new StringBuilder();
+        for (String line : Files.readAllLines(Path.of("tables/errors.csv"))) {
+            if (line.startsWith("#") || line.isBlank()) {
+                csv.append(line);
+            } else if (line.startsWith("code,")) {
+                csv.append(line).append(",explanation");
+            } else if (line.startsWith("305,")) {
+                csv.append(line).append(",A G00 that goes through material breaks the insert: retract first");
+            } else {
+                csv.append(line).append(",");
+            }
+            csv.append('\n');
+        }
+        Files.writeString(dir.resolve("errors.csv"), csv);
+        CliTest.Run r = CliTest.gcnc("explain", "--tables", dir.toString(), "E305", "E001");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("\n  A G00 that goes through material breaks the insert: retract first\n"), r.out());
+    }
+
+    @Test
+    void anUnknownCodeIsAUsageError() {
+        CliTest.Run r = CliTest.gcnc("explain", "E999");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("'E999' is not a diagnostic code"), r.err());
+        assertEquals(2, CliTest.gcnc("explain", "G01").status());
+    }
+
+    @Test
+    void machinesListsEveryShippedProfile() throws IOException {
+        CliTest.Run r = CliTest.gcnc("machines");
+        assertEquals(0, r.status(), r.err());
+        List<String> shipped;
+        try (var s = Files.list(Path.of("tables/machines"))) {
+            shipped = s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".machine"))
+                    .map(n -> n.substring(0, n.length() - 8)).sorted().toList();
+        }
+        String[] lines = r.out().split("\n");
+        assertEquals(shipped.size(), lines.length, r.out());
+        for (int i = 0; i < lines.length; i++) {
+            assertTrue(lines[i].startsWith(shipped.get(i) + " "), lines[i]);
+        }
+        assertTrue(r.out().contains("haas           control haas"), r.out());
+    }
+
+    /** A shop's --tables folder: its own profiles are listed, and a broken one is reported where it is broken. */
+    @Test
+    void machinesInATablesFolderListsItsProfilesAndReportsABrokenOne() throws IOException {
+        Path dir = Files.createTempDirectory("gcnc-machines");
+        try (var s = Files.list(Path.of("tables"))) {
+            for (Path p : s.filter(Files::isRegularFile).toList()) {
+                Files.copy(p, dir.resolve(p.getFileName()));
+            }
+        }
+        copyTree(Path.of("tables/controls"), dir.resolve("controls"));
+        Files.createDirectory(dir.resolve("machines"));
+        String generic = Files.readString(Path.of("tables/machines/generic.machine"));
+        Files.writeString(dir.resolve("machines/shop.machine"), generic.replace("name = generic", "name = shop"));
+        Files.writeString(dir.resolve("machines/broken.machine"), generic.replace("x.sign = 1", "x.sign = up"));
+        CliTest.Run r = CliTest.gcnc("machines", "--tables", dir.toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.out().startsWith("shop "), r.out());
+        assertEquals(1, r.out().split("\n").length, r.out());
+        assertTrue(r.err().contains("broken.machine:") && r.err().contains("error[E400]"), r.err());
+        CliTest.Run none = CliTest.gcnc("machines", "--tables", dir.resolve("nowhere").toString());
+        assertEquals(2, none.status());
+    }
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        try (var s = Files.walk(from)) {
+            for (Path p : s.toList()) {
+                Path t = to.resolve(from.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(t);
+                } else {
+                    Files.copy(p, t);
+                }
+            }
+        }
+    }
+
+    @Test
+    void machinesShowPrintsTheProfileAsWritten() throws IOException {
+        CliTest.Run r = CliTest.gcnc("machines", "show", "haas");
+        assertEquals(0, r.status(), r.err());
+        assertEquals(Files.readString(Path.of("tables/machines/haas.machine")), r.out());
+        assertEquals(2, CliTest.gcnc("machines", "show", "no-such-lathe").status());
+    }
+
+    @Test
+    void machinesValidateRunsTheLoadTimeChecks() throws IOException {
+        CliTest.Run good = CliTest.gcnc("machines", "validate", "tables/machines/fanuc.machine");
+        assertEquals(0, good.status(), good.err());
+        assertTrue(good.out().contains("tables/machines/fanuc.machine: valid (machine fanuc, control fanuc-a)"), good.out());
+        Path bad = Files.createTempFile("lathe", ".machine");
+        Files.writeString(bad, Files.readString(Path.of("tables/machines/generic.machine")).replace("x.sign = 1", "x.sign = up"));
+        CliTest.Run r = CliTest.gcnc("machines", "validate", bad.toString());
+        assertEquals(2, r.status());
+        assertTrue(r.err().startsWith(bad + ":"), r.err());
+        assertTrue(r.err().contains("error[E400]: 'up' is not a number (x.sign)"), r.err());
+        CliTest.Run sarif = CliTest.gcnc("machines", "validate", "--format", "sarif", bad.toString());
+        assertEquals(2, sarif.status());
+        com.fasterxml.jackson.databind.JsonNode doc = new com.fasterxml.jackson.databind.ObjectMapper().readTree(sarif.out());
+        ReportFormatTest.assertValidSarif(doc);
+        assertEquals("E400", doc.get("runs").get(0).get("results").get(0).get("ruleId").asText());
+    }
+
+    @Test
+    void helpListsTheExitCodes() {
+        for (String command : new String[] {"--help", "check --help", "compile --help", "simulate --help"}) {
+            CliTest.Run r = CliTest.gcnc(command.split(" "));
+            assertEquals(0, r.status());
+            assertTrue(r.out().contains("Exit status:"), command + "\n" + r.out());
+            assertTrue(r.out().contains("  2   "), r.out());
+        }
+    }
+
+    @Test
+    void mistypedCommandsAndOptionsGetSuggestions() {
+        CliTest.Run command = CliTest.gcnc("compil", "x.nc");
+        assertEquals(2, command.status());
+        assertTrue(command.err().contains("Did you mean: gcnc compile"), command.err());
+        CliTest.Run option = CliTest.gcnc("check", "--formt", "json", "x.nc");
+        assertEquals(2, option.status());
+        assertTrue(option.err().contains("--format"), option.err());
+    }
+
+    /** The completion script is valid bash and completes commands and --format values. */
+    @Test
+    void completionCompletesCommandsAndFormats() throws Exception {
+        CliTest.Run r = CliTest.gcnc("completion");
+        assertEquals(0, r.status(), r.err());
+        Path script = Files.createTempFile("gcnc", ".bash");
+        Files.writeString(script, r.out());
+        String probe = "source '" + script + "' 2>/dev/null\n"
+                + "ask() { COMP_WORDS=(\"$@\"); COMP_CWORD=$(($# - 1)); COMP_LINE=\"$*\"; COMP_POINT=${#COMP_LINE};"
+                + " _complete_gcnc 2>/dev/null; echo \"${COMPREPLY[*]}\"; }\n"
+                + "ask gcnc com\nask gcnc check --format ''\nask gcnc machines v\n";
+        Process bash = new ProcessBuilder("bash", "-c", probe).redirectErrorStream(true).start();
+        String out = new String(bash.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(bash.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(List.of("compile completion", "gnu json sarif", "validate"), out.lines().toList(), out);
+    }
+
+    @Test
+    void theOutputCodesExplainThemselves() {
+        CliTest.Run r = CliTest.gcnc("explain", Code.E501_OUTPUT_IS_INPUT.id(), Code.E502_OUTPUT_IS_DIRECTORY.id());
+        assertEquals(0, r.status());
+        assertTrue(r.out().contains("E501 (error)\n  en: the output is the program being read ({0})"), r.out());
+        assertTrue(r.out().contains("E502 (error)\n  en: the output is a directory: name a file to write\n"
+                + "  es: la salida es un directorio"), r.out());
+    }
+}

@@ -1,0 +1,172 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.networknt.schema.JsonSchema;
+import com.networknt.schema.JsonSchemaFactory;
+import com.networknt.schema.SpecVersion;
+import com.networknt.schema.ValidationMessage;
+import gcnc.diag.Code;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+
+/** --format json and --format sarif: one document on standard output, every finding in it, nothing lost. */
+class ReportFormatTest {
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final JsonSchema SARIF_SCHEMA = sarifSchema();
+
+    private static JsonSchema sarifSchema() {
+        try (InputStream in = ReportFormatTest.class.getResourceAsStream("/sarif/sarif-schema-2.1.0.json")) {
+            return JsonSchemaFactory.getInstance(SpecVersion.VersionFlag.V4).getSchema(in);
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    static void assertValidSarif(JsonNode doc) {
+        Set<ValidationMessage> problems = SARIF_SCHEMA.validate(doc);
+        assertEquals(Set.of(), problems, doc.toPrettyString());
+    }
+
+    private final Path dir = Files.createTempDirectory("gcnc-report");
+
+    ReportFormatTest() throws IOException {
+    }
+
+    @Test
+    void jsonHasEveryFindingWithItsPlaceCodeMessageAndArguments() throws IOException {
+        CliTest.Run gnu = CliTest.gcnc("check", "docs/examples/mistakes.nc");
+        CliTest.Run r = CliTest.gcnc("check", "--format", "json", "docs/examples/mistakes.nc", "samples/turning.nc");
+        assertEquals(1, r.status(), r.err());
+        JsonNode doc = JSON.readTree(r.out());
+        assertEquals("gcnc-diagnostics", doc.get("format").asText());
+        assertEquals(1, doc.get("version").asInt());
+        String[] lines = gnu.err().split("\n");
+        JsonNode all = doc.get("diagnostics");
+        assertEquals(lines.length, all.size(), "the JSON holds exactly the findings the GNU format prints");
+        for (int i = 0; i < lines.length; i++) {
+            JsonNode d = all.get(i);
+            String expected = d.get("file").asText() + ":" + d.get("line").asInt() + ":" + d.get("column").asInt() + ": "
+                    + d.get("severity").asText() + "[" + d.get("code").asText() + "]: " + d.get("message").asText();
+            assertEquals(lines[i], expected);
+            assertTrue(d.get("arguments").isArray());
+        }
+        assertEquals(lines.length, doc.get("errors").asInt());
+        assertTrue(r.err().contains("docs/examples/mistakes.nc: 14 blocks, 5 errors"), r.err());
+        assertTrue(r.err().contains("samples/turning.nc: 13 blocks, no errors"), "summaries move to standard error");
+    }
+
+    @Test
+    void jsonKeepsArgumentsAndNamesExactlyEvenWithControlCharacters() throws IOException {
+        Path p = dir.resolve("tab\there.nc");
+        Files.writeString(p, "G21\nG01 X10. Z5. $\nM30\n");
+        CliTest.Run r = CliTest.gcnc("check", "--format", "json", p.toString());
+        JsonNode d = JSON.readTree(r.out()).get("diagnostics");
+        assertEquals(p.toString(), d.get(0).get("file").asText());
+        boolean dollar = false;
+        for (JsonNode x : d) {
+            dollar |= x.get("code").asText().equals("E003") && x.get("arguments").toString().contains("$");
+        }
+        assertTrue(dollar, r.out());
+    }
+
+    @Test
+    void sarifIsValidAgainstTheOfficialSchemaAndAnnotatesTheLines() throws IOException {
+        Path spaced = dir.resolve("my part é.nc");
+        Files.writeString(spaced, "G21\nG01 X10. Z5. $\nM30\n");
+        CliTest.Run r = CliTest.gcnc("check", "--format", "sarif", "docs/examples/mistakes.nc", spaced.toString(), "no/such.nc");
+        assertEquals(2, r.status(), r.err());
+        JsonNode doc = JSON.readTree(r.out());
+        assertValidSarif(doc);
+        JsonNode run = doc.get("runs").get(0);
+        JsonNode rules = run.get("tool").get("driver").get("rules");
+        assertEquals(Code.values().length, rules.size(), "one rule per diagnostic code");
+        Set<String> ruleIds = new HashSet<>();
+        rules.forEach(rule -> ruleIds.add(rule.get("id").asText()));
+        JsonNode first = run.get("results").get(0);
+        assertTrue(ruleIds.contains(first.get("ruleId").asText()));
+        assertEquals(first.get("ruleId").asText(), rules.get(first.get("ruleIndex").asInt()).get("id").asText());
+        assertEquals("error", first.get("level").asText());
+        JsonNode loc = first.get("locations").get(0).get("physicalLocation");
+        assertEquals("docs/examples/mistakes.nc", loc.get("artifactLocation").get("uri").asText());
+        assertEquals("%SRCROOT%", loc.get("artifactLocation").get("uriBaseId").asText());
+        assertTrue(loc.get("region").get("startLine").asInt() >= 1);
+        String all = r.out();
+        assertTrue(all.contains("\"uri\": \"file://" + dir.toString().replace(" ", "%20") + "/my%20part%20%C3%A9.nc\""), all);
+        assertTrue(all.contains("\"uri\": \"no/such.nc\""), "an unreadable file is a result too");
+        assertTrue(all.contains("\"ruleId\": \"E500\""), all);
+    }
+
+    /** The validator is not vacuous: a level SARIF does not have, or a missing ruleId's message, is caught. */
+    @Test
+    void theSchemaRejectsWhatSarifForbids() throws IOException {
+        CliTest.Run r = CliTest.gcnc("check", "--format", "sarif", "docs/examples/mistakes.nc");
+        String broken = r.out().replaceFirst("\"level\": \"error\"", "\"level\": \"fatal\"");
+        assertFalse(SARIF_SCHEMA.validate(JSON.readTree(broken)).isEmpty());
+        String noVersion = r.out().replaceFirst("\"version\": \"2.1.0\"", "\"version\": \"2.0\"");
+        assertFalse(SARIF_SCHEMA.validate(JSON.readTree(noVersion)).isEmpty());
+    }
+
+    @Test
+    void aCleanRunIsAnEmptyValidSarifLog() throws IOException {
+        CliTest.Run r = CliTest.gcnc("check", "--format", "sarif", "samples/turning.nc");
+        assertEquals(0, r.status(), r.err());
+        JsonNode doc = JSON.readTree(r.out());
+        assertValidSarif(doc);
+        assertEquals(0, doc.get("runs").get(0).get("results").size());
+    }
+
+    /** A broken profile is a finding in the document too, at the profile's own line. */
+    @Test
+    void aBrokenProfileIsAResultAtTheProfilesLine() throws IOException {
+        Path bad = dir.resolve("bad.machine");
+        Files.writeString(bad, Files.readString(Path.of("tables/machines/generic.machine")).replace("x.sign = 1", "x.sign = up"));
+        CliTest.Run r = CliTest.gcnc("compile", "--format", "sarif", "--machine", bad.toString(), "samples/turning.nc",
+                "-o", dir.resolve("x.dmc").toString());
+        assertEquals(2, r.status(), r.err());
+        JsonNode doc = JSON.readTree(r.out());
+        assertValidSarif(doc);
+        JsonNode result = doc.get("runs").get(0).get("results").get(0);
+        assertEquals("E400", result.get("ruleId").asText());
+        assertTrue(result.get("message").get("text").asText().contains("'up' is not a number"), r.out());
+        assertFalse(Files.exists(dir.resolve("x.dmc")));
+    }
+
+    @Test
+    void simulateFindingsAreReportedInSarif() throws IOException {
+        CliTest.Run r = CliTest.gcnc("simulate", "--format", "sarif", "--quiet", "samples/turning.nc");
+        assertEquals(0, r.status(), r.err());
+        assertValidSarif(JSON.readTree(r.out()));
+        assertEquals("", r.err(), "--quiet: no summary");
+    }
+
+    @Test
+    void quietLeavesTheFindingsAndDropsTheSummaries() {
+        CliTest.Run r = CliTest.gcnc("check", "--quiet", "docs/examples/mistakes.nc", "samples/turning.nc");
+        assertEquals(1, r.status());
+        assertEquals("", r.out());
+        assertEquals(5, r.err().split("\n").length, r.err());
+    }
+
+    @Test
+    void sarifBracesInMessagesAreDoubledAsTheStandardAsks() throws IOException {
+        Path p = dir.resolve("braces.nc");
+        Files.writeString(p, "G21\nG01 X10. Z5. {\nM30\n");
+        CliTest.Run r = CliTest.gcnc("check", "--format", "sarif", p.toString());
+        JsonNode doc = JSON.readTree(r.out());
+        assertValidSarif(doc);
+        for (JsonNode result : doc.get("runs").get(0).get("results")) {
+            String text = result.get("message").get("text").asText();
+            assertFalse(text.replace("{{", "").replace("}}", "").contains("{"), text);
+        }
+    }
+}
