@@ -82,9 +82,21 @@ final class Stock {
      * has just cut) is not: those moves skip the polygon work.
      */
     boolean mayTouch(double zLo, double zHi, double rMin) {
-        zLo += DEPTH / 2;
-        zHi -= DEPTH / 2;
-        rMin += DEPTH / 2;
+        double floor = rMin + DEPTH / 2;
+        return dips(zLo + DEPTH / 2, zHi - DEPTH / 2, (x, y) -> floor);
+    }
+
+    /** The lowest r of a region over z in [a, b] (+infinity where the region has nothing). */
+    private interface Floor {
+        double lowest(double a, double b);
+    }
+
+    /**
+     * Whether a region over z [zLo, zHi] comes below the upper envelope in some slice, looked at a
+     * run of slices at a time (per 4096, then per 64, then each): the envelope is never below the
+     * material, so a no is certain.
+     */
+    private boolean dips(double zLo, double zHi, Floor region) {
         if (zHi < back || zLo > face || zHi < zLo) {
             return false;
         }
@@ -93,15 +105,15 @@ final class Stock {
         int glo = lo / GROUP;
         int ghi = hi / GROUP;
         for (int sg = glo / GROUP; sg <= ghi / GROUP; sg++) {
-            if (rMin >= superMax[sg]) {
+            if (region.lowest(zOf(sg * GROUP * GROUP), zOf((sg + 1) * GROUP * GROUP)) >= superMax[sg]) {
                 continue;
             }
             for (int g = Math.max(glo, sg * GROUP); g <= Math.min(ghi, sg * GROUP + GROUP - 1); g++) {
-                if (rMin >= groupMax[g]) {
+                if (region.lowest(zOf(g * GROUP), zOf((g + 1) * GROUP)) >= groupMax[g]) {
                     continue;
                 }
                 for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
-                    if (rMin < upper[i]) {
+                    if (region.lowest(zOf(i), zOf(i + 1)) < upper[i]) {
                         return true;
                     }
                 }
@@ -297,31 +309,7 @@ final class Stock {
 
     /** Whether the hull dips below the upper envelope in some slice (the envelope is never below the material). */
     private boolean under(Hull h) {
-        double zLo = h.zMin();
-        double zHi = h.zMax();
-        if (zHi < back || zLo > face) {
-            return false;
-        }
-        int lo = slice(zLo);
-        int hi = slice(zHi);
-        int glo = lo / GROUP;
-        int ghi = hi / GROUP;
-        for (int sg = glo / GROUP; sg <= ghi / GROUP; sg++) {
-            if (h.lowest(zOf(sg * GROUP * GROUP), zOf((sg + 1) * GROUP * GROUP)) >= superMax[sg]) {
-                continue;
-            }
-            for (int g = Math.max(glo, sg * GROUP); g <= Math.min(ghi, sg * GROUP + GROUP - 1); g++) {
-                if (h.lowest(zOf(g * GROUP), zOf((g + 1) * GROUP)) >= groupMax[g]) {
-                    continue;
-                }
-                for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
-                    if (h.lowest(zOf(i), zOf(i + 1)) < upper[i]) {
-                        return true;
-                    }
-                }
-            }
-        }
-        return false;
+        return dips(h.zMin(), h.zMax(), h::lowest);
     }
 
     /** Where slice i begins (mm). */
