@@ -21,4 +21,17 @@ final class ReportOptions {
 
     @Option(names = {"-q", "--quiet"}, description = "Print the findings only: no summary lines.")
     boolean quiet;
+
+    /** When the GNU format shows the program's line with a caret under the column. */
+    enum Caret { AUTO, ALWAYS, NEVER }
+
+    @Option(names = "--caret", paramLabel = "auto|always|never", defaultValue = "auto",
+            description = "Under each GNU finding, the program's line and a caret at the column"
+                    + " (auto: when gcnc runs on a terminal).")
+    Caret caret;
+
+    /** Whether to show source lines: asked for, or on a terminal. */
+    boolean carets() {
+        return caret == Caret.ALWAYS || caret == Caret.AUTO && System.console() != null;
+    }
 }

@@ -40,6 +40,8 @@ final class Reporter {
     private TableSource source = TableSource.builtIn();
     private Messages messages;
     private PrintWriter human;
+    /** The program lines shown under GNU findings, or null when not shown ({@link #showSource}). */
+    private SourceLines programLines;
 
     Reporter(Format format, boolean quiet, PrintWriter out, PrintWriter err, ErrorMessages.Lang lang) {
         this.format = format;
@@ -63,6 +65,13 @@ final class Reporter {
 
     Format format() {
         return format;
+    }
+
+    /** Under each GNU finding, the program's line and a caret at the column (GCC's layout). */
+    void showSource() {
+        if (format == Format.GNU) {
+            programLines = new SourceLines();
+        }
     }
 
     /** Standard output carries the program (-o -): summaries move to standard error. */
@@ -92,6 +101,10 @@ final class Reporter {
     private void report(String path, Diagnostic d, Messages m) {
         if (format == Format.GNU) {
             err.println(Printable.escape(new GnuRenderer(m).render(path, d)));
+            String line = programLines == null ? null : programLines.line(path, d.span().line());
+            if (line != null) {
+                err.println(SourceLines.withCaret(line, d.span().column()));
+            }
         } else {
             findings.add(new Finding(path, d, m.render(d.code(), d.args())));
         }

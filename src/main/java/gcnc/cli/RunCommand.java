@@ -27,6 +27,9 @@ abstract class RunCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Reporter reporter = new Reporter(report.format, report.quiet, out, err, common.language());
+        if (report.carets()) {
+            reporter.showSource();
+        }
         int status;
         try {
             status = run(common.load(reporter), out, err);

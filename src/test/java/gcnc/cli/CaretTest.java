@@ -1,0 +1,41 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+
+/** GCC's layout on a terminal: under each finding, the program's line and a caret at the column. */
+class CaretTest {
+    private static final String PROGRAM = "G21 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\nG00 X46. Z2.\n"
+            + "\tG01 X41. Z-3O. F100.\nM30\n";
+
+    @Test
+    void theLineAndACaretUnderTheColumn() throws Exception {
+        Path p = CliTest.program(PROGRAM);
+        CliTest.Run r = CliTest.gcnc("check", p.toString(), "--caret", "always");
+        String[] err = r.err().split("\n");
+        assertTrue(err[0].contains(":7:11: error[E120]"), r.err());
+        assertEquals(" \\x09G01 X41. Z-3O. F100.", err[1], "the line as written, its tab shown escaped");
+        assertEquals('Z', err[1].charAt(err[2].indexOf('^')), "the caret under the Z word, column 11: " + err[2]);
+        assertEquals(err[2].indexOf('^'), err[2].length() - 1);
+    }
+
+    @Test
+    void offTheTerminalOrWhenAskedNotToNoLines() throws Exception {
+        Path p = CliTest.program(PROGRAM);
+        for (String[] args : new String[][] {{"check", p.toString()}, {"check", p.toString(), "--caret", "never"}}) {
+            CliTest.Run r = CliTest.gcnc(args);
+            assertEquals(1, r.err().strip().split("\n").length, r.err());
+        }
+    }
+
+    @Test
+    void theJsonReportIsNotTouched() throws Exception {
+        Path p = CliTest.program(PROGRAM);
+        CliTest.Run r = CliTest.gcnc("check", p.toString(), "--caret", "always", "--format", "json");
+        assertFalse(r.out().contains("^"), r.out());
+    }
+}
