@@ -232,7 +232,7 @@ final class Stock {
         if (full == null || !under(full)) {
             return;
         }
-        pending.add(polygon(full));
+        pending.add(full);
         lower(full);
         if (pending.size() >= PENDING_MAX) {
             settle();
@@ -262,16 +262,25 @@ final class Stock {
     }
 
     /** Cuts taken from the envelope but not yet from the polygons ({@link #cut}). */
-    private final java.util.List<Geometry> pending = new java.util.ArrayList<>();
-    private static final int PENDING_MAX = 256;
+    private final java.util.List<Hull> pending = new java.util.ArrayList<>();
+    /**
+     * At most this many cuts wait for the polygons (a hull is a dozen corners: about a MiB), so
+     * memory stays flat; a program whose rapids never come near the material settles them in one
+     * boolean every this many cuts.
+     */
+    private static final int PENDING_MAX = 4096;
 
     /** Takes the pending cuts from the polygons (one union, one difference). */
     private void settle() {
         if (pending.isEmpty()) {
             return;
         }
-        Geometry region = pending.size() == 1 ? pending.get(0) : OverlayNGRobust.union(pending);
+        java.util.List<Geometry> cuts = new java.util.ArrayList<>(pending.size());
+        for (Hull h : pending) {
+            cuts.add(polygon(h));
+        }
         pending.clear();
+        Geometry region = cuts.size() == 1 ? cuts.get(0) : OverlayNGRobust.union(cuts);
         remove(region);
     }
 
