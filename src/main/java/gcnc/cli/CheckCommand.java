@@ -30,8 +30,9 @@ final class CheckCommand extends RunCommand {
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 Compiler.Result r = setup.session().check(in);
                 int errors = reporter.report(name, r.diagnostics());
-                reporter.say(name + ": " + Reporter.plural(r.blocks(), "block") + ", "
-                        + (errors == 0 ? "no errors" : Reporter.plural(errors, "error")));
+                Phrases say = reporter.phrases();
+                reporter.say(say.get("check.summary", name, say.count(r.blocks(), "block"),
+                        errors == 0 ? say.get("no_errors") : say.count(errors, "error")));
                 if (errors > 0) {
                     status = Math.max(status, ExitCode.PROGRAM_ERRORS);
                 }

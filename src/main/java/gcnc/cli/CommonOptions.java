@@ -24,8 +24,9 @@ final class CommonOptions {
                     + " (default: the one the machine profile names).")
     String control;
 
-    @Option(names = "--lang", paramLabel = "en|es", defaultValue = "en",
-            description = "Language of the messages: en (default) or es.")
+    @Option(names = "--lang", paramLabel = "en|es",
+            description = "Language of the messages and summaries: en or es (default: es when LANG or LC_ALL"
+                    + " starts with es, else en).")
     ErrorMessages.Lang lang;
 
     /** What every command needs once its options are read: the library session (tables, machine), a reporter. */
@@ -70,6 +71,17 @@ final class CommonOptions {
     }
 
     ErrorMessages.Lang language() {
-        return lang;
+        return lang != null ? lang : fromEnvironment(System.getenv());
+    }
+
+    /** Spanish when the user's locale is Spanish (LC_ALL, then LANG, as POSIX orders them), else English. */
+    static ErrorMessages.Lang fromEnvironment(java.util.Map<String, String> env) {
+        for (String name : new String[] {"LC_ALL", "LC_MESSAGES", "LANG"}) {
+            String v = env.get(name);
+            if (v != null && !v.isEmpty()) {
+                return v.startsWith("es") ? ErrorMessages.Lang.ES : ErrorMessages.Lang.EN;
+            }
+        }
+        return ErrorMessages.Lang.EN;
     }
 }

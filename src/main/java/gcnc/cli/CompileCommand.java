@@ -49,7 +49,7 @@ final class CompileCommand extends RunCommand {
         Reporter reporter = setup.reporter();
         boolean toStdout = output != null && SourceFiles.isStdin(output);
         refuseUsage(reporter.format(), toStdout);
-        Optional<SimOptions> sim = simulation(profile, err);
+        Optional<SimOptions> sim = simulation(profile, err, reporter.phrases());
         if (toStdout) {
             reporter.stdoutTaken();
         }
@@ -77,7 +77,8 @@ final class CompileCommand extends RunCommand {
             }
             reporter.report(name, r.diagnostics());
             if (!r.ok()) {
-                reporter.say(name + ": " + Reporter.plural(r.diagnostics().errorCount(), "error") + "; no output written");
+                reporter.say(reporter.phrases().get("compile.failed", name,
+                        reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return ExitCode.PROGRAM_ERRORS;
             }
             out.flush();
@@ -86,9 +87,10 @@ final class CompileCommand extends RunCommand {
             } catch (IOException e) {
                 return reporter.ioFault(targetName, "cannot write", e);
             }
-            reporter.say(name + ": " + Reporter.plural(r.blocks(), "block") + " -> " + targetName
-                    + " (" + Reporter.plural(mapper.lines(), "line") + ", dialect " + dialect.name() + ")");
-            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s)));
+            Phrases say = reporter.phrases();
+            reporter.say(say.get("compile.written", name, say.count(r.blocks(), "block"), targetName,
+                    say.count(mapper.lines(), "line"), dialect.name()));
+            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s, reporter.phrases())));
             return ExitCode.CLEAN;
         }
     }
@@ -106,7 +108,7 @@ final class CompileCommand extends RunCommand {
     }
 
     /** The simulation to run (none for --no-simulate and the thesis dialect), said on standard error. */
-    private Optional<SimOptions> simulation(MachineProfile profile, PrintWriter err) {
+    private Optional<SimOptions> simulation(MachineProfile profile, PrintWriter err, Phrases phrases) {
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
         Optional<SimOptions> sim;
         try {
@@ -115,10 +117,9 @@ final class CompileCommand extends RunCommand {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         if (noSimulate) {
-            err.println("gcnc: warning: --no-simulate: travel limits, collisions and path conformance were NOT verified");
+            err.println(phrases.get("compile.no_simulate"));
         } else if (!simulate) {
-            err.println("gcnc: note: the thesis dialect is a record of the thesis's Table 5.2, not a program for a real"
-                    + " controller; it is not simulated (see why: gcnc simulate --dialect thesis)");
+            err.println(phrases.get("compile.thesis_not_simulated"));
         }
         return sim;
     }

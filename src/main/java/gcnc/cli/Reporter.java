@@ -79,6 +79,16 @@ final class Reporter {
         human = err;
     }
 
+    /** The command line's sentences in the language of the run. */
+    Phrases phrases() {
+        if (phrases == null) {
+            phrases = new Phrases(lang);
+        }
+        return phrases;
+    }
+
+    private Phrases phrases;
+
     /** A one-line summary for a person ("part.nc: 13 blocks, no errors"). */
     void say(String line) {
         if (!quiet) {
@@ -166,9 +176,5 @@ final class Reporter {
     /** A broken table or profile, for commands without a run (tables): GNU on {@code err}. */
     static int tableFault(PrintWriter err, TableException e, ErrorMessages.Lang lang) {
         return new Reporter(err, err, lang).tableFault(e);
-    }
-
-    static String plural(long n, String what) {
-        return n + " " + what + (n == 1 ? "" : "s");
     }
 }

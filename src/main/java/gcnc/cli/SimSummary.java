@@ -8,11 +8,13 @@ final class SimSummary {
     private SimSummary() {
     }
 
-    static String format(SimReport r) {
-        String envelope = Double.isNaN(r.xMinMm()) ? "no motion"
-                : String.format(Locale.ROOT, "X %.3f..%.3f mm (radius), Z %.3f..%.3f mm", r.xMinMm(), r.xMaxMm(), r.zMinMm(), r.zMaxMm());
+    static String format(SimReport r, Phrases phrases) {
+        String envelope = Double.isNaN(r.xMinMm()) ? phrases.get("simulation.no_motion")
+                : phrases.get("simulation.envelope", String.format(Locale.ROOT, "%.3f..%.3f", r.xMinMm(), r.xMaxMm()),
+                        String.format(Locale.ROOT, "%.3f..%.3f", r.zMinMm(), r.zMaxMm()));
         long s = Math.round(r.cycleSeconds());
-        return String.format(Locale.ROOT, "simulation: %d sequences, %d segments, %s; envelope %s; cycle time about %d:%02d:%02d",
-                r.sequences(), r.segments(), Reporter.plural(r.findings(), "finding"), envelope, s / 3600, s / 60 % 60, s % 60);
+        return phrases.get("simulation.summary", phrases.count(r.sequences(), "sequence"),
+                phrases.count(r.segments(), "segment"), phrases.count(r.findings(), "finding"), envelope,
+                String.format(Locale.ROOT, "%d:%02d:%02d", s / 3600, s / 60 % 60, s % 60));
     }
 }

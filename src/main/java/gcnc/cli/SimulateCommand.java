@@ -106,20 +106,20 @@ final class SimulateCommand extends RunCommand {
         out.flush();
         reporter.report(shown, diags);
         if (report.isPresent()) {
-            reporter.say(SimSummary.format(report.get()));
+            reporter.say(SimSummary.format(report.get(), reporter.phrases()));
             if (svg != null) {
                 out.flush();
                 try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(svg)) {
                     String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
                     SvgWriter.write(report.get(), title, o.writer(), !hideRapids);
                     o.commit();
-                    reporter.say("drawing: " + (svgToStdout ? "<stdout>" : svg));
+                    reporter.say(reporter.phrases().get("simulate.drawing", svgToStdout ? "<stdout>" : svg));
                 } catch (IOException e) {
                     return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), "cannot write", e);
                 }
             }
         } else {
-            reporter.say(name + ": " + Reporter.plural(diags.errorCount(), "error") + " before simulation; nothing simulated");
+            reporter.say(reporter.phrases().get("simulate.nothing", name, reporter.phrases().count(diags.errorCount(), "error")));
         }
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
     }

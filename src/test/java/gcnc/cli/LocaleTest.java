@@ -43,7 +43,7 @@ class LocaleTest {
         Run r = run(List.of("sh", "scripts/gcnc", "check", "--lang", "es", p.toString()),
                 Map.of("LANG", "C", "GCNC_CLASSPATH", System.getProperty("java.class.path")));
         assertEquals(0, r.status(), r.out());
-        assertTrue(r.out().contains(p + ": 13 blocks, no errors"), r.out());
+        assertTrue(r.out().contains(p + ": 13 bloques, sin errores"), r.out());
     }
 
     /** Without the launcher Java cannot take the name; the user gets a reason and a way out, not a stack trace. */

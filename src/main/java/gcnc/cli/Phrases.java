@@ -1,0 +1,36 @@
+package gcnc.cli;
+
+import gcnc.tables.ErrorMessages;
+import java.text.MessageFormat;
+import java.util.Locale;
+import java.util.ResourceBundle;
+
+/**
+ * The command line's own sentences (summaries, warnings about the run) in the language of
+ * {@code --lang}: {@code gcnc/cli/Phrases.properties} and {@code Phrases_es.properties}, read as
+ * UTF-8. The diagnostics' texts come from {@code tables/errors.csv}, not from here.
+ */
+final class Phrases {
+    private final ResourceBundle bundle;
+    private final Locale locale;
+
+    Phrases(ErrorMessages.Lang lang) {
+        this.locale = lang == ErrorMessages.Lang.ES ? Locale.forLanguageTag("es") : Locale.ROOT;
+        this.bundle = ResourceBundle.getBundle("gcnc.cli.Phrases", locale, Phrases.class.getClassLoader(),
+                ResourceBundle.Control.getNoFallbackControl(ResourceBundle.Control.FORMAT_PROPERTIES));
+    }
+
+    /** The sentence {@code key} with its arguments, each shown as text (a number as 1234, never 1,234). */
+    String get(String key, Object... args) {
+        Object[] text = new Object[args.length];
+        for (int i = 0; i < args.length; i++) {
+            text[i] = String.valueOf(args[i]);
+        }
+        return new MessageFormat(bundle.getString(key), Locale.ROOT).format(text);
+    }
+
+    /** "1 block", "5 blocks" ({@code what}.one and .other). */
+    String count(long n, String what) {
+        return get(what + (n == 1 ? ".one" : ".other"), n);
+    }
+}
