@@ -105,14 +105,14 @@ final class CycleExpansion {
         MachineProfile p = host.profile();
         double noPoint = units == Units.INCH ? p.noPointInch() : p.noPointMm();
         CycleCall call = CycleCall.read(b, g, kind, this::role, noPoint, host.out());
-        if (call == null) {
-            return List.of();
-        }
         List<CheckedBlock> done = new ArrayList<>();
-        if (!call.passOn().isEmpty()) {
-            List<Word> w = call.passOn();
-            host.one(new RawBlock(b.line(), w, w.get(w.size() - 1).span(), false, b.blockDelete()), isFirst, null)
-                    .ifPresent(done::add);
+        List<Word> passOn = call != null ? call.passOn() : passOn(b);
+        if (!passOn.isEmpty()) {
+            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
+                    isFirst, null).ifPresent(done::add);
+        }
+        if (call == null) {
+            return done;
         }
         if (call.firstOfTwo()) {
             first(call);
@@ -122,6 +122,29 @@ final class CycleExpansion {
             pending = new Pending(call, b.line(), new ArrayList<>(), new boolean[1]);
         }
         return done;
+    }
+
+    /**
+     * The words of a cycle block that the cycle could not read which belong to other functions
+     * (its F, S, M, N): they still take effect, so that the blocks after it are not judged
+     * without them (as {@link Salvage} keeps a rejected block's modal words).
+     */
+    private List<Word> passOn(RawBlock b) {
+        List<Word> kept = new ArrayList<>();
+        for (Word w : b.words()) {
+            boolean other = switch (w.letter()) {
+                case N, F, S, T, M -> true;
+                case G -> {
+                    GRole r = w.number().isEmpty() ? null : role((int) NumberText.integer(w.number()));
+                    yield r != null && !r.contourCycle();
+                }
+                default -> false;
+            };
+            if (other) {
+                kept.add(w);
+            }
+        }
+        return kept;
     }
 
     /** The Fanuc first block: remembers the depth and retract for the next cycle of its kind. */
