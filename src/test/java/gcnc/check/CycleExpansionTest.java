@@ -36,9 +36,13 @@ class CycleExpansionTest {
     }
 
     static Expanded expand(String machine, Reader program) throws Exception {
+        return expand(Run.profile(machine), program);
+    }
+
+    static Expanded expand(gcnc.machine.MachineProfile profile, Reader program) throws Exception {
         Diagnostics d = new Diagnostics();
         BlockReader reader = new BlockReader(program, d);
-        Checker checker = new Checker(Run.TABLES, Run.profile(machine), d);
+        Checker checker = new Checker(Run.TABLES, profile, d);
         List<CheckedBlock> blocks = new ArrayList<>();
         for (RawBlock b = reader.next(); b != null; b = reader.next()) {
             blocks.addAll(checker.check(b));
@@ -86,6 +90,37 @@ class CycleExpansionTest {
                 (p.z() - f.origin().z()) / f.perZ());
     }
 
+    /** The cycle's blocks only, rendered. */
+    private static String cycle(Expanded e) {
+        StringBuilder sb = new StringBuilder();
+        for (CheckedBlock b : e.blocks()) {
+            if (b.frame().sequence().contains("G71")) {
+                for (Motion m : b.motions()) {
+                    sb.append(motion(m, b.frame())).append('\n');
+                }
+            }
+        }
+        return sb.toString();
+    }
+
+    @org.junit.jupiter.api.Test
+    void underG91TheCycleMakesTheSameMovesAsUnderG90() throws Exception {
+        gcnc.machine.MachineProfile b = gcnc.machine.ProfileLoader.load("fanuc", gcnc.tables.TableSource.builtIn(),
+                Run.TABLES, "fanuc-b");
+        String head = "G21 G95\nT0101\nG97 S1000 M03\nG90 G00 X52. Z2.\n";
+        String absolute = head + "G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-15.\nX48.\n"
+                + "N20 Z-40.\nM30\n";
+        String incremental = head + "G91\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X-32.\nG01 Z-17.\n"
+                + "X28.\nN20 Z-25.\nG90\nM30\n";
+        Expanded a = expand(b, new java.io.StringReader(absolute));
+        Expanded i = expand(b, new java.io.StringReader(incremental));
+        assertEquals("[]", a.diagnostics().sorted().toString());
+        assertEquals("[]", i.diagnostics().sorted().toString());
+        String moves = cycle(a);
+        assertEquals(true, moves.split("\n").length > 20, moves);
+        assertEquals(moves, cycle(i));
+    }
+
     @TestFactory
     Stream<DynamicTest> everyCycleProgramExpandsAsReviewed() throws Exception {
         boolean update = Boolean.getBoolean("gcnc.updateGolden");
@@ -105,6 +140,41 @@ class CycleExpansionTest {
                 Files.writeString(golden, actual, StandardCharsets.UTF_8);
             }
             assertEquals(Files.readString(golden, StandardCharsets.UTF_8), actual);
+        }));
+    }
+
+    /**
+     * The same programs through the whole pipeline: the Galil program, with the source map that
+     * points each cycle move back at the cycle's line, byte for byte as reviewed in NAME.MACHINE.dmc;
+     * on the metric fanuc machine the simulator replays it over the machine's blank without a finding.
+     */
+    @TestFactory
+    Stream<DynamicTest> everyCycleProgramCompilesAsReviewed() throws Exception {
+        boolean update = Boolean.getBoolean("gcnc.updateGolden");
+        List<Path> programs;
+        try (Stream<Path> s = Files.list(DIR)) {
+            programs = s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
+        }
+        return programs.stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
+            String name = p.getFileName().toString();
+            String machine = name.split("\\.")[1];
+            boolean simulate = machine.equals("fanuc");
+            gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile(machine), "galil",
+                    simulate ? java.util.Optional.of(gcnc.sim.SimOptions.defaults()) : java.util.Optional.empty(), true);
+            StringBuilder dmc = new StringBuilder();
+            gcnc.Compiler.Result r;
+            try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
+                r = gcnc.Compiler.compile(in, settings, l -> dmc.append(l.text()).append('\n'));
+            }
+            assertEquals(true, r.ok(), () -> name + ": " + r.diagnostics().sorted());
+            if (simulate) {
+                assertEquals(0, r.simulation().orElseThrow().findings(), () -> name + ": " + r.diagnostics().sorted());
+            }
+            Path golden = DIR.resolve(name.replaceAll("\\.nc$", ".dmc"));
+            if (update) {
+                Files.writeString(golden, dmc.toString(), StandardCharsets.UTF_8);
+            }
+            assertEquals(Files.readString(golden, StandardCharsets.UTF_8), dmc.toString());
         }));
     }
 }
