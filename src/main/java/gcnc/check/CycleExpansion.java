@@ -3,19 +3,13 @@ package gcnc.check;
 import gcnc.check.cycle.Axes;
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
-import gcnc.check.cycle.Fault;
-import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.cycle.Roughing;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
-import gcnc.diag.Diagnostics;
-import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
-import gcnc.ir.Motion;
-import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
@@ -27,28 +21,24 @@ import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 
 /**
  * G70, G71 and G72 in the checker's flow (docs/cycles.md). A G71/G72 with P and Q reads its
  * contour ahead: the blocks N(P)..N(Q) right after it, at most {@link #LOOK_AHEAD} of them, are
  * taken out of the flow (the control skips them after the cycle) and followed from the cycle's
- * start without changing the program's state. The cycle's passes ({@link Roughing}) are then
- * written as blocks ({@link MoveWriter}) and checked like any other, each with its origin. A G70
- * follows the stored contour of an earlier G71/G72 again, as ordinary blocks, and returns to
- * its start point. The Fanuc first block (G71 U R / G72 W R) only sets the depth and retract.
+ * start without changing the program's state ({@link ContourReader}). {@link StockRemoval} then
+ * plans the passes, writes them as blocks and checks each like any other, with its origin. A G70
+ * follows the stored contour of an earlier G71/G72 again ({@link Finishing}). The Fanuc first
+ * block (G71 U R / G72 W R) only sets the depth and retract.
  */
 final class CycleExpansion {
     /** How many blocks after a G71/G72 its contour's last block N(Q) may be. */
     static final int LOOK_AHEAD = 1000;
-    /** The most passes one cycle is expanded into. */
-    static final int MAX_PASSES = 10_000;
     /** How many contours are kept for a later G70 (the oldest is forgotten first). */
     static final int STORED = 100;
-    /** Geometric tolerance, mm. */
-    private static final double EPS_MM = 0.001;
 
     private final Checker host;
+    private final ContourReader contours;
     /** The cycle whose contour is being read, with the blocks read so far; null when none. */
     private Pending pending;
     /** Depth (program units, a radius for G71) and retract (mm) of a Fanuc first block, per cycle. */
@@ -74,6 +64,7 @@ final class CycleExpansion {
 
     CycleExpansion(Checker host) {
         this.host = host;
+        this.contours = new ContourReader(host, this::role);
     }
 
     boolean reading() {
@@ -117,7 +108,13 @@ final class CycleExpansion {
         if (call.firstOfTwo()) {
             first(call);
         } else if (kind == GRole.FINISHING_CYCLE) {
-            done.addAll(finish(call, b.line()));
+            Stored s = stored.get(key(call));
+            if (s == null) {
+                host.out().error(Code.E166_FINISH_WITHOUT_CONTOUR, call.g().span(), call.name(), call.label(Letter.P),
+                        call.label(Letter.Q));
+            } else {
+                done.addAll(new Finishing(host).expand(call, b.line(), s.blocks(), s.axes(), s.depthSign()));
+            }
         } else {
             pending = new Pending(call, b.line(), new ArrayList<>(), new boolean[1]);
         }
@@ -237,162 +234,29 @@ final class CycleExpansion {
     /** G71/G72 once its contour is read: the contour followed, the passes planned, written and checked. */
     private List<CheckedBlock> roughing(Pending p) {
         CycleCall call = p.call();
-        Axes axes = call.kind() == GRole.TURNING_CYCLE ? Axes.TURNING : Axes.FACING;
         ModalState start = host.state();
-        List<Contour.Piece> pieces = follow(call, p.line(), p.blocks(), start);
+        List<Contour.Piece> pieces = contours.follow(call, p.line(), p.blocks(), start);
         if (pieces == null || p.broken()[0]) {
             return List.of();
         }
+        StockRemoval cycle = new StockRemoval(host, call, p.line());
         if (pieces.size() < 2) {
-            host.out().error(Code.E163_CONTOUR_EMPTY, call.g().span(), call.name(), axes.cutName());
+            host.out().error(Code.E163_CONTOUR_EMPTY, call.g().span(), call.name(), cycle.axes().cutName());
             return List.of();
         }
         Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
         stored.remove(key(call));
-        stored.put(key(call), new Stored(List.copyOf(p.blocks()), axes, signs(axes, contour)));
-        Roughing.Settings settings = settings(call, axes, start);
-        if (settings == null) {
-            return List.of();
-        }
-        Roughing.Outcome o = new Roughing(axes, settings).plan(contour);
-        if (o instanceof Fault f) {
-            report(f, call, p.line(), p.blocks());
-            return List.of();
-        }
-        Roughing.Plan plan = (Roughing.Plan) o;
-        return write(plan.moves(), plan.passes(), call, p.line(), start);
+        stored.put(key(call), new Stored(List.copyOf(p.blocks()), cycle.axes(), signs(cycle.axes(), contour)));
+        return cycle.expand(contour, p.blocks(), start,
+                firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN}));
     }
 
-    /**
-     * Follows the contour blocks from the cycle's start, each checked aside (E162 for what a
-     * contour cannot hold); their moves, or null when a block has an error.
-     */
-    private List<Contour.Piece> follow(CycleCall call, int line, List<RawBlock> blocks, ModalState start) {
-        List<Contour.Piece> pieces = new ArrayList<>();
-        ModalState s = start;
-        boolean ok = true;
-        for (RawBlock b : blocks) {
-            if (b.malformed()) {
-                ok = false;
-                continue;
-            }
-            Word foreign = foreign(b);
-            if (foreign != null) {
-                host.out().error(Code.E162_CONTOUR_WORD, foreign.span(), call.name(), line, foreign);
-                ok = false;
-                continue;
-            }
-            Diagnostics found = new Diagnostics();
-            Checker.Dry dry = host.dry(b, s, found);
-            host.reportAside(found);
-            if (dry == null) {
-                ok = false;
-                continue;
-            }
-            s = dry.next();
-            for (Motion m : dry.block().motions()) {
-                pieces.add(new Contour.Piece(m, b.line()));
-            }
-        }
-        return ok ? pieces : null;
+    private static String key(CycleCall call) {
+        return call.label(Letter.P) + "/" + call.label(Letter.Q);
     }
 
-    /** The first word of a contour block that a contour cannot hold: an M, a T, a G other than a move. */
-    private Word foreign(RawBlock b) {
-        for (Word w : b.words()) {
-            if (w.letter() == Letter.M || w.letter() == Letter.T) {
-                return w;
-            }
-            if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GRole r = role((int) NumberText.integer(w.number()));
-                if (r != null && !r.motion() && r != GRole.NOSE_COMP_CANCEL && r != GRole.NOSE_COMP_LEFT
-                        && r != GRole.NOSE_COMP_RIGHT && r != GRole.CSS && r != GRole.RPM) {
-                    return w;
-                }
-            }
-        }
-        return null;
-    }
-
-    /** The cycle's allowances, depth and retract in counts; null after E156, E157 or E158. */
-    private Roughing.Settings settings(CycleCall call, Axes axes, ModalState start) {
-        Coordinates c = host.coordinates();
-        MachineProfile p = host.profile();
-        Units u = start.units();
-        double[] firstBlock = firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN});
-        double depth;
-        if (call.has(Letter.D)) {
-            depth = call.value(Letter.D);
-            if (depth <= 0) {
-                host.out().error(Code.E156_CYCLE_DEPTH, call.words().get(Letter.D).span(), call.name(),
-                        call.words().get(Letter.D));
-                return null;
-            }
-        } else if (!Double.isNaN(firstBlock[0])) {
-            depth = firstBlock[0];
-        } else {
-            host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
-                    "D, or a " + call.name() + (axes == Axes.TURNING ? " U" : " W") + " R block before it");
-            return null;
-        }
-        double retractMm = Double.isNaN(firstBlock[1]) ? p.control().cycleRetractMm() : firstBlock[1];
-        if (Double.isNaN(retractMm)) {
-            host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
-                    "a " + call.name() + " R block before it, or cycle.retract_mm in the control");
-            return null;
-        }
-        double dx = call.has(Letter.U) ? call.value(Letter.U) * c.perX(u) : 0;
-        double dz = call.has(Letter.W) ? call.value(Letter.W) * c.perZ(u) : 0;
-        double depthCounts = axes == Axes.TURNING ? depth * c.perRadius(u) : depth * c.perZ(u);
-        double perMmDepth = axes == Axes.TURNING ? p.x().countsPerMm() : p.z().countsPerMm();
-        double perMmCut = axes == Axes.TURNING ? p.z().countsPerMm() : p.x().countsPerMm();
-        return new Roughing.Settings(dx, dz, depthCounts, retractMm * perMmDepth, retractMm * perMmCut,
-                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES);
-    }
-
-    /** Reports why a cycle cannot be expanded, where its fault says. */
-    private void report(Fault f, CycleCall call, int line, List<RawBlock> blocks) {
-        List<Object> args = new ArrayList<>();
-        args.add(call.name());
-        Span at = call.g().span();
-        if (f.contourLine() > 0) {
-            args.add(line);
-            for (RawBlock b : blocks) {
-                if (b.line() == f.contourLine()) {
-                    at = b.words().isEmpty() ? b.last() : b.words().get(0).span();
-                    break;
-                }
-            }
-        } else if (f.word() != null) {
-            Word w = call.words().get(f.word());
-            if (w != null) {
-                at = w.span();
-            }
-            args.add(w != null ? w : f.word());
-        }
-        args.addAll(f.args());
-        host.out().error(f.code(), at, args.toArray());
-    }
-
-    /** The moves as blocks at the cycle's line, each checked; stops at the first that fails. */
-    private List<CheckedBlock> write(List<Move> moves, int passes, CycleCall call, int line, ModalState start) {
-        MoveWriter writer = new MoveWriter(frame(start), line, call.g().span());
-        List<CheckedBlock> done = new ArrayList<>();
-        Point at = start.position();
-        for (Move m : moves) {
-            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
-                    call.label(Letter.Q), false);
-            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
-            if (b.isEmpty()) {
-                break;
-            }
-            done.add(b.get());
-            at = host.state().position();
-        }
-        return done;
-    }
-
-    private MoveWriter.Frame frame(ModalState s) {
+    /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
+    static MoveWriter.Frame frame(Checker host, ModalState s) {
         Coordinates c = host.coordinates();
         Units u = s.units();
         List<String> codes = new ArrayList<>(4);
@@ -402,49 +266,4 @@ final class CycleExpansion {
         return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
     }
 
-    private static String key(CycleCall call) {
-        return call.label(Letter.P) + "/" + call.label(Letter.Q);
-    }
-
-    /**
-     * G70: the stored contour's blocks followed again as ordinary blocks (their F and S apply),
-     * then a rapid return to the start point, first along the axis that leaves the part.
-     */
-    private List<CheckedBlock> finish(CycleCall call, int line) {
-        Stored s = stored.get(key(call));
-        if (s == null) {
-            host.out().error(Code.E166_FINISH_WITHOUT_CONTOUR, call.g().span(), call.name(), call.label(Letter.P),
-                    call.label(Letter.Q));
-            return List.of();
-        }
-        ModalState start = host.state();
-        Point a = start.position();
-        CycleOrigin origin = new CycleOrigin(call.name(), 1, 1, line, call.label(Letter.P), call.label(Letter.Q), true);
-        List<CheckedBlock> done = new ArrayList<>();
-        for (RawBlock b : s.blocks()) {
-            Optional<CheckedBlock> r = host.one(b, false, origin);
-            if (r.isEmpty()) {
-                return done;
-            }
-            done.add(r.get());
-        }
-        Point at = host.state().position();
-        Axes ax = s.axes();
-        boolean endsOutside = (ax.depth(at) - ax.depth(a)) * s.depthSign() >= 0;
-        Point corner = endsOutside ? ax.point(ax.depth(at), ax.cut(a)) : ax.point(ax.depth(a), ax.cut(at));
-        MoveWriter writer = new MoveWriter(frame(host.state()), line, call.g().span());
-        CycleOrigin back = new CycleOrigin(call.name(), 1, 1, line, call.label(Letter.P), call.label(Letter.Q), false);
-        for (Point to : new Point[] {corner, a}) {
-            if (to.distanceTo(at) <= 1e-9) {
-                continue;
-            }
-            Optional<CheckedBlock> r = host.one(writer.block(Move.line(true, to, 1), at), false, back);
-            if (r.isEmpty()) {
-                break;
-            }
-            done.add(r.get());
-            at = host.state().position();
-        }
-        return done;
-    }
 }
