@@ -164,6 +164,10 @@ public final class Checker {
         if (cycle != null) {
             return cycles.start(b, cycle, isFirst);
         }
+        if (cycles.repeats(b)) {
+            return cycles.repeat(b, isFirst);
+        }
+        cycles.note(b);
         return one(b, isFirst, null).map(List::of).orElse(List.of());
     }
 
@@ -279,7 +283,7 @@ public final class Checker {
                 causes.put(diag.code(), new Cause(diag));
             }
             out.report(diag);
-            if (origin != null && diag.severity() != Severity.NOTE) {
+            if (origin != null && origin.noted() && diag.severity() != Severity.NOTE) {
                 out.report(origin.note(diag.span()));
             }
         }

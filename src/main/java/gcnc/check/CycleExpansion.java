@@ -39,6 +39,7 @@ final class CycleExpansion {
 
     private final Checker host;
     private final ContourReader contours;
+    private final SingleCycle single;
     /** The cycle whose contour is being read, with the blocks read so far; null when none. */
     private Pending pending;
     /** Depth (program units, a radius for G71) and retract (mm) of a Fanuc first block, per cycle. */
@@ -65,6 +66,7 @@ final class CycleExpansion {
     CycleExpansion(Checker host) {
         this.host = host;
         this.contours = new ContourReader(host, this::role);
+        this.single = new SingleCycle(host);
     }
 
     boolean reading() {
@@ -76,7 +78,7 @@ final class CycleExpansion {
         for (Word w : b.words()) {
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
                 GRole r = role((int) NumberText.integer(w.number()));
-                if (r != null && r.contourCycle()) {
+                if (r != null && (r.contourCycle() || r.singleCycle())) {
                     return w;
                 }
             }
@@ -89,9 +91,27 @@ final class CycleExpansion {
         return f == null ? null : f.role();
     }
 
+    /** Whether the block makes the G90/G94 in force again (X or Z, no G of its group). */
+    boolean repeats(RawBlock b) {
+        return single.repeats(b);
+    }
+
+    List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
+        return single.run(b, null, isFirst);
+    }
+
+    /** An ordinary block: a G of the G90/G94's group ends it. */
+    void note(RawBlock b) {
+        single.note(b);
+    }
+
     /** A cycle block: its other words first, as a block of their own; then what the cycle does. */
     List<CheckedBlock> start(RawBlock b, Word g, boolean isFirst) {
         GRole kind = role((int) NumberText.integer(g.number()));
+        if (kind.singleCycle()) {
+            return single.run(b, g, isFirst);
+        }
+        single.note(b);
         Units units = host.state().units();
         MachineProfile p = host.profile();
         double noPoint = units == Units.INCH ? p.noPointInch() : p.noPointMm();

@@ -15,6 +15,16 @@ import java.util.List;
  */
 record CycleOrigin(String cycle, int pass, int passes, int cycleLine, long p, long q, boolean again) {
 
+    /** A G90/G94 single-pass cycle: one pass, no contour; its findings are on its own block already. */
+    static CycleOrigin single(String cycle, int line) {
+        return new CycleOrigin(cycle, 1, 1, line, -1, -1, false);
+    }
+
+    /** Whether a finding in the block gets the note: not for a single-pass cycle (p < 0). */
+    boolean noted() {
+        return p >= 0;
+    }
+
     /** The note after each finding in the block (E165). */
     Diagnostic note(Span at) {
         return new Diagnostic(Code.E165_CYCLE_PASS, Severity.NOTE, at, List.of(cycle, Integer.toString(pass),

@@ -203,6 +203,8 @@ public enum Code {
     E167_CYCLE_TOO_MANY_PASSES(167),
     /** Checker: a cycle block without its P or Q. */
     E168_CYCLE_P_Q_MISSING(168),
+    /** Checker: a G90/G94 single-pass cycle without its X (or U) or its Z (or W). */
+    E169_SINGLE_CYCLE_END_MISSING(169),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */
