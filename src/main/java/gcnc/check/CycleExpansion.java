@@ -3,13 +3,14 @@ package gcnc.check;
 import gcnc.check.cycle.Axes;
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
+import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
-import gcnc.check.cycle.Roughing;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
+import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
@@ -21,6 +22,7 @@ import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 /**
  * G70, G71 and G72 in the checker's flow (docs/cycles.md). A G71/G72 with P and Q reads its
@@ -166,6 +168,16 @@ final class CycleExpansion {
 
     /** The Fanuc first block: remembers the depth and retract for the next cycle of its kind. */
     private void first(CycleCall call) {
+        if (call.kind() == GRole.PATTERN_CYCLE) {
+            double[] old = firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN, Double.NaN});
+            double passes = call.has(Letter.R) ? PatternRepeat.passes(host, call, Letter.R) : old[2];
+            if (Double.isNaN(passes) && call.has(Letter.R)) {
+                return;
+            }
+            firstBlocks.put(call.kind(), new double[] {call.has(Letter.U) ? call.value(Letter.U) : old[0],
+                call.has(Letter.W) ? call.value(Letter.W) : old[1], passes});
+            return;
+        }
         Letter depth = call.kind() == GRole.FACING_CYCLE ? Letter.W : Letter.U;
         double d = Double.NaN;
         if (call.has(depth)) {
@@ -259,16 +271,20 @@ final class CycleExpansion {
         if (pieces == null || p.broken()[0]) {
             return List.of();
         }
-        StockRemoval cycle = new StockRemoval(host, call, p.line());
+        Axes axes = call.kind() == GRole.FACING_CYCLE ? Axes.FACING : Axes.TURNING;
         if (pieces.size() < 2) {
-            host.out().error(Code.E163_CONTOUR_EMPTY, call.g().span(), call.name(), cycle.axes().cutName());
+            host.out().error(Code.E163_CONTOUR_EMPTY, call.g().span(), call.name(),
+                    call.kind() == GRole.PATTERN_CYCLE ? "X or Z" : axes.cutName());
             return List.of();
         }
         Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
         stored.remove(key(call));
-        stored.put(key(call), new Stored(List.copyOf(p.blocks()), cycle.axes(), signs(cycle.axes(), contour)));
-        return cycle.expand(contour, p.blocks(), start,
-                firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN}));
+        stored.put(key(call), new Stored(List.copyOf(p.blocks()), axes, signs(axes, contour)));
+        double[] firstBlock = firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN, Double.NaN});
+        if (call.kind() == GRole.PATTERN_CYCLE) {
+            return new PatternRepeat(host, call, p.line()).expand(contour, start, firstBlock);
+        }
+        return new StockRemoval(host, call, p.line()).expand(contour, p.blocks(), start, firstBlock);
     }
 
     private static String key(CycleCall call) {
@@ -286,4 +302,22 @@ final class CycleExpansion {
         return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
     }
 
+    /** The moves as blocks at the cycle's line, each checked; stops at the first that fails. */
+    static List<CheckedBlock> write(Checker host, CycleCall call, int line, List<Move> moves, int passes,
+                                    ModalState start) {
+        MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
+        List<CheckedBlock> done = new ArrayList<>();
+        Point at = start.position();
+        for (Move m : moves) {
+            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
+                    call.label(Letter.Q), false);
+            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
+            if (b.isEmpty()) {
+                break;
+            }
+            done.add(b.get());
+            at = host.state().position();
+        }
+        return done;
+    }
 }

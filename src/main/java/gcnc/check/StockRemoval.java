@@ -4,7 +4,6 @@ import gcnc.check.cycle.Axes;
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.Fault;
-import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.cycle.Roughing;
 import gcnc.check.geom.Coordinates;
@@ -12,7 +11,6 @@ import gcnc.diag.Code;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
-import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GRole;
@@ -20,7 +18,6 @@ import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Optional;
 
 /**
  * G71 and G72 once their contour is followed: the cycle block's depth, retract and allowances in
@@ -64,7 +61,7 @@ final class StockRemoval {
             return List.of();
         }
         Roughing.Plan plan = (Roughing.Plan) o;
-        return write(plan.moves(), plan.passes(), start);
+        return CycleExpansion.write(host, call, line, plan.moves(), plan.passes(), start);
     }
 
     /** The cycle's allowances, depth and retract in counts; null after E156, E157 or E158. */
@@ -125,23 +122,4 @@ final class StockRemoval {
         args.addAll(f.args());
         host.out().error(f.code(), at, args.toArray());
     }
-
-    /** The moves as blocks at the cycle's line, each checked; stops at the first that fails. */
-    private List<CheckedBlock> write(List<Move> moves, int passes, ModalState start) {
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, call.g().span());
-        List<CheckedBlock> done = new ArrayList<>();
-        Point at = start.position();
-        for (Move m : moves) {
-            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
-                    call.label(Letter.Q), false);
-            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
-            if (b.isEmpty()) {
-                break;
-            }
-            done.add(b.get());
-            at = host.state().position();
-        }
-        return done;
-    }
-
 }

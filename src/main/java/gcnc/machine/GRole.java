@@ -17,10 +17,11 @@ public enum GRole {
     NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
     REGISTER_AND_CLAMP(50), MACHINE_COORDINATES(53),
     /**
-     * G70 finishing along a contour, G71 stock removal in turning, G72 stock removal in facing:
+     * G70 finishing along a contour, G71 stock removal in turning, G72 stock removal in facing,
+     * G73 pattern repeat:
      * expanded by the checker into ordinary moves (gcnc.check.cycle, docs/cycles.md).
      */
-    FINISHING_CYCLE(70), TURNING_CYCLE(71), FACING_CYCLE(72),
+    FINISHING_CYCLE(70), TURNING_CYCLE(71), FACING_CYCLE(72), PATTERN_CYCLE(73),
     /**
      * The single-pass cycles of group 1: turning along Z (Fanuc A and Haas G90, Fanuc B G77) and
      * facing along X (G94, Fanuc B G79), modal: a later block with X or Z makes the cycle again.
@@ -52,9 +53,9 @@ public enum GRole {
         return this == TURNING_SINGLE_CYCLE || this == FACING_SINGLE_CYCLE;
     }
 
-    /** G70, G71 or G72: a cycle the checker expands into moves along a contour. */
+    /** G70, G71, G72 or G73: a cycle the checker expands into moves along a contour. */
     public boolean contourCycle() {
-        return this == FINISHING_CYCLE || this == TURNING_CYCLE || this == FACING_CYCLE;
+        return this == FINISHING_CYCLE || this == TURNING_CYCLE || this == FACING_CYCLE || this == PATTERN_CYCLE;
     }
 
     public boolean motion() {

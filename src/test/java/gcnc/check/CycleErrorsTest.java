@@ -125,4 +125,13 @@ class CycleErrorsTest {
     void e168AContourWithoutItsLastLabel() {
         assertEquals("5:1:E168", fanuc("G71 P10 D2. F0.25\n" + CONTOUR + "M30\n"));
     }
+
+    @Test
+    void aPatternRepeatNeedsAWholeNumberOfPasses() {
+        String contour = "N10 G00 X20. Z2.\nG01 Z-15.\nN20 X48.\nM30\n";
+        assertEquals("", fanuc("G73 U4. W1. R3\nG73 P10 Q20 U0.4 W0.1 F0.25\n" + contour));
+        assertEquals("5:1:E157", fanuc("G73 P10 Q20 U0.4 W0.1 F0.25\n" + contour));
+        assertEquals("5:31:E008", fanuc("G73 P10 Q20 U0.4 W0.1 I4. K1. D0 F0.25\n" + contour));
+        assertEquals("5:13:E013", fanuc("G73 U4. W1. R2.5\nM30\n"));
+    }
 }

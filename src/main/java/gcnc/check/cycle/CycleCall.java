@@ -20,6 +20,8 @@ import java.util.function.IntFunction;
  *     R(retract)}; second block {@code G71 P Q U(X allowance, diameter) W(Z allowance) F S};</li>
  * <li>Haas one-block form: {@code G71 P Q U W D(depth) F} (R1, type II, and the rough allowances I
  *     and K are E164);</li>
+ * <li>G73 pattern repeat: Fanuc {@code G73 U(X relief, radius) W(Z relief) R(passes)} then
+ *     {@code G73 P Q U W F}; Haas {@code G73 P Q U W I(X relief) K(Z relief) D(passes) F};</li>
  * <li>{@code G70 P Q} (F and S allowed, as Haas programs write them).</li>
  * </ul>
  * Words of other functions (N, F, S, T, M, G codes of other groups) are handed on to a block of
@@ -131,13 +133,16 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
             return false;
         }
         Letter depth = kind == GRole.FACING_CYCLE ? Letter.W : Letter.U;
+        boolean pattern = kind == GRole.PATTERN_CYCLE;
         for (Word w : words.values().stream().sorted(java.util.Comparator.comparing(Word::span)).toList()) {
             Letter l = w.letter();
             boolean ok;
             if (kind == GRole.FINISHING_CYCLE) {
                 ok = l == Letter.P || l == Letter.Q;
             } else if (firstOfTwo()) {
-                ok = l == depth || l == Letter.R;
+                ok = l == depth || l == Letter.R || pattern && (l == Letter.U || l == Letter.W);
+            } else if (pattern) {
+                ok = l != Letter.R;
             } else if (l == Letter.I || l == Letter.K || l == Letter.R && NumberText.decimal(w.number()) == 1) {
                 out.error(Code.E164_CYCLE_OPTION_NOT_SUPPORTED, w.span(), name(), w);
                 return false;

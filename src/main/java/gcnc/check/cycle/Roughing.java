@@ -207,25 +207,38 @@ public final class Roughing {
             at = add(out, at, Move.line(true, axes.point(away, axes.cut(a)), pass));
         }
         at = add(out, at, Move.line(rapidIn, shapeStart, passes));
-        for (Contour.Piece p : moved) {
-            if (p.motion() instanceof Motion.Arc arc) {
-                at = add(out, at, new Move(arc.clockwise() ? Move.Kind.ARC_CW : Move.Kind.ARC_CCW, arc.to(),
-                        arc.centre(), passes));
-            } else {
-                at = add(out, at, Move.line(p.rapid(), p.to(), passes));
-            }
-        }
-        // back to the start point, first along the axis that leaves the part: out along the depth
-        // axis when the contour ends inside the start's level, else back along the cutting axis
-        boolean endsOutside = (axes.depth(at) - axes.depth(a)) * depthSign >= 0;
-        Point corner = endsOutside ? axes.point(axes.depth(at), axes.cut(a)) : axes.point(axes.depth(a), axes.cut(at));
-        at = add(out, at, Move.line(true, corner, passes));
-        add(out, at, Move.line(true, a, passes));
+        at = follow(out, at, moved, passes);
+        back(out, at, a, axes, depthSign, passes);
         return out;
     }
 
+    /** The moved contour's pieces as moves of {@code pass}, each as its block wrote it; where the tool ends. */
+    static Point follow(List<Move> out, Point at, List<Contour.Piece> moved, int pass) {
+        for (Contour.Piece p : moved) {
+            if (p.motion() instanceof Motion.Arc arc) {
+                at = add(out, at, new Move(arc.clockwise() ? Move.Kind.ARC_CW : Move.Kind.ARC_CCW, arc.to(),
+                        arc.centre(), pass));
+            } else {
+                at = add(out, at, Move.line(p.rapid(), p.to(), pass));
+            }
+        }
+        return at;
+    }
+
+    /**
+     * Back to the start point {@code a} by rapid, first along the axis that leaves the part: out
+     * along the depth axis when the tool is inside the start's level, else back along the cutting
+     * axis; then the other.
+     */
+    static void back(List<Move> out, Point at, Point a, Axes axes, int depthSign, int pass) {
+        boolean endsOutside = (axes.depth(at) - axes.depth(a)) * depthSign >= 0;
+        Point corner = endsOutside ? axes.point(axes.depth(at), axes.cut(a)) : axes.point(axes.depth(a), axes.cut(at));
+        at = add(out, at, Move.line(true, corner, pass));
+        add(out, at, Move.line(true, a, pass));
+    }
+
     /** Adds a move unless it goes nowhere (a line of zero length); returns where the tool is. */
-    private Point add(List<Move> out, Point at, Move m) {
+    static Point add(List<Move> out, Point at, Move m) {
         if (m.kind() != Move.Kind.ARC_CW && m.kind() != Move.Kind.ARC_CCW && m.to().distanceTo(at) <= 1e-9) {
             return at;
         }
