@@ -67,7 +67,7 @@ public final class Checker {
     private Checker other;
     private final boolean isOther;
     private ModalState state;
-    /** G70/G71/G72: the contour read ahead, the stored contours, the expansion. */
+    /** The cycles (G70-G73, G90/G94): the contour read ahead, the stored contours, the expansion. */
     private final CycleExpansion cycles;
     /** Findings of contour blocks read ahead, so that following them again (G70) does not repeat them. */
     private final Set<String> aside = new HashSet<>();
@@ -115,7 +115,8 @@ public final class Checker {
 
     /**
      * Checks the next block as the program gives it. Usually one checked block or none; none while
-     * a G71/G72's contour is being read ahead, and the whole expanded cycle at its last block.
+     * a G71/G72/G73's contour is being read ahead, and the whole expanded cycle at its last block;
+     * a G90/G94 block gives its moves.
      */
     public List<CheckedBlock> check(RawBlock b) {
         if (stopped) {

@@ -48,7 +48,10 @@ final class SingleCycle {
         return n < 0 || n > 999 ? null : host.functions().g((int) n);
     }
 
-    /** Whether the block makes the cycle in force again: an axis word and no G of its group. */
+    /**
+     * Whether the block makes the cycle in force again: an axis word, no G of its group and no
+     * one-shot G (whose words those are: G04 U1., G28 U0, G50 X).
+     */
     boolean repeats(RawBlock b) {
         if (kind == null) {
             return false;
@@ -56,7 +59,7 @@ final class SingleCycle {
         boolean axis = false;
         for (Word w : b.words()) {
             GFunction f = function(w);
-            if (f != null && f.group() == group) {
+            if (f != null && (f.group() == group || f.group() == 0)) {
                 return false;
             }
             axis |= w.letter() == Letter.X || w.letter() == Letter.U || w.letter() == Letter.Z || w.letter() == Letter.W;

@@ -104,6 +104,22 @@ class CycleExpansionTest {
     }
 
     @org.junit.jupiter.api.Test
+    void aG90InForceCutsAgainForAnAxisWordButNotForAOneShotGsWords() {
+        Run r = Run.of("fanuc", "S500 M03\nG00 X42. Z2.\nG90 X39. Z-20. F0.2\nX36.\nG04 U1.\nG00 X50.\nX60.\nM30\n");
+        assertEquals("", r.errors());
+        List<String> moves = new ArrayList<>();
+        for (CheckedBlock b : r.blocks) {
+            for (Motion m : b.motions()) {
+                moves.add(b.line() + " " + motion(m, b.frame()));
+            }
+        }
+        assertEquals(List.of("2 G00 X42.0000 Z2.0000",
+                "3 G00 X39.0000 Z2.0000", "3 G01 X39.0000 Z-20.0000", "3 G01 X42.0000 Z-20.0000", "3 G00 X42.0000 Z2.0000",
+                "4 G00 X36.0000 Z2.0000", "4 G01 X36.0000 Z-20.0000", "4 G01 X42.0000 Z-20.0000", "4 G00 X42.0000 Z2.0000",
+                "5 G04 1.0 s", "6 G00 X50.0000 Z2.0000", "7 G00 X60.0000 Z2.0000"), moves);
+    }
+
+    @org.junit.jupiter.api.Test
     void underG91TheCycleMakesTheSameMovesAsUnderG90() throws Exception {
         gcnc.machine.MachineProfile b = gcnc.machine.ProfileLoader.load("fanuc", gcnc.tables.TableSource.builtIn(),
                 Run.TABLES, "fanuc-b");
