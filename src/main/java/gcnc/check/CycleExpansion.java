@@ -302,7 +302,11 @@ final class CycleExpansion {
         return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
     }
 
-    /** The moves as blocks at the cycle's line, each checked; stops at the first that fails. */
+    /**
+     * The moves as blocks at the cycle's line, each checked. After the first that fails the cycle
+     * is not followed further: a rapid back to the start point ends it, so that the blocks after
+     * the cycle are judged from where the cycle leaves the tool (one finding, not one per pass).
+     */
     static List<CheckedBlock> write(Checker host, CycleCall call, int line, List<Move> moves, int passes,
                                     ModalState start) {
         MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
@@ -313,11 +317,21 @@ final class CycleExpansion {
                     call.label(Letter.Q), false);
             Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
             if (b.isEmpty()) {
+                abandon(host, writer, start.position(), origin).ifPresent(done::add);
                 break;
             }
             done.add(b.get());
             at = host.state().position();
         }
         return done;
+    }
+
+    /** After a move of a cycle failed: a rapid from where the checker left the tool to the cycle's end point. */
+    static Optional<CheckedBlock> abandon(Checker host, MoveWriter writer, Point end, CycleOrigin origin) {
+        Point at = host.state().position();
+        if (at.distanceTo(end) <= 1e-9) {
+            return Optional.empty();
+        }
+        return host.one(writer.block(Move.line(true, end, origin.pass()), at), false, origin);
     }
 }

@@ -4,6 +4,7 @@ import gcnc.check.cycle.Axes;
 import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
+import gcnc.check.cycle.Roughing;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
@@ -33,24 +34,16 @@ final class Finishing {
         Point a = start.position();
         CycleOrigin origin = new CycleOrigin(call.name(), 1, 1, line, call.label(Letter.P), call.label(Letter.Q), true);
         List<CheckedBlock> done = new ArrayList<>();
+        // as the blocks would be checked where they stand: a block with an error is reported and the
+        // checker goes on from the state it keeps (a G41/G42 block is followed without it)
         for (RawBlock b : blocks) {
-            Optional<CheckedBlock> r = host.one(b, false, origin);
-            if (r.isEmpty()) {
-                return done;
-            }
-            done.add(r.get());
+            host.one(b, false, origin).ifPresent(done::add);
         }
         Point at = host.state().position();
-        Axes ax = axes;
-        boolean endsOutside = (ax.depth(at) - ax.depth(a)) * depthSign >= 0;
-        Point corner = endsOutside ? ax.point(ax.depth(at), ax.cut(a)) : ax.point(ax.depth(a), ax.cut(at));
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, host.state()), line, call.g().span());
         CycleOrigin back = new CycleOrigin(call.name(), 1, 1, line, call.label(Letter.P), call.label(Letter.Q), false);
-        for (Point to : new Point[] {corner, a}) {
-            if (to.distanceTo(at) <= 1e-9) {
-                continue;
-            }
-            Optional<CheckedBlock> r = host.one(writer.block(Move.line(true, to, 1), at), false, back);
+        for (Move m : Roughing.back(at, a, axes, depthSign, 1)) {
+            Optional<CheckedBlock> r = host.one(writer.block(m, at), false, back);
             if (r.isEmpty()) {
                 break;
             }

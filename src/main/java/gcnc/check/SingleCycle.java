@@ -175,7 +175,7 @@ final class SingleCycle {
         return dry == null ? null : dry.block().end();
     }
 
-    /** The cycle's four moves from the start, written and checked; stops at the first that fails. */
+    /** The cycle's four moves from the start, written and checked; after one fails, back to the start. */
     private List<CheckedBlock> moves(List<CheckedBlock> done, ModalState start, Word at, int line) {
         Point a = start.position();
         Point[] path;
@@ -194,6 +194,7 @@ final class SingleCycle {
             }
             Optional<CheckedBlock> r = host.one(writer.block(Move.line(rapid[i], path[i], 1), from), false, origin);
             if (r.isEmpty()) {
+                CycleExpansion.abandon(host, writer, a, origin).ifPresent(done::add);
                 break;
             }
             done.add(r.get());

@@ -109,6 +109,9 @@ class CycleErrorsTest {
         String program = "G21 G99\nT0101\nG97 S1000\nG00 X52. Z2.\nG71 P10 Q20 D2. F0.25\n" + CONTOUR + "M30\n";
         assertEquals("5:1:E051, 5:1:E165", Run.of("fanuc", program).errors());
         assertEquals("[G71, 1, 8, 5, 10, 20]", Run.of("fanuc", program).diagnostics.sorted().get(1).args().toString());
+        // the cycle is not followed past the pass that failed: the tool goes back to the start point
+        Run r = Run.of("fanuc", program);
+        assertEquals(r.line(4).end(), r.checker.state().position());
     }
 
     @Test

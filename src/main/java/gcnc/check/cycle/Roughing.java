@@ -228,8 +228,14 @@ public final class Roughing {
     /**
      * Back to the start point {@code a} by rapid, first along the axis that leaves the part: out
      * along the depth axis when the tool is inside the start's level, else back along the cutting
-     * axis; then the other.
+     * axis; then the other (moves of zero length left out).
      */
+    public static List<Move> back(Point at, Point a, Axes axes, int depthSign, int pass) {
+        List<Move> out = new ArrayList<>(2);
+        back(out, at, a, axes, depthSign, pass);
+        return out;
+    }
+
     static void back(List<Move> out, Point at, Point a, Axes axes, int depthSign, int pass) {
         boolean endsOutside = (axes.depth(at) - axes.depth(a)) * depthSign >= 0;
         Point corner = endsOutside ? axes.point(axes.depth(at), axes.cut(a)) : axes.point(axes.depth(a), axes.cut(at));
