@@ -3,6 +3,7 @@ package gcnc.check;
 import gcnc.check.cycle.Axes;
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
+import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.geom.Coordinates;
@@ -44,8 +45,8 @@ final class CycleExpansion {
     private final SingleCycle single;
     /** The cycle whose contour is being read, with the blocks read so far; null when none. */
     private Pending pending;
-    /** Depth (program units, a radius for G71) and retract (mm) of a Fanuc first block, per cycle. */
-    private final Map<GRole, double[]> firstBlocks = new EnumMap<>(GRole.class);
+    /** What the Fanuc first blocks left in force, per cycle. */
+    private final Map<GRole, FirstBlock> firstBlocks = new EnumMap<>(GRole.class);
     private final Map<String, Stored> stored = new LinkedHashMap<>(16, 0.75f, false) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<String, Stored> eldest) {
@@ -53,7 +54,17 @@ final class CycleExpansion {
         }
     };
 
-    private record Pending(CycleCall call, int line, List<RawBlock> blocks, boolean[] broken) {
+    /** A G71/G72/G73 whose contour is being read: the blocks so far, and whether one of them broke it. */
+    private static final class Pending {
+        final CycleCall call;
+        final int line;
+        final List<RawBlock> blocks = new ArrayList<>();
+        boolean broken;
+
+        Pending(CycleCall call, int line) {
+            this.call = call;
+            this.line = line;
+        }
     }
 
     /** A contour kept for G70: its blocks and how the cycle that read it cut. */
@@ -138,7 +149,7 @@ final class CycleExpansion {
                 done.addAll(new Finishing(host).expand(call, b.line(), s.blocks(), s.axes(), s.depthSign()));
             }
         } else {
-            pending = new Pending(call, b.line(), new ArrayList<>(), new boolean[1]);
+            pending = new Pending(call, b.line());
         }
         return done;
     }
@@ -166,63 +177,60 @@ final class CycleExpansion {
         return kept;
     }
 
-    /** The Fanuc first block: remembers the depth and retract for the next cycle of its kind. */
+    /**
+     * The Fanuc first block: its depth and retract (G71, G72) or relief and passes (G73) stay in
+     * force for the next cycles of its kind; E156, E158 or the passes' errors otherwise.
+     */
     private void first(CycleCall call) {
+        double nan = Double.NaN;
+        FirstBlock said;
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            double[] old = firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN, Double.NaN});
-            double passes = call.has(Letter.R) ? PatternRepeat.passes(host, call, Letter.R) : old[2];
+            double passes = call.has(Letter.R) ? PatternRepeat.passes(host, call, Letter.R) : nan;
             if (Double.isNaN(passes) && call.has(Letter.R)) {
                 return;
             }
-            firstBlocks.put(call.kind(), new double[] {call.has(Letter.U) ? call.value(Letter.U) : old[0],
-                call.has(Letter.W) ? call.value(Letter.W) : old[1], passes});
-            return;
-        }
-        Letter depth = call.kind() == GRole.FACING_CYCLE ? Letter.W : Letter.U;
-        double d = Double.NaN;
-        if (call.has(depth)) {
-            d = call.value(depth);
+            said = new FirstBlock(nan, nan, call.has(Letter.U) ? call.value(Letter.U) : nan,
+                    call.has(Letter.W) ? call.value(Letter.W) : nan, passes);
+        } else {
+            Letter depth = call.kind() == GRole.FACING_CYCLE ? Letter.W : Letter.U;
+            double d = call.has(depth) ? call.value(depth) : nan;
             if (d <= 0) {
                 host.out().error(Code.E156_CYCLE_DEPTH, call.words().get(depth).span(), call.name(),
                         call.words().get(depth));
                 return;
             }
-        }
-        double r = Double.NaN;
-        if (call.has(Letter.R)) {
-            r = call.value(Letter.R);
+            double r = call.has(Letter.R) ? call.value(Letter.R) : nan;
             if (r < 0) {
                 host.out().error(Code.E158_CYCLE_RETRACT, call.words().get(Letter.R).span(), call.name(),
                         call.words().get(Letter.R));
                 return;
             }
-            r *= host.state().units() == Units.INCH ? 25.4 : 1;
+            said = new FirstBlock(d, r * (host.state().units() == Units.INCH ? 25.4 : 1), nan, nan, nan);
         }
-        double[] old = firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN});
-        firstBlocks.put(call.kind(), new double[] {Double.isNaN(d) ? old[0] : d, Double.isNaN(r) ? old[1] : r});
+        firstBlocks.merge(call.kind(), said, FirstBlock::then);
     }
 
     /** The next block while a contour is read: kept aside; the cycle at its last block. */
     List<CheckedBlock> read(RawBlock b) {
         Pending p = pending;
-        p.blocks().add(b);
+        p.blocks.add(b);
         long n = sequence(b);
-        long first = p.call().label(Letter.P);
-        long last = p.call().label(Letter.Q);
-        if (p.blocks().size() == 1 && n != first) {
-            host.out().error(Code.E152_CONTOUR_NOT_NEXT, p.call().words().get(Letter.P).span(), p.call().name(), first);
+        long first = p.call.label(Letter.P);
+        long last = p.call.label(Letter.Q);
+        if (p.blocks.size() == 1 && n != first) {
+            host.out().error(Code.E152_CONTOUR_NOT_NEXT, p.call.words().get(Letter.P).span(), p.call.name(), first);
             return replay();
         }
-        if (p.blocks().size() > 1 && n == first) {
-            host.out().error(Code.E151_CYCLE_LABEL_TWICE, nWord(b).span(), p.call().name(), p.line(), n);
-            p.broken()[0] = true;
+        if (p.blocks.size() > 1 && n == first) {
+            host.out().error(Code.E151_CYCLE_LABEL_TWICE, nWord(b).span(), p.call.name(), p.line, n);
+            p.broken = true;
         }
         if (n == last) {
             pending = null;
             return roughing(p);
         }
-        if (p.blocks().size() >= LOOK_AHEAD) {
-            host.out().error(Code.E153_CONTOUR_TOO_LONG, p.call().words().get(Letter.Q).span(), p.call().name(), last,
+        if (p.blocks.size() >= LOOK_AHEAD) {
+            host.out().error(Code.E153_CONTOUR_TOO_LONG, p.call.words().get(Letter.Q).span(), p.call.name(), last,
                     LOOK_AHEAD);
             return replay();
         }
@@ -232,15 +240,15 @@ final class CycleExpansion {
     /** The program ended while a contour was read: E150, and the blocks read are checked as they stand. */
     void finish() {
         if (pending != null) {
-            Word q = pending.call().words().get(Letter.Q);
-            host.out().error(Code.E150_CYCLE_LABEL_NOT_FOUND, q.span(), pending.call().name(), q);
+            Word q = pending.call.words().get(Letter.Q);
+            host.out().error(Code.E150_CYCLE_LABEL_NOT_FOUND, q.span(), pending.call.name(), q);
             replay();
         }
     }
 
     /** Gives up reading a contour: its blocks go back into the program's flow. */
     private List<CheckedBlock> replay() {
-        List<RawBlock> blocks = pending.blocks();
+        List<RawBlock> blocks = pending.blocks;
         pending = null;
         List<CheckedBlock> done = new ArrayList<>();
         for (RawBlock b : blocks) {
@@ -265,10 +273,10 @@ final class CycleExpansion {
 
     /** G71/G72 once its contour is read: the contour followed, the passes planned, written and checked. */
     private List<CheckedBlock> roughing(Pending p) {
-        CycleCall call = p.call();
+        CycleCall call = p.call;
         ModalState start = host.state();
-        List<Contour.Piece> pieces = contours.follow(call, p.line(), p.blocks(), start);
-        if (pieces == null || p.broken()[0]) {
+        List<Contour.Piece> pieces = contours.follow(call, p.line, p.blocks, start);
+        if (pieces == null || p.broken) {
             return List.of();
         }
         Axes axes = call.kind() == GRole.FACING_CYCLE ? Axes.FACING : Axes.TURNING;
@@ -279,12 +287,12 @@ final class CycleExpansion {
         }
         Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
         stored.remove(key(call));
-        stored.put(key(call), new Stored(List.copyOf(p.blocks()), axes, signs(axes, contour)));
-        double[] firstBlock = firstBlocks.getOrDefault(call.kind(), new double[] {Double.NaN, Double.NaN, Double.NaN});
+        stored.put(key(call), new Stored(List.copyOf(p.blocks), axes, signs(axes, contour)));
+        FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            return new PatternRepeat(host, call, p.line()).expand(contour, start, firstBlock);
+            return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
         }
-        return new StockRemoval(host, call, p.line()).expand(contour, p.blocks(), start, firstBlock);
+        return new StockRemoval(host, call, p.line).expand(contour, p.blocks, start, firstBlock);
     }
 
     private static String key(CycleCall call) {

@@ -2,6 +2,7 @@ package gcnc.check;
 
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
+import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Pattern;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
@@ -44,15 +45,16 @@ final class PatternRepeat {
             return Double.NaN;
         }
         if (v > StockRemoval.MAX_PASSES) {
-            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, w.span(), call.name(), w, (long) v, StockRemoval.MAX_PASSES);
+            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, w.span(), call.name(), w, (long) v,
+                    StockRemoval.MAX_PASSES);
             return Double.NaN;
         }
         return v;
     }
 
-    /** The cycle's checked blocks; none after a finding. {@code firstBlock}: relief X, Z and passes, NaN where none. */
-    List<CheckedBlock> expand(Contour contour, ModalState start, double[] firstBlock) {
-        double n = call.has(Letter.D) ? passes(host, call, Letter.D) : firstBlock[2];
+    /** The cycle's checked blocks; none after a finding. {@code firstBlock}: what a Fanuc first block left in force. */
+    List<CheckedBlock> expand(Contour contour, ModalState start, FirstBlock firstBlock) {
+        double n = call.has(Letter.D) ? passes(host, call, Letter.D) : firstBlock.passes();
         if (Double.isNaN(n)) {
             if (!call.has(Letter.D)) {
                 host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
@@ -62,12 +64,16 @@ final class PatternRepeat {
         }
         Coordinates c = host.coordinates();
         Units u = start.units();
-        double reliefX = call.has(Letter.I) ? call.value(Letter.I) : Double.isNaN(firstBlock[0]) ? 0 : firstBlock[0];
-        double reliefZ = call.has(Letter.K) ? call.value(Letter.K) : Double.isNaN(firstBlock[1]) ? 0 : firstBlock[1];
+        double reliefX = call.has(Letter.I) ? call.value(Letter.I) : zeroIfNone(firstBlock.reliefX());
+        double reliefZ = call.has(Letter.K) ? call.value(Letter.K) : zeroIfNone(firstBlock.reliefZ());
         double ux = call.has(Letter.U) ? call.value(Letter.U) * c.perX(u) : 0;
         double wz = call.has(Letter.W) ? call.value(Letter.W) * c.perZ(u) : 0;
         int passes = (int) n;
         return CycleExpansion.write(host, call, line,
                 Pattern.moves(contour, ux, wz, reliefX * c.perRadius(u), reliefZ * c.perZ(u), passes), passes, start);
+    }
+
+    private static double zeroIfNone(double v) {
+        return Double.isNaN(v) ? 0 : v;
     }
 }

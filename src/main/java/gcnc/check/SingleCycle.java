@@ -2,6 +2,7 @@ package gcnc.check;
 
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
+import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
@@ -62,7 +63,8 @@ final class SingleCycle {
             if (f != null && (f.group() == group || f.group() == 0)) {
                 return false;
             }
-            axis |= w.letter() == Letter.X || w.letter() == Letter.U || w.letter() == Letter.Z || w.letter() == Letter.W;
+            Letter l = w.letter();
+            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
         }
         return axis;
     }
@@ -153,7 +155,8 @@ final class SingleCycle {
             if (!NumberText.hasPoint(taperGiven.number())) {
                 v *= u == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
             }
-            taper = v * (kind == GRole.TURNING_SINGLE_CYCLE ? host.coordinates().perRadius(u) : host.coordinates().perZ(u));
+            Coordinates c = host.coordinates();
+            taper = v * (kind == GRole.TURNING_SINGLE_CYCLE ? c.perRadius(u) : c.perZ(u));
         }
         return moves(done, start, at, b.line());
     }

@@ -3,6 +3,7 @@ package gcnc.check;
 import gcnc.check.cycle.Axes;
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
+import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Fault;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.cycle.Roughing;
@@ -48,9 +49,9 @@ final class StockRemoval {
 
     /**
      * The cycle's checked blocks for the contour followed from {@code start}; none after a
-     * finding. {@code firstBlock}: depth and retract (mm) of a Fanuc first block, NaN where none.
+     * finding. {@code firstBlock}: what a Fanuc first block left in force.
      */
-    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, double[] firstBlock) {
+    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock) {
         Roughing.Settings settings = settings(start, firstBlock);
         if (settings == null) {
             return List.of();
@@ -65,7 +66,7 @@ final class StockRemoval {
     }
 
     /** The cycle's allowances, depth and retract in counts; null after E156, E157 or E158. */
-    private Roughing.Settings settings(ModalState start, double[] firstBlock) {
+    private Roughing.Settings settings(ModalState start, FirstBlock firstBlock) {
         Coordinates c = host.coordinates();
         MachineProfile p = host.profile();
         Units u = start.units();
@@ -77,14 +78,15 @@ final class StockRemoval {
                         call.words().get(Letter.D));
                 return null;
             }
-        } else if (!Double.isNaN(firstBlock[0])) {
-            depth = firstBlock[0];
+        } else if (!Double.isNaN(firstBlock.depth())) {
+            depth = firstBlock.depth();
         } else {
             host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
                     "D, or a " + call.name() + (axes == Axes.TURNING ? " U" : " W") + " R block before it");
             return null;
         }
-        double retractMm = Double.isNaN(firstBlock[1]) ? p.control().cycleRetractMm() : firstBlock[1];
+        double retractMm = Double.isNaN(firstBlock.retractMm()) ? p.control().cycleRetractMm()
+                : firstBlock.retractMm();
         if (Double.isNaN(retractMm)) {
             host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
                     "a " + call.name() + " R block before it, or cycle.retract_mm in the control");
