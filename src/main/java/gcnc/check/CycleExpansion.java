@@ -26,16 +26,17 @@ import java.util.Map;
 import java.util.Optional;
 
 /**
- * G70, G71 and G72 in the checker's flow (docs/cycles.md). A G71/G72 with P and Q reads its
+ * The cycles in the checker's flow (docs/cycles.md). A G71/G72/G73 with P and Q reads its
  * contour ahead: the blocks N(P)..N(Q) right after it, at most {@link #LOOK_AHEAD} of them, are
  * taken out of the flow (the control skips them after the cycle) and followed from the cycle's
  * start without changing the program's state ({@link ContourReader}). {@link StockRemoval} then
  * plans the passes, writes them as blocks and checks each like any other, with its origin. A G70
- * follows the stored contour of an earlier G71/G72 again ({@link Finishing}). The Fanuc first
- * block (G71 U R / G72 W R) only sets the depth and retract.
+ * follows the stored contour of an earlier G71/G72/G73 again ({@link Finishing}); G73 is
+ * {@link PatternRepeat}, G90/G94 {@link SingleCycle}. The Fanuc first block (G71 U R, G72 W R,
+ * G73 U W R) only sets what the next cycles of its kind use ({@link FirstBlock}).
  */
 final class CycleExpansion {
-    /** How many blocks after a G71/G72 its contour's last block N(Q) may be. */
+    /** How many blocks after a G71/G72/G73 its contour's last block N(Q) may be. */
     static final int LOOK_AHEAD = 1000;
     /** How many contours are kept for a later G70 (the oldest is forgotten first). */
     static final int STORED = 100;
@@ -271,7 +272,7 @@ final class CycleExpansion {
         return null;
     }
 
-    /** G71/G72 once its contour is read: the contour followed, the passes planned, written and checked. */
+    /** G71/G72/G73 once its contour is read: the contour followed, the passes planned, written and checked. */
     private List<CheckedBlock> roughing(Pending p) {
         CycleCall call = p.call;
         ModalState start = host.state();

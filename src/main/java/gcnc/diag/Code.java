@@ -197,7 +197,7 @@ public enum Code {
     E164_CYCLE_OPTION_NOT_SUPPORTED(164),
     /** Checker (note): where a finding inside an expanded cycle comes from. */
     E165_CYCLE_PASS(165),
-    /** Checker: a G70 whose P/Q is the contour of no earlier G71/G72. */
+    /** Checker: a G70 whose P/Q is the contour of no earlier G71/G72/G73. */
     E166_FINISH_WITHOUT_CONTOUR(166),
     /** Checker: a depth of cut so small that the cycle would make more passes than gcnc expands. */
     E167_CYCLE_TOO_MANY_PASSES(167),
