@@ -120,6 +120,18 @@ class CycleExpansionTest {
     }
 
     @org.junit.jupiter.api.Test
+    void aContourWrittenWithUAndWMakesTheSameMovesAsOneWithXAndZ() throws Exception {
+        String head = "G21 G99\nT0101\nG97 S1000 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n";
+        String absolute = head + "N10 G00 X20.\nG01 Z-15.\nX30. Z-25.\nG02 X40. Z-30. R5.\nN20 G01 X50.\nG70 P10 Q20\nM30\n";
+        String relative = head + "N10 G00 U-32.\nG01 W-17.\nU10. W-10.\nG02 U10. W-5. R5.\nN20 G01 U10.\nG70 P10 Q20\nM30\n";
+        Expanded a = expand("fanuc", new java.io.StringReader(absolute));
+        Expanded r = expand("fanuc", new java.io.StringReader(relative));
+        assertEquals("[]", a.diagnostics().sorted().toString());
+        assertEquals("[]", r.diagnostics().sorted().toString());
+        assertEquals(render(a), render(r));
+    }
+
+    @org.junit.jupiter.api.Test
     void underG91TheCycleMakesTheSameMovesAsUnderG90() throws Exception {
         gcnc.machine.MachineProfile b = gcnc.machine.ProfileLoader.load("fanuc", gcnc.tables.TableSource.builtIn(),
                 Run.TABLES, "fanuc-b");
