@@ -86,15 +86,16 @@ public final class Compiler {
             flush(lines, out);
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                Optional<CheckedBlock> checked = checker.check(raw);
-                if (checked.isEmpty() || diags.hasErrors()) {
-                    continue;
+                for (CheckedBlock checked : checker.check(raw)) {
+                    if (diags.hasErrors()) {
+                        break;
+                    }
+                    dialect.block(checked, collect);
+                    if (sim != null && !diags.hasErrors()) {
+                        sim.block(checked, List.copyOf(lines));
+                    }
+                    flush(lines, out);
                 }
-                dialect.block(checked.get(), collect);
-                if (sim != null && !diags.hasErrors()) {
-                    sim.block(checked.get(), List.copyOf(lines));
-                }
-                flush(lines, out);
             }
             checker.finish(reader.lines());
             boolean translated = !diags.hasErrors();

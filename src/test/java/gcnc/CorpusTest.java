@@ -26,8 +26,8 @@ import org.junit.jupiter.api.TestFactory;
 /**
  * The real Haas and Fanuc programs of {@code ../shared/corpus} (read where they are, never copied):
  * on the shipped haas or fanuc machine each reports nothing but "not supported yet" (E110, E111)
- * for the functions of the next issue, except the real mistakes the corpus's README names, each
- * on its line and on no line of a correct block.
+ * for the functions of the next issue, except the real mistakes the corpus's README names and
+ * what following their G71/G72/G70 cycles finds, each on its line and on no line of a correct block.
  */
 class CorpusTest {
     private static final Path CORPUS = Path.of("../shared/corpus");
@@ -40,7 +40,12 @@ class CorpusTest {
             // faces to mm, past the centreline; F50 is 50 mm/rev under the Fanuc power-up G99
             "uncleengineer/t24.gcode", List.of("2:E015", "4:E103", "7:E015", "11:E015"),
             // 'P1 X100.0 Z50.0': a P that no function takes
-            "misc/O1000_with_G02.nc", List.of("3:E036"));
+            "misc/O1000_with_G02.nc", List.of("3:E036"),
+            // G71's contour goes in from X1.25 to X1.0 after its first move: not type I (E154);
+            // the G70 carries U and D, words a G70 does not take (E161)
+            "cadekiely/O58214.nc", List.of("18:E154", "31:E161"),
+            // the third G71's contour goes in (X1.1 to X0.8) and out again: a type II pocket (E154)
+            "enier-cnc/round_head_plug_240926.nc", List.of("101:E154"));
 
     private static final List<String> CLEAN = List.of("mark-brannan/SB_SC_spacer12_Op2_v11_15.nc",
             "mark-brannan/SB_ViseStopRails_v11_06.nc");

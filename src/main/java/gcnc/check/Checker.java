@@ -67,6 +67,10 @@ public final class Checker {
     private Checker other;
     private final boolean isOther;
     private ModalState state;
+    /** The cycles (G70-G73, G90/G94): the contour read ahead, the stored contours, the expansion. */
+    private final CycleExpansion cycles;
+    /** Findings of contour blocks read ahead, so that following them again (G70) does not repeat them. */
+    private final Set<String> aside = new HashSet<>();
     private long blocks;
     private boolean stopped;
 
@@ -101,6 +105,7 @@ public final class Checker {
         this.skipDeleted = skipDeleted;
         this.isOther = isOther;
         this.state = ModalState.initial(profile);
+        this.cycles = new CycleExpansion(this);
     }
 
     /** The modal state after the last accepted block. */
@@ -108,21 +113,26 @@ public final class Checker {
         return state;
     }
 
-    public Optional<CheckedBlock> check(RawBlock b) {
+    /**
+     * Checks the next block as the program gives it. Usually one checked block or none; none while
+     * a G71/G72/G73's contour is being read ahead, and the whole expanded cycle at its last block;
+     * a G90/G94 block gives its moves.
+     */
+    public List<CheckedBlock> check(RawBlock b) {
         if (stopped) {
-            return Optional.empty();
+            return List.of();
         }
         Span first = b.words().isEmpty() ? b.last() : b.words().get(0).span();
         if (out.errorCount() >= errorCap) {
             out.error(Code.E116_ERROR_CAP, first, out.errorCount());
             stopped = true;
-            return Optional.empty();
+            return List.of();
         }
         if (b.blockDelete() > 0) {
             if (profile.control().blockDelete() == Control.BlockDelete.NONE) {
                 blocks++;
                 out.error(Code.E010_SYNTAX, Span.of(b.line(), Math.max(1, first.column() - 1)), "'/'");
-                return Optional.empty();
+                return List.of();
             }
             if (other == null && !isOther) {
                 other = fork();
@@ -132,30 +142,109 @@ public final class Checker {
             other.check(b);
         }
         if (b.blockDelete() > 0 && skipDeleted) {
-            return Optional.empty();
+            return List.of();
         }
         boolean isFirst = blocks++ == 0;
         if (state.ended()) {
             out.error(Code.E053_M30_NOT_LAST, first);
-            return Optional.empty();
+            return List.of();
+        }
+        return flow(b, isFirst);
+    }
+
+    /** A counted block in the program's flow: part of a contour being read, a cycle, or a block. */
+    List<CheckedBlock> flow(RawBlock b, boolean isFirst) {
+        if (cycles.reading()) {
+            return cycles.read(b);
         }
         if (b.malformed()) {
             state = Salvage.keep(b, state, functions, profile);
-            return Optional.empty();
+            return List.of();
         }
+        Word cycle = cycles.cycleWord(b);
+        if (cycle != null) {
+            return cycles.start(b, cycle, isFirst);
+        }
+        if (cycles.repeats(b)) {
+            return cycles.repeat(b, isFirst);
+        }
+        cycles.note(b);
+        return one(b, isFirst, null).map(List::of).orElse(List.of());
+    }
+
+    /**
+     * One block through every check, committing its state: a block of the program, or one that a
+     * cycle made or follows again ({@code origin} not null: its findings get a note saying which
+     * pass, and its frame names the pass for the simulator's findings).
+     */
+    Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin) {
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         scratch.clear();
         CheckedBlock result = run(d, scratch, true);
-        report(b);
+        report(b, origin);
+        boolean sequence = origin == null || !origin.again();
         if (result == null) {
-            recover(b, isFirst);
+            recover(b, isFirst, sequence);
             return Optional.empty();
         }
-        commit(d);
+        commit(d, sequence);
         if (!causes.isEmpty() && cuts(result)) {
             closeCauses();
         }
-        return Optional.of(result);
+        return Optional.of(origin == null ? result : origin.label(result));
+    }
+
+    /** What a block would do from {@code from}, checked but not committed, or null after its errors. */
+    record Dry(CheckedBlock block, ModalState next) {
+    }
+
+    /**
+     * A contour block followed from {@code from} without changing the program's state: its words
+     * and geometry checked (not the prerequisites: the cycle's own moves are checked for those),
+     * findings to {@code found}. A G41/G42 is reported (E110) and the block followed without it,
+     * as the program's flow does (see {@link #recover}).
+     */
+    Dry dry(RawBlock b, ModalState from, Diagnostics found) {
+        BlockDraft d = new BlockDraft(b, from, tables, functions, profile, coordinates, false);
+        CheckedBlock r = run(d, found, false);
+        if (r == null) {
+            RawBlock plain = withoutNoseCompensation(b);
+            if (plain == b) {
+                return null;
+            }
+            d = new BlockDraft(plain, from, tables, functions, profile, coordinates, false);
+            r = run(d, found, false);
+        }
+        if (r == null) {
+            return null;
+        }
+        noteSequence(d);
+        return new Dry(r, d.next.build());
+    }
+
+    /** Reports findings of a block checked outside the flow (a contour read ahead), remembering them. */
+    void reportAside(Diagnostics found) {
+        for (Diagnostic diag : found.sorted()) {
+            if (aside.add(key(diag))) {
+                out.report(diag);
+            }
+        }
+    }
+
+    Diagnostics out() {
+        return out;
+    }
+
+    FunctionIndex functions() {
+        return functions;
+    }
+
+    MachineProfile profile() {
+        return profile;
+    }
+
+    Coordinates coordinates() {
+        return coordinates;
     }
 
     /** The checker for the other position of the block delete switch, from the state reached so far. */
@@ -168,12 +257,19 @@ public final class Checker {
         return c;
     }
 
-    /** Reports the block's findings, folding a repeated root cause into its first report. */
-    private void report(RawBlock b) {
+    /**
+     * Reports the block's findings, folding a repeated root cause into its first report; a block
+     * of a cycle adds a note naming its pass, and a contour block followed again (G70) does not
+     * repeat what reading it ahead already reported.
+     */
+    private void report(RawBlock b, CycleOrigin origin) {
         if (scratch.size() == 0) {
             return;
         }
         for (Diagnostic diag : scratch.sorted()) {
+            if (origin != null && origin.again() && aside.contains(key(diag))) {
+                continue;
+            }
             Cause c = causes.get(diag.code());
             if (c != null && diag.severity() == Severity.ERROR) {
                 c.later++;
@@ -188,6 +284,9 @@ public final class Checker {
                 causes.put(diag.code(), new Cause(diag));
             }
             out.report(diag);
+            if (origin != null && origin.noted() && diag.severity() != Severity.NOTE) {
+                out.report(origin.note(diag.span()));
+            }
         }
     }
 
@@ -218,8 +317,11 @@ public final class Checker {
         }
     }
 
-    /** Takes the block's next state, with its warnings: M codes without output (E113), a repeated N (E114). */
-    private void commit(BlockDraft d) {
+    /**
+     * Takes the block's next state, with its warnings: M codes without output (E113), a repeated N
+     * (E114; not for a contour block followed again by G70: {@code sequence} false).
+     */
+    private void commit(BlockDraft d, boolean sequence) {
         for (Word w : d.unpowered) {
             int m = (int) gcnc.check.geom.NumberText.integer(w.number());
             if (!warnedM.get(m)) {
@@ -227,6 +329,14 @@ public final class Checker {
                 out.report(Diagnostic.warning(Code.E113_M_WITHOUT_OUTPUT, w.span(), m, profile.name()));
             }
         }
+        if (sequence) {
+            noteSequence(d);
+        }
+        state = d.next.build();
+    }
+
+    /** A repeated N (E114) where N may repeat; remembers the block's N. */
+    private void noteSequence(BlockDraft d) {
         if (d.has(gcnc.ir.Letter.N) && !profile.control().increasingN()) {
             long n = (long) d.value(gcnc.ir.Letter.N);
             if (n >= 0 && n < Integer.MAX_VALUE) {
@@ -237,7 +347,6 @@ public final class Checker {
                 seenN.set((int) n);
             }
         }
-        state = d.next.build();
     }
 
     /**
@@ -247,11 +356,11 @@ public final class Checker {
      * every later block would report an echo of this one instead of its own errors. The re-run
      * reports nothing. A block with any other error keeps only its unambiguous modal words.
      */
-    private void recover(RawBlock b, boolean isFirst) {
+    private void recover(RawBlock b, boolean isFirst, boolean sequence) {
         b = withoutNoseCompensation(b);
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         if (run(d, new Diagnostics(), false) != null) {
-            commit(d);
+            commit(d, sequence);
         } else {
             state = Salvage.keep(b, state, functions, profile);
         }
@@ -301,6 +410,7 @@ public final class Checker {
 
     /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */
     public void finish(int lastLine) {
+        cycles.finish();
         for (Cause c : causes.values()) {
             note(c);
         }

@@ -164,6 +164,48 @@ public enum Code {
     /** Checker: a G04 dwell of negative time (the backend would write WT with a negative time). */
     E122_NEGATIVE_DWELL(122),
 
+    // 150-169: G70/G71/G72 contour cycles (gcnc.check.cycle, docs/cycles.md).
+    /** Checker: a cycle's P or Q names a block that never comes (the program ends first). */
+    E150_CYCLE_LABEL_NOT_FOUND(150),
+    /** Checker: the N of a cycle's P or Q appears twice in its contour. */
+    E151_CYCLE_LABEL_TWICE(151),
+    /** Checker: the block after a G71/G72 is not the contour's first block N(P). */
+    E152_CONTOUR_NOT_NEXT(152),
+    /** Checker: no N(Q) within the look-ahead limit after a G71/G72. */
+    E153_CONTOUR_TOO_LONG(153),
+    /** Checker: a type I contour goes back along the axis it must follow one way. */
+    E154_CONTOUR_NOT_MONOTONIC(154),
+    /** Checker: the contour's first move goes along the cutting axis (type I: the depth axis only). */
+    E155_CONTOUR_FIRST_MOVE(155),
+    /** Checker: a depth of cut of zero or less. */
+    E156_CYCLE_DEPTH(156),
+    /** Checker: a G71/G72 without a depth of cut or a retract (no D, no first block, no control setting). */
+    E157_CYCLE_DEPTH_MISSING(157),
+    /** Checker: a negative retract. */
+    E158_CYCLE_RETRACT(158),
+    /** Checker: a finishing allowance whose sign puts it inside the part. */
+    E159_CYCLE_ALLOWANCE_SIGN(159),
+    /** Checker: the cycle starts inside the contour (or its allowance). */
+    E160_CYCLE_START_INSIDE(160),
+    /** Checker: a word a cycle block does not take. */
+    E161_CYCLE_WORD(161),
+    /** Checker: a function a cycle's contour cannot hold (an M, a T, a G other than a move). */
+    E162_CONTOUR_WORD(162),
+    /** Checker: a contour with no move after its first. */
+    E163_CONTOUR_EMPTY(163),
+    /** Checker: a cycle option gcnc cannot follow yet (type II, rough allowances I/K). */
+    E164_CYCLE_OPTION_NOT_SUPPORTED(164),
+    /** Checker (note): where a finding inside an expanded cycle comes from. */
+    E165_CYCLE_PASS(165),
+    /** Checker: a G70 whose P/Q is the contour of no earlier G71/G72/G73. */
+    E166_FINISH_WITHOUT_CONTOUR(166),
+    /** Checker: a depth of cut so small that the cycle would make more passes than gcnc expands. */
+    E167_CYCLE_TOO_MANY_PASSES(167),
+    /** Checker: a cycle block without its P or Q. */
+    E168_CYCLE_P_Q_MISSING(168),
+    /** Checker: a G90/G94 single-pass cycle without its X (or U) or its Z (or W). */
+    E169_SINGLE_CYCLE_END_MISSING(169),
+
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */
     E201_GALIL_RANGE(201),

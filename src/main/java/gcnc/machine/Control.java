@@ -31,12 +31,14 @@ import java.util.TreeMap;
  * @param bareG28Homes      a G28 with no axis word homes both axes; else E030
  * @param blockDelete       how a '/' block is treated
  * @param builderM          an M code not in the table is passed to the machine; else E012
+ * @param cycleRetractMm    the 45-degree retract of G71/G72 roughing passes when the program gives
+ *                          no R (Haas Setting 73, Fanuc parameter 5133), mm; NaN when not set
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
-                      BlockDelete blockDelete, boolean builderM) {
+                      BlockDelete blockDelete, boolean builderM, double cycleRetractMm) {
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
 

@@ -23,7 +23,7 @@ public final class ControlLoader {
     /** The keys of control.cfg (tables/controls/README.md); any other is a fault, with a suggestion. */
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
-            "m.unlisted");
+            "m.unlisted", "cycle.retract_mm");
 
     private ControlLoader() {
     }
@@ -88,7 +88,17 @@ public final class ControlLoader {
                 f.choice("dwell.p", "milliseconds", "milliseconds", "seconds").equals("seconds"),
                 f.choice("g28.bare", "error", "error", "home").equals("home"),
                 Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
-                f.choice("m.unlisted", "error", "error", "builder").equals("builder"));
+                f.choice("m.unlisted", "error", "error", "builder").equals("builder"),
+                retract(f));
+    }
+
+    /** cycle.retract_mm: zero or more, NaN when the control does not say. */
+    private static double retract(ProfileFile f) throws TableException {
+        double r = f.number("cycle.retract_mm", Double.NaN);
+        if (r < 0) {
+            throw f.fault(f.required("cycle.retract_mm"), "cycle.retract_mm is a length in mm, zero or more");
+        }
+        return r;
     }
 
     private static Map<Integer, GFunction> gTable(Csv csv) throws TableException {

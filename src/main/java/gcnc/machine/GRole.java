@@ -16,6 +16,17 @@ public enum GRole {
      */
     NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
     REGISTER_AND_CLAMP(50), MACHINE_COORDINATES(53),
+    /**
+     * G70 finishing along a contour, G71 stock removal in turning, G72 stock removal in facing,
+     * G73 pattern repeat:
+     * expanded by the checker into ordinary moves (gcnc.check.cycle, docs/cycles.md).
+     */
+    FINISHING_CYCLE(70), TURNING_CYCLE(71), FACING_CYCLE(72), PATTERN_CYCLE(73),
+    /**
+     * The single-pass cycles of group 1: turning along Z (Fanuc A and Haas G90, Fanuc B G77) and
+     * facing along X (G94, Fanuc B G79), modal: a later block with X or Z makes the cycle again.
+     */
+    TURNING_SINGLE_CYCLE(90), FACING_SINGLE_CYCLE(94),
     WORK_1(54), WORK_2(55), WORK_3(56), WORK_4(57), WORK_5(58), WORK_6(59), CYCLE_CANCEL(80),
     ABSOLUTE(90), INCREMENTAL(91), REGISTER(92), FEED_PER_MINUTE(94), FEED_PER_REV(95), CSS(96), RPM(97),
     /** A function gcnc cannot follow yet: using it is E110, never a misreading. */
@@ -35,6 +46,16 @@ public enum GRole {
     /** A function gcnc names as not supported yet (E110). */
     public boolean unsupported() {
         return this == UNSUPPORTED || this == NOSE_COMP_LEFT || this == NOSE_COMP_RIGHT;
+    }
+
+    /** G90/G94 (Fanuc B G77/G79): a single-pass cycle the checker expands into its four moves. */
+    public boolean singleCycle() {
+        return this == TURNING_SINGLE_CYCLE || this == FACING_SINGLE_CYCLE;
+    }
+
+    /** G70, G71, G72 or G73: a cycle the checker expands into moves along a contour. */
+    public boolean contourCycle() {
+        return this == FINISHING_CYCLE || this == TURNING_CYCLE || this == FACING_CYCLE || this == PATTERN_CYCLE;
     }
 
     public boolean motion() {

@@ -208,17 +208,19 @@ class ControlRulesTest {
         // fanuc B: G92 sets the coordinates (and with S the clamp); thesis: the position register
         assertEquals("", check("generic", "fanuc-b", "G92 X100. Z50.\nG92 S500\nM30\n"));
         assertEquals("", check("generic", "thesis-2004", "G92 X100. Z50.\nM30\n"));
-        String turn = "G00 X42. Z2.\nG90 X39. Z-20. F0.2\nM30\n";
-        assertEquals("2:1:E110", check("generic", "haas", turn));
-        assertEquals("2:1:E110", check("generic", "fanuc-a", turn));
-        assertEquals("1:1:E110", check("generic", "fanuc-b", "G77 X39. Z-20. F0.2\nM30\n"));
+        // haas and fanuc A: G90 is the turning cycle (docs/cycles.md); fanuc B numbers it G77
+        String turn = "S500 M03\nG00 X42. Z2.\nG90 X39. Z-20. F0.2\nM30\n";
+        assertEquals("", check("generic", "haas", turn));
+        assertEquals("", check("generic", "fanuc-a", turn));
+        assertEquals("", check("generic", "fanuc-b", "S500 M03\nG00 X42. Z2.\nG77 X39. Z-20. F0.2\nM30\n"));
+        assertEquals("3:1:E169", check("generic", "fanuc-a", "S500 M03\nG00 X42. Z2.\nG90 X39. F0.2\nM30\n"));
         assertEquals("", check("generic", "fanuc-b", "G90 G00 X42. Z2.\nG91 G00 X-1.\nM30\n"));
     }
 
     @Test
     void cyclesCompensationAndSubprogramsAreNamedAtTheirWord() {
-        assertEquals("1:5:E110", check("generic", "haas", "N40 G71 P10 Q20 U0.01 W0.005 D0.05 F0.01\nM30\n"));
-        assertTrue(messages("generic", "fanuc-a", "G71 U1. R0.5\nM30\n").contains("p.nc:1:1: error[E110]: G71 "));
+        assertEquals("1:5:E110", check("generic", "haas", "N40 G74 X0. Z-1. K0.1 F0.01\nM30\n"));
+        assertTrue(messages("generic", "fanuc-a", "G74 R0.5\nM30\n").contains("p.nc:1:1: error[E110]: G74 "));
         assertEquals("1:5:E110", check("generic", "haas", "G01 G42 X30. F0.1\nM30\n"));
         assertEquals("1:1:E110", check("generic", "fanuc-a", "M98 P1000\nM30\n"));
         assertEquals("1:1:E110", check("generic", "thesis-2004", "M98 P1000\nM30\n"));

@@ -124,7 +124,7 @@ class ErrorsTest {
         Checker c = new Checker(Run.TABLES, Run.profile("generic"), out);
         gcnc.ir.RawBlock bad = Run.block(1, "G07 X");
         gcnc.ir.RawBlock malformed = new gcnc.ir.RawBlock(1, bad.words(), bad.last(), true);
-        assertEquals(java.util.Optional.empty(), c.check(malformed));
+        assertEquals(java.util.List.of(), c.check(malformed));
         assertEquals(0, out.size());
         c.check(Run.block(2, "M30"));
         gcnc.ir.RawBlock late = new gcnc.ir.RawBlock(3, bad.words(), bad.last(), true);

@@ -69,7 +69,7 @@ final class Run {
             RawBlock b = block(i + 1, lines[i]);
             if (b != null) {
                 last = i + 1;
-                r.checker.check(b).ifPresent(r.blocks::add);
+                r.blocks.addAll(r.checker.check(b));
             }
         }
         r.checker.finish(last);

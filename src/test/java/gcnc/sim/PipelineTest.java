@@ -43,11 +43,10 @@ class PipelineTest {
             BlockReader reader = new BlockReader(in, d);
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
                 last = b.line();
-                Optional<CheckedBlock> cb = checker.check(b);
-                if (cb.isPresent()) {
+                for (CheckedBlock cb : checker.check(b)) {
                     buf.clear();
-                    out.block(cb.get(), buf::add);
-                    sim.block(cb.get(), buf);
+                    out.block(cb, buf::add);
+                    sim.block(cb, buf);
                 }
             }
         }

@@ -92,13 +92,14 @@ class SimulatorThreadTest {
         sim.begin(buf);
         BlockReader reader = new BlockReader(new StringReader(program), d);
         for (RawBlock b = reader.next(); b != null; b = reader.next()) {
-            Optional<CheckedBlock> cb = checker.check(b);
-            if (cb.isEmpty() || d.errorCount() > sim.report().findings()) {
-                continue; // as the compiler does: after a checker error, check only
+            for (CheckedBlock cb : checker.check(b)) {
+                if (d.errorCount() > sim.report().findings()) {
+                    break; // as the compiler does: after a checker error, check only
+                }
+                buf.clear();
+                out.block(cb, buf::add);
+                sim.block(cb, buf);
             }
-            buf.clear();
-            out.block(cb.get(), buf::add);
-            sim.block(cb.get(), buf);
         }
         checker.finish(reader.lines());
         boolean translated = d.errorCount() == sim.report().findings();

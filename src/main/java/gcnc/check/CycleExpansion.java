@@ -1,0 +1,346 @@
+package gcnc.check;
+
+import gcnc.check.cycle.Axes;
+import gcnc.check.cycle.Contour;
+import gcnc.check.cycle.CycleCall;
+import gcnc.check.cycle.FirstBlock;
+import gcnc.check.cycle.Move;
+import gcnc.check.cycle.MoveWriter;
+import gcnc.check.geom.Coordinates;
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.Point;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.Units;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * The cycles in the checker's flow (docs/cycles.md). A G71/G72/G73 with P and Q reads its
+ * contour ahead: the blocks N(P)..N(Q) right after it, at most {@link #LOOK_AHEAD} of them, are
+ * taken out of the flow (the control skips them after the cycle) and followed from the cycle's
+ * start without changing the program's state ({@link ContourReader}). {@link StockRemoval} then
+ * plans the passes, writes them as blocks and checks each like any other, with its origin. A G70
+ * follows the stored contour of an earlier G71/G72/G73 again ({@link Finishing}); G73 is
+ * {@link PatternRepeat}, G90/G94 {@link SingleCycle}. The Fanuc first block (G71 U R, G72 W R,
+ * G73 U W R) only sets what the next cycles of its kind use ({@link FirstBlock}).
+ */
+final class CycleExpansion {
+    /** How many blocks after a G71/G72/G73 its contour's last block N(Q) may be. */
+    static final int LOOK_AHEAD = 1000;
+    /** How many contours are kept for a later G70 (the oldest is forgotten first). */
+    static final int STORED = 100;
+
+    private final Checker host;
+    private final ContourReader contours;
+    private final SingleCycle single;
+    /** The cycle whose contour is being read, with the blocks read so far; null when none. */
+    private Pending pending;
+    /** What the Fanuc first blocks left in force, per cycle. */
+    private final Map<GRole, FirstBlock> firstBlocks = new EnumMap<>(GRole.class);
+    private final Map<String, Stored> stored = new LinkedHashMap<>(16, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, Stored> eldest) {
+            return size() > STORED;
+        }
+    };
+
+    /** A G71/G72/G73 whose contour is being read: the blocks so far, and whether one of them broke it. */
+    private static final class Pending {
+        final CycleCall call;
+        final int line;
+        final List<RawBlock> blocks = new ArrayList<>();
+        boolean broken;
+
+        Pending(CycleCall call, int line) {
+            this.call = call;
+            this.line = line;
+        }
+    }
+
+    /** A contour kept for G70: its blocks and how the cycle that read it cut. */
+    private record Stored(List<RawBlock> blocks, Axes axes, int depthSign) {
+    }
+
+    /** Which way the contour lies from its start along the depth axis (+1: the start is on the + side). */
+    private static int signs(Axes axes, Contour c) {
+        return (int) Math.signum(axes.depth(c.start()) - axes.depth(c.shapeStart()));
+    }
+
+    CycleExpansion(Checker host) {
+        this.host = host;
+        this.contours = new ContourReader(host, this::role);
+        this.single = new SingleCycle(host);
+    }
+
+    boolean reading() {
+        return pending != null;
+    }
+
+    /** The block's G70/G71/G72 word, or null. */
+    Word cycleWord(RawBlock b) {
+        for (Word w : b.words()) {
+            if (w.letter() == Letter.G && !w.number().isEmpty()) {
+                GRole r = role((int) NumberText.integer(w.number()));
+                if (r != null && (r.contourCycle() || r.singleCycle())) {
+                    return w;
+                }
+            }
+        }
+        return null;
+    }
+
+    private GRole role(int code) {
+        GFunction f = code < 0 ? null : host.functions().g(code);
+        return f == null ? null : f.role();
+    }
+
+    /** Whether the block makes the G90/G94 in force again (X or Z, no G of its group). */
+    boolean repeats(RawBlock b) {
+        return single.repeats(b);
+    }
+
+    List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
+        return single.run(b, null, isFirst);
+    }
+
+    /** An ordinary block: a G of the G90/G94's group ends it. */
+    void note(RawBlock b) {
+        single.note(b);
+    }
+
+    /** A cycle block: its other words first, as a block of their own; then what the cycle does. */
+    List<CheckedBlock> start(RawBlock b, Word g, boolean isFirst) {
+        GRole kind = role((int) NumberText.integer(g.number()));
+        if (kind.singleCycle()) {
+            return single.run(b, g, isFirst);
+        }
+        single.note(b);
+        Units units = host.state().units();
+        MachineProfile p = host.profile();
+        double noPoint = units == Units.INCH ? p.noPointInch() : p.noPointMm();
+        CycleCall call = CycleCall.read(b, g, kind, this::role, noPoint, host.out());
+        List<CheckedBlock> done = new ArrayList<>();
+        List<Word> passOn = call != null ? call.passOn() : passOn(b);
+        if (!passOn.isEmpty()) {
+            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
+                    isFirst, null).ifPresent(done::add);
+        }
+        if (call == null) {
+            return done;
+        }
+        if (call.firstOfTwo()) {
+            first(call);
+        } else if (kind == GRole.FINISHING_CYCLE) {
+            Stored s = stored.get(key(call));
+            if (s == null) {
+                host.out().error(Code.E166_FINISH_WITHOUT_CONTOUR, call.g().span(), call.name(), call.label(Letter.P),
+                        call.label(Letter.Q));
+            } else {
+                done.addAll(new Finishing(host).expand(call, b.line(), s.blocks(), s.axes(), s.depthSign()));
+            }
+        } else {
+            pending = new Pending(call, b.line());
+        }
+        return done;
+    }
+
+    /**
+     * The words of a cycle block that the cycle could not read which belong to other functions
+     * (its F, S, M, N): they still take effect, so that the blocks after it are not judged
+     * without them (as {@link Salvage} keeps a rejected block's modal words).
+     */
+    private List<Word> passOn(RawBlock b) {
+        List<Word> kept = new ArrayList<>();
+        for (Word w : b.words()) {
+            boolean other = switch (w.letter()) {
+                case N, F, S, T, M -> true;
+                case G -> {
+                    GRole r = w.number().isEmpty() ? null : role((int) NumberText.integer(w.number()));
+                    yield r != null && !r.contourCycle();
+                }
+                default -> false;
+            };
+            if (other) {
+                kept.add(w);
+            }
+        }
+        return kept;
+    }
+
+    /**
+     * The Fanuc first block: its depth and retract (G71, G72) or relief and passes (G73) stay in
+     * force for the next cycles of its kind; E156, E158 or the passes' errors otherwise.
+     */
+    private void first(CycleCall call) {
+        double nan = Double.NaN;
+        FirstBlock said;
+        if (call.kind() == GRole.PATTERN_CYCLE) {
+            double passes = call.has(Letter.R) ? PatternRepeat.passes(host, call, Letter.R) : nan;
+            if (Double.isNaN(passes) && call.has(Letter.R)) {
+                return;
+            }
+            said = new FirstBlock(nan, nan, call.has(Letter.U) ? call.value(Letter.U) : nan,
+                    call.has(Letter.W) ? call.value(Letter.W) : nan, passes);
+        } else {
+            Letter depth = call.kind() == GRole.FACING_CYCLE ? Letter.W : Letter.U;
+            double d = call.has(depth) ? call.value(depth) : nan;
+            if (d <= 0) {
+                host.out().error(Code.E156_CYCLE_DEPTH, call.words().get(depth).span(), call.name(),
+                        call.words().get(depth));
+                return;
+            }
+            double r = call.has(Letter.R) ? call.value(Letter.R) : nan;
+            if (r < 0) {
+                host.out().error(Code.E158_CYCLE_RETRACT, call.words().get(Letter.R).span(), call.name(),
+                        call.words().get(Letter.R));
+                return;
+            }
+            said = new FirstBlock(d, r * (host.state().units() == Units.INCH ? 25.4 : 1), nan, nan, nan);
+        }
+        firstBlocks.merge(call.kind(), said, FirstBlock::then);
+    }
+
+    /** The next block while a contour is read: kept aside; the cycle at its last block. */
+    List<CheckedBlock> read(RawBlock b) {
+        Pending p = pending;
+        p.blocks.add(b);
+        long n = sequence(b);
+        long first = p.call.label(Letter.P);
+        long last = p.call.label(Letter.Q);
+        if (p.blocks.size() == 1 && n != first) {
+            host.out().error(Code.E152_CONTOUR_NOT_NEXT, p.call.words().get(Letter.P).span(), p.call.name(), first);
+            return replay();
+        }
+        if (p.blocks.size() > 1 && n == first) {
+            host.out().error(Code.E151_CYCLE_LABEL_TWICE, nWord(b).span(), p.call.name(), p.line, n);
+            p.broken = true;
+        }
+        if (n == last) {
+            pending = null;
+            return roughing(p);
+        }
+        if (p.blocks.size() >= LOOK_AHEAD) {
+            host.out().error(Code.E153_CONTOUR_TOO_LONG, p.call.words().get(Letter.Q).span(), p.call.name(), last,
+                    LOOK_AHEAD);
+            return replay();
+        }
+        return List.of();
+    }
+
+    /** The program ended while a contour was read: E150, and the blocks read are checked as they stand. */
+    void finish() {
+        if (pending != null) {
+            Word q = pending.call.words().get(Letter.Q);
+            host.out().error(Code.E150_CYCLE_LABEL_NOT_FOUND, q.span(), pending.call.name(), q);
+            replay();
+        }
+    }
+
+    /** Gives up reading a contour: its blocks go back into the program's flow. */
+    private List<CheckedBlock> replay() {
+        List<RawBlock> blocks = pending.blocks;
+        pending = null;
+        List<CheckedBlock> done = new ArrayList<>();
+        for (RawBlock b : blocks) {
+            done.addAll(host.flow(b, false));
+        }
+        return done;
+    }
+
+    private static long sequence(RawBlock b) {
+        Word n = nWord(b);
+        return n == null ? -1 : NumberText.integer(n.number());
+    }
+
+    private static Word nWord(RawBlock b) {
+        for (Word w : b.words()) {
+            if (w.letter() == Letter.N) {
+                return w;
+            }
+        }
+        return null;
+    }
+
+    /** G71/G72/G73 once its contour is read: the contour followed, the passes planned, written and checked. */
+    private List<CheckedBlock> roughing(Pending p) {
+        CycleCall call = p.call;
+        ModalState start = host.state();
+        List<Contour.Piece> pieces = contours.follow(call, p.line, p.blocks, start);
+        if (pieces == null || p.broken) {
+            return List.of();
+        }
+        Axes axes = call.kind() == GRole.FACING_CYCLE ? Axes.FACING : Axes.TURNING;
+        if (pieces.size() < 2) {
+            host.out().error(Code.E163_CONTOUR_EMPTY, call.g().span(), call.name(),
+                    call.kind() == GRole.PATTERN_CYCLE ? "X or Z" : axes.cutName());
+            return List.of();
+        }
+        Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
+        stored.remove(key(call));
+        stored.put(key(call), new Stored(List.copyOf(p.blocks), axes, signs(axes, contour)));
+        FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
+        if (call.kind() == GRole.PATTERN_CYCLE) {
+            return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
+        }
+        return new StockRemoval(host, call, p.line).expand(contour, p.blocks, start, firstBlock);
+    }
+
+    private static String key(CycleCall call) {
+        return call.label(Letter.P) + "/" + call.label(Letter.Q);
+    }
+
+    /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
+    static MoveWriter.Frame frame(Checker host, ModalState s) {
+        Coordinates c = host.coordinates();
+        Units u = s.units();
+        List<String> codes = new ArrayList<>(4);
+        for (GRole r : new GRole[] {GRole.RAPID, GRole.LINEAR, GRole.ARC_CW, GRole.ARC_CCW}) {
+            codes.add(host.profile().control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
+        }
+        return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
+    }
+
+    /**
+     * The moves as blocks at the cycle's line, each checked. After the first that fails the cycle
+     * is not followed further: a rapid back to the start point ends it, so that the blocks after
+     * the cycle are judged from where the cycle leaves the tool (one finding, not one per pass).
+     */
+    static List<CheckedBlock> write(Checker host, CycleCall call, int line, List<Move> moves, int passes,
+                                    ModalState start) {
+        MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
+        List<CheckedBlock> done = new ArrayList<>();
+        Point at = start.position();
+        for (Move m : moves) {
+            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
+                    call.label(Letter.Q), false);
+            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
+            if (b.isEmpty()) {
+                abandon(host, writer, start.position(), origin).ifPresent(done::add);
+                break;
+            }
+            done.add(b.get());
+            at = host.state().position();
+        }
+        return done;
+    }
+
+    /** After a move of a cycle failed: a rapid from where the checker left the tool to the cycle's end point. */
+    static Optional<CheckedBlock> abandon(Checker host, MoveWriter writer, Point end, CycleOrigin origin) {
+        Point at = host.state().position();
+        if (at.distanceTo(end) <= 1e-9) {
+            return Optional.empty();
+        }
+        return host.one(writer.block(Move.line(true, end, origin.pass()), at), false, origin);
+    }
+}

@@ -1,0 +1,46 @@
+package gcnc.check;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Severity;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.ProgramFrame;
+import java.util.List;
+
+/**
+ * Where a block that a cycle made (or follows again) comes from: "G71 pass 4 of 9" of the cycle
+ * at {@code cycleLine} with the contour N(p)..N(q). {@code again}: a contour block that G70
+ * follows again (its findings of the first reading are not repeated, its N is not a repeat).
+ */
+record CycleOrigin(String cycle, int pass, int passes, int cycleLine, long p, long q, boolean again) {
+
+    /** A G90/G94 single-pass cycle: one pass, no contour; its findings are on its own block already. */
+    static CycleOrigin single(String cycle, int line) {
+        return new CycleOrigin(cycle, 1, 1, line, -1, -1, false);
+    }
+
+    /** Whether a finding in the block gets the note: not for a single-pass cycle (p < 0). */
+    boolean noted() {
+        return p >= 0;
+    }
+
+    /** The note after each finding in the block (E165). */
+    Diagnostic note(Span at) {
+        return new Diagnostic(Code.E165_CYCLE_PASS, Severity.NOTE, at, List.of(cycle, Integer.toString(pass),
+                Integer.toString(passes), Integer.toString(cycleLine), Long.toString(p), Long.toString(q)));
+    }
+
+    /** The checked block with the pass as its sequence, for the simulator's findings. */
+    CheckedBlock label(CheckedBlock b) {
+        ProgramFrame f = b.frame();
+        if (f == null) {
+            return b;
+        }
+        String name = cycle + " pass " + pass + " of " + passes;
+        ProgramFrame labelled = new ProgramFrame(f.origin(), f.perX(), f.perZ(),
+                f.sequence().isEmpty() ? name : f.sequence() + " " + name);
+        return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), b.motions(), b.after(), b.end(),
+                labelled);
+    }
+}

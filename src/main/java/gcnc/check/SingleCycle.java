@@ -1,0 +1,208 @@
+package gcnc.check;
+
+import gcnc.check.cycle.Move;
+import gcnc.check.cycle.MoveWriter;
+import gcnc.check.geom.Coordinates;
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.Point;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.Units;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * The single-pass cycles G90 (turning along Z) and G94 (facing along X) of Fanuc system A and
+ * Haas (Fanuc system B: G77, G79), as four checked moves from the start point A: for G90 a rapid
+ * in X to the cut's diameter, a feed to the end point (X, Z), a feed out in X to A's diameter and a
+ * rapid back in Z; for G94 the same with the axes swapped. A taper is R (Fanuc; Haas I for G90, K
+ * for G94): the cut's start minus its end, X a radius. The cycle is modal in its group: a later
+ * block with X, U, Z or W and no G of that group makes it again, with the words it does not give
+ * (the other end coordinate, the taper) as before; a G of the group ends it (docs/cycles.md).
+ */
+final class SingleCycle {
+    private final Checker host;
+    /** The cycle in force, or null. */
+    private GRole kind;
+    private int group;
+    private String name;
+    /** The end point of the cycle in force, counts, and its taper (counts along X for G90, Z for G94). */
+    private Point end;
+    private double taper;
+
+    SingleCycle(Checker host) {
+        this.host = host;
+    }
+
+    private GFunction function(Word w) {
+        if (w.letter() != Letter.G || w.number().isEmpty()) {
+            return null;
+        }
+        long n = NumberText.integer(w.number());
+        return n < 0 || n > 999 ? null : host.functions().g((int) n);
+    }
+
+    /**
+     * Whether the block makes the cycle in force again: an axis word, no G of its group and no
+     * one-shot G (whose words those are: G04 U1., G28 U0, G50 X).
+     */
+    boolean repeats(RawBlock b) {
+        if (kind == null) {
+            return false;
+        }
+        boolean axis = false;
+        for (Word w : b.words()) {
+            GFunction f = function(w);
+            if (f != null && (f.group() == group || f.group() == 0)) {
+                return false;
+            }
+            Letter l = w.letter();
+            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
+        }
+        return axis;
+    }
+
+    /** An ordinary block: a G of the cycle's group ends the cycle. */
+    void note(RawBlock b) {
+        if (kind == null) {
+            return;
+        }
+        for (Word w : b.words()) {
+            GFunction f = function(w);
+            if (f != null && f.group() == group) {
+                kind = null;
+                return;
+            }
+        }
+    }
+
+    /** A G90/G94 block ({@code g} its cycle word) or a block that makes the cycle in force again (g null). */
+    List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
+        GRole role = g == null ? kind : function(g).role();
+        String label = g == null ? name : "G" + g.number();
+        Letter taperWord = role == GRole.TURNING_SINGLE_CYCLE ? Letter.I : Letter.K;
+        List<Word> axes = new ArrayList<>();
+        List<Word> passOn = new ArrayList<>();
+        Word taperGiven = null;
+        Word foreign = null;
+        for (Word w : b.words()) {
+            GFunction f = function(w);
+            if (w == g) {
+                continue;
+            }
+            switch (w.letter()) {
+                case X, U, Z, W -> axes.add(w);
+                case N, F, S, T, M -> passOn.add(w);
+                case G -> {
+                    if (f != null && (f.role().singleCycle() || f.role().contourCycle())) {
+                        foreign = foreign == null ? w : foreign;
+                    } else {
+                        passOn.add(w);
+                    }
+                }
+                default -> {
+                    if ((w.letter() == Letter.R || w.letter() == taperWord) && taperGiven == null) {
+                        taperGiven = w;
+                    } else {
+                        foreign = foreign == null ? w : foreign;
+                    }
+                }
+            }
+        }
+        List<CheckedBlock> done = new ArrayList<>();
+        if (!passOn.isEmpty()) {
+            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
+                    isFirst, null).ifPresent(done::add);
+        }
+        Word at = g != null ? g : axes.get(0);
+        if (foreign != null) {
+            host.out().error(Code.E161_CYCLE_WORD, foreign.span(), label, foreign);
+            return done;
+        }
+        boolean x = has(axes, Letter.X, Letter.U);
+        boolean z = has(axes, Letter.Z, Letter.W);
+        if (g != null && (!x || !z)) {
+            host.out().error(Code.E169_SINGLE_CYCLE_END_MISSING, g.span(), label);
+            kind = null;
+            return done;
+        }
+        ModalState start = host.state();
+        Point reached = target(b, axes, start);
+        if (reached == null) {
+            return done;
+        }
+        if (g != null) {
+            kind = role;
+            group = function(g).group();
+            name = label;
+            taper = 0;
+        }
+        end = new Point(x ? reached.x() : end.x(), z ? reached.z() : end.z());
+        if (taperGiven != null) {
+            double v = NumberText.decimal(taperGiven.number());
+            if (Double.isNaN(v)) {
+                host.out().error(Code.E014_DECIMAL_EXPECTED, taperGiven.span(), taperGiven.letter());
+                return done;
+            }
+            Units u = start.units();
+            if (!NumberText.hasPoint(taperGiven.number())) {
+                v *= u == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
+            }
+            Coordinates c = host.coordinates();
+            taper = v * (kind == GRole.TURNING_SINGLE_CYCLE ? c.perRadius(u) : c.perZ(u));
+        }
+        return moves(done, start, at, b.line());
+    }
+
+    private static boolean has(List<Word> words, Letter a, Letter b) {
+        return words.stream().anyMatch(w -> w.letter() == a || w.letter() == b);
+    }
+
+    /** Where the block's axis words lead from the start (a rapid followed aside), or null after its error. */
+    private Point target(RawBlock b, List<Word> axes, ModalState start) {
+        List<Word> words = new ArrayList<>(axes.size() + 1);
+        String rapid = host.profile().control().gFor(GRole.RAPID).map(f -> f.name().substring(1)).orElseThrow();
+        words.add(new Word(Letter.G, rapid, axes.get(0).span()));
+        words.addAll(axes);
+        Diagnostics found = new Diagnostics();
+        Checker.Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
+                found);
+        host.out().addAll(found);
+        return dry == null ? null : dry.block().end();
+    }
+
+    /** The cycle's four moves from the start, written and checked; after one fails, back to the start. */
+    private List<CheckedBlock> moves(List<CheckedBlock> done, ModalState start, Word at, int line) {
+        Point a = start.position();
+        Point[] path;
+        if (kind == GRole.TURNING_SINGLE_CYCLE) {
+            path = new Point[] {new Point(end.x() + taper, a.z()), end, new Point(a.x(), end.z()), a};
+        } else {
+            path = new Point[] {new Point(a.x(), end.z() + taper), end, new Point(end.x(), a.z()), a};
+        }
+        boolean[] rapid = {true, false, false, true};
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at.span());
+        CycleOrigin origin = CycleOrigin.single(name, line);
+        Point from = a;
+        for (int i = 0; i < path.length; i++) {
+            if (path[i].distanceTo(from) <= 1e-9) {
+                continue;
+            }
+            Optional<CheckedBlock> r = host.one(writer.block(Move.line(rapid[i], path[i], 1), from), false, origin);
+            if (r.isEmpty()) {
+                CycleExpansion.abandon(host, writer, a, origin).ifPresent(done::add);
+                break;
+            }
+            done.add(r.get());
+            from = host.state().position();
+        }
+        return done;
+    }
+}

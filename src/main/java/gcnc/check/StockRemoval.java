@@ -1,0 +1,127 @@
+package gcnc.check;
+
+import gcnc.check.cycle.Axes;
+import gcnc.check.cycle.Contour;
+import gcnc.check.cycle.CycleCall;
+import gcnc.check.cycle.FirstBlock;
+import gcnc.check.cycle.Fault;
+import gcnc.check.cycle.MoveWriter;
+import gcnc.check.cycle.Roughing;
+import gcnc.check.geom.Coordinates;
+import gcnc.diag.Code;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.GRole;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.Units;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * G71 and G72 once their contour is followed: the cycle block's depth, retract and allowances in
+ * counts, the passes planned ({@link Roughing}), written as blocks at the cycle's line
+ * ({@link MoveWriter}) and checked one by one, each with its pass.
+ */
+final class StockRemoval {
+    /** The most passes one cycle is expanded into. */
+    static final int MAX_PASSES = 10_000;
+    /** Geometric tolerance, mm. */
+    private static final double EPS_MM = 0.001;
+
+    private final Checker host;
+    private final CycleCall call;
+    private final int line;
+    private final Axes axes;
+
+    StockRemoval(Checker host, CycleCall call, int line) {
+        this.host = host;
+        this.call = call;
+        this.line = line;
+        this.axes = call.kind() == GRole.TURNING_CYCLE ? Axes.TURNING : Axes.FACING;
+    }
+
+    Axes axes() {
+        return axes;
+    }
+
+    /**
+     * The cycle's checked blocks for the contour followed from {@code start}; none after a
+     * finding. {@code firstBlock}: what a Fanuc first block left in force.
+     */
+    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock) {
+        Roughing.Settings settings = settings(start, firstBlock);
+        if (settings == null) {
+            return List.of();
+        }
+        Roughing.Outcome o = new Roughing(axes, settings).plan(contour);
+        if (o instanceof Fault f) {
+            report(f, blocks);
+            return List.of();
+        }
+        Roughing.Plan plan = (Roughing.Plan) o;
+        return CycleExpansion.write(host, call, line, plan.moves(), plan.passes(), start);
+    }
+
+    /** The cycle's allowances, depth and retract in counts; null after E156, E157 or E158. */
+    private Roughing.Settings settings(ModalState start, FirstBlock firstBlock) {
+        Coordinates c = host.coordinates();
+        MachineProfile p = host.profile();
+        Units u = start.units();
+        double depth;
+        if (call.has(Letter.D)) {
+            depth = call.value(Letter.D);
+            if (depth <= 0) {
+                host.out().error(Code.E156_CYCLE_DEPTH, call.words().get(Letter.D).span(), call.name(),
+                        call.words().get(Letter.D));
+                return null;
+            }
+        } else if (!Double.isNaN(firstBlock.depth())) {
+            depth = firstBlock.depth();
+        } else {
+            host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
+                    "D, or a " + call.name() + (axes == Axes.TURNING ? " U" : " W") + " R block before it");
+            return null;
+        }
+        double retractMm = Double.isNaN(firstBlock.retractMm()) ? p.control().cycleRetractMm()
+                : firstBlock.retractMm();
+        if (Double.isNaN(retractMm)) {
+            host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
+                    "a " + call.name() + " R block before it, or cycle.retract_mm in the control");
+            return null;
+        }
+        double dx = call.has(Letter.U) ? call.value(Letter.U) * c.perX(u) : 0;
+        double dz = call.has(Letter.W) ? call.value(Letter.W) * c.perZ(u) : 0;
+        double depthCounts = axes == Axes.TURNING ? depth * c.perRadius(u) : depth * c.perZ(u);
+        double perMmDepth = axes == Axes.TURNING ? p.x().countsPerMm() : p.z().countsPerMm();
+        double perMmCut = axes == Axes.TURNING ? p.z().countsPerMm() : p.x().countsPerMm();
+        return new Roughing.Settings(dx, dz, depthCounts, retractMm * perMmDepth, retractMm * perMmCut,
+                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES);
+    }
+
+    /** Reports why a cycle cannot be expanded, where its fault says. */
+    private void report(Fault f, List<RawBlock> blocks) {
+        List<Object> args = new ArrayList<>();
+        args.add(call.name());
+        Span at = call.g().span();
+        if (f.contourLine() > 0) {
+            args.add(line);
+            for (RawBlock b : blocks) {
+                if (b.line() == f.contourLine()) {
+                    at = b.words().isEmpty() ? b.last() : b.words().get(0).span();
+                    break;
+                }
+            }
+        } else if (f.word() != null) {
+            Word w = call.words().get(f.word());
+            if (w != null) {
+                at = w.span();
+            }
+            args.add(w != null ? w : f.word());
+        }
+        args.addAll(f.args());
+        host.out().error(f.code(), at, args.toArray());
+    }
+}

@@ -1,0 +1,140 @@
+package gcnc.check;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * One tiny program per cycle finding (E150-E168), on the fanuc machine (metric, control fanuc-a)
+ * or the haas machine (inch): the code at the word or contour block it names.
+ */
+class CycleErrorsTest {
+    /** Lines 1-4: metric, feed per revolution, spindle on, at the start point X52 Z2. */
+    private static final String START = "G21 G99\nT0101\nG97 S1000 M03\nG00 X52. Z2.\n";
+    private static final String CONTOUR = "N10 G00 X20.\nG01 Z-15.\nX48.\nN20 Z-40.\n";
+
+    private static String fanuc(String program) {
+        return Run.of("fanuc", START + program).errors();
+    }
+
+    @Test
+    void aGoodCycleAndItsFinishReportNothing() {
+        assertEquals("", fanuc("G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n" + CONTOUR + "G70 P10 Q20\nM30\n"));
+        assertEquals("", fanuc("G71 P10 Q20 U0.4 W0.1 D2. F0.25\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void e150TheProgramEndsBeforeTheContoursLastBlock() {
+        assertEquals("5:9:E150", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nG01 Z-15.\nM30\n"));
+    }
+
+    @Test
+    void e151TheFirstLabelTwiceInTheContour() {
+        assertEquals("7:1:E151, 7:1:E114", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nN10 G01 Z-15.\nN20 X48.\nM30\n"));
+    }
+
+    @Test
+    void e152TheContourDoesNotFollowTheCycle() {
+        assertEquals("5:5:E152", fanuc("G71 P10 Q20 D2. F0.25\nG00 X50.\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void e153TheLastLabelIsBeyondTheLookAhead() {
+        StringBuilder p = new StringBuilder("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\n");
+        for (int i = 0; i < CycleExpansion.LOOK_AHEAD; i++) {
+            p.append("G01 Z-1.\n");
+        }
+        p.append("N20 X48.\nM30\n");
+        assertEquals("5:9:E153", fanuc(p.toString()));
+    }
+
+    @Test
+    void e154AContourThatGoesBack() {
+        assertEquals("8:1:E154", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nG01 Z-15.\nX18.\nN20 Z-40.\nM30\n"));
+        assertEquals("8:1:E154", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nG01 Z-15.\nX30. Z-10.\nN20 X48.\nM30\n"));
+    }
+
+    @Test
+    void e155AFirstMoveAlongTheCuttingAxis() {
+        assertEquals("6:1:E155", fanuc("G71 P10 Q20 D2. F0.25\nN10 G01 X20. Z-1.\nG01 Z-15.\nN20 X48.\nM30\n"));
+    }
+
+    @Test
+    void e156AndE158DepthAndRetract() {
+        assertEquals("5:5:E156", fanuc("G71 U0. R0.5\nM30\n"));
+        assertEquals("5:13:E156", fanuc("G71 P10 Q20 D0. F0.25\n" + CONTOUR + "M30\n"));
+        assertEquals("5:9:E158", fanuc("G71 U2. R-0.5\nM30\n"));
+    }
+
+    @Test
+    void e157NoDepthOfCut() {
+        assertEquals("5:1:E157", fanuc("G71 P10 Q20 U0.4 W0.1 F0.25\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void e159AnAllowanceInsideThePart() {
+        assertEquals("5:13:E159", fanuc("G71 P10 Q20 U-0.4 W0.1 D2. F0.25\n" + CONTOUR + "M30\n"));
+        assertEquals("5:18:E159", fanuc("G71 P10 Q20 U0.4 W-0.1 D2. F0.25\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void e160AStartPointInsideTheContourWithItsAllowance() {
+        assertEquals("6:1:E160", fanuc("G71 P10 Q20 U4. D2. F0.25\nN10 G00 X50.\nG01 Z-15.\nN20 X52.\nM30\n"));
+    }
+
+    @Test
+    void e161AWordTheCycleDoesNotTake() {
+        assertEquals("5:14:E161", fanuc("G71 U2. R0.5 X3.\nM30\n"));
+        assertEquals("10:13:E161", fanuc("G71 P10 Q20 D2. F0.25\n" + CONTOUR + "G70 P10 Q20 U0.1\nM30\n"));
+    }
+
+    @Test
+    void e162AnMInTheContour() {
+        assertEquals("6:14:E162", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20. M08\nG01 Z-15.\nN20 X48.\nM30\n"));
+    }
+
+    @Test
+    void e163AContourOfOneMove() {
+        assertEquals("5:1:E163", fanuc("G71 P10 Q10 D2. F0.25\nN10 G00 X20.\nM30\n"));
+    }
+
+    @Test
+    void e164TypeTwoIsNotSupportedYet() {
+        assertEquals("5:23:E164", fanuc("G71 P10 Q20 D2. F0.25 R1\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void e165AFindingInAPassNamesThePass() {
+        // the spindle never started: the first cut, in pass 1, is where that matters
+        String program = "G21 G99\nT0101\nG97 S1000\nG00 X52. Z2.\nG71 P10 Q20 D2. F0.25\n" + CONTOUR + "M30\n";
+        assertEquals("5:1:E051, 5:1:E165", Run.of("fanuc", program).errors());
+        assertEquals("[G71, 1, 8, 5, 10, 20]", Run.of("fanuc", program).diagnostics.sorted().get(1).args().toString());
+        // the cycle is not followed past the pass that failed: the tool goes back to the start point
+        Run r = Run.of("fanuc", program);
+        assertEquals(r.line(4).end(), r.checker.state().position());
+    }
+
+    @Test
+    void e166AFinishWithoutRoughing() {
+        assertEquals("5:1:E166", fanuc("G70 P10 Q20\nM30\n"));
+    }
+
+    @Test
+    void e167TooManyPasses() {
+        assertEquals("5:13:E167", fanuc("G71 P10 Q20 D0.0001 F0.25\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void e168AContourWithoutItsLastLabel() {
+        assertEquals("5:1:E168", fanuc("G71 P10 D2. F0.25\n" + CONTOUR + "M30\n"));
+    }
+
+    @Test
+    void aPatternRepeatNeedsAWholeNumberOfPasses() {
+        String contour = "N10 G00 X20. Z2.\nG01 Z-15.\nN20 X48.\nM30\n";
+        assertEquals("", fanuc("G73 U4. W1. R3\nG73 P10 Q20 U0.4 W0.1 F0.25\n" + contour));
+        assertEquals("5:1:E157", fanuc("G73 P10 Q20 U0.4 W0.1 F0.25\n" + contour));
+        assertEquals("5:31:E008", fanuc("G73 P10 Q20 U0.4 W0.1 I4. K1. D0 F0.25\n" + contour));
+        assertEquals("5:13:E013", fanuc("G73 U4. W1. R2.5\nM30\n"));
+    }
+}
