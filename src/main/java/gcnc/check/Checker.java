@@ -160,7 +160,7 @@ public final class Checker {
 
     /** The checker for the other position of the block delete switch, from the state reached so far. */
     private Checker fork() {
-        Checker c = new Checker(tables, profile, new Diagnostics(), errorCap, !skipDeleted, true);
+        Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
         c.state = state;
         c.blocks = blocks;
         c.seenN.or(seenN);
@@ -214,7 +214,7 @@ public final class Checker {
     private void note(Cause c) {
         if (c.later > 0) {
             out.report(new Diagnostic(Code.E115_SAME_CAUSE, Severity.NOTE, c.first.span(),
-                    List.of(Integer.toString(c.later), c.lines.toString())));
+                    List.of(Integer.toString(c.later), c.lines.toString()), c.first.origin().withoutCalls()));
         }
     }
 
@@ -227,7 +227,7 @@ public final class Checker {
                 out.report(Diagnostic.warning(Code.E113_M_WITHOUT_OUTPUT, w.span(), m, profile.name()));
             }
         }
-        if (d.has(gcnc.ir.Letter.N) && !profile.control().increasingN()) {
+        if (d.has(gcnc.ir.Letter.N) && !profile.control().increasingN() && d.block.depth() == 0) {
             long n = (long) d.value(gcnc.ir.Letter.N);
             if (n >= 0 && n < Integer.MAX_VALUE) {
                 if (seenN.get((int) n)) {
@@ -273,7 +273,7 @@ public final class Checker {
         if (kept.size() == b.words().size() || kept.isEmpty()) {
             return b;
         }
-        return new RawBlock(b.line(), kept, kept.get(kept.size() - 1).span(), b.malformed(), b.blockDelete());
+        return b.called(kept, kept.get(kept.size() - 1).span(), b.depth());
     }
 
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
@@ -325,13 +325,13 @@ public final class Checker {
                 out.report(d);
                 if (d.severity() != Severity.NOTE) {
                     out.report(new Diagnostic(Code.E118_BLOCK_DELETE_VARIANT, Severity.NOTE, d.span(),
-                            List.of(switchOn ? "on" : "off")));
+                            List.of(switchOn ? "on" : "off"), d.origin().withoutCalls()));
                 }
             }
         }
     }
 
     private static String key(Diagnostic d) {
-        return d.code() + "@" + d.span() + d.args();
+        return d.code() + "@" + d.origin().file() + ":" + d.span() + d.args();
     }
 }

@@ -27,7 +27,8 @@ final class CheckCommand extends RunCommand {
         int status = ExitCode.CLEAN;
         for (Path file : files) {
             try (Reader in = SourceFiles.open(file)) {
-                Compiler.Result r = Compiler.check(in, new Compiler.Settings(tables, profile, "galil", Optional.empty()));
+                Compiler.Result r = Compiler.check(in, new Compiler.Settings(tables, profile, "galil", Optional.empty())
+                        .withPrograms(SourceFiles.folder(file)));
                 int errors = reporter.report(file.toString(), r.diagnostics());
                 out.println(file + ": " + Reporter.plural(r.blocks(), "block") + ", "
                         + (errors == 0 ? "no errors" : Reporter.plural(errors, "error")));

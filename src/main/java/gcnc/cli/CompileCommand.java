@@ -55,7 +55,8 @@ final class CompileCommand extends RunCommand {
             try (AtomicOutput dmc = new AtomicOutput(target); AtomicOutput map = new AtomicOutput(mapFile(target))) {
                 SourceMap mapper = new SourceMap(map::line);
                 r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(),
-                        simulate ? Optional.of(stock.options(profile)) : Optional.empty(), sourceMap),
+                        simulate ? Optional.of(stock.options(profile)) : Optional.empty(), sourceMap)
+                        .withPrograms(SourceFiles.folder(file)),
                         mapper.wrap(line -> dmc.line(line.text())));
                 reporter.report(file.toString(), r.diagnostics());
                 if (r.ok()) {

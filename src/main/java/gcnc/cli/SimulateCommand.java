@@ -67,7 +67,8 @@ final class SimulateCommand extends RunCommand {
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags));
             } else {
                 LineSink discard = line -> { };
-                Compiler.Result r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(), Optional.of(options)), discard);
+                Compiler.Result r = Compiler.compile(in, new Compiler.Settings(tables, profile, dialect.name(), Optional.of(options))
+                        .withPrograms(SourceFiles.folder(file)), discard);
                 diags = r.diagnostics();
                 report = r.simulation();
             }

@@ -21,6 +21,12 @@ final class SourceFiles {
                         .onUnmappableCharacter(CodingErrorAction.REPLACE)), 1 << 16);
     }
 
+    /** The folder of a program file, where the programs it calls are looked for ("" for a bare file name). */
+    static Path folder(Path file) {
+        Path parent = file.getParent();
+        return parent != null ? parent : Path.of("");
+    }
+
     /** The short reason an I/O exception gives, without Java's class names. */
     static String reason(IOException e) {
         if (e instanceof java.nio.file.NoSuchFileException) {

@@ -2,17 +2,78 @@ package gcnc.diag;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 
 /**
  * Collects the findings of one run. One instance per run: there is no global error flag.
  * Memory grows with the number of findings, never with program length.
+ *
+ * <p>Placing: the stage that follows the program's flow says where the blocks it hands on come
+ * from ({@link #placeIn}); a finding reported without an origin of its own is put there (the
+ * program file as written, unless said otherwise). A finding
+ * inside a subprogram gets one note per call that led to it (E136), and is reported once even when
+ * the subprogram runs again (a repeat or a second call finds the same thing at the same place).
  */
 public final class Diagnostics {
     private final List<Diagnostic> all = new ArrayList<>();
     private int errors;
+    /** Shared with {@link #sibling()}s: where the blocks being checked now come from. */
+    private final Place place;
+    /** Placed findings inside subprograms already reported (code, file, span, text). */
+    private final Set<String> placed = new HashSet<>();
+
+    /** Null until the first {@link #placeIn}: a collection no stage places (a scratch one) keeps findings as made. */
+    private static final class Place {
+        Origin origin;
+    }
+
+    public Diagnostics() {
+        this(new Place());
+    }
+
+    private Diagnostics(Place place) {
+        this.place = place;
+    }
+
+    /** A separate collection that places findings where this one does (a second checker on the same blocks). */
+    public Diagnostics sibling() {
+        return new Diagnostics(place);
+    }
+
+    /** From now on, findings reported without an origin of their own belong to {@code origin}. */
+    public void placeIn(Origin origin) {
+        place.origin = java.util.Objects.requireNonNull(origin);
+    }
+
+    /** Where findings reported without an origin of their own are put now (the program file if nobody said). */
+    public Origin place() {
+        return place.origin == null ? Origin.PROGRAM : place.origin;
+    }
 
     public void report(Diagnostic d) {
+        Origin o = place.origin;
+        if (o != null && d.origin() == Origin.UNPLACED) {
+            d = d.in(o);
+            if (!o.calls().isEmpty()) {
+                if (!placed.add(d.code() + "@" + o.file() + ":" + d.span() + d.args())) {
+                    return;
+                }
+                add(d);
+                if (d.severity() != Severity.NOTE) {
+                    for (Origin.Call c : o.calls()) {
+                        add(new Diagnostic(Code.E136_CALLED_FROM, Severity.NOTE, d.span(),
+                                List.of(c.program(), Integer.toString(c.line()), c.words()), o.withoutCalls()));
+                    }
+                }
+                return;
+            }
+        }
+        add(d);
+    }
+
+    private void add(Diagnostic d) {
         all.add(d);
         if (d.severity() == Severity.ERROR) {
             errors++;
@@ -46,7 +107,7 @@ public final class Diagnostics {
         return all.size();
     }
 
-    /** Every finding, sorted by position (stable: same position keeps reporting order). */
+    /** Every finding, sorted by file and position (stable: same position keeps reporting order). */
     public List<Diagnostic> sorted() {
         List<Diagnostic> copy = new ArrayList<>(all);
         Collections.sort(copy);

@@ -23,7 +23,7 @@ public final class ControlLoader {
     /** The keys of control.cfg (tables/controls/README.md); any other is a fault, with a suggestion. */
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
-            "m.unlisted");
+            "m.unlisted", "call.p", "call.depth");
 
     private ControlLoader() {
     }
@@ -88,7 +88,17 @@ public final class ControlLoader {
                 f.choice("dwell.p", "milliseconds", "milliseconds", "seconds").equals("seconds"),
                 f.choice("g28.bare", "error", "error", "home").equals("home"),
                 Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
-                f.choice("m.unlisted", "error", "error", "builder").equals("builder"));
+                f.choice("m.unlisted", "error", "error", "builder").equals("builder"), calls(f));
+    }
+
+    /** {@code call.p} (number or count_and_number) and {@code call.depth} (1 to 99, default 4). */
+    private static Control.Calls calls(ProfileFile f) throws TableException {
+        boolean countInP = f.choice("call.p", "number", "number", "count_and_number").equals("count_and_number");
+        String depth = f.text("call.depth", "4");
+        if (!depth.matches("[0-9]{1,2}") || Integer.parseInt(depth) < 1) {
+            throw f.fault(f.required("call.depth"), "'call.depth' is a whole number from 1 to 99, not '" + depth + "'");
+        }
+        return new Control.Calls(countInP, Integer.parseInt(depth));
     }
 
     private static Map<Integer, GFunction> gTable(Csv csv) throws TableException {

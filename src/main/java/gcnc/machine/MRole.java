@@ -10,6 +10,12 @@ public enum MRole {
     CHUCK_OPEN(10), CHUCK_CLOSE(11), END(30),
     /** Anything else the machine does through its outputs (coolant, tailstock, conveyor, gears). */
     OUTPUT(-1),
+    /** M98: call a program by its number (P), L times; followed by gcnc.flow, not by the checker. */
+    CALL(-3),
+    /** M99: the end of a called program (return to the caller); in the main program, its end. */
+    RETURN(-4),
+    /** Haas M97: call the block labelled N(P) of the same program, L times; followed by gcnc.flow. */
+    LOCAL_CALL(-5),
     /** A function gcnc cannot follow yet (subprograms): using it is E110. */
     UNSUPPORTED(-2);
 
@@ -21,6 +27,11 @@ public enum MRole {
 
     public int number() {
         return number;
+    }
+
+    /** Program flow that gcnc.flow follows: a call. */
+    public boolean call() {
+        return this == CALL || this == LOCAL_CALL;
     }
 
     public boolean spindleGroup() {

@@ -1,0 +1,263 @@
+package gcnc.flow;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Origin;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.Control;
+import gcnc.machine.MRole;
+import gcnc.parse.BlockSource;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Deque;
+import java.util.IdentityHashMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The program-flow stage: the blocks of a program in the order the control runs them, following
+ * subprogram calls (M98 P, repeated by L or, on Fanuc, by the digits of P before the program
+ * number) and returns (M99). The checker is handed each block once per time it runs, without its
+ * flow words (M98 P L, M99), at its call depth; findings in a called program are placed in its
+ * file with a note per call (Diagnostics.placeIn, E136). docs/program-flow.md.
+ *
+ * <p>Memory: a program without a call is read one line at a time, as before. At the first call
+ * the rest of the file is read and held (the called programs are after the main program's end),
+ * at most {@link #HOLD_LIMIT} blocks in all, with the files beside it that calls name; past that
+ * the call is E137 and calls are no longer followed.
+ */
+public final class ProgramFlow implements BlockSource {
+    /** The most blocks held in memory for calls (the rest of the file after the first call, and the called files). */
+    public static final int HOLD_LIMIT = 200_000;
+    /** The largest repeat count (L, or the leading digits of a Fanuc P): four digits. */
+    private static final int MAX_REPEAT = 9999;
+
+    private final MainFile main;
+    private final Control control;
+    private final Diagnostics diags;
+    private final Library library;
+    /** The programs being run, innermost first; empty while the main program runs. */
+    private final Deque<Frame> stack = new ArrayDeque<>();
+    private final Set<Program> reportedNoM99 = Collections.newSetFromMap(new IdentityHashMap<>());
+    /** The first call read the rest of the file into the library. */
+    private boolean libraryRead;
+    /** E137: calls are no longer followed. */
+    private boolean callsOff;
+    /** The block that ends the main program has been handed on. */
+    private boolean finished;
+
+    /** One program being run: where it is, how many more times it runs, and where its findings go. */
+    private static final class Frame {
+        final Program program;
+        final Origin origin;
+        int next;
+        int repeats;
+        boolean returning;
+
+        Frame(Program program, Origin origin, int repeats) {
+            this.program = program;
+            this.origin = origin;
+            this.repeats = repeats;
+        }
+    }
+
+    /**
+     * @param folder where the files of called programs that are not in the program's own file are
+     *               looked for (the program file's folder); empty: only its own file
+     */
+    public ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder) {
+        this(reader, control, diags, folder, HOLD_LIMIT);
+    }
+
+    ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder, int holdLimit) {
+        this.main = new MainFile(reader, control, p -> diags.report(MainFile.neverCalled(p)));
+        this.control = control;
+        this.diags = diags;
+        this.library = new Library(folder, diags, holdLimit);
+    }
+
+    @Override
+    public RawBlock next() throws IOException {
+        while (true) {
+            Frame f = stack.peek();
+            if (f == null) {
+                return mainBlock();
+            }
+            if (f.returning || f.next == f.program.blocks().size()) {
+                if (!f.returning && reportedNoM99.add(f.program)) {
+                    diags.report(Diagnostic.error(Code.E140_NO_M99, f.program.start(), f.program.name())
+                            .in(f.program.origin()));
+                }
+                f.returning = false;
+                f.next = 0;
+                if (--f.repeats == 0) {
+                    stack.pop();
+                }
+                continue;
+            }
+            RawBlock b = f.program.blocks().get(f.next++);
+            diags.placeIn(f.origin);
+            return follow(b, f);
+        }
+    }
+
+    @Override
+    public int lines() {
+        return main.lines();
+    }
+
+    private RawBlock mainBlock() throws IOException {
+        diags.placeIn(Origin.PROGRAM);
+        RawBlock b = main.next();
+        if (b == null) {
+            if (libraryRead && !callsOff) {
+                library.neverCalled();
+            }
+            return null;
+        }
+        if (finished) {
+            return b; // after the end: never run (the checker reports it, E053); its calls are not followed
+        }
+        finished = main.ends(b);
+        return follow(b, null);
+    }
+
+    /** The block as the checker is given it, after following its call or return ({@code f}: the program it is in, null for the main program). */
+    private RawBlock follow(RawBlock b, Frame f) throws IOException {
+        int depth = f == null ? 0 : stack.size();
+        if (b.malformed() || b.blockDelete() > 0 && control.blockDelete() == Control.BlockDelete.ON) {
+            return depth == 0 ? b : b.called(b.words(), b.last(), depth);
+        }
+        FlowWords w = FlowWords.of(b, control);
+        if (w.flow() == null) {
+            return depth == 0 ? b : b.called(b.words(), b.last(), depth);
+        }
+        if (w.role() == MRole.RETURN) {
+            return giveBack(b, w, f, depth);
+        }
+        Frame callee = call(b, w, f);
+        RawBlock rest = b.called(w.rest(), last(w.rest(), w.flow()), depth);
+        if (callee != null) {
+            stack.push(callee);
+        }
+        return rest;
+    }
+
+    /** M99: the end of a called program; in the main program its end, with a warning (E139). M99 P: E141. */
+    private RawBlock giveBack(RawBlock b, FlowWords w, Frame f, int depth) {
+        if (w.p() != null) {
+            diags.error(Code.E141_RETURN_TO_N, w.p().span(), w.flow() + " " + w.p());
+        }
+        if (f == null) {
+            diags.report(Diagnostic.warning(Code.E139_M99_IN_MAIN, w.flow().span(), w.flow()));
+            List<Word> kept = new ArrayList<>(b.words());
+            kept.remove(w.p());
+            return b.called(kept, last(kept, w.flow()), 0); // the checker takes M99 as the end
+        }
+        f.returning = true;
+        return b.called(w.rest(), last(w.rest(), w.flow()), depth);
+    }
+
+    /** The frame an M98 starts, or null after reporting why it does not run. */
+    private Frame call(RawBlock b, FlowWords w, Frame caller) throws IOException {
+        Word at = w.flow();
+        if (w.p() == null) {
+            diags.error(Code.E132_CALL_WITHOUT_P, at.span(), at);
+            return null;
+        }
+        long p = FlowWords.digits(w.p().number());
+        if (p < 0) {
+            diags.error(Code.E130_NO_PROGRAM_HERE, w.p().span(), w.p().number());
+            return null;
+        }
+        long number = p;
+        long repeats = 1;
+        boolean countInP = control.calls().countInP() && w.p().number().length() > 4;
+        if (countInP) {
+            number = p % 10_000;
+            repeats = p / 10_000 == 0 ? 1 : p / 10_000;
+            if (repeats > MAX_REPEAT) {
+                diags.error(Code.E135_BAD_REPEAT_COUNT, w.p().span(), w.p());
+                return null;
+            }
+        }
+        if (w.l() != null) {
+            if (countInP && p / 10_000 > 0) {
+                diags.error(Code.E143_TWO_REPEAT_COUNTS, w.l().span(), w.written());
+                return null;
+            }
+            repeats = FlowWords.digits(w.l().number());
+            if (repeats < 1 || repeats > MAX_REPEAT) {
+                diags.error(Code.E135_BAD_REPEAT_COUNT, w.l().span(), w.l());
+                return null;
+            }
+        }
+        if (!libraryRead && !callsOff) {
+            libraryRead = true;
+            if (!main.readAll(library.room(), library::add)) {
+                callsOff = true;
+            }
+        }
+        if (callsOff) {
+            diags.error(Code.E137_TOO_LONG_TO_HOLD, at.span(), library.limit());
+            return null;
+        }
+        String chain = recursion(number);
+        if (chain != null) {
+            diags.error(Code.E133_RECURSIVE_CALL, at.span(), Program.name(number), chain);
+            return null;
+        }
+        if (stack.size() >= control.calls().depth()) {
+            diags.error(Code.E134_CALLS_TOO_DEEP, at.span(), control.calls().depth(), path(number));
+            return null;
+        }
+        Program program = library.find(number, w.p(), at.span());
+        if (program == null) {
+            return null;
+        }
+        List<Origin.Call> calls = new ArrayList<>();
+        calls.add(new Origin.Call(program.name(), b.line(), w.written()));
+        if (caller != null) {
+            calls.addAll(caller.origin.calls());
+        }
+        return new Frame(program, new Origin(program.file(), calls), (int) repeats);
+    }
+
+    /** The chain of calls that comes back to {@code number} ("O1000 > O2000 > O1000"), or null. */
+    private String recursion(long number) {
+        List<String> names = new ArrayList<>();
+        if (main.number() >= 0) {
+            names.add("O" + Program.name(main.number()));
+        }
+        for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
+            names.add("O" + i.next().program.name());
+        }
+        int from = names.indexOf("O" + Program.name(number));
+        if (from < 0) {
+            return null;
+        }
+        names.add("O" + Program.name(number));
+        return String.join(" > ", names.subList(from, names.size()));
+    }
+
+    /** The calls in progress and the one asked for: "O1000 > O2000 > ... > O5000". */
+    private String path(long number) {
+        List<String> names = new ArrayList<>();
+        for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
+            names.add("O" + i.next().program.name());
+        }
+        names.add("O" + Program.name(number));
+        return String.join(" > ", names);
+    }
+
+    private static gcnc.diag.Span last(List<Word> words, Word otherwise) {
+        return words.isEmpty() ? otherwise.span() : words.get(words.size() - 1).span();
+    }
+}
