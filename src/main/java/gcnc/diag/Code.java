@@ -191,8 +191,10 @@ public enum Code {
     E142_DUPLICATE_PROGRAM(142),
     /** Program flow: the repeat count given twice (a Fanuc P with more than 4 digits and an L). */
     E143_TWO_REPEAT_COUNTS(143),
-    /** Program flow: M97 names an N label the program does not have. */
-    E144_NO_LOCAL_LABEL(144),
+    /** Program flow (note): as E136, for a call written in a file of its own (named). */
+    E144_CALLED_FROM_FILE(144),
+    /** Program flow (note): as E136, for a call in the program file when the finding is in another file. */
+    E145_CALLED_FROM_PROGRAM_FILE(145),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

@@ -63,14 +63,29 @@ public final class Diagnostics {
                 add(d);
                 if (d.severity() != Severity.NOTE) {
                     for (Origin.Call c : o.calls()) {
-                        add(new Diagnostic(Code.E136_CALLED_FROM, Severity.NOTE, d.span(),
-                                List.of(c.program(), Integer.toString(c.line()), c.words()), o.withoutCalls()));
+                        add(calledFrom(c, d.span(), o.withoutCalls()));
                     }
                 }
                 return;
             }
         }
         add(d);
+    }
+
+    /**
+     * The note for one call (at the finding): E136 when the call and the finding are both in the
+     * program file, else it names the file of the call (E144, or E145 for the program file).
+     */
+    private static Diagnostic calledFrom(Origin.Call c, Span at, Origin where) {
+        List<String> args = List.of(c.program(), Integer.toString(c.line()), c.words());
+        Code code = Code.E136_CALLED_FROM;
+        if (c.file() != null) {
+            code = Code.E144_CALLED_FROM_FILE;
+            args = List.of(c.program(), Integer.toString(c.line()), c.words(), c.file());
+        } else if (where.file() != null) {
+            code = Code.E145_CALLED_FROM_PROGRAM_FILE;
+        }
+        return new Diagnostic(code, Severity.NOTE, at, args, where);
     }
 
     private void add(Diagnostic d) {

@@ -18,8 +18,11 @@ public record Origin(String file, List<Call> calls) {
      */
     public static final Origin UNPLACED = new Origin(null, List.of());
 
-    /** One call: the program called ("O1000"), and the line and words of the call in its caller. */
-    public record Call(String program, int line, String words) {
+    /**
+     * One call: the program called ("1000" for O1000), the line and words of the call in its
+     * caller, and the file the caller is in ({@code null}: the program's own).
+     */
+    public record Call(String program, int line, String words, String file) {
     }
 
     public Origin {

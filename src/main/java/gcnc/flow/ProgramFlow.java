@@ -223,7 +223,7 @@ public final class ProgramFlow implements BlockSource {
             return null;
         }
         List<Origin.Call> calls = new ArrayList<>();
-        calls.add(new Origin.Call(program.name(), b.line(), w.written()));
+        calls.add(new Origin.Call(program.name(), b.line(), w.written(), caller == null ? null : caller.program.file()));
         if (caller != null) {
             calls.addAll(caller.origin.calls());
         }

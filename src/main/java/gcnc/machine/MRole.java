@@ -14,9 +14,7 @@ public enum MRole {
     CALL(-3),
     /** M99: the end of a called program (return to the caller); in the main program, its end. */
     RETURN(-4),
-    /** Haas M97: call the block labelled N(P) of the same program, L times; followed by gcnc.flow. */
-    LOCAL_CALL(-5),
-    /** A function gcnc cannot follow yet (subprograms): using it is E110. */
+    /** A function gcnc cannot follow yet (Haas M97, live tooling): using it is E110. */
     UNSUPPORTED(-2);
 
     private final int number;
@@ -31,7 +29,7 @@ public enum MRole {
 
     /** Program flow that gcnc.flow follows: a call. */
     public boolean call() {
-        return this == CALL || this == LOCAL_CALL;
+        return this == CALL;
     }
 
     public boolean spindleGroup() {

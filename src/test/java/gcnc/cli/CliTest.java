@@ -51,6 +51,20 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
+    /** docs/program-flow.md shows the output of docs/examples/flow/grooves.nc (a call into a file beside it and back). */
+    @Test
+    void theProgramFlowExampleIsWhatGcncPrints() throws IOException {
+        String doc = Files.readString(Path.of("docs/program-flow.md"));
+        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/flow/grooves.nc --machine fanuc\n";
+        int from = doc.indexOf(command);
+        assertTrue(from >= 0, "docs/program-flow.md lost its example");
+        from += command.length();
+        String shown = doc.substring(from, doc.indexOf("```", from));
+        Run r = gcnc("check", "docs/examples/flow/grooves.nc", "--machine", "fanuc");
+        assertEquals(1, r.status());
+        assertEquals(shown, r.err() + r.out());
+    }
+
     @Test
     void theSampleProgramChecksClean() {
         Run r = gcnc("check", "samples/turning.nc");

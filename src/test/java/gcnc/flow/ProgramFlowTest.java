@@ -237,6 +237,11 @@ class ProgramFlowTest {
     }
 
     @Test
+    void aCallAfterTheEndIsNeverRun() {
+        assertEquals("7:1:E053, 8:1:E138", codes("fanuc-a", START + "M30\nM98 P1000\n" + O1000));
+    }
+
+    @Test
     void m99WithPIsNotSupportedYet() {
         assertEquals("10:5:E141, 10:5:E136", codes("fanuc-a", START + "M98 P1000\nM30\nO1000\nG00 Z2.\nM99 P20\n"));
     }
@@ -302,10 +307,10 @@ class ProgramFlowTest {
         Files.delete(dir.resolve("O1000.nc"));
         Files.writeString(dir.resolve("1000.nc"), "G01 Z-20. F0.2 Q1.\nG00 X54.\nZ2.\nM99\n");
         Compiler.Result r = check("fanuc-a", p, Optional.of(dir));
-        assertEquals("1000.nc:1:16:E108, 1000.nc:1:16:E136", codes(r));
+        assertEquals("1000.nc:1:16:E108, 1000.nc:1:16:E145", codes(r));
         String beside = dir.resolve("1000.nc").toString();
         assertTrue(messages(r).contains(beside + ":1:16: error[E108]: word Q has no meaning in a G01 block\n"
-                + beside + ":1:16: note[E136]: in O1000 called from line 6 (M98 P1000)"), messages(r));
+                + beside + ":1:16: note[E145]: in O1000 called from line 6 of the program file (M98 P1000)"), messages(r));
     }
 
     @Test
