@@ -3,8 +3,6 @@ package gcnc.flow;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
-import gcnc.machine.Control;
-import gcnc.machine.MFunction;
 import gcnc.machine.MRole;
 import java.util.ArrayList;
 import java.util.List;
@@ -16,21 +14,19 @@ import java.util.List;
  * it). {@code flow} is null for a block without one.
  */
 record FlowWords(Word flow, MRole role, Word p, Word l, List<Word> rest) {
-    /** Splits a block's words; the block has no flow word when {@code flow()} is null. */
-    static FlowWords of(RawBlock b, Control control) {
+    /** Splits a block's words; null for a block without a flow word. */
+    static FlowWords of(RawBlock b, FlowCodes codes) {
         Word flow = null;
-        MRole role = null;
         for (Word w : b.words()) {
-            MRole r = w.letter() == Letter.M ? roleOf(w, control) : null;
-            if (r == MRole.CALL || r == MRole.RETURN) {
+            if (codes.flow(w)) {
                 flow = w;
-                role = r;
                 break;
             }
         }
         if (flow == null) {
-            return new FlowWords(null, null, null, null, b.words());
+            return null;
         }
+        MRole role = codes.role(flow);
         Word p = null;
         Word l = null;
         List<Word> rest = new ArrayList<>(b.words().size());
@@ -47,12 +43,6 @@ record FlowWords(Word flow, MRole role, Word p, Word l, List<Word> rest) {
             }
         }
         return new FlowWords(flow, role, p, l, rest);
-    }
-
-    private static MRole roleOf(Word w, Control control) {
-        long code = digits(w.number());
-        MFunction f = code >= 0 && code <= Integer.MAX_VALUE ? control.m().get((int) code) : null;
-        return f == null ? null : f.role();
     }
 
     /** The value of a number written with digits only (M98, P1000, L2), or -1 for anything else. */

@@ -7,8 +7,6 @@ import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.Control;
-import gcnc.machine.MFunction;
-import gcnc.machine.MRole;
 import gcnc.parse.BlockSource;
 import java.io.IOException;
 import java.util.ArrayDeque;
@@ -29,6 +27,7 @@ import java.util.function.Consumer;
 final class MainFile {
     private final BlockSource reader;
     private final Control control;
+    private final FlowCodes codes;
     /** The main program's blocks read ahead by {@link #readAll}, in order. */
     private final ArrayDeque<RawBlock> ahead = new ArrayDeque<>();
     /** Where each program after the main program's end goes when its last block has been read. */
@@ -44,9 +43,10 @@ final class MainFile {
     private final List<RawBlock> open = new ArrayList<>();
     private boolean complete;
 
-    MainFile(BlockSource reader, Control control, Consumer<Program> neverCalled) {
+    MainFile(BlockSource reader, Control control, FlowCodes codes, Consumer<Program> neverCalled) {
         this.reader = reader;
         this.control = control;
+        this.codes = codes;
         this.programs = neverCalled;
     }
 
@@ -155,12 +155,8 @@ final class MainFile {
             return false;
         }
         for (Word w : b.words()) {
-            if (w.letter() == Letter.M) {
-                long code = FlowWords.digits(w.number());
-                MFunction f = code >= 0 && code < Integer.MAX_VALUE ? control.m().get((int) code) : null;
-                if (f != null && (f.role() == MRole.END || f.role() == MRole.RETURN)) {
-                    return true;
-                }
+            if (codes.ends(w)) {
+                return true;
             }
         }
         return false;

@@ -41,6 +41,7 @@ public final class ProgramFlow implements BlockSource {
 
     private final MainFile main;
     private final Control control;
+    private final FlowCodes codes;
     private final Diagnostics diags;
     private final Library library;
     /** The programs being run, innermost first; empty while the main program runs. */
@@ -77,7 +78,8 @@ public final class ProgramFlow implements BlockSource {
     }
 
     ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder, int holdLimit) {
-        this.main = new MainFile(reader, control, p -> diags.report(MainFile.neverCalled(p)));
+        this.codes = new FlowCodes(control);
+        this.main = new MainFile(reader, control, codes, p -> diags.report(MainFile.neverCalled(p)));
         this.control = control;
         this.diags = diags;
         this.library = new Library(folder, diags, holdLimit);
@@ -135,8 +137,8 @@ public final class ProgramFlow implements BlockSource {
         if (b.malformed() || b.blockDelete() > 0 && control.blockDelete() == Control.BlockDelete.ON) {
             return depth == 0 ? b : b.called(b.words(), b.last(), depth);
         }
-        FlowWords w = FlowWords.of(b, control);
-        if (w.flow() == null) {
+        FlowWords w = FlowWords.of(b, codes);
+        if (w == null) {
             return depth == 0 ? b : b.called(b.words(), b.last(), depth);
         }
         if (w.role() == MRole.RETURN) {
