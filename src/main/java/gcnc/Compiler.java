@@ -132,11 +132,12 @@ public final class Compiler {
     /**
      * The blocks of a program as the control would run them: the one place where the stages
      * between the parser and the checker are put together, for check and compile alike. The
-     * parser's blocks go through the program flow (subprogram calls), which keeps a program
-     * without calls streaming.
+     * parser's blocks go through the program flow (subprogram calls, macro statements), which
+     * keeps a program without calls or macro statements streaming.
      */
     private static BlockSource blocks(Reader source, Settings settings, Diagnostics diags) {
-        return new ProgramFlow(new BlockReader(source, diags), settings.profile().control(), diags,
+        gcnc.machine.Control control = settings.profile().control();
+        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros()), control, diags,
                 settings.programs());
     }
 

@@ -139,6 +139,11 @@ public final class Checker {
             out.error(Code.E053_M30_NOT_LAST, first);
             return Optional.empty();
         }
+        if (b.macro() != null) {
+            // a macro statement is run by gcnc.flow; one reaching the checker was not followed
+            out.error(Code.E111_MACRO_NOT_SUPPORTED_YET, b.last(), b.macro().strip());
+            return Optional.empty();
+        }
         if (b.malformed()) {
             state = Salvage.keep(b, state, functions, profile);
             return Optional.empty();

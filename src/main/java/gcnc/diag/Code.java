@@ -185,8 +185,8 @@ public enum Code {
     E139_M99_IN_MAIN(139),
     /** Program flow: a called program that ends without M99. */
     E140_NO_M99(140),
-    /** Program flow: M99 P, a return to a sequence number of the caller, not supported yet. */
-    E141_RETURN_TO_N(141),
+    /** Macro B: GOTO, END or DO with no label or loop to go to in the program (as far as gcnc holds it). */
+    E141_NO_JUMP_TARGET(141),
     /** Program flow: two programs with the same number after the main program's end. */
     E142_DUPLICATE_PROGRAM(142),
     /** Program flow: the repeat count given twice (a Fanuc P with more than 4 digits and an L). */
@@ -195,6 +195,14 @@ public enum Code {
     E144_CALLED_FROM_FILE(144),
     /** Program flow (note): as E136, for a call in the program file when the finding is in another file. */
     E145_CALLED_FROM_PROGRAM_FILE(145),
+    /** Macro B: a value that cannot be had: a vacant variable in a word, a division by zero, a function outside its domain. */
+    E146_MACRO_NO_VALUE(146),
+    /** Macro B: a variable only the machine knows when it runs (positions, modal state, clocks, values set before this program). */
+    E147_MACRO_RUN_TIME_ONLY(147),
+    /** Macro B: #3000, the program's own alarm, is reached. */
+    E148_MACRO_ALARM(148),
+    /** Macro B: a loop (WHILE, or a GOTO that jumps back) that runs past gcnc's limit: an endless loop. */
+    E149_MACRO_ENDLESS_LOOP(149),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

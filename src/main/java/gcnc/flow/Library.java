@@ -36,10 +36,13 @@ final class Library {
     private final Optional<Path> folder;
     private final Diagnostics diags;
     private final int limit;
+    /** The control has macro B: a called file's macro lines are read as such. */
+    private final boolean macros;
     private int held;
 
-    Library(Optional<Path> folder, Diagnostics diags, int limit) {
+    Library(Optional<Path> folder, Diagnostics diags, int limit, boolean macros) {
         this.folder = folder;
+        this.macros = macros;
         this.diags = diags;
         this.limit = limit;
     }
@@ -109,7 +112,7 @@ final class Library {
         Origin caller = diags.place();
         diags.placeIn(Origin.file(shown));
         try (Reader in = open(file)) {
-            BlockReader reader = new BlockReader(in, diags);
+            BlockReader reader = BlockReader.forControl(in, diags, macros);
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
                 if (held + blocks.size() >= limit) {
                     diags.placeIn(caller);

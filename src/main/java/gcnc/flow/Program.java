@@ -10,9 +10,19 @@ import java.util.List;
  * own file, after the main program's end), its blocks without the O header, and where it starts
  * (its O word; line 1 of a file of its own without one).
  */
-record Program(int number, String file, List<RawBlock> blocks, Span start) {
+record Program(int number, String file, List<RawBlock> blocks, Span start) implements Blocks {
     Program {
         blocks = List.copyOf(blocks);
+    }
+
+    @Override
+    public RawBlock get(int index) {
+        return index >= 0 && index < blocks.size() ? blocks.get(index) : null;
+    }
+
+    @Override
+    public int first() {
+        return 0;
     }
 
     /** Its number as the control shows it: O1000, O0100. */

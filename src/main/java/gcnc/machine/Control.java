@@ -32,12 +32,14 @@ import java.util.TreeMap;
  * @param blockDelete       how a '/' block is treated
  * @param builderM          an M code not in the table is passed to the machine; else E012
  * @param calls             how M98 names the program and its repeat count, and how deep calls nest
+ * @param macros            the control runs Fanuc macro B ({@code #} variables, {@code [ ]}
+ *                          expressions, IF/GOTO/WHILE); else a macro line is E111
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
-                      BlockDelete blockDelete, boolean builderM, Calls calls) {
+                      BlockDelete blockDelete, boolean builderM, Calls calls, boolean macros) {
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
 

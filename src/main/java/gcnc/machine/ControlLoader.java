@@ -23,7 +23,7 @@ public final class ControlLoader {
     /** The keys of control.cfg (tables/controls/README.md); any other is a fault, with a suggestion. */
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
-            "m.unlisted", "call.p", "call.depth");
+            "m.unlisted", "call.p", "call.depth", "macros");
 
     private ControlLoader() {
     }
@@ -88,7 +88,8 @@ public final class ControlLoader {
                 f.choice("dwell.p", "milliseconds", "milliseconds", "seconds").equals("seconds"),
                 f.choice("g28.bare", "error", "error", "home").equals("home"),
                 Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
-                f.choice("m.unlisted", "error", "error", "builder").equals("builder"), calls(f));
+                f.choice("m.unlisted", "error", "error", "builder").equals("builder"), calls(f),
+                f.choice("macros", "none", "none", "fanuc-b").equals("fanuc-b"));
     }
 
     /** {@code call.p} (number or count_and_number) and {@code call.depth} (1 to 99, default 4). */

@@ -243,7 +243,7 @@ class ProgramFlowTest {
 
     @Test
     void m99WithPIsNotSupportedYet() {
-        assertEquals("10:5:E141, 10:5:E136", codes("fanuc-a", START + "M98 P1000\nM30\nO1000\nG00 Z2.\nM99 P20\n"));
+        assertEquals("10:5:E110, 10:5:E136", codes("fanuc-a", START + "M98 P1000\nM30\nO1000\nG00 Z2.\nM99 P20\n"));
     }
 
     // ---- the checker follows the program through the call ----

@@ -1,0 +1,595 @@
+package gcnc.flow;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.Letter;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One Fanuc macro B statement line, read and run in one go (a line in a loop is read again each
+ * time it runs): an assignment {@code #101 = [#1 + 2.5] * 2}, a block of words with variable or
+ * expression values {@code G01 X#101 Z-[#2 + 1] F0.2}, {@code GOTO n}, {@code IF [a GT b] GOTO n},
+ * {@code IF [..] THEN #1 = ..}, {@code WHILE [..] DO m}, {@code END m}, and the alarm
+ * {@code #3000 = n (text)}. Spaces are ignored, {@code ( )} are comments, {@code [ ]} group.
+ * What the line comes to is an {@link Outcome}; an error is reported at its column and the line
+ * comes to nothing. Grammar and sources: docs/program-flow.md.
+ */
+final class MacroLine {
+    /** What a line comes to. */
+    sealed interface Outcome permits Words, Done, Jump, Loop, EndLoop {
+    }
+
+    /** Words for the checker, their values worked out. */
+    record Words(List<Word> words) implements Outcome {
+    }
+
+    /** Nothing to hand on: an assignment, an IF that does not hold, or an error already reported. */
+    record Done() implements Outcome {
+    }
+
+    /** GOTO (or an IF that holds): go to the block labelled N{@code label}. */
+    record Jump(long label, Span at, String text) implements Outcome {
+    }
+
+    /** WHILE [..] DO id: whether the condition holds. */
+    record Loop(boolean holds, int id, Span at, String text) implements Outcome {
+    }
+
+    /** END id: back to the WHILE of loop id. */
+    record EndLoop(int id, Span at, String text) implements Outcome {
+    }
+
+    static final Done DONE = new Done();
+    /** The addresses that take a whole number (the parser's integer words, and P and L). */
+    private static final String WHOLE = "GMNOSTPL";
+
+    /** An error at a column of the line: reported by {@link #run}. */
+    private static final class Fault extends Exception {
+        final Code code;
+        final int at;
+        final transient Object[] args;
+
+        Fault(Code code, int at, Object... args) {
+            super(null, null, false, false);
+            this.code = code;
+            this.at = at;
+            this.args = args;
+        }
+    }
+
+    private final String s;
+    private final int line;
+    private final Variables vars;
+    private final Diagnostics diags;
+    private int i;
+    /** The text of the last comment passed, for #3000's message. */
+    private String comment = "";
+
+    private MacroLine(String s, int line, Variables vars, Diagnostics diags) {
+        this.s = s;
+        this.line = line;
+        this.vars = vars;
+        this.diags = diags;
+    }
+
+    /** Runs a macro line: what it comes to, after reporting any error in it. */
+    static Outcome run(RawBlock b, Variables vars, Diagnostics diags) {
+        MacroLine m = new MacroLine(b.macro(), b.line(), vars, diags);
+        try {
+            return m.statement();
+        } catch (Fault f) {
+            diags.error(f.code, Span.of(b.line(), f.at + 1), f.args);
+            return DONE;
+        }
+    }
+
+    /** The N label a line starts with, or -1 (for GOTO's search). */
+    static long label(String text) {
+        MacroLine m = new MacroLine(text, 1, null, null);
+        try {
+            m.blank();
+            if (m.labelAhead()) {
+                m.i++;
+                return FlowWords.digits(m.digits());
+            }
+        } catch (Fault f) {
+            return -1;
+        }
+        return -1;
+    }
+
+    /** Whether the line is {@code END id} (for a WHILE whose condition does not hold). */
+    static boolean isEnd(String text, int id) {
+        MacroLine m = new MacroLine(text, 1, null, null);
+        try {
+            m.blank();
+            if (m.labelAhead()) {
+                m.i++;
+                m.digits();
+                m.blank();
+            }
+            return m.keyword("END") && m.loopId() == id;
+        } catch (Fault f) {
+            return false;
+        }
+    }
+
+    private Outcome statement() throws Fault {
+        blank();
+        Word n = null;
+        if (labelAhead()) {
+            int at = i++;
+            n = new Word(Letter.N, digits(), span(at));
+            blank();
+        }
+        int start = i;
+        if (keyword("GOTO")) {
+            long label = whole(expr(), start);
+            return end(new Jump(label, span(start), text(start)));
+        }
+        if (keyword("IF")) {
+            boolean holds = bracketedCondition();
+            blank();
+            int then = i;
+            if (keyword("GOTO")) {
+                long label = whole(expr(), then);
+                return end(holds ? new Jump(label, span(start), text(start)) : DONE);
+            }
+            if (keyword("THEN")) {
+                if (holds) {
+                    blank();
+                    assignment();
+                }
+                return DONE;
+            }
+            throw syntax(i);
+        }
+        if (keyword("WHILE")) {
+            boolean holds = bracketedCondition();
+            blank();
+            if (!keyword("DO")) {
+                throw syntax(i);
+            }
+            int id = loopId();
+            return end(new Loop(holds, id, span(start), text(start)));
+        }
+        if (keyword("END")) {
+            int id = loopId();
+            return end(new EndLoop(id, span(start), text(start)));
+        }
+        if (peek() == '#') {
+            assignment();
+            return DONE;
+        }
+        return words(n);
+    }
+
+    private boolean bracketedCondition() throws Fault {
+        blank();
+        expect('[');
+        boolean holds = condition();
+        expect(']');
+        return holds;
+    }
+
+    /** {@code a OP b}, OP one of EQ NE GT GE LT LE; a vacant value equals only a vacant one. */
+    private boolean condition() throws Fault {
+        Double a = expr();
+        blank();
+        int at = i;
+        String op = letters();
+        Double b = expr();
+        blank();
+        if (peek() != ']') {
+            throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(i)); // AND/OR of conditions
+        }
+        switch (op) {
+            case "EQ":
+                return a == null || b == null ? a == b : Math.abs(a - b) < 1e-9;
+            case "NE":
+                return a == null || b == null ? a != b : Math.abs(a - b) >= 1e-9;
+            case "GT":
+                return value(a) > value(b);
+            case "GE":
+                return value(a) >= value(b);
+            case "LT":
+                return value(a) < value(b);
+            case "LE":
+                return value(a) <= value(b);
+            default:
+                throw syntax(at);
+        }
+    }
+
+    /** {@code #n = expr}; {@code #3000 = n (text)} is the program's alarm (E148). */
+    private void assignment() throws Fault {
+        int at = i;
+        expect('#');
+        long n = variable();
+        blank();
+        expect('=');
+        Double v = expr();
+        end(DONE);
+        if (n == 3000) {
+            diags.error(Code.E148_MACRO_ALARM, span(at), v == null ? "0" : format(v), comment);
+            return;
+        }
+        try {
+            vars.write(n, v);
+        } catch (Variables.Refused r) {
+            throw new Fault(r.code, at, excerpt(at));
+        }
+    }
+
+    /** A block of words; a value from a variable or expression becomes the number it comes to. */
+    private Outcome words(Word label) throws Fault {
+        List<Word> out = new ArrayList<>();
+        if (label != null) {
+            out.add(label);
+        }
+        for (blank(); i < s.length() && peek() != ';' && peek() != '%'; blank()) {
+            int at = i;
+            Letter l = Character.isLetter(peek()) ? Letter.of(Character.toUpperCase(peek())) : null;
+            if (l == null) {
+                throw syntax(at);
+            }
+            i++;
+            blank();
+            char c = peek();
+            char next = i + 1 < s.length() ? s.charAt(i + 1) : 0;
+            boolean computed = c == '#' || c == '[' || (c == '-' || c == '+') && (next == '#' || next == '[');
+            String number;
+            if (computed) {
+                Double v = unary();
+                if (v == null) {
+                    throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
+                }
+                number = number(l, v, at);
+            } else {
+                number = literal();
+                if (number.isEmpty()) {
+                    throw new Fault(Code.E006_NUMBER_EXPECTED, at, l.name());
+                }
+            }
+            out.add(new Word(l, number, span(at)));
+        }
+        return out.isEmpty() ? DONE : new Words(out);
+    }
+
+    /** The number text of a computed word: whole for G M N O S T P L, else with a decimal point (a macro value is never read in least increments). */
+    private static String number(Letter l, double v, int at) throws Fault {
+        if (WHOLE.indexOf(l.name().charAt(0)) >= 0) {
+            long r = Math.round(v);
+            if (Math.abs(v - r) > 1e-6 || r < 0) {
+                throw new Fault(Code.E013_INTEGER_EXPECTED, at, l.name());
+            }
+            return Long.toString(r);
+        }
+        return format(v);
+    }
+
+    /** A value as a word's number: at most 4 decimals, always a point ("352.", "-0.5"). */
+    static String format(double v) {
+        BigDecimal d = BigDecimal.valueOf(v).setScale(4, RoundingMode.HALF_UP).stripTrailingZeros();
+        if (d.signum() == 0) {
+            return "0.";
+        }
+        String t = d.toPlainString();
+        return t.indexOf('.') < 0 ? t + "." : t;
+    }
+
+    // ---- expressions: [ ] first, then * / MOD, then + - ----
+
+    private Double expr() throws Fault {
+        int start = i;
+        Double v = term();
+        while (true) {
+            blank();
+            char c = peek();
+            if (c == '+' || c == '-') {
+                i++;
+                double b = value(term());
+                v = c == '+' ? value(v) + b : value(v) - b;
+            } else if (keywordAhead("OR") || keywordAhead("XOR")) {
+                throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
+            } else {
+                return v;
+            }
+        }
+    }
+
+    private Double term() throws Fault {
+        int start = i;
+        Double v = unary();
+        while (true) {
+            blank();
+            char c = peek();
+            if (c == '*') {
+                i++;
+                v = value(v) * value(unary());
+            } else if (c == '/') {
+                i++;
+                double b = value(unary());
+                if (b == 0) {
+                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, s.substring(start, i).strip());
+                }
+                v = value(v) / b;
+            } else if (keyword("MOD")) {
+                double b = value(unary());
+                if (b == 0) {
+                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, s.substring(start, i).strip());
+                }
+                v = value(v) % b;
+            } else if (keywordAhead("AND")) {
+                throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
+            } else {
+                return v;
+            }
+        }
+    }
+
+    private Double unary() throws Fault {
+        blank();
+        if (peek() == '-') {
+            i++;
+            Double v = unary();
+            return v == null ? null : -v;
+        }
+        if (peek() == '+') {
+            i++;
+            return unary();
+        }
+        return primary();
+    }
+
+    private Double primary() throws Fault {
+        blank();
+        int at = i;
+        char c = peek();
+        if (c == '#') {
+            i++;
+            long n = variable();
+            try {
+                return vars.read(n);
+            } catch (Variables.Refused r) {
+                throw new Fault(r.code, at, "#" + n);
+            }
+        }
+        if (c == '[') {
+            i++;
+            Double v = expr();
+            expect(']');
+            return v;
+        }
+        if (Character.isDigit(c) || c == '.') {
+            String t = literal();
+            try {
+                return Double.valueOf(t);
+            } catch (NumberFormatException e) {
+                throw syntax(at);
+            }
+        }
+        if (Character.isLetter(c)) {
+            return function(at, letters());
+        }
+        throw syntax(at);
+    }
+
+    /** SIN COS TAN ASIN ACOS ATAN (degrees; ATAN[a]/[b] and ATAN[a,b] give 0 to 360) SQRT ABS ROUND FIX FUP LN EXP. */
+    private Double function(int at, String name) throws Fault {
+        switch (name) {
+            case "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN", "EXP":
+                break;
+            case "BIN", "BCD", "POW", "ADP":
+                throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, at, excerpt(at));
+            default:
+                throw syntax(at);
+        }
+        blank();
+        expect('[');
+        double a = value(expr());
+        blank();
+        Double b = null;
+        if (name.equals("ATAN") && peek() == ',') {
+            i++;
+            b = value(expr());
+            blank();
+        }
+        expect(']');
+        if (name.equals("ATAN") && b == null) {
+            int save = i;
+            blank();
+            if (peek() == '/' && i + 1 < s.length()) {
+                i++;
+                blank();
+                if (peek() == '[') {
+                    i++;
+                    b = value(expr());
+                    expect(']');
+                } else {
+                    i = save;
+                }
+            } else {
+                i = save;
+            }
+        }
+        double r = switch (name) {
+            case "SIN" -> Math.sin(Math.toRadians(a));
+            case "COS" -> Math.cos(Math.toRadians(a));
+            case "TAN" -> Math.tan(Math.toRadians(a));
+            case "ASIN" -> Math.toDegrees(Math.asin(a));
+            case "ACOS" -> Math.toDegrees(Math.acos(a));
+            case "ATAN" -> b == null ? Math.toDegrees(Math.atan(a)) : (Math.toDegrees(Math.atan2(a, b)) + 360) % 360;
+            case "SQRT" -> Math.sqrt(a);
+            case "ABS" -> Math.abs(a);
+            case "ROUND" -> Math.signum(a) * Math.floor(Math.abs(a) + 0.5);
+            case "FIX" -> Math.signum(a) * Math.floor(Math.abs(a));
+            case "FUP" -> Math.signum(a) * Math.ceil(Math.abs(a));
+            case "LN" -> a > 0 ? Math.log(a) : Double.NaN;
+            default -> Math.exp(a);
+        };
+        if (Double.isNaN(r) || Double.isInfinite(r)) {
+            throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
+        }
+        return r + 0.0;
+    }
+
+    /** After '#': the variable's number, written or computed ({@code #[#1 + 100]}). */
+    private long variable() throws Fault {
+        int at = i;
+        if (peek() == '[') {
+            i++;
+            Double v = expr();
+            expect(']');
+            return whole(v, at);
+        }
+        String d = digits();
+        if (d.isEmpty()) {
+            throw syntax(at);
+        }
+        return FlowWords.digits(d);
+    }
+
+    private long whole(Double v, int at) throws Fault {
+        if (v == null) {
+            throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
+        }
+        long r = Math.round(v);
+        if (Math.abs(v - r) > 1e-6 || r < 0) {
+            throw new Fault(Code.E013_INTEGER_EXPECTED, at, s.substring(at, i).strip());
+        }
+        return r;
+    }
+
+    /** DO and END take a loop number, 1 to 3. */
+    private int loopId() throws Fault {
+        blank();
+        int at = i;
+        String d = digits();
+        long id = FlowWords.digits(d);
+        if (id < 1 || id > 3) {
+            throw syntax(at);
+        }
+        return (int) id;
+    }
+
+    private static double value(Double v) {
+        return v == null ? 0 : v;
+    }
+
+    // ---- characters ----
+
+    private char peek() {
+        return i < s.length() ? s.charAt(i) : 0;
+    }
+
+    /** Skips spaces, tabs and comments (keeping the last comment's text). */
+    private void blank() throws Fault {
+        while (i < s.length()) {
+            char c = s.charAt(i);
+            if (c == ' ' || c == '\t') {
+                i++;
+            } else if (c == '(') {
+                int close = s.indexOf(')', i);
+                if (close < 0) {
+                    throw new Fault(Code.E005_COMMENT_NOT_CLOSED, i);
+                }
+                comment = s.substring(i + 1, close).strip();
+                i = close + 1;
+            } else {
+                return;
+            }
+        }
+    }
+
+    private boolean labelAhead() {
+        return (peek() == 'N' || peek() == 'n') && i + 1 < s.length() && Character.isDigit(s.charAt(i + 1));
+    }
+
+    private String digits() {
+        int from = i;
+        while (i < s.length() && Character.isDigit(s.charAt(i))) {
+            i++;
+        }
+        return s.substring(from, i);
+    }
+
+    /** A number as written: [+-] digits [. digits]. */
+    private String literal() {
+        int from = i;
+        if (peek() == '+' || peek() == '-') {
+            i++;
+        }
+        while (i < s.length() && (Character.isDigit(s.charAt(i)) || s.charAt(i) == '.')) {
+            i++;
+        }
+        String t = s.substring(from, i);
+        return t.equals("+") || t.equals("-") ? "" : t;
+    }
+
+    /** A run of letters, upper case. */
+    private String letters() throws Fault {
+        blank();
+        int from = i;
+        while (i < s.length() && Character.isLetter(s.charAt(i))) {
+            i++;
+        }
+        return s.substring(from, i).toUpperCase(java.util.Locale.ROOT);
+    }
+
+    private boolean keywordAhead(String k) {
+        int n = k.length();
+        return i + n <= s.length() && s.regionMatches(true, i, k, 0, n)
+                && (i + n == s.length() || !Character.isLetter(s.charAt(i + n)));
+    }
+
+    private boolean keyword(String k) throws Fault {
+        blank();
+        if (keywordAhead(k)) {
+            i += k.length();
+            return true;
+        }
+        return false;
+    }
+
+    private void expect(char c) throws Fault {
+        blank();
+        if (peek() != c) {
+            throw syntax(i);
+        }
+        i++;
+    }
+
+    /** The line must end here (a comment, ';' or '%' may follow). */
+    private <T extends Outcome> T end(T outcome) throws Fault {
+        blank();
+        if (i < s.length() && peek() != ';' && peek() != '%') {
+            throw syntax(i);
+        }
+        return outcome;
+    }
+
+    private Fault syntax(int at) {
+        return new Fault(Code.E010_SYNTAX, at, "'" + excerpt(at) + "'");
+    }
+
+    private String excerpt(int from) {
+        String t = from < s.length() ? s.substring(from).strip() : "";
+        return t.isEmpty() ? "end of line" : t.length() > 30 ? t.substring(0, 30) + "..." : t;
+    }
+
+    /** A statement's text for messages, without comments. */
+    private String text(int from) {
+        return s.substring(from, i).replaceAll("\\([^)]*\\)", "").strip().replaceAll("\\s+", " ");
+    }
+
+    private Span span(int at) {
+        return Span.of(line, at + 1);
+    }
+}
