@@ -25,8 +25,8 @@ final class MacroLine {
     sealed interface Outcome permits Words, Done, Jump, Loop, EndLoop {
     }
 
-    /** Words for the checker, their values worked out. */
-    record Words(List<Word> words) implements Outcome {
+    /** Words for the checker, their values worked out; {@code malformed}: the words before an error (reported). */
+    record Words(List<Word> words, boolean malformed) implements Outcome {
     }
 
     /** Nothing to hand on: an assignment, an IF that does not hold, or an error already reported. */
@@ -70,6 +70,8 @@ final class MacroLine {
     private int i;
     /** The text of the last comment passed, for #3000's message. */
     private String comment = "";
+    /** The words of a block line read so far: handed on, malformed, when a later one fails. */
+    private final List<Word> words = new ArrayList<>();
 
     private MacroLine(String s, int line, Variables vars, Diagnostics diags) {
         this.s = s;
@@ -85,7 +87,7 @@ final class MacroLine {
             return m.statement();
         } catch (Fault f) {
             diags.error(f.code, Span.of(b.line(), f.at + 1), f.args);
-            return DONE;
+            return m.words.isEmpty() ? DONE : new Words(List.copyOf(m.words), true);
         }
     }
 
@@ -217,7 +219,8 @@ final class MacroLine {
         Double v = expr();
         end(DONE);
         if (n == 3000) {
-            diags.error(Code.E148_MACRO_ALARM, span(at), v == null ? "0" : format(v), comment);
+            String number = v == null ? "0" : v == Math.rint(v) ? Long.toString((long) (double) v) : format(v);
+            diags.error(Code.E148_MACRO_ALARM, span(at), number, comment);
             return;
         }
         try {
@@ -229,7 +232,7 @@ final class MacroLine {
 
     /** A block of words; a value from a variable or expression becomes the number it comes to. */
     private Outcome words(Word label) throws Fault {
-        List<Word> out = new ArrayList<>();
+        List<Word> out = words;
         if (label != null) {
             out.add(label);
         }
@@ -259,7 +262,7 @@ final class MacroLine {
             }
             out.add(new Word(l, number, span(at)));
         }
-        return out.isEmpty() ? DONE : new Words(out);
+        return out.isEmpty() ? DONE : new Words(List.copyOf(out), false);
     }
 
     /** The number text of a computed word: whole for G M N O S T P L, else with a decimal point (a macro value is never read in least increments). */
@@ -287,6 +290,7 @@ final class MacroLine {
     // ---- expressions: [ ] first, then * / MOD, then + - ----
 
     private Double expr() throws Fault {
+        blank();
         int start = i;
         Double v = term();
         while (true) {
@@ -305,6 +309,7 @@ final class MacroLine {
     }
 
     private Double term() throws Fault {
+        blank();
         int start = i;
         Double v = unary();
         while (true) {

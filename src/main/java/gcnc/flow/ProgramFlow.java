@@ -43,6 +43,8 @@ public final class ProgramFlow implements BlockSource {
     public static final int HOLD_LIMIT = 200_000;
     /** How many times a WHILE loop may run from one entry, and a GOTO jump back, before it is taken for endless (E149). */
     public static final int LOOP_LIMIT = 100_000;
+    /** How many macro statements a run may execute in all (loops inside loops); past it jumps are no longer followed (E149). */
+    public static final int STEP_LIMIT = 5_000_000;
     /** The largest repeat count (L, or the leading digits of a Fanuc P): four digits. */
     private static final int MAX_REPEAT = 9999;
 
@@ -66,6 +68,8 @@ public final class ProgramFlow implements BlockSource {
     private boolean mainFullReported;
     /** The block that ends the main program has been handed on. */
     private boolean finished;
+    /** Macro statements executed so far. */
+    private long steps;
 
     /** One program being run: where it is, how many more times it runs, its loops, and where its findings go. */
     private static final class Frame {
@@ -174,9 +178,15 @@ public final class ProgramFlow implements BlockSource {
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
     private RawBlock macro(RawBlock b, Frame f, int at) throws IOException {
         MacroLine.Outcome o = MacroLine.run(b, vars, diags);
+        if (++steps == STEP_LIMIT) {
+            diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), STEP_LIMIT);
+        }
         if (o instanceof MacroLine.Words w) {
             List<Word> words = w.words();
-            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false, b.blockDelete(), 0);
+            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), b.blockDelete(), 0);
+        }
+        if (steps >= STEP_LIMIT) {
+            return null; // jumps are no longer followed: the program runs on to its end
         }
         if (o instanceof MacroLine.Jump j) {
             goTo(f, j, at);
