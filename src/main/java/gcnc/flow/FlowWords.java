@@ -17,10 +17,10 @@ record FlowWords(Word flow, MRole role, Word p, Word l, List<Word> rest) {
     /** Splits a block's words; null for a block without a flow word. */
     static FlowWords of(RawBlock b, FlowCodes codes) {
         Word flow = null;
-        for (Word w : b.words()) {
-            if (codes.flow(w)) {
-                flow = w;
-                break;
+        List<Word> words = b.words();
+        for (int i = 0, n = words.size(); i < n && flow == null; i++) {
+            if (codes.flow(words.get(i))) {
+                flow = words.get(i);
             }
         }
         if (flow == null) {

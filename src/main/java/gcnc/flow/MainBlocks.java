@@ -28,6 +28,21 @@ final class MainBlocks implements Blocks {
 
     @Override
     public RawBlock get(int index) throws IOException {
+        if (!holding && index == base + held.size() && held.size() == 1) {
+            // the common case, a program without macro statements: the next block in place of the last
+            RawBlock b = file.next();
+            if (b == null) {
+                return null;
+            }
+            if (b.macro() == null || full) {
+                base++;
+                held.set(0, b);
+                return b;
+            }
+            holding = true;
+            held.add(b);
+            return b;
+        }
         while (base + held.size() <= index) {
             RawBlock b = file.next();
             if (b == null) {
@@ -52,6 +67,10 @@ final class MainBlocks implements Blocks {
     @Override
     public int first() {
         return base;
+    }
+
+    int limit() {
+        return limit;
     }
 
     /** Whether the limit was reached (E137, reported once by the flow). */

@@ -35,6 +35,10 @@ final class MainFile {
     /** Whether blocks of programs after the end are kept (after the first call) or only counted. */
     private boolean keep;
     private boolean ended;
+    /** The block that ends the main program, once read. */
+    private RawBlock end;
+    /** The last main-program block read if it has no call or return (the common case: nothing for the flow to do). */
+    private RawBlock plain;
     private boolean first = true;
     /** The main program's number (its first block's O word), or -1. */
     private long number = -1;
@@ -90,9 +94,14 @@ final class MainFile {
         return number;
     }
 
-    /** Whether the main program's end has been read. */
-    boolean ended() {
-        return ended;
+    /** Whether {@code b} is known to have no call or return (it was looked at when it was read). */
+    boolean isPlain(RawBlock b) {
+        return b == plain;
+    }
+
+    /** Whether {@code b} is the block that ends the main program (an M30, M02 or M99 written in it, or in its macro statement). */
+    boolean isEnd(RawBlock b) {
+        return b == end;
     }
 
     int lines() {
@@ -115,7 +124,12 @@ final class MainFile {
             }
         }
         if (!ended) {
-            ended = ends(b);
+            int bits = b.macro() == null ? codes.scan(b.words()) : 0;
+            ended = ends(b, bits);
+            if (ended) {
+                end = b;
+            }
+            plain = b.macro() == null && (bits & FlowCodes.FLOW) == 0 ? b : null;
             return b;
         }
         if (o != null) {
@@ -150,16 +164,11 @@ final class MainFile {
     }
 
     /** Whether a main-program block ends it: an M of function end, or M99 (the control loops; E139). */
-    boolean ends(RawBlock b) {
+    private boolean ends(RawBlock b, int bits) {
         if (b.blockDelete() > 0 && control.blockDelete() == Control.BlockDelete.ON) {
             return false;
         }
-        for (Word w : b.words()) {
-            if (codes.ends(w)) {
-                return true;
-            }
-        }
-        return false;
+        return b.macro() != null ? codes.endsText(b.macro()) : (bits & FlowCodes.END) != 0;
     }
 
     /** The note for a program after the end that nothing calls (E138), at its O word. */

@@ -149,10 +149,14 @@ public final class ProgramFlow implements BlockSource {
             if (f.program == null) {
                 if (mainBlocks.full() && !mainFullReported) {
                     mainFullReported = true;
-                    diags.error(Code.E137_TOO_LONG_TO_HOLD, b.last(), HOLD_LIMIT);
+                    diags.error(Code.E137_TOO_LONG_TO_HOLD, b.last(), mainBlocks.limit());
                 }
                 if (finished) {
                     return b; // after the end: never run (the checker reports it, E053); its calls are not followed
+                }
+                finished = main.isEnd(b);
+                if (main.isPlain(b)) {
+                    return b; // no call, no return, no macro statement: as the parser read it
                 }
             }
             if (b.macro() != null) {
@@ -160,9 +164,6 @@ public final class ProgramFlow implements BlockSource {
                 if (b == null) {
                     continue;
                 }
-            }
-            if (f.program == null) {
-                finished = main.ends(b);
             }
             return follow(b, f);
         }

@@ -247,6 +247,12 @@ class MacroTest {
     // ---- with subprograms and controls ----
 
     @Test
+    void anEndCodeInAMacroLineEndsTheMainProgram() {
+        // what follows is a program nothing calls, not more of the main program
+        assertEquals("2: G00 X5. M30 // 3:1:E138", run("#1 = 5\nG00 X#1 M30\nO1000\nG00 X1.\nM99\n"));
+    }
+
+    @Test
     void aSubprogramSharesTheLocalVariablesOfItsCaller() {
         String p = "#1 = 5\nM98 P1000\nX#1\nM30\nO1000\nX#1\n#1 = 6\nM99\n";
         // the M98 and M99 blocks reach the checker without their flow words
