@@ -233,6 +233,15 @@ class MacroTest {
     }
 
     @Test
+    void aJumpBackBeforeTheFirstMacroStatementIsBeyondWhatIsHeld() {
+        // the main program is held from the block before its first macro statement (line 2) on
+        Compiler.Result r = check("fanuc-a", "N10 G00 X1.\nG00 X2.\n#1 = 1\nGOTO 10\nM30\n");
+        assertEquals("p.nc:4:1: error[E141]: GOTO 10: no N10 to go to in this program from line 2 on", messages(r));
+        assertEquals("2: N10 X2. | 3: X3. | 2: N10 X2. | 3: X3. | 6: M30",
+                run("#1 = 0\nN10 X2.\nX3.\n#1 = #1 + 1\nIF [#1 LT 2] GOTO 10\nM30\n"));
+    }
+
+    @Test
     void macroSyntaxErrorsAreLocated() {
         assertEquals(" // 1:4:E010", run("#1 + 2\n"));
         assertEquals(" // 1:14:E010", run("IF [#1 GT 2] GOTTO 5\n"));
