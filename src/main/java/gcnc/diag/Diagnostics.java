@@ -57,19 +57,25 @@ public final class Diagnostics {
         if (o != null && d.origin() == Origin.UNPLACED) {
             d = d.in(o);
             if (!o.calls().isEmpty()) {
-                if (!placed.add(d.code() + "@" + o.file() + ":" + d.span() + d.args())) {
-                    return;
-                }
-                add(d);
-                if (d.severity() != Severity.NOTE) {
-                    for (Origin.Call c : o.calls()) {
-                        add(calledFrom(c, d.span(), o.withoutCalls()));
-                    }
-                }
+                withCalls(d);
                 return;
             }
         }
         add(d);
+    }
+
+    /** A finding in a called program: once per place, with a note per call. */
+    private void withCalls(Diagnostic d) {
+        Origin o = d.origin();
+        if (!placed.add(d.code() + "@" + o.file() + ":" + d.span() + d.args())) {
+            return;
+        }
+        add(d);
+        if (d.severity() != Severity.NOTE) {
+            for (Origin.Call c : o.calls()) {
+                add(calledFrom(c, d.span(), o.withoutCalls()));
+            }
+        }
     }
 
     /**
@@ -95,9 +101,18 @@ public final class Diagnostics {
         }
     }
 
-    /** Takes over every finding of another part of the run (the simulator's), in its order. */
+    /**
+     * Takes over every finding of another part of the run (the simulator's), in its order; one
+     * placed in a called program gets its notes here, once per place, as the checker's do.
+     */
     public void addAll(Diagnostics other) {
-        other.all.forEach(this::report);
+        for (Diagnostic d : other.all) {
+            if (d.origin() != Origin.UNPLACED && !d.origin().calls().isEmpty()) {
+                withCalls(d);
+            } else {
+                report(d);
+            }
+        }
     }
 
     public void error(Code code, Span span, Object... args) {
