@@ -20,7 +20,7 @@ import java.util.List;
  * What the line comes to is an {@link Outcome}; an error is reported at its column and the line
  * comes to nothing. Grammar and sources: docs/program-flow.md.
  */
-final class MacroLine {
+final class MacroLine extends MacroExpression {
     /** What a line comes to. */
     sealed interface Outcome permits Words, Done, Jump, Loop, EndLoop {
     }
@@ -49,34 +49,14 @@ final class MacroLine {
     /** The addresses that take a whole number (the parser's integer words, and P and L). */
     private static final String WHOLE = "GMNOSTPL";
 
-    /** An error at a column of the line: reported by {@link #run}. */
-    private static final class Fault extends Exception {
-        final Code code;
-        final int at;
-        final transient Object[] args;
-
-        Fault(Code code, int at, Object... args) {
-            super(null, null, false, false);
-            this.code = code;
-            this.at = at;
-            this.args = args;
-        }
-    }
-
-    private final String s;
     private final int line;
-    private final Variables vars;
     private final Diagnostics diags;
-    private int i;
-    /** The text of the last comment passed, for #3000's message. */
-    private String comment = "";
     /** The words of a block line read so far: handed on, malformed, when a later one fails. */
     private final List<Word> words = new ArrayList<>();
 
     private MacroLine(String s, int line, Variables vars, Diagnostics diags) {
-        this.s = s;
+        super(s, vars);
         this.line = line;
-        this.vars = vars;
         this.diags = diags;
     }
 
@@ -172,43 +152,6 @@ final class MacroLine {
         return words(n);
     }
 
-    private boolean bracketedCondition() throws Fault {
-        blank();
-        expect('[');
-        boolean holds = condition();
-        expect(']');
-        return holds;
-    }
-
-    /** {@code a OP b}, OP one of EQ NE GT GE LT LE; a vacant value equals only a vacant one. */
-    private boolean condition() throws Fault {
-        Double a = expr();
-        blank();
-        int at = i;
-        String op = letters();
-        Double b = expr();
-        blank();
-        if (peek() != ']') {
-            throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(i)); // AND/OR of conditions
-        }
-        switch (op) {
-            case "EQ":
-                return a == null || b == null ? a == b : Math.abs(a - b) < 1e-9;
-            case "NE":
-                return a == null || b == null ? a != b : Math.abs(a - b) >= 1e-9;
-            case "GT":
-                return value(a) > value(b);
-            case "GE":
-                return value(a) >= value(b);
-            case "LT":
-                return value(a) < value(b);
-            case "LE":
-                return value(a) <= value(b);
-            default:
-                throw syntax(at);
-        }
-    }
-
     /** {@code #n = expr}; {@code #3000 = n (text)} is the program's alarm (E148). */
     private void assignment() throws Fault {
         int at = i;
@@ -287,191 +230,6 @@ final class MacroLine {
         return t.indexOf('.') < 0 ? t + "." : t;
     }
 
-    // ---- expressions: [ ] first, then * / MOD, then + - ----
-
-    private Double expr() throws Fault {
-        blank();
-        int start = i;
-        Double v = term();
-        while (true) {
-            blank();
-            char c = peek();
-            if (c == '+' || c == '-') {
-                i++;
-                double b = value(term());
-                v = c == '+' ? value(v) + b : value(v) - b;
-            } else if (keywordAhead("OR") || keywordAhead("XOR")) {
-                throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
-            } else {
-                return v;
-            }
-        }
-    }
-
-    private Double term() throws Fault {
-        blank();
-        int start = i;
-        Double v = unary();
-        while (true) {
-            blank();
-            char c = peek();
-            if (c == '*') {
-                i++;
-                v = value(v) * value(unary());
-            } else if (c == '/') {
-                i++;
-                double b = value(unary());
-                if (b == 0) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, s.substring(start, i).strip());
-                }
-                v = value(v) / b;
-            } else if (keyword("MOD")) {
-                double b = value(unary());
-                if (b == 0) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, s.substring(start, i).strip());
-                }
-                v = value(v) % b;
-            } else if (keywordAhead("AND")) {
-                throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
-            } else {
-                return v;
-            }
-        }
-    }
-
-    private Double unary() throws Fault {
-        blank();
-        if (peek() == '-') {
-            i++;
-            Double v = unary();
-            return v == null ? null : -v;
-        }
-        if (peek() == '+') {
-            i++;
-            return unary();
-        }
-        return primary();
-    }
-
-    private Double primary() throws Fault {
-        blank();
-        int at = i;
-        char c = peek();
-        if (c == '#') {
-            i++;
-            long n = variable();
-            try {
-                return vars.read(n);
-            } catch (Variables.Refused r) {
-                throw new Fault(r.code, at, "#" + n);
-            }
-        }
-        if (c == '[') {
-            i++;
-            Double v = expr();
-            expect(']');
-            return v;
-        }
-        if (Character.isDigit(c) || c == '.') {
-            String t = literal();
-            try {
-                return Double.valueOf(t);
-            } catch (NumberFormatException e) {
-                throw syntax(at);
-            }
-        }
-        if (Character.isLetter(c)) {
-            return function(at, letters());
-        }
-        throw syntax(at);
-    }
-
-    /** SIN COS TAN ASIN ACOS ATAN (degrees; ATAN[a]/[b] and ATAN[a,b] give 0 to 360) SQRT ABS ROUND FIX FUP LN EXP. */
-    private Double function(int at, String name) throws Fault {
-        switch (name) {
-            case "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN", "EXP":
-                break;
-            case "BIN", "BCD", "POW", "ADP":
-                throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, at, excerpt(at));
-            default:
-                throw syntax(at);
-        }
-        blank();
-        expect('[');
-        double a = value(expr());
-        blank();
-        Double b = null;
-        if (name.equals("ATAN") && peek() == ',') {
-            i++;
-            b = value(expr());
-            blank();
-        }
-        expect(']');
-        if (name.equals("ATAN") && b == null) {
-            int save = i;
-            blank();
-            if (peek() == '/' && i + 1 < s.length()) {
-                i++;
-                blank();
-                if (peek() == '[') {
-                    i++;
-                    b = value(expr());
-                    expect(']');
-                } else {
-                    i = save;
-                }
-            } else {
-                i = save;
-            }
-        }
-        double r = switch (name) {
-            case "SIN" -> Math.sin(Math.toRadians(a));
-            case "COS" -> Math.cos(Math.toRadians(a));
-            case "TAN" -> Math.tan(Math.toRadians(a));
-            case "ASIN" -> Math.toDegrees(Math.asin(a));
-            case "ACOS" -> Math.toDegrees(Math.acos(a));
-            case "ATAN" -> b == null ? Math.toDegrees(Math.atan(a)) : (Math.toDegrees(Math.atan2(a, b)) + 360) % 360;
-            case "SQRT" -> Math.sqrt(a);
-            case "ABS" -> Math.abs(a);
-            case "ROUND" -> Math.signum(a) * Math.floor(Math.abs(a) + 0.5);
-            case "FIX" -> Math.signum(a) * Math.floor(Math.abs(a));
-            case "FUP" -> Math.signum(a) * Math.ceil(Math.abs(a));
-            case "LN" -> a > 0 ? Math.log(a) : Double.NaN;
-            default -> Math.exp(a);
-        };
-        if (Double.isNaN(r) || Double.isInfinite(r)) {
-            throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
-        }
-        return r + 0.0;
-    }
-
-    /** After '#': the variable's number, written or computed ({@code #[#1 + 100]}). */
-    private long variable() throws Fault {
-        int at = i;
-        if (peek() == '[') {
-            i++;
-            Double v = expr();
-            expect(']');
-            return whole(v, at);
-        }
-        String d = digits();
-        if (d.isEmpty()) {
-            throw syntax(at);
-        }
-        return FlowWords.digits(d);
-    }
-
-    private long whole(Double v, int at) throws Fault {
-        if (v == null) {
-            throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
-        }
-        long r = Math.round(v);
-        if (Math.abs(v - r) > 1e-6 || r < 0) {
-            throw new Fault(Code.E013_INTEGER_EXPECTED, at, s.substring(at, i).strip());
-        }
-        return r;
-    }
-
     /** DO and END take a loop number, 1 to 3. */
     private int loopId() throws Fault {
         blank();
@@ -484,93 +242,6 @@ final class MacroLine {
         return (int) id;
     }
 
-    private static double value(Double v) {
-        return v == null ? 0 : v;
-    }
-
-    // ---- characters ----
-
-    private char peek() {
-        return i < s.length() ? s.charAt(i) : 0;
-    }
-
-    /** Skips spaces, tabs and comments (keeping the last comment's text). */
-    private void blank() throws Fault {
-        while (i < s.length()) {
-            char c = s.charAt(i);
-            if (c == ' ' || c == '\t') {
-                i++;
-            } else if (c == '(') {
-                int close = s.indexOf(')', i);
-                if (close < 0) {
-                    throw new Fault(Code.E005_COMMENT_NOT_CLOSED, i);
-                }
-                comment = s.substring(i + 1, close).strip();
-                i = close + 1;
-            } else {
-                return;
-            }
-        }
-    }
-
-    private boolean labelAhead() {
-        return (peek() == 'N' || peek() == 'n') && i + 1 < s.length() && Character.isDigit(s.charAt(i + 1));
-    }
-
-    private String digits() {
-        int from = i;
-        while (i < s.length() && Character.isDigit(s.charAt(i))) {
-            i++;
-        }
-        return s.substring(from, i);
-    }
-
-    /** A number as written: [+-] digits [. digits]. */
-    private String literal() {
-        int from = i;
-        if (peek() == '+' || peek() == '-') {
-            i++;
-        }
-        while (i < s.length() && (Character.isDigit(s.charAt(i)) || s.charAt(i) == '.')) {
-            i++;
-        }
-        String t = s.substring(from, i);
-        return t.equals("+") || t.equals("-") ? "" : t;
-    }
-
-    /** A run of letters, upper case. */
-    private String letters() throws Fault {
-        blank();
-        int from = i;
-        while (i < s.length() && Character.isLetter(s.charAt(i))) {
-            i++;
-        }
-        return s.substring(from, i).toUpperCase(java.util.Locale.ROOT);
-    }
-
-    private boolean keywordAhead(String k) {
-        int n = k.length();
-        return i + n <= s.length() && s.regionMatches(true, i, k, 0, n)
-                && (i + n == s.length() || !Character.isLetter(s.charAt(i + n)));
-    }
-
-    private boolean keyword(String k) throws Fault {
-        blank();
-        if (keywordAhead(k)) {
-            i += k.length();
-            return true;
-        }
-        return false;
-    }
-
-    private void expect(char c) throws Fault {
-        blank();
-        if (peek() != c) {
-            throw syntax(i);
-        }
-        i++;
-    }
-
     /** The line must end here (a comment, ';' or '%' may follow). */
     private <T extends Outcome> T end(T outcome) throws Fault {
         blank();
@@ -578,20 +249,6 @@ final class MacroLine {
             throw syntax(i);
         }
         return outcome;
-    }
-
-    private Fault syntax(int at) {
-        return new Fault(Code.E010_SYNTAX, at, "'" + excerpt(at) + "'");
-    }
-
-    private String excerpt(int from) {
-        String t = from < s.length() ? s.substring(from).strip() : "";
-        return t.isEmpty() ? "end of line" : t.length() > 30 ? t.substring(0, 30) + "..." : t;
-    }
-
-    /** A statement's text for messages, without comments. */
-    private String text(int from) {
-        return s.substring(from, i).replaceAll("\\([^)]*\\)", "").strip().replaceAll("\\s+", " ");
     }
 
     private Span span(int at) {

@@ -17,9 +17,7 @@ import java.util.Collections;
 import java.util.Deque;
 import java.util.IdentityHashMap;
 import java.util.Iterator;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
@@ -58,8 +56,7 @@ public final class ProgramFlow implements BlockSource {
     /** The programs being run, innermost first; the main program at the bottom. */
     private final Deque<Frame> stack = new ArrayDeque<>();
     private final Set<Program> reportedNoM99 = Collections.newSetFromMap(new IdentityHashMap<>());
-    /** How many times each GOTO (program and index) has jumped back. */
-    private final Map<String, Integer> jumpsBack = new HashMap<>();
+    private final MacroJumps jumps;
     /** The first call read the rest of the file into the library. */
     private boolean libraryRead;
     /** E137: calls are no longer followed. */
@@ -70,37 +67,6 @@ public final class ProgramFlow implements BlockSource {
     private boolean finished;
     /** Macro statements executed so far. */
     private long steps;
-
-    /** One program being run: where it is, how many more times it runs, its loops, and where its findings go. */
-    private static final class Frame {
-        final Blocks blocks;
-        /** Null for the main program. */
-        final Program program;
-        final Origin origin;
-        int next;
-        int repeats;
-        boolean returning;
-        /** For loop ids 1-3: the index of its WHILE (-1: none), how many turns since it was entered. */
-        final int[] whileAt = {-1, -1, -1, -1};
-        final int[] turns = new int[4];
-        /** The last jump was an END going back to its WHILE. */
-        boolean cameBack;
-
-        Frame(Blocks blocks, Program program, Origin origin, int repeats) {
-            this.blocks = blocks;
-            this.program = program;
-            this.origin = origin;
-            this.repeats = repeats;
-        }
-
-        /** Runs the program again from its start (the next repeat). */
-        void restart() {
-            next = 0;
-            returning = false;
-            java.util.Arrays.fill(whileAt, -1);
-            cameBack = false;
-        }
-    }
 
     /**
      * @param folder where the files of called programs that are not in the program's own file are
@@ -117,6 +83,7 @@ public final class ProgramFlow implements BlockSource {
         this.control = control;
         this.diags = diags;
         this.library = new Library(folder, diags, holdLimit, control.macros());
+        this.jumps = new MacroJumps(diags);
         stack.push(new Frame(mainBlocks, null, Origin.PROGRAM, 1));
     }
 
@@ -190,101 +157,13 @@ public final class ProgramFlow implements BlockSource {
             return null; // jumps are no longer followed: the program runs on to its end
         }
         if (o instanceof MacroLine.Jump j) {
-            goTo(f, j, at);
+            jumps.goTo(f, j, at);
         } else if (o instanceof MacroLine.Loop l) {
-            loop(f, l, at);
+            jumps.loop(f, l, at);
         } else if (o instanceof MacroLine.EndLoop e) {
-            endLoop(f, e);
+            jumps.endLoop(f, e);
         }
         return null;
-    }
-
-    /** GOTO n: the block labelled N n, searched from the GOTO to the end, then from the start. */
-    private void goTo(Frame f, MacroLine.Jump j, int at) throws IOException {
-        int target = -1;
-        for (int k = at + 1; target < 0; k++) {
-            RawBlock b = f.blocks.get(k);
-            if (b == null) {
-                break;
-            }
-            if (label(b) == j.label()) {
-                target = k;
-            }
-        }
-        for (int k = f.blocks.first(); target < 0 && k <= at; k++) {
-            RawBlock b = f.blocks.get(k);
-            if (b != null && label(b) == j.label()) {
-                target = k;
-            }
-        }
-        if (target < 0) {
-            diags.error(Code.E141_NO_JUMP_TARGET, j.at(), j.text(), "N" + j.label(), firstLine(f));
-            return;
-        }
-        if (target <= at) {
-            String key = System.identityHashCode(f.blocks) + ":" + at;
-            int n = jumpsBack.merge(key, 1, Integer::sum);
-            if (n > LOOP_LIMIT) {
-                diags.error(Code.E149_MACRO_ENDLESS_LOOP, j.at(), j.text(), j.at().line(), LOOP_LIMIT);
-                return;
-            }
-        }
-        f.next = target;
-    }
-
-    /** WHILE [..] DO m: on into the loop while it holds (up to the limit), else after its END m. */
-    private void loop(Frame f, MacroLine.Loop l, int at) throws IOException {
-        int id = l.id();
-        boolean again = f.cameBack && f.whileAt[id] == at;
-        f.cameBack = false;
-        f.whileAt[id] = at;
-        f.turns[id] = again ? f.turns[id] + 1 : 1;
-        boolean holds = l.holds();
-        if (holds && f.turns[id] > LOOP_LIMIT) {
-            diags.error(Code.E149_MACRO_ENDLESS_LOOP, l.at(), l.text(), l.at().line(), LOOP_LIMIT);
-            holds = false;
-        }
-        if (holds) {
-            return;
-        }
-        f.whileAt[id] = -1;
-        for (int k = at + 1; ; k++) {
-            RawBlock b = f.blocks.get(k);
-            if (b == null) {
-                diags.error(Code.E141_NO_JUMP_TARGET, l.at(), l.text(), "END " + id, firstLine(f));
-                return;
-            }
-            if (b.macro() != null && MacroLine.isEnd(b.macro(), id)) {
-                f.next = k + 1;
-                return;
-            }
-        }
-    }
-
-    /** END m: back to the WHILE of loop m. */
-    private void endLoop(Frame f, MacroLine.EndLoop e) throws IOException {
-        int at = f.whileAt[e.id()];
-        if (at < 0 || at < f.blocks.first()) {
-            diags.error(Code.E141_NO_JUMP_TARGET, e.at(), e.text(), "WHILE [..] DO " + e.id(), firstLine(f));
-            return;
-        }
-        f.next = at;
-        f.cameBack = true;
-    }
-
-    /** A block's N label: its first word's, or a macro line's leading N; -1 for none. */
-    private static long label(RawBlock b) {
-        if (b.macro() != null) {
-            return MacroLine.label(b.macro());
-        }
-        return !b.words().isEmpty() && b.words().get(0).letter() == gcnc.ir.Letter.N
-                ? FlowWords.digits(b.words().get(0).number()) : -1;
-    }
-
-    /** The line of the first block a jump can reach. */
-    private static int firstLine(Frame f) throws IOException {
-        RawBlock b = f.blocks.get(f.blocks.first());
-        return b == null ? 1 : b.line();
     }
 
     // ---- calls and returns ----
