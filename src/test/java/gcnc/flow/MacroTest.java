@@ -282,6 +282,32 @@ class MacroTest {
         assertEquals(17, check("haas", p).blocks(), "4 blocks, 4 per turn three times, M30");
     }
 
+    /**
+     * A program with a subprogram and a macro loop compiles to the same Galil program as the same
+     * blocks written out one after the other (the DMC text; the source lines differ).
+     */
+    @Test
+    void aLoopInASubprogramCompilesAsTheBlocksWrittenOut() throws IOException {
+        String start = "G00 G18 G21 G40 G80 G99\nT0101\nG50 S2000\nG97 S800 M03\nG00 X52. Z2.\n";
+        String looped = start + "#1 = 0\nM98 P1000 L2\nG00 X100. Z100.\nM30\n"
+                + "O1000\nWHILE [#1 LT 2] DO 1\nG01 Z-[10 + #1 * 5] F0.2\nG00 X54.\nZ2.\nX52.\n#1 = #1 + 1\nEND 1\n"
+                + "#1 = 0\nM99\n";
+        String pass = "G01 Z-10. F0.2\nG00 X54.\nZ2.\nX52.\nG01 Z-15. F0.2\nG00 X54.\nZ2.\nX52.\n";
+        String written = start + pass + pass + "G00 X100. Z100.\nM30\n";
+        assertEquals(dmc(written), dmc(looped));
+        // and the loop's second turn did cut deeper than its first
+        String sameDepth = start + pass + pass.replace("Z-15.", "Z-10.") + "G00 X100. Z100.\nM30\n";
+        assertTrue(!dmc(sameDepth).equals(dmc(looped)), "the second turn cuts 5 mm deeper");
+    }
+
+    private static String dmc(String program) throws IOException {
+        StringBuilder out = new StringBuilder();
+        Compiler.Result r = Compiler.compile(new StringReader(program),
+                new Compiler.Settings(TABLES, machine("haas"), "galil", Optional.empty()), l -> out.append(l.text()).append('\n'));
+        assertEquals("", messages(r));
+        return out.toString();
+    }
+
     /** Random macro text never throws: every fault is a located finding. */
     @Test
     void randomMacroSoupOnlyEverReports() {
