@@ -19,7 +19,7 @@ public record Origin(String file, List<Call> calls) {
     public static final Origin UNPLACED = new Origin(null, List.of());
 
     /**
-     * One call: the program called ("1000" for O1000), the line and words of the call in its
+     * One call: what is called ("O1000", or "N100" for a Haas M97), the line and words of the call in its
      * caller, and the file the caller is in ({@code null}: the program's own).
      */
     public record Call(String program, int line, String words, String file) {

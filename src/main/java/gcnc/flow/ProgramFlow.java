@@ -13,9 +13,9 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Collections;
+import java.util.BitSet;
+import java.util.HashSet;
 import java.util.Deque;
-import java.util.IdentityHashMap;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Optional;
@@ -55,7 +55,10 @@ public final class ProgramFlow implements BlockSource {
     private final Variables vars = new Variables();
     /** The programs being run, innermost first; the main program at the bottom. */
     private final Deque<Frame> stack = new ArrayDeque<>();
-    private final Set<Program> reportedNoM99 = Collections.newSetFromMap(new IdentityHashMap<>());
+    /** The programs (file and name) already reported for ending without M99 (E140). */
+    private final Set<String> reportedNoM99 = new HashSet<>();
+    /** The main program's blocks that an M97 call ran (a local subprogram after M30 is not "after the end"). */
+    private final BitSet ranLocally = new BitSet();
     private final MacroJumps jumps;
     /** The first call read the rest of the file into the library. */
     private boolean libraryRead;
@@ -84,7 +87,7 @@ public final class ProgramFlow implements BlockSource {
         this.diags = diags;
         this.library = new Library(folder, diags, holdLimit, control.macros());
         this.jumps = new MacroJumps(diags);
-        stack.push(new Frame(mainBlocks, null, Origin.PROGRAM, 1));
+        stack.push(Frame.main(mainBlocks));
     }
 
     @Override
@@ -92,10 +95,10 @@ public final class ProgramFlow implements BlockSource {
         while (true) {
             Frame f = stack.peek();
             RawBlock b = f.returning ? null : f.blocks.get(f.next);
-            if (f.program != null && b == null) {
-                if (!f.returning && reportedNoM99.add(f.program)) {
-                    diags.report(Diagnostic.error(Code.E140_NO_M99, f.program.start(), f.program.name())
-                            .in(f.program.origin()));
+            if (!f.isMain() && b == null) {
+                if (!f.returning && reportedNoM99.add(f.file + ":" + f.name)) {
+                    diags.report(Diagnostic.error(Code.E140_NO_M99, f.start, f.name)
+                            .in(f.file == null ? Origin.PROGRAM : Origin.file(f.file)));
                 }
                 if (--f.repeats == 0) {
                     stack.pop();
@@ -113,12 +116,18 @@ public final class ProgramFlow implements BlockSource {
             }
             int at = f.next++;
             diags.placeIn(f.origin);
-            if (f.program == null) {
+            if (f.blocks == mainBlocks && !f.isMain()) {
+                ranLocally.set(at);
+            }
+            if (f.isMain()) {
                 if (mainBlocks.full() && !mainFullReported) {
                     mainFullReported = true;
                     diags.error(Code.E137_TOO_LONG_TO_HOLD, b.last(), mainBlocks.limit());
                 }
                 if (finished) {
+                    if (ranLocally.get(at)) {
+                        continue; // an M97 local subprogram after M30, already run where it was called
+                    }
                     return b; // after the end: never run (the checker reports it, E053); its calls are not followed
                 }
                 finished = main.isEnd(b);
@@ -195,7 +204,7 @@ public final class ProgramFlow implements BlockSource {
             diags.error(Code.E110_NOT_SUPPORTED_YET, w.p().span(), w.flow() + " " + w.p(),
                     "return to a sequence number of the caller");
         }
-        if (f.program == null) {
+        if (f.isMain()) {
             diags.report(Diagnostic.warning(Code.E139_M99_IN_MAIN, w.flow().span(), w.flow()));
             List<Word> kept = new ArrayList<>(b.words());
             kept.remove(w.p());
@@ -249,57 +258,71 @@ public final class ProgramFlow implements BlockSource {
             diags.error(Code.E137_TOO_LONG_TO_HOLD, at.span(), library.limit());
             return null;
         }
-        String chain = recursion(number);
-        if (chain != null) {
-            diags.error(Code.E133_RECURSIVE_CALL, at.span(), Program.name(number), chain);
-            return null;
-        }
-        if (stack.size() - 1 >= control.calls().depth()) {
-            diags.error(Code.E134_CALLS_TOO_DEEP, at.span(), control.calls().depth(), path(number));
+        String name = "O" + Program.name(number);
+        if (!mayCall(name, at)) {
             return null;
         }
         Program program = library.find(number, w.p(), at.span());
         if (program == null) {
             return null;
         }
-        List<Origin.Call> calls = new ArrayList<>();
-        calls.add(new Origin.Call(program.name(), b.line(), w.written(),
-                caller.program == null ? null : caller.program.file()));
-        calls.addAll(caller.origin.calls());
-        return new Frame(program, program, new Origin(program.file(), calls), (int) repeats);
+        return new Frame(program, "O" + program.name(), program.file(), program.start(), 0,
+                calledFrom(caller, "O" + program.name(), program.file(), b, w), (int) repeats);
     }
 
-    /** The chain of calls that comes back to {@code number} ("O1000 > O2000 > O1000"), or null. */
-    private String recursion(long number) {
+    /** Whether one more call to {@code name} may be made: not recursive (E133), not too deep (E134). */
+    private boolean mayCall(String name, Word at) {
+        String chain = recursion(name);
+        if (chain != null) {
+            diags.error(Code.E133_RECURSIVE_CALL, at.span(), name, chain);
+            return false;
+        }
+        if (stack.size() - 1 >= control.calls().depth()) {
+            diags.error(Code.E134_CALLS_TOO_DEEP, at.span(), control.calls().depth(), path(name));
+            return false;
+        }
+        return true;
+    }
+
+    /** The chain of calls that comes back to {@code name} ("O1000 > O2000 > O1000"), or null. */
+    private String recursion(String name) {
         List<String> names = new ArrayList<>();
         if (main.number() >= 0) {
             names.add("O" + Program.name(main.number()));
         }
         for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
             Frame f = i.next();
-            if (f.program != null) {
-                names.add("O" + f.program.name());
+            if (!f.isMain()) {
+                names.add(f.name);
             }
         }
-        int from = names.indexOf("O" + Program.name(number));
+        int from = names.indexOf(name);
         if (from < 0) {
             return null;
         }
-        names.add("O" + Program.name(number));
+        names.add(name);
         return String.join(" > ", names.subList(from, names.size()));
     }
 
     /** The calls in progress and the one asked for: "O1000 > O2000 > ... > O5000". */
-    private String path(long number) {
+    private String path(String name) {
         List<String> names = new ArrayList<>();
         for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
             Frame f = i.next();
-            if (f.program != null) {
-                names.add("O" + f.program.name());
+            if (!f.isMain()) {
+                names.add(f.name);
             }
         }
-        names.add("O" + Program.name(number));
+        names.add(name);
         return String.join(" > ", names);
+    }
+
+    /** Where a called program's findings go: its file, and this call before the caller's. */
+    private static Origin calledFrom(Frame caller, String name, String file, RawBlock b, FlowWords w) {
+        List<Origin.Call> calls = new ArrayList<>();
+        calls.add(new Origin.Call(name, b.line(), w.written(), caller.file));
+        calls.addAll(caller.origin.calls());
+        return new Origin(file, calls);
     }
 
     private static gcnc.diag.Span last(List<Word> words, Word otherwise) {
