@@ -44,7 +44,7 @@ final class FlowCodes {
             Word w = words.get(i);
             if (w.letter() == Letter.M) {
                 MRole r = role(w);
-                if (r == MRole.CALL || r == MRole.RETURN) {
+                if (r == MRole.CALL || r == MRole.LOCAL_CALL || r == MRole.RETURN) {
                     bits |= FLOW;
                 }
                 if (r == MRole.END || r == MRole.RETURN) {
@@ -58,7 +58,7 @@ final class FlowCodes {
     /** Whether a word calls or returns. */
     boolean flow(Word w) {
         MRole r = role(w);
-        return r == MRole.CALL || r == MRole.RETURN;
+        return r == MRole.CALL || r == MRole.LOCAL_CALL || r == MRole.RETURN;
     }
 
     /**

@@ -36,7 +36,7 @@ record FlowWords(Word flow, MRole role, Word p, Word l, List<Word> rest) {
             }
             if (w.letter() == Letter.P && p == null) {
                 p = w;
-            } else if (w.letter() == Letter.L && l == null && role == MRole.CALL) {
+            } else if (w.letter() == Letter.L && l == null && role != MRole.RETURN) {
                 l = w;
             } else {
                 rest.add(w);

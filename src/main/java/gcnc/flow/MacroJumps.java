@@ -25,22 +25,7 @@ final class MacroJumps {
 
     /** GOTO n: the block labelled N n, searched from the GOTO to the end, then from the start. */
     void goTo(Frame f, MacroLine.Jump j, int at) throws IOException {
-        int target = -1;
-        for (int k = at + 1; target < 0; k++) {
-            RawBlock b = f.blocks.get(k);
-            if (b == null) {
-                break;
-            }
-            if (label(b) == j.label()) {
-                target = k;
-            }
-        }
-        for (int k = f.blocks.first(); target < 0 && k <= at; k++) {
-            RawBlock b = f.blocks.get(k);
-            if (b != null && label(b) == j.label()) {
-                target = k;
-            }
-        }
+        int target = find(f.blocks, j.label(), at);
         if (target < 0) {
             diags.error(Code.E141_NO_JUMP_TARGET, j.at(), j.text(), "N" + j.label(), firstLine(f));
             return;
@@ -96,8 +81,31 @@ final class MacroJumps {
         f.cameBack = true;
     }
 
+    /**
+     * The index of the block labelled N{@code label}: searched from the block after {@code at} to
+     * the end, then from the first block held up to {@code at}; -1 when there is none.
+     */
+    static int find(Blocks blocks, long label, int at) throws IOException {
+        for (int k = at + 1; ; k++) {
+            RawBlock b = blocks.get(k);
+            if (b == null) {
+                break;
+            }
+            if (label(b) == label) {
+                return k;
+            }
+        }
+        for (int k = blocks.first(); k <= at; k++) {
+            RawBlock b = blocks.get(k);
+            if (b != null && label(b) == label) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
     /** A block's N label: its first word's, or a macro line's leading N; -1 for none. */
-    private static long label(RawBlock b) {
+    static long label(RawBlock b) {
         if (b.macro() != null) {
             return MacroLine.label(b.macro());
         }
@@ -106,7 +114,7 @@ final class MacroJumps {
     }
 
     /** The line of the first block a jump can reach. */
-    private static int firstLine(Frame f) throws IOException {
+    static int firstLine(Frame f) throws IOException {
         RawBlock b = f.blocks.get(f.blocks.first());
         return b == null ? 1 : b.line();
     }

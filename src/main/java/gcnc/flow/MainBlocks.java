@@ -64,6 +64,13 @@ final class MainBlocks implements Blocks {
         return index >= base ? held.get(index - base) : null;
     }
 
+    /** Holds the blocks from the current one on (an M97 call searches its label ahead and comes back). */
+    void hold() {
+        if (!full) {
+            holding = true;
+        }
+    }
+
     @Override
     public int first() {
         return base;

@@ -190,7 +190,7 @@ public final class ProgramFlow implements BlockSource {
         if (w.role() == MRole.RETURN) {
             return giveBack(b, w, f, depth);
         }
-        Frame callee = call(b, w, f);
+        Frame callee = w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
         RawBlock rest = b.called(w.rest(), last(w.rest(), w.flow()), depth);
         if (callee != null) {
             stack.push(callee);
@@ -268,6 +268,47 @@ public final class ProgramFlow implements BlockSource {
         }
         return new Frame(program, "O" + program.name(), program.file(), program.start(), 0,
                 calledFrom(caller, "O" + program.name(), program.file(), b, w), (int) repeats);
+    }
+
+    /**
+     * The frame a Haas M97 P n starts: the blocks of the calling program from its label N n on,
+     * up to M99 (a local subprogram, usually after M30); or null after reporting why it does not
+     * run. No such label: E141 at P.
+     */
+    private Frame localCall(RawBlock b, FlowWords w, Frame caller) throws IOException {
+        Word at = w.flow();
+        if (w.p() == null) {
+            diags.error(Code.E132_CALL_WITHOUT_P, at.span(), at);
+            return null;
+        }
+        long label = FlowWords.digits(w.p().number());
+        long repeats = 1;
+        if (w.l() != null) {
+            repeats = FlowWords.digits(w.l().number());
+            if (repeats < 1 || repeats > MAX_REPEAT) {
+                diags.error(Code.E135_BAD_REPEAT_COUNT, w.l().span(), w.l());
+                return null;
+            }
+        }
+        String name = "N" + w.p().number();
+        if (label < 0 || !mayCall(name, at)) {
+            if (label < 0) {
+                diags.error(Code.E013_INTEGER_EXPECTED, w.p().span(), "P");
+            }
+            return null;
+        }
+        if (caller.blocks == mainBlocks) {
+            mainBlocks.hold();
+        }
+        int target = MacroJumps.find(caller.blocks, label, caller.next - 1);
+        if (target < 0) {
+            diags.error(Code.E141_NO_JUMP_TARGET, w.p().span(), w.written(), "N" + label, MacroJumps.firstLine(caller));
+            return null;
+        }
+        RawBlock first = caller.blocks.get(target);
+        gcnc.diag.Span start = first.words().isEmpty() ? first.last() : first.words().get(0).span();
+        return new Frame(caller.blocks, name, caller.file, start, target,
+                calledFrom(caller, name, caller.file, b, w), (int) repeats);
     }
 
     /** Whether one more call to {@code name} may be made: not recursive (E133), not too deep (E134). */

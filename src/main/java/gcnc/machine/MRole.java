@@ -12,6 +12,8 @@ public enum MRole {
     OUTPUT(-1),
     /** M98: call a program by its number (P), L times; followed by gcnc.flow, not by the checker. */
     CALL(-3),
+    /** Haas M97: call the blocks of the same program from the N label P on, L times; followed by gcnc.flow. */
+    LOCAL_CALL(-5),
     /** M99: the end of a called program (return to the caller); in the main program, its end. */
     RETURN(-4),
     /** A function gcnc cannot follow yet (Haas M97, live tooling): using it is E110. */
@@ -29,7 +31,7 @@ public enum MRole {
 
     /** Program flow that gcnc.flow follows: a call. */
     public boolean call() {
-        return this == CALL;
+        return this == CALL || this == LOCAL_CALL;
     }
 
     public boolean spindleGroup() {

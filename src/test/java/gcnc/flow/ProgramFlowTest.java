@@ -295,6 +295,50 @@ class ProgramFlowTest {
         assertEquals("1:1:E110", codes("thesis-2004", "M98 P1000\nM30\n"));
     }
 
+    // ---- Haas M97: a local subprogram by its N label ----
+
+    private static final String LOCAL = "N100 G01 Z-20. F0.2\nG00 X54.\nZ2.\nM99\n";
+
+    @Test
+    void m97RunsTheBlocksFromItsLabelToM99() {
+        String p = START + "M97 P100 L2\nG00 X100. Z100.\nM30\n" + LOCAL;
+        assertEquals("1 2 3 4 5 6 9/1 10/1 11/1 12/1 9/1 10/1 11/1 12/1 7 8", order("haas", p));
+        // the local subprogram after M30 is not "after the end" (no E053)
+        assertEquals("", codes("haas", p));
+    }
+
+    @Test
+    void blocksAfterM30ThatNoM97ReachesAreStillNeverRun() {
+        String p = START + "M97 P100\nM30\n" + LOCAL + "N200 G00 X1.\n";
+        assertEquals("12:1:E053", codes("haas", p));
+    }
+
+    @Test
+    void m97ToALabelTheProgramDoesNotHave() {
+        Compiler.Result r = check("haas", START + "M97 P300\nM30\n" + LOCAL, Optional.empty());
+        assertEquals("6:5:E141, 8:1:E053, 9:1:E053, 10:1:E053, 11:1:E053", codes(r));
+        assertTrue(messages(r).contains("p.nc:6:5: error[E141]: M97 P300: no N300 to go to in this program from line 6 on"),
+                messages(r));
+    }
+
+    @Test
+    void aFindingInALocalSubprogramNamesItsLabelAndTheCall() {
+        Compiler.Result r = check("haas", START + "M97 P100\nM30\nN100 G01 Z-2. F0.2 Q1.\nM99\n", Optional.empty());
+        assertTrue(messages(r).contains("p.nc:8:20: note[E136]: in N100 called from line 6 (M97 P100)"), messages(r));
+    }
+
+    @Test
+    void m97InACalledProgramLooksInThatProgram() {
+        String p = START + "M98 P1000\nM30\nO1000\nM97 P10\nM99\nN10 G00 Z2.\nM99\n";
+        assertEquals("1 2 3 4 5 6 9/1 11/2 12/2 10/1 7", order("haas", p));
+        assertEquals("", codes("haas", p));
+    }
+
+    @Test
+    void aLocalSubprogramThatCallsItselfIsReported() {
+        assertEquals("9:1:E133, 9:1:E136", codes("haas", START + "M97 P100\nM30\nN100 G00 Z2.\nM97 P100\nM99\n"));
+    }
+
     // ---- files beside the program ----
 
     @Test
