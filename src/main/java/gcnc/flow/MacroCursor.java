@@ -121,8 +121,13 @@ class MacroCursor {
         return t.isEmpty() ? "end of line" : t.length() > 30 ? t.substring(0, 30) + "..." : t;
     }
 
-    /** A statement's text for messages, without comments. */
+    /** A statement's text as written, from {@code from} to here. */
     String text(int from) {
-        return s.substring(from, i).replaceAll("\\([^)]*\\)", "").strip().replaceAll("\\s+", " ");
+        return s.substring(from, i);
+    }
+
+    /** A statement's text as messages show it: no comments, single spaces (worked out only for a message). */
+    static String clean(String written) {
+        return written.replaceAll("\\([^)]*\\)", "").strip().replaceAll("\\s+", " ");
     }
 }

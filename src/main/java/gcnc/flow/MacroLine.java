@@ -34,15 +34,25 @@ final class MacroLine extends MacroExpression {
     }
 
     /** GOTO (or an IF that holds): go to the block labelled N{@code label}. */
-    record Jump(long label, Span at, String text) implements Outcome {
+    record Jump(long label, Span at, String written) implements Outcome {
+        /** The statement as messages show it. */
+        String text() {
+            return MacroCursor.clean(written);
+        }
     }
 
     /** WHILE [..] DO id: whether the condition holds. */
-    record Loop(boolean holds, int id, Span at, String text) implements Outcome {
+    record Loop(boolean holds, int id, Span at, String written) implements Outcome {
+        String text() {
+            return MacroCursor.clean(written);
+        }
     }
 
     /** END id: back to the WHILE of loop id. */
-    record EndLoop(int id, Span at, String text) implements Outcome {
+    record EndLoop(int id, Span at, String written) implements Outcome {
+        String text() {
+            return MacroCursor.clean(written);
+        }
     }
 
     static final Done DONE = new Done();

@@ -41,7 +41,11 @@ public final class ProgramFlow implements BlockSource {
     public static final int HOLD_LIMIT = 200_000;
     /** How many times a WHILE loop may run from one entry, and a GOTO jump back, before it is taken for endless (E149). */
     public static final int LOOP_LIMIT = 100_000;
-    /** How many macro statements a run may execute in all (loops inside loops); past it jumps are no longer followed (E149). */
+    /**
+     * How many blocks of called programs and macro statements a run may go through in all (loops
+     * inside loops, repeats inside repeats: L9999 four deep would never end); past it E149, and
+     * calls and jumps are no longer followed.
+     */
     public static final int STEP_LIMIT = 5_000_000;
     /** The largest repeat count (L, or the leading digits of a Fanuc P): four digits. */
     private static final int MAX_REPEAT = 9999;
@@ -68,7 +72,7 @@ public final class ProgramFlow implements BlockSource {
     private boolean mainFullReported;
     /** The block that ends the main program has been handed on. */
     private boolean finished;
-    /** Macro statements executed so far. */
+    /** Blocks of called programs and macro statements gone through so far. */
     private long steps;
 
     /**
@@ -116,6 +120,12 @@ public final class ProgramFlow implements BlockSource {
             }
             int at = f.next++;
             diags.placeIn(f.origin);
+            if ((!f.isMain() || b.macro() != null) && ++steps == STEP_LIMIT) {
+                diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), STEP_LIMIT);
+                for (Frame running : stack) {
+                    running.repeats = 1; // each call finishes the pass it is in, and no more
+                }
+            }
             if (f.blocks == mainBlocks && !f.isMain()) {
                 ranLocally.set(at);
             }
@@ -155,9 +165,6 @@ public final class ProgramFlow implements BlockSource {
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
     private RawBlock macro(RawBlock b, Frame f, int at) throws IOException {
         MacroLine.Outcome o = MacroLine.run(b, vars, diags);
-        if (++steps == STEP_LIMIT) {
-            diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), STEP_LIMIT);
-        }
         if (o instanceof MacroLine.Words w) {
             List<Word> words = w.words();
             return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), b.blockDelete(), 0);
@@ -190,7 +197,7 @@ public final class ProgramFlow implements BlockSource {
         if (w.role() == MRole.RETURN) {
             return giveBack(b, w, f, depth);
         }
-        Frame callee = w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
+        Frame callee = steps >= STEP_LIMIT ? null : w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
         RawBlock rest = b.called(w.rest(), last(w.rest(), w.flow()), depth);
         if (callee != null) {
             stack.push(callee);

@@ -295,6 +295,16 @@ class ProgramFlowTest {
         assertEquals("1:1:E110", codes("thesis-2004", "M98 P1000\nM30\n"));
     }
 
+    @Test
+    void repeatsInsideRepeatsStopAtTheStepLimit() {
+        // 9999 x 9999 x 9999 passes would never end: the run stops following calls at the limit
+        String p = START + "M98 P1000 L9999\nM30\nO1000\nM98 P2000 L9999\nM99\nO2000\nM98 P3000 L9999\nM99\n"
+                + "O3000\nG00 Z2.\nM99\n";
+        Compiler.Result r = check("haas", p, Optional.empty());
+        assertTrue(messages(r).contains("error[E149]: the program at line "), messages(r));
+        assertEquals(1, r.diagnostics().errorCount(), messages(r));
+    }
+
     // ---- Haas M97: a local subprogram by its N label ----
 
     private static final String LOCAL = "N100 G01 Z-20. F0.2\nG00 X54.\nZ2.\nM99\n";
