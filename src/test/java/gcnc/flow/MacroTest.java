@@ -308,12 +308,12 @@ class MacroTest {
         return out.toString();
     }
 
-    /** Random macro text never throws: every fault is a located finding. */
+    /** Random macro and flow text never throws: every fault is a located finding. */
     @Test
     void randomMacroSoupOnlyEverReports() {
         String[] parts = {"#", "#1", "#100", "#5001", "#3000", "[", "]", "=", "+", "-", "*", "/", " ", "1", "2.5", "0",
             "X", "G", "M", "GOTO", "IF", "WHILE", "DO", "END", "EQ", "GT", "SIN", "ATAN", "SQRT", "(", ")", "N1", "THEN",
-            "MOD", ",", "\n"};
+            "MOD", ",", "\n", "M98 P1000", "M98 P21000", "M99", "M97 P1", "L2", "O1000", "M30", "/"};
         Random random = new Random(20261123);
         for (int n = 0; n < 300; n++) {
             StringBuilder p = new StringBuilder();
@@ -322,7 +322,7 @@ class MacroTest {
             }
             String program = p.append("\nM30\n").toString();
             try {
-                check("fanuc-a", program);
+                check(n % 2 == 0 ? "fanuc-a" : "haas", program);
             } catch (RuntimeException e) {
                 throw new AssertionError("seed 20261123, program " + n + ": " + program, e);
             }
