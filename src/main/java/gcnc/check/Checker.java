@@ -160,7 +160,7 @@ public final class Checker {
         if (!causes.isEmpty() && cuts(result)) {
             closeCauses();
         }
-        if (!out.place().equals(gcnc.diag.Origin.PROGRAM)) {
+        if (out.place() != gcnc.diag.Origin.PROGRAM) {
             result = result.from(out.place()); // a called program's block: the simulator places its findings there
         }
         return Optional.of(result);
