@@ -179,7 +179,7 @@ public enum Code {
     E136_CALLED_FROM(136),
     /** Program flow: the program after its first call is longer than gcnc holds in memory. */
     E137_TOO_LONG_TO_HOLD(137),
-    /** Program flow (note): a program after the main program's end that nothing calls: only parsed. */
+    /** Program flow (note): a program after the main program's end that nothing calls, or a label there that a GOTO or M97 names and this run never reached: only parsed. */
     E138_NEVER_CALLED(138),
     /** Program flow (warning): M99 in the main program, which the control runs again from its top. */
     E139_M99_IN_MAIN(139),

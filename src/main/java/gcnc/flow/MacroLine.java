@@ -33,8 +33,8 @@ final class MacroLine extends MacroExpression {
     record Done() implements Outcome {
     }
 
-    /** GOTO (or an IF that holds): go to the block labelled N{@code label}. */
-    record Jump(long label, Span at, String written) implements Outcome {
+    /** GOTO, or IF [..] GOTO: go to the block labelled N{@code label} when {@code taken} (the IF holds). */
+    record Jump(long label, boolean taken, Span at, String written) implements Outcome {
         /** The statement as messages show it. */
         String text() {
             return MacroCursor.clean(written);
@@ -123,7 +123,7 @@ final class MacroLine extends MacroExpression {
         int start = i;
         if (keyword("GOTO")) {
             long label = whole(expr(), start);
-            return end(new Jump(label, span(start), text(start)));
+            return end(new Jump(label, true, span(start), text(start)));
         }
         if (keyword("IF")) {
             boolean holds = bracketedCondition();
@@ -131,7 +131,7 @@ final class MacroLine extends MacroExpression {
             int then = i;
             if (keyword("GOTO")) {
                 long label = whole(expr(), then);
-                return end(holds ? new Jump(label, span(start), text(start)) : DONE);
+                return end(new Jump(label, holds, span(start), text(start)));
             }
             if (keyword("THEN")) {
                 if (holds) {

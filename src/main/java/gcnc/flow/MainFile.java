@@ -171,8 +171,8 @@ final class MainFile {
         return b.macro() != null ? codes.endsText(b.macro()) : (bits & FlowCodes.END) != 0;
     }
 
-    /** The note for a program after the end that nothing calls (E138), at its O word. */
+    /** The note for a program after the end that nothing calls (E138 "O1000 is never run"), at its O word. */
     static Diagnostic neverCalled(Program p) {
-        return new Diagnostic(Code.E138_NEVER_CALLED, Severity.NOTE, p.start(), List.of(p.name()), p.origin());
+        return new Diagnostic(Code.E138_NEVER_CALLED, Severity.NOTE, p.start(), List.of("O" + p.name()), p.origin());
     }
 }

@@ -63,6 +63,10 @@ public final class ProgramFlow implements BlockSource {
     private final Set<String> reportedNoM99 = new HashSet<>();
     /** The main program's blocks that an M97 call ran (a local subprogram after M30 is not "after the end"). */
     private final BitSet ranLocally = new BitSet();
+    /** The labels a GOTO (taken or not) or an M97 names: a stretch after M30 from one of them can be reached. */
+    private final Set<Long> named = new HashSet<>();
+    /** After the main program's end: in a stretch from a named label to the next end code (M30, M02, M99). */
+    private boolean inReachable;
     private final MacroJumps jumps;
     /** The first call read the rest of the file into the library. */
     private boolean libraryRead;
@@ -135,8 +139,8 @@ public final class ProgramFlow implements BlockSource {
                     diags.error(Code.E137_TOO_LONG_TO_HOLD, b.last(), mainBlocks.limit());
                 }
                 if (finished) {
-                    if (ranLocally.get(at)) {
-                        continue; // an M97 local subprogram after M30, already run where it was called
+                    if (ranLocally.get(at) || reachable(b)) {
+                        continue; // an M97 local subprogram or a GOTO's label after M30: not "after the end"
                     }
                     return b; // after the end: never run (the checker reports it, E053); its calls are not followed
                 }
@@ -160,6 +164,28 @@ public final class ProgramFlow implements BlockSource {
         return main.lines();
     }
 
+    /**
+     * Whether a block after the main program's end can be reached from a GOTO or M97 that names its
+     * label (or one before it in the same stretch, up to an end code), though this run did not go
+     * there: such a block is not "after the end"; it is only parsed, and a note says so (E138).
+     */
+    private boolean reachable(RawBlock b) {
+        long label = MacroJumps.label(b);
+        if (!inReachable && label >= 0 && named.contains(label)) {
+            inReachable = true;
+            diags.report(new Diagnostic(Code.E138_NEVER_CALLED, gcnc.diag.Severity.NOTE,
+                    b.words().isEmpty() ? b.last() : b.words().get(0).span(), List.of("N" + label), Origin.PROGRAM));
+        }
+        if (!inReachable) {
+            return false;
+        }
+        boolean ends = b.macro() != null ? codes.endsText(b.macro()) : (codes.scan(b.words()) & FlowCodes.END) != 0;
+        if (ends) {
+            inReachable = false;
+        }
+        return true;
+    }
+
     // ---- macro statements ----
 
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
@@ -173,7 +199,10 @@ public final class ProgramFlow implements BlockSource {
             return null; // jumps are no longer followed: the program runs on to its end
         }
         if (o instanceof MacroLine.Jump j) {
-            jumps.goTo(f, j, at);
+            named.add(j.label());
+            if (j.taken()) {
+                jumps.goTo(f, j, at);
+            }
         } else if (o instanceof MacroLine.Loop l) {
             jumps.loop(f, l, at);
         } else if (o instanceof MacroLine.EndLoop e) {
@@ -304,6 +333,7 @@ public final class ProgramFlow implements BlockSource {
             }
             return null;
         }
+        named.add(label);
         if (caller.blocks == mainBlocks) {
             mainBlocks.hold();
         }

@@ -65,6 +65,20 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
+    /** docs/program-flow.md shows the output of docs/examples/flow/pecks.nc (a macro B loop and a value only the machine knows). */
+    @Test
+    void theMacroExampleIsWhatGcncPrints() throws IOException {
+        String doc = Files.readString(Path.of("docs/program-flow.md"));
+        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/flow/pecks.nc --machine fanuc\n";
+        int from = doc.indexOf(command);
+        assertTrue(from >= 0, "docs/program-flow.md lost its macro example");
+        from += command.length();
+        String shown = doc.substring(from, doc.indexOf("```", from));
+        Run r = gcnc("check", "docs/examples/flow/pecks.nc", "--machine", "fanuc");
+        assertEquals(1, r.status());
+        assertEquals(shown, r.err() + r.out());
+    }
+
     /** A simulator finding in a called program is placed in its file, with the call, as the checker's are. */
     @Test
     void aSimulatorFindingInACalledFileNamesThatFileAndTheCall() throws IOException {

@@ -226,6 +226,15 @@ class MacroTest {
     }
 
     @Test
+    void anAlarmAfterM30ThatAGotoNamesIsNotAfterTheEnd() {
+        // the IF does not jump in this run; N90 is reached only when it does: not E053, a note
+        String p = "#1 = 1\nIF [#1 NE 1] GOTO 90\nG00 X1.\nM30\nN90 #3000 = 1 (BAD)\nM30\n";
+        assertEquals("3: G00 X1. | 4: M30 // 5:1:E138", run(p));
+        // with a label nothing names, the blocks after M30 go to the checker (E053 there)
+        assertEquals("3: G00 X1. | 4: M30 | 5:  | 6: M30", run(p.replace("GOTO 90", "GOTO 80")));
+    }
+
+    @Test
     void aJumpWithNowhereToGoIsReported() {
         assertEquals("2: X1. // 1:1:E141", run("GOTO 99\nX1.\n"));
         assertEquals(" // 1:1:E141", run("END 1\n"));
