@@ -104,15 +104,7 @@ public final class ProgramFlow implements BlockSource {
             Frame f = stack.peek();
             RawBlock b = f.returning ? null : f.blocks.get(f.next);
             if (!f.isMain() && b == null) {
-                if (!f.returning && reportedNoM99.add(f.file + ":" + f.name)) {
-                    diags.report(Diagnostic.error(Code.E140_NO_M99, f.start, f.name)
-                            .in(f.file == null ? Origin.PROGRAM : Origin.file(f.file)));
-                }
-                if (--f.repeats == 0) {
-                    stack.pop();
-                } else {
-                    f.restart();
-                }
+                endPass(f);
                 continue;
             }
             if (b == null) {
@@ -124,11 +116,8 @@ public final class ProgramFlow implements BlockSource {
             }
             int at = f.next++;
             diags.placeIn(f.origin);
-            if ((!f.isMain() || b.macro() != null) && ++steps == STEP_LIMIT) {
-                diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), STEP_LIMIT);
-                for (Frame running : stack) {
-                    running.repeats = 1; // each call finishes the pass it is in, and no more
-                }
+            if (!f.isMain() || b.macro() != null) {
+                step(b);
             }
             if (f.blocks == mainBlocks && !f.isMain()) {
                 ranLocally.set(at);
@@ -162,6 +151,29 @@ public final class ProgramFlow implements BlockSource {
     @Override
     public int lines() {
         return main.lines();
+    }
+
+    /** A called program's pass is over (M99, or its end: E140): the next repeat, or back to the caller. */
+    private void endPass(Frame f) {
+        if (!f.returning && reportedNoM99.add(f.file + ":" + f.name)) {
+            diags.report(Diagnostic.error(Code.E140_NO_M99, f.start, f.name)
+                    .in(f.file == null ? Origin.PROGRAM : Origin.file(f.file)));
+        }
+        if (--f.repeats == 0) {
+            stack.pop();
+        } else {
+            f.restart();
+        }
+    }
+
+    /** Counts a block of a called program or a macro statement against {@link #STEP_LIMIT}. */
+    private void step(RawBlock b) {
+        if (++steps == STEP_LIMIT) {
+            diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), STEP_LIMIT);
+            for (Frame running : stack) {
+                running.repeats = 1; // each call finishes the pass it is in, and no more
+            }
+        }
     }
 
     /**
