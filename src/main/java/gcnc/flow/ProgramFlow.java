@@ -376,15 +376,9 @@ public final class ProgramFlow implements BlockSource {
 
     /** The chain of calls that comes back to {@code name} ("O1000 > O2000 > O1000"), or null. */
     private String recursion(String name) {
-        List<String> names = new ArrayList<>();
+        List<String> names = running();
         if (main.number() >= 0) {
-            names.add("O" + Program.name(main.number()));
-        }
-        for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
-            Frame f = i.next();
-            if (!f.isMain()) {
-                names.add(f.name);
-            }
+            names.add(0, "O" + Program.name(main.number()));
         }
         int from = names.indexOf(name);
         if (from < 0) {
@@ -396,6 +390,13 @@ public final class ProgramFlow implements BlockSource {
 
     /** The calls in progress and the one asked for: "O1000 > O2000 > ... > O5000". */
     private String path(String name) {
+        List<String> names = running();
+        names.add(name);
+        return String.join(" > ", names);
+    }
+
+    /** The names of the calls in progress, outermost first. */
+    private List<String> running() {
         List<String> names = new ArrayList<>();
         for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
             Frame f = i.next();
@@ -403,8 +404,7 @@ public final class ProgramFlow implements BlockSource {
                 names.add(f.name);
             }
         }
-        names.add(name);
-        return String.join(" > ", names);
+        return names;
     }
 
     /** Where a called program's findings go: its file, and this call before the caller's. */
