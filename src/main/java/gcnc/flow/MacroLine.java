@@ -6,6 +6,7 @@ import gcnc.diag.Span;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
+import gcnc.machine.Control;
 import java.math.BigDecimal;
 import java.math.RoundingMode;
 import java.util.ArrayList;
@@ -26,7 +27,7 @@ final class MacroLine extends MacroExpression {
     }
 
     /** Words for the checker, their values worked out; {@code malformed}: the words before an error (reported). */
-    record Words(List<Word> words, boolean malformed) implements Outcome {
+    record Words(List<Word> words, boolean malformed, int blockDelete) implements Outcome {
     }
 
     /** Nothing to hand on: an assignment, an IF that does not hold, or an error already reported. */
@@ -61,6 +62,8 @@ final class MacroLine extends MacroExpression {
 
     private final int line;
     private final Diagnostics diags;
+    /** The line's block delete level (0: none). */
+    private int level;
     /** The words of a block line read so far: handed on, malformed, when a later one fails. */
     private final List<Word> words = new ArrayList<>();
 
@@ -71,14 +74,43 @@ final class MacroLine extends MacroExpression {
     }
 
     /** Runs a macro line: what it comes to, after reporting any error in it. */
-    static Outcome run(RawBlock b, Variables vars, Diagnostics diags) {
+    static Outcome run(RawBlock b, Variables vars, Diagnostics diags, Control.BlockDelete skip) {
         MacroLine m = new MacroLine(b.macro(), b.line(), vars, diags);
         try {
-            return m.statement();
+            return m.blockDelete(skip);
         } catch (Fault f) {
             diags.error(f.code, Span.of(b.line(), f.at + 1), f.args);
-            return m.words.isEmpty() ? DONE : new Words(List.copyOf(m.words), true);
+            return m.words.isEmpty() ? DONE : new Words(List.copyOf(m.words), true, m.level);
         }
+    }
+
+    /**
+     * A block delete mark first ({@code /}, {@code /2}): with the switch on ({@code skip} ON) a
+     * statement is skipped, while a block of words goes on with its mark (the checker follows both
+     * positions of the switch for it, as for any '/' block); a control without block delete
+     * ({@code NONE}) reports the '/' as E010, as the parser does.
+     */
+    private Outcome blockDelete(Control.BlockDelete skip) throws Fault {
+        blank();
+        if (peek() != '/') {
+            return statement();
+        }
+        if (skip == Control.BlockDelete.NONE) {
+            throw new Fault(Code.E010_SYNTAX, i, "'/'");
+        }
+        i++;
+        level = 1;
+        if (Character.isDigit(peek()) && peek() != '0') {
+            level = peek() - '0';
+            i++;
+        }
+        blank();
+        boolean statement = peek() == '#' || keywordAhead("GOTO") || keywordAhead("IF") || keywordAhead("WHILE")
+                || keywordAhead("END");
+        if (statement && skip == Control.BlockDelete.ON) {
+            return DONE;
+        }
+        return statement();
     }
 
     /** The N label a line starts with, or -1 (for GOTO's search). */
@@ -215,7 +247,7 @@ final class MacroLine extends MacroExpression {
             }
             out.add(new Word(l, number, span(at)));
         }
-        return out.isEmpty() ? DONE : new Words(List.copyOf(out), false);
+        return out.isEmpty() ? DONE : new Words(List.copyOf(out), false, level);
     }
 
     /** The number text of a computed word: whole for G M N O S T P L, else with a decimal point (a macro value is never read in least increments). */

@@ -202,10 +202,10 @@ public final class ProgramFlow implements BlockSource {
 
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
     private RawBlock macro(RawBlock b, Frame f, int at) throws IOException {
-        MacroLine.Outcome o = MacroLine.run(b, vars, diags);
+        MacroLine.Outcome o = MacroLine.run(b, vars, diags, control.blockDelete());
         if (o instanceof MacroLine.Words w) {
             List<Word> words = w.words();
-            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), b.blockDelete(), 0);
+            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0);
         }
         if (steps >= STEP_LIMIT) {
             return null; // jumps are no longer followed: the program runs on to its end

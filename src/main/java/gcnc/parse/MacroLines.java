@@ -40,6 +40,15 @@ final class MacroLines {
 
     private static boolean startsWithKeyword(char[] buf, int end) {
         int i = firstNonBlank(buf, end);
+        if (i < end && buf[i] == '/') { // a block delete mark, with its level
+            i++;
+            if (i < end && Character.isDigit(buf[i])) {
+                i++;
+            }
+            while (i < end && (buf[i] == ' ' || buf[i] == '\t')) {
+                i++;
+            }
+        }
         if (i < end && (buf[i] == 'N' || buf[i] == 'n')) {
             int j = i + 1;
             while (j < end && Character.isDigit(buf[j])) {

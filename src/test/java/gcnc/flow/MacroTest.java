@@ -52,7 +52,7 @@ class MacroTest {
                 for (Word w : b.words()) {
                     words.add(w.toString());
                 }
-                out.add(b.line() + ": " + String.join(" ", words));
+                out.add(b.line() + ": " + (b.blockDelete() > 0 ? "/" + b.blockDelete() + " " : "") + String.join(" ", words));
             }
         } catch (IOException e) {
             throw new AssertionError(e);
@@ -248,6 +248,13 @@ class MacroTest {
         assertEquals("p.nc:4:1: error[E141]: GOTO 10: no N10 to go to in this program from line 2 on", messages(r));
         assertEquals("2: N10 X2. | 3: X3. | 2: N10 X2. | 3: X3. | 6: M30",
                 run("#1 = 0\nN10 X2.\nX3.\n#1 = #1 + 1\nIF [#1 LT 2] GOTO 10\nM30\n"));
+    }
+
+    @Test
+    void aBlockDeleteMarkOnAMacroLine() {
+        // the switch is off on fanuc-a: the statement runs; a block of words keeps its mark for the checker
+        assertEquals("3: X2. | 4: /2 X2.", run("#1 = 1\n/#1 = 2\nX#1\n/2 X#1\n"));
+        assertEquals("", messages(check("fanuc-a", "G00 G21 G99\n#1 = 52.\n/G00 X#1 Z2.\nM30\n")));
     }
 
     @Test
