@@ -91,6 +91,7 @@ final class MacroLine extends MacroExpression {
      * ({@code NONE}) reports the '/' as E010, as the parser does.
      */
     private Outcome blockDelete(Control.BlockDelete skip) throws Fault {
+        brackets();
         blank();
         if (peek() != '/') {
             return statement();
@@ -141,6 +142,26 @@ final class MacroLine extends MacroExpression {
             return m.keyword("END") && m.loopId() == id;
         } catch (Fault f) {
             return false;
+        }
+    }
+
+    /**
+     * Brackets nest at most five deep, the brackets of functions and conditions included (FANUC
+     * Series 16/18 lathe operator's manual, custom macro, "Bracket nesting": alarm 118 past it):
+     * E010 at the sixth '['.
+     */
+    private void brackets() throws Fault {
+        int depth = 0;
+        boolean comment = false;
+        for (int k = 0; k < s.length(); k++) {
+            char c = s.charAt(k);
+            if (comment || c == '(') {
+                comment = c != ')';
+            } else if (c == '[' && ++depth > 5) {
+                throw new Fault(Code.E010_SYNTAX, k, "'[' (brackets nest at most five deep)");
+            } else if (c == ']') {
+                depth--;
+            }
         }
     }
 

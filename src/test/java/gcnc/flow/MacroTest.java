@@ -265,6 +265,12 @@ class MacroTest {
     }
 
     @Test
+    void bracketsNestFiveDeep() {
+        assertEquals("1: X5.", run("X[[[[[5]]]]]\n"));
+        assertEquals(" // 1:7:E010", run("X[[[[[[5]]]]]]\n"));
+    }
+
+    @Test
     void conditionsJoinedByAndOrAreNotSupportedYet() {
         assertEquals(" // 1:12:E111", run("IF [1 EQ 1 AND 2 EQ 2] GOTO 5\n"));
     }
