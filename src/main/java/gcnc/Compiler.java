@@ -2,6 +2,7 @@ package gcnc;
 
 import gcnc.check.Checker;
 import gcnc.diag.Diagnostics;
+import gcnc.flow.ProgramFlow;
 import gcnc.galil.Dialect;
 import gcnc.galil.GalilLine;
 import gcnc.galil.LineSink;
@@ -16,6 +17,7 @@ import gcnc.sim.SimulatorThread;
 import gcnc.tables.Tables;
 import java.io.IOException;
 import java.io.Reader;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -27,11 +29,26 @@ import java.util.Optional;
  * the caller writes the output only for a clean result.
  */
 public final class Compiler {
-    /** What a run needs besides the source. {@code simulation} empty = do not simulate. */
+    /**
+     * What a run needs besides the source. {@code simulation} empty = do not simulate.
+     * {@code programs}: the folder where programs the source calls (M98) and does not hold itself
+     * are looked for, as {@code O1000.nc} or {@code 1000.nc} (the source file's folder); empty =
+     * only the source itself.
+     */
     public record Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
-                           boolean inlineSourceMap) {
+                           boolean inlineSourceMap, Optional<Path> programs) {
         public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation) {
             this(tables, profile, dialect, simulation, false);
+        }
+
+        public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
+                        boolean inlineSourceMap) {
+            this(tables, profile, dialect, simulation, inlineSourceMap, Optional.empty());
+        }
+
+        /** The same settings with called programs looked for in {@code folder} too. */
+        public Settings withPrograms(Path folder) {
+            return new Settings(tables, profile, dialect, simulation, inlineSourceMap, Optional.of(folder));
         }
     }
 
@@ -117,10 +134,14 @@ public final class Compiler {
 
     /**
      * The blocks of a program as the control would run them: the one place where the stages
-     * between the parser and the checker are put together, for check and compile alike.
+     * between the parser and the checker are put together, for check and compile alike. The
+     * parser's blocks go through the program flow (subprogram calls, macro statements), which
+     * keeps a program without calls or macro statements streaming.
      */
     private static BlockSource blocks(Reader source, Settings settings, Diagnostics diags) {
-        return new BlockReader(source, diags);
+        gcnc.machine.Control control = settings.profile().control();
+        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros()), control, diags,
+                settings.programs());
     }
 
     /** The longest first line read for a stock header; the program is read once, from the start. */
@@ -144,7 +165,7 @@ public final class Compiler {
         in.reset();
         SimOptions o = withStockHeader(first.toString(), settings.profile(), settings.simulation().get());
         return new Settings(settings.tables(), settings.profile(), settings.dialect(), Optional.of(o),
-                settings.inlineSourceMap());
+                settings.inlineSourceMap(), settings.programs());
     }
 
     /**

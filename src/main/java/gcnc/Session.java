@@ -65,18 +65,21 @@ public final class Session {
     private final Options options;
     private final Tables tables;
     private final MachineProfile profile;
+    /** Where programs a program calls (M98) are looked for besides the program itself. */
+    private final Optional<Path> programs;
 
-    private Session(Options options, Tables tables, MachineProfile profile) {
+    private Session(Options options, Tables tables, MachineProfile profile, Optional<Path> programs) {
         this.options = options;
         this.tables = tables;
         this.profile = profile;
+        this.programs = programs;
     }
 
     /** Loads the tables and the machine profile; a broken table or profile is a {@link TableException} at its file and line. */
     public static Session open(Options options) throws TableException {
         Tables t = Tables.load(options.source());
         MachineProfile p = ProfileLoader.load(options.machine(), options.source(), t, options.control().orElse(null));
-        return new Session(options, t, p);
+        return new Session(options, t, p, Optional.empty());
     }
 
     public Options options() {
@@ -85,12 +88,17 @@ public final class Session {
 
     /** The same tables and machine in another dialect. */
     public Session withDialect(String dialect) {
-        return new Session(options.withDialect(dialect), tables, profile);
+        return new Session(options.withDialect(dialect), tables, profile, programs);
     }
 
     /** The same tables and machine with this blank (a blank's default stick-out comes from the profile, so it is given after opening). */
     public Session withStock(StockSize blank) {
-        return new Session(options.withStock(blank), tables, profile);
+        return new Session(options.withStock(blank), tables, profile, programs);
+    }
+
+    /** The same session looking for called programs ({@code O1000.nc}, {@code 1000.nc}) in {@code folder}. */
+    public Session withPrograms(Optional<Path> folder) {
+        return new Session(options, tables, profile, folder);
     }
 
     public Tables tables() {
@@ -119,12 +127,14 @@ public final class Session {
 
     /** Check, translate and simulate a program file as the command line's {@code compile} does, output discarded. */
     public Compiler.Result compile(Path program) throws IOException {
+        Path folder = program.toAbsolutePath().getParent();
         try (Reader in = Files.newBufferedReader(program)) {
-            return compile(in, Optional.of(simulation()), false, line -> { });
+            return withPrograms(Optional.ofNullable(folder)).compile(in, Optional.of(simulation()), false, line -> { });
         }
     }
 
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {
-        return new Compiler.Settings(tables, profile, options.dialect(), simulation, inlineSourceMap);
+        Compiler.Settings s = new Compiler.Settings(tables, profile, options.dialect(), simulation, inlineSourceMap);
+        return programs.map(s::withPrograms).orElse(s);
     }
 }

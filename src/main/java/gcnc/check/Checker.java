@@ -157,6 +157,11 @@ public final class Checker {
         if (cycles.reading()) {
             return cycles.read(b);
         }
+        if (b.macro() != null) {
+            // a macro statement is run by gcnc.flow; one reaching the checker was not followed
+            out.error(Code.E111_MACRO_NOT_SUPPORTED_YET, b.last(), b.macro().strip());
+            return List.of();
+        }
         if (b.malformed()) {
             state = Salvage.keep(b, state, functions, profile);
             return List.of();
@@ -190,6 +195,9 @@ public final class Checker {
         commit(d, sequence);
         if (!causes.isEmpty() && cuts(result)) {
             closeCauses();
+        }
+        if (out.place() != gcnc.diag.Origin.PROGRAM) {
+            result = result.from(out.place()); // a called program's block: the simulator places its findings there
         }
         return Optional.of(origin == null ? result : origin.label(result));
     }
@@ -249,7 +257,7 @@ public final class Checker {
 
     /** The checker for the other position of the block delete switch, from the state reached so far. */
     private Checker fork() {
-        Checker c = new Checker(tables, profile, new Diagnostics(), errorCap, !skipDeleted, true);
+        Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
         c.state = state;
         c.blocks = blocks;
         c.seenN.or(seenN);
@@ -313,7 +321,7 @@ public final class Checker {
     private void note(Cause c) {
         if (c.later > 0) {
             out.report(new Diagnostic(Code.E115_SAME_CAUSE, Severity.NOTE, c.first.span(),
-                    List.of(Integer.toString(c.later), c.lines.toString())));
+                    List.of(Integer.toString(c.later), c.lines.toString()), c.first.origin().withoutCalls()));
         }
     }
 
@@ -337,7 +345,7 @@ public final class Checker {
 
     /** A repeated N (E114) where N may repeat; remembers the block's N. */
     private void noteSequence(BlockDraft d) {
-        if (d.has(gcnc.ir.Letter.N) && !profile.control().increasingN()) {
+        if (d.has(gcnc.ir.Letter.N) && !profile.control().increasingN() && d.block.depth() == 0) {
             long n = (long) d.value(gcnc.ir.Letter.N);
             if (n >= 0 && n < Integer.MAX_VALUE) {
                 if (seenN.get((int) n)) {
@@ -382,7 +390,7 @@ public final class Checker {
         if (kept.size() == b.words().size() || kept.isEmpty()) {
             return b;
         }
-        return new RawBlock(b.line(), kept, kept.get(kept.size() - 1).span(), b.malformed(), b.blockDelete());
+        return b.called(kept, kept.get(kept.size() - 1).span(), b.depth());
     }
 
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
@@ -435,13 +443,13 @@ public final class Checker {
                 out.report(d);
                 if (d.severity() != Severity.NOTE) {
                     out.report(new Diagnostic(Code.E118_BLOCK_DELETE_VARIANT, Severity.NOTE, d.span(),
-                            List.of(switchOn ? "on" : "off")));
+                            List.of(switchOn ? "on" : "off"), d.origin().withoutCalls()));
                 }
             }
         }
     }
 
     private static String key(Diagnostic d) {
-        return d.code() + "@" + d.span() + d.args();
+        return d.code() + "@" + d.origin().file() + ":" + d.span() + d.args();
     }
 }

@@ -41,6 +41,6 @@ record CycleOrigin(String cycle, int pass, int passes, int cycleLine, long p, lo
         ProgramFrame labelled = new ProgramFrame(f.origin(), f.perX(), f.perZ(),
                 f.sequence().isEmpty() ? name : f.sequence() + " " + name);
         return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), b.motions(), b.after(), b.end(),
-                labelled);
+                labelled, b.origin());
     }
 }

@@ -28,7 +28,7 @@ final class CheckCommand extends RunCommand {
         for (Path file : files) {
             String name = SourceFiles.display(file);
             try (Reader in = SourceFiles.open(file, streams().in())) {
-                Compiler.Result r = setup.session().check(in);
+                Compiler.Result r = setup.session().withPrograms(SourceFiles.programsFolder(file)).check(in);
                 int errors = reporter.report(name, r.diagnostics());
                 Phrases say = reporter.phrases();
                 reporter.say(say.get("check.summary", name, say.count(r.blocks(), "block"),

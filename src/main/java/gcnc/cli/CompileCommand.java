@@ -70,7 +70,7 @@ final class CompileCommand extends RunCommand {
             }
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
-                r = setup.session().withDialect(dialect.name()).compile(in, sim, sourceMap,
+                r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
                         mapper.wrap(line -> outputs.dmc.line(line.text())));
             } catch (IOException e) {
                 return reporter.ioFault(name, "cannot read", e);

@@ -95,7 +95,7 @@ final class SimulateCommand extends RunCommand {
                 }
             } else {
                 LineSink discard = line -> { };
-                Compiler.Result r = setup.session().withDialect(dialect.name()).compile(in, Optional.of(options), false,
+                Compiler.Result r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, Optional.of(options), false,
                         discard);
                 diags = r.diagnostics();
                 report = r.simulation();

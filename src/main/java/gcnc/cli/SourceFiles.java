@@ -51,6 +51,17 @@ final class SourceFiles {
                         .onUnmappableCharacter(CodingErrorAction.REPLACE)), 1 << 16);
     }
 
+    /** The folder of a program file, where the programs it calls are looked for ("" for a bare file name). */
+    static Path folder(Path file) {
+        Path parent = file.getParent();
+        return parent != null ? parent : Path.of("");
+    }
+
+    /** Where the programs a program calls (M98) are looked for: beside it; none for standard input. */
+    static java.util.Optional<Path> programsFolder(Path file) {
+        return isStdin(file) ? java.util.Optional.empty() : java.util.Optional.of(folder(file));
+    }
+
     /** The short reason an I/O exception gives, without Java's class names. */
     static String reason(IOException e) {
         if (e instanceof java.nio.file.NoSuchFileException) {

@@ -163,6 +163,46 @@ public enum Code {
     E121_DECIMAL_COMMA(121),
     /** Checker: a G04 dwell of negative time (the backend would write WT with a negative time). */
     E122_NEGATIVE_DWELL(122),
+    /** Program flow: M98 calls a program that is not after the main program's end in the file (no folder to look in). */
+    E130_NO_PROGRAM_HERE(130),
+    /** Program flow: M98 calls a program that is neither in the file nor a file beside it. */
+    E131_NO_PROGRAM_BESIDE(131),
+    /** Program flow: a call (M98, M97) without P. */
+    E132_CALL_WITHOUT_P(132),
+    /** Program flow: a program that calls itself, directly or through others. */
+    E133_RECURSIVE_CALL(133),
+    /** Program flow: calls nested deeper than the control allows. */
+    E134_CALLS_TOO_DEEP(134),
+    /** Program flow: a repeat count (L, or the leading digits of a Fanuc P) that is not 1 to 9999. */
+    E135_BAD_REPEAT_COUNT(135),
+    /** Program flow (note): the call that led to the finding before it, one note per level. */
+    E136_CALLED_FROM(136),
+    /** Program flow: the program after its first call is longer than gcnc holds in memory. */
+    E137_TOO_LONG_TO_HOLD(137),
+    /** Program flow (note): a program after the main program's end that nothing calls, or a label there that a GOTO or M97 names and this run never reached: only parsed. */
+    E138_NEVER_CALLED(138),
+    /** Program flow (warning): M99 in the main program, which the control runs again from its top. */
+    E139_M99_IN_MAIN(139),
+    /** Program flow: a called program that ends without M99. */
+    E140_NO_M99(140),
+    /** Macro B: GOTO, END or DO with no label or loop to go to in the program (as far as gcnc holds it). */
+    E141_NO_JUMP_TARGET(141),
+    /** Program flow: two programs with the same number after the main program's end. */
+    E142_DUPLICATE_PROGRAM(142),
+    /** Program flow: the repeat count given twice (a Fanuc P with more than 4 digits and an L). */
+    E143_TWO_REPEAT_COUNTS(143),
+    /** Program flow (note): as E136, for a call written in a file of its own (named). */
+    E144_CALLED_FROM_FILE(144),
+    /** Program flow (note): as E136, for a call in the program file when the finding is in another file. */
+    E145_CALLED_FROM_PROGRAM_FILE(145),
+    /** Macro B: a value that cannot be had: a vacant variable in a word, a division by zero, a function outside its domain. */
+    E146_MACRO_NO_VALUE(146),
+    /** Macro B: a variable only the machine knows when it runs (positions, modal state, clocks, values set before this program). */
+    E147_MACRO_RUN_TIME_ONLY(147),
+    /** Macro B: #3000, the program's own alarm, is reached. */
+    E148_MACRO_ALARM(148),
+    /** Macro B: a loop (WHILE, or a GOTO that jumps back) that runs past gcnc's limit: an endless loop. */
+    E149_MACRO_ENDLESS_LOOP(149),
 
     // 150-169: G70/G71/G72 contour cycles (gcnc.check.cycle, docs/cycles.md).
     /** Checker: a cycle's P or Q names a block that never comes (the program ends first). */

@@ -1,5 +1,6 @@
 package gcnc.ir;
 
+import gcnc.diag.Origin;
 import java.util.List;
 import java.util.OptionalDouble;
 import java.util.OptionalInt;
@@ -18,13 +19,27 @@ import java.util.OptionalInt;
  * @param after       M functions of moment 99, in source order
  * @param end         position after the block, machine counts
  * @param frame       the block's program coordinates in the machine, for findings; null when unknown
+ * @param origin      the file and the subprogram calls the block was run from ({@link Origin#PROGRAM}:
+ *                    the main program), so that the simulator's findings are placed as the checker's
  */
 public record CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
-                           List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame) {
+                           List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame, Origin origin) {
     public CheckedBlock {
         before = List.copyOf(before);
         motions = List.copyOf(motions);
         after = List.copyOf(after);
+        java.util.Objects.requireNonNull(origin);
+    }
+
+    /** A block of the main program. */
+    public CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
+                        List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame) {
+        this(line, spindleRpm, tool, before, motions, after, end, frame, Origin.PROGRAM);
+    }
+
+    /** The same block, run from {@code o}. */
+    public CheckedBlock from(Origin o) {
+        return new CheckedBlock(line, spindleRpm, tool, before, motions, after, end, frame, o);
     }
 
     /** A block whose program frame is not known (built by hand, as the backend's tests do). */

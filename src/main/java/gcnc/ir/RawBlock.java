@@ -9,17 +9,47 @@ import java.util.List;
  * the block (M30 must be last) but checks nothing else in it. {@code last} is the start of the
  * last word, where the thesis reports end-of-block errors. {@code blockDelete} is the block's
  * block delete mark: 0 for none, else the skip level 1-9 ({@code /} is level 1, {@code /3} level 3).
+ * {@code depth} is how many subprogram calls deep the block runs (0: the main program; set by
+ * gcnc.flow, which hands a called program's blocks on once per call): N numbers are the main
+ * program's labels only there. {@code macro} is the text of a Fanuc macro B statement line
+ * ({@code #101 = [#1 + 2.5] * 2}, {@code X[#1 + 2.]}, {@code IF [..] GOTO 20}) as the parser
+ * hands it on where the control has macros, null for any other block: gcnc.flow runs it and
+ * hands the checker the words it comes to, never the statement.
  */
-public record RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete) {
+public record RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete, int depth,
+                       String macro) {
     public RawBlock {
         words = List.copyOf(words);
         if (blockDelete < 0 || blockDelete > 9) {
             throw new IllegalArgumentException("block delete level is 0-9: " + blockDelete);
         }
+        if (depth < 0) {
+            throw new IllegalArgumentException("call depth is 0 or more: " + depth);
+        }
     }
 
-    /** A block without a block delete mark. */
+    /** A block of words. */
+    public RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete, int depth) {
+        this(line, words, last, malformed, blockDelete, depth, null);
+    }
+
+    /** A macro statement line: its text, and where its first character is as {@code last}. */
+    public static RawBlock macro(int line, String text, Span start) {
+        return new RawBlock(line, List.of(), start, false, 0, 0, text);
+    }
+
+    /** A block of the main program. */
+    public RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete) {
+        this(line, words, last, malformed, blockDelete, 0);
+    }
+
+    /** A block of the main program without a block delete mark. */
     public RawBlock(int line, List<Word> words, Span last, boolean malformed) {
-        this(line, words, last, malformed, 0);
+        this(line, words, last, malformed, 0, 0);
+    }
+
+    /** The same block run {@code depth} calls deep, with {@code words} only (the flow words taken out, or a macro line's words). */
+    public RawBlock called(List<Word> words, Span last, int depth) {
+        return new RawBlock(line, words, last, malformed, blockDelete, depth, null);
     }
 }

@@ -33,14 +33,32 @@ import java.util.TreeMap;
  * @param builderM          an M code not in the table is passed to the machine; else E012
  * @param cycleRetractMm    the 45-degree retract of G71/G72 roughing passes when the program gives
  *                          no R (Haas Setting 73, Fanuc parameter 5133), mm; NaN when not set
+ * @param calls             how M98 names the program and its repeat count, and how deep calls nest
+ * @param macros            the control runs Fanuc macro B ({@code #} variables, {@code [ ]}
+ *                          expressions, IF/GOTO/WHILE); else a macro line is E111
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
-                      BlockDelete blockDelete, boolean builderM, double cycleRetractMm) {
+                      BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros) {
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
+
+    /**
+     * Subprogram calls (keys {@code call.p} and {@code call.depth}).
+     *
+     * @param countInP a P of more than 4 digits is a repeat count and a 4-digit program number
+     *                 (Fanuc: P21000 = O1000 twice); else P is the program number alone (Haas)
+     * @param depth    how many calls may be in progress at once (the main program not counted)
+     */
+    public record Calls(boolean countInP, int depth) {
+        public Calls {
+            if (depth < 1) {
+                throw new IllegalArgumentException("call depth is at least 1: " + depth);
+            }
+        }
+    }
 
     public Control {
         letters = Set.copyOf(letters);

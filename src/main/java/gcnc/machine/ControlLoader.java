@@ -23,7 +23,7 @@ public final class ControlLoader {
     /** The keys of control.cfg (tables/controls/README.md); any other is a fault, with a suggestion. */
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
-            "m.unlisted", "cycle.retract_mm");
+            "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros");
 
     private ControlLoader() {
     }
@@ -89,7 +89,8 @@ public final class ControlLoader {
                 f.choice("g28.bare", "error", "error", "home").equals("home"),
                 Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
                 f.choice("m.unlisted", "error", "error", "builder").equals("builder"),
-                retract(f));
+                retract(f), calls(f),
+                f.choice("macros", "none", "none", "fanuc-b").equals("fanuc-b"));
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */
@@ -99,6 +100,16 @@ public final class ControlLoader {
             throw f.fault(f.required("cycle.retract_mm"), "cycle.retract_mm is a length in mm, zero or more");
         }
         return r;
+    }
+
+    /** {@code call.p} (number or count_and_number) and {@code call.depth} (1 to 99, default 4). */
+    private static Control.Calls calls(ProfileFile f) throws TableException {
+        boolean countInP = f.choice("call.p", "number", "number", "count_and_number").equals("count_and_number");
+        String depth = f.text("call.depth", "4");
+        if (!depth.matches("[0-9]{1,2}") || Integer.parseInt(depth) < 1) {
+            throw f.fault(f.required("call.depth"), "'call.depth' is a whole number from 1 to 99, not '" + depth + "'");
+        }
+        return new Control.Calls(countInP, Integer.parseInt(depth));
     }
 
     private static Map<Integer, GFunction> gTable(Csv csv) throws TableException {

@@ -10,7 +10,13 @@ public enum MRole {
     CHUCK_OPEN(10), CHUCK_CLOSE(11), END(30),
     /** Anything else the machine does through its outputs (coolant, tailstock, conveyor, gears). */
     OUTPUT(-1),
-    /** A function gcnc cannot follow yet (subprograms): using it is E110. */
+    /** M98: call a program by its number (P), L times; followed by gcnc.flow, not by the checker. */
+    CALL(-3),
+    /** Haas M97: call the blocks of the same program from the N label P on, L times; followed by gcnc.flow. */
+    LOCAL_CALL(-5),
+    /** M99: the end of a called program (return to the caller); in the main program, its end. */
+    RETURN(-4),
+    /** A function gcnc cannot follow yet (Haas M97, live tooling): using it is E110. */
     UNSUPPORTED(-2);
 
     private final int number;
@@ -21,6 +27,11 @@ public enum MRole {
 
     public int number() {
         return number;
+    }
+
+    /** Program flow that gcnc.flow follows: a call. */
+    public boolean call() {
+        return this == CALL || this == LOCAL_CALL;
     }
 
     public boolean spindleGroup() {

@@ -38,6 +38,11 @@ public final class BlockReader implements BlockSource {
     private final List<Word> words = new ArrayList<>();
     /** Try {@link FastScanner} before the ANTLR lexer (off only in tests that compare the two). */
     private final boolean fastPath;
+    /**
+     * The control has Fanuc macro B: a macro statement line is handed on whole, as
+     * {@link RawBlock#macro}, for gcnc.flow to run; else it is error 111.
+     */
+    private final boolean macros;
     /** The previous line ended inside a comment; where that comment's '(' stands. */
     private boolean inComment;
     private Span commentStart;
@@ -52,13 +57,23 @@ public final class BlockReader implements BlockSource {
     private int blockDelete;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
-        this(in, diagnostics, true);
+        this(in, diagnostics, true, false);
+    }
+
+    /** A reader for a control that has Fanuc macro B when {@code macros}: its macro lines come back as {@link RawBlock#macro}. */
+    public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros) {
+        return new BlockReader(in, diagnostics, true, macros);
     }
 
     BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath) {
+        this(in, diagnostics, fastPath, false);
+    }
+
+    private BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros) {
         this.source = new LineSource(in);
         this.diagnostics = diagnostics;
         this.fastPath = fastPath;
+        this.macros = macros;
     }
 
     /** The next block, or null at the end of the input. */
@@ -90,6 +105,11 @@ public final class BlockReader implements BlockSource {
         boolean open = inComment;
         if (!open && fastPath && FastScanner.scan(source.chars(), source.length(), source.number(), words)) {
             return words.isEmpty() ? null : new RawBlock(source.number(), words, lastSpan(), false);
+        }
+        if (!open && macros && MacroLines.isStatement(source.chars(), source.length())) {
+            int at = MacroLines.firstNonBlank(source.chars(), source.length());
+            return RawBlock.macro(source.number(), new String(source.chars(), 0, source.length()),
+                    Span.of(source.number(), at + 1));
         }
         words.clear();
         blockDelete = 0;

@@ -32,6 +32,8 @@ public final class Simulator {
     private int nextMotion;
     private int findings;
     private int lastLine = 1;
+    /** Where the block being replayed was run from (a called program's file and calls): its findings go there. */
+    private gcnc.diag.Origin origin = gcnc.diag.Origin.PROGRAM;
 
     public Simulator(MachineProfile profile, SimOptions options, Diagnostics diagnostics) {
         this.profile = profile;
@@ -55,6 +57,7 @@ public final class Simulator {
 
     /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
     public void block(CheckedBlock intended, List<GalilLine> emitted) {
+        origin = intended.origin();
         checks.frame(intended.frame());
         expected = motions;
         motions.clear();
@@ -160,7 +163,7 @@ public final class Simulator {
 
     private void report(Code code, int line, Object... args) {
         findings++;
-        diagnostics.report(Diagnostic.error(code, Span.of(Math.max(1, line), 1), args));
+        diagnostics.report(Diagnostic.error(code, Span.of(Math.max(1, line), 1), args).in(origin));
     }
 
     /** The interpreter's events, turned into machine state and checks. */

@@ -51,6 +51,48 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
+    /** docs/program-flow.md shows the output of docs/examples/flow/grooves.nc (a call into a file beside it and back). */
+    @Test
+    void theProgramFlowExampleIsWhatGcncPrints() throws IOException {
+        String doc = Files.readString(Path.of("docs/program-flow.md"));
+        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/flow/grooves.nc --machine fanuc\n";
+        int from = doc.indexOf(command);
+        assertTrue(from >= 0, "docs/program-flow.md lost its example");
+        from += command.length();
+        String shown = doc.substring(from, doc.indexOf("```", from));
+        Run r = gcnc("check", "docs/examples/flow/grooves.nc", "--machine", "fanuc");
+        assertEquals(1, r.status());
+        assertEquals(shown, r.err() + r.out());
+    }
+
+    /** docs/program-flow.md shows the output of docs/examples/flow/pecks.nc (a macro B loop and a value only the machine knows). */
+    @Test
+    void theMacroExampleIsWhatGcncPrints() throws IOException {
+        String doc = Files.readString(Path.of("docs/program-flow.md"));
+        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/flow/pecks.nc --machine fanuc\n";
+        int from = doc.indexOf(command);
+        assertTrue(from >= 0, "docs/program-flow.md lost its macro example");
+        from += command.length();
+        String shown = doc.substring(from, doc.indexOf("```", from));
+        Run r = gcnc("check", "docs/examples/flow/pecks.nc", "--machine", "fanuc");
+        assertEquals(1, r.status());
+        assertEquals(shown, r.err() + r.out());
+    }
+
+    /** A simulator finding in a called program is placed in its file, with the call, as the checker's are. */
+    @Test
+    void aSimulatorFindingInACalledFileNamesThatFileAndTheCall() throws IOException {
+        Path main = program("O0001\nG00 G18 G21 G40 G80 G99\nT0101\nG50 S2000\nG97 S800 M03\nG00 X52. Z2.\n"
+                + "M98 P1000\nG00 X100. Z100.\nM30\n");
+        Path sub = main.resolveSibling("O1000.nc");
+        Files.writeString(sub, "O1000\nG00 X20. Z-10.\nG00 X52.\nZ2.\nM99\n");
+        Run r = gcnc("compile", main.toString(), "--machine", "fanuc", "-o", main.resolveSibling("part.dmc").toString());
+        assertEquals(1, r.status(), r.err());
+        assertTrue(r.err().contains(sub + ":2:1: error[E305]: rapid move enters the blank"), r.err());
+        assertTrue(r.err().contains(sub + ":2:1: note[E145]: in O1000 called from line 7 of the program file (M98 P1000)"),
+                r.err());
+    }
+
     @Test
     void theSampleProgramChecksClean() {
         Run r = gcnc("check", "samples/turning.nc");

@@ -68,7 +68,7 @@ public final class SyntaxActions {
                 }
             } else if (w.letter() == Letter.M && !w.number().isEmpty()) {
                 MFunction f = d.functions.m(NumberText.integer(w.number()));
-                if (f != null && f.role() == MRole.UNSUPPORTED) {
+                if (f != null && (f.role() == MRole.UNSUPPORTED || f.role().call())) {
                     return w;
                 }
             }
@@ -109,7 +109,12 @@ public final class SyntaxActions {
                     d.fail(out, Code.E012_UNDEFINED_M, w.span(), w);
                     return null;
                 }
-                return byNumber[f.role() == MRole.UNSUPPORTED ? 17 : f.role() == MRole.END ? 15 : 12];
+                // a call reaches the checker only without gcnc.flow in front of it: not followed, E110;
+                // M99 reaches it only in the main program, which it ends (gcnc.flow warns: E139)
+                if (f.role() == MRole.UNSUPPORTED || f.role().call()) {
+                    return byNumber[17];
+                }
+                return byNumber[f.role() == MRole.END || f.role() == MRole.RETURN ? 15 : 12];
             }
             default:
                 // N X Z U W I K R P, and the letters of cycles and threads (Q D A E ...)

@@ -1,0 +1,121 @@
+package gcnc.flow;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.RawBlock;
+import java.io.IOException;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * Where the macro statements GOTO, WHILE and END send a running program ({@link Frame}): the
+ * block labelled N n (from the GOTO to the end, then from the start of what is held), into a loop
+ * while its condition holds, after its END when it does not, back to its WHILE from its END. A
+ * WHILE that turns more than {@link ProgramFlow#LOOP_LIMIT} times from one entry, or a GOTO that
+ * jumps back that often, is an endless loop (E149); nowhere to go is E141.
+ */
+final class MacroJumps {
+    private final Diagnostics diags;
+    /** How many times each GOTO (program and index) has jumped back. */
+    private final Map<String, Integer> jumpsBack = new HashMap<>();
+
+    MacroJumps(Diagnostics diags) {
+        this.diags = diags;
+    }
+
+    /** GOTO n: the block labelled N n, searched from the GOTO to the end, then from the start. */
+    void goTo(Frame f, MacroLine.Jump j, int at) throws IOException {
+        int target = find(f.blocks, j.label(), at);
+        if (target < 0) {
+            diags.error(Code.E141_NO_JUMP_TARGET, j.at(), j.text(), "N" + j.label(), firstLine(f));
+            return;
+        }
+        if (target <= at) {
+            String key = System.identityHashCode(f.blocks) + ":" + at;
+            int n = jumpsBack.merge(key, 1, Integer::sum);
+            if (n > ProgramFlow.LOOP_LIMIT) {
+                diags.error(Code.E149_MACRO_ENDLESS_LOOP, j.at(), j.text(), j.at().line(), ProgramFlow.LOOP_LIMIT);
+                return;
+            }
+        }
+        f.next = target;
+    }
+
+    /** WHILE [..] DO m: on into the loop while it holds (up to the limit), else after its END m. */
+    void loop(Frame f, MacroLine.Loop l, int at) throws IOException {
+        int id = l.id();
+        boolean again = f.cameBack && f.whileAt[id] == at;
+        f.cameBack = false;
+        f.whileAt[id] = at;
+        f.turns[id] = again ? f.turns[id] + 1 : 1;
+        boolean holds = l.holds();
+        if (holds && f.turns[id] > ProgramFlow.LOOP_LIMIT) {
+            diags.error(Code.E149_MACRO_ENDLESS_LOOP, l.at(), l.text(), l.at().line(), ProgramFlow.LOOP_LIMIT);
+            holds = false;
+        }
+        if (holds) {
+            return;
+        }
+        f.whileAt[id] = -1;
+        for (int k = at + 1; ; k++) {
+            RawBlock b = f.blocks.get(k);
+            if (b == null) {
+                diags.error(Code.E141_NO_JUMP_TARGET, l.at(), l.text(), "END " + id, firstLine(f));
+                return;
+            }
+            if (b.macro() != null && MacroLine.isEnd(b.macro(), id)) {
+                f.next = k + 1;
+                return;
+            }
+        }
+    }
+
+    /** END m: back to the WHILE of loop m. */
+    void endLoop(Frame f, MacroLine.EndLoop e) throws IOException {
+        int at = f.whileAt[e.id()];
+        if (at < 0 || at < f.blocks.first()) {
+            diags.error(Code.E141_NO_JUMP_TARGET, e.at(), e.text(), "WHILE [..] DO " + e.id(), firstLine(f));
+            return;
+        }
+        f.next = at;
+        f.cameBack = true;
+    }
+
+    /**
+     * The index of the block labelled N{@code label}: searched from the block after {@code at} to
+     * the end, then from the first block held up to {@code at}; -1 when there is none.
+     */
+    static int find(Blocks blocks, long label, int at) throws IOException {
+        for (int k = at + 1; ; k++) {
+            RawBlock b = blocks.get(k);
+            if (b == null) {
+                break;
+            }
+            if (label(b) == label) {
+                return k;
+            }
+        }
+        for (int k = blocks.first(); k <= at; k++) {
+            RawBlock b = blocks.get(k);
+            if (b != null && label(b) == label) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
+    /** A block's N label: its first word's, or a macro line's leading N; -1 for none. */
+    static long label(RawBlock b) {
+        if (b.macro() != null) {
+            return MacroLine.label(b.macro());
+        }
+        return !b.words().isEmpty() && b.words().get(0).letter() == gcnc.ir.Letter.N
+                ? FlowWords.digits(b.words().get(0).number()) : -1;
+    }
+
+    /** The line of the first block a jump can reach. */
+    static int firstLine(Frame f) throws IOException {
+        RawBlock b = f.blocks.get(f.blocks.first());
+        return b == null ? 1 : b.line();
+    }
+}

@@ -1,0 +1,421 @@
+package gcnc.flow;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Origin;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.Control;
+import gcnc.machine.MRole;
+import gcnc.parse.BlockSource;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.HashSet;
+import java.util.Deque;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The program-flow stage: the blocks of a program in the order the control runs them, following
+ * subprogram calls (M98 P, repeated by L or, on Fanuc, by the digits of P before the program
+ * number) and returns (M99), and running Fanuc macro B statements (variables, expressions,
+ * GOTO, IF, WHILE; {@link MacroLine}). The checker is handed each block once per time it runs,
+ * without its flow words (M98 P L, M99), at its call depth, with the values of its macro words
+ * worked out; findings in a called program are placed in its file with a note per call
+ * (Diagnostics.placeIn, E136). docs/program-flow.md.
+ *
+ * <p>Memory: a program without a call is read one line at a time, as before. At the first call
+ * the rest of the file is read and held (the called programs are after the main program's end),
+ * at most {@link #HOLD_LIMIT} blocks in all, with the files beside it that calls name; past that
+ * the call is E137 and calls are no longer followed. A main program is held from its first macro
+ * statement on (GOTO and END jump back), up to the same limit.
+ */
+public final class ProgramFlow implements BlockSource {
+    /** The most blocks held in memory for calls (the rest of the file after the first call, and the called files), and for jumps. */
+    public static final int HOLD_LIMIT = 200_000;
+    /** How many times a WHILE loop may run from one entry, and a GOTO jump back, before it is taken for endless (E149). */
+    public static final int LOOP_LIMIT = 100_000;
+    /**
+     * How many blocks of called programs and macro statements a run may go through in all (loops
+     * inside loops, repeats inside repeats: L9999 four deep would never end); past it E149, and
+     * calls and jumps are no longer followed.
+     */
+    public static final int STEP_LIMIT = 5_000_000;
+    /** The largest repeat count (L, or the leading digits of a Fanuc P): four digits. */
+    private static final int MAX_REPEAT = 9999;
+
+    private final MainFile main;
+    private final MainBlocks mainBlocks;
+    private final Control control;
+    private final FlowCodes codes;
+    private final Diagnostics diags;
+    private final Library library;
+    private final Variables vars = new Variables();
+    /** The programs being run, innermost first; the main program at the bottom. */
+    private final Deque<Frame> stack = new ArrayDeque<>();
+    /** The programs (file and name) already reported for ending without M99 (E140). */
+    private final Set<String> reportedNoM99 = new HashSet<>();
+    /** The main program's blocks that an M97 call ran (a local subprogram after M30 is not "after the end"). */
+    private final BitSet ranLocally = new BitSet();
+    /** The labels a GOTO (taken or not) or an M97 names: a stretch after M30 from one of them can be reached. */
+    private final Set<Long> named = new HashSet<>();
+    /** After the main program's end: in a stretch from a named label to the next end code (M30, M02, M99). */
+    private boolean inReachable;
+    private final MacroJumps jumps;
+    /** The first call read the rest of the file into the library. */
+    private boolean libraryRead;
+    /** E137: calls are no longer followed. */
+    private boolean callsOff;
+    /** E137 for the main program's held blocks was reported. */
+    private boolean mainFullReported;
+    /** The block that ends the main program has been handed on. */
+    private boolean finished;
+    /** Blocks of called programs and macro statements gone through so far. */
+    private long steps;
+
+    /**
+     * @param folder where the files of called programs that are not in the program's own file are
+     *               looked for (the program file's folder); empty: only its own file
+     */
+    public ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder) {
+        this(reader, control, diags, folder, HOLD_LIMIT);
+    }
+
+    ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder, int holdLimit) {
+        this.codes = new FlowCodes(control);
+        this.main = new MainFile(reader, control, codes, p -> diags.report(MainFile.neverCalled(p)));
+        this.mainBlocks = new MainBlocks(main, holdLimit);
+        this.control = control;
+        this.diags = diags;
+        this.library = new Library(folder, diags, holdLimit, control.macros());
+        this.jumps = new MacroJumps(diags);
+        stack.push(Frame.main(mainBlocks));
+    }
+
+    @Override
+    public RawBlock next() throws IOException {
+        while (true) {
+            Frame f = stack.peek();
+            RawBlock b = f.returning ? null : f.blocks.get(f.next);
+            if (!f.isMain() && b == null) {
+                endPass(f);
+                continue;
+            }
+            if (b == null) {
+                diags.placeIn(Origin.PROGRAM);
+                if (libraryRead && !callsOff) {
+                    library.neverCalled();
+                }
+                return null;
+            }
+            int at = f.next++;
+            diags.placeIn(f.origin);
+            if (!f.isMain() || b.macro() != null) {
+                step(b);
+            }
+            if (f.blocks == mainBlocks && !f.isMain()) {
+                ranLocally.set(at);
+            }
+            if (f.isMain()) {
+                if (mainBlocks.full() && !mainFullReported) {
+                    mainFullReported = true;
+                    diags.error(Code.E137_TOO_LONG_TO_HOLD, b.last(), mainBlocks.limit());
+                }
+                if (finished) {
+                    if (ranLocally.get(at) || reachable(b)) {
+                        continue; // an M97 local subprogram or a GOTO's label after M30: not "after the end"
+                    }
+                    return b; // after the end: never run (the checker reports it, E053); its calls are not followed
+                }
+                finished = main.isEnd(b);
+                if (main.isPlain(b)) {
+                    return b; // no call, no return, no macro statement: as the parser read it
+                }
+            }
+            if (b.macro() != null) {
+                b = macro(b, f, at);
+                if (b == null) {
+                    continue;
+                }
+            }
+            return follow(b, f);
+        }
+    }
+
+    @Override
+    public int lines() {
+        return main.lines();
+    }
+
+    /** A called program's pass is over (M99, or its end: E140): the next repeat, or back to the caller. */
+    private void endPass(Frame f) {
+        if (!f.returning && reportedNoM99.add(f.file + ":" + f.name)) {
+            diags.report(Diagnostic.error(Code.E140_NO_M99, f.start, f.name)
+                    .in(f.file == null ? Origin.PROGRAM : Origin.file(f.file)));
+        }
+        if (--f.repeats == 0) {
+            stack.pop();
+        } else {
+            f.restart();
+        }
+    }
+
+    /** Counts a block of a called program or a macro statement against {@link #STEP_LIMIT}. */
+    private void step(RawBlock b) {
+        if (++steps == STEP_LIMIT) {
+            diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), STEP_LIMIT);
+            for (Frame running : stack) {
+                running.repeats = 1; // each call finishes the pass it is in, and no more
+            }
+        }
+    }
+
+    /**
+     * Whether a block after the main program's end can be reached from a GOTO or M97 that names its
+     * label (or one before it in the same stretch, up to an end code), though this run did not go
+     * there: such a block is not "after the end"; it is only parsed, and a note says so (E138).
+     */
+    private boolean reachable(RawBlock b) {
+        long label = MacroJumps.label(b);
+        if (!inReachable && label >= 0 && named.contains(label)) {
+            inReachable = true;
+            diags.report(new Diagnostic(Code.E138_NEVER_CALLED, gcnc.diag.Severity.NOTE,
+                    b.words().isEmpty() ? b.last() : b.words().get(0).span(), List.of("N" + label), Origin.PROGRAM));
+        }
+        if (!inReachable) {
+            return false;
+        }
+        boolean ends = b.macro() != null ? codes.endsText(b.macro()) : (codes.scan(b.words()) & FlowCodes.END) != 0;
+        if (ends) {
+            inReachable = false;
+        }
+        return true;
+    }
+
+    // ---- macro statements ----
+
+    /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
+    private RawBlock macro(RawBlock b, Frame f, int at) throws IOException {
+        MacroLine.Outcome o = MacroLine.run(b, vars, diags, control.blockDelete());
+        if (o instanceof MacroLine.Words w) {
+            List<Word> words = w.words();
+            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0);
+        }
+        if (steps >= STEP_LIMIT) {
+            return null; // jumps are no longer followed: the program runs on to its end
+        }
+        if (o instanceof MacroLine.Jump j) {
+            named.add(j.label());
+            if (j.taken()) {
+                jumps.goTo(f, j, at);
+            }
+        } else if (o instanceof MacroLine.Loop l) {
+            jumps.loop(f, l, at);
+        } else if (o instanceof MacroLine.EndLoop e) {
+            jumps.endLoop(f, e);
+        }
+        return null;
+    }
+
+    // ---- calls and returns ----
+
+    /** The block as the checker is given it, after following its call or return ({@code f}: the program it is in). */
+    private RawBlock follow(RawBlock b, Frame f) throws IOException {
+        int depth = stack.size() - 1;
+        if (b.malformed() || b.blockDelete() > 0 && control.blockDelete() == Control.BlockDelete.ON) {
+            return depth == 0 ? b : b.called(b.words(), b.last(), depth);
+        }
+        FlowWords w = FlowWords.of(b, codes);
+        if (w == null) {
+            return depth == 0 ? b : b.called(b.words(), b.last(), depth);
+        }
+        if (w.role() == MRole.RETURN) {
+            return giveBack(b, w, f, depth);
+        }
+        Frame callee = steps >= STEP_LIMIT ? null : w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
+        RawBlock rest = b.called(w.rest(), last(w.rest(), w.flow()), depth);
+        if (callee != null) {
+            stack.push(callee);
+        }
+        return rest;
+    }
+
+    /** M99: the end of a called program; in the main program its end, with a warning (E139). M99 P: E110. */
+    private RawBlock giveBack(RawBlock b, FlowWords w, Frame f, int depth) {
+        if (w.p() != null) {
+            diags.error(Code.E110_NOT_SUPPORTED_YET, w.p().span(), w.flow() + " " + w.p(),
+                    "return to a sequence number of the caller");
+        }
+        if (f.isMain()) {
+            diags.report(Diagnostic.warning(Code.E139_M99_IN_MAIN, w.flow().span(), w.flow()));
+            List<Word> kept = new ArrayList<>(b.words());
+            kept.remove(w.p());
+            return b.called(kept, last(kept, w.flow()), 0); // the checker takes M99 as the end
+        }
+        f.returning = true;
+        return b.called(w.rest(), last(w.rest(), w.flow()), depth);
+    }
+
+    /** The frame an M98 starts, or null after reporting why it does not run. */
+    private Frame call(RawBlock b, FlowWords w, Frame caller) throws IOException {
+        Word at = w.flow();
+        if (w.p() == null) {
+            diags.error(Code.E132_CALL_WITHOUT_P, at.span(), at);
+            return null;
+        }
+        long p = FlowWords.digits(w.p().number());
+        if (p < 0) {
+            diags.error(Code.E130_NO_PROGRAM_HERE, w.p().span(), w.p().number());
+            return null;
+        }
+        long number = p;
+        long repeats = 1;
+        boolean countInP = control.calls().countInP() && w.p().number().length() > 4;
+        if (countInP) {
+            number = p % 10_000;
+            repeats = p / 10_000 == 0 ? 1 : p / 10_000;
+            if (repeats > MAX_REPEAT) {
+                diags.error(Code.E135_BAD_REPEAT_COUNT, w.p().span(), w.p());
+                return null;
+            }
+        }
+        if (w.l() != null) {
+            if (countInP && p / 10_000 > 0) {
+                diags.error(Code.E143_TWO_REPEAT_COUNTS, w.l().span(), w.written());
+                return null;
+            }
+            repeats = FlowWords.digits(w.l().number());
+            if (repeats < 1 || repeats > MAX_REPEAT) {
+                diags.error(Code.E135_BAD_REPEAT_COUNT, w.l().span(), w.l());
+                return null;
+            }
+        }
+        if (!libraryRead && !callsOff) {
+            libraryRead = true;
+            if (!main.readAll(library.room(), library::add)) {
+                callsOff = true;
+            }
+        }
+        if (callsOff) {
+            diags.error(Code.E137_TOO_LONG_TO_HOLD, at.span(), library.limit());
+            return null;
+        }
+        String name = "O" + Program.name(number);
+        if (!mayCall(name, at)) {
+            return null;
+        }
+        Program program = library.find(number, w.p(), at.span());
+        if (program == null) {
+            return null;
+        }
+        return new Frame(program, "O" + program.name(), program.file(), program.start(), 0,
+                calledFrom(caller, "O" + program.name(), program.file(), b, w), (int) repeats);
+    }
+
+    /**
+     * The frame a Haas M97 P n starts: the blocks of the calling program from its label N n on,
+     * up to M99 (a local subprogram, usually after M30); or null after reporting why it does not
+     * run. No such label: E141 at P.
+     */
+    private Frame localCall(RawBlock b, FlowWords w, Frame caller) throws IOException {
+        Word at = w.flow();
+        if (w.p() == null) {
+            diags.error(Code.E132_CALL_WITHOUT_P, at.span(), at);
+            return null;
+        }
+        long label = FlowWords.digits(w.p().number());
+        long repeats = 1;
+        if (w.l() != null) {
+            repeats = FlowWords.digits(w.l().number());
+            if (repeats < 1 || repeats > MAX_REPEAT) {
+                diags.error(Code.E135_BAD_REPEAT_COUNT, w.l().span(), w.l());
+                return null;
+            }
+        }
+        String name = "N" + w.p().number();
+        if (label < 0 || !mayCall(name, at)) {
+            if (label < 0) {
+                diags.error(Code.E013_INTEGER_EXPECTED, w.p().span(), "P");
+            }
+            return null;
+        }
+        named.add(label);
+        if (caller.blocks == mainBlocks) {
+            mainBlocks.hold();
+        }
+        int target = MacroJumps.find(caller.blocks, label, caller.next - 1);
+        if (target < 0) {
+            diags.error(Code.E141_NO_JUMP_TARGET, w.p().span(), w.written(), "N" + label, MacroJumps.firstLine(caller));
+            return null;
+        }
+        RawBlock first = caller.blocks.get(target);
+        gcnc.diag.Span start = first.words().isEmpty() ? first.last() : first.words().get(0).span();
+        return new Frame(caller.blocks, name, caller.file, start, target,
+                calledFrom(caller, name, caller.file, b, w), (int) repeats);
+    }
+
+    /** Whether one more call to {@code name} may be made: not recursive (E133), not too deep (E134). */
+    private boolean mayCall(String name, Word at) {
+        String chain = recursion(name);
+        if (chain != null) {
+            diags.error(Code.E133_RECURSIVE_CALL, at.span(), name, chain);
+            return false;
+        }
+        if (stack.size() - 1 >= control.calls().depth()) {
+            diags.error(Code.E134_CALLS_TOO_DEEP, at.span(), control.calls().depth(), path(name));
+            return false;
+        }
+        return true;
+    }
+
+    /** The chain of calls that comes back to {@code name} ("O1000 > O2000 > O1000"), or null. */
+    private String recursion(String name) {
+        List<String> names = running();
+        if (main.number() >= 0) {
+            names.add(0, "O" + Program.name(main.number()));
+        }
+        int from = names.indexOf(name);
+        if (from < 0) {
+            return null;
+        }
+        names.add(name);
+        return String.join(" > ", names.subList(from, names.size()));
+    }
+
+    /** The calls in progress and the one asked for: "O1000 > O2000 > ... > O5000". */
+    private String path(String name) {
+        List<String> names = running();
+        names.add(name);
+        return String.join(" > ", names);
+    }
+
+    /** The names of the calls in progress, outermost first. */
+    private List<String> running() {
+        List<String> names = new ArrayList<>();
+        for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
+            Frame f = i.next();
+            if (!f.isMain()) {
+                names.add(f.name);
+            }
+        }
+        return names;
+    }
+
+    /** Where a called program's findings go: its file, and this call before the caller's. */
+    private static Origin calledFrom(Frame caller, String name, String file, RawBlock b, FlowWords w) {
+        List<Origin.Call> calls = new ArrayList<>();
+        calls.add(new Origin.Call(name, b.line(), w.written(), caller.file));
+        calls.addAll(caller.origin.calls());
+        return new Origin(file, calls);
+    }
+
+    private static gcnc.diag.Span last(List<Word> words, Word otherwise) {
+        return words.isEmpty() ? otherwise.span() : words.get(words.size() - 1).span();
+    }
+}

@@ -1,0 +1,57 @@
+package gcnc.flow;
+
+import gcnc.diag.Code;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * The macro B variables of one run, as far as they can be known before the machine runs:
+ * #0 (always vacant), the locals #1-#33 (vacant at the start; M98 shares them with its caller),
+ * and the common #100-#199 and kept #500-#999 that this program has set. A common or kept
+ * variable read before the program sets it holds what an earlier program or the operator left,
+ * and every system variable (#1000 and up: signals, offsets, clocks, modal state, positions) is
+ * the machine's: reading one is E147, never a guess. A value is a double; null is vacant.
+ */
+final class Variables {
+    private final Double[] local = new Double[34];
+    private final Map<Integer, Double> set = new HashMap<>();
+
+    /** Thrown for a variable that cannot be read or written before the machine runs; the line reports it. */
+    static final class Refused extends Exception {
+        final Code code;
+
+        Refused(Code code) {
+            super(null, null, false, false);
+            this.code = code;
+        }
+    }
+
+    /** The value of #n, null when vacant. */
+    Double read(long n) throws Refused {
+        if (n == 0) {
+            return null;
+        }
+        if (n >= 1 && n <= 33) {
+            return local[(int) n];
+        }
+        if (kept(n) && set.containsKey((int) n)) {
+            return set.get((int) n);
+        }
+        throw new Refused(Code.E147_MACRO_RUN_TIME_ONLY);
+    }
+
+    /** Sets #n (#3000, the alarm, is the line's own business). */
+    void write(long n, Double v) throws Refused {
+        if (n >= 1 && n <= 33) {
+            local[(int) n] = v;
+        } else if (kept(n)) {
+            set.put((int) n, v);
+        } else {
+            throw new Refused(Code.E111_MACRO_NOT_SUPPORTED_YET);
+        }
+    }
+
+    private static boolean kept(long n) {
+        return n >= 100 && n <= 199 || n >= 500 && n <= 999;
+    }
+}
