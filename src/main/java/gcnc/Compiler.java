@@ -140,6 +140,9 @@ public final class Compiler {
      */
     private static BlockSource blocks(Reader source, Settings settings, Diagnostics diags) {
         gcnc.machine.Control control = settings.profile().control();
+        if (!control.hasProgramFlow()) {
+            return BlockReader.forControl(source, diags, false); // the thesis's language: no calls, no macros
+        }
         return new ProgramFlow(BlockReader.forControl(source, diags, control.macros()), control, diags,
                 settings.programs());
     }

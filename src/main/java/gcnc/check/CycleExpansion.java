@@ -81,7 +81,12 @@ final class CycleExpansion {
         this.host = host;
         this.contours = new ContourReader(host, this::role);
         this.single = new SingleCycle(host);
+        this.any = host.profile().control().allG().stream()
+                .anyMatch(f -> f.role().contourCycle() || f.role().singleCycle());
     }
+
+    /** Whether the control has any cycle gcnc expands (the thesis's has none: no block is looked at). */
+    private final boolean any;
 
     boolean reading() {
         return pending != null;
@@ -89,6 +94,9 @@ final class CycleExpansion {
 
     /** The block's G70/G71/G72 word, or null. */
     Word cycleWord(RawBlock b) {
+        if (!any) {
+            return null;
+        }
         for (Word w : b.words()) {
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
                 GRole r = role((int) NumberText.integer(w.number()));
@@ -107,7 +115,7 @@ final class CycleExpansion {
 
     /** Whether the block makes the G90/G94 in force again (X or Z, no G of its group). */
     boolean repeats(RawBlock b) {
-        return single.repeats(b);
+        return any && single.repeats(b);
     }
 
     List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
@@ -116,7 +124,9 @@ final class CycleExpansion {
 
     /** An ordinary block: a G of the G90/G94's group ends it. */
     void note(RawBlock b) {
-        single.note(b);
+        if (any) {
+            single.note(b);
+        }
     }
 
     /** A cycle block: its other words first, as a block of their own; then what the cycle does. */

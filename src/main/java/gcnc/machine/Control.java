@@ -85,6 +85,15 @@ public record Control(String name, String description, Set<Letter> letters, Map<
         return m.values().stream().filter(f -> f.role() == role).findFirst();
     }
 
+    /**
+     * Whether a program on this control can change its own flow (a subprogram call or return, or a
+     * macro statement): if not, its blocks run as written and need no program-flow stage.
+     */
+    public boolean hasProgramFlow() {
+        return macros || m.values().stream().anyMatch(f -> f.role() == MRole.CALL || f.role() == MRole.LOCAL_CALL
+                || f.role() == MRole.RETURN);
+    }
+
     /** How the program must end, for E052: "M30", or "M02 or M30". */
     public String endCodes() {
         List<String> ends = m.values().stream().filter(f -> f.role() == MRole.END).map(MFunction::name).toList();
