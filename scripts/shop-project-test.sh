@@ -46,6 +46,13 @@ echo "== stage clean"
 run "$work/clean" check gcncCompile gcncSimulate || fail "the clean sample did not build"
 for p in o1201-pin o1202-spacer ops/o1203-groove; do
     [ -s "$work/clean/build/gcnc/$p.dmc" ] && [ -s "$work/clean/build/gcnc/$p.dmc.map" ] || fail "no build/gcnc/$p.dmc(.map)"
+    for x in svg html; do
+        [ -s "$work/clean/build/reports/gcnc/gcncSimulate/$p.$x" ] || fail "no build/reports/gcnc/gcncSimulate/$p.$x"
+    done
+done
+for t in gcncCheck gcncCompile gcncSimulate; do
+    grep -q '"errors": 0' "$work/clean/build/reports/gcnc/$t.json" || fail "no clean build/reports/gcnc/$t.json"
+    grep -q '"version": "2.1.0"' "$work/clean/build/reports/gcnc/$t.sarif" || fail "no SARIF build/reports/gcnc/$t.sarif"
 done
 
 echo "== stage again"
@@ -70,4 +77,12 @@ if run "$work/faulty" check; then
     fail "the build with a faulty program passed"
 fi
 grep -q "src/main/gcode/o1299-faulty.gcode:6:1: error\[E051\]" "$work/last.log" || fail "no error at o1299-faulty.gcode:6:1"
+grep -q "see the report at file://.*/build/reports/gcnc/gcncCheck.sarif" "$work/last.log" || fail "no link to the report"
+python3 - "$work/faulty/build/reports/gcnc/gcncCheck.sarif" <<'PY' || fail "the SARIF report does not hold the error at o1299-faulty.gcode:6:1"
+import json, sys
+r = json.load(open(sys.argv[1]))["runs"][0]["results"]
+loc = [(x["ruleId"], x["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+        x["locations"][0]["physicalLocation"]["region"]["startLine"]) for x in r]
+sys.exit(0 if loc == [("E051", "src/main/gcode/o1299-faulty.gcode", 6)] else 1)
+PY
 echo "shop-project: all passed"

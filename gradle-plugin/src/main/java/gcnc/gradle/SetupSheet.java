@@ -46,7 +46,7 @@ final class SetupSheet {
                 + "td,th{text-align:left;padding:.2em 1em .2em 0}svg{max-width:100%;height:auto}</style></head><body>\n");
         w.write("<h1>Setup sheet: " + escape(program) + "</h1>\n<table>\n");
         row(w, "Machine", machine);
-        row(w, "Travel envelope", extents());
+        row(w, "Travel envelope (machine coordinates)", extents());
         row(w, "Cycle time (estimate)", cycle());
         row(w, "Motions", sim.sequences() + " sequences, " + sim.segments() + " segments");
         row(w, "Findings", findings.isEmpty() ? "none" : Integer.toString(findings.size()));
