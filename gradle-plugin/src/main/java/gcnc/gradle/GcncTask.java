@@ -60,6 +60,12 @@ public abstract class GcncTask extends DefaultTask {
         return settings.getPrograms().getAsFileTree();
     }
 
+    /** How the reports name the programs (relative to the root project): moving the tree runs the task again. */
+    @Input
+    public List<String> getProgramNames() {
+        return programs().stream().map(Program::shown).toList();
+    }
+
     @Input
     public String getMachine() {
         return settings.getMachine();
