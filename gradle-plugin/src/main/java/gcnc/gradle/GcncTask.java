@@ -168,9 +168,18 @@ public abstract class GcncTask extends DefaultTask {
         } catch (TableException e) {
             // A broken table or profile is shown with the built-in messages: the user's may be the broken ones.
             String line = new gcnc.diag.GnuRenderer(gcnc.tables.Tables.builtIn().messages().in(Findings.LANG))
-                    .render(e.path(), e.diagnostic());
+                    .render(tableShown(e.path()), e.diagnostic());
             getLogger().quiet(line);
             throw new GradleException(getName() + ": the machine, control or tables cannot be used: " + line);
+        }
+    }
+
+    /** A table or profile of the project relative to the root project, as programs are named; else as gcnc names it. */
+    private String tableShown(String path) {
+        try {
+            return java.nio.file.Path.of(path).isAbsolute() ? shown(getProject().getRootDir(), new File(path)) : path;
+        } catch (java.nio.file.InvalidPathException e) {
+            return path;
         }
     }
 
