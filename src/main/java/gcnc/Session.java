@@ -5,6 +5,7 @@ import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
 import gcnc.sim.StockSize;
+import gcnc.tables.CodeTable;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
@@ -109,6 +110,11 @@ public final class Session {
         return profile;
     }
 
+    /** The catalogue of diagnostic codes (errors.csv) of these tables, for SARIF's rules and explanations. */
+    public CodeTable codes() throws TableException {
+        return CodeTable.load(options.source());
+    }
+
     /** How a simulation starts: the blank given, else (in {@link Compiler}) the program's header, else the profile's. */
     public SimOptions simulation() {
         return options.stock().map(SimOptions.defaults()::withStock).orElse(SimOptions.defaults());
@@ -131,6 +137,17 @@ public final class Session {
         try (Reader in = Files.newBufferedReader(program)) {
             return withPrograms(Optional.ofNullable(folder)).compile(in, Optional.of(simulation()), false, line -> { });
         }
+    }
+
+    /**
+     * A program's text as every front end reads it: UTF-8, and a byte that is not UTF-8 becomes
+     * U+FFFD, which the parser then reports at its line and column (no front end fails on it alone).
+     */
+    public static Reader decode(java.io.InputStream in) {
+        return new java.io.BufferedReader(new java.io.InputStreamReader(in,
+                java.nio.charset.StandardCharsets.UTF_8.newDecoder()
+                        .onMalformedInput(java.nio.charset.CodingErrorAction.REPLACE)
+                        .onUnmappableCharacter(java.nio.charset.CodingErrorAction.REPLACE)), 1 << 16);
     }
 
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {

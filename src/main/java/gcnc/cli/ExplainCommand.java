@@ -1,6 +1,7 @@
 package gcnc.cli;
 
 import gcnc.diag.Code;
+import gcnc.tables.CodeTable;
 import gcnc.tables.ErrorMessages;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;

@@ -9,6 +9,7 @@ import gcnc.diag.JsonRenderer;
 import gcnc.diag.Messages;
 import gcnc.diag.SarifRenderer;
 import gcnc.diag.Span;
+import gcnc.tables.CodeTable;
 import gcnc.tables.ErrorMessages;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;

@@ -1,12 +1,8 @@
 package gcnc.cli;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.InputStreamReader;
 import java.io.Reader;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
@@ -45,10 +41,7 @@ final class SourceFiles {
     }
 
     private static Reader reader(InputStream in) {
-        return new BufferedReader(new InputStreamReader(in,
-                StandardCharsets.UTF_8.newDecoder()
-                        .onMalformedInput(CodingErrorAction.REPLACE)
-                        .onUnmappableCharacter(CodingErrorAction.REPLACE)), 1 << 16);
+        return gcnc.Session.decode(in);
     }
 
     /** The folder of a program file, where the programs it calls are looked for ("" for a bare file name). */

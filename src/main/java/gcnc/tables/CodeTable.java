@@ -1,26 +1,22 @@
-package gcnc.cli;
+package gcnc.tables;
 
 import gcnc.diag.Code;
 import gcnc.diag.SarifRenderer;
 import gcnc.diag.Severity;
-import gcnc.tables.Csv;
-import gcnc.tables.ErrorMessages;
-import gcnc.tables.TableException;
-import gcnc.tables.TableSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 
 /**
- * errors.csv as a catalogue of codes, for {@code gcnc explain} and SARIF's rules: each code's
+ * errors.csv as a catalogue of codes, for {@code gcnc explain} and SARIF's rules (the command line and the Gradle plugin): each code's
  * severity and its message in both languages, and an explanation when the table has an
  * {@code explanation} column. (The messages a run prints come from {@link ErrorMessages}.)
  */
-final class CodeTable {
+public final class CodeTable {
     /** One row of errors.csv. */
-    record Entry(Code code, Severity severity, String english, String spanish, String explanation) {
-        String text(ErrorMessages.Lang lang) {
+    public record Entry(Code code, Severity severity, String english, String spanish, String explanation) {
+        public String text(ErrorMessages.Lang lang) {
             return lang == ErrorMessages.Lang.ES ? spanish : english;
         }
     }
@@ -31,7 +27,7 @@ final class CodeTable {
         this.entries = List.copyOf(entries);
     }
 
-    static CodeTable load(TableSource source) throws TableException {
+    public static CodeTable load(TableSource source) throws TableException {
         String name = "errors.csv";
         Csv csv = Csv.parse(source.describe(name), source.read(name));
         List<Entry> entries = new ArrayList<>();
@@ -65,16 +61,16 @@ final class CodeTable {
         }
     }
 
-    List<Entry> entries() {
+    public List<Entry> entries() {
         return entries;
     }
 
-    Optional<Entry> find(Code code) {
+    public Optional<Entry> find(Code code) {
         return entries.stream().filter(e -> e.code() == code).findFirst();
     }
 
     /** Every code as a SARIF rule, its description in {@code lang}. */
-    List<SarifRenderer.Rule> rules(ErrorMessages.Lang lang) {
+    public List<SarifRenderer.Rule> rules(ErrorMessages.Lang lang) {
         return entries.stream().map(e -> new SarifRenderer.Rule(e.code(), e.severity(), e.text(lang))).toList();
     }
 }

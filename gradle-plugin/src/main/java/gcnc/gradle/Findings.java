@@ -1,0 +1,117 @@
+package gcnc.gradle;
+
+import gcnc.Session;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Finding;
+import gcnc.diag.GnuRenderer;
+import gcnc.diag.JsonRenderer;
+import gcnc.diag.Messages;
+import gcnc.diag.SarifRenderer;
+import gcnc.diag.Severity;
+import gcnc.tables.ErrorMessages;
+import gcnc.tables.TableException;
+import java.io.File;
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.gradle.api.logging.Logger;
+
+/**
+ * A task run's findings: each printed GCC-style as it is reported, and all of them
+ * written at the end as gcnc's JSON report and as SARIF 2.1.0, with the renderers the command line
+ * uses.
+ */
+final class Findings {
+    /** Reports are in English, the language CI annotations are read in. */
+    static final ErrorMessages.Lang LANG = ErrorMessages.Lang.EN;
+
+    private final Session session;
+    private final Logger logger;
+    private final Messages messages;
+    private final List<Finding> all = new ArrayList<>();
+    private final Set<String> filesWithErrors = new HashSet<>();
+
+    Findings(Session session, Logger logger) {
+        this.session = session;
+        this.logger = logger;
+        this.messages = session.tables().messages().in(LANG);
+    }
+
+    /** Every diagnostic of one program, in the order of the program. */
+    void report(String file, Diagnostics diagnostics) {
+        for (Diagnostic d : diagnostics.sorted()) {
+            report(file, d);
+        }
+    }
+
+    void report(String file, Diagnostic d) {
+        // Gradle's QUIET level: shown even with -q, and on standard output, where Gradle starts a line
+        // for it; at the ERROR level (standard error) it would be glued to the task's header line in a
+        // log that merges the two streams, and CI's file:line:col parsers would miss it.
+        logger.quiet(render(file, d));
+        if (d.severity() == Severity.ERROR) {
+            filesWithErrors.add(file);
+        }
+        all.add(new Finding(file, d, messages.render(d.code(), d.args())));
+    }
+
+    /** One finding as a GCC-style line. */
+    String render(String file, Diagnostic d) {
+        return new GnuRenderer(messages).render(file, d);
+    }
+
+    long errors() {
+        return count(Severity.ERROR);
+    }
+
+    long warnings() {
+        return all.size() - errors();
+    }
+
+    int filesWithErrors() {
+        return filesWithErrors.size();
+    }
+
+    private long count(Severity s) {
+        return all.stream().filter(f -> f.diagnostic().severity() == s).count();
+    }
+
+    /** Both reports, findings sorted by file and place. */
+    void write(File json, File sarif) throws IOException {
+        List<Finding> sorted = new ArrayList<>(all);
+        sorted.sort(Comparator.comparing(Finding::file).thenComparing(Finding::diagnostic));
+        Files.createDirectories(json.getParentFile().toPath());
+        try (Writer w = Files.newBufferedWriter(json.toPath(), StandardCharsets.UTF_8)) {
+            JsonRenderer.write(sorted, version(), w);
+        }
+        try (Writer w = Files.newBufferedWriter(sarif.toPath(), StandardCharsets.UTF_8)) {
+            SarifRenderer.write(sorted, rules(), version(), w);
+        }
+    }
+
+    /** SARIF's rules from the session's errors.csv, or the built-in one if the user's has no catalogue. */
+    private List<SarifRenderer.Rule> rules() {
+        try {
+            return session.codes().rules(LANG);
+        } catch (TableException e) {
+            try {
+                return gcnc.tables.CodeTable.load(gcnc.tables.TableSource.builtIn()).rules(LANG);
+            } catch (TableException builtIn) {
+                throw new IllegalStateException("the tables built into gcnc.jar are broken", builtIn);
+            }
+        }
+    }
+
+    /** The gcnc library's version, from its jar's manifest. */
+    static String version() {
+        String v = Session.class.getPackage().getImplementationVersion();
+        return v == null ? "development" : v;
+    }
+}

@@ -1,0 +1,217 @@
+package gcnc.gradle;
+
+import gcnc.Session;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Span;
+import gcnc.tables.TableException;
+import java.io.File;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.gradle.api.DefaultTask;
+import org.gradle.api.GradleException;
+import org.gradle.api.file.FileCollection;
+import org.gradle.api.file.FileTree;
+import org.gradle.api.tasks.Input;
+import org.gradle.api.tasks.InputFiles;
+import org.gradle.api.tasks.Internal;
+import org.gradle.api.tasks.Optional;
+import org.gradle.api.tasks.OutputFile;
+import org.gradle.api.tasks.PathSensitive;
+import org.gradle.api.tasks.PathSensitivity;
+import org.gradle.api.tasks.SkipWhenEmpty;
+import org.gradle.api.tasks.TaskAction;
+
+/**
+ * What the three gcnc tasks share: their inputs (the programs, the machine, the control, the
+ * tables and any file among them), one gcnc session for the run, every program in turn, and the
+ * run's findings, printed GCC-style as they come and written at the end as one JSON and one SARIF
+ * report under build/reports/gcnc/. Any error fails the task, after every program was looked at.
+ * Since inputs and outputs are declared, a second run with nothing changed is UP-TO-DATE.
+ */
+public abstract class GcncTask extends DefaultTask {
+    /** One part program: the file, its path under the program tree (for outputs), and how findings name it. */
+    public record Program(File file, String relativePath, String shown) {
+        /** The relative path with {@code extension} in place of the program's own. */
+        String withExtension(String extension) {
+            int slash = relativePath.lastIndexOf('/');
+            int dot = relativePath.lastIndexOf('.');
+            return (dot > slash ? relativePath.substring(0, dot) : relativePath) + extension;
+        }
+
+        /** The program's text, decoded as every gcnc front end decodes it. */
+        java.io.Reader open() throws IOException {
+            return Session.decode(java.nio.file.Files.newInputStream(file.toPath()));
+        }
+    }
+
+    private GcncExtension settings;
+
+    void setSettings(GcncExtension settings) {
+        this.settings = settings;
+    }
+
+    @InputFiles
+    @SkipWhenEmpty
+    @PathSensitive(PathSensitivity.RELATIVE)
+    public FileTree getPrograms() {
+        return settings.getPrograms().getAsFileTree();
+    }
+
+    /** How the reports name the programs (relative to the root project): moving the tree runs the task again. */
+    @Input
+    public List<String> getProgramNames() {
+        return programs().stream().map(Program::shown).toList();
+    }
+
+    @Input
+    public String getMachine() {
+        return settings.getMachine();
+    }
+
+    @Input
+    @Optional
+    public String getControl() {
+        return settings.getControl();
+    }
+
+    /** The files behind the settings, so that editing a table or a profile runs the task again. */
+    @InputFiles
+    @PathSensitive(PathSensitivity.RELATIVE)
+    public FileCollection getSettingFiles() {
+        List<Object> files = new ArrayList<>();
+        if (settings.getTables() != null) {
+            files.add(getProject().fileTree(settings.getTables()));
+        }
+        for (String given : new String[] {settings.getMachine(), settings.getControl()}) {
+            if (given != null && GcncExtension.isPath(given)) {
+                File f = getProject().file(given);
+                files.add(f.isDirectory() ? getProject().fileTree(f) : f);
+            }
+        }
+        return getProject().files(files.toArray());
+    }
+
+    @OutputFile
+    public File getJsonReport() {
+        return reportFile(".json");
+    }
+
+    @OutputFile
+    public File getSarifReport() {
+        return reportFile(".sarif");
+    }
+
+    @Internal
+    protected File getReportsDir() {
+        return new File(getProject().getBuildDir(), "reports/gcnc");
+    }
+
+    private File reportFile(String extension) {
+        return new File(getReportsDir(), getName() + extension);
+    }
+
+    @TaskAction
+    public void run() {
+        Session session = open();
+        Findings findings = new Findings(session, getLogger());
+        begin();
+        List<Program> programs = programs();
+        for (Program p : programs) {
+            try {
+                process(session, p, findings);
+            } catch (IOException e) {
+                findings.report(p.shown(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), "cannot read or write: " + reason(e)));
+            }
+        }
+        try {
+            finish(programs);
+            findings.write(getJsonReport(), getSarifReport());
+        } catch (IOException e) {
+            throw new GradleException(getName() + ": cannot write the reports under " + getReportsDir() + ": " + reason(e));
+        }
+        if (findings.errors() > 0) {
+            throw new GradleException(String.format(Locale.ROOT, "%s: %s in %s of %s; see the report at %s",
+                    getName(), plural(findings.errors(), "error"), plural(findings.filesWithErrors(), "program"),
+                    programs.size(), getSarifReport().toPath().toUri()));
+        }
+        getLogger().lifecycle("{}: {} checked, {}; reports in {}", getName(), plural(programs.size(), "program"),
+                findings.warnings() == 0 ? "no findings" : plural(findings.warnings(), "warning"), getReportsDir());
+    }
+
+    /** Before the first program: e.g. clear the outputs of an earlier run. */
+    protected void begin() {
+    }
+
+    /** What the task does with one program; findings go to {@code findings}. */
+    protected abstract void process(Session session, Program program, Findings findings) throws IOException;
+
+    /** After the last program: e.g. a summary of them all. */
+    protected void finish(List<Program> programs) throws IOException {
+    }
+
+    private Session open() {
+        Session.Options o = Session.Options.defaults().withMachine(path(settings.getMachine()));
+        if (settings.getControl() != null) {
+            o = o.withControl(path(settings.getControl()));
+        }
+        if (settings.getTables() != null) {
+            if (!settings.getTables().isDirectory()) {
+                throw new GradleException("gcnc: tables = " + settings.getTables() + " is not a folder (a copy of gcnc's tables/)");
+            }
+            o = o.withTables(settings.getTables().toPath());
+        }
+        try {
+            return Session.open(o);
+        } catch (TableException e) {
+            // A broken table or profile is shown with the built-in messages: the user's may be the broken ones.
+            String line = new gcnc.diag.GnuRenderer(gcnc.tables.Tables.builtIn().messages().in(Findings.LANG))
+                    .render(tableShown(e.path()), e.diagnostic());
+            getLogger().quiet(line);
+            throw new GradleException(getName() + ": the machine, control or tables cannot be used: " + line);
+        }
+    }
+
+    /** A table or profile of the project relative to the root project, as programs are named; else as gcnc names it. */
+    private String tableShown(String path) {
+        try {
+            return java.nio.file.Path.of(path).isAbsolute() ? shown(getProject().getRootDir(), new File(path)) : path;
+        } catch (java.nio.file.InvalidPathException e) {
+            return path;
+        }
+    }
+
+    /** A machine or control path relative to the project (Gradle's working directory is not the project's). */
+    private String path(String nameOrPath) {
+        return GcncExtension.isPath(nameOrPath) ? getProject().file(nameOrPath).getAbsolutePath() : nameOrPath;
+    }
+
+    private List<Program> programs() {
+        List<Program> list = new ArrayList<>();
+        File root = getProject().getRootDir();
+        getPrograms().visit(d -> {
+            if (!d.isDirectory()) {
+                list.add(new Program(d.getFile(), d.getRelativePath().getPathString(), shown(root, d.getFile())));
+            }
+        });
+        list.sort(java.util.Comparator.comparing(Program::shown));
+        return list;
+    }
+
+    /** A program's path relative to the root project (where CI runs and SARIF's %SRCROOT% is), else absolute. */
+    private static String shown(File root, File f) {
+        java.nio.file.Path r = root.toPath().toAbsolutePath().normalize();
+        java.nio.file.Path p = f.toPath().toAbsolutePath().normalize();
+        return p.startsWith(r) ? r.relativize(p).toString().replace(File.separatorChar, '/') : p.toString();
+    }
+
+    static String reason(IOException e) {
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getClass().getSimpleName() + ": " + e.getMessage();
+    }
+
+    static String plural(long n, String what) {
+        return n + " " + what + (n == 1 ? "" : "s");
+    }
+}

@@ -1,0 +1,76 @@
+package gcnc.gradle;
+
+import gcnc.Compiler;
+import gcnc.Session;
+import gcnc.diag.Diagnostic;
+import gcnc.sim.SimReport;
+import gcnc.sim.SvgWriter;
+import java.io.File;
+import java.io.IOException;
+import java.io.Reader;
+import java.io.StringWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.gradle.api.tasks.OutputDirectory;
+
+/**
+ * {@code gcncSimulate}: each program checked, translated and replayed on the machine model with
+ * its tool path kept, as {@code gcnc simulate} does. Under build/reports/gcnc/gcncSimulate/: per
+ * program a drawing (.svg) and a setup sheet (.html: drawing, extents, cycle time, findings), and
+ * for all of them summary.txt, one line a program.
+ */
+public class SimulateTask extends GcncTask {
+    private final List<String> summary = new ArrayList<>();
+
+    @OutputDirectory
+    public File getOutputDir() {
+        return new File(getReportsDir(), getName());
+    }
+
+    @Override
+    protected void begin() {
+        getProject().delete(getOutputDir());
+        getOutputDir().mkdirs();
+        summary.clear();
+    }
+
+    @Override
+    protected void process(Session session, Program program, Findings findings) throws IOException {
+        Compiler.Result r;
+        try (Reader in = program.open()) {
+            r = session.compile(in, Optional.of(session.simulation().withPath()), false, line -> { });
+        }
+        findings.report(program.shown(), r.diagnostics());
+        Optional<SimReport> sim = r.simulation();
+        if (sim.isEmpty()) {
+            summary.add(program.shown() + ": not simulated, " + GcncTask.plural(r.diagnostics().errorCount(), "error"));
+            return;
+        }
+        StringWriter svg = new StringWriter();
+        SvgWriter.write(sim.get(), program.shown(), svg, true);
+        Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
+        Files.createDirectories(svgFile.getParent());
+        Files.writeString(svgFile, svg.toString(), StandardCharsets.UTF_8);
+        List<String> lines = new ArrayList<>();
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            lines.add(findings.render(program.shown(), d));
+        }
+        SetupSheet sheet = new SetupSheet(program.shown(), getMachine(), sim.get(), lines);
+        try (Writer w = Files.newBufferedWriter(getOutputDir().toPath().resolve(program.withExtension(".html")),
+                StandardCharsets.UTF_8)) {
+            sheet.write(svg.toString(), w);
+        }
+        summary.add(program.shown() + ": " + sheet.summary());
+    }
+
+    @Override
+    protected void finish(List<Program> programs) throws IOException {
+        Files.write(getOutputDir().toPath().resolve("summary.txt"), summary, StandardCharsets.UTF_8);
+        summary.forEach(getLogger()::lifecycle);
+    }
+}

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# End-to-end test of the Gradle plugin as a shop meets it (docs/gradle-plugin.md):
+#   1. publishes the gcnc library and plugin to a throwaway Maven local repository
+#      (skipped with --repo DIR: DIR already holds them, as the root build's ShopProjectTest arranges);
+#   2. builds a copy of samples/shop-project: it must pass and write the Galil programs;
+#   3. builds it again: gcncCheck, gcncCompile and gcncSimulate must be UP-TO-DATE;
+#   4. builds a copy with a faulty program: it must fail at that program's line and column.
+# Each stage prints "== stage NAME" and Gradle's output; the last line is "shop-project: all passed"
+# or the script exits 1 at the first outcome that is wrong.
+# Usage: scripts/shop-project-test.sh [--repo DIR] [--keep]
+set -u
+root="$(cd "$(dirname "$0")/.." && pwd)"
+repo=""
+keep=0
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --repo) repo="$(cd "$2" && pwd)" || exit 2; shift 2 ;;
+        --keep) keep=1; shift ;;
+        *) echo "usage: $0 [--repo DIR] [--keep]" >&2; exit 2 ;;
+    esac
+done
+command -v gradle >/dev/null 2>&1 || { echo "shop-project: gradle is not on PATH" >&2; exit 2; }
+work="$(mktemp -d "${TMPDIR:-/tmp}/gcnc-shop.XXXXXX")"
+[ "$keep" = 1 ] && echo "shop-project: working in $work" || trap 'rm -rf "$work"' EXIT
+
+fail() { echo "shop-project: FAILED: $*" >&2; exit 1; }
+# gradle in a project folder, against the repository; its output to stdout and to $work/last.log.
+run() {
+    local dir="$1"; shift
+    gradle --no-daemon --console=plain -p "$dir" -Dmaven.repo.local="$repo" "$@" 2>&1 | tee "$work/last.log"
+    return "${PIPESTATUS[0]}"
+}
+
+if [ -z "$repo" ]; then
+    repo="$work/m2"
+    echo "== stage publish"
+    run "$root" publishToMavenLocal || fail "gradle publishToMavenLocal"
+fi
+[ -f "$repo/gcnc/gcnc.gradle.plugin/0.1.0/gcnc.gradle.plugin-0.1.0.pom" ] || fail "no plugin marker in $repo"
+
+mkdir "$work/clean" "$work/faulty"
+(cd "$root/samples/shop-project" && tar --exclude=build --exclude=.gradle -cf - .) | tar -xf - -C "$work/clean"
+(cd "$work/clean" && tar -cf - .) | tar -xf - -C "$work/faulty"
+
+echo "== stage clean"
+run "$work/clean" check gcncCompile gcncSimulate || fail "the clean sample did not build"
+for p in o1201-pin o1202-spacer ops/o1203-groove; do
+    [ -s "$work/clean/build/gcnc/$p.dmc" ] && [ -s "$work/clean/build/gcnc/$p.dmc.map" ] || fail "no build/gcnc/$p.dmc(.map)"
+    for x in svg html; do
+        [ -s "$work/clean/build/reports/gcnc/gcncSimulate/$p.$x" ] || fail "no build/reports/gcnc/gcncSimulate/$p.$x"
+    done
+done
+for t in gcncCheck gcncCompile gcncSimulate; do
+    grep -q '"errors": 0' "$work/clean/build/reports/gcnc/$t.json" || fail "no clean build/reports/gcnc/$t.json"
+    grep -q '"version": "2.1.0"' "$work/clean/build/reports/gcnc/$t.sarif" || fail "no SARIF build/reports/gcnc/$t.sarif"
+done
+
+echo "== stage again"
+run "$work/clean" check gcncCompile gcncSimulate || fail "the second build failed"
+for t in gcncCheck gcncCompile gcncSimulate; do
+    grep -q "^:$t UP-TO-DATE" "$work/last.log" || fail "$t was not UP-TO-DATE on the second run"
+done
+
+echo "== stage faulty"
+# Line 6 feeds before the spindle turns: E051 at 6:1.
+cat > "$work/faulty/src/main/gcode/o1299-faulty.gcode" <<'NC'
+O1299 (FAULTY: FEED MOVE BEFORE THE SPINDLE RUNS)
+G21 G18 G99
+G28 U0. W0.
+T101
+G54 G00 X44. Z2.
+G01 X40. F0.2
+M05
+M30
+NC
+if run "$work/faulty" check; then
+    fail "the build with a faulty program passed"
+fi
+grep -q "src/main/gcode/o1299-faulty.gcode:6:1: error\[E051\]" "$work/last.log" || fail "no error at o1299-faulty.gcode:6:1"
+grep -q "see the report at file://.*/build/reports/gcnc/gcncCheck.sarif" "$work/last.log" || fail "no link to the report"
+python3 - "$work/faulty/build/reports/gcnc/gcncCheck.sarif" <<'PY' || fail "the SARIF report does not hold the error at o1299-faulty.gcode:6:1"
+import json, sys
+r = json.load(open(sys.argv[1]))["runs"][0]["results"]
+loc = [(x["ruleId"], x["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+        x["locations"][0]["physicalLocation"]["region"]["startLine"]) for x in r]
+sys.exit(0 if loc == [("E051", "src/main/gcode/o1299-faulty.gcode", 6)] else 1)
+PY
+echo "shop-project: all passed"

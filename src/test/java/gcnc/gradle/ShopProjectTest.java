@@ -1,0 +1,87 @@
+package gcnc.gradle;
+
+import static org.junit.jupiter.api.Assertions.assertAll;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The Gradle plugin end to end, as a shop meets it (docs/gradle-plugin.md): scripts/shop-project-test.sh
+ * publishes the library and plugin to a throwaway Maven local repository and builds copies of
+ * samples/shop-project with them. The script checks the outcomes too; this test reads Gradle's own output of each stage,
+ * so that a script that stopped checking would not pass it. Takes about 20 to 40 s (four Gradle runs).
+ */
+class ShopProjectTest {
+    private static final String FAULT = "src/main/gcode/o1299-faulty.gcode:6:1: error[E051]";
+
+    @Test
+    void theSampleBuildsIsUpToDateTheSecondTimeAndAFaultyProgramFailsAtItsLine() throws Exception {
+        if (!onPath("gradle")) {
+            System.out.println("ShopProjectTest skipped: gradle is not on PATH");
+            Assumptions.assumeTrue(false, "gradle is not on PATH");
+        }
+        List<String> command = List.of("bash", "scripts/shop-project-test.sh");
+        Path log = Files.createTempFile("gcnc-shop", ".log");
+        try {
+            Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+            if (!p.waitFor(10, TimeUnit.MINUTES)) {
+                p.destroyForcibly();
+                fail("scripts/shop-project-test.sh took more than 10 minutes:\n" + Files.readString(log));
+            }
+            String output = Files.readString(log, StandardCharsets.UTF_8);
+            Map<String, String> stage = stages(output);
+            assertAll(output,
+                    () -> assertTrue(stage.getOrDefault("clean", "").contains("BUILD SUCCESSFUL"), "the clean build passes"),
+                    () -> assertTrue(stage.getOrDefault("again", "").contains(":gcncCheck UP-TO-DATE"), "gcncCheck up to date"),
+                    () -> assertTrue(stage.getOrDefault("again", "").contains(":gcncCompile UP-TO-DATE"), "gcncCompile up to date"),
+                    () -> assertTrue(stage.getOrDefault("again", "").contains(":gcncSimulate UP-TO-DATE"), "gcncSimulate up to date"),
+                    () -> assertTrue(stage.getOrDefault("faulty", "").contains("BUILD FAILED"), "the faulty build fails"),
+                    () -> assertTrue(stage.getOrDefault("faulty", "").contains(FAULT), "at " + FAULT),
+                    () -> assertEquals(0, p.exitValue(), "the script's own verdict"));
+        } finally {
+            Files.deleteIfExists(log);
+        }
+    }
+
+    /** The script's output cut at its "== stage NAME" lines. */
+    private static Map<String, String> stages(String output) {
+        Map<String, String> stages = new LinkedHashMap<>();
+        String name = "";
+        StringBuilder text = new StringBuilder();
+        for (String line : output.split("\n", -1)) {
+            if (line.startsWith("== stage ")) {
+                stages.put(name, text.toString());
+                name = line.substring("== stage ".length()).strip();
+                text.setLength(0);
+            } else {
+                text.append(line).append('\n');
+            }
+        }
+        stages.put(name, text.toString());
+        return stages;
+    }
+
+    private static boolean onPath(String program) {
+        String path = System.getenv("PATH");
+        if (path == null) {
+            return false;
+        }
+        for (String dir : path.split(File.pathSeparator)) {
+            if (!dir.isEmpty() && Files.isExecutable(Path.of(dir, program))) {
+                return true;
+            }
+        }
+        return false;
+    }
+}
