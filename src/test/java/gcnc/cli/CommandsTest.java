@@ -84,7 +84,7 @@ class CommandsTest {
                 Files.copy(p, dir.resolve(p.getFileName()));
             }
         }
-        copyTree(Path.of("tables/controls"), dir.resolve("controls"));
+        gcnc.TestFiles.copyTree(Path.of("tables/controls"), dir.resolve("controls"));
         Files.createDirectory(dir.resolve("machines"));
         String generic = Files.readString(Path.of("tables/machines/generic.machine"));
         Files.writeString(dir.resolve("machines/shop.machine"), generic.replace("name = generic", "name = shop"));
@@ -96,19 +96,6 @@ class CommandsTest {
         assertTrue(r.err().contains("broken.machine:") && r.err().contains("error[E400]"), r.err());
         CliTest.Run none = CliTest.gcnc("machines", "--tables", dir.resolve("nowhere").toString());
         assertEquals(2, none.status());
-    }
-
-    private static void copyTree(Path from, Path to) throws IOException {
-        try (var s = Files.walk(from)) {
-            for (Path p : s.toList()) {
-                Path t = to.resolve(from.relativize(p).toString());
-                if (Files.isDirectory(p)) {
-                    Files.createDirectories(t);
-                } else {
-                    Files.copy(p, t);
-                }
-            }
-        }
     }
 
     @Test

@@ -80,15 +80,6 @@ class MacroTest {
         }
     }
 
-    private static String messages(Compiler.Result r) {
-        GnuRenderer g = new GnuRenderer(TABLES.messages().in(ErrorMessages.Lang.EN));
-        List<String> out = new ArrayList<>();
-        for (Diagnostic d : r.diagnostics().sorted()) {
-            out.add(g.render("p.nc", d));
-        }
-        return String.join("\n", out);
-    }
-
     // ---- variables and words ----
 
     @Test
@@ -160,7 +151,7 @@ class MacroTest {
         assertEquals(" // 1:6:E147", run("#1 = #100\n"));
         assertEquals(" // 1:6:E147", run("#1 = #500\n"));
         Compiler.Result r = check("haas", "#1 = #5021\nM30\n");
-        assertTrue(messages(r).contains("p.nc:1:6: error[E147]: #5021 is known only when the machine runs"), messages(r));
+        assertTrue(ProgramFlowTest.messages(r).contains("p.nc:1:6: error[E147]: #5021 is known only when the machine runs"), ProgramFlowTest.messages(r));
     }
 
     @Test
@@ -177,7 +168,7 @@ class MacroTest {
     @Test
     void alarm3000IsAnErrorWithItsText() {
         Compiler.Result r = check("fanuc-a", "#3000 = 12 (TOOL WORN)\nM30\n");
-        assertEquals("p.nc:1:1: error[E148]: alarm 12 (#3000): TOOL WORN", messages(r));
+        assertEquals("p.nc:1:1: error[E148]: alarm 12 (#3000): TOOL WORN", ProgramFlowTest.messages(r));
     }
 
     // ---- flow ----
@@ -221,7 +212,7 @@ class MacroTest {
     void anEndlessLoopIsReportedAtItsWhile() {
         Compiler.Result r = check("fanuc-a", "#1 = 0\nWHILE [#1 LT 3] DO 1\n#2 = 1\nEND 1\nM30\n");
         assertEquals("p.nc:2:1: error[E149]: WHILE [#1 LT 3] DO 1 at line 2 has run " + ProgramFlow.LOOP_LIMIT
-                + " times without ending: an endless loop", messages(r));
+                + " times without ending: an endless loop", ProgramFlowTest.messages(r));
         assertEquals(" // 1:4:E149", run("N1 GOTO 1\n"));
     }
 
@@ -245,7 +236,7 @@ class MacroTest {
     void aJumpBackBeforeTheFirstMacroStatementIsBeyondWhatIsHeld() {
         // the main program is held from the block before its first macro statement (line 2) on
         Compiler.Result r = check("fanuc-a", "N10 G00 X1.\nG00 X2.\n#1 = 1\nGOTO 10\nM30\n");
-        assertEquals("p.nc:4:1: error[E141]: GOTO 10: no N10 to go to in this program from line 2 on", messages(r));
+        assertEquals("p.nc:4:1: error[E141]: GOTO 10: no N10 to go to in this program from line 2 on", ProgramFlowTest.messages(r));
         assertEquals("2: N10 X2. | 3: X3. | 2: N10 X2. | 3: X3. | 6: M30",
                 run("#1 = 0\nN10 X2.\nX3.\n#1 = #1 + 1\nIF [#1 LT 2] GOTO 10\nM30\n"));
     }
@@ -254,7 +245,7 @@ class MacroTest {
     void aBlockDeleteMarkOnAMacroLine() {
         // the switch is off on fanuc-a: the statement runs; a block of words keeps its mark for the checker
         assertEquals("3: X2. | 4: /2 X2.", run("#1 = 1\n/#1 = 2\nX#1\n/2 X#1\n"));
-        assertEquals("", messages(check("fanuc-a", "G00 G21 G99\n#1 = 52.\n/G00 X#1 Z2.\nM30\n")));
+        assertEquals("", ProgramFlowTest.messages(check("fanuc-a", "G00 G21 G99\n#1 = 52.\n/G00 X#1 Z2.\nM30\n")));
     }
 
     @Test
@@ -293,14 +284,14 @@ class MacroTest {
     @Test
     void aControlWithoutMacrosReportsTheLineAsBefore() {
         Compiler.Result r = check("thesis-2004", "#1 = 2\nM30\n");
-        assertEquals("p.nc:1:1: error[E111]: Fanuc macro B is not supported yet: '#1 = 2'", messages(r));
+        assertEquals("p.nc:1:1: error[E111]: Fanuc macro B is not supported yet: '#1 = 2'", ProgramFlowTest.messages(r));
     }
 
     @Test
     void aProgramWithMacrosChecksLikeAnyOther() {
         String p = "G00 G21 G99\nT0101\nG97 S800 M03\n#1 = 52.\nG00 X#1 Z2.\n#2 = 0\n"
                 + "WHILE [#2 LT 3] DO 1\nG01 Z-[#2 * 5 + 5] F0.2\nG00 X[#1 + 2]\nZ2.\nX#1\n#2 = #2 + 1\nEND 1\nM30\n";
-        assertEquals("", messages(check("haas", p)));
+        assertEquals("", ProgramFlowTest.messages(check("haas", p)));
         assertEquals(17, check("haas", p).blocks(), "4 blocks, 4 per turn three times, M30");
     }
 
@@ -326,7 +317,7 @@ class MacroTest {
         StringBuilder out = new StringBuilder();
         Compiler.Result r = Compiler.compile(new StringReader(program),
                 new Compiler.Settings(TABLES, machine("haas"), "galil", Optional.empty()), l -> out.append(l.text()).append('\n'));
-        assertEquals("", messages(r));
+        assertEquals("", ProgramFlowTest.messages(r));
         return out.toString();
     }
 

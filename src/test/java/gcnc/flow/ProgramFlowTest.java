@@ -105,7 +105,7 @@ class ProgramFlowTest {
     }
 
     /** The findings as the command line prints them for a program file p.nc. */
-    private static String messages(Compiler.Result r) {
+    static String messages(Compiler.Result r) {
         GnuRenderer g = new GnuRenderer(TABLES.messages().in(ErrorMessages.Lang.EN));
         List<String> out = new ArrayList<>();
         for (Diagnostic d : r.diagnostics().sorted()) {

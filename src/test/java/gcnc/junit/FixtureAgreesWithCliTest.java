@@ -92,7 +92,7 @@ class FixtureAgreesWithCliTest {
     void editedTablesApplyToBoth() throws Exception {
         // a copy of the tables whose generic machine has a Z travel too short for the pass
         Path tables = Files.createTempDirectory("gcnc-tables");
-        copy(Path.of("tables"), tables);
+        gcnc.TestFiles.copyTree(Path.of("tables"), tables);
         Path machine = tables.resolve("machines/generic.machine");
         String text = Files.readString(machine);
         String shorter = text.replaceAll("(?m)^z\\.travel = .*$", "z.travel = 140, 400");
@@ -117,18 +117,5 @@ class FixtureAgreesWithCliTest {
         List<DynamicTest> none = GcodeAssertions.everyProgramIn(empty, "generic").collect(Collectors.toList());
         assertEquals(1, none.size());
         assertThrows(AssertionError.class, () -> none.get(0).getExecutable().execute());
-    }
-
-    private static void copy(Path from, Path to) throws Exception {
-        try (java.util.stream.Stream<Path> s = Files.walk(from)) {
-            for (Path p : s.toList()) {
-                Path t = to.resolve(from.relativize(p).toString());
-                if (Files.isDirectory(p)) {
-                    Files.createDirectories(t);
-                } else {
-                    Files.copy(p, t);
-                }
-            }
-        }
     }
 }
