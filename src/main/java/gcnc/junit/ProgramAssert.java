@@ -1,0 +1,131 @@
+package gcnc.junit;
+
+import gcnc.Compiler;
+import gcnc.Session;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.GnuRenderer;
+import gcnc.sim.SimReport;
+import gcnc.tables.ErrorMessages;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Fluent assertions on a part program that read like the shop's intent:
+ *
+ * <pre>
+ * assertThat(program("programs/flange.nc")).on(machine("haas"))
+ *         .compilesClean()
+ *         .staysWithin(0, 40, 50, 160)
+ *         .cycleTimeBelow(Duration.ofMinutes(3));
+ * </pre>
+ *
+ * The program is compiled and simulated once, on the first assertion, exactly as {@code gcnc
+ * compile} does with the same inputs ({@link Session}); every failure lists the findings GCC-style.
+ */
+public final class ProgramAssert {
+    private final Path program;
+    private final Session session;
+    private Compiler.Result result;
+
+    private ProgramAssert(Path program, Session session) {
+        this.program = program;
+        this.session = session;
+    }
+
+    /** A part program file. */
+    public static Path program(String path) {
+        return Path.of(path);
+    }
+
+    /** A shipped machine profile (or a .machine file) with the built-in tables. */
+    public static Session machine(String nameOrPath) {
+        return GcodeAssertions.session(nameOrPath);
+    }
+
+    /** Assertions on {@code program}, on the default machine until {@link #on} says which. */
+    public static ProgramAssert assertThat(Path program) {
+        return new ProgramAssert(program, null);
+    }
+
+    /** The same program on this machine (and tables, control, blank: all the session holds). */
+    public ProgramAssert on(Session machine) {
+        return new ProgramAssert(program, machine);
+    }
+
+    /** No error (warnings and notes, like the command line's exit status 0, do not fail it). */
+    public ProgramAssert compilesClean() {
+        if (result().diagnostics().hasErrors()) {
+            throw new AssertionError(program + " is not clean on " + session().profile().name() + ":\n" + findings());
+        }
+        return this;
+    }
+
+    /** Exactly these diagnostic codes, in order ("E305", "E113", ...). */
+    public ProgramAssert hasFindings(String... codes) {
+        List<String> actual = new ArrayList<>();
+        for (Diagnostic d : result().diagnostics().sorted()) {
+            actual.add(d.code().id());
+        }
+        if (!actual.equals(List.of(codes))) {
+            throw new AssertionError(program + ": expected " + List.of(codes) + " but got:\n" + findings());
+        }
+        return this;
+    }
+
+    /**
+     * The tool tip stays within these limits in the machine frame, in mm: X as a radius from the
+     * spindle centreline, Z along the bed (what the simulation summary prints as its envelope).
+     */
+    public ProgramAssert staysWithin(double xMinMm, double xMaxMm, double zMinMm, double zMaxMm) {
+        SimReport r = simulation();
+        if (r.xMinMm() < xMinMm || r.xMaxMm() > xMaxMm || r.zMinMm() < zMinMm || r.zMaxMm() > zMaxMm) {
+            throw new AssertionError(String.format(java.util.Locale.ROOT, "%s moves over X %.3f..%.3f mm (radius),"
+                    + " Z %.3f..%.3f mm, not within X %s..%s, Z %s..%s", program, r.xMinMm(), r.xMaxMm(), r.zMinMm(),
+                    r.zMaxMm(), xMinMm, xMaxMm, zMinMm, zMaxMm));
+        }
+        return this;
+    }
+
+    /** The simulated cycle time (the moves' trapezoidal profiles and the dwells) is below {@code limit}. */
+    public ProgramAssert cycleTimeBelow(Duration limit) {
+        double seconds = simulation().cycleSeconds();
+        if (seconds >= limit.toMillis() / 1000.0) {
+            throw new AssertionError(String.format(java.util.Locale.ROOT, "%s takes about %.1f s, not below %s",
+                    program, seconds, limit));
+        }
+        return this;
+    }
+
+    private SimReport simulation() {
+        compilesClean();
+        return result().simulation().orElseThrow(() -> new AssertionError(program + " was not simulated"));
+    }
+
+    private Session session() {
+        return session != null ? session : GcodeAssertions.session(gcnc.machine.ProfileLoader.DEFAULT);
+    }
+
+    private Compiler.Result result() {
+        if (result == null) {
+            try {
+                result = session().compile(program);
+            } catch (IOException e) {
+                throw new UncheckedIOException("cannot read " + program, e);
+            }
+        }
+        return result;
+    }
+
+    private String findings() {
+        GnuRenderer g = new GnuRenderer(session().tables().messages().in(ErrorMessages.Lang.EN));
+        List<String> out = new ArrayList<>();
+        for (Diagnostic d : result().diagnostics().sorted()) {
+            out.add(g.render(program.toString(), d));
+        }
+        return String.join("\n", out);
+    }
+}
