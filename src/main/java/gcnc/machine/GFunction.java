@@ -10,7 +10,9 @@ import java.util.Set;
  */
 public record GFunction(int code, int group, GRole role, Set<Param> words, String english, String spanish) {
     public GFunction {
-        words = words == null ? null : Set.copyOf(words);
+        // an EnumSet (a bit mask) behind a read-only view: the checker asks it for every word of every block
+        words = words == null ? null : java.util.Collections.unmodifiableSet(
+                words.isEmpty() ? java.util.EnumSet.noneOf(Param.class) : java.util.EnumSet.copyOf(words));
     }
 
     public boolean modal() {
