@@ -1,6 +1,5 @@
 package gcnc.check;
 
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
@@ -80,7 +79,7 @@ public final class BlockDraft {
         for (int i = 0; i < ws.size(); i++) {
             Word w = ws.get(i);
             if (w.letter() == Letter.G) {
-                GFunction f = functions.g(NumberText.integer(w.number()));
+                GFunction f = functions.g(w.code());
                 if (f != null && f.role() == GRole.INCH) {
                     u = Units.INCH;
                 } else if (f != null && f.role() == GRole.METRIC) {
@@ -94,10 +93,10 @@ public final class BlockDraft {
     /** The G function whose parameters the block's words are (Eb01), or null. */
     public GFunction owner() {
         if (oneShotWord != null) {
-            return functions.g(NumberText.integer(oneShotWord.number()));
+            return functions.g(oneShotWord.code());
         }
         if (motionWord != null) {
-            return functions.g(NumberText.integer(motionWord.number()));
+            return functions.g(motionWord.code());
         }
         return function >= 0 && function <= 3 ? functions.g(GRole.values()[function]) : null;
     }

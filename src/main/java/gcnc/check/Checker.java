@@ -331,7 +331,7 @@ public final class Checker {
      */
     private void commit(BlockDraft d, boolean sequence) {
         for (Word w : d.unpowered) {
-            int m = (int) gcnc.check.geom.NumberText.integer(w.number());
+            int m = (int) w.code();
             if (!warnedM.get(m)) {
                 warnedM.set(m);
                 out.report(Diagnostic.warning(Code.E113_M_WITHOUT_OUTPUT, w.span(), m, profile.name()));
@@ -382,7 +382,7 @@ public final class Checker {
         List<Word> kept = new java.util.ArrayList<>(b.words().size());
         for (Word w : b.words()) {
             gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty()
-                    ? functions.g(gcnc.check.geom.NumberText.integer(w.number())) : null;
+                    ? functions.g(w.code()) : null;
             if (f == null || f.role() != gcnc.machine.GRole.NOSE_COMP_LEFT && f.role() != gcnc.machine.GRole.NOSE_COMP_RIGHT) {
                 kept.add(w);
             }

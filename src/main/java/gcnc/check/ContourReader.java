@@ -2,7 +2,6 @@ package gcnc.check;
 
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
@@ -70,7 +69,7 @@ final class ContourReader {
                 return w;
             }
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GRole r = role.apply((int) NumberText.integer(w.number()));
+                GRole r = role.apply((int) w.code());
                 if (r != null && !r.motion() && r != GRole.NOSE_COMP_CANCEL && r != GRole.NOSE_COMP_LEFT
                         && r != GRole.NOSE_COMP_RIGHT && r != GRole.CSS && r != GRole.RPM) {
                     return w;

@@ -7,7 +7,6 @@ import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.geom.Coordinates;
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
@@ -99,7 +98,7 @@ final class CycleExpansion {
         }
         for (Word w : b.words()) {
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GRole r = role((int) NumberText.integer(w.number()));
+                GRole r = role((int) w.code());
                 if (r != null && (r.contourCycle() || r.singleCycle())) {
                     return w;
                 }
@@ -131,7 +130,7 @@ final class CycleExpansion {
 
     /** A cycle block: its other words first, as a block of their own; then what the cycle does. */
     List<CheckedBlock> start(RawBlock b, Word g, boolean isFirst) {
-        GRole kind = role((int) NumberText.integer(g.number()));
+        GRole kind = role((int) g.code());
         if (kind.singleCycle()) {
             return single.run(b, g, isFirst);
         }
@@ -176,7 +175,7 @@ final class CycleExpansion {
             boolean other = switch (w.letter()) {
                 case N, F, S, T, M -> true;
                 case G -> {
-                    GRole r = w.number().isEmpty() ? null : role((int) NumberText.integer(w.number()));
+                    GRole r = w.number().isEmpty() ? null : role((int) w.code());
                     yield r != null && !r.contourCycle();
                 }
                 default -> false;
@@ -270,7 +269,7 @@ final class CycleExpansion {
 
     private static long sequence(RawBlock b) {
         Word n = nWord(b);
-        return n == null ? -1 : NumberText.integer(n.number());
+        return n == null ? -1 : n.code();
     }
 
     private static Word nWord(RawBlock b) {

@@ -50,7 +50,7 @@ final class Salvage {
         }
         for (Word w : b.words()) {
             if (w.letter() == Letter.S) {
-                long s = NumberText.integer(w.number());
+                long s = w.code();
                 if (s != NumberText.NOT_INTEGER && inRange(functions.limit(Letter.S), s)) {
                     if (clampBlock) {
                         n.rpmClamp = s;
@@ -66,7 +66,7 @@ final class Salvage {
     }
 
     private static GFunction g(Word w, FunctionIndex functions) {
-        return w.number().isEmpty() ? null : functions.g(NumberText.integer(w.number()));
+        return w.number().isEmpty() ? null : functions.g(w.code());
     }
 
     /** A modal G of a rejected block: its mode, but not its motion (the move was not made). */
@@ -77,7 +77,7 @@ final class Salvage {
     }
 
     private static void spindleOrChuck(Word w, FunctionIndex functions, ModalState.Next n) {
-        MFunction f = w.number().isEmpty() ? null : functions.m(NumberText.integer(w.number()));
+        MFunction f = w.number().isEmpty() ? null : functions.m(w.code());
         if (f == null) {
             n.spindle = ModalState.UNKNOWN;
             n.chuck = ModalState.UNKNOWN;

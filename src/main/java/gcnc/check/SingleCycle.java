@@ -45,7 +45,7 @@ final class SingleCycle {
         if (w.letter() != Letter.G || w.number().isEmpty()) {
             return null;
         }
-        long n = NumberText.integer(w.number());
+        long n = w.code();
         return n < 0 || n > 999 ? null : host.functions().g((int) n);
     }
 

@@ -1,7 +1,6 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
@@ -21,7 +20,7 @@ public final class Sa01ModalG implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        GFunction f = d.functions.g(NumberText.integer(w.number()));
+        GFunction f = d.functions.g(w.code());
         if (!d.claimG(f.group(), w, out)) {
             return;
         }

@@ -34,7 +34,7 @@ public final class Sa02Parameter implements SyntaxAction {
         double v;
         boolean pSeconds = l == Letter.P && d.functions.control().dwellPSeconds() && NumberText.hasPoint(w.number());
         if (l == Letter.N || l == Letter.P && !pSeconds) {
-            long n = NumberText.integer(w.number());
+            long n = w.code();
             if (n == NumberText.NOT_INTEGER) {
                 d.fail(out, Code.E013_INTEGER_EXPECTED, w.span(), l);
                 return;

@@ -67,7 +67,7 @@ public final class Sa03FeedOrName implements SyntaxAction {
             d.fail(out, Code.E006_NUMBER_EXPECTED, w.span(), Letter.O);
             return;
         }
-        long o = NumberText.integer(w.number());
+        long o = w.code();
         if (o == NumberText.NOT_INTEGER) {
             d.fail(out, Code.E013_INTEGER_EXPECTED, w.span(), Letter.O);
             return;

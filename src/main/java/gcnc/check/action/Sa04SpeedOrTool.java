@@ -27,7 +27,7 @@ public final class Sa04SpeedOrTool implements SyntaxAction {
         if (!d.fresh(w, out)) {
             return;
         }
-        long n = NumberText.integer(w.number());
+        long n = w.code();
         if (n == NumberText.NOT_INTEGER) {
             d.fail(out, Code.E013_INTEGER_EXPECTED, w.span(), l);
             return;

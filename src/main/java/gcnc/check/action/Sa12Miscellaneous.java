@@ -1,7 +1,6 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.MCall;
@@ -25,7 +24,7 @@ public final class Sa12Miscellaneous implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        int code = (int) NumberText.integer(w.number());
+        int code = (int) w.code();
         MFunction f = d.functions.m(code);
         if (!d.claimM(f.group(), w, out)) {
             return;

@@ -17,7 +17,7 @@ public final class Sa13DirectRpm implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        if (!d.claimG(d.functions.g(gcnc.check.geom.NumberText.integer(w.number())).group(), w, out)) {
+        if (!d.claimG(d.functions.g(w.code()).group(), w, out)) {
             return;
         }
         d.next.css = false;

@@ -18,7 +18,7 @@ public final class Sa15ProgramEnd implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        int group = d.functions.m(gcnc.check.geom.NumberText.integer(w.number())).group();
+        int group = d.functions.m(w.code()).group();
         if (!d.claimM(group, w, out)) {
             return;
         }

@@ -22,7 +22,7 @@ public final class Sa17NotSupportedYet implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        long code = gcnc.check.geom.NumberText.integer(w.number());
+        long code = w.code();
         String name;
         if (w.letter() == Letter.G) {
             GFunction f = d.functions.g(code);

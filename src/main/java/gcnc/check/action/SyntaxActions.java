@@ -1,7 +1,6 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
@@ -62,12 +61,12 @@ public final class SyntaxActions {
         for (int i = 0; i < words.size(); i++) {
             Word w = words.get(i);
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GFunction f = d.functions.g(NumberText.integer(w.number()));
+                GFunction f = d.functions.g(w.code());
                 if (f != null && f.role().unsupported()) {
                     return w;
                 }
             } else if (w.letter() == Letter.M && !w.number().isEmpty()) {
-                MFunction f = d.functions.m(NumberText.integer(w.number()));
+                MFunction f = d.functions.m(w.code());
                 if (f != null && (f.role() == MRole.UNSUPPORTED || f.role().call())) {
                     return w;
                 }
@@ -92,7 +91,7 @@ public final class SyntaxActions {
                     d.fail(out, Code.E001_G_NUMBER_EXPECTED, w.span());
                     return null;
                 }
-                GFunction f = d.functions.g(NumberText.integer(w.number()));
+                GFunction f = d.functions.g(w.code());
                 if (f == null) {
                     d.fail(out, Code.E011_UNDEFINED_G, w.span(), w);
                     return null;
@@ -104,7 +103,7 @@ public final class SyntaxActions {
                     d.fail(out, Code.E002_M_NUMBER_EXPECTED, w.span());
                     return null;
                 }
-                MFunction f = d.functions.m(NumberText.integer(w.number()));
+                MFunction f = d.functions.m(w.code());
                 if (f == null) {
                     d.fail(out, Code.E012_UNDEFINED_M, w.span(), w);
                     return null;

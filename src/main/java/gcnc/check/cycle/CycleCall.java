@@ -80,7 +80,7 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
             switch (w.letter()) {
                 case N, F, S, T, M -> passOn.add(w);
                 case G -> {
-                    GRole r = roleOf.apply((int) NumberText.integer(w.number()));
+                    GRole r = roleOf.apply((int) w.code());
                     if (r != null && r.contourCycle()) {
                         out.error(Code.E161_CYCLE_WORD, w.span(), name, w);
                         return null;
@@ -111,7 +111,7 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
 
     private static Double value(Word w, double noPoint, Diagnostics out) {
         if (w.letter() == Letter.P || w.letter() == Letter.Q) {
-            long n = NumberText.integer(w.number());
+            long n = w.code();
             if (n == NumberText.NOT_INTEGER) {
                 out.error(Code.E013_INTEGER_EXPECTED, w.span(), w.letter());
                 return null;

@@ -9,7 +9,7 @@ public final class NumberText {
         1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
     /** Returned by {@link #integer} for text that is not a plain unsigned integer. */
-    public static final long NOT_INTEGER = -1;
+    public static final long NOT_INTEGER = gcnc.ir.Word.NOT_INTEGER;
 
     private NumberText() {
     }
@@ -61,19 +61,7 @@ public final class NumberText {
 
     /** An unsigned integer (digits only), {@link #NOT_INTEGER} otherwise; huge values saturate. */
     public static long integer(String s) {
-        int n = s.length();
-        if (n == 0) {
-            return NOT_INTEGER;
-        }
-        long v = 0;
-        for (int i = 0; i < n; i++) {
-            char c = s.charAt(i);
-            if (c < '0' || c > '9') {
-                return NOT_INTEGER;
-            }
-            v = v > 100_000_000_000_000L ? Long.MAX_VALUE / 2 : v * 10 + (c - '0');
-        }
-        return v;
+        return gcnc.ir.Word.integer(s);
     }
 
     /** Whether a number was written with a decimal point (Fanuc: changes its meaning). */
