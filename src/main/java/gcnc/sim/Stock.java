@@ -82,21 +82,16 @@ final class Stock {
      * has just cut) is not: those moves skip the polygon work.
      */
     boolean mayTouch(double zLo, double zHi, double rMin) {
-        double floor = rMin + DEPTH / 2;
-        return dips(zLo + DEPTH / 2, zHi - DEPTH / 2, (x, y) -> floor);
-    }
-
-    /** The lowest r of a region over z in [a, b] (+infinity where the region has nothing). */
-    private interface Floor {
-        double lowest(double a, double b);
+        return dips(zLo + DEPTH / 2, zHi - DEPTH / 2, null, rMin + DEPTH / 2);
     }
 
     /**
      * Whether a region over z [zLo, zHi] comes below the upper envelope in some slice, looked at a
      * run of slices at a time (per 4096, then per 64, then each): the envelope is never below the
-     * material, so a no is certain.
+     * material, so a no is certain. The region is a hull, or (hull null) everything at or above
+     * {@code floor}.
      */
-    private boolean dips(double zLo, double zHi, Floor region) {
+    private boolean dips(double zLo, double zHi, Hull region, double floor) {
         if (zHi < back || zLo > face || zHi < zLo) {
             return false;
         }
@@ -105,15 +100,15 @@ final class Stock {
         int glo = lo / GROUP;
         int ghi = hi / GROUP;
         for (int sg = glo / GROUP; sg <= ghi / GROUP; sg++) {
-            if (region.lowest(zOf(sg * GROUP * GROUP), zOf((sg + 1) * GROUP * GROUP)) >= superMax[sg]) {
+            if (lowest(region, floor, zOf(sg * GROUP * GROUP), zOf((sg + 1) * GROUP * GROUP)) >= superMax[sg]) {
                 continue;
             }
             for (int g = Math.max(glo, sg * GROUP); g <= Math.min(ghi, sg * GROUP + GROUP - 1); g++) {
-                if (region.lowest(zOf(g * GROUP), zOf((g + 1) * GROUP)) >= groupMax[g]) {
+                if (lowest(region, floor, zOf(g * GROUP), zOf((g + 1) * GROUP)) >= groupMax[g]) {
                     continue;
                 }
                 for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
-                    if (region.lowest(zOf(i), zOf(i + 1)) < upper[i]) {
+                    if (lowest(region, floor, zOf(i), zOf(i + 1)) < upper[i]) {
                         return true;
                     }
                 }
@@ -141,27 +136,35 @@ final class Stock {
             return r[i] + (r[i + 1] - r[i]) * (v - z[i]) / (z[i + 1] - z[i]);
         }
 
-        /** {lowest, highest} r of the hull at z (it must lie within the hull's z range). */
-        double[] extent(double at) {
-            double lo = Double.POSITIVE_INFINITY;
-            double hi = Double.NEGATIVE_INFINITY;
-            for (int i = 0; i < z.length; i++) {
-                int j = (i + 1) % z.length;
-                double z0 = Math.min(z[i], z[j]);
-                double z1 = Math.max(z[i], z[j]);
-                if (at < z0 || at > z1) {
-                    continue;
-                }
-                double v = z[i] == z[j] ? r[i] : r[i] + (r[j] - r[i]) * (at - z[i]) / (z[j] - z[i]);
-                double w = z[i] == z[j] ? r[j] : v;
-                lo = Math.min(lo, Math.min(v, w));
-                hi = Math.max(hi, Math.max(v, w));
-            }
-            return new double[] {lo, hi};
-        }
-
         double zMin() {
             return z[0];
+        }
+
+        /** The lower chain, z ascending: corners 0 .. the last of the rising run. */
+        Chain bottom() {
+            int k = 0;
+            while (k + 1 < z.length && z[k + 1] > z[k]) {
+                k++;
+            }
+            return new Chain(java.util.Arrays.copyOf(z, k + 1), java.util.Arrays.copyOf(r, k + 1));
+        }
+
+        /** The upper chain, z ascending: corner 0, then the corners from the last back to the end of the lower chain. */
+        Chain top() {
+            int k = 0;
+            while (k + 1 < z.length && z[k + 1] > z[k]) {
+                k++;
+            }
+            int m = z.length - k + 1;
+            double[] tz = new double[m];
+            double[] tr = new double[m];
+            tz[0] = z[0];
+            tr[0] = r[0];
+            for (int j = 1; j < m; j++) {
+                tz[j] = z[z.length - j];
+                tr[j] = r[z.length - j];
+            }
+            return new Chain(tz, tr);
         }
 
         double zMax() {
@@ -290,22 +293,32 @@ final class Stock {
      * point (the lower edge is convex, the upper concave: both are read at the slice's ends).
      */
     private void lower(Hull h) {
-        int lo = slice(h.zMin());
-        int hi = slice(h.zMax());
+        double zMin = h.zMin();
+        double zMax = h.zMax();
+        int lo = slice(zMin);
+        int hi = slice(zMax);
+        Chain bottom = h.bottom();
+        Chain top = h.top();
         boolean changed = false;
-        double[] left = null;
+        double lowA = Double.NaN;
+        double highA = Double.NaN;
         for (int i = lo; i <= hi; i++) {
             double a = zOf(i);
             double b = zOf(i + 1);
-            if (a < h.zMin() || b > h.zMax()) {
-                left = null;
+            if (a < zMin || b > zMax) {
+                lowA = Double.NaN;
                 continue;
             }
-            double[] ea = left != null ? left : h.extent(a);
-            double[] eb = h.extent(b);
-            left = eb;
-            double highestLow = Math.max(ea[0], eb[0]);
-            double lowestHigh = Math.min(ea[1], eb[1]);
+            if (Double.isNaN(lowA)) {
+                lowA = bottom.at(a);
+                highA = top.at(a);
+            }
+            double lowB = bottom.at(b);
+            double highB = top.at(b);
+            double highestLow = Math.max(lowA, lowB);
+            double lowestHigh = Math.min(highA, highB);
+            lowA = lowB;
+            highA = highB;
             if (lowestHigh >= upper[i] && highestLow < upper[i]) {
                 upper[i] = Math.max(0, highestLow);
                 changed = true;
@@ -316,9 +329,39 @@ final class Stock {
         }
     }
 
+    /**
+     * One chain of a hull's outline with z ascending, read at increasing z (a cursor walks it
+     * once, so a sweep over thousands of slices costs one pass): r by linear interpolation; where
+     * the chain ends on a vertical edge, its last corner.
+     */
+    static final class Chain {
+        private final double[] z;
+        private final double[] r;
+        private int at;
+
+        Chain(double[] z, double[] r) {
+            this.z = z;
+            this.r = r;
+        }
+
+        double at(double q) {
+            while (at + 1 < z.length && z[at + 1] <= q) {
+                at++;
+            }
+            if (at + 1 < z.length && z[at + 1] > z[at]) {
+                return r[at] + (r[at + 1] - r[at]) * (q - z[at]) / (z[at + 1] - z[at]);
+            }
+            return r[at];
+        }
+    }
+
+    private static double lowest(Hull region, double floor, double a, double b) {
+        return region == null ? floor : region.lowest(a, b);
+    }
+
     /** Whether the hull dips below the upper envelope in some slice (the envelope is never below the material). */
     private boolean under(Hull h) {
-        return dips(h.zMin(), h.zMax(), h::lowest);
+        return dips(h.zMin(), h.zMax(), h, 0);
     }
 
     /** Where slice i begins (mm). */
