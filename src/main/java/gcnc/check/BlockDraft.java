@@ -54,10 +54,10 @@ public final class BlockDraft {
     public int spindleBefore = NONE;
     /** The block's G96 word (its S is then a surface speed), or null. */
     public Word g96;
-    public final List<MCall> before = new ArrayList<>(2);
+    public final List<MCall> before = new ArrayList<>();
     /** M words whose function needs an output that the machine profile does not give (E113). */
     public final List<Word> unpowered = new ArrayList<>(1);
-    public final List<MCall> after = new ArrayList<>(2);
+    public final List<MCall> after = new ArrayList<>();
     private boolean failed;
 
     public BlockDraft(RawBlock block, ModalState prior, Tables tables, FunctionIndex functions,

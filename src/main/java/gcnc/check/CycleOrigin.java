@@ -38,8 +38,7 @@ record CycleOrigin(String cycle, int pass, int passes, int cycleLine, long p, lo
             return b;
         }
         String name = cycle + " pass " + pass + " of " + passes;
-        ProgramFrame labelled = new ProgramFrame(f.origin(), f.perX(), f.perZ(),
-                f.sequence().isEmpty() ? name : f.sequence() + " " + name);
+        ProgramFrame labelled = f.inPass(name);
         return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), b.motions(), b.after(), b.end(),
                 labelled, b.origin());
     }

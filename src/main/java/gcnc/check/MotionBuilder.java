@@ -103,7 +103,20 @@ final class MotionBuilder {
                 || d.next.css && Double.compare(rpm, d.prior.rpm()) != 0;
         return new CheckedBlock(d.block.line(), speedChanged && !Double.isNaN(rpm) ? OptionalDouble.of(rpm)
                 : OptionalDouble.empty(), d.has(Letter.T) ? OptionalInt.of(d.next.tool) : OptionalInt.empty(),
-                d.before, motions, d.after, end, frame(d));
+                fixed(d.before), fixed(motions), fixed(d.after), end, frame(d));
+    }
+
+    /**
+     * The list as the unmodifiable list a CheckedBlock keeps (which then takes it as it is): most
+     * blocks have one motion and no M, and a copy of an empty or one-element list per block showed
+     * in the checker's profile.
+     */
+    private static <T> List<T> fixed(List<T> list) {
+        return switch (list.size()) {
+            case 0 -> List.of();
+            case 1 -> List.of(list.get(0));
+            default -> List.copyOf(list);
+        };
     }
 
     /**
@@ -127,7 +140,7 @@ final class MotionBuilder {
     /** The block's program coordinates in the machine, for the simulator's findings. */
     private gcnc.ir.ProgramFrame frame(BlockDraft d) {
         return new gcnc.ir.ProgramFrame(coordinates.origin(d.next), coordinates.perX(d.units), coordinates.perZ(d.units),
-                d.has(Letter.N) ? "N" + d.word(Letter.N).number() : "");
+                d.has(Letter.N) ? d.word(Letter.N).number() : null, null);
     }
 
     private Motion move(BlockDraft d, Point from, Point end, double rpm, Diagnostics out) {
