@@ -114,7 +114,7 @@ final class Reporter {
             err.println(Printable.escape(new GnuRenderer(m).render(path, d)));
             String line = programLines == null ? null : programLines.line(path, d.span().line());
             if (line != null) {
-                err.println(SourceLines.withCaret(line, d.span().column()));
+                err.println(SourceLines.withCaret(line, d.span()));
             }
         } else {
             findings.add(new Finding(path, d, m.render(d.code(), d.args())));

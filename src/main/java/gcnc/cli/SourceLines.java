@@ -47,12 +47,19 @@ final class SourceLines {
     }
 
     /**
-     * The line, indented by a space as GCC does, and under it a caret at the column (1-based, in
-     * characters as the parser counts them); tabs before the column are kept, and a control
+     * The line, indented by a space as GCC does, and under it a caret at the span's column (1-based,
+     * in characters as the parser counts them) and tildes under the rest of its text where its end is
+     * known ({@code ^~~~} under {@code X10.}); tabs before the column are kept, and a control
      * character shown escaped is counted as wide as it is shown, so the caret lines up.
      */
-    static String withCaret(String line, int column) {
-        String before = Printable.escape(line.substring(0, Math.min(column - 1, line.length())));
-        return " " + Printable.escape(line) + "\n " + before.replaceAll("[^\t]", " ") + "^";
+    static String withCaret(String line, gcnc.diag.Span span) {
+        int column = span.column();
+        int start = Math.min(column - 1, line.length());
+        String before = Printable.escape(line.substring(0, start));
+        String marks = "^";
+        if (span.hasEnd() && span.endColumn() - 1 <= line.length() && span.endColumn() - 1 > start + 1) {
+            marks += Printable.escape(line.substring(start + 1, span.endColumn() - 1)).replaceAll(".", "~");
+        }
+        return " " + Printable.escape(line) + "\n " + before.replaceAll("[^\t]", " ") + marks;
     }
 }

@@ -34,6 +34,9 @@ public final class JsonRenderer {
             json.name("file").value(f.file());
             json.name("line").value(d.span().line());
             json.name("column").value(d.span().column());
+            if (d.span().hasEnd()) {
+                json.name("endColumn").value(d.span().endColumn());
+            }
             json.name("severity").value(d.severity().label());
             json.name("code").value(d.code().id());
             json.name("message").value(f.message());

@@ -94,7 +94,11 @@ public final class SarifRenderer {
         json.endObject();
         json.name("region").beginObject()
                 .name("startLine").value(d.span().line())
-                .name("startColumn").value(d.span().column()).endObject();
+                .name("startColumn").value(d.span().column());
+        if (d.span().hasEnd()) {
+            json.name("endColumn").value(d.span().endColumn());
+        }
+        json.endObject();
         json.endObject().endObject().endArray();
         json.endObject();
     }

@@ -216,7 +216,8 @@ public final class BlockReader implements BlockSource {
         int at = stream.offset(start);
         int length = t.getStopIndex() - start + 1;
         Letter letter = letter(source.chars()[at]);
-        words.add(new Word(letter, new String(source.chars(), at + 1, length - 1), span(start)));
+        words.add(new Word(letter, new String(source.chars(), at + 1, length - 1),
+                Span.of(source.number(), at + 1, stream.offset(t.getStopIndex()) + 2)));
     }
 
     /**

@@ -54,7 +54,7 @@ final class FastScanner {
                 if (stop < 0) {
                     return false;
                 }
-                out.add(new Word(Letter.of(c), new String(buf, i + 1, stop - i - 1), Span.of(line, i + 1)));
+                out.add(new Word(Letter.of(c), new String(buf, i + 1, stop - i - 1), Span.of(line, i + 1, stop + 1)));
                 i = stop;
             }
         }

@@ -24,6 +24,20 @@ class CaretTest {
     }
 
     @Test
+    void tildesUnderTheRestOfTheWordAndItsEndInTheReports() throws Exception {
+        Path p = CliTest.program(PROGRAM.replace("Z-3O.", "Z-3000."));
+        CliTest.Run r = CliTest.gcnc("check", p.toString(), "--caret", "always");
+        String[] err = r.err().split("\n");
+        assertTrue(err[0].contains(":7:11: error[E015]"), r.err());
+        assertEquals("^~~~~~~", err[2].strip(), "a caret under Z, tildes under -3000.: " + err[2]);
+        assertEquals('Z', err[1].charAt(err[2].indexOf('^')));
+        CliTest.Run json = CliTest.gcnc("check", p.toString(), "--format", "json");
+        assertTrue(json.out().contains("\"column\": 11,\n      \"endColumn\": 18,"), json.out());
+        CliTest.Run sarif = CliTest.gcnc("check", p.toString(), "--format", "sarif");
+        assertTrue(sarif.out().replaceAll("\\s", "").contains("\"startColumn\":11,\"endColumn\":18"), sarif.out());
+    }
+
+    @Test
     void offTheTerminalOrWhenAskedNotToNoLines() throws Exception {
         Path p = CliTest.program(PROGRAM);
         for (String[] args : new String[][] {{"check", p.toString()}, {"check", p.toString(), "--caret", "never"}}) {

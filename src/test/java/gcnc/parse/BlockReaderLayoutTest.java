@@ -20,12 +20,12 @@ class BlockReaderLayoutTest {
     }
 
     @Test
-    void wordsKeepTheirTextLetterAndStartColumn() {
+    void wordsKeepTheirTextLetterAndColumns() {
         RawBlock b = Parsed.of("N1230 G01 X12.345 Z-45.678 F0.2\n").blocks().get(0);
-        assertEquals(List.of(new Word(Letter.N, "1230", Span.of(1, 1)), new Word(Letter.G, "01", Span.of(1, 7)),
-                new Word(Letter.X, "12.345", Span.of(1, 11)), new Word(Letter.Z, "-45.678", Span.of(1, 19)),
-                new Word(Letter.F, "0.2", Span.of(1, 28))), b.words());
-        assertEquals(Span.of(1, 28), b.last());
+        assertEquals(List.of(new Word(Letter.N, "1230", Span.of(1, 1, 6)), new Word(Letter.G, "01", Span.of(1, 7, 10)),
+                new Word(Letter.X, "12.345", Span.of(1, 11, 18)), new Word(Letter.Z, "-45.678", Span.of(1, 19, 27)),
+                new Word(Letter.F, "0.2", Span.of(1, 28, 32))), b.words());
+        assertEquals(Span.of(1, 28, 32), b.last());
         assertEquals(1, b.line());
     }
 
@@ -59,7 +59,7 @@ class BlockReaderLayoutTest {
     @Test
     void aColonAndDigitsIsTheProgramNumberWordO() {
         RawBlock b = Parsed.of("%\n:0100( FLANGE OP.2 )\n").blocks().get(0);
-        assertEquals(List.of(new Word(Letter.O, "0100", Span.of(2, 1))), b.words());
+        assertEquals(List.of(new Word(Letter.O, "0100", Span.of(2, 1, 6))), b.words());
         expectClean("N5:12 X1\n", List.of("1: N5 O12 X1"));
     }
 
@@ -68,7 +68,7 @@ class BlockReaderLayoutTest {
         expectClean("/G00 X1.\n  / N10 X2\n\t/X3\n", List.of("1: /1 G00 X1.", "2: /1 N10 X2", "3: /1 X3"));
         RawBlock b = Parsed.of("/G00 X1.\n").blocks().get(0);
         assertEquals(1, b.blockDelete());
-        assertEquals(Span.of(1, 6), b.last());
+        assertEquals(Span.of(1, 6, 9), b.last());
     }
 
     @Test
@@ -151,7 +151,7 @@ class BlockReaderLayoutTest {
     @Test
     void lastIsTheStartOfTheLastWord() {
         RawBlock b = Parsed.of("  N5   X10.5  \n").blocks().get(0);
-        assertEquals(Span.of(1, 8), b.last());
+        assertEquals(Span.of(1, 8, 13), b.last());
         assertTrue(!b.malformed());
     }
 
