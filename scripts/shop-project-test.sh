@@ -2,9 +2,11 @@
 # End-to-end test of the Gradle plugin as a shop meets it (docs/gradle-plugin.md):
 #   1. publishes the gcnc library and plugin to a throwaway Maven local repository
 #      (skipped with --repo DIR: DIR already holds them, as the root build's ShopProjectTest arranges);
-#   2. builds a copy of samples/shop-project: it must pass and write the Galil programs;
+#   2. builds a copy of samples/shop-project: it must pass, write the Galil programs and run the shop's
+#      JUnit tests (gcnc's fixtures: one test per program, and the pin's own);
 #   3. builds it again: gcncCheck, gcncCompile and gcncSimulate must be UP-TO-DATE;
-#   4. builds a copy with a faulty program: it must fail at that program's line and column.
+#   4. builds a copy with a faulty program: it must fail at that program's line and column, and the
+#      shop's JUnit test of that program must fail too.
 # Each stage prints "== stage NAME" and Gradle's output; the last line is "shop-project: all passed"
 # or the script exits 1 at the first outcome that is wrong.
 # Usage: scripts/shop-project-test.sh [--repo DIR] [--keep]
@@ -50,6 +52,12 @@ for p in o1201-pin o1202-spacer ops/o1203-groove; do
         [ -s "$work/clean/build/reports/gcnc/gcncSimulate/$p.$x" ] || fail "no build/reports/gcnc/gcncSimulate/$p.$x"
     done
 done
+python3 - "$work/clean/build/test-results/junit-platform" <<'PY' || fail "the shop's JUnit tests (gcnc fixtures) did not all run and pass"
+import glob, sys, xml.etree.ElementTree as ET
+cases = [c for f in glob.glob(sys.argv[1] + "/*.xml") for c in ET.parse(f).getroot().iter("testcase")]
+bad = [c for c in cases if c.find("failure") is not None or c.find("error") is not None]
+sys.exit(0 if len(cases) == 4 and not bad else 1)  # one per program (3) and the pin's own
+PY
 for t in gcncCheck gcncCompile gcncSimulate; do
     grep -q '"errors": 0' "$work/clean/build/reports/gcnc/$t.json" || fail "no clean build/reports/gcnc/$t.json"
     grep -q '"version": "2.1.0"' "$work/clean/build/reports/gcnc/$t.sarif" || fail "no SARIF build/reports/gcnc/$t.sarif"
@@ -73,9 +81,16 @@ G01 X40. F0.2
 M05
 M30
 NC
-if run "$work/faulty" check; then
+# --continue: the shop's JUnit test of every program must fail on it too, not only gcncCheck.
+if run "$work/faulty" check --continue; then
     fail "the build with a faulty program passed"
 fi
+python3 - "$work/faulty/build/test-results/junit-platform" <<'PY' || fail "no failing JUnit test named o1299-faulty.gcode"
+import glob, sys, xml.etree.ElementTree as ET
+cases = [c for f in glob.glob(sys.argv[1] + "/*.xml") for c in ET.parse(f).getroot().iter("testcase")]
+bad = [c.find("failure").get("message") or "" for c in cases if c.find("failure") is not None]
+sys.exit(0 if len(bad) == 1 and "o1299-faulty.gcode:6:1: error[E051]" in bad[0] else 1)
+PY
 grep -q "src/main/gcode/o1299-faulty.gcode:6:1: error\[E051\]" "$work/last.log" || fail "no error at o1299-faulty.gcode:6:1"
 grep -q "see the report at file://.*/build/reports/gcnc/gcncCheck.sarif" "$work/last.log" || fail "no link to the report"
 python3 - "$work/faulty/build/reports/gcnc/gcncCheck.sarif" <<'PY' || fail "the SARIF report does not hold the error at o1299-faulty.gcode:6:1"

@@ -118,4 +118,17 @@ class FixtureAgreesWithCliTest {
         assertEquals(1, none.size());
         assertThrows(AssertionError.class, () -> none.get(0).getExecutable().execute());
     }
+
+    @Test
+    void everyProgramInTakesTheShopsOwnExtensions() throws Exception {
+        Path dir = Files.createTempDirectory("gcnc-programs");
+        Files.writeString(dir.resolve("o1201.GCODE"), HEADER);
+        Files.writeString(dir.resolve("o1202.nc"), HEADER);
+        Files.writeString(dir.resolve("o1203.tap"), HEADER);
+        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(dir, GcodeAssertions.session("generic"),
+                List.of(".gcode", "NC")).collect(Collectors.toList());
+        assertEquals(List.of("o1201.GCODE", "o1202.nc"), tests.stream().map(DynamicTest::getDisplayName).toList());
+        assertThrows(IllegalArgumentException.class,
+                () -> GcodeAssertions.everyProgramIn(dir, GcodeAssertions.session("generic"), List.of()));
+    }
 }

@@ -56,7 +56,7 @@ public final class BlockDraft {
     public Word g96;
     public final List<MCall> before = new ArrayList<>();
     /** M words whose function needs an output that the machine profile does not give (E113). */
-    public final List<Word> unpowered = new ArrayList<>(1);
+    public final List<Word> unpowered = new ArrayList<>();
     public final List<MCall> after = new ArrayList<>();
     private boolean failed;
 

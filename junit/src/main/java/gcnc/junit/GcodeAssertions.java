@@ -82,25 +82,37 @@ public final class GcodeAssertions {
      * program in it is a failing test (a misspelt path must not pass a build).
      */
     public static Stream<DynamicTest> everyProgramIn(Path folder, Session session) {
+        return everyProgramIn(folder, session, PROGRAM_EXTENSIONS);
+    }
+
+    /**
+     * The same for the shop's own file names: {@code everyProgramIn(dir, machine("haas"), List.of("gcode", "nc"))}
+     * takes {@code *.gcode} and {@code *.nc} in any case.
+     */
+    public static Stream<DynamicTest> everyProgramIn(Path folder, Session session, List<String> extensions) {
+        if (extensions.isEmpty()) {
+            throw new IllegalArgumentException("name at least one file extension for the part programs");
+        }
+        List<String> lower = extensions.stream().map(e -> e.replaceFirst("^\\.", "").toLowerCase(java.util.Locale.ROOT)).toList();
         List<Path> programs;
         try (Stream<Path> files = Files.walk(folder)) {
-            programs = files.filter(Files::isRegularFile).filter(GcodeAssertions::isProgram).sorted().toList();
+            programs = files.filter(Files::isRegularFile).filter(p -> isProgram(p, lower)).sorted().toList();
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read the folder " + folder, e);
         }
         if (programs.isEmpty()) {
             return Stream.of(DynamicTest.dynamicTest(folder.toString(), () -> {
-                throw new AssertionError("no part program (" + String.join(", ", PROGRAM_EXTENSIONS) + ") in " + folder);
+                throw new AssertionError("no part program (" + String.join(", ", lower) + ") in " + folder);
             }));
         }
         return programs.stream().map(p -> DynamicTest.dynamicTest(folder.relativize(p).toString(),
                 () -> assertCompilesClean(p, session)));
     }
 
-    private static boolean isProgram(Path p) {
+    private static boolean isProgram(Path p, List<String> extensions) {
         String name = p.getFileName().toString();
         int dot = name.lastIndexOf('.');
-        return dot > 0 && PROGRAM_EXTENSIONS.contains(name.substring(dot + 1).toLowerCase(java.util.Locale.ROOT));
+        return dot > 0 && extensions.contains(name.substring(dot + 1).toLowerCase(java.util.Locale.ROOT));
     }
 
     /** The built-in tables and a shipped machine profile (or a .machine file). */
