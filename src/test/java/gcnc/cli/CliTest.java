@@ -21,7 +21,15 @@ class CliTest {
     }
 
     static Run gcnc(String... args) {
-        CommandLine cl = Main.commandLine();
+        return run(Main.commandLine(args), args);
+    }
+
+    /** gcnc in an environment of its own (LANG, LC_ALL...) for the language of its help and usage errors. */
+    static Run gcnc(java.util.Map<String, String> env, String... args) {
+        return run(Main.commandLine(new Main.Streams(System.in, System.out), HelpLanguage.of(args, env)), args);
+    }
+
+    private static Run run(CommandLine cl, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         cl.setOut(new PrintWriter(out, true));

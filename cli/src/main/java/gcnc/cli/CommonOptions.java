@@ -7,7 +7,9 @@ import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
 import java.nio.file.Path;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /** Options every command shares: where tables come from, which machine, which language. */
 final class CommonOptions {
@@ -28,6 +30,10 @@ final class CommonOptions {
             description = "Language of the messages and summaries: en or es (default: es when LANG or LC_ALL"
                     + " starts with es, else en).")
     ErrorMessages.Lang lang;
+
+    /** The command these options belong to: its root holds a {@code --lang} given before the command. */
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec mixee;
 
     /** What every command needs once its options are read: the library session (tables, machine), a reporter. */
     record Setup(gcnc.Session session, Reporter reporter) {
@@ -70,8 +76,15 @@ final class CommonOptions {
         return ProfileLoader.load(machine, source(), t, control);
     }
 
+    /** This command's {@code --lang}, else one before the command ({@code gcnc --lang es check}), else the locale's. */
     ErrorMessages.Lang language() {
-        return lang != null ? lang : fromEnvironment(System.getenv());
+        if (lang != null) {
+            return lang;
+        }
+        if (mixee != null && mixee.root().userObject() instanceof Main m && m.lang != null) {
+            return m.lang;
+        }
+        return fromEnvironment(System.getenv());
     }
 
     /** Spanish when the user's locale is Spanish (LC_ALL, then LANG, as POSIX orders them), else English. */

@@ -1,5 +1,6 @@
 package gcnc.cli;
 
+import gcnc.tables.ErrorMessages;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.OutputStreamWriter;
@@ -7,6 +8,7 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.ResourceBundle;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -28,6 +30,14 @@ public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
+    /**
+     * {@code gcnc --lang es check ...}: the language for every command after it that has no {@code --lang}
+     * of its own (see {@link CommonOptions#language}). Hidden: the commands' help lists their own.
+     */
+    @CommandLine.Option(names = "--lang", paramLabel = "en|es", hidden = true,
+            description = "Language of the help, messages and summaries of the command that follows.")
+    ErrorMessages.Lang lang;
+
     private final Streams streams;
 
     private Main(Streams streams) {
@@ -44,28 +54,54 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = commandLine();
+        CommandLine cl = commandLine(args);
         // Messages are UTF-8 whatever the locale: in LANG=C Java would print every 'é' or 'ñ' as '?'.
         cl.setOut(new PrintWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), true));
         cl.setErr(new PrintWriter(new OutputStreamWriter(System.err, StandardCharsets.UTF_8), true));
         System.exit(cl.execute(args));
     }
 
-    /** The command line with gcnc's exit codes: 0 clean, 1 the program has errors, 2 usage or I/O problem. */
+    /**
+     * The command line with gcnc's exit codes: 0 clean, 1 the program has errors, 2 usage or I/O problem;
+     * its help and usage errors in the language of the environment (LC_ALL, LC_MESSAGES, LANG).
+     */
     public static CommandLine commandLine() {
-        return commandLine(new Streams(System.in, System.out));
+        return commandLine(new Streams(System.in, System.out), HelpLanguage.of(new String[0], System.getenv()));
+    }
+
+    /**
+     * The command line that will run {@code args}: its help and usage errors in the language of their
+     * {@code --lang}, else of the environment. The language is chosen before picocli builds the model.
+     */
+    public static CommandLine commandLine(String... args) {
+        return commandLine(new Streams(System.in, System.out), HelpLanguage.of(args, System.getenv()));
     }
 
     /** The command line reading {@code -} from, and writing {@code -o -} to, the given streams. */
     static CommandLine commandLine(Streams streams) {
+        return commandLine(streams, HelpLanguage.of(new String[0], System.getenv()));
+    }
+
+    /** The command line with its usage help, picocli's headings and usage errors in {@code lang}. */
+    static CommandLine commandLine(Streams streams, ErrorMessages.Lang lang) {
         CommandLine cl = new CommandLine(new Main(streams));
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         cl.registerConverter(Path.class, Main::path);
         cl.setExitCodeExceptionMapper(e -> ExitCode.USAGE);
+        ResourceBundle help = HelpLanguage.bundle(lang);
+        if (help != null) {
+            cl.setResourceBundle(help); // every subcommand's help, and picocli's own headings, in that language
+        }
+        Phrases phrases = new Phrases(lang);
         cl.setParameterExceptionHandler((e, args) -> {
-            e.getCommandLine().getErr().println("gcnc: " + Printable.escape(e.getMessage()));
-            CommandLine.UnmatchedArgumentException.printSuggestions(e, e.getCommandLine().getErr());
-            e.getCommandLine().getErr().println("Try 'gcnc --help' or 'gcnc help <command>'.");
+            PrintWriter err = e.getCommandLine().getErr();
+            err.println("gcnc: " + Printable.escape(HelpLanguage.usageError(e.getMessage(), lang)));
+            if (lang == ErrorMessages.Lang.EN) {
+                CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
+            } else {
+                HelpLanguage.printSuggestions(e, phrases, err);
+            }
+            err.println(phrases.get("usage.try"));
             return ExitCode.USAGE;
         });
         return cl;
