@@ -219,8 +219,9 @@ class ControlRulesTest {
 
     @Test
     void cyclesCompensationAndSubprogramsAreNamedAtTheirWord() {
-        assertEquals("1:5:E110", check("generic", "haas", "N40 G74 X0. Z-1. K0.1 F0.01\nM30\n"));
-        assertTrue(messages("generic", "fanuc-a", "G74 R0.5\nM30\n").contains("p.nc:1:1: error[E110]: G74 "));
+        // Fanuc's G83 is the live-tooling face drilling cycle, not followed (Haas's G83 is: docs/cycles.md)
+        assertEquals("1:5:E110", check("generic", "fanuc-a", "N40 G83 Z-1. Q1000 F0.01\nM30\n"));
+        assertTrue(messages("generic", "fanuc-a", "G83 Z-1. R0.5\nM30\n").contains("p.nc:1:1: error[E110]: G83 "));
         assertEquals("1:5:E110", check("generic", "haas", "G01 G42 X30. F0.1\nM30\n"));
         // the thesis's control has no subprograms; Fanuc's follows the call (ProgramFlowTest): no O1000 here
         assertEquals("1:1:E110", check("generic", "thesis-2004", "M98 P1000\nM30\n"));

@@ -43,6 +43,8 @@ final class CycleExpansion {
     private final Checker host;
     private final ContourReader contours;
     private final SingleCycle single;
+    private final Grooving grooving;
+    private final HoleDrilling drilling;
     /** The cycle whose contour is being read, with the blocks read so far; null when none. */
     private Pending pending;
     /** What the Fanuc first blocks left in force, per cycle. */
@@ -80,8 +82,9 @@ final class CycleExpansion {
         this.host = host;
         this.contours = new ContourReader(host, this::role);
         this.single = new SingleCycle(host);
-        this.any = host.profile().control().allG().stream()
-                .anyMatch(f -> f.role().contourCycle() || f.role().singleCycle());
+        this.grooving = new Grooving(host);
+        this.drilling = new HoleDrilling(host);
+        this.any = host.profile().control().allG().stream().anyMatch(f -> expanded(f.role()));
     }
 
     /** Whether the control has any cycle gcnc expands (the thesis's has none: no block is looked at). */
@@ -99,12 +102,17 @@ final class CycleExpansion {
         for (Word w : b.words()) {
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
                 GRole r = role((int) w.code());
-                if (r != null && (r.contourCycle() || r.singleCycle())) {
+                if (r != null && expanded(r)) {
                     return w;
                 }
             }
         }
         return null;
+    }
+
+    /** A cycle the checker expands into moves. */
+    private static boolean expanded(GRole r) {
+        return r.contourCycle() || r.singleCycle() || r.peckCycle() || r.drillCycle();
     }
 
     private GRole role(int code) {
@@ -114,17 +122,18 @@ final class CycleExpansion {
 
     /** Whether the block makes the G90/G94 in force again (X or Z, no G of its group). */
     boolean repeats(RawBlock b) {
-        return any && single.repeats(b);
+        return any && (single.repeats(b) || drilling.repeats(b));
     }
 
     List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
-        return single.run(b, null, isFirst);
+        return drilling.repeats(b) ? drilling.run(b, null, isFirst) : single.run(b, null, isFirst);
     }
 
     /** An ordinary block: a G of the G90/G94's group ends it. */
     void note(RawBlock b) {
         if (any) {
             single.note(b);
+            drilling.note(b);
         }
     }
 
@@ -132,9 +141,17 @@ final class CycleExpansion {
     List<CheckedBlock> start(RawBlock b, Word g, boolean isFirst) {
         GRole kind = role((int) g.code());
         if (kind.singleCycle()) {
+            drilling.note(b);
             return single.run(b, g, isFirst);
         }
         single.note(b);
+        drilling.note(b);
+        if (kind.peckCycle()) {
+            return grooving.run(b, g, kind, isFirst);
+        }
+        if (kind.drillCycle()) {
+            return drilling.run(b, g, isFirst);
+        }
         Units units = host.state().units();
         MachineProfile p = host.profile();
         double noPoint = units == Units.INCH ? p.noPointInch() : p.noPointMm();

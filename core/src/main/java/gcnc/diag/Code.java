@@ -245,6 +245,24 @@ public enum Code {
     E168_CYCLE_P_Q_MISSING(168),
     /** Checker: a G90/G94 single-pass cycle without its X (or U) or its Z (or W). */
     E169_SINGLE_CYCLE_END_MISSING(169),
+    /** Checker: a peck depth, step or G83 Q of zero or less. */
+    E180_PECK_NOT_POSITIVE(180),
+    /** Checker: a G74/G75 peck deeper than the whole cut. */
+    E181_PECK_DEEPER_THAN_CUT(181),
+    /** Checker: a peck or drilling cycle without what it needs (its end point, its peck, its retract). */
+    E182_PECK_CYCLE_MISSING(182),
+    /** Checker: a G74/G75 relief larger than the step between its cuts. */
+    E183_RELIEF_TOO_LARGE(183),
+    /** Checker: a negative G74/G75 relief when the cycle steps (its sign is then the step's). */
+    E184_RELIEF_SIGN(184),
+    /** Checker: a G74/G75 whose end point lies along the step axis but that gives no step. */
+    E185_STEP_MISSING(185),
+    /** Checker (warning): a drilling cycle off the spindle centre with a tool that does not turn. */
+    E186_DRILL_OFF_CENTRE(186),
+    /** Checker: a drilling cycle whose R plane is not between its start and its bottom. */
+    E187_DRILL_R_PLANE(187),
+    /** Checker: a word of a peck or drilling cycle that gcnc cannot follow yet (L repeats). */
+    E188_PECK_OPTION_NOT_SUPPORTED(188),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

@@ -36,12 +36,16 @@ import java.util.TreeMap;
  * @param calls             how M98 names the program and its repeat count, and how deep calls nest
  * @param macros            the control runs Fanuc macro B ({@code #} variables, {@code [ ]}
  *                          expressions, IF/GOTO/WHILE); else a macro line is E111
+ * @param peckRetractMm     the chip-breaking retract after each peck of G74/G75 when the program
+ *                          gives no first block R, and the clearance above the last peck of a
+ *                          G83 (Haas Setting 22, Fanuc parameter 5139), mm; NaN when not set
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
-                      BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros) {
+                      BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
+                      double peckRetractMm) {
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
 

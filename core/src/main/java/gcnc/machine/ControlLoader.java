@@ -23,7 +23,8 @@ public final class ControlLoader {
     /** The keys of control.cfg (tables/controls/README.md); any other is a fault, with a suggestion. */
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
-            "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros");
+            "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
+            "cycle.peck_retract_mm");
 
     private ControlLoader() {
     }
@@ -90,7 +91,8 @@ public final class ControlLoader {
                 Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
                 f.choice("m.unlisted", "error", "error", "builder").equals("builder"),
                 retract(f), calls(f),
-                f.choice("macros", "none", "none", "fanuc-b").equals("fanuc-b"));
+                f.choice("macros", "none", "none", "fanuc-b").equals("fanuc-b"),
+                length(f, "cycle.peck_retract_mm"));
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */
@@ -98,6 +100,15 @@ public final class ControlLoader {
         double r = f.number("cycle.retract_mm", Double.NaN);
         if (r < 0) {
             throw f.fault(f.required("cycle.retract_mm"), "cycle.retract_mm is a length in mm, zero or more");
+        }
+        return r;
+    }
+
+    /** A length key in mm, zero or more; NaN when the control does not say. */
+    private static double length(ProfileFile f, String key) throws TableException {
+        double r = f.number(key, Double.NaN);
+        if (r < 0) {
+            throw f.fault(f.required(key), key + " is a length in mm, zero or more");
         }
         return r;
     }

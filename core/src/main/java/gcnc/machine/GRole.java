@@ -27,6 +27,17 @@ public enum GRole {
      * facing along X (G94, Fanuc B G79), modal: a later block with X or Z makes the cycle again.
      */
     TURNING_SINGLE_CYCLE(90), FACING_SINGLE_CYCLE(94),
+    /**
+     * The peck cycles: G74 face grooving and peck drilling (pecks along Z, steps along X) and G75
+     * OD/ID grooving and parting (pecks along X, steps along Z), one-shot, expanded into moves
+     * (docs/cycles.md).
+     */
+    FACE_PECK_CYCLE(74), GROOVE_PECK_CYCLE(75),
+    /**
+     * The drilling cycles on the spindle axis (Haas G81 drill, G82 spot drill with a dwell, G83
+     * peck drill), modal in their group until G80 or a motion G: expanded into moves.
+     */
+    DRILL_CYCLE(81), SPOT_DRILL_CYCLE(82), PECK_DRILL_CYCLE(83),
     WORK_1(54), WORK_2(55), WORK_3(56), WORK_4(57), WORK_5(58), WORK_6(59), CYCLE_CANCEL(80),
     ABSOLUTE(90), INCREMENTAL(91), REGISTER(92), FEED_PER_MINUTE(94), FEED_PER_REV(95), CSS(96), RPM(97),
     /** A function gcnc cannot follow yet: using it is E110, never a misreading. */
@@ -56,6 +67,16 @@ public enum GRole {
     /** G70, G71, G72 or G73: a cycle the checker expands into moves along a contour. */
     public boolean contourCycle() {
         return this == FINISHING_CYCLE || this == TURNING_CYCLE || this == FACING_CYCLE || this == PATTERN_CYCLE;
+    }
+
+    /** G74 or G75: a peck cycle (grooving, parting, face peck drilling) the checker expands. */
+    public boolean peckCycle() {
+        return this == FACE_PECK_CYCLE || this == GROOVE_PECK_CYCLE;
+    }
+
+    /** G81, G82 or G83: a drilling cycle on the spindle axis, modal until G80. */
+    public boolean drillCycle() {
+        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE;
     }
 
     public boolean motion() {

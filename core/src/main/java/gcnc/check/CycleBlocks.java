@@ -1,0 +1,95 @@
+package gcnc.check;
+
+import gcnc.check.cycle.Move;
+import gcnc.check.cycle.MoveWriter;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.Point;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.GRole;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.function.Predicate;
+
+/**
+ * What the peck and drilling cycles (G74, G75, G81-G83) share: the words of other functions taken
+ * out of the cycle block and made a block of their own, the end point resolved like a move's,
+ * and the moves written as blocks at the cycle's line and checked one by one, each with its pass.
+ */
+final class CycleBlocks {
+    private CycleBlocks() {
+    }
+
+    /** The block's N, F, S, T, M and non-cycle G words (when its cycle words could not be read). */
+    static List<Word> passOn(RawBlock b, Word g, Predicate<Word> isCycle) {
+        List<Word> kept = new ArrayList<>();
+        for (Word w : b.words()) {
+            boolean other = switch (w.letter()) {
+                case N, F, S, T, M -> true;
+                case G -> w != g && !isCycle.test(w);
+                default -> false;
+            };
+            if (other) {
+                kept.add(w);
+            }
+        }
+        return kept;
+    }
+
+    /** The words of other functions as a block of their own, checked and committed; empty when none. */
+    static Optional<CheckedBlock> passOn(Checker host, RawBlock b, List<Word> passOn, boolean isFirst) {
+        if (passOn.isEmpty()) {
+            return Optional.empty();
+        }
+        return host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
+                isFirst, null);
+    }
+
+    /** Where the block's axis words lead from {@code start} (a rapid followed aside), or null after its error. */
+    static Point target(Checker host, RawBlock b, List<Word> axes, ModalState start) {
+        if (axes.isEmpty()) {
+            return start.position();
+        }
+        List<Word> words = new ArrayList<>(axes.size() + 1);
+        String rapid = host.profile().control().gFor(GRole.RAPID).map(f -> f.name().substring(1)).orElseThrow();
+        words.add(new Word(Letter.G, rapid, axes.get(0).span()));
+        words.addAll(axes);
+        Diagnostics found = new Diagnostics();
+        Checker.Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
+                found);
+        host.out().addAll(found);
+        return dry == null ? null : dry.block().end();
+    }
+
+    /**
+     * The moves as blocks at the cycle's line, each checked, labelled "G75 pass 2 of 3" for the
+     * simulator's findings; {@code dwell} (when not null) is checked right after move
+     * {@code dwellAfter}. After the first that fails, a rapid back to the start ends the cycle.
+     */
+    static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
+                                    ModalState start, int dwellAfter, RawBlock dwell) {
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
+        List<CheckedBlock> done = new ArrayList<>();
+        Point from = start.position();
+        for (int i = 0; i < moves.size(); i++) {
+            Move m = moves.get(i);
+            CycleOrigin origin = new CycleOrigin(name, m.pass(), passes, line, -1, -1, false);
+            Optional<CheckedBlock> r = host.one(writer.block(m, from), false, origin);
+            if (r.isPresent() && i == dwellAfter && dwell != null) {
+                done.add(r.get());
+                r = host.one(dwell, false, origin);
+            }
+            if (r.isEmpty()) {
+                CycleExpansion.abandon(host, writer, start.position(), origin).ifPresent(done::add);
+                break;
+            }
+            done.add(r.get());
+            from = host.state().position();
+        }
+        return done;
+    }
+}
