@@ -131,9 +131,12 @@ class PeckCycleErrorsTest {
 
     @Test
     void aGrooveAndAPartOffWithTheGroovingBladeSimulateClean() throws Exception {
-        // tool 5 is a 3 mm grooving blade; the G75 moves replay over the 65 mm bar without a finding
+        // tool 5 is a 3 mm grooving blade reaching 25 mm; the G75 moves replay over the 65 mm bar
+        // without a finding, and a part-off of a 40 mm bar (stock header) too
         String head = FANUC + "G00 X70. Z-30.\n";
         assertEquals("", simulated(head + "G75 X40. P4000 F0.06\nG00 X100. Z100.\nM30\n"));
-        assertEquals("", simulated(head + "G75 X0. P4000 F0.06\nG00 X100. Z100.\nM30\n"));
+        assertEquals("", simulated("(150 40)\n" + head + "G75 X0. P4000 F0.06\nG00 X100. Z100.\nM30\n"));
+        // parting the 65 mm bar needs 32.5 mm of blade: the clamp block meets the groove's walls
+        assertEquals("E315", simulated(head + "G75 X0. P4000 F0.06\nG00 X100. Z100.\nM30\n"));
     }
 }

@@ -76,6 +76,17 @@ class TrustTest {
         assertEquals(List.of(), compile(machineWith(blade), p));
     }
 
+    /**
+     * A groove deeper than the blade reaches: its clamp block, wider than the blade, meets the
+     * groove's walls (a blade 10 mm deep plunging 20 mm into the radius), and not when it reaches.
+     */
+    @Test
+    void aGrooveDeeperThanTheBladeReachesPutsItsClampInTheWalls() throws Exception {
+        String p = "O1\nG21 G90 G98\nG50 S2500\nM11\nT0909\nS800 M03\nG00 X46. Z-20.\nG01 X4. F40.\nG00 X46.\nM05\nM30\n";
+        assertEquals(List.of("E315@8"), compile(machineWith("sim.tool.9 = G 3 10"), p));
+        assertEquals(List.of(), compile(machineWith("sim.tool.9 = G 3 25"), p));
+    }
+
     @Test
     void anInchPassIsClean() throws Exception {
         String p = "O1\nG20 G90 G98\nG50 S2500\nM11\nT0101\nS1000 M03\nG00 X1.8 Z0.1\nG00 X1.6\nG01 Z-1.2 F4.\n"

@@ -16,7 +16,9 @@ import java.util.Locale;
  *       from the tip, the minor edge trails toward the tailstock.</li>
  *   <li>{@code T size}: a 60° threading insert, edge {@code size}, symmetric about the radial line.</li>
  *   <li>{@code G width [reach]}, {@code P width [reach]}: a grooving or parting blade, the tip at
- *       its chuck-side corner, {@code reach} deep (default 10 × width, at most 25, for G; 32 for P).</li>
+ *       its chuck-side corner, {@code reach} deep (default 10 × width, at most 25, for G; 32 for P),
+ *       held by a clamp block {@link #CLAMP} mm wider on each side: a groove or part-off deeper
+ *       than the reach is E315.</li>
  *   <li>{@code B diameter}: a boring bar along +Z below the tip, its insert facing outward.</li>
  * </ul>
  * These are simplified outlines (no clearance angles, no nose radius): what matters for the
@@ -25,6 +27,12 @@ import java.util.Locale;
 final class ToolLibrary {
     /** How far the holder extends beyond the insert, away from the cut (mm). */
     static final double HOLDER = 30;
+    /**
+     * How much wider than its blade a grooving or parting blade's clamp block is on each side (mm):
+     * little, so that parting close to the jaws stays clean, but enough that the block cannot
+     * follow the blade down its own slot.
+     */
+    static final double CLAMP = 1;
 
     private ToolLibrary() {
     }
@@ -56,7 +64,12 @@ final class ToolLibrary {
             case "T" -> insert = new double[][] {{0, size * cos(60), size * cos(120)}, {0, size * sin(60), size * sin(120)}};
             case "G", "P" -> {
                 double deep = p.length == 3 ? reach : p[0].equalsIgnoreCase("G") ? Math.min(25, 10 * size) : 32;
-                insert = new double[][] {{0, size, size, 0}, {0, 0, deep, deep}};
+                double[][] blade = {{0, size, size, 0}, {0, 0, deep, deep}};
+                // the clamp block at the blade's reach, wider than the blade on both sides: a plunge
+                // deeper than the reach puts it into the groove's walls
+                double[][] clamp = {{-CLAMP, size + CLAMP, size + CLAMP, -CLAMP},
+                        {deep, deep, deep + HOLDER, deep + HOLDER}};
+                return new MachineModel.ToolOutline(outline(blade), outline(clamp));
             }
             case "B" -> {
                 // the insert at the bar's end, its corner at the tip; the bar below it, 150 mm along +Z
