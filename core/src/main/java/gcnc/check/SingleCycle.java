@@ -5,7 +5,6 @@ import gcnc.check.cycle.MoveWriter;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
-import gcnc.diag.Diagnostics;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
@@ -167,15 +166,7 @@ final class SingleCycle {
 
     /** Where the block's axis words lead from the start (a rapid followed aside), or null after its error. */
     private Point target(RawBlock b, List<Word> axes, ModalState start) {
-        List<Word> words = new ArrayList<>(axes.size() + 1);
-        String rapid = host.profile().control().gFor(GRole.RAPID).map(f -> f.name().substring(1)).orElseThrow();
-        words.add(new Word(Letter.G, rapid, axes.get(0).span()));
-        words.addAll(axes);
-        Diagnostics found = new Diagnostics();
-        Checker.Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
-                found);
-        host.out().addAll(found);
-        return dry == null ? null : dry.block().end();
+        return CycleBlocks.target(host, b, axes, start);
     }
 
     /** The cycle's four moves from the start, written and checked; after one fails, back to the start. */
