@@ -22,4 +22,13 @@ public final class TestFiles {
             }
         }
     }
+
+    /** A named pipe at {@code p} (mkfifo). */
+    public static Path mkfifo(Path p) throws IOException, InterruptedException {
+        Process mk = new ProcessBuilder("mkfifo", p.toString()).inheritIO().start();
+        if (mk.waitFor() != 0) {
+            throw new IOException("mkfifo " + p + " failed");
+        }
+        return p;
+    }
 }

@@ -60,7 +60,7 @@ class OutputSafetyTest {
         try (Stream<Path> s = Files.list(dir)) {
             assertFalse(s.anyMatch(f -> f.getFileName().toString().contains(".part")), "a temporary file was left behind");
         }
-        assertEquals(java.util.Set.of(), TempFiles.open(), "temporary files the shutdown hook still has to remove");
+        assertEquals(java.util.Set.of(), gcnc.output.TempFiles.open(), "temporary files the shutdown hook still has to remove");
     }
 
     @Test
@@ -228,9 +228,7 @@ class OutputSafetyTest {
     }
 
     static Path mkfifo(Path p) throws IOException, InterruptedException {
-        Process mk = new ProcessBuilder("mkfifo", p.toString()).inheritIO().start();
-        assertEquals(0, mk.waitFor());
-        return p;
+        return gcnc.TestFiles.mkfifo(p);
     }
 
     @Test

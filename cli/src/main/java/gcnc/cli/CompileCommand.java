@@ -3,6 +3,7 @@ package gcnc.cli;
 import gcnc.Compiler;
 import gcnc.galil.SourceMap;
 import gcnc.machine.MachineProfile;
+import gcnc.output.DmcOutputs;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableException;
 import java.io.IOException;
@@ -53,25 +54,23 @@ final class CompileCommand extends RunCommand {
         if (toStdout) {
             reporter.stdoutTaken();
         }
-        Path target = output != null ? output : defaultOutput(file);
+        Path target = output != null ? output : DmcOutputs.defaultOutput(file);
         String name = SourceFiles.display(file);
         String targetName = toStdout ? "<stdout>" : target.toString();
-        Outputs outputs;
+        DmcOutputs outputs;
         try {
-            outputs = toStdout ? Outputs.toStream(streams().out())
-                    : Outputs.open(SourceFiles.fileOf(file), target, !sourceMap);
-        } catch (Outputs.Failed e) {
-            return reporter.ioFault(e.path, "cannot write", e.problem);
+            outputs = toStdout ? DmcOutputs.toStream(streams().out())
+                    : DmcOutputs.open(SourceFiles.fileOf(file), target, !sourceMap);
+        } catch (DmcOutputs.Failed e) {
+            return reporter.ioFault(e.path(), "cannot write", e.problem());
         }
         try (outputs) {
-            SourceMap mapper = new SourceMap(outputs.map == null ? line -> { } : outputs.map::line);
-            if (outputs.map != null) {
-                outputs.map.line(SourceMap.sourceLine(SourceFiles.isStdin(file) ? name : file.getFileName().toString()));
-            }
+            SourceMap mapper = new SourceMap(outputs::mapLine);
+            outputs.mapLine(SourceMap.sourceLine(SourceFiles.isStdin(file) ? name : file.getFileName().toString()));
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
-                        mapper.wrap(line -> outputs.dmc.line(line.text())));
+                        mapper.wrap(line -> outputs.dmcLine(line.text())));
             } catch (IOException e) {
                 return reporter.ioFault(name, "cannot read", e);
             }
@@ -122,98 +121,5 @@ final class CompileCommand extends RunCommand {
             err.println(phrases.get("compile.thesis_not_simulated"));
         }
         return sim;
-    }
-
-    /** The DMC and, beside a regular file, its map: opened together, committed together, discarded together. */
-    private static final class Outputs implements AutoCloseable {
-        /** An output that could not be opened, and which one. */
-        static final class Failed extends Exception {
-            final String path;
-            final IOException problem;
-
-            Failed(Object path, IOException cause) {
-                super(cause);
-                this.path = path.toString();
-                this.problem = cause;
-            }
-        }
-
-        final AtomicOutput dmc;
-        final AtomicOutput map;
-
-        Outputs(AtomicOutput dmc, AtomicOutput map) {
-            this.dmc = dmc;
-            this.map = map;
-        }
-
-        /** {@code -o -}: the DMC alone, to standard output once committed. */
-        static Outputs toStream(java.io.OutputStream stdout) throws Failed {
-            try {
-                return new Outputs(AtomicOutput.toStream(stdout), null);
-            } catch (IOException e) {
-                throw new Failed("<stdout>", e);
-            }
-        }
-
-        /** Refuses the program itself as either file (E501), then opens both. */
-        static Outputs open(Path input, Path target, boolean withMap) throws Failed {
-            Path mapPath = mapFile(target);
-            AtomicOutput dmc;
-            try {
-                AtomicOutput.refuseInput(input, target);
-                if (withMap) {
-                    AtomicOutput.refuseInput(input, mapPath);
-                }
-                dmc = new AtomicOutput(target);
-            } catch (IOException e) {
-                throw new Failed(target, e);
-            }
-            if (!withMap || !dmc.replacesFile()) {
-                return new Outputs(dmc, null);
-            }
-            try {
-                return new Outputs(dmc, new AtomicOutput(mapPath));
-            } catch (IOException e) {
-                discard(dmc);
-                throw new Failed(mapPath, e);
-            }
-        }
-
-        void commit() throws IOException {
-            if (map != null) {
-                AtomicOutput.commitAll(dmc, map);
-            } else {
-                dmc.commit();
-            }
-        }
-
-        /** Removes what was not committed; a temporary file that cannot be removed is no reason to fail the run. */
-        @Override
-        public void close() {
-            discard(map);
-            discard(dmc);
-        }
-
-        private static void discard(AtomicOutput o) {
-            if (o == null) {
-                return;
-            }
-            try {
-                o.close();
-            } catch (IOException e) {
-                // The shutdown hook (TempFiles) tries once more at exit.
-            }
-        }
-    }
-
-    static Path defaultOutput(Path file) {
-        String name = file.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        return file.resolveSibling((dot > 0 ? name.substring(0, dot) : name) + ".dmc");
-    }
-
-    static Path mapFile(Path target) {
-        Path name = target.getFileName();
-        return target.resolveSibling((name == null ? "" : name.toString()) + ".map");
     }
 }

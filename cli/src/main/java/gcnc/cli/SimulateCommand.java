@@ -4,6 +4,7 @@ import gcnc.Compiler;
 import gcnc.diag.Diagnostics;
 import gcnc.galil.LineSink;
 import gcnc.machine.MachineProfile;
+import gcnc.output.AtomicOutput;
 import gcnc.sim.DmcReplay;
 import gcnc.sim.SimOptions;
 import gcnc.sim.SimReport;
@@ -129,7 +130,7 @@ final class SimulateCommand extends RunCommand {
         if (SourceFiles.isStdin(dmc)) {
             return null;
         }
-        Path map = CompileCommand.mapFile(dmc);
+        Path map = gcnc.output.DmcOutputs.mapFile(dmc);
         if (!java.nio.file.Files.isRegularFile(map)) {
             return null;
         }

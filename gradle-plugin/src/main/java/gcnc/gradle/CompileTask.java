@@ -3,23 +3,20 @@ package gcnc.gradle;
 import gcnc.Compiler;
 import gcnc.Session;
 import gcnc.galil.SourceMap;
+import gcnc.output.DmcOutputs;
 import java.io.File;
 import java.io.IOException;
 import java.io.Reader;
-import java.io.UncheckedIOException;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Optional;
 import org.gradle.api.tasks.OutputDirectory;
 
 /**
  * {@code gcncCompile}: each program checked, translated to Galil and simulated, as {@code gcnc
  * compile} does, into build/gcnc/&lt;path under the programs&gt;.dmc with its .dmc.map beside it.
- * A program with an error gets no output (none half-written: both files are written aside and
- * moved in place only for a clean result); the outputs of an earlier run are cleared first.
+ * A program with an error gets no output; a clean one gets both files or neither, through
+ * {@link DmcOutputs} as on the command line. The outputs of an earlier run are cleared first.
  */
 public class CompileTask extends GcncTask {
     @OutputDirectory
@@ -36,39 +33,22 @@ public class CompileTask extends GcncTask {
     @Override
     protected void process(Session session, Program program, Findings findings) throws IOException {
         Path dmc = getOutputDir().toPath().resolve(program.withExtension(".dmc"));
-        Path map = dmc.resolveSibling(dmc.getFileName() + ".map");
         Files.createDirectories(dmc.getParent());
-        Path dmcPart = dmc.resolveSibling(dmc.getFileName() + ".part");
-        Path mapPart = map.resolveSibling(map.getFileName() + ".part");
-        boolean ok = false;
-        try (Reader in = program.open();
-             Writer dmcOut = Files.newBufferedWriter(dmcPart, StandardCharsets.UTF_8);
-             Writer mapOut = Files.newBufferedWriter(mapPart, StandardCharsets.UTF_8)) {
-            SourceMap mapper = new SourceMap(line -> write(mapOut, line));
-            write(mapOut, SourceMap.sourceLine(program.file().getName()));
-            Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
-                    mapper.wrap(line -> write(dmcOut, line.text())));
-            findings.report(program.shown(), r.diagnostics());
-            ok = r.ok();
-        } catch (UncheckedIOException e) {
-            throw e.getCause();
-        } finally {
-            if (ok) {
-                Files.move(dmcPart, dmc, StandardCopyOption.REPLACE_EXISTING);
-                Files.move(mapPart, map, StandardCopyOption.REPLACE_EXISTING);
-            } else {
-                Files.deleteIfExists(dmcPart);
-                Files.deleteIfExists(mapPart);
-            }
-        }
-    }
-
-    private static void write(Writer out, String line) {
+        DmcOutputs outputs;
         try {
-            out.write(line);
-            out.write('\n');
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
+            outputs = DmcOutputs.open(program.file().toPath(), dmc, true);
+        } catch (DmcOutputs.Failed e) {
+            throw new IOException("cannot write " + e.path() + ": " + e.problem().getMessage(), e.problem());
+        }
+        try (outputs; Reader in = program.open()) {
+            SourceMap mapper = new SourceMap(outputs::mapLine);
+            outputs.mapLine(SourceMap.sourceLine(program.file().getName()));
+            Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
+                    mapper.wrap(line -> outputs.dmcLine(line.text())));
+            findings.report(program.shown(), r.diagnostics());
+            if (r.ok()) {
+                outputs.commit();
+            }
         }
     }
 }

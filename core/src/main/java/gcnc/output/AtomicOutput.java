@@ -1,4 +1,4 @@
-package gcnc.cli;
+package gcnc.output;
 
 import gcnc.diag.Code;
 import java.io.BufferedWriter;
@@ -40,7 +40,7 @@ import java.util.Set;
  * </ul>
  * A directory, or a path with no file name ({@code /}), is refused when the output is made.
  */
-final class AtomicOutput implements AutoCloseable {
+public final class AtomicOutput implements AutoCloseable {
     /** How the finished temporary file reaches the target; also the order of a joint commit. */
     private enum Kind {
         /** Renamed over a regular file: can be undone while a later output of the same commit fails. */
@@ -52,7 +52,7 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** An output gcnc will not write, with the diagnostic that says why. */
-    static final class Refused extends IOException {
+    public static final class Refused extends IOException {
         private final Code code;
         private final List<String> args;
 
@@ -62,17 +62,17 @@ final class AtomicOutput implements AutoCloseable {
             this.args = List.of(args);
         }
 
-        Code code() {
+        public Code code() {
             return code;
         }
 
-        List<String> args() {
+        public List<String> args() {
             return args;
         }
     }
 
     /** Opens the temporary file's stream (a seam for tests that need a failing disk). */
-    interface Opener {
+    public interface Opener {
         OutputStream open(Path temp) throws IOException;
     }
 
@@ -93,11 +93,11 @@ final class AtomicOutput implements AutoCloseable {
     /** The target as it was before {@link #install} replaced it, kept until the whole commit is done. */
     private Path backup;
 
-    AtomicOutput(Path target) throws IOException {
+    public AtomicOutput(Path target) throws IOException {
         this(target, p -> Files.newOutputStream(p));
     }
 
-    AtomicOutput(Path target, Opener opener) throws IOException {
+    public AtomicOutput(Path target, Opener opener) throws IOException {
         Path absolute = target.toAbsolutePath();
         if (absolute.getFileName() == null || Files.isDirectory(absolute)) {
             throw new Refused(Code.E502_OUTPUT_IS_DIRECTORY);
@@ -138,12 +138,12 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** An output that goes to {@code stream} (standard output) once committed, and nowhere otherwise. */
-    static AtomicOutput toStream(OutputStream stream) throws IOException {
+    public static AtomicOutput toStream(OutputStream stream) throws IOException {
         return new AtomicOutput(stream);
     }
 
     /** True when the target is a regular file (or will be one): only then does a side file belong beside it. */
-    boolean replacesFile() {
+    public boolean replacesFile() {
         return kind == Kind.REPLACE;
     }
 
@@ -151,7 +151,7 @@ final class AtomicOutput implements AutoCloseable {
      * Refuses an output that is the program being read, under any name: the same path, {@code ./}, a
      * symbolic or a hard link ({@link Files#isSameFile}). Standard input ({@code input} null) has no file.
      */
-    static void refuseInput(Path input, Path output) throws Refused {
+    public static void refuseInput(Path input, Path output) throws Refused {
         if (input == null || !Files.exists(output) || !Files.exists(input)) {
             return;
         }
@@ -193,7 +193,7 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** For text written in pieces (the SVG); a file takes either this or {@link #line}, not both. */
-    Writer writer() {
+    public Writer writer() {
         if (writer == null) {
             writer = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
         }
@@ -201,7 +201,7 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** Writes one line with an LF end (decision D5: files use LF; the sender sends CR). */
-    void line(String text) {
+    public void line(String text) {
         if (failure != null) {
             return;
         }
@@ -234,7 +234,7 @@ final class AtomicOutput implements AutoCloseable {
         buffered = 0;
     }
 
-    void commit() throws IOException {
+    public void commit() throws IOException {
         commitAll(this);
     }
 
@@ -244,7 +244,7 @@ final class AtomicOutput implements AutoCloseable {
      * into place one by one, and when a rename fails the ones already done get their old contents
      * back (or are removed if they did not exist) before the failure is thrown.
      */
-    static void commitAll(AtomicOutput... outputs) throws IOException {
+    public static void commitAll(AtomicOutput... outputs) throws IOException {
         for (AtomicOutput o : outputs) {
             o.finish();
         }

@@ -1,4 +1,4 @@
-package gcnc.cli;
+package gcnc.output;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -10,10 +10,10 @@ import java.util.concurrent.ConcurrentHashMap;
  * The temporary files a run has open, removed by a shutdown hook when the run is killed (SIGINT,
  * SIGTERM, SIGHUP) before it could remove them itself. A compile of a long program writes tens of
  * megabytes to its {@code .part} file; Ctrl-C must not leave that behind. The hook is the one piece
- * of process-wide state in the command line: a signal ends the whole process, not one command.
+ * of process-wide state in gcnc: a signal ends the whole process, not one command.
  * (SIGKILL runs no hook; nothing can clean up after that.)
  */
-final class TempFiles {
+public final class TempFiles {
     private static final Set<Path> OPEN = ConcurrentHashMap.newKeySet();
     private static final Object HOOK_LOCK = new Object();
     private static boolean hooked;
@@ -50,7 +50,7 @@ final class TempFiles {
     }
 
     /** The temporary files still open; for tests. */
-    static Set<Path> open() {
+    public static Set<Path> open() {
         return Set.copyOf(OPEN);
     }
 

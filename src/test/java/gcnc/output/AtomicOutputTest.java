@@ -1,4 +1,4 @@
-package gcnc.cli;
+package gcnc.output;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

@@ -1,4 +1,4 @@
-package gcnc.cli;
+package gcnc.output;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -142,7 +142,7 @@ class AtomicPairTest {
     }
 
     private void killedWith(String signal) throws Exception {
-        Path fifo = OutputSafetyTest.mkfifo(dir.resolve(signal + ".fifo"));
+        Path fifo = gcnc.TestFiles.mkfifo(dir.resolve(signal + ".fifo"));
         Path log = Files.createTempFile("gcnc-killed", ".log");
         String javaCommand = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         Process gcnc = new ProcessBuilder(javaCommand, "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main",
