@@ -95,8 +95,11 @@ public final class Compiler {
         Optional<SimOptions> simulate = settings.simulation();
         try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get()) : null) {
             dialect.begin(collect);
-            simulate.flatMap(SimOptions::stock).ifPresent(b -> dialect.blank(
-                    new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout()), collect));
+            if (simulate.isPresent() && simulate.get().noBlank()) {
+                dialect.blank(Optional.empty(), collect);
+            }
+            simulate.flatMap(SimOptions::stock).ifPresent(b -> dialect.blank(Optional.of(
+                    new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout())), collect));
             if (sim != null) {
                 sim.begin(List.copyOf(lines));
             }
@@ -177,7 +180,7 @@ public final class Compiler {
      * {@code options} as they are.
      */
     public static SimOptions withStockHeader(String firstLine, MachineProfile profile, SimOptions options) {
-        if (options.stock().isPresent()) {
+        if (options.stock().isPresent() || options.noBlank()) {
             return options;
         }
         if (!profile.model().stockHeader()) {

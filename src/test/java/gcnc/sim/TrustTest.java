@@ -129,6 +129,25 @@ class TrustTest {
         assertEquals(List.of("E316@1"), compile(machine(noStock), p));
     }
 
+    /**
+     * A second operation or a casting: no bar describes the blank, so the shop says there is none
+     * (--stock none); the stock checks are skipped with the note even where the profile has a blank,
+     * and the DMC says so, so that its replay skips them too.
+     */
+    @Test
+    void noBlankSkipsTheStockChecksWhateverTheProfileSays() throws Exception {
+        String p = HEAD + "G00 X46. Z2.\nG00 X40.\nG00 Z-10.\nG00 X46.\nM05\nM30\n";
+        MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
+        StringBuilder dmc = new StringBuilder();
+        Compiler.Result r = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil",
+                Optional.of(SimOptions.defaults().withoutBlank())), l -> dmc.append(l.text()).append('\n'));
+        List<String> codes = new ArrayList<>();
+        r.diagnostics().sorted().forEach(d -> codes.add(d.code().id() + "@" + d.span().line()));
+        assertEquals(List.of("E316@1"), codes, "the rapid into the blank is not judged without one");
+        assertEquals(true, dmc.toString().contains("\nNO STOCK NONE\n"), dmc.toString());
+        assertEquals(List.of("E305@9"), compile(m, p), "with the profile's blank it is");
+    }
+
     /** check and compile give one verdict: the backend's limits are found by check too. */
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"G01 Z-10. F0.001|E207@8", "G04 X-1.|E122@8", "G04 P-5|E013@8"})

@@ -22,12 +22,16 @@ final class StockOptions {
     }
 
     @Option(names = "--stock", paramLabel = "DIA,LENGTH[,STICKOUT]",
-            description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws.")
+            description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws;"
+                    + " none: no blank (a second operation, a casting), the stock checks skipped.")
     String stock;
 
 SimOptions options(MachineProfile profile) throws BadStock {
         SimOptions o = SimOptions.defaults();
         double stickout = profile.model().stock().map(MachineModel.Blank::stickout).orElse(0.0);
+        if (stock != null && stock.strip().equalsIgnoreCase("none")) {
+            return o.withoutBlank();
+        }
         if (stock != null) {
             return o.withStock(parse(stock, stickout));
         }

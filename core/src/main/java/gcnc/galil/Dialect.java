@@ -15,10 +15,11 @@ public interface Dialect {
 
     /**
      * Records the blank the program was verified against when the program or the user gave one
-     * (a stock header, {@code --stock}), so that a replay of the DMC by itself cuts the same
-     * blank. Called after {@link #begin}; a dialect that reproduces an old format writes nothing.
+     * (a stock header, {@code --stock}), or that there was none ({@code blank} empty: {@code
+     * --stock none}), so that a replay of the DMC by itself cuts the same blank. Called after
+     * {@link #begin}; a dialect that reproduces an old format writes nothing.
      */
-    void blank(gcnc.machine.MachineModel.Blank blank, LineSink out);
+    void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, LineSink out);
 
     /** Writes one block's directives, in the order of decision D2. */
     void block(CheckedBlock block, LineSink out);

@@ -49,10 +49,10 @@ final class GalilDialect implements Dialect {
         out.accept(new GalilLine("VD " + GalilNumbers.round(profile.deceleration()), 0));
     }
 
-    /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm (docs/dmc-format.md). */
+    /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm, or {@code NO STOCK NONE} (docs/dmc-format.md). */
     @Override
-    public void blank(gcnc.machine.MachineModel.Blank blank, LineSink out) {
-        out.accept(new GalilLine(StockComment.write(blank), 0));
+    public void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, LineSink out) {
+        out.accept(new GalilLine(blank.map(StockComment::write).orElse(StockComment.NONE), 0));
     }
 
     @Override

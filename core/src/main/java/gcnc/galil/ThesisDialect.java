@@ -35,7 +35,7 @@ final class ThesisDialect implements Dialect {
 
     /** The thesis's format has no place for it: nothing. */
     @Override
-    public void blank(gcnc.machine.MachineModel.Blank blank, LineSink out) {
+    public void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, LineSink out) {
     }
 
     @Override

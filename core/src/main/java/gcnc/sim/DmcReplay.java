@@ -46,8 +46,12 @@ public final class DmcReplay {
         } catch (IOException e) {
             failure = e;
         }
-        if (options.stock().isEmpty()) {
+        if (options.stock().isEmpty() && !options.noBlank()) {
             for (String l : head) {
+                if (gcnc.galil.StockComment.isNone(l)) {
+                    options = options.withoutBlank();
+                    break;
+                }
                 gcnc.machine.MachineModel.Blank b = gcnc.galil.StockComment.read(l);
                 if (b != null) {
                     options = options.withStock(new StockSize(b.diameter(), b.length(), b.stickout()));

@@ -57,7 +57,7 @@ final class MotionChecks {
         this.tol = options.tolerance();
         this.kx = profile.x().countsPerMm();
         this.kz = profile.z().countsPerMm();
-        StockSize s = options.stock().orElse(machine.stock().orElse(null));
+        StockSize s = options.noBlank() ? null : options.stock().orElse(machine.stock().orElse(null));
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
             stock = new Stock(face - s.length(), face, s.diameter() / 2);
