@@ -43,6 +43,7 @@ final class CycleExpansion {
     private final Checker host;
     private final ContourReader contours;
     private final SingleCycle single;
+    private final Threading threads;
     /** The cycle whose contour is being read, with the blocks read so far; null when none. */
     private Pending pending;
     /** What the Fanuc first blocks left in force, per cycle. */
@@ -80,8 +81,9 @@ final class CycleExpansion {
         this.host = host;
         this.contours = new ContourReader(host, this::role);
         this.single = new SingleCycle(host);
+        this.threads = new Threading(host);
         this.any = host.profile().control().allG().stream()
-                .anyMatch(f -> f.role().contourCycle() || f.role().singleCycle());
+                .anyMatch(f -> f.role().contourCycle() || f.role().singleCycle() || f.role().thread());
     }
 
     /** Whether the control has any cycle gcnc expands (the thesis's has none: no block is looked at). */
@@ -99,7 +101,7 @@ final class CycleExpansion {
         for (Word w : b.words()) {
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
                 GRole r = role((int) w.code());
-                if (r != null && (r.contourCycle() || r.singleCycle())) {
+                if (r != null && (r.contourCycle() || r.singleCycle() || r.thread())) {
                     return w;
                 }
             }
@@ -114,23 +116,30 @@ final class CycleExpansion {
 
     /** Whether the block makes the G90/G94 in force again (X or Z, no G of its group). */
     boolean repeats(RawBlock b) {
-        return any && single.repeats(b);
+        return any && (single.repeats(b) || threads.repeats(b));
     }
 
     List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
-        return single.run(b, null, isFirst);
+        return threads.repeats(b) ? threads.run(b, null, isFirst) : single.run(b, null, isFirst);
     }
 
-    /** An ordinary block: a G of the G90/G94's group ends it. */
+    /** An ordinary block: a G of the G90/G94's (or G32/G92's) group ends it. */
     void note(RawBlock b) {
         if (any) {
             single.note(b);
+            threads.note(b);
         }
     }
 
     /** A cycle block: its other words first, as a block of their own; then what the cycle does. */
     List<CheckedBlock> start(RawBlock b, Word g, boolean isFirst) {
         GRole kind = role((int) g.code());
+        if (kind.thread()) {
+            single.note(b);
+            return threads.run(b, g, isFirst);
+        }
+        threads.note(b);
+        threads.moved();
         if (kind.singleCycle()) {
             return single.run(b, g, isFirst);
         }

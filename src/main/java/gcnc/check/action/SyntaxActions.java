@@ -48,7 +48,8 @@ public final class SyntaxActions {
             case UNSUPPORTED, NOSE_COMP_LEFT, NOSE_COMP_RIGHT -> 17;
             // expanded before the syntax actions (gcnc.check.cycle): a cycle word met here is in a
             // block the expansion hands on, where it cannot be followed
-            case FINISHING_CYCLE, TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE -> 17;
+            case FINISHING_CYCLE, TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE,
+                 THREAD, THREAD_SINGLE_CYCLE, THREAD_CYCLE -> 17;
         };
     }
 
