@@ -54,8 +54,30 @@ final class Threading {
     private double minimum;
     private double allowance;
 
+    /**
+     * Haas M23 in force: G76 and G92 end with a chamfered pull-out, which gcnc does not cut yet
+     * (E197). On at power-up on a control that has M23 (Haas), off after M24.
+     */
+    private boolean chamfer;
+
     Threading(Checker host) {
         this.host = host;
+        this.chamfer = host.profile().control().allM().stream()
+                .anyMatch(f -> f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON);
+    }
+
+    /** Follows M23/M24 in a block's words. */
+    private void chamferWords(RawBlock b) {
+        for (Word w : b.words()) {
+            if (w.letter() == Letter.M && !w.number().isEmpty()) {
+                gcnc.machine.MFunction f = host.functions().m(w.code());
+                if (f != null && f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON) {
+                    chamfer = true;
+                } else if (f != null && f.role() == gcnc.machine.MRole.THREAD_CHAMFER_OFF) {
+                    chamfer = false;
+                }
+            }
+        }
     }
 
     private GFunction function(Word w) {
@@ -97,6 +119,7 @@ final class Threading {
 
     /** An ordinary block (or another cycle): a G of the thread's group ends it; an axis word breaks a thread's continuity. */
     void note(RawBlock b) {
+        chamferWords(b);
         for (Word w : b.words()) {
             Letter l = w.letter();
             if (l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W || l == Letter.G) {
@@ -163,7 +186,14 @@ final class Threading {
             host.out().error(Code.E007_DUPLICATE_PARAMETER, twice.span(), twice.letter());
             return done;
         }
+        chamferWords(b);
         Span at = g != null ? g.span() : b.words().get(0).span();
+        if (chamfer && role != GRole.THREAD) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, g != null ? g : b.words().get(0),
+                    "supported yet under M23 (a chamfered pull-out, in force at power-up on a Haas): write M24"
+                    + " before the thread (gcnc pulls the tool straight out)");
+            return done;
+        }
         if (host.profile().encoder().isEmpty()) {
             host.out().error(Code.E190_NO_SPINDLE_ENCODER, at, host.profile().name(), label);
             if (g != null && role != GRole.THREAD_CYCLE) {

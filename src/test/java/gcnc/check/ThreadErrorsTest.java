@@ -40,7 +40,7 @@ class ThreadErrorsTest {
         Run g76 = Run.of("fanuc", START + "G76 P020060 Q100 R0.05\nG76 X22.16 Z-25. P920 Q350 F1.5\nM30\n");
         assertEquals("", g76.errors());
         assertEquals(8, threads(g76)); // six roughing passes, then two finishing passes at the height
-        Run haas = Run.of("haas", "G20 G99\nT303\nG97 S700 M03\nG00 X0.6 Z0.2\n"
+        Run haas = Run.of("haas", "G20 G99\nT303\nG97 S700 M03\nG00 X0.6 Z0.2 M24\n"
                 + "G76 X0.4056 Z-0.75 K0.0472 D0.012 F0.07692\nM30\n");
         assertEquals("", haas.errors());
         assertEquals(16, threads(haas));
@@ -70,7 +70,7 @@ class ThreadErrorsTest {
     @Test
     void e193AHeightThatDoesNotFitThePitch() {
         assertEquals("5:18:E193", fanuc("G76 X22.16 Z-25. P920 Q350 F1.2\nM30\n"));
-        assertEquals("5:20:E193", Run.of("haas", "G20 G99\nT303\nG97 S700 M03\nG00 X0.6 Z0.2\n"
+        assertEquals("5:20:E193", Run.of("haas", "G20 G99\nT303\nG97 S700 M03\nG00 X0.6 Z0.2 M24\n"
                 + "G76 X0.4056 Z-0.75 K0.06 D0.012 F0.07692\nM30\n").errors());
     }
 
@@ -98,8 +98,14 @@ class ThreadErrorsTest {
         assertEquals("5:5:E197", fanuc("G76 P010045 Q100 R0.05\nM30\n")); // no 45-degree thread
         assertEquals("5:5:E197", fanuc("G76 P000060 Q100 R0.05\nM30\n")); // no finishing pass
         assertEquals("5:18:E197", fanuc("G76 X22.16 Z-25. P0.92 Q350 F1.5\nM30\n")); // P with a point
-        assertEquals("5:35:E197", Run.of("haas", "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5.\n"
+        assertEquals("5:35:E197", Run.of("haas", "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5. M24\n"
                 + "G76 X22.16 Z-25. K0.92 D0.35 F1.5 P2\nM30\n").errors());
+        // Haas M23 (on at power-up): the chamfered pull-out is not cut yet; M24 turns it off, M23 on again
+        String haas = "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5.\n";
+        String g92 = "G92 X23. Z-25. F1.5\nG00 X40.\n";
+        assertEquals("5:1:E197", Run.of("haas", haas + g92 + "M30\n").errors());
+        assertEquals("", Run.of("haas", haas + "M24\n" + g92 + "M30\n").errors());
+        assertEquals("8:1:E197", Run.of("haas", haas + "M24\nM23\nG00 X30.\n" + g92 + "M30\n").errors());
         // a G32 right after another thread pass: one continuous thread, not supported yet
         assertEquals("7:1:E197", fanuc("G00 X23.\nG32 Z-25. F1.5\nZ-27.\nG00 X30.\nM30\n"));
     }

@@ -49,7 +49,7 @@ class ThreadPassesPropertyTest {
                         Math.round(minimum * 1000), allowance, root, Math.round(height * 1000),
                         Math.round(first * 1000), lead);
             }
-            String program = String.format(Locale.ROOT, "G21 G99\nT0707\nG97 S300 M03\nG00 X%.4f Z5.\n", start) + call
+            String program = String.format(Locale.ROOT, "G21 G99\nT0707\nG97 S300 M03\nG00 X%.4f Z5." + (haas ? " M24" : "") + "\n", start) + call
                     + "M30\n";
             String why = "seed " + seed + "\n" + program;
             Run run = Run.of(haas ? "haas" : "fanuc", program);
