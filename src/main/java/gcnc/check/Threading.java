@@ -188,17 +188,16 @@ final class Threading {
         }
         chamferWords(b);
         Span at = g != null ? g.span() : b.words().get(0).span();
+        if (host.profile().encoder().isEmpty()) {
+            host.out().error(Code.E190_NO_SPINDLE_ENCODER, at, host.profile().name(), label);
+            refused(role, g, label);
+            return done;
+        }
         if (chamfer && role != GRole.THREAD) {
             host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, g != null ? g : b.words().get(0),
                     "supported yet under M23 (a chamfered pull-out, in force at power-up on a Haas): write M24"
                     + " before the thread (gcnc pulls the tool straight out)");
-            return done;
-        }
-        if (host.profile().encoder().isEmpty()) {
-            host.out().error(Code.E190_NO_SPINDLE_ENCODER, at, host.profile().name(), label);
-            if (g != null && role != GRole.THREAD_CYCLE) {
-                kind = null;
-            }
+            refused(role, g, label);
             return done;
         }
         if (role == GRole.THREAD) {
@@ -212,6 +211,17 @@ final class Threading {
             multiple(done, b, g, words, label);
         }
         return done;
+    }
+
+    /**
+     * A refused G32/G92 stays in force (without an end point for G92), so that the blocks that
+     * repeat it are refused too, each at its line, instead of moving as whatever G was before.
+     */
+    private void refused(GRole role, Word g, String label) {
+        if (g != null && role != GRole.THREAD_CYCLE) {
+            start(role, g, label);
+            end = null;
+        }
     }
 
     private void start(GRole role, Word g, String label) {
@@ -334,9 +344,9 @@ final class Threading {
     private void single(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label, Span at) {
         boolean x = words.containsKey(Letter.X) || words.containsKey(Letter.U);
         boolean z = words.containsKey(Letter.Z) || words.containsKey(Letter.W);
-        if (g != null && (!x || !z)) {
-            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, "its end point: X (or U) and Z (or W)");
-            kind = null;
+        if (g != null && (!x || !z) || g == null && end == null && (!x || !z)) {
+            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, "its end point: X (or U) and Z (or W)");
+            kind = g != null ? null : kind;
             return;
         }
         double lead = lead(words, label, at);
@@ -359,10 +369,15 @@ final class Threading {
         if (g != null) {
             start(GRole.THREAD_SINGLE_CYCLE, g, label);
         }
-        end = new Point(x ? reached.x() : end.x(), z ? reached.z() : end.z());
-        taper = t;
+        Point to = new Point(x ? reached.x() : end.x(), z ? reached.z() : end.z());
         ModalState s = host.state();
         Point a = s.position();
+        if (Math.abs(to.z() - a.z()) < 1) {
+            host.out().error(Code.E196_THREAD_NOT_ALONG_Z, at, label);
+            return;
+        }
+        end = to;
+        taper = t;
         List<Move> moves = List.of(Move.line(true, new Point(end.x() + taper, a.z()), 1), Move.line(false, end, 1),
                 Move.line(true, new Point(a.x(), end.z()), 1), Move.line(true, a, 1));
         write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(name, b.line()));
@@ -486,6 +501,10 @@ final class Threading {
         double top = root.x() + side * height * perRadius;
         if (side == 0 || side * (a.x() - (top + t)) < 0 || side * (a.x() - top) < 0) {
             host.out().error(Code.E160_CYCLE_START_INSIDE, g.span(), label, b.line());
+            return;
+        }
+        if (Math.abs(root.z() - a.z()) < 1) {
+            host.out().error(Code.E196_THREAD_NOT_ALONG_Z, g.span(), label);
             return;
         }
         double dir = Math.signum(root.z() - a.z());

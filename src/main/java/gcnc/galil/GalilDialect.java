@@ -239,7 +239,8 @@ final class GalilDialect implements Dialect {
 
     /** A gear ratio as GR takes it: four decimals (its resolution, DMC-40x0 command reference). */
     static String ratio(double r) {
-        return String.format(java.util.Locale.ROOT, "%.4f", r);
+        String s = String.format(java.util.Locale.ROOT, "%.4f", r);
+        return s.equals("-0.0000") ? "0.0000" : s;
     }
 
     /**

@@ -51,6 +51,10 @@ class ThreadErrorsTest {
         Run r = Run.of(Run.profileWithControl("generic", "fanuc-a"),
                 START + "G76 X22.16 Z-25. P920 Q350 F1.5\nG32 Z-25. F1.5\nG92 X23. Z-25. F1.5\nM30\n", Checker.ERROR_CAP);
         assertEquals("5:1:E190, 6:1:E190, 7:1:E190", r.errors());
+        // the refused G92 stays in force: its next pass is refused too, not moved as a rapid
+        Run again = Run.of(Run.profileWithControl("generic", "fanuc-a"),
+                START + "G92 X23. Z-25. F1.5\nX22.5\nG00 X40.\nM30\n", Checker.ERROR_CAP);
+        assertEquals("5:1:E190, 6:1:E190", again.errors());
         assertEquals(0, threads(r));
     }
 
@@ -90,6 +94,9 @@ class ThreadErrorsTest {
     @Test
     void e196AThreadAlongX() {
         assertEquals("5:1:E196", fanuc("G32 X80. Z0. F1.5\nM30\n"));
+        // a cycle that starts at its own end Z (the tool left at the end of an earlier pass)
+        assertEquals("6:1:E196", fanuc("G00 Z-25.\nG76 X22.16 Z-25. P920 Q350 F1.5\nM30\n"));
+        assertEquals("6:1:E196", fanuc("G00 Z-25.\nG92 X23. Z-25. F1.5\nM30\n"));
     }
 
     @Test
