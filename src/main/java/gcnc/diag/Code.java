@@ -323,8 +323,10 @@ public enum Code {
     E316_SIM_NO_STOCK(316),
     /** A geared thread pass that does not end where its settling move goes: the gear ratios give the wrong lead or taper. */
     E317_SIM_THREAD_LEAD(317),
-    /** Gearing engaged without the wait for the spindle's whole revolution (or without GA): passes start at different angles. */
-    E318_SIM_THREAD_UNSYNCHRONISED(318),
+    /** Gearing engaged without GA naming the spindle encoder as the master. */
+    E318_SIM_THREAD_NO_MASTER(318),
+    /** Gearing engaged without the wait for the spindle's next whole revolution: passes start at different angles. */
+    E319_SIM_THREAD_UNSYNCHRONISED(319),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

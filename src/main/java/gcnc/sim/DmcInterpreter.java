@@ -401,10 +401,9 @@ final class DmcInterpreter {
             return;
         }
         if (!gearMaster) {
-            out.report(Code.E318_SIM_THREAD_UNSYNCHRONISED, line, text, "without GA making the spindle encoder the master");
+            out.report(Code.E318_SIM_THREAD_NO_MASTER, line, text);
         } else if (!synchronised) {
-            out.report(Code.E318_SIM_THREAD_UNSYNCHRONISED, line, text,
-                    "without first waiting (MF/MR) for the spindle encoder's next whole revolution");
+            out.report(Code.E319_SIM_THREAD_UNSYNCHRONISED, line, text);
         }
         engaged = true;
         synchronised = false;
@@ -452,7 +451,7 @@ final class DmcInterpreter {
         if (off > threadTolerance) {
             double zOff = Math.abs(plane.machineZ(geared1, geared2) - plane.machineZ(target1, target2));
             out.report(Code.E317_SIM_THREAD_LEAD, line, String.format(java.util.Locale.ROOT, "%.1f", off),
-                    zOff > threadTolerance ? "Z (the lead)" : "X (the taper)");
+                    zOff > threadTolerance ? "Z" : "X");
         }
         double rpm = volts * rpmPerVolt;
         double speed = Math.max(1, Math.abs(rpm) / 60 * encoderCounts * Math.hypot(ratio1, ratio2));

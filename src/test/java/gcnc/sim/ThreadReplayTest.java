@@ -21,8 +21,8 @@ import org.junit.jupiter.api.Test;
 /**
  * Thread passes through the backend and the simulator (docs/threading.md): the geared sequence
  * replays as one cutting pass ending where the program's pass ends; a replay of the DMC by itself
- * finds what the compile found; a pass whose gearing starts without the wait for the whole
- * revolution is E318, one whose ratios miss the end is E317; a ratio past GR's range is E208
+ * finds what the compile found; a pass whose gearing starts without GA is E318, without the
+ * wait for the whole revolution E319, one whose ratios miss the end is E317; a ratio past GR's range is E208
  * and the thesis dialect, which has no gearing, refuses a thread (E209).
  */
 class ThreadReplayTest {
@@ -54,7 +54,7 @@ class ThreadReplayTest {
     }
 
     @Test
-    void e318GearingWithoutTheWaitForTheWholeRevolution() throws Exception {
+    void e318E319GearingWithoutItsMasterOrTheWaitForTheWholeRevolution() throws Exception {
         MachineProfile fanuc = ReplayTest.profile("fanuc");
         StringBuilder dmc = new StringBuilder();
         compile(fanuc, "galil", PROGRAM, dmc);
@@ -65,9 +65,9 @@ class ThreadReplayTest {
         }
         assertTrue(mf > 0, dmc.toString());
         String cut = dmc.toString().replaceFirst("MF ,,gsp\n", "");
-        assertEquals(List.of("E318@" + mf), replay(cut, fanuc)); // at the GR, now where the MF was
+        assertEquals(List.of("E319@" + mf), replay(cut, fanuc)); // at the GR, now where the MF was
         String noMaster = dmc.toString().replaceFirst("GA C,C\n", "");
-        assertEquals("E318", replay(noMaster, fanuc).get(0).substring(0, 4));
+        assertEquals(List.of("E318@" + mf), replay(noMaster, fanuc)); // the GR, a line up again
     }
 
     @Test
