@@ -187,6 +187,13 @@ final class MotionBuilder {
                     NumberText.plain(p.maxFeed() * 60 / perMm, 1));
             return null;
         }
+        // Galil's GR range (E208, as the backend finds it: here already, so check and compile give
+        // one verdict): Z counts per encoder count; X's ratio is never larger (|dx| <= |dz|)
+        double ratio = leadCounts / p.encoder().get().countsPerRev();
+        if (ratio > gcnc.machine.SpindleEncoder.MAX_RATIO) {
+            d.fail(out, Code.E208_GEAR_RATIO_RANGE, at, NumberText.plain(ratio, 4));
+            return null;
+        }
         double path = Math.hypot(dx, dz);
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
         return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, new Feed(lead, zSpeed * path / dz));

@@ -182,7 +182,7 @@ final class GalilDialect implements Dialect {
     }
 
     /** Galil's GR range: a gear ratio between -127.9999 and 127.9999 (DMC-40x0 command reference, GR). */
-    static final double MAX_RATIO = 127.9999;
+    static final double MAX_RATIO = gcnc.machine.SpindleEncoder.MAX_RATIO;
     /** The DMC variable that holds the spindle encoder count a thread pass starts at. */
     static final String SYNC_VARIABLE = "gsp";
 

@@ -9,4 +9,9 @@ package gcnc.machine;
  * @param channel      Galil channel letter (A-H, X, Y, Z, W) whose main encoder is the spindle's
  */
 public record SpindleEncoder(int countsPerRev, char channel) {
+    /**
+     * The largest gear ratio (slave counts per encoder count) the Galil controller's GR takes:
+     * ±127.9999 (DMC-40x0 command reference, GR). The checker, the backend and the replay use it.
+     */
+    public static final double MAX_RATIO = 127.9999;
 }

@@ -390,7 +390,8 @@ final class DmcInterpreter {
         String[] slots = places(args);
         double r1 = slots == null ? Double.NaN : slots[planeChannel(0)].isEmpty() ? 0 : number(slots[planeChannel(0)]);
         double r2 = slots == null ? Double.NaN : slots[planeChannel(1)].isEmpty() ? 0 : number(slots[planeChannel(1)]);
-        if (Double.isNaN(r1) || Double.isNaN(r2) || Math.abs(r1) > 127.9999 || Math.abs(r2) > 127.9999) {
+        if (Double.isNaN(r1) || Double.isNaN(r2) || Math.abs(r1) > gcnc.machine.SpindleEncoder.MAX_RATIO
+                || Math.abs(r2) > gcnc.machine.SpindleEncoder.MAX_RATIO) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text);
             return;
         }

@@ -93,8 +93,12 @@ class ThreadReplayTest {
                 TableSource.builtIn(), null);
         StringBuilder dmc = new StringBuilder();
         Compiler.Result r = compile(coarse, "galil", PROGRAM, dmc);
-        // 1.5 mm x 500 counts/mm = 750 Z counts per revolution over 4 encoder counts: 187.5
+        // 1.5 mm x 500 counts/mm = 750 Z counts per revolution over 4 encoder counts: 187.5, found by
+        // the checker already (check and compile give one verdict)
         assertEquals("E208@6", ReplayTest.codes(r.diagnostics()).get(0));
+        Compiler.Result checked = Compiler.check(new StringReader(PROGRAM), new Compiler.Settings(Tables.builtIn(),
+                coarse, "galil", Optional.empty()));
+        assertEquals("E208@6", ReplayTest.codes(checked.diagnostics()).get(0));
     }
 
     @Test
