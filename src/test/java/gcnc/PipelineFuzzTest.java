@@ -80,6 +80,9 @@ class PipelineFuzzTest {
                 run(inSystemA(busier, "M10"), haas, "galil", s);
                 run(inSystemA(program, "M11"), fanuc, "galil", s);
                 run(inSystemA(busier, "M11"), fanuc, "galil", s);
+                // With thread passes (geared to the spindle: docs/threading.md) among the moves.
+                run(withThreads(inSystemA(program, "M10"), new Random(s * 31)), haas, "galil", s);
+                run(withThreads(inSystemA(busier, "M11"), new Random(s * 37)), fanuc, "galil", s);
             }));
         }
         return tests.stream();
@@ -117,6 +120,36 @@ class PipelineFuzzTest {
             a = m.appendTail(sb).toString();
         }
         return a;
+    }
+
+    /**
+     * Thread excursions that end where they start: a G32 pass and back, a G92 pass (which returns
+     * to its start by itself), a G76 of a few passes; M24 first (Haas's chamfered pull-out, M23, is
+     * not followed) and a G97 speed the Z axis can follow.
+     */
+    private static final String[] THREADS = {
+        "G32 U-0.5 W-2. F1.\nG00 U0.5 W2.",
+        "G92 U-1. W-3. F1.5\nG00 U0.",
+        "G76 X%s Z%s P600 Q250 F1.\nG00 U0.",
+    };
+
+    static String withThreads(String program, Random rnd) {
+        StringBuilder out = new StringBuilder();
+        List<String> lines = program.lines().toList();
+        double[] at = {60, 5};
+        for (int i = 0; i < lines.size(); i++) {
+            out.append(lines.get(i)).append('\n');
+            if (i == 5) {
+                out.append("M24\n");
+            }
+            boolean body = i >= 5 && i < lines.size() - 4 && !lines.get(i).startsWith("G91");
+            if (body && rnd.nextInt(6) == 0) {
+                String t = THREADS[rnd.nextInt(THREADS.length)];
+                // the G76's thread: 3 mm below and 4 mm along from wherever the tool is (U/W relative)
+                out.append(t.contains("%s") ? t.replace("X%s Z%s", "U-3. W-4.") : t).append('\n');
+            }
+        }
+        return out.toString();
     }
 
     static String withRoundTrips(String program, Random rnd) {

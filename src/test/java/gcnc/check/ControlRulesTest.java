@@ -202,9 +202,12 @@ class ControlRulesTest {
     @Test
     void g92AndG90MeanWhatTheControlSays() {
         String thread = "G00 X42. Z2.\nG92 X39. Z-20. F1.5\nM30\n";
-        assertEquals("2:1:E110", check("generic", "haas", thread));
-        assertEquals("2:1:E110", check("generic", "fanuc-a", thread));
-        assertTrue(messages("generic", "haas", thread).contains("error[E110]: G92 "), messages("generic", "haas", thread));
+        // haas and fanuc A: G92 is the thread cycle, which the generic machine cannot cut (no spindle
+        // encoder: docs/threading.md), never a coordinate shift
+        assertEquals("2:1:E190", check("generic", "haas", thread));
+        assertEquals("2:1:E190", check("generic", "fanuc-a", thread));
+        assertTrue(messages("generic", "haas", thread).contains("error[E190]: machine generic has no spindle encoder: G92 cannot be cut"),
+                messages("generic", "haas", thread));
         // fanuc B: G92 sets the coordinates (and with S the clamp); thesis: the position register
         assertEquals("", check("generic", "fanuc-b", "G92 X100. Z50.\nG92 S500\nM30\n"));
         assertEquals("", check("generic", "thesis-2004", "G92 X100. Z50.\nM30\n"));

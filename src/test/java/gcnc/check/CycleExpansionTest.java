@@ -82,6 +82,10 @@ class CycleExpansionTest {
         if (m instanceof Motion.Dwell d) {
             return "G04 " + d.seconds() + " s";
         }
+        if (m instanceof Motion.Thread t) {
+            return String.format(Locale.ROOT, "THREAD %s lead %.5f at %.0f r/min%s", at(t.to(), f), t.lead() / f.perZ(),
+                    t.rpm(), t.reverse() ? " M04" : "");
+        }
         throw new AssertionError("a motion this test does not know: " + m);
     }
 

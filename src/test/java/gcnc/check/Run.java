@@ -39,6 +39,15 @@ final class Run {
         }
     }
 
+    /** A shipped machine under another control ({@code --machine generic --control fanuc-a}). */
+    static MachineProfile profileWithControl(String name, String control) {
+        try {
+            return ProfileLoader.load(name, TableSource.builtIn(), TABLES, control);
+        } catch (TableException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     /** The generic machine under the thesis's own control: the tests of the thesis's rules. */
     static MachineProfile thesisRules() {
         try {

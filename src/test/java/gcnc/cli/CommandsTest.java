@@ -25,7 +25,7 @@ class CommandsTest {
             assertTrue(r.out().contains("  es: movimiento rápido entra en la pieza en bruto"), r.out());
         }
         CliTest.Run es = CliTest.gcnc("explain", "--lang", "es", "E316");
-        assertTrue(es.out().startsWith("E316 (note)\n  es: no se dio la pieza en bruto"), es.out());
+        assertTrue(es.out().startsWith("E316 (note)\n  es: sin pieza en bruto"), es.out());
     }
 
     @Test

@@ -196,6 +196,24 @@ class ProfileLoaderTest {
     }
 
     @Test
+    void aSpindleEncoderIsAWholeCountOnAChannelThatDoesNotMoveTheTool() throws Exception {
+        assertFault(GOOD + "spindle.encoder = 4.5\n", "spindle.encoder",
+                "spindle.encoder is the encoder's counts per spindle revolution, a whole number from 4 to 1048576");
+        assertFault(GOOD + "spindle.encoder = 2\n", "spindle.encoder", "a whole number from 4 to 1048576");
+        assertFault(GOOD + "spindle.encoder = 4096\nspindle.encoder_axis = Y\n", "spindle.encoder_axis",
+                "spindle.encoder_axis Y is the channel that drives lathe X (x.galil = Y)");
+        assertFault(GOOD + "spindle.encoder_axis = D\n", "spindle.encoder_axis",
+                "spindle.encoder_axis needs spindle.encoder");
+        MachineProfile p = ProfileLoader.read(ProfileFile.parse("t.machine", GOOD + "spindle.encoder = 2048\n"), TABLES);
+        assertEquals(new SpindleEncoder(2048, 'C'), p.encoder().orElseThrow());
+        assertTrue(ProfileLoader.read(ProfileFile.parse("t.machine", GOOD), TABLES).encoder().isEmpty());
+        assertEquals(4096, load("haas").encoder().orElseThrow().countsPerRev());
+        assertEquals(4096, load("fanuc").encoder().orElseThrow().countsPerRev());
+        assertTrue(load("generic").encoder().isEmpty());
+        assertTrue(load("thesis-2004").encoder().isEmpty());
+    }
+
+    @Test
     void oneNumberTwiceIsAFault() throws Exception {
         assertFault(GOOD + "m.05 = CB1\n", "m.05", "'m.05' is number 5 again ('m.5' on line");
         assertFault(GOOD + "sim.tool.3.insert = 0, 0; 1, 1; 0, 1\nsim.tool.03.holder = 0, 0; 1, 1; 0, 1\n",

@@ -58,6 +58,11 @@ public final class BlockDraft {
     /** M words whose function needs an output that the machine profile does not give (E113). */
     public final List<Word> unpowered = new ArrayList<>();
     public final List<MCall> after = new ArrayList<>();
+    /**
+     * The block is a thread pass written as G01 (G32/G33, a pass of G92/G78 or G76), named here
+     * ("G76"): its F is the lead per revolution and its move is spindle-synchronised; null otherwise.
+     */
+    public String thread;
     private boolean failed;
 
     public BlockDraft(RawBlock block, ModalState prior, Tables tables, FunctionIndex functions,

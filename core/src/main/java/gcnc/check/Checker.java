@@ -183,7 +183,21 @@ public final class Checker {
      * pass, and its frame names the pass for the simulator's findings).
      */
     Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin) {
+        return one(b, isFirst, origin, null);
+    }
+
+    /**
+     * A thread pass written as a G01 block (its F the lead per revolution), checked like any cut
+     * and built as a spindle-synchronised {@link gcnc.ir.Motion.Thread}; {@code thread} names the
+     * function ("G32", "G76") for its findings.
+     */
+    Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread) {
+        return one(b, isFirst, origin, thread);
+    }
+
+    private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread) {
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
+        d.thread = thread;
         scratch.clear();
         CheckedBlock result = run(d, scratch, true);
         report(b, origin);
@@ -300,12 +314,35 @@ public final class Checker {
 
     private static boolean cuts(CheckedBlock b) {
         for (gcnc.ir.Motion m : b.motions()) {
-            if (m instanceof gcnc.ir.Motion.Arc || m instanceof gcnc.ir.Motion.Linear l && !l.rapid()) {
+            if (m.accept(CUTS)) {
                 return true;
             }
         }
         return false;
     }
+
+    /** Whether a motion cuts: a feed, an arc or a thread pass. */
+    private static final gcnc.ir.Motion.Visitor<Boolean> CUTS = new gcnc.ir.Motion.Visitor<>() {
+        @Override
+        public Boolean linear(gcnc.ir.Motion.Linear l) {
+            return !l.rapid();
+        }
+
+        @Override
+        public Boolean arc(gcnc.ir.Motion.Arc a) {
+            return true;
+        }
+
+        @Override
+        public Boolean dwell(gcnc.ir.Motion.Dwell d) {
+            return false;
+        }
+
+        @Override
+        public Boolean thread(gcnc.ir.Motion.Thread t) {
+            return true;
+        }
+    };
 
     /** A clean cut: every prerequisite holds again, so a later break is a new cause. */
     private void closeCauses() {

@@ -45,6 +45,7 @@ final class CycleExpansion {
     private final SingleCycle single;
     private final Grooving grooving;
     private final HoleDrilling drilling;
+    private final Threading threads;
     /** The cycle whose contour is being read, with the blocks read so far; null when none. */
     private Pending pending;
     /** What the Fanuc first blocks left in force, per cycle. */
@@ -84,6 +85,7 @@ final class CycleExpansion {
         this.single = new SingleCycle(host);
         this.grooving = new Grooving(host);
         this.drilling = new HoleDrilling(host);
+        this.threads = new Threading(host);
         this.any = host.profile().control().allG().stream().anyMatch(f -> expanded(f.role()));
     }
 
@@ -112,7 +114,7 @@ final class CycleExpansion {
 
     /** A cycle the checker expands into moves. */
     private static boolean expanded(GRole r) {
-        return r.contourCycle() || r.singleCycle() || r.peckCycle() || r.drillCycle();
+        return r.contourCycle() || r.singleCycle() || r.peckCycle() || r.drillCycle() || r.thread();
     }
 
     private GRole role(int code) {
@@ -122,24 +124,35 @@ final class CycleExpansion {
 
     /** Whether the block makes the G90/G94 in force again (X or Z, no G of its group). */
     boolean repeats(RawBlock b) {
-        return any && (single.repeats(b) || drilling.repeats(b));
+        return any && (single.repeats(b) || drilling.repeats(b) || threads.repeats(b));
     }
 
     List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
-        return drilling.repeats(b) ? drilling.run(b, null, isFirst) : single.run(b, null, isFirst);
+        if (drilling.repeats(b)) {
+            return drilling.run(b, null, isFirst);
+        }
+        return threads.repeats(b) ? threads.run(b, null, isFirst) : single.run(b, null, isFirst);
     }
 
-    /** An ordinary block: a G of the G90/G94's group ends it. */
+    /** An ordinary block: a G of the G90/G94's (or G32/G92's) group ends it. */
     void note(RawBlock b) {
         if (any) {
             single.note(b);
             drilling.note(b);
+            threads.note(b);
         }
     }
 
     /** A cycle block: its other words first, as a block of their own; then what the cycle does. */
     List<CheckedBlock> start(RawBlock b, Word g, boolean isFirst) {
         GRole kind = role((int) g.code());
+        if (kind.thread()) {
+            single.note(b);
+            drilling.note(b);
+            return threads.run(b, g, isFirst);
+        }
+        threads.note(b);
+        threads.moved();
         if (kind.singleCycle()) {
             drilling.note(b);
             return single.run(b, g, isFirst);

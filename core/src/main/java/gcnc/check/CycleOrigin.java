@@ -20,13 +20,26 @@ record CycleOrigin(String cycle, int pass, int passes, int cycleLine, long p, lo
         return new CycleOrigin(cycle, 1, 1, line, -1, -1, false);
     }
 
-    /** Whether a finding in the block gets the note: not for a single-pass cycle (p < 0). */
-    boolean noted() {
-        return p >= 0;
+    /** {@code p} of a thread cycle's pass: no contour; the note names the depth instead (E199). */
+    private static final long THREAD = -2;
+
+    /** A pass of a thread cycle (G76, G92/G78), {@code depth} its depth as the note prints it. */
+    static CycleOrigin thread(String cycle, int pass, int passes, int line, long depthMicrons) {
+        return new CycleOrigin(cycle, pass, passes, line, THREAD, depthMicrons, false);
     }
 
-    /** The note after each finding in the block (E165). */
+    /** Whether a finding in the block gets the note: not for a single-pass cycle (p = -1). */
+    boolean noted() {
+        return p >= 0 || p == THREAD;
+    }
+
+    /** The note after each finding in the block (E165; E199 for a thread pass). */
     Diagnostic note(Span at) {
+        if (p == THREAD) {
+            return new Diagnostic(Code.E199_THREAD_PASS, Severity.NOTE, at, List.of(cycle, Integer.toString(pass),
+                    Integer.toString(passes), Integer.toString(cycleLine),
+                    gcnc.check.geom.NumberText.plain(q / 1e6, 4)));
+        }
         return new Diagnostic(Code.E165_CYCLE_PASS, Severity.NOTE, at, List.of(cycle, Integer.toString(pass),
                 Integer.toString(passes), Integer.toString(cycleLine), Long.toString(p), Long.toString(q)));
     }

@@ -147,11 +147,69 @@ final class MotionBuilder {
         if (d.function == 0) {
             return new Motion.Linear(true, from, end, null);
         }
+        if (d.thread != null && d.function == 1) {
+            return thread(d, from, end, rpm, out);
+        }
         Feed feed = feeds.feed(d, rpm, out);
         if (feed == null) {
             return null;
         }
         return d.function == 1 ? new Motion.Linear(false, from, end, feed) : arcs.arc(d, from, end, feed, out);
+    }
+
+    /**
+     * A thread pass (docs/threading.md): the machine must have a spindle encoder (E190), the
+     * spindle a constant speed (G97, E191) that it knows (E104), the pass must advance along Z at
+     * least as much as along X (E196), and the lead at that speed must be within the Z axis's
+     * maximum feed (E192). F is the lead per revolution whatever G98/G99 says.
+     */
+    private Motion thread(BlockDraft d, Point from, Point end, double rpm, Diagnostics out) {
+        Word f = d.has(Letter.F) ? d.word(Letter.F) : null;
+        gcnc.diag.Span at = f != null ? f.span() : d.blame();
+        if (p.encoder().isEmpty()) {
+            d.fail(out, Code.E190_NO_SPINDLE_ENCODER, d.blame(), p.name(), d.thread);
+            return null;
+        }
+        if (d.next.css) {
+            d.fail(out, Code.E191_THREAD_NEEDS_G97, d.blame(), d.thread);
+            return null;
+        }
+        if (!(rpm > 0) || Double.isInfinite(rpm)) {
+            d.fail(out, Code.E104_FEED_PER_REV_NO_SPEED, at);
+            return null;
+        }
+        double lead = d.next.feed;
+        if (!(lead > 0)) {
+            d.fail(out, Code.E198_THREAD_LEAD, at, d.thread, NumberText.plain(lead));
+            return null;
+        }
+        double dz = Math.abs(end.z() - from.z());
+        double dx = Math.abs(end.x() - from.x());
+        if (dz == 0 || dx > dz) {
+            d.fail(out, Code.E196_THREAD_NOT_ALONG_Z, d.blame(), d.thread);
+            return null;
+        }
+        double perZ = coordinates.perZ(d.units);
+        double leadCounts = lead * perZ;
+        double zSpeed = leadCounts * rpm / 60;
+        if (zSpeed > p.maxFeed()) {
+            double mmPerUnit = d.units == gcnc.machine.Units.INCH ? 25.4 : 1;
+            double perMm = p.z().countsPerMm();
+            d.fail(out, Code.E192_THREAD_TOO_FAST, at, d.thread, NumberText.plain(lead * mmPerUnit, 4),
+                    NumberText.plain(rpm, 1), NumberText.plain(lead * mmPerUnit * rpm, 1),
+                    NumberText.plain(p.maxFeed() * 60 / perMm, 1));
+            return null;
+        }
+        // Galil's GR range (E208, as the backend finds it: here already, so check and compile give
+        // one verdict): Z counts per encoder count; X's ratio is never larger (|dx| <= |dz|)
+        double ratio = leadCounts / p.encoder().get().countsPerRev();
+        if (ratio > gcnc.machine.SpindleEncoder.MAX_RATIO) {
+            d.fail(out, Code.E208_GEAR_RATIO_RANGE, at, NumberText.plain(ratio, 4));
+            return null;
+        }
+        double path = Math.hypot(dx, dz);
+        int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
+        return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, new Feed(lead, zSpeed * path / dz));
     }
 
     /** The end point, or null after E015 when it is beyond the travel ({@code zero}: the block's coordinate zero). */

@@ -100,7 +100,7 @@ final class SingleCycle {
                 case X, U, Z, W -> axes.add(w);
                 case N, F, S, T, M -> passOn.add(w);
                 case G -> {
-                    if (f != null && (f.role().singleCycle() || f.role().contourCycle())) {
+                    if (f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread())) {
                         foreign = foreign == null ? w : foreign;
                     } else {
                         passOn.add(w);

@@ -263,6 +263,26 @@ public enum Code {
     E187_DRILL_R_PLANE(187),
     /** Checker: a word of a peck or drilling cycle that gcnc cannot follow yet (L repeats). */
     E188_PECK_OPTION_NOT_SUPPORTED(188),
+    /** Checker: a thread (G32/G33, G92/G78, G76) on a machine whose profile has no spindle encoder. */
+    E190_NO_SPINDLE_ENCODER(190),
+    /** Checker: a thread cut under G96 constant surface speed (threading needs G97). */
+    E191_THREAD_NEEDS_G97(191),
+    /** Checker: lead x spindle speed is faster than the Z axis's maximum feed. */
+    E192_THREAD_TOO_FAST(192),
+    /** Checker: a thread's height is deeper than its lead allows (0.65 x lead). */
+    E193_THREAD_TOO_DEEP(193),
+    /** Checker: a G76 first depth of cut (Fanuc Q, Haas D) of zero or less. */
+    E194_THREAD_FIRST_DEPTH(194),
+    /** Checker: a thread block without a word it needs (F, X/Z, K, D, P, Q). */
+    E195_THREAD_WORD_MISSING(195),
+    /** Checker: a thread that advances more along X than along Z (lead along X is not supported). */
+    E196_THREAD_NOT_ALONG_Z(196),
+    /** Checker: a thread word with a value the control does not accept (G76 P digits, angle, A, P). */
+    E197_THREAD_WORD_VALUE(197),
+    /** Checker: a thread lead of zero or less. */
+    E198_THREAD_LEAD(198),
+    /** Checker, note: which pass of a thread cycle (G76, G92/G78) a finding is in. */
+    E199_THREAD_PASS(199),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */
@@ -279,6 +299,10 @@ public enum Code {
     E206_THESIS_ARC(206),
     /** A cutting feed is below one count per second, the slowest vector speed VS can give. */
     E207_FEED_TOO_SLOW(207),
+    /** A thread's gear ratio (Z counts per spindle encoder count) beyond Galil's GR range of 127.9999. */
+    E208_GEAR_RATIO_RANGE(208),
+    /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
+    E209_THESIS_NO_GEARING(209),
 
     // 300-399: simulator (sim package).
     /** A DMC line the simulator does not know. */
@@ -315,6 +339,12 @@ public enum Code {
     E315_SIM_HOLDER_IN_STOCK(315),
     /** Note: no blank was given, so the stock checks were skipped. */
     E316_SIM_NO_STOCK(316),
+    /** A geared thread pass that does not end where its settling move goes: the gear ratios give the wrong lead or taper. */
+    E317_SIM_THREAD_LEAD(317),
+    /** Gearing engaged without GA naming the spindle encoder as the master. */
+    E318_SIM_THREAD_NO_MASTER(318),
+    /** Gearing engaged without the wait for the spindle's next whole revolution: passes start at different angles. */
+    E319_SIM_THREAD_UNSYNCHRONISED(319),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -71,13 +71,31 @@ final class GalilDialect implements Dialect {
         }
         outputs(b.before(), out);
         for (Motion m : b.motions()) {
-            if (m instanceof Motion.Linear) {
-                linear(b, (Motion.Linear) m, out);
-            } else if (m instanceof Motion.Arc) {
-                arc(b, (Motion.Arc) m, out);
-            } else {
-                dwell(b, (Motion.Dwell) m, out);
-            }
+            m.accept(new Motion.Visitor<Void>() {
+                @Override
+                public Void linear(Motion.Linear l) {
+                    GalilDialect.this.linear(b, l, out);
+                    return null;
+                }
+
+                @Override
+                public Void arc(Motion.Arc a) {
+                    GalilDialect.this.arc(b, a, out);
+                    return null;
+                }
+
+                @Override
+                public Void dwell(Motion.Dwell d) {
+                    GalilDialect.this.dwell(b, d, out);
+                    return null;
+                }
+
+                @Override
+                public Void thread(Motion.Thread t) {
+                    GalilDialect.this.thread(b, t, out);
+                    return null;
+                }
+            });
         }
         outputs(b.after(), out);
     }
@@ -161,6 +179,87 @@ final class GalilDialect implements Dialect {
         finishSequence(out);
         posU = tu;
         posV = tv;
+    }
+
+    /** Galil's GR range: a gear ratio between -127.9999 and 127.9999 (DMC-40x0 command reference, GR). */
+    static final double MAX_RATIO = gcnc.machine.SpindleEncoder.MAX_RATIO;
+    /** The DMC variable that holds the spindle encoder count a thread pass starts at. */
+    static final String SYNC_VARIABLE = "gsp";
+
+    /**
+     * One thread pass geared to the spindle encoder (docs/threading.md, docs/dmc-format.md):
+     * {@code GA} makes the encoder's channel the master of both plane axes; the DMC waits with
+     * {@code MF}/{@code MR} for the encoder to pass the next whole revolution (every pass starts at
+     * the same spindle angle); {@code GR} engages both axes at the ratios that advance Z one lead
+     * per revolution (X in proportion for a taper); {@code MF}/{@code MR} on Z waits for the pass's
+     * end; {@code GR 0,0} disengages, and {@code PA}/{@code BG}/{@code AM} settle both axes on the
+     * exact end counts (the few counts the disengagement and the 4-decimal ratios leave).
+     */
+    private void thread(CheckedBlock b, Motion.Thread t, BlockWriter out) {
+        gcnc.machine.SpindleEncoder enc = profile.encoder().orElse(null);
+        if (enc == null) {
+            // the checker reports E190 first; a hand-built block without an encoder is the same fault here
+            diagnostics.error(Code.E190_NO_SPINDLE_ENCODER, at(b), profile.name(), "a thread");
+            return;
+        }
+        long tu = GalilNumbers.round(frame.u(t.to()));
+        long tv = GalilNumbers.round(frame.v(t.to()));
+        if (!inRange(b, "PA", tu) || !inRange(b, "PA", tv)) {
+            return;
+        }
+        double dz = Math.abs(t.to().z() - t.from().z());
+        // encoder counts the pass takes: revolutions x counts per revolution, negative under M04
+        double master = dz / t.lead() * enc.countsPerRev() * (t.reverse() ? -1 : 1);
+        double ru = (tu - posU) / master;
+        double rv = (tv - posV) / master;
+        if (Math.abs(ru) > MAX_RATIO || Math.abs(rv) > MAX_RATIO) {
+            diagnostics.error(Code.E208_GEAR_RATIO_RANGE, at(b), ratio(Math.max(Math.abs(ru), Math.abs(rv))));
+            return;
+        }
+        String[] plane = {frame.plane().substring(0, 1), frame.plane().substring(1, 2)};
+        String encoder = String.valueOf(enc.channel());
+        boolean zFirst = frame.plane().charAt(0) == profile.z().galil();
+        long tz = zFirst ? tu : tv;
+        long z0 = zFirst ? posU : posV;
+        out.emit("GA " + positional(plane, encoder, encoder));
+        int cpr = enc.countsPerRev();
+        String cross = t.reverse() ? "-1" : "+1";
+        out.emit(SYNC_VARIABLE + "=(@INT[_TP" + encoder + "/" + cpr + "]" + cross + ")*" + cpr);
+        out.emit((t.reverse() ? "MR " : "MF ") + positional(new String[] {encoder}, SYNC_VARIABLE));
+        out.emit("GR " + positional(plane, ratio(ru), ratio(rv)));
+        String zLetter = String.valueOf(profile.z().galil());
+        out.emit((tz >= z0 ? "MF " : "MR ") + positional(new String[] {zLetter}, Long.toString(tz)));
+        out.emit("GR " + positional(plane, "0", "0"));
+        out.emit("PA " + positional(plane, Long.toString(tu), Long.toString(tv)));
+        out.emit("BG " + frame.plane());
+        out.emit("AM " + frame.plane());
+        posU = tu;
+        posV = tv;
+    }
+
+    /** A gear ratio as GR takes it: four decimals (its resolution, DMC-40x0 command reference). */
+    static String ratio(double r) {
+        String s = String.format(java.util.Locale.ROOT, "%.4f", r);
+        return s.equals("-0.0000") ? "0.0000" : s;
+    }
+
+    /**
+     * Arguments by channel position (Galil's per-axis commands: {@code GA ,C,C} puts C in the B and
+     * C places): {@code values[i]} at the place of {@code letters[i]}, the others empty.
+     */
+    static String positional(String[] letters, String... values) {
+        int last = -1;
+        int[] at = new int[letters.length];
+        for (int i = 0; i < letters.length; i++) {
+            at[i] = GalilFrame.channel(letters[i].charAt(0));
+            last = Math.max(last, at[i]);
+        }
+        String[] slots = new String[last + 1];
+        java.util.Arrays.fill(slots, "");
+        for (int i = 0; i < letters.length; i++) {
+            slots[at[i]] = values[i];
+        }
+        return String.join(",", slots);
     }
 
     private void dwell(CheckedBlock b, Motion.Dwell m, BlockWriter out) {

@@ -55,19 +55,38 @@ final class ThesisDialect implements Dialect {
         }
         outputs(b.before(), out);
         for (Motion m : b.motions()) {
-            if (m instanceof Motion.Linear) {
-                Motion.Linear l = (Motion.Linear) m;
-                double dx = l.to().x() - l.from().x();
-                double dz = l.to().z() - l.from().z();
-                group(b, speed(l.rapid() ? null : l.feed()), vp(b, dx, dz), out);
-            } else if (m instanceof Motion.Arc) {
-                arc(b, (Motion.Arc) m, out);
-            } else {
-                String ms = number(b, "WT", ((Motion.Dwell) m).seconds() * 1000);
-                if (ms != null) {
-                    out.emit("WT " + ms);
+            m.accept(new Motion.Visitor<Void>() {
+                @Override
+                public Void linear(Motion.Linear l) {
+                    double dx = l.to().x() - l.from().x();
+                    double dz = l.to().z() - l.from().z();
+                    group(b, speed(l.rapid() ? null : l.feed()), vp(b, dx, dz), out);
+                    return null;
                 }
-            }
+
+                @Override
+                public Void arc(Motion.Arc a) {
+                    ThesisDialect.this.arc(b, a, out);
+                    return null;
+                }
+
+                @Override
+                public Void dwell(Motion.Dwell d) {
+                    String ms = number(b, "WT", d.seconds() * 1000);
+                    if (ms != null) {
+                        out.emit("WT " + ms);
+                    }
+                    return null;
+                }
+
+                @Override
+                public Void thread(Motion.Thread t) {
+                    // the thesis's directives have no gearing: a thread written as a plain feed would
+                    // cut a helix of the wrong lead, at a different angle on every pass
+                    diagnostics.error(Code.E209_THESIS_NO_GEARING, Span.of(b.line(), 1));
+                    return null;
+                }
+            });
         }
         outputs(b.after(), out);
     }

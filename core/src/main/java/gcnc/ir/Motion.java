@@ -4,10 +4,31 @@ package gcnc.ir;
  * What one block makes the machine do, in machine counts. A block may hold several
  * (G28 = rapid to the intermediate point, then rapid to the reference point).
  */
-public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell {
+public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, Motion.Thread {
+
+    /**
+     * The dispatch the compiler checks: every consumer of motions (the backends, the simulator,
+     * the checker) implements all of it, so a new kind of motion does not compile until each
+     * handles it (Java 17 has no pattern switch).
+     */
+    interface Visitor<R> {
+        R linear(Linear l);
+
+        R arc(Arc a);
+
+        R dwell(Dwell d);
+
+        R thread(Thread t);
+    }
+
+    <R> R accept(Visitor<R> v);
 
     /** G00 (rapid: feed is null) or G01. */
     record Linear(boolean rapid, Point from, Point to, Feed feed) implements Motion {
+        @Override
+        public <R> R accept(Visitor<R> v) {
+            return v.linear(this);
+        }
     }
 
     /**
@@ -16,13 +37,39 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell {
      */
     record Arc(boolean clockwise, Point from, Point to, Point centre, double radius, Feed feed, ArcWords words)
             implements Motion {
+        @Override
+        public <R> R accept(Visitor<R> v) {
+            return v.arc(this);
+        }
     }
 
     /** The radius words of an arc block, scaled to counts; r is null when I/K were given. */
     record ArcWords(Double r, Double i, Double k) {
     }
 
+    /**
+     * One spindle-synchronised thread pass (G32, Fanuc B G33; a pass of G92/G78 or G76): a straight
+     * line from {@code from} to {@code to} on which Z advances {@code lead} counts per spindle
+     * revolution (X in proportion, for a taper), every pass starting at the same spindle angle.
+     * Never a plain feed: the backend gears the axes to the spindle encoder (docs/threading.md).
+     *
+     * @param lead     Z counts per spindle revolution, greater than 0
+     * @param rpm      the spindle speed the pass is cut at (G97)
+     * @param reverse  the spindle turns M04 (its encoder counts down)
+     * @param feed     the lead as programmed (F) and the path speed it makes at {@code rpm}, counts/s
+     */
+    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed) implements Motion {
+        @Override
+        public <R> R accept(Visitor<R> v) {
+            return v.thread(this);
+        }
+    }
+
     /** G04: wait this many seconds. */
     record Dwell(double seconds) implements Motion {
+        @Override
+        public <R> R accept(Visitor<R> v) {
+            return v.dwell(this);
+        }
     }
 }

@@ -38,6 +38,13 @@ public enum GRole {
      * peck drill), modal in their group until G80 or a motion G: expanded into moves.
      */
     DRILL_CYCLE(81), SPOT_DRILL_CYCLE(82), PECK_DRILL_CYCLE(83),
+    /**
+     * Threading, spindle-synchronised (docs/threading.md): G32 one pass (Fanuc B G33, modal in
+     * group 1), G92 the single-pass thread cycle (Fanuc B G78, modal in group 1) and G76 the
+     * multiple-pass thread cycle (one-shot). Expanded by the checker into thread passes; the numbers
+     * are gcnc's own (G92's Fanuc A number is the thesis's register).
+     */
+    THREAD(32), THREAD_SINGLE_CYCLE(-92), THREAD_CYCLE(76),
     WORK_1(54), WORK_2(55), WORK_3(56), WORK_4(57), WORK_5(58), WORK_6(59), CYCLE_CANCEL(80),
     ABSOLUTE(90), INCREMENTAL(91), REGISTER(92), FEED_PER_MINUTE(94), FEED_PER_REV(95), CSS(96), RPM(97),
     /** A function gcnc cannot follow yet: using it is E110, never a misreading. */
@@ -62,6 +69,11 @@ public enum GRole {
     /** G90/G94 (Fanuc B G77/G79): a single-pass cycle the checker expands into its four moves. */
     public boolean singleCycle() {
         return this == TURNING_SINGLE_CYCLE || this == FACING_SINGLE_CYCLE;
+    }
+
+    /** G32/G33, G92/G78 or G76: a thread the checker expands into spindle-synchronised passes. */
+    public boolean thread() {
+        return this == THREAD || this == THREAD_SINGLE_CYCLE || this == THREAD_CYCLE;
     }
 
     /** G70, G71, G72 or G73: a cycle the checker expands into moves along a contour. */

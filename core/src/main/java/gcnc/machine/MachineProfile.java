@@ -40,6 +40,7 @@ import java.util.Optional;
  * @param machineZero     where G53 X0 Z0 is, machine counts (the reference point unless the profile says)
  * @param chuckByProgram  the program must close the chuck before it cuts (else the operator did)
  * @param model           the lathe's solid parts and the tools' outlines, for the simulator
+ * @param spindleEncoder  the spindle encoder threads are geared to, or null when the machine has none
  */
 public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
@@ -48,11 +49,16 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
                              Map<Integer, Point> workOffsets, Map<Integer, Point> toolOffsets, int tools,
                              Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file,
                              Control control, Units units, Point machineZero, boolean chuckByProgram,
-                             MachineModel model) {
+                             MachineModel model, SpindleEncoder spindleEncoder) {
     public MachineProfile {
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);
         outputs = Map.copyOf(outputs);
+    }
+
+    /** The spindle encoder threads are geared to; empty on a machine that cannot cut threads (E190). */
+    public Optional<SpindleEncoder> encoder() {
+        return Optional.ofNullable(spindleEncoder);
     }
 
     public Optional<Point> workOffset(int g) {

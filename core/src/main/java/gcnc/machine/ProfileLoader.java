@@ -104,7 +104,40 @@ public final class ProfileLoader {
                 f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
                 workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
-                machineZero, chuckByProgram, MachineModel.read(f));
+                machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z));
+    }
+
+    /** The largest encoder resolution gcnc accepts: 2^20 counts per revolution. */
+    private static final int MAX_ENCODER_COUNTS = 1 << 20;
+
+    /**
+     * {@code spindle.encoder} (counts per revolution, a whole number 4 to 2^20) and
+     * {@code spindle.encoder_axis} (the channel whose main encoder reads it, by default
+     * {@code spindle.axis}; not a channel that moves the tool); null when the profile has none.
+     */
+    private static SpindleEncoder encoder(ProfileFile f, Axis x, Axis z) throws TableException {
+        if (f.entry("spindle.encoder").isEmpty()) {
+            if (f.entry("spindle.encoder_axis").isPresent()) {
+                throw f.fault(f.required("spindle.encoder_axis"),
+                        "spindle.encoder_axis needs spindle.encoder (its counts per revolution)");
+            }
+            return null;
+        }
+        ProfileFile.Entry e = f.required("spindle.encoder");
+        double counts = f.number(e);
+        if (counts != Math.rint(counts) || counts < 4 || counts > MAX_ENCODER_COUNTS) {
+            throw f.fault(e, "spindle.encoder is the encoder's counts per spindle revolution, a whole number from 4 to "
+                    + MAX_ENCODER_COUNTS);
+        }
+        char channel = channelLetter(f, "spindle.encoder_axis", f.text("spindle.axis", "C"));
+        for (Axis a : new Axis[] {x, z}) {
+            if (channel(channel) == channel(a.galil())) {
+                throw f.fault(f.entry("spindle.encoder_axis").orElse(e), "spindle.encoder_axis " + channel
+                        + " is the channel that drives lathe " + (a == x ? "X" : "Z") + " ("
+                        + (a == x ? "x" : "z") + ".galil = " + a.galil() + "): its encoder reads that axis");
+            }
+        }
+        return new SpindleEncoder((int) counts, channel);
     }
 
     /** The control the profile names (or {@code override}); a fault in it is also shown at the profile's key. */

@@ -33,7 +33,13 @@ final class Conformance {
             }
             return endPoint(last, lin.to(), line);
         }
-        Motion.Arc arc = (Motion.Arc) m;
+        if (m instanceof Motion.Thread t) {
+            if (segs.size() != 1 || last.arc()) {
+                return mismatch(line, "path (a thread pass is one straight geared move)", last.length(), t.to());
+            }
+            return endPoint(last, t.to(), line);
+        }
+        Motion.Arc arc = (Motion.Arc) m; // a dwell has no sequence: the simulator never pairs one
         Point to = arc.to();
         // The arc is the sequence's first segment; a closing VP of a count or two may follow it
         // (the galil dialect's whole-count radius), so the end point is the last segment's.

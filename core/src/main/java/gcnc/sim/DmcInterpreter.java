@@ -48,6 +48,35 @@ final class DmcInterpreter {
     boolean checkedByCaller;
     private final int spindleChannel;
 
+    /**
+     * The spindle encoder threads are geared to (channel, counts per revolution; -1 when the
+     * machine has none), the drive's r/min per volt (for a thread pass's speed) and how far, in
+     * counts, a geared pass may end from its settling move before it is E317.
+     */
+    int encoderChannel = -1;
+    int encoderCounts;
+    double rpmPerVolt;
+    double threadTolerance = 2;
+    private double volts;
+    /** The gearing of a thread pass as the DMC sets it up (docs/dmc-format.md, "Thread passes"). */
+    private boolean gearMaster;
+    private String syncVariable;
+    private boolean synchronised;
+    private boolean engaged;
+    private double ratio1;
+    private double ratio2;
+    private double engaged1;
+    private double engaged2;
+    /** The plane index (0, 1) whose trip point ends the pass, and that point; -1 when none yet. */
+    private int tripAxis = -1;
+    private double trip;
+    /** Where the disengaged pass left the axes, and the PA target; NaN when none. */
+    private double geared1 = Double.NaN;
+    private double geared2 = Double.NaN;
+    private double target1 = Double.NaN;
+    private double target2 = Double.NaN;
+    private String gearLine = "";
+
     DmcInterpreter(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
                    Listener out) {
         this.plane = plane;
@@ -126,6 +155,10 @@ final class DmcInterpreter {
             out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, line, t);
             return;
         }
+        if (Character.isLowerCase(t.charAt(0)) && t.indexOf('=') > 0) {
+            assignment(t, line);
+            return;
+        }
         command(t.substring(0, 2), t.substring(2).strip(), t, line);
     }
 
@@ -150,15 +183,21 @@ final class DmcInterpreter {
             case "BG" -> {
                 if (args.equals("S")) {
                     begin(line, text);
+                } else if (plane.sameChannels(args) && !Double.isNaN(target1)) {
+                    threadPass(line, text);
                 } else {
                     out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
                 }
             }
             case "AM" -> {
-                if (!args.equals("S")) {
+                if (!args.equals("S") && !plane.sameChannels(args)) {
                     out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
                 }
             }
+            case "GA" -> gearAxes(args, text, line);
+            case "MF", "MR" -> tripPoint(cmd, args, text, line);
+            case "GR" -> gearRatio(args, text, line);
+            case "PA" -> settle(args, text, line);
             case "WT" -> out.dwell(integer(args, cmd, text, line, 0, Integer.MAX_VALUE) / 1000.0, line);
             case "SB", "CB" -> {
                 int bit = integer(args, cmd, text, line, 0, 999);
@@ -266,9 +305,168 @@ final class DmcInterpreter {
                 return;
             }
             if (i == spindleChannel) {
+                volts = v;
                 out.spindleVolts(v, line);
             }
         }
+    }
+
+    /** Per-channel arguments (GA, MF, GR, PA): the value at each channel's place, "" where empty. */
+    private static String[] places(String args) {
+        String[] a = args.split(",", -1);
+        String[] slots = new String[8];
+        java.util.Arrays.fill(slots, "");
+        for (int i = 0; i < a.length && i < 8; i++) {
+            slots[i] = a[i].strip();
+        }
+        return a.length > 8 ? null : slots;
+    }
+
+    /** The plane's two channels in plane order (0: the first of VP's arguments). */
+    private int planeChannel(int i) {
+        return Plane.channel(plane.letters.charAt(i));
+    }
+
+    /** {@code GA}: the spindle encoder's channel is the master of both plane axes, and of nothing else. */
+    private void gearAxes(String args, String text, int line) {
+        String[] slots = places(args);
+        boolean ok = slots != null && encoderChannel >= 0;
+        for (int i = 0; ok && i < 8; i++) {
+            boolean inPlane = i == planeChannel(0) || i == planeChannel(1);
+            ok = inPlane ? slots[i].length() == 1 && Plane.channel(slots[i].charAt(0)) == encoderChannel
+                    : slots[i].isEmpty();
+        }
+        if (!ok) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GA", text);
+            return;
+        }
+        gearMaster = true;
+    }
+
+    /** {@code gsp=(@INT[_TPC/4096]+1)*4096}: the encoder count of the next whole revolution. */
+    private void assignment(String t, int line) {
+        java.util.regex.Matcher m = SYNC.matcher(t);
+        if (!m.matches() || encoderChannel < 0 || Plane.channel(m.group(2).charAt(0)) != encoderChannel
+                || Integer.parseInt(m.group(3)) != encoderCounts || Integer.parseInt(m.group(5)) != encoderCounts) {
+            out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, line, t);
+            return;
+        }
+        syncVariable = m.group(1);
+        synchronised = false;
+    }
+
+    private static final java.util.regex.Pattern SYNC = java.util.regex.Pattern.compile(
+            "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})");
+
+    /**
+     * {@code MF}/{@code MR}: on the encoder's channel with the sync variable, the wait for the whole
+     * revolution (the pass will start at the same spindle angle as every other); on a plane axis
+     * while geared, the point where the pass ends.
+     */
+    private void tripPoint(String cmd, String args, String text, int line) {
+        String[] slots = places(args);
+        int at = -1;
+        for (int i = 0; slots != null && i < 8; i++) {
+            if (!slots[i].isEmpty()) {
+                at = at == -1 ? i : -2;
+            }
+        }
+        if (at >= 0 && at == encoderChannel && slots[at].equals(syncVariable)) {
+            synchronised = true;
+            return;
+        }
+        int axis = at < 0 ? -1 : at == planeChannel(0) ? 0 : at == planeChannel(1) ? 1 : -1;
+        long v = axis < 0 ? BAD : parseLong(slots[at], 0, slots[at].length());
+        if (v == BAD || !engaged) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
+            return;
+        }
+        tripAxis = axis;
+        trip = v;
+    }
+
+    /** {@code GR}: engages the plane axes at their ratios, or ({@code GR 0,0}) disengages them at the trip point. */
+    private void gearRatio(String args, String text, int line) {
+        String[] slots = places(args);
+        double r1 = slots == null ? Double.NaN : slots[planeChannel(0)].isEmpty() ? 0 : number(slots[planeChannel(0)]);
+        double r2 = slots == null ? Double.NaN : slots[planeChannel(1)].isEmpty() ? 0 : number(slots[planeChannel(1)]);
+        if (Double.isNaN(r1) || Double.isNaN(r2) || Math.abs(r1) > gcnc.machine.SpindleEncoder.MAX_RATIO
+                || Math.abs(r2) > gcnc.machine.SpindleEncoder.MAX_RATIO) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text);
+            return;
+        }
+        if (r1 == 0 && r2 == 0) {
+            if (engaged) {
+                disengage(line, text);
+            }
+            return;
+        }
+        if (!gearMaster) {
+            out.report(Code.E318_SIM_THREAD_NO_MASTER, line, text);
+        } else if (!synchronised) {
+            out.report(Code.E319_SIM_THREAD_UNSYNCHRONISED, line, text);
+        }
+        engaged = true;
+        synchronised = false;
+        ratio1 = r1;
+        ratio2 = r2;
+        engaged1 = g1;
+        engaged2 = g2;
+        tripAxis = -1;
+        gearLine = text;
+    }
+
+    /** Where the geared axes stand when the trip axis reaches its point (the master turned the same counts for both). */
+    private void disengage(int line, String text) {
+        engaged = false;
+        double r = tripAxis == 0 ? ratio1 : ratio2;
+        if (tripAxis < 0 || r == 0) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text + " (no MF/MR point on a geared axis ends the pass)");
+            return;
+        }
+        double master = (trip - (tripAxis == 0 ? engaged1 : engaged2)) / r;
+        geared1 = engaged1 + ratio1 * master;
+        geared2 = engaged2 + ratio2 * master;
+    }
+
+    /** {@code PA}: the settling move to the pass's exact end, started by {@code BG} on the plane. */
+    private void settle(String args, String text, int line) {
+        String[] slots = places(args);
+        long p = slots == null ? BAD : parseLong(slots[planeChannel(0)], 0, slots[planeChannel(0)].length());
+        long q = slots == null ? BAD : parseLong(slots[planeChannel(1)], 0, slots[planeChannel(1)].length());
+        if (p == BAD || q == BAD || Double.isNaN(geared1) || engaged) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "PA", text);
+            return;
+        }
+        target1 = p;
+        target2 = q;
+    }
+
+    /**
+     * The geared pass and its settling move, replayed as one cutting sequence from where the gearing
+     * began to the PA target at the speed the spindle gives it; E317 when the gearing ended further
+     * than the tolerance from that target (the ratios make the wrong lead or taper).
+     */
+    private void threadPass(int line, String text) {
+        double off = Math.hypot(geared1 - target1, geared2 - target2);
+        if (off > threadTolerance) {
+            double zOff = Math.abs(plane.machineZ(geared1, geared2) - plane.machineZ(target1, target2));
+            out.report(Code.E317_SIM_THREAD_LEAD, line, String.format(java.util.Locale.ROOT, "%.1f", off),
+                    zOff > threadTolerance ? "Z" : "X");
+        }
+        double rpm = volts * rpmPerVolt;
+        double speed = Math.max(1, Math.abs(rpm) / 60 * encoderCounts * Math.hypot(ratio1, ratio2));
+        List<Segment> one = List.of(new Segment(plane.machineX(engaged1, engaged2), plane.machineZ(engaged1, engaged2),
+                plane.machineX(target1, target2), plane.machineZ(target1, target2), false, 0, 0, 0, 0, 0, gearLine));
+        g1 = target1;
+        g2 = target2;
+        target1 = Double.NaN;
+        target2 = Double.NaN;
+        geared1 = Double.NaN;
+        geared2 = Double.NaN;
+        feedMarked = true; // a geared pass always cuts
+        out.sequence(one, speed, line, text);
+        feedMarked = false;
     }
 
     private double positive(String s, String cmd, String text, int line, double otherwise) {

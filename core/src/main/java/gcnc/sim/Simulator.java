@@ -35,6 +35,9 @@ public final class Simulator {
     /** Where the block being replayed was run from (a called program's file and calls): its findings go there. */
     private gcnc.diag.Origin origin = gcnc.diag.Origin.PROGRAM;
 
+    /** How far a geared thread pass may end from its exact end before it is E317, mm. */
+    static final double THREAD_TOLERANCE_MM = 0.005;
+
     public Simulator(MachineProfile profile, SimOptions options, Diagnostics diagnostics) {
         this.profile = profile;
         this.options = options;
@@ -48,6 +51,13 @@ public final class Simulator {
         }
         this.dmc = new DmcInterpreter(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
                 profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
+        profile.encoder().ifPresent(e -> {
+            dmc.encoderChannel = Plane.channel(e.channel());
+            dmc.encoderCounts = e.countsPerRev();
+        });
+        dmc.rpmPerVolt = profile.rpmPerVolt();
+        // 5 micrometres, or two counts: far below any thread's pitch tolerance (docs/threading.md)
+        dmc.threadTolerance = Math.max(Math.max(2, options.tolerance()), THREAD_TOLERANCE_MM * profile.z().countsPerMm());
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
     }
 
@@ -121,13 +131,30 @@ public final class Simulator {
      * or a diameter within the tolerance (a circle that small).
      */
     private boolean standing(Motion m) {
-        if (m instanceof Motion.Linear l) {
-            return distance(l.from(), l.to()) <= options.tolerance();
-        }
-        Motion.Arc a = (Motion.Arc) m;
-        return distance(a.from(), a.to()) <= options.tolerance()
-                && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
-                        || Conformance.pointLike(a, options.tolerance()));
+        double tol = options.tolerance();
+        return m.accept(new Motion.Visitor<Boolean>() {
+            @Override
+            public Boolean linear(Motion.Linear l) {
+                return distance(l.from(), l.to()) <= tol;
+            }
+
+            @Override
+            public Boolean thread(Motion.Thread t) {
+                return distance(t.from(), t.to()) <= tol;
+            }
+
+            @Override
+            public Boolean dwell(Motion.Dwell d) {
+                return true;
+            }
+
+            @Override
+            public Boolean arc(Motion.Arc a) {
+                return distance(a.from(), a.to()) <= tol
+                        && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
+                                || Conformance.pointLike(a, tol));
+            }
+        });
     }
 
     /**
@@ -139,11 +166,28 @@ public final class Simulator {
         Segment last = segs.get(segs.size() - 1);
         double dx = last.toX() - first.fromX();
         double dz = last.toZ() - first.fromZ();
-        if (m instanceof Motion.Linear l) {
-            return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, l.from(), l.to());
-        }
-        Motion.Arc a = (Motion.Arc) m;
-        return (first.arc() || Conformance.pointLike(a, options.tolerance())) && sameDisplacement(dx, dz, a.from(), a.to());
+        return m.accept(new Motion.Visitor<Boolean>() {
+            @Override
+            public Boolean linear(Motion.Linear l) {
+                return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, l.from(), l.to());
+            }
+
+            @Override
+            public Boolean thread(Motion.Thread t) {
+                return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, t.from(), t.to());
+            }
+
+            @Override
+            public Boolean dwell(Motion.Dwell d) {
+                return false;
+            }
+
+            @Override
+            public Boolean arc(Motion.Arc a) {
+                return (first.arc() || Conformance.pointLike(a, options.tolerance()))
+                        && sameDisplacement(dx, dz, a.from(), a.to());
+            }
+        });
     }
 
     private boolean sameDisplacement(double dx, double dz, Point from, Point to) {

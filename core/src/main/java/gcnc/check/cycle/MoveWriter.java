@@ -64,7 +64,7 @@ public final class MoveWriter {
     }
 
     /** A value as a word's number: six decimals at most, always a point ("12.5", "0.", "-3.25"). */
-    static String number(double v) {
+    public static String number(double v) {
         BigDecimal d = BigDecimal.valueOf(v).setScale(6, RoundingMode.HALF_EVEN).stripTrailingZeros();
         if (d.signum() == 0) {
             return "0.";

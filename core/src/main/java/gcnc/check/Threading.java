@@ -1,0 +1,624 @@
+package gcnc.check;
+
+import gcnc.check.cycle.Move;
+import gcnc.check.cycle.MoveWriter;
+import gcnc.check.cycle.ThreadPasses;
+import gcnc.check.geom.Coordinates;
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.Point;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.Units;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * Threads (docs/threading.md): G32 (Fanuc B G33) one spindle-synchronised pass, modal in group 1;
+ * G92 (Fanuc B G78) the single-pass thread cycle (rapid in, thread, rapid out, rapid back), modal
+ * in group 1 so that later blocks with X only cut the next passes; G76 the multiple-pass cycle in
+ * the Fanuc two-block form ({@code G76 P(mmrraa) Q(min depth) R(allowance)} then
+ * {@code G76 X Z R(taper) P(height) Q(first depth) F}) and the Haas one-block form
+ * ({@code G76 X Z K(height) D(first depth) F [I A P]}). Every thread pass is a G01 block checked
+ * like a cut and built as a spindle-synchronised motion ({@link Checker#thread}); the rapids are
+ * ordinary G00 blocks.
+ */
+final class Threading {
+    /** The most passes a G76 is expanded into (E167 past it). */
+    static final int MAX_PASSES = 1000;
+    /** The deepest thread gcnc accepts, as a fraction of the lead (E193; docs/threading.md). */
+    static final double HEIGHT_PER_LEAD = 0.65;
+    private static final Set<Integer> FANUC_ANGLES = Set.of(0, 29, 30, 55, 60, 80);
+
+    private final Checker host;
+    /** The modal thread in force (G32 or G92), or null; its group, its name as written. */
+    private GRole kind;
+    private int group;
+    private String name;
+    /** G92 in force: its end point (counts), taper (radius counts) and lead (as written). */
+    private Point end;
+    private double taper;
+    /** What the Fanuc first block G76 P Q R left in force: finishing passes, angle, minimum depth and allowance (program units). */
+    private int finishes = 1;
+    private int angle = 60;
+    private double minimum;
+    private double allowance;
+
+    /**
+     * Haas M23 in force: G76 and G92 end with a chamfered pull-out, which gcnc does not cut yet
+     * (E197). On at power-up on a control that has M23 (Haas), off after M24.
+     */
+    private boolean chamfer;
+
+    Threading(Checker host) {
+        this.host = host;
+        this.chamfer = host.profile().control().allM().stream()
+                .anyMatch(f -> f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON);
+    }
+
+    /** Follows M23/M24 in a block's words. */
+    private void chamferWords(RawBlock b) {
+        for (Word w : b.words()) {
+            if (w.letter() == Letter.M && !w.number().isEmpty()) {
+                gcnc.machine.MFunction f = host.functions().m(w.code());
+                if (f != null && f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON) {
+                    chamfer = true;
+                } else if (f != null && f.role() == gcnc.machine.MRole.THREAD_CHAMFER_OFF) {
+                    chamfer = false;
+                }
+            }
+        }
+    }
+
+    private GFunction function(Word w) {
+        if (w.letter() != Letter.G || w.number().isEmpty()) {
+            return null;
+        }
+        long n = w.code();
+        return n < 0 || n > 999 ? null : host.functions().g((int) n);
+    }
+
+    /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
+    boolean repeats(RawBlock b) {
+        if (kind == null) {
+            return false;
+        }
+        boolean axis = false;
+        for (Word w : b.words()) {
+            GFunction f = function(w);
+            if (f != null && (f.group() == group || f.group() == 0)) {
+                return false;
+            }
+            Letter l = w.letter();
+            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
+        }
+        return axis;
+    }
+
+    /**
+     * Where the last G32 pass ended, while nothing has moved since; null otherwise. A G32 that
+     * starts there continues the thread without a break: not supported yet (E197), since every
+     * pass gcnc writes waits for the spindle's whole revolution (docs/threading.md).
+     */
+    private Point continued;
+
+    /** Another cycle moves the tool: a G32 after it starts a new pass. */
+    void moved() {
+        continued = null;
+    }
+
+    /** An ordinary block (or another cycle): a G of the thread's group ends it; an axis word breaks a thread's continuity. */
+    void note(RawBlock b) {
+        chamferWords(b);
+        for (Word w : b.words()) {
+            Letter l = w.letter();
+            if (l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W || l == Letter.G) {
+                continued = null;
+                break;
+            }
+        }
+        if (kind == null) {
+            return;
+        }
+        for (Word w : b.words()) {
+            GFunction f = function(w);
+            if (f != null && f.group() == group) {
+                kind = null;
+                return;
+            }
+        }
+    }
+
+    /** A G32/G92/G76 block ({@code g} its word), or one that makes the G32/G92 in force again (g null). */
+    List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
+        GRole role = g == null ? kind : function(g).role();
+        String label = g == null ? name : "G" + g.number();
+        if (role != GRole.THREAD) {
+            continued = null;
+        }
+        Map<Letter, Word> words = new EnumMap<>(Letter.class);
+        List<Word> passOn = new ArrayList<>();
+        Word foreign = null;
+        Word twice = null;
+        for (Word w : b.words()) {
+            if (w == g) {
+                continue;
+            }
+            GFunction f = function(w);
+            switch (w.letter()) {
+                case N, S, T, M -> passOn.add(w);
+                case G -> {
+                    if (f != null && (f.role().thread() || f.role().singleCycle() || f.role().contourCycle())) {
+                        foreign = foreign == null ? w : foreign;
+                    } else {
+                        passOn.add(w);
+                    }
+                }
+                default -> {
+                    if (!takes(role, w.letter())) {
+                        foreign = foreign == null ? w : foreign;
+                    } else if (words.putIfAbsent(w.letter(), w) != null) {
+                        twice = twice == null ? w : twice;
+                    }
+                }
+            }
+        }
+        List<CheckedBlock> done = new ArrayList<>();
+        if (!passOn.isEmpty()) {
+            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
+                    isFirst, null).ifPresent(done::add);
+        }
+        if (foreign != null) {
+            host.out().error(Code.E161_CYCLE_WORD, foreign.span(), label, foreign);
+            return done;
+        }
+        if (twice != null) {
+            host.out().error(Code.E007_DUPLICATE_PARAMETER, twice.span(), twice.letter());
+            return done;
+        }
+        chamferWords(b);
+        Span at = g != null ? g.span() : b.words().get(0).span();
+        if (host.profile().encoder().isEmpty()) {
+            host.out().error(Code.E190_NO_SPINDLE_ENCODER, at, host.profile().name(), label);
+            refused(role, g, label);
+            return done;
+        }
+        if (chamfer && role != GRole.THREAD) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, g != null ? g : b.words().get(0),
+                    "supported yet under M23 (a chamfered pull-out, in force at power-up on a Haas): write M24"
+                    + " before the thread (gcnc pulls the tool straight out)");
+            refused(role, g, label);
+            return done;
+        }
+        if (role == GRole.THREAD) {
+            if (g != null) {
+                start(role, g, label);
+            }
+            pass(done, b, g, words, label);
+        } else if (role == GRole.THREAD_SINGLE_CYCLE) {
+            single(done, b, g, words, label, at);
+        } else {
+            multiple(done, b, g, words, label);
+        }
+        return done;
+    }
+
+    /**
+     * A refused G32/G92 stays in force (without an end point for G92), so that the blocks that
+     * repeat it are refused too, each at its line, instead of moving as whatever G was before.
+     */
+    private void refused(GRole role, Word g, String label) {
+        if (g != null && role != GRole.THREAD_CYCLE) {
+            start(role, g, label);
+            end = null;
+        }
+    }
+
+    private void start(GRole role, Word g, String label) {
+        kind = role;
+        group = function(g).group();
+        name = label;
+    }
+
+    /** The letters a thread function reads (besides N S T M G). */
+    private static boolean takes(GRole role, Letter l) {
+        return switch (role) {
+            case THREAD -> l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W || l == Letter.F;
+            case THREAD_SINGLE_CYCLE -> l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W
+                    || l == Letter.F || l == Letter.R || l == Letter.I;
+            default -> switch (l) {
+                case X, U, Z, W, F, R, P, Q, K, D, I, A -> true;
+                default -> false;
+            };
+        };
+    }
+
+    /** G32: the block's own axis words and F, as a G01 thread pass. */
+    private void pass(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label) {
+        List<Word> axes = axes(words);
+        if (axes.isEmpty()) {
+            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, "its end point: X (or U) and/or Z (or W)");
+            return;
+        }
+        Span at = g != null ? g.span() : axes.get(0).span();
+        List<Word> ws = new ArrayList<>();
+        ws.add(new Word(Letter.G, linearCode(), at));
+        ws.addAll(axes);
+        if (words.containsKey(Letter.F)) {
+            ws.add(words.get(Letter.F));
+        }
+        if (continued != null && continued.distanceTo(host.state().position()) <= 1e-6) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, axes.get(0),
+                    "supported yet right after another thread pass (one continuous thread over several blocks):"
+                    + " write each pass as one block, with a rapid between");
+            return;
+        }
+        Optional<CheckedBlock> r = host.thread(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false,
+                b.blockDelete()), false, null, label);
+        r.ifPresent(done::add);
+        continued = r.isPresent() ? host.state().position() : null;
+    }
+
+    private String linearCode() {
+        return host.profile().control().gFor(GRole.LINEAR).map(f -> f.name().substring(1)).orElseThrow();
+    }
+
+    private static List<Word> axes(Map<Letter, Word> words) {
+        List<Word> axes = new ArrayList<>(2);
+        for (Letter l : new Letter[] {Letter.X, Letter.U, Letter.Z, Letter.W}) {
+            if (words.containsKey(l)) {
+                axes.add(words.get(l));
+            }
+        }
+        axes.sort((p, q) -> Integer.compare(p.span().column(), q.span().column()));
+        return axes;
+    }
+
+    /** The lead: the block's F, else the F in force; NaN after reporting E195 or E198. */
+    private double lead(Map<Letter, Word> words, String label, Span at) {
+        Word f = words.get(Letter.F);
+        double lead = f != null ? NumberText.decimal(f.number()) : host.state().feed();
+        if (f != null && Double.isNaN(lead)) {
+            host.out().error(Code.E014_DECIMAL_EXPECTED, f.span(), Letter.F);
+            return Double.NaN;
+        }
+        if (Double.isNaN(lead)) {
+            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, "F (the lead per revolution)");
+            return Double.NaN;
+        }
+        if (!(lead > 0)) {
+            host.out().error(Code.E198_THREAD_LEAD, f != null ? f.span() : at, label, NumberText.plain(lead));
+            return Double.NaN;
+        }
+        return lead;
+    }
+
+    /** A length word in program units, radius (no-point rule of the control when written without a point), or NaN after E014. */
+    private double length(Word w) {
+        double v = NumberText.decimal(w.number());
+        if (Double.isNaN(v)) {
+            host.out().error(Code.E014_DECIMAL_EXPECTED, w.span(), w.letter());
+            return Double.NaN;
+        }
+        if (!NumberText.hasPoint(w.number())) {
+            v *= host.state().units() == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
+        }
+        return v;
+    }
+
+    /** A Fanuc G76 P/Q depth: a whole number of least increments, without a point; NaN after E197. */
+    private double increments(Word w, String label) {
+        long n = NumberText.integer(w.number());
+        if (NumberText.hasPoint(w.number()) || n == NumberText.NOT_INTEGER) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w,
+                    "a whole number of least increments without a decimal point (P1000 = 1 mm)");
+            return Double.NaN;
+        }
+        return n * (host.state().units() == Units.INCH ? 0.0001 : 0.001);
+    }
+
+    /** Where the axis words lead from the start (followed aside as a rapid), or null after their error. */
+    private Point target(RawBlock b, List<Word> axes) {
+        List<Word> ws = new ArrayList<>(axes.size() + 1);
+        String rapid = host.profile().control().gFor(GRole.RAPID).map(f -> f.name().substring(1)).orElseThrow();
+        ws.add(new Word(Letter.G, rapid, axes.get(0).span()));
+        ws.addAll(axes);
+        Diagnostics found = new Diagnostics();
+        Checker.Dry dry = host.dry(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false), host.state(),
+                found);
+        host.out().addAll(found);
+        return dry == null ? null : dry.block().end();
+    }
+
+    /** G92/G78: the end point and taper (the ones not given as before), one pass of four moves. */
+    private void single(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label, Span at) {
+        boolean x = words.containsKey(Letter.X) || words.containsKey(Letter.U);
+        boolean z = words.containsKey(Letter.Z) || words.containsKey(Letter.W);
+        if (g != null && (!x || !z) || g == null && end == null && (!x || !z)) {
+            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, "its end point: X (or U) and Z (or W)");
+            kind = g != null ? null : kind;
+            return;
+        }
+        double lead = lead(words, label, at);
+        if (Double.isNaN(lead)) {
+            return;
+        }
+        Word taperWord = words.containsKey(Letter.R) ? words.get(Letter.R) : words.get(Letter.I);
+        double t = g != null ? 0 : taper;
+        if (taperWord != null) {
+            double v = length(taperWord);
+            if (Double.isNaN(v)) {
+                return;
+            }
+            t = v * host.coordinates().perRadius(host.state().units());
+        }
+        Point reached = target(b, axes(words));
+        if (reached == null) {
+            return;
+        }
+        if (g != null) {
+            start(GRole.THREAD_SINGLE_CYCLE, g, label);
+        }
+        Point to = new Point(x ? reached.x() : end.x(), z ? reached.z() : end.z());
+        ModalState s = host.state();
+        Point a = s.position();
+        if (Math.abs(to.z() - a.z()) < 1) {
+            host.out().error(Code.E196_THREAD_NOT_ALONG_Z, at, label);
+            return;
+        }
+        end = to;
+        taper = t;
+        List<Move> moves = List.of(Move.line(true, new Point(end.x() + taper, a.z()), 1), Move.line(false, end, 1),
+                Move.line(true, new Point(a.x(), end.z()), 1), Move.line(true, a, 1));
+        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(name, b.line()));
+    }
+
+    /** G76: the Fanuc first block sets what stays in force; the second block, or the Haas one block, cuts. */
+    private void multiple(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label) {
+        boolean x = words.containsKey(Letter.X) || words.containsKey(Letter.U);
+        boolean z = words.containsKey(Letter.Z) || words.containsKey(Letter.W);
+        boolean k = words.containsKey(Letter.K);
+        boolean d = words.containsKey(Letter.D);
+        // Haas: K and D (or one of them and no Fanuc Q); a K or D beside a Fanuc P/Q is a stray word
+        boolean haas = k && d || (k || d) && !words.containsKey(Letter.Q);
+        if (!x && !z && !haas) {
+            first(words, label);
+            return;
+        }
+        if (!x || !z) {
+            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, "its end point: X (or U) and Z (or W)");
+            return;
+        }
+        Letter heightLetter = haas ? Letter.K : Letter.P;
+        Letter depthLetter = haas ? Letter.D : Letter.Q;
+        for (Letter l : new Letter[] {heightLetter, depthLetter}) {
+            if (!words.containsKey(l)) {
+                host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label,
+                        l + (l == heightLetter ? " (the thread height)" : " (the first depth of cut)"));
+                return;
+            }
+        }
+        for (Letter l : haas ? new Letter[] {Letter.Q, Letter.R}
+                : new Letter[] {Letter.K, Letter.D, Letter.A, Letter.I}) {
+            if (words.containsKey(l)) {
+                host.out().error(Code.E161_CYCLE_WORD, words.get(l).span(), label, words.get(l));
+                return;
+            }
+        }
+        Word hw = words.get(heightLetter);
+        Word dw = words.get(depthLetter);
+        double height = haas ? length(hw) : increments(hw, label);
+        double first = haas ? length(dw) : increments(dw, label);
+        if (Double.isNaN(height) || Double.isNaN(first)) {
+            return;
+        }
+        double lead = lead(words, label, g.span());
+        if (Double.isNaN(lead)) {
+            return;
+        }
+        if (!(height > 0) || height > HEIGHT_PER_LEAD * lead + 1e-9) {
+            host.out().error(Code.E193_THREAD_TOO_DEEP, hw.span(), label, hw, NumberText.plain(HEIGHT_PER_LEAD * lead, 4),
+                    NumberText.plain(lead));
+            return;
+        }
+        if (!(first > 0)) {
+            host.out().error(Code.E194_THREAD_FIRST_DEPTH, dw.span(), label, dw);
+            return;
+        }
+        int angle = this.angle;
+        ThreadPasses.Infeed infeed = ThreadPasses.Infeed.CONSTANT_AREA;
+        int finishing = this.finishes;
+        double min = this.minimum;
+        double allow = this.allowance;
+        if (haas) {
+            finishing = 0;
+            min = 0;
+            allow = 0;
+            angle = 60;
+            if (words.containsKey(Letter.A)) {
+                Word a = words.get(Letter.A);
+                long v = NumberText.integer(a.number());
+                if (v == NumberText.NOT_INTEGER || v > 120) {
+                    host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, "a tool angle 0 to 120 (degrees)");
+                    return;
+                }
+                angle = (int) v;
+            }
+            if (words.containsKey(Letter.P)) {
+                Word p = words.get(Letter.P);
+                long v = NumberText.integer(p.number());
+                if (v != 1 && v != 3) {
+                    host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
+                            "an infeed gcnc follows (P1 one flank constant area, P3 one flank constant depth;"
+                            + " P2 and P4, both flanks alternately, are not supported yet)");
+                    return;
+                }
+                infeed = v == 3 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
+            }
+        }
+        if (allow >= height) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, hw.span(), label, hw,
+                    "deeper than the finishing allowance " + NumberText.plain(allow) + " of the first G76 block");
+            return;
+        }
+        double[] depths = ThreadPasses.depths(height, first, min, allow, finishing, infeed, MAX_PASSES);
+        if (depths == null) {
+            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, dw.span(), label, dw,
+                    ThreadPasses.count(height, first, min, allow, finishing, infeed), MAX_PASSES);
+            return;
+        }
+        Word taperWord = words.get(haas ? Letter.I : Letter.R);
+        double taperProgram = 0;
+        if (taperWord != null) {
+            taperProgram = length(taperWord);
+            if (Double.isNaN(taperProgram)) {
+                return;
+            }
+        }
+        Point root = target(b, axes(words));
+        if (root == null) {
+            return;
+        }
+        ModalState s = host.state();
+        Units u = s.units();
+        Coordinates c = host.coordinates();
+        double perRadius = c.perRadius(u);
+        double perZ = c.perZ(u);
+        Point a = s.position();
+        double t = taperProgram * perRadius;
+        // +1: the start is above the thread (outside), -1 below it (a bore): the side the depth goes from
+        double side = Math.signum(a.x() - root.x());
+        double top = root.x() + side * height * perRadius;
+        if (side == 0 || side * (a.x() - (top + t)) < 0 || side * (a.x() - top) < 0) {
+            host.out().error(Code.E160_CYCLE_START_INSIDE, g.span(), label, b.line());
+            return;
+        }
+        if (Math.abs(root.z() - a.z()) < 1) {
+            host.out().error(Code.E196_THREAD_NOT_ALONG_Z, g.span(), label);
+            return;
+        }
+        double dir = Math.signum(root.z() - a.z());
+        double flank = Math.tan(Math.toRadians(angle / 2.0));
+        List<Move> moves = new ArrayList<>(depths.length * 4);
+        for (int i = 0; i < depths.length; i++) {
+            double depth = depths[i];
+            double xEnd = top - side * depth * perRadius;
+            // flank infeed: the pass moves back along Z by depth x tan(angle / 2), so one flank cuts
+            double shift = -dir * depth * flank * perZ;
+            int pass = i + 1;
+            moves.add(Move.line(true, new Point(xEnd + t, a.z() + shift), pass));
+            moves.add(Move.line(false, new Point(xEnd, root.z() + shift), pass));
+            moves.add(Move.line(true, new Point(a.x(), root.z() + shift), pass));
+            moves.add(Move.line(true, a, pass));
+        }
+        int passes = depths.length;
+        write(done, b.line(), g.span(), s, moves, lead, label,
+                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)));
+    }
+
+    /** The Fanuc first block G76 P(mmrraa) Q(minimum depth) R(finishing allowance): what stays in force. */
+    private void first(Map<Letter, Word> words, String label) {
+        for (Letter l : new Letter[] {Letter.F, Letter.K, Letter.D, Letter.I, Letter.A}) {
+            if (words.containsKey(l)) {
+                host.out().error(Code.E161_CYCLE_WORD, words.get(l).span(), label, words.get(l));
+                return;
+            }
+        }
+        int m = finishes;
+        int aa = angle;
+        double q = minimum;
+        double r = allowance;
+        if (words.containsKey(Letter.P)) {
+            Word p = words.get(Letter.P);
+            long v = NumberText.integer(p.number());
+            if (v == NumberText.NOT_INTEGER || v > 999999) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
+                        "six digits mmrraa (finishing passes, chamfer, angle)");
+                return;
+            }
+            m = (int) (v / 10000);
+            int rr = (int) (v / 100 % 100);
+            aa = (int) (v % 100);
+            if (m < 1) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
+                        "a number of finishing passes mm from 01 to 99");
+                return;
+            }
+            if (rr != 0) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
+                        "supported yet with a chamfer rr of " + rr + " (write rr = 00: gcnc pulls the tool straight out)");
+                return;
+            }
+            if (!FANUC_ANGLES.contains(aa)) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
+                        "a thread angle aa the control has (00, 29, 30, 55, 60 or 80)");
+                return;
+            }
+        }
+        if (words.containsKey(Letter.Q)) {
+            q = increments(words.get(Letter.Q), label);
+            if (Double.isNaN(q)) {
+                return;
+            }
+        }
+        if (words.containsKey(Letter.R)) {
+            Word w = words.get(Letter.R);
+            r = length(w);
+            if (Double.isNaN(r)) {
+                return;
+            }
+            if (r < 0) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w, "a finishing allowance of 0 or more");
+                return;
+            }
+        }
+        finishes = m;
+        angle = aa;
+        minimum = q;
+        allowance = r;
+    }
+
+    /**
+     * The moves as blocks at the cycle's line: rapids as G00 blocks, the thread passes as G01
+     * blocks with the lead as F, checked as threads. After one fails, a rapid back to the start
+     * ends the cycle ({@link CycleExpansion#abandon}).
+     */
+    private void write(List<CheckedBlock> done, int line, Span at, ModalState start, List<Move> moves, double lead,
+                       String label, java.util.function.IntFunction<CycleOrigin> origins) {
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
+        Point a = start.position();
+        Point from = a;
+        Word f = new Word(Letter.F, MoveWriter.number(lead), at);
+        for (Move m : moves) {
+            if (m.to().distanceTo(from) <= 1e-9) {
+                continue;
+            }
+            CycleOrigin origin = origins.apply(m.pass());
+            RawBlock block = writer.block(m, from);
+            Optional<CheckedBlock> r;
+            if (m.kind() == Move.Kind.FEED) {
+                List<Word> ws = new ArrayList<>(block.words());
+                ws.add(f);
+                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label);
+            } else {
+                r = host.one(block, false, origin);
+            }
+            if (r.isEmpty()) {
+                CycleExpansion.abandon(host, writer, a, origin).ifPresent(done::add);
+                break;
+            }
+            done.add(r.get());
+            from = host.state().position();
+        }
+    }
+}
