@@ -117,7 +117,7 @@ final class Reporter {
                 err.println(SourceLines.withCaret(line, d.span()));
             }
         } else {
-            findings.add(new Finding(path, d, m.render(d.code(), d.args())));
+            findings.add(Finding.of(path, d, m));
         }
     }
 

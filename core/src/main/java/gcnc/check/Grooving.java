@@ -7,6 +7,7 @@ import gcnc.check.cycle.Pecking;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
+import gcnc.diag.Phrase;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
@@ -92,7 +93,7 @@ final class Grooving {
         boolean alongX = kind == GRole.GROOVE_PECK_CYCLE;
         if (!words.hasAxis(alongX)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), name, alongX
-                    ? "X (or U): the bottom of the groove" : "Z (or W): the bottom of the hole or groove");
+                    ? Phrase.PECK_BOTTOM_X.arg() : Phrase.PECK_BOTTOM_Z.arg());
             return done;
         }
         ModalState start = host.state();
@@ -153,7 +154,7 @@ final class Grooving {
                 steps ? step : Double.NaN, Double.isNaN(retractMm) ? 0 : retractMm * perMmPeck, relief);
         if (plan.pecksPerCut() > 1 && Double.isNaN(retractMm)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), name,
-                    "its retract: a " + name + " R block before it or cycle.peck_retract_mm in the control");
+                    Phrase.PECK_RETRACT.with(name));
             return done;
         }
         long pecks = (long) plan.cuts() * plan.pecksPerCut();

@@ -6,6 +6,7 @@ import gcnc.check.cycle.Move;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
+import gcnc.diag.Phrase;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
@@ -125,7 +126,7 @@ final class HoleDrilling {
         Point a = start.position();
         boolean newZ = words.hasAxis(false);
         if (g != null && !newZ) {
-            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, "Z (or W): the bottom of the hole");
+            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_BOTTOM.arg());
             kind = null;
             return done;
         }
@@ -178,7 +179,7 @@ final class HoleDrilling {
         double clearance = p.control().peckRetractMm();
         if (kind == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, at.span(), label,
-                    "the clearance above each peck: cycle.peck_retract_mm in the control");
+                    Phrase.DRILL_CLEARANCE.arg());
             return done;
         }
         Drilling drill = new Drilling(a, end.x(), rPlane, bottom, kind == GRole.PECK_DRILL_CYCLE ? first : Double.NaN,
@@ -210,7 +211,7 @@ final class HoleDrilling {
     private boolean check(CycleWords words, GRole role, String label, Word g) {
         if (words.has(Letter.L)) {
             host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.L).span(), label,
-                    words.word(Letter.L), "repeats of a hole: write the holes one by one");
+                    words.word(Letter.L), Phrase.DRILL_REPEATS.arg());
             return false;
         }
         for (Letter l : List.of(Letter.Q, Letter.I, Letter.J, Letter.K, Letter.P)) {
@@ -241,16 +242,16 @@ final class HoleDrilling {
             return false;
         }
         if (g != null && role == GRole.PECK_DRILL_CYCLE && !words.has(Letter.Q) && !words.has(Letter.I)) {
-            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, "Q (the peck) or I (the first peck)");
+            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_PECK.arg());
             return false;
         }
         if (words.has(Letter.J) && !words.has(Letter.I) || words.has(Letter.J) && !words.has(Letter.K)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, words.word(Letter.J).span(), label,
-                    "I (the first peck) and K (the smallest peck) with J");
+                    Phrase.DRILL_PECK_J.arg());
             return false;
         }
         if (g != null && role == GRole.SPOT_DRILL_CYCLE && !words.has(Letter.P)) {
-            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, "P (the dwell at the bottom)");
+            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_DWELL.arg());
             return false;
         }
         return true;

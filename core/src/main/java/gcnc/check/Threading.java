@@ -6,6 +6,7 @@ import gcnc.check.cycle.ThreadPasses;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
+import gcnc.diag.Phrase;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
@@ -195,8 +196,7 @@ final class Threading {
         }
         if (chamfer && role != GRole.THREAD) {
             host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, g != null ? g : b.words().get(0),
-                    "supported yet under M23 (a chamfered pull-out, in force at power-up on a Haas): write M24"
-                    + " before the thread (gcnc pulls the tool straight out)");
+                    Phrase.THREAD_M23.arg());
             refused(role, g, label);
             return done;
         }
@@ -247,7 +247,7 @@ final class Threading {
     private void pass(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label) {
         List<Word> axes = axes(words);
         if (axes.isEmpty()) {
-            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, "its end point: X (or U) and/or Z (or W)");
+            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, Phrase.THREAD_END_EITHER.arg());
             return;
         }
         Span at = g != null ? g.span() : axes.get(0).span();
@@ -259,8 +259,7 @@ final class Threading {
         }
         if (continued != null && continued.distanceTo(host.state().position()) <= 1e-6) {
             host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, axes.get(0),
-                    "supported yet right after another thread pass (one continuous thread over several blocks):"
-                    + " write each pass as one block, with a rapid between");
+                    Phrase.THREAD_CONTINUED.arg());
             return;
         }
         Optional<CheckedBlock> r = host.thread(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false,
@@ -293,7 +292,7 @@ final class Threading {
             return Double.NaN;
         }
         if (Double.isNaN(lead)) {
-            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, "F (the lead per revolution)");
+            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, Phrase.THREAD_LEAD.arg());
             return Double.NaN;
         }
         if (!(lead > 0)) {
@@ -321,7 +320,7 @@ final class Threading {
         long n = NumberText.integer(w.number());
         if (NumberText.hasPoint(w.number()) || n == NumberText.NOT_INTEGER) {
             host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w,
-                    "a whole number of least increments without a decimal point (P1000 = 1 mm)");
+                    Phrase.THREAD_LEAST_INCREMENTS.arg());
             return Double.NaN;
         }
         return n * (host.state().units() == Units.INCH ? 0.0001 : 0.001);
@@ -345,7 +344,7 @@ final class Threading {
         boolean x = words.containsKey(Letter.X) || words.containsKey(Letter.U);
         boolean z = words.containsKey(Letter.Z) || words.containsKey(Letter.W);
         if (g != null && (!x || !z) || g == null && end == null && (!x || !z)) {
-            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, "its end point: X (or U) and Z (or W)");
+            host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, Phrase.THREAD_END_BOTH.arg());
             kind = g != null ? null : kind;
             return;
         }
@@ -396,7 +395,7 @@ final class Threading {
             return;
         }
         if (!x || !z) {
-            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, "its end point: X (or U) and Z (or W)");
+            host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, Phrase.THREAD_END_BOTH.arg());
             return;
         }
         Letter heightLetter = haas ? Letter.K : Letter.P;
@@ -404,7 +403,7 @@ final class Threading {
         for (Letter l : new Letter[] {heightLetter, depthLetter}) {
             if (!words.containsKey(l)) {
                 host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label,
-                        l + (l == heightLetter ? " (the thread height)" : " (the first depth of cut)"));
+                        (l == heightLetter ? Phrase.THREAD_HEIGHT : Phrase.THREAD_FIRST_DEPTH).with(l));
                 return;
             }
         }
@@ -449,7 +448,7 @@ final class Threading {
                 Word a = words.get(Letter.A);
                 long v = NumberText.integer(a.number());
                 if (v == NumberText.NOT_INTEGER || v > 120) {
-                    host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, "a tool angle 0 to 120 (degrees)");
+                    host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, Phrase.THREAD_ANGLE_RANGE.arg());
                     return;
                 }
                 angle = (int) v;
@@ -459,8 +458,7 @@ final class Threading {
                 long v = NumberText.integer(p.number());
                 if (v != 1 && v != 3) {
                     host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                            "an infeed gcnc follows (P1 one flank constant area, P3 one flank constant depth;"
-                            + " P2 and P4, both flanks alternately, are not supported yet)");
+                            Phrase.THREAD_INFEED.arg());
                     return;
                 }
                 infeed = v == 3 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
@@ -468,7 +466,7 @@ final class Threading {
         }
         if (allow >= height) {
             host.out().error(Code.E197_THREAD_WORD_VALUE, hw.span(), label, hw,
-                    "deeper than the finishing allowance " + NumberText.plain(allow) + " of the first G76 block");
+                    Phrase.THREAD_DEEPER_THAN_ALLOWANCE.with(NumberText.plain(allow)));
             return;
         }
         double[] depths = ThreadPasses.depths(height, first, min, allow, finishing, infeed, MAX_PASSES);
@@ -543,7 +541,7 @@ final class Threading {
             long v = NumberText.integer(p.number());
             if (v == NumberText.NOT_INTEGER || v > 999999) {
                 host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                        "six digits mmrraa (finishing passes, chamfer, angle)");
+                        Phrase.THREAD_P_DIGITS.arg());
                 return;
             }
             m = (int) (v / 10000);
@@ -551,17 +549,17 @@ final class Threading {
             aa = (int) (v % 100);
             if (m < 1) {
                 host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                        "a number of finishing passes mm from 01 to 99");
+                        Phrase.THREAD_FINISH_PASSES.arg());
                 return;
             }
             if (rr != 0) {
                 host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                        "supported yet with a chamfer rr of " + rr + " (write rr = 00: gcnc pulls the tool straight out)");
+                        Phrase.THREAD_CHAMFER.with(rr));
                 return;
             }
             if (!FANUC_ANGLES.contains(aa)) {
                 host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                        "a thread angle aa the control has (00, 29, 30, 55, 60 or 80)");
+                        Phrase.THREAD_ANGLE_DIGITS.arg());
                 return;
             }
         }
@@ -578,7 +576,7 @@ final class Threading {
                 return;
             }
             if (r < 0) {
-                host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w, "a finishing allowance of 0 or more");
+                host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w, Phrase.THREAD_ALLOWANCE.arg());
                 return;
             }
         }

@@ -7,7 +7,7 @@ import java.util.List;
 
 /**
  * gcnc's own JSON report: one document for a run, every finding with its file, line, column,
- * severity, code, rendered message and the raw arguments of the message. The schema is
+ * severity, code, rendered message and the arguments of the message as it shows them. The schema is
  * documented in docs/command-line.md ("JSON report") and versioned by {@link #VERSION}: a field
  * is only ever added, and removing or changing one raises the version.
  */
@@ -41,7 +41,7 @@ public final class JsonRenderer {
             json.name("code").value(d.code().id());
             json.name("message").value(f.message());
             json.name("arguments").beginArray();
-            for (String a : d.args()) {
+            for (String a : f.arguments()) {
                 json.value(a);
             }
             json.endArray();

@@ -1,25 +1,42 @@
 package gcnc.tables;
 
 import gcnc.diag.Code;
+import gcnc.diag.Phrase;
 import java.text.MessageFormat;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 
-/** Table 5 and gcnc's own codes: the message template of every code, in English and Spanish. */
+/**
+ * Table 5 and gcnc's own codes: the message template of every code, in English and Spanish, and the
+ * phrases a message may take as arguments (tables/phrases.csv, {@link Phrase}), rendered in the same
+ * language as the message.
+ */
 public final class ErrorMessages {
     /** The same messages bound to one language, for renderers. */
     public gcnc.diag.Messages in(Lang lang) {
-        return (code, args) -> render(code, args, lang);
+        return new gcnc.diag.Messages() {
+            @Override
+            public String render(Code code, List<String> args) {
+                return ErrorMessages.this.render(code, args, lang);
+            }
+
+            @Override
+            public List<String> arguments(List<String> args) {
+                return ErrorMessages.this.arguments(args, lang);
+            }
+        };
     }
 
     public enum Lang { EN, ES }
 
     private final Map<Code, String[]> templates;
+    private final Map<Phrase, String[]> phrases;
 
-    ErrorMessages(Map<Code, String[]> templates) {
+    ErrorMessages(Map<Code, String[]> templates, Map<Phrase, String[]> phrases) {
         this.templates = new EnumMap<>(templates);
+        this.phrases = new EnumMap<>(phrases);
     }
 
     public boolean has(Code code) {
@@ -32,13 +49,24 @@ public final class ErrorMessages {
         return t == null ? "" : t[lang.ordinal()];
     }
 
-    /** The message of a code with its arguments filled in. */
+    /** The message of a code with its arguments filled in, a phrase among them in the same language. */
     public String render(Code code, List<String> args, Lang lang) {
         String[] t = templates.get(code);
         if (t == null) {
             return code.id() + " " + args;
         }
-        return new MessageFormat(pattern(t[lang.ordinal()]), Locale.ROOT).format(args.toArray());
+        return new MessageFormat(pattern(t[lang.ordinal()]), Locale.ROOT).format(arguments(args, lang).toArray());
+    }
+
+    /** The arguments as a message shows them: a phrase in the language, any other as it is. */
+    public List<String> arguments(List<String> args, Lang lang) {
+        List<String> out = new java.util.ArrayList<>(args.size());
+        for (String a : args) {
+            Phrase p = Phrase.of(a);
+            out.add(p == null ? a : new MessageFormat(pattern(phrases.get(p)[lang.ordinal()]), Locale.ROOT)
+                    .format(Phrase.arguments(a).toArray()));
+        }
+        return out;
     }
 
     /** A template as MessageFormat reads it: an apostrophe in errors.csv is a plain apostrophe. */
@@ -50,7 +78,7 @@ public final class ErrorMessages {
      * Reads errors.csv: each code once, each template renderable, and a row for every code of this
      * gcnc, so that no diagnostic can fail to print in the middle of a run.
      */
-    static ErrorMessages load(Csv csv) throws TableException {
+    static ErrorMessages load(Csv csv, Csv phraseCsv) throws TableException {
         Map<Code, String[]> m = new EnumMap<>(Code.class);
         Map<Code, Integer> lines = new EnumMap<>(Code.class);
         for (Csv.Row r : csv.rows()) {
@@ -67,7 +95,33 @@ public final class ErrorMessages {
                         + " English and Spanish text");
             }
         }
-        return new ErrorMessages(m);
+        return new ErrorMessages(m, phrases(phraseCsv));
+    }
+
+    /** Reads phrases.csv: each phrase once, renderable, and a row for every {@link Phrase}. */
+    private static Map<Phrase, String[]> phrases(Csv csv) throws TableException {
+        Map<Phrase, String[]> m = new EnumMap<>(Phrase.class);
+        Map<Phrase, Integer> lines = new EnumMap<>(Phrase.class);
+        for (Csv.Row r : csv.rows()) {
+            Phrase p;
+            try {
+                p = Phrase.valueOf(r.get("key"));
+            } catch (IllegalArgumentException e) {
+                throw r.faultAt("key", "no phrase " + r.get("key") + " in this gcnc");
+            }
+            Integer first = lines.putIfAbsent(p, r.line());
+            if (first != null) {
+                throw r.faultAt("key", p + " is listed twice (first on line " + first + ")");
+            }
+            m.put(p, new String[] {template(r, "en"), template(r, "es")});
+        }
+        for (Phrase p : Phrase.values()) {
+            if (!m.containsKey(p)) {
+                throw Csv.fault(csv.path(), 1, 1, "no row for the phrase " + p + ": every phrase needs its"
+                        + " English and Spanish text");
+            }
+        }
+        return m;
     }
 
     private static Code code(Csv.Row r) throws TableException {

@@ -41,7 +41,7 @@ public final class Tables {
 
     public static Tables load(TableSource src) throws TableException {
         return new Tables(limits(csv(src, "parameter_limits.csv")), offsets(src, "tool_offsets.csv"),
-                offsets(src, "work_offsets.csv"), ErrorMessages.load(csv(src, "errors.csv")));
+                offsets(src, "work_offsets.csv"), ErrorMessages.load(csv(src, "errors.csv"), csv(src, "phrases.csv")));
     }
 
     /** Table 6: one row per word; a second row for a word would silently replace the first. */

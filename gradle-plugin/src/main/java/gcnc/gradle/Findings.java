@@ -59,7 +59,7 @@ final class Findings {
         if (d.severity() == Severity.ERROR) {
             filesWithErrors.add(file);
         }
-        all.add(new Finding(file, d, messages.render(d.code(), d.args())));
+        all.add(Finding.of(file, d, messages));
     }
 
     /** One finding as a GCC-style line. */
