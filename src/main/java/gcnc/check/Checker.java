@@ -73,6 +73,9 @@ public final class Checker {
     private final Set<String> aside = new HashSet<>();
     private long blocks;
     private boolean stopped;
+    /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
+    private final NoseCompensation nose;
+    private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
     private static final class Cause {
@@ -106,6 +109,7 @@ public final class Checker {
         this.isOther = isOther;
         this.state = ModalState.initial(profile);
         this.cycles = new CycleExpansion(this);
+        this.nose = new NoseCompensation(profile, out);
     }
 
     /** The modal state after the last accepted block. */
@@ -119,6 +123,24 @@ public final class Checker {
      * a G90/G94 block gives its moves.
      */
     public List<CheckedBlock> check(RawBlock b) {
+        List<CheckedBlock> made = checkBlock(b);
+        if (made.isEmpty() && !nose.active()) {
+            return made;
+        }
+        List<CheckedBlock> emit = new java.util.ArrayList<>(made.size() + 1);
+        for (CheckedBlock c : made) {
+            NoseCompensation.Info info = noseInfo.get(c);
+            nose.accept(c, info != null ? info : new NoseCompensation.Info(state.nose(),
+                    profile.nose(state.toolOffset()), state.toolOffset(), Span.of(c.line(), 1)), emit);
+        }
+        noseInfo.clear();
+        if (state.ended()) {
+            nose.end(b.words().isEmpty() ? b.last() : b.words().get(0).span(), emit);
+        }
+        return emit;
+    }
+
+    private List<CheckedBlock> checkBlock(RawBlock b) {
         if (stopped) {
             return List.of();
         }
@@ -166,6 +188,9 @@ public final class Checker {
             state = Salvage.keep(b, state, functions, profile);
             return List.of();
         }
+        if (state.nose() != NoseSide.OFF && noseConflict(b)) {
+            return List.of();
+        }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
             return cycles.start(b, cycle, isFirst);
@@ -199,7 +224,49 @@ public final class Checker {
         if (out.place() != gcnc.diag.Origin.PROGRAM) {
             result = result.from(out.place()); // a called program's block: the simulator places its findings there
         }
-        return Optional.of(origin == null ? result : origin.label(result));
+        CheckedBlock made = origin == null ? result : origin.label(result);
+        noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
+                state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
+        return Optional.of(made);
+    }
+
+    /**
+     * E178: under G41/G42 gcnc follows G00-G03 moves only; a cycle other than G70, G28, G29, G53, a
+     * G50/G92 position register or a tool change needs G40 first (unless the block has it).
+     */
+    private boolean noseConflict(RawBlock b) {
+        Word conflict = null;
+        for (Word w : b.words()) {
+            if (w.letter() == gcnc.ir.Letter.T && conflict == null) {
+                conflict = w;
+            }
+            if (w.letter() != gcnc.ir.Letter.G || w.number().isEmpty()) {
+                continue;
+            }
+            gcnc.machine.GFunction f = functions.g(w.code());
+            if (f == null) {
+                continue;
+            }
+            switch (f.role()) {
+                case NOSE_COMP_CANCEL -> {
+                    return false;
+                }
+                case TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE, HOME,
+                     FROM_HOME, MACHINE_COORDINATES, REGISTER -> conflict = conflict == null ? w : conflict;
+                case REGISTER_AND_CLAMP -> {
+                    if (b.words().stream().anyMatch(x -> x.letter() == gcnc.ir.Letter.X || x.letter() == gcnc.ir.Letter.Z)) {
+                        conflict = conflict == null ? w : conflict;
+                    }
+                }
+                default -> {
+                }
+            }
+        }
+        if (conflict == null) {
+            return false;
+        }
+        out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, state.nose().g());
+        return true;
     }
 
     /** What a block would do from {@code from}, checked but not committed, or null after its errors. */
@@ -209,20 +276,11 @@ public final class Checker {
     /**
      * A contour block followed from {@code from} without changing the program's state: its words
      * and geometry checked (not the prerequisites: the cycle's own moves are checked for those),
-     * findings to {@code found}. A G41/G42 is reported (E110) and the block followed without it,
-     * as the program's flow does (see {@link #recover}).
+     * findings to {@code found}.
      */
     Dry dry(RawBlock b, ModalState from, Diagnostics found) {
         BlockDraft d = new BlockDraft(b, from, tables, functions, profile, coordinates, false);
         CheckedBlock r = run(d, found, false);
-        if (r == null) {
-            RawBlock plain = withoutNoseCompensation(b);
-            if (plain == b) {
-                return null;
-            }
-            d = new BlockDraft(plain, from, tables, functions, profile, coordinates, false);
-            r = run(d, found, false);
-        }
         if (r == null) {
             return null;
         }
@@ -365,32 +423,12 @@ public final class Checker {
      * reports nothing. A block with any other error keeps only its unambiguous modal words.
      */
     private void recover(RawBlock b, boolean isFirst, boolean sequence) {
-        b = withoutNoseCompensation(b);
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         if (run(d, new Diagnostics(), false) != null) {
             commit(d, sequence);
         } else {
             state = Salvage.keep(b, state, functions, profile);
         }
-    }
-
-    /**
-     * The block without its G41/G42 (reported as not supported yet): its move is then judged on
-     * the programmed path, so the blocks after it are not judged from a point the tool never left.
-     */
-    private RawBlock withoutNoseCompensation(RawBlock b) {
-        List<Word> kept = new java.util.ArrayList<>(b.words().size());
-        for (Word w : b.words()) {
-            gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty()
-                    ? functions.g(w.code()) : null;
-            if (f == null || f.role() != gcnc.machine.GRole.NOSE_COMP_LEFT && f.role() != gcnc.machine.GRole.NOSE_COMP_RIGHT) {
-                kept.add(w);
-            }
-        }
-        if (kept.size() == b.words().size() || kept.isEmpty()) {
-            return b;
-        }
-        return b.called(kept, kept.get(kept.size() - 1).span(), b.depth());
     }
 
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
@@ -419,6 +457,9 @@ public final class Checker {
     /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */
     public void finish(int lastLine) {
         cycles.finish();
+        if (nose.active()) {
+            nose.end(Span.of(Math.max(1, lastLine), 1), new java.util.ArrayList<>()); // nothing can be sent after the end
+        }
         for (Cause c : causes.values()) {
             note(c);
         }
