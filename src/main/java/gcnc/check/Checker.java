@@ -74,7 +74,7 @@ public final class Checker {
     private long blocks;
     private boolean stopped;
     /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
-    private final NoseCompensation nose;
+    private NoseCompensation nose;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
@@ -317,6 +317,7 @@ public final class Checker {
     private Checker fork() {
         Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
         c.state = state;
+        c.nose = nose.copy(c.out);
         c.blocks = blocks;
         c.seenN.or(seenN);
         c.warnedM.or(warnedM);

@@ -66,6 +66,23 @@ final class NoseCompensation {
         this.out = out;
     }
 
+    /** The same compensation in progress, reporting to {@code to}: for the other position of the block delete switch. */
+    NoseCompensation copy(Diagnostics to) {
+        NoseCompensation c = new NoseCompensation(profile, to);
+        c.noted.or(noted);
+        c.mode = mode;
+        c.e = e;
+        c.tip = tip.clone();
+        c.pending = pending;
+        c.pendingInfo = pendingInfo;
+        c.pendingElement = pendingElement;
+        c.pendingStart = pendingStart;
+        c.held.addAll(held);
+        c.exiting = exiting;
+        c.restartFrom = restartFrom;
+        return c;
+    }
+
     /** Whether compensation is in force here (blocks may be held). */
     boolean active() {
         return mode != Mode.OFF;
@@ -89,7 +106,7 @@ final class NoseCompensation {
             if (info.side() == NoseSide.OFF) {
                 exiting = true;
             }
-            held.add(b);
+            held.add(b.motions().isEmpty() ? b : with(b, still(b), b.end()));
             if (held.size() > STILL_LIMIT) {
                 out.error(Code.E176_NOSE_TOO_MANY_STILL_BLOCKS, info.at(), STILL_LIMIT);
                 Point end = closePerpendicular(emit);
@@ -308,11 +325,26 @@ final class NoseCompensation {
         return gcnc.check.geom.NumberText.plain(counts / profile.x().countsPerMm(), 3);
     }
 
-    /** The block's moves along the path (lines and arcs), not its dwells. */
+    /**
+     * The block's moves along the path (lines and arcs), not its dwells nor moves of no length
+     * (a block that moves nothing is a block without a move, as for the control).
+     */
     private static List<Motion> path(CheckedBlock b) {
         List<Motion> ms = new ArrayList<>(1);
         for (Motion m : b.motions()) {
-            if (!(m instanceof Motion.Dwell)) {
+            if (!(m instanceof Motion.Dwell) && !(m instanceof Motion.Linear l
+                    && l.from().distanceTo(l.to()) <= NoseGeometry.NOTHING)) {
+                ms.add(m);
+            }
+        }
+        return ms;
+    }
+
+    /** The motions of a block without a move, its moves of no length left out (they would go to the programmed point). */
+    private static List<Motion> still(CheckedBlock b) {
+        List<Motion> ms = new ArrayList<>(b.motions().size());
+        for (Motion m : b.motions()) {
+            if (m instanceof Motion.Dwell) {
                 ms.add(m);
             }
         }
