@@ -207,14 +207,15 @@ final class NoseCompensation {
             emit.add(with(pending, ms, pending.end()));
         } else {
             Corner c = NoseGeometry.corner(pendingElement, next, e);
-            if (c == null) {
-                out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
+            boolean meet = c != null;
+            if (!meet) {
+                // the offset elements never meet (E172): each ends perpendicular, joined by a straight move
                 c = new Corner(pendingElement.offsetAt(pendingElement.to(), e), List.of(),
-                        next.offsetAt(next.from(), e), false);
+                        next.offsetAt(next.from(), e), true);
             }
             List<Point> around = new ArrayList<>(c.around());
             around.add(c.startOfSecond());
-            close(c.endOfFirst(), around, emit);
+            close(c.endOfFirst(), around, meet, emit);
             startNext = c.startOfSecond();
         }
         flushHeld(emit);
@@ -235,7 +236,15 @@ final class NoseCompensation {
         flushHeld(emit);
         Point from = end == null ? from(first) : tipAt(end);
         List<Motion> ms = new ArrayList<>(motionsBefore(b, first));
-        ms.add(first instanceof Motion.Arc a ? a : line(first, from, to(first)));
+        if (first instanceof Motion.Arc a) {
+            // E171 reported: the arc as written, reached by a straight move, so the path stays whole
+            if (from.distanceTo(a.from()) > NoseGeometry.NOTHING) {
+                ms.add(line(a, from, a.from()));
+            }
+            ms.add(a);
+        } else {
+            ms.add(line(first, from, to(first)));
+        }
         ms.addAll(motionsAfter(b, first));
         emit.add(with(b, ms, b.end()));
         mode = Mode.OFF;
@@ -262,18 +271,22 @@ final class NoseCompensation {
             emit.add(with(pending, ms, pending.end()));
         } else {
             end = pendingElement.offsetAt(pendingElement.to(), e);
-            close(end, List.of(), emit);
+            close(end, List.of(), true, emit);
         }
         pending = null;
         pendingElement = null;
         return end;
     }
 
-    /** Sends the pending element offset from its start to {@code end}, then the corner moves to each of {@code around}. */
-    private void close(Point end, List<Point> around, List<CheckedBlock> emit) {
+    /**
+     * Sends the pending element offset from its start to {@code end}, then the corner moves to each
+     * of {@code around}; E172 when the element runs backwards or ({@code meet} false) its corner has
+     * no intersection.
+     */
+    private void close(Point end, List<Point> around, boolean meet, List<CheckedBlock> emit) {
         Element el = pendingElement;
         Motion m = path(pending).get(0);
-        if (!NoseGeometry.forward(el, pendingStart, end)) {
+        if (!meet || !NoseGeometry.forward(el, pendingStart, end)) {
             out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
         }
         List<Motion> ms = new ArrayList<>(motionsBefore(pending, m));

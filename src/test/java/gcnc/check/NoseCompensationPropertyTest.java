@@ -130,6 +130,57 @@ class NoseCompensationPropertyTest {
     }
 
     /**
+     * Random programs of moves, arcs, blocks without a move and G41/G42/G40 anywhere, errors or not:
+     * the checker never throws, every position it sends is a number, and the path it sends is
+     * continuous (each move starts where the one before ended), compensated or not.
+     */
+    @Test
+    void anyMixOfMovesAndCompensationGivesAContinuousPath() {
+        for (int seed = 1; seed <= 300; seed++) {
+            Random rnd = new Random(seed * 31337L);
+            StringBuilder p = new StringBuilder("G21 G18 G40 G99\nT0101\nG97 S500 M03\nG00 X60. Z5.\n");
+            int n = 5 + rnd.nextInt(25);
+            for (int i = 0; i < n; i++) {
+                String side = switch (rnd.nextInt(8)) {
+                    case 0 -> "G41 ";
+                    case 1 -> "G42 ";
+                    case 2 -> "G40 ";
+                    default -> "";
+                };
+                double x = 10 + rnd.nextInt(400) / 10.0;
+                double z = 3 - rnd.nextInt(400) / 10.0;
+                p.append(side).append(switch (rnd.nextInt(7)) {
+                    case 0 -> String.format(Locale.ROOT, "G00 X%.1f Z%.1f", x, z);
+                    case 1 -> String.format(Locale.ROOT, "G02 X%.1f Z%.1f R%.1f F0.1", x, z, 1 + rnd.nextInt(300) / 10.0);
+                    case 2 -> String.format(Locale.ROOT, "G03 X%.1f Z%.1f R%.1f F0.1", x, z, 1 + rnd.nextInt(300) / 10.0);
+                    case 3 -> rnd.nextBoolean() ? "M08" : "G04 P100";
+                    case 4 -> String.format(Locale.ROOT, "G01 X%.1f F0.1", x);
+                    default -> String.format(Locale.ROOT, "G01 X%.1f Z%.1f F0.1", x, z);
+                }).append('\n');
+            }
+            p.append("G40 G00 X80. Z10.\nM30\n");
+            String where = "seed " + seed + "\n" + p;
+            Run r = Run.of("fanuc", p.toString());
+            Point at = null;
+            for (CheckedBlock b : r.blocks) {
+                for (Motion m : b.motions()) {
+                    if (m instanceof Motion.Dwell) {
+                        continue;
+                    }
+                    Point f = start(m);
+                    Point t = end(m);
+                    assertTrue(Double.isFinite(f.x()) && Double.isFinite(f.z()) && Double.isFinite(t.x())
+                            && Double.isFinite(t.z()), where + "\nline " + b.line() + ": " + m);
+                    if (at != null) {
+                        assertTrue(at.distanceTo(f) < 1e-6, where + "\nline " + b.line() + " starts " + f + ", not at " + at);
+                    }
+                    at = t;
+                }
+            }
+        }
+    }
+
+    /**
      * A monotone outside contour from (x0, Z2) toward the chuck: the first block down to Z0, then
      * 4 to 8 elements, each long enough for the nose, ending with a step out along +X.
      */
