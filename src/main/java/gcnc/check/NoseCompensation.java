@@ -30,7 +30,8 @@ import java.util.List;
  * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Errors:
  * E170 (start-up shorter than the radius), E171 (an arc starts or cancels), E172 (a concave corner
  * the nose does not fit), E173 (a concave arc tighter than the nose), E175 (the program ends under
- * G41/G42, a warning), E177 (a note: the offset has no nose radius, nothing is moved).
+ * G41/G42, a warning), E177 (a note: the offset has no nose radius, nothing is moved), E179 (a
+ * compensated move beyond the travel).
  */
 final class NoseCompensation {
     /** Blocks without a move gcnc holds while it looks for the next corner. */
@@ -204,7 +205,7 @@ final class NoseCompensation {
             List<Motion> ms = new ArrayList<>(motionsBefore(pending, m));
             ms.add(line(m, from(m), tipAt(startNext)));
             ms.addAll(motionsAfter(pending, m));
-            emit.add(with(pending, ms, pending.end()));
+            emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
             Corner c = NoseGeometry.corner(pendingElement, next, e);
             boolean meet = c != null;
@@ -246,7 +247,7 @@ final class NoseCompensation {
             ms.add(line(first, from, to(first)));
         }
         ms.addAll(motionsAfter(b, first));
-        emit.add(with(b, ms, b.end()));
+        emit.add(travel(with(b, ms, b.end()), info));
         mode = Mode.OFF;
         exiting = false;
         if (info.side() != NoseSide.OFF) {
@@ -268,7 +269,7 @@ final class NoseCompensation {
             List<Motion> ms = new ArrayList<>(motionsBefore(pending, m));
             ms.add(line(m, from(m), tipAt(end)));
             ms.addAll(motionsAfter(pending, m));
-            emit.add(with(pending, ms, pending.end()));
+            emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
             end = pendingElement.offsetAt(pendingElement.to(), e);
             close(end, List.of(), true, emit);
@@ -314,7 +315,7 @@ final class NoseCompensation {
             }
         }
         ms.addAll(motionsAfter(pending, m));
-        emit.add(with(pending, ms, pending.end()));
+        emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         pendingStart = null;
     }
 
@@ -323,6 +324,40 @@ final class NoseCompensation {
         if (el.arc() && el.offsetRadius(e) <= NoseGeometry.NOTHING) {
             out.error(Code.E173_NOSE_ARC_TOO_TIGHT, info.at(), mm(el.radius()), mm(Math.abs(e)));
         }
+    }
+
+    /**
+     * E179, once per block: a compensated move beyond the travel (the checker judged the programmed
+     * point, which may be inside while the tool, r off it, is not).
+     */
+    private CheckedBlock travel(CheckedBlock b, Info info) {
+        for (Motion m : b.motions()) {
+            double[] box;
+            if (m instanceof Motion.Arc a) {
+                box = gcnc.ir.ArcGeometry.bounds(a);
+            } else if (m instanceof Motion.Linear l) {
+                // its start is the end of the move before, judged there
+                box = new double[] {l.to().x(), l.to().x(), l.to().z(), l.to().z()};
+            } else {
+                continue;
+            }
+            if (beyond("X", profile.x(), box[0], box[1], info) || beyond("Z", profile.z(), box[2], box[3], info)) {
+                break;
+            }
+        }
+        return b;
+    }
+
+    private boolean beyond(String name, gcnc.machine.Axis a, double min, double max, Info info) {
+        double at = min < a.min() - 0.5 ? min : max > a.max() + 0.5 ? max : Double.NaN;
+        if (Double.isNaN(at)) {
+            return false;
+        }
+        double per = a.countsPerMm();
+        out.error(Code.E179_NOSE_BEYOND_TRAVEL, info.at(), name, gcnc.check.geom.NumberText.plain(at / per, 3),
+                gcnc.check.geom.NumberText.plain(a.min() / per, 3), gcnc.check.geom.NumberText.plain(a.max() / per, 3),
+                profile.name());
+        return true;
     }
 
     private void flushHeld(List<CheckedBlock> emit) {

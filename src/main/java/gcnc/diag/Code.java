@@ -263,6 +263,8 @@ public enum Code {
     E177_NOSE_NO_RADIUS(177),
     /** Nose compensation: a cycle, G28, G29, G53 or a position register with G41/G42 in force. */
     E178_NOSE_FUNCTION_IN_FORCE(178),
+    /** Nose compensation: the compensated path leaves the travel where the programmed one did not. */
+    E179_NOSE_BEYOND_TRAVEL(179),
 
     // 200-299: Galil backend (galil package).
     /** A count, speed or time the galil dialect would send does not fit the controller's 32-bit registers. */

@@ -192,6 +192,16 @@ class NoseCompensationTest {
         assertEquals("", errs(Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG01 Z-10. F0.2\nG40 G28 U0. W0.\nM30\n")));
     }
 
+    @Test
+    void aCompensatedMoveBeyondTheTravelIsE179WhereTheProgrammedOneIsInside() {
+        // is radius -4.5 mm, inside fanuc's -5 mm; the nose ends 0.8 mm further: the tip at -5.3 mm
+        Run r = Run.of("fanuc", HEAD + "G42 G00 X10. Z2.\nG01 Z-2. F0.2\nX-9.\nG40 G00 Z5.\nM30\n");
+        assertEquals("E179@7:1", errs(r));
+        assertTrue(r.diagnostics.sorted().get(0).args().equals(List.of("X", "-5.3", "-5", "215", "fanuc")),
+                r.diagnostics.sorted()::toString);
+        assertEquals("", errs(Run.of("fanuc", HEAD + "G00 X10. Z2.\nG01 Z-2. F0.2\nX-9.\nG00 Z5.\nM30\n")));
+    }
+
     /** The moves of the blocks from {@code fromLine} on, in program terms, one line per motion. */
     static List<String> moves(Run r, int fromLine) {
         return r.blocks.stream().filter(b -> b.line() >= fromLine).flatMap(b -> b.motions().stream()
