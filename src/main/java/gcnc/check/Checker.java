@@ -188,7 +188,9 @@ public final class Checker {
             state = Salvage.keep(b, state, functions, profile);
             return List.of();
         }
-        if (state.nose() != NoseSide.OFF && noseConflict(b)) {
+        Word conflict = state.nose() == NoseSide.OFF ? null : NoseConflict.find(b, functions);
+        if (conflict != null) {
+            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, state.nose().g());
             return List.of();
         }
         Word cycle = cycles.cycleWord(b);
@@ -228,45 +230,6 @@ public final class Checker {
         noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
                 state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
         return Optional.of(made);
-    }
-
-    /**
-     * E178: under G41/G42 gcnc follows G00-G03 moves only; a cycle other than G70, G28, G29, G53, a
-     * G50/G92 position register or a tool change needs G40 first (unless the block has it).
-     */
-    private boolean noseConflict(RawBlock b) {
-        Word conflict = null;
-        for (Word w : b.words()) {
-            if (w.letter() == gcnc.ir.Letter.T && conflict == null) {
-                conflict = w;
-            }
-            if (w.letter() != gcnc.ir.Letter.G || w.number().isEmpty()) {
-                continue;
-            }
-            gcnc.machine.GFunction f = functions.g(w.code());
-            if (f == null) {
-                continue;
-            }
-            switch (f.role()) {
-                case NOSE_COMP_CANCEL -> {
-                    return false;
-                }
-                case TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE, HOME,
-                     FROM_HOME, MACHINE_COORDINATES, REGISTER -> conflict = conflict == null ? w : conflict;
-                case REGISTER_AND_CLAMP -> {
-                    if (b.words().stream().anyMatch(x -> x.letter() == gcnc.ir.Letter.X || x.letter() == gcnc.ir.Letter.Z)) {
-                        conflict = conflict == null ? w : conflict;
-                    }
-                }
-                default -> {
-                }
-            }
-        }
-        if (conflict == null) {
-            return false;
-        }
-        out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, state.nose().g());
-        return true;
     }
 
     /** What a block would do from {@code from}, checked but not committed, or null after its errors. */

@@ -1,5 +1,14 @@
 package gcnc.check;
 
+import static gcnc.check.NoseMoves.after;
+import static gcnc.check.NoseMoves.before;
+import static gcnc.check.NoseMoves.from;
+import static gcnc.check.NoseMoves.line;
+import static gcnc.check.NoseMoves.path;
+import static gcnc.check.NoseMoves.still;
+import static gcnc.check.NoseMoves.to;
+import static gcnc.check.NoseMoves.with;
+
 import gcnc.check.geom.NoseGeometry;
 import gcnc.check.geom.NoseGeometry.Corner;
 import gcnc.check.geom.NoseGeometry.Element;
@@ -8,7 +17,6 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
-import gcnc.ir.Feed;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
@@ -202,9 +210,9 @@ final class NoseCompensation {
             // the start-up block (type A): the nose goes to the next element's offset start
             startNext = next.offsetAt(next.from(), e);
             Motion m = path(pending).get(0);
-            List<Motion> ms = new ArrayList<>(motionsBefore(pending, m));
+            List<Motion> ms = new ArrayList<>(before(pending, m));
             ms.add(line(m, from(m), tipAt(startNext)));
-            ms.addAll(motionsAfter(pending, m));
+            ms.addAll(after(pending, m));
             emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
             Corner c = NoseGeometry.corner(pendingElement, next, e);
@@ -236,7 +244,7 @@ final class NoseCompensation {
         Point end = closePerpendicular(emit);
         flushHeld(emit);
         Point from = end == null ? from(first) : tipAt(end);
-        List<Motion> ms = new ArrayList<>(motionsBefore(b, first));
+        List<Motion> ms = new ArrayList<>(before(b, first));
         if (first instanceof Motion.Arc a) {
             // E171 reported: the arc as written, reached by a straight move, so the path stays whole
             if (from.distanceTo(a.from()) > NoseGeometry.NOTHING) {
@@ -246,7 +254,7 @@ final class NoseCompensation {
         } else {
             ms.add(line(first, from, to(first)));
         }
-        ms.addAll(motionsAfter(b, first));
+        ms.addAll(after(b, first));
         emit.add(travel(with(b, ms, b.end()), info));
         mode = Mode.OFF;
         exiting = false;
@@ -266,9 +274,9 @@ final class NoseCompensation {
             Element self = Element.of(path(pending).get(0));
             end = self.length() > 0 ? self.offsetAt(self.to(), e) : self.to();
             Motion m = path(pending).get(0);
-            List<Motion> ms = new ArrayList<>(motionsBefore(pending, m));
+            List<Motion> ms = new ArrayList<>(before(pending, m));
             ms.add(line(m, from(m), tipAt(end)));
-            ms.addAll(motionsAfter(pending, m));
+            ms.addAll(after(pending, m));
             emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
             end = pendingElement.offsetAt(pendingElement.to(), e);
@@ -290,7 +298,7 @@ final class NoseCompensation {
         if (!meet || !NoseGeometry.forward(el, pendingStart, end)) {
             out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
         }
-        List<Motion> ms = new ArrayList<>(motionsBefore(pending, m));
+        List<Motion> ms = new ArrayList<>(before(pending, m));
         Point s = tipAt(pendingStart);
         Point t = tipAt(end);
         if (el.arc()) {
@@ -314,7 +322,7 @@ final class NoseCompensation {
                 at = next;
             }
         }
-        ms.addAll(motionsAfter(pending, m));
+        ms.addAll(after(pending, m));
         emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         pendingStart = null;
     }
@@ -371,66 +379,5 @@ final class NoseCompensation {
 
     private String mm(double counts) {
         return gcnc.check.geom.NumberText.plain(counts / profile.x().countsPerMm(), 3);
-    }
-
-    /**
-     * The block's moves along the path (lines and arcs), not its dwells nor moves of no length
-     * (a block that moves nothing is a block without a move, as for the control).
-     */
-    private static List<Motion> path(CheckedBlock b) {
-        List<Motion> ms = new ArrayList<>(1);
-        for (Motion m : b.motions()) {
-            if (!(m instanceof Motion.Dwell) && !(m instanceof Motion.Linear l
-                    && l.from().distanceTo(l.to()) <= NoseGeometry.NOTHING)) {
-                ms.add(m);
-            }
-        }
-        return ms;
-    }
-
-    /** The motions of a block without a move, its moves of no length left out (they would go to the programmed point). */
-    private static List<Motion> still(CheckedBlock b) {
-        List<Motion> ms = new ArrayList<>(b.motions().size());
-        for (Motion m : b.motions()) {
-            if (m instanceof Motion.Dwell) {
-                ms.add(m);
-            }
-        }
-        return ms;
-    }
-
-    private static List<Motion> motionsBefore(CheckedBlock b, Motion m) {
-        return b.motions().subList(0, b.motions().indexOf(m));
-    }
-
-    private static List<Motion> motionsAfter(CheckedBlock b, Motion m) {
-        int i = b.motions().indexOf(m);
-        return b.motions().subList(i + 1, b.motions().size());
-    }
-
-    /** A straight move of the kind {@code m} is (rapid or at its feed) between two points. */
-    private static Motion line(Motion m, Point from, Point to) {
-        Feed feed = m instanceof Motion.Linear l ? l.feed() : ((Motion.Arc) m).feed();
-        boolean rapid = m instanceof Motion.Linear l && l.rapid();
-        return new Motion.Linear(rapid, from, to, rapid ? null : feed);
-    }
-
-    private static Point from(Motion m) {
-        return m instanceof Motion.Linear l ? l.from() : ((Motion.Arc) m).from();
-    }
-
-    private static Point to(Motion m) {
-        return m instanceof Motion.Linear l ? l.to() : ((Motion.Arc) m).to();
-    }
-
-    private static CheckedBlock with(CheckedBlock b, List<Motion> motions, Point end) {
-        Point last = end;
-        for (Motion m : motions) {
-            if (!(m instanceof Motion.Dwell)) {
-                last = to(m);
-            }
-        }
-        return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), motions, b.after(), last, b.frame(),
-                b.origin());
     }
 }
