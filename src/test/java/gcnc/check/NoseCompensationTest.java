@@ -83,20 +83,28 @@ class NoseCompensationTest {
 
     /**
      * The same programs compiled and replayed: clean, and the simulator finds nothing (travel,
-     * chuck, rapids): over a 1 mm stub by the chuck, as they finish parts already roughed.
+     * chuck, rapids): over a 1 mm stub by the chuck, as they finish parts already roughed. The
+     * Galil program, with its source map inline, is as reviewed in NAME.MACHINE.dmc.
      */
     @TestFactory
     Stream<DynamicTest> everyCompensatedProgramCompilesAndSimulatesClean() throws Exception {
+        boolean update = Boolean.getBoolean("gcnc.updateGolden");
         return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             String name = p.getFileName().toString();
             gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, machine(name.split("\\.")[1]),
                     "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults().withStock(new gcnc.sim.StockSize(10, 1, 1))), true);
             gcnc.Compiler.Result r;
+            StringBuilder dmc = new StringBuilder();
             try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
-                r = gcnc.Compiler.compile(in, settings, l -> { });
+                r = gcnc.Compiler.compile(in, settings, l -> dmc.append(l.text()).append('\n'));
             }
             assertTrue(r.ok(), () -> name + ": " + r.diagnostics().sorted());
             assertEquals(0, r.simulation().orElseThrow().findings(), () -> name + ": " + r.diagnostics().sorted());
+            Path golden = DIR.resolve(name.replaceAll("\\.nc$", ".dmc"));
+            if (update) {
+                Files.writeString(golden, dmc.toString(), StandardCharsets.UTF_8);
+            }
+            assertEquals(Files.readString(golden, StandardCharsets.UTF_8), dmc.toString());
         }));
     }
 
