@@ -69,6 +69,8 @@ final class NoseCompensation {
     private boolean exiting;
     /** After E176: the next move starts again from where the tool is, as a start-up does. */
     private Point restartFrom;
+    /** After E176: the rapid from there to the start of the pending element's offset, sent before it. */
+    private Motion lead;
 
     NoseCompensation(MachineProfile profile, Diagnostics out) {
         this.profile = profile;
@@ -89,6 +91,7 @@ final class NoseCompensation {
         c.held.addAll(held);
         c.exiting = exiting;
         c.restartFrom = restartFrom;
+        c.lead = lead;
         return c;
     }
 
@@ -119,7 +122,10 @@ final class NoseCompensation {
             if (held.size() > STILL_LIMIT) {
                 out.error(Code.E176_NOSE_TOO_MANY_STILL_BLOCKS, info.at(), STILL_LIMIT);
                 Point end = closePerpendicular(emit);
-                restartFrom = tipAt(end);
+                flushHeld(emit);
+                if (end != null) {
+                    restartFrom = tipAt(end);
+                }
             }
             return;
         }
@@ -131,9 +137,8 @@ final class NoseCompensation {
         if (pending == null) {
             // after E176: a new start from where the tool stands
             Point start = next.offsetAt(next.from(), e);
-            List<Motion> ms = new ArrayList<>();
-            ms.add(new Motion.Linear(true, restartFrom, tipAt(start), null));
-            pending = with(b, ms, b.end());
+            lead = new Motion.Linear(true, restartFrom, tipAt(start), null);
+            pending = b;
             pendingInfo = info;
             pendingElement = next;
             pendingStart = start;
@@ -193,7 +198,7 @@ final class NoseCompensation {
         if (first instanceof Motion.Arc) {
             out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (((Motion.Arc) first).clockwise() ? 2 : 3));
         } else if (e != 0 && Element.of(first).length() < Math.abs(e)) {
-            out.error(Code.E170_NOSE_START_UP_TOO_SHORT, info.at(), "G41/G42",
+            out.error(Code.E170_NOSE_START_UP_TOO_SHORT, info.at(), info.side().g(),
                     mm(Element.of(first).length()), mm(Math.abs(e)));
         }
         mode = Mode.ACTIVE;
@@ -243,7 +248,7 @@ final class NoseCompensation {
         }
         Point end = closePerpendicular(emit);
         flushHeld(emit);
-        Point from = end == null ? from(first) : tipAt(end);
+        Point from = end != null ? tipAt(end) : restartFrom != null ? restartFrom : from(first);
         List<Motion> ms = new ArrayList<>(before(b, first));
         if (first instanceof Motion.Arc a) {
             // E171 reported: the arc as written, reached by a straight move, so the path stays whole
@@ -299,6 +304,10 @@ final class NoseCompensation {
             out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
         }
         List<Motion> ms = new ArrayList<>(before(pending, m));
+        if (lead != null) {
+            ms.add(lead);
+            lead = null;
+        }
         Point s = tipAt(pendingStart);
         Point t = tipAt(end);
         if (el.arc()) {

@@ -153,7 +153,8 @@ class NoseCompensationPropertyTest {
                     case 0 -> String.format(Locale.ROOT, "G00 X%.1f Z%.1f", x, z);
                     case 1 -> String.format(Locale.ROOT, "G02 X%.1f Z%.1f R%.1f F0.1", x, z, 1 + rnd.nextInt(300) / 10.0);
                     case 2 -> String.format(Locale.ROOT, "G03 X%.1f Z%.1f R%.1f F0.1", x, z, 1 + rnd.nextInt(300) / 10.0);
-                    case 3 -> rnd.nextBoolean() ? "M08" : "G04 P100";
+                    case 3 -> rnd.nextInt(6) == 0 ? "M08\n".repeat(NoseCompensation.STILL_LIMIT + 2) + "M09"
+                            : rnd.nextBoolean() ? "M08" : "G04 P100";
                     case 4 -> String.format(Locale.ROOT, "G01 X%.1f F0.1", x);
                     default -> String.format(Locale.ROOT, "G01 X%.1f Z%.1f F0.1", x, z);
                 }).append('\n');
