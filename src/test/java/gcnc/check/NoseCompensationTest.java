@@ -210,6 +210,27 @@ class NoseCompensationTest {
         assertEquals("", errs(Run.of("fanuc", HEAD + "G00 X10. Z2.\nG01 Z-2. F0.2\nX-9.\nG00 Z5.\nM30\n")));
     }
 
+    /** G42 alone arms the compensation for the next move; G40 alone makes the next move the cancel. */
+    @Test
+    void g42AndG40InBlocksOfTheirOwnTakeEffectWithTheNextMove() {
+        Run r = Run.of("fanuc", HEAD + "G42\nM08\nG00 X20. Z2.\nG01 Z-10. F0.2\nX40.\nG40\nM09\nG00 X60. Z5.\nM30\n");
+        assertEquals("", errs(r));
+        assertEquals(List.of("7 G00 X20.0000 Z1.2000", "8 G01 X20.0000 Z-10.0000", "9 G01 X38.4000 Z-10.0000",
+                "12 G00 X60.0000 Z5.0000"), moves(r, 7));
+        assertEquals(List.of(5, 6, 7, 8, 9, 10, 11, 12, 13), r.blocks.stream().skip(4).map(CheckedBlock::line).toList());
+    }
+
+    /**
+     * The other position of the block delete switch goes on with the compensation in progress: the
+     * arc after the '/' block is a contour element there too, not a start-up (that would be E171).
+     */
+    @Test
+    void aBlockDeleteBlockUnderCompensationStartsNothingAgain() throws Exception {
+        CycleExpansionTest.Expanded e = CycleExpansionTest.expand("fanuc", new java.io.StringReader(
+                HEAD + "G42 G00 X20. Z2.\nG01 Z-10. F0.2\n/M08\nG02 X30. Z-15. R5.\nG01 Z-20.\nG40 G00 X60.\nM30\n"));
+        assertEquals("[]", e.diagnostics().sorted().toString());
+    }
+
     /** The moves of the blocks from {@code fromLine} on, in program terms, one line per motion. */
     static List<String> moves(Run r, int fromLine) {
         return r.blocks.stream().filter(b -> b.line() >= fromLine).flatMap(b -> b.motions().stream()
