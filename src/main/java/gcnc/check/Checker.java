@@ -124,13 +124,13 @@ public final class Checker {
      */
     public List<CheckedBlock> check(RawBlock b) {
         List<CheckedBlock> made = checkBlock(b);
-        if (made.isEmpty() && !nose.active()) {
-            return made;
+        if (noseInfo.isEmpty() && !nose.active()) {
+            return made; // no G41/G42 before or in these blocks: nothing to offset, nothing held
         }
         List<CheckedBlock> emit = new java.util.ArrayList<>(made.size() + 1);
         for (CheckedBlock c : made) {
             NoseCompensation.Info info = noseInfo.get(c);
-            nose.accept(c, info != null ? info : new NoseCompensation.Info(state.nose(),
+            nose.accept(c, info != null ? info : new NoseCompensation.Info(NoseSide.OFF,
                     profile.nose(state.toolOffset()), state.toolOffset(), Span.of(c.line(), 1)), emit);
         }
         noseInfo.clear();
@@ -227,8 +227,11 @@ public final class Checker {
             result = result.from(out.place()); // a called program's block: the simulator places its findings there
         }
         CheckedBlock made = origin == null ? result : origin.label(result);
-        noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
-                state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
+        if (state.nose() != NoseSide.OFF || d.prior.nose() != NoseSide.OFF) {
+            // a block without this record has G40 in force before and after it (most blocks: nothing allocated)
+            noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
+                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
+        }
         return Optional.of(made);
     }
 
