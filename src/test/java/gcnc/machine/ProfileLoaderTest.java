@@ -189,6 +189,22 @@ class ProfileLoaderTest {
     }
 
     @Test
+    void aNoseIsARadiusAndATipDirectionOfAToolOffset() throws Exception {
+        MachineProfile p = ProfileLoader.read(ProfileFile.parse("t.machine", GOOD + "nose.2 = 0.8, 3\n"), TABLES);
+        assertEquals(0.8 * p.x().countsPerMm(), p.nose(2).radius(), 1e-9);
+        assertEquals(3, p.nose(2).tip());
+        assertEquals(0, p.nose(3).radius());
+        assertEquals(0, p.nose(0).radius());
+        assertFault(GOOD + "nose.2 = 0.8, 10\n", "nose.2", "a tip direction is a whole number 0 to 9, not 10 (nose.2)");
+        assertFault(GOOD + "nose.2 = 0.8, 2.5\n", "nose.2", "not 2.5");
+        assertFault(GOOD + "nose.2 = -0.8, 3\n", "nose.2", "a nose radius is at least 0 and below 25 mm, not -0.8");
+        assertFault(GOOD + "nose.0 = 0.8, 3\n", "nose.0", "nose radii are per tool offset, numbered from 1");
+        assertFault(GOOD + "nose.2 = 0.8\n", "nose.2", "needs two numbers");
+        assertFault(GOOD + "nose.2 = 0.8, 3\nnose.02 = 0.4, 3\n", "nose.02", "'nose.02' is number 2 again");
+        assertFault(GOOD + "nose.100 = 0.8, 3\n", "nose.100", "nose radii are nose.<n> = radius, tip");
+    }
+
+    @Test
     void theAxesAndTheSpindleAreThreeChannels() throws Exception {
         assertFault(GOOD.replace("x.galil = Y", "x.galil = A"), "z.galil", "x.galil and z.galil are the same Galil channel");
         assertFault(GOOD.replace("spindle.axis = C", "spindle.axis = Y"), "spindle.axis",

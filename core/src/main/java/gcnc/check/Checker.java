@@ -73,6 +73,9 @@ public final class Checker {
     private final Set<String> aside = new HashSet<>();
     private long blocks;
     private boolean stopped;
+    /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
+    private NoseCompensation nose;
+    private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
     private static final class Cause {
@@ -106,6 +109,7 @@ public final class Checker {
         this.isOther = isOther;
         this.state = ModalState.initial(profile);
         this.cycles = new CycleExpansion(this);
+        this.nose = new NoseCompensation(profile, out);
     }
 
     /** The modal state after the last accepted block. */
@@ -119,6 +123,24 @@ public final class Checker {
      * a G90/G94 block gives its moves.
      */
     public List<CheckedBlock> check(RawBlock b) {
+        List<CheckedBlock> made = checkBlock(b);
+        if (noseInfo.isEmpty() && !nose.active()) {
+            return made; // no G41/G42 before or in these blocks: nothing to offset, nothing held
+        }
+        List<CheckedBlock> emit = new java.util.ArrayList<>(made.size() + 1);
+        for (CheckedBlock c : made) {
+            NoseCompensation.Info info = noseInfo.get(c);
+            nose.accept(c, info != null ? info : new NoseCompensation.Info(NoseSide.OFF,
+                    profile.nose(state.toolOffset()), state.toolOffset(), Span.of(c.line(), 1)), emit);
+        }
+        noseInfo.clear();
+        if (state.ended()) {
+            nose.end(b.words().isEmpty() ? b.last() : b.words().get(0).span(), emit);
+        }
+        return emit;
+    }
+
+    private List<CheckedBlock> checkBlock(RawBlock b) {
         if (stopped) {
             return List.of();
         }
@@ -164,6 +186,11 @@ public final class Checker {
         }
         if (b.malformed()) {
             state = Salvage.keep(b, state, functions, profile);
+            return List.of();
+        }
+        Word conflict = state.nose() == NoseSide.OFF ? null : NoseConflict.find(b, functions);
+        if (conflict != null) {
+            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, state.nose().g());
             return List.of();
         }
         Word cycle = cycles.cycleWord(b);
@@ -213,7 +240,13 @@ public final class Checker {
         if (out.place() != gcnc.diag.Origin.PROGRAM) {
             result = result.from(out.place()); // a called program's block: the simulator places its findings there
         }
-        return Optional.of(origin == null ? result : origin.label(result));
+        CheckedBlock made = origin == null ? result : origin.label(result);
+        if (state.nose() != NoseSide.OFF || d.prior.nose() != NoseSide.OFF) {
+            // a block without this record has G40 in force before and after it (most blocks: nothing allocated)
+            noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
+                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
+        }
+        return Optional.of(made);
     }
 
     /** What a block would do from {@code from}, checked but not committed, or null after its errors. */
@@ -223,20 +256,11 @@ public final class Checker {
     /**
      * A contour block followed from {@code from} without changing the program's state: its words
      * and geometry checked (not the prerequisites: the cycle's own moves are checked for those),
-     * findings to {@code found}. A G41/G42 is reported (E110) and the block followed without it,
-     * as the program's flow does (see {@link #recover}).
+     * findings to {@code found}.
      */
     Dry dry(RawBlock b, ModalState from, Diagnostics found) {
         BlockDraft d = new BlockDraft(b, from, tables, functions, profile, coordinates, false);
         CheckedBlock r = run(d, found, false);
-        if (r == null) {
-            RawBlock plain = withoutNoseCompensation(b);
-            if (plain == b) {
-                return null;
-            }
-            d = new BlockDraft(plain, from, tables, functions, profile, coordinates, false);
-            r = run(d, found, false);
-        }
         if (r == null) {
             return null;
         }
@@ -273,6 +297,7 @@ public final class Checker {
     private Checker fork() {
         Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
         c.state = state;
+        c.nose = nose.copy(c.out);
         c.blocks = blocks;
         c.seenN.or(seenN);
         c.warnedM.or(warnedM);
@@ -402,32 +427,12 @@ public final class Checker {
      * reports nothing. A block with any other error keeps only its unambiguous modal words.
      */
     private void recover(RawBlock b, boolean isFirst, boolean sequence) {
-        b = withoutNoseCompensation(b);
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         if (run(d, new Diagnostics(), false) != null) {
             commit(d, sequence);
         } else {
             state = Salvage.keep(b, state, functions, profile);
         }
-    }
-
-    /**
-     * The block without its G41/G42 (reported as not supported yet): its move is then judged on
-     * the programmed path, so the blocks after it are not judged from a point the tool never left.
-     */
-    private RawBlock withoutNoseCompensation(RawBlock b) {
-        List<Word> kept = new java.util.ArrayList<>(b.words().size());
-        for (Word w : b.words()) {
-            gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty()
-                    ? functions.g(w.code()) : null;
-            if (f == null || f.role() != gcnc.machine.GRole.NOSE_COMP_LEFT && f.role() != gcnc.machine.GRole.NOSE_COMP_RIGHT) {
-                kept.add(w);
-            }
-        }
-        if (kept.size() == b.words().size() || kept.isEmpty()) {
-            return b;
-        }
-        return b.called(kept, kept.get(kept.size() - 1).span(), b.depth());
     }
 
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
@@ -456,6 +461,9 @@ public final class Checker {
     /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */
     public void finish(int lastLine) {
         cycles.finish();
+        if (nose.active()) {
+            nose.end(Span.of(Math.max(1, lastLine), 1), new java.util.ArrayList<>()); // nothing can be sent after the end
+        }
         for (Cause c : causes.values()) {
             note(c);
         }

@@ -33,11 +33,12 @@ import gcnc.machine.Units;
  * @param lastN        last N number, -1 before the first
  * @param named        an O word was given
  * @param ended        M30 was given
+ * @param nose         G40/G41/G42: tool nose radius compensation in force
  */
 public record ModalState(int motion, Units units, boolean incremental, int workOffset, int tool, int toolOffset,
                          double feed, boolean feedPerRev, boolean css, double surfaceSpeed, double rpm,
                          double rpmClamp, int spindle, int chuck, Point position, Point shift, Point g28,
-                         long lastN, boolean named, boolean ended) {
+                         long lastN, boolean named, boolean ended, NoseSide nose) {
 
     /**
      * The state at cycle start: at home, with the control's power-up G codes, tool and offset,
@@ -48,7 +49,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         Control c = p.control();
         Next n = new ModalState(-1, p.units(), false, 54, c.powerUpTool(), c.powerUpOffset(), Double.NaN, false,
                 false, Double.NaN, Double.NaN, Double.NaN, -1, p.chuckByProgram() ? -1 : 11, p.home(), Point.ORIGIN,
-                null, -1, false, false).next();
+                null, -1, false, false, NoseSide.OFF).next();
         for (GFunction f : c.powerUp()) {
             n.set(f.role());
         }
@@ -85,6 +86,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         public long lastN;
         public boolean named;
         public boolean ended;
+        public NoseSide nose;
 
         Next(ModalState s) {
             motion = s.motion;
@@ -107,6 +109,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
             lastN = s.lastN;
             named = s.named;
             ended = s.ended;
+            nose = s.nose;
         }
 
         /**
@@ -122,6 +125,9 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
                 case FEED_PER_MINUTE, FEED_PER_REV -> feedPerRev = r == GRole.FEED_PER_REV;
                 case CSS, RPM -> css = r == GRole.CSS;
                 case WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6 -> workOffset = r.number();
+                case NOSE_COMP_CANCEL -> nose = NoseSide.OFF;
+                case NOSE_COMP_LEFT -> nose = NoseSide.LEFT;
+                case NOSE_COMP_RIGHT -> nose = NoseSide.RIGHT;
                 default -> {
                 }
             }
@@ -138,7 +144,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
 
         public ModalState build() {
             return new ModalState(motion, units, incremental, workOffset, tool, toolOffset, feed, feedPerRev, css,
-                    surfaceSpeed, rpm, rpmClamp, spindle, chuck, position, shift, g28, lastN, named, ended);
+                    surfaceSpeed, rpm, rpmClamp, spindle, chuck, position, shift, g28, lastN, named, ended, nose);
         }
     }
 }

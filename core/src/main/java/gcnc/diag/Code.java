@@ -245,6 +245,26 @@ public enum Code {
     E168_CYCLE_P_Q_MISSING(168),
     /** Checker: a G90/G94 single-pass cycle without its X (or U) or its Z (or W). */
     E169_SINGLE_CYCLE_END_MISSING(169),
+    /** Nose compensation: the start-up move after G41/G42 is shorter than the nose radius. */
+    E170_NOSE_START_UP_TOO_SHORT(170),
+    /** Nose compensation: an arc as the start-up move or as the G40 move. */
+    E171_NOSE_ARC_START_OR_EXIT(171),
+    /** Nose compensation: a concave corner tighter than the nose (the offset path runs backwards). */
+    E172_NOSE_INTERFERENCE(172),
+    /** Nose compensation: a concave arc smaller than the nose radius. */
+    E173_NOSE_ARC_TOO_TIGHT(173),
+    /** Nose compensation: G41 to G42 (or back) without G40 between. */
+    E174_NOSE_SIDE_CHANGE(174),
+    /** Nose compensation (warning): the program ends with G41/G42 in force. */
+    E175_NOSE_AT_END(175),
+    /** Nose compensation: more blocks without a move than gcnc looks ahead. */
+    E176_NOSE_TOO_MANY_STILL_BLOCKS(176),
+    /** Nose compensation (note): the tool offset in force has no nose radius in the profile. */
+    E177_NOSE_NO_RADIUS(177),
+    /** Nose compensation: a cycle, G28, G29, G53 or a position register with G41/G42 in force. */
+    E178_NOSE_FUNCTION_IN_FORCE(178),
+    /** Nose compensation: the compensated path leaves the travel where the programmed one did not. */
+    E179_NOSE_BEYOND_TRAVEL(179),
     /** Checker: a peck depth, step or G83 Q of zero or less. */
     E180_PECK_NOT_POSITIVE(180),
     /** Checker: a G74/G75 peck deeper than the whole cut. */

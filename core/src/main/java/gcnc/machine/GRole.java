@@ -10,10 +10,7 @@ public enum GRole {
     RAPID(0), LINEAR(1), ARC_CW(2), ARC_CCW(3), DWELL(4), EXACT_STOP(9),
     PLANE_XY(17), PLANE_ZX(18), PLANE_YZ(19), INCH(20), METRIC(21), HOME(28), FROM_HOME(29), SKIP(31),
     NOSE_COMP_CANCEL(40),
-    /**
-     * G41/G42, not supported yet (E110): the block is then checked without them, on the
-     * programmed path, which the compensated one follows within a nose radius.
-     */
+    /** G41/G42: the checker offsets the path by the nose radius (gcnc.check.NoseCompensation). */
     NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
     REGISTER_AND_CLAMP(50), MACHINE_COORDINATES(53),
     /**
@@ -63,7 +60,7 @@ public enum GRole {
 
     /** A function gcnc names as not supported yet (E110). */
     public boolean unsupported() {
-        return this == UNSUPPORTED || this == NOSE_COMP_LEFT || this == NOSE_COMP_RIGHT;
+        return this == UNSUPPORTED;
     }
 
     /** G90/G94 (Fanuc B G77/G79): a single-pass cycle the checker expands into its four moves. */

@@ -41,6 +41,8 @@ import java.util.Optional;
  * @param chuckByProgram  the program must close the chuck before it cuts (else the operator did)
  * @param model           the lathe's solid parts and the tools' outlines, for the simulator
  * @param spindleEncoder  the spindle encoder threads are geared to, or null when the machine has none
+ * @param noses           offset number (1..) to the insert's nose radius and tip direction (key
+ *                        {@code nose.N}); an offset without one has radius 0
  */
 public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
@@ -49,8 +51,10 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
                              Map<Integer, Point> workOffsets, Map<Integer, Point> toolOffsets, int tools,
                              Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file,
                              Control control, Units units, Point machineZero, boolean chuckByProgram,
-                             MachineModel model, SpindleEncoder spindleEncoder) {
+                             MachineModel model, SpindleEncoder spindleEncoder,
+                             Map<Integer, Nose> noses) {
     public MachineProfile {
+        noses = Map.copyOf(noses);
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);
         outputs = Map.copyOf(outputs);
@@ -59,6 +63,11 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
     /** The spindle encoder threads are geared to; empty on a machine that cannot cut threads (E190). */
     public Optional<SpindleEncoder> encoder() {
         return Optional.ofNullable(spindleEncoder);
+    }
+
+    /** The nose of tool offset {@code n} (radius 0 when the profile gives none, or for offset 0). */
+    public Nose nose(int n) {
+        return noses.getOrDefault(n, Nose.NONE);
     }
 
     public Optional<Point> workOffset(int g) {

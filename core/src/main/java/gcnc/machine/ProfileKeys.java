@@ -41,6 +41,7 @@ final class ProfileKeys {
             new Family("work.", "work\\.G5[4-9]", "work offsets are work.G54 .. work.G59"),
             // T's last two digits pick the offset: 1 to 99 (tool.0 is refused by ProfileLoader, with its reason)
             new Family("tool.", "tool\\.[0-9]{1,2}", "tool offsets are tool.<n>, n = 1 to 99"),
+            new Family("nose.", "nose\\.[0-9]{1,2}", "nose radii are nose.<n> = radius, tip; n = 1 to 99"),
             new Family("m.", "m\\.[0-9]{1,3}", "M code outputs are m.<n>, n = 0 to 999"),
             new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
                     "tools are sim.tool.default or sim.tool.<n> (from the library: C 12.7) and their"

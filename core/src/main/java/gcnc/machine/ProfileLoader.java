@@ -104,7 +104,8 @@ public final class ProfileLoader {
                 f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
                 workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
-                machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z));
+                machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z),
+                noses(f, counts, x));
     }
 
     /** The largest encoder resolution gcnc accepts: 2^20 counts per revolution. */
@@ -284,6 +285,32 @@ public final class ProfileLoader {
             }
         }
         return tools;
+    }
+
+    /**
+     * {@code nose.N = RADIUS, TIP}: the nose radius (mm, or counts with offsets.unit = counts; at
+     * least 0, below 25 mm) and the tip direction (a whole number 0 to 9) of tool offset N
+     * (docs/nose-compensation.md). The radius is turned into counts along X, as arcs are.
+     */
+    private static Map<Integer, Nose> noses(ProfileFile f, boolean counts, Axis x) throws TableException {
+        Map<Integer, Nose> noses = new HashMap<>();
+        Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
+        for (ProfileFile.Entry e : f.withPrefix("nose.")) {
+            int n = numberOf(f, e, "nose.", seen);
+            if (n < 1) {
+                throw f.faultAtKey(e, "nose radii are per tool offset, numbered from 1 ('" + e.key() + "')");
+            }
+            double[] v = f.pair(e);
+            double mm = counts ? v[0] / x.countsPerMm() : v[0];
+            if (!(mm >= 0) || mm >= 25) {
+                throw f.fault(e, "a nose radius is at least 0 and below 25 mm, not " + written(v[0]) + " (" + e.key() + ")");
+            }
+            if (v[1] != Math.rint(v[1]) || v[1] < 0 || v[1] > 9) {
+                throw f.fault(e, "a tip direction is a whole number 0 to 9, not " + written(v[1]) + " (" + e.key() + ")");
+            }
+            noses.put(n, new Nose(mm * x.countsPerMm(), (int) v[1]));
+        }
+        return noses;
     }
 
     /** Turret stations: T numbers 1..count; by default the highest tool offset number. */

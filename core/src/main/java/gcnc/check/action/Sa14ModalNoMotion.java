@@ -1,6 +1,7 @@
 package gcnc.check.action;
 
 import gcnc.check.BlockDraft;
+import gcnc.check.NoseSide;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Word;
@@ -8,11 +9,12 @@ import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 
 /**
- * Thesis §4.2.2 action 14: modal G codes without motion or parameters. G40 (nose-radius
- * compensation cancel; G41/G42 are not supported yet, so it only records the group), G96
+ * Thesis §4.2.2 action 14: modal G codes without motion or parameters. G40/G41/G42 (tool nose
+ * radius compensation: the side is recorded here, the path offset by gcnc.check.NoseCompensation;
+ * G41 to G42 or back without G40 is E174), G96
  * (constant surface speed: S of this and later blocks is m/min or ft/min), and, added by gcnc for
  * real safe-start lines, G80 (canned cycle cancel) and the plane: G18 (ZX, the lathe's plane) is
- * accepted, G17 and G19 are E112. Emits E016, E112. Writes next.css, d.g96.
+ * accepted, G17 and G19 are E112. Emits E016, E112, E174. Writes next.css, next.nose, d.g96.
  */
 public final class Sa14ModalNoMotion implements SyntaxAction {
     @Override
@@ -28,6 +30,16 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
         }
         if (f.role() == GRole.PLANE_XY || f.role() == GRole.PLANE_YZ) {
             d.fail(out, Code.E112_PLANE_NOT_ZX, w.span(), w);
+        } else if (f.role() == GRole.NOSE_COMP_LEFT || f.role() == GRole.NOSE_COMP_RIGHT) {
+            NoseSide side = f.role() == GRole.NOSE_COMP_LEFT ? NoseSide.LEFT : NoseSide.RIGHT;
+            NoseSide before = d.prior.nose();
+            if (before != NoseSide.OFF && before != side) {
+                d.fail(out, Code.E174_NOSE_SIDE_CHANGE, w.span(), w, before == NoseSide.LEFT ? "G41" : "G42");
+                return;
+            }
+            d.next.nose = side;
+        } else if (f.role() == GRole.NOSE_COMP_CANCEL) {
+            d.next.nose = NoseSide.OFF;
         } else if (f.role() == GRole.CSS) {
             d.next.css = true;
             d.g96 = w;

@@ -43,9 +43,9 @@ public final class SyntaxActions {
             case SKIP -> 10;
             case EXACT_STOP -> 11;
             case RPM -> 13;
-            case NOSE_COMP_CANCEL, CSS, CYCLE_CANCEL, PLANE_XY, PLANE_ZX, PLANE_YZ -> 14;
+            case NOSE_COMP_CANCEL, NOSE_COMP_LEFT, NOSE_COMP_RIGHT, CSS, CYCLE_CANCEL, PLANE_XY, PLANE_ZX, PLANE_YZ -> 14;
             case MACHINE_COORDINATES -> 16;
-            case UNSUPPORTED, NOSE_COMP_LEFT, NOSE_COMP_RIGHT -> 17;
+            case UNSUPPORTED -> 17;
             // expanded before the syntax actions (gcnc.check.cycle): a cycle word met here is in a
             // block the expansion hands on, where it cannot be followed
             case FINISHING_CYCLE, TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE,

@@ -1,0 +1,392 @@
+package gcnc.check;
+
+import static gcnc.check.NoseMoves.after;
+import static gcnc.check.NoseMoves.before;
+import static gcnc.check.NoseMoves.from;
+import static gcnc.check.NoseMoves.line;
+import static gcnc.check.NoseMoves.path;
+import static gcnc.check.NoseMoves.still;
+import static gcnc.check.NoseMoves.to;
+import static gcnc.check.NoseMoves.with;
+
+import gcnc.check.geom.NoseGeometry;
+import gcnc.check.geom.NoseGeometry.Corner;
+import gcnc.check.geom.NoseGeometry.Element;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.Nose;
+import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.List;
+
+/**
+ * Tool nose radius compensation (G41/G42/G40) over the checked blocks, in the order they reach the
+ * machine (docs/nose-compensation.md). The checker keeps the programmed contour as the program's
+ * position; this stage rewrites the motions of the blocks under G41/G42 so that the imaginary tool
+ * tip moves where the control moves it: the nose centre on the contour offset by the nose radius,
+ * corners as a Fanuc type C control makes them, start-up and cancel of type A, the tip shifted
+ * from the centre by the tip direction. A block keeps its line; corner moves belong to the block
+ * they end.
+ *
+ * <p>To place a corner it must see the next move: the block before it is held back until then,
+ * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Errors:
+ * E170 (start-up shorter than the radius), E171 (an arc starts or cancels), E172 (a concave corner
+ * the nose does not fit), E173 (a concave arc tighter than the nose), E175 (the program ends under
+ * G41/G42, a warning), E177 (a note: the offset has no nose radius, nothing is moved), E179 (a
+ * compensated move beyond the travel).
+ */
+final class NoseCompensation {
+    /** Blocks without a move gcnc holds while it looks for the next corner. */
+    static final int STILL_LIMIT = 10;
+
+    /** What the checker knows of a block besides the block: the side after it, the nose in force, where it is. */
+    record Info(NoseSide side, Nose nose, int offset, Span at) {
+    }
+
+    private enum Mode { OFF, ARMED, ACTIVE }
+
+    private final MachineProfile profile;
+    private final Diagnostics out;
+    private final BitSet noted = new BitSet();
+    private Mode mode = Mode.OFF;
+    /** The signed offset: + nose radius for G42, - for G41 (counts). */
+    private double e;
+    private double[] tip = {0, 0};
+    /** The block whose end waits for the next move, and its element (null: the start-up block). */
+    private CheckedBlock pending;
+    private Info pendingInfo;
+    private Element pendingElement;
+    /** Where the pending element's offset starts (nose centre); for the start-up block, unused. */
+    private Point pendingStart;
+    private final List<CheckedBlock> held = new ArrayList<>();
+    /** A G40 without a move was met: the next move is the cancel move. */
+    private boolean exiting;
+    /** After E176: the next move starts again from where the tool is, as a start-up does. */
+    private Point restartFrom;
+    /** After E176: the rapid from there to the start of the pending element's offset, sent before it. */
+    private Motion lead;
+
+    NoseCompensation(MachineProfile profile, Diagnostics out) {
+        this.profile = profile;
+        this.out = out;
+    }
+
+    /** The same compensation in progress, reporting to {@code to}: for the other position of the block delete switch. */
+    NoseCompensation copy(Diagnostics to) {
+        NoseCompensation c = new NoseCompensation(profile, to);
+        c.noted.or(noted);
+        c.mode = mode;
+        c.e = e;
+        c.tip = tip.clone();
+        c.pending = pending;
+        c.pendingInfo = pendingInfo;
+        c.pendingElement = pendingElement;
+        c.pendingStart = pendingStart;
+        c.held.addAll(held);
+        c.exiting = exiting;
+        c.restartFrom = restartFrom;
+        c.lead = lead;
+        return c;
+    }
+
+    /** Whether compensation is in force here (blocks may be held). */
+    boolean active() {
+        return mode != Mode.OFF;
+    }
+
+    /** Takes the next checked block; what can be sent on is added to {@code emit}, in order. */
+    void accept(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+        if (mode == Mode.OFF) {
+            if (info.side() == NoseSide.OFF) {
+                emit.add(b);
+                return;
+            }
+            arm(info);
+        }
+        if (mode == Mode.ARMED) {
+            armed(b, info, emit);
+            return;
+        }
+        List<Motion> path = path(b);
+        if (path.isEmpty()) {
+            if (info.side() == NoseSide.OFF) {
+                exiting = true;
+            }
+            held.add(b.motions().isEmpty() ? b : with(b, still(b), b.end()));
+            if (held.size() > STILL_LIMIT) {
+                out.error(Code.E176_NOSE_TOO_MANY_STILL_BLOCKS, info.at(), STILL_LIMIT);
+                Point end = closePerpendicular(emit);
+                flushHeld(emit);
+                if (end != null) {
+                    restartFrom = tipAt(end);
+                }
+            }
+            return;
+        }
+        if (info.side() == NoseSide.OFF || exiting) {
+            cancel(b, info, path, emit);
+            return;
+        }
+        Element next = Element.of(path.get(0));
+        if (pending == null) {
+            // after E176: a new start from where the tool stands
+            Point start = next.offsetAt(next.from(), e);
+            lead = new Motion.Linear(true, restartFrom, tipAt(start), null);
+            pending = b;
+            pendingInfo = info;
+            pendingElement = next;
+            pendingStart = start;
+            flushHeld(emit);
+            return;
+        }
+        follow(b, info, next, emit);
+    }
+
+    /** The program ended (M30) or the input did: sends what is held, with the warning E175. */
+    void end(Span at, List<CheckedBlock> emit) {
+        if (mode == Mode.OFF) {
+            return;
+        }
+        out.report(Diagnostic.warning(Code.E175_NOSE_AT_END, at, sideName()));
+        if (pending != null) {
+            closePerpendicular(emit);
+        }
+        flushHeld(emit);
+        mode = Mode.OFF;
+        exiting = false;
+    }
+
+    private String sideName() {
+        return e < 0 ? "G41" : "G42";
+    }
+
+    private void arm(Info info) {
+        Nose n = info.nose();
+        double sign = info.side() == NoseSide.RIGHT ? 1 : -1;
+        e = sign * n.radius();
+        double[] v = n.tipVector();
+        tip = new double[] {v[0] * n.radius(), v[1] * n.radius()};
+        mode = Mode.ARMED;
+        exiting = false;
+        restartFrom = null;
+        if (n.radius() == 0 && !noted.get(info.offset())) {
+            noted.set(info.offset());
+            out.report(new Diagnostic(Code.E177_NOSE_NO_RADIUS, gcnc.diag.Severity.NOTE, info.at(),
+                    List.of(info.side().g(), Integer.toString(info.offset()), profile.name())));
+        }
+    }
+
+    /** G41/G42 given, no move yet: the first move is the start-up. */
+    private void armed(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+        List<Motion> path = path(b);
+        if (info.side() == NoseSide.OFF) {
+            mode = Mode.OFF;
+            emit.add(b);
+            return;
+        }
+        if (path.isEmpty()) {
+            emit.add(b);
+            return;
+        }
+        Motion first = path.get(0);
+        if (first instanceof Motion.Arc) {
+            out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (((Motion.Arc) first).clockwise() ? 2 : 3));
+        } else if (e != 0 && Element.of(first).length() < Math.abs(e)) {
+            out.error(Code.E170_NOSE_START_UP_TOO_SHORT, info.at(), info.side().g(),
+                    mm(Element.of(first).length()), mm(Math.abs(e)));
+        }
+        mode = Mode.ACTIVE;
+        pending = b;
+        pendingInfo = info;
+        pendingElement = null;
+        pendingStart = null;
+    }
+
+    /** A move under G41/G42 after another: the corner between them ends the held block. */
+    private void follow(CheckedBlock b, Info info, Element next, List<CheckedBlock> emit) {
+        Point startNext;
+        if (pendingElement == null) {
+            // the start-up block (type A): the nose goes to the next element's offset start
+            startNext = next.offsetAt(next.from(), e);
+            Motion m = path(pending).get(0);
+            List<Motion> ms = new ArrayList<>(before(pending, m));
+            ms.add(line(m, from(m), tipAt(startNext)));
+            ms.addAll(after(pending, m));
+            emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
+        } else {
+            Corner c = NoseGeometry.corner(pendingElement, next, e);
+            boolean meet = c != null;
+            if (!meet) {
+                // the offset elements never meet (E172): each ends perpendicular, joined by a straight move
+                c = new Corner(pendingElement.offsetAt(pendingElement.to(), e), List.of(),
+                        next.offsetAt(next.from(), e), true);
+            }
+            List<Point> around = new ArrayList<>(c.around());
+            around.add(c.startOfSecond());
+            close(c.endOfFirst(), around, meet, emit);
+            startNext = c.startOfSecond();
+        }
+        flushHeld(emit);
+        pending = b;
+        pendingInfo = info;
+        pendingElement = next;
+        pendingStart = startNext;
+        checkArc(next, info);
+    }
+
+    /** G40 with a move (or the move after a G40 alone): type A, from the perpendicular offset to the programmed point. */
+    private void cancel(CheckedBlock b, Info info, List<Motion> path, List<CheckedBlock> emit) {
+        Motion first = path.get(0);
+        if (first instanceof Motion.Arc a) {
+            out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (a.clockwise() ? 2 : 3));
+        }
+        Point end = closePerpendicular(emit);
+        flushHeld(emit);
+        Point from = end != null ? tipAt(end) : restartFrom != null ? restartFrom : from(first);
+        List<Motion> ms = new ArrayList<>(before(b, first));
+        if (first instanceof Motion.Arc a) {
+            // E171 reported: the arc as written, reached by a straight move, so the path stays whole
+            if (from.distanceTo(a.from()) > NoseGeometry.NOTHING) {
+                ms.add(line(a, from, a.from()));
+            }
+            ms.add(a);
+        } else {
+            ms.add(line(first, from, to(first)));
+        }
+        ms.addAll(after(b, first));
+        emit.add(travel(with(b, ms, b.end()), info));
+        mode = Mode.OFF;
+        exiting = false;
+        if (info.side() != NoseSide.OFF) {
+            // the move after a G40 alone, into a new G41/G42 in the same block: start again
+            arm(info);
+        }
+    }
+
+    /** Ends the pending block perpendicular to its element's end (no next move to meet); returns the nose centre there. */
+    private Point closePerpendicular(List<CheckedBlock> emit) {
+        if (pending == null) {
+            return null;
+        }
+        Point end;
+        if (pendingElement == null) {
+            Element self = Element.of(path(pending).get(0));
+            end = self.length() > 0 ? self.offsetAt(self.to(), e) : self.to();
+            Motion m = path(pending).get(0);
+            List<Motion> ms = new ArrayList<>(before(pending, m));
+            ms.add(line(m, from(m), tipAt(end)));
+            ms.addAll(after(pending, m));
+            emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
+        } else {
+            end = pendingElement.offsetAt(pendingElement.to(), e);
+            close(end, List.of(), true, emit);
+        }
+        pending = null;
+        pendingElement = null;
+        return end;
+    }
+
+    /**
+     * Sends the pending element offset from its start to {@code end}, then the corner moves to each
+     * of {@code around}; E172 when the element runs backwards or ({@code meet} false) its corner has
+     * no intersection.
+     */
+    private void close(Point end, List<Point> around, boolean meet, List<CheckedBlock> emit) {
+        Element el = pendingElement;
+        Motion m = path(pending).get(0);
+        if (!meet || !NoseGeometry.forward(el, pendingStart, end)) {
+            out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
+        }
+        List<Motion> ms = new ArrayList<>(before(pending, m));
+        if (lead != null) {
+            ms.add(lead);
+            lead = null;
+        }
+        Point s = tipAt(pendingStart);
+        Point t = tipAt(end);
+        if (el.arc()) {
+            double radius = el.offsetRadius(e);
+            Point c = tipAt(el.centre());
+            if (s.distanceTo(t) > NoseGeometry.NOTHING && radius > NoseGeometry.NOTHING) {
+                Motion.Arc a = (Motion.Arc) m;
+                Motion.ArcWords w = a.words().r() != null
+                        ? new Motion.ArcWords(Math.copySign(radius, a.words().r()), null, null)
+                        : new Motion.ArcWords(null, c.x() - s.x(), c.z() - s.z());
+                ms.add(new Motion.Arc(a.clockwise(), s, t, c, radius, a.feed(), w));
+            }
+        } else if (s.distanceTo(t) > NoseGeometry.NOTHING) {
+            ms.add(line(m, s, t));
+        }
+        Point at = t;
+        for (Point q : around) {
+            Point next = tipAt(q);
+            if (at.distanceTo(next) > NoseGeometry.NOTHING) {
+                ms.add(line(m, at, next));
+                at = next;
+            }
+        }
+        ms.addAll(after(pending, m));
+        emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
+        pendingStart = null;
+    }
+
+    /** E173: a concave arc whose offset radius would be nothing or less. */
+    private void checkArc(Element el, Info info) {
+        if (el.arc() && el.offsetRadius(e) <= NoseGeometry.NOTHING) {
+            out.error(Code.E173_NOSE_ARC_TOO_TIGHT, info.at(), mm(el.radius()), mm(Math.abs(e)));
+        }
+    }
+
+    /**
+     * E179, once per block: a compensated move beyond the travel (the checker judged the programmed
+     * point, which may be inside while the tool, r off it, is not).
+     */
+    private CheckedBlock travel(CheckedBlock b, Info info) {
+        for (Motion m : b.motions()) {
+            double[] box;
+            if (m instanceof Motion.Arc a) {
+                box = gcnc.ir.ArcGeometry.bounds(a);
+            } else if (m instanceof Motion.Linear l) {
+                // its start is the end of the move before, judged there
+                box = new double[] {l.to().x(), l.to().x(), l.to().z(), l.to().z()};
+            } else {
+                continue;
+            }
+            if (beyond("X", profile.x(), box[0], box[1], info) || beyond("Z", profile.z(), box[2], box[3], info)) {
+                break;
+            }
+        }
+        return b;
+    }
+
+    private boolean beyond(String name, gcnc.machine.Axis a, double min, double max, Info info) {
+        double at = min < a.min() - 0.5 ? min : max > a.max() + 0.5 ? max : Double.NaN;
+        if (Double.isNaN(at)) {
+            return false;
+        }
+        double per = a.countsPerMm();
+        out.error(Code.E179_NOSE_BEYOND_TRAVEL, info.at(), name, gcnc.check.geom.NumberText.plain(at / per, 3),
+                gcnc.check.geom.NumberText.plain(a.min() / per, 3), gcnc.check.geom.NumberText.plain(a.max() / per, 3),
+                profile.name());
+        return true;
+    }
+
+    private void flushHeld(List<CheckedBlock> emit) {
+        emit.addAll(held);
+        held.clear();
+    }
+
+    private Point tipAt(Point centre) {
+        return new Point(centre.x() + tip[0], centre.z() + tip[1]);
+    }
+
+    private String mm(double counts) {
+        return gcnc.check.geom.NumberText.plain(counts / profile.x().countsPerMm(), 3);
+    }
+}
