@@ -169,4 +169,20 @@ class CommandsTest {
         assertTrue(r.out().contains("E502 (error)\n  en: the output is a directory: name a file to write\n"
                 + "  es: la salida es un directorio"), r.out());
     }
+
+    /** A run of one command builds only that command; its help and options are the same as with all of them. */
+    @Test
+    void oneCommandAloneIsTheSameCommand() {
+        for (String name : new String[] {"check", "compile", "simulate", "tables", "explain", "machines"}) {
+            assertEquals(name, Main.onlyCommand(new String[] {"--lang", "es", name, "part.nc"}));
+            picocli.CommandLine all = Main.commandLine(new Main.Streams(System.in, System.out), gcnc.tables.ErrorMessages.Lang.EN);
+            picocli.CommandLine one = Main.commandLine(new Main.Streams(System.in, System.out), gcnc.tables.ErrorMessages.Lang.EN,
+                    new String[] {name, "--help"});
+            assertEquals(1, one.getSubcommands().size());
+            assertEquals(all.getSubcommands().get(name).getUsageMessage(), one.getSubcommands().get(name).getUsageMessage());
+        }
+        for (String[] args : new String[][] {{"help", "check"}, {"completion"}, {"chek"}, {"--help"}, {}}) {
+            assertEquals(null, Main.onlyCommand(args), String.join(" ", args) + " needs every command");
+        }
+    }
 }

@@ -15,8 +15,6 @@ import picocli.CommandLine.Command;
 /** {@code java -jar gcnc.jar}: the only place that calls System.exit. */
 @Command(name = "gcnc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "Checks lathe G-code completely, translates it for a Galil controller and verifies it in a simulator.",
-        subcommands = {CheckCommand.class, CompileCommand.class, SimulateCommand.class, TablesCommand.class,
-                ExplainCommand.class, MachinesCommand.class, CompletionCommand.class, CommandLine.HelpCommand.class},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {
             "0:no errors (warnings and notes may have been printed)",
@@ -48,6 +46,47 @@ public final class Main implements Runnable {
         return streams;
     }
 
+    /**
+     * The commands, in the order the help lists them. They are added when the command line is made
+     * ({@link #commandLine(Streams, ErrorMessages.Lang, String[])}), not named in the annotation, so
+     * that a run of one command builds only that command's model: picocli reads every option of every
+     * command it is given, and doing that for all of them was a fifth of a short run's time.
+     */
+    private static final java.util.Map<String, Class<?>> COMMANDS = commands();
+
+    private static java.util.Map<String, Class<?>> commands() {
+        java.util.Map<String, Class<?>> m = new java.util.LinkedHashMap<>();
+        m.put("check", CheckCommand.class);
+        m.put("compile", CompileCommand.class);
+        m.put("simulate", SimulateCommand.class);
+        m.put("tables", TablesCommand.class);
+        m.put("explain", ExplainCommand.class);
+        m.put("machines", MachinesCommand.class);
+        m.put("completion", CompletionCommand.class);
+        m.put("help", CommandLine.HelpCommand.class);
+        return java.util.Collections.unmodifiableMap(m);
+    }
+
+    /**
+     * The command {@code args} run when it needs no other (check, compile, simulate, tables, explain,
+     * machines), else null: {@code help}, {@code completion}, a misspelt name (for "did you mean"), or
+     * no command need them all.
+     */
+    static String onlyCommand(String[] args) {
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            if (a == null || a.equals("--")) {
+                return null;
+            }
+            if (a.equals("--lang")) {
+                i++;
+            } else if (!a.startsWith("-")) {
+                return COMMANDS.containsKey(a) && !a.equals("help") && !a.equals("completion") ? a : null;
+            }
+        }
+        return null;
+    }
+
     @Override
     public void run() {
         throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate, tables, explain, machines or completion");
@@ -74,7 +113,7 @@ public final class Main implements Runnable {
      * {@code --lang}, else of the environment. The language is chosen before picocli builds the model.
      */
     public static CommandLine commandLine(String... args) {
-        return commandLine(new Streams(System.in, System.out), HelpLanguage.of(args, System.getenv()));
+        return commandLine(new Streams(System.in, System.out), HelpLanguage.of(args, System.getenv()), args);
     }
 
     /** The command line reading {@code -} from, and writing {@code -o -} to, the given streams. */
@@ -82,9 +121,20 @@ public final class Main implements Runnable {
         return commandLine(streams, HelpLanguage.of(new String[0], System.getenv()));
     }
 
-    /** The command line with its usage help, picocli's headings and usage errors in {@code lang}. */
+    /** The command line with every command, its usage help, picocli's headings and usage errors in {@code lang}. */
     static CommandLine commandLine(Streams streams, ErrorMessages.Lang lang) {
+        return commandLine(streams, lang, new String[0]);
+    }
+
+    /** The same, with only the command {@code args} run when it needs no other ({@link #onlyCommand}). */
+    static CommandLine commandLine(Streams streams, ErrorMessages.Lang lang, String[] args) {
         CommandLine cl = new CommandLine(new Main(streams));
+        String only = onlyCommand(args);
+        for (java.util.Map.Entry<String, Class<?>> c : COMMANDS.entrySet()) {
+            if (only == null || only.equals(c.getKey())) {
+                cl.addSubcommand(c.getKey(), c.getValue());
+            }
+        }
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         cl.registerConverter(Path.class, Main::path);
         cl.setExitCodeExceptionMapper(e -> ExitCode.USAGE);
@@ -93,7 +143,7 @@ public final class Main implements Runnable {
             cl.setResourceBundle(help); // every subcommand's help, and picocli's own headings, in that language
         }
         Phrases phrases = new Phrases(lang);
-        cl.setParameterExceptionHandler((e, args) -> {
+        cl.setParameterExceptionHandler((e, unused) -> {
             PrintWriter err = e.getCommandLine().getErr();
             err.println("gcnc: " + Printable.escape(HelpLanguage.usageError(e.getMessage(), lang)));
             if (lang == ErrorMessages.Lang.EN) {
