@@ -118,6 +118,13 @@ class CycleErrorsTest {
     }
 
     @Test
+    void e160ATypeTwoContourThatRisesPastTheStartAndComesBack() {
+        // a collar at X56 above the start's X52, then a pocket after it
+        assertEquals("8:1:E160", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X40. Z2.\nG01 Z-10.\nX56.\nZ-15.\nX30. Z-20.\n"
+                + "N20 X56.\nM30\n"));
+    }
+
+    @Test
     void e161AWordTheCycleDoesNotTake() {
         assertEquals("5:14:E161", fanuc("G71 U2. R0.5 X3.\nM30\n"));
         assertEquals("10:13:E161", fanuc("G71 P10 Q20 D2. F0.25\n" + CONTOUR + "G70 P10 Q20 U0.1\nM30\n"));

@@ -93,6 +93,20 @@ public final class PocketRoughing {
         if (f != null) {
             return f;
         }
+        int beyond = 0;
+        for (Contour.Piece p : c.shape()) {
+            double[] e = p.extent(axes);
+            double in = Math.max(u(e[0]), u(e[1]));
+            double out = Math.min(u(e[0]), u(e[1]));
+            if (beyond > 0 && in > eps) {
+                // the contour reaches past the start's level and comes back: the tool, travelling
+                // at the start's level between the pockets, would go through the part there
+                return Fault.atContour(Code.E160_CYCLE_START_INSIDE, beyond);
+            }
+            if (beyond == 0 && out < -eps) {
+                beyond = p.line();
+            }
+        }
         int pocket = pocketLine(c);
         if (pocket > 0 && Math.abs(axes.cut(shift)) > eps) {
             return Fault.atWord(Code.E189_TYPE_TWO_CUT_ALLOWANCE, cutWord, Integer.toString(pocket), axes.cutName(),
