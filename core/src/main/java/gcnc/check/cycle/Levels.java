@@ -18,8 +18,7 @@ final class Levels {
     }
 
     /** The stretches {lo, hi, line of the piece where it ends} at {@code level}, in order along the cut. */
-    static List<double[]> spans(List<Contour.Piece> moved, double level, PocketRoughing g) {
-        double eps = g.eps();
+    static List<double[]> spans(PocketRoughing.Frame g, List<Contour.Piece> moved, double level, double eps) {
         List<double[]> ranges = new ArrayList<>();
         List<Double> walls = new ArrayList<>();
         for (Contour.Piece p : moved) {
@@ -28,8 +27,7 @@ final class Levels {
             double u0 = g.u(p.from());
             double u1 = g.u(p.to());
             if (Math.abs(v1 - v0) <= eps) {
-                double[] e = p.extent(g.axes());
-                if (Math.min(g.u(e[0]), g.u(e[1])) < level - eps) {
+                if (g.extent(p)[0] < level - eps) {
                     walls.add((v0 + v1) / 2);
                 }
                 continue;
@@ -37,7 +35,7 @@ final class Levels {
             List<Double> cuts = new ArrayList<>(List.of(Math.min(v0, v1), Math.max(v0, v1)));
             Depth depth;
             if (p.motion() instanceof Motion.Arc arc) {
-                depth = arcDepth(arc, p, g);
+                depth = arcDepth(arc, p, g, eps);
                 Point c = arc.centre();
                 double uc = g.u(c);
                 double vc = g.v(c);
@@ -99,15 +97,14 @@ final class Levels {
      * An arc's depth as a function of v: the arc moves one way along the cut, so it lies on one
      * side of its centre's level; which side, from its bulge or its end points.
      */
-    private static Depth arcDepth(Motion.Arc arc, Contour.Piece p, PocketRoughing g) {
-        double eps = g.eps();
+    private static Depth arcDepth(Motion.Arc arc, Contour.Piece p, PocketRoughing.Frame g, double eps) {
         double uc = g.u(arc.centre());
         double vc = g.v(arc.centre());
         double u0 = g.u(arc.from());
         double u1 = g.u(arc.to());
-        double[] e = p.extent(g.axes());
-        double uMax = Math.max(g.u(e[0]), g.u(e[1]));
-        double uMin = Math.min(g.u(e[0]), g.u(e[1]));
+        double[] e = g.extent(p);
+        double uMin = e[0];
+        double uMax = e[1];
         int side;
         if (uMax > Math.max(u0, u1) + eps) {
             side = 1;
