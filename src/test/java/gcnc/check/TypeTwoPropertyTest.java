@@ -14,29 +14,32 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
 import java.util.TreeMap;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Random G71 type II contours on the haas machine (inch, one-block form): Z always toward the
- * chuck, X going in and out (pockets with sloped walls, steps, quarter rounds), random depth of
- * cut and X allowance. For each: no point of a roughing pass is below the contour moved by its
- * allowance (within a micron and the rounding of six-decimal words); each level's cuts cover
- * exactly the Z stretches where the moved contour lies below the level; and the program (cycle
- * and G70) compiles and replays in the simulator over the machine's 2 in bar without a finding.
- * The contour is taken from the G70 over the same blocks, not from the expansion. Seeds print on
- * failure.
+ * Random G71 type II contours on the haas machine (inch, one-block form), outside and inside: Z
+ * always toward the chuck, X going in and out (pockets with sloped walls, steps, quarter rounds),
+ * random depth of cut and X allowance. For each: no point of a roughing pass is inside the part,
+ * beyond the contour moved by its allowance (within a micron and the rounding of six-decimal
+ * words); each level's cuts cover exactly the Z stretches where the moved contour lies beyond the
+ * level; and an outside program (cycle and G70) compiles and replays in the simulator over the
+ * machine's 2 in bar without a finding (the shipped blanks have no bore for the inside ones). The
+ * contour is taken from the G70 over the same blocks, not from the expansion. X is judged as
+ * {@code side * X}, so that "in" is down on both sides. Seeds print on failure.
  */
 class TypeTwoPropertyTest {
     private static final int PROGRAMS = 60;
     /** Inch: a micron plus the six-decimal rounding of the written words. */
     private static final double TOLERANCE = 0.001 / 25.4 + 2e-6;
 
-    @Test
-    void typeTwoPassesStayAboveTheContourCoverEveryLevelAndSimulateClean() throws Exception {
+    @ParameterizedTest
+    @ValueSource(ints = {1, -1})
+    void typeTwoPassesStayOutOfThePartCoverEveryLevelAndSimulateClean(int side) throws Exception {
         for (int seed = 1; seed <= PROGRAMS; seed++) {
-            Random r = new Random(seed * 6151L);
-            double u = r.nextInt(3) * 0.01;
-            String program = program(r, u);
+            Random r = new Random(seed * 6151L + side);
+            double u = side * r.nextInt(3) * 0.01;
+            String program = program(r, u, side);
             String where = "seed " + seed + "\n" + program;
             CycleExpansionTest.Expanded e = CycleExpansionTest.expand("haas", new StringReader(program));
             assertTrue(e.diagnostics().sorted().stream().noneMatch(d -> d.severity() == Severity.ERROR),
@@ -55,7 +58,10 @@ class TypeTwoPropertyTest {
                     }
                 }
             }
-            List<double[]> shape = CycleRoughingPropertyTest.shape(g70, u, 0, false);
+            List<double[]> shape = new ArrayList<>();
+            for (double[] p : CycleRoughingPropertyTest.shape(g70, u, 0, false)) {
+                shape.add(new double[] {side * p[0], p[1]});
+            }
             Map<Double, List<double[]>> levels = new TreeMap<>();
             for (CheckedBlock b : passes) {
                 boolean finishing = b.frame().sequence().endsWith(last);
@@ -63,6 +69,7 @@ class TypeTwoPropertyTest {
                     List<double[]> pts = new ArrayList<>();
                     CycleRoughingPropertyTest.sample(m, b.frame(), pts, 60);
                     for (double[] xz : pts) {
+                        xz[0] *= side;
                         double floor = bottom(shape, xz[1]);
                         assertTrue(Double.isNaN(floor) || xz[0] >= floor - TOLERANCE, () -> String.format(Locale.ROOT,
                                 "%s%s at X%.5f Z%.5f is below the contour (X%.5f there)", where,
@@ -82,7 +89,9 @@ class TypeTwoPropertyTest {
             for (Map.Entry<Double, List<double[]>> level : levels.entrySet()) {
                 covers(where, shape, level.getKey(), level.getValue());
             }
-            assertEquals("", simulated(program), where);
+            if (side > 0) {
+                assertEquals("", simulated(program), where);
+            }
         }
     }
 
@@ -154,14 +163,14 @@ class TypeTwoPropertyTest {
     }
 
     /**
-     * At X2.1 Z0.1 before the 2 in bar's face; a type II contour (X and Z in its first block)
-     * from X1.0-1.8 at the face, with 4 to 8 moves down Z: straight or sloped into and out of
-     * pockets (a wall at least as long in Z as it is deep, a slope an 80-degree insert can follow
-     * down), steps, quarter rounds; out to X2.2 at the end; G70 to finish.
+     * Outside: at X2.1 Z0.1 before the 2 in bar's face, a type II contour (X and Z in its first
+     * block) from X1.0-1.8 at the face; inside: at X0.4, from X0.7-1.5. Then 4 to 8 moves down Z
+     * between X0.6 and X1.9: straight or sloped into and out of pockets (a slope at least as long
+     * in Z as it is deep), steps, quarter rounds; out past the start's X at the end; G70.
      */
-    private static String program(Random r, double u) {
+    private static String program(Random r, double u, int side) {
         StringBuilder c = new StringBuilder();
-        double x = 1.0 + r.nextInt(9) * 0.1;
+        double x = (side > 0 ? 1.0 : 0.7) + r.nextInt(9) * 0.1;
         double z = 0;
         c.append(String.format(Locale.ROOT, "N10 G00 X%.4f Z0.1\nG01 Z0. F0.005\n", x));
         int moves = 4 + r.nextInt(5);
@@ -186,9 +195,10 @@ class TypeTwoPropertyTest {
                 default -> c.append(String.format(Locale.ROOT, "X%.4f\nZ%.4f\n", x = nx, z -= 0.1 + r.nextInt(3) * 0.1));
             }
         }
-        c.append(String.format(Locale.ROOT, "N20 X2.2\n"));
-        return String.format(Locale.ROOT, "G20 G18 G40 G99\nT0101\nG50 S2000\nG97 S600 M03\nG00 X2.1 Z0.1\n"
-                + "G71 P10 Q20 U%.3f D%.3f F0.01\n%sG70 P10 Q20\nG00 X3. Z1.\nM30\n", u, 0.02 + r.nextInt(4) * 0.02, c);
+        c.append(side > 0 ? "N20 X2.2\n" : "N20 X0.3\n");
+        return String.format(Locale.ROOT, "G20 G18 G40 G99\nT0101\nG50 S2000\nG97 S600 M03\nG00 X%s Z0.1\n"
+                + "G71 P10 Q20 U%.3f D%.3f F0.01\n%sG70 P10 Q20\nG00 X3. Z1.\nM30\n", side > 0 ? "2.1" : "0.4", u,
+                0.02 + r.nextInt(4) * 0.02, c);
     }
 
     /** Compiles and simulates on the haas machine (its 2 in bar); the findings by code. */
