@@ -41,11 +41,12 @@ class CorpusTest {
             "uncleengineer/t24.gcode", List.of("2:E015", "4:E103", "7:E015", "11:E015"),
             // 'P1 X100.0 Z50.0': a P that no function takes
             "misc/O1000_with_G02.nc", List.of("3:E036"),
-            // G71's contour goes in from X1.25 to X1.0 after its first move: not type I (E154);
-            // the G70 carries U and D, words a G70 does not take (E161)
-            "cadekiely/O58214.nc", List.of("18:E154", "31:E161"),
-            // the third G71's contour goes in (X1.1 to X0.8) and out again: a type II pocket (E154)
-            "enier-cnc/round_head_plug_240926.nc", List.of("101:E154"));
+            // G71's contour (X and Z in its first block: type II) is followed; the G70 carries U and
+            // D, words a G70 does not take (E161)
+            "cadekiely/O58214.nc", List.of("31:E161"),
+            // the third G71's contour goes in (X1.1 to X0.8) and out again: a type II pocket, with a Z
+            // allowance W0.01 that would cut into the pocket's first wall (E189, Fanuc's rule)
+            "enier-cnc/round_head_plug_240926.nc", List.of("98:E189"));
 
     /**
      * Programs that check clean; 0100.nc since gcnc runs its macro B variables and expressions

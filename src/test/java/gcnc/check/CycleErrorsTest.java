@@ -52,11 +52,46 @@ class CycleErrorsTest {
     void e154AContourThatGoesBack() {
         assertEquals("8:1:E154", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nG01 Z-15.\nX18.\nN20 Z-40.\nM30\n"));
         assertEquals("8:1:E154", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nG01 Z-15.\nX30. Z-10.\nN20 X48.\nM30\n"));
+        Run typeOne = Run.of("fanuc", START + "G71 P10 Q20 D2. F0.25\nN10 G00 X20.\nG01 Z-15.\nX18.\nN20 Z-40.\nM30\n");
+        assertEquals(true, typeOne.messages().contains("goes back in X here: a type I contour"), typeOne.messages());
+    }
+
+    @Test
+    void e154ATypeTwoContourThatGoesBackAlongZ() {
+        // X and Z in the first block: type II, X may go in and out, Z must not go back
+        assertEquals("", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20. Z2.\nG01 Z-15.\nX30. Z-20.\nX24. Z-30.\n"
+                + "N20 X48.\nM30\n"));
+        assertEquals("8:1:E154", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20. Z2.\nG01 Z-15.\nX30. Z-10.\nN20 X48.\n"
+                + "M30\n"));
+        // an arc that bulges back along Z
+        assertEquals("8:1:E154", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X20. Z2.\nG01 Z-15.\nG02 X30. Z-15. R6.\n"
+                + "N20 G01 X48.\nM30\n"));
+        Run typeTwo = Run.of("fanuc", START + "G71 P10 Q20 D2. F0.25\nN10 G00 X20. Z2.\nG01 Z-15.\nX30. Z-10.\n"
+                + "N20 X48.\nM30\n");
+        assertEquals(true, typeTwo.messages().contains("goes back in Z here: a type II contour"), typeTwo.messages());
+    }
+
+    @Test
+    void e189ATypeTwoPocketWithAZAllowance() {
+        // the contour goes in again at line 8 (X20. Z-15.): W would move both walls along Z
+        assertEquals("5:18:E189", fanuc("G71 P10 Q20 U0.4 W0.1 D2. F0.25\nN10 G00 X30. Z2.\nG01 Z-10.\n"
+                + "X20. Z-15.\nZ-20.\nX40. Z-25.\nN20 X48.\nM30\n"));
+        assertEquals("", fanuc("G71 P10 Q20 U0.4 W0. D2. F0.25\nN10 G00 X30. Z2.\nG01 Z-10.\n"
+                + "X20. Z-15.\nZ-20.\nX40. Z-25.\nN20 X48.\nM30\n"));
+        // no pocket (X only goes out after the first move): W is fine, as in type I
+        assertEquals("", fanuc("G71 P10 Q20 U0.4 W0.1 D2. F0.25\nN10 G00 X20. Z2.\nG01 Z-15.\nN20 X48.\nM30\n"));
+        // G72: the allowance along X (U) is the one a pocket cannot take
+        assertEquals("5:13:E189", fanuc("G72 P10 Q20 U0.4 W0.1 D2. F0.25\nN10 G00 X52. Z-8.\nG01 X40.\n"
+                + "Z-4.\nX30.\nZ-8.\nX20.\nZ0.\nN20 X0.\nM30\n"));
+        Run r = Run.of("fanuc", START + "G71 P10 Q20 U0.4 W0.1 D2. F0.25\nN10 G00 X30. Z2.\nG01 Z-10.\n"
+                + "X20. Z-15.\nZ-20.\nX40. Z-25.\nN20 X48.\nM30\n");
+        assertEquals(true, r.messages().contains("a type II contour with a pocket (line 8) takes no allowance along Z"),
+                r.messages());
     }
 
     @Test
     void e155AFirstMoveAlongTheCuttingAxis() {
-        assertEquals("6:1:E155", fanuc("G71 P10 Q20 D2. F0.25\nN10 G01 X20. Z-1.\nG01 Z-15.\nN20 X48.\nM30\n"));
+        assertEquals("6:1:E155", fanuc("G71 P10 Q20 D2. F0.25\nN10 G01 Z-1.\nG01 X20.\nZ-15.\nN20 X48.\nM30\n"));
     }
 
     @Test
@@ -83,6 +118,13 @@ class CycleErrorsTest {
     }
 
     @Test
+    void e160ATypeTwoContourThatRisesPastTheStartAndComesBack() {
+        // a collar at X56 above the start's X52, then a pocket after it
+        assertEquals("8:1:E160", fanuc("G71 P10 Q20 D2. F0.25\nN10 G00 X40. Z2.\nG01 Z-10.\nX56.\nZ-15.\nX30. Z-20.\n"
+                + "N20 X56.\nM30\n"));
+    }
+
+    @Test
     void e161AWordTheCycleDoesNotTake() {
         assertEquals("5:14:E161", fanuc("G71 U2. R0.5 X3.\nM30\n"));
         assertEquals("10:13:E161", fanuc("G71 P10 Q20 D2. F0.25\n" + CONTOUR + "G70 P10 Q20 U0.1\nM30\n"));
@@ -99,8 +141,11 @@ class CycleErrorsTest {
     }
 
     @Test
-    void e164TypeTwoIsNotSupportedYet() {
-        assertEquals("5:23:E164", fanuc("G71 P10 Q20 D2. F0.25 R1\n" + CONTOUR + "M30\n"));
+    void e164RoughAllowancesAreNotSupportedYet() {
+        assertEquals("5:23:E164", fanuc("G71 P10 Q20 D2. F0.25 I0.1\n" + CONTOUR + "M30\n"));
+        // Haas R1 (type II) is followed; another R is no word of the one-block form
+        assertEquals("", fanuc("G71 P10 Q20 D2. F0.25 R1\n" + CONTOUR + "M30\n"));
+        assertEquals("5:23:E161", fanuc("G71 P10 Q20 D2. F0.25 R2\n" + CONTOUR + "M30\n"));
     }
 
     @Test

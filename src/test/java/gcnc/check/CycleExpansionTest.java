@@ -136,6 +136,24 @@ class CycleExpansionTest {
     }
 
     @org.junit.jupiter.api.Test
+    void aTypeTwoContourThatNeverGoesBackInMakesTheMovesOfTypeOne() throws Exception {
+        // Z2. in the first block (the start's own Z) makes the contour type II; with no pocket its
+        // passes are type I's, move for move, outside (G71), inside (Haas R1) and facing (G72)
+        String head = "G21 G99\nT0101\nG97 S1000 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n";
+        String shape = "G01 Z-15. F0.1\nX30. Z-25.\nG02 X40. Z-30. R5.\nN20 G01 X50.\nG70 P10 Q20\nM30\n";
+        assertEquals(render(expand("fanuc", new java.io.StringReader(head + "N10 G00 X20.\n" + shape))),
+                render(expand("fanuc", new java.io.StringReader(head + "N10 G00 X20. Z2.\n" + shape))));
+        String inside = "G20 G99\nT0101\nG97 S800 M03\nG00 X0.5 Z0.1\nG71 P30 Q40 U-0.02 W0.005 D0.05%s F0.008\n"
+                + "N30 G00 X1.5\nG01 Z0. F0.004\nX1.2 Z-0.15\nZ-1.\nX0.8\nN40 Z-1.5\nM30\n";
+        assertEquals(render(expand("haas", new java.io.StringReader(String.format(inside, "")))),
+                render(expand("haas", new java.io.StringReader(String.format(inside, " R1")))));
+        String facing = "G21 G99\nT0101\nG97 S1000 M03\nG00 X68. Z2.\nG72 W1.5 R0.5\nG72 P50 Q60 U0.2 W0.1 F0.2\n"
+                + "N50 G00 %sZ-6.\nG01 X40. F0.1\nZ-3.\nX20. Z0.\nN60 X0.\nM30\n";
+        assertEquals(render(expand("fanuc", new java.io.StringReader(String.format(facing, "")))),
+                render(expand("fanuc", new java.io.StringReader(String.format(facing, "X68. ")))));
+    }
+
+    @org.junit.jupiter.api.Test
     void underG91TheCycleMakesTheSameMovesAsUnderG90() throws Exception {
         gcnc.machine.MachineProfile b = gcnc.machine.ProfileLoader.load("fanuc", gcnc.tables.TableSource.builtIn(),
                 Run.TABLES, "fanuc-b");

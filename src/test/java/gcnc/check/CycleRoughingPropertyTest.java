@@ -159,7 +159,7 @@ class CycleRoughingPropertyTest {
     }
 
     /** Points along a move, in program terms {X as a diameter, Z}. */
-    private static void sample(Motion m, ProgramFrame f, List<double[]> out, int n) {
+    static void sample(Motion m, ProgramFrame f, List<double[]> out, int n) {
         if (m instanceof Motion.Linear l) {
             for (int i = 0; i <= n; i++) {
                 double t = i / (double) n;
@@ -185,7 +185,7 @@ class CycleRoughingPropertyTest {
      * The G70's points without its approach and return, moved by the allowance, as {depth, cut}
      * ({X, Z}, or {Z, X} when {@code facing}).
      */
-    private static List<double[]> shape(List<double[]> g70, double u, double w, boolean facing) {
+    static List<double[]> shape(List<double[]> g70, double u, double w, boolean facing) {
         List<double[]> s = new ArrayList<>();
         // approach: the first move's samples (401 points); return: the last two moves' (802 points)
         for (int i = 401; i < g70.size() - 802; i++) {

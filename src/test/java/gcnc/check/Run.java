@@ -130,6 +130,15 @@ final class Run {
         return sb.toString();
     }
 
+    /** The findings' English messages, one a line. */
+    String messages() {
+        StringBuilder sb = new StringBuilder();
+        for (Diagnostic d : diagnostics.sorted()) {
+            sb.append(TABLES.messages().render(d.code(), d.args(), gcnc.tables.ErrorMessages.Lang.EN)).append('\n');
+        }
+        return sb.toString();
+    }
+
     CheckedBlock line(int n) {
         for (CheckedBlock b : blocks) {
             if (b.line() == n) {

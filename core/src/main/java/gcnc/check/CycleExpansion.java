@@ -74,9 +74,24 @@ final class CycleExpansion {
     private record Stored(List<RawBlock> blocks, Axes axes, int depthSign) {
     }
 
-    /** Which way the contour lies from its start along the depth axis (+1: the start is on the + side). */
+    /**
+     * Which way the contour lies from its start along the depth axis (+1: the start is on the +
+     * side): where its first move goes, or (a type II first move along the cutting axis only) where
+     * the contour reaches farthest from the start's level.
+     */
     private static int signs(Axes axes, Contour c) {
-        return (int) Math.signum(axes.depth(c.start()) - axes.depth(c.shapeStart()));
+        int first = (int) Math.signum(axes.depth(c.start()) - axes.depth(c.shapeStart()));
+        if (first != 0) {
+            return first;
+        }
+        double a = axes.depth(c.start());
+        double below = 0;
+        double above = 0;
+        for (Contour.Piece p : c.shape()) {
+            below = Math.max(below, a - axes.depth(p.to()));
+            above = Math.max(above, axes.depth(p.to()) - a);
+        }
+        return below >= above ? 1 : -1;
     }
 
     CycleExpansion(Checker host) {

@@ -6,6 +6,7 @@ import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Fault;
 import gcnc.check.cycle.MoveWriter;
+import gcnc.check.cycle.PocketRoughing;
 import gcnc.check.cycle.Roughing;
 import gcnc.check.geom.Coordinates;
 import gcnc.diag.Code;
@@ -56,13 +57,36 @@ final class StockRemoval {
         if (settings == null) {
             return List.of();
         }
-        Roughing.Outcome o = new Roughing(axes, settings).plan(contour);
+        Roughing.Outcome o = typeTwo(contour, blocks) ? new PocketRoughing(axes, settings).plan(contour)
+                : new Roughing(axes, settings).plan(contour);
         if (o instanceof Fault f) {
             report(f, blocks);
             return List.of();
         }
         Roughing.Plan plan = (Roughing.Plan) o;
         return CycleExpansion.write(host, call, line, plan.moves(), plan.passes(), start);
+    }
+
+    /**
+     * Type II (pockets): Haas {@code R1} on the cycle, or the block of the contour's first move
+     * names both axes (X or U, and Z or W; {@code W0} counts), as Fanuc and Haas select it.
+     */
+    private boolean typeTwo(Contour contour, List<RawBlock> blocks) {
+        if (call.typeTwo()) {
+            return true;
+        }
+        for (RawBlock b : blocks) {
+            if (b.line() == contour.approach().line()) {
+                boolean x = false;
+                boolean z = false;
+                for (Word w : b.words()) {
+                    x |= w.letter() == Letter.X || w.letter() == Letter.U;
+                    z |= w.letter() == Letter.Z || w.letter() == Letter.W;
+                }
+                return x && z;
+            }
+        }
+        return false;
     }
 
     /** The cycle's allowances, depth and retract in counts; null after E156, E157 or E158. */

@@ -213,7 +213,7 @@ public enum Code {
     E152_CONTOUR_NOT_NEXT(152),
     /** Checker: no N(Q) within the look-ahead limit after a G71/G72. */
     E153_CONTOUR_TOO_LONG(153),
-    /** Checker: a type I contour goes back along the axis it must follow one way. */
+    /** Checker: a contour goes back along an axis it must follow one way (type I: both; type II: the cutting axis). */
     E154_CONTOUR_NOT_MONOTONIC(154),
     /** Checker: the contour's first move goes along the cutting axis (type I: the depth axis only). */
     E155_CONTOUR_FIRST_MOVE(155),
@@ -233,7 +233,7 @@ public enum Code {
     E162_CONTOUR_WORD(162),
     /** Checker: a contour with no move after its first. */
     E163_CONTOUR_EMPTY(163),
-    /** Checker: a cycle option gcnc cannot follow yet (type II, rough allowances I/K). */
+    /** Checker: a cycle option gcnc cannot follow yet (the rough allowances I/K). */
     E164_CYCLE_OPTION_NOT_SUPPORTED(164),
     /** Checker (note): where a finding inside an expanded cycle comes from. */
     E165_CYCLE_PASS(165),
@@ -283,6 +283,8 @@ public enum Code {
     E187_DRILL_R_PLANE(187),
     /** Checker: a word of a peck or drilling cycle that gcnc cannot follow yet (L repeats). */
     E188_PECK_OPTION_NOT_SUPPORTED(188),
+    /** Checker: a type II G71/G72 contour with a pocket and a finishing allowance along the cutting axis. */
+    E189_TYPE_TWO_CUT_ALLOWANCE(189),
     /** Checker: a thread (G32/G33, G92/G78, G76) on a machine whose profile has no spindle encoder. */
     E190_NO_SPINDLE_ENCODER(190),
     /** Checker: a thread cut under G96 constant surface speed (threading needs G97). */

@@ -18,8 +18,8 @@ import java.util.function.IntFunction;
  * <ul>
  * <li>Fanuc two-block form, first block: {@code G71 U(depth) R(retract)}, {@code G72 W(depth)
  *     R(retract)}; second block {@code G71 P Q U(X allowance, diameter) W(Z allowance) F S};</li>
- * <li>Haas one-block form: {@code G71 P Q U W D(depth) F} (R1, type II, and the rough allowances I
- *     and K are E164);</li>
+ * <li>Haas one-block form: {@code G71 P Q U W D(depth) F}, {@code R1} for type II (the Haas YASNAC
+ *     form; the rough allowances I and K are E164);</li>
  * <li>G73 pattern repeat: Fanuc {@code G73 U(X relief, radius) W(Z relief) R(passes)} then
  *     {@code G73 P Q U W F}; Haas {@code G73 P Q U W I(X relief) K(Z relief) D(passes) F};</li>
  * <li>{@code G70 P Q} (F and S allowed, as Haas programs write them).</li>
@@ -55,6 +55,11 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
 
     public long label(Letter l) {
         return values.get(l).longValue();
+    }
+
+    /** Haas {@code R1} on a G71/G72 with its contour: type II roughing whatever the contour's first block. */
+    public boolean typeTwo() {
+        return !firstOfTwo() && has(Letter.R) && NumberText.decimal(words.get(Letter.R).number()) == 1;
     }
 
     /** The cycle's name as written ("G71"). */
@@ -143,11 +148,11 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
                 ok = l == depth || l == Letter.R || pattern && (l == Letter.U || l == Letter.W);
             } else if (pattern) {
                 ok = l != Letter.R;
-            } else if (l == Letter.I || l == Letter.K || l == Letter.R && NumberText.decimal(w.number()) == 1) {
+            } else if (l == Letter.I || l == Letter.K) {
                 out.error(Code.E164_CYCLE_OPTION_NOT_SUPPORTED, w.span(), name(), w);
                 return false;
             } else {
-                ok = l != Letter.R;
+                ok = l != Letter.R || NumberText.decimal(w.number()) == 1;
             }
             if (!ok) {
                 out.error(Code.E161_CYCLE_WORD, w.span(), name(), w);

@@ -129,7 +129,7 @@ public final class Roughing {
             double fd = axes.depth(p.from());
             double td = axes.depth(p.to());
             if ((td - fd) * depthSign < -eps || e[0] < Math.min(fd, td) - eps || e[1] > Math.max(fd, td) + eps) {
-                return Fault.atContour(Code.E154_CONTOUR_NOT_MONOTONIC, p.line(), axes.depthName());
+                return Fault.atContour(Code.E154_CONTOUR_NOT_MONOTONIC, p.line(), axes.depthName(), "I");
             }
             double innermost = depthSign > 0 ? e[0] : e[1];
             if ((innermost - startDepth) * depthSign >= -eps) {
@@ -138,7 +138,7 @@ public final class Roughing {
             double fc = axes.cut(p.from());
             double tc = axes.cut(p.to());
             if ((tc - fc) * cutSign > eps || e[2] < Math.min(fc, tc) - eps || e[3] > Math.max(fc, tc) + eps) {
-                return Fault.atContour(Code.E154_CONTOUR_NOT_MONOTONIC, p.line(), axes.cutName());
+                return Fault.atContour(Code.E154_CONTOUR_NOT_MONOTONIC, p.line(), axes.cutName(), "I");
             }
         }
         return null;
