@@ -1,5 +1,7 @@
 package gcnc.check;
 
+import gcnc.machine.MachineProfile;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
@@ -87,6 +89,23 @@ class CycleErrorsTest {
                 + "X20. Z-15.\nZ-20.\nX40. Z-25.\nN20 X48.\nM30\n");
         assertEquals(true, r.messages().contains("a type II contour with a pocket (line 8) takes no allowance along Z"),
                 r.messages());
+    }
+
+    /**
+     * A Haas leaves a type II pocket's Z allowance on both its walls ("Troughs"): the same contour
+     * is followed there (golden cycles/type2-walls.haas), unless the pocket is narrower than twice
+     * the allowance.
+     */
+    @Test
+    void e189OnAHaasOnlyWhenThePocketIsTooNarrowForItsWalls() {
+        String pocket = "G71 P10 Q20 U0.4 W0.1 D2. F0.25\nN10 G00 X30. Z2.\nG01 Z-10.\nX20. Z-15.\nZ-20.\nX40. Z-25.\n"
+                + "N20 X48.\nM30\n";
+        MachineProfile haasRules = Run.profileWithControl("fanuc", "haas");
+        assertEquals("", Run.of(haasRules, START + pocket, Checker.ERROR_CAP).errors());
+        Run narrow = Run.of(haasRules, START + pocket.replace("W0.1", "W3."), Checker.ERROR_CAP);
+        assertEquals("5:18:E189", narrow.errors());
+        assertEquals(true, narrow.messages().contains("a type II contour with a pocket (line 8) is too narrow for the"
+                + " allowance along Z on both its walls"), narrow.messages());
     }
 
     @Test

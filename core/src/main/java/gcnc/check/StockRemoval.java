@@ -122,7 +122,7 @@ final class StockRemoval {
         double perMmDepth = axes == Axes.TURNING ? p.x().countsPerMm() : p.z().countsPerMm();
         double perMmCut = axes == Axes.TURNING ? p.z().countsPerMm() : p.x().countsPerMm();
         return new Roughing.Settings(dx, dz, depthCounts, retractMm * perMmDepth, retractMm * perMmCut,
-                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES);
+                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES, p.control().pocketWalls());
     }
 
     /** Reports why a cycle cannot be expanded, where its fault says. */

@@ -60,7 +60,11 @@ public enum Phrase {
     /** E182: G83 J without I and K. */
     DRILL_PECK_J,
     /** E182: G82 without P. */
-    DRILL_DWELL;
+    DRILL_DWELL,
+    /** E189: an allowance along the cut with a pocket, where the control moves the contour as a whole ({0} axis, {1} word). */
+    POCKET_UNIFORM,
+    /** E189: a pocket too narrow for the allowance on both its walls ({0}: the axis). */
+    POCKET_TOO_NARROW;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

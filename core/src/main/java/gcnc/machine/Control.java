@@ -39,13 +39,16 @@ import java.util.TreeMap;
  * @param peckRetractMm     the chip-breaking retract after each peck of G74/G75 when the program
  *                          gives no first block R, and the clearance above the last peck of a
  *                          G83 (Haas Setting 22, Fanuc parameter 5139), mm; NaN when not set
+ * @param pocketWalls       a type II G71/G72 leaves its allowance along the cutting axis on every
+ *                          wall of a pocket (Haas, "Troughs"); else such an allowance with a pocket
+ *                          is E189 (Fanuc: W must be 0)
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
-                      double peckRetractMm) {
+                      double peckRetractMm, boolean pocketWalls) {
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
 

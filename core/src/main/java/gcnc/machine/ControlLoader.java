@@ -24,7 +24,7 @@ public final class ControlLoader {
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
-            "cycle.peck_retract_mm");
+            "cycle.peck_retract_mm", "cycle.pocket_allowance");
 
     private ControlLoader() {
     }
@@ -92,7 +92,8 @@ public final class ControlLoader {
                 f.choice("m.unlisted", "error", "error", "builder").equals("builder"),
                 retract(f), calls(f),
                 f.choice("macros", "none", "none", "fanuc-b").equals("fanuc-b"),
-                length(f, "cycle.peck_retract_mm"));
+                length(f, "cycle.peck_retract_mm"),
+                f.choice("cycle.pocket_allowance", "uniform", "uniform", "walls").equals("walls"));
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */

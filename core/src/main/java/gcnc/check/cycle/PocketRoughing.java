@@ -1,6 +1,7 @@
 package gcnc.check.cycle;
 
 import gcnc.diag.Code;
+import gcnc.diag.Phrase;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import java.util.ArrayList;
@@ -96,11 +97,14 @@ public final class PocketRoughing {
         if (fault != null) {
             return fault;
         }
-        List<Contour.Piece> moved = new ArrayList<>(c.shape().size());
+        List<Contour.Piece> moved = s.pocketWalls() && pocketLine(c, f) > 0 ? onWalls(c, f) : uniform(c);
+        if (moved == null) {
+            Letter cutWord = axes == Axes.TURNING ? Letter.W : Letter.U;
+            return Fault.atWord(Code.E189_TYPE_TWO_CUT_ALLOWANCE, cutWord, Integer.toString(pocketLine(c, f)),
+                    Phrase.POCKET_TOO_NARROW.with(axes.cutName()));
+        }
         double deepest = 0;
-        for (Contour.Piece p : c.shape()) {
-            Contour.Piece m = p.shifted(s.dx(), s.dz());
-            moved.add(m);
+        for (Contour.Piece m : moved) {
             deepest = Math.max(deepest, f.extent(m)[1]);
         }
         if (deepest <= s.eps()) {
@@ -110,7 +114,7 @@ public final class PocketRoughing {
         if (levels > s.maxPasses()) {
             return tooMany(levels + 1);
         }
-        Point shapeStart = c.shapeStart().plus(s.dx(), s.dz());
+        Point shapeStart = moved.get(0).from();
         List<Span> order = new ArrayList<>();
         fault = spans(f, moved, shapeStart, levels, order);
         if (fault != null) {
@@ -186,11 +190,106 @@ public final class PocketRoughing {
                 pocket = p.line();
             }
         }
-        if (pocket > 0 && Math.abs(axes.cut(shift)) > eps) {
-            return Fault.atWord(Code.E189_TYPE_TWO_CUT_ALLOWANCE, cutWord, Integer.toString(pocket), axes.cutName(),
-                    cutWord.name());
+        if (pocket > 0 && Math.abs(axes.cut(shift)) > eps && !s.pocketWalls()) {
+            return Fault.atWord(Code.E189_TYPE_TWO_CUT_ALLOWANCE, cutWord, Integer.toString(pocket),
+                    Phrase.POCKET_UNIFORM.with(axes.cutName(), cutWord.name()));
         }
         return null;
+    }
+
+    /** The contour moved by its allowances as a whole (Fanuc; any contour without a pocket). */
+    private List<Contour.Piece> uniform(Contour c) {
+        List<Contour.Piece> moved = new ArrayList<>(c.shape().size());
+        for (Contour.Piece p : c.shape()) {
+            moved.add(p.shifted(s.dx(), s.dz()));
+        }
+        return moved;
+    }
+
+    /**
+     * The contour moved by its allowances the Haas way ("Troughs"): the depth allowance everywhere,
+     * the one along the cut away from every wall, so that it stays on both walls of a pocket. A
+     * piece going back out (a pocket's far wall, and every wall of a type I contour) moves as the
+     * allowance says, a piece going in (a pocket's near wall) the other way along the cut; a piece
+     * along the cut (a pocket's floor, a ridge's top) is stretched or shortened between its
+     * neighbours, and a ridge without a top gets one. Without an allowance along the cut this is
+     * {@link #uniform}. Null when a pocket is too narrow for its two walls' allowance, or its walls
+     * meet without a floor between them, or an arc runs along the cut.
+     */
+    private List<Contour.Piece> onWalls(Contour c, Frame f) {
+        double eps = s.eps();
+        double depthShift = axes.depth(new Point(s.dx(), s.dz()));
+        double cutShift = axes.cut(new Point(s.dx(), s.dz()));
+        if (Math.abs(cutShift) <= eps) {
+            return uniform(c);
+        }
+        List<Contour.Piece> shape = c.shape();
+        int n = shape.size();
+        int[] way = new int[n];
+        for (int i = 0; i < n; i++) {
+            double du = f.u(shape.get(i).to()) - f.u(shape.get(i).from());
+            way[i] = du > eps ? 1 : du < -eps ? -1 : 0;
+            if (way[i] == 0 && !(shape.get(i).motion() instanceof gcnc.ir.Motion.Linear)) {
+                return null;
+            }
+        }
+        List<Contour.Piece> moved = new ArrayList<>(n + 2);
+        Point at = c.shapeStart().plus(axes.point(depthShift, 0).x(), axes.point(depthShift, 0).z());
+        for (int i = 0; i < n; i++) {
+            Contour.Piece p = shape.get(i);
+            if (way[i] == 0) {
+                Point to = p.to().plus(axes.point(depthShift, 0).x(), axes.point(depthShift, 0).z());
+                if (i + 1 < n && way[i + 1] != 0) {
+                    to = start(shape.get(i + 1), way[i + 1], depthShift, cutShift);
+                }
+                if (f.u(to) > eps && f.v(to) < f.v(at) - eps) {
+                    return null; // the floor between the walls' allowances is gone: a trough too narrow
+                }
+                moved.add(line(p, at, to));
+                at = to;
+                continue;
+            }
+            Point from = start(p, way[i], depthShift, cutShift);
+            if (from.distanceTo(at) > eps) {
+                if (Math.abs(f.u(from) - f.u(at)) > eps || f.v(from) < f.v(at) - eps) {
+                    return null; // a wall straight after another the other way: no floor to stretch
+                }
+                moved.add(line(p, at, from)); // the top of a ridge, widened by its two walls' allowance
+            }
+            Contour.Piece m = p.shifted(axes.point(depthShift, way[i] < 0 ? cutShift : -cutShift).x(),
+                    axes.point(depthShift, way[i] < 0 ? cutShift : -cutShift).z());
+            moved.add(m);
+            at = m.to();
+        }
+        return moved;
+    }
+
+    /** Where a wall going in ({@code way} 1) or out (-1) starts once moved. */
+    private Point start(Contour.Piece p, int way, double depthShift, double cutShift) {
+        Point d = axes.point(depthShift, way < 0 ? cutShift : -cutShift);
+        return p.from().plus(d.x(), d.z());
+    }
+
+    /** A straight piece from {@code from} to {@code to}, fed as {@code like} is, at its line. */
+    private static Contour.Piece line(Contour.Piece like, Point from, Point to) {
+        gcnc.ir.Motion m = like.motion();
+        gcnc.ir.Feed feed = m instanceof gcnc.ir.Motion.Linear l ? l.feed() : ((gcnc.ir.Motion.Arc) m).feed();
+        boolean rapid = m instanceof gcnc.ir.Motion.Linear l && l.rapid();
+        return new Contour.Piece(new gcnc.ir.Motion.Linear(rapid, from, to, rapid ? null : feed), like.line());
+    }
+
+    /** The line of the contour's first pocket (where it first goes back in), or 0 when it has none. */
+    private int pocketLine(Contour c, Frame f) {
+        double eps = s.eps();
+        for (Contour.Piece p : c.shape()) {
+            double[] e = f.extent(p);
+            double fu = f.u(p.from());
+            double tu = f.u(p.to());
+            if (tu > fu + eps || e[1] > Math.max(fu, tu) + eps) {
+                return p.line();
+            }
+        }
+        return 0;
     }
 
     /** The spans of every level, in the order they are cut, into {@code order}; a fault, or null. */

@@ -38,7 +38,7 @@ public final class Roughing {
      * passes to expand.
      */
     public record Settings(double dx, double dz, double depth, double retractDepth, double retractCut, double eps,
-                           int maxPasses) {
+                           int maxPasses, boolean pocketWalls) {
     }
 
     private final Axes axes;
