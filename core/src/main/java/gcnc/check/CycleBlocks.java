@@ -16,12 +16,50 @@ import java.util.Optional;
 import java.util.function.Predicate;
 
 /**
- * What the peck and drilling cycles (G74, G75, G81-G83) share: the words of other functions taken
- * out of the cycle block and made a block of their own, the end point resolved like a move's,
- * and the moves written as blocks at the cycle's line and checked one by one, each with its pass.
+ * What the expanded cycles (G74, G75, G81-G83, G90/G94, G32/G92) share: the G function a word
+ * names, whether a later block makes a modal cycle run again, the words of other functions taken
+ * out of the cycle block and made a block of their own, the end point resolved like a move's, and
+ * the moves written as blocks at the cycle's line and checked one by one, each with its pass.
  */
 final class CycleBlocks {
     private CycleBlocks() {
+    }
+
+    /** The G function a G word names in the control, or null (another letter, no number, no such G). */
+    static gcnc.machine.GFunction function(Checker host, Word w) {
+        if (w.letter() != Letter.G || w.number().isEmpty() || w.code() < 0 || w.code() > 999) {
+            return null;
+        }
+        return host.functions().g((int) w.code());
+    }
+
+    /**
+     * Whether a block makes the modal cycle in force run again: it has an axis word (X, U, Z or W),
+     * and no G that {@code ends} the cycle nor a one-shot G (group 0: G04 U1., G28 U0, G50 X), whose
+     * words those would be.
+     */
+    static boolean repeats(Checker host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
+        boolean axis = false;
+        for (Word w : b.words()) {
+            gcnc.machine.GFunction f = function(host, w);
+            if (f != null && (ends.test(f) || f.group() == 0)) {
+                return false;
+            }
+            Letter l = w.letter();
+            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
+        }
+        return axis;
+    }
+
+    /** Whether a G of the block ends the modal cycle in force, as {@code ends} says. */
+    static boolean ends(Checker host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
+        for (Word w : b.words()) {
+            gcnc.machine.GFunction f = function(host, w);
+            if (f != null && ends.test(f)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The block's N, F, S, T, M and non-cycle G words (when its cycle words could not be read). */

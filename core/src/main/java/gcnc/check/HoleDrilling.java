@@ -54,40 +54,23 @@ final class HoleDrilling {
     }
 
     private GFunction function(Word w) {
-        if (w.letter() != Letter.G || w.number().isEmpty() || w.code() < 0 || w.code() > 999) {
-            return null;
-        }
-        return host.functions().g((int) w.code());
+        return CycleBlocks.function(host, w);
+    }
+
+    /** G80 (a G of the cycle's group), a motion G or a single-pass cycle ends the drilling cycle. */
+    private boolean ends(GFunction f) {
+        return f.group() == group || f.role().motion() || f.role().singleCycle();
     }
 
     /** Whether the block drills again with the cycle in force: an axis word and no G that ends it or owns the words. */
     boolean repeats(RawBlock b) {
-        if (kind == null) {
-            return false;
-        }
-        boolean axis = false;
-        for (Word w : b.words()) {
-            GFunction f = function(w);
-            if (f != null && (f.group() == group || f.group() == 0 || f.role().motion() || f.role().singleCycle())) {
-                return false;
-            }
-            Letter l = w.letter();
-            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
-        }
-        return axis;
+        return kind != null && CycleBlocks.repeats(host, b, this::ends);
     }
 
-    /** An ordinary block: G80 (a G of the cycle's group) or a motion G ends the cycle. */
+    /** An ordinary block: G80, a motion G or a single-pass cycle ends the cycle. */
     void note(RawBlock b) {
-        if (kind == null) {
-            return;
-        }
-        for (Word w : b.words()) {
-            GFunction f = function(w);
-            if (f != null && (f.group() == group || f.role().motion() || f.role().singleCycle())) {
-                kind = null;
-                return;
-            }
+        if (kind != null && CycleBlocks.ends(host, b, this::ends)) {
+            kind = null;
         }
     }
 

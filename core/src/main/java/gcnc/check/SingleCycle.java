@@ -41,44 +41,18 @@ final class SingleCycle {
     }
 
     private GFunction function(Word w) {
-        if (w.letter() != Letter.G || w.number().isEmpty()) {
-            return null;
-        }
-        long n = w.code();
-        return n < 0 || n > 999 ? null : host.functions().g((int) n);
+        return CycleBlocks.function(host, w);
     }
 
-    /**
-     * Whether the block makes the cycle in force again: an axis word, no G of its group and no
-     * one-shot G (whose words those are: G04 U1., G28 U0, G50 X).
-     */
+    /** Whether the block makes the cycle in force again: an axis word, no G of its group and no one-shot G. */
     boolean repeats(RawBlock b) {
-        if (kind == null) {
-            return false;
-        }
-        boolean axis = false;
-        for (Word w : b.words()) {
-            GFunction f = function(w);
-            if (f != null && (f.group() == group || f.group() == 0)) {
-                return false;
-            }
-            Letter l = w.letter();
-            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
-        }
-        return axis;
+        return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
     }
 
     /** An ordinary block: a G of the cycle's group ends the cycle. */
     void note(RawBlock b) {
-        if (kind == null) {
-            return;
-        }
-        for (Word w : b.words()) {
-            GFunction f = function(w);
-            if (f != null && f.group() == group) {
-                kind = null;
-                return;
-            }
+        if (kind != null && CycleBlocks.ends(host, b, f -> f.group() == group)) {
+            kind = null;
         }
     }
 

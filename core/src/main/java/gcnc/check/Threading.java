@@ -82,28 +82,12 @@ final class Threading {
     }
 
     private GFunction function(Word w) {
-        if (w.letter() != Letter.G || w.number().isEmpty()) {
-            return null;
-        }
-        long n = w.code();
-        return n < 0 || n > 999 ? null : host.functions().g((int) n);
+        return CycleBlocks.function(host, w);
     }
 
     /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
     boolean repeats(RawBlock b) {
-        if (kind == null) {
-            return false;
-        }
-        boolean axis = false;
-        for (Word w : b.words()) {
-            GFunction f = function(w);
-            if (f != null && (f.group() == group || f.group() == 0)) {
-                return false;
-            }
-            Letter l = w.letter();
-            axis |= l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W;
-        }
-        return axis;
+        return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
     }
 
     /**
