@@ -185,4 +185,31 @@ class CommandsTest {
             assertEquals(null, Main.onlyCommand(args), String.join(" ", args) + " needs every command");
         }
     }
+
+    /** A folder is every part program in it (any case, sub-folders too), and several end with a total. */
+    @Test
+    void aFolderIsItsProgramsAndSeveralEndWithATotal() throws IOException {
+        Path dir = Files.createTempDirectory("gcnc-folder");
+        Files.createDirectories(dir.resolve("ops"));
+        String clean = Files.readString(Path.of("samples/home.nc"));
+        Files.writeString(dir.resolve("A.NC"), clean);
+        Files.writeString(dir.resolve("ops/b.tap"), clean.replace("M30", "G01 X10. F1.\nM30"));
+        Files.writeString(dir.resolve("notes.txt"), "not a program");
+        CliTest.Run r = CliTest.gcnc("check", dir.toString());
+        assertEquals(1, r.status(), r.err());
+        assertTrue(r.out().contains(dir.resolve("A.NC") + ": "), r.out());
+        assertTrue(r.err().contains(dir.resolve("ops/b.tap") + ":"), r.err());
+        assertFalse((r.out() + r.err()).contains("notes.txt"), r.out());
+        String[] lines = r.out().strip().split("\n");
+        assertTrue(lines[lines.length - 1].matches("total: 2 programs, \\d+ blocks, \\d+ errors?"), lines[lines.length - 1]);
+        Path empty = Files.createTempDirectory("gcnc-empty");
+        CliTest.Run none = CliTest.gcnc("check", empty.toString());
+        assertEquals(2, none.status());
+        assertTrue(none.err().contains(empty + ":1:1: error[E500]: cannot check: no part program (.nc, .ngc, .tap) in it"),
+                none.err());
+        CliTest.Run es = CliTest.gcnc("--lang", "es", "check", empty.toString(), dir.resolve("missing.nc").toString());
+        assertTrue(es.err().contains("error[E500]: no se puede comprobar: no hay ningún programa pieza"), es.err());
+        assertTrue(es.err().contains("error[E500]: no se puede leer: no existe el archivo o la carpeta"), es.err());
+        assertTrue(es.out().strip().endsWith("total: 0 programas, 0 bloques, 2 errores"), es.out());
+    }
 }

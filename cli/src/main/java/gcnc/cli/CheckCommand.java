@@ -1,10 +1,13 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
+import gcnc.ProgramFiles;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Reader;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
@@ -14,7 +17,9 @@ import picocli.CommandLine.Parameters;
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:no errors", "1:a program has errors", "2:usage, unreadable file, broken table or profile"})
 final class CheckCommand extends RunCommand {
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "G-code programs to check; - reads standard input.")
+    @Parameters(arity = "1..*", paramLabel = "FILE",
+            description = "G-code programs to check; a folder: every .nc, .ngc and .tap file in it (any case,"
+                    + " sub-folders too); - reads standard input.")
     List<Path> files;
 
     @Override
@@ -25,7 +30,30 @@ final class CheckCommand extends RunCommand {
                     "- names standard input, which can be read once: give it once");
         }
         int status = ExitCode.CLEAN;
+        int faults = 0;
+        List<Path> programs = new ArrayList<>();
         for (Path file : files) {
+            if (SourceFiles.isStdin(file) || !Files.isDirectory(file)) {
+                programs.add(file);
+                continue;
+            }
+            try {
+                List<Path> found = ProgramFiles.in(file, ProgramFiles.EXTENSIONS);
+                if (found.isEmpty()) {
+                    faults++;
+                    status = reporter.ioFault(SourceFiles.display(file), gcnc.diag.Phrase.IO_CANNOT_CHECK,
+                            new IOException(gcnc.diag.Phrase.IO_NO_PROGRAM.with("." + String.join(", .", ProgramFiles.EXTENSIONS))));
+                }
+                programs.addAll(found);
+            } catch (IOException e) {
+                faults++;
+                status = reporter.ioFault(SourceFiles.display(file), gcnc.diag.Phrase.IO_CANNOT_READ, e);
+            }
+        }
+        long blocks = 0;
+        int read = 0;
+        long errorsInAll = 0;
+        for (Path file : programs) {
             String name = SourceFiles.display(file);
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 Compiler.Result r = setup.session().withPrograms(SourceFiles.programsFolder(file)).check(in);
@@ -33,12 +61,23 @@ final class CheckCommand extends RunCommand {
                 Phrases say = reporter.phrases();
                 reporter.say(say.get("check.summary", name, say.count(r.blocks(), "block"),
                         errors == 0 ? say.get("no_errors") : say.count(errors, "error")));
+                blocks += r.blocks();
+                errorsInAll += errors;
+                read++;
                 if (errors > 0) {
                     status = Math.max(status, ExitCode.PROGRAM_ERRORS);
                 }
             } catch (IOException e) {
-                status = reporter.ioFault(name, "cannot read", e);
+                faults++;
+                status = reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
             }
+        }
+        if (programs.size() + faults > 1) {
+            // every program read, and every file or folder that could not be (an error each)
+            long errors = errorsInAll + faults;
+            Phrases say = reporter.phrases();
+            reporter.say(say.get("check.total", say.count(read, "program"), say.count(blocks, "block"),
+                    errors == 0 ? say.get("no_errors") : say.count(errors, "error")));
         }
         return status;
     }

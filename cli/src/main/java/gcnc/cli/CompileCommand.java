@@ -62,7 +62,7 @@ final class CompileCommand extends RunCommand {
             outputs = toStdout ? DmcOutputs.toStream(streams().out())
                     : DmcOutputs.open(SourceFiles.fileOf(file), target, !sourceMap);
         } catch (DmcOutputs.Failed e) {
-            return reporter.ioFault(e.path(), "cannot write", e.problem());
+            return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         }
         try (outputs) {
             SourceMap mapper = new SourceMap(outputs::mapLine);
@@ -72,7 +72,7 @@ final class CompileCommand extends RunCommand {
                 r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
                         mapper.wrap(line -> outputs.dmcLine(line.text())));
             } catch (IOException e) {
-                return reporter.ioFault(name, "cannot read", e);
+                return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
             }
             reporter.report(name, r.diagnostics());
             if (!r.ok()) {
@@ -84,7 +84,7 @@ final class CompileCommand extends RunCommand {
             try {
                 outputs.commit();
             } catch (IOException e) {
-                return reporter.ioFault(targetName, "cannot write", e);
+                return reporter.ioFault(targetName, gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
             }
             Phrases say = reporter.phrases();
             reporter.say(say.get("compile.written", name, say.count(r.blocks(), "block"), targetName,

@@ -122,11 +122,11 @@ final class Reporter {
     }
 
     /** A file that cannot be read or written, or an output gcnc refuses: at its first line; returns status 2. */
-    int ioFault(String path, String what, IOException e) {
+    int ioFault(String path, gcnc.diag.Phrase what, IOException e) {
         if (e instanceof gcnc.output.AtomicOutput.Refused r) {
             report(path, new Diagnostic(r.code(), gcnc.diag.Severity.ERROR, Span.of(1, 1), r.args()));
         } else {
-            report(path, Diagnostic.error(Code.E500_IO, Span.of(1, 1), what + ": " + SourceFiles.reason(e)));
+            report(path, Diagnostic.error(Code.E500_IO, Span.of(1, 1), what.arg(), gcnc.diag.Phrase.reason(e)));
         }
         return ExitCode.USAGE;
     }

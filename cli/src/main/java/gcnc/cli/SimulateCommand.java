@@ -78,7 +78,7 @@ final class SimulateCommand extends RunCommand {
             try {
                 AtomicOutput.refuseInput(SourceFiles.fileOf(file), svg);
             } catch (AtomicOutput.Refused e) {
-                return reporter.ioFault(svg.toString(), "cannot write", e);
+                return reporter.ioFault(svg.toString(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
             }
         }
         Diagnostics diags;
@@ -102,7 +102,7 @@ final class SimulateCommand extends RunCommand {
                 report = r.simulation();
             }
         } catch (IOException e) {
-            return reporter.ioFault(name, "cannot read", e);
+            return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
         out.flush();
         reporter.report(shown, diags);
@@ -116,7 +116,7 @@ final class SimulateCommand extends RunCommand {
                     o.commit();
                     reporter.say(reporter.phrases().get("simulate.drawing", svgToStdout ? "<stdout>" : svg));
                 } catch (IOException e) {
-                    return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), "cannot write", e);
+                    return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
                 }
             }
         } else {

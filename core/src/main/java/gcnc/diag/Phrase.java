@@ -64,7 +64,19 @@ public enum Phrase {
     /** E189: an allowance along the cut with a pocket, where the control moves the contour as a whole ({0} axis, {1} word). */
     POCKET_UNIFORM,
     /** E189: a pocket too narrow for the allowance on both its walls ({0}: the axis). */
-    POCKET_TOO_NARROW;
+    POCKET_TOO_NARROW,
+    /** E500: what could not be done with a file. */
+    IO_CANNOT_READ,
+    IO_CANNOT_WRITE,
+    IO_CANNOT_CHECK,
+    IO_CANNOT_READ_OR_WRITE,
+    /** E500: why, where the system's reason is one of these. */
+    IO_NO_SUCH_FILE,
+    IO_PERMISSION_DENIED,
+    IO_IS_DIRECTORY,
+    IO_NO_SPACE,
+    /** E500: a folder given to check with no part program in it ({0}: the extensions). */
+    IO_NO_PROGRAM;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';
@@ -81,6 +93,28 @@ public enum Phrase {
     /** The phrase without arguments, as one diagnostic argument. */
     public String arg() {
         return with();
+    }
+
+    /**
+     * Why a file could not be read or written, as an argument of E500: a phrase for the usual
+     * reasons (so that it reads in the user's language), else the system's own words.
+     */
+    public static String reason(java.io.IOException e) {
+        if (e instanceof java.nio.file.NoSuchFileException) {
+            return IO_NO_SUCH_FILE.arg();
+        }
+        if (e instanceof java.nio.file.AccessDeniedException) {
+            return IO_PERMISSION_DENIED.arg();
+        }
+        String text = e instanceof java.nio.file.FileSystemException f && f.getReason() != null ? f.getReason()
+                : e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        if (text.equalsIgnoreCase("Is a directory")) {
+            return IO_IS_DIRECTORY.arg();
+        }
+        if (text.toLowerCase(java.util.Locale.ROOT).contains("no space left on device")) {
+            return IO_NO_SPACE.arg();
+        }
+        return text;
     }
 
     /** The phrase a diagnostic argument holds, or null when it holds a plain value. */

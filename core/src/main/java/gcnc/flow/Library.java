@@ -130,7 +130,8 @@ final class Library {
                 }
             }
         } catch (IOException e) {
-            diags.report(Diagnostic.error(Code.E500_IO, Span.of(1, 1), shown + ": " + e.getMessage())
+            diags.report(Diagnostic.error(Code.E500_IO, Span.of(1, 1), gcnc.diag.Phrase.IO_CANNOT_READ.arg(),
+                    gcnc.diag.Phrase.reason(e))
                     .in(Origin.file(shown)));
             return null;
         } finally {

@@ -79,7 +79,8 @@ public final class DmcReplay {
                 }
             }
         } catch (IOException e) {
-            diagnostics.error(Code.E500_IO, Span.of(Math.max(1, dmcLine), 1), e.getMessage());
+            diagnostics.error(Code.E500_IO, Span.of(Math.max(1, dmcLine), 1), gcnc.diag.Phrase.IO_CANNOT_READ.arg(),
+                    gcnc.diag.Phrase.reason(e));
         }
         sim.replay(chunk);
         sim.end(List.of());

@@ -123,7 +123,8 @@ public abstract class GcncTask extends DefaultTask {
             try {
                 process(session, p, findings);
             } catch (IOException e) {
-                findings.report(p.shown(), Diagnostic.error(Code.E500_IO, Span.of(1, 1), "cannot read or write: " + reason(e)));
+                findings.report(p.shown(), Diagnostic.error(Code.E500_IO, Span.of(1, 1),
+                        gcnc.diag.Phrase.IO_CANNOT_READ_OR_WRITE.arg(), gcnc.diag.Phrase.reason(e)));
             }
         }
         try {

@@ -1,6 +1,7 @@
 package gcnc.junit;
 
 import gcnc.Compiler;
+import gcnc.ProgramFiles;
 import gcnc.Session;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.GnuRenderer;
@@ -8,7 +9,6 @@ import gcnc.tables.ErrorMessages;
 import gcnc.tables.TableException;
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -69,8 +69,8 @@ public final class GcodeAssertions {
         }
     }
 
-    /** The file names a shop's part programs have (any case): .nc, .ngc, .tap. */
-    public static final List<String> PROGRAM_EXTENSIONS = List.of("nc", "ngc", "tap");
+    /** The file names a shop's part programs have (any case): .nc, .ngc, .tap ({@link ProgramFiles}). */
+    public static final List<String> PROGRAM_EXTENSIONS = ProgramFiles.EXTENSIONS;
 
     /** One dynamic test per part program below a folder ({@link #PROGRAM_EXTENSIONS}, any case). */
     public static Stream<DynamicTest> everyProgramIn(Path folder, String machine) {
@@ -90,13 +90,10 @@ public final class GcodeAssertions {
      * takes {@code *.gcode} and {@code *.nc} in any case.
      */
     public static Stream<DynamicTest> everyProgramIn(Path folder, Session session, List<String> extensions) {
-        if (extensions.isEmpty()) {
-            throw new IllegalArgumentException("name at least one file extension for the part programs");
-        }
-        List<String> lower = extensions.stream().map(e -> e.replaceFirst("^\\.", "").toLowerCase(java.util.Locale.ROOT)).toList();
+        List<String> lower = ProgramFiles.normal(extensions);
         List<Path> programs;
-        try (Stream<Path> files = Files.walk(folder)) {
-            programs = files.filter(Files::isRegularFile).filter(p -> isProgram(p, lower)).sorted().toList();
+        try {
+            programs = ProgramFiles.in(folder, lower);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read the folder " + folder, e);
         }
@@ -107,12 +104,6 @@ public final class GcodeAssertions {
         }
         return programs.stream().map(p -> DynamicTest.dynamicTest(folder.relativize(p).toString(),
                 () -> assertCompilesClean(p, session)));
-    }
-
-    private static boolean isProgram(Path p, List<String> extensions) {
-        String name = p.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        return dot > 0 && extensions.contains(name.substring(dot + 1).toLowerCase(java.util.Locale.ROOT));
     }
 
     /** The built-in tables and a shipped machine profile (or a .machine file). */
