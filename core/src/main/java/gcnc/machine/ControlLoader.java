@@ -150,7 +150,7 @@ public final class ControlLoader {
             }
             int moment = r.integer("moment");
             if (moment != 0 && moment != 1 && moment != 99) {
-                throw r.faultAt("moment", Phrase.MOMENT.with("0, 1 or 99", moment));
+                throw r.faultAt("moment", Phrase.MOMENT.with("0, 1", moment));
             }
             MRole role = MRole.named(r.get("function"));
             if (role == null) {

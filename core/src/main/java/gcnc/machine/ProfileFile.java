@@ -50,7 +50,7 @@ public final class ProfileFile {
             int eq = l.indexOf('=');
             int indent = l.length() - l.stripLeading().length();
             if (eq < 0) {
-                throw fault(path, n + 1, indent + 1, Phrase.EXPECTED_KEY_VALUE.with("key = value"));
+                throw fault(path, n + 1, indent + 1, Phrase.EXPECTED_KEY_VALUE.arg());
             }
             String key = l.substring(0, eq).trim();
             String value = l.substring(eq + 1).trim();

@@ -49,7 +49,7 @@ public final class CodeTable {
         try {
             return Severity.valueOf(s.toUpperCase(Locale.ROOT));
         } catch (IllegalArgumentException e) {
-            throw r.faultAt("severity", Phrase.SEVERITY.with(s, "error, warning or note"));
+            throw r.faultAt("severity", Phrase.SEVERITY.with(s, "error, warning"));
         }
     }
 
