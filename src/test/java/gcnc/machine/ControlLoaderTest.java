@@ -81,7 +81,7 @@ class ControlLoaderTest {
         Path cfg = dir.resolve("control.cfg");
         Files.writeString(cfg, Files.readString(cfg) + "  dwell.q = seconds\n");
         TableException e = assertThrows(TableException.class, () -> ControlLoader.load(dir.toString(), TableSource.builtIn()));
-        assertEquals("unknown key 'dwell.q' (did you mean 'dwell.p'?)", e.diagnostic().args().get(0));
+        assertEquals("unknown key 'dwell.q' (did you mean 'dwell.p'?)", e.english());
         assertEquals(3, e.diagnostic().span().column());
     }
 

@@ -26,7 +26,7 @@ class ProfileKeysTest {
     }
 
     private static String message(String extraLine) throws Exception {
-        return loadWith(extraLine).diagnostic().args().get(0);
+        return loadWith(extraLine).english();
     }
 
     @Test
@@ -50,8 +50,8 @@ class ProfileKeysTest {
     @Test
     void aNumberedKeyOutOfItsFamilySaysHowTheFamilyIsWritten() throws Exception {
         assertEquals("unknown key 'work.G60' (work offsets are work.G54 .. work.G59)", message("work.G60 = 0, 0"));
-        assertEquals("unknown key 'tool.100' (tool offsets are tool.<n>, n = 1 to 99)", message("tool.100 = 0, 0"));
-        assertEquals("unknown key 'm.1000' (M code outputs are m.<n>, n = 0 to 999)", message("m.1000 = SB1"));
+        assertEquals("unknown key 'tool.100' (tool offsets are tool.<n> with n = 1 to 99)", message("tool.100 = 0, 0"));
+        assertEquals("unknown key 'm.1000' (M code outputs are m.<n> with n = 0 to 999)", message("m.1000 = SB1"));
         assertTrue(message("sim.tool.3.shank = 0, 0").startsWith("unknown key 'sim.tool.3.shank' (tools are"));
     }
 

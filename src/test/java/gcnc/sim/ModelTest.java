@@ -34,7 +34,7 @@ class ModelTest {
         String text = SimFixture.PROFILE.replace("sim.tool.default.holder = 0, 6; 10, 6; 10, 20; 0, 20",
                 "sim.tool.default.holder = 0, 6; 10, 6; 2, 9; 10, 20; 0, 20");
         TableException e = assertThrows(TableException.class, () -> read(text));
-        assertTrue(e.diagnostic().args().get(0).contains("convex"), e.diagnostic().args().toString());
+        assertTrue(e.english().contains("convex"), e.english());
     }
 
     @Test

@@ -59,7 +59,7 @@ class TablesTest {
     @Test
     void anErrorCodeListedTwiceIsAFault() throws Exception {
         TableException e = faultWith("errors.csv", t -> t + "48,error,again,otra vez\n");
-        assertEquals("E048 is listed twice (first on line " + lineOf("errors.csv", "48,") + ")", e.diagnostic().args().get(0));
+        assertEquals("E048 is listed twice (first on line " + lineOf("errors.csv", "48,") + ")", e.english());
         assertEquals(1, e.diagnostic().span().column());
     }
 
@@ -67,13 +67,13 @@ class TablesTest {
     void aWordListedTwiceInParameterLimitsIsAFault() throws Exception {
         TableException e = faultWith("parameter_limits.csv", t -> t + "X,P,D,-1,1\n");
         assertEquals("word X is listed twice (first on line " + lineOf("parameter_limits.csv", "X,") + ")",
-                e.diagnostic().args().get(0));
+                e.english());
     }
 
     @Test
     void signAndTypeAreOneOfTwoLetters() throws Exception {
         TableException e = faultWith("parameter_limits.csv", t -> t.replace("\nS,N,E,", "\nS,n,E,"));
-        assertEquals("sign is P or N, not 'n'", e.diagnostic().args().get(0));
+        assertEquals("sign is P or N (not 'n')", e.english());
         assertEquals(lineOf("parameter_limits.csv", "S,"), e.diagnostic().span().line());
         assertEquals(3, e.diagnostic().span().column());
     }
@@ -81,15 +81,15 @@ class TablesTest {
     @Test
     void nanIsNotANumberInATable() throws Exception {
         TableException e = faultWith("parameter_limits.csv", t -> t.replace("\nF,N,D,0.0001,", "\nF,N,D,NaN,"));
-        assertEquals("'NaN' is not a number (lower)", e.diagnostic().args().get(0));
+        assertEquals("'NaN' is not a number (lower)", e.english());
         e = faultWith("tool_offsets.csv", t -> t.replace("\n2,00.100,", "\n2,Infinity,"));
-        assertEquals("'Infinity' is not a number (x)", e.diagnostic().args().get(0));
+        assertEquals("'Infinity' is not a number (x)", e.english());
     }
 
     @Test
     void aTemplateThatCannotBeRenderedIsAFaultAtItsBrace() throws Exception {
         TableException e = faultWith("errors.csv", t -> t.replace("arc radius R{0} cannot", "arc radius R{0 cannot"));
-        assertEquals("message template cannot be rendered: '{' without '}'", e.diagnostic().args().get(0));
+        assertEquals("message template cannot be rendered: '{' without '}'", e.english());
         assertEquals(lineOf("errors.csv", "101,"), e.diagnostic().span().line());
         assertEquals("101,error,arc radius R".length() + 1, e.diagnostic().span().column());
     }
@@ -98,14 +98,14 @@ class TablesTest {
     void aPlaceholderThatIsNotANumberIsAFault() throws Exception {
         TableException e = faultWith("errors.csv", t -> t.replace("El radio R{0}", "El radio R{cero}"));
         assertEquals("message template cannot be rendered: '{cero}' is not a placeholder {0}, {1}...",
-                e.diagnostic().args().get(0));
+                e.english());
         assertEquals(lineOf("errors.csv", "101,"), e.diagnostic().span().line());
     }
 
     @Test
     void everyCodeNeedsARow() throws Exception {
         TableException e = faultWith("errors.csv", t -> t.replaceFirst("\n314,[^\n]*", ""));
-        assertEquals("no row for E314: every diagnostic code needs its English and Spanish text", e.diagnostic().args().get(0));
+        assertEquals("no row for E314: every diagnostic code needs its English and Spanish text", e.english());
     }
 
     @Test
@@ -132,7 +132,7 @@ class TablesTest {
         assertEquals(lineOf("errors.csv", "1,"), e.diagnostic().span().line());
         assertEquals("1,error,expecting a preparatory function number after G,Esperando n".length() + 1,
                 e.diagnostic().span().column());
-        assertEquals("byte 0xFA is not UTF-8: save the file as UTF-8", e.diagnostic().args().get(0));
+        assertEquals("byte 0xFA is not UTF-8: save the file as UTF-8", e.english());
     }
 
     static Path copyOfTables() throws IOException {

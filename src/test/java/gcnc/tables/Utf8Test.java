@@ -33,7 +33,7 @@ class Utf8Test {
         assertEquals("f.csv", e.path());
         assertEquals(2, e.diagnostic().span().line());
         assertEquals(7, e.diagnostic().span().column());
-        assertEquals("byte 0xE9 is not UTF-8: save the file as UTF-8", e.diagnostic().args().get(0));
+        assertEquals("byte 0xE9 is not UTF-8: save the file as UTF-8", e.english());
     }
 
     @Test

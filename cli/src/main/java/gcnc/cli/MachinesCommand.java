@@ -51,15 +51,17 @@ final class MachinesCommand implements Callable<Integer> {
         } catch (TableException e) {
             return Reporter.tableFault(err, e, common.language());
         } catch (IOException e) {
-            err.println("gcnc: cannot list the machine profiles: " + SourceFiles.reason(e));
+            err.println(new Phrases(common.language()).get("machines.cannot_list", SourceFiles.reason(e)));
             return ExitCode.USAGE;
         }
         int status = ExitCode.CLEAN;
+        Phrases phrases = new Phrases(common.language());
         for (String name : names) {
             try {
                 MachineProfile p = ProfileLoader.load(name, common.source(), tables, null);
                 String text = common.source().read("machines/" + name + ".machine");
-                out.printf("%-14s control %-12s %-9s %s%n", name, p.control().name(), p.galilModel(), summary(text));
+                out.println(phrases.get("machines.row", String.format("%-14s", name),
+                        String.format("%-12s", p.control().name()), String.format("%-9s", p.galilModel()), summary(text)));
             } catch (TableException e) {
                 status = Reporter.tableFault(err, e, common.language());
             }
@@ -205,7 +207,7 @@ final class MachinesCommand implements Callable<Integer> {
                 String path = Files.isRegularFile(Path.of(f)) && !f.contains("/") && !f.endsWith(".machine") ? "./" + f : f;
                 try {
                     MachineProfile p = ProfileLoader.load(path, common.source(), tables, common.control);
-                    reporter.say(f + ": valid (machine " + p.name() + ", control " + p.control().name() + ")");
+                    reporter.say(reporter.phrases().get("machines.valid", f, p.name(), p.control().name()));
                 } catch (TableException e) {
                     status = reporter.tableFault(e);
                 }

@@ -76,16 +76,147 @@ public enum Phrase {
     IO_IS_DIRECTORY,
     IO_NO_SPACE,
     /** E500: a folder given to check with no part program in it ({0}: the extensions). */
-    IO_NO_PROGRAM;
+    IO_NO_PROGRAM,
+    /*
+     * E400: a fault in a table, a control or a machine profile (gcnc.tables, gcnc.machine), each
+     * sentence a phrase so that `gcnc --lang es machines validate` reads Spanish throughout. The
+     * values, keys and file names in them are arguments, written as the user wrote them.
+     */
+    CSV_MISSING_COLUMN,
+    CSV_MISSING_VALUE,
+    CSV_NOT_WHOLE,
+    CSV_FIELD_COUNT,
+    CSV_EMPTY,
+    NOT_A_NUMBER,
+    NOT_UTF8,
+    TABLE_NOT_IN_JAR,
+    TABLE_FILE_NOT_FOUND,
+    SEVERITY,
+    WORD_ONE_LETTER,
+    WORD_TWICE,
+    LISTED_TWICE_FIRST,
+    LISTED_TWICE,
+    LOWER_ABOVE_UPPER,
+    ONE_OF_TWO,
+    OFFSETS_IN_ORDER,
+    NO_ROW_FOR_CODE,
+    NO_SUCH_PHRASE,
+    NO_ROW_FOR_PHRASE,
+    NO_SUCH_CODE,
+    TEMPLATE_BROKEN,
+    TEMPLATE_UNCLOSED,
+    TEMPLATE_PLACEHOLDER,
+    EXPECTED_KEY_VALUE,
+    MISSING_KEY_BEFORE_EQUALS,
+    KEY_GIVEN_TWICE,
+    MISSING_REQUIRED_KEY,
+    GREATER_THAN_ZERO,
+    TWO_NUMBERS,
+    ONE_OF,
+    PROFILE_NOT_FOUND,
+    SAME_CHANNEL,
+    ENCODER_AXIS_NEEDS_ENCODER,
+    ENCODER_COUNTS,
+    ENCODER_ON_TOOL_AXIS,
+    CONTROL_FAULT,
+    SIGN,
+    TRAVEL_ORDER,
+    TRAVEL_REGISTER,
+    CHANNEL_LETTER,
+    SPINDLE_ON_TOOL_AXIS,
+    OUTSIDE_TRAVEL,
+    REGISTER_SPEED,
+    REGISTER_ACCELERATION,
+    REGISTER_DECELERATION,
+    TOOL_OFFSET_FROM_ONE,
+    TOOLS_OFFSETS_RANGE,
+    TOOLS_COUNT_RANGE,
+    NOSE_FROM_ONE,
+    NOSE_RADIUS,
+    TIP_DIRECTION,
+    OUTPUT_DIRECTIVES,
+    NUMBER_AGAIN,
+    UNKNOWN_KEY_TYPO,
+    UNKNOWN_KEY_WORK,
+    UNKNOWN_KEY_TOOL,
+    UNKNOWN_KEY_NOSE,
+    UNKNOWN_KEY_M,
+    UNKNOWN_KEY_SIM_TOOL,
+    UNKNOWN_KEY_DOCS,
+    UNKNOWN_CONTROL_KEY,
+    NO_CONTROL,
+    LETTERS,
+    POWER_UP,
+    LENGTH_MM,
+    CALL_DEPTH,
+    UNKNOWN_FUNCTION,
+    MOMENT,
+    OUTPUT_YES_NO,
+    CODE_RANGE,
+    GROUP_RANGE,
+    WORDS,
+    CHUCK_FACE,
+    TAILSTOCK_CENTRE,
+    STOCK_NEEDS_CHUCK,
+    STICKOUT,
+    KEYS_TOGETHER,
+    TOOL_AGAIN,
+    TOOL_FROM_LIBRARY,
+    POINT_LIST,
+    CONVEX;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';
 
-    /** The phrase with its own arguments, as one diagnostic argument. */
+    /**
+     * A phrase inside another phrase's argument (E400's "control 'x': place: why"), its marks
+     * swapped for these so that it stays one argument of the outer phrase.
+     */
+    private static final char INNER_MARK = '\u001C';
+    private static final char INNER_SEPARATOR = '\u001D';
+
+    /**
+     * The phrase with its own arguments, as one diagnostic argument. An argument that is itself a
+     * phrase is kept as one (one level deep), and rendered in the same language.
+     */
     public String with(Object... args) {
         StringBuilder sb = new StringBuilder().append(MARK).append(name());
         for (Object a : args) {
-            sb.append(SEPARATOR).append(a);
+            String text = String.valueOf(a);
+            if (!text.isEmpty() && text.charAt(0) == MARK) {
+                text = text.replace(MARK, INNER_MARK).replace(SEPARATOR, INNER_SEPARATOR);
+            }
+            sb.append(SEPARATOR).append(text);
+        }
+        return sb.toString();
+    }
+
+    /** A phrase's argument as a diagnostic argument: a phrase nested by {@link #with} is one again. */
+    public static String unnested(String argument) {
+        if (argument.isEmpty() || argument.charAt(0) != INNER_MARK) {
+            return argument;
+        }
+        return argument.replace(INNER_MARK, MARK).replace(INNER_SEPARATOR, SEPARATOR);
+    }
+
+    /** Whether a diagnostic argument is a phrase (known to this gcnc or not). */
+    public static boolean marked(String argument) {
+        return !argument.isEmpty() && argument.charAt(0) == MARK;
+    }
+
+    /**
+     * A phrase argument without its table, for the last resort: the constant's name and its
+     * arguments, so that a message that cannot be put into words still says what it is.
+     */
+    public static String plain(String argument) {
+        if (!marked(argument)) {
+            return argument;
+        }
+        StringBuilder sb = new StringBuilder();
+        int end = argument.indexOf(SEPARATOR);
+        sb.append(argument, 1, end < 0 ? argument.length() : end);
+        for (String a : arguments(argument)) {
+            sb.append(' ').append(plain(unnested(a)));
         }
         return sb.toString();
     }
@@ -117,13 +248,20 @@ public enum Phrase {
         return text;
     }
 
-    /** The phrase a diagnostic argument holds, or null when it holds a plain value. */
+    /**
+     * The phrase a diagnostic argument holds, or null when it holds a plain value or a phrase this
+     * gcnc does not have ({@link #marked} tells the two apart).
+     */
     public static Phrase of(String argument) {
-        if (argument.isEmpty() || argument.charAt(0) != MARK) {
+        if (!marked(argument)) {
             return null;
         }
         int end = argument.indexOf(SEPARATOR);
-        return valueOf(argument.substring(1, end < 0 ? argument.length() : end));
+        try {
+            return valueOf(argument.substring(1, end < 0 ? argument.length() : end));
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
     }
 
     /** The phrase's own arguments in a diagnostic argument that holds one. */

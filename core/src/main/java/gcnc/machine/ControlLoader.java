@@ -1,5 +1,6 @@
 package gcnc.machine;
 
+import gcnc.diag.Phrase;
 import gcnc.ir.Letter;
 import gcnc.tables.Csv;
 import gcnc.tables.TableException;
@@ -40,8 +41,8 @@ public final class ControlLoader {
         try {
             tables.read(dir + "control.cfg");
         } catch (TableException e) {
-            throw ProfileFile.fault(tables.describe(dir + "control.cfg"), 1, 1, "no control '" + nameOrPath
-                    + "' (shipped: " + String.join(", ", SHIPPED) + "; or give a folder path)");
+            throw ProfileFile.fault(tables.describe(dir + "control.cfg"), 1, 1, Phrase.NO_CONTROL.with(nameOrPath,
+                    String.join(", ", SHIPPED)));
         }
         return read(tables, dir);
     }
@@ -50,8 +51,8 @@ public final class ControlLoader {
         ProfileFile f = ProfileFile.parse(src.describe(dir + "control.cfg"), src.read(dir + "control.cfg"));
         for (String key : f.keys()) {
             if (!KEYS.contains(key)) {
-                throw f.faultAtKey(f.required(key), "unknown key '" + key + "' (" + Spelling.suggest(key, KEYS)
-                        .map(k -> "did you mean '" + k + "'?").orElse("the keys are in tables/controls/README.md") + ")");
+                throw f.faultAtKey(f.required(key), Spelling.suggest(key, KEYS)
+                        .map(k -> Phrase.UNKNOWN_KEY_TYPO.with(key, k)).orElse(Phrase.UNKNOWN_CONTROL_KEY.with(key)));
             }
         }
         Map<Integer, GFunction> g = gTable(Csv.parse(src.describe(dir + "g_codes.csv"), src.read(dir + "g_codes.csv")));
@@ -62,7 +63,7 @@ public final class ControlLoader {
         for (String s : le.value().split("\\s+")) {
             Letter l = s.length() == 1 ? Letter.of(s.charAt(0)) : null;
             if (l == null) {
-                throw f.fault(le, "letters are single address letters separated by spaces, not '" + s + "'");
+                throw f.fault(le, Phrase.LETTERS.with(s));
             }
             letters.add(l);
         }
@@ -72,7 +73,7 @@ public final class ControlLoader {
         for (String s : pe.value().split("\\s+")) {
             GFunction fn = s.matches("[Gg][0-9]{1,3}") ? g.get(Integer.parseInt(s.substring(1))) : null;
             if (fn == null) {
-                throw f.fault(pe, "power_up lists G codes of this control's g_codes.csv, not '" + s + "'");
+                throw f.fault(pe, Phrase.POWER_UP.with(s));
             }
             if (fn.role() == GRole.INCH || fn.role() == GRole.METRIC) {
                 units = Optional.of(fn.role() == GRole.INCH ? Units.INCH : Units.MM);
@@ -100,7 +101,7 @@ public final class ControlLoader {
     private static double retract(ProfileFile f) throws TableException {
         double r = f.number("cycle.retract_mm", Double.NaN);
         if (r < 0) {
-            throw f.fault(f.required("cycle.retract_mm"), "cycle.retract_mm is a length in mm, zero or more");
+            throw f.fault(f.required("cycle.retract_mm"), Phrase.LENGTH_MM.with("cycle.retract_mm"));
         }
         return r;
     }
@@ -109,7 +110,7 @@ public final class ControlLoader {
     private static double length(ProfileFile f, String key) throws TableException {
         double r = f.number(key, Double.NaN);
         if (r < 0) {
-            throw f.fault(f.required(key), key + " is a length in mm, zero or more");
+            throw f.fault(f.required(key), Phrase.LENGTH_MM.with(key));
         }
         return r;
     }
@@ -119,7 +120,7 @@ public final class ControlLoader {
         boolean countInP = f.choice("call.p", "number", "number", "count_and_number").equals("count_and_number");
         String depth = f.text("call.depth", "4");
         if (!depth.matches("[0-9]{1,2}") || Integer.parseInt(depth) < 1) {
-            throw f.fault(f.required("call.depth"), "'call.depth' is a whole number from 1 to 99, not '" + depth + "'");
+            throw f.fault(f.required("call.depth"), Phrase.CALL_DEPTH.with(depth));
         }
         return new Control.Calls(countInP, Integer.parseInt(depth));
     }
@@ -129,11 +130,11 @@ public final class ControlLoader {
         for (Csv.Row r : csv.rows()) {
             int code = code(r, 999);
             if (g.containsKey(code)) {
-                throw r.faultAt("code", "G" + code + " is listed twice");
+                throw r.faultAt("code", Phrase.LISTED_TWICE.with("G" + code));
             }
             GRole role = GRole.named(r.get("function"));
             if (role == null) {
-                throw r.faultAt("function", "unknown function '" + r.get("function") + "' (see tables/controls/README.md)");
+                throw r.faultAt("function", Phrase.UNKNOWN_FUNCTION.with(r.get("function")));
             }
             g.put(code, new GFunction(code, group(r), role, words(r), r.get("en"), r.get("es")));
         }
@@ -145,19 +146,19 @@ public final class ControlLoader {
         for (Csv.Row r : csv.rows()) {
             int code = code(r, 999);
             if (m.containsKey(code)) {
-                throw r.faultAt("code", "M" + code + " is listed twice");
+                throw r.faultAt("code", Phrase.LISTED_TWICE.with("M" + code));
             }
             int moment = r.integer("moment");
             if (moment != 0 && moment != 1 && moment != 99) {
-                throw r.faultAt("moment", "moment must be 0, 1 or 99, not " + moment);
+                throw r.faultAt("moment", Phrase.MOMENT.with("0, 1", moment));
             }
             MRole role = MRole.named(r.get("function"));
             if (role == null) {
-                throw r.faultAt("function", "unknown function '" + r.get("function") + "' (see tables/controls/README.md)");
+                throw r.faultAt("function", Phrase.UNKNOWN_FUNCTION.with(r.get("function")));
             }
             String out = r.get("output");
             if (!out.equals("yes") && !out.equals("no")) {
-                throw r.faultAt("output", "output is yes or no, not '" + out + "'");
+                throw r.faultAt("output", Phrase.OUTPUT_YES_NO.with(out));
             }
             m.put(code, new MFunction(code, group(r), moment, role, out.equals("yes"), r.get("en"), r.get("es")));
         }
@@ -167,7 +168,7 @@ public final class ControlLoader {
     private static int code(Csv.Row r, int max) throws TableException {
         int code = r.integer("code");
         if (code < 0 || code > max) {
-            throw r.faultAt("code", "codes are 0 to " + max + ", not " + code);
+            throw r.faultAt("code", Phrase.CODE_RANGE.with(max, code));
         }
         return code;
     }
@@ -175,7 +176,7 @@ public final class ControlLoader {
     private static int group(Csv.Row r) throws TableException {
         int group = r.integer("group");
         if (group < 0 || group > 99) {
-            throw r.faultAt("group", "groups are 0 to 99, not " + group);
+            throw r.faultAt("group", Phrase.GROUP_RANGE.with(group));
         }
         return group;
     }
@@ -194,7 +195,7 @@ public final class ControlLoader {
             try {
                 set.add(Param.valueOf(s));
             } catch (IllegalArgumentException e) {
-                throw r.faultAt("words", "words are X Z U W I K R P separated by spaces, '-' or '*', not '" + s + "'");
+                throw r.faultAt("words", Phrase.WORDS.with(s));
             }
         }
         return set;

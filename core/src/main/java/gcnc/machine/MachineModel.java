@@ -2,6 +2,7 @@ package gcnc.machine;
 
 import static gcnc.machine.ProfileFile.written;
 
+import gcnc.diag.Phrase;
 import gcnc.tables.TableException;
 import java.util.HashMap;
 import java.util.Map;
@@ -75,8 +76,7 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         double faceZ = f.number(face);
         double zMax = f.pair("z.travel")[1];
         if (faceZ >= zMax) {
-            throw f.fault(face, "chuck.face_z " + written(faceZ) + " is at or beyond the end of z.travel ("
-                    + written(zMax) + "): no tool could reach a part held in front of the jaws");
+            throw f.fault(face, Phrase.CHUCK_FACE.with(written(faceZ), written(zMax)));
         }
         return Optional.of(new Chuck(faceZ, f.positive("chuck.jaw_diameter"), f.positive("chuck.jaw_length"),
                 f.positive("chuck.diameter")));
@@ -90,8 +90,8 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         ProfileFile.Entry centre = f.required("tailstock.centre_z");
         double z = f.number(centre);
         if (chuck.isPresent() && z <= chuck.get().faceZ()) {
-            throw f.fault(centre, "tailstock.centre_z " + written(z) + " must be in front of chuck.face_z "
-                    + written(chuck.get().faceZ()) + ": the centre's tip cannot be inside the jaws");
+            throw f.fault(centre, Phrase.TAILSTOCK_CENTRE.with(written(z),
+                    written(chuck.get().faceZ())));
         }
         return Optional.of(new Tailstock(z, f.positive("tailstock.quill_diameter")));
     }
@@ -103,12 +103,12 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         }
         if (chuck.isEmpty()) {
             throw f.faultAtKey(f.required("stock.diameter"),
-                    "stock.stickout is measured from chuck.face_z: give the chuck too");
+                    Phrase.STOCK_NEEDS_CHUCK.arg());
         }
         Blank b = new Blank(f.positive("stock.diameter"), f.positive("stock.length"), f.positive("stock.stickout"));
         if (b.stickout() >= b.length()) {
-            throw f.fault(f.required("stock.stickout"), "stock.stickout " + written(b.stickout())
-                    + " must be less than stock.length " + written(b.length()) + ": the blank's back end is held in the jaws");
+            throw f.fault(f.required("stock.stickout"), Phrase.STICKOUT.with(written(b.stickout()),
+                    written(b.length())));
         }
         return Optional.of(b);
     }
@@ -130,8 +130,8 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
             }
         }
         if (first != null && missing != null) {
-            throw f.faultAtKey(first, "'" + first.key() + "' needs '" + missing + "' too (give all of "
-                    + String.join(", ", group) + ", or none)");
+            throw f.faultAtKey(first, Phrase.KEYS_TOGETHER.with(first.key(), missing,
+                    String.join(", ", group)));
         }
         return first != null;
     }
@@ -148,7 +148,7 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
             int n = Integer.parseInt(id);
             String before = ids.putIfAbsent(n, id);
             if (before != null && !before.equals(id)) {
-                throw f.faultAtKey(e, "'" + e.key() + "' is tool " + n + " again (as sim.tool." + before + ")");
+                throw f.faultAtKey(e, Phrase.TOOL_AGAIN.with(e.key(), n, before));
             }
             tools.put(n, toolOutline(f, "sim.tool." + id, def));
         }
@@ -160,9 +160,7 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         if (named.isPresent()) {
             otherwise = ToolLibrary.shape(named.get().value());
             if (otherwise == null) {
-                throw f.fault(named.get(), "'" + prefix + "' is a tool from the library: C, D or V and the inscribed"
-                        + " circle (C 12.7), T and the edge (T 16), G or P and the width [and reach] (P 3), B and the"
-                        + " bar diameter (B 16), not '" + named.get().value() + "'");
+                throw f.fault(named.get(), Phrase.TOOL_FROM_LIBRARY.with(prefix, named.get().value()));
             }
         }
         Optional<ProfileFile.Entry> insert = f.entry(prefix + ".insert");
@@ -179,13 +177,13 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         for (int i = 0; i < points.length; i++) {
             String[] zx = points[i].split(",", -1);
             if (zx.length != 2) {
-                throw f.fault(e, "'" + e.key() + "' is a list of 'dz, dx' points separated by ';'");
+                throw f.fault(e, Phrase.POINT_LIST.with(e.key(), "dz, dx"));
             }
             dz[i] = f.number(e, zx[0]);
             dx[i] = f.number(e, zx[1]);
         }
         if (!convex(dz, dx)) {
-            throw f.fault(e, "'" + e.key() + "' must be a convex outline (split a concave one into insert and holder)");
+            throw f.fault(e, Phrase.CONVEX.with(e.key()));
         }
         return new Outline(dz, dx);
     }

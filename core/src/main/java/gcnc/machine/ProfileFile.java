@@ -2,6 +2,7 @@ package gcnc.machine;
 
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
+import gcnc.diag.Phrase;
 import gcnc.diag.Span;
 import gcnc.tables.Decimal;
 import gcnc.tables.TableException;
@@ -49,16 +50,16 @@ public final class ProfileFile {
             int eq = l.indexOf('=');
             int indent = l.length() - l.stripLeading().length();
             if (eq < 0) {
-                throw fault(path, n + 1, indent + 1, "expected 'key = value'");
+                throw fault(path, n + 1, indent + 1, Phrase.EXPECTED_KEY_VALUE.arg());
             }
             String key = l.substring(0, eq).trim();
             String value = l.substring(eq + 1).trim();
             int valueCol = eq + 2 + (l.substring(eq + 1).length() - l.substring(eq + 1).stripLeading().length());
             if (key.isEmpty()) {
-                throw fault(path, n + 1, indent + 1, "missing key before '='");
+                throw fault(path, n + 1, indent + 1, Phrase.MISSING_KEY_BEFORE_EQUALS.arg());
             }
             if (map.containsKey(key)) {
-                throw fault(path, n + 1, indent + 1, "'" + key + "' given twice (first on line " + map.get(key).line() + ")");
+                throw fault(path, n + 1, indent + 1, Phrase.KEY_GIVEN_TWICE.with(key, map.get(key).line()));
             }
             map.put(key, new Entry(key, value, n + 1, indent + 1, valueCol));
         }
@@ -91,7 +92,7 @@ public final class ProfileFile {
     public Entry required(String key) throws TableException {
         Entry e = entries.get(key);
         if (e == null) {
-            throw fault(path, 1, 1, "missing required key '" + key + "'");
+            throw fault(path, 1, 1, Phrase.MISSING_REQUIRED_KEY.with(key));
         }
         return e;
     }
@@ -118,7 +119,7 @@ public final class ProfileFile {
         Entry e = required(key);
         double v = number(e);
         if (!(v > 0)) {
-            throw fault(e, "'" + key + "' must be greater than 0");
+            throw fault(e, Phrase.GREATER_THAN_ZERO.with(key));
         }
         return v;
     }
@@ -137,7 +138,7 @@ public final class ProfileFile {
     public double number(Entry e, String text) throws TableException {
         OptionalDouble v = Decimal.parse(text.trim());
         if (v.isEmpty()) {
-            throw fault(e, "'" + text.trim() + "' is not a number (" + e.key() + ")");
+            throw fault(e, Phrase.NOT_A_NUMBER.with(text.trim(), e.key()));
         }
         return v.getAsDouble();
     }
@@ -146,7 +147,7 @@ public final class ProfileFile {
     public double[] pair(Entry e) throws TableException {
         String[] parts = e.value().split(",", -1);
         if (parts.length != 2) {
-            throw fault(e, "'" + e.key() + "' needs two numbers 'a, b'");
+            throw fault(e, Phrase.TWO_NUMBERS.with(e.key(), "a, b"));
         }
         return new double[] {number(e, parts[0]), number(e, parts[1])};
     }
@@ -166,7 +167,7 @@ public final class ProfileFile {
                 return c;
             }
         }
-        throw fault(e, "'" + key + "' must be one of " + String.join(", ", choices) + ", not '" + e.value() + "'");
+        throw fault(e, Phrase.ONE_OF.with(key, String.join(", ", choices), e.value()));
     }
 
     /** A number for a message as a person would write it in a profile (no 1.0E7, no trailing zeros). */
@@ -174,7 +175,10 @@ public final class ProfileFile {
         return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
     }
 
-    /** A fault in the value of {@code e}, at the value's column. */
+    /**
+     * A fault in the value of {@code e}, at the value's column. {@code message} is a
+     * {@link Phrase} argument ({@code Phrase.X.with(...)}), so that it reads in the user's language.
+     */
     public TableException fault(Entry e, String message) {
         return fault(path, e.line(), e.column(), message);
     }

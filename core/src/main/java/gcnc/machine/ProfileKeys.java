@@ -1,5 +1,6 @@
 package gcnc.machine;
 
+import gcnc.diag.Phrase;
 import gcnc.tables.TableException;
 import java.util.List;
 import java.util.Optional;
@@ -26,9 +27,9 @@ final class ProfileKeys {
             "stock.diameter", "stock.length", "stock.stickout", "stock.header",
             "tailstock.centre_z", "tailstock.quill_diameter");
 
-    /** Keys numbered or named by pattern; {@code shape} says how to write them, for the fault. */
-    record Family(String prefix, Pattern form, String shape) {
-        Family(String prefix, String form, String shape) {
+    /** Keys numbered or named by pattern; {@code shape} says how to write them, for the fault (its {0}: the key). */
+    record Family(String prefix, Pattern form, Phrase shape) {
+        Family(String prefix, String form, Phrase shape) {
             this(prefix, Pattern.compile(form), shape);
         }
 
@@ -38,14 +39,13 @@ final class ProfileKeys {
     }
 
     static final List<Family> FAMILIES = List.of(
-            new Family("work.", "work\\.G5[4-9]", "work offsets are work.G54 .. work.G59"),
+            new Family("work.", "work\\.G5[4-9]", Phrase.UNKNOWN_KEY_WORK),
             // T's last two digits pick the offset: 1 to 99 (tool.0 is refused by ProfileLoader, with its reason)
-            new Family("tool.", "tool\\.[0-9]{1,2}", "tool offsets are tool.<n>, n = 1 to 99"),
-            new Family("nose.", "nose\\.[0-9]{1,2}", "nose radii are nose.<n> = radius, tip; n = 1 to 99"),
-            new Family("m.", "m\\.[0-9]{1,3}", "M code outputs are m.<n>, n = 0 to 999"),
+            new Family("tool.", "tool\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_TOOL),
+            new Family("nose.", "nose\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_NOSE),
+            new Family("m.", "m\\.[0-9]{1,3}", Phrase.UNKNOWN_KEY_M),
             new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
-                    "tools are sim.tool.default or sim.tool.<n> (from the library: C 12.7) and their"
-                    + " .insert/.holder outlines"));
+                    Phrase.UNKNOWN_KEY_SIM_TOOL));
 
     private ProfileKeys() {
     }
@@ -64,22 +64,21 @@ final class ProfileKeys {
     }
 
     /**
-     * The message for an unknown key: a known key within a couple of letters first (a typo), then
+     * The message for an unknown key (a {@link Phrase} argument): a known key within a couple of letters first (a typo), then
      * how its family is written when it starts like one ({@code work.G60}), then a known key with
      * the same last part ({@code lathe.home}), else where the keys are listed.
      */
     static String unknown(String key) {
-        String head = "unknown key '" + key + "'";
         Optional<String> typo = Spelling.typo(key, NAMED);
         if (typo.isPresent()) {
-            return head + " (did you mean '" + typo.get() + "'?)";
+            return Phrase.UNKNOWN_KEY_TYPO.with(key, typo.get());
         }
         for (Family fam : FAMILIES) {
             if (key.startsWith(fam.prefix())) {
-                return head + " (" + fam.shape() + ")";
+                return fam.shape().with(key);
             }
         }
-        return Spelling.sameLastPart(key, NAMED).map(k -> head + " (did you mean '" + k + "'?)")
-                .orElse(head + " (docs/profiles.md and docs/simulator.md list the keys)");
+        return Spelling.sameLastPart(key, NAMED).map(k -> Phrase.UNKNOWN_KEY_TYPO.with(key, k))
+                .orElse(Phrase.UNKNOWN_KEY_DOCS.with(key));
     }
 }

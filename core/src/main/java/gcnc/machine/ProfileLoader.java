@@ -2,6 +2,7 @@ package gcnc.machine;
 
 import static gcnc.machine.ProfileFile.written;
 
+import gcnc.diag.Phrase;
 import gcnc.ir.Point;
 import gcnc.tables.Offset;
 import gcnc.tables.TableException;
@@ -57,9 +58,9 @@ public final class ProfileLoader {
         try {
             return Utf8.decode(p.toString(), Files.readAllBytes(p));
         } catch (NoSuchFileException e) {
-            throw ProfileFile.fault(p.toString(), 1, 1, "machine profile not found");
+            throw ProfileFile.fault(p.toString(), 1, 1, Phrase.PROFILE_NOT_FOUND.arg());
         } catch (IOException e) {
-            throw ProfileFile.fault(p.toString(), 1, 1, e.getMessage());
+            throw ProfileFile.fault(p.toString(), 1, 1, Phrase.reason(e));
         }
     }
 
@@ -87,7 +88,7 @@ public final class ProfileLoader {
         Axis x = axis(f, "x");
         Axis z = axis(f, "z");
         if (channel(x.galil()) == channel(z.galil())) {
-            throw f.fault(f.required("z.galil"), "x.galil and z.galil are the same Galil channel");
+            throw f.fault(f.required("z.galil"), Phrase.SAME_CHANNEL.arg());
         }
         char spindleAxis = spindleAxis(f, x, z);
         boolean counts = f.choice("offsets.unit", "mm", "mm", "counts").equals("counts");
@@ -97,10 +98,10 @@ public final class ProfileLoader {
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
-                register(f, "rapid.speed", "a vector speed (VS), counts/s"),
-                register(f, "feed.max", "a vector speed (VS), counts/s"),
-                register(f, "vector.acceleration", 256000, "a vector acceleration (VA), counts/s^2"),
-                register(f, "vector.deceleration", 256000, "a vector deceleration (VD), counts/s^2"),
+                register(f, "rapid.speed", Phrase.REGISTER_SPEED),
+                register(f, "feed.max", Phrase.REGISTER_SPEED),
+                register(f, "vector.acceleration", 256000, Phrase.REGISTER_ACCELERATION),
+                register(f, "vector.deceleration", 256000, Phrase.REGISTER_DECELERATION),
                 f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
                 workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
@@ -120,22 +121,20 @@ public final class ProfileLoader {
         if (f.entry("spindle.encoder").isEmpty()) {
             if (f.entry("spindle.encoder_axis").isPresent()) {
                 throw f.fault(f.required("spindle.encoder_axis"),
-                        "spindle.encoder_axis needs spindle.encoder (its counts per revolution)");
+                        Phrase.ENCODER_AXIS_NEEDS_ENCODER.arg());
             }
             return null;
         }
         ProfileFile.Entry e = f.required("spindle.encoder");
         double counts = f.number(e);
         if (counts != Math.rint(counts) || counts < 4 || counts > MAX_ENCODER_COUNTS) {
-            throw f.fault(e, "spindle.encoder is the encoder's counts per spindle revolution, a whole number from 4 to "
-                    + MAX_ENCODER_COUNTS);
+            throw f.fault(e, Phrase.ENCODER_COUNTS.with(MAX_ENCODER_COUNTS));
         }
         char channel = channelLetter(f, "spindle.encoder_axis", f.text("spindle.axis", "C"));
         for (Axis a : new Axis[] {x, z}) {
             if (channel(channel) == channel(a.galil())) {
-                throw f.fault(f.entry("spindle.encoder_axis").orElse(e), "spindle.encoder_axis " + channel
-                        + " is the channel that drives lathe " + (a == x ? "X" : "Z") + " ("
-                        + (a == x ? "x" : "z") + ".galil = " + a.galil() + "): its encoder reads that axis");
+                throw f.fault(f.entry("spindle.encoder_axis").orElse(e), Phrase.ENCODER_ON_TOOL_AXIS.with(channel,
+                        a == x ? "X" : "Z", a == x ? "x" : "z", a.galil()));
             }
         }
         return new SpindleEncoder((int) counts, channel);
@@ -148,7 +147,9 @@ public final class ProfileLoader {
             return ControlLoader.load(name, tables);
         } catch (TableException e) {
             if (override == null && f.entry("control").isPresent()) {
-                throw f.fault(f.required("control"), "control '" + name + "': " + e.getMessage());
+                throw f.fault(f.required("control"), Phrase.CONTROL_FAULT.with(name,
+                        e.path() + ":" + e.diagnostic().span().line() + ":" + e.diagnostic().span().column(),
+                        e.diagnostic().args().isEmpty() ? "" : e.diagnostic().args().get(0)));
             }
             throw e;
         }
@@ -167,17 +168,17 @@ public final class ProfileLoader {
         double perInch = f.positive(a + ".counts_per_inch", perMm * 25.4);
         double sign = f.number(a + ".sign", 1);
         if (sign != 1 && sign != -1) {
-            throw f.fault(f.required(a + ".sign"), a + ".sign is 1 or -1");
+            throw f.fault(f.required(a + ".sign"), Phrase.SIGN.with(a));
         }
         ProfileFile.Entry te = f.required(a + ".travel");
         double[] travel = f.pair(te);
         if (travel[0] >= travel[1]) {
-            throw f.fault(te, a + ".travel is 'min, max' with min < max");
+            throw f.fault(te, Phrase.TRAVEL_ORDER.with(a, "min, max"));
         }
         for (double end : travel) {
             if (Math.abs(end * perMm) > REGISTER_MAX) {
-                throw f.fault(te, a + ".travel " + written(end) + " mm is " + written(Math.rint(end * perMm))
-                        + " counts: beyond the 32-bit position register of the controller");
+                throw f.fault(te, Phrase.TRAVEL_REGISTER.with(a, written(end),
+                        written(Math.rint(end * perMm))));
             }
         }
         return new Axis(letter, perMm, perInch, (int) sign, travel[0] * perMm, travel[1] * perMm);
@@ -187,7 +188,7 @@ public final class ProfileLoader {
     private static char channelLetter(ProfileFile f, String key, String otherwise) throws TableException {
         String letter = otherwise == null ? f.text(key) : f.text(key, otherwise);
         if (!letter.matches("[A-HXYZW]")) {
-            throw f.fault(f.required(key), key + " is one Galil channel letter (A-H, X, Y, Z, W)");
+            throw f.fault(f.required(key), Phrase.CHANNEL_LETTER.with(key, "A-H, X, Y, Z, W"));
         }
         return letter.charAt(0);
     }
@@ -197,8 +198,8 @@ public final class ProfileLoader {
         char s = channelLetter(f, "spindle.axis", "C");
         for (Axis a : new Axis[] {x, z}) {
             if (channel(s) == channel(a.galil())) {
-                throw f.fault(f.required("spindle.axis"), "spindle.axis " + s + " is the channel that drives lathe "
-                        + (a == x ? "X" : "Z") + " (" + (a == x ? "x" : "z") + ".galil = " + a.galil() + ")");
+                throw f.fault(f.required("spindle.axis"), Phrase.SPINDLE_ON_TOOL_AXIS.with(s,
+                        a == x ? "X" : "Z", a == x ? "x" : "z", a.galil()));
             }
         }
         return s;
@@ -225,8 +226,8 @@ public final class ProfileLoader {
     private static void inTravel(ProfileFile f, ProfileFile.Entry e, String axis, double mm) throws TableException {
         double[] travel = f.pair(axis + ".travel");
         if (mm < travel[0] || mm > travel[1]) {
-            throw f.fault(e, "'" + e.key() + "' " + axis.toUpperCase() + " " + written(mm) + " is outside " + axis
-                    + ".travel (" + written(travel[0]) + " .. " + written(travel[1]) + ")");
+            throw f.fault(e, Phrase.OUTSIDE_TRAVEL.with(e.key(), axis.toUpperCase(), written(mm), axis,
+                    written(travel[0]), written(travel[1])));
         }
     }
 
@@ -235,16 +236,16 @@ public final class ProfileLoader {
      * 0, which the controller refuses, above 2^31 - 1 it does not fit. Either way every move, or
      * the program's header, would fail at a line of the program.
      */
-    private static double register(ProfileFile f, String key, String what) throws TableException {
+    private static double register(ProfileFile f, String key, Phrase what) throws TableException {
         ProfileFile.Entry e = f.required(key);
         double v = f.positive(key);
         if (v < 1 || v > REGISTER_MAX) {
-            throw f.fault(e, "'" + key + "' is " + what + ": 1 to " + written(REGISTER_MAX) + ", not " + written(v));
+            throw f.fault(e, what.with(key, written(REGISTER_MAX), written(v)));
         }
         return v;
     }
 
-    private static double register(ProfileFile f, String key, double otherwise, String what) throws TableException {
+    private static double register(ProfileFile f, String key, double otherwise, Phrase what) throws TableException {
         return f.entry(key).isPresent() ? register(f, key, what) : otherwise;
     }
 
@@ -274,12 +275,12 @@ public final class ProfileLoader {
         for (ProfileFile.Entry e : f.withPrefix("tool.")) {
             int n = numberOf(f, e, "tool.", seen);
             if (n < 1) {
-                throw f.faultAtKey(e, "tool offsets are numbered from 1: T0101 is tool 1, offset 1 ('" + e.key() + "')");
+                throw f.faultAtKey(e, Phrase.TOOL_OFFSET_FROM_ONE.with(e.key()));
             }
             tools.put(n, offset(f.pair(e), counts, x, z));
         }
         if (f.entry("tools.offsets").isPresent()) {
-            int n = whole(f, "tools.offsets", "tools.offsets is a whole number of offsets, 1 to 99");
+            int n = whole(f, "tools.offsets", Phrase.TOOLS_OFFSETS_RANGE);
             for (int i = 1; i <= n; i++) {
                 tools.putIfAbsent(i, Point.ORIGIN);
             }
@@ -298,15 +299,15 @@ public final class ProfileLoader {
         for (ProfileFile.Entry e : f.withPrefix("nose.")) {
             int n = numberOf(f, e, "nose.", seen);
             if (n < 1) {
-                throw f.faultAtKey(e, "nose radii are per tool offset, numbered from 1 ('" + e.key() + "')");
+                throw f.faultAtKey(e, Phrase.NOSE_FROM_ONE.with(e.key()));
             }
             double[] v = f.pair(e);
             double mm = counts ? v[0] / x.countsPerMm() : v[0];
             if (!(mm >= 0) || mm >= 25) {
-                throw f.fault(e, "a nose radius is at least 0 and below 25 mm, not " + written(v[0]) + " (" + e.key() + ")");
+                throw f.fault(e, Phrase.NOSE_RADIUS.with(written(v[0]), e.key()));
             }
             if (v[1] != Math.rint(v[1]) || v[1] < 0 || v[1] > 9) {
-                throw f.fault(e, "a tip direction is a whole number 0 to 9, not " + written(v[1]) + " (" + e.key() + ")");
+                throw f.fault(e, Phrase.TIP_DIRECTION.with(written(v[1]), e.key()));
             }
             noses.put(n, new Nose(mm * x.countsPerMm(), (int) v[1]));
         }
@@ -318,15 +319,15 @@ public final class ProfileLoader {
         if (f.entry("tools.count").isEmpty()) {
             return tools.keySet().stream().mapToInt(i -> i).max().orElse(1);
         }
-        return whole(f, "tools.count", "tools.count is a whole number of turret stations, 1 to 99");
+        return whole(f, "tools.count", Phrase.TOOLS_COUNT_RANGE);
     }
 
     /** A count of tools or offsets, which T's two-digit fields bound to 1..99. */
-    private static int whole(ProfileFile f, String key, String rule) throws TableException {
+    private static int whole(ProfileFile f, String key, Phrase rule) throws TableException {
         ProfileFile.Entry e = f.required(key);
         double n = f.number(e);
         if (n != Math.rint(n) || n < 1 || n > 99) {
-            throw f.fault(e, rule + ", not " + written(n));
+            throw f.fault(e, rule.with(written(n)));
         }
         return (int) n;
     }
@@ -340,7 +341,7 @@ public final class ProfileLoader {
             for (String d : e.value().split(",")) {
                 String t = d.trim();
                 if (!t.matches("(SB|CB) ?[0-9]{1,3}")) {
-                    throw f.fault(e, "output directives are SBn or CBn, not '" + t + "'");
+                    throw f.fault(e, Phrase.OUTPUT_DIRECTIVES.with(t));
                 }
                 dirs.add(t);
             }
@@ -358,8 +359,7 @@ public final class ProfileLoader {
         int n = Integer.parseInt(e.key().substring(prefix.length()));
         ProfileFile.Entry before = seen.putIfAbsent(n, e);
         if (before != null) {
-            throw f.faultAtKey(e, "'" + e.key() + "' is number " + n + " again ('" + before.key() + "' on line "
-                    + before.line() + ")");
+            throw f.faultAtKey(e, Phrase.NUMBER_AGAIN.with(e.key(), n, before.key(), before.line()));
         }
         return n;
     }

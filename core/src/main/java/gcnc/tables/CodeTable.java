@@ -1,6 +1,7 @@
 package gcnc.tables;
 
 import gcnc.diag.Code;
+import gcnc.diag.Phrase;
 import gcnc.diag.SarifRenderer;
 import gcnc.diag.Severity;
 import java.util.ArrayList;
@@ -36,7 +37,7 @@ public final class CodeTable {
             try {
                 code = Code.byNumber(r.integer("code"));
             } catch (IllegalArgumentException e) {
-                throw r.faultAt("code", e.getMessage());
+                throw r.faultAt("code", Phrase.NO_SUCH_CODE.with(r.integer("code")));
             }
             entries.add(new Entry(code, severity(r), r.get("en"), r.get("es"), explanation(r)));
         }
@@ -48,7 +49,7 @@ public final class CodeTable {
         try {
             return Severity.valueOf(s.toUpperCase(Locale.ROOT));
         } catch (IllegalArgumentException e) {
-            throw r.faultAt("severity", "'" + s + "' is not a severity (error, warning or note)");
+            throw r.faultAt("severity", Phrase.SEVERITY.with(s, "error, warning"));
         }
     }
 

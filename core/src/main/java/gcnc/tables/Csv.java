@@ -2,6 +2,7 @@ package gcnc.tables;
 
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
+import gcnc.diag.Phrase;
 import gcnc.diag.Span;
 import java.util.ArrayList;
 import java.util.List;
@@ -36,10 +37,10 @@ public final class Csv {
         public String get(String column) throws TableException {
             int i = header.indexOf(column);
             if (i < 0) {
-                throw fault(path, 1, 1, "missing column '" + column + "'");
+                throw fault(path, 1, 1, Phrase.CSV_MISSING_COLUMN.with(column));
             }
             if (i >= fields.length) {
-                throw fault(path, line, 1, "missing value for column '" + column + "'");
+                throw fault(path, line, 1, Phrase.CSV_MISSING_VALUE.with(column));
             }
             return fields[i].trim();
         }
@@ -49,7 +50,7 @@ public final class Csv {
             try {
                 return Integer.parseInt(v);
             } catch (NumberFormatException e) {
-                throw fault(path, line, columns[header.indexOf(column)], "'" + v + "' is not a whole number (" + column + ")");
+                throw fault(path, line, columns[header.indexOf(column)], Phrase.CSV_NOT_WHOLE.with(v, column));
             }
         }
 
@@ -58,7 +59,7 @@ public final class Csv {
             String v = get(column);
             OptionalDouble d = Decimal.parse(v);
             if (d.isEmpty()) {
-                throw fault(path, line, columns[header.indexOf(column)], "'" + v + "' is not a number (" + column + ")");
+                throw fault(path, line, columns[header.indexOf(column)], Phrase.NOT_A_NUMBER.with(v, column));
             }
             return d.getAsDouble();
         }
@@ -118,13 +119,13 @@ public final class Csv {
                 csv = new Csv(path, List.copyOf(header), rows);
             } else {
                 if (fields.length != header.size()) {
-                    throw fault(path, n + 1, 1, "expected " + header.size() + " fields, found " + fields.length);
+                    throw fault(path, n + 1, 1, Phrase.CSV_FIELD_COUNT.with(header.size(), fields.length));
                 }
                 rows.add(csv.new Row(n + 1, fields, cols));
             }
         }
         if (csv == null) {
-            throw fault(path, 1, 1, "empty table: no header line");
+            throw fault(path, 1, 1, Phrase.CSV_EMPTY.arg());
         }
         return csv;
     }

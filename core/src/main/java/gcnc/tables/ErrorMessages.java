@@ -55,18 +55,78 @@ public final class ErrorMessages {
         if (t == null) {
             return code.id() + " " + args;
         }
-        return new MessageFormat(pattern(t[lang.ordinal()]), Locale.ROOT).format(arguments(args, lang).toArray());
+        List<String> shown = arguments(args, lang);
+        try {
+            return new MessageFormat(pattern(t[lang.ordinal()]), Locale.ROOT).format(shown.toArray());
+        } catch (IllegalArgumentException e) {
+            return code.id() + " " + shown;
+        }
     }
 
     /** The arguments as a message shows them: a phrase in the language, any other as it is. */
     public List<String> arguments(List<String> args, Lang lang) {
         List<String> out = new java.util.ArrayList<>(args.size());
         for (String a : args) {
-            Phrase p = Phrase.of(a);
-            out.add(p == null ? a : new MessageFormat(pattern(phrases.get(p)[lang.ordinal()]), Locale.ROOT)
-                    .format(Phrase.arguments(a).toArray()));
+            out.add(phrase(a, lang));
         }
         return out;
+    }
+
+    /**
+     * One argument as a message shows it: a phrase in the language (a phrase in its arguments too),
+     * any other as it is. A phrase that cannot be put into words (not in this gcnc, no row) is
+     * shown by its name and arguments rather than failing the message.
+     */
+    private String phrase(String a, Lang lang) {
+        if (!Phrase.marked(a)) {
+            return a;
+        }
+        Phrase p = Phrase.of(a);
+        String[] texts = p == null ? null : phrases.get(p);
+        if (texts == null) {
+            return Phrase.plain(a);
+        }
+        List<String> inner = new java.util.ArrayList<>();
+        for (String i : Phrase.arguments(a)) {
+            inner.add(phrase(Phrase.unnested(i), lang));
+        }
+        try {
+            return new MessageFormat(pattern(texts[lang.ordinal()]), Locale.ROOT).format(inner.toArray());
+        } catch (IllegalArgumentException e) {
+            return Phrase.plain(a);
+        }
+    }
+
+    /**
+     * The English message of a diagnostic with the messages built into gcnc.jar, for logs and
+     * exceptions ({@link TableException#getMessage}): it never fails, even while the built-in tables
+     * are broken (then a phrase shows as its name and arguments).
+     */
+    public static String english(Code code, List<String> args) {
+        ErrorMessages m = BuiltIn.MESSAGES;
+        if (m != null) {
+            return m.render(code, args, Lang.EN);
+        }
+        List<String> plain = new java.util.ArrayList<>();
+        for (String a : args) {
+            plain.add(Phrase.plain(a));
+        }
+        return plain.size() == 1 ? plain.get(0) : code.id() + " " + plain;
+    }
+
+    /** The built-in messages, read once when first needed; null when they cannot be read. */
+    private static final class BuiltIn {
+        static final ErrorMessages MESSAGES = read();
+
+        private static ErrorMessages read() {
+            try {
+                TableSource src = TableSource.builtIn();
+                return load(Csv.parse(src.describe("errors.csv"), src.read("errors.csv")),
+                        Csv.parse(src.describe("phrases.csv"), src.read("phrases.csv")));
+            } catch (TableException | RuntimeException e) {
+                return null;
+            }
+        }
     }
 
     /** A template as MessageFormat reads it: an apostrophe in errors.csv is a plain apostrophe. */
@@ -85,14 +145,13 @@ public final class ErrorMessages {
             Code code = code(r);
             Integer first = lines.putIfAbsent(code, r.line());
             if (first != null) {
-                throw r.faultAt("code", code.id() + " is listed twice (first on line " + first + ")");
+                throw r.faultAt("code", Phrase.LISTED_TWICE_FIRST.with(code.id(), first));
             }
             m.put(code, new String[] {template(r, "en"), template(r, "es")});
         }
         for (Code c : Code.values()) {
             if (!m.containsKey(c)) {
-                throw Csv.fault(csv.path(), 1, 1, "no row for " + c.id() + ": every diagnostic code needs its"
-                        + " English and Spanish text");
+                throw Csv.fault(csv.path(), 1, 1, Phrase.NO_ROW_FOR_CODE.with(c.id()));
             }
         }
         return new ErrorMessages(m, phrases(phraseCsv));
@@ -107,18 +166,17 @@ public final class ErrorMessages {
             try {
                 p = Phrase.valueOf(r.get("key"));
             } catch (IllegalArgumentException e) {
-                throw r.faultAt("key", "no phrase " + r.get("key") + " in this gcnc");
+                throw r.faultAt("key", Phrase.NO_SUCH_PHRASE.with(r.get("key")));
             }
             Integer first = lines.putIfAbsent(p, r.line());
             if (first != null) {
-                throw r.faultAt("key", p + " is listed twice (first on line " + first + ")");
+                throw r.faultAt("key", Phrase.LISTED_TWICE_FIRST.with(p, first));
             }
             m.put(p, new String[] {template(r, "en"), template(r, "es")});
         }
         for (Phrase p : Phrase.values()) {
             if (!m.containsKey(p)) {
-                throw Csv.fault(csv.path(), 1, 1, "no row for the phrase " + p + ": every phrase needs its"
-                        + " English and Spanish text");
+                throw Csv.fault(csv.path(), 1, 1, Phrase.NO_ROW_FOR_PHRASE.with(p));
             }
         }
         return m;
@@ -129,7 +187,7 @@ public final class ErrorMessages {
         try {
             return Code.byNumber(n);
         } catch (IllegalArgumentException e) {
-            throw r.faultAt("code", "no diagnostic code " + n + " in this gcnc");
+            throw r.faultAt("code", Phrase.NO_SUCH_CODE.with(n));
         }
     }
 
@@ -145,8 +203,8 @@ public final class ErrorMessages {
             return t;
         } catch (IllegalArgumentException e) {
             int open = badPlaceholder(t);
-            throw r.faultAt(column, Math.max(open, 0), "message template cannot be rendered: "
-                    + (open < 0 ? e.getMessage() : placeholderProblem(t, open)));
+            throw r.faultAt(column, Math.max(open, 0), open < 0 ? Phrase.TEMPLATE_BROKEN.with(e.getMessage())
+                    : placeholderProblem(t, open));
         }
     }
 
@@ -167,10 +225,11 @@ public final class ErrorMessages {
         return close < 0 || next >= 0 && next < close;
     }
 
+    /** Why the template cannot be rendered, a phrase (its braces are arguments: a phrase's own would be placeholders). */
     private static String placeholderProblem(String t, int open) {
         if (unclosed(t, open)) {
-            return "'{' without '}'";
+            return Phrase.TEMPLATE_UNCLOSED.with("'{'", "'}'");
         }
-        return "'" + t.substring(open, t.indexOf('}', open) + 1) + "' is not a placeholder {0}, {1}...";
+        return Phrase.TEMPLATE_PLACEHOLDER.with(t.substring(open, t.indexOf('}', open) + 1), "{0}, {1}...");
     }
 }

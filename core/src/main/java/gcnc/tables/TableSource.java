@@ -1,5 +1,6 @@
 package gcnc.tables;
 
+import gcnc.diag.Phrase;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -24,11 +25,11 @@ public interface TableSource {
             public String read(String name) throws TableException {
                 try (InputStream in = TableSource.class.getResourceAsStream("/tables/" + name)) {
                     if (in == null) {
-                        throw Csv.fault(describe(name), 1, 1, "no such table in gcnc.jar");
+                        throw Csv.fault(describe(name), 1, 1, Phrase.TABLE_NOT_IN_JAR.arg());
                     }
                     return Utf8.decode(describe(name), in.readAllBytes());
                 } catch (IOException e) {
-                    throw Csv.fault(describe(name), 1, 1, e.getMessage());
+                    throw Csv.fault(describe(name), 1, 1, Phrase.reason(e));
                 }
             }
 
@@ -47,9 +48,9 @@ public interface TableSource {
                 try {
                     return Utf8.decode(describe(name), Files.readAllBytes(p));
                 } catch (NoSuchFileException e) {
-                    throw Csv.fault(describe(name), 1, 1, "file not found");
+                    throw Csv.fault(describe(name), 1, 1, Phrase.TABLE_FILE_NOT_FOUND.arg());
                 } catch (IOException e) {
-                    throw Csv.fault(describe(name), 1, 1, e.getMessage());
+                    throw Csv.fault(describe(name), 1, 1, Phrase.reason(e));
                 }
             }
 

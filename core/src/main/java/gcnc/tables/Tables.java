@@ -1,5 +1,6 @@
 package gcnc.tables;
 
+import gcnc.diag.Phrase;
 import java.util.Collections;
 import java.util.EnumSet;
 import java.util.HashMap;
@@ -51,16 +52,16 @@ public final class Tables {
         for (Csv.Row r : csv.rows()) {
             String w = r.get("word");
             if (w.length() != 1) {
-                throw r.faultAt("word", "word must be one letter, not '" + w + "'");
+                throw r.faultAt("word", Phrase.WORD_ONE_LETTER.with(w));
             }
             Integer first = lines.putIfAbsent(w.charAt(0), r.line());
             if (first != null) {
-                throw r.faultAt("word", "word " + w + " is listed twice (first on line " + first + ")");
+                throw r.faultAt("word", Phrase.WORD_TWICE.with(w, first));
             }
             ParameterLimit l = new ParameterLimit(w.charAt(0), letter(r, "sign", "P", "N").equals("P"),
                     letter(r, "type", "E", "D").equals("E"), r.decimal("lower"), r.decimal("upper"));
             if (l.lower() > l.upper()) {
-                throw r.faultAt("lower", "lower limit above upper limit");
+                throw r.faultAt("lower", Phrase.LOWER_ABOVE_UPPER.arg());
             }
             limits.put(l.word(), l);
         }
@@ -71,7 +72,7 @@ public final class Tables {
     private static String letter(Csv.Row r, String column, String first, String second) throws TableException {
         String v = r.get(column);
         if (!v.equals(first) && !v.equals(second)) {
-            throw r.faultAt(column, column + " is " + first + " or " + second + ", not '" + v + "'");
+            throw r.faultAt(column, Phrase.ONE_OF_TWO.with(column, first, second, v));
         }
         return v;
     }
@@ -80,7 +81,7 @@ public final class Tables {
         List<Offset> list = new java.util.ArrayList<>();
         for (Csv.Row r : csv(src, name).rows()) {
             if (r.integer("offset") != list.size() + 1) {
-                throw r.faultAt("offset", "offsets must be numbered 1, 2, 3... in order");
+                throw r.faultAt("offset", Phrase.OFFSETS_IN_ORDER.with("1, 2, 3..."));
             }
             list.add(new Offset(r.decimal("x"), r.decimal("z")));
         }

@@ -1,5 +1,6 @@
 package gcnc.tables;
 
+import gcnc.diag.Phrase;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
 import java.nio.charset.CharsetDecoder;
@@ -55,7 +56,6 @@ public final class Utf8 {
                 column++;
             }
         }
-        return Csv.fault(path, line, column, String.format(
-                "byte 0x%02X is not UTF-8: save the file as UTF-8", bad & 0xFF));
+        return Csv.fault(path, line, column, Phrase.NOT_UTF8.with(String.format("0x%02X", bad & 0xFF)));
     }
 }
