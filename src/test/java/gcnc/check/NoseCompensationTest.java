@@ -200,6 +200,25 @@ class NoseCompensationTest {
         assertEquals("", errs(Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG01 Z-10. F0.2\nG40 G28 U0. W0.\nM30\n")));
     }
 
+    /**
+     * A thread pass is spindle-synchronised and never offset: a G32, G92 or G76 under G41/G42 is
+     * E178, and so is a block that would run a modal thread or turning cycle again (the pipeline
+     * fuzz campaign found both reaching the offset code and throwing).
+     */
+    @Test
+    void aThreadOrAModalCycleAgainUnderCompensationIsE178() {
+        assertEquals("E178@6:1", errs(Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG32 W-10. F1.5\nG40 G00 X60.\nM30\n")));
+        assertEquals("E178@6:1", errs(Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG92 X18. Z-10. F1.5\nG40 G00 X60.\nM30\n")));
+        assertEquals("E178@6:1", errs(Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG76 X17. Z-10. P1000 Q300 F1.5\n"
+                + "G40 G00 X60.\nM30\n")));
+        // G92 in force, then G42 with X alone: the thread cycle would run again under compensation
+        assertEquals("E178@7:1", errs(Run.of("fanuc", HEAD + "G00 X20. Z2.\nG92 X18. Z-10. F1.5\nG42 X17.6\n"
+                + "G40 G00 X60.\nM30\n")));
+        // a G00 with the G42 ends the G92 (same group): what follows is compensated, not threaded
+        assertEquals("", errs(Run.of("fanuc", HEAD + "G00 X20. Z2.\nG92 X18. Z-10. F1.5\nG42 G00 X30.\n"
+                + "X17.6\nG40 G00 X60.\nM30\n")));
+    }
+
     @Test
     void aCompensatedMoveBeyondTheTravelIsE179WhereTheProgrammedOneIsInside() {
         // is radius -4.5 mm, inside fanuc's -5 mm; the nose ends 0.8 mm further: the tip at -5.3 mm

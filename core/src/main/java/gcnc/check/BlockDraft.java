@@ -63,6 +63,13 @@ public final class BlockDraft {
      * ("G76"): its F is the lead per revolution and its move is spindle-synchronised; null otherwise.
      */
     public String thread;
+    /**
+     * The block's first G or M word whose function gcnc cannot follow yet (a G whose role is
+     * unsupported, an M that is unsupported or a call the flow stage did not take), or null: the
+     * checker reports it before anything else in the block (at the G71, not at its later P or Q).
+     * Found in the same pass over the words as the block's units.
+     */
+    public final Word unsupported;
     private boolean failed;
 
     public BlockDraft(RawBlock block, ModalState prior, Tables tables, FunctionIndex functions,
@@ -75,12 +82,9 @@ public final class BlockDraft {
         this.profile = profile;
         this.coordinates = coordinates;
         this.first = first;
-        this.units = blockUnits(block, prior.units(), functions);
-        next.units = units;
-    }
-
-    private static Units blockUnits(RawBlock b, Units u, FunctionIndex functions) {
-        List<Word> ws = b.words();
+        Units u = prior.units();
+        Word notYet = null;
+        List<Word> ws = block.words();
         for (int i = 0; i < ws.size(); i++) {
             Word w = ws.get(i);
             if (w.letter() == Letter.G) {
@@ -89,10 +93,19 @@ public final class BlockDraft {
                     u = Units.INCH;
                 } else if (f != null && f.role() == GRole.METRIC) {
                     u = Units.MM;
+                } else if (f != null && notYet == null && f.role().unsupported() && !w.number().isEmpty()) {
+                    notYet = w;
+                }
+            } else if (w.letter() == Letter.M && notYet == null && !w.number().isEmpty()) {
+                gcnc.machine.MFunction f = functions.m(w.code());
+                if (f != null && (f.role() == gcnc.machine.MRole.UNSUPPORTED || f.role().call())) {
+                    notYet = w;
                 }
             }
         }
-        return u;
+        this.units = u;
+        this.unsupported = notYet;
+        next.units = units;
     }
 
     /** The G function whose parameters the block's words are (Eb01), or null. */

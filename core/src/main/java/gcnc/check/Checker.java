@@ -188,20 +188,31 @@ public final class Checker {
             state = Salvage.keep(b, state, functions, profile);
             return List.of();
         }
-        Word conflict = state.nose() == NoseSide.OFF ? null : NoseConflict.find(b, functions);
+        Word conflict = state.nose() == NoseSide.OFF ? NoseConflict.findTurningOn(b, functions)
+                : NoseConflict.find(b, functions);
         if (conflict != null) {
-            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, state.nose().g());
+            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, noseName(b));
             return List.of();
         }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
             return cycles.start(b, cycle, isFirst);
         }
+        if (cycles.repeats(b) && (state.nose() != NoseSide.OFF || NoseConflict.turnsOn(b, functions))) {
+            // a modal cycle (G90/G94, G92, G32, G81-G83) would run again: not under compensation
+            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(), b.words().get(0), noseName(b));
+            return List.of();
+        }
         if (cycles.repeats(b)) {
             return cycles.repeat(b, isFirst);
         }
         cycles.note(b);
         return one(b, isFirst, null).map(List::of).orElse(List.of());
+    }
+
+    /** The compensation in force, or the one the block turns on ("G42"), for E178. */
+    private String noseName(RawBlock b) {
+        return state.nose() != NoseSide.OFF ? state.nose().g() : NoseConflict.turningOn(b, functions);
     }
 
     /**
@@ -436,7 +447,7 @@ public final class Checker {
     }
 
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
-        Word unsupported = actions.firstUnsupported(d);
+        Word unsupported = d.unsupported;
         if (unsupported != null) {
             actions.action(17).apply(unsupported, d, out);
             return null;

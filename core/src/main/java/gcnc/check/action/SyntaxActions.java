@@ -9,7 +9,6 @@ import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import gcnc.machine.MFunction;
 import gcnc.machine.MRole;
-import java.util.List;
 
 /**
  * Table 10 of the thesis (the parse matrix) as a look-up: a word to its syntax action. Every word
@@ -52,29 +51,6 @@ public final class SyntaxActions {
                  FACE_PECK_CYCLE, GROOVE_PECK_CYCLE, DRILL_CYCLE, SPOT_DRILL_CYCLE, PECK_DRILL_CYCLE,
                  THREAD, THREAD_SINGLE_CYCLE, THREAD_CYCLE -> 17;
         };
-    }
-
-    /**
-     * The block's first G or M word whose function gcnc cannot follow yet, or null. The checker
-     * reports it before anything else in the block (at the G71, not at its later P or Q).
-     */
-    public Word firstUnsupported(BlockDraft d) {
-        List<Word> words = d.block.words();
-        for (int i = 0; i < words.size(); i++) {
-            Word w = words.get(i);
-            if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GFunction f = d.functions.g(w.code());
-                if (f != null && f.role().unsupported()) {
-                    return w;
-                }
-            } else if (w.letter() == Letter.M && !w.number().isEmpty()) {
-                MFunction f = d.functions.m(w.code());
-                if (f != null && (f.role() == MRole.UNSUPPORTED || f.role().call())) {
-                    return w;
-                }
-            }
-        }
-        return null;
     }
 
     /** The action for a word, or null after reporting why there is none (E001, E002, E004, E011, E012). */

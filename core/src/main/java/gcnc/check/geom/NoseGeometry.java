@@ -25,11 +25,28 @@ public final class NoseGeometry {
     /** One element of the programmed path: a line, or an arc about {@code centre} ({@code centre} null for a line). */
     public record Element(Point from, Point to, Point centre, double radius, boolean clockwise) {
         public static Element of(Motion m) {
-            if (m instanceof Motion.Arc a) {
-                return new Element(a.from(), a.to(), a.centre(), a.radius(), a.clockwise());
-            }
-            Motion.Linear l = (Motion.Linear) m;
-            return new Element(l.from(), l.to(), null, 0, false);
+            return m.accept(new Motion.Visitor<Element>() {
+                @Override
+                public Element linear(Motion.Linear l) {
+                    return new Element(l.from(), l.to(), null, 0, false);
+                }
+
+                @Override
+                public Element arc(Motion.Arc a) {
+                    return new Element(a.from(), a.to(), a.centre(), a.radius(), a.clockwise());
+                }
+
+                @Override
+                public Element dwell(Motion.Dwell d) {
+                    throw new IllegalArgumentException("a dwell is not an element of the path");
+                }
+
+                @Override
+                public Element thread(Motion.Thread t) {
+                    // E178 keeps threads out of compensation: a spindle-synchronised pass is never offset
+                    throw new IllegalArgumentException("a thread pass is not compensated (E178)");
+                }
+            });
         }
 
         public boolean arc() {
