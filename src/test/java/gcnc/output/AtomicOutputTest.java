@@ -81,4 +81,20 @@ class AtomicOutputTest {
             assertEquals(0, files.count(), "no temporary file left behind");
         }
     }
+
+    /** A map entry's two numbers are written as a String of them would be, whatever their sign and size. */
+    @Test
+    void twoNumbersAreWrittenAsTheirText() throws Exception {
+        Path target = Files.createTempDirectory("gcnc-atomic").resolve("part.dmc.map");
+        long[][] pairs = {{1, 0}, {0, 7}, {10, 200}, {-5, 3}, {Long.MAX_VALUE, Long.MIN_VALUE}, {123456789, -1}};
+        StringBuilder expected = new StringBuilder();
+        try (AtomicOutput out = new AtomicOutput(target)) {
+            for (long[] p : pairs) {
+                out.line(p[0], p[1]);
+                expected.append(p[0]).append(' ').append(p[1]).append('\n');
+            }
+            out.commit();
+        }
+        assertEquals(expected.toString(), Files.readString(target));
+    }
 }

@@ -10,13 +10,23 @@ import java.util.function.Consumer;
  * handed on as they arise, so memory stays flat however long the program.
  */
 public final class SourceMap {
-    private final Consumer<String> mapLines;
+    /** Where the entries go, as numbers: an output that writes them as text without making strings. */
+    public interface Entries {
+        void entry(int dmcLine, int sourceLine);
+    }
+
+    private final Entries entries;
     private int dmcLines;
     private int lastSource = -1;
 
-    /** @param mapLines receives each line of the map file, in output order */
+    /** @param mapLines receives each line of the map file ("{@code <dmc line> <source line>}"), in output order */
     public SourceMap(Consumer<String> mapLines) {
-        this.mapLines = mapLines;
+        this((dmc, source) -> mapLines.accept(dmc + " " + source));
+    }
+
+    /** @param entries receives each entry of the map file, in output order */
+    public SourceMap(Entries entries) {
+        this.entries = entries;
     }
 
     /** A sink that numbers the lines passing to {@code out} and records where each run came from. */
@@ -25,7 +35,7 @@ public final class SourceMap {
             dmcLines++;
             if (line.sourceLine() != lastSource) {
                 lastSource = line.sourceLine();
-                mapLines.accept(dmcLines + " " + lastSource);
+                entries.entry(dmcLines, lastSource);
             }
             out.accept(line);
         };

@@ -109,6 +109,13 @@ public final class DmcOutputs implements AutoCloseable {
         }
     }
 
+    /** Adds a map entry "{@code <dmc line> <source line>}"; nothing when there is no map. */
+    public void mapEntry(int dmcLine, int sourceLine) {
+        if (map != null) {
+            map.line(dmcLine, sourceLine);
+        }
+    }
+
     /** Puts both in place, or neither: a failure of the second undoes the first. */
     public void commit() throws IOException {
         if (map != null) {
