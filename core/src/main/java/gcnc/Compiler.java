@@ -99,7 +99,7 @@ public final class Compiler {
                 dialect.blank(Optional.empty(), collect);
             }
             simulate.flatMap(SimOptions::stock).ifPresent(b -> dialect.blank(Optional.of(
-                    new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout())), collect));
+                    new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout(), b.bore())), collect));
             if (sim != null) {
                 sim.begin(List.copyOf(lines));
             }

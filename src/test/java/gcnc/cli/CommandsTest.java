@@ -212,4 +212,20 @@ class CommandsTest {
         assertTrue(es.err().contains("error[E500]: no se puede leer: no existe el archivo o la carpeta"), es.err());
         assertTrue(es.out().strip().endsWith("total: 0 programas, 0 bloques, 2 errores"), es.out());
     }
+
+    /** --stock takes a bore as its fourth number, smaller than the diameter; a bad one is a usage error. */
+    @Test
+    void stockTakesABore() throws Exception {
+        assertEquals(new gcnc.sim.StockSize(65, 150, 100, 30), StockOptions.parse("65,150,100,30", 0));
+        assertEquals(new gcnc.sim.StockSize(65, 150, 7, 0), StockOptions.parse("65,150", 7));
+        for (String bad : new String[] {"65,150,100,65", "65,150,100,70", "65,150,100,-1", "65,150,100,30,1", "65,150,100,NaN"}) {
+            org.junit.jupiter.api.Assertions.assertThrows(StockOptions.BadStock.class, () -> StockOptions.parse(bad, 0), bad);
+        }
+        Path p = CliTest.program("G21 G18 G40 G99\nT0808\nG97 S800 M03\nG00 X28. Z5.\nG00 Z2.\nG01 X32. Z0. F0.1\n"
+                + "Z-20.\nX28.\nG00 Z5.\nG00 X70. Z50.\nM30\n");
+        assertEquals(0, CliTest.gcnc("simulate", p.toString(), "--machine", "fanuc", "--stock", "65,150,100,30").status());
+        CliTest.Run bar = CliTest.gcnc("simulate", p.toString(), "--machine", "fanuc", "--stock", "65,150,100");
+        assertEquals(1, bar.status());
+        assertTrue(bar.err().contains(":7:1: error[E315]"), bar.err());
+    }
 }

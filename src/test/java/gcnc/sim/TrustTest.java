@@ -148,6 +148,38 @@ class TrustTest {
         assertEquals(List.of("E305@9"), compile(m, p), "with the profile's blank it is");
     }
 
+    /**
+     * A tube (a blank with a bore: --stock D,L,S,BORE): a boring bar opens the 30 mm bore to 32 mm
+     * clean; from a solid bar the same pass puts the bar into the material. The DMC carries the bore,
+     * and its replay agrees.
+     */
+    @Test
+    void aBoringPassInATubeIsCleanAndInABarIsNot() throws Exception {
+        String p = "G21 G18 G40 G99\nT0808\nG97 S800 M03\nG00 X28. Z5.\nG00 Z2.\nG01 X32. Z0. F0.1\nZ-20.\nX28.\n"
+                + "G00 Z5.\nG00 X70. Z50.\nM30\n";
+        MachineProfile fanuc = ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES);
+        StringBuilder dmc = new StringBuilder();
+        Compiler.Result tube = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, "galil",
+                Optional.of(SimOptions.defaults().withStock(new gcnc.sim.StockSize(65, 150, 100, 30)))),
+                l -> dmc.append(l.text()).append('\n'));
+        assertEquals(List.of(), codes(tube));
+        assertEquals(true, dmc.toString().contains("\nNO STOCK D65 L150 S100 B30\n"), dmc.toString());
+        Compiler.Result bar = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, "galil",
+                Optional.of(SimOptions.defaults().withStock(new gcnc.sim.StockSize(65, 150, 100)))), l -> { });
+        assertEquals(List.of("E315@7"), codes(bar));
+        assertEquals(new gcnc.machine.MachineModel.Blank(65, 150, 100, 30),
+                gcnc.galil.StockComment.read("NO STOCK D65 L150 S100 B30"));
+        assertEquals(new gcnc.machine.MachineModel.Blank(65, 150, 100, 0), gcnc.galil.StockComment.read("NO STOCK D65 L150 S100"));
+    }
+
+    private static List<String> codes(Compiler.Result r) {
+        List<String> out = new ArrayList<>();
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            out.add(d.code().id() + "@" + d.span().line());
+        }
+        return out;
+    }
+
     /** check and compile give one verdict: the backend's limits are found by check too. */
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"G01 Z-10. F0.001|E207@8", "G04 X-1.|E122@8", "G04 P-5|E013@8"})

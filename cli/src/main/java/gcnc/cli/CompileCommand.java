@@ -65,7 +65,7 @@ final class CompileCommand extends RunCommand {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         }
         try (outputs) {
-            SourceMap mapper = new SourceMap(outputs::mapEntry);
+            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
             outputs.mapLine(SourceMap.sourceLine(SourceFiles.isStdin(file) ? name : file.getFileName().toString()));
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {

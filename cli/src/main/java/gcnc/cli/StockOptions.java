@@ -21,9 +21,10 @@ final class StockOptions {
         }
     }
 
-    @Option(names = "--stock", paramLabel = "DIA,LENGTH[,STICKOUT]",
-            description = "Blank for the simulation, in mm: diameter, length and stick-out from the jaws;"
-                    + " none: no blank (a second operation, a casting), the stock checks skipped.")
+    @Option(names = "--stock", paramLabel = "DIA,LENGTH[,STICKOUT[,BORE]]",
+            description = "Blank for the simulation, in mm: diameter, length, stick-out from the jaws and the"
+                    + " diameter of a bore through it (a tube); none: no blank (a second operation, a"
+                    + " casting), the stock checks skipped.")
     String stock;
 
 SimOptions options(MachineProfile profile) throws BadStock {
@@ -40,10 +41,11 @@ SimOptions options(MachineProfile profile) throws BadStock {
 
     static StockSize parse(String text, double defaultStickout) throws BadStock {
         String[] parts = text.split(",");
-        if (parts.length < 2 || parts.length > 3) {
-            throw new BadStock("--stock takes DIA,LENGTH or DIA,LENGTH,STICKOUT in mm, not '" + text + "'");
+        if (parts.length < 2 || parts.length > 4) {
+            throw new BadStock("--stock takes DIA,LENGTH, DIA,LENGTH,STICKOUT or DIA,LENGTH,STICKOUT,BORE in mm, not '"
+                    + text + "'");
         }
-        double[] v = new double[3];
+        double[] v = new double[4];
         v[2] = defaultStickout;
         for (int i = 0; i < parts.length; i++) {
             try {
@@ -51,10 +53,13 @@ SimOptions options(MachineProfile profile) throws BadStock {
             } catch (NumberFormatException e) {
                 throw new BadStock("--stock: '" + parts[i].trim() + "' is not a number");
             }
-            if (!(v[i] > 0)) {
-                throw new BadStock("--stock: every value must be greater than 0");
+            if (!(v[i] > 0) || !Double.isFinite(v[i])) {
+                throw new BadStock("--stock: every value must be a number greater than 0");
             }
         }
-        return new StockSize(v[0], v[1], v[2]);
+        if (v[3] >= v[0]) {
+            throw new BadStock("--stock: the bore " + parts[3].trim() + " must be smaller than the diameter " + parts[0].trim());
+        }
+        return new StockSize(v[0], v[1], v[2], v[3]);
     }
 }

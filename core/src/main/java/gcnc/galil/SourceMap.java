@@ -21,12 +21,16 @@ public final class SourceMap {
 
     /** @param mapLines receives each line of the map file ("{@code <dmc line> <source line>}"), in output order */
     public SourceMap(Consumer<String> mapLines) {
-        this((dmc, source) -> mapLines.accept(dmc + " " + source));
+        this((Entries) (dmc, source) -> mapLines.accept(dmc + " " + source));
     }
 
-    /** @param entries receives each entry of the map file, in output order */
-    public SourceMap(Entries entries) {
+    private SourceMap(Entries entries) {
         this.entries = entries;
+    }
+
+    /** A map whose entries go to {@code entries} as numbers, in output order. */
+    public static SourceMap toEntries(Entries entries) {
+        return new SourceMap(entries);
     }
 
     /** A sink that numbers the lines passing to {@code out} and records where each run came from. */

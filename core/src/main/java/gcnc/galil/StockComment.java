@@ -12,7 +12,7 @@ import java.util.regex.Pattern;
  */
 public final class StockComment {
     private static final Pattern FORM = Pattern.compile("NO STOCK D([0-9]+(?:\\.[0-9]+)?) L([0-9]+(?:\\.[0-9]+)?)"
-            + " S(-?[0-9]+(?:\\.[0-9]+)?)");
+            + " S(-?[0-9]+(?:\\.[0-9]+)?)(?: B([0-9]+(?:\\.[0-9]+)?))?");
 
     private StockComment() {
     }
@@ -22,7 +22,7 @@ public final class StockComment {
 
     public static String write(MachineModel.Blank b) {
         return "NO STOCK D" + GalilNumbers.angle(b.diameter()) + " L" + GalilNumbers.angle(b.length())
-                + " S" + GalilNumbers.angle(b.stickout());
+                + " S" + GalilNumbers.angle(b.stickout()) + (b.bore() > 0 ? " B" + GalilNumbers.angle(b.bore()) : "");
     }
 
     /** Whether the line says the program was verified without a blank. */
@@ -36,7 +36,11 @@ public final class StockComment {
         if (!m.matches()) {
             return null;
         }
+        double bore = m.group(4) == null ? 0 : Double.parseDouble(m.group(4));
+        if (!(bore < Double.parseDouble(m.group(1)))) {
+            return null; // a bore as wide as the blank: not a comment gcnc writes
+        }
         return new MachineModel.Blank(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)),
-                Double.parseDouble(m.group(3)));
+                Double.parseDouble(m.group(3)), bore);
     }
 }

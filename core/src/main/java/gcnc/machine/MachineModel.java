@@ -40,7 +40,11 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
     }
 
     /** A blank sticking out {@code stickout} in front of the jaws' face; its back end is in the jaws. */
-    public record Blank(double diameter, double length, double stickout) {
+    public record Blank(double diameter, double length, double stickout, double bore) {
+        /** A bar: no bore. */
+        public Blank(double diameter, double length, double stickout) {
+            this(diameter, length, stickout, 0);
+        }
     }
 
     /** A convex polygon of (dz, dx) points from the tool tip; dx radial, + away from the centreline. */

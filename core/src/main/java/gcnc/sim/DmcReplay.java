@@ -54,7 +54,7 @@ public final class DmcReplay {
                 }
                 gcnc.machine.MachineModel.Blank b = gcnc.galil.StockComment.read(l);
                 if (b != null) {
-                    options = options.withStock(new StockSize(b.diameter(), b.length(), b.stickout()));
+                    options = options.withStock(new StockSize(b.diameter(), b.length(), b.stickout(), b.bore()));
                     break;
                 }
             }

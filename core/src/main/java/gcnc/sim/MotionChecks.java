@@ -60,7 +60,7 @@ final class MotionChecks {
         StockSize s = options.noBlank() ? null : options.stock().orElse(machine.stock().orElse(null));
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
-            stock = new Stock(face - s.length(), face, s.diameter() / 2);
+            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);
         } else {
             stock = null;
         }

@@ -48,6 +48,11 @@ final class Stock {
     private PreparedGeometry prepared;
 
     Stock(double back, double face, double radius) {
+        this(back, face, 0, radius);
+    }
+
+    /** A blank from {@code back} to {@code face}, its material from radius {@code inner} (a bore; 0 for a bar) to {@code radius}. */
+    Stock(double back, double face, double inner, double radius) {
         this.back = back;
         this.face = face;
         this.radius = radius;
@@ -58,7 +63,7 @@ final class Stock {
         this.upper = new double[slices];
         this.groupMax = new double[slices / GROUP];
         this.superMax = new double[(groupMax.length + GROUP - 1) / GROUP];
-        this.material = factory.toGeometry(new Envelope(back, face, 0, radius));
+        this.material = factory.toGeometry(new Envelope(back, face, inner, radius));
         java.util.Arrays.fill(upper, radius);
         java.util.Arrays.fill(groupMax, radius);
         java.util.Arrays.fill(superMax, radius);
