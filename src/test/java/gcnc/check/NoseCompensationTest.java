@@ -212,8 +212,9 @@ class NoseCompensationTest {
         assertEquals("E178@6:1", errs(Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG76 X17. Z-10. P1000 Q300 F1.5\n"
                 + "G40 G00 X60.\nM30\n")));
         // G92 in force, then G42 with X alone: the thread cycle would run again under compensation
-        assertEquals("E178@7:1", errs(Run.of("fanuc", HEAD + "G00 X20. Z2.\nG92 X18. Z-10. F1.5\nG42 X17.6\n"
-                + "G40 G00 X60.\nM30\n")));
+        Run again = Run.of("fanuc", HEAD + "G00 X20. Z2.\nG92 X18. Z-10. F1.5\nG42 X17.6\nG40 G00 X60.\nM30\n");
+        assertEquals("E178@7:1", errs(again));
+        assertTrue(again.messages().contains("G92 again with nose radius compensation G42 in force"), again.messages());
         // a G00 with the G42 ends the G92 (same group): what follows is compensated, not threaded
         assertEquals("", errs(Run.of("fanuc", HEAD + "G00 X20. Z2.\nG92 X18. Z-10. F1.5\nG42 G00 X30.\n"
                 + "X17.6\nG40 G00 X60.\nM30\n")));

@@ -200,7 +200,8 @@ public final class Checker {
         }
         if (cycles.repeats(b) && (state.nose() != NoseSide.OFF || NoseConflict.turnsOn(b, functions))) {
             // a modal cycle (G90/G94, G92, G32, G81-G83) would run again: not under compensation
-            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(), b.words().get(0), noseName(b));
+            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(), gcnc.diag.Phrase.CYCLE_AGAIN.with(cycles.repeating(b)),
+                    noseName(b));
             return List.of();
         }
         if (cycles.repeats(b)) {

@@ -142,6 +142,11 @@ final class CycleExpansion {
         return any && (single.repeats(b) || drilling.repeats(b) || threads.repeats(b));
     }
 
+    /** The modal cycle the block would run again ("G92"): the one {@link #repeats} found. */
+    String repeating(RawBlock b) {
+        return drilling.repeats(b) ? drilling.name() : threads.repeats(b) ? threads.name() : single.name();
+    }
+
     List<CheckedBlock> repeat(RawBlock b, boolean isFirst) {
         if (drilling.repeats(b)) {
             return drilling.run(b, null, isFirst);

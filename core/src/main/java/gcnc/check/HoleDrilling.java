@@ -63,6 +63,11 @@ final class HoleDrilling {
     }
 
     /** Whether the block drills again with the cycle in force: an axis word and no G that ends it or owns the words. */
+    /** The cycle in force as the program wrote it ("G92"), for a finding about running it again. */
+    String name() {
+        return name;
+    }
+
     boolean repeats(RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, this::ends);
     }

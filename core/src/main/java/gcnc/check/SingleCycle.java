@@ -45,6 +45,11 @@ final class SingleCycle {
     }
 
     /** Whether the block makes the cycle in force again: an axis word, no G of its group and no one-shot G. */
+    /** The cycle in force as the program wrote it ("G92"), for a finding about running it again. */
+    String name() {
+        return name;
+    }
+
     boolean repeats(RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
     }

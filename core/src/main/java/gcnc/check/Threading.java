@@ -86,6 +86,11 @@ final class Threading {
     }
 
     /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
+    /** The cycle in force as the program wrote it ("G92"), for a finding about running it again. */
+    String name() {
+        return name;
+    }
+
     boolean repeats(RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
     }

@@ -65,6 +65,8 @@ public enum Phrase {
     POCKET_UNIFORM,
     /** E189: a pocket too narrow for the allowance on both its walls ({0}: the axis). */
     POCKET_TOO_NARROW,
+    /** E178: a block that would run the modal cycle {0} again. */
+    CYCLE_AGAIN,
     /** E500: what could not be done with a file. */
     IO_CANNOT_READ,
     IO_CANNOT_WRITE,
