@@ -11,6 +11,7 @@ import gcnc.ir.Point;
 import gcnc.ir.ProgramFrame;
 import gcnc.ir.RawBlock;
 import gcnc.parse.BlockReader;
+import java.io.IOException;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -171,14 +172,17 @@ class CycleExpansionTest {
         assertEquals(moves, cycle(i));
     }
 
+    /** The cycle programs of the goldens, NAME.MACHINE.nc, in name order. */
+    private static List<Path> programs() throws IOException {
+        try (Stream<Path> s = Files.list(DIR)) {
+            return s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
+        }
+    }
+
     @TestFactory
     Stream<DynamicTest> everyCycleProgramExpandsAsReviewed() throws Exception {
         boolean update = Boolean.getBoolean("gcnc.updateGolden");
-        List<Path> programs;
-        try (Stream<Path> s = Files.list(DIR)) {
-            programs = s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
-        }
-        return programs.stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
+        return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             String name = p.getFileName().toString();
             String machine = name.split("\\.")[1];
             String actual;
@@ -205,11 +209,7 @@ class CycleExpansionTest {
     @TestFactory
     Stream<DynamicTest> everyCycleProgramCompilesAsReviewed() throws Exception {
         boolean update = Boolean.getBoolean("gcnc.updateGolden");
-        List<Path> programs;
-        try (Stream<Path> s = Files.list(DIR)) {
-            programs = s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
-        }
-        return programs.stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
+        return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             String name = p.getFileName().toString();
             String machine = name.split("\\.")[1];
             boolean simulate = machine.equals("fanuc") && !name.startsWith("pattern") && !name.startsWith("face-peck");

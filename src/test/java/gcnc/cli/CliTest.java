@@ -62,27 +62,24 @@ class CliTest {
     /** docs/program-flow.md shows the output of docs/examples/flow/grooves.nc (a call into a file beside it and back). */
     @Test
     void theProgramFlowExampleIsWhatGcncPrints() throws IOException {
-        String doc = Files.readString(Path.of("docs/program-flow.md"));
-        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/flow/grooves.nc --machine fanuc\n";
-        int from = doc.indexOf(command);
-        assertTrue(from >= 0, "docs/program-flow.md lost its example");
-        from += command.length();
-        String shown = doc.substring(from, doc.indexOf("```", from));
-        Run r = gcnc("check", "docs/examples/flow/grooves.nc", "--machine", "fanuc");
-        assertEquals(1, r.status());
-        assertEquals(shown, r.err() + r.out());
+        assertDocShows("docs/program-flow.md", "docs/examples/flow/grooves.nc");
     }
 
     /** docs/program-flow.md shows the output of docs/examples/flow/pecks.nc (a macro B loop and a value only the machine knows). */
     @Test
     void theMacroExampleIsWhatGcncPrints() throws IOException {
-        String doc = Files.readString(Path.of("docs/program-flow.md"));
-        String command = "$ java -jar build/libs/gcnc.jar check docs/examples/flow/pecks.nc --machine fanuc\n";
+        assertDocShows("docs/program-flow.md", "docs/examples/flow/pecks.nc");
+    }
+
+    /** The document shows, after "$ java -jar build/libs/gcnc.jar check PROGRAM --machine fanuc", what gcnc prints. */
+    private static void assertDocShows(String document, String program) throws IOException {
+        String doc = Files.readString(Path.of(document));
+        String command = "$ java -jar build/libs/gcnc.jar check " + program + " --machine fanuc\n";
         int from = doc.indexOf(command);
-        assertTrue(from >= 0, "docs/program-flow.md lost its macro example");
+        assertTrue(from >= 0, document + " lost its example of " + program);
         from += command.length();
         String shown = doc.substring(from, doc.indexOf("```", from));
-        Run r = gcnc("check", "docs/examples/flow/pecks.nc", "--machine", "fanuc");
+        Run r = gcnc("check", program, "--machine", "fanuc");
         assertEquals(1, r.status());
         assertEquals(shown, r.err() + r.out());
     }

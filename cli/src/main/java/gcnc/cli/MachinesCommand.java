@@ -51,7 +51,7 @@ final class MachinesCommand implements Callable<Integer> {
         } catch (TableException e) {
             return Reporter.tableFault(err, e, common.language());
         } catch (IOException e) {
-            err.println(new Phrases(common.language()).get("machines.cannot_list", SourceFiles.reason(e)));
+            err.println(new Phrases(common.language()).get("machines.cannot_list", SourceFiles.reason(e, common.language())));
             return ExitCode.USAGE;
         }
         int status = ExitCode.CLEAN;
@@ -158,7 +158,7 @@ final class MachinesCommand implements Callable<Integer> {
             } catch (TableException e) {
                 return Reporter.tableFault(spec.commandLine().getErr(), e, common.language());
             } catch (IOException e) {
-                spec.commandLine().getErr().println("gcnc: " + Printable.escape(name) + ": " + SourceFiles.reason(e));
+                spec.commandLine().getErr().println("gcnc: " + Printable.escape(name) + ": " + SourceFiles.reason(e, common.language()));
                 return ExitCode.USAGE;
             }
         }

@@ -150,7 +150,7 @@ final class Reporter {
             }
         } catch (IOException e) {
             // A PrintWriter does not throw; its errors are seen by checkError, reported by Main.
-            err.println("gcnc: cannot write the report: " + SourceFiles.reason(e));
+            err.println("gcnc: cannot write the report: " + SourceFiles.reason(e, lang));
         }
         out.flush();
     }

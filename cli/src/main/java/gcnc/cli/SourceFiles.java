@@ -55,17 +55,12 @@ final class SourceFiles {
         return isStdin(file) ? java.util.Optional.empty() : java.util.Optional.of(folder(file));
     }
 
-    /** The short reason an I/O exception gives, without Java's class names. */
-    static String reason(IOException e) {
-        if (e instanceof java.nio.file.NoSuchFileException) {
-            return "no such file or directory";
-        }
-        if (e instanceof java.nio.file.AccessDeniedException) {
-            return "permission denied";
-        }
-        if (e instanceof java.nio.file.FileSystemException f && f.getReason() != null) {
-            return f.getReason();
-        }
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    /**
+     * The short reason an I/O exception gives, without Java's class names, in {@code lang}: the
+     * reason E500 gives ({@link gcnc.diag.Phrase#reason}), for the lines that are not a finding.
+     */
+    static String reason(IOException e, gcnc.tables.ErrorMessages.Lang lang) {
+        return gcnc.tables.Tables.builtIn().messages().arguments(java.util.List.of(gcnc.diag.Phrase.reason(e)), lang)
+                .get(0);
     }
 }

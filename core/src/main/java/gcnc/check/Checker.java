@@ -188,32 +188,29 @@ public final class Checker {
             state = Salvage.keep(b, state, functions, profile);
             return List.of();
         }
-        Word conflict = state.nose() == NoseSide.OFF ? NoseConflict.findTurningOn(b, functions)
-                : NoseConflict.find(b, functions);
+        // the compensation in force, or the one the block turns on ("G42"); null when neither
+        boolean inForce = state.nose() != NoseSide.OFF;
+        String compensation = inForce ? state.nose().g() : NoseConflict.turningOn(b, functions);
+        Word conflict = compensation == null ? null : NoseConflict.find(b, functions, inForce);
         if (conflict != null) {
-            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, noseName(b));
+            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, compensation);
             return List.of();
         }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
             return cycles.start(b, cycle, isFirst);
         }
-        if (cycles.repeats(b) && (state.nose() != NoseSide.OFF || NoseConflict.turnsOn(b, functions))) {
-            // a modal cycle (G90/G94, G92, G32, G81-G83) would run again: not under compensation
-            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(), gcnc.diag.Phrase.CYCLE_AGAIN.with(cycles.repeating(b)),
-                    noseName(b));
-            return List.of();
-        }
         if (cycles.repeats(b)) {
+            if (compensation != null) {
+                // a modal cycle (G90/G94, G92, G32, G81-G83) would run again: not under compensation
+                out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(),
+                        gcnc.diag.Phrase.CYCLE_AGAIN.with(cycles.repeating(b)), compensation);
+                return List.of();
+            }
             return cycles.repeat(b, isFirst);
         }
         cycles.note(b);
         return one(b, isFirst, null).map(List::of).orElse(List.of());
-    }
-
-    /** The compensation in force, or the one the block turns on ("G42"), for E178. */
-    private String noseName(RawBlock b) {
-        return state.nose() != NoseSide.OFF ? state.nose().g() : NoseConflict.turningOn(b, functions);
     }
 
     /**

@@ -62,12 +62,12 @@ final class HoleDrilling {
         return f.group() == group || f.role().motion() || f.role().singleCycle();
     }
 
-    /** Whether the block drills again with the cycle in force: an axis word and no G that ends it or owns the words. */
-    /** The cycle in force as the program wrote it ("G92"), for a finding about running it again. */
+    /** The cycle in force as the program wrote it ("G81"), for a finding about running it again. */
     String name() {
         return name;
     }
 
+    /** Whether the block drills again with the cycle in force: an axis word and no G that ends it or owns the words. */
     boolean repeats(RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, this::ends);
     }

@@ -42,45 +42,14 @@ final class NoseConflict {
 
     /**
      * E178: under G41/G42 gcnc follows G00-G03 moves only; a cycle other than G70, a thread, G28,
-     * G29, G53, a G50/G92 position register or a tool change needs G40 first (unless the block has
-     * it): the word of the block that does, or null.
+     * G29, G53, a G50/G92 position register or a tool change ({@code toolChanges}: not in the block
+     * that turns the compensation on, where the T is the start-up's own) needs G40 first (unless
+     * the block has it): the word of the block that does, or null.
      */
-    static Word find(RawBlock b, FunctionIndex functions) {
-        return find(b, functions, true);
-    }
-
-    /**
-     * The same for a block that turns the compensation on (G41/G42 in it, G40 in force before): a
-     * cycle or a thread in it is E178 as under compensation; a T word is the start-up's own.
-     */
-    static Word findTurningOn(RawBlock b, FunctionIndex functions) {
-        return turnsOn(b, functions) ? find(b, functions, false) : null;
-    }
-
-    /** Whether the block has G41 or G42 and no G40. */
-    static boolean turnsOn(RawBlock b, FunctionIndex functions) {
-        return turningOn(b, functions) != null;
-    }
-
-    /** The G41 or G42 of a block without G40, as the control names it; null when it has none. */
-    static String turningOn(RawBlock b, FunctionIndex functions) {
-        String on = null;
-        for (Word w : b.words()) {
-            gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;
-            if (f != null && f.role() == gcnc.machine.GRole.NOSE_COMP_CANCEL) {
-                return null;
-            }
-            if (f != null && (f.role() == gcnc.machine.GRole.NOSE_COMP_LEFT || f.role() == gcnc.machine.GRole.NOSE_COMP_RIGHT)) {
-                on = f.name();
-            }
-        }
-        return on;
-    }
-
-    private static Word find(RawBlock b, FunctionIndex functions, boolean tools) {
+    static Word find(RawBlock b, FunctionIndex functions, boolean toolChanges) {
         Word conflict = null;
         for (Word w : b.words()) {
-            if (tools && w.letter() == gcnc.ir.Letter.T && conflict == null) {
+            if (toolChanges && w.letter() == gcnc.ir.Letter.T && conflict == null) {
                 conflict = w;
             }
             if (w.letter() != gcnc.ir.Letter.G || w.number().isEmpty()) {
@@ -105,5 +74,20 @@ final class NoseConflict {
             }
         }
         return conflict;
+    }
+
+    /** The G41 or G42 of a block without G40, as the control names it; null when it has none. */
+    static String turningOn(RawBlock b, FunctionIndex functions) {
+        String on = null;
+        for (Word w : b.words()) {
+            gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;
+            if (f != null && f.role() == gcnc.machine.GRole.NOSE_COMP_CANCEL) {
+                return null;
+            }
+            if (f != null && (f.role() == gcnc.machine.GRole.NOSE_COMP_LEFT || f.role() == gcnc.machine.GRole.NOSE_COMP_RIGHT)) {
+                on = f.name();
+            }
+        }
+        return on;
     }
 }

@@ -44,12 +44,12 @@ final class SingleCycle {
         return CycleBlocks.function(host, w);
     }
 
-    /** Whether the block makes the cycle in force again: an axis word, no G of its group and no one-shot G. */
-    /** The cycle in force as the program wrote it ("G92"), for a finding about running it again. */
+    /** The cycle in force as the program wrote it ("G90"), for a finding about running it again. */
     String name() {
         return name;
     }
 
+    /** Whether the block makes the cycle in force again: an axis word, no G of its group and no one-shot G. */
     boolean repeats(RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
     }

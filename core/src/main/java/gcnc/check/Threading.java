@@ -85,12 +85,12 @@ final class Threading {
         return CycleBlocks.function(host, w);
     }
 
-    /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
-    /** The cycle in force as the program wrote it ("G92"), for a finding about running it again. */
+    /** The thread in force as the program wrote it ("G92"), for a finding about running it again. */
     String name() {
         return name;
     }
 
+    /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
     boolean repeats(RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
     }
