@@ -59,6 +59,25 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
+    /**
+     * The README's shop program (docs/examples/bushing.nc: G71/G70 with G42, a G76 thread, a G75
+     * groove, on the haas) compiles and simulates clean from its 1.5 in bar, and its DMC gears the
+     * thread to the spindle; a rapid moved into the bar is found on its line.
+     */
+    @Test
+    void theReadmeBushingSimulatesCleanAndAMistakeInItIsFound() throws IOException {
+        Run r = gcnc("simulate", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1,200,150");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains(", 0 findings;"), r.out());
+        Path dmc = Files.createTempDirectory("gcnc-bushing").resolve("bushing.dmc");
+        assertEquals(0, gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1,200,150",
+                "-o", dmc.toString()).status());
+        assertTrue(Files.readString(dmc).contains("\nGA C,C\n"), "the thread is geared to the spindle");
+        Path wrong = program(Files.readString(Path.of("docs/examples/bushing.nc")).replace("G00 X1.4 Z-1.4", "G00 X1.0 Z-1.4"));
+        Run crash = gcnc("simulate", wrong.toString(), "--machine", "haas", "--stock", "38.1,200,150");
+        assertTrue(crash.err().contains(":40:1: error[E305]"), crash.err());
+    }
+
     /** docs/program-flow.md shows the output of docs/examples/flow/grooves.nc (a call into a file beside it and back). */
     @Test
     void theProgramFlowExampleIsWhatGcncPrints() throws IOException {
