@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
@@ -119,6 +120,50 @@ class TrustTest {
         String p = "O1\nG21 G90 G98\nG50 S2500\nM11\nT0202\nS1000 M03\nG00 X24. Z2.\nG01 Z-30. F100.\nG00 X46.\nM05\nM30\n";
         assertEquals(List.of("E315@8"), compile(machineWith("sim.tool.2 = C 5"), p));
         assertEquals(List.of(), compile(machineWith("sim.tool.2 = C 12.7"), p));
+    }
+
+    /**
+     * Turning back toward the tailstock along a shoulder just plunged: the 80° C insert's trailing
+     * edge rises 10° and reaches 2.24 mm above its tip, so a 2 mm step back is cut by that edge
+     * and a 5 mm step meets the insert's back (E320); a 35° V insert's trailing edge reaches 13.6 mm
+     * and cuts the 5 mm step. The DMC's replay finds what the compile found.
+     */
+    @ParameterizedTest(name = "down to X{0} with {1}")
+    @CsvSource({"30., C 12.7, E320@11", "36., C 12.7, ''", "30., V 9.525, ''"})
+    void turningBackDeeperThanTheTrailingEdgeReachesCutsWithTheBackOfTheInsert(String x, String tool, String found)
+            throws Exception {
+        String p = HEAD + "G00 X46. Z2.\nG00 X40.\nG01 Z-30. F100.\nG01 X" + x + "\nG01 Z-10.\nG00 X46.\nG00 Z2.\nM05\nM30\n";
+        MachineProfile m = machineWith("sim.tool.1 = " + tool);
+        List<String> expected = found.isEmpty() ? List.of() : List.of(found);
+        assertEquals(expected, compile(m, p));
+        StringBuilder dmc = new StringBuilder();
+        StringBuilder map = new StringBuilder();
+        Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil", Optional.empty()),
+                new gcnc.galil.SourceMap(l -> map.append(l).append('\n')).wrap(l -> dmc.append(l.text()).append('\n')));
+        gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
+        DmcReplay.replay(new java.io.BufferedReader(new StringReader(dmc.toString())), m, SimOptions.defaults(), replayed,
+                gcnc.galil.SourceMap.read(new java.io.BufferedReader(new StringReader(map.toString()))).lines());
+        List<String> fromReplay = new ArrayList<>();
+        replayed.sorted().forEach(d -> fromReplay.add(d.code().id() + "@" + d.span().line()));
+        assertEquals(expected, fromReplay, "the replay of the DMC");
+    }
+
+    /**
+     * A boring bar opens a tube's bore to 32 mm and steps out to 36 mm at the bottom; pulled back
+     * toward the tailstock it meets the wall it has not cut with the insert's back (E320), while
+     * stepping out at the mouth and boring toward the chuck is clean.
+     */
+    @Test
+    void aBoringBarPulledBackIntoUncutWallCutsWithItsBack() throws Exception {
+        String head = "G21 G18 G40 G99\nT0808\nG97 S800 M03\nG00 X28. Z5.\nG00 Z2.\nG01 X32. Z0. F0.1\nZ-20.\n";
+        String back = head + "X36.\nZ-5.\nX28.\nG00 Z5.\nG00 X70. Z50.\nM30\n";
+        String forward = head + "X28.\nG00 Z2.\nG01 X36. Z0.\nZ-20.\nX28.\nG00 Z5.\nG00 X70. Z50.\nM30\n";
+        MachineProfile fanuc = ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES);
+        SimOptions tube = SimOptions.defaults().withStock(new StockSize(65, 150, 100, 30));
+        assertEquals(List.of("E320@9"), codes(Compiler.compile(new StringReader(back),
+                new Compiler.Settings(TABLES, fanuc, "galil", Optional.of(tube)), l -> { })));
+        assertEquals(List.of(), codes(Compiler.compile(new StringReader(forward),
+                new Compiler.Settings(TABLES, fanuc, "galil", Optional.of(tube)), l -> { })));
     }
 
     @Test

@@ -367,6 +367,8 @@ public enum Code {
     E318_SIM_THREAD_NO_MASTER(318),
     /** Gearing engaged without the wait for the spindle's next whole revolution: passes start at different angles. */
     E319_SIM_THREAD_UNSYNCHRONISED(319),
+    /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
+    E320_SIM_BACK_OF_INSERT(320),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -51,8 +51,16 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
     public record Outline(double[] dz, double[] dx) {
     }
 
-    /** A tool's insert and holder; {@code holder} is null when there is none (the tip-only default). */
-    public record ToolOutline(Outline insert, Outline holder) {
+    /**
+     * A tool's insert and holder; {@code holder} is null when there is none (the tip-only default).
+     * {@code back} lists the insert's edges that do not cut (edge i runs from corner i to corner
+     * i + 1): the simulator reports material that such an edge meets first (E320). The library
+     * knows its shapes' backs; an outline given point by point has none, as its back is not known.
+     */
+    public record ToolOutline(Outline insert, Outline holder, int[] back) {
+        public ToolOutline(Outline insert, Outline holder) {
+            this(insert, holder, new int[0]);
+        }
     }
 
     private static final String[] CHUCK = {"chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter"};
@@ -170,7 +178,8 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         Optional<ProfileFile.Entry> insert = f.entry(prefix + ".insert");
         Optional<ProfileFile.Entry> holder = f.entry(prefix + ".holder");
         return new ToolOutline(insert.isPresent() ? outline(f, insert.get()) : otherwise.insert(),
-                holder.isPresent() ? outline(f, holder.get()) : otherwise.holder());
+                holder.isPresent() ? outline(f, holder.get()) : otherwise.holder(),
+                insert.isPresent() ? new int[0] : otherwise.back());
     }
 
     /** "dz, dx; dz, dx; ..." in mm from the tip, convex (the simulator's collision test needs it). */

@@ -22,7 +22,12 @@ import java.util.Locale;
  *   <li>{@code B diameter}: a boring bar along +Z below the tip, its insert facing outward.</li>
  * </ul>
  * These are simplified outlines (no clearance angles, no nose radius): what matters for the
- * checks is how tall and wide the cutting part is and where the holder starts.
+ * checks is how tall and wide the cutting part is, where the holder starts, and which edges cut.
+ * The two edges that meet at a rhombic insert's tip cut, and so do a boring insert's; the edge
+ * behind them, facing the tailstock, does not ({@link MachineModel.ToolOutline#back}), so turning
+ * back toward the tailstock deeper than the trailing edge reaches is a cut with the back of the
+ * insert. A blade cuts with its end and both sides (grooving inserts turn sideways), and a
+ * threading insert with both flanks: they have no back.
  */
 final class ToolLibrary {
     /** How far the holder extends beyond the insert, away from the cut (mm). */
@@ -61,7 +66,11 @@ final class ToolLibrary {
             case "C" -> insert = rhombus(80, size);
             case "D" -> insert = rhombus(55, size);
             case "V" -> insert = rhombus(35, size);
-            case "T" -> insert = new double[][] {{0, size * cos(60), size * cos(120)}, {0, size * sin(60), size * sin(120)}};
+            case "T" -> {
+                // both flanks cut; the third edge is under the holder
+                double[][] t = {{0, size * cos(60), size * cos(120)}, {0, size * sin(60), size * sin(120)}};
+                return new MachineModel.ToolOutline(outline(t), outline(holder(t)));
+            }
             case "G", "P" -> {
                 double deep = p.length == 3 ? reach : p[0].equalsIgnoreCase("G") ? Math.min(25, 10 * size) : 32;
                 double[][] blade = {{0, size, size, 0}, {0, 0, deep, deep}};
@@ -75,13 +84,15 @@ final class ToolLibrary {
                 // the insert at the bar's end, its corner at the tip; the bar below it, 150 mm along +Z
                 double[][] tip = {{0, 0.4 * size, 0.4 * size, 0}, {-0.3 * size, -0.3 * size, 0, 0}};
                 double[][] bar = {{0, 150, 150, 0}, {-size, -size, -0.3 * size, -0.3 * size}};
-                return new MachineModel.ToolOutline(outline(tip), outline(bar));
+                // the edge facing the tailstock does not cut: boring back toward it is E320
+                return new MachineModel.ToolOutline(outline(tip), outline(bar), new int[] {1});
             }
             default -> {
                 return null;
             }
         }
-        return new MachineModel.ToolOutline(outline(insert), outline(holder(insert)));
+        // the rhombus's back edge (corner 2 to corner 3, facing the tailstock) does not cut
+        return new MachineModel.ToolOutline(outline(insert), outline(holder(insert)), new int[] {2});
     }
 
     /**

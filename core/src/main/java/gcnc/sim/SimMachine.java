@@ -23,8 +23,11 @@ import java.util.Optional;
 public record SimMachine(double centreX, Shape[] chuck, double chuckFace, Shape[] tailstock, Optional<StockSize> stock,
                          Map<Integer, ToolShape> tools, ToolShape defaultTool) {
 
-    /** A tool's outline relative to its tip: insert and holder, each convex. */
-    public record ToolShape(Shape insert, Shape holder) {
+    /**
+     * A tool's outline relative to its tip: insert and holder, each convex, and the insert's edges
+     * that do not cut ({@link MachineModel.ToolOutline#back}).
+     */
+    public record ToolShape(Shape insert, Shape holder, int[] back) {
         Shape[] parts() {
             return holder == null ? new Shape[] {insert} : new Shape[] {insert, holder};
         }
@@ -86,7 +89,7 @@ public record SimMachine(double centreX, Shape[] chuck, double chuckFace, Shape[
         }
 
         ToolShape tool(MachineModel.ToolOutline t) {
-            return new ToolShape(shape(t.insert()), t.holder() == null ? null : shape(t.holder()));
+            return new ToolShape(shape(t.insert()), t.holder() == null ? null : shape(t.holder()), t.back());
         }
 
         private Shape shape(MachineModel.Outline o) {

@@ -401,6 +401,14 @@ final class Stock {
 
     /** A point where the sweeps reach more than {@link #DEPTH} into material, {z, r}; null if nowhere. */
     double[] deepOverlap(java.util.List<Sweep> sweeps) {
+        return deepOverlap(sweeps, java.util.List.of());
+    }
+
+    /**
+     * As {@link #deepOverlap(java.util.List)}, with the material the sweeps {@code before} cover
+     * taken away first (cuts of the same move that are not yet taken from the stock).
+     */
+    double[] deepOverlap(java.util.List<Sweep> sweeps, java.util.List<Sweep> before) {
         java.util.List<Geometry> parts = new java.util.ArrayList<>(sweeps.size());
         for (Sweep s : sweeps) {
             if (s.full() != null) {
@@ -416,6 +424,13 @@ final class Stock {
             return null;
         }
         Geometry overlap = OverlayNGRobust.overlay(material, region, OverlayNG.INTERSECTION);
+        if (!before.isEmpty()) {
+            java.util.List<Geometry> taken = new java.util.ArrayList<>(before.size());
+            for (Sweep s : before) {
+                taken.add(polygon(s.full()));
+            }
+            overlap = OverlayNGRobust.overlay(overlap, OverlayNGRobust.union(taken), OverlayNG.DIFFERENCE);
+        }
         if (overlap.isEmpty() || overlap.getArea() == 0) {
             return null;
         }
