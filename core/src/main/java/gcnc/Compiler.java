@@ -93,7 +93,9 @@ public final class Compiler {
         LineSink collect = lines::add;
         long blocks = 0;
         Optional<SimOptions> simulate = settings.simulation();
-        try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get()) : null) {
+        // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
+        try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get(), out)
+                : null) {
             dialect.begin(collect);
             if (simulate.isPresent() && simulate.get().noBlank()) {
                 dialect.blank(Optional.empty(), collect);
@@ -102,20 +104,12 @@ public final class Compiler {
                     new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout(), b.bore())), collect));
             if (sim != null) {
                 sim.begin(List.copyOf(lines));
+                lines.clear();
             }
             flush(lines, out);
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                for (CheckedBlock checked : checker.check(raw)) {
-                    if (diags.hasErrors()) {
-                        break;
-                    }
-                    dialect.block(checked, collect);
-                    if (sim != null && !diags.hasErrors()) {
-                        sim.block(checked, List.copyOf(lines));
-                    }
-                    flush(lines, out);
-                }
+                translate(checker.check(raw), dialect, diags, collect, lines, sim, out);
             }
             checker.finish(reader.lines());
             boolean translated = !diags.hasErrors();
@@ -123,6 +117,7 @@ public final class Compiler {
                 dialect.end(collect);
                 if (sim != null) {
                     sim.end(List.copyOf(lines));
+                    lines.clear();
                 }
                 flush(lines, out);
             }
@@ -132,6 +127,32 @@ public final class Compiler {
                 report = translated ? Optional.of(sim.report()) : Optional.empty();
             }
             return new Result(diags, blocks, report);
+        }
+    }
+
+    /**
+     * Translates the checked blocks of one source block and hands their lines on: to the simulator,
+     * which writes them after replaying them, or else straight to {@code out}. Nothing is translated
+     * after an error. (A method of its own, so that the JIT compiles it once rather than within a
+     * large on-stack replacement of the loop in {@link #compile}.)
+     */
+    private static void translate(List<CheckedBlock> checkedBlocks, Dialect dialect, Diagnostics diags,
+                                  LineSink collect, List<GalilLine> lines, SimulatorThread sim, LineSink out)
+            throws IOException {
+        for (CheckedBlock checked : checkedBlocks) {
+            if (diags.hasErrors()) {
+                return;
+            }
+            dialect.block(checked, collect); // into lines
+            if (sim != null) {
+                if (diags.hasErrors()) {
+                    sim.outputOnly(List.copyOf(lines));
+                } else {
+                    sim.block(checked, List.copyOf(lines));
+                }
+                lines.clear();
+            }
+            flush(lines, out);
         }
     }
 

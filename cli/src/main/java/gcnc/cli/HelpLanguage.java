@@ -99,48 +99,51 @@ final class HelpLanguage {
         }
     }
 
-    private static final List<Rule> SPANISH = List.of(
-            new Rule("Unknown option: (.*)", m -> "opción desconocida: " + m.group(1)),
-            new Rule("Unknown options: (.*)", m -> "opciones desconocidas: " + m.group(1)),
-            new Rule("Unmatched argument at index (\\d+): (.*)",
-                    m -> "argumento que sobra en la posición " + m.group(1) + ": " + m.group(2)),
-            new Rule("Unmatched arguments from index (\\d+): (.*)",
-                    m -> "argumentos que sobran desde la posición " + m.group(1) + ": " + m.group(2)),
-            new Rule("Missing required parameter: (.*)", m -> "falta un parámetro obligatorio: " + m.group(1)),
-            new Rule("Missing required parameters: (.*)", m -> "faltan parámetros obligatorios: " + m.group(1)),
-            new Rule("Missing required options?: (.*)", m -> "falta una opción obligatoria: " + m.group(1)),
-            new Rule("Missing required subcommand", m -> "falta el comando"),
-            new Rule("Missing required parameter for " + WHAT, m -> "falta el valor de " + what(m.group(1))),
-            new Rule(WHAT + " should be specified only once", m -> what(m.group(1)) + " solo puede darse una vez"),
-            new Rule("Invalid value for " + WHAT + ": expected one of \\[(.*)\\] \\(case-insensitive\\) but was '(.*)'",
-                    m -> "valor no válido para " + what(m.group(1)) + ": se esperaba uno de [" + m.group(2)
-                            + "] (en mayúsculas o minúsculas), no '" + m.group(3) + "'"),
-            new Rule("Invalid value for " + WHAT + ": (.*)",
-                    m -> "valor no válido para " + what(m.group(1)) + ": " + m.group(2)),
-            new Rule("Unknown subcommand '(.*)'\\.", m -> "comando desconocido: '" + m.group(1) + "'"),
-            // gcnc's own usage errors
-            new Rule("name a command: check, compile, simulate, tables, explain, machines or completion",
-                    m -> "indique un comando: check, compile, simulate, tables, explain, machines o completion"),
-            new Rule("- names standard input, which can be read once: give it once",
-                    m -> "- es la entrada estándar, que solo se puede leer una vez: indíquela una sola vez"),
-            new Rule("-o - and --format (\\w+) would both write standard output: name an output file",
-                    m -> "-o - y --format " + m.group(1) + " escribirían los dos en la salida estándar:"
-                            + " indique un archivo de salida"),
-            new Rule("--svg - and --format (\\w+) would both write standard output: name a file",
-                    m -> "--svg - y --format " + m.group(1) + " escribirían los dos en la salida estándar:"
-                            + " indique un archivo"),
-            new Rule("the program comes from standard input: name the output with -o \\(- for standard output\\)",
-                    m -> "el programa llega por la entrada estándar: indique la salida con -o (- para la salida estándar)"),
-            new Rule("(\\S+) has no row in errors\\.csv", m -> m.group(1) + " no tiene fila en errors.csv"),
-            new Rule("'(.*)' is not a diagnostic code of this gcnc \\(gcnc tables lists them all\\)",
-                    m -> "'" + m.group(1) + "' no es un código de diagnóstico de este gcnc (gcnc tables los muestra todos)"));
+    /** The Spanish of usage errors: made when the first one is put into Spanish, not at every run's start. */
+    private static final class Spanish {
+        static final List<Rule> RULES = List.of(
+                new Rule("Unknown option: (.*)", m -> "opción desconocida: " + m.group(1)),
+                new Rule("Unknown options: (.*)", m -> "opciones desconocidas: " + m.group(1)),
+                new Rule("Unmatched argument at index (\\d+): (.*)",
+                        m -> "argumento que sobra en la posición " + m.group(1) + ": " + m.group(2)),
+                new Rule("Unmatched arguments from index (\\d+): (.*)",
+                        m -> "argumentos que sobran desde la posición " + m.group(1) + ": " + m.group(2)),
+                new Rule("Missing required parameter: (.*)", m -> "falta un parámetro obligatorio: " + m.group(1)),
+                new Rule("Missing required parameters: (.*)", m -> "faltan parámetros obligatorios: " + m.group(1)),
+                new Rule("Missing required options?: (.*)", m -> "falta una opción obligatoria: " + m.group(1)),
+                new Rule("Missing required subcommand", m -> "falta el comando"),
+                new Rule("Missing required parameter for " + WHAT, m -> "falta el valor de " + what(m.group(1))),
+                new Rule(WHAT + " should be specified only once", m -> what(m.group(1)) + " solo puede darse una vez"),
+                new Rule("Invalid value for " + WHAT + ": expected one of \\[(.*)\\] \\(case-insensitive\\) but was '(.*)'",
+                        m -> "valor no válido para " + what(m.group(1)) + ": se esperaba uno de [" + m.group(2)
+                                + "] (en mayúsculas o minúsculas), no '" + m.group(3) + "'"),
+                new Rule("Invalid value for " + WHAT + ": (.*)",
+                        m -> "valor no válido para " + what(m.group(1)) + ": " + m.group(2)),
+                new Rule("Unknown subcommand '(.*)'\\.", m -> "comando desconocido: '" + m.group(1) + "'"),
+                // gcnc's own usage errors
+                new Rule("name a command: check, compile, simulate, tables, explain, machines or completion",
+                        m -> "indique un comando: check, compile, simulate, tables, explain, machines o completion"),
+                new Rule("- names standard input, which can be read once: give it once",
+                        m -> "- es la entrada estándar, que solo se puede leer una vez: indíquela una sola vez"),
+                new Rule("-o - and --format (\\w+) would both write standard output: name an output file",
+                        m -> "-o - y --format " + m.group(1) + " escribirían los dos en la salida estándar:"
+                                + " indique un archivo de salida"),
+                new Rule("--svg - and --format (\\w+) would both write standard output: name a file",
+                        m -> "--svg - y --format " + m.group(1) + " escribirían los dos en la salida estándar:"
+                                + " indique un archivo"),
+                new Rule("the program comes from standard input: name the output with -o \\(- for standard output\\)",
+                        m -> "el programa llega por la entrada estándar: indique la salida con -o (- para la salida estándar)"),
+                new Rule("(\\S+) has no row in errors\\.csv", m -> m.group(1) + " no tiene fila en errors.csv"),
+                new Rule("'(.*)' is not a diagnostic code of this gcnc \\(gcnc tables lists them all\\)",
+                        m -> "'" + m.group(1) + "' no es un código de diagnóstico de este gcnc (gcnc tables los muestra todos)"));
+    }
 
     /** A usage error's message in {@code lang}; one no rule knows stays as picocli or gcnc wrote it. */
     static String usageError(String message, ErrorMessages.Lang lang) {
         if (lang == ErrorMessages.Lang.EN || message == null) {
             return message;
         }
-        for (Rule r : SPANISH) {
+        for (Rule r : Spanish.RULES) {
             Matcher m = r.pattern().matcher(message);
             if (m.matches()) {
                 return r.spanish().apply(m);

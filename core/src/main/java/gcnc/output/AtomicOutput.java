@@ -210,6 +210,18 @@ public final class AtomicOutput implements AutoCloseable {
             return;
         }
         try {
+            int n = text.length();
+            if (n < ASCII_DIRECT && ascii(text, n)) {
+                // a DMC line is short ASCII: its chars are its bytes, copied without an array per line
+                if (buffered + n + 1 > buffer.length) {
+                    drain();
+                }
+                for (int i = 0; i < n; i++) {
+                    buffer[buffered++] = (byte) text.charAt(i);
+                }
+                buffer[buffered++] = '\n';
+                return;
+            }
             byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
             if (buffered + bytes.length + 1 > buffer.length) {
                 drain();
@@ -225,6 +237,18 @@ public final class AtomicOutput implements AutoCloseable {
         } catch (IOException e) {
             failure = e;
         }
+    }
+
+    /** Lines shorter than this are checked for ASCII and copied char by char. */
+    private static final int ASCII_DIRECT = 256;
+
+    private static boolean ascii(String text, int n) {
+        for (int i = 0; i < n; i++) {
+            if (text.charAt(i) >= 0x80) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**

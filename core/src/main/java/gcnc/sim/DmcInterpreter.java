@@ -159,7 +159,20 @@ final class DmcInterpreter {
             assignment(t, line);
             return;
         }
-        command(t.substring(0, 2), t.substring(2).strip(), t, line);
+        // the commands of nearly every line, read in place: no substrings for 5 lines a block
+        char c0 = t.charAt(0);
+        char c1 = t.charAt(1);
+        if (c0 == 'V' && c1 == 'P') {
+            vp(t, 2, t, line);
+        } else if (c0 == 'C' && c1 == 'R') {
+            cr(t, 2, t, line);
+        } else if (c0 == 'V' && c1 == 'S') {
+            speed = positive(t, 2, "VS", t, line, speed);
+        } else if (t.equals("BGS")) {
+            begin(line, t);
+        } else if (!t.equals("AMS")) {
+            command(t.substring(0, 2), t.substring(2).strip(), t, line);
+        }
     }
 
     private void command(String cmd, String args, String text, int line) {
@@ -169,11 +182,11 @@ final class DmcInterpreter {
                     out.report(Code.E313_SIM_VECTOR_PLANE, line, cmd, args, plane.letters);
                 }
             }
-            case "VA" -> acceleration = positive(args, cmd, text, line, acceleration);
-            case "VD" -> deceleration = positive(args, cmd, text, line, deceleration);
-            case "VS" -> speed = positive(args, cmd, text, line, speed);
-            case "VP" -> vp(args, text, line);
-            case "CR" -> cr(args, text, line);
+            case "VA" -> acceleration = positive(args, 0, cmd, text, line, acceleration);
+            case "VD" -> deceleration = positive(args, 0, cmd, text, line, deceleration);
+            case "VS" -> speed = positive(args, 0, cmd, text, line, speed);
+            case "VP" -> vp(args, 0, text, line);
+            case "CR" -> cr(args, 0, text, line);
             case "VE", "EN" -> {
                 if (!args.isEmpty()) {
                     out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
@@ -210,9 +223,10 @@ final class DmcInterpreter {
         }
     }
 
-    private void vp(String args, String text, int line) {
-        int comma = args.indexOf(',');
-        long p = comma < 0 ? BAD : parseLong(args, 0, comma);
+    /** VP with its arguments in args from {@code from} on. */
+    private void vp(String args, int from, String text, int line) {
+        int comma = args.indexOf(',', from);
+        long p = comma < 0 ? BAD : parseLong(args, from, comma);
         long q = comma < 0 ? BAD : parseLong(args, comma + 1, args.length());
         if (p == BAD || q == BAD) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "VP", text);
@@ -229,13 +243,18 @@ final class DmcInterpreter {
                 plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, text), e1, e2, line);
     }
 
-    private void cr(String args, String text, int line) {
-        String[] a = args.split(",", -1);
+    /** CR with its arguments in args from {@code from} on: three numbers between commas. */
+    private void cr(String args, int from, String text, int line) {
         double[] v = new double[3];
-        boolean ok = a.length == 3;
+        int at = from;
+        boolean ok = true;
         for (int i = 0; ok && i < 3; i++) {
-            v[i] = number(a[i]);
-            ok = !Double.isNaN(v[i]);
+            int comma = args.indexOf(',', at);
+            int end = i < 2 ? comma : args.length();
+            ok = end >= 0 && (i < 2 || comma < 0);
+            v[i] = ok ? decimal(args, at, end, false) : Double.NaN;
+            ok = ok && !Double.isNaN(v[i]);
+            at = end + 1;
         }
         if (!ok || v[0] <= 0 || Math.abs(v[2]) > 360 * 1000) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "CR", text);
@@ -469,14 +488,15 @@ final class DmcInterpreter {
         feedMarked = false;
     }
 
-    private double positive(String s, String cmd, String text, int line, double otherwise) {
-        double v = number(s);
+    /** The positive number in s from {@code from} on, else E301 and {@code otherwise}. */
+    private double positive(String s, int from, String cmd, String text, int line, double otherwise) {
+        double v = decimal(s, from, s.length(), false);
         if (Double.isNaN(v) || v <= 0) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
             return otherwise;
         }
         if (v > INT32) {
-            out.report(Code.E310_SIM_COUNT_RANGE, line, cmd + " " + s);
+            out.report(Code.E310_SIM_COUNT_RANGE, line, cmd + " " + s.substring(from).strip());
         }
         return v;
     }
@@ -514,17 +534,17 @@ final class DmcInterpreter {
     }
 
     /**
-     * The number in s[from, to), blanks around it allowed, or NaN; {@code integer} refuses a point
+     * The number in s[from, to), blanks (spaces, tabs) around it allowed, or NaN; {@code integer} refuses a point
      * and more than 15 digits. Up to 15 digits the value is digits / 10^k, both exact in a double,
      * so the one division rounds correctly: the value Double.parseDouble gives, without its cost
      * on every VP, CR and VS.
      */
     private static double decimal(String s, int from, int to, boolean integer) {
         int i = from;
-        while (i < to && s.charAt(i) == ' ') {
+        while (i < to && s.charAt(i) <= ' ') {
             i++;
         }
-        while (to > i && s.charAt(to - 1) == ' ') {
+        while (to > i && s.charAt(to - 1) <= ' ') {
             to--;
         }
         boolean negative = false;

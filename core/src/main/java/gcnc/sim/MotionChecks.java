@@ -291,6 +291,29 @@ final class MotionChecks {
      */
     private record Quiet(int tool, double fromX, double fromZ, double toX, double toZ, double centreX, double centreZ,
                          double sweepDeg) {
+        // written out: a record's own equals and hashCode are bootstrapped on first use (ObjectMethods),
+        // 20 ms of every simulated run's start-up
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Quiet q && tool == q.tool && same(fromX, q.fromX) && same(fromZ, q.fromZ)
+                    && same(toX, q.toX) && same(toZ, q.toZ) && same(centreX, q.centreX) && same(centreZ, q.centreZ)
+                    && same(sweepDeg, q.sweepDeg);
+        }
+
+        @Override
+        public int hashCode() {
+            int h = 31 * tool + Double.hashCode(fromX);
+            h = 31 * h + Double.hashCode(fromZ);
+            h = 31 * h + Double.hashCode(toX);
+            h = 31 * h + Double.hashCode(toZ);
+            h = 31 * h + Double.hashCode(centreX);
+            h = 31 * h + Double.hashCode(centreZ);
+            return 31 * h + Double.hashCode(sweepDeg);
+        }
+
+        private static boolean same(double a, double b) {
+            return Double.compare(a, b) == 0;
+        }
     }
 
     private static final int QUIET_MAX = 1 << 16;

@@ -2,6 +2,7 @@ package gcnc.sim;
 
 import gcnc.diag.Diagnostics;
 import gcnc.galil.GalilLine;
+import gcnc.galil.LineSink;
 import gcnc.ir.CheckedBlock;
 import gcnc.machine.MachineProfile;
 import java.io.InterruptedIOException;
@@ -16,6 +17,11 @@ import java.util.concurrent.BlockingQueue;
  * stays flat); it reports into a {@link Diagnostics} of its own, which the caller reads after
  * {@link #finish()}. A bug that throws in the simulator is rethrown by {@link #finish()} on the
  * caller's thread.
+ *
+ * <p>It also hands the lines it replayed on to the output, in order, so that writing them (text
+ * to bytes, the source map) is done on this thread too: the checker's thread does more work
+ * than the simulator's, and on two cores a compile takes as long as its busier thread. The output
+ * is called only from this thread, and all of it has been called when {@link #finish()} returns.
  */
 public final class SimulatorThread implements AutoCloseable {
     private static final int BATCH = 256;
@@ -23,22 +29,30 @@ public final class SimulatorThread implements AutoCloseable {
     /** Ends the queue (compared by identity). */
     private static final List<Step> DONE = new ArrayList<>();
 
-    private enum Kind { BEGIN, BLOCK, END }
+    private enum Kind { BEGIN, BLOCK, END, OUTPUT_ONLY }
 
-    /** One call to make on the simulator: the program's header, a block, or the footer. */
+    /** One call to make on the simulator: the program's header, a block, or the footer; or lines only to hand on. */
     private record Step(Kind kind, CheckedBlock block, List<GalilLine> lines) {
     }
 
     private final Diagnostics diagnostics = new Diagnostics();
     private final Simulator simulator;
+    private final LineSink output;
     private final BlockingQueue<List<Step>> queue = new ArrayBlockingQueue<>(QUEUED_BATCHES);
     private final Thread thread;
     private List<Step> batch = new ArrayList<>(BATCH);
     private Throwable failure; // written by the worker, read after join()
     private boolean finished;
 
+    /** A simulator whose lines go nowhere else. */
     public SimulatorThread(MachineProfile profile, SimOptions options) {
+        this(profile, options, line -> { });
+    }
+
+    /** A simulator that hands every line it replayed on to {@code output}, in order. */
+    public SimulatorThread(MachineProfile profile, SimOptions options, LineSink output) {
         this.simulator = new Simulator(profile, options, diagnostics);
+        this.output = output;
         this.thread = new Thread(this::work, "gcnc-simulator");
         thread.setDaemon(true);
         thread.start();
@@ -55,6 +69,11 @@ public final class SimulatorThread implements AutoCloseable {
 
     public void end(List<GalilLine> footer) throws InterruptedIOException {
         add(new Step(Kind.END, null, footer));
+    }
+
+    /** Lines that are not replayed (written after an error) but go to the output in their turn. */
+    public void outputOnly(List<GalilLine> lines) throws InterruptedIOException {
+        add(new Step(Kind.OUTPUT_ONLY, null, lines));
     }
 
     /** Waits until the simulator has replayed all it was given; its findings, in reporting order. */
@@ -128,6 +147,11 @@ public final class SimulatorThread implements AutoCloseable {
             case BEGIN -> simulator.begin(s.lines());
             case BLOCK -> simulator.block(s.block(), s.lines());
             case END -> simulator.end(s.lines());
+            case OUTPUT_ONLY -> {
+            }
+        }
+        for (GalilLine l : s.lines()) {
+            output.accept(l);
         }
     }
 }

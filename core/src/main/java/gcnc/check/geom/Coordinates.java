@@ -52,11 +52,28 @@ public final class Coordinates {
         return new Point(w.x() + t.x(), w.z() + t.z());
     }
 
-    /** Where the block's work coordinate zero is, machine counts. */
+    /**
+     * Where the block's work coordinate zero is, machine counts. Asked several times for every
+     * block and nearly always the same: the last answer is kept (the offset tables are fixed for
+     * the run, and the shift is compared by value).
+     */
     public Point origin(ModalState.Next s) {
-        Point o = offsets(s);
-        return o.plus(s.shift.x(), s.shift.z());
+        Point shift = s.shift;
+        if (s.workOffset != lastWork || s.toolOffset != lastTool || lastShift == null
+                || shift.x() != lastShift.x() || shift.z() != lastShift.z()) {
+            Point o = offsets(s);
+            lastOrigin = o.plus(s.shift.x(), s.shift.z());
+            lastWork = s.workOffset;
+            lastTool = s.toolOffset;
+            lastShift = shift;
+        }
+        return lastOrigin;
     }
+
+    private int lastWork = -1;
+    private int lastTool = -1;
+    private Point lastShift;
+    private Point lastOrigin;
 
     /**
      * The end of the block's X/Z/U/W words: absolute words from the work origin (or from
