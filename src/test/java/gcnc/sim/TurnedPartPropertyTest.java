@@ -27,8 +27,10 @@ import org.junit.jupiter.api.TestFactory;
  * shoulders. The generator knows nothing of the simulator: it only keeps each pass's depth under
  * the insert and stops each pass at the shoulder it must leave. Such programs simulate with no
  * finding (an inch program on the haas, a groove with the grooving blade where the machine has
- * one); the same program with one rapid moved into the blank is flagged on that block, and
- * with an insert smaller than the depth of cut the holder is found in the stock.
+ * one); the same program with one rapid moved into the blank is flagged on that block, a
+ * roughing pass turned back toward the tailstock deeper than the insert's trailing edge reaches is
+ * a cut with the back of the insert, and with an insert smaller than the depth of cut the holder
+ * is found in the stock.
  * {@code gradle junitPlatformTest -PpartSeed=1 -PpartCount=2000} runs a long campaign.
  */
 class TurnedPartPropertyTest {
@@ -155,6 +157,16 @@ class TurnedPartPropertyTest {
         }
     }
 
+    /** The value of {@code letter}'s word in a block this generator wrote, in mm. */
+    private static double mm(String block, char letter) {
+        for (String w : block.split(" ")) {
+            if (w.charAt(0) == letter) {
+                return Double.parseDouble(w.substring(1)) * unit;
+            }
+        }
+        throw new IllegalArgumentException(letter + " in " + block);
+    }
+
     /** mm per program unit of the program being written (25.4 for inch, 0.01 in the thesis's language). */
     private static double unit = 1;
     /** The thesis's language: X a radius, numbers signed integers. */
@@ -236,6 +248,23 @@ class TurnedPartPropertyTest {
                         List<String> found = run(profile, p, bad, m.profilePerMm());
                         assertTrue(found.contains("E305@" + (rough + 1)), "seed " + s + " on " + m.name() + ": " + found
                                 + "\n" + bad);
+                    }
+
+                    // a cut back toward the tailstock: after the first roughing pass, down 4 mm at its shoulder
+                    // and 10 mm back along Z, deeper than the 80-degree insert's trailing edge reaches (2.24 mm)
+                    if (rough > 0 && !m.thesis()) {
+                        List<String> lines = new ArrayList<>(List.of(program.split("\n")));
+                        double c = mm(lines.get(rough - 1), 'X');
+                        double pass = -mm(lines.get(rough), 'Z');
+                        if (pass >= 25) {
+                            lines.add(rough + 1, "G01 X" + x(c - 8));
+                            lines.add(rough + 2, "G01 Z" + n(-pass + 10));
+                            lines.add(rough + 3, "G01 X" + x(c));
+                            String bad = String.join("\n", lines) + "\n";
+                            List<String> found = run(profile, p, bad, m.profilePerMm());
+                            assertTrue(found.contains("E320@" + (rough + 3)), "seed " + s + " on " + m.name() + ": " + found
+                                    + "\n" + bad);
+                        }
                     }
 
                     // an insert smaller than the 1 mm depth of cut: the holder ploughs through the stock
