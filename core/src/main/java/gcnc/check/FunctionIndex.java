@@ -62,6 +62,11 @@ public final class FunctionIndex {
         return code >= 0 && code < SIZE ? m[(int) code] : null;
     }
 
+    /** Whether the control has a G code that turns tool-nose compensation on (G41/G42). */
+    public boolean hasNoseCompensation() {
+        return byRole[GRole.NOSE_COMP_LEFT.ordinal()] != null || byRole[GRole.NOSE_COMP_RIGHT.ordinal()] != null;
+    }
+
     /** The control's first G code for a function (the modal motion's code, for messages). */
     public GFunction g(GRole role) {
         return byRole[role.ordinal()];

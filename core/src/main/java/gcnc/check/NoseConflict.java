@@ -78,6 +78,9 @@ final class NoseConflict {
 
     /** The G41 or G42 of a block without G40, as the control names it; null when it has none. */
     static String turningOn(RawBlock b, FunctionIndex functions) {
+        if (!functions.hasNoseCompensation()) {
+            return null; // the thesis's language: no G41/G42 to look for
+        }
         String on = null;
         for (Word w : b.words()) {
             gcnc.machine.GFunction f = w.letter() == gcnc.ir.Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;

@@ -104,7 +104,7 @@ public final class BlockReader implements BlockSource {
         errorAt = null;
         boolean open = inComment;
         if (!open && fastPath && FastScanner.scan(source.chars(), source.length(), source.number(), words)) {
-            return words.isEmpty() ? null : new RawBlock(source.number(), words, lastSpan(), false);
+            return words.isEmpty() ? null : new RawBlock(source.number(), words, lastSpan(), false, 0, 0, null);
         }
         if (!open && macros && MacroLines.isStatement(source.chars(), source.length())) {
             int at = MacroLines.firstNonBlank(source.chars(), source.length());
@@ -125,7 +125,7 @@ public final class BlockReader implements BlockSource {
             return null; // blank, comments, a lone '/'
         }
         Span last = words.isEmpty() ? errorAt : lastSpan();
-        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete);
+        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete, 0, null);
     }
 
     private Span lastSpan() {
