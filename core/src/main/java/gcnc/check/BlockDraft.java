@@ -22,7 +22,6 @@ import java.util.List;
 public final class BlockDraft {
     public static final int NONE = -1;
     private static final int GROUPS = 20;
-    private static final int LETTERS = Letter.values().length;
 
     public final RawBlock block;
     public final ModalState prior;
@@ -36,10 +35,20 @@ public final class BlockDraft {
     /** No block was counted before this one (O must come first: error 34). */
     public final boolean first;
 
-    private final Word[] words = new Word[LETTERS];
-    private final double[] values = new double[LETTERS];
-    private final Word[] gGroups = new Word[GROUPS];
-    private final Word[] mGroups = new Word[GROUPS];
+    /**
+     * The accepted words and their values, in the order accepted, and which letters they are (bit =
+     * letter ordinal): a block has a handful of words, so these are sized by the block rather than
+     * by the alphabet, and a letter is found by a short scan (a checker allocated two 26-slot arrays
+     * per block before). The 26 letters fit the bits of one int.
+     */
+    private Word[] words;
+    private double[] values;
+    private int count;
+    private int letters;
+    /** The words that claimed a modal group, and which (G group g as g, M group g as GROUPS + g). */
+    private Word[] claims;
+    private int[] claimed;
+    private int claimCount;
 
     /** The block's motion G (group 1) or NONE, by thesis number (0-3). */
     public int motionG = NONE;
@@ -145,16 +154,31 @@ public final class BlockDraft {
     }
 
     public Word word(Letter l) {
-        return words[l.ordinal()];
+        int i = slot(l);
+        return i < 0 ? null : words[i];
     }
 
     public boolean has(Letter l) {
-        return words[l.ordinal()] != null;
+        return (letters & 1 << l.ordinal()) != 0;
     }
 
-    /** The value of an accepted word: coordinates after the no-point rule, others as written. */
+    /** The value of an accepted word: coordinates after the no-point rule, others as written (0 when none). */
     public double value(Letter l) {
-        return values[l.ordinal()];
+        int i = slot(l);
+        return i < 0 ? 0 : values[i];
+    }
+
+    /** Where letter l's accepted word is kept, or -1. */
+    private int slot(Letter l) {
+        if (!has(l)) {
+            return -1;
+        }
+        for (int i = 0; i < count; i++) {
+            if (words[i].letter() == l) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /**
@@ -174,8 +198,21 @@ public final class BlockDraft {
     }
 
     public void accept(Word w, double value) {
-        words[w.letter().ordinal()] = w;
-        values[w.letter().ordinal()] = value;
+        int i = slot(w.letter());
+        if (i < 0) {
+            if (words == null) {
+                int n = Math.max(4, block.words().size());
+                words = new Word[n];
+                values = new double[n];
+            } else if (count == words.length) {
+                words = java.util.Arrays.copyOf(words, 2 * count);
+                values = java.util.Arrays.copyOf(values, 2 * count);
+            }
+            i = count++;
+            letters |= 1 << w.letter().ordinal();
+        }
+        words[i] = w;
+        values[i] = value;
     }
 
     /**
@@ -183,23 +220,30 @@ public final class BlockDraft {
      * that holds it, when another G of the group came first (thesis §12.19: every group, not only 1).
      */
     public boolean claimG(int group, Word w, Diagnostics out) {
-        return claim(gGroups, group >= 0 && group < GROUPS ? group : -1, w, out);
+        return group < 0 || group >= GROUPS || claim(group, w, out);
     }
 
     /** The same for an M function's group (group 0, no group, never conflicts). */
     public boolean claimM(int group, Word w, Diagnostics out) {
-        return claim(mGroups, group > 0 && group < GROUPS ? group : -1, w, out);
+        return group <= 0 || group >= GROUPS || claim(GROUPS + group, w, out);
     }
 
-    private boolean claim(Word[] groups, int group, Word w, Diagnostics out) {
-        if (group < 0) {
-            return true;
+    private boolean claim(int key, Word w, Diagnostics out) {
+        for (int i = 0; i < claimCount; i++) {
+            if (claimed[i] == key) {
+                fail(out, Code.E016_GROUP_CONFLICT, w.span(), claims[i]);
+                return false;
+            }
         }
-        if (groups[group] != null) {
-            fail(out, Code.E016_GROUP_CONFLICT, w.span(), groups[group]);
-            return false;
+        if (claims == null) {
+            claims = new Word[4];
+            claimed = new int[4];
+        } else if (claimCount == claims.length) {
+            claims = java.util.Arrays.copyOf(claims, 2 * claimCount);
+            claimed = java.util.Arrays.copyOf(claimed, 2 * claimCount);
         }
-        groups[group] = w;
+        claims[claimCount] = w;
+        claimed[claimCount++] = key;
         return true;
     }
 
@@ -256,7 +300,7 @@ public final class BlockDraft {
         for (int i = 0; i < ws.size(); i++) {
             Word w = ws.get(i);
             for (Letter l : MOTION_WORDS) {
-                if (w.letter() == l && words[l.ordinal()] == w) {
+                if (w.letter() == l && word(l) == w) {
                     return w;
                 }
             }
