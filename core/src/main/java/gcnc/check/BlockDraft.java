@@ -63,10 +63,10 @@ public final class BlockDraft {
     public int spindleBefore = NONE;
     /** The block's G96 word (its S is then a surface speed), or null. */
     public Word g96;
-    public final List<MCall> before = new ArrayList<>();
+    private List<MCall> before;
     /** M words whose function needs an output that the machine profile does not give (E113). */
-    public final List<Word> unpowered = new ArrayList<>();
-    public final List<MCall> after = new ArrayList<>();
+    private List<Word> unpowered;
+    private List<MCall> after;
     /**
      * The block is a thread pass written as G01 (G32/G33, a pass of G92/G78 or G76), named here
      * ("G76"): its F is the lead per revolution and its move is spindle-synchronised; null otherwise.
@@ -134,9 +134,45 @@ public final class BlockDraft {
         return f != null ? f.name() : "G" + function;
     }
 
+    /**
+     * An M function of the block, applied at the start (moments 0 and 1) or at the end (99), in
+     * source order. (Most blocks have none: the lists are made by the first.)
+     */
+    public void addM(MCall m, boolean beforeMotion) {
+        if (beforeMotion) {
+            if (before == null) {
+                before = new ArrayList<>(2);
+            }
+            before.add(m);
+        } else {
+            if (after == null) {
+                after = new ArrayList<>(2);
+            }
+            after.add(m);
+        }
+    }
+
+    /** The M functions applied before the block's motion, in source order. */
+    public List<MCall> before() {
+        return before == null ? List.of() : before;
+    }
+
+    /** The M functions applied after it. */
+    public List<MCall> after() {
+        return after == null ? List.of() : after;
+    }
+
+    /** M words whose function needs an output that the machine profile does not give (E113). */
+    public List<Word> unpowered() {
+        return unpowered == null ? List.of() : unpowered;
+    }
+
     /** Notes an M word that does nothing on this machine: it needs an output the profile lacks. */
     public void unpoweredM(gcnc.machine.MFunction f, Word w) {
         if (f.needsOutput() && profile.outputsFor(f.code()).isEmpty()) {
+            if (unpowered == null) {
+                unpowered = new ArrayList<>(2);
+            }
             unpowered.add(w);
         }
     }

@@ -401,7 +401,7 @@ public final class Checker {
      * (E114; not for a contour block followed again by G70: {@code sequence} false).
      */
     private void commit(BlockDraft d, boolean sequence) {
-        for (Word w : d.unpowered) {
+        for (Word w : d.unpowered()) {
             int m = (int) w.code();
             if (!warnedM.get(m)) {
                 warnedM.set(m);

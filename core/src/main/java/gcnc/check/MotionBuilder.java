@@ -103,7 +103,7 @@ final class MotionBuilder {
                 || d.next.css && Double.compare(rpm, d.prior.rpm()) != 0;
         return new CheckedBlock(d.block.line(), speedChanged && !Double.isNaN(rpm) ? OptionalDouble.of(rpm)
                 : OptionalDouble.empty(), d.has(Letter.T) ? OptionalInt.of(d.next.tool) : OptionalInt.empty(),
-                fixed(d.before), fixed(motions), fixed(d.after), end, frame(d), gcnc.diag.Origin.PROGRAM);
+                fixed(d.before()), fixed(motions), fixed(d.after()), end, frame(d), gcnc.diag.Origin.PROGRAM);
     }
 
     /**

@@ -41,7 +41,7 @@ public final class Sa12Miscellaneous implements SyntaxAction {
             d.spindleBefore = r.number();
         }
         d.unpoweredM(f, w);
-        (f.beforeMotion() ? d.before : d.after).add(new MCall(code));
+        d.addM(new MCall(code), f.beforeMotion());
     }
 
     private static boolean running(int spindle) {
