@@ -115,6 +115,36 @@ class SimulatorThreadTest {
         return expected;
     }
 
+    /**
+     * The simulator's thread writes the DMC after replaying each block: the lines, their order and
+     * the source map are those a compile without the simulator writes, for a long program across
+     * many batches and for one with a backend error (lines written after it, not replayed).
+     */
+    @Test
+    void theSimulatorsThreadWritesTheLinesACompileWithoutItWrites() throws Exception {
+        StringBuilder p = new StringBuilder("O1\nG21 G90 G98\nG50 S2500\nM11\nT0101\nS1200 M03\nG00 X50. Z2.\n");
+        for (int pass = 0; pass < 700; pass++) {
+            p.append("G00 X").append(49 - pass % 40 * 0.5).append(" Z2.\nG01 Z-40. F120.\nG01 U1.\nG00 Z2.\n");
+        }
+        String clean = p + "M05\nM30\n";
+        String late = p + "G01 Z-10. F0.001\nG00 Z2.\nM05\nM30\n"; // a feed under a count per second: E207
+        for (String program : List.of(clean, late)) {
+            List<String> withSim = new ArrayList<>();
+            List<String> mapWithSim = new ArrayList<>();
+            List<String> without = new ArrayList<>();
+            List<String> mapWithout = new ArrayList<>();
+            Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(Tables.builtIn(),
+                    profile("generic"), "galil", Optional.of(SimOptions.defaults())),
+                    new gcnc.galil.SourceMap(mapWithSim::add).wrap(l -> withSim.add(l.text())));
+            Compiler.compile(new StringReader(program), new Compiler.Settings(Tables.builtIn(), profile("generic"),
+                    "galil", Optional.empty()), new gcnc.galil.SourceMap(mapWithout::add).wrap(l -> without.add(l.text())));
+            assertTrue(withSim.size() > 3000, "lines: " + withSim.size());
+            assertEquals(without, withSim);
+            assertEquals(mapWithout, mapWithSim);
+            assertEquals(program == clean, r.ok(), r.diagnostics().sorted().toString());
+        }
+    }
+
     private static List<String> render(Diagnostics d) {
         List<String> out = new ArrayList<>();
         for (Diagnostic x : d.sorted()) {
