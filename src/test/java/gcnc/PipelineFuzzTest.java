@@ -83,8 +83,10 @@ class PipelineFuzzTest {
                 run(inSystemA(program, "M11"), fanuc, "galil", s);
                 run(inSystemA(busier, "M11"), fanuc, "galil", s);
                 // With thread passes (geared to the spindle: docs/threading.md) among the moves.
-                run(withThreads(inSystemA(program, "M10"), new Random(s * 31)), haas, "galil", s);
-                run(withThreads(inSystemA(busier, "M11"), new Random(s * 37)), fanuc, "galil", s);
+                // on the haas, every other seed under M23: each G92/G76 pass ends with its chamfer
+                run(withThreads(inSystemA(program, "M10"), new Random(s * 31), s % 2 == 0 ? "M23" : "M24"), haas,
+                        "galil", s);
+                run(withThreads(inSystemA(busier, "M11"), new Random(s * 37), "M24"), fanuc, "galil", s);
             }));
         }
         return tests.stream();
@@ -126,8 +128,8 @@ class PipelineFuzzTest {
 
     /**
      * Thread excursions that end where they start: a G32 pass and back, a G92 pass (which returns
-     * to its start by itself), a G76 of a few passes; M24 first (Haas's chamfered pull-out, M23, is
-     * not followed) and a G97 speed the Z axis can follow.
+     * to its start by itself), a G76 of a few passes; {@code pullOut} first (Haas M23: each G92/G76
+     * pass ends with a chamfer; M24: straight out) and a G97 speed the Z axis can follow.
      */
     private static final String[] THREADS = {
         "G32 U-0.5 W-2. F1.\nG00 U0.5 W2.",
@@ -135,14 +137,14 @@ class PipelineFuzzTest {
         "G76 X%s Z%s P600 Q250 F1.\nG00 U0.",
     };
 
-    static String withThreads(String program, Random rnd) {
+    static String withThreads(String program, Random rnd, String pullOut) {
         StringBuilder out = new StringBuilder();
         List<String> lines = program.lines().toList();
         double[] at = {60, 5};
         for (int i = 0; i < lines.size(); i++) {
             out.append(lines.get(i)).append('\n');
             if (i == 5) {
-                out.append("M24\n");
+                out.append(pullOut).append('\n');
             }
             boolean body = i >= 5 && i < lines.size() - 4 && !lines.get(i).startsWith("G91");
             if (body && rnd.nextInt(6) == 0) {

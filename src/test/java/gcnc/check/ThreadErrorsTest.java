@@ -7,8 +7,8 @@ import gcnc.ir.Motion;
 import org.junit.jupiter.api.Test;
 
 /**
- * One tiny program per thread finding (E190-E199, and the cycle codes a thread shares: E160, E161,
- * E167), on the fanuc machine (metric, fanuc-a), the haas machine (inch) and generic with a Fanuc
+ * One tiny program per thread finding (E190-E199, the chamfered pull-out's E240-E242 and E208, and
+ * the cycle codes a thread shares: E160, E161, E167), on the fanuc machine (metric, fanuc-a), the haas machine (inch) and generic with a Fanuc
  * control (no spindle encoder): the code at the word it names.
  */
 class ThreadErrorsTest {
@@ -107,12 +107,11 @@ class ThreadErrorsTest {
         assertEquals("5:18:E197", fanuc("G76 X22.16 Z-25. P0.92 Q350 F1.5\nM30\n")); // P with a point
         assertEquals("5:35:E197", Run.of("haas", "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5. M24\n"
                 + "G76 X22.16 Z-25. K0.92 D0.35 F1.5 P2\nM30\n").errors());
-        // Haas M23 (on at power-up): the chamfered pull-out is not cut yet; M24 turns it off, M23 on again
+        // Haas M23 (on at power-up) is no longer one: its chamfered pull-out is cut (ThreadChamferTest)
         String haas = "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5.\n";
         String g92 = "G92 X23. Z-25. F1.5\nG00 X40.\n";
-        assertEquals("5:1:E197", Run.of("haas", haas + g92 + "M30\n").errors());
-        assertEquals("", Run.of("haas", haas + "M24\n" + g92 + "M30\n").errors());
-        assertEquals("8:1:E197", Run.of("haas", haas + "M24\nM23\nG00 X30.\n" + g92 + "M30\n").errors());
+        assertEquals("", Run.of("haas", haas + g92 + "M30\n").errors());
+        assertEquals("", Run.of("haas", haas + "M24\nM23\nG00 X30.\n" + g92 + "M30\n").errors());
         // a G32 right after another thread pass: one continuous thread, not supported yet
         assertEquals("7:1:E197", fanuc("G00 X23.\nG32 Z-25. F1.5\nZ-27.\nG00 X30.\nM30\n"));
     }
@@ -126,6 +125,64 @@ class ThreadErrorsTest {
     void e199ThePassAFindingIsIn() {
         // 3 mm x 4000 r/min is too fast for Z: found in the first pass, which the note names
         assertEquals("6:1:E192, 6:1:E199", fanuc("S4000\nG76 X22.16 Z-25. P920 Q350 F3.\nM30\n"));
+    }
+
+    /** Lines 1-4 on the haas machine, metric: M23 (the chamfered pull-out, one lead at 45 degrees) in force from power-up. */
+    private static final String HAAS = "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5.\n";
+
+    /** The haas profile with each {@code pairs[2i]} of its text replaced by {@code pairs[2i + 1]}. */
+    static gcnc.machine.MachineProfile haasWith(String... pairs) {
+        try {
+            String text = java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/haas.machine"));
+            for (int i = 0; i < pairs.length; i += 2) {
+                if (!text.contains(pairs[i])) {
+                    throw new AssertionError("haas.machine has no '" + pairs[i] + "'");
+                }
+                text = text.replace(pairs[i], pairs[i + 1]);
+            }
+            return gcnc.machine.ProfileLoader.read(gcnc.machine.ProfileFile.parse("haas-variant.machine", text),
+                    Run.TABLES, gcnc.tables.TableSource.builtIn(), null);
+        } catch (java.io.IOException | gcnc.tables.TableException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    @Test
+    void e240AChamferAsLongAsThePassOrLonger() {
+        // one lead of 1.5 mm; the pass from Z5. to Z4. is 1 mm long
+        assertEquals("5:1:E240", Run.of("haas", HAAS + "G92 X23. Z4. F1.5\nM30\n").errors());
+        assertEquals("5:1:E240, 5:1:E199", Run.of("haas", HAAS + "G76 X22.16 Z4. K0.92 D0.35 F1.5\nM30\n").errors());
+        // M24 pulls straight out: the short pass is a pass like any other
+        assertEquals("", Run.of("haas", HAAS + "M24\nG92 X23. Z4. F1.5\nM30\n").errors());
+        assertEquals("", Run.of("haas", HAAS + "G92 X23. Z3. F1.5\nM30\n").errors());
+    }
+
+    @Test
+    void e241AChamferThatEndsBeyondTheXTravel() {
+        // haas X travel: radius -4 .. 212 mm = X-8. .. X424.; the pass at X419. pulls out 3 mm (radius) to X425.
+        assertEquals("6:1:E241", Run.of("haas", HAAS + "G00 X423.\nG92 X419. Z-25. F3.\nM30\n").errors());
+        assertEquals("", Run.of("haas", HAAS + "G00 X423.\nG92 X417. Z-25. F3.\nM30\n").errors());
+    }
+
+    @Test
+    void e242AChamferTooSteepForTheXAxissFeed() {
+        // at 80 degrees X moves 5.67 times as fast as Z: 1.5 mm x 2000 r/min x 5.67 = 17014 mm/min, the
+        // haas machine feeds at most 11938 mm/min
+        gcnc.machine.MachineProfile steep = haasWith("thread.chamfer_angle = 45", "thread.chamfer_angle = 80");
+        String g92 = "G00 X40.\nG92 X23. Z-25. F1.5\nM30\n";
+        assertEquals("6:1:E242", Run.of(steep, HAAS.replace("S700", "S2000") + g92, Checker.ERROR_CAP).errors());
+        assertEquals("", Run.of(steep, HAAS + g92, Checker.ERROR_CAP).errors());
+    }
+
+    @Test
+    void e208AChamferWhoseXRatioIsBeyondGalilsRange() {
+        // 16 encoder counts per revolution and an 89-degree chamfer: X needs 1.5 mm x 984 counts/mm x
+        // tan 89 / 16 = 5286 counts per encoder count (Z's 92 would do)
+        gcnc.machine.MachineProfile coarse = haasWith("thread.chamfer_angle = 45", "thread.chamfer_angle = 89",
+                "spindle.encoder = 4096", "spindle.encoder = 16");
+        String program = HAAS.replace("S700", "S10") + "G92 X23. Z-25. F1.5\nM30\n";
+        assertEquals("5:1:E208", Run.of(coarse, program, Checker.ERROR_CAP).errors());
+        assertEquals("", Run.of(coarse, "M24\n" + program, Checker.ERROR_CAP).errors());
     }
 
     @Test

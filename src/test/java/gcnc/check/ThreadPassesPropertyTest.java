@@ -19,7 +19,8 @@ import org.junit.jupiter.api.Test;
  * lead, height, first depth, minimum depth, allowance and finishing passes: the depths of the
  * thread passes the checker makes (read back from the passes' X, not from the planner) grow pass
  * after pass (strictly while roughing; the finishing passes stay at the height), the last reaches
- * the thread height exactly, and no pass cuts deeper than the height. Seeds print on failure.
+ * the thread height exactly, and no pass cuts deeper than the height. And random G92 and G76 under
+ * Haas M23, whose passes end with a chamfered pull-out, simulate clean. Seeds print on failure.
  */
 class ThreadPassesPropertyTest {
     private static final int PROGRAMS = 80;
@@ -80,6 +81,78 @@ class ThreadPassesPropertyTest {
             assertEquals(height, depths.get(depths.size() - 1), EXACT, why);
         }
     }
+
+    /**
+     * Random G92 passes and Haas one-block G76s on the haas machine under M23 (on at power-up), with
+     * a random chamfer in the profile (0.5 to 2 leads, 30 to 60 degrees), outside a bar of the
+     * thread's major diameter: every pass ends with its chamfer (one straight geared part along the
+     * pass's line, then Z going on for leads x lead while X moves out tan(angle) times as far), and
+     * the whole program compiles and simulates without a finding (no E305 rapid into the stock,
+     * E315 holder, E317 lead, E308 path...), by the compile's simulation and by a replay of its DMC
+     * alone.
+     */
+    @Test
+    void chamferedG92AndG76PassesUnderM23SimulateClean() throws Exception {
+        for (int seed = 1; seed <= CHAMFERED_PROGRAMS; seed++) {
+            Random r = new Random(seed * 7919L);
+            double leads = 0.5 + r.nextInt(7) * 0.25;
+            int angle = 30 + 5 * r.nextInt(7);
+            double lead = 0.75 + r.nextInt(8) * 0.25;
+            double height = round(lead * (0.45 + 0.15 * r.nextDouble()), 3);
+            double major = 16 + r.nextInt(20);
+            double root = major - 2 * height;
+            double end = -(10 + r.nextInt(20));
+            double start = major + 1 + r.nextInt(4);
+            StringBuilder program = new StringBuilder(String.format(Locale.ROOT,
+                    "(80.00 %.2f)\nG21 G99\nT303\nG97 S%d M03\nG00 X%.4f Z5. M08\n", major, 300 + 100 * r.nextInt(6),
+                    start));
+            if (r.nextBoolean()) {
+                program.append(String.format(Locale.ROOT, "G76 X%.4f Z%.1f K%.4f D%.4f F%.4f\n", root, end, height,
+                        round(height * (0.15 + 0.3 * r.nextDouble()), 3), lead));
+            } else {
+                int passes = 2 + r.nextInt(4);
+                for (int i = 1; i <= passes; i++) {
+                    double x = major - 2 * height * Math.sqrt((double) i / passes);
+                    program.append(i == 1 ? String.format(Locale.ROOT, "G92 X%.4f Z%.1f F%.4f\n", x, end, lead)
+                            : String.format(Locale.ROOT, "X%.4f\n", x));
+                }
+            }
+            program.append("G00 X100. Z100. M09\nM30\n");
+            gcnc.machine.MachineProfile haas = ThreadErrorsTest.haasWith("thread.chamfer_leads = 1.0",
+                    "thread.chamfer_leads = " + leads, "thread.chamfer_angle = 45", "thread.chamfer_angle = " + angle);
+            String why = "seed " + seed + " (" + leads + " leads at " + angle + " degrees)\n" + program;
+            Run run = Run.of(haas, program.toString(), Checker.ERROR_CAP);
+            assertEquals("", run.errors(), why);
+            int chamfered = 0;
+            for (CheckedBlock b : run.blocks) {
+                for (Motion m : b.motions()) {
+                    if (m instanceof Motion.Thread t) {
+                        ProgramFrame f = b.frame();
+                        assertTrue(t.chamfered(), why);
+                        assertEquals(leads * lead, (t.chamferStart().z() - t.to().z()) / f.perZ(), EXACT, why);
+                        assertEquals(2 * leads * lead * Math.tan(Math.toRadians(angle)),
+                                (t.to().x() - t.chamferStart().x()) / f.perX(), EXACT, why);
+                        assertEquals(t.from().x(), t.chamferStart().x(), 1e-6, why); // no taper: along the pass's X
+                        chamfered++;
+                    }
+                }
+            }
+            assertTrue(chamfered >= 2, why);
+            StringBuilder dmc = new StringBuilder();
+            gcnc.Compiler.Result compiled = gcnc.Compiler.compile(new java.io.StringReader(program.toString()),
+                    new gcnc.Compiler.Settings(Run.TABLES, haas, "galil",
+                            java.util.Optional.of(gcnc.sim.SimOptions.defaults()), false),
+                    l -> dmc.append(l.text()).append('\n'));
+            assertTrue(compiled.ok(), why + compiled.diagnostics().sorted());
+            assertEquals(0, compiled.simulation().orElseThrow().findings(), why + compiled.diagnostics().sorted());
+            gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
+            gcnc.sim.DmcReplay.replay(new java.io.BufferedReader(new java.io.StringReader(dmc.toString())), haas,
+                    gcnc.sim.SimOptions.defaults(), replayed);
+            assertEquals("[]", replayed.sorted().toString(), why);
+        }
+    }
+
+    private static final int CHAMFERED_PROGRAMS = 40;
 
     @Test
     void thePlannerAloneKeepsTheSameRules() {

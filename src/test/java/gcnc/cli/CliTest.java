@@ -76,6 +76,13 @@ class CliTest {
         Path wrong = program(Files.readString(Path.of("docs/examples/bushing.nc")).replace("G00 X1.4 Z-1.4", "G00 X1.0 Z-1.4"));
         Run crash = gcnc("simulate", wrong.toString(), "--machine", "haas", "--stock", "38.1,200,150");
         assertTrue(crash.err().contains(":40:1: error[E305]"), crash.err());
+        // without its M24 the Haas's M23 chamfers each thread pass: geared too, and as clean (README)
+        String text = Files.readString(Path.of("docs/examples/bushing.nc"));
+        Path chamfered = program(text.replaceFirst("M24 \\([^)]*\\)", "M23"));
+        Run m23 = gcnc("simulate", chamfered.toString(), "--machine", "haas", "--stock", "38.1,200,150");
+        assertEquals(0, m23.status(), m23.err());
+        assertTrue(m23.out().contains(", 0 findings;"), m23.out());
+        assertTrue(!Files.readString(chamfered).contains("M24"));
     }
 
     /** docs/program-flow.md shows the output of docs/examples/flow/grooves.nc (a call into a file beside it and back). */

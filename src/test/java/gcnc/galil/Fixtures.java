@@ -39,7 +39,7 @@ final class Fixtures {
                 base.acceleration(), base.deceleration(), base.maxRpm(), base.rpmPerVolt(), base.spindleAxis(),
                 base.rearToolPost(), base.workOffsets(), base.toolOffsets(), base.tools(), base.outputs(),
                 base.feedPerF(), base.file(), base.control(), base.units(), base.machineZero(), base.chuckByProgram(),
-                base.model(), base.spindleEncoder(), base.noses());
+                base.model(), base.spindleEncoder(), base.noses(), base.threadChamfer());
     }
 
     static CheckedBlock motions(int line, Point end, Motion... ms) {

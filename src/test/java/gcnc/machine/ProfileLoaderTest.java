@@ -230,6 +230,26 @@ class ProfileLoaderTest {
     }
 
     @Test
+    void theThreadChamferIsALengthInLeadsAndAnAngleToZ() throws Exception {
+        assertFault(GOOD + "thread.chamfer_leads = -1\n", "thread.chamfer_leads",
+                "thread.chamfer_leads is the length of the chamfered pull-out in leads: 0 to 100 (not -1; 0 pulls straight out)");
+        assertFault(GOOD + "thread.chamfer_leads = 101\n", "thread.chamfer_leads", "(not 101;");
+        assertFault(GOOD + "thread.chamfer_angle = 90\n", "thread.chamfer_angle",
+                "thread.chamfer_angle is the angle of the chamfered pull-out to the Z axis in degrees: more than 0 and "
+                        + "less than 90 (not 90)");
+        assertFault(GOOD + "thread.chamfer_angle = 0\n", "thread.chamfer_angle", "(not 0)");
+        assertFault(GOOD + "thread.chamfer_angle = steep\n", "thread.chamfer_angle", "'steep' is not a number");
+        MachineProfile p = ProfileLoader.read(ProfileFile.parse("t.machine",
+                GOOD + "thread.chamfer_leads = 0\nthread.chamfer_angle = 30\n"), TABLES);
+        assertEquals(new ThreadChamfer(0, 30), p.threadChamfer());
+        assertFalse(p.threadChamfer().cuts());
+        // Haas's Settings 95 and 96 as shipped: in the haas profile, and the default of every other
+        assertEquals(ThreadChamfer.HAAS, load("haas").threadChamfer());
+        assertEquals(new ThreadChamfer(1.0, 45), load("generic").threadChamfer());
+        assertEquals(1, load("haas").threadChamfer().slope(), 1e-12);
+    }
+
+    @Test
     void oneNumberTwiceIsAFault() throws Exception {
         assertFault(GOOD + "m.05 = CB1\n", "m.05", "'m.05' is number 5 again ('m.5' on line");
         assertFault(GOOD + "sim.tool.3.insert = 0, 0; 1, 1; 0, 1\nsim.tool.03.holder = 0, 0; 1, 1; 0, 1\n",

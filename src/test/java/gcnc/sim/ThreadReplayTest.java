@@ -23,7 +23,8 @@ import org.junit.jupiter.api.Test;
  * replays as one cutting pass ending where the program's pass ends; a replay of the DMC by itself
  * finds what the compile found; a pass whose gearing starts without GA is E318, without the
  * wait for the whole revolution E319, one whose ratios miss the end is E317; a ratio past GR's range is E208
- * and the thesis dialect, which has no gearing, refuses a thread (E209).
+ * and the thesis dialect, which has no gearing, refuses a thread (E209). A chamfered pull-out (Haas
+ * M23) is a second geared segment of the pass: the ratios change at an MF/MR on Z (E301 without it).
  */
 class ThreadReplayTest {
     private static final String PROGRAM = "(80.00 24.00)\nG21 G99\nT0707\nG97 S800 M03\nG00 X30. Z5. M08\n"
@@ -99,6 +100,81 @@ class ThreadReplayTest {
         Compiler.Result checked = Compiler.check(new StringReader(PROGRAM), new Compiler.Settings(Tables.builtIn(),
                 coarse, "galil", Optional.empty()));
         assertEquals("E208@6", ReplayTest.codes(checked.diagnostics()).get(0));
+    }
+
+    /** The same G92 on the haas machine, where M23 (the chamfered pull-out) is in force at power-up. */
+    private static final String CHAMFERED = "(80.00 24.00)\nG21 G99\nT303\nG97 S800 M03\nG00 X30. Z5. M08\n"
+            + "G92 X23.2 Z-25. F1.5\nX22.8\nX22.5\nG00 X100. Z100. M09\nM30\n";
+
+    private static int count(String text, String piece) {
+        return text.split(java.util.regex.Pattern.quote(piece), -1).length - 1;
+    }
+
+    @Test
+    void aChamferedPullOutIsASecondGearedSegmentAndReplaysCleanAlone() throws Exception {
+        MachineProfile haas = ReplayTest.profile("haas");
+        StringBuilder dmc = new StringBuilder();
+        Compiler.Result r = compile(haas, "galil", CHAMFERED, dmc);
+        assertTrue(r.ok(), r.diagnostics().sorted().toString());
+        assertEquals(0, r.simulation().orElseThrow().findings());
+        String text = dmc.toString();
+        // each pass: engage, wait for Z at the chamfer's start (one lead, 1476 counts, before the
+        // end), the chamfer's ratios (X out as fast as Z goes on: 45 degrees), wait for the end
+        assertEquals(3, count(text, "GA C,C"), text);
+        // (the ratios' last digit is the whole counts' rounding, pass by pass)
+        java.util.regex.Matcher pass = java.util.regex.Pattern.compile(
+                "\nGR -0\\.360\\d,0\\.0000\nMR 124508\nGR -0\\.360\\d,0\\.360\\d\nMR 123031\nGR 0,0\n").matcher(text);
+        int passes = 0;
+        while (pass.find()) {
+            passes++;
+        }
+        assertEquals(3, passes, text);
+        assertEquals(List.of(), replay(text, haas));
+        // under M24 each pass is one geared segment again
+        StringBuilder square = new StringBuilder();
+        assertTrue(compile(haas, "galil", CHAMFERED.replace("M08\n", "M08 M24\n"), square).ok());
+        assertEquals(0, count(square.toString(), "GR -0.3606,0.3606"), square.toString());
+        assertEquals(3, count(square.toString(), "\nGR -0.3604,0.0000\nMR 123031\nGR 0,0\n"), square.toString());
+    }
+
+    @Test
+    void e317E301AChamferTheGearingDoesNotCut() throws Exception {
+        MachineProfile haas = ReplayTest.profile("haas");
+        StringBuilder dmc = new StringBuilder();
+        compile(haas, "galil", CHAMFERED, dmc);
+        String good = dmc.toString();
+        // the chamfer's X ratio 17% short: the pass ends 250 counts inside its settling move
+        List<String> shallow = replay(good.replaceFirst("\nGR -0\\.3606,0\\.3606\n", "\nGR -0.3606,0.3000\n"), haas);
+        assertEquals(1, shallow.size(), shallow.toString());
+        assertTrue(shallow.get(0).startsWith("E317@"), shallow.toString());
+        // the ratios changed without an MF/MR saying where: E301 at that GR
+        List<String> nowhere = replay(good.replaceFirst("\nMR 124508\n", "\n"), haas);
+        assertTrue(nowhere.size() >= 1 && nowhere.get(0).startsWith("E301@"), nowhere.toString());
+    }
+
+    @Test
+    void conformanceHoldsAChamferedPassToItsCorner() {
+        List<String> found = new java.util.ArrayList<>();
+        Conformance c = new Conformance((code, line, args) -> found.add(code.id() + " " + args[0]), null, 1.5, 5);
+        gcnc.ir.Point from = new gcnc.ir.Point(1000, 5000);
+        gcnc.ir.Point corner = new gcnc.ir.Point(1000, 1500);
+        gcnc.ir.Point end = new gcnc.ir.Point(2500, 0);
+        gcnc.ir.Motion.Thread t = new gcnc.ir.Motion.Thread(from, end, 1500, 800, false, new gcnc.ir.Feed(1.5, 20000),
+                corner);
+        assertEquals(null, c.check(t, List.of(line(from, corner), line(corner, end)), 6));
+        assertEquals(List.of(), found);
+        // the ratios change 10 counts late along Z, and the chamfer still ends where it should
+        gcnc.ir.Point late = new gcnc.ir.Point(1000, 1490);
+        c.check(t, List.of(line(from, late), line(late, end)), 6);
+        assertEquals(List.of("E308 start of the thread's chamfer"), found);
+        found.clear();
+        // one straight geared move where the pass has a chamfer
+        c.check(t, List.of(line(from, end)), 6);
+        assertEquals(List.of("E308 path (a chamfered thread pass is two straight geared moves)"), found);
+    }
+
+    private static Segment line(gcnc.ir.Point a, gcnc.ir.Point b) {
+        return new Segment(a.x(), a.z(), b.x(), b.z(), false, 0, 0, 0, 0, 0, "GR");
     }
 
     @Test

@@ -73,6 +73,11 @@ public final class BlockDraft {
      */
     public String thread;
     /**
+     * The thread pass ends with Haas M23's chamfered pull-out (a pass of G76 or G92): the chamfer
+     * and which way X goes out; null for a square end (M24, G32) and for every other block.
+     */
+    public PullOut pullOut;
+    /**
      * The block's first G or M word whose function gcnc cannot follow yet (a G whose role is
      * unsupported, an M that is unsupported or a call the flow stage did not take), or null: the
      * checker reports it before anything else in the block (at the G71, not at its later P or Q).

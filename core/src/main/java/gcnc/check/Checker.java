@@ -219,21 +219,24 @@ public final class Checker {
      * pass, and its frame names the pass for the simulator's findings).
      */
     Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin) {
-        return one(b, isFirst, origin, null);
+        return one(b, isFirst, origin, null, null);
     }
 
     /**
      * A thread pass written as a G01 block (its F the lead per revolution), checked like any cut
      * and built as a spindle-synchronised {@link gcnc.ir.Motion.Thread}; {@code thread} names the
-     * function ("G32", "G76") for its findings.
+     * function ("G32", "G76") for its findings; {@code pullOut}, when not null, ends it with Haas
+     * M23's chamfer instead of at the block's end point.
      */
-    Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread) {
-        return one(b, isFirst, origin, thread);
+    Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut) {
+        return one(b, isFirst, origin, thread, pullOut);
     }
 
-    private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread) {
+    private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
+                                       PullOut pullOut) {
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         d.thread = thread;
+        d.pullOut = pullOut;
         scratch.clear();
         CheckedBlock result = run(d, scratch, true);
         report(b, origin);

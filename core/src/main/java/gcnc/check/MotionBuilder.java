@@ -97,6 +97,9 @@ final class MotionBuilder {
                 return null;
             }
             motions.add(m);
+            if (m instanceof Motion.Thread t) {
+                end = t.to(); // a chamfered pull-out (M23) ends out of the groove, not at the block's X
+            }
         }
         d.next.position = end;
         boolean speedChanged = d.has(Letter.S) && d.function != 50
@@ -209,7 +212,60 @@ final class MotionBuilder {
         }
         double path = Math.hypot(dx, dz);
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
-        return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, new Feed(lead, zSpeed * path / dz));
+        Feed feed = new Feed(lead, zSpeed * path / dz);
+        if (d.pullOut == null) {
+            return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, feed, null);
+        }
+        Point[] chamfer = pullOut(d, from, end, lead, rpm, at, out);
+        return chamfer == null ? null
+                : new Motion.Thread(from, chamfer[1], leadCounts, rpm, spindle == 4, feed, chamfer[0]);
+    }
+
+    /**
+     * The chamfered pull-out of a G76/G92 pass under Haas M23 (docs/threading.md): over the last
+     * leads x lead of the pass's Z travel the tool leaves the pass's line and moves out in X at the
+     * chamfer's angle to the Z axis, Z going on at the lead, both still geared to the spindle. Returns
+     * {where the chamfer starts, where the pass ends}, or null after E240 (a chamfer as long as the
+     * pass or longer), E241 (its end beyond the X travel), E242 (X faster than the machine's
+     * feed.max) or E208 (X's gear ratio beyond GR's range).
+     */
+    private Point[] pullOut(BlockDraft d, Point from, Point end, double lead, double rpm, gcnc.diag.Span at,
+                            Diagnostics out) {
+        gcnc.machine.ThreadChamfer c = d.pullOut.chamfer();
+        double perZ = coordinates.perZ(d.units);
+        double perRadius = coordinates.perRadius(d.units);
+        double length = c.leads() * lead; // program units along Z
+        double dz = end.z() - from.z();
+        if (length * perZ >= Math.abs(dz)) {
+            d.fail(out, Code.E240_THREAD_CHAMFER_TOO_LONG, d.blame(), d.thread, NumberText.plain(length, 4),
+                    NumberText.plain(c.leads()), NumberText.plain(lead), NumberText.plain(Math.abs(dz) / perZ, 4));
+            return null;
+        }
+        double zc = end.z() - Math.signum(dz) * length * perZ;
+        Point start = new Point(from.x() + (end.x() - from.x()) * (zc - from.z()) / dz, zc);
+        Point to = new Point(start.x() + d.pullOut.side() * length * c.slope() * perRadius, end.z());
+        if (!p.x().inTravel(to.x())) {
+            Point zero = coordinates.origin(d.next);
+            double[] travel = coordinates.programTravel(true, zero, d.units);
+            d.fail(out, Code.E241_THREAD_CHAMFER_TRAVEL, d.blame(), d.thread,
+                    NumberText.plain((to.x() - zero.x()) / coordinates.perX(d.units), 4), NumberText.plain(travel[0]),
+                    NumberText.plain(travel[1]), p.name());
+            return null;
+        }
+        // X's speed along the chamfer, counts/s, against feed.max as Z's is (E192)
+        if (lead * perRadius * c.slope() * rpm / 60 > p.maxFeed()) {
+            double mmPerUnit = d.units == gcnc.machine.Units.INCH ? 25.4 : 1;
+            d.fail(out, Code.E242_THREAD_CHAMFER_TOO_FAST, at, d.thread, NumberText.plain(c.angle()),
+                    NumberText.plain(lead * mmPerUnit * c.slope() * rpm, 1), NumberText.plain(lead * mmPerUnit, 4),
+                    NumberText.plain(rpm, 1), NumberText.plain(p.maxFeed() * 60 / p.x().countsPerMm(), 1));
+            return null;
+        }
+        double ratio = lead * perRadius * c.slope() / p.encoder().get().countsPerRev();
+        if (ratio > gcnc.machine.SpindleEncoder.MAX_RATIO) {
+            d.fail(out, Code.E208_GEAR_RATIO_RANGE, at, NumberText.plain(ratio, 4));
+            return null;
+        }
+        return new Point[] {start, to};
     }
 
     /** The end point, or null after E015 when it is beyond the travel ({@code zero}: the block's coordinate zero). */

@@ -32,7 +32,8 @@ import java.util.Set;
  * {@code G76 X Z R(taper) P(height) Q(first depth) F}) and the Haas one-block form
  * ({@code G76 X Z K(height) D(first depth) F [I A P]}). Every thread pass is a G01 block checked
  * like a cut and built as a spindle-synchronised motion ({@link Checker#thread}); the rapids are
- * ordinary G00 blocks.
+ * ordinary G00 blocks. Under Haas M23 each G92/G76 pass ends with the profile's chamfered pull-out
+ * ({@link PullOut}, made by {@code MotionBuilder}); G32 never does.
  */
 final class Threading {
     /** The most passes a G76 is expanded into (E167 past it). */
@@ -56,8 +57,8 @@ final class Threading {
     private double allowance;
 
     /**
-     * Haas M23 in force: G76 and G92 end with a chamfered pull-out, which gcnc does not cut yet
-     * (E197). On at power-up on a control that has M23 (Haas), off after M24.
+     * Haas M23 in force: each pass of a G76 or G92 ends with the profile's chamfered pull-out
+     * ({@link #pullsOut}). On at power-up on a control that has M23 (Haas), off after M24.
      */
     private boolean chamfer;
 
@@ -183,12 +184,6 @@ final class Threading {
             refused(role, g, label);
             return done;
         }
-        if (chamfer && role != GRole.THREAD) {
-            host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, g != null ? g : b.words().get(0),
-                    Phrase.THREAD_M23.arg());
-            refused(role, g, label);
-            return done;
-        }
         if (role == GRole.THREAD) {
             if (g != null) {
                 start(role, g, label);
@@ -252,7 +247,7 @@ final class Threading {
             return;
         }
         Optional<CheckedBlock> r = host.thread(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false,
-                b.blockDelete()), false, null, label);
+                b.blockDelete()), false, null, label, null); // G32 has no pull-out: M23 does not change it
         r.ifPresent(done::add);
         continued = r.isPresent() ? host.state().position() : null;
     }
@@ -364,11 +359,27 @@ final class Threading {
             host.out().error(Code.E196_THREAD_NOT_ALONG_Z, at, label);
             return;
         }
+        // the side of the thread the start point is on: where an M23 chamfer pulls out to
+        int side = (int) Math.signum(a.x() - to.x());
+        side = side != 0 ? side : (int) Math.signum(a.x() - (to.x() + t));
+        PullOut pullOut = null;
+        if (pullsOut()) {
+            if (side == 0) {
+                host.out().error(Code.E160_CYCLE_START_INSIDE, at, label, b.line());
+                return;
+            }
+            pullOut = new PullOut(host.profile().threadChamfer(), side);
+        }
         end = to;
         taper = t;
         List<Move> moves = List.of(Move.line(true, new Point(end.x() + taper, a.z()), 1), Move.line(false, end, 1),
                 Move.line(true, new Point(a.x(), end.z()), 1), Move.line(true, a, 1));
-        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(name, b.line()));
+        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(name, b.line()), pullOut);
+    }
+
+    /** Whether a G76 or G92 pass now ends with a chamfer: M23 in force and a chamfer of some length in the profile. */
+    private boolean pullsOut() {
+        return chamfer && host.profile().threadChamfer().cuts();
     }
 
     /** G76: the Fanuc first block sets what stays in force; the second block, or the Haas one block, cuts. */
@@ -509,8 +520,9 @@ final class Threading {
             moves.add(Move.line(true, a, pass));
         }
         int passes = depths.length;
+        PullOut pullOut = pullsOut() ? new PullOut(host.profile().threadChamfer(), (int) side) : null;
         write(done, b.line(), g.span(), s, moves, lead, label,
-                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)));
+                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut);
     }
 
     /** The Fanuc first block G76 P(mmrraa) Q(minimum depth) R(finishing allowance): what stays in force. */
@@ -577,11 +589,12 @@ final class Threading {
 
     /**
      * The moves as blocks at the cycle's line: rapids as G00 blocks, the thread passes as G01
-     * blocks with the lead as F, checked as threads. After one fails, a rapid back to the start
-     * ends the cycle ({@link CycleExpansion#abandon}).
+     * blocks with the lead as F, checked as threads, ending with {@code pullOut}'s chamfer when it
+     * is not null (Haas M23). After one fails, a rapid back to the start ends the cycle
+     * ({@link CycleExpansion#abandon}).
      */
     private void write(List<CheckedBlock> done, int line, Span at, ModalState start, List<Move> moves, double lead,
-                       String label, java.util.function.IntFunction<CycleOrigin> origins) {
+                       String label, java.util.function.IntFunction<CycleOrigin> origins, PullOut pullOut) {
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
         Point a = start.position();
         Point from = a;
@@ -596,7 +609,7 @@ final class Threading {
             if (m.kind() == Move.Kind.FEED) {
                 List<Word> ws = new ArrayList<>(block.words());
                 ws.add(f);
-                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label);
+                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label, pullOut);
             } else {
                 r = host.one(block, false, origin);
             }

@@ -3,7 +3,8 @@ package gcnc.diag;
 /**
  * Every diagnostic gcnc can report, with a stable number that is never reused.
  * 1-54 are the thesis's Table 5; gcnc's own codes start at 100:
- * 100-199 checker (G-code semantics), 200-299 Galil backend, 300-399 simulator,
+ * 100-199 checker (G-code semantics), 200-299 Galil backend (but 240-249: checker again, the
+ * chamfered thread pull-out, since the threads' E190-E199 are full), 300-399 simulator,
  * 400-499 tables and machine profiles, 500-599 command line and files.
  * Message texts live in tables/errors.csv; {@code CodeTableTest} keeps the two in step.
  */
@@ -321,10 +322,19 @@ public enum Code {
     E206_THESIS_ARC(206),
     /** A cutting feed is below one count per second, the slowest vector speed VS can give. */
     E207_FEED_TOO_SLOW(207),
-    /** A thread's gear ratio (Z counts per spindle encoder count) beyond Galil's GR range of 127.9999. */
+    /** A thread's gear ratio (axis counts per spindle encoder count) beyond Galil's GR range of 127.9999. */
     E208_GEAR_RATIO_RANGE(208),
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
+
+    // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
+    // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
+    /** Checker: the chamfered pull-out (M23) is as long as the pass's Z travel or longer. */
+    E240_THREAD_CHAMFER_TOO_LONG(240),
+    /** Checker: the chamfered pull-out (M23) would end beyond the X travel. */
+    E241_THREAD_CHAMFER_TRAVEL(241),
+    /** Checker: the chamfered pull-out (M23) would move X faster than the machine's maximum feed. */
+    E242_THREAD_CHAMFER_TOO_FAST(242),
 
     // 300-399: simulator (sim package).
     /** A DMC line the simulator does not know. */

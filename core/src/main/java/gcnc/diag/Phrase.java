@@ -21,8 +21,6 @@ public enum Phrase {
     THREAD_HEIGHT,
     /** E195: a G76 second block without its first depth ({0}: the letter). */
     THREAD_FIRST_DEPTH,
-    /** E197: Haas M23 in force. */
-    THREAD_M23,
     /** E197: a G32 straight after another pass. */
     THREAD_CONTINUED,
     /** E197: a Fanuc P/Q depth with a point. */
@@ -136,6 +134,8 @@ public enum Phrase {
     NOSE_FROM_ONE,
     NOSE_RADIUS,
     TIP_DIRECTION,
+    THREAD_CHAMFER_LEADS,
+    THREAD_CHAMFER_ANGLE,
     OUTPUT_DIRECTIVES,
     NUMBER_AGAIN,
     UNKNOWN_KEY_TYPO,

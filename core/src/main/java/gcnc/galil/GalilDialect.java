@@ -191,9 +191,11 @@ final class GalilDialect implements Dialect {
      * {@code GA} makes the encoder's channel the master of both plane axes; the DMC waits with
      * {@code MF}/{@code MR} for the encoder to pass the next whole revolution (every pass starts at
      * the same spindle angle); {@code GR} engages both axes at the ratios that advance Z one lead
-     * per revolution (X in proportion for a taper); {@code MF}/{@code MR} on Z waits for the pass's
-     * end; {@code GR 0,0} disengages, and {@code PA}/{@code BG}/{@code AM} settle both axes on the
-     * exact end counts (the few counts the disengagement and the 4-decimal ratios leave).
+     * per revolution (X in proportion for a taper); {@code MF}/{@code MR} on Z waits for the end of
+     * the straight part. A chamfered pull-out (Haas M23) then changes the ratios while geared
+     * ({@code GR} again: X moves out, Z goes on at the lead) and waits for Z to pass the pass's end.
+     * {@code GR 0,0} disengages, and {@code PA}/{@code BG}/{@code AM} settle both axes on the exact
+     * end counts (the few counts the disengagement and the 4-decimal ratios leave).
      */
     private void thread(CheckedBlock b, Motion.Thread t, BlockWriter out) {
         gcnc.machine.SpindleEncoder enc = profile.encoder().orElse(null);
@@ -204,37 +206,57 @@ final class GalilDialect implements Dialect {
         }
         long tu = GalilNumbers.round(frame.u(t.to()));
         long tv = GalilNumbers.round(frame.v(t.to()));
-        if (!inRange(b, "PA", tu) || !inRange(b, "PA", tv)) {
+        long cu = GalilNumbers.round(frame.u(t.straightEnd()));
+        long cv = GalilNumbers.round(frame.v(t.straightEnd()));
+        if (!inRange(b, "PA", tu) || !inRange(b, "PA", tv) || !inRange(b, "MF", cu) || !inRange(b, "MF", cv)) {
             return;
         }
-        double dz = Math.abs(t.to().z() - t.from().z());
-        // encoder counts the pass takes: revolutions x counts per revolution, negative under M04
-        double master = dz / t.lead() * enc.countsPerRev() * (t.reverse() ? -1 : 1);
-        double ru = (tu - posU) / master;
-        double rv = (tv - posV) / master;
-        if (Math.abs(ru) > MAX_RATIO || Math.abs(rv) > MAX_RATIO) {
-            diagnostics.error(Code.E208_GEAR_RATIO_RANGE, at(b), ratio(Math.max(Math.abs(ru), Math.abs(rv))));
+        double[] straight = ratios(enc, t, t.from(), t.straightEnd(), cu - posU, cv - posV);
+        double[] chamfer = t.chamfered() ? ratios(enc, t, t.straightEnd(), t.to(), tu - cu, tv - cv) : null;
+        double largest = Math.max(Math.abs(straight[0]), Math.abs(straight[1]));
+        if (chamfer != null) {
+            largest = Math.max(largest, Math.max(Math.abs(chamfer[0]), Math.abs(chamfer[1])));
+        }
+        if (largest > MAX_RATIO) {
+            diagnostics.error(Code.E208_GEAR_RATIO_RANGE, at(b), ratio(largest));
             return;
         }
         String[] plane = {frame.plane().substring(0, 1), frame.plane().substring(1, 2)};
         String encoder = String.valueOf(enc.channel());
         boolean zFirst = frame.plane().charAt(0) == profile.z().galil();
         long tz = zFirst ? tu : tv;
+        long cz = zFirst ? cu : cv;
         long z0 = zFirst ? posU : posV;
         out.emit("GA " + positional(plane, encoder, encoder));
         int cpr = enc.countsPerRev();
         String cross = t.reverse() ? "-1" : "+1";
         out.emit(SYNC_VARIABLE + "=(@INT[_TP" + encoder + "/" + cpr + "]" + cross + ")*" + cpr);
         out.emit((t.reverse() ? "MR " : "MF ") + positional(new String[] {encoder}, SYNC_VARIABLE));
-        out.emit("GR " + positional(plane, ratio(ru), ratio(rv)));
+        out.emit("GR " + positional(plane, ratio(straight[0]), ratio(straight[1])));
         String zLetter = String.valueOf(profile.z().galil());
-        out.emit((tz >= z0 ? "MF " : "MR ") + positional(new String[] {zLetter}, Long.toString(tz)));
+        String zWait = tz >= z0 ? "MF " : "MR ";
+        if (chamfer != null) {
+            out.emit(zWait + positional(new String[] {zLetter}, Long.toString(cz)));
+            out.emit("GR " + positional(plane, ratio(chamfer[0]), ratio(chamfer[1])));
+        }
+        out.emit(zWait + positional(new String[] {zLetter}, Long.toString(tz)));
         out.emit("GR " + positional(plane, "0", "0"));
         out.emit("PA " + positional(plane, Long.toString(tu), Long.toString(tv)));
         out.emit("BG " + frame.plane());
         out.emit("AM " + frame.plane());
         posU = tu;
         posV = tv;
+    }
+
+    /**
+     * The gear ratios of one geared segment of a pass from {@code a} to {@code b}: its displacement
+     * in counts ({@code du}, {@code dv}, Galil's plane order) over the encoder counts the spindle
+     * turns while Z goes from a to b at the lead (negative under M04).
+     */
+    private static double[] ratios(gcnc.machine.SpindleEncoder enc, Motion.Thread t, Point a, Point b, long du,
+                                   long dv) {
+        double master = Math.abs(b.z() - a.z()) / t.lead() * enc.countsPerRev() * (t.reverse() ? -1 : 1);
+        return new double[] {du / master, dv / master};
     }
 
     /** A gear ratio as GR takes it: four decimals (its resolution, DMC-40x0 command reference). */

@@ -48,17 +48,34 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
     }
 
     /**
-     * One spindle-synchronised thread pass (G32, Fanuc B G33; a pass of G92/G78 or G76): a straight
-     * line from {@code from} to {@code to} on which Z advances {@code lead} counts per spindle
-     * revolution (X in proportion, for a taper), every pass starting at the same spindle angle.
-     * Never a plain feed: the backend gears the axes to the spindle encoder (docs/threading.md).
+     * One spindle-synchronised thread pass (G32, Fanuc B G33; a pass of G92/G78 or G76) from
+     * {@code from} to {@code to} on which Z advances {@code lead} counts per spindle revolution,
+     * every pass starting at the same spindle angle. Never a plain feed: the backend gears the axes
+     * to the spindle encoder (docs/threading.md). A straight line (X in proportion, for a taper),
+     * or, with a chamfered pull-out (Haas M23), two geared segments: the straight line from
+     * {@code from} to {@code chamferStart}, then the chamfer to {@code to}, on which Z goes on at the
+     * same lead and X moves out at the chamfer's angle.
      *
-     * @param lead     Z counts per spindle revolution, greater than 0
-     * @param rpm      the spindle speed the pass is cut at (G97)
-     * @param reverse  the spindle turns M04 (its encoder counts down)
-     * @param feed     the lead as programmed (F) and the path speed it makes at {@code rpm}, counts/s
+     * @param lead          Z counts per spindle revolution, greater than 0
+     * @param rpm           the spindle speed the pass is cut at (G97)
+     * @param reverse       the spindle turns M04 (its encoder counts down)
+     * @param feed          the lead as programmed (F) and the path speed it makes at {@code rpm} along
+     *                      the straight part, counts/s
+     * @param chamferStart  where the straight part ends and the chamfered pull-out begins; null when the
+     *                      pass ends square at {@code to} (M24, G32)
      */
-    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed) implements Motion {
+    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart)
+            implements Motion {
+        /** Whether the pass ends with a chamfered pull-out (two geared segments). */
+        public boolean chamfered() {
+            return chamferStart != null;
+        }
+
+        /** Where the straight geared part ends: the chamfer's start, or {@code to}. */
+        public Point straightEnd() {
+            return chamferStart != null ? chamferStart : to;
+        }
+
         @Override
         public <R> R accept(Visitor<R> v) {
             return v.thread(this);

@@ -17,8 +17,9 @@ public enum MRole {
     /** M99: the end of a called program (return to the caller); in the main program, its end. */
     RETURN(-4),
     /**
-     * Haas M23/M24: the chamfered pull-out at the end of a G76/G92 thread on (in force at power-up)
-     * or off. gcnc pulls straight out, so a thread cycle under M23 is E197 (docs/threading.md).
+     * Haas M23/M24: the chamfered pull-out at the end of each G76/G92 thread pass on (in force at
+     * power-up) or off (a straight pull-out). The chamfer is the profile's
+     * {@code thread.chamfer_leads} and {@code thread.chamfer_angle} (docs/threading.md).
      */
     THREAD_CHAMFER_ON(-6), THREAD_CHAMFER_OFF(-7),
     /** A function gcnc cannot follow yet (Haas M97, live tooling): using it is E110. */

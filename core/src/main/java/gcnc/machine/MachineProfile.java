@@ -43,6 +43,8 @@ import java.util.Optional;
  * @param spindleEncoder  the spindle encoder threads are geared to, or null when the machine has none
  * @param noses           offset number (1..) to the insert's nose radius and tip direction (key
  *                        {@code nose.N}); an offset without one has radius 0
+ * @param threadChamfer   the chamfered pull-out of a G76/G92 pass under Haas M23 (keys
+ *                        {@code thread.chamfer_leads}, {@code thread.chamfer_angle})
  */
 public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
@@ -52,7 +54,7 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
                              Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file,
                              Control control, Units units, Point machineZero, boolean chuckByProgram,
                              MachineModel model, SpindleEncoder spindleEncoder,
-                             Map<Integer, Nose> noses) {
+                             Map<Integer, Nose> noses, ThreadChamfer threadChamfer) {
     public MachineProfile {
         noses = Map.copyOf(noses);
         workOffsets = Map.copyOf(workOffsets);

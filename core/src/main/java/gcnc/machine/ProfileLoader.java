@@ -106,7 +106,33 @@ public final class ProfileLoader {
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
                 workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
                 machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z),
-                noses(f, counts, x));
+                noses(f, counts, x), threadChamfer(f));
+    }
+
+    /**
+     * {@code thread.chamfer_leads} (0 to 100 leads; 0 = a straight pull-out even under M23) and
+     * {@code thread.chamfer_angle} (degrees from the Z axis, more than 0 and less than 90): the
+     * chamfered pull-out of a G76/G92 pass under Haas M23 (Settings 95 and 96); Haas's shipped
+     * values when absent.
+     */
+    private static ThreadChamfer threadChamfer(ProfileFile f) throws TableException {
+        double leads = ThreadChamfer.HAAS.leads();
+        double angle = ThreadChamfer.HAAS.angle();
+        if (f.entry("thread.chamfer_leads").isPresent()) {
+            ProfileFile.Entry e = f.required("thread.chamfer_leads");
+            leads = f.number(e);
+            if (!(leads >= 0 && leads <= ThreadChamfer.MAX_LEADS)) {
+                throw f.fault(e, Phrase.THREAD_CHAMFER_LEADS.with(written(leads), written(ThreadChamfer.MAX_LEADS)));
+            }
+        }
+        if (f.entry("thread.chamfer_angle").isPresent()) {
+            ProfileFile.Entry e = f.required("thread.chamfer_angle");
+            angle = f.number(e);
+            if (!(angle > 0 && angle < 90)) {
+                throw f.fault(e, Phrase.THREAD_CHAMFER_ANGLE.with(written(angle)));
+            }
+        }
+        return new ThreadChamfer(leads, angle);
     }
 
     /** The largest encoder resolution gcnc accepts: 2^20 counts per revolution. */

@@ -14,11 +14,14 @@ final class Conformance {
     private final MotionChecks.Reporter out;
     private final PathRecorder path;
     private final double tol;
+    /** The tolerance of a geared thread pass ({@link Simulator#threadTolerance}), counts. */
+    private final double threadTol;
 
-    Conformance(MotionChecks.Reporter out, PathRecorder path, double tolerance) {
+    Conformance(MotionChecks.Reporter out, PathRecorder path, double tolerance, double threadTolerance) {
         this.out = out;
         this.path = path;
         this.tol = tolerance;
+        this.threadTol = threadTolerance;
     }
 
     /**
@@ -34,8 +37,18 @@ final class Conformance {
             return endPoint(last, lin.to(), line);
         }
         if (m instanceof Motion.Thread t) {
-            if (segs.size() != 1 || last.arc()) {
-                return mismatch(line, "path (a thread pass is one straight geared move)", last.length(), t.to());
+            if (segs.size() != geared(t) || segs.get(0).arc() || last.arc()) {
+                return mismatch(line, t.chamfered()
+                        ? "path (a chamfered thread pass is two straight geared moves)"
+                        : "path (a thread pass is one straight geared move)", last.length(), t.to());
+            }
+            if (t.chamfered()) {
+                // the corner where the ratios change: a wrong straight part and a chamfer that
+                // makes up for it would end right and still cut the wrong thread
+                double corner = distance(segs.get(0), t.chamferStart());
+                if (corner > threadTol) {
+                    return mismatch(line, "start of the thread's chamfer", corner, threadTol, t.to());
+                }
             }
             return endPoint(last, t.to(), line);
         }
@@ -71,6 +84,11 @@ final class Conformance {
         return endPoint(last, to, line);
     }
 
+    /** How many geared segments a thread pass replays as: the straight part, and its chamfer (M23). */
+    static int geared(Motion.Thread t) {
+        return t.chamfered() ? 2 : 1;
+    }
+
     /**
      * A circle no wider than the tolerance: the backend may write its arc as a straight move, and
      * the simulator pairs and checks it so (one rule for {@code Simulator} and this class).
@@ -89,7 +107,11 @@ final class Conformance {
     }
 
     private double[] mismatch(int line, String what, double by, Point to) {
-        out.report(Code.E308_SIM_PATH_MISMATCH, line, what, MotionChecks.mm(by), MotionChecks.mm(tol));
+        return mismatch(line, what, by, tol, to);
+    }
+
+    private double[] mismatch(int line, String what, double by, double tolerance, Point to) {
+        out.report(Code.E308_SIM_PATH_MISMATCH, line, what, MotionChecks.mm(by), MotionChecks.mm(tolerance));
         mark("E308", line, to);
         return new double[] {to.x(), to.z()};
     }

@@ -76,6 +76,13 @@ final class DmcInterpreter {
     private double target1 = Double.NaN;
     private double target2 = Double.NaN;
     private String gearLine = "";
+    /**
+     * The geared segments of the pass before the current ratios: one per change of the ratios
+     * while geared (a chamfered pull-out's corner, docs/threading.md); empty for a straight pass.
+     */
+    private final List<Segment> geared = new ArrayList<>(1);
+    /** The encoder counts the master turned over those segments (for the pass's speed). */
+    private double masterTurned;
 
     DmcInterpreter(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
                    Listener out) {
@@ -420,6 +427,10 @@ final class DmcInterpreter {
             }
             return;
         }
+        if (engaged) {
+            change(r1, r2, line, text);
+            return;
+        }
         if (!gearMaster) {
             out.report(Code.E318_SIM_THREAD_NO_MASTER, line, text);
         } else if (!synchronised) {
@@ -433,19 +444,54 @@ final class DmcInterpreter {
         engaged2 = g2;
         tripAxis = -1;
         gearLine = text;
+        geared.clear();
+        masterTurned = 0;
+    }
+
+    /**
+     * {@code GR} with other ratios while geared: at the MF/MR point on a plane axis the ratios
+     * change and the master goes on (a chamfered pull-out, docs/threading.md). The segment geared so
+     * far is kept; the next starts where it ended.
+     */
+    private void change(double r1, double r2, int line, String text) {
+        double[] at = tripped(line, text, " (no MF/MR point on a geared axis says where the ratios change)");
+        if (at == null) {
+            return;
+        }
+        geared.add(new Segment(plane.machineX(engaged1, engaged2), plane.machineZ(engaged1, engaged2),
+                plane.machineX(at[0], at[1]), plane.machineZ(at[0], at[1]), false, 0, 0, 0, 0, 0, gearLine));
+        engaged1 = at[0];
+        engaged2 = at[1];
+        ratio1 = r1;
+        ratio2 = r2;
+        tripAxis = -1;
+        gearLine = text;
     }
 
     /** Where the geared axes stand when the trip axis reaches its point (the master turned the same counts for both). */
     private void disengage(int line, String text) {
         engaged = false;
+        double[] at = tripped(line, text, " (no MF/MR point on a geared axis ends the pass)");
+        if (at != null) {
+            geared1 = at[0];
+            geared2 = at[1];
+        }
+    }
+
+    /**
+     * {first plane axis, second, master counts turned} when the trip axis reaches its point from
+     * where the current ratios began, the master's counts added to {@link #masterTurned}; null
+     * after E301 when no MF/MR on a geared axis gave the point ({@code why}).
+     */
+    private double[] tripped(int line, String text, String why) {
         double r = tripAxis == 0 ? ratio1 : ratio2;
         if (tripAxis < 0 || r == 0) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text + " (no MF/MR point on a geared axis ends the pass)");
-            return;
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text + why);
+            return null;
         }
         double master = (trip - (tripAxis == 0 ? engaged1 : engaged2)) / r;
-        geared1 = engaged1 + ratio1 * master;
-        geared2 = engaged2 + ratio2 * master;
+        masterTurned += Math.abs(master);
+        return new double[] {engaged1 + ratio1 * master, engaged2 + ratio2 * master, master};
     }
 
     /** {@code PA}: the settling move to the pass's exact end, started by {@code BG} on the plane. */
@@ -474,9 +520,26 @@ final class DmcInterpreter {
                     zOff > threadTolerance ? "Z" : "X");
         }
         double rpm = volts * rpmPerVolt;
-        double speed = Math.max(1, Math.abs(rpm) / 60 * encoderCounts * Math.hypot(ratio1, ratio2));
-        List<Segment> one = List.of(new Segment(plane.machineX(engaged1, engaged2), plane.machineZ(engaged1, engaged2),
-                plane.machineX(target1, target2), plane.machineZ(target1, target2), false, 0, 0, 0, 0, 0, gearLine));
+        Segment last = new Segment(plane.machineX(engaged1, engaged2), plane.machineZ(engaged1, engaged2),
+                plane.machineX(target1, target2), plane.machineZ(target1, target2), false, 0, 0, 0, 0, 0, gearLine);
+        List<Segment> one;
+        double speed;
+        if (geared.isEmpty()) {
+            one = List.of(last);
+            speed = Math.max(1, Math.abs(rpm) / 60 * encoderCounts * Math.hypot(ratio1, ratio2));
+        } else {
+            // a chamfered pull-out: the straight part, the chamfer; the spindle turns at one speed
+            // over both, so the pass's mean speed is its length over the time the master takes
+            one = new ArrayList<>(geared);
+            one.add(last);
+            double length = 0;
+            for (Segment seg : one) {
+                length += seg.length();
+            }
+            double seconds = masterTurned / (Math.abs(rpm) / 60 * encoderCounts);
+            speed = seconds > 0 && length / seconds > 1 ? length / seconds : 1;
+            geared.clear();
+        }
         g1 = target1;
         g2 = target2;
         target1 = Double.NaN;

@@ -67,7 +67,7 @@ final class MotionChecks {
             stock = null;
         }
         path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
-        conformance = new Conformance(out, path, tol);
+        conformance = new Conformance(out, path, tol, Simulator.threadTolerance(profile, options));
         toolShape = machine.defaultTool();
         chuckBox = box(machine.chuck());
         tailBox = box(machine.tailstock());

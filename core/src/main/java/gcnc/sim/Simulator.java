@@ -56,9 +56,18 @@ public final class Simulator {
             dmc.encoderCounts = e.countsPerRev();
         });
         dmc.rpmPerVolt = profile.rpmPerVolt();
-        // 5 micrometres, or two counts: far below any thread's pitch tolerance (docs/threading.md)
-        dmc.threadTolerance = Math.max(Math.max(2, options.tolerance()), THREAD_TOLERANCE_MM * profile.z().countsPerMm());
+        dmc.threadTolerance = threadTolerance(profile, options);
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
+    }
+
+    /**
+     * How far, in counts, a geared thread pass may end from its settling move (E317) or turn into
+     * its chamfer from where the program's chamfer starts (E308): 5 micrometres, or two counts, or
+     * the conformance tolerance, whichever is largest; far below any thread's pitch tolerance
+     * (docs/threading.md), above what GR's four decimals leave.
+     */
+    static double threadTolerance(MachineProfile profile, SimOptions options) {
+        return Math.max(Math.max(2, options.tolerance()), THREAD_TOLERANCE_MM * profile.z().countsPerMm());
     }
 
     public void begin(List<GalilLine> header) {
@@ -174,7 +183,7 @@ public final class Simulator {
 
             @Override
             public Boolean thread(Motion.Thread t) {
-                return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, t.from(), t.to());
+                return segs.size() == Conformance.geared(t) && !first.arc() && sameDisplacement(dx, dz, t.from(), t.to());
             }
 
             @Override
