@@ -343,6 +343,9 @@ final class Stock {
         private final double[] z;
         private final double[] r;
         private int at;
+        /** The slope of the edge from corner {@code at}, worked out once per edge (a sweep reads thousands of slices). */
+        private double slope;
+        private int sloped = -1;
 
         Chain(double[] z, double[] r) {
             this.z = z;
@@ -354,7 +357,11 @@ final class Stock {
                 at++;
             }
             if (at + 1 < z.length && z[at + 1] > z[at]) {
-                return r[at] + (r[at + 1] - r[at]) * (q - z[at]) / (z[at + 1] - z[at]);
+                if (sloped != at) {
+                    slope = (r[at + 1] - r[at]) / (z[at + 1] - z[at]);
+                    sloped = at;
+                }
+                return r[at] + slope * (q - z[at]);
             }
             return r[at];
         }
