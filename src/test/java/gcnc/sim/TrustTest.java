@@ -149,6 +149,26 @@ class TrustTest {
     }
 
     /**
+     * An arc that climbs back toward the tailstock from a shoulder just plunged meets the insert's
+     * back too, and the verdict is the same whether or not the path is kept for a drawing (which
+     * cuts the arc into finer pieces): the bands of all its pieces are judged together.
+     */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"G02", "G03"})
+    void anArcBackTowardTheTailstockIsJudgedAsAWhole(String g) throws Exception {
+        String p = HEAD + "G00 X46. Z2.\nG00 X40.\nG01 Z-30. F100.\nG01 X30.\n" + g + " X36. Z-27. R3.\nG00 X46.\n"
+                + "G00 Z2.\nM05\nM30\n";
+        MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
+        List<String> plain = compile(m, p);
+        List<String> drawn = new ArrayList<>();
+        Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil",
+                Optional.of(SimOptions.defaults().withPath())), l -> { }).diagnostics().sorted()
+                .forEach(d -> drawn.add(d.code().id() + "@" + d.span().line()));
+        assertEquals(List.of("E320@11"), plain);
+        assertEquals(plain, drawn);
+    }
+
+    /**
      * A boring bar opens a tube's bore to 32 mm and steps out to 36 mm at the bottom; pulled back
      * toward the tailstock it meets the wall it has not cut with the insert's back (E320), while
      * stepping out at the mouth and boring toward the chuck is clean.

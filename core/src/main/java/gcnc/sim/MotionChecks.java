@@ -33,8 +33,8 @@ final class MotionChecks {
     /** How far each part reaches from the tip, mm: {dr-, dz-, dz+} of the insert and of the holder. */
     private double[] insertReach;
     private double[] holderReach;
-    /** The insert's edges that do not cut, mm from the tip: {z0, r0, z1, r1, nz, nr}, (nz, nr) the outward unit normal. */
-    private double[][] backMm;
+    /** The insert's edges that do not cut (E320). */
+    private BackEdges back = BackEdges.NONE;
     private final PathRecorder path;
     private final Conformance conformance;
     private int tool;
@@ -87,34 +87,7 @@ final class MotionChecks {
         holderIn = holderMm == null ? null : Stock.smaller(holderMm[0], holderMm[1]);
         insertReach = insertMm == null ? null : partReach(insertMm);
         holderReach = holderMm == null ? null : partReach(holderMm);
-        backMm = insertMm == null ? new double[0][] : backEdges(insertMm, toolShape.back());
-    }
-
-    /** The edges {@code back} of a convex outline, each with its outward unit normal. */
-    private static double[][] backEdges(double[][] outline, int[] back) {
-        double[] z = outline[0];
-        double[] r = outline[1];
-        int n = z.length;
-        double cz = 0;
-        double cr = 0;
-        for (int i = 0; i < n; i++) {
-            cz += z[i] / n;
-            cr += r[i] / n;
-        }
-        double[][] edges = new double[back.length][];
-        for (int k = 0; k < back.length; k++) {
-            int i = back[k];
-            int j = (i + 1) % n;
-            double len = Math.hypot(z[j] - z[i], r[j] - r[i]);
-            double nz = (r[j] - r[i]) / len;
-            double nr = -(z[j] - z[i]) / len;
-            if (nz * ((z[i] + z[j]) / 2 - cz) + nr * ((r[i] + r[j]) / 2 - cr) < 0) {
-                nz = -nz;
-                nr = -nr;
-            }
-            edges[k] = new double[] {z[i], r[i], z[j], r[j], nz, nr};
-        }
-        return edges;
+        back = insertMm == null ? BackEdges.NONE : BackEdges.of(insertMm, toolShape.back());
     }
 
     private static double[] partReach(double[][] outline) {
@@ -247,7 +220,7 @@ final class MotionChecks {
         int n = nearStock && poly == null && !nearChuck && !nearTail ? stockPieces(s) : s.pieces();
         List<Stock.Sweep> cuts = nearStock ? new ArrayList<>(n) : List.of();
         List<Stock.Sweep> holders = nearStock ? new ArrayList<>(n) : List.of();
-        List<Band> backs = nearStock && !rapid && backMm.length > 0 ? new ArrayList<>(1) : null;
+        List<BackEdges.Band> backs = nearStock && !rapid && back.any() ? new ArrayList<>(1) : null;
         double[] a = s.at(0);
         if (poly != null) {
             poly.add(a);
@@ -273,7 +246,11 @@ final class MotionChecks {
             a = b;
         }
         if (backs != null && !backs.isEmpty() && !backHit) {
-            backOfInsert(backs, cuts, line);
+            double[] at = BackEdges.met(stock, backs, cuts);
+            if (at != null) {
+                backHit = true;
+                mark(Code.E320_SIM_BACK_OF_INSERT, line, machinePoint(at), tool);
+            }
         }
         boolean touched = (!cuts.isEmpty() || !holders.isEmpty()) && stockMove(cuts, holders, rapid, line);
         if (!touched && key != null) {
@@ -324,7 +301,7 @@ final class MotionChecks {
      * sweeps of the insert and the holder that may reach into material, for {@link #stockMove}.
      */
     private void stockPiece(double a, double ar, double b, double br, List<Stock.Sweep> cuts,
-                            List<Stock.Sweep> holders, List<Band> backs) {
+                            List<Stock.Sweep> holders, List<BackEdges.Band> backs) {
         double az = a / kz;
         double bz = b / kz;
         double lo = Math.min(az, bz);
@@ -339,7 +316,7 @@ final class MotionChecks {
                 cuts.add(new Stock.Sweep(Stock.sweep(insertMm[0], insertMm[1], az, ar / kx, bz, br / kx), smaller));
             }
             if (backs != null) {
-                backPiece(az, ar / kx, bz, br / kx, backs, earlier);
+                back.piece(stock, az, ar / kx, bz, br / kx, backs, earlier);
             }
         }
         if (holderMm != null && stock.mayTouch(lo + holderReach[1], hi + holderReach[2], r + holderReach[0])) {
@@ -348,54 +325,6 @@ final class MotionChecks {
                 holders.add(new Stock.Sweep(Stock.sweep(holderMm[0], holderMm[1], az, ar / kx, bz, br / kx), smaller));
             }
         }
-    }
-
-    /**
-     * The sweeps of the insert's back edges that lead this piece (tip from (az, ar) to (bz, br), mm)
-     * and may reach into material. Of the area a convex insert sweeps beyond where it started, each
-     * point is met first by exactly one of its leading edges (the band that edge sweeps): material
-     * in a back edge's band is met by an edge that does not cut. An edge that advances no more than
-     * {@link Stock#DEPTH} across itself can reach no deeper than that, and is not looked at.
-     */
-    private void backPiece(double az, double ar, double bz, double br, List<Band> backs, int earlier) {
-        for (double[] e : backMm) {
-            double advance = (bz - az) * e[4] + (br - ar) * e[5];
-            if (advance <= Stock.DEPTH) {
-                continue; // trailing, or running along itself
-            }
-            Stock.Hull band = Stock.sweep(new double[] {e[0], e[2]}, new double[] {e[1], e[3]}, az, ar, bz, br);
-            if (band == null) {
-                continue;
-            }
-            double[][] in = Stock.smaller(band.z(), band.r());
-            Stock.Hull smaller = new Stock.Hull(in[0], in[1]);
-            if (stock.mayBite(smaller)) {
-                backs.add(new Band(new Stock.Sweep(band, smaller), earlier));
-            }
-        }
-    }
-
-    /**
-     * E320 when material more than {@link Stock#DEPTH} thick lies in the bands the insert's back
-     * edges sweep, before this segment's cut takes it away (the insert's sweep covers the bands).
-     */
-    private void backOfInsert(List<Band> backs, List<Stock.Sweep> cuts, int line) {
-        for (Band b : backs) {
-            List<Stock.Sweep> band = stock.biting(List.of(b.sweep()));
-            double[] at = band.isEmpty() ? null : stock.deepOverlap(band, cuts.subList(0, b.earlierCuts()));
-            if (at != null) {
-                backHit = true;
-                mark(Code.E320_SIM_BACK_OF_INSERT, line, machinePoint(at), tool);
-                return;
-            }
-        }
-    }
-
-    /**
-     * A back edge's band on one piece of a segment, and how many of the segment's cuts come from
-     * the pieces before it: an arc's earlier pieces take their material before this one meets it.
-     */
-    private record Band(Stock.Sweep sweep, int earlierCuts) {
     }
 
     /**

@@ -408,36 +408,45 @@ final class Stock {
 
     /** A point where the sweeps reach more than {@link #DEPTH} into material, {z, r}; null if nowhere. */
     double[] deepOverlap(java.util.List<Sweep> sweeps) {
-        return deepOverlap(sweeps, java.util.List.of());
-    }
-
-    /**
-     * As {@link #deepOverlap(java.util.List)}, with the material the sweeps {@code before} cover
-     * taken away first (cuts of the same move that are not yet taken from the stock).
-     */
-    double[] deepOverlap(java.util.List<Sweep> sweeps, java.util.List<Sweep> before) {
         java.util.List<Geometry> parts = new java.util.ArrayList<>(sweeps.size());
         for (Sweep s : sweeps) {
             if (s.full() != null) {
                 parts.add(polygon(s.full()));
             }
         }
-        if (parts.isEmpty()) {
-            return null;
+        return parts.isEmpty() ? null : deepIn(parts.size() == 1 ? parts.get(0) : OverlayNGRobust.union(parts));
+    }
+
+    /**
+     * A point where the union of {@code regions} reaches more than {@link #DEPTH} into material,
+     * each region without what the first {@code before[i]} of {@code cuts} cover (cuts of the same
+     * move that are not yet taken from the stock: they take their material first); null if nowhere.
+     * The regions are judged together, so that a move cut into many short pieces (an arc) is judged
+     * as the whole move.
+     */
+    double[] deepOverlap(java.util.List<Hull> regions, int[] before, java.util.List<Sweep> cuts) {
+        java.util.List<Geometry> parts = new java.util.ArrayList<>(regions.size());
+        for (int i = 0; i < regions.size(); i++) {
+            Geometry g = polygon(regions.get(i));
+            if (before[i] > 0) {
+                java.util.List<Geometry> taken = new java.util.ArrayList<>(before[i]);
+                for (Sweep c : cuts.subList(0, before[i])) {
+                    taken.add(polygon(c.full()));
+                }
+                g = OverlayNGRobust.overlay(g, OverlayNGRobust.union(taken), OverlayNG.DIFFERENCE);
+            }
+            parts.add(g);
         }
+        return parts.isEmpty() ? null : deepIn(parts.size() == 1 ? parts.get(0) : OverlayNGRobust.union(parts));
+    }
+
+    /** A point where {@code region} reaches more than {@link #DEPTH} into material (the pending cuts taken first), or null. */
+    private double[] deepIn(Geometry region) {
         settle();
-        Geometry region = parts.size() == 1 ? parts.get(0) : OverlayNGRobust.union(parts);
-        if (!touches(region)) {
+        if (region.isEmpty() || !touches(region)) {
             return null;
         }
         Geometry overlap = OverlayNGRobust.overlay(material, region, OverlayNG.INTERSECTION);
-        if (!before.isEmpty()) {
-            java.util.List<Geometry> taken = new java.util.ArrayList<>(before.size());
-            for (Sweep s : before) {
-                taken.add(polygon(s.full()));
-            }
-            overlap = OverlayNGRobust.overlay(overlap, OverlayNGRobust.union(taken), OverlayNG.DIFFERENCE);
-        }
         if (overlap.isEmpty() || overlap.getArea() == 0) {
             return null;
         }
