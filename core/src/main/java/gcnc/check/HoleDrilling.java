@@ -39,9 +39,7 @@ final class HoleDrilling {
 
     private final Checker host;
     /** The cycle in force, or null; its name, group and what later blocks keep. */
-    private GRole kind;
-    private String name;
-    private int group;
+    private final ModalCycle modal = new ModalCycle(f -> f.role().motion() || f.role().singleCycle());
     private double bottom;
     private double rPlane;
     private double first;
@@ -57,32 +55,25 @@ final class HoleDrilling {
         return CycleBlocks.function(host, w);
     }
 
-    /** G80 (a G of the cycle's group), a motion G or a single-pass cycle ends the drilling cycle. */
-    private boolean ends(GFunction f) {
-        return f.group() == group || f.role().motion() || f.role().singleCycle();
-    }
-
     /** The cycle in force as the program wrote it ("G81"), for a finding about running it again. */
     String name() {
-        return name;
+        return modal.name();
     }
 
     /** Whether the block drills again with the cycle in force: an axis word and no G that ends it or owns the words. */
     boolean repeats(RawBlock b) {
-        return kind != null && CycleBlocks.repeats(host, b, this::ends);
+        return modal.repeats(host, b);
     }
 
     /** An ordinary block: G80, a motion G or a single-pass cycle ends the cycle. */
     void note(RawBlock b) {
-        if (kind != null && CycleBlocks.ends(host, b, this::ends)) {
-            kind = null;
-        }
+        modal.note(host, b);
     }
 
     /** A G81/G82/G83 block ({@code g} its cycle word), or a block that drills again (g null). */
     List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
-        GRole role = g == null ? kind : function(g).role();
-        String label = g == null ? name : "G" + g.number();
+        GRole role = g == null ? modal.kind() : function(g).role();
+        String label = g == null ? modal.name() : "G" + g.number();
         Units u = host.state().units();
         MachineProfile p = host.profile();
         double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
@@ -94,14 +85,18 @@ final class HoleDrilling {
         List<Word> passOn = words != null ? words.passOn() : CycleBlocks.passOn(b, g, this::isCycle);
         CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         if (words == null) {
-            kind = g != null ? null : kind;
+            if (g != null) {
+                modal.end();
+            }
             return done;
         }
         if (at == null) {
             at = words.axes().get(0);
         }
         if (!check(words, role, label, g)) {
-            kind = g != null ? null : kind;
+            if (g != null) {
+                modal.end();
+            }
             return done;
         }
         ModalState start = host.state();
@@ -115,7 +110,7 @@ final class HoleDrilling {
         boolean newZ = words.hasAxis(false);
         if (g != null && !newZ) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_BOTTOM.arg());
-            kind = null;
+            modal.end();
             return done;
         }
         double zOrigin = c.origin(start.next()).z();
@@ -130,13 +125,13 @@ final class HoleDrilling {
             host.out().error(Code.E187_DRILL_R_PLANE, r != null ? r.span() : at.span(), label,
                     NumberText.plain((plane - zOrigin) / perZ, 4), NumberText.plain((a.z() - zOrigin) / perZ, 4),
                     NumberText.plain((holeBottom - zOrigin) / perZ, 4));
-            kind = g != null ? null : kind;
+            if (g != null) {
+                modal.end();
+            }
             return done;
         }
         if (g != null) {
-            kind = role;
-            name = label;
-            group = function(g).group();
+            modal.start(role, function(g), label);
             first = Double.NaN;
             reduce = 0;
             least = Double.NaN;
@@ -165,12 +160,12 @@ final class HoleDrilling {
                     NumberText.plain(holeX, 4)));
         }
         double clearance = p.control().peckRetractMm();
-        if (kind == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
+        if (modal.kind() == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, at.span(), label,
                     Phrase.DRILL_CLEARANCE.arg());
             return done;
         }
-        Drilling drill = new Drilling(a, end.x(), rPlane, bottom, kind == GRole.PECK_DRILL_CYCLE ? first : Double.NaN,
+        Drilling drill = new Drilling(a, end.x(), rPlane, bottom, modal.kind() == GRole.PECK_DRILL_CYCLE ? first : Double.NaN,
                 reduce, least, Double.isNaN(clearance) ? 0 : clearance * p.z().countsPerMm());
         int pecks = drill.pecks(MAX_PECKS).size();
         if (pecks > MAX_PECKS) {
@@ -186,12 +181,12 @@ final class HoleDrilling {
             }
         }
         RawBlock pause = null;
-        if (kind == GRole.SPOT_DRILL_CYCLE && dwell != null) {
+        if (modal.kind() == GRole.SPOT_DRILL_CYCLE && dwell != null) {
             String g04 = p.control().gFor(GRole.DWELL).map(f -> f.name().substring(1)).orElseThrow();
             pause = new RawBlock(b.line(), List.of(new Word(Letter.G, g04, at.span()),
                     new Word(Letter.P, dwell.number(), at.span())), at.span(), false);
         }
-        done.addAll(CycleBlocks.write(host, name, b.line(), at.span(), moves, 1, start, bottomFeed, pause));
+        done.addAll(CycleBlocks.write(host, modal.name(), b.line(), at.span(), moves, 1, start, bottomFeed, pause));
         return done;
     }
 

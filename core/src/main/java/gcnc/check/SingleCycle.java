@@ -28,10 +28,8 @@ import java.util.Optional;
  */
 final class SingleCycle {
     private final Checker host;
-    /** The cycle in force, or null. */
-    private GRole kind;
-    private int group;
-    private String name;
+    /** The cycle in force, if any. */
+    private final ModalCycle modal = new ModalCycle();
     /** The end point of the cycle in force, counts, and its taper (counts along X for G90, Z for G94). */
     private Point end;
     private double taper;
@@ -46,25 +44,23 @@ final class SingleCycle {
 
     /** The cycle in force as the program wrote it ("G90"), for a finding about running it again. */
     String name() {
-        return name;
+        return modal.name();
     }
 
     /** Whether the block makes the cycle in force again: an axis word, no G of its group and no one-shot G. */
     boolean repeats(RawBlock b) {
-        return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
+        return modal.repeats(host, b);
     }
 
     /** An ordinary block: a G of the cycle's group ends the cycle. */
     void note(RawBlock b) {
-        if (kind != null && CycleBlocks.ends(host, b, f -> f.group() == group)) {
-            kind = null;
-        }
+        modal.note(host, b);
     }
 
     /** A G90/G94 block ({@code g} its cycle word) or a block that makes the cycle in force again (g null). */
     List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
-        GRole role = g == null ? kind : function(g).role();
-        String label = g == null ? name : "G" + g.number();
+        GRole role = g == null ? modal.kind() : function(g).role();
+        String label = g == null ? modal.name() : "G" + g.number();
         Letter taperWord = role == GRole.TURNING_SINGLE_CYCLE ? Letter.I : Letter.K;
         List<Word> axes = new ArrayList<>();
         List<Word> passOn = new ArrayList<>();
@@ -108,7 +104,7 @@ final class SingleCycle {
         boolean z = has(axes, Letter.Z, Letter.W);
         if (g != null && (!x || !z)) {
             host.out().error(Code.E169_SINGLE_CYCLE_END_MISSING, g.span(), label);
-            kind = null;
+            modal.end();
             return done;
         }
         ModalState start = host.state();
@@ -117,9 +113,7 @@ final class SingleCycle {
             return done;
         }
         if (g != null) {
-            kind = role;
-            group = function(g).group();
-            name = label;
+            modal.start(role, function(g), label);
             taper = 0;
         }
         end = new Point(x ? reached.x() : end.x(), z ? reached.z() : end.z());
@@ -134,7 +128,7 @@ final class SingleCycle {
                 v *= u == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
             }
             Coordinates c = host.coordinates();
-            taper = v * (kind == GRole.TURNING_SINGLE_CYCLE ? c.perRadius(u) : c.perZ(u));
+            taper = v * (modal.kind() == GRole.TURNING_SINGLE_CYCLE ? c.perRadius(u) : c.perZ(u));
         }
         return moves(done, start, at, b.line());
     }
@@ -152,14 +146,14 @@ final class SingleCycle {
     private List<CheckedBlock> moves(List<CheckedBlock> done, ModalState start, Word at, int line) {
         Point a = start.position();
         Point[] path;
-        if (kind == GRole.TURNING_SINGLE_CYCLE) {
+        if (modal.kind() == GRole.TURNING_SINGLE_CYCLE) {
             path = new Point[] {new Point(end.x() + taper, a.z()), end, new Point(a.x(), end.z()), a};
         } else {
             path = new Point[] {new Point(a.x(), end.z() + taper), end, new Point(end.x(), a.z()), a};
         }
         boolean[] rapid = {true, false, false, true};
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at.span());
-        CycleOrigin origin = CycleOrigin.single(name, line);
+        CycleOrigin origin = CycleOrigin.single(modal.name(), line);
         Point from = a;
         for (int i = 0; i < path.length; i++) {
             if (path[i].distanceTo(from) <= 1e-9) {

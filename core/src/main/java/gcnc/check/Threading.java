@@ -43,10 +43,8 @@ final class Threading {
     private static final Set<Integer> FANUC_ANGLES = Set.of(0, 29, 30, 55, 60, 80);
 
     private final Checker host;
-    /** The modal thread in force (G32 or G92), or null; its group, its name as written. */
-    private GRole kind;
-    private int group;
-    private String name;
+    /** The modal thread in force (G32 or G92), if any. */
+    private final ModalCycle modal = new ModalCycle();
     /** G92 in force: its end point (counts), taper (radius counts) and lead (as written). */
     private Point end;
     private double taper;
@@ -88,12 +86,12 @@ final class Threading {
 
     /** The thread in force as the program wrote it ("G92"), for a finding about running it again. */
     String name() {
-        return name;
+        return modal.name();
     }
 
     /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
     boolean repeats(RawBlock b) {
-        return kind != null && CycleBlocks.repeats(host, b, f -> f.group() == group);
+        return modal.repeats(host, b);
     }
 
     /**
@@ -118,22 +116,13 @@ final class Threading {
                 break;
             }
         }
-        if (kind == null) {
-            return;
-        }
-        for (Word w : b.words()) {
-            GFunction f = function(w);
-            if (f != null && f.group() == group) {
-                kind = null;
-                return;
-            }
-        }
+        modal.note(host, b);
     }
 
     /** A G32/G92/G76 block ({@code g} its word), or one that makes the G32/G92 in force again (g null). */
     List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
-        GRole role = g == null ? kind : function(g).role();
-        String label = g == null ? name : "G" + g.number();
+        GRole role = g == null ? modal.kind() : function(g).role();
+        String label = g == null ? modal.name() : "G" + g.number();
         if (role != GRole.THREAD) {
             continued = null;
         }
@@ -209,9 +198,7 @@ final class Threading {
     }
 
     private void start(GRole role, Word g, String label) {
-        kind = role;
-        group = function(g).group();
-        name = label;
+        modal.start(role, function(g), label);
     }
 
     /** The letters a thread function reads (besides N S T M G). */
@@ -329,7 +316,9 @@ final class Threading {
         boolean z = words.containsKey(Letter.Z) || words.containsKey(Letter.W);
         if (g != null && (!x || !z) || g == null && end == null && (!x || !z)) {
             host.out().error(Code.E195_THREAD_WORD_MISSING, at, label, Phrase.THREAD_END_BOTH.arg());
-            kind = g != null ? null : kind;
+            if (g != null) {
+                modal.end();
+            }
             return;
         }
         double lead = lead(words, label, at);
@@ -374,7 +363,7 @@ final class Threading {
         taper = t;
         List<Move> moves = List.of(Move.line(true, new Point(end.x() + taper, a.z()), 1), Move.line(false, end, 1),
                 Move.line(true, new Point(a.x(), end.z()), 1), Move.line(true, a, 1));
-        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(name, b.line()), pullOut);
+        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(modal.name(), b.line()), pullOut);
     }
 
     /** Whether a G76 or G92 pass now ends with a chamfer: M23 in force and a chamfer of some length in the profile. */
