@@ -105,8 +105,9 @@ public final class Compiler {
             if (sim != null) {
                 sim.begin(List.copyOf(lines));
                 lines.clear();
+            } else {
+                flush(lines, out);
             }
-            flush(lines, out);
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
                 translate(checker.check(raw), dialect, diags, collect, lines, sim, out);
@@ -118,8 +119,9 @@ public final class Compiler {
                 if (sim != null) {
                     sim.end(List.copyOf(lines));
                     lines.clear();
+                } else {
+                    flush(lines, out);
                 }
-                flush(lines, out);
             }
             Optional<SimReport> report = Optional.empty();
             if (sim != null) {
@@ -151,8 +153,9 @@ public final class Compiler {
                     sim.block(checked, List.copyOf(lines));
                 }
                 lines.clear();
+            } else {
+                flush(lines, out);
             }
-            flush(lines, out);
         }
     }
 

@@ -22,7 +22,7 @@ class AtomicOutputTest {
     @Test
     void linesOfEveryLengthAndScriptComeOutExactly() throws Exception {
         Random rnd = new Random(3);
-        String[] pieces = {"VP 1000,-2000", "NO L12", "é", "ñ (Spanish)", "€", "x".repeat(70_000), "", "CR 2100,87,8.2"};
+        String[] pieces = {"VP 1000,-2000", "NO L12", "NO año 2004", "é", "ñ (Spanish)", "€", "x".repeat(70_000), "", "CR 2100,87,8.2"};
         StringBuilder expected = new StringBuilder();
         Path target = dir.resolve("out.dmc");
         try (AtomicOutput out = new AtomicOutput(target)) {

@@ -211,16 +211,21 @@ public final class AtomicOutput implements AutoCloseable {
         }
         try {
             int n = text.length();
-            if (n < ASCII_DIRECT && ascii(text, n)) {
+            if (n < ASCII_DIRECT) {
                 // a DMC line is short ASCII: its chars are its bytes, copied without an array per line
                 if (buffered + n + 1 > buffer.length) {
                     drain();
                 }
-                for (int i = 0; i < n; i++) {
-                    buffer[buffered++] = (byte) text.charAt(i);
+                int start = buffered;
+                int i = 0;
+                for (char c; i < n && (c = text.charAt(i)) < 0x80; i++) {
+                    buffer[buffered++] = (byte) c;
                 }
-                buffer[buffered++] = '\n';
-                return;
+                if (i == n) {
+                    buffer[buffered++] = '\n';
+                    return;
+                }
+                buffered = start; // not ASCII: encoded below
             }
             byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
             if (buffered + bytes.length + 1 > buffer.length) {
@@ -239,17 +244,8 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
-    /** Lines shorter than this are checked for ASCII and copied char by char. */
+    /** Lines shorter than this are copied char by char while they are ASCII. */
     private static final int ASCII_DIRECT = 256;
-
-    private static boolean ascii(String text, int n) {
-        for (int i = 0; i < n; i++) {
-            if (text.charAt(i) >= 0x80) {
-                return false;
-            }
-        }
-        return true;
-    }
 
     /**
      * Writes a line of two whole numbers, "{@code a b}" (a source map entry), their digits straight

@@ -182,6 +182,7 @@ final class DmcInterpreter {
         }
     }
 
+    /** Any command but VP, CR and VS, which {@link #line} reads in place. */
     private void command(String cmd, String args, String text, int line) {
         switch (cmd) {
             case "SH", "VM" -> {
@@ -191,9 +192,6 @@ final class DmcInterpreter {
             }
             case "VA" -> acceleration = positive(args, 0, cmd, text, line, acceleration);
             case "VD" -> deceleration = positive(args, 0, cmd, text, line, deceleration);
-            case "VS" -> speed = positive(args, 0, cmd, text, line, speed);
-            case "VP" -> vp(args, 0, text, line);
-            case "CR" -> cr(args, 0, text, line);
             case "VE", "EN" -> {
                 if (!args.isEmpty()) {
                     out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text);
