@@ -59,6 +59,21 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
+    /** The README shows the simulation of docs/examples/back-turn.nc (E320 on N100); it must be what gcnc prints. */
+    @Test
+    void theReadmeBackTurnIsWhatGcncPrints() throws IOException {
+        String readme = Files.readString(Path.of("README.md"));
+        String command = "$ java -jar build/libs/gcnc.jar simulate docs/examples/back-turn.nc\n";
+        int from = readme.indexOf(command);
+        assertTrue(from >= 0, "README lost its example");
+        from += command.length();
+        String shown = readme.substring(from, readme.indexOf("```", from));
+        Run r = gcnc("simulate", "docs/examples/back-turn.nc");
+        assertEquals(1, r.status());
+        assertTrue(shown.contains("error[E320]"), shown);
+        assertEquals(shown, r.err() + r.out());
+    }
+
     /**
      * The README's shop program (docs/examples/bushing.nc: G71/G70 with G42, a G76 thread, a G75
      * groove, on the haas) compiles and simulates clean from its 1.5 in bar, and its DMC gears the
