@@ -4,7 +4,9 @@
 #      (skipped with --repo DIR: DIR already holds them, as the root build's ShopProjectTest arranges);
 #   2. builds a copy of samples/shop-project: it must pass, write the Galil programs and run the shop's
 #      JUnit tests (gcnc's fixtures: one test per program, and the pin's own);
-#   3. builds it again: gcncCheck, gcncCompile and gcncSimulate must be UP-TO-DATE;
+#   3. builds it again: gcncCheck, gcncCompile, gcncSimulate and the shop's tests must be UP-TO-DATE;
+#      then edits a program so that it stays clean but breaks the shop's staysWithin assertion: the
+#      shop's tests must run again and fail (the plugin declares the programs as their inputs);
 #   4. builds a copy with a faulty program: it must fail at that program's line and column, and the
 #      shop's JUnit test of that program must fail too.
 # Each stage prints "== stage NAME" and Gradle's output; the last line is "shop-project: all passed"
@@ -65,9 +67,27 @@ done
 
 echo "== stage again"
 run "$work/clean" check gcncCompile gcncSimulate || fail "the second build failed"
-for t in gcncCheck gcncCompile gcncSimulate; do
+for t in gcncCheck gcncCompile gcncSimulate junitPlatformTest; do
     grep -q "^:$t UP-TO-DATE" "$work/last.log" || fail "$t was not UP-TO-DATE on the second run"
 done
+
+echo "== stage edited"
+# The pin's roughing pass now goes to Z-35: still a clean program (gcncCheck passes), but behind the
+# Z-30 the shop's staysWithin assertion allows. The shop's tests must run again and fail, never stay
+# UP-TO-DATE because only a program (not a test class) changed.
+sed -i 's/^G01 Z-25\. F0\.25$/G01 Z-35. F0.25/' "$work/clean/src/main/gcode/o1201-pin.gcode"
+grep -q '^G01 Z-35\. F0\.25$' "$work/clean/src/main/gcode/o1201-pin.gcode" || fail "the pin's program was not edited"
+if run "$work/clean" check; then
+    fail "the build passed after an edit that breaks the shop's staysWithin assertion"
+fi
+grep -q "^:junitPlatformTest UP-TO-DATE" "$work/last.log" && fail "junitPlatformTest stayed UP-TO-DATE after a program changed"
+grep -q "^:gcncCheck$" "$work/last.log" || fail "gcncCheck did not run again after a program changed"
+python3 - "$work/clean/build/test-results/junit-platform" <<'PY' || fail "the pin's staysWithin test did not fail"
+import glob, sys, xml.etree.ElementTree as ET
+cases = [c for f in glob.glob(sys.argv[1] + "/*.xml") for c in ET.parse(f).getroot().iter("testcase")]
+bad = [c.get("name") for c in cases if c.find("failure") is not None]
+sys.exit(0 if bad == ["thePinIsQuickAndKeepsClearOfTheJaws()"] else 1)
+PY
 
 echo "== stage faulty"
 # Line 6 feeds before the spindle turns: E051 at 6:1.

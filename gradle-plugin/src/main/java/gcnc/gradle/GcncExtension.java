@@ -2,6 +2,8 @@ package gcnc.gradle;
 
 import gcnc.Session;
 import java.io.File;
+import java.util.ArrayList;
+import java.util.List;
 import org.gradle.api.Project;
 import org.gradle.api.file.FileCollection;
 
@@ -57,6 +59,21 @@ public class GcncExtension {
 
     Project project() {
         return project;
+    }
+
+    /** The files behind the settings: the tables folder, and the machine and control when given as paths. */
+    FileCollection settingFiles() {
+        List<Object> files = new ArrayList<>();
+        if (tables != null) {
+            files.add(project.fileTree(tables));
+        }
+        for (String given : new String[] {machine, control}) {
+            if (given != null && isPath(given)) {
+                File f = project.file(given);
+                files.add(f.isDirectory() ? project.fileTree(f) : f);
+            }
+        }
+        return project.files(files.toArray());
     }
 
     /** A machine or control given as a path is a file of the project; a name is looked up in the tables. */

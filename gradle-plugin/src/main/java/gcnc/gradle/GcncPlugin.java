@@ -1,14 +1,19 @@
 package gcnc.gradle;
 
 import org.gradle.api.Plugin;
+import java.util.concurrent.Callable;
 import org.gradle.api.Project;
+import org.gradle.api.Task;
+import org.gradle.api.tasks.PathSensitivity;
+import org.gradle.api.tasks.testing.Test;
 import org.gradle.language.base.plugins.LifecycleBasePlugin;
 
 /**
  * The plugin {@code gcnc}: the extension {@code gcnc { machine; control; tables; programs }} and
  * three tasks over it, {@code gcncCheck} (part of {@code check}), {@code gcncCompile} (DMC and
  * source maps under build/gcnc/) and {@code gcncSimulate} (drawings and setup sheets under
- * build/reports/gcnc/). Each writes a JSON and a SARIF report of its findings.
+ * build/reports/gcnc/). Each writes a JSON and a SARIF report of its findings. The shop's own test
+ * tasks get the programs and the settings' files as inputs, so an edited program runs its tests again.
  */
 public class GcncPlugin implements Plugin<Project> {
     static final String GROUP = "gcnc";
@@ -24,6 +29,33 @@ public class GcncPlugin implements Plugin<Project> {
         task(project, "gcncSimulate", SimulateTask.class, settings,
                 "Simulates every part program: toolpath drawing and setup sheet per program under build/reports/gcnc/.");
         project.getTasks().getByName(LifecycleBasePlugin.CHECK_TASK_NAME).dependsOn(check);
+        // A shop's own tests (gcnc's JUnit fixtures) read the programs, the profile and the tables at
+        // run time: Gradle only re-runs a test task when its declared inputs change, so without this an
+        // edited program that breaks an assertion would leave `gradle check` green and UP-TO-DATE.
+        // `all` also reaches test tasks made later (the JUnit Platform plugin makes junitPlatformTest
+        // after the build script is evaluated).
+        project.getTasks().all(task -> {
+            if (isTestTask(task)) {
+                seeTheShopsInputs(task, settings);
+            }
+        });
+    }
+
+    /** Gradle's {@code Test} tasks, and on Gradle 4.4 the JUnit Platform plugin's {@code junitPlatformTest} (a JavaExec). */
+    static boolean isTestTask(Task task) {
+        return task instanceof Test || JUNIT_PLATFORM_TEST.equals(task.getName());
+    }
+
+    static final String JUNIT_PLATFORM_TEST = "junitPlatformTest";
+
+    /** Declares the part programs and the files behind the settings as inputs of {@code task}, resolved when Gradle asks. */
+    static void seeTheShopsInputs(Task task, GcncExtension settings) {
+        task.getInputs().files((Callable<Object>) () -> settings.getPrograms())
+                .withPropertyName("gcncPrograms").withPathSensitivity(PathSensitivity.RELATIVE);
+        task.getInputs().files((Callable<Object>) settings::settingFiles)
+                .withPropertyName("gcncSettingFiles").withPathSensitivity(PathSensitivity.RELATIVE);
+        task.getInputs().property("gcncMachine", (Callable<Object>) settings::getMachine);
+        task.getInputs().property("gcncControl", (Callable<Object>) () -> String.valueOf(settings.getControl()));
     }
 
     private static <T extends GcncTask> T task(Project project, String name, Class<T> type, GcncExtension settings,

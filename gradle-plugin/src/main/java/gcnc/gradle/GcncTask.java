@@ -81,17 +81,7 @@ public abstract class GcncTask extends DefaultTask {
     @InputFiles
     @PathSensitive(PathSensitivity.RELATIVE)
     public FileCollection getSettingFiles() {
-        List<Object> files = new ArrayList<>();
-        if (settings.getTables() != null) {
-            files.add(getProject().fileTree(settings.getTables()));
-        }
-        for (String given : new String[] {settings.getMachine(), settings.getControl()}) {
-            if (given != null && GcncExtension.isPath(given)) {
-                File f = getProject().file(given);
-                files.add(f.isDirectory() ? getProject().fileTree(f) : f);
-            }
-        }
-        return getProject().files(files.toArray());
+        return settings.settingFiles();
     }
 
     @OutputFile
