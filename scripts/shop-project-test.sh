@@ -40,7 +40,8 @@ if [ -z "$repo" ]; then
     echo "== stage publish"
     run "$root" publishToMavenLocal || fail "gradle publishToMavenLocal"
 fi
-[ -f "$repo/gcnc/gcnc.gradle.plugin/0.1.0/gcnc.gradle.plugin-0.1.0.pom" ] || fail "no plugin marker in $repo"
+[ -f "$repo/gcnc/lathe/gcnc.lathe.gradle.plugin/0.1.0/gcnc.lathe.gradle.plugin-0.1.0.pom" ] || fail "no plugin marker gcnc.lathe in $repo"
+[ -f "$repo/gcnc/gcnc.gradle.plugin/0.1.0/gcnc.gradle.plugin-0.1.0.pom" ] || fail "no plugin marker gcnc (the alias) in $repo"
 
 mkdir "$work/clean" "$work/faulty"
 (cd "$root/samples/shop-project" && tar --exclude=build --exclude=.gradle -cf - .) | tar -xf - -C "$work/clean"
@@ -112,7 +113,16 @@ bad = [c.find("failure").get("message") or "" for c in cases if c.find("failure"
 sys.exit(0 if len(bad) == 1 and "o1299-faulty.gcode:6:1: error[E051]" in bad[0] else 1)
 PY
 grep -q "src/main/gcode/o1299-faulty.gcode:6:1: error\[E051\]" "$work/last.log" || fail "no error at o1299-faulty.gcode:6:1"
-grep -q "see the report at file://.*/build/reports/gcnc/gcncCheck.sarif" "$work/last.log" || fail "no link to the report"
+grep -q "see the report at file://.*/build/reports/gcnc/gcncCheck.html" "$work/last.log" || fail "no link to the HTML report"
+grep -q '<td>6:1</td><td class="error">error</td><td>E051</td>' "$work/faulty/build/reports/gcnc/gcncCheck.html" \
+    || fail "the HTML report does not show the error at o1299-faulty.gcode:6:1"
+grep -q '"version": "0.1.0"' "$work/faulty/build/reports/gcnc/gcncCheck.json" || fail "the JSON report does not carry gcnc's version"
+
+echo "== stage ignoreFailures"
+printf '\ngcnc { ignoreFailures = true }\n' >> "$work/faulty/build.gradle"
+run "$work/faulty" gcncCheck || fail "gcncCheck failed with ignoreFailures = true"
+grep -q "gcncCheck: 1 error in 1 program of 4; see the report at .*(ignoreFailures = true: the build goes on)" "$work/last.log" \
+    || fail "ignoreFailures did not say what it let through"
 python3 - "$work/faulty/build/reports/gcnc/gcncCheck.sarif" <<'PY' || fail "the SARIF report does not hold the error at o1299-faulty.gcode:6:1"
 import json, sys
 r = json.load(open(sys.argv[1]))["runs"][0]["results"]

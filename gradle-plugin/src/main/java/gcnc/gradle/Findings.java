@@ -96,6 +96,13 @@ final class Findings {
         }
     }
 
+    /** The HTML report a person reads (what a failure links to), findings sorted by file and place. */
+    void writeHtml(File html, String task, List<GcncTask.Program> programs) throws IOException {
+        List<Finding> sorted = new ArrayList<>(all);
+        sorted.sort(Comparator.comparing(Finding::file).thenComparing(Finding::diagnostic));
+        HtmlReport.write(html.toPath(), task, version(), programs, sorted);
+    }
+
     /** SARIF's rules from the session's errors.csv, or the built-in one if the user's has no catalogue. */
     private List<SarifRenderer.Rule> rules() {
         try {

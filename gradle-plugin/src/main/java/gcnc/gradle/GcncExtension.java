@@ -11,7 +11,8 @@ import org.gradle.api.file.FileCollection;
  * What a shop writes in {@code gcnc { }}: the machine profile (a name among the tables' machines,
  * or a path to a .machine file), a control that replaces the profile's (a name or a folder), a
  * folder with the shop's own copy of tables/ (else the tables built into gcnc), and the part
- * programs (by default every file under src/main/gcode). Paths are relative to the project.
+ * programs (by default every file under src/main/gcode), and whether errors fail the build
+ * ({@code ignoreFailures}). Paths are relative to the project.
  */
 public class GcncExtension {
     private final Project project;
@@ -19,6 +20,7 @@ public class GcncExtension {
     private String control;
     private File tables;
     private FileCollection programs;
+    private boolean ignoreFailures;
 
     public GcncExtension(Project project) {
         this.project = project;
@@ -55,6 +57,15 @@ public class GcncExtension {
 
     public void setPrograms(FileCollection programs) {
         this.programs = programs;
+    }
+
+    /** {@code true}: errors are reported but do not fail the task (Gradle's own name for it, as on {@code Test}). */
+    public boolean getIgnoreFailures() {
+        return ignoreFailures;
+    }
+
+    public void setIgnoreFailures(boolean ignoreFailures) {
+        this.ignoreFailures = ignoreFailures;
     }
 
     Project project() {

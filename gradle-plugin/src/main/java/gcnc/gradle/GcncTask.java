@@ -84,6 +84,16 @@ public abstract class GcncTask extends DefaultTask {
         return settings.settingFiles();
     }
 
+    @Input
+    public boolean getIgnoreFailures() {
+        return settings.getIgnoreFailures();
+    }
+
+    @OutputFile
+    public File getHtmlReport() {
+        return reportFile(".html");
+    }
+
     @OutputFile
     public File getJsonReport() {
         return reportFile(".json");
@@ -120,13 +130,19 @@ public abstract class GcncTask extends DefaultTask {
         try {
             finish(programs);
             findings.write(getJsonReport(), getSarifReport());
+            findings.writeHtml(getHtmlReport(), getName(), programs);
         } catch (IOException e) {
             throw new GradleException(getName() + ": cannot write the reports under " + getReportsDir() + ": " + reason(e));
         }
         if (findings.errors() > 0) {
-            throw new GradleException(String.format(Locale.ROOT, "%s: %s in %s of %s; see the report at %s",
+            String failed = String.format(Locale.ROOT, "%s: %s in %s of %s; see the report at %s",
                     getName(), plural(findings.errors(), "error"), plural(findings.filesWithErrors(), "program"),
-                    programs.size(), getSarifReport().toPath().toUri()));
+                    programs.size(), getHtmlReport().toPath().toUri());
+            if (!settings.getIgnoreFailures()) {
+                throw new GradleException(failed);
+            }
+            getLogger().warn("{} (ignoreFailures = true: the build goes on)", failed);
+            return;
         }
         getLogger().lifecycle("{}: {} checked, {}; reports in {}", getName(), plural(programs.size(), "program"),
                 findings.warnings() == 0 ? "no findings" : plural(findings.warnings(), "warning"), getReportsDir());
