@@ -18,6 +18,8 @@ final class Blocks {
     boolean tight;
     /** Blocks of an optional operation: '/' first. */
     boolean optional;
+    /** One-digit G and M codes with a leading zero: G00, M03. */
+    boolean zeros;
 
     Blocks(double unit) {
         this.unit = unit;
@@ -65,6 +67,9 @@ final class Blocks {
             if (b.length() > 0 && b.charAt(b.length() - 1) != '/' && !(tight && w.charAt(0) != '(')) {
                 b.append(' ');
             }
+            if (zeros) {
+                w = w.replaceAll("\\b([GM])(\\d)\\b", "$10$2");
+            }
             b.append(tight && w.charAt(0) != '(' ? w.replace(" ", "") : w);
         }
         line(b.toString());
@@ -73,6 +78,16 @@ final class Blocks {
     /** A line as it is (%, O number, comments, a blank line). */
     void line(String s) {
         text.append(s).append('\n');
+    }
+
+    /** Where the text ends now, for {@link #insert}. */
+    int mark() {
+        return text.length();
+    }
+
+    /** Text inserted where {@link #mark} was taken (the header's tool list, known only at the end). */
+    void insert(int mark, String s) {
+        text.insert(mark, s);
     }
 
     /** Characters with no line end. */

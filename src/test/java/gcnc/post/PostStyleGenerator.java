@@ -55,6 +55,14 @@ final class PostStyleGenerator {
         OPTIONAL_STOP,
         /** writeRetract with safePositionMethod G28 ("G28 U0." then "G28 W0."): the fanuc post's default. */
         RETRACT_G28,
+        /** writeRetract with safePositionStyle singleLineXZ: G28 U0. W0. in one block (fanuc B: G91 G28 X0. Z0., G90). */
+        RETRACT_ONE_BLOCK,
+        /** A rapid to a fixed tool-change position clear of the blank (G0 X.. Z..), as shop templates retract. */
+        RETRACT_RAPID,
+        /** M5 before the end (the posts leave it implied by M30; shops write it). */
+        SPINDLE_STOP_M5,
+        /** G00, G01, M03, M08 ... with a leading zero (shop style; the posts write G0, M3). */
+        LEADING_ZEROS,
         /** haas onRapid: a move along both axes at once written as G1 at the high feed (axes not synchronized). */
         HIGH_FEED_G1,
         /** initializeActiveFeeds: feeds in #100+ (haas) or #500+ (fanuc) variables, F#nnn (property useParametricFeed). */
@@ -171,6 +179,8 @@ final class PostStyleGenerator {
     private final PostPart part;
     private final Blocks out;
     private int tools;
+    private final StringBuilder toolList = new StringBuilder();
+    private Retract retract;
     private boolean extendedOffsets;
     private int feedVariable;
     /** The sequence numbers of the roughing contour's first and last blocks (G70 P and Q). */
@@ -240,39 +250,42 @@ final class PostStyleGenerator {
         out.numbered = want(Construct.SEQUENCE_NUMBERS);
         out.tight = want(Construct.NO_SPACES);
         boolean conveyor = want(Construct.CHIP_CONVEYOR);
-        boolean g28 = want(Construct.RETRACT_G28);
+        retract = want(Construct.RETRACT_G28) ? Retract.G28 : want(Construct.RETRACT_ONE_BLOCK) ? Retract.G28_ONE_BLOCK
+                : want(Construct.RETRACT_RAPID) ? Retract.RAPID : Retract.G53;
+        out.zeros = want(Construct.LEADING_ZEROS);
         extendedOffsets = want(Construct.WCS_EXTENDED);
         open(conveyor);
+        int toolList = out.mark();
         // section order as a CAM operation list has it: face and rough, finish, groove, thread, drill, part off
         Construct rough = want(Construct.ROUGH_UNDER_G42) ? Construct.ROUGH_UNDER_G42 : null;
-        new Sections(this).faceAndRough(rough, g28);
+        new Sections(this).faceAndRough(rough);
         Construct finish = pick(Construct.FINISH_G70, Construct.FINISH_MOVES, Construct.CORNER_CHAMFER_RADIUS);
         if (finish != null) {
-            new Sections(this).finish(finish, g28);
+            new Sections(this).finish(finish);
         }
         if (want(Construct.GROOVE_G75)) {
-            new Sections(this).groove(g28);
+            new Sections(this).groove();
         }
         Construct thread = pick(Construct.THREAD_G76, Construct.THREAD_G92, Construct.THREAD_G32);
         if (thread != null) {
-            new Sections(this).thread(thread, g28);
+            new Sections(this).thread(thread);
         }
         Construct drill = pick(Construct.DRILL_G74, Construct.DRILL_G83_HAAS, Construct.DRILL_G83_FANUC,
                 Construct.TAP_G84);
         if (drill != null) {
-            new Sections(this).drill(drill, g28);
+            new Sections(this).drill(drill);
         }
         if (want(Construct.PART_OFF)) {
-            new Sections(this).partOff(g28);
+            new Sections(this).partOff();
         }
-        close(conveyor, g28);
+        close(conveyor);
+        out.insert(toolList, this.toolList.toString());
     }
 
     /** onOpen: %, O number and comment, the tool list, feed mode and plane, units, the spindle clamp. */
     private void open(boolean conveyor) {
         out.line("%");
         out.line(String.format(Locale.ROOT, "O%04d (POST STYLE %d)", 1000 + rnd.nextInt(7000), rnd.nextInt(1000)));
-        out.line(post.haas() ? "(T101 NR=0.0313 - GENERAL TURNING)" : "(T0101 NR=0.8 - GENERAL TURNING)");
         out.block(feedMode(false), "G18");
         out.block(post.haas() ? "G20" : "G21");
         if (want(Construct.SAFE_START)) {
@@ -285,13 +298,16 @@ final class PostStyleGenerator {
     }
 
     /** onClose: coolant off, conveyor off, retract, M30, %. */
-    private void close(boolean conveyor, boolean g28) {
+    private void close(boolean conveyor) {
         out.line("");
         out.block("M9");
+        if (want(Construct.SPINDLE_STOP_M5)) {
+            out.block("M5");
+        }
         if (conveyor) {
             out.block("M33");
         }
-        retract(g28);
+        retract();
         out.block("M30");
         out.line("%");
         if (want(Construct.DOS_EOF_BYTE)) {
@@ -371,14 +387,38 @@ final class PostStyleGenerator {
         return "F#" + v;
     }
 
-    /** writeRetract: G53 G0 X0. then G53 G0 Z0. (haas default), or G28 U0. then G28 W0. */
-    void retract(boolean g28) {
-        if (g28) {
-            out.block("G28", "U0.");
-            out.block("G28", "W0.");
-        } else {
-            out.block("G53", "G0", "X0.");
-            out.block("G53", "G0", "Z0.");
+    /** How the program goes to a safe position before a tool change and at its end. */
+    private enum Retract { G53, G28, G28_ONE_BLOCK, RAPID }
+
+    /**
+     * writeRetract: G53 G0 X0. then G53 G0 Z0. (haas default), G28 U0. then G28 W0. (fanuc
+     * default), G28 U0. W0. (safePositionStyle singleLineXZ), or a shop's rapid to a fixed
+     * change position clear of the blank.
+     */
+    void retract() {
+        switch (retract) {
+            case G28 -> {
+                out.block("G28", "U0.");
+                out.block("G28", "W0.");
+            }
+            case G28_ONE_BLOCK -> out.block(post == Post.FANUC_B ? "G91 G28" : "G28", post == Post.FANUC_B ? "X0." : "U0.",
+                    post == Post.FANUC_B ? "Z0." : "W0.");
+            case RAPID -> out.block("G0", out.x(part.blank() + 50), out.z(50));
+            default -> {
+                out.block("G53", "G0", "X0.");
+                out.block("G53", "G0", "Z0.");
+            }
+        }
+        if (retract == Retract.G28_ONE_BLOCK && post == Post.FANUC_B) {
+            out.block("G90");
+        }
+    }
+
+    /** The header's tool list (onOpen writes one comment per tool): each tool once, in order of use. */
+    void toolUsed(String tool, String operation) {
+        String line = "(" + tool + " - " + operation + ")\n";
+        if (toolList.indexOf("(" + tool + " ") < 0) {
+            toolList.append(line);
         }
     }
 }

@@ -161,12 +161,12 @@ class PostStyleTest {
             String[] lines = p.text().split("\n", -1);
             int facing = -1;
             for (int i = 0; i < lines.length && facing < 0; i++) {
-                if (lines[i].matches("(N\\d+ ?)?G1 ?X-.*")) {
+                if (lines[i].matches("(N\\d+ ?)?G0?1 ?X-.*")) {
                     facing = i;
                 }
             }
             assertTrue(facing > 0, "a facing cut in\n" + p.text());
-            lines[facing] = lines[facing].replace("G1", "G0").replaceAll(" ?F\\S+", "");
+            lines[facing] = lines[facing].replaceFirst("G0?1", "G0").replaceAll(" ?F\\S+", "");
             Program bad = new Program(post, p.seed(), String.join("\n", lines), p.part(), p.used());
             List<String> found = unexpected(simulate(bad), bad.text());
             String at = (facing + 1) + ":E305";

@@ -51,18 +51,19 @@ final class Sections {
     }
 
     /** onSection: retract, comment, optional stop, tool call, spindle, feed mode, work offset, coolant, first position, then G96 when {@code css}. */
-    private void start(String comment, int tool, boolean css, int speed, double x, double z, boolean g28) {
+    private void start(String comment, int tool, boolean css, int speed, double x, double z) {
         boolean first = g.nextToolCall() == 0;
         if (!first) {
             out.block("M9");
         }
-        g.retract(g28);
+        g.retract();
         out.line("");
         out.line("(" + comment + ")");
         if (!first && g.wants(Construct.OPTIONAL_STOP)) {
             out.block("M1");
         }
         out.block(tool(tool));
+        g.toolUsed(tool(tool), comment);
         int r0 = css ? rpm(speed, x) : speed;
         if (post.haas()) {
             if (g.wants(Construct.TAILSTOCK_M22)) {
@@ -96,9 +97,9 @@ final class Sections {
     }
 
     /** Facing {@code face} deep, then G71 (haas one block with D; fanuc G71 U R and G71 P Q U W F) over the contour. */
-    void faceAndRough(Construct underComp, boolean g28) {
+    void faceAndRough(Construct underComp) {
         int v = css(150, 250);
-        start("FACE AND ROUGH", 1, true, v, outside(), CLEAR, g28);
+        start("FACE AND ROUGH", 1, true, v, outside(), CLEAR);
         boolean parametric = g.wants(Construct.PARAMETRIC_FEED);
         out.block("G0", out.z(-p.face()));
         out.block("G1", out.x(-1.6), g.feed(pickInt(rnd, 15, 25) / 100.0, parametric, "FACING"));
@@ -170,9 +171,9 @@ final class Sections {
     }
 
     /** Finishing: G70 P Q under G42, or the profile as the posts write a finishing pass (optionally with ,C/,R corners). */
-    void finish(Construct how, boolean g28) {
+    void finish(Construct how) {
         int v = css(200, 300);
-        start("FINISH", post.haas() ? 2 : 3, true, v, outside(), CLEAR, g28);
+        start("FINISH", post.haas() ? 2 : 3, true, v, outside(), CLEAR);
         if (how == Construct.FINISH_G70) {
             out.block("G0", "G42", out.x(p.blank() + CLEAR), out.z(CLEAR));
             out.block("G70", "P" + g.contourFirst(), "Q" + g.contourLast());
@@ -209,7 +210,7 @@ final class Sections {
     }
 
     /** G75 in the middle of the last zone with a 3 mm blade whose programmed point is its chuck-side corner. */
-    void groove(boolean g28) {
+    void groove() {
         out.optional = g.wants(Construct.OPTIONAL_SECTION);
         int k = p.last();
         double from = k == 0 ? p.face() + p.chamfer() : p.z()[k - 1] + p.radius();
@@ -219,7 +220,7 @@ final class Sections {
         double a = mid - width / 2;
         double bottom = p.d()[k] - 2 * pickInt(rnd, 5, 15) / 10.0;
         int v = css(100, 150);
-        start("GROOVE", post.haas() ? 9 : 5, true, v, outside(), CLEAR, g28);
+        start("GROOVE", post.haas() ? 9 : 5, true, v, outside(), CLEAR);
         out.block("G0", out.z(-(a + 3)));
         out.block("G0", out.x(p.blank() + CLEAR));
         String f = "F" + out.num(pickInt(rnd, 4, 8) / 100.0);
@@ -241,7 +242,7 @@ final class Sections {
     }
 
     /** A thread on the first zone, ending two leads and 2 mm before its shoulder, started 3 leads in front of the face. */
-    void thread(Construct how, boolean g28) {
+    void thread(Construct how) {
         out.optional = g.wants(Construct.OPTIONAL_SECTION);
         double lead = post.haas() ? 25.4 / new int[] {20, 16, 13, 12, 10}[rnd.nextInt(5)]
                 : new double[] {1.0, 1.25, 1.5, 1.75, 2.0}[rnd.nextInt(5)];
@@ -251,7 +252,7 @@ final class Sections {
         double zStart = 3 * lead + CLEAR;
         double xStart = major + 2 * CLEAR;
         int rpm = post.haas() ? pickInt(rnd, 4, 8) * 100 : pickInt(rnd, 5, 9) * 100;
-        start("THREAD", post.haas() ? 3 : 7, false, rpm, xStart, zStart, g28);
+        start("THREAD", post.haas() ? 3 : 7, false, rpm, xStart, zStart);
         boolean m24 = how != Construct.THREAD_G32 && g.wants(Construct.THREAD_M24);
         if (m24) {
             out.block("M24");
@@ -316,12 +317,12 @@ final class Sections {
     }
 
     /** A hole on the centreline: G74 (haas Z K; fanuc G74 R / G74 Z Q), haas G83, fanuc G83, or G84 tapping. */
-    void drill(Construct how, boolean g28) {
+    void drill(Construct how) {
         out.optional = g.wants(Construct.OPTIONAL_SECTION);
         double depth = p.face() + pickInt(rnd, 5, 15);
         double peck = pickInt(rnd, 2, 4);
         int rpm = pickInt(rnd, 8, 12) * 100;
-        start(how == Construct.TAP_G84 ? "TAP" : "DRILL", post.haas() ? 5 : 2, false, rpm, 0, CLEAR, g28);
+        start(how == Construct.TAP_G84 ? "TAP" : "DRILL", post.haas() ? 5 : 2, false, rpm, 0, CLEAR);
         String f = "F" + out.num(pickInt(rnd, 8, 15) / 100.0);
         switch (how) {
             case DRILL_G74 -> {
@@ -352,9 +353,9 @@ final class Sections {
     }
 
     /** Part-off 1 mm behind the last zone: the blade's programmed point is its chuck-side corner, so it stands 4 mm behind. */
-    void partOff(boolean g28) {
+    void partOff() {
         int v = css(80, 120);
-        start("PART OFF", post.haas() ? 12 : 5, true, v, outside(), CLEAR, g28);
+        start("PART OFF", post.haas() ? 12 : 5, true, v, outside(), CLEAR);
         out.block("G0", out.z(-(p.length() + 4)));
         out.block("G1", out.x(-1), "F" + out.num(pickInt(rnd, 4, 6) / 100.0));
         out.block("G0", out.x(outside()));
