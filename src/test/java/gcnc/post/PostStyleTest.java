@@ -9,7 +9,6 @@ import gcnc.Compiler;
 import gcnc.Session;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Severity;
-import gcnc.post.PostStyleGenerator.Construct;
 import gcnc.post.PostStyleGenerator.Post;
 import gcnc.post.PostStyleGenerator.Program;
 import gcnc.sim.SimOptions;

@@ -1,6 +1,5 @@
 package gcnc.post;
 
-import gcnc.post.PostStyleGenerator.Construct;
 import gcnc.post.PostStyleGenerator.Post;
 import java.util.Random;
 
