@@ -1,0 +1,128 @@
+package gcnc.check;
+
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Letter;
+import gcnc.ir.Motion;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.GFunction;
+import gcnc.machine.GRole;
+import gcnc.machine.MFunction;
+import gcnc.machine.MRole;
+import gcnc.machine.Units;
+
+/**
+ * What the control runs without a word but the programmer may not have meant, judged from the
+ * blocks the checker accepted (issue 17: an error only where the control stops; a warning where it
+ * runs the block and the result may not be what was meant). One per checker, fed in program order:
+ * <ul>
+ * <li>a cut with tool offset 00 that a T word set ({@code T0100}, {@code T0}): the geometry offset
+ *     is not applied (E646, once per such T word, at the first cut after it);</li>
+ * <li>the feed mode changed (G98/G99, G94/G95) with no F: the F in force is read in the new unit,
+ *     F0.2 mm/rev becoming 0.2 mm/min (E647, at the G word);</li>
+ * <li>a C-axis or live-tool M code ({@code axis_option} in the M table) makes a later C word a
+ *     precise "not supported yet" (E650) instead of a word without meaning.</li>
+ * </ul>
+ */
+final class Advisories {
+    private final FunctionIndex functions;
+    /** The T word that set tool offset 00 and its line, while no cut has been warned about; else null. */
+    private Word offsetZero;
+    private int offsetZeroLine;
+    /** The last C-axis or live-tool M code accepted, and its line; null before any. */
+    private Word axisOption;
+    private int axisOptionLine;
+
+    Advisories(FunctionIndex functions) {
+        this.functions = functions;
+    }
+
+    /** A copy for the other position of the block delete switch. */
+    Advisories copy() {
+        Advisories a = new Advisories(functions);
+        a.offsetZero = offsetZero;
+        a.offsetZeroLine = offsetZeroLine;
+        a.axisOption = axisOption;
+        a.axisOptionLine = axisOptionLine;
+        return a;
+    }
+
+    /**
+     * A C word in a program that has used a C-axis or live-tool M code: E650 at it (the block is
+     * rejected by the caller). False when the block has no C word or no such code came before.
+     */
+    boolean cAxis(RawBlock b, Diagnostics out) {
+        if (axisOption == null) {
+            return false;
+        }
+        for (Word w : b.words()) {
+            if (w.letter() == Letter.C) {
+                out.error(Code.E650_C_AXIS_NOT_SUPPORTED, w.span(), w, axisOption.number(), axisOptionLine);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** After an accepted block ({@code made}: what it does), with the draft that built it. */
+    void accepted(BlockDraft d, CheckedBlock made, Diagnostics out) {
+        int line = d.block.line();
+        for (Word w : d.block.words()) {
+            if (w.letter() == Letter.M && !w.number().isEmpty()) {
+                MFunction f = functions.m(w.code());
+                if (f != null && f.role() == MRole.AXIS_OPTION) {
+                    axisOption = w;
+                    axisOptionLine = line;
+                }
+            }
+        }
+        feedMode(d, out);
+        if (d.has(Letter.T)) {
+            if (d.next.toolOffset == 0) {
+                offsetZero = d.word(Letter.T);
+                offsetZeroLine = line;
+            } else {
+                offsetZero = null;
+            }
+        }
+        if (offsetZero != null && d.next.toolOffset == 0 && cuts(made)) {
+            out.report(Diagnostic.warning(Code.E646_CUT_WITHOUT_TOOL_OFFSET, d.blame(), offsetZero, offsetZeroLine));
+            offsetZero = null; // once per T word: the next cuts are the same mistake
+        }
+    }
+
+    /** E647: the feed mode changed in this block, an F is in force and the block gives none. */
+    private void feedMode(BlockDraft d, Diagnostics out) {
+        if (d.prior.feedPerRev() == d.next.feedPerRev || d.has(Letter.F) || Double.isNaN(d.next.feed)) {
+            return;
+        }
+        Word g = null;
+        for (Word w : d.block.words()) {
+            GFunction f = w.letter() == Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;
+            if (f != null && (f.role() == GRole.FEED_PER_MINUTE || f.role() == GRole.FEED_PER_REV)) {
+                g = w;
+            }
+        }
+        if (g == null) {
+            return; // the mode changed without a G of its own (a cycle's block): not the program's words
+        }
+        String length = d.next.units == Units.INCH ? "in" : "mm";
+        String before = length + (d.prior.feedPerRev() ? "/rev" : "/min");
+        String after = length + (d.next.feedPerRev ? "/rev" : "/min");
+        out.report(Diagnostic.warning(Code.E647_FEED_MODE_WITHOUT_F, g.span(), g, NumberText.plain(d.next.feed),
+                before, after));
+    }
+
+    private static boolean cuts(CheckedBlock b) {
+        for (Motion m : b.motions()) {
+            if (m instanceof Motion.Linear l ? !l.rapid() : !(m instanceof Motion.Dwell)) {
+                return true;
+            }
+        }
+        return false;
+    }
+}
