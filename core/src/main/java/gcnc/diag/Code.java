@@ -210,7 +210,7 @@ public enum Code {
     E150_CYCLE_LABEL_NOT_FOUND(150),
     /** Checker: the N of a cycle's P or Q appears twice in its contour. */
     E151_CYCLE_LABEL_TWICE(151),
-    /** Checker: the block after a G71/G72 is not the contour's first block N(P). */
+    /** Checker: no longer reported (issue 17): a block between a cycle and N(P) is warning E644. */
     E152_CONTOUR_NOT_NEXT(152),
     /** Checker: no N(Q) within the look-ahead limit after a G71/G72. */
     E153_CONTOUR_TOO_LONG(153),
@@ -292,7 +292,7 @@ public enum Code {
     E191_THREAD_NEEDS_G97(191),
     /** Checker: lead x spindle speed is faster than the Z axis's maximum feed. */
     E192_THREAD_TOO_FAST(192),
-    /** Checker: a thread's height is deeper than its lead allows (0.65 x lead). */
+    /** Checker: a thread's height is deeper than the sharp V of its lead (0.866 x lead; above 0.65 x it is warning E640). */
     E193_THREAD_TOO_DEEP(193),
     /** Checker: a G76 first depth of cut (Fanuc Q, Haas D) of zero or less. */
     E194_THREAD_FIRST_DEPTH(194),
