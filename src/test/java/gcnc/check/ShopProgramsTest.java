@@ -131,10 +131,23 @@ class ShopProgramsTest {
         // F0.2 mm/rev becomes F0.2 mm/min at the G98
         assertEquals("6:1:warning E647", found(fanuc("G01 Z0. F0.2\nG98\nZ-1.\nM30\n")));
         assertEquals("", found(fanuc("G01 Z0. F0.2\nG98 F100.\nZ-1.\nM30\n")));
+        // no cut reads the F before the end (a closing safe line) or before a new F: nothing to say
+        assertEquals("", found(fanuc("G01 Z0. F0.2\nG00 X40.\nG98\nM30\n")));
+        assertEquals("", found(fanuc("G01 Z0. F0.2\nG98\nG00 X40.\nG01 Z-1. F80.\nM30\n")));
         assertEquals("7:1:warning E647", found(fanuc("G98\nG01 Z0. F0.5\nG99\nZ-1.\nM30\n")));
         assertEquals("6:1:warning E647", found(Run.of(fanucB(),
                 FANUC_B + "G01 Z0. F0.2\nG94\nZ-1.\nM30\n", Checker.ERROR_CAP)));
         assertEquals("6:1:warning E647", found(haas("G01 Z0. F0.01\nG98\nZ-0.1\nM30\n")));
+    }
+
+    @Test
+    void aType1ContourStartingAlongZStaysAnErrorOnBothControls() {
+        // Fanuc alarm PS0065 (Z in the P block of a type I G71); the Haas manual describes X alone
+        // (type 1) and X with Z (type 2), not Z alone: gcnc keeps the error there too
+        assertEquals("6:1:error E155", found(Run.of("fanuc", ROUGH + "G71 P10 Q20 U0.4 W0.1 D2. F0.25\n"
+                + "N10 G01 Z0.\nN11 X20.\nN12 Z-15.\nN20 X48.\nM30\n")));
+        assertEquals("6:1:error E155", found(Run.of("haas", "G20 G99\nT101\nG97 S800 M03\nG00 X2.1 Z0.1\n"
+                + "G71 P10 Q20 U0.02 W0.005 D0.05 F0.01\nN10 G01 Z0.\nX1.\nZ-1.\nN20 X2.1\nM30\n")));
     }
 
     @Test

@@ -6,7 +6,6 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
-import gcnc.ir.Motion;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
@@ -23,7 +22,7 @@ import gcnc.machine.Units;
  * <li>a cut with tool offset 00 that a T word set ({@code T0100}, {@code T0}): the geometry offset
  *     is not applied (E646, once per such T word, at the first cut after it);</li>
  * <li>the feed mode changed (G98/G99, G94/G95) with no F: the F in force is read in the new unit,
- *     F0.2 mm/rev becoming 0.2 mm/min (E647, at the G word);</li>
+ *     F0.2 mm/rev becoming 0.2 mm/min (E647, at the G word, once a cut reads it before a new F);</li>
  * <li>a C-axis or live-tool M code ({@code axis_option} in the M table) makes a later C word a
  *     precise "not supported yet" (E650) instead of a word without meaning.</li>
  * </ul>
@@ -33,6 +32,8 @@ final class Advisories {
     /** The T word that set tool offset 00 and its line, while no cut has been warned about; else null. */
     private Word offsetZero;
     private int offsetZeroLine;
+    /** E647 waiting for the cut that reads the F in its new unit; null when none. */
+    private Diagnostic feedMode;
     /** The last C-axis or live-tool M code accepted, and its line; null before any. */
     private Word axisOption;
     private int axisOptionLine;
@@ -48,6 +49,7 @@ final class Advisories {
         a.offsetZeroLine = offsetZeroLine;
         a.axisOption = axisOption;
         a.axisOptionLine = axisOptionLine;
+        a.feedMode = feedMode;
         return a;
     }
 
@@ -80,7 +82,7 @@ final class Advisories {
                 }
             }
         }
-        feedMode(d, out);
+        feedMode(d, made, out);
         if (d.has(Letter.T)) {
             if (d.next.toolOffset == 0) {
                 offsetZero = d.word(Letter.T);
@@ -89,40 +91,37 @@ final class Advisories {
                 offsetZero = null;
             }
         }
-        if (offsetZero != null && d.next.toolOffset == 0 && cuts(made)) {
+        if (offsetZero != null && d.next.toolOffset == 0 && Checker.cuts(made)) {
             out.report(Diagnostic.warning(Code.E646_CUT_WITHOUT_TOOL_OFFSET, d.blame(), offsetZero, offsetZeroLine));
             offsetZero = null; // once per T word: the next cuts are the same mistake
         }
     }
 
-    /** E647: the feed mode changed in this block, an F is in force and the block gives none. */
-    private void feedMode(BlockDraft d, Diagnostics out) {
-        if (d.prior.feedPerRev() == d.next.feedPerRev || d.has(Letter.F) || Double.isNaN(d.next.feed)) {
-            return;
-        }
-        Word g = null;
-        for (Word w : d.block.words()) {
-            GFunction f = w.letter() == Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;
-            if (f != null && (f.role() == GRole.FEED_PER_MINUTE || f.role() == GRole.FEED_PER_REV)) {
-                g = w;
+    /**
+     * E647: the feed mode changed with an F in force and no new F. Reported at the G word when a cut
+     * follows before any F (a G98 on a program's closing safe line, with no cut after it, reads no F).
+     */
+    private void feedMode(BlockDraft d, CheckedBlock made, Diagnostics out) {
+        if (d.has(Letter.F)) {
+            feedMode = null;
+        } else if (d.prior.feedPerRev() != d.next.feedPerRev && !Double.isNaN(d.next.feed)) {
+            Word g = null;
+            for (Word w : d.block.words()) {
+                GFunction f = w.letter() == Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;
+                if (f != null && (f.role() == GRole.FEED_PER_MINUTE || f.role() == GRole.FEED_PER_REV)) {
+                    g = w;
+                }
+            }
+            if (g != null) { // else a cycle's own block: not the program's words
+                String length = d.next.units == Units.INCH ? "in" : "mm";
+                feedMode = Diagnostic.warning(Code.E647_FEED_MODE_WITHOUT_F, g.span(), g,
+                        NumberText.plain(d.next.feed), length + (d.prior.feedPerRev() ? "/rev" : "/min"),
+                        length + (d.next.feedPerRev ? "/rev" : "/min"));
             }
         }
-        if (g == null) {
-            return; // the mode changed without a G of its own (a cycle's block): not the program's words
+        if (feedMode != null && Checker.cuts(made)) {
+            out.report(feedMode);
+            feedMode = null;
         }
-        String length = d.next.units == Units.INCH ? "in" : "mm";
-        String before = length + (d.prior.feedPerRev() ? "/rev" : "/min");
-        String after = length + (d.next.feedPerRev ? "/rev" : "/min");
-        out.report(Diagnostic.warning(Code.E647_FEED_MODE_WITHOUT_F, g.span(), g, NumberText.plain(d.next.feed),
-                before, after));
-    }
-
-    private static boolean cuts(CheckedBlock b) {
-        for (Motion m : b.motions()) {
-            if (m instanceof Motion.Linear l ? !l.rapid() : !(m instanceof Motion.Dwell)) {
-                return true;
-            }
-        }
-        return false;
     }
 }

@@ -354,7 +354,8 @@ public final class Checker {
         }
     }
 
-    private static boolean cuts(CheckedBlock b) {
+    /** Whether the block cuts: a feed, an arc or a thread pass (not a rapid or a dwell). */
+    static boolean cuts(CheckedBlock b) {
         for (gcnc.ir.Motion m : b.motions()) {
             if (m.accept(CUTS)) {
                 return true;
