@@ -155,6 +155,8 @@ class ShopProgramsTest {
         // after G97 S800 the control reads S800 as 800 m/min
         Run r = fanuc("G50 S2000\nG96\nG01 X20. F0.2\nM30\n");
         assertEquals("6:1:warning E648", found(r));
+        // the S comes before any cut: the control ran at 800 m/min only while nothing was cut
+        assertEquals("", found(fanuc("G50 S2000\nG96\nS150\nG01 X20. F0.2\nM30\n")));
         // the Fusion Haas post's order: the clamp, G96 alone, then its S with M03: nothing to warn
         assertEquals("", found(Run.of("haas", "G20 G99\nT303\nG50 S2000\nG96\nS500 M03\nG00 X0.6 Z0.2\n"
                 + "G01 Z0. F0.01\nM30\n")));
@@ -164,6 +166,8 @@ class ShopProgramsTest {
     void cAxisAndLiveToolCodesAreNoOpsUntilACWordFollows() {
         Run r = haas("M154\nM133\nM135\nM155\nM30\n");
         assertEquals("5:1:note E649, 6:1:note E649, 7:1:note E649, 8:1:note E649", found(r));
+        // the live tool's speed is M133's own word
+        assertEquals("5:1:note E649, 6:1:note E649", found(haas("M133 P1500\nM135\nM30\n")));
         assertEquals("5:1:note E649, 6:5:error E650, 7:1:note E649", found(haas("M154\nG00 C90.\nM155\nM30\n")));
     }
 

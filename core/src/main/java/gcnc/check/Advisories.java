@@ -23,6 +23,8 @@ import gcnc.machine.Units;
  *     is not applied (E646, once per such T word, at the first cut after it);</li>
  * <li>the feed mode changed (G98/G99, G94/G95) with no F: the F in force is read in the new unit,
  *     F0.2 mm/rev becoming 0.2 mm/min (E647, at the G word, once a cut reads it before a new F);</li>
+ * <li>G96 without S after a G97 S: the S is read as the surface speed (E648, at the G96, once a cut
+ *     runs at it before the next S);</li>
  * <li>a C-axis or live-tool M code ({@code axis_option} in the M table) makes a later C word a
  *     precise "not supported yet" (E650) instead of a word without meaning.</li>
  * </ul>
@@ -34,6 +36,8 @@ final class Advisories {
     private int offsetZeroLine;
     /** E647 waiting for the cut that reads the F in its new unit; null when none. */
     private Diagnostic feedMode;
+    /** E648 waiting for the cut that runs at the S read as a surface speed; null when none. */
+    private Diagnostic surfaceSpeed;
     /** The last C-axis or live-tool M code accepted, and its line; null before any. */
     private Word axisOption;
     private int axisOptionLine;
@@ -50,6 +54,7 @@ final class Advisories {
         a.axisOption = axisOption;
         a.axisOptionLine = axisOptionLine;
         a.feedMode = feedMode;
+        a.surfaceSpeed = surfaceSpeed;
         return a;
     }
 
@@ -83,6 +88,7 @@ final class Advisories {
             }
         }
         feedMode(d, made, out);
+        surfaceSpeed(d, made, out);
         if (d.has(Letter.T)) {
             if (d.next.toolOffset == 0) {
                 offsetZero = d.word(Letter.T);
@@ -94,6 +100,23 @@ final class Advisories {
         if (offsetZero != null && d.next.toolOffset == 0 && Checker.cuts(made)) {
             out.report(Diagnostic.warning(Code.E646_CUT_WITHOUT_TOOL_OFFSET, d.blame(), offsetZero, offsetZeroLine));
             offsetZero = null; // once per T word: the next cuts are the same mistake
+        }
+    }
+
+    /**
+     * E648: a G96 without S after a G97 S reads that S as the surface speed (Eb04 sets it), at the
+     * G96 when a cut comes before the next S (Fusion's Haas post writes the S a few lines later).
+     */
+    private void surfaceSpeed(BlockDraft d, CheckedBlock made, Diagnostics out) {
+        if (d.has(Letter.S) || !d.next.css) {
+            surfaceSpeed = null;
+        } else if (d.g96 != null && !d.prior.css() && !Double.isNaN(d.prior.rpm())) {
+            surfaceSpeed = Diagnostic.warning(Code.E648_CSS_TAKES_RPM, d.g96.span(), NumberText.plain(d.prior.rpm()),
+                    d.next.units == Units.INCH ? "ft/min" : "m/min");
+        }
+        if (surfaceSpeed != null && Checker.cuts(made)) {
+            out.report(surfaceSpeed);
+            surfaceSpeed = null;
         }
     }
 

@@ -1,7 +1,6 @@
 package gcnc.check.block;
 
 import gcnc.check.BlockDraft;
-import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
@@ -10,9 +9,9 @@ import gcnc.ir.Letter;
  * Thesis end-of-block operation 4: a function has the parameters it needs. G04 needs X, U or P;
  * G28, G29, G53 and G92 an axis word (30; a bare G28 homes both axes where the control says so,
  * Haas); G50 (Fanuc B: G92) S or X/Z (31); G96 without S runs on the S in force, read as the
- * surface speed (warning E648 after a G97 S; writes next.surfaceSpeed); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
+ * surface speed (writes next.surfaceSpeed; Advisories warns, E648); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
  * raised 52 for a missing I/K, §12.10). Each is reported at the function that lacks its
- * parameters (the G04, G28, G50, G96, or the arc's G02/G03), not at the last word. Emits E030, E031, E049, E648.
+ * parameters (the G04, G28, G50, G96, or the arc's G02/G03), not at the last word. Emits E030, E031, E049.
  */
 public final class Eb04EnoughParameters implements BlockCheck {
     @Override
@@ -51,11 +50,9 @@ public final class Eb04EnoughParameters implements BlockCheck {
         if (d.g96 != null && !d.has(Letter.S) && !d.prior.css() && !Double.isNaN(d.prior.rpm())) {
             // the control keeps one S: G96 alone reads the S in force, given as r/min, as the
             // surface speed until the next S (Fusion's Haas post writes G96 and its S on separate
-            // lines). Before any S there is nothing to take: the S of a later block sets it.
-            double s = d.prior.rpm();
-            d.next.surfaceSpeed = s;
-            out.report(gcnc.diag.Diagnostic.warning(Code.E648_CSS_TAKES_RPM, d.g96.span(), NumberText.plain(s),
-                    d.units == gcnc.machine.Units.INCH ? "ft/min" : "m/min"));
+            // lines; warning E648 when a cut comes first, gcnc.check.Advisories). Before any S there
+            // is nothing to take: the S of a later block sets it.
+            d.next.surfaceSpeed = d.prior.rpm();
         }
     }
 }
