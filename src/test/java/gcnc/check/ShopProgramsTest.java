@@ -144,8 +144,9 @@ class ShopProgramsTest {
     void aType1ContourStartingAlongZStaysAnErrorOnBothControls() {
         // Fanuc alarm PS0065 (Z in the P block of a type I G71); the Haas manual describes X alone
         // (type 1) and X with Z (type 2), not Z alone: gcnc keeps the error there too
+        // and the G70 over that contour does not echo it (E166): the contour is kept, not expanded
         assertEquals("6:1:error E155", found(Run.of("fanuc", ROUGH + "G71 P10 Q20 U0.4 W0.1 D2. F0.25\n"
-                + "N10 G01 Z0.\nN11 X20.\nN12 Z-15.\nN20 X48.\nM30\n")));
+                + "N10 G01 Z0.\nN11 X20.\nN12 Z-15.\nN20 X48.\nG70 P10 Q20\nM30\n")));
         assertEquals("6:1:error E155", found(Run.of("haas", "G20 G99\nT101\nG97 S800 M03\nG00 X2.1 Z0.1\n"
                 + "G71 P10 Q20 U0.02 W0.005 D0.05 F0.01\nN10 G01 Z0.\nX1.\nZ-1.\nN20 X2.1\nM30\n")));
     }

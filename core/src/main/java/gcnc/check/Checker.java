@@ -33,6 +33,8 @@ import java.util.Set;
  *
  * <p>One root cause, one error: a prerequisite broken again by later blocks (a program that never
  * starts the spindle) is reported at its first block, with a note that counts the later ones.
+ * <p>What the control runs but may not be meant (a cut with offset 00, a feed mode without F, G96
+ * without S, C-axis codes) is judged after each accepted block by {@link Advisories} (issue 17).
  * <p>Block delete: once a '/' block appears, a second checker follows the program with the
  * switch in the other position, so both variants are checked; what only the other finds is
  * reported with a note saying so.
