@@ -7,6 +7,8 @@
 #                     (the haas profile's work zero is 150 mm from the jaws)
 #     weld_pin        1.5 in bar: its G71 roughs from X1.5 and its finish faces the shoulder up to X1.5
 #     0100.nc         none: op 2 of a 350 mm flange, a shape no bar describes (the stock checks are skipped)
+#   verdicts: cadekiely/O58214.nc is clean since issue 17 (its G70's U and D, which the control
+#     ignores, are two warnings E642, not error E161); CorpusTest pins the same verdicts
 # usage: scripts/corpus-table.sh [CORPUS]     (needs build/libs/gcnc.jar: gradle assemble)
 set -eu
 cd "$(dirname "$0")/.."

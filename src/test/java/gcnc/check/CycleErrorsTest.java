@@ -36,8 +36,10 @@ class CycleErrorsTest {
     }
 
     @Test
-    void e152TheContourDoesNotFollowTheCycle() {
-        assertEquals("5:5:E152", fanuc("G71 P10 Q20 D2. F0.25\nG00 X50.\n" + CONTOUR + "M30\n"));
+    void e644ABlockBetweenTheCycleAndItsContourIsNeverRun() {
+        // issue 17: the control searches ahead for N(P) and goes on after N(Q), so the block between
+        // is passed over: a warning where E152 was an error
+        assertEquals("6:1:E644", fanuc("G71 P10 Q20 D2. F0.25\nG00 X50.\n" + CONTOUR + "M30\n"));
     }
 
     @Test
@@ -146,7 +148,7 @@ class CycleErrorsTest {
     @Test
     void e161AWordTheCycleDoesNotTake() {
         assertEquals("5:14:E161", fanuc("G71 U2. R0.5 X3.\nM30\n"));
-        assertEquals("10:13:E161", fanuc("G71 P10 Q20 D2. F0.25\n" + CONTOUR + "G70 P10 Q20 U0.1\nM30\n"));
+        assertEquals("10:13:E161", fanuc("G71 P10 Q20 D2. F0.25\n" + CONTOUR + "G70 P10 Q20 R0.1\nM30\n"));
     }
 
     @Test

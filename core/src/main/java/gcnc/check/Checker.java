@@ -33,6 +33,8 @@ import java.util.Set;
  *
  * <p>One root cause, one error: a prerequisite broken again by later blocks (a program that never
  * starts the spindle) is reported at its first block, with a note that counts the later ones.
+ * <p>What the control runs but may not be meant (a cut with offset 00, a feed mode without F, G96
+ * without S, C-axis codes) is judged after each accepted block by {@link Advisories} (issue 17).
  * <p>Block delete: once a '/' block appears, a second checker follows the program with the
  * switch in the other position, so both variants are checked; what only the other finds is
  * reported with a note saying so.
@@ -75,6 +77,8 @@ public final class Checker {
     private boolean stopped;
     /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
     private NoseCompensation nose;
+    /** What the control runs but may not be meant: offset 00 cuts, a feed mode without F, C-axis codes. */
+    private Advisories advisories;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
@@ -110,6 +114,7 @@ public final class Checker {
         this.state = ModalState.initial(profile);
         this.cycles = new CycleExpansion(this);
         this.nose = new NoseCompensation(profile, out);
+        this.advisories = new Advisories(functions);
     }
 
     /** The modal state after the last accepted block. */
@@ -184,7 +189,7 @@ public final class Checker {
             out.error(Code.E111_MACRO_NOT_SUPPORTED_YET, b.last(), b.macro().strip());
             return List.of();
         }
-        if (b.malformed()) {
+        if (b.malformed() || advisories.cAxis(b, out)) {
             state = Salvage.keep(b, state, functions, profile);
             return List.of();
         }
@@ -246,6 +251,7 @@ public final class Checker {
             return Optional.empty();
         }
         commit(d, sequence);
+        advisories.accepted(d, result, out);
         if (!causes.isEmpty() && cuts(result)) {
             closeCauses();
         }
@@ -310,6 +316,7 @@ public final class Checker {
         Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
         c.state = state;
         c.nose = nose.copy(c.out);
+        c.advisories = advisories.copy();
         c.blocks = blocks;
         c.seenN.or(seenN);
         c.warnedM.or(warnedM);
@@ -349,7 +356,8 @@ public final class Checker {
         }
     }
 
-    private static boolean cuts(CheckedBlock b) {
+    /** Whether the block cuts: a feed, an arc or a thread pass (not a rapid or a dwell). */
+    static boolean cuts(CheckedBlock b) {
         for (gcnc.ir.Motion m : b.motions()) {
             if (m.accept(CUTS)) {
                 return true;
@@ -440,18 +448,28 @@ public final class Checker {
      */
     private void recover(RawBlock b, boolean isFirst, boolean sequence) {
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
-        if (run(d, new Diagnostics(), false) != null) {
+        Diagnostics none = new Diagnostics();
+        if (!words(d, none, false)) {
+            state = Salvage.keep(b, state, functions, profile);
+        } else if (motions.build(d, none) != null) {
             commit(d, sequence);
         } else {
-            state = Salvage.keep(b, state, functions, profile);
+            // only the move failed (travel, arc geometry): the words were sound, so the control, once
+            // the operator fixed the end point, leaves the block's motion G in force and the tool there
+            state = Salvage.moved(b, state, d, functions, profile);
         }
     }
 
     private CheckedBlock run(BlockDraft d, Diagnostics out, boolean prerequisites) {
+        return words(d, out, prerequisites) ? motions.build(d, out) : null;
+    }
+
+    /** The syntax actions and the end-of-block checks; false after an error. */
+    private boolean words(BlockDraft d, Diagnostics out, boolean prerequisites) {
         Word unsupported = d.unsupported;
         if (unsupported != null) {
             actions.action(17).apply(unsupported, d, out);
-            return null;
+            return false;
         }
         List<Word> words = d.block.words();
         for (int i = 0; i < words.size() && !d.failed(); i++) {
@@ -467,7 +485,7 @@ public final class Checker {
                 c.run(d, out);
             }
         }
-        return d.failed() ? null : motions.build(d, out);
+        return !d.failed();
     }
 
     /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */

@@ -57,21 +57,35 @@ final class CycleExpansion {
         }
     };
 
-    /** A G71/G72/G73 whose contour is being read: the blocks so far, and whether one of them broke it. */
+    /**
+     * A G71/G72/G73 whose contour is being read: the blocks so far, the blocks between the cycle and
+     * N(P) (which the control never runs, E644), whether one of them broke it, and whether the cycle
+     * block itself was rejected (its P and Q still name the contour the control would skip and a
+     * G70 would finish: it is read and kept, not expanded).
+     */
     private static final class Pending {
         final CycleCall call;
         final int line;
+        final boolean rejected;
         final List<RawBlock> blocks = new ArrayList<>();
+        final List<RawBlock> before = new ArrayList<>();
         boolean broken;
 
-        Pending(CycleCall call, int line) {
+        Pending(CycleCall call, int line, boolean rejected) {
             this.call = call;
             this.line = line;
+            this.rejected = rejected;
         }
     }
 
-    /** A contour kept for G70: its blocks and how the cycle that read it cut. */
-    private record Stored(List<RawBlock> blocks, Axes axes, int depthSign) {
+    /**
+     * A contour kept for G70: its blocks and how the cycle that read it cut; {@code axes} null when
+     * the cycle or its contour had an error (a G70 over it then does nothing rather than repeat it).
+     */
+    private record Stored(List<RawBlock> blocks, Axes axes, int depthSign, String name, int line) {
+        boolean usable() {
+            return axes != null;
+        }
     }
 
     /**
@@ -196,22 +210,64 @@ final class CycleExpansion {
                     isFirst, null).ifPresent(done::add);
         }
         if (call == null) {
+            // rejected: as after the operator fixed this block, its contour is still skipped and
+            // kept for the G70, so that neither is judged as an echo of this error
+            CycleCall labels = kind == GRole.FINISHING_CYCLE ? null : CycleCall.labels(b, g, kind);
+            if (labels != null) {
+                pending = new Pending(labels, b.line(), true);
+            }
             return done;
         }
         if (call.firstOfTwo()) {
             first(call);
         } else if (kind == GRole.FINISHING_CYCLE) {
-            Stored s = stored.get(key(call));
-            if (s == null) {
-                host.out().error(Code.E166_FINISH_WITHOUT_CONTOUR, call.g().span(), call.name(), call.label(Letter.P),
-                        call.label(Letter.Q));
-            } else {
-                done.addAll(new Finishing(host).expand(call, b.line(), s.blocks(), s.axes(), s.depthSign()));
-            }
+            finish(call, b.line(), done);
         } else {
-            pending = new Pending(call, b.line());
+            pending = new Pending(call, b.line(), false);
         }
         return done;
+    }
+
+    /**
+     * G70: the stored contour its P and Q name; else part of one (E643: the control finishes the
+     * blocks N(P)..N(Q) wherever they stand); else E166 (the control's alarm: no such blocks).
+     */
+    private void finish(CycleCall call, int line, List<CheckedBlock> done) {
+        Stored s = stored.get(key(call));
+        List<RawBlock> blocks = s == null ? null : s.blocks();
+        if (s == null) {
+            for (Stored whole : stored.values()) {
+                blocks = part(whole.blocks(), call.label(Letter.P), call.label(Letter.Q));
+                if (blocks != null) {
+                    s = whole;
+                    host.out().report(gcnc.diag.Diagnostic.warning(Code.E643_FINISH_PART_OF_CONTOUR, call.g().span(),
+                            call.name(), call.label(Letter.P), call.label(Letter.Q), sequence(whole.blocks().get(0)),
+                            sequence(whole.blocks().get(whole.blocks().size() - 1)), whole.name(), whole.line()));
+                    break;
+                }
+            }
+        }
+        if (s == null) {
+            host.out().error(Code.E166_FINISH_WITHOUT_CONTOUR, call.g().span(), call.name(), call.label(Letter.P),
+                    call.label(Letter.Q));
+        } else if (s.usable()) {
+            done.addAll(new Finishing(host).expand(call, line, blocks, s.axes(), s.depthSign()));
+        }
+    }
+
+    /** The blocks N(first)..N(last) of a contour, in order, or null when it has not both. */
+    private static List<RawBlock> part(List<RawBlock> blocks, long first, long last) {
+        int from = -1;
+        for (int i = 0; i < blocks.size(); i++) {
+            long n = sequence(blocks.get(i));
+            if (from < 0 && n == first) {
+                from = i;
+            }
+            if (from >= 0 && n == last) {
+                return blocks.subList(from, i + 1);
+            }
+        }
+        return null;
     }
 
     /**
@@ -273,14 +329,27 @@ final class CycleExpansion {
     /** The next block while a contour is read: kept aside; the cycle at its last block. */
     List<CheckedBlock> read(RawBlock b) {
         Pending p = pending;
-        p.blocks.add(b);
         long n = sequence(b);
         long first = p.call.label(Letter.P);
         long last = p.call.label(Letter.Q);
-        if (p.blocks.size() == 1 && n != first) {
-            host.out().error(Code.E152_CONTOUR_NOT_NEXT, p.call.words().get(Letter.P).span(), p.call.name(), first);
-            return replay();
+        if (p.blocks.isEmpty() && n != first) {
+            // the control searches ahead for N(P): a block before it is passed over (E644 once N(P) is found)
+            p.before.add(b);
+            if (p.before.size() >= LOOK_AHEAD) {
+                host.out().error(Code.E153_CONTOUR_TOO_LONG, p.call.words().get(Letter.P).span(), p.call.name(), first,
+                        LOOK_AHEAD);
+                return replay();
+            }
+            return List.of();
         }
+        if (p.blocks.isEmpty()) {
+            for (RawBlock skipped : p.before) {
+                Word at = skipped.words().isEmpty() ? null : skipped.words().get(0);
+                host.out().report(gcnc.diag.Diagnostic.warning(Code.E644_BLOCK_BEFORE_CONTOUR,
+                        at != null ? at.span() : skipped.last(), p.call.name(), p.line, first));
+            }
+        }
+        p.blocks.add(b);
         if (p.blocks.size() > 1 && n == first) {
             host.out().error(Code.E151_CYCLE_LABEL_TWICE, nWord(b).span(), p.call.name(), p.line, n);
             p.broken = true;
@@ -308,7 +377,8 @@ final class CycleExpansion {
 
     /** Gives up reading a contour: its blocks go back into the program's flow. */
     private List<CheckedBlock> replay() {
-        List<RawBlock> blocks = pending.blocks;
+        List<RawBlock> blocks = new ArrayList<>(pending.before);
+        blocks.addAll(pending.blocks);
         pending = null;
         List<CheckedBlock> done = new ArrayList<>();
         for (RawBlock b : blocks) {
@@ -335,6 +405,12 @@ final class CycleExpansion {
     private List<CheckedBlock> roughing(Pending p) {
         CycleCall call = p.call;
         ModalState start = host.state();
+        stored.remove(key(call));
+        Stored rejected = new Stored(List.copyOf(p.blocks), null, 0, call.name(), p.line);
+        stored.put(key(call), rejected); // until the contour is known good: a G70 over it does nothing
+        if (p.rejected) {
+            return List.of();
+        }
         List<Contour.Piece> pieces = contours.follow(call, p.line, p.blocks, start);
         if (pieces == null || p.broken) {
             return List.of();
@@ -346,8 +422,7 @@ final class CycleExpansion {
             return List.of();
         }
         Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
-        stored.remove(key(call));
-        stored.put(key(call), new Stored(List.copyOf(p.blocks), axes, signs(axes, contour)));
+        stored.put(key(call), new Stored(rejected.blocks(), axes, signs(axes, contour), call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
             return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);

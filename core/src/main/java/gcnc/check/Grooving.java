@@ -122,12 +122,14 @@ final class Grooving {
                     "the peck depth");
             return done;
         }
-        if (step <= 0) {
+        double eps = EPS_MM * Math.min(perMmPeck, perMmStep);
+        // a step of zero is an error only where the cycle steps: drilling on the centreline
+        // ({@code G74 Z-30. Q5000 P0}, as posts write it) never reads it, and the control runs it
+        if (step <= 0 && span > eps) {
             host.out().error(Code.E180_PECK_NOT_POSITIVE, words.word(stepL).span(), name, words.word(stepL),
                     "the step between cuts");
             return done;
         }
-        double eps = EPS_MM * Math.min(perMmPeck, perMmStep);
         if (peck > depth + eps) {
             host.out().error(Code.E181_PECK_DEEPER_THAN_CUT, words.word(peckL).span(), name, words.word(peckL),
                     NumberText.plain(depth / perPeck, 4) + (alongX ? " on the radius" : " along Z"));

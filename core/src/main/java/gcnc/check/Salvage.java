@@ -13,7 +13,8 @@ import gcnc.tables.ParameterLimit;
 /**
  * What a rejected block still sets: its modal words whose meaning does not depend on the rest of
  * the block (units, feed mode, F, S, CSS on/off, absolute/incremental, work offset, spindle and
- * chuck M codes), each read on its own and kept when it is well formed and in range. So one bad
+ * chuck M codes, its motion G when it has only one), each read on its own and kept when it is well
+ * formed and in range; and when only its move failed, the end point ({@link #moved}). So one bad
  * word on a safe-start line does not leave an inch program checked in millimetres, and a rejected
  * {@code G99 ... F0.2} does not make every later cut report a missing feed.
  *
@@ -33,6 +34,20 @@ final class Salvage {
                     && g(w, functions).role() == GRole.REGISTER_AND_CLAMP) {
                 clampBlock = true;
             }
+        }
+        GFunction motion = null;
+        int motions = 0;
+        for (Word w : b.words()) {
+            GFunction f = w.letter() == Letter.G ? g(w, functions) : null;
+            if (f != null && f.role().motion()) {
+                motion = f;
+                motions++;
+            }
+        }
+        if (motions == 1) {
+            // one motion G: what the block meant is not in doubt, and the control would be in that
+            // mode once the operator fixed the block (two are E016: neither is kept)
+            n.set(motion.role());
         }
         for (Word w : b.words()) {
             switch (w.letter()) {
@@ -65,11 +80,32 @@ final class Salvage {
         return n.build();
     }
 
+    /**
+     * A block whose words and checks passed but whose move could not be made (E015 travel, an arc
+     * that does not close): what {@link #keep} keeps, and its motion G and end point too, so that the
+     * next {@code X80.} is read under this block's G01, from here, as the control would read it once
+     * the operator fixed this block's end point (an axis the block took beyond the travel stays).
+     */
+    static ModalState moved(RawBlock b, ModalState prior, BlockDraft d, FunctionIndex functions,
+                            MachineProfile profile) {
+        ModalState.Next n = keep(b, prior, functions, profile).next();
+        n.motion = d.next.motion;
+        if (d.function >= 0 && d.function <= 3) {
+            // an axis beyond the travel stays where it was: the fixed end point is not known, and
+            // keeping the rejected one would make every later move report the same travel (E015)
+            gcnc.ir.Point to = d.coordinates.target(d, prior.position());
+            gcnc.ir.Point from = prior.position();
+            n.position = new gcnc.ir.Point(profile.x().inTravel(to.x()) ? to.x() : from.x(),
+                    profile.z().inTravel(to.z()) ? to.z() : from.z());
+        }
+        return n.build();
+    }
+
     private static GFunction g(Word w, FunctionIndex functions) {
         return w.number().isEmpty() ? null : functions.g(w.code());
     }
 
-    /** A modal G of a rejected block: its mode, but not its motion (the move was not made). */
+    /** A modal G of a rejected block other than its motion G (kept above when it is the only one). */
     private static void modalG(GFunction f, ModalState.Next n) {
         if (f != null && !f.role().motion()) {
             n.set(f.role());

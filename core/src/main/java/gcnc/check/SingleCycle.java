@@ -102,6 +102,14 @@ final class SingleCycle {
         }
         boolean x = has(axes, Letter.X, Letter.U);
         boolean z = has(axes, Letter.Z, Letter.W);
+        if (g != null && axes.isEmpty() && taperGiven == null) {
+            // a bare G90/G94: a safe-start line written for a mill or Fanuc system B, where G90 is
+            // absolute. The control takes the block and moves nothing (E645); gcnc does not keep the
+            // cycle in force (no end point to repeat)
+            host.out().report(gcnc.diag.Diagnostic.warning(Code.E645_CYCLE_WITHOUT_END_POINT, g.span(), label));
+            modal.end();
+            return done;
+        }
         if (g != null && (!x || !z)) {
             host.out().error(Code.E169_SINGLE_CYCLE_END_MISSING, g.span(), label);
             modal.end();

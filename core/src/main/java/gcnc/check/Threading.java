@@ -6,6 +6,7 @@ import gcnc.check.cycle.ThreadPasses;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Phrase;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
@@ -38,8 +39,13 @@ import java.util.Set;
 final class Threading {
     /** The most passes a G76 is expanded into (E167 past it). */
     static final int MAX_PASSES = 1000;
-    /** The deepest thread gcnc accepts, as a fraction of the lead (E193; docs/threading.md). */
+    /**
+     * The depth of a standard 60-degree thread, as a fraction of the lead: a deeper height is cut
+     * as written, with warning E640 (a 1/2-14 NPT pipe thread is 0.8 x its pitch; docs/threading.md).
+     */
     static final double HEIGHT_PER_LEAD = 0.65;
+    /** The sharp V (H = 0.866 P): no 60-degree thread is deeper, so a greater height is error E193. */
+    static final double SHARP_V_PER_LEAD = 0.866;
     private static final Set<Integer> FANUC_ANGLES = Set.of(0, 29, 30, 55, 60, 80);
 
     private final Checker host;
@@ -414,10 +420,14 @@ final class Threading {
         if (Double.isNaN(lead)) {
             return;
         }
-        if (!(height > 0) || height > HEIGHT_PER_LEAD * lead + 1e-9) {
-            host.out().error(Code.E193_THREAD_TOO_DEEP, hw.span(), label, hw, NumberText.plain(HEIGHT_PER_LEAD * lead, 4),
+        if (!(height > 0) || height > SHARP_V_PER_LEAD * lead + 1e-9) {
+            host.out().error(Code.E193_THREAD_TOO_DEEP, hw.span(), label, hw, NumberText.plain(SHARP_V_PER_LEAD * lead, 4),
                     NumberText.plain(lead));
             return;
+        }
+        if (height > HEIGHT_PER_LEAD * lead + 1e-9) {
+            host.out().report(Diagnostic.warning(Code.E640_THREAD_DEEPER_THAN_STANDARD, hw.span(), label, hw,
+                    NumberText.plain(HEIGHT_PER_LEAD * lead, 4), NumberText.plain(lead)));
         }
         if (!(first > 0)) {
             host.out().error(Code.E194_THREAD_FIRST_DEPTH, dw.span(), label, dw);
@@ -486,9 +496,15 @@ final class Threading {
         // +1: the start is above the thread (outside), -1 below it (a bore): the side the depth goes from
         double side = Math.signum(a.x() - root.x());
         double top = root.x() + side * height * perRadius;
-        if (side == 0 || side * (a.x() - (top + t)) < 0 || side * (a.x() - top) < 0) {
+        if (side == 0) {
             host.out().error(Code.E160_CYCLE_START_INSIDE, g.span(), label, b.line());
             return;
+        }
+        if (side * (a.x() - (top + t)) < 0 || side * (a.x() - top) < 0) {
+            // between the root and the top: the control runs it (each pass rapids out to its depth
+            // from the top), but the tool starts inside the thread's full form
+            host.out().report(Diagnostic.warning(Code.E641_THREAD_START_BELOW_TOP, g.span(), label,
+                    NumberText.plain((top - c.origin(s.next()).x()) / c.perX(u), 4)));
         }
         if (Math.abs(root.z() - a.z()) < 1) {
             host.out().error(Code.E196_THREAD_NOT_ALONG_Z, g.span(), label);

@@ -210,7 +210,7 @@ public enum Code {
     E150_CYCLE_LABEL_NOT_FOUND(150),
     /** Checker: the N of a cycle's P or Q appears twice in its contour. */
     E151_CYCLE_LABEL_TWICE(151),
-    /** Checker: the block after a G71/G72 is not the contour's first block N(P). */
+    /** Checker: no longer reported (issue 17): a block between a cycle and N(P) is warning E644. */
     E152_CONTOUR_NOT_NEXT(152),
     /** Checker: no N(Q) within the look-ahead limit after a G71/G72. */
     E153_CONTOUR_TOO_LONG(153),
@@ -292,7 +292,7 @@ public enum Code {
     E191_THREAD_NEEDS_G97(191),
     /** Checker: lead x spindle speed is faster than the Z axis's maximum feed. */
     E192_THREAD_TOO_FAST(192),
-    /** Checker: a thread's height is deeper than its lead allows (0.65 x lead). */
+    /** Checker: a thread's height is deeper than the sharp V of its lead (0.866 x lead; above 0.65 x it is warning E640). */
     E193_THREAD_TOO_DEEP(193),
     /** Checker: a G76 first depth of cut (Fanuc Q, Haas D) of zero or less. */
     E194_THREAD_FIRST_DEPTH(194),
@@ -388,7 +388,32 @@ public enum Code {
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502);
+    E502_OUTPUT_IS_DIRECTORY(502),
+
+    // 640-659: checker again: what the control runs though the result may not be what was meant
+    // (issue 17; tables/error_basis.csv says which control behaviour each rule stands for).
+    /** Checker: a thread height above a standard thread's 0.65 x lead but within the sharp V (0.866 x lead): cut as written. */
+    E640_THREAD_DEEPER_THAN_STANDARD(640),
+    /** Checker: a G76 started between the thread's root and its top (X + 2K): the control runs it. */
+    E641_THREAD_START_BELOW_TOP(641),
+    /** Checker: U, W or D in a G70: the control ignores them. */
+    E642_FINISH_WORD_IGNORED(642),
+    /** Checker: a G70 whose P and Q name part of a stored G71/G72/G73 contour: the control finishes those blocks. */
+    E643_FINISH_PART_OF_CONTOUR(643),
+    /** Checker: a block between a G71/G72/G73 and its contour's first block: the control never runs it. */
+    E644_BLOCK_BEFORE_CONTOUR(644),
+    /** Checker: G90 or G94 with no end point, where they are the turning/facing cycles (Fanuc system A, Haas). */
+    E645_CYCLE_WITHOUT_END_POINT(645),
+    /** Checker: a cut with tool offset 00 set by a T word: no geometry offset is applied. */
+    E646_CUT_WITHOUT_TOOL_OFFSET(646),
+    /** Checker: the feed mode changes (G98/G99, G94/G95) with no new F: the F in force is read in the new unit. */
+    E647_FEED_MODE_WITHOUT_F(647),
+    /** Checker: G96 without S after a G97 S: the control takes that S as the surface speed. */
+    E648_CSS_TAKES_RPM(648),
+    /** Checker (note): a C-axis or live-tool M code in a program with no C-axis motion: accepted, it drives nothing. */
+    E649_M_FOR_AXIS_NOT_USED(649),
+    /** Checker: C-axis motion (a C word after a C-axis M code) is not supported yet. */
+    E650_C_AXIS_NOT_SUPPORTED(650);
 
     private final int number;
 

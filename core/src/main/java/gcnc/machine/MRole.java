@@ -22,6 +22,11 @@ public enum MRole {
      * {@code thread.chamfer_leads} and {@code thread.chamfer_angle} (docs/threading.md).
      */
     THREAD_CHAMFER_ON(-6), THREAD_CHAMFER_OFF(-7),
+    /**
+     * A C-axis or live-tool code (Haas M154/M155, M133-M135) that a two-axis program carries without
+     * using it: the control runs it and gcnc drives nothing (note E649); a C word after one is E650.
+     */
+    AXIS_OPTION(-8),
     /** A function gcnc cannot follow yet (Haas M97, live tooling): using it is E110. */
     UNSUPPORTED(-2);
 

@@ -12,7 +12,9 @@ import gcnc.ir.Word;
  * integer within Table 6 (its meaning is settled at the end of the block: G50 clamp, G96 surface
  * speed or rpm). T{@code tt}{@code oo}: tool = all digits but the last two, offset = the last two;
  * one or two digits ({@code T1}, {@code T01}) select that tool with the offset of the same number
- * (the thesis crashed on them, §12.14). Offset 0 cancels the tool offset.
+ * (the thesis crashed on them, §12.14). Offset 0 cancels the tool offset. Tool 0 ({@code T0},
+ * {@code T00}, {@code T0001}) indexes no tool: the control runs it, the turret stays and only the
+ * offset changes (a cut with offset 00 after it is warning E646, {@code gcnc.check.Advisories}).
  * Emits E006, E007, E008, E009, E013, E046, E047. Writes next.tool, next.toolOffset.
  */
 public final class Sa04SpeedOrTool implements SyntaxAction {
@@ -43,7 +45,7 @@ public final class Sa04SpeedOrTool implements SyntaxAction {
         long tool = digits <= 2 ? n : n / 100;
         long offset = digits <= 2 ? n : n % 100;
         // the messages quote the digits as written: a long T saturates when read, its text does not
-        if (tool < 1 || tool > d.profile.tools()) {
+        if (tool < 0 || tool > d.profile.tools()) {
             d.fail(out, Code.E046_UNDEFINED_TOOL, w.span(), digits <= 2 ? text : text.substring(0, digits - 2));
             return;
         }
@@ -52,7 +54,9 @@ public final class Sa04SpeedOrTool implements SyntaxAction {
             return;
         }
         d.accept(w, tool);
-        d.next.tool = (int) tool;
+        if (tool != 0) {
+            d.next.tool = (int) tool; // tool 0 (T0, T00, T0001): the turret stays where it is
+        }
         d.next.toolOffset = (int) offset;
     }
 }

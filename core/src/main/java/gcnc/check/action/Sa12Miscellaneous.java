@@ -14,7 +14,8 @@ import gcnc.machine.MRole;
  * asks for it, the code never checked: §12.19). The chuck may not open while the spindle runs
  * (error 40, thesis §4.5; only a running spindle counts, not "never stopped"). The M goes to
  * {@code before} (moments 0, 1) or {@code after} (99) in source order (decision D2).
- * Emits E016, E040. Writes next.spindle, next.chuck, d.spindleBefore.
+ * A C-axis or live-tool code (function {@code axis_option}) is a no-op with note E649.
+ * Emits E016, E040, E649. Writes next.spindle, next.chuck, d.spindleBefore.
  */
 public final class Sa12Miscellaneous implements SyntaxAction {
     @Override
@@ -35,6 +36,10 @@ public final class Sa12Miscellaneous implements SyntaxAction {
                 && d.prior.chuck() != MRole.CHUCK_OPEN.number()) {
             d.fail(out, Code.E040_SPINDLE_RUNNING_CHUCK_OPEN, w.span());
             return;
+        }
+        if (r == MRole.AXIS_OPTION) {
+            out.report(new gcnc.diag.Diagnostic(Code.E649_M_FOR_AXIS_NOT_USED, gcnc.diag.Severity.NOTE, w.span(),
+                    java.util.List.of(Integer.toString(code))));
         }
         d.next.set(r);
         if (r.spindleGroup() && f.beforeMotion()) {

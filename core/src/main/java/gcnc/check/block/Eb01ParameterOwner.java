@@ -42,7 +42,7 @@ public final class Eb01ParameterOwner implements BlockCheck {
                 return;
             }
             d.function = d.prior.motion();
-        } else if (d.has(Letter.P)) {
+        } else if (d.has(Letter.P) && !liveToolSpeed(d)) {
             d.fail(out, Code.E032_UNASSOCIATED_PARAMETER, d.word(Letter.P).span(), Letter.P);
             return;
         }
@@ -52,6 +52,22 @@ public final class Eb01ParameterOwner implements BlockCheck {
         if (!d.failed()) {
             unused(d, out);
         }
+    }
+
+    /**
+     * A P beside a C-axis or live-tool M code (Haas {@code M133 P1500}: the live tool's r/min): the
+     * code's own word, which the control runs with it and gcnc, driving nothing for it, reads no further.
+     */
+    private static boolean liveToolSpeed(BlockDraft d) {
+        for (gcnc.ir.Word w : d.block.words()) {
+            if (w.letter() == Letter.M && !w.number().isEmpty()) {
+                gcnc.machine.MFunction f = d.functions.m(w.code());
+                if (f != null && f.role() == gcnc.machine.MRole.AXIS_OPTION) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**

@@ -8,8 +8,8 @@ import gcnc.ir.Letter;
 /**
  * Thesis end-of-block operation 4: a function has the parameters it needs. G04 needs X, U or P;
  * G28, G29, G53 and G92 an axis word (30; a bare G28 homes both axes where the control says so,
- * Haas); G50 (Fanuc B: G92) S or X/Z (31); G96 an S (31, gcnc: the surface speed
- * belongs with the mode); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
+ * Haas); G50 (Fanuc B: G92) S or X/Z (31); G96 without S runs on the S in force, read as the
+ * surface speed (writes next.surfaceSpeed; Advisories warns, E648); G02/G03 R or I/K in the block (49; the thesis reused a modal R, and
  * raised 52 for a missing I/K, §12.10). Each is reported at the function that lacks its
  * parameters (the G04, G28, G50, G96, or the arc's G02/G03), not at the last word. Emits E030, E031, E049.
  */
@@ -47,8 +47,12 @@ public final class Eb04EnoughParameters implements BlockCheck {
             default -> {
             }
         }
-        if (d.g96 != null && !d.has(Letter.S)) {
-            d.fail(out, Code.E031_S_EXPECTED, d.g96.span(), "G96");
+        if (d.g96 != null && !d.has(Letter.S) && !d.prior.css() && !Double.isNaN(d.prior.rpm())) {
+            // the control keeps one S: G96 alone reads the S in force, given as r/min, as the
+            // surface speed until the next S (Fusion's Haas post writes G96 and its S on separate
+            // lines; warning E648 when a cut comes first, gcnc.check.Advisories). Before any S there
+            // is nothing to take: the S of a later block sets it.
+            d.next.surfaceSpeed = d.prior.rpm();
         }
     }
 }

@@ -2,6 +2,7 @@ package gcnc.check.cycle;
 
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
@@ -22,7 +23,8 @@ import java.util.function.IntFunction;
  *     form; the rough allowances I and K are E164);</li>
  * <li>G73 pattern repeat: Fanuc {@code G73 U(X relief, radius) W(Z relief) R(passes)} then
  *     {@code G73 P Q U W F}; Haas {@code G73 P Q U W I(X relief) K(Z relief) D(passes) F};</li>
- * <li>{@code G70 P Q} (F and S allowed, as Haas programs write them).</li>
+ * <li>{@code G70 P Q} (F and S allowed, as Haas programs write them; U, W and D are ignored by the
+ *     control, warning E642).</li>
  * </ul>
  * Words of other functions (N, F, S, T, M, G codes of other groups) are handed on to a block of
  * their own before the cycle's moves ({@link #passOn}). U, W, D and R follow the no-point rule.
@@ -114,6 +116,26 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
         return call.fits(out) ? call : null;
     }
 
+    /**
+     * Only the P and Q of a cycle block that {@link #read} rejected, when both are whole numbers:
+     * the contour the cycle names is still skipped by the control and kept for its G70. Null otherwise.
+     */
+    public static CycleCall labels(RawBlock b, Word g, GRole kind) {
+        Map<Letter, Word> words = new EnumMap<>(Letter.class);
+        Map<Letter, Double> values = new EnumMap<>(Letter.class);
+        for (Word w : b.words()) {
+            if ((w.letter() == Letter.P || w.letter() == Letter.Q) && !words.containsKey(w.letter())) {
+                long n = w.code();
+                if (n == NumberText.NOT_INTEGER) {
+                    return null;
+                }
+                words.put(w.letter(), w);
+                values.put(w.letter(), (double) n);
+            }
+        }
+        return words.size() == 2 ? new CycleCall(kind, g, words, values, List.of()) : null;
+    }
+
     private static Double value(Word w, double noPoint, Diagnostics out) {
         if (w.letter() == Letter.P || w.letter() == Letter.Q) {
             long n = w.code();
@@ -144,6 +166,12 @@ public record CycleCall(GRole kind, Word g, Map<Letter, Word> words, Map<Letter,
             boolean ok;
             if (kind == GRole.FINISHING_CYCLE) {
                 ok = l == Letter.P || l == Letter.Q;
+                if (l == Letter.U || l == Letter.W || l == Letter.D) {
+                    // a G70 takes P and Q only, but the control runs one that carries the roughing's
+                    // allowances or depth (CAM output and shop habit): they do nothing (E642)
+                    out.report(Diagnostic.warning(Code.E642_FINISH_WORD_IGNORED, w.span(), name(), w));
+                    continue;
+                }
             } else if (firstOfTwo()) {
                 ok = l == depth || l == Letter.R || pattern && (l == Letter.U || l == Letter.W);
             } else if (pattern) {

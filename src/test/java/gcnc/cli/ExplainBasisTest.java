@@ -1,0 +1,40 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+
+/** {@code gcnc explain} says which control behaviour a rule stands for (tables/error_basis.csv, issue 17). */
+class ExplainBasisTest {
+    @Test
+    void aWarningSaysTheControlRunsTheBlockAndAnErrorThatItStops() {
+        CliTest.Run w = CliTest.gcnc("explain", "E642");
+        assertEquals(0, w.status(), w.err());
+        assertTrue(w.out().contains("  the control runs the block (the manual's rule): G70 takes P and Q"), w.out());
+        CliTest.Run e = CliTest.gcnc("explain", "E193");
+        assertTrue(e.out().contains("  the control stops (alarm) (gcnc's rule beyond the manuals): no 60-degree"), e.out());
+        CliTest.Run es = CliTest.gcnc("explain", "--lang", "es", "E650");
+        assertTrue(es.out().contains("  aún no soportado por gcnc (regla de gcnc más allá de los manuales): gcnc sigue"),
+                es.out());
+    }
+
+    @Test
+    void aCodeWithoutARowPrintsNoBasis() {
+        CliTest.Run r = CliTest.gcnc("explain", "E305");
+        assertFalse(r.out().contains("the control"), r.out());
+    }
+
+    @Test
+    void aTablesFolderWithoutTheBasisFileStillExplains() throws IOException {
+        Path dir = Files.createTempDirectory("gcnc-basis");
+        Files.copy(Path.of("tables/errors.csv"), dir.resolve("errors.csv"));
+        CliTest.Run r = CliTest.gcnc("explain", "--tables", dir.toString(), "E642");
+        assertEquals(0, r.status(), r.err());
+        assertFalse(r.out().contains("the control runs"), r.out());
+    }
+}
