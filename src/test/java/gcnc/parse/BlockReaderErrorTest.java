@@ -55,7 +55,8 @@ class BlockReaderErrorTest {
     @Test
     void strayNumberSignPointOrPunctuationIsError10() {
         for (String stray : List.of("5", ".", "+", "-", ":", ",", "*", "=", ")")) {
-            expect("N10 " + stray + " X1\n", List.of("1:5 E010 ['" + stray + "']"), List.of("1: N10 !"));
+            // after a comment: 'N10 5' would be N105, the control ignores spaces (E600)
+            expect("N10 (c) " + stray + " X1\n", List.of("1:9 E010 ['" + stray + "']"), List.of("1: N10 !"));
         }
     }
 

@@ -13,8 +13,13 @@ import java.util.List;
 record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
 
     static Parsed of(String source) {
+        return of(source, false);
+    }
+
+    /** With {@code lineComments}: as a Haas or Fanuc control reads comments (they end at their line's end). */
+    static Parsed of(String source, boolean lineComments) {
         Diagnostics diagnostics = new Diagnostics();
-        BlockReader reader = new BlockReader(new StringReader(source), diagnostics);
+        BlockReader reader = new BlockReader(new StringReader(source), diagnostics, true, false, lineComments);
         List<RawBlock> blocks = new ArrayList<>();
         try {
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
@@ -43,7 +48,7 @@ record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
             if (b.blockDelete() > 0) {
                 sb.append(" /").append(b.blockDelete());
             }
-            b.words().forEach(w -> sb.append(' ').append(w.letter()).append(w.number()));
+            b.words().forEach(w -> sb.append(' ').append(w)); // ",C1." for a comma word
             out.add(b.malformed() ? sb.append(" !").toString() : sb.toString());
         }
         return out;

@@ -1,6 +1,7 @@
 package gcnc.parse;
 
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.Letter;
@@ -43,6 +44,13 @@ public final class BlockReader implements BlockSource {
      * {@link RawBlock#macro}, for gcnc.flow to run; else it is error 111.
      */
     private final boolean macros;
+    /**
+     * Haas and Fanuc: a comment ends at the first ')' or at the end of its line; a '(' inside it is
+     * text. Else (the thesis's control) a comment may span lines and a '(' inside it is error 54.
+     */
+    private final boolean lineComments;
+    /** Where a DOS end-of-file mark (Ctrl-Z) ended a line, until a later block is warned about (E602). */
+    private Span eofMark;
     /** The previous line ended inside a comment; where that comment's '(' stands. */
     private boolean inComment;
     private Span commentStart;
@@ -57,31 +65,45 @@ public final class BlockReader implements BlockSource {
     private int blockDelete;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
-        this(in, diagnostics, true, false);
+        this(in, diagnostics, true, false, false);
     }
 
     /** A reader for a control that has Fanuc macro B when {@code macros}: its macro lines come back as {@link RawBlock#macro}. */
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros) {
-        return new BlockReader(in, diagnostics, true, macros);
+        return new BlockReader(in, diagnostics, true, macros, false);
+    }
+
+    /**
+     * A reader for a control: with Fanuc macro B when {@code macros}; with {@code lineComments},
+     * a comment ends at the end of its line at the latest and a '(' inside it is text (Haas, Fanuc).
+     */
+    public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments) {
+        return new BlockReader(in, diagnostics, true, macros, lineComments);
     }
 
     BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath) {
-        this(in, diagnostics, fastPath, false);
+        this(in, diagnostics, fastPath, false, false);
     }
 
-    private BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros) {
+    BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros, boolean lineComments) {
         this.source = new LineSource(in);
         this.diagnostics = diagnostics;
         this.fastPath = fastPath;
         this.macros = macros;
+        this.lineComments = lineComments;
     }
 
     /** The next block, or null at the end of the input. */
     @Override
     public RawBlock next() throws IOException {
         while (source.next()) {
+            endOfFileMark();
             RawBlock block = readLine();
             if (block != null) {
+                if (eofMark != null && eofMark.line() < block.line()) {
+                    diagnostics.report(Diagnostic.warning(Code.E602_TEXT_AFTER_END_OF_FILE_MARK, eofMark));
+                    eofMark = null;
+                }
                 return block;
             }
         }
@@ -90,6 +112,32 @@ public final class BlockReader implements BlockSource {
             diagnostics.error(Code.E005_COMMENT_NOT_CLOSED, commentStart);
         }
         return null;
+    }
+
+    /**
+     * A DOS end-of-file mark (Ctrl-Z, 0x1A) with nothing but more marks and blanks after it on its
+     * line: the end of the file as DOS editors and transfer programs wrote it, so the line ends
+     * there. Nothing is reported unless a block follows it (E602): a transfer program may stop at
+     * the mark. A mark with text after it on its line stays an illegal character (error 3).
+     */
+    private void endOfFileMark() {
+        char[] buf = source.chars();
+        int end = source.length();
+        int mark = -1;
+        for (int i = end - 1; i >= 0; i--) {
+            char c = buf[i];
+            if (c == '\u001A') {
+                mark = i;
+            } else if (c != ' ' && c != '\t') {
+                break;
+            }
+        }
+        if (mark >= 0) {
+            source.truncate(mark);
+            if (eofMark == null) {
+                eofMark = Span.of(source.number(), mark + 1);
+            }
+        }
     }
 
     /** Lines read so far (at the end: the number of lines in the input). */
@@ -184,7 +232,7 @@ public final class BlockReader implements BlockSource {
             int start = t.getStartIndex();
             switch (t.getType()) {
                 case GCodeLexer.SEQUENCE_WORD, GCodeLexer.INT_WORD, GCodeLexer.TAPE_PROGRAM,
-                        GCodeLexer.FEED_WORD, GCodeLexer.COORD_WORD -> word(t);
+                        GCodeLexer.FEED_WORD, GCodeLexer.COORD_WORD, GCodeLexer.COMMA_WORD -> word(t);
                 case GCodeLexer.BLOCK_DELETE -> blockDelete(t);
                 case GCodeLexer.BARE_LETTER -> bareLetter(start);
                 case GCodeLexer.TEXT -> fail(Code.E109_TEXT_OUTSIDE_COMMENT, start, excerpt(start));
@@ -195,11 +243,20 @@ public final class BlockReader implements BlockSource {
                 case GCodeLexer.ILLEGAL -> fail(Code.E003_ILLEGAL_CHARACTER, start, text(start));
                 case GCodeLexer.UNCLOSED_COMMENT -> {
                     openComment(start);
-                    inComment = true; // it runs to the end of the line
+                    if (lineComments) {
+                        // Haas, Fanuc: the end of the block ends the comment; the next lines are code
+                        if (!stream.isVirtual(start) && errorAt == null) {
+                            diagnostics.report(Diagnostic.warning(Code.E601_COMMENT_NOT_CLOSED_ON_ITS_LINE, span(start)));
+                        }
+                    } else {
+                        inComment = true; // it runs to the end of the line, and on
+                    }
                 }
                 case GCodeLexer.NESTED_COMMENT -> {
                     openComment(start);
-                    fail(Code.E054_NESTED_COMMENT, t.getStopIndex());
+                    if (!lineComments) {
+                        fail(Code.E054_NESTED_COMMENT, t.getStopIndex());
+                    } // else a '(' in a comment is text: the comment goes on to its ')'
                     return stream.offset(t.getStopIndex()) + 1;
                 }
                 default -> { } // NEWLINE, SPANNING_COMMENT: a line holds no line end
@@ -214,10 +271,55 @@ public final class BlockReader implements BlockSource {
         }
         int start = t.getStartIndex();
         int at = stream.offset(start);
-        int length = t.getStopIndex() - start + 1;
-        Letter letter = letter(source.chars()[at]);
-        words.add(new Word(letter, new String(source.chars(), at + 1, length - 1),
-                Span.of(source.number(), at + 1, stream.offset(t.getStopIndex()) + 2)));
+        int stop = stream.offset(t.getStopIndex()) + 1;
+        char[] buf = source.chars();
+        boolean comma = buf[at] == ',';
+        int l = comma ? skipBlanks(buf, at + 1) : at;
+        Letter letter = letter(buf[l]);
+        Span span = Span.of(source.number(), at + 1, stop + 1);
+        String number = number(letter, buf, at, l + 1, stop);
+        words.add(comma ? Word.comma(letter, number, span) : new Word(letter, number, span));
+    }
+
+    private static int skipBlanks(char[] buf, int i) {
+        while (buf[i] == ' ' || buf[i] == '\t') {
+            i++;
+        }
+        return i;
+    }
+
+    /**
+     * The number of a word, {@code buf[from, stop)} after its letter, without the spaces the
+     * control ignores ({@code G 01}, {@code X- 2.5}, {@code T1 01}). A space between two characters
+     * of the number itself ({@code X10 5} = X105) is warned about (E600), as it may be a lost
+     * letter, except in a T word: {@code T1 01} (tool 1, offset 01) is how shops write a tool change.
+     */
+    private String number(Letter letter, char[] buf, int word, int from, int stop) {
+        StringBuilder sb = null;
+        int split = -1;
+        for (int i = from; i < stop; i++) {
+            char c = buf[i];
+            if (c == ' ' || c == '\t') {
+                if (sb == null) {
+                    sb = new StringBuilder(stop - from).append(buf, from, i - from);
+                }
+                char before = sb.length() > 0 ? sb.charAt(sb.length() - 1) : ' ';
+                if (split < 0 && (Character.isDigit(before) || before == '.')) {
+                    split = i;
+                }
+            } else if (sb != null) {
+                sb.append(c);
+            }
+        }
+        if (sb == null) {
+            return new String(buf, from, stop - from);
+        }
+        String number = sb.toString();
+        if (split >= 0 && letter != Letter.T) {
+            diagnostics.report(Diagnostic.warning(Code.E600_SPACE_IN_NUMBER, Span.of(source.number(), split + 1),
+                    new String(buf, word, stop - word), (buf[word] == ',' ? "," : "") + letter.name() + number));
+        }
+        return number;
     }
 
     /**

@@ -95,6 +95,11 @@ final class LineSource {
         return length;
     }
 
+    /** Shortens the current line to its first {@code n} characters (n at most its length). */
+    void truncate(int n) {
+        length = Math.min(length, n);
+    }
+
     /** 1-based number of the current line; lines read so far. */
     int number() {
         return number;
