@@ -155,11 +155,11 @@ final class CornerInsertion {
         Point p1 = new Point(h.corner.x() / px, h.corner.z() / pz);
         Point p2 = new Point(end.x() / px, end.z() / pz);
         Request r = h.request;
-        if (r.square && !squareFits(r, p0, p1, p2, next)) {
-            return release(next);
-        }
         CornerGeometry.Corner c = r.round ? CornerGeometry.round(p0, p1, p2, r.size)
                 : CornerGeometry.chamfer(p0, p1, p2, r.size);
+        if (c.ok() && r.square && !squareFits(r, p0, p1, p2, next)) {
+            return release(next);
+        }
         if (!c.ok()) {
             if (c.failure() == CornerGeometry.Failure.IN_LINE) {
                 host.out().error(Code.E613_CORNER_IN_LINE, r.word.span(), r.name());
