@@ -31,11 +31,12 @@ line      : block | BLOCK_DELETE ;
 
 /**
  * The words of one line, in any order, with or without spaces between them (G01X10Z5), marked
- * for block delete by a '/' before the first word or right after a first N word (/N10, N10/).
+ * for block delete by a '/' before the first word or right after a first N word (/N10, N10/), or
+ * from the middle on by a '/' after other words (G00 X1. /M08). One '/' per line.
  */
 block     : BLOCK_DELETE word+
           | SEQUENCE_WORD BLOCK_DELETE word*
-          | word+
+          | word+ (BLOCK_DELETE word*)?
           ;
 
 word      : SEQUENCE_WORD  // N: unsigned digits
@@ -43,6 +44,7 @@ word      : SEQUENCE_WORD  // N: unsigned digits
           | TAPE_PROGRAM   // ':' and digits: Fanuc's ISO tape program number, the word O
           | FEED_WORD      // F: unsigned decimal
           | COORD_WORD     // every other letter: signed decimal
+          | COMMA_WORD     // ',C' ',R' ',A': Haas chamfer, corner rounding, angle
           ;
 
 // ---- lexer: words ----------------------------------------------------------------------------

@@ -155,7 +155,8 @@ public final class Checker {
         if (b.blockDelete() > 0) {
             if (profile.control().blockDelete() == Control.BlockDelete.NONE) {
                 blocks++;
-                out.error(Code.E010_SYNTAX, Span.of(b.line(), Math.max(1, first.column() - 1)), "'/'");
+                int at = b.deleteColumn() > 0 ? b.deleteColumn() : Math.max(1, first.column() - 1);
+                out.error(Code.E010_SYNTAX, Span.of(b.line(), at), "'/'");
                 return List.of();
             }
             if (other == null && !isOther) {
@@ -166,7 +167,12 @@ public final class Checker {
             other.check(b);
         }
         if (b.blockDelete() > 0 && skipDeleted) {
-            return List.of();
+            // with the switch on a '/' block is skipped; a '/' in the middle runs the words before it
+            RawBlock kept = b.deleteColumn() > 0 ? b.beforeDelete() : null;
+            if (kept == null) {
+                return List.of();
+            }
+            b = kept;
         }
         boolean isFirst = blocks++ == 0;
         if (state.ended()) {

@@ -63,6 +63,8 @@ public final class BlockReader implements BlockSource {
     private Object[] errorArgs;
     /** The current line's block delete level (0 = none). */
     private int blockDelete;
+    /** The column of the current line's '/' when it stands in the middle of the block, else 0. */
+    private int deleteColumn;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
         this(in, diagnostics, true, false, false);
@@ -161,6 +163,7 @@ public final class BlockReader implements BlockSource {
         }
         words.clear();
         blockDelete = 0;
+        deleteColumn = 0;
         inComment = false;
         boolean startsInComment = open;
         for (int from = 0; from >= 0; open = true) {
@@ -173,7 +176,7 @@ public final class BlockReader implements BlockSource {
             return null; // blank, comments, a lone '/'
         }
         Span last = words.isEmpty() ? errorAt : lastSpan();
-        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete, 0, null);
+        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete, 0, null, deleteColumn);
     }
 
     private Span lastSpan() {
@@ -323,21 +326,23 @@ public final class BlockReader implements BlockSource {
     }
 
     /**
-     * A block delete '/' (with its level): the first thing on the line, or right after a first
-     * word that is an N word, once per line (grammar rule {@code block}); anywhere else error 10.
+     * A block delete '/' (with its level), once per line (grammar rule {@code block}): the first
+     * thing on the line or right after a first N word, it marks the whole block; after other words
+     * it marks the rest of the block (Haas, Fanuc: with the switch on the block runs up to the '/').
+     * A second '/' is error 10.
      */
     private void blockDelete(Token t) {
         if (errorAt != null) {
             return;
         }
         int start = t.getStartIndex();
-        boolean placed = blockDelete == 0
-                && (words.isEmpty() || words.size() == 1 && words.get(0).letter() == Letter.N);
-        if (!placed) {
+        if (blockDelete != 0) {
             fail(Code.E010_SYNTAX, start, "'" + text(start) + "'");
-        } else {
-            blockDelete = t.getStopIndex() > start ? source.chars()[stream.offset(start) + 1] - '0' : 1;
+            return;
         }
+        blockDelete = t.getStopIndex() > start ? source.chars()[stream.offset(start) + 1] - '0' : 1;
+        boolean whole = words.isEmpty() || words.size() == 1 && words.get(0).letter() == Letter.N;
+        deleteColumn = whole ? 0 : stream.offset(start) + 1;
     }
 
     /**
