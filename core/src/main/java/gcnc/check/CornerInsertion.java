@@ -71,11 +71,14 @@ final class CornerInsertion {
         if (b.malformed() || b.macro() != null) {
             return host.flowOn(b, isFirst);
         }
+        if (!mayAsk(b)) {
+            return host.flowOn(b, isFirst); // nearly every block: nothing allocated, nothing run twice
+        }
         Diagnostics out = host.out();
         List<Word> rest = new ArrayList<>(b.words().size());
         Request r = request(b, rest, out);
         if (r == null) {
-            return host.flowOn(b, isFirst); // no corner words (nearly every block: nothing allocated but the list)
+            return host.flowOn(b, isFirst);
         }
         RawBlock stripped = b.called(rest, b.last(), b.depth());
         if (r.word == null) {
@@ -122,7 +125,8 @@ final class CornerInsertion {
         }
         // the next block's own corner words are not part of its move
         List<Word> rest = new ArrayList<>(b.words().size());
-        RawBlock plain = request(b, rest, new Diagnostics()) == null ? b : b.called(rest, b.last(), b.depth());
+        RawBlock plain = !mayAsk(b) || request(b, rest, new Diagnostics()) == null ? b
+                : b.called(rest, b.last(), b.depth());
         Checker.Dry dry = host.dry(plain, h.afterStill, new Diagnostics());
         if (dry == null) {
             return release(b); // its own errors are reported when it runs
@@ -215,6 +219,19 @@ final class CornerInsertion {
         }
         done.addAll(flow(next, false));
         return done;
+    }
+
+    /** Whether the block has a word that may ask for a corner on this control (a comma word; C, R, I, K). */
+    private boolean mayAsk(RawBlock b) {
+        Control.Corners form = host.profile().control().corners();
+        for (Word w : b.words()) {
+            Letter l = w.letter();
+            if (w.comma() || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)
+                    || form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -337,21 +354,64 @@ final class CornerInsertion {
 
     /** The block's one feed move (a G01), or null. */
     private static Motion.Linear feedLine(CheckedBlock c) {
-        if (c.motions().size() != 1 || !(c.motions().get(0) instanceof Motion.Linear l) || l.rapid()) {
-            return null;
-        }
-        return l;
+        return c.motions().size() == 1 ? c.motions().get(0).accept(FEED_LINE) : null;
     }
 
     /** Whether the block moves the tool (a dwell does not). */
     private static boolean moves(CheckedBlock c) {
         for (Motion m : c.motions()) {
-            if (!(m instanceof Motion.Dwell)) {
+            if (m.accept(MOVES)) {
                 return true;
             }
         }
         return false;
     }
+
+    /** A feed line itself; null for anything else. */
+    private static final Motion.Visitor<Motion.Linear> FEED_LINE = new Motion.Visitor<>() {
+        @Override
+        public Motion.Linear linear(Motion.Linear l) {
+            return l.rapid() ? null : l;
+        }
+
+        @Override
+        public Motion.Linear arc(Motion.Arc a) {
+            return null;
+        }
+
+        @Override
+        public Motion.Linear dwell(Motion.Dwell d) {
+            return null;
+        }
+
+        @Override
+        public Motion.Linear thread(Motion.Thread t) {
+            return null;
+        }
+    };
+
+    /** Whether a motion moves the tool: everything but a dwell. */
+    private static final Motion.Visitor<Boolean> MOVES = new Motion.Visitor<>() {
+        @Override
+        public Boolean linear(Motion.Linear l) {
+            return true;
+        }
+
+        @Override
+        public Boolean arc(Motion.Arc a) {
+            return true;
+        }
+
+        @Override
+        public Boolean dwell(Motion.Dwell d) {
+            return false;
+        }
+
+        @Override
+        public Boolean thread(Motion.Thread t) {
+            return true;
+        }
+    };
 
     private static Point counts(Point p, double px, double pz) {
         return new Point(p.x() * px, p.z() * pz);
