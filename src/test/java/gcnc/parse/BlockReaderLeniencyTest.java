@@ -96,6 +96,8 @@ class BlockReaderLeniencyTest {
         // the first ')' ends the comment: what follows is code again
         expect("(TOOL (3) OD FINISH)\n", true, List.of("1:11 E109 [OD FINISH)]"), List.of("1: !"));
         expect("(DIA (REF))\n", true, List.of("1:11 E010 [')']"), List.of("1: !"));
+        // a '(' inside a comment with no ')' at all: warned at the comment's own '('
+        expect("X1. (DIA (REF\nZ5.\n", true, List.of("1:5 E601 []"), List.of("1: X1.", "2: Z5."));
         // the thesis's control: error 54 at the inner '('
         expect("G00 X1. (DIA (REF) Z5.\n", false, List.of("1:14 E054 []"), List.of("1: G00 X1. !"));
     }

@@ -248,8 +248,10 @@ public final class BlockReader implements BlockSource {
                     openComment(start);
                     if (lineComments) {
                         // Haas, Fanuc: the end of the block ends the comment; the next lines are code
-                        if (!stream.isVirtual(start) && errorAt == null) {
-                            diagnostics.report(Diagnostic.warning(Code.E601_COMMENT_NOT_CLOSED_ON_ITS_LINE, span(start)));
+                        // (a virtual '(' goes on after a '(' inside the comment: its own '(' is commentStart)
+                        if (errorAt == null) {
+                            diagnostics.report(Diagnostic.warning(Code.E601_COMMENT_NOT_CLOSED_ON_ITS_LINE,
+                                    stream.isVirtual(start) ? commentStart : span(start)));
                         }
                     } else {
                         inComment = true; // it runs to the end of the line, and on
