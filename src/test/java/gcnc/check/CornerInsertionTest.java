@@ -277,6 +277,9 @@ class CornerInsertionTest {
     void aCornerInAStockRemovalContourIsNotSupportedYetE614() {
         String p = "G00 X50. Z2.\nG71 P10 Q20 U0.5 W0.1 D1. F0.2\nN10 G00 X20.\nG01 Z-10. ,C1.\nN20 X50.\nM30\n";
         assertTrue(errs(run("haas", p)).startsWith("E614@8:11"), errs(run("haas", p)));
+        // so is Haas's 90-degree I/K there
+        String k = p.replace("G01 Z-10. ,C1.", "G01 Z-10. I1.");
+        assertTrue(errs(run("haas", k)).startsWith("E614@8:11"), errs(run("haas", k)));
     }
 
     @Test

@@ -307,7 +307,7 @@ final class CornerInsertion {
     private boolean isG01(RawBlock b, List<Word> candidates) {
         List<Word> without = new ArrayList<>(b.words());
         without.removeAll(candidates);
-        if (host.readingContour() != null || host.startsCycle(b)) {
+        if (host.startsCycle(b)) {
             return false;
         }
         Checker.Dry dry = host.dry(b.called(without, b.last(), b.depth()), held == null ? host.state()
