@@ -292,7 +292,7 @@ final class CornerInsertion {
         }
         boolean round = found.letter() == Letter.R;
         boolean square = !found.comma();
-        return new Request(found, round, size(found, b), square);
+        return new Request(found, round, size(found), square);
     }
 
     private static Word report(Diagnostics out, Code code, Word w, Object... more) {
@@ -316,7 +316,7 @@ final class CornerInsertion {
     }
 
     /** The size in program units, a number without a decimal point read as the control reads X. */
-    private double size(Word w, RawBlock b) {
+    private double size(Word w) {
         double v = NumberText.decimal(w.number());
         if (!NumberText.hasPoint(w.number()) && !host.profile().control().noPointLiteral()) {
             Units u = held == null ? host.state().units() : held.after.units();
