@@ -179,10 +179,10 @@ class CornerInsertionTest {
 
     @Test
     void anIncrementalNextMoveStillEndsWhereItIsProgrammed() {
-        CycleExpansionTest.Expanded e = run("fanuc-a", "G01 Z0. F0.1\nX30. C1.\nW-10.\nU10.\nM30\n");
+        CycleExpansionTest.Expanded e = run("fanuc-a", "G01 Z0. F0.1\nX30. C-1.\nW-10.\nU10.\nM30\n");
         assertEquals("", errs(e));
         assertEquals(List.of("7 G01 X30.0000 Z-10.0000", "8 G01 X40.0000 Z-10.0000"), moves(e, 7));
-        CycleExpansionTest.Expanded b = run("fanuc-b", "G01 Z0. F0.1\nX30. C1.\nG91 Z-10.\nX10.\nM30\n");
+        CycleExpansionTest.Expanded b = run("fanuc-b", "G01 Z0. F0.1\nX30. C-1.\nG91 Z-10.\nX10.\nM30\n");
         assertEquals("", errs(b));
         assertEquals(List.of("7 G01 X30.0000 Z-10.0000", "8 G01 X40.0000 Z-10.0000"), moves(b, 7));
     }
@@ -266,6 +266,15 @@ class CornerInsertionTest {
         assertEquals("", errs(run("haas", "G01 Z0. F0.1\nX30. Z-5. ,C1.\nZ-10.\nM30\n")));
         // I after a move along X (it belongs after a move along Z)
         assertEquals("E612@6:6", errs(run("fanuc-a", "G01 Z0. F0.1\nX30. I1.\nZ-10.\nM30\n")));
+    }
+
+    @Test
+    void aFanucCornerWhoseSignPointsAwayFromTheNextMoveIsE615() {
+        assertEquals("E615@6:6", errs(run("fanuc-a", "G01 Z0. F0.1\nX30. C1.\nZ-10.\nM30\n")));
+        assertEquals("E615@6:6", errs(run("fanuc-b", "G01 Z0. F0.1\nX30. R-1.\nZ10.\nM30\n")));
+        assertEquals("", errs(run("fanuc-a", "G01 Z0. F0.1\nX30. C-1.\nZ-10.\nM30\n")));
+        // Haas reads only the size of I and K (its manual: they stand where ,C does)
+        assertEquals("", errs(run("haas", "G01 Z0. F0.1\nX30. K1.\nZ-10.\nM30\n")));
     }
 
     @Test

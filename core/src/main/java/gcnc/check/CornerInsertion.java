@@ -206,6 +206,14 @@ final class CornerInsertion {
             host.out().error(Code.E612_CORNER_NOT_SQUARE, r.word.span(), r.name(), next.line());
             return false;
         }
+        // Fanuc: the sign says which way the next move goes (C-1. into a -Z move); a corner the
+        // other way is not a path gcnc can follow, and not what the program meant
+        boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
+        double along = alongZ ? p2.x() - p1.x() : p2.z() - p1.z();
+        if (letters && Math.signum(along) != Math.signum(signed(r.word))) {
+            host.out().error(Code.E615_CORNER_SIGN, r.word.span(), r.name(), next.line());
+            return false;
+        }
         return true;
     }
 
@@ -313,6 +321,11 @@ final class CornerInsertion {
         Checker.Dry dry = host.dry(b.called(without, b.last(), b.depth()), held == null ? host.state()
                 : held.afterStill, new Diagnostics());
         return dry != null && feedLine(dry.block()) != null;
+    }
+
+    /** The word's value with its sign (+1 when it has none). */
+    private static double signed(Word w) {
+        return w.number().startsWith("-") ? -1 : 1;
     }
 
     /** The size in program units, a number without a decimal point read as the control reads X. */

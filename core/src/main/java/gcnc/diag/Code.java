@@ -412,6 +412,8 @@ public enum Code {
     E613_CORNER_IN_LINE(613),
     /** Checker: a chamfer or corner radius in a G71/G72/G73 contour (not supported yet). */
     E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET(614),
+    /** Checker (Fanuc): the sign of a 90-degree chamfer or corner R points away from the next move. */
+    E615_CORNER_SIGN(615),
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
