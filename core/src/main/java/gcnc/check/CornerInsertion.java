@@ -1,5 +1,6 @@
 package gcnc.check;
 
+import gcnc.check.CornerWords.Request;
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.geom.CornerGeometry;
@@ -29,19 +30,12 @@ import java.util.List;
  * <p>At most {@value #STILL_LIMIT} blocks without a move may stand between the two moves (Haas
  * names a G04; Fanuc takes none, PS0051); past that, at the end of the program, or when the next
  * block does not move along a G01, the corner is an error and the block runs unchamfered, so the
- * rest of the program is still checked. The corner words are taken out of every block before
- * anything else reads it, so no other check sees them.
+ * rest of the program is still checked. The corner words ({@link CornerWords}) are taken out of
+ * every block before anything else reads it, so no other check sees them.
  */
 final class CornerInsertion {
     /** Blocks without a move held between a corner block and its next move (as NoseCompensation's). */
     static final int STILL_LIMIT = NoseCompensation.STILL_LIMIT;
-
-    /** What the block asks for: the word, chamfer or round, its size (program units), a 90-degree form. */
-    private record Request(Word word, boolean round, double size, boolean square) {
-        String name() {
-            return word.toString();
-        }
-    }
 
     /** A corner block waiting for its next move, with the blocks without a move read since. */
     private record Held(RawBlock block, Request request, boolean isFirst, Point from, Point corner,
@@ -49,10 +43,12 @@ final class CornerInsertion {
     }
 
     private final Checker host;
+    private final CornerWords words;
     private Held held;
 
     CornerInsertion(Checker host) {
         this.host = host;
+        this.words = new CornerWords(host);
     }
 
     /** The same insertion for the other position of the block delete switch (Checker.fork). */
@@ -71,25 +67,25 @@ final class CornerInsertion {
         if (b.malformed() || b.macro() != null) {
             return host.flowOn(b, isFirst);
         }
-        if (!mayAsk(b)) {
+        if (!words.mayAsk(b)) {
             return host.flowOn(b, isFirst); // nearly every block: nothing allocated, nothing run twice
         }
         Diagnostics out = host.out();
         List<Word> rest = new ArrayList<>(b.words().size());
-        Request r = request(b, rest, out);
+        Request r = words.read(b, host.state(), rest, out);
         if (r == null) {
             return host.flowOn(b, isFirst);
         }
         RawBlock stripped = b.called(rest, b.last(), b.depth());
-        if (r.word == null) {
+        if (r.word() == null) {
             return host.flowOn(stripped, isFirst); // an error was reported; the block runs without it
         }
         if (host.readingContour() != null) {
-            out.error(Code.E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET, r.word.span(), r.name(), host.readingContour());
+            out.error(Code.E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET, r.word().span(), r.name(), host.readingContour());
             return host.flowOn(stripped, isFirst);
         }
         if (host.startsCycle(stripped)) {
-            out.error(Code.E607_CORNER_NOT_ON_G01, r.word.span(), r.name());
+            out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return host.flowOn(stripped, isFirst);
         }
         Checker.Dry dry = host.dry(stripped, host.state(), new Diagnostics());
@@ -98,7 +94,7 @@ final class CornerInsertion {
         }
         Motion.Linear line = feedLine(dry.block());
         if (line == null) {
-            out.error(Code.E607_CORNER_NOT_ON_G01, r.word.span(), r.name());
+            out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return host.flowOn(stripped, isFirst);
         }
         held = new Held(stripped, r, isFirst, line.from(), line.to(), dry.next(), new ArrayList<>(), dry.next());
@@ -108,7 +104,7 @@ final class CornerInsertion {
     /** The program ended with a corner block held (it has no M30 either): E609. */
     void finish(int lastLine) {
         if (held != null) {
-            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word.span(), held.request.name(), lastLine);
+            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word().span(), held.request.name(), lastLine);
             held = null;
         }
     }
@@ -119,13 +115,13 @@ final class CornerInsertion {
         if (b.malformed() || b.macro() != null || host.startsCycle(b)) {
             // a block gcnc cannot follow (reported on its own) or a cycle: no G01 to make the corner with
             if (!b.malformed() && b.macro() == null) {
-                host.out().error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word.span(), h.request.name(), b.line());
+                host.out().error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word().span(), h.request.name(), b.line());
             }
             return release(b);
         }
         // the next block's own corner words are not part of its move
         List<Word> rest = new ArrayList<>(b.words().size());
-        RawBlock plain = !mayAsk(b) || request(b, rest, new Diagnostics()) == null ? b
+        RawBlock plain = !words.mayAsk(b) || words.read(b, h.afterStill, rest, new Diagnostics()) == null ? b
                 : b.called(rest, b.last(), b.depth());
         Checker.Dry dry = host.dry(plain, h.afterStill, new Diagnostics());
         if (dry == null) {
@@ -135,7 +131,7 @@ final class CornerInsertion {
             boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
             if (dry.next().ended() || letters || h.still.size() >= STILL_LIMIT) {
                 // the end of the program; Fanuc: the very next block must move (PS0051); Haas: bounded
-                host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, h.request.word.span(), h.request.name(), b.line());
+                host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, h.request.word().span(), h.request.name(), b.line());
                 return release(b);
             }
             h.still.add(b);
@@ -144,7 +140,7 @@ final class CornerInsertion {
         }
         Motion.Linear line = feedLine(dry.block());
         if (line == null) {
-            host.out().error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word.span(), h.request.name(), b.line());
+            host.out().error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word().span(), h.request.name(), b.line());
             return release(b);
         }
         return corner(h, b, line.to(), dry.next());
@@ -159,23 +155,23 @@ final class CornerInsertion {
         Point p1 = new Point(h.corner.x() / px, h.corner.z() / pz);
         Point p2 = new Point(end.x() / px, end.z() / pz);
         Request r = h.request;
-        CornerGeometry.Corner c = r.round ? CornerGeometry.round(p0, p1, p2, r.size)
-                : CornerGeometry.chamfer(p0, p1, p2, r.size);
-        if (c.ok() && r.square && !squareFits(r, p0, p1, p2, next)) {
+        CornerGeometry.Corner c = r.round() ? CornerGeometry.round(p0, p1, p2, r.size())
+                : CornerGeometry.chamfer(p0, p1, p2, r.size());
+        if (c.ok() && r.square() && !squareFits(r, p0, p1, p2, next)) {
             return release(next);
         }
         if (!c.ok()) {
             if (c.failure() == CornerGeometry.Failure.IN_LINE) {
-                host.out().error(Code.E613_CORNER_IN_LINE, r.word.span(), r.name());
+                host.out().error(Code.E613_CORNER_IN_LINE, r.word().span(), r.name());
             } else {
-                host.out().error(Code.E611_CORNER_TOO_LARGE, r.word.span(), r.name(), length(c.taken(), u),
+                host.out().error(Code.E611_CORNER_TOO_LARGE, r.word().span(), r.name(), length(c.taken(), u),
                         length(c.length(), u), c.failure() == CornerGeometry.Failure.FIRST_TOO_SHORT
                                 ? h.block.line() : next.line());
             }
             return release(next);
         }
         held = null;
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, h.after), h.block.line(), r.word.span());
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, h.after), h.block.line(), r.word().span());
         Point start = counts(c.start(), px, pz);
         Point stop = counts(c.end(), px, pz);
         List<CheckedBlock> done = new ArrayList<>();
@@ -200,18 +196,18 @@ final class CornerInsertion {
 
     /** The 90-degree forms: the moves along the two axes, and I for a first move along Z, K along X. */
     private boolean squareFits(Request r, Point p0, Point p1, Point p2, RawBlock next) {
-        Letter l = r.word.letter();
+        Letter l = r.word().letter();
         boolean alongZ = CornerGeometry.firstAlongZ(p0, p1);
         if (!CornerGeometry.square(p0, p1, p2) || l == Letter.I && !alongZ || l == Letter.K && alongZ) {
-            host.out().error(Code.E612_CORNER_NOT_SQUARE, r.word.span(), r.name(), next.line());
+            host.out().error(Code.E612_CORNER_NOT_SQUARE, r.word().span(), r.name(), next.line());
             return false;
         }
         // Fanuc: the sign says which way the next move goes (C-1. into a -Z move); a corner the
         // other way is not a path gcnc can follow, and not what the program meant
         boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
         double along = alongZ ? p2.x() - p1.x() : p2.z() - p1.z();
-        if (letters && Math.signum(along) != Math.signum(signed(r.word))) {
-            host.out().error(Code.E615_CORNER_SIGN, r.word.span(), r.name(), next.line());
+        if (letters && Math.signum(along) != r.sign()) {
+            host.out().error(Code.E615_CORNER_SIGN, r.word().span(), r.name(), next.line());
             return false;
         }
         return true;
@@ -227,115 +223,6 @@ final class CornerInsertion {
         }
         done.addAll(flow(next, false));
         return done;
-    }
-
-    /** Whether the block has a word that may ask for a corner on this control (a comma word; C, R, I, K). */
-    private boolean mayAsk(RawBlock b) {
-        Control.Corners form = host.profile().control().corners();
-        for (Word w : b.words()) {
-            Letter l = w.letter();
-            if (w.comma() || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)
-                    || form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * The corner request of a block, its other words put in {@code rest}; null when it has none.
-     * A request with a null word means an error was reported (the block runs without the word).
-     */
-    private Request request(RawBlock b, List<Word> rest, Diagnostics out) {
-        Control.Corners form = host.profile().control().corners();
-        Word found = null;
-        Word second = null;
-        List<Word> squareCandidates = new ArrayList<>(2);
-        Word reported = null;
-        for (Word w : b.words()) {
-            if (w.comma()) {
-                if (w.letter() == Letter.A) {
-                    reported = reported != null ? reported : report(out, Code.E606_ANGLE_NOT_SUPPORTED_YET, w);
-                } else if (form == Control.Corners.NONE) {
-                    reported = reported != null ? reported : report(out, Code.E604_NO_CORNER_FUNCTION, w,
-                            host.profile().control().name());
-                } else if (form == Control.Corners.LETTERS) {
-                    reported = reported != null ? reported : report(out, Code.E605_DIRECT_DRAWING_NOT_SUPPORTED_YET,
-                            w, host.profile().control().name(), Character.toString(w.letter().name().charAt(0)));
-                } else if (found == null) {
-                    found = w;
-                } else if (second == null) {
-                    second = w;
-                }
-                continue;
-            }
-            boolean letterForm = form == Control.Corners.LETTERS
-                    && (w.letter() == Letter.C || w.letter() == Letter.R);
-            boolean squareForm = form != Control.Corners.NONE && (w.letter() == Letter.I || w.letter() == Letter.K);
-            if (letterForm || squareForm) {
-                squareCandidates.add(w);
-            }
-            rest.add(w);
-        }
-        if (reported != null) {
-            return new Request(null, false, 0, false);
-        }
-        if (!squareCandidates.isEmpty() && isG01(b, squareCandidates)) {
-            // C, R (Fanuc) and I, K are chamfer words only on a G01; on G02/G03 they are the arc's
-            rest.removeAll(squareCandidates);
-            for (Word w : squareCandidates) {
-                if (found == null) {
-                    found = w;
-                } else if (second == null) {
-                    second = w;
-                }
-            }
-        }
-        if (found == null) {
-            return null;
-        }
-        if (second != null) {
-            out.error(Code.E608_TWO_CORNERS, second.span(), found, second);
-            return new Request(null, false, 0, false);
-        }
-        boolean round = found.letter() == Letter.R;
-        boolean square = !found.comma();
-        return new Request(found, round, size(found), square);
-    }
-
-    private static Word report(Diagnostics out, Code code, Word w, Object... more) {
-        Object[] args = new Object[more.length + 1];
-        args[0] = w;
-        System.arraycopy(more, 0, args, 1, more.length);
-        out.error(code, w.span(), args);
-        return w;
-    }
-
-    /** Whether the block without {@code candidates} would be a G01 move (dry run, nothing reported). */
-    private boolean isG01(RawBlock b, List<Word> candidates) {
-        List<Word> without = new ArrayList<>(b.words());
-        without.removeAll(candidates);
-        if (host.startsCycle(b)) {
-            return false;
-        }
-        Checker.Dry dry = host.dry(b.called(without, b.last(), b.depth()), held == null ? host.state()
-                : held.afterStill, new Diagnostics());
-        return dry != null && feedLine(dry.block()) != null;
-    }
-
-    /** The word's value with its sign (+1 when it has none). */
-    private static double signed(Word w) {
-        return w.number().startsWith("-") ? -1 : 1;
-    }
-
-    /** The size in program units, a number without a decimal point read as the control reads X. */
-    private double size(Word w) {
-        double v = NumberText.decimal(w.number());
-        if (!NumberText.hasPoint(w.number()) && !host.profile().control().noPointLiteral()) {
-            Units u = held == null ? host.state().units() : held.after.units();
-            v *= u == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
-        }
-        return Math.abs(v);
     }
 
     /** {@code b} with its X, Z, U and W replaced by a move from {@code from} to {@code to}. */
@@ -367,7 +254,7 @@ final class CornerInsertion {
 
     /** The block's one feed move (a G01), or null. */
     private static Motion.Linear feedLine(CheckedBlock c) {
-        return c.motions().size() == 1 ? c.motions().get(0).accept(FEED_LINE) : null;
+        return CornerWords.feedLine(c.motions());
     }
 
     /** Whether the block moves the tool (a dwell does not). */
@@ -379,29 +266,6 @@ final class CornerInsertion {
         }
         return false;
     }
-
-    /** A feed line itself; null for anything else. */
-    private static final Motion.Visitor<Motion.Linear> FEED_LINE = new Motion.Visitor<>() {
-        @Override
-        public Motion.Linear linear(Motion.Linear l) {
-            return l.rapid() ? null : l;
-        }
-
-        @Override
-        public Motion.Linear arc(Motion.Arc a) {
-            return null;
-        }
-
-        @Override
-        public Motion.Linear dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Motion.Linear thread(Motion.Thread t) {
-            return null;
-        }
-    };
 
     /** Whether a motion moves the tool: everything but a dwell. */
     private static final Motion.Visitor<Boolean> MOVES = new Motion.Visitor<>() {

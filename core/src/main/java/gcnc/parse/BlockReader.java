@@ -49,7 +49,10 @@ public final class BlockReader implements BlockSource {
      * text. Else (the thesis's control) a comment may span lines and a '(' inside it is error 54.
      */
     private final boolean lineComments;
-    /** Where a DOS end-of-file mark (Ctrl-Z) ended a line, until a later block is warned about (E602). */
+    /**
+     * Where a DOS end-of-file mark (Ctrl-Z) ended a line ({@link LineSource#cutEndOfFileMark}),
+     * until a block on a later line is warned about (E602): a transfer program may stop at the mark.
+     */
     private Span eofMark;
     /** The previous line ended inside a comment; where that comment's '(' stands. */
     private boolean inComment;
@@ -99,7 +102,10 @@ public final class BlockReader implements BlockSource {
     @Override
     public RawBlock next() throws IOException {
         while (source.next()) {
-            endOfFileMark();
+            int mark = source.cutEndOfFileMark();
+            if (mark >= 0 && eofMark == null) {
+                eofMark = Span.of(source.number(), mark + 1);
+            }
             RawBlock block = readLine();
             if (block != null) {
                 if (eofMark != null && eofMark.line() < block.line()) {
@@ -114,32 +120,6 @@ public final class BlockReader implements BlockSource {
             diagnostics.error(Code.E005_COMMENT_NOT_CLOSED, commentStart);
         }
         return null;
-    }
-
-    /**
-     * A DOS end-of-file mark (Ctrl-Z, 0x1A) with nothing but more marks and blanks after it on its
-     * line: the end of the file as DOS editors and transfer programs wrote it, so the line ends
-     * there. Nothing is reported unless a block follows it (E602): a transfer program may stop at
-     * the mark. A mark with text after it on its line stays an illegal character (error 3).
-     */
-    private void endOfFileMark() {
-        char[] buf = source.chars();
-        int end = source.length();
-        int mark = -1;
-        for (int i = end - 1; i >= 0; i--) {
-            char c = buf[i];
-            if (c == '\u001A') {
-                mark = i;
-            } else if (c != ' ' && c != '\t') {
-                break;
-            }
-        }
-        if (mark >= 0) {
-            source.truncate(mark);
-            if (eofMark == null) {
-                eofMark = Span.of(source.number(), mark + 1);
-            }
-        }
     }
 
     /** Lines read so far (at the end: the number of lines in the input). */
