@@ -31,11 +31,12 @@ line      : block | BLOCK_DELETE ;
 
 /**
  * The words of one line, in any order, with or without spaces between them (G01X10Z5), marked
- * for block delete by a '/' before the first word or right after a first N word (/N10, N10/).
+ * for block delete by a '/' before the first word or right after a first N word (/N10, N10/), or
+ * from the middle on by a '/' after other words (G00 X1. /M08). One '/' per line.
  */
 block     : BLOCK_DELETE word+
           | SEQUENCE_WORD BLOCK_DELETE word*
-          | word+
+          | word+ (BLOCK_DELETE word*)?
           ;
 
 word      : SEQUENCE_WORD  // N: unsigned digits
@@ -43,15 +44,21 @@ word      : SEQUENCE_WORD  // N: unsigned digits
           | TAPE_PROGRAM   // ':' and digits: Fanuc's ISO tape program number, the word O
           | FEED_WORD      // F: unsigned decimal
           | COORD_WORD     // every other letter: signed decimal
+          | COMMA_WORD     // ',C' ',R' ',A': Haas chamfer, corner rounding, angle
           ;
 
 // ---- lexer: words ----------------------------------------------------------------------------
 
-SEQUENCE_WORD : [Nn] DIGIT+ ;
-INT_WORD      : [GgMmOoSsTt] DIGIT+ ;
-TAPE_PROGRAM  : ':' DIGIT+ ;
-FEED_WORD     : [Ff] UNSIGNED ;
-COORD_WORD    : [A-EH-LP-RU-Za-eh-lp-ru-z] [+-]? UNSIGNED ;
+// Haas and Fanuc controls ignore spaces, also inside a word: 'G 01', 'F 0.25', 'X- 2.5' and
+// 'T1 01' are G01, F0.25, X-2.5 and T101. A word's text may hold spaces and tabs (SP) after its
+// letter and sign and between the characters of its number; BlockReader takes them out.
+SEQUENCE_WORD : [Nn] SP* DIGITS ;
+INT_WORD      : [GgMmOoSsTt] SP* DIGITS ;
+TAPE_PROGRAM  : ':' DIGITS ;
+FEED_WORD     : [Ff] SP* UNSIGNED ;
+COORD_WORD    : [A-EH-LP-RU-Za-eh-lp-ru-z] SP* ([+-] SP*)? UNSIGNED ;
+/** Haas ',C' ',R' (G01 chamfer and corner rounding) and ',A' (an angle): a comma before the letter. */
+COMMA_WORD    : ',' SP* [ACRacr] SP* ([+-] SP*)? UNSIGNED ;
 
 /** Block delete, with its optional skip level 1-9 (a bare '/' is level 1). */
 BLOCK_DELETE  : '/' [1-9]? ;
@@ -75,9 +82,9 @@ BARE_LETTER      : [A-Za-z] ;
 /** A letter followed by letters: a note outside a comment ("roughing pass", "Xabc"): error 109. */
 TEXT             : [A-Za-z] [A-Za-z]+ ;
 /** An integer word with a sign or decimal point (N1.5, S-100, :12.5): error 13. */
-NOT_INTEGER      : [GgMmNnOoSsTt] [+\-.0-9]+ | ':' DIGIT [+\-.0-9]* ;
-/** A decimal word whose number is malformed (X+, X., X1.2.3, X--1, F-1): error 14. */
-BAD_NUMBER       : [A-FH-LP-RU-Za-fh-lp-ru-z] [+\-.0-9]+ ;
+NOT_INTEGER      : [GgMmNnOoSsTt] SP* [+\-.0-9] NUMBERISH* | ':' DIGIT NUMBERISH* ;
+/** A decimal word whose number is malformed (X+, X., X1.2.3, X--1, F-1, X10 -5): error 14. */
+BAD_NUMBER       : [A-FH-LP-RU-Za-fh-lp-ru-z] SP* [+\-.0-9] NUMBERISH* ;
 /** Fanuc macro B: a '#' variable or a '[ ]' expression: error 111 (the line's first error). */
 MACRO            : [#[\]] ;
 /** '(' inside a comment: error 54 (the thesis printed 150). The token ends at the inner '('. */
@@ -90,4 +97,9 @@ STRAY            : [0-9.+\-:,*=)] ;
 ILLEGAL          : . ;
 
 fragment DIGIT    : [0-9] ;
-fragment UNSIGNED : DIGIT+ ('.' DIGIT*)? | '.' DIGIT+ ;
+fragment SP       : [ \t] ;
+/** Digits, with spaces between them (not before the first nor after the last). */
+fragment DIGITS   : DIGIT (SP* DIGIT)* ;
+fragment UNSIGNED : DIGITS (SP* '.' (SP* DIGITS)?)? | '.' SP* DIGITS ;
+/** The characters of a malformed number, spaces among them (a trailing space is harmless there). */
+fragment NUMBERISH : [+\-.0-9] | SP+ [+\-.0-9] ;

@@ -168,9 +168,10 @@ public final class Compiler {
     private static BlockSource blocks(Reader source, Settings settings, Diagnostics diags) {
         gcnc.machine.Control control = settings.profile().control();
         if (!control.hasProgramFlow()) {
-            return BlockReader.forControl(source, diags, false); // the thesis's language: no calls, no macros
+            // no calls, no macros
+            return BlockReader.forControl(source, diags, false, control.lineComments());
         }
-        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros()), control, diags,
+        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), control, diags,
                 settings.programs());
     }
 

@@ -54,8 +54,11 @@ class BlockReaderAgreementTest {
                         sb.append(" /").append(text.length() > 1 ? text.substring(1) : "1");
                         continue;
                     }
+                    text = text.replace(" ", "").replace("\t", ""); // 'X 5.' is X5.
+                    String comma = text.startsWith(",") ? "," : "";
+                    text = text.substring(comma.length());
                     char letter = text.charAt(0) == ':' ? 'O' : Character.toUpperCase(text.charAt(0));
-                    words.append(' ').append(letter).append(text.substring(1))
+                    words.append(' ').append(comma).append(letter).append(text.substring(1))
                             .append('@').append(t.getCharPositionInLine() + 1);
                 }
                 out.add(sb.append(words).toString());
@@ -101,7 +104,8 @@ class BlockReaderAgreementTest {
             boolean[] rejected = {false};
             grammarBlocks(src, rejected);
             Parsed p = Parsed.of(src);
-            assertEquals(rejected[0], !p.diagnostics().isEmpty(),
+            // the grammar has no warnings (E600: a space in a number): it rejects what is an error
+            assertEquals(rejected[0], p.diagnostics().stream().anyMatch(d -> d.severity() == gcnc.diag.Severity.ERROR),
                     "seed " + seed + " " + BlockReaderFuzzTest.escape(src) + " " + p.errors());
         }
     }

@@ -55,22 +55,27 @@ class BlockReaderErrorTest {
     @Test
     void strayNumberSignPointOrPunctuationIsError10() {
         for (String stray : List.of("5", ".", "+", "-", ":", ",", "*", "=", ")")) {
-            expect("N10 " + stray + " X1\n", List.of("1:5 E010 ['" + stray + "']"), List.of("1: N10 !"));
+            // after a comment: 'N10 5' would be N105, the control ignores spaces (E600)
+            expect("N10 (c) " + stray + " X1\n", List.of("1:9 E010 ['" + stray + "']"), List.of("1: N10 !"));
         }
     }
 
     @Test
-    void aSlashAnywhereButTheStartOrRightAfterAFirstNWordIsError10() {
-        expect("G00 /X1\n", List.of("1:5 E010 ['/']"), List.of("1: G00 !"));
-        expect("N10 G00 /X1\n", List.of("1:9 E010 ['/']"), List.of("1: N10 G00 !"));
-        expect("X1 N10/\n", List.of("1:7 E010 ['/']"), List.of("1: X1 N10 !"));
-        expect("N10 X1 /2\n", List.of("1:8 E010 ['/']"), List.of("1: N10 X1 !"));
-        expect(":10/X1\n", List.of("1:4 E010 ['/']"), List.of("1: O10 !"));
+    void aSlashAfterOtherWordsMarksTheRestOfTheBlock() {
+        // Haas, Fanuc: with the switch on the block runs up to the '/' (the checker decides)
+        expect("G00 /X1\n", List.of(), List.of("1: G00 /1 X1"));
+        expect("N10 G00 /X1\n", List.of(), List.of("1: N10 G00 /1 X1"));
+        expect("X1 N10/\n", List.of(), List.of("1: X1 N10 /1"));
+        expect("N10 X1 /2\n", List.of(), List.of("1: N10 X1 /2"));
+        expect(":10/X1\n", List.of(), List.of("1: O10 /1 X1"));
+        assertEquals(5, Parsed.of("G00 /X1\n").blocks().get(0).deleteColumn());
+        assertEquals(0, Parsed.of("N10 /X1\n").blocks().get(0).deleteColumn(), "after a first N: the whole block");
     }
 
     @Test
     void aSecondBlockDeleteOnALineIsError10() {
         expect("/N10 /X1\n", List.of("1:6 E010 ['/']"), List.of("1: /1 N10 !"));
+        expect("G00 X1 /Z2 /M08\n", List.of("1:12 E010 ['/']"), List.of("1: G00 X1 /1 Z2 !"));
         expect("//X1\n", List.of("1:2 E010 ['/']"), List.of("1: /1 !"));
     }
 
@@ -181,7 +186,7 @@ class BlockReaderErrorTest {
         // two slips on a line: the one where the lexer stumbled is named, the line reads once both are fixed
         expect("G00 X5O (note) X1,5\n", List.of("1:5 E120 [X5O, X50]"), List.of("1: G00 X5 !"));
         // a slip that is not where the line's error is does not take its place
-        expect("X1O5 N10 /X1\n", List.of("1:10 E010 ['/']"), List.of("1: X1 O5 N10 !"));
+        expect("X1O5 N10 /X1 /Z2\n", List.of("1:14 E010 ['/']"), List.of("1: X1 O5 N10 /1 X1 !"));
     }
 
     @Test

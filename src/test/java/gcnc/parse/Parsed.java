@@ -13,8 +13,13 @@ import java.util.List;
 record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
 
     static Parsed of(String source) {
+        return of(source, false);
+    }
+
+    /** With {@code lineComments}: as a Haas or Fanuc control reads comments (they end at their line's end). */
+    static Parsed of(String source, boolean lineComments) {
         Diagnostics diagnostics = new Diagnostics();
-        BlockReader reader = new BlockReader(new StringReader(source), diagnostics);
+        BlockReader reader = new BlockReader(new StringReader(source), diagnostics, true, false, lineComments);
         List<RawBlock> blocks = new ArrayList<>();
         try {
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
@@ -40,10 +45,20 @@ record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
         List<String> out = new ArrayList<>();
         for (RawBlock b : blocks) {
             StringBuilder sb = new StringBuilder().append(b.line()).append(':');
-            if (b.blockDelete() > 0) {
+            if (b.blockDelete() > 0 && b.deleteColumn() == 0) {
                 sb.append(" /").append(b.blockDelete());
             }
-            b.words().forEach(w -> sb.append(' ').append(w.letter()).append(w.number()));
+            boolean marked = b.deleteColumn() == 0;
+            for (gcnc.ir.Word w : b.words()) {
+                if (!marked && w.span().column() > b.deleteColumn()) {
+                    sb.append(" /").append(b.blockDelete()); // a '/' in the middle, where it stands
+                    marked = true;
+                }
+                sb.append(' ').append(w); // ",C1." for a comma word
+            }
+            if (!marked) {
+                sb.append(" /").append(b.blockDelete());
+            }
             out.add(b.malformed() ? sb.append(" !").toString() : sb.toString());
         }
         return out;

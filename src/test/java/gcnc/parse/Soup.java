@@ -37,15 +37,24 @@ final class Soup {
         }
     }
 
-    /** One word the language accepts. */
+    /** One word the language accepts; now and then with a space after its letter ('G 01', ', C1.'). */
     String validWord() {
+        String w;
         switch (random.nextInt(3)) {
-            case 0: return (random.nextInt(20) == 0 ? ":" : INTEGER[random.nextInt(INTEGER.length)]) + digits(1);
-            case 1: return (random.nextBoolean() ? "F" : "f") + unsigned();
+            case 0:
+                w = (random.nextInt(20) == 0 ? ":" : INTEGER[random.nextInt(INTEGER.length)]) + digits(1);
+                break;
+            case 1:
+                w = (random.nextBoolean() ? "F" : "f") + unsigned();
+                break;
             default:
                 String sign = new String[] {"", "+", "-"}[random.nextInt(3)];
-                return DECIMAL[random.nextInt(DECIMAL.length)] + sign + unsigned();
+                String comma = random.nextInt(10) == 0 ? "," + "CRAcra".charAt(random.nextInt(6)) : null;
+                w = (comma != null ? comma : DECIMAL[random.nextInt(DECIMAL.length)]) + sign + unsigned();
+                break;
         }
+        int letter = w.startsWith(",") ? 2 : 1;
+        return random.nextInt(8) == 0 && !w.startsWith(":") ? w.substring(0, letter) + " " + w.substring(letter) : w;
     }
 
     /** A program of valid words, spacing, comments (some over several lines) and line ends. */
@@ -54,12 +63,15 @@ final class Soup {
         String[] gaps = {" ", "\t", "  ", " (note) ", "(x)"};
         for (int l = 0; l < lines; l++) {
             int words = random.nextInt(6);
-            int slash = random.nextInt(8); // 0: block delete first, 1: after a first N word
+            int slash = random.nextInt(8); // 0: block delete first, 1: after a first N word, 2: mid-block
             if (slash == 0) {
                 sb.append(random.nextBoolean() ? " " : "").append(blockDelete());
             }
             for (int w = 0; w < words; w++) {
                 sb.append(random.nextInt(4) == 0 ? "" : gaps[random.nextInt(gaps.length)]);
+                if (w == 1 && slash == 2) {
+                    sb.append(blockDelete()); // a '/' in the middle: the rest of the block
+                }
                 if (w == 0 && slash == 1) {
                     sb.append(random.nextBoolean() ? "N" : "n").append(digits(1))
                             .append(random.nextBoolean() ? " " : "").append(blockDelete());

@@ -47,7 +47,7 @@ final class PostStyleGenerator {
      * construct here that has started to check clean, so it is not forgotten).
      * lex: CORNER_CHAMFER_RADIUS, DOS_EOF_BYTE; comp: ROUGH_UNDER_G42, DRILL_G83_FANUC, TAP_G84.
      */
-    static final Set<Construct> PENDING = EnumSet.of(Construct.CORNER_CHAMFER_RADIUS, Construct.DOS_EOF_BYTE,
+    static final Set<Construct> PENDING = EnumSet.of(
             Construct.ROUGH_UNDER_G42, Construct.DRILL_G83_FANUC, Construct.TAP_G84);
 
     /**

@@ -80,6 +80,8 @@ public final class Checker {
     /** What the control runs but may not be meant: offset 00 cuts, a feed mode without F, C-axis codes. */
     private Advisories advisories;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
+    /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
+    private CornerInsertion corners = new CornerInsertion(this);
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
     private static final class Cause {
@@ -158,7 +160,8 @@ public final class Checker {
         if (b.blockDelete() > 0) {
             if (profile.control().blockDelete() == Control.BlockDelete.NONE) {
                 blocks++;
-                out.error(Code.E010_SYNTAX, Span.of(b.line(), Math.max(1, first.column() - 1)), "'/'");
+                int at = b.deleteColumn() > 0 ? b.deleteColumn() : Math.max(1, first.column() - 1);
+                out.error(Code.E010_SYNTAX, Span.of(b.line(), at), "'/'");
                 return List.of();
             }
             if (other == null && !isOther) {
@@ -169,7 +172,12 @@ public final class Checker {
             other.check(b);
         }
         if (b.blockDelete() > 0 && skipDeleted) {
-            return List.of();
+            // with the switch on a '/' block is skipped; a '/' in the middle runs the words before it
+            RawBlock kept = b.deleteColumn() > 0 ? b.beforeDelete() : null;
+            if (kept == null) {
+                return List.of();
+            }
+            b = kept;
         }
         boolean isFirst = blocks++ == 0;
         if (state.ended()) {
@@ -179,8 +187,13 @@ public final class Checker {
         return flow(b, isFirst);
     }
 
-    /** A counted block in the program's flow: part of a contour being read, a cycle, or a block. */
+    /** A counted block in the program's flow: a corner block held, part of a contour being read, a cycle, or a block. */
     List<CheckedBlock> flow(RawBlock b, boolean isFirst) {
+        return corners.flow(b, isFirst);
+    }
+
+    /** A block with its chamfer or corner words taken out ({@link CornerInsertion}). */
+    List<CheckedBlock> flowOn(RawBlock b, boolean isFirst) {
         if (cycles.reading()) {
             return cycles.read(b);
         }
@@ -299,6 +312,26 @@ public final class Checker {
         return out;
     }
 
+    /** The cycle whose contour is being read ("G71"), or null. */
+    String readingContour() {
+        return cycles.reading() ? cycles.readingName() : null;
+    }
+
+    /**
+     * Puts the motion G back after an inserted corner arc: the program's G01 stays in force (the
+     * arc is the control's, not a G02/G03 of the program).
+     */
+    void keepMotion(int motion) {
+        ModalState.Next n = state.next();
+        n.motion = motion;
+        state = n.build();
+    }
+
+    /** Whether the block starts or runs again a cycle (not a plain move). */
+    boolean startsCycle(RawBlock b) {
+        return cycles.cycleWord(b) != null || cycles.repeats(b);
+    }
+
     FunctionIndex functions() {
         return functions;
     }
@@ -317,6 +350,7 @@ public final class Checker {
         c.state = state;
         c.nose = nose.copy(c.out);
         c.advisories = advisories.copy();
+        c.corners = corners.copy(c);
         c.blocks = blocks;
         c.seenN.or(seenN);
         c.warnedM.or(warnedM);
@@ -490,6 +524,7 @@ public final class Checker {
 
     /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */
     public void finish(int lastLine) {
+        corners.finish(lastLine);
         cycles.finish();
         if (nose.active()) {
             nose.end(Span.of(Math.max(1, lastLine), 1), new java.util.ArrayList<>()); // nothing can be sent after the end

@@ -125,6 +125,11 @@ final class CycleExpansion {
         return pending != null;
     }
 
+    /** The cycle whose contour is being read ("G71"), while {@link #reading()}. */
+    String readingName() {
+        return pending.call.name();
+    }
+
     /** The block's G70/G71/G72 word, or null. */
     Word cycleWord(RawBlock b) {
         if (!any) {

@@ -384,6 +384,36 @@ public enum Code {
     /** A table file or machine profile is malformed; the message says what and where. */
     E400_TABLE(400),
     /** An input file could not be read or an output file written. */
+    /** Parser: a space inside a number (X10 5 reads as X105; not warned in a T word, T1 01). */
+    E600_SPACE_IN_NUMBER(600),
+    /** Parser (Haas, Fanuc): a '(' comment with no ')' on its line, which the control ends at the end of the block. */
+    E601_COMMENT_NOT_CLOSED_ON_ITS_LINE(601),
+    /** Parser: a block after a DOS end-of-file mark (Ctrl-Z), where a transfer program may stop. */
+    E602_TEXT_AFTER_END_OF_FILE_MARK(602),
+    /** Checker: G01 chamfering or corner rounding on a control that has none (the thesis's). */
+    E604_NO_CORNER_FUNCTION(604),
+    /** Checker (Fanuc): ,C or ,R is direct drawing dimension input, not supported yet; the control's chamfer is C/R. */
+    E605_DIRECT_DRAWING_NOT_SUPPORTED_YET(605),
+    /** Checker: ,A (a line's angle, direct drawing dimension input) is not supported yet. */
+    E606_ANGLE_NOT_SUPPORTED_YET(606),
+    /** Checker: a chamfer or corner radius on a block that is not a G01 (Fanuc PS0050). */
+    E607_CORNER_NOT_ON_G01(607),
+    /** Checker: two corner words in one block, ,C and ,R or I and K (Fanuc PS0053). */
+    E608_TWO_CORNERS(608),
+    /** Checker: no move follows a chamfer or corner radius block (Fanuc PS0051). */
+    E609_CORNER_NO_NEXT_MOVE(609),
+    /** Checker: the move after a chamfer or corner radius is not a G01 (Fanuc PS0052). */
+    E610_CORNER_NEXT_NOT_G01(610),
+    /** Checker: a chamfer or corner radius longer than one of its two moves (Fanuc PS0055). */
+    E611_CORNER_TOO_LARGE(611),
+    /** Checker: a 90-degree chamfer or corner R (I, K; Fanuc C, R) between moves not along the two axes (Fanuc PS0054). */
+    E612_CORNER_NOT_SQUARE(612),
+    /** Checker: the two moves of a chamfer or corner radius are in line: no corner. */
+    E613_CORNER_IN_LINE(613),
+    /** Checker: a chamfer or corner radius in a G71/G72/G73 contour (not supported yet). */
+    E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET(614),
+    /** Checker (Fanuc): the sign of a 90-degree chamfer or corner R points away from the next move. */
+    E615_CORNER_SIGN(615),
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),

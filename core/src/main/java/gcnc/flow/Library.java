@@ -38,9 +38,12 @@ final class Library {
     private final int limit;
     /** The control has macro B: a called file's macro lines are read as such. */
     private final boolean macros;
+    /** The control's comments end at their line's end ({@link BlockReader#forControl}). */
+    private final boolean lineComments;
     private int held;
 
-    Library(Optional<Path> folder, Diagnostics diags, int limit, boolean macros) {
+    Library(Optional<Path> folder, Diagnostics diags, int limit, boolean macros, boolean lineComments) {
+        this.lineComments = lineComments;
         this.folder = folder;
         this.macros = macros;
         this.diags = diags;
@@ -112,7 +115,7 @@ final class Library {
         Origin caller = diags.place();
         diags.placeIn(Origin.file(shown));
         try (Reader in = open(file)) {
-            BlockReader reader = BlockReader.forControl(in, diags, macros);
+            BlockReader reader = BlockReader.forControl(in, diags, macros, lineComments);
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
                 if (held + blocks.size() >= limit) {
                     diags.placeIn(caller);

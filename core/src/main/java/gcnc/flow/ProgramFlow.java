@@ -93,7 +93,7 @@ public final class ProgramFlow implements BlockSource {
         this.mainBlocks = new MainBlocks(main, holdLimit);
         this.control = control;
         this.diags = diags;
-        this.library = new Library(folder, diags, holdLimit, control.macros());
+        this.library = new Library(folder, diags, holdLimit, control.macros(), control.lineComments());
         this.jumps = new MacroJumps(diags);
         stack.push(Frame.main(mainBlocks));
     }

@@ -14,10 +14,13 @@ import java.util.List;
  * program's labels only there. {@code macro} is the text of a Fanuc macro B statement line
  * ({@code #101 = [#1 + 2.5] * 2}, {@code X[#1 + 2.]}, {@code IF [..] GOTO 20}) as the parser
  * hands it on where the control has macros, null for any other block: gcnc.flow runs it and
- * hands the checker the words it comes to, never the statement.
+ * hands the checker the words it comes to, never the statement. {@code deleteColumn} is the column
+ * of a block delete '/' in the middle of the block (Haas, Fanuc: with the switch on, the block runs
+ * up to it and the rest is skipped), 0 when the '/' (if any) marks the whole block; its level is
+ * {@code blockDelete}.
  */
 public record RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete, int depth,
-                       String macro) {
+                       String macro, int deleteColumn) {
     public RawBlock {
         words = List.copyOf(words);
         if (blockDelete < 0 || blockDelete > 9) {
@@ -26,6 +29,25 @@ public record RawBlock(int line, List<Word> words, Span last, boolean malformed,
         if (depth < 0) {
             throw new IllegalArgumentException("call depth is 0 or more: " + depth);
         }
+        if (deleteColumn < 0 || deleteColumn > 0 && blockDelete == 0) {
+            throw new IllegalArgumentException("a mid-block '/' has a column and a level: " + deleteColumn);
+        }
+    }
+
+    /** A block whose '/' (if any) marks the whole block. */
+    public RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete, int depth,
+                    String macro) {
+        this(line, words, last, malformed, blockDelete, depth, macro, 0);
+    }
+
+    /**
+     * The block as it runs with the block delete switch on, when its '/' stands in the middle: the
+     * words before the '/'; null when nothing is left of it.
+     */
+    public RawBlock beforeDelete() {
+        List<Word> kept = words.stream().filter(w -> w.span().column() < deleteColumn).toList();
+        return kept.isEmpty() ? null : new RawBlock(line, kept, kept.get(kept.size() - 1).span(), malformed, 0, depth,
+                macro, 0);
     }
 
     /** A block of words. */
@@ -50,6 +72,6 @@ public record RawBlock(int line, List<Word> words, Span last, boolean malformed,
 
     /** The same block run {@code depth} calls deep, with {@code words} only (the flow words taken out, or a macro line's words). */
     public RawBlock called(List<Word> words, Span last, int depth) {
-        return new RawBlock(line, words, last, malformed, blockDelete, depth, null);
+        return new RawBlock(line, words, last, malformed, blockDelete, depth, null, deleteColumn);
     }
 }

@@ -6,14 +6,27 @@ import gcnc.diag.Span;
  * One word of a block as written: its letter (upper case), the exact text of its number (sign and
  * point included: "01" for G01, "1" for g1, "+5." for X+5.) and where it starts. A letter without
  * a number is error 6, reported by the parser, so a well-formed block never has an empty number.
+ * {@code comma} marks a word written with a comma before its letter: Haas {@code ,C} {@code ,R}
+ * (G01 chamfer and corner rounding) and {@code ,A} (an angle), which are other words than C, R
+ * and A (gcnc.check.CornerInsertion reads them before anything else sees the block).
  */
-public record Word(Letter letter, String number, Span span, long code) {
+public record Word(Letter letter, String number, Span span, long code, boolean comma) {
     /** What {@link #code} is for a number that is not a plain unsigned integer ("-1", "1.", "+5"). */
     public static final long NOT_INTEGER = -1;
 
     /** A word as the parser reads it; its {@link #code} is worked out once, here. */
     public Word(Letter letter, String number, Span span) {
-        this(letter, number, span, integer(number));
+        this(letter, number, span, integer(number), false);
+    }
+
+    /** A word as the parser reads it, with its integer code given. */
+    public Word(Letter letter, String number, Span span, long code) {
+        this(letter, number, span, code, false);
+    }
+
+    /** A word written with a comma before its letter ({@code ,C1.}). */
+    public static Word comma(Letter letter, String number, Span span) {
+        return new Word(letter, number, span, integer(number), true);
     }
 
     /**
@@ -38,6 +51,6 @@ public record Word(Letter letter, String number, Span span, long code) {
 
     @Override
     public String toString() {
-        return letter + number;
+        return (comma ? "," : "") + letter + number;
     }
 }

@@ -42,13 +42,24 @@ import java.util.TreeMap;
  * @param pocketWalls       a type II G71/G72 leaves its allowance along the cutting axis on every
  *                          wall of a pocket (Haas, "Troughs"); else such an allowance with a pocket
  *                          is E189 (Fanuc: W must be 0)
+ * @param lineComments      a '(' comment ends at its ')' or at the end of its line, a '(' inside
+ *                          it is text (Haas, Fanuc); else comments may span lines and nest is
+ *                          error 54 (the thesis's control)
+ * @param corners           how a G01 block asks for a chamfer or corner radius at its end
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
-                      double peckRetractMm, boolean pocketWalls) {
+                      double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners) {
+    /**
+     * G01 chamfering and corner rounding (key {@code g01.corner}, docs/chamfer.md): none; Haas's
+     * {@code ,C} and {@code ,R} at any angle, and I or K for a 90-degree chamfer; Fanuc T's
+     * {@code C} (or I, K) and {@code R} for a 90-degree corner.
+     */
+    public enum Corners { NONE, COMMA, LETTERS }
+
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
 

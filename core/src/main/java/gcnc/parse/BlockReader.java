@@ -1,6 +1,7 @@
 package gcnc.parse;
 
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.Letter;
@@ -43,6 +44,16 @@ public final class BlockReader implements BlockSource {
      * {@link RawBlock#macro}, for gcnc.flow to run; else it is error 111.
      */
     private final boolean macros;
+    /**
+     * Haas and Fanuc: a comment ends at the first ')' or at the end of its line; a '(' inside it is
+     * text. Else (the thesis's control) a comment may span lines and a '(' inside it is error 54.
+     */
+    private final boolean lineComments;
+    /**
+     * Where a DOS end-of-file mark (Ctrl-Z) ended a line ({@link LineSource#cutEndOfFileMark}),
+     * until a block on a later line is warned about (E602): a transfer program may stop at the mark.
+     */
+    private Span eofMark;
     /** The previous line ended inside a comment; where that comment's '(' stands. */
     private boolean inComment;
     private Span commentStart;
@@ -55,33 +66,52 @@ public final class BlockReader implements BlockSource {
     private Object[] errorArgs;
     /** The current line's block delete level (0 = none). */
     private int blockDelete;
+    /** The column of the current line's '/' when it stands in the middle of the block, else 0. */
+    private int deleteColumn;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
-        this(in, diagnostics, true, false);
+        this(in, diagnostics, true, false, false);
     }
 
     /** A reader for a control that has Fanuc macro B when {@code macros}: its macro lines come back as {@link RawBlock#macro}. */
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros) {
-        return new BlockReader(in, diagnostics, true, macros);
+        return new BlockReader(in, diagnostics, true, macros, false);
+    }
+
+    /**
+     * A reader for a control: with Fanuc macro B when {@code macros}; with {@code lineComments},
+     * a comment ends at the end of its line at the latest and a '(' inside it is text (Haas, Fanuc).
+     */
+    public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments) {
+        return new BlockReader(in, diagnostics, true, macros, lineComments);
     }
 
     BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath) {
-        this(in, diagnostics, fastPath, false);
+        this(in, diagnostics, fastPath, false, false);
     }
 
-    private BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros) {
+    BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros, boolean lineComments) {
         this.source = new LineSource(in);
         this.diagnostics = diagnostics;
         this.fastPath = fastPath;
         this.macros = macros;
+        this.lineComments = lineComments;
     }
 
     /** The next block, or null at the end of the input. */
     @Override
     public RawBlock next() throws IOException {
         while (source.next()) {
+            int mark = source.cutEndOfFileMark();
+            if (mark >= 0 && eofMark == null) {
+                eofMark = Span.of(source.number(), mark + 1);
+            }
             RawBlock block = readLine();
             if (block != null) {
+                if (eofMark != null && eofMark.line() < block.line()) {
+                    diagnostics.report(Diagnostic.warning(Code.E602_TEXT_AFTER_END_OF_FILE_MARK, eofMark));
+                    eofMark = null;
+                }
                 return block;
             }
         }
@@ -113,6 +143,7 @@ public final class BlockReader implements BlockSource {
         }
         words.clear();
         blockDelete = 0;
+        deleteColumn = 0;
         inComment = false;
         boolean startsInComment = open;
         for (int from = 0; from >= 0; open = true) {
@@ -125,7 +156,7 @@ public final class BlockReader implements BlockSource {
             return null; // blank, comments, a lone '/'
         }
         Span last = words.isEmpty() ? errorAt : lastSpan();
-        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete, 0, null);
+        return new RawBlock(source.number(), words, last, errorAt != null, blockDelete, 0, null, deleteColumn);
     }
 
     private Span lastSpan() {
@@ -184,7 +215,7 @@ public final class BlockReader implements BlockSource {
             int start = t.getStartIndex();
             switch (t.getType()) {
                 case GCodeLexer.SEQUENCE_WORD, GCodeLexer.INT_WORD, GCodeLexer.TAPE_PROGRAM,
-                        GCodeLexer.FEED_WORD, GCodeLexer.COORD_WORD -> word(t);
+                        GCodeLexer.FEED_WORD, GCodeLexer.COORD_WORD, GCodeLexer.COMMA_WORD -> word(t);
                 case GCodeLexer.BLOCK_DELETE -> blockDelete(t);
                 case GCodeLexer.BARE_LETTER -> bareLetter(start);
                 case GCodeLexer.TEXT -> fail(Code.E109_TEXT_OUTSIDE_COMMENT, start, excerpt(start));
@@ -195,11 +226,22 @@ public final class BlockReader implements BlockSource {
                 case GCodeLexer.ILLEGAL -> fail(Code.E003_ILLEGAL_CHARACTER, start, text(start));
                 case GCodeLexer.UNCLOSED_COMMENT -> {
                     openComment(start);
-                    inComment = true; // it runs to the end of the line
+                    if (lineComments) {
+                        // Haas, Fanuc: the end of the block ends the comment; the next lines are code
+                        // (a virtual '(' goes on after a '(' inside the comment: its own '(' is commentStart)
+                        if (errorAt == null) {
+                            diagnostics.report(Diagnostic.warning(Code.E601_COMMENT_NOT_CLOSED_ON_ITS_LINE,
+                                    stream.isVirtual(start) ? commentStart : span(start)));
+                        }
+                    } else {
+                        inComment = true; // it runs to the end of the line, and on
+                    }
                 }
                 case GCodeLexer.NESTED_COMMENT -> {
                     openComment(start);
-                    fail(Code.E054_NESTED_COMMENT, t.getStopIndex());
+                    if (!lineComments) {
+                        fail(Code.E054_NESTED_COMMENT, t.getStopIndex());
+                    } // else a '(' in a comment is text: the comment goes on to its ')'
                     return stream.offset(t.getStopIndex()) + 1;
                 }
                 default -> { } // NEWLINE, SPANNING_COMMENT: a line holds no line end
@@ -214,28 +256,75 @@ public final class BlockReader implements BlockSource {
         }
         int start = t.getStartIndex();
         int at = stream.offset(start);
-        int length = t.getStopIndex() - start + 1;
-        Letter letter = letter(source.chars()[at]);
-        words.add(new Word(letter, new String(source.chars(), at + 1, length - 1),
-                Span.of(source.number(), at + 1, stream.offset(t.getStopIndex()) + 2)));
+        int stop = stream.offset(t.getStopIndex()) + 1;
+        char[] buf = source.chars();
+        boolean comma = buf[at] == ',';
+        int l = comma ? skipBlanks(buf, at + 1) : at;
+        Letter letter = letter(buf[l]);
+        Span span = Span.of(source.number(), at + 1, stop + 1);
+        String number = number(letter, buf, at, l + 1, stop);
+        words.add(comma ? Word.comma(letter, number, span) : new Word(letter, number, span));
+    }
+
+    private static int skipBlanks(char[] buf, int i) {
+        while (buf[i] == ' ' || buf[i] == '\t') {
+            i++;
+        }
+        return i;
     }
 
     /**
-     * A block delete '/' (with its level): the first thing on the line, or right after a first
-     * word that is an N word, once per line (grammar rule {@code block}); anywhere else error 10.
+     * The number of a word, {@code buf[from, stop)} after its letter, without the spaces the
+     * control ignores ({@code G 01}, {@code X- 2.5}, {@code T1 01}). A space between two characters
+     * of the number itself ({@code X10 5} = X105) is warned about (E600), as it may be a lost
+     * letter, except in a T word: {@code T1 01} (tool 1, offset 01) is how shops write a tool change.
+     */
+    private String number(Letter letter, char[] buf, int word, int from, int stop) {
+        StringBuilder sb = null;
+        int split = -1;
+        for (int i = from; i < stop; i++) {
+            char c = buf[i];
+            if (c == ' ' || c == '\t') {
+                if (sb == null) {
+                    sb = new StringBuilder(stop - from).append(buf, from, i - from);
+                }
+                char before = sb.length() > 0 ? sb.charAt(sb.length() - 1) : ' ';
+                if (split < 0 && (Character.isDigit(before) || before == '.')) {
+                    split = i;
+                }
+            } else if (sb != null) {
+                sb.append(c);
+            }
+        }
+        if (sb == null) {
+            return new String(buf, from, stop - from);
+        }
+        String number = sb.toString();
+        if (split >= 0 && letter != Letter.T) {
+            diagnostics.report(Diagnostic.warning(Code.E600_SPACE_IN_NUMBER, Span.of(source.number(), split + 1),
+                    new String(buf, word, stop - word), (buf[word] == ',' ? "," : "") + letter.name() + number));
+        }
+        return number;
+    }
+
+    /**
+     * A block delete '/' (with its level), once per line (grammar rule {@code block}): the first
+     * thing on the line or right after a first N word, it marks the whole block; after other words
+     * it marks the rest of the block (Haas, Fanuc: with the switch on the block runs up to the '/').
+     * A second '/' is error 10.
      */
     private void blockDelete(Token t) {
         if (errorAt != null) {
             return;
         }
         int start = t.getStartIndex();
-        boolean placed = blockDelete == 0
-                && (words.isEmpty() || words.size() == 1 && words.get(0).letter() == Letter.N);
-        if (!placed) {
+        if (blockDelete != 0) {
             fail(Code.E010_SYNTAX, start, "'" + text(start) + "'");
-        } else {
-            blockDelete = t.getStopIndex() > start ? source.chars()[stream.offset(start) + 1] - '0' : 1;
+            return;
         }
+        blockDelete = t.getStopIndex() > start ? source.chars()[stream.offset(start) + 1] - '0' : 1;
+        boolean whole = words.isEmpty() || words.size() == 1 && words.get(0).letter() == Letter.N;
+        deleteColumn = whole ? 0 : stream.offset(start) + 1;
     }
 
     /**

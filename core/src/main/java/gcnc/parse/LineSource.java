@@ -95,6 +95,28 @@ final class LineSource {
         return length;
     }
 
+    /**
+     * A DOS end-of-file mark (Ctrl-Z, 0x1A) with nothing but more marks, spaces and tabs after it
+     * on the current line: the end of the file as DOS editors and transfer programs wrote it. The
+     * line is cut there; returns the mark's offset, or -1 when the line has none. A mark with text
+     * after it stays on the line (an illegal character, error 3).
+     */
+    int cutEndOfFileMark() {
+        int mark = -1;
+        for (int i = length - 1; i >= 0; i--) {
+            char c = line[i];
+            if (c == '\u001A') {
+                mark = i;
+            } else if (c != ' ' && c != '\t') {
+                break;
+            }
+        }
+        if (mark >= 0) {
+            length = mark;
+        }
+        return mark;
+    }
+
     /** 1-based number of the current line; lines read so far. */
     int number() {
         return number;

@@ -1,0 +1,172 @@
+package gcnc.check;
+
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
+import gcnc.ir.Motion;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.Control;
+import gcnc.machine.Units;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Which words of a block ask for a G01 chamfer or corner rounding, on the control's form
+ * ({@code g01.corner}, docs/chamfer.md): Haas {@code ,C} {@code ,R} and I/K, Fanuc T C, R and
+ * I/K. C, R, I and K are corner words only on a G01 (on G02/G03 they are the arc's); comma words
+ * a control does not read, and {@code ,A}, are errors here (E604-E606), as are two corners in one
+ * block (E608). For {@link CornerInsertion}.
+ */
+final class CornerWords {
+    /**
+     * What a block asks for: the word, chamfer or round, its size (program units, no sign), and
+     * whether it is a 90-degree form (every form but Haas's comma words). {@link #FAILED}: the
+     * block's corner words were wrong, which was reported; the block runs without them.
+     */
+    record Request(Word word, boolean round, double size, boolean square) {
+        static final Request FAILED = new Request(null, false, 0, false);
+
+        String name() {
+            return word.toString();
+        }
+
+        /** The sign the word was written with: -1, or +1 when it has none. */
+        double sign() {
+            return word.number().startsWith("-") ? -1 : 1;
+        }
+    }
+
+    private final Checker host;
+
+    /** (made while the checker is made: its profile is read when a block comes) */
+    CornerWords(Checker host) {
+        this.host = host;
+    }
+
+    /** Whether the block has a word that may ask for a corner on this control (a comma word; C, R, I, K). */
+    boolean mayAsk(RawBlock b) {
+        Control.Corners form = host.profile().control().corners();
+        for (Word w : b.words()) {
+            Letter l = w.letter();
+            if (w.comma() || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)
+                    || form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The corner the block asks for, run from {@code from}, its other words put in {@code rest};
+     * null when it asks for none, {@link Request#FAILED} after an error reported to {@code out}.
+     */
+    Request read(RawBlock b, ModalState from, List<Word> rest, Diagnostics out) {
+        Control.Corners form = host.profile().control().corners();
+        Word found = null;
+        Word second = null;
+        List<Word> candidates = new ArrayList<>(2);
+        boolean reported = false;
+        for (Word w : b.words()) {
+            if (w.comma()) {
+                if (w.letter() == Letter.A || form != Control.Corners.COMMA) {
+                    reported |= wrongComma(w, out);
+                } else if (found == null) {
+                    found = w;
+                } else if (second == null) {
+                    second = w;
+                }
+                continue;
+            }
+            Letter l = w.letter();
+            if (form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)
+                    || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)) {
+                candidates.add(w);
+            }
+            rest.add(w);
+        }
+        if (reported) {
+            return Request.FAILED;
+        }
+        if (!candidates.isEmpty() && isG01(b, candidates, from)) {
+            rest.removeAll(candidates);
+            for (Word w : candidates) {
+                if (found == null) {
+                    found = w;
+                } else if (second == null) {
+                    second = w;
+                }
+            }
+        }
+        if (found == null) {
+            return null;
+        }
+        if (second != null) {
+            out.error(Code.E608_TWO_CORNERS, second.span(), found, second);
+            return Request.FAILED;
+        }
+        return new Request(found, found.letter() == Letter.R, size(found, from.units()), !found.comma());
+    }
+
+    /** A comma word this control does not read: E606 for ,A; E604 without corners; E605 on Fanuc. */
+    private boolean wrongComma(Word w, Diagnostics out) {
+        Control c = host.profile().control();
+        if (w.letter() == Letter.A) {
+            out.error(Code.E606_ANGLE_NOT_SUPPORTED_YET, w.span(), w);
+        } else if (c.corners() == Control.Corners.NONE) {
+            out.error(Code.E604_NO_CORNER_FUNCTION, w.span(), w, c.name());
+        } else {
+            out.error(Code.E605_DIRECT_DRAWING_NOT_SUPPORTED_YET, w.span(), w, c.name(), w.letter().name());
+        }
+        return true;
+    }
+
+    /** Whether the block without {@code candidates} is a G01 move from {@code from} (dry run, nothing reported). */
+    private boolean isG01(RawBlock b, List<Word> candidates, ModalState from) {
+        if (host.startsCycle(b)) {
+            return false;
+        }
+        List<Word> without = new ArrayList<>(b.words());
+        without.removeAll(candidates);
+        Checker.Dry dry = host.dry(b.called(without, b.last(), b.depth()), from, new Diagnostics());
+        return dry != null && feedLine(dry.block().motions()) != null;
+    }
+
+    /** The size in program units, a number without a decimal point read as the control reads X. */
+    private double size(Word w, Units u) {
+        double v = NumberText.decimal(w.number());
+        if (!NumberText.hasPoint(w.number()) && !host.profile().control().noPointLiteral()) {
+            v *= u == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
+        }
+        return Math.abs(v);
+    }
+
+    /** A block's one feed move (a G01), or null. */
+    static Motion.Linear feedLine(List<Motion> motions) {
+        return motions.size() == 1 ? motions.get(0).accept(FEED_LINE) : null;
+    }
+
+    /** A feed line itself; null for anything else. */
+    private static final Motion.Visitor<Motion.Linear> FEED_LINE = new Motion.Visitor<>() {
+        @Override
+        public Motion.Linear linear(Motion.Linear l) {
+            return l.rapid() ? null : l;
+        }
+
+        @Override
+        public Motion.Linear arc(Motion.Arc a) {
+            return null;
+        }
+
+        @Override
+        public Motion.Linear dwell(Motion.Dwell d) {
+            return null;
+        }
+
+        @Override
+        public Motion.Linear thread(Motion.Thread t) {
+            return null;
+        }
+    };
+}
