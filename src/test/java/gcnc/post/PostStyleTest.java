@@ -30,13 +30,15 @@ import org.junit.jupiter.api.TestFactory;
  * Programs written the way the Fusion 360 turning posts write them ({@link PostStyleGenerator})
  * check clean on the machine they are for (haas; fanuc with control fanuc-a or fanuc-b), and
  * compile and simulate clean from the blank they were written for: the language the posts emit
- * is the language gcnc accepts. The default run is twelve seeds on each of the three; {@code
+ * is the language gcnc accepts. The default run is twenty-four seeds on each of the three; {@code
  * gradle junitPlatformTest -Ponly=PostStyle -PpostSeed=1 -PpostCount=5000} runs a long campaign.
  */
 class PostStyleTest {
     private static final long SEED = 20261127L;
     private static final long FIRST = Long.getLong("gcnc.post.seed", SEED);
-    private static final long COUNT = Long.getLong("gcnc.post.count", 12);
+    /** The default run: enough seeds that every settled construct is written on every post that writes it. */
+    private static final long DEFAULT_COUNT = 24;
+    private static final long COUNT = Long.getLong("gcnc.post.count", DEFAULT_COUNT);
     /** How long the blank is (mm): longer than any part the generator turns, shorter than the stick-out plus the jaws. */
     private static final double BLANK_LENGTH = 120;
 
@@ -109,7 +111,7 @@ class PostStyleTest {
     void theDefaultRunWritesEveryConstruct() {
         for (Post post : Post.values()) {
             Set<Construct> seen = EnumSet.noneOf(Construct.class);
-            for (long seed = SEED; seed < SEED + 12; seed++) {
+            for (long seed = SEED; seed < SEED + DEFAULT_COUNT; seed++) {
                 seen.addAll(PostStyleGenerator.generate(post, seed).used());
             }
             for (Construct c : Construct.values()) {

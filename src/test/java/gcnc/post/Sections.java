@@ -185,14 +185,15 @@ final class Sections {
             out.block("G1", "G42", out.x(startX), out.z(0.5), "F" + out.num(pickInt(rnd, 8, 15) / 100.0));
             out.block(out.z(-p.face()));
             if (corners) {
-                out.block(out.x(p.d()[0]), (post.haas() ? ",C" : "C") + out.num(p.chamfer()));
+                // Haas ,C is unsigned; a Fanuc C or R takes the sign of the next move (here -Z)
+                out.block(out.x(p.d()[0]), (post.haas() ? ",C" : "C-") + out.num(p.chamfer()));
             } else {
                 out.block(out.x(p.d()[0]), out.z(-p.face() - p.chamfer()));
             }
             out.block(out.z(-p.z()[0]));
             for (int k = 1; k <= p.last(); k++) {
                 if (corners) {
-                    out.block(out.x(p.d()[k]), (post.haas() ? ",R" : "R") + out.num(p.radius()));
+                    out.block(out.x(p.d()[k]), (post.haas() ? ",R" : "R-") + out.num(p.radius()));
                 } else {
                     out.block(out.x(p.d()[k] - 2 * p.radius()));
                     out.block("G3", out.x(p.d()[k]), out.z(-p.z()[k - 1] - p.radius()), "R" + out.num(p.radius()));

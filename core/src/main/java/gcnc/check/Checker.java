@@ -290,12 +290,26 @@ public final class Checker {
      * findings to {@code found}.
      */
     Dry dry(RawBlock b, ModalState from, Diagnostics found) {
+        return dry(b, from, found, true);
+    }
+
+    /**
+     * A look-ahead that the block's real run follows ({@link CornerInsertion}): its N is noted
+     * then, not here, or every held block would report its own N again (E114).
+     */
+    Dry peek(RawBlock b, ModalState from, Diagnostics found) {
+        return dry(b, from, found, false);
+    }
+
+    private Dry dry(RawBlock b, ModalState from, Diagnostics found, boolean sequence) {
         BlockDraft d = new BlockDraft(b, from, tables, functions, profile, coordinates, false);
         CheckedBlock r = run(d, found, false);
         if (r == null) {
             return null;
         }
-        noteSequence(d);
+        if (sequence) {
+            noteSequence(d);
+        }
         return new Dry(r, d.next.build());
     }
 

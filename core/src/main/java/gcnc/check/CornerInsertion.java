@@ -88,7 +88,7 @@ final class CornerInsertion {
             out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return host.flowOn(stripped, isFirst);
         }
-        Checker.Dry dry = host.dry(stripped, host.state(), new Diagnostics());
+        Checker.Dry dry = host.peek(stripped, host.state(), new Diagnostics());
         if (dry == null) {
             return host.flowOn(stripped, isFirst); // its own errors are reported when it runs
         }
@@ -123,7 +123,7 @@ final class CornerInsertion {
         List<Word> rest = new ArrayList<>(b.words().size());
         RawBlock plain = !words.mayAsk(b) || words.read(b, h.afterStill, rest, new Diagnostics()) == null ? b
                 : b.called(rest, b.last(), b.depth());
-        Checker.Dry dry = host.dry(plain, h.afterStill, new Diagnostics());
+        Checker.Dry dry = host.peek(plain, h.afterStill, new Diagnostics());
         if (dry == null) {
             return release(b); // its own errors are reported when it runs
         }

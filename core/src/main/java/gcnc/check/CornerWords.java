@@ -129,7 +129,7 @@ final class CornerWords {
         }
         List<Word> without = new ArrayList<>(b.words());
         without.removeAll(candidates);
-        Checker.Dry dry = host.dry(b.called(without, b.last(), b.depth()), from, new Diagnostics());
+        Checker.Dry dry = host.peek(b.called(without, b.last(), b.depth()), from, new Diagnostics());
         return dry != null && feedLine(dry.block().motions()) != null;
     }
 
