@@ -289,6 +289,11 @@ class CornerInsertionTest {
         // so is Haas's 90-degree I/K there
         String k = p.replace("G01 Z-10. ,C1.", "G01 Z-10. I1.");
         assertTrue(errs(run("haas", k)).startsWith("E614@8:11"), errs(run("haas", k)));
+        // Fanuc's two-block G71 reads its contour ahead: the corner is E614 there too, not E108,
+        // and the G70 after it does not echo the cycle's failure
+        String f = "G00 X50. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.5 W0.1 F0.2\nN10 G00 X20.\nG01 Z-10. C1.\n"
+                + "N20 X50.\nG70 P10 Q20\nM30\n";
+        assertEquals("E614@9:11", errs(run("fanuc-a", f)));
     }
 
     @Test

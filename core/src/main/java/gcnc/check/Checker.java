@@ -313,6 +313,11 @@ public final class Checker {
         return new Dry(r, d.next.build());
     }
 
+    /** The chamfer or corner word of a contour block read ahead ({@link CornerInsertion#inContour}), or null. */
+    Word cornerInContour(RawBlock b, ModalState from) {
+        return corners.inContour(b, from);
+    }
+
     /** Reports findings of a block checked outside the flow (a contour read ahead), remembering them. */
     void reportAside(Diagnostics found) {
         for (Diagnostic diag : found.sorted()) {

@@ -47,6 +47,14 @@ final class ContourReader {
                 ok = false;
                 continue;
             }
+            Word corner = host.cornerInContour(b, s);
+            if (corner != null) {
+                // a Haas ,C/,R or a Fanuc C/R in a contour: the cycle's passes would need the corner too
+                host.out().error(Code.E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET, corner.span(), corner.toString(),
+                        call.name());
+                ok = false;
+                continue;
+            }
             Diagnostics found = new Diagnostics();
             Checker.Dry dry = host.dry(b, s, found);
             host.reportAside(found);

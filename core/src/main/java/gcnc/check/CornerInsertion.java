@@ -59,6 +59,18 @@ final class CornerInsertion {
         return c;
     }
 
+    /**
+     * The chamfer or corner word of a contour block read ahead by a cycle (G71, G72, G73), or
+     * null: such a corner is not followed yet (E614, reported by the caller).
+     */
+    Word inContour(RawBlock b, ModalState from) {
+        if (b.malformed() || b.macro() != null || !words.mayAsk(b)) {
+            return null;
+        }
+        Request r = words.read(b, from, new ArrayList<>(b.words().size()), new Diagnostics());
+        return r == null ? null : r.word();
+    }
+
     /** The next block of the program's flow: held, released with the corner, or passed on. */
     List<CheckedBlock> flow(RawBlock b, boolean isFirst) {
         if (held != null) {
