@@ -191,10 +191,8 @@ public final class Checker {
         // the compensation in force, or the one the block turns on ("G42"); null when neither
         boolean inForce = state.nose() != NoseSide.OFF;
         String compensation = inForce ? state.nose().g() : NoseConflict.turningOn(b, functions);
-        Word conflict = compensation == null ? null : NoseConflict.find(b, functions, inForce);
-        if (conflict != null) {
-            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, compensation);
-            return List.of();
+        if (compensation != null && !NoseConflict.judge(b, functions, inForce, compensation, out)) {
+            return List.of(); // E178: the control alarms
         }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
@@ -202,10 +200,8 @@ public final class Checker {
         }
         if (cycles.repeats(b)) {
             if (compensation != null) {
-                // a modal cycle (G90/G94, G92, G32, G81-G83) would run again: not under compensation
-                out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(),
-                        gcnc.diag.Phrase.CYCLE_AGAIN.with(cycles.repeating(b)), compensation);
-                return List.of();
+                // a modal cycle (G90/G94, G92, G32, G81-G83) runs again, with the compensation suspended
+                NoseConflict.again(b, cycles.repeating(b), functions, inForce, compensation, out);
             }
             return cycles.repeat(b, isFirst);
         }
@@ -256,7 +252,9 @@ public final class Checker {
         if (state.nose() != NoseSide.OFF || d.prior.nose() != NoseSide.OFF) {
             // a block without this record has G40 in force before and after it (most blocks: nothing allocated)
             noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
-                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
+                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span(),
+                    NoseConflict.suspend(b, functions, d.prior.nose() != NoseSide.OFF,
+                            origin == null ? null : origin.cycle(), thread != null)));
         }
         return Optional.of(made);
     }

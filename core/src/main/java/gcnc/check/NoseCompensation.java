@@ -45,8 +45,32 @@ final class NoseCompensation {
     /** Blocks without a move gcnc holds while it looks for the next corner. */
     static final int STILL_LIMIT = 10;
 
-    /** What the checker knows of a block besides the block: the side after it, the nose in force, where it is. */
-    record Info(NoseSide side, Nose nose, int offset, Span at) {
+    /**
+     * What the checker knows of a block besides the block: the side after it, the nose in force,
+     * where it is, and whether its moves are made with the compensation suspended.
+     */
+    record Info(NoseSide side, Nose nose, int offset, Span at, Suspend suspend) {
+        Info(NoseSide side, Nose nose, int offset, Span at) {
+            this(side, nose, offset, at, Suspend.NONE);
+        }
+    }
+
+    /**
+     * Blocks the control runs under G41/G42 without offsetting their moves (docs/nose-compensation.md,
+     * "Under G41/G42"): the compensated path ends perpendicular before them, their moves go as
+     * programmed (the first from where the tool stands), and the next move starts the compensation
+     * again as a start-up does.
+     */
+    enum Suspend {
+        /** An ordinary block: offset as the side says. */
+        NONE,
+        /**
+         * Fanuc's temporary cancel: G28, G29, G30, G53, a G50/G92 position register, and a T word
+         * (the new offset's nose applies from the next move).
+         */
+        FOR_THE_BLOCK,
+        /** A block a cycle other than G70 made (roughing, single-pass, thread, peck and drilling cycles) or a G32. */
+        CYCLE
     }
 
     private enum Mode { OFF, ARMED, ACTIVE }
@@ -102,6 +126,10 @@ final class NoseCompensation {
 
     /** Takes the next checked block; what can be sent on is added to {@code emit}, in order. */
     void accept(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+        if (info.suspend() != Suspend.NONE && info.side() != NoseSide.OFF && mode != Mode.OFF && !exiting) {
+            suspend(b, info, emit);
+            return;
+        }
         if (mode == Mode.OFF) {
             if (info.side() == NoseSide.OFF) {
                 emit.add(b);
@@ -216,7 +244,7 @@ final class NoseCompensation {
             startNext = next.offsetAt(next.from(), e);
             Motion m = path(pending).get(0);
             List<Motion> ms = new ArrayList<>(before(pending, m));
-            ms.add(line(m, from(m), tipAt(startNext)));
+            ms.add(line(m, startUpFrom(m), tipAt(startNext)));
             ms.addAll(after(pending, m));
             emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
@@ -249,24 +277,67 @@ final class NoseCompensation {
         Point end = closePerpendicular(emit);
         flushHeld(emit);
         Point from = end != null ? tipAt(end) : restartFrom != null ? restartFrom : from(first);
-        List<Motion> ms = new ArrayList<>(before(b, first));
-        if (first instanceof Motion.Arc a) {
-            // E171 reported: the arc as written, reached by a straight move, so the path stays whole
-            if (from.distanceTo(a.from()) > NoseGeometry.NOTHING) {
-                ms.add(line(a, from, a.from()));
-            }
-            ms.add(a);
-        } else {
-            ms.add(line(first, from, to(first)));
-        }
-        ms.addAll(after(b, first));
-        emit.add(travel(with(b, ms, b.end()), info));
+        emit.add(travel(startingAt(b, first, from), info));
         mode = Mode.OFF;
         exiting = false;
         if (info.side() != NoseSide.OFF) {
             // the move after a G40 alone, into a new G41/G42 in the same block: start again
             arm(info);
         }
+    }
+
+    /**
+     * A block the control runs without offsetting it ({@link Suspend}): the compensated path ends
+     * perpendicular before it, its first move goes from where the tool stands to its programmed end
+     * (for G28, to the intermediate point: the offset is cancelled there), the rest as programmed;
+     * the next move starts the compensation again (type A), with the nose in force after the block.
+     */
+    private void suspend(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+        Point stands = restartFrom;
+        if (mode == Mode.ACTIVE) {
+            Point end = closePerpendicular(emit);
+            if (end != null) {
+                stands = tipAt(end);
+            }
+        }
+        flushHeld(emit);
+        Motion first = null;
+        for (Motion m : b.motions()) {
+            if (!(m instanceof Motion.Dwell)) {
+                first = m;
+                break;
+            }
+        }
+        if (first != null && stands != null) {
+            emit.add(startingAt(b, first, stands));
+            stands = null;
+        } else {
+            emit.add(b);
+        }
+        mode = Mode.OFF;
+        exiting = false;
+        arm(info);
+        restartFrom = stands; // a block without a move leaves the tool where the path ended
+    }
+
+    /**
+     * The block with its move {@code first} starting at {@code from}, where the tool stands: a line
+     * goes from there; an arc (E171 reported) or a thread pass is reached by a straight move first,
+     * so the path stays whole.
+     */
+    private static CheckedBlock startingAt(CheckedBlock b, Motion first, Point from) {
+        List<Motion> ms = new ArrayList<>(before(b, first));
+        if (first instanceof Motion.Linear) {
+            ms.add(line(first, from, to(first)));
+        } else {
+            if (from.distanceTo(from(first)) > NoseGeometry.NOTHING) {
+                ms.add(first instanceof Motion.Arc a ? line(a, from, a.from())
+                        : new Motion.Linear(true, from, from(first), null));
+            }
+            ms.add(first);
+        }
+        ms.addAll(after(b, first));
+        return with(b, ms, b.end());
     }
 
     /** Ends the pending block perpendicular to its element's end (no next move to meet); returns the nose centre there. */
@@ -280,7 +351,7 @@ final class NoseCompensation {
             end = self.length() > 0 ? self.offsetAt(self.to(), e) : self.to();
             Motion m = path(pending).get(0);
             List<Motion> ms = new ArrayList<>(before(pending, m));
-            ms.add(line(m, from(m), tipAt(end)));
+            ms.add(line(m, startUpFrom(m), tipAt(end)));
             ms.addAll(after(pending, m));
             emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
@@ -290,6 +361,16 @@ final class NoseCompensation {
         pending = null;
         pendingElement = null;
         return end;
+    }
+
+    /**
+     * Where the start-up move {@code m} begins: its programmed start, or where a block without a
+     * move under a suspension ({@link #suspend}) left the tool.
+     */
+    private Point startUpFrom(Motion m) {
+        Point p = restartFrom != null ? restartFrom : from(m);
+        restartFrom = null;
+        return p;
     }
 
     /**

@@ -57,14 +57,14 @@ final class NoseMoves {
         return new Motion.Linear(rapid, from, to, rapid ? null : feed);
     }
 
-    /** Where a line or an arc starts. */
+    /** Where a line, an arc or a thread pass starts. */
     static Point from(Motion m) {
-        return m instanceof Motion.Linear l ? l.from() : ((Motion.Arc) m).from();
+        return m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Thread t ? t.from() : ((Motion.Arc) m).from();
     }
 
-    /** Where a line or an arc ends. */
+    /** Where a line, an arc or a thread pass ends. */
     static Point to(Motion m) {
-        return m instanceof Motion.Linear l ? l.to() : ((Motion.Arc) m).to();
+        return m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Thread t ? t.to() : ((Motion.Arc) m).to();
     }
 
     /** The block with other motions, its end where the last of them ends. */

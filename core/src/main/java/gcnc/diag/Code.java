@@ -262,7 +262,7 @@ public enum Code {
     E176_NOSE_TOO_MANY_STILL_BLOCKS(176),
     /** Nose compensation (note): the tool offset in force has no nose radius in the profile. */
     E177_NOSE_NO_RADIUS(177),
-    /** Nose compensation: a cycle, G28, G29, G53 or a position register with G41/G42 in force. */
+    /** Nose compensation: G31 (skip) with G41/G42 in force, which the control alarms (Fanuc PS0035). */
     E178_NOSE_FUNCTION_IN_FORCE(178),
     /** Nose compensation: the compensated path leaves the travel where the programmed one did not. */
     E179_NOSE_BEYOND_TRAVEL(179),
@@ -388,7 +388,23 @@ public enum Code {
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502);
+    E502_OUTPUT_IS_DIRECTORY(502),
+
+    // 620-639: the language CAM posts write (issue 17): blocks under nose compensation, G32
+    // sequences, hole cycles, G10/G30/G49.
+    /**
+     * Nose compensation (warning): G28, G29, G30, G53 or a position register under G41/G42; the
+     * control cancels the offset for the block's move and restores it from the next move.
+     */
+    E620_NOSE_CANCELLED_FOR_THE_BLOCK(620),
+    /** Nose compensation (warning): a T word under G41/G42; the new offset's nose applies from the next move. */
+    E621_NOSE_TOOL_CHANGE(621),
+    /** Nose compensation (warning): G71/G72/G73 under G41/G42; the control roughs the offset contour. */
+    E622_NOSE_ROUGHING_CYCLE(622),
+    /** Nose compensation (warning): G90/G94 under G41/G42; the control offsets each path of the cycle. */
+    E623_NOSE_SINGLE_CYCLE(623),
+    /** Nose compensation (warning): a thread, peck or drilling cycle under G41/G42; not offset, the compensation resumes after. */
+    E624_NOSE_NOT_OFFSET(624);
 
     private final int number;
 
