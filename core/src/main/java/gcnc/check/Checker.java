@@ -194,6 +194,10 @@ public final class Checker {
         if (compensation != null && !NoseConflict.judge(b, functions, inForce, compensation, out)) {
             return List.of(); // E178: the control alarms
         }
+        Word g10 = OffsetSetting.word(b, functions);
+        if (g10 != null) {
+            return new OffsetSetting(this).run(b, g10, isFirst); // G10 L2: a work offset written by the program
+        }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
             return cycles.start(b, cycle, isFirst);
@@ -308,6 +312,7 @@ public final class Checker {
         Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
         c.state = state;
         c.nose = nose.copy(c.out);
+        c.coordinates.takeWork(coordinates); // work offsets written by G10 so far
         c.blocks = blocks;
         c.seenN.or(seenN);
         c.warnedM.or(warnedM);

@@ -404,7 +404,11 @@ public enum Code {
     /** Nose compensation (warning): G90/G94 under G41/G42; the control offsets each path of the cycle. */
     E623_NOSE_SINGLE_CYCLE(623),
     /** Nose compensation (warning): a thread, peck or drilling cycle under G41/G42; not offset, the compensation resumes after. */
-    E624_NOSE_NOT_OFFSET(624);
+    E624_NOSE_NOT_OFFSET(624),
+    /** G10 with an L other than 2 (tool offsets, parameters): not supported yet. */
+    E625_G10_NOT_SUPPORTED(625),
+    /** G10 L2 without P, or with a P that names no work offset (P0-P6). */
+    E626_G10_WORK_OFFSET_NUMBER(626);
 
     private final int number;
 

@@ -13,6 +13,8 @@ public enum GRole {
     /** G41/G42: the checker offsets the path by the nose radius (gcnc.check.NoseCompensation). */
     NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
     REGISTER_AND_CLAMP(50), MACHINE_COORDINATES(53),
+    /** G10 L2: a work offset written by the program (gcnc.check.OffsetSetting), handled before the syntax actions. */
+    SET_OFFSETS(10),
     /**
      * G70 finishing along a contour, G71 stock removal in turning, G72 stock removal in facing,
      * G73 pattern repeat:
