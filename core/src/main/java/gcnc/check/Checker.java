@@ -75,6 +75,8 @@ public final class Checker {
     private boolean stopped;
     /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
     private NoseCompensation nose;
+    /** Consecutive G32 blocks: one continuous thread (docs/threading.md). */
+    private final ThreadChain threadChain;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
@@ -110,6 +112,12 @@ public final class Checker {
         this.state = ModalState.initial(profile);
         this.cycles = new CycleExpansion(this);
         this.nose = new NoseCompensation(profile, out);
+        this.threadChain = new ThreadChain(out);
+    }
+
+    /** Where Threading marks its G32 passes for the continuous threads. */
+    ThreadChain threadChain() {
+        return threadChain;
     }
 
     /** The modal state after the last accepted block. */
@@ -123,7 +131,20 @@ public final class Checker {
      * a G90/G94 block gives its moves.
      */
     public List<CheckedBlock> check(RawBlock b) {
-        List<CheckedBlock> made = checkBlock(b);
+        List<CheckedBlock> made = compensated(b, checkBlock(b));
+        if (threadChain.idle()) {
+            return made; // no G32 held or made: nothing to join
+        }
+        List<CheckedBlock> emit = new java.util.ArrayList<>(made.size() + 1);
+        threadChain.accept(made, emit);
+        if (state.ended()) {
+            threadChain.end(emit);
+        }
+        return emit;
+    }
+
+    /** The blocks through the nose radius compensation (G41/G42), which may hold some back. */
+    private List<CheckedBlock> compensated(RawBlock b, List<CheckedBlock> made) {
         if (noseInfo.isEmpty() && !nose.active()) {
             return made; // no G41/G42 before or in these blocks: nothing to offset, nothing held
         }

@@ -408,7 +408,11 @@ public enum Code {
     /** G10 with an L other than 2 (tool offsets, parameters): not supported yet. */
     E625_G10_NOT_SUPPORTED(625),
     /** G10 L2 without P, or with a P that names no work offset (P0-P6). */
-    E626_G10_WORK_OFFSET_NUMBER(626);
+    E626_G10_WORK_OFFSET_NUMBER(626),
+    /** A G32 continues a thread across a block that moves, changes M, S or T, or too many blocks: not supported yet. */
+    E627_THREAD_CONTINUED_ACROSS(627),
+    /** A G32 continues a thread with another lead (or spindle direction): variable lead is not supported yet. */
+    E628_THREAD_LEAD_CHANGES(628);
 
     private final int number;
 
