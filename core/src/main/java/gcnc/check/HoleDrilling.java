@@ -159,6 +159,10 @@ final class HoleDrilling {
             host.out().report(gcnc.diag.Diagnostic.warning(Code.E186_DRILL_OFF_CENTRE, x.span(), label,
                     NumberText.plain(holeX, 4)));
         }
+        if (modal.kind().tapCycle()) {
+            done.addAll(tap(b, at, start, end.x(), label));
+            return done;
+        }
         double clearance = p.control().peckRetractMm();
         if (modal.kind() == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, at.span(), label,
@@ -190,6 +194,52 @@ final class HoleDrilling {
         return done;
     }
 
+    /**
+     * G84/G184 (Haas): a rapid to the hole's X, a rapid to the R plane, the tap fed to the bottom
+     * (then the dwell P, if any), the spindle reversed (M04 after M03, M03 after M04), the tap fed
+     * back out to the R plane, the spindle turned back, a rapid to the start's Z. The feed is the F
+     * in force (G99: the lead; G98: lead x r/min): gcnc does not gear the tap to the spindle, so the
+     * tap must sit in a floating holder (docs/cycles.md). E629 when the spindle turns against the
+     * tap (M04 for G84, M03 for G184).
+     */
+    private List<CheckedBlock> tap(RawBlock b, Word at, ModalState start, double x, String label) {
+        Point a = start.position();
+        List<Move> moves = new ArrayList<>(5);
+        if (Math.abs(x - a.x()) > EPS_MM * host.profile().x().countsPerMm()) {
+            moves.add(Move.line(true, new Point(x, a.z()), 1));
+        }
+        moves.add(Move.line(true, new Point(x, rPlane), 1));
+        int in = moves.size();
+        moves.add(Move.line(false, new Point(x, bottom), 1));
+        moves.add(Move.line(false, new Point(x, rPlane), 1));
+        moves.add(Move.line(true, new Point(x, a.z()), 1));
+        int turning = start.spindle();
+        boolean rightHand = modal.kind() == GRole.TAP_CYCLE;
+        if (turning == (rightHand ? 4 : 3)) {
+            host.out().report(gcnc.diag.Diagnostic.warning(Code.E629_TAP_AGAINST_SPINDLE, at.span(), label,
+                    rightHand ? "M04" : "M03", rightHand ? "M03" : "M04"));
+        }
+        gcnc.machine.MRole forward = turning == 4 ? gcnc.machine.MRole.SPINDLE_CCW : gcnc.machine.MRole.SPINDLE_CW;
+        gcnc.machine.MRole back = forward == gcnc.machine.MRole.SPINDLE_CW ? gcnc.machine.MRole.SPINDLE_CCW
+                : gcnc.machine.MRole.SPINDLE_CW;
+        List<RawBlock> bottomBlocks = new ArrayList<>(2);
+        if (dwell != null && NumberText.decimal(dwell.number()) > 0) {
+            String g04 = host.profile().control().gFor(GRole.DWELL).map(f -> f.name().substring(1)).orElseThrow();
+            bottomBlocks.add(new RawBlock(b.line(), List.of(new Word(Letter.G, g04, at.span()),
+                    new Word(Letter.P, dwell.number(), at.span())), at.span(), false));
+        }
+        bottomBlocks.add(spindle(b, back, at));
+        return CycleBlocks.write(host, modal.name(), b.line(), at.span(), moves, 1, start,
+                java.util.Map.of(in, bottomBlocks, in + 1, List.of(spindle(b, forward, at))));
+    }
+
+    /** A block of the spindle M code of {@code role} on this control, at the cycle's line. */
+    private RawBlock spindle(RawBlock b, gcnc.machine.MRole role, Word at) {
+        int code = host.profile().control().mFor(role).orElseThrow().code();
+        return new RawBlock(b.line(), List.of(new Word(Letter.M, String.format("%02d", code), at.span())), at.span(),
+                false);
+    }
+
     /** The words this cycle takes, with the right signs; false after the first error. */
     private boolean check(CycleWords words, GRole role, String label, Word g) {
         if (words.has(Letter.L)) {
@@ -203,12 +253,19 @@ final class HoleDrilling {
                 continue;
             }
             boolean peckWord = l != Letter.P;
-            if (peckWord && role != GRole.PECK_DRILL_CYCLE || !peckWord && role != GRole.SPOT_DRILL_CYCLE) {
+            if (peckWord && role.tapCycle()) {
+                // the Fusion posts' "tapping with chip breaking" (G84 ... Q)
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, w.span(), label, w, Phrase.TAP_PECK.arg());
+                return false;
+            }
+            if (peckWord && role != GRole.PECK_DRILL_CYCLE
+                    || !peckWord && role != GRole.SPOT_DRILL_CYCLE && !role.tapCycle()) {
                 host.out().error(Code.E161_CYCLE_WORD, w.span(), label, w);
                 return false;
             }
             double v = words.value(l);
-            if (l == Letter.J ? v < 0 : v <= 0) {
+            // a tap's P may be 0 (no dwell at the bottom: the Fusion posts write P0)
+            if (l == Letter.J || l == Letter.P && role.tapCycle() ? v < 0 : v <= 0) {
                 host.out().error(Code.E180_PECK_NOT_POSITIVE, w.span(), label, w, switch (l) {
                     case Q -> "the peck depth";
                     case I -> "the first peck";

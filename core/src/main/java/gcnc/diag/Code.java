@@ -412,7 +412,9 @@ public enum Code {
     /** A G32 continues a thread across a block that moves, changes M, S or T, or too many blocks: not supported yet. */
     E627_THREAD_CONTINUED_ACROSS(627),
     /** A G32 continues a thread with another lead (or spindle direction): variable lead is not supported yet. */
-    E628_THREAD_LEAD_CHANGES(628);
+    E628_THREAD_LEAD_CHANGES(628),
+    /** A tapping cycle with the spindle turning against the tap (G84 under M04, G184 under M03): warning. */
+    E629_TAP_AGAINST_SPINDLE(629);
 
     private final int number;
 

@@ -53,6 +53,8 @@ public enum Phrase {
     DRILL_CLEARANCE,
     /** E188: L repeats. */
     DRILL_REPEATS,
+    /** E188: Q on a tapping cycle (peck tapping). */
+    TAP_PECK,
     /** E182: G83 without Q or I. */
     DRILL_PECK,
     /** E182: G83 J without I and K. */

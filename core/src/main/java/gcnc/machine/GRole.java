@@ -38,6 +38,12 @@ public enum GRole {
      */
     DRILL_CYCLE(81), SPOT_DRILL_CYCLE(82), PECK_DRILL_CYCLE(83),
     /**
+     * Tapping on the spindle axis (Haas G84, and G184 for a left-hand tap): the tap fed in, the
+     * spindle reversed at the bottom, fed out to the R plane, the spindle turned back; modal as
+     * the drilling cycles.
+     */
+    TAP_CYCLE(84), REVERSE_TAP_CYCLE(184),
+    /**
      * Threading, spindle-synchronised (docs/threading.md): G32 one pass (Fanuc B G33, modal in
      * group 1), G92 the single-pass thread cycle (Fanuc B G78, modal in group 1) and G76 the
      * multiple-pass thread cycle (one-shot). Expanded by the checker into thread passes; the numbers
@@ -87,7 +93,12 @@ public enum GRole {
 
     /** G81, G82 or G83: a drilling cycle on the spindle axis, modal until G80. */
     public boolean drillCycle() {
-        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE;
+        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE || tapCycle();
+    }
+
+    /** G84/G184: a drilling cycle whose spindle reverses at the bottom. */
+    public boolean tapCycle() {
+        return this == TAP_CYCLE || this == REVERSE_TAP_CYCLE;
     }
 
     public boolean motion() {
