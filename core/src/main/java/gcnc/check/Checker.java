@@ -219,6 +219,10 @@ public final class Checker {
         if (g10 != null) {
             return new OffsetSetting(this).run(b, g10, isFirst); // G10 L2: a work offset written by the program
         }
+        Word g30 = ReferenceReturn.word(b, functions);
+        if (g30 != null) {
+            return new ReferenceReturn(this).run(b, g30, isFirst); // G30: to the profile's reference.N
+        }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
             return cycles.start(b, cycle, isFirst);

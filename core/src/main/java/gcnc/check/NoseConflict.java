@@ -43,7 +43,7 @@ final class NoseConflict {
         return switch (role) {
             case NOSE_COMP_CANCEL -> Under.CANCELS;
             case SKIP -> Under.ALARM;
-            case HOME, FROM_HOME, MACHINE_COORDINATES, REGISTER -> Under.FOR_THE_BLOCK;
+            case HOME, FROM_HOME, OTHER_HOME, MACHINE_COORDINATES, REGISTER -> Under.FOR_THE_BLOCK;
             case REGISTER_AND_CLAMP -> Under.FOR_THE_BLOCK_WITH_AXES;
             case TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE -> Under.ROUGHING;
             case TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE -> Under.SINGLE_CYCLE;

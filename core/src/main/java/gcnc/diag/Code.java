@@ -414,7 +414,11 @@ public enum Code {
     /** A G32 continues a thread with another lead (or spindle direction): variable lead is not supported yet. */
     E628_THREAD_LEAD_CHANGES(628),
     /** A tapping cycle with the spindle turning against the tap (G84 under M04, G184 under M03): warning. */
-    E629_TAP_AGAINST_SPINDLE(629);
+    E629_TAP_AGAINST_SPINDLE(629),
+    /** G30 with a P other than 2, 3 or 4. */
+    E630_G30_REFERENCE_NUMBER(630),
+    /** G30 to a reference point the machine profile does not give (reference.N). */
+    E631_G30_NO_REFERENCE(631);
 
     private final int number;
 

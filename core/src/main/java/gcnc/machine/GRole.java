@@ -9,6 +9,8 @@ package gcnc.machine;
 public enum GRole {
     RAPID(0), LINEAR(1), ARC_CW(2), ARC_CCW(3), DWELL(4), EXACT_STOP(9),
     PLANE_XY(17), PLANE_ZX(18), PLANE_YZ(19), INCH(20), METRIC(21), HOME(28), FROM_HOME(29), SKIP(31),
+    /** G30: return to the second (P2, third P3, fourth P4) reference point via an intermediate point (gcnc.check.ReferenceReturn). */
+    OTHER_HOME(30),
     NOSE_COMP_CANCEL(40),
     /** G41/G42: the checker offsets the path by the nose radius (gcnc.check.NoseCompensation). */
     NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
