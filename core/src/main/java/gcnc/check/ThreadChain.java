@@ -82,7 +82,11 @@ final class ThreadChain {
                 emit.add(c);
             }
         }
+        // marks of blocks that did not come through as made (rewritten by the nose compensation): forgotten
+        passes.clear();
+        continuing.clear();
     }
+
 
     /** The program ended: the thread held is sent as it is. */
     void end(List<CheckedBlock> emit) {
