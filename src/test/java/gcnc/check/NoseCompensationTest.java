@@ -164,10 +164,21 @@ class NoseCompensationTest {
                 && d.args().equals(List.of("0.5", "0.8"))), r.diagnostics.sorted()::toString);
     }
 
+    /**
+     * Fanuc changes sides in offset mode without an alarm (the old E174 error was wrong by the
+     * manual): a warning; the G42 path ends perpendicular, the block with G41 moves as programmed
+     * from there, and G41 starts with the next move.
+     */
     @Test
-    void changingSidesWithoutG40IsE174() {
-        Run r = Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG01 Z-10. F0.2\nG41 X40.\nG40 G00 X60.\nM30\n");
-        assertEquals("E174@7:1", errs(r));
+    void changingSidesWithoutG40WarnsE174AndStartsTheOtherSideWithTheNextMove() {
+        Run r = Run.of("fanuc", HEAD + "G42 G00 X20. Z2.\nG01 Z-10. F0.2\nG41 X40.\nZ-20.\nG40 G00 X60.\nM30\n");
+        assertEquals("", errs(r));
+        assertEquals("E174@7:1 [G41, G42]", codes(r, gcnc.diag.Severity.WARNING));
+        List<String> m = moves(r, 6);
+        assertEquals("6 G01 X20.0000 Z-10.8000", m.get(0)); // G42 ends perpendicular (tip 3, r 0.8)
+        assertEquals("7 G01 X40.0000 Z-10.0000", m.get(1)); // the block's own move, as programmed
+        // G41 starts with Z-20. (a start-up from X40 Z-10), the nose now on the other side of the line
+        assertTrue(m.get(2).startsWith("8 G01"), m::toString);
     }
 
     @Test

@@ -282,7 +282,7 @@ public final class Checker {
             // a block without this record has G40 in force before and after it (most blocks: nothing allocated)
             noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
                     state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span(),
-                    NoseConflict.suspend(b, functions, d.prior.nose() != NoseSide.OFF,
+                    NoseConflict.suspend(b, functions, d.prior.nose(),
                             origin == null ? null : origin.cycle(), thread != null)));
         }
         return Optional.of(made);

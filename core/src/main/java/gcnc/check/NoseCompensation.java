@@ -91,7 +91,11 @@ final class NoseCompensation {
     private final List<CheckedBlock> held = new ArrayList<>();
     /** A G40 without a move was met: the next move is the cancel move. */
     private boolean exiting;
-    /** After E176: the next move starts again from where the tool is, as a start-up does. */
+    /**
+     * Where the tool stands when it is off the programmed point with no compensated element to
+     * follow: after E176, or after a suspension by a block without a move (a T word, G41 under
+     * G42); the next move starts from there.
+     */
     private Point restartFrom;
     /** After E176: the rapid from there to the start of the pending element's offset, sent before it. */
     private Motion lead;
@@ -132,7 +136,7 @@ final class NoseCompensation {
         }
         if (mode == Mode.OFF) {
             if (info.side() == NoseSide.OFF) {
-                emit.add(b);
+                emit.add(resumed(b));
                 return;
             }
             arm(info);
@@ -166,6 +170,7 @@ final class NoseCompensation {
             // after E176: a new start from where the tool stands
             Point start = next.offsetAt(next.from(), e);
             lead = new Motion.Linear(true, restartFrom, tipAt(start), null);
+            restartFrom = null;
             pending = b;
             pendingInfo = info;
             pendingElement = next;
@@ -202,7 +207,6 @@ final class NoseCompensation {
         tip = new double[] {v[0] * n.radius(), v[1] * n.radius()};
         mode = Mode.ARMED;
         exiting = false;
-        restartFrom = null;
         if (n.radius() == 0 && !noted.get(info.offset())) {
             noted.set(info.offset());
             out.report(new Diagnostic(Code.E177_NOSE_NO_RADIUS, gcnc.diag.Severity.NOTE, info.at(),
@@ -215,7 +219,7 @@ final class NoseCompensation {
         List<Motion> path = path(b);
         if (info.side() == NoseSide.OFF) {
             mode = Mode.OFF;
-            emit.add(b);
+            emit.add(resumed(b));
             return;
         }
         if (path.isEmpty()) {
@@ -277,6 +281,7 @@ final class NoseCompensation {
         Point end = closePerpendicular(emit);
         flushHeld(emit);
         Point from = end != null ? tipAt(end) : restartFrom != null ? restartFrom : from(first);
+        restartFrom = null;
         emit.add(travel(startingAt(b, first, from), info));
         mode = Mode.OFF;
         exiting = false;
@@ -318,6 +323,24 @@ final class NoseCompensation {
         exiting = false;
         arm(info);
         restartFrom = stands; // a block without a move leaves the tool where the path ended
+    }
+
+    /**
+     * The block as it is, or, when a suspension left the tool off the programmed point
+     * ({@link #restartFrom}) and the block moves, with its first move from there.
+     */
+    private CheckedBlock resumed(CheckedBlock b) {
+        if (restartFrom == null) {
+            return b;
+        }
+        for (Motion m : b.motions()) {
+            if (!(m instanceof Motion.Dwell)) {
+                CheckedBlock r = startingAt(b, m, restartFrom);
+                restartFrom = null;
+                return r;
+            }
+        }
+        return b;
     }
 
     /**

@@ -147,11 +147,13 @@ final class NoseConflict {
     /**
      * Whether the checked block made of {@code b} runs with the compensation suspended: a block a
      * cycle other than G70 made ({@code cycle} the cycle's name, null for a block of the program),
-     * a thread pass ({@code thread}), or (with the compensation in force before it, {@code inForce})
-     * a temporary cancel: G28, G29, G30, G53, a position register with X or Z, a T word.
+     * a thread pass ({@code thread}), or (with the compensation in force before it, {@code before})
+     * a temporary cancel: G28, G29, G30, G53, a position register with X or Z, a T word, or a
+     * change of side (G42 under G41: the warning E174).
      */
-    static NoseCompensation.Suspend suspend(RawBlock b, FunctionIndex functions, boolean inForce, String cycle,
+    static NoseCompensation.Suspend suspend(RawBlock b, FunctionIndex functions, NoseSide before, String cycle,
                                             boolean thread) {
+        boolean inForce = before != NoseSide.OFF;
         if (thread) {
             return NoseCompensation.Suspend.CYCLE;
         }
@@ -164,8 +166,10 @@ final class NoseConflict {
             return NoseCompensation.Suspend.NONE;
         }
         Found found = find(b, functions);
+        String on = turningOn(b, functions);
         if (found != null && found.under() == Under.FOR_THE_BLOCK
-                || b.words().stream().anyMatch(w -> w.letter() == Letter.T)) {
+                || b.words().stream().anyMatch(w -> w.letter() == Letter.T)
+                || on != null && !on.equals(before.g())) {
             return NoseCompensation.Suspend.FOR_THE_BLOCK;
         }
         return NoseCompensation.Suspend.NONE;

@@ -254,7 +254,7 @@ public enum Code {
     E172_NOSE_INTERFERENCE(172),
     /** Nose compensation: a concave arc smaller than the nose radius. */
     E173_NOSE_ARC_TOO_TIGHT(173),
-    /** Nose compensation: G41 to G42 (or back) without G40 between. */
+    /** Nose compensation (warning): G41 to G42 (or back) without G40 between; the control changes sides. */
     E174_NOSE_SIDE_CHANGE(174),
     /** Nose compensation (warning): the program ends with G41/G42 in force. */
     E175_NOSE_AT_END(175),
