@@ -5,6 +5,7 @@ import static gcnc.check.NoseMoves.before;
 import static gcnc.check.NoseMoves.from;
 import static gcnc.check.NoseMoves.line;
 import static gcnc.check.NoseMoves.path;
+import static gcnc.check.NoseMoves.startingAt;
 import static gcnc.check.NoseMoves.still;
 import static gcnc.check.NoseMoves.to;
 import static gcnc.check.NoseMoves.with;
@@ -35,7 +36,9 @@ import java.util.List;
  * they end.
  *
  * <p>To place a corner it must see the next move: the block before it is held back until then,
- * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Errors:
+ * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Blocks the
+ * control runs under G41/G42 without offsetting them (G28, a T word, a cycle other than G70, a side
+ * change: {@link Suspend}) end the compensated path and start it again after them. Errors:
  * E170 (start-up shorter than the radius), E171 (an arc starts or cancels), E172 (a concave corner
  * the nose does not fit), E173 (a concave arc tighter than the nose), E175 (the program ends under
  * G41/G42, a warning), E177 (a note: the offset has no nose radius, nothing is moved), E179 (a
@@ -343,26 +346,6 @@ final class NoseCompensation {
         return b;
     }
 
-    /**
-     * The block with its move {@code first} starting at {@code from}, where the tool stands: a line
-     * goes from there; an arc (E171 reported) or a thread pass is reached by a straight move first,
-     * so the path stays whole.
-     */
-    private static CheckedBlock startingAt(CheckedBlock b, Motion first, Point from) {
-        List<Motion> ms = new ArrayList<>(before(b, first));
-        if (first instanceof Motion.Linear) {
-            ms.add(line(first, from, to(first)));
-        } else {
-            if (from.distanceTo(from(first)) > NoseGeometry.NOTHING) {
-                ms.add(first instanceof Motion.Arc a ? line(a, from, a.from())
-                        : new Motion.Linear(true, from, from(first), null));
-            }
-            ms.add(first);
-        }
-        ms.addAll(after(b, first));
-        return with(b, ms, b.end());
-    }
-
     /** Ends the pending block perpendicular to its element's end (no next move to meet); returns the nose centre there. */
     private Point closePerpendicular(List<CheckedBlock> emit) {
         if (pending == null) {
@@ -447,38 +430,10 @@ final class NoseCompensation {
         }
     }
 
-    /**
-     * E179, once per block: a compensated move beyond the travel (the checker judged the programmed
-     * point, which may be inside while the tool, r off it, is not).
-     */
+    /** E179, once per block: a compensated move beyond the travel ({@link NoseTravel}). */
     private CheckedBlock travel(CheckedBlock b, Info info) {
-        for (Motion m : b.motions()) {
-            double[] box;
-            if (m instanceof Motion.Arc a) {
-                box = gcnc.ir.ArcGeometry.bounds(a);
-            } else if (m instanceof Motion.Linear l) {
-                // its start is the end of the move before, judged there
-                box = new double[] {l.to().x(), l.to().x(), l.to().z(), l.to().z()};
-            } else {
-                continue;
-            }
-            if (beyond("X", profile.x(), box[0], box[1], info) || beyond("Z", profile.z(), box[2], box[3], info)) {
-                break;
-            }
-        }
+        NoseTravel.check(b, info.at(), profile, out);
         return b;
-    }
-
-    private boolean beyond(String name, gcnc.machine.Axis a, double min, double max, Info info) {
-        double at = min < a.min() - 0.5 ? min : max > a.max() + 0.5 ? max : Double.NaN;
-        if (Double.isNaN(at)) {
-            return false;
-        }
-        double per = a.countsPerMm();
-        out.error(Code.E179_NOSE_BEYOND_TRAVEL, info.at(), name, gcnc.check.geom.NumberText.plain(at / per, 3),
-                gcnc.check.geom.NumberText.plain(a.min() / per, 3), gcnc.check.geom.NumberText.plain(a.max() / per, 3),
-                profile.name());
-        return true;
     }
 
     private void flushHeld(List<CheckedBlock> emit) {

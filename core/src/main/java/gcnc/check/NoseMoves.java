@@ -78,4 +78,24 @@ final class NoseMoves {
         return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), motions, b.after(), last, b.frame(),
                 b.origin());
     }
+
+    /**
+     * The block with its move {@code first} starting at {@code from}, where the tool stands: a line
+     * goes from there; an arc (E171 reported) or a thread pass is reached by a straight move first,
+     * so the path stays whole.
+     */
+    static CheckedBlock startingAt(CheckedBlock b, Motion first, Point from) {
+        List<Motion> ms = new ArrayList<>(before(b, first));
+        if (first instanceof Motion.Linear) {
+            ms.add(line(first, from, to(first)));
+        } else {
+            if (from.distanceTo(from(first)) > NoseGeometry.NOTHING) {
+                ms.add(first instanceof Motion.Arc a ? line(a, from, a.from())
+                        : new Motion.Linear(true, from, from(first), null));
+            }
+            ms.add(first);
+        }
+        ms.addAll(after(b, first));
+        return with(b, ms, b.end());
+    }
 }
