@@ -47,11 +47,26 @@ class TappingTest {
         assertEquals("5:20:E180", Run.of("haas", HEAD + "G84 X0. Z-0.6 R0.2 P-1 F15.\nG80\nM30\n").errors());
     }
 
-    /** Fanuc's G84 is the face tapping cycle of live tooling (C axis, R incremental): not supported yet, named. */
+    /**
+     * Fanuc G83/G84 on the centre line (control key cycle.drill_words = fanuc): R is the distance
+     * from the initial level to the R point, Q the peck in least increments; what needs live
+     * tooling (C, H), W, K repeats and peck tapping are not supported yet (E188).
+     */
     @Test
-    void fanucG84IsNotSupportedYet() {
-        Run r = Run.of("fanuc", "G21 G99\nT0101\nG97 S300 M03\nG00 X0. Z5.\nG84 Z-15. R-3. F1.25\nM30\n");
-        assertEquals("5:1:E110", r.errors());
-        assertTrue(r.messages().contains("G84 face tapping cycle is not supported yet"), r.messages());
+    void fanucG83AndG84OnTheCentreLine() {
+        String head = "G21 G99\nT0101\nG97 S300 M03\nG00 X0. Z5.\n";
+        Run r = Run.of("fanuc", head + "G83 Z-12. R-3. Q5000 F0.1\nG80\nG84 Z-10. R-3. F1.\nG80\nM30\n");
+        assertEquals("", r.errors());
+        // the R point at Z2 (3 below the initial Z5), two pecks of 5 and the last 4, the tap reversing
+        List<String> g83 = r.blocks.stream().filter(b -> b.line() == 5).flatMap(b -> b.motions().stream())
+                .map(m -> ((gcnc.ir.Motion.Linear) m)).map(l -> (l.rapid() ? "G00 " : "G01 ")
+                        + Math.round((l.to().z() - 50000) / 500.0)).toList();
+        assertEquals(List.of("G00 2", "G01 -3", "G00 2", "G00 -2", "G01 -8", "G00 2", "G00 -7", "G01 -12", "G00 5"), g83);
+        assertEquals("4 3", spindle(r, 7));
+        assertEquals("5:16:E013", Run.of("fanuc", head + "G83 Z-12. R-3. Q5. F0.1\nM30\n").errors());
+        assertEquals("5:5:E188", Run.of("fanuc", head + "G83 C90. Z-12. R-3. F0.1\nM30\n").errors());
+        assertEquals("5:5:E188", Run.of("fanuc", head + "G83 W-12. R-3. F0.1\nM30\n").errors());
+        assertEquals("5:21:E188", Run.of("fanuc", head + "G83 Z-12. R-3. F0.1 K2\nM30\n").errors());
+        assertEquals("5:16:E188", Run.of("fanuc", head + "G84 Z-10. R-3. Q1000 F1.\nM30\n").errors());
     }
 }

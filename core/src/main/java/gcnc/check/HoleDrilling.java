@@ -36,6 +36,9 @@ final class HoleDrilling {
     private static final double EPS_MM = 0.001;
     private static final Set<Letter> OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.I, Letter.J, Letter.K,
             Letter.L);
+    /** Fanuc's words (control key cycle.drill_words = fanuc): R, P the dwell, Q the peck, K the repeats. */
+    private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.C,
+            Letter.H);
 
     private final Checker host;
     /** The cycle in force, or null; its name, group and what later blocks keep. */
@@ -77,10 +80,12 @@ final class HoleDrilling {
         Units u = host.state().units();
         MachineProfile p = host.profile();
         double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
-        Set<Letter> own = EnumSet.copyOf(OWN);
+        boolean fanuc = p.control().fanucDrilling();
+        // Fanuc's Q counts least increments of input (IS-B), as G74/G75's P and Q do
+        double increment = u == Units.INCH ? 0.0001 : 0.001;
         Word at = g;
-        CycleWords words = CycleWords.read(b, g, label, own, Set.of(),
-                noPoint, 1, w -> isCycle(w), host.out());
+        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN, fanuc ? Set.of(Letter.Q) : Set.of(),
+                noPoint, increment, w -> isCycle(w), host.out());
         List<CheckedBlock> done = new ArrayList<>();
         List<Word> passOn = words != null ? words.passOn() : CycleBlocks.passOn(b, g, this::isCycle);
         CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
@@ -93,7 +98,7 @@ final class HoleDrilling {
         if (at == null) {
             at = words.axes().get(0);
         }
-        if (!check(words, role, label, g)) {
+        if (!(fanuc ? checkFanuc(words, role, label) : check(words, role, label, g))) {
             if (g != null) {
                 modal.end();
             }
@@ -115,7 +120,9 @@ final class HoleDrilling {
         }
         double zOrigin = c.origin(start.next()).z();
         double holeBottom = newZ ? end.z() : bottom;
-        double plane = words.has(Letter.R) ? zOrigin + words.value(Letter.R) * perZ : g != null ? a.z() : rPlane;
+        // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle starts) to it
+        double plane = !words.has(Letter.R) ? g != null ? a.z() : rPlane
+                : (fanuc ? a.z() : zOrigin) + words.value(Letter.R) * perZ;
         double eps = EPS_MM * p.z().countsPerMm();
         double toBottom = holeBottom - a.z();
         double toPlane = plane - a.z();
@@ -185,7 +192,9 @@ final class HoleDrilling {
             }
         }
         RawBlock pause = null;
-        if (modal.kind() == GRole.SPOT_DRILL_CYCLE && dwell != null) {
+        boolean dwells = modal.kind() == GRole.SPOT_DRILL_CYCLE
+                || p.control().fanucDrilling() && NumberText.decimal(dwell == null ? "0" : dwell.number()) > 0;
+        if (dwells && dwell != null) {
             String g04 = p.control().gFor(GRole.DWELL).map(f -> f.name().substring(1)).orElseThrow();
             pause = new RawBlock(b.line(), List.of(new Word(Letter.G, g04, at.span()),
                     new Word(Letter.P, dwell.number(), at.span())), at.span(), false);
@@ -238,6 +247,46 @@ final class HoleDrilling {
         int code = host.profile().control().mFor(role).orElseThrow().code();
         return new RawBlock(b.line(), List.of(new Word(Letter.M, String.format("%02d", code), at.span())), at.span(),
                 false);
+    }
+
+    /**
+     * Fanuc's words (G83, G84 on the spindle axis): C/H (C-axis positioning of live tooling), W (the
+     * bottom from the R point) and K other than 1 are not supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
+     * feed); P the dwell at the bottom, zero or more. False after the first error.
+     */
+    private boolean checkFanuc(CycleWords words, GRole role, String label) {
+        for (Letter l : List.of(Letter.C, Letter.H)) {
+            if (words.has(l)) {
+                // a hole off the centre line, by the C axis: live tooling
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(l).span(), label, words.word(l),
+                        Phrase.DRILL_C_AXIS.arg());
+                return false;
+            }
+        }
+        for (Word w : words.axes()) {
+            if (w.letter() == Letter.W) {
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, w.span(), label, w, Phrase.DRILL_BOTTOM_W.arg());
+                return false;
+            }
+        }
+        if (words.has(Letter.K) && words.value(Letter.K) != 1) {
+            host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.K).span(), label,
+                    words.word(Letter.K), Phrase.DRILL_REPEATS.arg());
+            return false;
+        }
+        if (words.has(Letter.Q) && role.tapCycle()) {
+            host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.Q).span(), label,
+                    words.word(Letter.Q), Phrase.TAP_PECK.arg());
+            return false;
+        }
+        for (Letter l : List.of(Letter.Q, Letter.P)) {
+            if (words.has(l) && (l == Letter.Q ? words.value(l) <= 0 : words.value(l) < 0)) {
+                host.out().error(Code.E180_PECK_NOT_POSITIVE, words.word(l).span(), label, words.word(l),
+                        l == Letter.Q ? "the peck depth" : "the dwell");
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The words this cycle takes, with the right signs; false after the first error. */

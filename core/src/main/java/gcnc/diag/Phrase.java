@@ -53,6 +53,10 @@ public enum Phrase {
     DRILL_CLEARANCE,
     /** E188: L repeats. */
     DRILL_REPEATS,
+    /** E188: C or H on a Fanuc drilling cycle (live tooling). */
+    DRILL_C_AXIS,
+    /** E188: W on a Fanuc drilling cycle (the bottom from the R point). */
+    DRILL_BOTTOM_W,
     /** E188: Q on a tapping cycle (peck tapping). */
     TAP_PECK,
     /** E182: G83 without Q or I. */

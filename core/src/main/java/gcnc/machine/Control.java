@@ -42,13 +42,17 @@ import java.util.TreeMap;
  * @param pocketWalls       a type II G71/G72 leaves its allowance along the cutting axis on every
  *                          wall of a pocket (Haas, "Troughs"); else such an allowance with a pocket
  *                          is E189 (Fanuc: W must be 0)
+ * @param fanucDrilling     the drilling and tapping cycles (G83, G84) take Fanuc's words: R the
+ *                          distance from the initial level to the R point, Q the peck in least
+ *                          increments, K the repeats; else Haas's (R the R plane's Z, Q a length,
+ *                          I J K the pecks)
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
-                      double peckRetractMm, boolean pocketWalls) {
+                      double peckRetractMm, boolean pocketWalls, boolean fanucDrilling) {
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
 

@@ -25,7 +25,7 @@ public final class ControlLoader {
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
-            "cycle.peck_retract_mm", "cycle.pocket_allowance");
+            "cycle.peck_retract_mm", "cycle.pocket_allowance", "cycle.drill_words");
 
     private ControlLoader() {
     }
@@ -94,7 +94,8 @@ public final class ControlLoader {
                 retract(f), calls(f),
                 f.choice("macros", "none", "none", "fanuc-b").equals("fanuc-b"),
                 length(f, "cycle.peck_retract_mm"),
-                f.choice("cycle.pocket_allowance", "uniform", "uniform", "walls").equals("walls"));
+                f.choice("cycle.pocket_allowance", "uniform", "uniform", "walls").equals("walls"),
+                f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"));
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */
