@@ -231,6 +231,24 @@ class NoseCompensationTest {
         assertEquals("", codes(cancel, gcnc.diag.Severity.WARNING));
     }
 
+    /** The same rules on haas and on fanuc-b, whose position register is G92 (G92 S alone only clamps the spindle). */
+    @Test
+    void theTemporaryCancelOnHaasAndFanucB() {
+        Run haas = Run.of("haas", "G20 G99\nT101\nG97 S1000 M03\nG00 X2.5 Z0.2\nG42 G00 X0.8 Z0.1\nG01 Z-0.5 F0.01\n"
+                + "G28 U0.\nG00 X1.2 Z0.1\nG40 G00 X2.5\nM30\n");
+        assertEquals("", errs(haas));
+        assertEquals("E620@7:1 [G28, G42]", codes(haas, gcnc.diag.Severity.WARNING));
+        String b = "G21 G95\nT0101\nG97 S1000 M03\nG00 X60. Z5.\nG42 G00 X20. Z2.\nG01 Z-10. F0.2\n";
+        Run register = Run.of(Run.profileWithControl("fanuc", "fanuc-b"), b + "G92 X20. Z-10.\nG00 X30. Z2.\n"
+                + "G40 G00 X60.\nM30\n", Checker.ERROR_CAP);
+        assertEquals("", errs(register));
+        assertEquals("E620@7:1 [G92, G42]", codes(register, gcnc.diag.Severity.WARNING));
+        Run clamp = Run.of(Run.profileWithControl("fanuc", "fanuc-b"), b + "G92 S2000\nX30.\nG40 G00 X60.\nM30\n",
+                Checker.ERROR_CAP);
+        assertEquals("", errs(clamp));
+        assertEquals("", codes(clamp, gcnc.diag.Severity.WARNING));
+    }
+
     /**
      * A T word under G41/G42: the control takes the new offset (and its nose) from the next move;
      * gcnc ends the compensated path perpendicular and starts it again, with the new nose, from
