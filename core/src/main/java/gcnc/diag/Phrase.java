@@ -21,8 +21,6 @@ public enum Phrase {
     THREAD_HEIGHT,
     /** E195: a G76 second block without its first depth ({0}: the letter). */
     THREAD_FIRST_DEPTH,
-    /** E197: a G32 straight after another pass. */
-    THREAD_CONTINUED,
     /** E197: a Fanuc P/Q depth with a point. */
     THREAD_LEAST_INCREMENTS,
     /** E197: the Haas A word. */
