@@ -67,7 +67,7 @@ public enum Phrase {
     POCKET_UNIFORM,
     /** E189: a pocket too narrow for the allowance on both its walls ({0}: the axis). */
     POCKET_TOO_NARROW,
-    /** E178: a block that would run the modal cycle {0} again. */
+    /** E622-E624: a block that runs the modal cycle {0} again under G41/G42. */
     CYCLE_AGAIN,
     /** E500: what could not be done with a file. */
     IO_CANNOT_READ,
