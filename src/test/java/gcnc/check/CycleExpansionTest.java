@@ -84,8 +84,12 @@ class CycleExpansionTest {
             return "G04 " + d.seconds() + " s";
         }
         if (m instanceof Motion.Thread t) {
-            // a chamfered pull-out (M23): the straight part's end, then the chamfer's
-            return String.format(Locale.ROOT, "THREAD %s%s lead %.5f at %.0f r/min%s",
+            // a continuous G32 thread: each joint; a chamfered pull-out (M23): the straight part's end, then the chamfer's
+            StringBuilder joints = new StringBuilder();
+            for (Point j : t.joints()) {
+                joints.append(at(j, f)).append(" THEN ");
+            }
+            return String.format(Locale.ROOT, "THREAD %s%s%s lead %.5f at %.0f r/min%s", joints,
                     t.chamfered() ? at(t.chamferStart(), f) + " CHAMFER " : "", at(t.to(), f), t.lead() / f.perZ(),
                     t.rpm(), t.reverse() ? " M04" : "");
         }

@@ -114,8 +114,9 @@ class ThreadErrorsTest {
         String g92 = "G92 X23. Z-25. F1.5\nG00 X40.\n";
         assertEquals("", Run.of("haas", haas + g92 + "M30\n").errors());
         assertEquals("", Run.of("haas", haas + "M24\nM23\nG00 X30.\n" + g92 + "M30\n").errors());
-        // a G32 right after another thread pass: one continuous thread, not supported yet
-        assertEquals("7:1:E197", fanuc("G00 X23.\nG32 Z-25. F1.5\nZ-27.\nG00 X30.\nM30\n"));
+        // a G32 right after another thread pass is one continuous thread (ThreadContinuousTest): no
+        // longer E197, as the Haas and Fanuc manuals run consecutive G32 blocks as one thread
+        assertEquals("", fanuc("G00 X23.\nG32 Z-25. F1.5\nZ-27.\nG00 X30.\nM30\n"));
     }
 
     @Test

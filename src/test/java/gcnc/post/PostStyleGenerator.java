@@ -47,8 +47,7 @@ final class PostStyleGenerator {
      * construct here that has started to check clean, so it is not forgotten).
      * lex: CORNER_CHAMFER_RADIUS, DOS_EOF_BYTE; comp: ROUGH_UNDER_G42, DRILL_G83_FANUC, TAP_G84.
      */
-    static final Set<Construct> PENDING = EnumSet.of(
-            Construct.ROUGH_UNDER_G42, Construct.DRILL_G83_FANUC, Construct.TAP_G84);
+    static final Set<Construct> PENDING = EnumSet.noneOf(Construct.class);
 
     /**
      * Constructs the posts write that gcnc does not accept yet and that no helper of issue 17 is

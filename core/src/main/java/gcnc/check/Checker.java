@@ -79,6 +79,8 @@ public final class Checker {
     private NoseCompensation nose;
     /** What the control runs but may not be meant: offset 00 cuts, a feed mode without F, C-axis codes. */
     private Advisories advisories;
+    /** Consecutive G32 blocks: one continuous thread (docs/threading.md). */
+    private final ThreadChain threadChain;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
     /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
     private CornerInsertion corners = new CornerInsertion(this);
@@ -117,6 +119,12 @@ public final class Checker {
         this.cycles = new CycleExpansion(this);
         this.nose = new NoseCompensation(profile, out);
         this.advisories = new Advisories(functions);
+        this.threadChain = new ThreadChain(out);
+    }
+
+    /** Where Threading marks its G32 passes for the continuous threads. */
+    ThreadChain threadChain() {
+        return threadChain;
     }
 
     /** The modal state after the last accepted block. */
@@ -130,7 +138,20 @@ public final class Checker {
      * a G90/G94 block gives its moves.
      */
     public List<CheckedBlock> check(RawBlock b) {
-        List<CheckedBlock> made = checkBlock(b);
+        List<CheckedBlock> made = compensated(b, checkBlock(b));
+        if (threadChain.idle()) {
+            return made; // no G32 held or made: nothing to join
+        }
+        List<CheckedBlock> emit = new java.util.ArrayList<>(made.size() + 1);
+        threadChain.accept(made, emit);
+        if (state.ended()) {
+            threadChain.end(emit);
+        }
+        return emit;
+    }
+
+    /** The blocks through the nose radius compensation (G41/G42), which may hold some back. */
+    private List<CheckedBlock> compensated(RawBlock b, List<CheckedBlock> made) {
         if (noseInfo.isEmpty() && !nose.active()) {
             return made; // no G41/G42 before or in these blocks: nothing to offset, nothing held
         }
@@ -209,10 +230,16 @@ public final class Checker {
         // the compensation in force, or the one the block turns on ("G42"); null when neither
         boolean inForce = state.nose() != NoseSide.OFF;
         String compensation = inForce ? state.nose().g() : NoseConflict.turningOn(b, functions);
-        Word conflict = compensation == null ? null : NoseConflict.find(b, functions, inForce);
-        if (conflict != null) {
-            out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, conflict.span(), conflict, compensation);
-            return List.of();
+        if (compensation != null && !NoseConflict.judge(b, functions, inForce, compensation, out)) {
+            return List.of(); // E178: the control alarms
+        }
+        Word g10 = OffsetSetting.word(b, functions);
+        if (g10 != null) {
+            return new OffsetSetting(this).run(b, g10, isFirst); // G10 L2: a work offset written by the program
+        }
+        Word g30 = ReferenceReturn.word(b, functions);
+        if (g30 != null) {
+            return new ReferenceReturn(this).run(b, g30, isFirst); // G30: to the profile's reference.N
         }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
@@ -220,10 +247,8 @@ public final class Checker {
         }
         if (cycles.repeats(b)) {
             if (compensation != null) {
-                // a modal cycle (G90/G94, G92, G32, G81-G83) would run again: not under compensation
-                out.error(Code.E178_NOSE_FUNCTION_IN_FORCE, b.words().get(0).span(),
-                        gcnc.diag.Phrase.CYCLE_AGAIN.with(cycles.repeating(b)), compensation);
-                return List.of();
+                // a modal cycle (G90/G94, G92, G32, G81-G83) runs again, with the compensation suspended
+                NoseConflict.again(b, cycles.repeating(b), functions, inForce, compensation, out);
             }
             return cycles.repeat(b, isFirst);
         }
@@ -275,7 +300,9 @@ public final class Checker {
         if (state.nose() != NoseSide.OFF || d.prior.nose() != NoseSide.OFF) {
             // a block without this record has G40 in force before and after it (most blocks: nothing allocated)
             noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
-                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span()));
+                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span(),
+                    NoseConflict.suspend(b, functions, d.prior.nose(),
+                            origin == null ? null : origin.cycle(), thread != null)));
         }
         return Optional.of(made);
     }
@@ -370,6 +397,7 @@ public final class Checker {
         c.nose = nose.copy(c.out);
         c.advisories = advisories.copy();
         c.corners = corners.copy(c);
+        c.coordinates.takeWork(coordinates); // work offsets written by G10 so far
         c.blocks = blocks;
         c.seenN.or(seenN);
         c.warnedM.or(warnedM);

@@ -110,6 +110,16 @@ final class CycleBlocks {
      */
     static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, int dwellAfter, RawBlock dwell) {
+        return write(host, name, line, at, moves, passes, start,
+                dwell == null ? java.util.Map.of() : java.util.Map.of(dwellAfter, List.of(dwell)));
+    }
+
+    /**
+     * The moves as blocks, as above, with the blocks of {@code after} checked right after the move
+     * of their index (a dwell at a hole's bottom, a tap's spindle reversal).
+     */
+    static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
+                                    ModalState start, java.util.Map<Integer, List<RawBlock>> after) {
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
         List<CheckedBlock> done = new ArrayList<>();
         Point from = start.position();
@@ -117,9 +127,12 @@ final class CycleBlocks {
             Move m = moves.get(i);
             CycleOrigin origin = new CycleOrigin(name, m.pass(), passes, line, -1, -1, false);
             Optional<CheckedBlock> r = host.one(writer.block(m, from), false, origin);
-            if (r.isPresent() && i == dwellAfter && dwell != null) {
+            for (RawBlock extra : after.getOrDefault(i, List.of())) {
+                if (r.isEmpty()) {
+                    break;
+                }
                 done.add(r.get());
-                r = host.one(dwell, false, origin);
+                r = host.one(extra, false, origin);
             }
             if (r.isEmpty()) {
                 CycleExpansion.abandon(host, writer, start.position(), origin).ifPresent(done::add);

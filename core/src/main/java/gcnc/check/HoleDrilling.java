@@ -36,6 +36,9 @@ final class HoleDrilling {
     private static final double EPS_MM = 0.001;
     private static final Set<Letter> OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.I, Letter.J, Letter.K,
             Letter.L);
+    /** Fanuc's words (control key cycle.drill_words = fanuc): R, P the dwell, Q the peck, K the repeats. */
+    private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.C,
+            Letter.H);
 
     private final Checker host;
     /** The cycle in force, or null; its name, group and what later blocks keep. */
@@ -77,10 +80,12 @@ final class HoleDrilling {
         Units u = host.state().units();
         MachineProfile p = host.profile();
         double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
-        Set<Letter> own = EnumSet.copyOf(OWN);
+        boolean fanuc = p.control().fanucDrilling();
+        // Fanuc's Q counts least increments of input (IS-B), as G74/G75's P and Q do
+        double increment = u == Units.INCH ? 0.0001 : 0.001;
         Word at = g;
-        CycleWords words = CycleWords.read(b, g, label, own, Set.of(),
-                noPoint, 1, w -> isCycle(w), host.out());
+        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN, fanuc ? Set.of(Letter.Q) : Set.of(),
+                noPoint, increment, w -> isCycle(w), host.out());
         List<CheckedBlock> done = new ArrayList<>();
         List<Word> passOn = words != null ? words.passOn() : CycleBlocks.passOn(b, g, this::isCycle);
         CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
@@ -93,7 +98,7 @@ final class HoleDrilling {
         if (at == null) {
             at = words.axes().get(0);
         }
-        if (!check(words, role, label, g)) {
+        if (!(fanuc ? checkFanuc(words, role, label) : check(words, role, label, g))) {
             if (g != null) {
                 modal.end();
             }
@@ -115,7 +120,9 @@ final class HoleDrilling {
         }
         double zOrigin = c.origin(start.next()).z();
         double holeBottom = newZ ? end.z() : bottom;
-        double plane = words.has(Letter.R) ? zOrigin + words.value(Letter.R) * perZ : g != null ? a.z() : rPlane;
+        // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle starts) to it
+        double plane = !words.has(Letter.R) ? g != null ? a.z() : rPlane
+                : (fanuc ? a.z() : zOrigin) + words.value(Letter.R) * perZ;
         double eps = EPS_MM * p.z().countsPerMm();
         double toBottom = holeBottom - a.z();
         double toPlane = plane - a.z();
@@ -159,6 +166,10 @@ final class HoleDrilling {
             host.out().report(gcnc.diag.Diagnostic.warning(Code.E186_DRILL_OFF_CENTRE, x.span(), label,
                     NumberText.plain(holeX, 4)));
         }
+        if (modal.kind().tapCycle()) {
+            done.addAll(tap(b, at, start, end.x(), label));
+            return done;
+        }
         double clearance = p.control().peckRetractMm();
         if (modal.kind() == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, at.span(), label,
@@ -181,13 +192,101 @@ final class HoleDrilling {
             }
         }
         RawBlock pause = null;
-        if (modal.kind() == GRole.SPOT_DRILL_CYCLE && dwell != null) {
+        boolean dwells = modal.kind() == GRole.SPOT_DRILL_CYCLE
+                || p.control().fanucDrilling() && NumberText.decimal(dwell == null ? "0" : dwell.number()) > 0;
+        if (dwells && dwell != null) {
             String g04 = p.control().gFor(GRole.DWELL).map(f -> f.name().substring(1)).orElseThrow();
             pause = new RawBlock(b.line(), List.of(new Word(Letter.G, g04, at.span()),
                     new Word(Letter.P, dwell.number(), at.span())), at.span(), false);
         }
         done.addAll(CycleBlocks.write(host, modal.name(), b.line(), at.span(), moves, 1, start, bottomFeed, pause));
         return done;
+    }
+
+    /**
+     * G84/G184 (Haas): a rapid to the hole's X, a rapid to the R plane, the tap fed to the bottom
+     * (then the dwell P, if any), the spindle reversed (M04 after M03, M03 after M04), the tap fed
+     * back out to the R plane, the spindle turned back, a rapid to the start's Z. The feed is the F
+     * in force (G99: the lead; G98: lead x r/min): gcnc does not gear the tap to the spindle, so the
+     * tap must sit in a floating holder (docs/cycles.md). E629 when the spindle turns against the
+     * tap (M04 for G84, M03 for G184).
+     */
+    private List<CheckedBlock> tap(RawBlock b, Word at, ModalState start, double x, String label) {
+        Point a = start.position();
+        List<Move> moves = new ArrayList<>(5);
+        if (Math.abs(x - a.x()) > EPS_MM * host.profile().x().countsPerMm()) {
+            moves.add(Move.line(true, new Point(x, a.z()), 1));
+        }
+        moves.add(Move.line(true, new Point(x, rPlane), 1));
+        int in = moves.size();
+        moves.add(Move.line(false, new Point(x, bottom), 1));
+        moves.add(Move.line(false, new Point(x, rPlane), 1));
+        moves.add(Move.line(true, new Point(x, a.z()), 1));
+        int turning = start.spindle();
+        boolean rightHand = modal.kind() == GRole.TAP_CYCLE;
+        if (turning == (rightHand ? 4 : 3)) {
+            host.out().report(gcnc.diag.Diagnostic.warning(Code.E629_TAP_AGAINST_SPINDLE, at.span(), label,
+                    rightHand ? "M04" : "M03", rightHand ? "M03" : "M04"));
+        }
+        gcnc.machine.MRole forward = turning == 4 ? gcnc.machine.MRole.SPINDLE_CCW : gcnc.machine.MRole.SPINDLE_CW;
+        gcnc.machine.MRole back = forward == gcnc.machine.MRole.SPINDLE_CW ? gcnc.machine.MRole.SPINDLE_CCW
+                : gcnc.machine.MRole.SPINDLE_CW;
+        List<RawBlock> bottomBlocks = new ArrayList<>(2);
+        if (dwell != null && NumberText.decimal(dwell.number()) > 0) {
+            String g04 = host.profile().control().gFor(GRole.DWELL).map(f -> f.name().substring(1)).orElseThrow();
+            bottomBlocks.add(new RawBlock(b.line(), List.of(new Word(Letter.G, g04, at.span()),
+                    new Word(Letter.P, dwell.number(), at.span())), at.span(), false));
+        }
+        bottomBlocks.add(spindle(b, back, at));
+        return CycleBlocks.write(host, modal.name(), b.line(), at.span(), moves, 1, start,
+                java.util.Map.of(in, bottomBlocks, in + 1, List.of(spindle(b, forward, at))));
+    }
+
+    /** A block of the spindle M code of {@code role} on this control, at the cycle's line. */
+    private RawBlock spindle(RawBlock b, gcnc.machine.MRole role, Word at) {
+        int code = host.profile().control().mFor(role).orElseThrow().code();
+        return new RawBlock(b.line(), List.of(new Word(Letter.M, String.format("%02d", code), at.span())), at.span(),
+                false);
+    }
+
+    /**
+     * Fanuc's words (G83, G84 on the spindle axis): C/H (C-axis positioning of live tooling), W (the
+     * bottom from the R point) and K other than 1 are not supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
+     * feed); P the dwell at the bottom, zero or more. False after the first error.
+     */
+    private boolean checkFanuc(CycleWords words, GRole role, String label) {
+        for (Letter l : List.of(Letter.C, Letter.H)) {
+            if (words.has(l)) {
+                // a hole off the centre line, by the C axis: live tooling
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(l).span(), label, words.word(l),
+                        Phrase.DRILL_C_AXIS.arg());
+                return false;
+            }
+        }
+        for (Word w : words.axes()) {
+            if (w.letter() == Letter.W) {
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, w.span(), label, w, Phrase.DRILL_BOTTOM_W.arg());
+                return false;
+            }
+        }
+        if (words.has(Letter.K) && words.value(Letter.K) != 1) {
+            host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.K).span(), label,
+                    words.word(Letter.K), Phrase.DRILL_REPEATS.arg());
+            return false;
+        }
+        if (words.has(Letter.Q) && role.tapCycle()) {
+            host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.Q).span(), label,
+                    words.word(Letter.Q), Phrase.TAP_PECK.arg());
+            return false;
+        }
+        for (Letter l : List.of(Letter.Q, Letter.P)) {
+            if (words.has(l) && (l == Letter.Q ? words.value(l) <= 0 : words.value(l) < 0)) {
+                host.out().error(Code.E180_PECK_NOT_POSITIVE, words.word(l).span(), label, words.word(l),
+                        l == Letter.Q ? "the peck depth" : "the dwell");
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The words this cycle takes, with the right signs; false after the first error. */
@@ -203,12 +302,19 @@ final class HoleDrilling {
                 continue;
             }
             boolean peckWord = l != Letter.P;
-            if (peckWord && role != GRole.PECK_DRILL_CYCLE || !peckWord && role != GRole.SPOT_DRILL_CYCLE) {
+            if (peckWord && role.tapCycle()) {
+                // the Fusion posts' "tapping with chip breaking" (G84 ... Q)
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, w.span(), label, w, Phrase.TAP_PECK.arg());
+                return false;
+            }
+            if (peckWord && role != GRole.PECK_DRILL_CYCLE
+                    || !peckWord && role != GRole.SPOT_DRILL_CYCLE && !role.tapCycle()) {
                 host.out().error(Code.E161_CYCLE_WORD, w.span(), label, w);
                 return false;
             }
             double v = words.value(l);
-            if (l == Letter.J ? v < 0 : v <= 0) {
+            // a tap's P may be 0 (no dwell at the bottom: the Fusion posts write P0)
+            if (l == Letter.J || l == Letter.P && role.tapCycle() ? v < 0 : v <= 0) {
                 host.out().error(Code.E180_PECK_NOT_POSITIVE, w.span(), label, w, switch (l) {
                     case Q -> "the peck depth";
                     case I -> "the first peck";

@@ -5,6 +5,7 @@ import static gcnc.check.NoseMoves.before;
 import static gcnc.check.NoseMoves.from;
 import static gcnc.check.NoseMoves.line;
 import static gcnc.check.NoseMoves.path;
+import static gcnc.check.NoseMoves.startingAt;
 import static gcnc.check.NoseMoves.still;
 import static gcnc.check.NoseMoves.to;
 import static gcnc.check.NoseMoves.with;
@@ -35,7 +36,9 @@ import java.util.List;
  * they end.
  *
  * <p>To place a corner it must see the next move: the block before it is held back until then,
- * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Errors:
+ * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Blocks the
+ * control runs under G41/G42 without offsetting them (G28, a T word, a cycle other than G70, a side
+ * change: {@link Suspend}) end the compensated path and start it again after them. Errors:
  * E170 (start-up shorter than the radius), E171 (an arc starts or cancels), E172 (a concave corner
  * the nose does not fit), E173 (a concave arc tighter than the nose), E175 (the program ends under
  * G41/G42, a warning), E177 (a note: the offset has no nose radius, nothing is moved), E179 (a
@@ -45,8 +48,32 @@ final class NoseCompensation {
     /** Blocks without a move gcnc holds while it looks for the next corner. */
     static final int STILL_LIMIT = 10;
 
-    /** What the checker knows of a block besides the block: the side after it, the nose in force, where it is. */
-    record Info(NoseSide side, Nose nose, int offset, Span at) {
+    /**
+     * What the checker knows of a block besides the block: the side after it, the nose in force,
+     * where it is, and whether its moves are made with the compensation suspended.
+     */
+    record Info(NoseSide side, Nose nose, int offset, Span at, Suspend suspend) {
+        Info(NoseSide side, Nose nose, int offset, Span at) {
+            this(side, nose, offset, at, Suspend.NONE);
+        }
+    }
+
+    /**
+     * Blocks the control runs under G41/G42 without offsetting their moves (docs/nose-compensation.md,
+     * "Under G41/G42"): the compensated path ends perpendicular before them, their moves go as
+     * programmed (the first from where the tool stands), and the next move starts the compensation
+     * again as a start-up does.
+     */
+    enum Suspend {
+        /** An ordinary block: offset as the side says. */
+        NONE,
+        /**
+         * Fanuc's temporary cancel: G28, G29, G30, G53, a G50/G92 position register, and a T word
+         * (the new offset's nose applies from the next move).
+         */
+        FOR_THE_BLOCK,
+        /** A block a cycle other than G70 made (roughing, single-pass, thread, peck and drilling cycles) or a G32. */
+        CYCLE
     }
 
     private enum Mode { OFF, ARMED, ACTIVE }
@@ -67,7 +94,11 @@ final class NoseCompensation {
     private final List<CheckedBlock> held = new ArrayList<>();
     /** A G40 without a move was met: the next move is the cancel move. */
     private boolean exiting;
-    /** After E176: the next move starts again from where the tool is, as a start-up does. */
+    /**
+     * Where the tool stands when it is off the programmed point with no compensated element to
+     * follow: after E176, or after a suspension by a block without a move (a T word, G41 under
+     * G42); the next move starts from there.
+     */
     private Point restartFrom;
     /** After E176: the rapid from there to the start of the pending element's offset, sent before it. */
     private Motion lead;
@@ -102,9 +133,13 @@ final class NoseCompensation {
 
     /** Takes the next checked block; what can be sent on is added to {@code emit}, in order. */
     void accept(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+        if (info.suspend() != Suspend.NONE && info.side() != NoseSide.OFF && mode != Mode.OFF && !exiting) {
+            suspend(b, info, emit);
+            return;
+        }
         if (mode == Mode.OFF) {
             if (info.side() == NoseSide.OFF) {
-                emit.add(b);
+                emit.add(resumed(b));
                 return;
             }
             arm(info);
@@ -138,6 +173,7 @@ final class NoseCompensation {
             // after E176: a new start from where the tool stands
             Point start = next.offsetAt(next.from(), e);
             lead = new Motion.Linear(true, restartFrom, tipAt(start), null);
+            restartFrom = null;
             pending = b;
             pendingInfo = info;
             pendingElement = next;
@@ -174,7 +210,6 @@ final class NoseCompensation {
         tip = new double[] {v[0] * n.radius(), v[1] * n.radius()};
         mode = Mode.ARMED;
         exiting = false;
-        restartFrom = null;
         if (n.radius() == 0 && !noted.get(info.offset())) {
             noted.set(info.offset());
             out.report(new Diagnostic(Code.E177_NOSE_NO_RADIUS, gcnc.diag.Severity.NOTE, info.at(),
@@ -187,7 +222,7 @@ final class NoseCompensation {
         List<Motion> path = path(b);
         if (info.side() == NoseSide.OFF) {
             mode = Mode.OFF;
-            emit.add(b);
+            emit.add(resumed(b));
             return;
         }
         if (path.isEmpty()) {
@@ -216,7 +251,7 @@ final class NoseCompensation {
             startNext = next.offsetAt(next.from(), e);
             Motion m = path(pending).get(0);
             List<Motion> ms = new ArrayList<>(before(pending, m));
-            ms.add(line(m, from(m), tipAt(startNext)));
+            ms.add(line(m, startUpFrom(m), tipAt(startNext)));
             ms.addAll(after(pending, m));
             emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
@@ -249,24 +284,66 @@ final class NoseCompensation {
         Point end = closePerpendicular(emit);
         flushHeld(emit);
         Point from = end != null ? tipAt(end) : restartFrom != null ? restartFrom : from(first);
-        List<Motion> ms = new ArrayList<>(before(b, first));
-        if (first instanceof Motion.Arc a) {
-            // E171 reported: the arc as written, reached by a straight move, so the path stays whole
-            if (from.distanceTo(a.from()) > NoseGeometry.NOTHING) {
-                ms.add(line(a, from, a.from()));
-            }
-            ms.add(a);
-        } else {
-            ms.add(line(first, from, to(first)));
-        }
-        ms.addAll(after(b, first));
-        emit.add(travel(with(b, ms, b.end()), info));
+        restartFrom = null;
+        emit.add(travel(startingAt(b, first, from), info));
         mode = Mode.OFF;
         exiting = false;
         if (info.side() != NoseSide.OFF) {
             // the move after a G40 alone, into a new G41/G42 in the same block: start again
             arm(info);
         }
+    }
+
+    /**
+     * A block the control runs without offsetting it ({@link Suspend}): the compensated path ends
+     * perpendicular before it, its first move goes from where the tool stands to its programmed end
+     * (for G28, to the intermediate point: the offset is cancelled there), the rest as programmed;
+     * the next move starts the compensation again (type A), with the nose in force after the block.
+     */
+    private void suspend(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+        Point stands = restartFrom;
+        if (mode == Mode.ACTIVE) {
+            Point end = closePerpendicular(emit);
+            if (end != null) {
+                stands = tipAt(end);
+            }
+        }
+        flushHeld(emit);
+        Motion first = null;
+        for (Motion m : b.motions()) {
+            if (!(m instanceof Motion.Dwell)) {
+                first = m;
+                break;
+            }
+        }
+        if (first != null && stands != null) {
+            emit.add(startingAt(b, first, stands));
+            stands = null;
+        } else {
+            emit.add(b);
+        }
+        mode = Mode.OFF;
+        exiting = false;
+        arm(info);
+        restartFrom = stands; // a block without a move leaves the tool where the path ended
+    }
+
+    /**
+     * The block as it is, or, when a suspension left the tool off the programmed point
+     * ({@link #restartFrom}) and the block moves, with its first move from there.
+     */
+    private CheckedBlock resumed(CheckedBlock b) {
+        if (restartFrom == null) {
+            return b;
+        }
+        for (Motion m : b.motions()) {
+            if (!(m instanceof Motion.Dwell)) {
+                CheckedBlock r = startingAt(b, m, restartFrom);
+                restartFrom = null;
+                return r;
+            }
+        }
+        return b;
     }
 
     /** Ends the pending block perpendicular to its element's end (no next move to meet); returns the nose centre there. */
@@ -280,7 +357,7 @@ final class NoseCompensation {
             end = self.length() > 0 ? self.offsetAt(self.to(), e) : self.to();
             Motion m = path(pending).get(0);
             List<Motion> ms = new ArrayList<>(before(pending, m));
-            ms.add(line(m, from(m), tipAt(end)));
+            ms.add(line(m, startUpFrom(m), tipAt(end)));
             ms.addAll(after(pending, m));
             emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         } else {
@@ -290,6 +367,16 @@ final class NoseCompensation {
         pending = null;
         pendingElement = null;
         return end;
+    }
+
+    /**
+     * Where the start-up move {@code m} begins: its programmed start, or where a block without a
+     * move under a suspension ({@link #suspend}) left the tool.
+     */
+    private Point startUpFrom(Motion m) {
+        Point p = restartFrom != null ? restartFrom : from(m);
+        restartFrom = null;
+        return p;
     }
 
     /**
@@ -343,38 +430,10 @@ final class NoseCompensation {
         }
     }
 
-    /**
-     * E179, once per block: a compensated move beyond the travel (the checker judged the programmed
-     * point, which may be inside while the tool, r off it, is not).
-     */
+    /** E179, once per block: a compensated move beyond the travel ({@link NoseTravel}). */
     private CheckedBlock travel(CheckedBlock b, Info info) {
-        for (Motion m : b.motions()) {
-            double[] box;
-            if (m instanceof Motion.Arc a) {
-                box = gcnc.ir.ArcGeometry.bounds(a);
-            } else if (m instanceof Motion.Linear l) {
-                // its start is the end of the move before, judged there
-                box = new double[] {l.to().x(), l.to().x(), l.to().z(), l.to().z()};
-            } else {
-                continue;
-            }
-            if (beyond("X", profile.x(), box[0], box[1], info) || beyond("Z", profile.z(), box[2], box[3], info)) {
-                break;
-            }
-        }
+        NoseTravel.check(b, info.at(), profile, out);
         return b;
-    }
-
-    private boolean beyond(String name, gcnc.machine.Axis a, double min, double max, Info info) {
-        double at = min < a.min() - 0.5 ? min : max > a.max() + 0.5 ? max : Double.NaN;
-        if (Double.isNaN(at)) {
-            return false;
-        }
-        double per = a.countsPerMm();
-        out.error(Code.E179_NOSE_BEYOND_TRAVEL, info.at(), name, gcnc.check.geom.NumberText.plain(at / per, 3),
-                gcnc.check.geom.NumberText.plain(a.min() / per, 3), gcnc.check.geom.NumberText.plain(a.max() / per, 3),
-                profile.name());
-        return true;
     }
 
     private void flushHeld(List<CheckedBlock> emit) {

@@ -57,14 +57,14 @@ final class NoseMoves {
         return new Motion.Linear(rapid, from, to, rapid ? null : feed);
     }
 
-    /** Where a line or an arc starts. */
+    /** Where a line, an arc or a thread pass starts. */
     static Point from(Motion m) {
-        return m instanceof Motion.Linear l ? l.from() : ((Motion.Arc) m).from();
+        return m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Thread t ? t.from() : ((Motion.Arc) m).from();
     }
 
-    /** Where a line or an arc ends. */
+    /** Where a line, an arc or a thread pass ends. */
     static Point to(Motion m) {
-        return m instanceof Motion.Linear l ? l.to() : ((Motion.Arc) m).to();
+        return m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Thread t ? t.to() : ((Motion.Arc) m).to();
     }
 
     /** The block with other motions, its end where the last of them ends. */
@@ -77,5 +77,25 @@ final class NoseMoves {
         }
         return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), motions, b.after(), last, b.frame(),
                 b.origin());
+    }
+
+    /**
+     * The block with its move {@code first} starting at {@code from}, where the tool stands: a line
+     * goes from there; an arc (E171 reported) or a thread pass is reached by a straight move first,
+     * so the path stays whole.
+     */
+    static CheckedBlock startingAt(CheckedBlock b, Motion first, Point from) {
+        List<Motion> ms = new ArrayList<>(before(b, first));
+        if (first instanceof Motion.Linear) {
+            ms.add(line(first, from, to(first)));
+        } else {
+            if (from.distanceTo(from(first)) > NoseGeometry.NOTHING) {
+                ms.add(first instanceof Motion.Arc a ? line(a, from, a.from())
+                        : new Motion.Linear(true, from, from(first), null));
+            }
+            ms.add(first);
+        }
+        ms.addAll(after(b, first));
+        return with(b, ms, b.end());
     }
 }

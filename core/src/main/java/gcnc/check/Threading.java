@@ -102,8 +102,7 @@ final class Threading {
 
     /**
      * Where the last G32 pass ended, while nothing has moved since; null otherwise. A G32 that
-     * starts there continues the thread without a break: not supported yet (E197), since every
-     * pass gcnc writes waits for the spindle's whole revolution (docs/threading.md).
+     * starts there continues the thread without a break: {@link ThreadChain} joins them.
      */
     private Point continued;
 
@@ -234,14 +233,12 @@ final class Threading {
         if (words.containsKey(Letter.F)) {
             ws.add(words.get(Letter.F));
         }
-        if (continued != null && continued.distanceTo(host.state().position()) <= 1e-6) {
-            host.out().error(Code.E197_THREAD_WORD_VALUE, at, label, axes.get(0),
-                    Phrase.THREAD_CONTINUED.arg());
-            return;
-        }
+        // a G32 where the last one ended, nothing moved between: the same thread goes on (ThreadChain)
+        boolean continues = continued != null && continued.distanceTo(host.state().position()) <= 1e-6;
         Optional<CheckedBlock> r = host.thread(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false,
                 b.blockDelete()), false, null, label, null); // G32 has no pull-out: M23 does not change it
         r.ifPresent(done::add);
+        r.ifPresent(c -> host.threadChain().pass(c, continues));
         continued = r.isPresent() ? host.state().position() : null;
     }
 

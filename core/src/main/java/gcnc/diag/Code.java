@@ -254,7 +254,7 @@ public enum Code {
     E172_NOSE_INTERFERENCE(172),
     /** Nose compensation: a concave arc smaller than the nose radius. */
     E173_NOSE_ARC_TOO_TIGHT(173),
-    /** Nose compensation: G41 to G42 (or back) without G40 between. */
+    /** Nose compensation (warning): G41 to G42 (or back) without G40 between; the control changes sides. */
     E174_NOSE_SIDE_CHANGE(174),
     /** Nose compensation (warning): the program ends with G41/G42 in force. */
     E175_NOSE_AT_END(175),
@@ -262,7 +262,7 @@ public enum Code {
     E176_NOSE_TOO_MANY_STILL_BLOCKS(176),
     /** Nose compensation (note): the tool offset in force has no nose radius in the profile. */
     E177_NOSE_NO_RADIUS(177),
-    /** Nose compensation: a cycle, G28, G29, G53 or a position register with G41/G42 in force. */
+    /** Nose compensation: G31 (skip) with G41/G42 in force, which the control alarms (Fanuc PS0035). */
     E178_NOSE_FUNCTION_IN_FORCE(178),
     /** Nose compensation: the compensated path leaves the travel where the programmed one did not. */
     E179_NOSE_BEYOND_TRAVEL(179),
@@ -420,6 +420,35 @@ public enum Code {
     /** The output named is a directory (or {@code /}), not a file. */
     E502_OUTPUT_IS_DIRECTORY(502),
 
+    // 620-639: the language CAM posts write (issue 17): blocks under nose compensation, G32
+    // sequences, hole cycles, G10/G30/G49.
+    /**
+     * Nose compensation (warning): G28, G29, G30, G53 or a position register under G41/G42; the
+     * control cancels the offset for the block's move and restores it from the next move.
+     */
+    E620_NOSE_CANCELLED_FOR_THE_BLOCK(620),
+    /** Nose compensation (warning): a T word under G41/G42; the new offset's nose applies from the next move. */
+    E621_NOSE_TOOL_CHANGE(621),
+    /** Nose compensation (warning): G71/G72/G73 under G41/G42; the control roughs the offset contour. */
+    E622_NOSE_ROUGHING_CYCLE(622),
+    /** Nose compensation (warning): G90/G94 under G41/G42; the control offsets each path of the cycle. */
+    E623_NOSE_SINGLE_CYCLE(623),
+    /** Nose compensation (warning): a thread, peck or drilling cycle under G41/G42; not offset, the compensation resumes after. */
+    E624_NOSE_NOT_OFFSET(624),
+    /** G10 with an L other than 2 (tool offsets, parameters): not supported yet. */
+    E625_G10_NOT_SUPPORTED(625),
+    /** G10 L2 without P, or with a P that names no work offset (P0-P6). */
+    E626_G10_WORK_OFFSET_NUMBER(626),
+    /** A G32 continues a thread across a block that moves, changes M, S or T, or too many blocks: not supported yet. */
+    E627_THREAD_CONTINUED_ACROSS(627),
+    /** A G32 continues a thread with another lead (or spindle direction): variable lead is not supported yet. */
+    E628_THREAD_LEAD_CHANGES(628),
+    /** A tapping cycle with the spindle turning against the tap (G84 under M04, G184 under M03): warning. */
+    E629_TAP_AGAINST_SPINDLE(629),
+    /** G30 with a P other than 2, 3 or 4. */
+    E630_G30_REFERENCE_NUMBER(630),
+    /** G30 to a reference point the machine profile does not give (reference.N). */
+    E631_G30_NO_REFERENCE(631),
     // 640-659: checker again: what the control runs though the result may not be what was meant
     // (issue 17; tables/error_basis.csv says which control behaviour each rule stands for).
     /** Checker: a thread height above a standard thread's 0.65 x lead but within the sharp V (0.866 x lead): cut as written. */

@@ -21,8 +21,6 @@ public enum Phrase {
     THREAD_HEIGHT,
     /** E195: a G76 second block without its first depth ({0}: the letter). */
     THREAD_FIRST_DEPTH,
-    /** E197: a G32 straight after another pass. */
-    THREAD_CONTINUED,
     /** E197: a Fanuc P/Q depth with a point. */
     THREAD_LEAST_INCREMENTS,
     /** E197: the Haas A word. */
@@ -53,6 +51,12 @@ public enum Phrase {
     DRILL_CLEARANCE,
     /** E188: L repeats. */
     DRILL_REPEATS,
+    /** E188: C or H on a Fanuc drilling cycle (live tooling). */
+    DRILL_C_AXIS,
+    /** E188: W on a Fanuc drilling cycle (the bottom from the R point). */
+    DRILL_BOTTOM_W,
+    /** E188: Q on a tapping cycle (peck tapping). */
+    TAP_PECK,
     /** E182: G83 without Q or I. */
     DRILL_PECK,
     /** E182: G83 J without I and K. */
@@ -63,7 +67,7 @@ public enum Phrase {
     POCKET_UNIFORM,
     /** E189: a pocket too narrow for the allowance on both its walls ({0}: the axis). */
     POCKET_TOO_NARROW,
-    /** E178: a block that would run the modal cycle {0} again. */
+    /** E622-E624: a block that runs the modal cycle {0} again under G41/G42. */
     CYCLE_AGAIN,
     /** E500: what could not be done with a file. */
     IO_CANNOT_READ,

@@ -192,8 +192,9 @@ final class GalilDialect implements Dialect {
      * {@code MF}/{@code MR} for the encoder to pass the next whole revolution (every pass starts at
      * the same spindle angle); {@code GR} engages both axes at the ratios that advance Z one lead
      * per revolution (X in proportion for a taper); {@code MF}/{@code MR} on Z waits for the end of
-     * the straight part. A chamfered pull-out (Haas M23) then changes the ratios while geared
-     * ({@code GR} again: X moves out, Z goes on at the lead) and waits for Z to pass the pass's end.
+     * that segment. At each corner (a continuous G32 thread's joint, a chamfered pull-out's start
+     * under Haas M23) the ratios change while geared ({@code GR} again, no new synchronisation) and
+     * Z's wait moves on to the next segment's end.
      * {@code GR 0,0} disengages, and {@code PA}/{@code BG}/{@code AM} settle both axes on the exact
      * end counts (the few counts the disengagement and the 4-decimal ratios leave).
      */
@@ -204,18 +205,29 @@ final class GalilDialect implements Dialect {
             diagnostics.error(Code.E190_NO_SPINDLE_ENCODER, at(b), profile.name(), "a thread");
             return;
         }
-        long tu = GalilNumbers.round(frame.u(t.to()));
-        long tv = GalilNumbers.round(frame.v(t.to()));
-        long cu = GalilNumbers.round(frame.u(t.straightEnd()));
-        long cv = GalilNumbers.round(frame.v(t.straightEnd()));
-        if (!inRange(b, "PA", tu) || !inRange(b, "PA", tv) || !inRange(b, "MF", cu) || !inRange(b, "MF", cv)) {
-            return;
+        // the geared segments: from, each corner (a continuous thread's joints, a chamfer's start), to
+        List<Point> points = new java.util.ArrayList<>(t.corners().size() + 2);
+        points.add(t.from());
+        points.addAll(t.corners());
+        points.add(t.to());
+        int n = points.size();
+        long[] u = new long[n];
+        long[] v = new long[n];
+        u[0] = posU;
+        v[0] = posV;
+        for (int i = 1; i < n; i++) {
+            u[i] = GalilNumbers.round(frame.u(points.get(i)));
+            v[i] = GalilNumbers.round(frame.v(points.get(i)));
+            String cmd = i == n - 1 ? "PA" : "MF";
+            if (!inRange(b, cmd, u[i]) || !inRange(b, cmd, v[i])) {
+                return;
+            }
         }
-        double[] straight = ratios(enc, t, t.from(), t.straightEnd(), cu - posU, cv - posV);
-        double[] chamfer = t.chamfered() ? ratios(enc, t, t.straightEnd(), t.to(), tu - cu, tv - cv) : null;
-        double largest = Math.max(Math.abs(straight[0]), Math.abs(straight[1]));
-        if (chamfer != null) {
-            largest = Math.max(largest, Math.max(Math.abs(chamfer[0]), Math.abs(chamfer[1])));
+        double[][] ratios = new double[n - 1][];
+        double largest = 0;
+        for (int i = 1; i < n; i++) {
+            ratios[i - 1] = ratios(enc, t, points.get(i - 1), points.get(i), u[i] - u[i - 1], v[i] - v[i - 1]);
+            largest = Math.max(largest, Math.max(Math.abs(ratios[i - 1][0]), Math.abs(ratios[i - 1][1])));
         }
         if (largest > MAX_RATIO) {
             diagnostics.error(Code.E208_GEAR_RATIO_RANGE, at(b), ratio(largest));
@@ -224,28 +236,25 @@ final class GalilDialect implements Dialect {
         String[] plane = {frame.plane().substring(0, 1), frame.plane().substring(1, 2)};
         String encoder = String.valueOf(enc.channel());
         boolean zFirst = frame.plane().charAt(0) == profile.z().galil();
-        long tz = zFirst ? tu : tv;
-        long cz = zFirst ? cu : cv;
-        long z0 = zFirst ? posU : posV;
+        long[] z = zFirst ? u : v;
         out.emit("GA " + positional(plane, encoder, encoder));
         int cpr = enc.countsPerRev();
         String cross = t.reverse() ? "-1" : "+1";
         out.emit(SYNC_VARIABLE + "=(@INT[_TP" + encoder + "/" + cpr + "]" + cross + ")*" + cpr);
         out.emit((t.reverse() ? "MR " : "MF ") + positional(new String[] {encoder}, SYNC_VARIABLE));
-        out.emit("GR " + positional(plane, ratio(straight[0]), ratio(straight[1])));
         String zLetter = String.valueOf(profile.z().galil());
-        String zWait = tz >= z0 ? "MF " : "MR ";
-        if (chamfer != null) {
-            out.emit(zWait + positional(new String[] {zLetter}, Long.toString(cz)));
-            out.emit("GR " + positional(plane, ratio(chamfer[0]), ratio(chamfer[1])));
+        String zWait = z[n - 1] >= z[0] ? "MF " : "MR "; // a thread's Z goes one way through all its segments
+        for (int i = 1; i < n; i++) {
+            out.emit("GR " + positional(plane, ratio(ratios[i - 1][0]), ratio(ratios[i - 1][1])));
+            // wait for Z to pass the segment's end: the next segment's ratios, or the pass's end
+            out.emit(zWait + positional(new String[] {zLetter}, Long.toString(z[i])));
         }
-        out.emit(zWait + positional(new String[] {zLetter}, Long.toString(tz)));
         out.emit("GR " + positional(plane, "0", "0"));
-        out.emit("PA " + positional(plane, Long.toString(tu), Long.toString(tv)));
+        out.emit("PA " + positional(plane, Long.toString(u[n - 1]), Long.toString(v[n - 1])));
         out.emit("BG " + frame.plane());
         out.emit("AM " + frame.plane());
-        posU = tu;
-        posV = tv;
+        posU = u[n - 1];
+        posV = v[n - 1];
     }
 
     /**

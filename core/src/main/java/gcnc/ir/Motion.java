@@ -63,9 +63,34 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
      *                      the straight part, counts/s
      * @param chamferStart  where the straight part ends and the chamfered pull-out begins; null when the
      *                      pass ends square at {@code to} (M24, G32)
+     * @param joints        where the blocks of a continuous G32 thread meet (docs/threading.md,
+     *                      "Continuous threads"): the pass runs geared through each, the ratios changing
+     *                      there without a new synchronisation; empty for a pass of one block
      */
-    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart)
-            implements Motion {
+    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart,
+                  java.util.List<Point> joints) implements Motion {
+        public Thread {
+            joints = java.util.List.copyOf(joints);
+        }
+
+        /** A pass of one block. */
+        public Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart) {
+            this(from, to, lead, rpm, reverse, feed, chamferStart, java.util.List.of());
+        }
+
+        /**
+         * Where the geared ratios change, in order: the joints of a continuous thread, then the
+         * chamfer's start. The pass is {@code corners().size() + 1} geared segments.
+         */
+        public java.util.List<Point> corners() {
+            if (chamferStart == null) {
+                return joints;
+            }
+            java.util.List<Point> all = new java.util.ArrayList<>(joints);
+            all.add(chamferStart);
+            return all;
+        }
+
         /** Whether the pass ends with a chamfered pull-out (two geared segments). */
         public boolean chamfered() {
             return chamferStart != null;

@@ -46,13 +46,18 @@ import java.util.TreeMap;
  *                          it is text (Haas, Fanuc); else comments may span lines and nest is
  *                          error 54 (the thesis's control)
  * @param corners           how a G01 block asks for a chamfer or corner radius at its end
+ * @param fanucDrilling     the drilling and tapping cycles (G83, G84) take Fanuc's words: R the
+ *                          distance from the initial level to the R point, Q the peck in least
+ *                          increments, K the repeats; else Haas's (R the R plane's Z, Q a length,
+ *                          I J K the pecks)
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
-                      double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners) {
+                      double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners,
+                      boolean fanucDrilling) {
     /**
      * G01 chamfering and corner rounding (key {@code g01.corner}, docs/chamfer.md): none; Haas's
      * {@code ,C} and {@code ,R} at any angle, and I or K for a 90-degree chamfer; Fanuc T's

@@ -25,7 +25,8 @@ public final class ControlLoader {
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
-            "cycle.peck_retract_mm", "cycle.pocket_allowance", "comments", "g01.corner");
+            "cycle.peck_retract_mm", "cycle.pocket_allowance", "comments", "g01.corner",
+            "cycle.drill_words");
 
     private ControlLoader() {
     }
@@ -96,7 +97,8 @@ public final class ControlLoader {
                 length(f, "cycle.peck_retract_mm"),
                 f.choice("cycle.pocket_allowance", "uniform", "uniform", "walls").equals("walls"),
                 f.choice("comments", "spanning", "spanning", "line").equals("line"),
-                Control.Corners.valueOf(f.choice("g01.corner", "none", "none", "comma", "letters").toUpperCase()));
+                Control.Corners.valueOf(f.choice("g01.corner", "none", "none", "comma", "letters").toUpperCase()),
+                f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"));
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */

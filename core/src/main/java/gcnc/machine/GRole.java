@@ -9,10 +9,14 @@ package gcnc.machine;
 public enum GRole {
     RAPID(0), LINEAR(1), ARC_CW(2), ARC_CCW(3), DWELL(4), EXACT_STOP(9),
     PLANE_XY(17), PLANE_ZX(18), PLANE_YZ(19), INCH(20), METRIC(21), HOME(28), FROM_HOME(29), SKIP(31),
+    /** G30: return to the second (P2, third P3, fourth P4) reference point via an intermediate point (gcnc.check.ReferenceReturn). */
+    OTHER_HOME(30),
     NOSE_COMP_CANCEL(40),
     /** G41/G42: the checker offsets the path by the nose radius (gcnc.check.NoseCompensation). */
     NOSE_COMP_LEFT(41), NOSE_COMP_RIGHT(42),
     REGISTER_AND_CLAMP(50), MACHINE_COORDINATES(53),
+    /** G10 L2: a work offset written by the program (gcnc.check.OffsetSetting), handled before the syntax actions. */
+    SET_OFFSETS(10),
     /**
      * G70 finishing along a contour, G71 stock removal in turning, G72 stock removal in facing,
      * G73 pattern repeat:
@@ -35,6 +39,12 @@ public enum GRole {
      * peck drill), modal in their group until G80 or a motion G: expanded into moves.
      */
     DRILL_CYCLE(81), SPOT_DRILL_CYCLE(82), PECK_DRILL_CYCLE(83),
+    /**
+     * Tapping on the spindle axis (Haas G84, and G184 for a left-hand tap): the tap fed in, the
+     * spindle reversed at the bottom, fed out to the R plane, the spindle turned back; modal as
+     * the drilling cycles.
+     */
+    TAP_CYCLE(84), REVERSE_TAP_CYCLE(184),
     /**
      * Threading, spindle-synchronised (docs/threading.md): G32 one pass (Fanuc B G33, modal in
      * group 1), G92 the single-pass thread cycle (Fanuc B G78, modal in group 1) and G76 the
@@ -85,7 +95,12 @@ public enum GRole {
 
     /** G81, G82 or G83: a drilling cycle on the spindle axis, modal until G80. */
     public boolean drillCycle() {
-        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE;
+        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE || tapCycle();
+    }
+
+    /** G84/G184: a drilling cycle whose spindle reverses at the bottom. */
+    public boolean tapCycle() {
+        return this == TAP_CYCLE || this == REVERSE_TAP_CYCLE;
     }
 
     public boolean motion() {

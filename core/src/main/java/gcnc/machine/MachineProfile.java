@@ -72,6 +72,24 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
         return noses.getOrDefault(n, Nose.NONE);
     }
 
+    /**
+     * Reference point {@code n} (2 to 4: Fanuc G30 P2-P4), from the profile's {@code reference.N =
+     * x, z} in mm as {@code home} (checked inside the travel when the profile was loaded), machine
+     * counts; empty when the profile names none.
+     */
+    public Optional<Point> reference(int n) {
+        Optional<ProfileFile.Entry> e = file == null ? Optional.empty() : file.entry("reference." + n);
+        if (e.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            double[] v = file.pair(e.get());
+            return Optional.of(new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm()));
+        } catch (gcnc.tables.TableException ex) {
+            throw new IllegalStateException("reference." + n + " was checked when the profile was loaded", ex);
+        }
+    }
+
     public Optional<Point> workOffset(int g) {
         return Optional.ofNullable(workOffsets.get(g));
     }

@@ -94,6 +94,11 @@ public final class ProfileLoader {
         boolean counts = f.choice("offsets.unit", "mm", "mm", "counts").equals("counts");
         Point home = position(f, "home", x, z);
         Point machineZero = f.entry("machine_zero").isPresent() ? position(f, "machine_zero", x, z) : home;
+        for (int n = 2; n <= 4; n++) {
+            if (f.entry("reference." + n).isPresent()) {
+                position(f, "reference." + n, x, z); // G30's reference points, read by MachineProfile.reference
+            }
+        }
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),

@@ -38,16 +38,20 @@ final class Conformance {
         }
         if (m instanceof Motion.Thread t) {
             if (segs.size() != geared(t) || segs.get(0).arc() || last.arc()) {
-                return mismatch(line, t.chamfered()
-                        ? "path (a chamfered thread pass is two straight geared moves)"
+                return mismatch(line, !t.joints().isEmpty()
+                        ? "path (a continuous thread is one straight geared move per block)"
+                        : t.chamfered() ? "path (a chamfered thread pass is two straight geared moves)"
                         : "path (a thread pass is one straight geared move)", last.length(), t.to());
             }
-            if (t.chamfered()) {
-                // the corner where the ratios change: a wrong straight part and a chamfer that
-                // makes up for it would end right and still cut the wrong thread
-                double corner = distance(segs.get(0), t.chamferStart());
+            // each corner where the ratios change: a wrong segment and a next one that makes up
+            // for it would end right and still cut the wrong thread
+            java.util.List<Point> corners = t.corners();
+            for (int i = 0; i < corners.size(); i++) {
+                double corner = distance(segs.get(i), corners.get(i));
                 if (corner > threadTol) {
-                    return mismatch(line, "start of the thread's chamfer", corner, threadTol, t.to());
+                    boolean chamfer = t.chamfered() && i == corners.size() - 1;
+                    return mismatch(line, chamfer ? "start of the thread's chamfer" : "joint of the continuous thread",
+                            corner, threadTol, t.to());
                 }
             }
             return endPoint(last, t.to(), line);
@@ -84,9 +88,9 @@ final class Conformance {
         return endPoint(last, to, line);
     }
 
-    /** How many geared segments a thread pass replays as: the straight part, and its chamfer (M23). */
+    /** How many geared segments a thread pass replays as: one per block of a continuous thread, and its chamfer (M23). */
     static int geared(Motion.Thread t) {
-        return t.chamfered() ? 2 : 1;
+        return t.corners().size() + 1;
     }
 
     /**

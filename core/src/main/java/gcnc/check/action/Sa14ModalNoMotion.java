@@ -11,7 +11,7 @@ import gcnc.machine.GRole;
 /**
  * Thesis §4.2.2 action 14: modal G codes without motion or parameters. G40/G41/G42 (tool nose
  * radius compensation: the side is recorded here, the path offset by gcnc.check.NoseCompensation;
- * G41 to G42 or back without G40 is E174), G96
+ * G41 to G42 or back without G40 is the warning E174), G96
  * (constant surface speed: S of this and later blocks is m/min or ft/min), and, added by gcnc for
  * real safe-start lines, G80 (canned cycle cancel) and the plane: G18 (ZX, the lathe's plane) is
  * accepted, G17 and G19 are E112. Emits E016, E112, E174. Writes next.css, next.nose, d.g96.
@@ -34,8 +34,10 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
             NoseSide side = f.role() == GRole.NOSE_COMP_LEFT ? NoseSide.LEFT : NoseSide.RIGHT;
             NoseSide before = d.prior.nose();
             if (before != NoseSide.OFF && before != side) {
-                d.fail(out, Code.E174_NOSE_SIDE_CHANGE, w.span(), w, before == NoseSide.LEFT ? "G41" : "G42");
-                return;
+                // Fanuc changes sides in offset mode without an alarm: a warning, and the
+                // compensation ends before this block and starts again on the other side (NoseCompensation)
+                String was = before == NoseSide.LEFT ? "G41" : "G42";
+                out.report(gcnc.diag.Diagnostic.warning(Code.E174_NOSE_SIDE_CHANGE, w.span(), w, was));
             }
             d.next.nose = side;
         } else if (f.role() == GRole.NOSE_COMP_CANCEL) {

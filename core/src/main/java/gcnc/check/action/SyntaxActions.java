@@ -49,7 +49,7 @@ public final class SyntaxActions {
             // block the expansion hands on, where it cannot be followed
             case FINISHING_CYCLE, TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE,
                  FACE_PECK_CYCLE, GROOVE_PECK_CYCLE, DRILL_CYCLE, SPOT_DRILL_CYCLE, PECK_DRILL_CYCLE,
-                 THREAD, THREAD_SINGLE_CYCLE, THREAD_CYCLE -> 17;
+                 TAP_CYCLE, REVERSE_TAP_CYCLE, THREAD, THREAD_SINGLE_CYCLE, THREAD_CYCLE, SET_OFFSETS, OTHER_HOME -> 17;
         };
     }
 

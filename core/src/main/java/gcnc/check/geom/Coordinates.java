@@ -45,17 +45,45 @@ public final class Coordinates {
         return p.z().countsPer(u);
     }
 
-    /** Work offset + tool offset, machine counts (no G50/G92 shift). */
+    /** Work offset + the external offset + tool offset, machine counts (no G50/G92 shift). */
     public Point offsets(ModalState.Next s) {
         Point w = work[s.workOffset];
         Point t = tool[s.toolOffset];
-        return new Point(w.x() + t.x(), w.z() + t.z());
+        return new Point(w.x() + t.x() + external.x(), w.z() + t.z() + external.z());
+    }
+
+    /**
+     * The external (common) work offset that every G54-G59 adds, counts: zero until a program
+     * writes it (G10 L2 P0); a profile gives the work offsets with it included.
+     */
+    private Point external = Point.ORIGIN;
+
+    /** Work offset {@code index} (54..59; 0 the external offset), machine counts. */
+    public Point work(int index) {
+        return index == 0 ? external : work[index];
+    }
+
+    /** Writes work offset {@code index} (54..59; 0 the external offset) for the blocks after (G10 L2). */
+    public void setWork(int index, Point at) {
+        if (index == 0) {
+            external = at;
+        } else {
+            work[index] = at;
+        }
+        lastShift = null; // the origin kept for the last block is stale
+    }
+
+    /** Takes the work offsets another checker's program has written so far (the other block delete position). */
+    public void takeWork(Coordinates from) {
+        System.arraycopy(from.work, 0, work, 0, work.length);
+        external = from.external;
+        lastShift = null;
     }
 
     /**
      * Where the block's work coordinate zero is, machine counts. Asked several times for every
-     * block and nearly always the same: the last answer is kept (the offset tables are fixed for
-     * the run, and the shift is compared by value).
+     * block and nearly always the same: the last answer is kept (the offset tables change only
+     * with G10 L2, which forgets it, and the shift is compared by value).
      */
     public Point origin(ModalState.Next s) {
         Point shift = s.shift;

@@ -1,0 +1,72 @@
+package gcnc.check;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.MCall;
+import java.util.List;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Haas G84/G184 tapping on the spindle axis (docs/cycles.md, "G84, G184"): the tap fed in, the
+ * spindle reversed at the bottom, fed out to the R plane, the spindle turned back; the golden
+ * src/test/resources/cycles/tapping.haas.* has the whole moves and DMC.
+ */
+class TappingTest {
+    private static final String HEAD = "G20 G98\nT101\nG97 S300 M03\nG00 X0. Z0.5\n";
+
+    /** The spindle M functions of the blocks at {@code line}, in order, as thesis numbers (M03 = 3). */
+    private static String spindle(Run r, int line) {
+        return r.blocks.stream().filter(b -> b.line() == line).flatMap(b -> java.util.stream.Stream.concat(
+                b.before().stream(), b.after().stream())).map(MCall::code).map(String::valueOf)
+                .collect(Collectors.joining(" "));
+    }
+
+    @Test
+    void theSpindleReversesAtTheBottomAndTurnsBackAtTheRPlane() {
+        Run r = Run.of("haas", HEAD + "G84 X0. Z-0.6 R0.2 P0 F15.\nG80\nM30\n");
+        assertEquals("", r.errors());
+        assertEquals("4 3", spindle(r, 5)); // M04 at the bottom, M03 once out
+        List<CheckedBlock> tap = r.blocks.stream().filter(b -> b.line() == 5 && !b.motions().isEmpty()).toList();
+        assertEquals(4, tap.size()); // rapid to R, feed in, feed out, rapid back
+        // G184 (left-hand) under M04: M03 at the bottom, M04 back
+        Run left = Run.of("haas", "G20 G98\nT101\nG97 S300 M04\nG00 X0. Z0.5\nG184 X0. Z-0.6 R0.2 F15.\nG80\nM30\n");
+        assertEquals("", left.errors());
+        assertEquals("3 4", spindle(left, 5));
+    }
+
+    @Test
+    void aTapAgainstTheSpindleWarnsAndPeckTappingIsNotSupportedYet() {
+        Run against = Run.of("haas", "G20 G98\nT101\nG97 S300 M04\nG00 X0. Z0.5\nG84 X0. Z-0.6 R0.2 F15.\nG80\nM30\n");
+        assertEquals("5:1:E629", against.errors()); // a warning: the control runs it
+        assertEquals("", Run.of("haas", HEAD + "G84 X0. Z-0.6 R0.2 F15.\nG80\nM30\n").errors());
+        // the Fusion posts' "tapping with chip breaking" writes Q
+        assertEquals("5:23:E188", Run.of("haas", HEAD + "G84 X0. Z-0.6 R0.2 P0 Q0.1 F15.\nG80\nM30\n").errors());
+        assertEquals("5:20:E180", Run.of("haas", HEAD + "G84 X0. Z-0.6 R0.2 P-1 F15.\nG80\nM30\n").errors());
+    }
+
+    /**
+     * Fanuc G83/G84 on the centre line (control key cycle.drill_words = fanuc): R is the distance
+     * from the initial level to the R point, Q the peck in least increments; what needs live
+     * tooling (C, H), W, K repeats and peck tapping are not supported yet (E188).
+     */
+    @Test
+    void fanucG83AndG84OnTheCentreLine() {
+        String head = "G21 G99\nT0101\nG97 S300 M03\nG00 X0. Z5.\n";
+        Run r = Run.of("fanuc", head + "G83 Z-12. R-3. Q5000 F0.1\nG80\nG84 Z-10. R-3. F1.\nG80\nM30\n");
+        assertEquals("", r.errors());
+        // the R point at Z2 (3 below the initial Z5), two pecks of 5 and the last 4, the tap reversing
+        List<String> g83 = r.blocks.stream().filter(b -> b.line() == 5).flatMap(b -> b.motions().stream())
+                .map(m -> ((gcnc.ir.Motion.Linear) m)).map(l -> (l.rapid() ? "G00 " : "G01 ")
+                        + Math.round((l.to().z() - 50000) / 500.0)).toList();
+        assertEquals(List.of("G00 2", "G01 -3", "G00 2", "G00 -2", "G01 -8", "G00 2", "G00 -7", "G01 -12", "G00 5"), g83);
+        assertEquals("4 3", spindle(r, 7));
+        assertEquals("5:16:E013", Run.of("fanuc", head + "G83 Z-12. R-3. Q5. F0.1\nM30\n").errors());
+        assertEquals("5:5:E188", Run.of("fanuc", head + "G83 C90. Z-12. R-3. F0.1\nM30\n").errors());
+        assertEquals("5:5:E188", Run.of("fanuc", head + "G83 W-12. R-3. F0.1\nM30\n").errors());
+        assertEquals("5:21:E188", Run.of("fanuc", head + "G83 Z-12. R-3. F0.1 K2\nM30\n").errors());
+        assertEquals("5:16:E188", Run.of("fanuc", head + "G84 Z-10. R-3. Q1000 F1.\nM30\n").errors());
+    }
+}
