@@ -2,16 +2,17 @@
 // what is wrong is gcnc's checker's to say (POST /api/check), never this mode's.
 import { StreamLanguage } from "@codemirror/language";
 
+/** The rest of a "( ... )" comment, to its ")" or the end of the line (a comment never spans lines). */
+function comment(stream) {
+  if (stream.skipTo(")")) stream.next(); else stream.skipToEnd();
+  return "comment";
+}
+
 export const gcode = StreamLanguage.define({
   name: "gcode",
-  startState: () => ({ inComment: false }),
-  token(stream, state) {
-    if (state.inComment) {
-      if (stream.skipTo(")")) { stream.next(); state.inComment = false; } else { stream.skipToEnd(); }
-      return "comment";
-    }
+  token(stream) {
     if (stream.eatSpace()) return null;
-    if (stream.eat("(")) { state.inComment = true; return this.token(stream, state) || "comment"; }
+    if (stream.eat("(")) return comment(stream);
     if (stream.eat(";")) { stream.skipToEnd(); return "comment"; }
     if (stream.eat("%")) return "meta";
     if (stream.match(/^[Nn]\d+/)) return "meta";                       // sequence number

@@ -12,17 +12,21 @@ function el(name, attrs, parent) {
   return e;
 }
 
-/** The box around the path and the blank (chuck and tailstock reach far: they are only clipped). */
+/**
+ * The box the view shows: where the tool cuts (the feed moves) and the centreline, with a margin. Rapids
+ * to and from home, the rest of the bar, the chuck and the tailstock reach further and are clipped: at
+ * the scale of the whole machine the passes of a part would lie a pixel apart.
+ */
 function bounds(d) {
-  let zMin = Infinity, zMax = -Infinity, xMin = Infinity, xMax = -Infinity;
-  const take = (zs, xs) => zs.forEach((z, i) => {
-    zMin = Math.min(zMin, z); zMax = Math.max(zMax, z); xMin = Math.min(xMin, xs[i]); xMax = Math.max(xMax, xs[i]);
+  let zMin = Infinity, zMax = -Infinity, xMin = 0, xMax = 0;
+  const take = (m) => m.z.forEach((z, i) => {
+    zMin = Math.min(zMin, z); zMax = Math.max(zMax, z); xMin = Math.min(xMin, m.x[i]); xMax = Math.max(xMax, m.x[i]);
   });
-  d.moves.forEach((m) => take(m.z, m.x));
-  if (d.stock) take([d.stock.zBack, d.stock.zFace], [d.stock.xAxis, d.stock.x]);
+  const feeds = d.moves.filter((m) => !m.rapid);
+  (feeds.length ? feeds : d.moves).forEach(take);
   if (!isFinite(zMin)) return null;
-  xMin = Math.min(xMin, 0);
-  return { zMin, zMax, xMin, xMax };
+  const mz = Math.max((zMax - zMin) * 0.06, 1e-3), mx = Math.max((xMax - xMin) * 0.08, 1e-3);
+  return { zMin: zMin - mz, zMax: zMax + mz, xMin: xMin - mx, xMax: xMax + mx };
 }
 
 /**
@@ -31,6 +35,7 @@ function bounds(d) {
  */
 export function drawProfile(svg, drawing, onPick) {
   svg.replaceChildren();
+  el("rect", { x: 0, y: 0, width: W, height: H, class: "background" }, svg);
   const b = drawing && bounds(drawing);
   if (!b) return () => 0;
   // one scale for both axes: a diameter looks as large as the same length along Z
@@ -52,7 +57,9 @@ export function drawProfile(svg, drawing, onPick) {
     }
   }
   const byLine = new Map();
-  drawing.moves.forEach((m) => {
+  // rapids first, feeds over them: a click where a rapid crosses a cut picks the cut
+  const ordered = [...drawing.moves.filter((m) => m.rapid), ...drawing.moves.filter((m) => !m.rapid)];
+  ordered.forEach((m) => {
     const g = el("g", { class: "move" + (m.rapid ? " rapid" : " feed"), "data-line": m.line }, svg);
     const title = el("title", {}, g);
     title.textContent = `line ${m.line}`;
