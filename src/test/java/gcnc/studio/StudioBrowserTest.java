@@ -117,11 +117,15 @@ class StudioBrowserTest {
         assertEquals("Q", sixth.findElement(By.cssSelector(".cm-lintRange-error")).getText());
         assertEquals(1, browser.findElements(By.cssSelector(".cm-lint-marker-error")).size());
         assertTrue(browser.findElement(By.id("counts")).getText().contains("1 error"));
+        // no DMC and no path for a program with an error: the last ones stay, greyed and said to be old
+        wait.until(ExpectedConditions.attributeContains(By.id("path"), "class", "stale"));
+        assertTrue(browser.findElement(By.id("pathnote")).getText().contains("last version without errors"));
         Browser.screenshot(browser, "diagnostics");
 
         content.sendKeys(Keys.BACK_SPACE, Keys.BACK_SPACE);
         wait.until(d -> errorRows().isEmpty() && d.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
         assertTrue(browser.findElement(By.id("counts")).getText().contains("no errors"));
+        wait.until(d -> !d.findElement(By.id("path")).getAttribute("class").contains("stale"));
         assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")),
                 "typing saves nothing");
     }

@@ -157,21 +157,45 @@ function scheduleSimulate() {
   simulateTimer = setTimeout(simulate, 150);
 }
 
+/**
+ * Simulates the text as it is now. One simulation at a time (a long program takes a good part of a
+ * second): an edit meanwhile asks for one more, run when this one is done, with the text as it is then.
+ */
+let simulating = false;
+let simulateAgain = false;
+
 async function simulate() {
   if (!current.name) return;
+  if (simulating) { simulateAgain = true; return; }
+  simulating = true;
   const seq = ++simulateSeq;
   const text = view.state.doc.toString();
-  let r;
   try {
-    r = await api("simulate", { name: current.name, text });
+    const r = await api("simulate", { name: current.name, text });
+    if (seq === simulateSeq) showSimulation(r);
   } catch (e) {
     status(e.message, "bad");
-    return;
+  } finally {
+    simulating = false;
+    if (simulateAgain) { simulateAgain = false; scheduleSimulate(); }
   }
-  if (seq !== simulateSeq) return; // an older answer
-  lightPath = drawProfile($("profile"), r.drawing, (line) => goTo(line, 1));
-  $("pathnote").textContent = r.drawing && r.drawing.moves.length ? "" : t.noPath;
-  showDmc(r.dmc);
+}
+
+/**
+ * The path, the DMC and the summary of a simulation. When the program has an error there is no DMC
+ * and no path: the last ones stay, greyed and marked as the last program without errors.
+ */
+function showSimulation(r) {
+  const fresh = r.drawing && r.drawing.moves.length > 0;
+  $("path").classList.toggle("stale", !fresh && $("profile").childElementCount > 0);
+  $("galil").classList.toggle("stale", !fresh && $("dmc").childElementCount > 0);
+  if (fresh) {
+    lightPath = drawProfile($("profile"), r.drawing, (line) => goTo(line, 1));
+    showDmc(r.dmc);
+    $("pathnote").textContent = "";
+  } else {
+    $("pathnote").textContent = $("profile").childElementCount > 0 ? t.stalePath : t.noPath;
+  }
   showSummary(r);
   cursorMoved();
 }
@@ -246,6 +270,10 @@ function load(name, text, version) {
   current.version = version;
   current.saved = text;
   view.setState(EditorState.create({ doc: text, extensions: extensions() }));
+  $("profile").replaceChildren(); // another program: nothing of the last one's path or DMC stays
+  $("dmc").replaceChildren();
+  lightPath = () => 0;
+  dmcBySource = new Map();
   $("files").value = name;
   dirtyChanged();
   cursorMoved();
