@@ -310,6 +310,35 @@ class StudioServerTest {
         }
     }
 
+    @Test
+    void theEventStreamTellsWhenTheListOfProgramsChanges() throws IOException {
+        try (Socket s = new Socket(InetAddress.getLoopbackAddress(), studio.port())) {
+            s.setSoTimeout(10000);
+            s.getOutputStream().write(("GET /api/events?token=" + studio.token() + " HTTP/1.1\r\nHost: 127.0.0.1:"
+                    + studio.port() + "\r\n\r\n").getBytes(StandardCharsets.UTF_8));
+            InputStream in = s.getInputStream();
+            StringBuilder seen = new StringBuilder();
+            readUntil(in, seen, "\"name\":\"bishop.nc\"");
+            assertTrue(seen.toString().contains("text/event-stream"), seen.toString());
+            assertTrue(seen.toString().contains("event: files\ndata: {\"files\":[{\"name\":\"bishop.nc\""), seen.toString());
+            Files.writeString(dir.resolve("made-elsewhere.nc"), "M30\n");
+            seen.setLength(0);
+            readUntil(in, seen, "made-elsewhere.nc");
+            assertTrue(seen.toString().contains("event: files"), seen.toString());
+        }
+    }
+
+    private static void readUntil(InputStream in, StringBuilder seen, String wanted) throws IOException {
+        byte[] buf = new byte[4096];
+        while (!seen.toString().contains(wanted)) {
+            int n = in.read(buf);
+            if (n < 0) {
+                throw new IOException("the stream ended before " + wanted + ": " + seen);
+            }
+            seen.append(new String(buf, 0, n, StandardCharsets.UTF_8));
+        }
+    }
+
     // ---- 3-6. check, simulate, compile: the command line's answers ----
 
     /** The command line's JSON for a file, without the file name (the studio names files relative to DIR). */
