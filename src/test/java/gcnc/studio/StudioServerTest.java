@@ -70,7 +70,7 @@ class StudioServerTest {
 
     // ---- a raw HTTP client ----
 
-    record Reply(int status, String body) {
+    record Reply(int status, String head, String body) {
         JsonObject json() {
             return JsonParser.parseString(body).getAsJsonObject();
         }
@@ -100,7 +100,7 @@ class StudioServerTest {
         String all = new String(raw, StandardCharsets.UTF_8);
         int status = Integer.parseInt(all.substring(9, 12));
         int head = all.indexOf("\r\n\r\n");
-        return new Reply(status, head < 0 ? "" : all.substring(head + 4));
+        return new Reply(status, head < 0 ? all : all.substring(0, head), head < 0 ? "" : all.substring(head + 4));
     }
 
     static Map<String, String> good() {
@@ -226,6 +226,31 @@ class StudioServerTest {
         }
         assertEquals(400, request("GET", "/api/file?name=%zz", good(), null).status());
         assertEquals(200, get("/api/info").status());
+    }
+
+    @Test
+    void thePageMapsCodeMirrorToThePinnedWebJarsInsideTheJar() throws IOException {
+        Reply page = get("/?token=" + studio.token());
+        assertEquals(200, page.status());
+        String html = page.body();
+        int from = html.indexOf("<script type=\"importmap\">") + "<script type=\"importmap\">".length();
+        JsonObject imports = JsonParser.parseString(html.substring(from, html.indexOf("</script>", from)))
+                .getAsJsonObject().getAsJsonObject("imports");
+        assertEquals(15, imports.size());
+        assertEquals("/webjars/codemirror/6.0.2/dist/index.js", imports.get("codemirror").getAsString());
+        assertEquals("/webjars/codemirror__view/6.43.7/dist/index.js", imports.get("@codemirror/view").getAsString());
+        assertEquals("/webjars/style-mod/4.1.3/src/style-mod.js", imports.get("style-mod").getAsString());
+        for (String name : imports.keySet()) { // every module the map names is served, from the jar
+            Reply js = get(imports.get(name).getAsString());
+            assertEquals(200, js.status(), name);
+            assertTrue(js.body().contains("export"), name);
+        }
+        // only the studio's scripts and this import map may run on the page
+        String csp = page.head().lines().filter(l -> l.toLowerCase(java.util.Locale.ROOT).startsWith("content-security-policy:"))
+                .findFirst().orElseThrow();
+        assertTrue(csp.contains("script-src 'self' 'sha256-"), csp);
+        assertTrue(csp.contains("connect-src 'self'"), csp);
+        assertTrue(page.head().contains("X-frame-options: DENY") || page.head().contains("X-Frame-Options: DENY"), page.head());
     }
 
     // ---- 1. files under DIR only ----

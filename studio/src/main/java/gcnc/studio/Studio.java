@@ -55,6 +55,12 @@ public final class Studio implements AutoCloseable {
     private final Api api;
     private final WebJars webJars;
     private final Config config;
+    /**
+     * The page may run only the studio's own scripts and the import map (by its hash), and talk only
+     * to the studio: text that reached the page some other way could run nothing. CodeMirror puts
+     * its styles in style elements, hence inline styles.
+     */
+    private final String contentPolicy;
 
     private Studio(Config config, HttpServer server, ExecutorService threads, String token, Workspace workspace)
             throws IOException {
@@ -64,6 +70,9 @@ public final class Studio implements AutoCloseable {
         this.token = token;
         this.guard = new Guard(port(), token);
         this.webJars = new WebJars();
+        this.contentPolicy = "default-src 'none'; script-src 'self' '" + sha256(webJars.importMap())
+                + "'; style-src 'self' 'unsafe-inline'; connect-src 'self'; img-src 'self' data:; base-uri 'none';"
+                + " form-action 'none'; frame-ancestors 'none'";
         this.api = new Api(workspace, new Analysis(config.session(),
                 config.session().tables().messages().in(config.lang()), config.version()), config);
     }
@@ -122,7 +131,17 @@ public final class Studio implements AutoCloseable {
         threads.shutdownNow();
     }
 
-    /** 32 random bytes from the system's strong source, as hex: what a page must show to be let in. */
+    /** The CSP source for an inline script: "sha256-" and its digest in base 64. */
+    private static String sha256(String script) {
+        try {
+            byte[] d = java.security.MessageDigest.getInstance("SHA-256").digest(script.getBytes(StandardCharsets.UTF_8));
+            return "sha256-" + java.util.Base64.getEncoder().encodeToString(d);
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java has SHA-256", e);
+        }
+    }
+
+    /** 24 random bytes from the system's strong source, as hex: what a page must show to be let in. */
     private static String newToken() {
         byte[] b = new byte[24];
         new SecureRandom().nextBytes(b);
@@ -164,6 +183,7 @@ public final class Studio implements AutoCloseable {
             throw new Http.Fail(405, ex.getRequestMethod() + " is not allowed on " + Workspace.shown(path));
         }
         if (path.equals("/") || path.equals("/index.html")) {
+            ex.getResponseHeaders().set("Content-Security-Policy", contentPolicy);
             Http.send(ex, 200, "text/html; charset=utf-8", page());
             return;
         }

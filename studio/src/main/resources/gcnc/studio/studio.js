@@ -143,7 +143,9 @@ function showProblems(report) {
       td.textContent = v;
       tr.appendChild(td);
     }
+    tr.tabIndex = 0; // reachable with Tab; Enter jumps as a click does
     tr.addEventListener("click", () => goTo(d.line, d.column));
+    tr.addEventListener("keydown", (e) => { if (e.key === "Enter") goTo(d.line, d.column); });
     body.appendChild(tr);
   }
   $("counts").textContent = report.errors + report.warnings === 0 ? "— " + t.noErrors
