@@ -253,6 +253,27 @@ class StudioBrowserTest {
     }
 
     @Test
+    void aNewProgramIsCheckedAsTypedAndMadeOnSave() throws IOException {
+        browser.findElement(By.id("new")).click();
+        org.openqa.selenium.Alert prompt = wait.until(ExpectedConditions.alertIsPresent());
+        prompt.sendKeys("fresh.nc");
+        prompt.accept();
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("name"), "fresh.nc •"));
+        WebElement content = browser.findElement(By.cssSelector(".cm-content"));
+        content.click();
+        content.sendKeys("G00 X+2234 Z+00100");
+        wait.until(d -> errorRows().size() == 1); // the thesis's programs end with M30
+        assertEquals("E052", errorRows().get(0).findElement(By.tagName("td")).getText());
+        content.sendKeys(Keys.ENTER, "M30");
+        wait.until(d -> errorRows().isEmpty());
+        assertFalse(Files.exists(dir.resolve("fresh.nc")), "nothing is written before Save");
+        content.sendKeys(Keys.chord(Keys.CONTROL, "s"));
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "saved fresh.nc"));
+        assertEquals("G00 X+2234 Z+00100\nM30", Files.readString(dir.resolve("fresh.nc")));
+        Files.delete(dir.resolve("fresh.nc"));
+    }
+
+    @Test
     void inSpanishThePageAndTheMessagesAreSpanish() throws Exception {
         Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
         try (Studio es = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.ES, "test"))) {
