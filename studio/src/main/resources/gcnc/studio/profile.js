@@ -74,6 +74,16 @@ export function drawProfile(svg, drawing, onPick) {
     const c = el("circle", { cx: px(k.z), cy: py(k.x), r: 5, class: "mark" }, svg);
     el("title", {}, c).textContent = `${k.code} ${k.block}`;
   }
+  // the scale: the program's Z at the left and right edges, its X (diameter) at the top and the centreline
+  const label = (x, y, text, anchor) => {
+    const e = el("text", { x, y, class: "scale", "text-anchor": anchor }, svg);
+    e.textContent = text;
+  };
+  const fmt = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : v.toFixed(2));
+  label(4, H - 4, `Z ${fmt(b.zMin)}`, "start");
+  label(W - 4, H - 4, `Z ${fmt(b.zMax)}`, "end");
+  label(4, 12, `X ${fmt(b.xMax)}`, "start");
+  label(4, py(0) - 3, "X 0", "start");
   let lit = [];
   return (line) => {
     lit.forEach((g) => g.classList.remove("current"));
