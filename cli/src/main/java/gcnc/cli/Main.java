@@ -70,6 +70,7 @@ public final class Main implements Runnable {
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
+        m.put("studio", StudioCommand.class);
         m.put("completion", CompletionCommand.class);
         m.put("help", CommandLine.HelpCommand.class);
         return java.util.Collections.unmodifiableMap(m);

@@ -42,8 +42,11 @@ public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack
         }
     }
 
-    /** One sequence of the path as a polyline; rapid ones are drawn dashed. */
-    public record Move(boolean rapid, double[] z, double[] r) {
+    /**
+     * One sequence of the path as a polyline; rapid ones are drawn dashed. {@code line} is the
+     * G-code line it came from (as its findings are reported), so a front end can link the two.
+     */
+    public record Move(boolean rapid, double[] z, double[] r, int line) {
     }
 
     /** A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12") and the point. */

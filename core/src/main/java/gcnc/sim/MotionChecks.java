@@ -200,7 +200,7 @@ final class MotionChecks {
         }
         seconds += time(length, speed, acc, dec);
         if (poly != null) {
-            path.move(rapid, poly);
+            path.move(rapid, poly, line);
             path.frame(frame, rapid);
         }
     }

@@ -1,0 +1,293 @@
+package gcnc.studio;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.Session;
+import gcnc.galil.SourceMap;
+import gcnc.tables.ErrorMessages;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.IntUnaryOperator;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.openqa.selenium.By;
+import org.openqa.selenium.Keys;
+import org.openqa.selenium.WebDriver;
+import org.openqa.selenium.WebElement;
+import org.openqa.selenium.support.ui.ExpectedConditions;
+import org.openqa.selenium.support.ui.Select;
+import org.openqa.selenium.support.ui.WebDriverWait;
+
+/**
+ * The studio in a real browser (headless Chromium, one for the class), on a copy of the bishop
+ * (samples/bishop.nc, machine thesis-2004): what a user does, and what they must then see. Each
+ * screen is saved as a PNG under docs/studio/ for docs/studio.md.
+ */
+class StudioBrowserTest {
+    static WebDriver browser;
+    static Studio studio;
+    static Path dir;
+    WebDriverWait wait;
+
+    @BeforeAll
+    static void start() throws Exception {
+        browser = Browser.start();
+        // a folder with a plain name: the page shows it, and the screenshots should not change with it
+        dir = Files.createDirectory(Files.createTempDirectory("gcnc-studio-browser").resolve("programs"));
+        Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
+        studio = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.EN, "test"));
+    }
+
+    @AfterAll
+    static void stop() {
+        if (browser != null) {
+            browser.quit();
+        }
+        if (studio != null) {
+            studio.close();
+        }
+    }
+
+    @BeforeEach
+    void openTheBishop() throws IOException {
+        for (String f : new String[] {"bishop.nc", "bishop.dmc", "bishop.dmc.map", "copy.nc", "other.nc"}) {
+            Files.deleteIfExists(dir.resolve(f));
+        }
+        Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
+        Files.writeString(dir.resolve("other.nc"), "M30\n");
+        wait = new WebDriverWait(browser, Duration.ofSeconds(15));
+        browser.get("about:blank"); // leaves the last test's page (an unsaved edit there would ask first)
+        dismissAnyAlert();
+        browser.get(studio.url("bishop.nc").toString());
+        wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
+        // checked and simulated: the error list says so, and the DMC is there
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "no errors"));
+        wait.until(d -> d.findElements(By.cssSelector("#dmc li")).size() == 294);
+    }
+
+    private void dismissAnyAlert() {
+        try {
+            browser.switchTo().alert().accept();
+        } catch (org.openqa.selenium.NoAlertPresentException e) {
+            // none
+        }
+    }
+
+    /** Puts the cursor at the end of a line, with the keyboard, as a user would. */
+    private WebElement endOfLine(int line) {
+        WebElement content = browser.findElement(By.cssSelector(".cm-content"));
+        content.click();
+        content.sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
+        for (int i = 1; i < line; i++) {
+            content.sendKeys(Keys.ARROW_DOWN);
+        }
+        content.sendKeys(Keys.END);
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", String.valueOf(line)));
+        return content;
+    }
+
+    private List<WebElement> errorRows() {
+        return browser.findElements(By.cssSelector("#errors tbody tr"));
+    }
+
+    private int cursorLine() {
+        return Integer.parseInt(browser.findElement(By.id("cursor")).getAttribute("data-line"));
+    }
+
+    @Test
+    void aBrokenLineGetsItsDiagnosticUnderItAndLosesItWhenFixed() throws IOException {
+        WebElement content = endOfLine(6); // N135 G01 Z-04500
+        content.sendKeys(" Q");
+        wait.until(d -> errorRows().size() == 1);
+        List<WebElement> cells = errorRows().get(0).findElements(By.tagName("td"));
+        assertEquals("E006", cells.get(0).getText());
+        assertEquals("expecting a number for parameter Q", cells.get(1).getText());
+        assertEquals("6", cells.get(2).getText());
+        assertEquals("18", cells.get(3).getText());
+        // underlined on its own line, and marked in the gutter
+        WebElement sixth = browser.findElements(By.cssSelector(".cm-content .cm-line")).get(5);
+        wait.until(d -> !sixth.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
+        assertEquals("Q", sixth.findElement(By.cssSelector(".cm-lintRange-error")).getText());
+        assertEquals(1, browser.findElements(By.cssSelector(".cm-lint-marker-error")).size());
+        assertTrue(browser.findElement(By.id("counts")).getText().contains("1 error"));
+        // no DMC and no path for a program with an error: the last ones stay, greyed and said to be old
+        wait.until(ExpectedConditions.attributeContains(By.id("path"), "class", "stale"));
+        assertTrue(browser.findElement(By.id("pathnote")).getText().contains("last version without errors"));
+        Browser.screenshot(browser, "diagnostics");
+
+        content.sendKeys(Keys.BACK_SPACE, Keys.BACK_SPACE);
+        wait.until(d -> errorRows().isEmpty() && d.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
+        assertTrue(browser.findElement(By.id("counts")).getText().contains("no errors"));
+        wait.until(d -> !d.findElement(By.id("path")).getAttribute("class").contains("stale"));
+        assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")),
+                "typing saves nothing");
+    }
+
+    @Test
+    void clickingADiagnosticPutsTheCursorOnItsLine() {
+        endOfLine(46).sendKeys(" Q"); // N340 G01 X+1034 Z-01600
+        wait.until(d -> errorRows().size() == 1);
+        browser.findElement(By.cssSelector(".cm-content")).sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "1"));
+        errorRows().get(0).click();
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "46"));
+        assertEquals("Line 46, column 25", browser.findElement(By.id("cursor")).getText());
+    }
+
+    @Test
+    void clickingThePathPutsTheCursorOnItsBlock() throws IOException {
+        WebElement n135 = browser.findElement(By.cssSelector("#profile g.move.feed[data-line='6']"));
+        clickMiddleOf(n135);
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "6"));
+        assertTrue(n135.getAttribute("class").contains("current"));
+        WebElement n145 = browser.findElement(By.cssSelector("#profile g.move.feed[data-line='9']")); // N145 G01 Z-03550
+        clickMiddleOf(n145);
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "9"));
+        assertFalse(n135.getAttribute("class").contains("current"));
+        Browser.screenshot(browser, "toolpath");
+    }
+
+    /**
+     * A mouse click at the middle of a move as drawn (a straight move along Z has no height, which
+     * Selenium's element click refuses): whatever the page has on top at that pixel gets it.
+     */
+    private void clickMiddleOf(WebElement move) {
+        @SuppressWarnings("unchecked")
+        List<Number> xy = (List<Number>) ((org.openqa.selenium.JavascriptExecutor) browser).executeScript(
+                "const r = arguments[0].getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];", move);
+        new org.openqa.selenium.interactions.Actions(browser)
+                .moveToLocation((int) Math.round(xy.get(0).doubleValue()), (int) Math.round(xy.get(1).doubleValue())).click().perform();
+    }
+
+    @Test
+    void theCursorOnABlockLightsItsDmcLinesAndItsMoves() throws IOException {
+        endOfLine(6);
+        wait.until(d -> !d.findElements(By.cssSelector("#dmc li.current")).isEmpty());
+        List<String> lit = new ArrayList<>();
+        for (WebElement li : browser.findElements(By.cssSelector("#dmc li.current"))) {
+            assertEquals("6", li.getAttribute("data-source"));
+            lit.add(li.getText());
+        }
+        // the same DMC lines the command line's .map gives line 6
+        StudioServerTest.cli("compile", "--machine", "thesis-2004", dir.resolve("bishop.nc").toString(), "-o",
+                dir.resolve("bishop.dmc").toString());
+        List<String> dmc = Files.readAllLines(dir.resolve("bishop.dmc"));
+        IntUnaryOperator map;
+        try (var in = Files.newBufferedReader(dir.resolve("bishop.dmc.map"))) {
+            map = SourceMap.read(in).lines();
+        }
+        List<String> expected = new ArrayList<>();
+        for (int i = 1; i <= dmc.size(); i++) {
+            if (map.applyAsInt(i) == 6) {
+                expected.add(dmc.get(i - 1).strip());
+            }
+        }
+        assertFalse(expected.isEmpty());
+        assertEquals(expected, lit);
+        List<WebElement> moves = browser.findElements(By.cssSelector("#profile g.move.current"));
+        assertEquals(1, moves.size());
+        assertEquals("6", moves.get(0).getAttribute("data-line"));
+        Browser.screenshot(browser, "galil");
+    }
+
+    @Test
+    void compileWritesTheDmcAndItsMapBesideTheProgram() throws IOException {
+        endOfLine(6).sendKeys(" (pass 1)"); // an unsaved edit: compile saves it first
+        browser.findElement(By.id("compile")).click();
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "compiled: wrote bishop.dmc and bishop.dmc.map"));
+        assertTrue(Files.readString(dir.resolve("bishop.nc")).contains("N135 G01 Z-04500 (pass 1)"));
+        Path cli = Files.createTempDirectory("gcnc-cli").resolve("bishop.dmc");
+        StudioServerTest.cli("compile", "--machine", "thesis-2004", dir.resolve("bishop.nc").toString(), "-o", cli.toString());
+        assertEquals(Files.readString(cli), Files.readString(dir.resolve("bishop.dmc")));
+        assertEquals(Files.readString(Path.of(cli + ".map")), Files.readString(dir.resolve("bishop.dmc.map")));
+        String summary = browser.findElement(By.id("summary")).getText();
+        assertTrue(summary.contains("Cycle time: 32.8 s"), summary);
+        Browser.screenshot(browser, "compile");
+    }
+
+    @Test
+    void aFailedSaveKeepsTheEditAndSaysWhy() throws IOException {
+        WebElement content = endOfLine(6);
+        content.sendKeys(" (mine)");
+        content.sendKeys(Keys.chord(Keys.CONTROL, "s"));
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "saved bishop.nc"));
+        assertTrue(Files.readString(dir.resolve("bishop.nc")).contains("Z-04500 (mine)\n"));
+        // someone else changes the file; our next save must not silently overwrite it, nor lose our edit
+        Files.writeString(dir.resolve("bishop.nc"), "(theirs)\nM30\n");
+        content.sendKeys(" (more)");
+        browser.findElement(By.id("save")).click();
+        wait.until(ExpectedConditions.alertIsPresent()).dismiss(); // "changed on disk. Overwrite it?" No.
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "not saved: bishop.nc changed on disk"));
+        assertEquals("(theirs)\nM30\n", Files.readString(dir.resolve("bishop.nc")));
+        assertTrue(browser.findElement(By.cssSelector(".cm-content")).getText().contains("N135 G01 Z-04500 (mine) (more)"));
+        assertTrue(browser.findElement(By.id("name")).getText().endsWith("•"), "still marked unsaved");
+        Browser.screenshot(browser, "save-failed");
+
+        // opening another program with unsaved changes asks first; "no" keeps everything
+        new Select(browser.findElement(By.id("files"))).selectByValue("other.nc");
+        wait.until(ExpectedConditions.alertIsPresent()).dismiss();
+        assertTrue(browser.findElement(By.cssSelector(".cm-content")).getText().contains("(mine) (more)"));
+        assertEquals("bishop.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
+    }
+
+    @Test
+    void saveAsWritesACopyAndOpensIt() throws IOException {
+        endOfLine(6).sendKeys(" (copy)");
+        browser.findElement(By.id("saveas")).click();
+        org.openqa.selenium.Alert prompt = wait.until(ExpectedConditions.alertIsPresent());
+        prompt.sendKeys("copy.nc");
+        prompt.accept();
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "saved copy.nc"));
+        assertTrue(Files.readString(dir.resolve("copy.nc")).contains("Z-04500 (copy)\n"));
+        assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")));
+        assertTrue(browser.getCurrentUrl().endsWith("&file=copy.nc"), browser.getCurrentUrl());
+        assertEquals("copy.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
+    }
+
+    @Test
+    void aNewProgramIsCheckedAsTypedAndMadeOnSave() throws IOException {
+        browser.findElement(By.id("new")).click();
+        org.openqa.selenium.Alert prompt = wait.until(ExpectedConditions.alertIsPresent());
+        prompt.sendKeys("fresh.nc");
+        prompt.accept();
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("name"), "fresh.nc •"));
+        WebElement content = browser.findElement(By.cssSelector(".cm-content"));
+        content.click();
+        content.sendKeys("G00 X+2234 Z+00100");
+        wait.until(d -> errorRows().size() == 1); // the thesis's programs end with M30
+        assertEquals("E052", errorRows().get(0).findElement(By.tagName("td")).getText());
+        content.sendKeys(Keys.ENTER, "M30");
+        wait.until(d -> errorRows().isEmpty());
+        assertFalse(Files.exists(dir.resolve("fresh.nc")), "nothing is written before Save");
+        content.sendKeys(Keys.chord(Keys.CONTROL, "s"));
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "saved fresh.nc"));
+        assertEquals("G00 X+2234 Z+00100\nM30", Files.readString(dir.resolve("fresh.nc")));
+        Files.delete(dir.resolve("fresh.nc"));
+    }
+
+    @Test
+    void inSpanishThePageAndTheMessagesAreSpanish() throws Exception {
+        Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
+        try (Studio es = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.ES, "test"))) {
+            browser.get(es.url("bishop.nc").toString());
+            wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
+            wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "sin errores"));
+            endOfLine(6).sendKeys(" Q");
+            wait.until(d -> errorRows().size() == 1);
+            String message = errorRows().get(0).findElements(By.tagName("td")).get(1).getText();
+            assertFalse(message.equals("expecting a number for parameter Q"), message);
+            assertTrue(message.contains("Q"), message);
+            assertEquals("Errores", browser.findElement(By.cssSelector("#problems h2 span")).getText());
+            assertEquals("Compilar", browser.findElement(By.id("compile")).getText());
+            Browser.screenshot(browser, "spanish");
+        }
+    }
+}

@@ -1,0 +1,232 @@
+package gcnc.studio;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import gcnc.Compiler;
+import gcnc.Session;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Finding;
+import gcnc.diag.JsonRenderer;
+import gcnc.diag.Messages;
+import gcnc.galil.SourceMap;
+import gcnc.output.DmcOutputs;
+import gcnc.sim.Drawing;
+import gcnc.sim.Shape;
+import gcnc.sim.SimReport;
+import java.io.IOException;
+import java.io.Reader;
+import java.io.StringReader;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * What the studio asks of gcnc, all through the one {@link Session} the command line also uses, so
+ * the page never disagrees with {@code gcnc check} or {@code gcnc compile}: diagnostics in the
+ * {@code --format json} document (JsonRenderer), the simulated path with the G-code line of each
+ * move, the DMC with the G-code line of each of its lines, and the compile that writes the DMC and
+ * its map beside the program.
+ */
+final class Analysis {
+    private final Session session;
+    private final Messages messages;
+    private final String toolVersion;
+
+    Analysis(Session session, Messages messages, String toolVersion) {
+        this.session = session;
+        this.messages = messages;
+        this.toolVersion = toolVersion;
+    }
+
+    /** The program's diagnostics, as {@code gcnc check --format json} prints them. */
+    JsonObject check(String name, String text, Optional<Path> folder) throws IOException {
+        Compiler.Result r = session.withPrograms(folder).check(new StringReader(text));
+        JsonObject doc = report(name, r);
+        doc.addProperty("blocks", r.blocks());
+        return doc;
+    }
+
+    /**
+     * Check, translate and simulate the text: the diagnostics, the DMC lines with their G-code lines,
+     * the tool path as polylines in the program's coordinates (Z along, X as the program gives it,
+     * a diameter on a lathe) each with its G-code line, the blank, chuck and tailstock, the summary.
+     */
+    JsonObject simulate(String name, String text, Optional<Path> folder) throws IOException {
+        JsonArray dmc = new JsonArray();
+        SourceMap map = SourceMap.toEntries((dmcLine, sourceLine) -> { });
+        Compiler.Result r = session.withPrograms(folder).compile(new StringReader(text),
+                Optional.of(session.simulation().withPath()), false, map.wrap(line -> {
+                    JsonObject l = new JsonObject();
+                    l.addProperty("text", line.text());
+                    l.addProperty("line", line.sourceLine());
+                    dmc.add(l);
+                }));
+        JsonObject doc = new JsonObject();
+        doc.add("diagnostics", report(name, r));
+        doc.addProperty("blocks", r.blocks());
+        // after an error the DMC is void (nothing after it is translated): the page shows none
+        doc.add("dmc", r.ok() ? dmc : new JsonArray());
+        r.simulation().ifPresent(s -> {
+            doc.add("summary", summary(s));
+            if (s.drawing() != null) {
+                doc.add("drawing", drawing(s.drawing()));
+            }
+        });
+        return doc;
+    }
+
+    /**
+     * Compiles a saved program as {@code gcnc compile FILE} does: the DMC and its map written beside
+     * it as one step, only when there is no error. {@code dmc} and {@code map} are the outputs,
+     * already checked by the {@link Workspace} (inside DIR, never a link or a device).
+     */
+    JsonObject compile(String name, Path program, Path dmc) throws IOException {
+        JsonObject doc = new JsonObject();
+        Compiler.Result r;
+        try (DmcOutputs outputs = DmcOutputs.open(program, dmc, true)) {
+            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+            outputs.mapLine(SourceMap.sourceLine(program.getFileName().toString()));
+            try (Reader in = Session.decode(Files.newInputStream(program))) {
+                r = session.withPrograms(Optional.ofNullable(program.getParent())).compile(in,
+                        Optional.of(session.simulation()), false, mapper.wrap(line -> outputs.dmcLine(line.text())));
+            }
+            doc.add("diagnostics", report(name, r));
+            doc.addProperty("ok", r.ok());
+            doc.addProperty("blocks", r.blocks());
+            if (r.ok()) {
+                outputs.commit();
+                doc.addProperty("dmcLines", mapper.lines());
+            }
+        } catch (DmcOutputs.Failed e) {
+            throw e.problem();
+        }
+        r.simulation().ifPresent(s -> doc.add("summary", summary(s)));
+        return doc;
+    }
+
+    private JsonObject report(String name, Compiler.Result r) throws IOException {
+        List<Finding> findings = new ArrayList<>();
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            findings.add(Finding.of(name, d, messages));
+        }
+        StringWriter w = new StringWriter();
+        JsonRenderer.write(findings, toolVersion, w);
+        return JsonParser.parseString(w.toString()).getAsJsonObject();
+    }
+
+    private static JsonObject summary(SimReport s) {
+        JsonObject o = new JsonObject();
+        o.addProperty("cycleSeconds", finite(s.cycleSeconds()));
+        o.addProperty("sequences", s.sequences());
+        o.addProperty("segments", s.segments());
+        o.addProperty("findings", s.findings());
+        JsonObject extents = new JsonObject();
+        extents.addProperty("xMinMm", finite(s.xMinMm()));
+        extents.addProperty("xMaxMm", finite(s.xMaxMm()));
+        extents.addProperty("zMinMm", finite(s.zMinMm()));
+        extents.addProperty("zMaxMm", finite(s.zMaxMm()));
+        o.add("machineExtents", extents);
+        return o;
+    }
+
+    /** NaN and infinities are not JSON: null instead (nothing moved). */
+    private static Double finite(double v) {
+        return Double.isFinite(v) ? v : null;
+    }
+
+    /**
+     * The drawing in the program's coordinates: z along the spindle as the program writes Z, x as the
+     * program writes X (a diameter on a lathe whose control reads one). Without a program frame (no
+     * move), machine millimetres with x as twice the radius.
+     */
+    private static JsonObject drawing(Drawing d) {
+        Frame f = new Frame(d.program());
+        JsonObject o = new JsonObject();
+        JsonArray moves = new JsonArray();
+        for (Drawing.Move m : d.moves()) {
+            JsonObject mv = new JsonObject();
+            mv.addProperty("line", m.line());
+            mv.addProperty("rapid", m.rapid());
+            mv.add("z", f.zs(m.z()));
+            mv.add("x", f.xs(m.r()));
+            moves.add(mv);
+        }
+        o.add("moves", moves);
+        o.add("chuck", shapes(d.chuck(), f));
+        o.add("tailstock", shapes(d.tailstock(), f));
+        if (!Double.isNaN(d.stockRadius())) {
+            JsonObject stock = new JsonObject();
+            stock.addProperty("zBack", f.z(d.stockBack()));
+            stock.addProperty("zFace", f.z(d.stockFace()));
+            stock.addProperty("x", f.x(d.stockRadius()));
+            stock.addProperty("xAxis", f.x(0));
+            JsonObject part = new JsonObject();
+            part.add("z", f.zs(d.finalZ()));
+            part.add("x", f.xs(d.finalR()));
+            stock.add("final", part);
+            o.add("stock", stock);
+        }
+        JsonArray marks = new JsonArray();
+        for (Drawing.Mark m : d.marks()) {
+            JsonObject mk = new JsonObject();
+            mk.addProperty("code", m.code());
+            mk.addProperty("block", m.block());
+            mk.addProperty("z", f.z(m.z()));
+            mk.addProperty("x", f.x(m.r()));
+            marks.add(mk);
+        }
+        o.add("marks", marks);
+        o.addProperty("programFrame", d.program() != null);
+        return o;
+    }
+
+    private static JsonArray shapes(List<Shape> shapes, Frame f) {
+        JsonArray a = new JsonArray();
+        for (Shape s : shapes) {
+            JsonObject o = new JsonObject();
+            o.add("z", f.zs(s.z()));
+            o.add("x", f.xs(s.r()));
+            a.add(o);
+        }
+        return a;
+    }
+
+    /** From the drawing's (z, r) millimetres to the program's (Z, X). */
+    private record Frame(Drawing.ProgramAxes axes) {
+        double z(double z) {
+            return round(axes == null ? z : (z - axes.z0()) / axes.zPer());
+        }
+
+        double x(double r) {
+            return round(axes == null ? 2 * r : (r - axes.r0()) / axes.xPer());
+        }
+
+        JsonArray zs(double[] v) {
+            JsonArray a = new JsonArray();
+            for (double d : v) {
+                a.add(z(d));
+            }
+            return a;
+        }
+
+        JsonArray xs(double[] v) {
+            JsonArray a = new JsonArray();
+            for (double d : v) {
+                a.add(x(d));
+            }
+            return a;
+        }
+
+        /** Micrometres are plenty for a drawing, and keep the JSON short. */
+        private static double round(double v) {
+            if (!Double.isFinite(v)) {
+                return v > 0 ? 1e9 : -1e9;
+            }
+            return Math.round(v * 1000) / 1000.0;
+        }
+    }
+}

@@ -1,0 +1,134 @@
+package gcnc.studio;
+
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParseException;
+import com.google.gson.JsonParser;
+import com.sun.net.httpserver.HttpExchange;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+
+/** The small pieces every handler needs: read a JSON body (bounded), answer with JSON, bytes or an error. */
+final class Http {
+    /** A request refused or failed: its status and the message the page shows. */
+    record Failure(int status, String message) {
+    }
+
+    /** A failure thrown out of a handler; the router answers it as {"error": message}. */
+    static final class Fail extends Exception {
+        private final Failure failure;
+
+        Fail(int status, String message) {
+            super(message, null, false, false);
+            this.failure = new Failure(status, message);
+        }
+
+        Failure failure() {
+            return failure;
+        }
+    }
+
+    /** The largest request body: a program of {@link Workspace#MAX_BYTES} as a JSON string, with room for escapes. */
+    static final int MAX_BODY = (int) (2 * Workspace.MAX_BYTES + 4096);
+
+    private Http() {
+    }
+
+    /** The body as a JSON object; 400 when it is not one, 413 when too large. */
+    static JsonObject body(HttpExchange ex) throws IOException, Fail {
+        byte[] bytes = read(ex.getRequestBody());
+        try {
+            JsonElement e = JsonParser.parseString(new String(bytes, StandardCharsets.UTF_8));
+            if (!e.isJsonObject()) {
+                throw new Fail(400, "the request body must be a JSON object");
+            }
+            return e.getAsJsonObject();
+        } catch (JsonParseException | IllegalStateException e) {
+            throw new Fail(400, "the request body is not JSON: " + firstLine(e.getMessage()));
+        }
+    }
+
+    /** A string member of a request, or null when absent; 400 when it is there but not a string. */
+    static String string(JsonObject o, String name) throws Fail {
+        JsonElement e = o.get(name);
+        if (e == null || e.isJsonNull()) {
+            return null;
+        }
+        if (!e.isJsonPrimitive() || !e.getAsJsonPrimitive().isString()) {
+            throw new Fail(400, "\"" + name + "\" must be a string");
+        }
+        return e.getAsString();
+    }
+
+    static String required(JsonObject o, String name) throws Fail {
+        String s = string(o, name);
+        if (s == null) {
+            throw new Fail(400, "the request needs \"" + name + "\"");
+        }
+        return s;
+    }
+
+    static boolean flag(JsonObject o, String name) throws Fail {
+        JsonElement e = o.get(name);
+        if (e == null || e.isJsonNull()) {
+            return false;
+        }
+        if (!e.isJsonPrimitive() || !e.getAsJsonPrimitive().isBoolean()) {
+            throw new Fail(400, "\"" + name + "\" must be true or false");
+        }
+        return e.getAsBoolean();
+    }
+
+    private static byte[] read(InputStream in) throws IOException, Fail {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        byte[] buf = new byte[1 << 16];
+        for (int n = in.read(buf); n >= 0; n = in.read(buf)) {
+            out.write(buf, 0, n);
+            if (out.size() > MAX_BODY) {
+                throw new Fail(413, "the request is larger than " + (MAX_BODY >> 20) + " MB");
+            }
+        }
+        return out.toByteArray();
+    }
+
+    static void json(HttpExchange ex, int status, JsonElement body) throws IOException {
+        send(ex, status, "application/json; charset=utf-8", body.toString().getBytes(StandardCharsets.UTF_8));
+    }
+
+    static void error(HttpExchange ex, Failure f) throws IOException {
+        JsonObject o = new JsonObject();
+        o.addProperty("error", f.message());
+        o.addProperty("status", f.status());
+        json(ex, f.status(), o);
+    }
+
+    static void send(HttpExchange ex, int status, String type, byte[] body) throws IOException {
+        ex.getResponseHeaders().set("Content-Type", type);
+        // the page and its answers are never cached (a new launch has a new token) and never framed by another page
+        ex.getResponseHeaders().set("Cache-Control", "no-store");
+        ex.getResponseHeaders().set("X-Content-Type-Options", "nosniff");
+        ex.getResponseHeaders().set("X-Frame-Options", "DENY");
+        ex.getResponseHeaders().set("Referrer-Policy", "no-referrer");
+        if (ex.getRequestMethod().equals("HEAD")) {
+            ex.sendResponseHeaders(status, -1);
+            return;
+        }
+        ex.sendResponseHeaders(status, body.length == 0 ? -1 : body.length);
+        if (body.length > 0) {
+            try (OutputStream out = ex.getResponseBody()) {
+                out.write(body);
+            }
+        }
+    }
+
+    static String firstLine(String s) {
+        if (s == null) {
+            return "";
+        }
+        int nl = s.indexOf('\n');
+        return nl < 0 ? s : s.substring(0, nl);
+    }
+}

@@ -1,0 +1,391 @@
+// gcnc studio's page: the editor (CodeMirror 6), the error list, the tool path and the Galil DMC, all linked
+// by G-code line. Everything it knows comes from the studio's JSON API (docs/studio.md), which runs the same
+// gcnc.Session as the command line.
+import { EditorView, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter, drawSelection } from "@codemirror/view";
+import { EditorState } from "@codemirror/state";
+import { syntaxHighlighting, defaultHighlightStyle } from "@codemirror/language";
+import { history as undoHistory, defaultKeymap, historyKeymap } from "@codemirror/commands";
+import { searchKeymap } from "@codemirror/search";
+import { linter, lintGutter, lintKeymap } from "@codemirror/lint";
+import { gcode } from "/static/gcode-mode.js";
+import { drawProfile } from "/static/profile.js";
+import { t, translatePage } from "/static/i18n.js";
+
+const params = new URLSearchParams(location.search);
+const token = params.get("token") || "";
+const $ = (id) => document.getElementById(id);
+
+/** The open program: its name, the version the server gave (null for a new file) and the text saved. */
+const current = { name: null, version: null, saved: "" };
+let lightPath = () => 0;
+let dmcBySource = new Map();
+let simulateTimer = null;
+let simulateSeq = 0;
+
+/** One API call; an answer that is not 2xx throws its {"error"} message. */
+async function api(endpoint, body) {
+  const init = { headers: { "X-Gcnc-Token": token } };
+  if (body !== undefined) {
+    init.method = "POST";
+    init.headers["Content-Type"] = "application/json";
+    init.body = JSON.stringify(body);
+  }
+  let res;
+  try {
+    res = await fetch("/api/" + endpoint, init);
+  } catch (e) {
+    throw Object.assign(new Error(t.offline), { status: 0 });
+  }
+  const json = await res.json().catch(() => ({ error: res.statusText }));
+  if (!res.ok) throw Object.assign(new Error(json.error || res.statusText), { status: res.status });
+  return json;
+}
+
+function status(text, kind) {
+  const s = $("status");
+  s.textContent = text;
+  s.className = kind || "";
+}
+
+// ---- the editor ---------------------------------------------------------------------------------------
+
+/** gcnc's diagnostics for the text, as CodeMirror's; the error list is filled from the same answer. */
+async function lint(view) {
+  if (!current.name) return [];
+  const text = view.state.doc.toString();
+  let report;
+  try {
+    report = await api("check", { name: current.name, text });
+  } catch (e) {
+    status(e.message, "bad");
+    return [];
+  }
+  if (view.state.doc.toString() !== text) return []; // typed on meanwhile: the next check will come
+  showProblems(report);
+  scheduleSimulate();
+  return report.diagnostics.map((d) => {
+    const line = view.state.doc.line(Math.min(Math.max(d.line, 1), view.state.doc.lines));
+    const from = Math.min(line.from + Math.max(d.column, 1) - 1, line.to);
+    let to = d.endColumn ? Math.min(line.from + d.endColumn - 1, line.to) : from;
+    if (to <= from) to = Math.min(line.to, from + 1);
+    return { from, to: Math.max(to, from), severity: d.severity === "error" ? "error" : "warning",
+      message: `${d.code} ${d.message}`, source: "gcnc" };
+  });
+}
+
+const view = new EditorView({
+  parent: $("editor"),
+  state: EditorState.create({ doc: "", extensions: extensions() }),
+});
+
+function extensions() {
+  return [
+    lineNumbers(), highlightActiveLineGutter(), undoHistory(), drawSelection(), highlightActiveLine(),
+    syntaxHighlighting(defaultHighlightStyle, { fallback: true }), gcode,
+    lintGutter(), linter(lint, { delay: 250 }),
+    keymap.of([...defaultKeymap, ...historyKeymap, ...searchKeymap, ...lintKeymap,
+      { key: "Mod-s", preventDefault: true, run: () => { save(false); return true; } }]),
+    EditorView.updateListener.of((u) => {
+      if (u.docChanged) dirtyChanged();
+      if (u.selectionSet || u.docChanged) cursorMoved();
+    }),
+  ];
+}
+
+function cursorLine() {
+  const head = view.state.selection.main.head;
+  const line = view.state.doc.lineAt(head);
+  return { line: line.number, column: head - line.from + 1 };
+}
+
+/** The block under the cursor: lit on the path and in the DMC. */
+function cursorMoved() {
+  const c = cursorLine();
+  $("cursor").textContent = t.cursor(c.line, c.column);
+  $("cursor").dataset.line = c.line;
+  lightPath(c.line);
+  for (const li of document.querySelectorAll("#dmc li.current")) li.classList.remove("current");
+  const lines = dmcBySource.get(c.line) || [];
+  lines.forEach((li) => li.classList.add("current"));
+  if (lines.length) lines[0].scrollIntoView({ block: "nearest" });
+}
+
+/** Puts the cursor at a line (and column) and shows it: from the error list, the path or the DMC. */
+function goTo(line, column) {
+  const doc = view.state.doc;
+  const l = doc.line(Math.min(Math.max(line, 1), doc.lines));
+  const pos = Math.min(l.from + Math.max((column || 1) - 1, 0), l.to);
+  view.dispatch({ selection: { anchor: pos }, scrollIntoView: true });
+  view.focus();
+}
+
+function dirty() {
+  return current.name !== null && view.state.doc.toString() !== current.saved;
+}
+
+function dirtyChanged() {
+  $("name").textContent = (current.name || t.untitled) + (dirty() ? " •" : "");
+  $("name").className = dirty() ? "dirty" : "";
+}
+
+// ---- the error list -----------------------------------------------------------------------------------
+
+function showProblems(report) {
+  const body = $("errors").querySelector("tbody");
+  body.replaceChildren();
+  for (const d of report.diagnostics) {
+    const tr = document.createElement("tr");
+    tr.className = d.severity;
+    tr.dataset.line = d.line;
+    tr.dataset.column = d.column;
+    for (const v of [d.code, d.message, d.line, d.column]) {
+      const td = document.createElement("td");
+      td.textContent = v;
+      tr.appendChild(td);
+    }
+    tr.tabIndex = 0; // reachable with Tab; Enter jumps as a click does
+    tr.addEventListener("click", () => goTo(d.line, d.column));
+    tr.addEventListener("keydown", (e) => { if (e.key === "Enter") goTo(d.line, d.column); });
+    body.appendChild(tr);
+  }
+  $("counts").textContent = report.errors + report.warnings === 0 ? "— " + t.noErrors
+    : "— " + t.nErrors(report.errors, report.warnings);
+}
+
+// ---- tool path and DMC --------------------------------------------------------------------------------
+
+function scheduleSimulate() {
+  clearTimeout(simulateTimer);
+  simulateTimer = setTimeout(simulate, 150);
+}
+
+/**
+ * Simulates the text as it is now. One simulation at a time (a long program takes a good part of a
+ * second): an edit meanwhile asks for one more, run when this one is done, with the text as it is then.
+ */
+let simulating = false;
+let simulateAgain = false;
+
+async function simulate() {
+  if (!current.name) return;
+  if (simulating) { simulateAgain = true; return; }
+  simulating = true;
+  const seq = ++simulateSeq;
+  const text = view.state.doc.toString();
+  try {
+    const r = await api("simulate", { name: current.name, text });
+    if (seq === simulateSeq) showSimulation(r);
+  } catch (e) {
+    status(e.message, "bad");
+  } finally {
+    simulating = false;
+    if (simulateAgain) { simulateAgain = false; scheduleSimulate(); }
+  }
+}
+
+/**
+ * The path, the DMC and the summary of a simulation. When the program has an error there is no DMC
+ * and no path: the last ones stay, greyed and marked as the last program without errors.
+ */
+function showSimulation(r) {
+  const fresh = r.drawing && r.drawing.moves.length > 0;
+  $("path").classList.toggle("stale", !fresh && $("profile").childElementCount > 0);
+  $("galil").classList.toggle("stale", !fresh && $("dmc").childElementCount > 0);
+  if (fresh) {
+    lightPath = drawProfile($("profile"), r.drawing, (line) => goTo(line, 1));
+    showDmc(r.dmc);
+    $("pathnote").textContent = "";
+  } else {
+    $("pathnote").textContent = $("profile").childElementCount > 0 ? t.stalePath : t.noPath;
+  }
+  showSummary(r);
+  cursorMoved();
+}
+
+function showDmc(lines) {
+  const ol = $("dmc");
+  ol.replaceChildren();
+  dmcBySource = new Map();
+  for (const l of lines) {
+    const li = document.createElement("li");
+    li.textContent = l.text;
+    li.dataset.source = l.line;
+    if (l.line > 0) li.addEventListener("click", () => goTo(l.line, 1));
+    ol.appendChild(li);
+    if (!dmcBySource.has(l.line)) dmcBySource.set(l.line, []);
+    dmcBySource.get(l.line).push(li);
+  }
+}
+
+function showSummary(r, compiled) {
+  const s = r.summary;
+  const box = $("summary");
+  box.replaceChildren();
+  const row = (k, v) => {
+    const div = document.createElement("div");
+    const b = document.createElement("b");
+    b.textContent = k + ": ";
+    div.append(b, v);
+    box.appendChild(div);
+  };
+  if (compiled) row(t.compile, compiled);
+  row(t.blocks, String(r.blocks));
+  if (r.dmc) row(t.dmcLines, String(r.dmc.length));
+  else if (r.dmcLines !== undefined) row(t.dmcLines, String(r.dmcLines));
+  if (s) {
+    if (s.cycleSeconds !== null) row(t.cycle, formatSeconds(s.cycleSeconds));
+    const e = s.machineExtents;
+    if (e.xMinMm !== null) row(t.extents, `X ${e.xMinMm.toFixed(2)} … ${e.xMaxMm.toFixed(2)}, Z ${e.zMinMm.toFixed(2)} … ${e.zMaxMm.toFixed(2)}`);
+  }
+}
+
+function formatSeconds(sec) {
+  const m = Math.floor(sec / 60);
+  return (m > 0 ? `${m} min ` : "") + `${(sec - 60 * m).toFixed(1)} s`;
+}
+
+// ---- files --------------------------------------------------------------------------------------------
+
+async function listFiles(files) {
+  if (!files) files = (await api("files")).files;
+  const sel = $("files");
+  sel.replaceChildren();
+  const none = document.createElement("option");
+  none.value = "";
+  none.textContent = files.length ? "—" : t.noProgram;
+  sel.appendChild(none);
+  for (const f of files) {
+    const o = document.createElement("option");
+    o.value = o.textContent = f.name;
+    sel.appendChild(o);
+  }
+  if (current.name && !files.some((f) => f.name === current.name)) {
+    const o = document.createElement("option");
+    o.value = o.textContent = current.name;
+    sel.appendChild(o);
+  }
+  sel.value = current.name || "";
+}
+
+function load(name, text, version) {
+  current.name = name;
+  current.version = version;
+  current.saved = text;
+  view.setState(EditorState.create({ doc: text, extensions: extensions() }));
+  $("profile").replaceChildren(); // another program: nothing of the last one's path or DMC stays
+  $("dmc").replaceChildren();
+  lightPath = () => 0;
+  dmcBySource = new Map();
+  $("files").value = name;
+  dirtyChanged();
+  cursorMoved();
+  const u = new URL(location.href);
+  u.searchParams.set("file", name);
+  history.replaceState(null, "", u);
+}
+
+async function open(name) {
+  if (dirty() && !confirm(t.discard)) {
+    $("files").value = current.name || "";
+    return;
+  }
+  try {
+    const p = await api("file?name=" + encodeURIComponent(name));
+    load(p.name, p.text, p.version);
+    status(t.opened(p.name), "ok");
+  } catch (e) {
+    status(e.message, "bad");
+  }
+}
+
+/** Saves the text; on any failure the text stays in the editor, unsaved, and the reason is shown. */
+async function save(asNew, name) {
+  if (!current.name) return false;
+  const target = name || current.name;
+  const text = view.state.doc.toString();
+  const body = { name: target, text, version: asNew ? null : current.version };
+  try {
+    let p;
+    try {
+      p = await api("save", body);
+    } catch (e) {
+      if (e.status !== 409 || !confirm(t.overwrite(target))) throw e;
+      p = await api("save", { ...body, force: true });
+    }
+    current.name = p.name;
+    current.version = p.version;
+    current.saved = text;
+    await listFiles();
+    dirtyChanged();
+    status(t.saved(p.name), "ok");
+    return true;
+  } catch (e) {
+    status(t.saveFailed(e.message), "bad");
+    return false;
+  }
+}
+
+async function newProgram() {
+  if (dirty() && !confirm(t.discard)) return;
+  const name = prompt(t.askName, "");
+  if (!name) return;
+  load(name, "", null);
+  current.saved = "\u0000"; // nothing on disk yet: a new program is unsaved until saved
+  dirtyChanged();
+  await listFiles();
+}
+
+async function saveAs() {
+  if (!current.name) return;
+  const name = prompt(t.askSaveAs, current.name);
+  if (!name || name === current.name) return save(false);
+  if (await save(true, name)) {
+    const u = new URL(location.href);
+    u.searchParams.set("file", current.name);
+    history.replaceState(null, "", u);
+  }
+}
+
+async function compile() {
+  if (!current.name) return;
+  if (dirty() && !(await save(false))) return;
+  status(t.compiling, "");
+  try {
+    const r = await api("compile", { name: current.name });
+    showProblems(r.diagnostics);
+    if (r.ok) {
+      status(t.compiled(r.dmc, r.map), "ok");
+      showSummary(r, `${r.dmc}, ${r.map}`);
+    } else {
+      status(t.compileFailed(t.nErrors(r.diagnostics.errors, r.diagnostics.warnings)), "bad");
+    }
+  } catch (e) {
+    status(e.message, "bad");
+  }
+}
+
+// ---- start --------------------------------------------------------------------------------------------
+
+translatePage();
+$("files").addEventListener("change", (e) => { if (e.target.value) open(e.target.value); });
+$("new").addEventListener("click", newProgram);
+$("save").addEventListener("click", () => save(false));
+$("saveas").addEventListener("click", saveAs);
+$("compile").addEventListener("click", compile);
+window.addEventListener("beforeunload", (e) => {
+  if (dirty()) { e.preventDefault(); e.returnValue = ""; }
+});
+
+(async () => {
+  try {
+    const info = await api("info");
+    $("where").textContent = `${info.folder} · ${info.machine} · ${info.control}`;
+    await listFiles();
+    const events = new EventSource("/api/events?token=" + encodeURIComponent(token));
+    events.addEventListener("files", (e) => listFiles(JSON.parse(e.data).files));
+    if (params.get("file")) await open(params.get("file"));
+    document.body.dataset.ready = "true";
+  } catch (e) {
+    status(e.message, "bad");
+  }
+})();
