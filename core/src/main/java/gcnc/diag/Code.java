@@ -5,7 +5,8 @@ package gcnc.diag;
  * 1-54 are the thesis's Table 5; gcnc's own codes start at 100:
  * 100-199 checker (G-code semantics), 200-299 Galil backend (but 240-249: checker again, the
  * chamfered thread pull-out, since the threads' E190-E199 are full), 300-399 simulator,
- * 400-499 tables and machine profiles, 500-599 command line and files.
+ * 400-499 tables and machine profiles, 500-599 command line and files, 680-699 program flow and
+ * macros again (the flow's E130-E159 are full) and the run's caps.
  * Message texts live in tables/errors.csv; {@code CodeTableTest} keeps the two in step.
  */
 public enum Code {
@@ -388,7 +389,12 @@ public enum Code {
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502);
+    E502_OUTPUT_IS_DIRECTORY(502),
+
+    /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
+    E680_FOLDED(680),
+    /** Note: the cap on warnings and notes was reached; later ones are not kept. */
+    E681_OTHER_CAP(681);
 
     private final int number;
 
