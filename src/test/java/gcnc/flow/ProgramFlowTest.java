@@ -271,7 +271,10 @@ class ProgramFlowTest {
     @Test
     void aFindingInARepeatedProgramIsReportedOnce() {
         String p = START + "M98 P1000 L3\nM30\nO1000\nG01 Z-20. F0.2 Q1.\nM99\n";
-        assertEquals("9:16:E108, 9:16:E136", codes("haas", p));
+        Compiler.Result r = check("haas", p, Optional.empty());
+        assertEquals("9:16:E108, 9:16:E136, 9:16:E680", codes(r));
+        assertTrue(messages(r).endsWith("p.nc:9:16: note[E680]: the same in 3 passes of this block; shown once"),
+                messages(r));
     }
 
     @Test

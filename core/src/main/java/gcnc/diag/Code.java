@@ -394,7 +394,11 @@ public enum Code {
     /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
     E680_FOLDED(680),
     /** Note: the cap on warnings and notes was reached; later ones are not kept. */
-    E681_OTHER_CAP(681);
+    E681_OTHER_CAP(681),
+    /** {@code #3000 = n}: n is not an alarm number (0 to 200); the control stops with an alarm of its own. */
+    E682_MACRO_ALARM_NUMBER(682),
+    /** A macro value outside what a variable holds (0, or 10^-29 to 10^47 in size): alarm 111. */
+    E683_MACRO_VALUE_RANGE(683);
 
     private final int number;
 
