@@ -384,6 +384,14 @@ public enum Code {
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
     E400_TABLE(400),
+    /** A number in a profile or control larger in size than any Galil register (2^31 - 1). */
+    E401_PROFILE_NUMBER_TOO_LARGE(401),
+    /** A profile value outside the range gcnc takes for it (counts per mm, r/min, feed.per_f). */
+    E402_PROFILE_VALUE_RANGE(402),
+    /** A work or tool offset that, in counts, does not fit a 32-bit position register. */
+    E403_PROFILE_COUNTS_OVERFLOW(403),
+    /** A table, control or profile file larger than gcnc reads (a link to a device, a file of another kind). */
+    E404_TABLE_FILE_TOO_LARGE(404),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
