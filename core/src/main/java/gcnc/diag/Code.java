@@ -398,6 +398,12 @@ public enum Code {
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
     E502_OUTPUT_IS_DIRECTORY(502),
+    /** A line of a program longer than gcnc reads (BoundedReader.LINE_LIMIT); the rest of it is skipped. */
+    E503_LINE_TOO_LONG(503),
+    /** A program text longer than gcnc reads (BoundedReader.TEXT_LIMIT); reading ends there. */
+    E504_TEXT_TOO_LONG(504),
+    /** The file a call would read (O1000.nc) is a directory or a device, not a program file. */
+    E505_CALLED_NOT_A_FILE(505),
 
     /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
     E680_FOLDED(680),
@@ -406,7 +412,9 @@ public enum Code {
     /** {@code #3000 = n}: n is not an alarm number (0 to 200); the control stops with an alarm of its own. */
     E682_MACRO_ALARM_NUMBER(682),
     /** A macro value outside what a variable holds (0, or 10^-29 to 10^47 in size): alarm 111. */
-    E683_MACRO_VALUE_RANGE(683);
+    E683_MACRO_VALUE_RANGE(683),
+    /** An end code (M30, M02) in a called program: the whole run ends there, the caller never resumes. */
+    E685_END_IN_CALLED_PROGRAM(685);
 
     private final int number;
 

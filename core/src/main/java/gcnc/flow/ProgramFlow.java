@@ -144,7 +144,10 @@ public final class ProgramFlow implements BlockSource {
                     continue;
                 }
             }
-            return follow(b, f);
+            b = follow(b, f);
+            if (b != null) {
+                return b;
+            }
         }
     }
 
@@ -228,6 +231,12 @@ public final class ProgramFlow implements BlockSource {
     /** The block as the checker is given it, after following its call or return ({@code f}: the program it is in). */
     private RawBlock follow(RawBlock b, Frame f) throws IOException {
         int depth = stack.size() - 1;
+        if (depth > 0 && !b.malformed()) {
+            b = withoutEnd(b, f);
+            if (b == null) {
+                return null;
+            }
+        }
         if (b.malformed() || b.blockDelete() > 0 && control.blockDelete() == Control.BlockDelete.ON) {
             return depth == 0 ? b : b.called(b.words(), b.last(), depth);
         }
@@ -244,6 +253,29 @@ public final class ProgramFlow implements BlockSource {
             stack.push(callee);
         }
         return rest;
+    }
+
+    /**
+     * An end code (M30, M02) in a called program ends the whole run there: E685 at it, in the called
+     * program, and the block goes on without it, so that the caller's blocks after the call are
+     * checked as written rather than each blamed for coming after the end (E053). Null when the end
+     * code was the block's only word.
+     */
+    private RawBlock withoutEnd(RawBlock b, Frame f) {
+        List<Word> kept = null;
+        for (Word w : b.words()) {
+            if (codes.role(w) == MRole.END) {
+                diags.error(Code.E685_END_IN_CALLED_PROGRAM, w.span(), w, f.name);
+                if (kept == null) {
+                    kept = new ArrayList<>(b.words());
+                }
+                kept.remove(w);
+            }
+        }
+        if (kept == null) {
+            return b;
+        }
+        return kept.isEmpty() ? null : b.called(kept, kept.get(kept.size() - 1).span(), b.depth());
     }
 
     /** M99: the end of a called program; in the main program its end, with a warning (E139). M99 P: E110. */

@@ -10,7 +10,6 @@ import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
 import gcnc.tables.Utf8;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -67,7 +66,7 @@ public final class ProfileLoader {
     /** A profile given as a path, decoded as the tables are ({@link Utf8}). */
     private static String readFile(Path p) throws TableException {
         try {
-            return Utf8.decode(p.toString(), Files.readAllBytes(p));
+            return Utf8.read(p.toString(), p);
         } catch (NoSuchFileException e) {
             throw ProfileFile.fault(p.toString(), 1, 1, Phrase.PROFILE_NOT_FOUND.arg());
         } catch (IOException e) {
