@@ -141,10 +141,11 @@ public final class Diagnostics {
             lastNotKept = true;
             return false;
         }
-        if (d.severity() == Severity.ERROR) {
-            errors++;
+        boolean room = d.severity() == Severity.ERROR ? roomForError(d) : roomForOther(d);
+        if (d.severity() == Severity.ERROR && (room || d.code() != Code.E116_ERROR_CAP)) {
+            errors++; // kept or past the cap; a second E116 is not another error
         }
-        if (d.severity() == Severity.ERROR ? !roomForError(d) : !roomForOther(d)) {
+        if (!room) {
             last = -1;
             lastNotKept = true;
             return false;

@@ -135,12 +135,12 @@ public final class ProfileFile {
     }
 
     /**
-     * The largest size of any number in a profile or control: the largest value of a Galil
-     * register (2^31 - 1). Every value ends up in one (speeds, accelerations) or is a length, a
-     * speed or a count far below it; past it a value is a slip of the keyboard (1e306), and one
-     * that large would overflow every sum it enters (E401).
+     * The largest size of any number in a profile or control: 10^12. No length (mm), speed, rate or
+     * count of a lathe comes near it, and a product of two such numbers (mm times counts per mm)
+     * stays a finite number, so that the checks in counts that follow can speak; past it a value is
+     * a slip of the keyboard (1e306) that would overflow every sum it enters (E401).
      */
-    public static final double MAX_SIZE = Integer.MAX_VALUE;
+    public static final double MAX_SIZE = 1e12;
 
     /** One number written inside the value of {@code e} (a pair, a list of points). */
     public double number(Entry e, String text) throws TableException {
@@ -163,7 +163,7 @@ public final class ProfileFile {
     }
 
     public double within(Entry e, double min, double max) throws TableException {
-        double v = number(e);
+        double v = min > 0 ? positive(e.key()) : number(e);
         if (!(v >= min && v <= max)) {
             throw fault(e, Code.E402_PROFILE_VALUE_RANGE, e.key(), written(v), written(min), written(max));
         }

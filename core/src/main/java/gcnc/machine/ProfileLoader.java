@@ -183,7 +183,8 @@ public final class ProfileLoader {
         try {
             return ControlLoader.load(name, tables);
         } catch (TableException e) {
-            if (override == null && f.entry("control").isPresent()) {
+            // a fault of its own code (a file too large, E404) is shown as it is, at the control's file
+            if (override == null && f.entry("control").isPresent() && e.diagnostic().code() == gcnc.diag.Code.E400_TABLE) {
                 throw f.fault(f.required("control"), Phrase.CONTROL_FAULT.with(name,
                         e.path() + ":" + e.diagnostic().span().line() + ":" + e.diagnostic().span().column(),
                         e.diagnostic().args().isEmpty() ? "" : e.diagnostic().args().get(0)));
