@@ -44,7 +44,7 @@ public final class Diagnostics {
     private final Map<String, Integer> byPlace = new HashMap<>();
     /** Notes kept, exactly (code, file, place, text): a note is never repeated. */
     private final Set<String> notes = new HashSet<>();
-    /** The last error or warning reported: its index in {@link #all}, -1 when it was not kept. */
+    /** The last error or warning reported: the index in {@link #all} of it or of the one it was folded into; -1 past a cap. */
     private int last = -1;
     /** Whether the last error or warning was folded into an earlier one or dropped at a cap, and its place. */
     private boolean lastNotKept;
