@@ -97,7 +97,7 @@ class BoundedRunTest {
     @Test
     void numbersNoMacroHoldsAndDeepSignsAreLocatedErrors() throws Exception {
         ends(gcnc("check", limits("four-hundred-nines.nc"), "--machine", "fanuc"), 1,
-                "four-hundred-nines.nc:5:7: error[E683]: 999999999999999999999999999999... comes to more than 1.8E+308");
+                "four-hundred-nines.nc:5:7: error[E683]: 999999999999999999999999999999... comes to >1.8E+308");
         ends(gcnc("check", limits("ten-thousand-signs.nc"), "--machine", "fanuc"), 0, "6 blocks, no errors");
         ends(gcnc("check", limits("alarm-number.nc"), "--machine", "fanuc"), 1,
                 "alarm-number.nc:3:1: error[E682]: #3000 = 1E+21: an alarm number is a whole number from 0 to 200");

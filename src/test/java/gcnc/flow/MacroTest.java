@@ -176,7 +176,7 @@ class MacroTest {
         // 400 nines: an infinity as a double; it threw NumberFormatException formatting the word
         String nines = "9".repeat(400);
         Compiler.Result r = check("fanuc-a", "G00 X[" + nines + "]\nM30\n");
-        assertEquals("p.nc:1:7: error[E683]: 999999999999999999999999999999... comes to more than 1.8E+308: a macro value"
+        assertEquals("p.nc:1:7: error[E683]: 999999999999999999999999999999... comes to >1.8E+308: a macro value"
                 + " is 0 or between 10^-29 and 10^47 in size; the control stops (alarm 111)", ProgramFlowTest.messages(r));
         // an overflow, an underflow, at the start of the operation that comes to it
         assertEquals(" // 2:6:E683", run("#1 = 10000000\n#2 = #1*#1*#1*#1*#1*#1*#1\n"));

@@ -140,13 +140,13 @@ class MacroExpression extends MacroCursor {
         return v + 0.0; // no -0
     }
 
-    /** A value for a message: plain up to 15 digits, else in powers of ten ("1.0E+400" for an infinity of digits). */
+    /** A value for a message, in any language: six digits and a power of ten; past a double's range "&gt;1.8E+308". */
     static String written(double v) {
         if (Double.isNaN(v)) {
-            return "no number";
+            return "NaN";
         }
         if (Double.isInfinite(v)) {
-            return v > 0 ? "more than 1.8E+308" : "less than -1.8E+308";
+            return v > 0 ? ">1.8E+308" : "<-1.8E+308";
         }
         return new java.math.BigDecimal(v).round(new java.math.MathContext(6)).stripTrailingZeros().toString();
     }
