@@ -94,6 +94,30 @@ class BoundedRunTest {
                 "loop-many-blocks.nc: 400008 blocks, no errors");
     }
 
+    /** A program of {@code blocks} moves after {@code first} (a macro statement, or a call), then M30 and {@code after}. */
+    private static Path held(String name, String first, int blocks, String after) throws IOException {
+        StringBuilder p = new StringBuilder("O0185\nG21 G18 G40 G99\nT0101\nG97 S1000 M03\nG00 X52. Z2.\n" + first + "\n");
+        for (int i = 0; i < blocks; i++) {
+            p.append("G01 X").append(40 + i % 100 / 10.0).append(" Z-").append(i % 300 / 10.0).append(" F0.2\n");
+        }
+        return Files.writeString(dir.resolve(name), p.append("G00 X60.\nM30\n").append(after).toString());
+    }
+
+    @Test
+    void whatTheFlowHoldsFitsTheHeap() throws Exception {
+        // 150,000 blocks after a macro statement (held for GOTO and END) ran out of 64 MB; now the
+        // limit is the heap's (one block per KiB: 65,536) and the rest is E137, not a crash
+        Path macro = held("held-macro.nc", "#1 = 1", 150_000, "");
+        Run r = gcnc("check", macro.toString(), "--machine", "fanuc");
+        ends(r, 1, "error[E137]: too long to follow: gcnc holds at most");
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("holds at most (\\d+) blocks").matcher(r.output());
+        assertTrue(m.find(), r.output());
+        assertTrue(Integer.parseInt(m.group(1)) <= 65_536, "the limit of a 64 MB heap: " + m.group(1));
+        // the same after a call: the rest of the file is read for the programs after M30
+        Path call = held("held-call.nc", "M98 P1000", 150_000, "O1000\nG00 X60.\nM99\n");
+        ends(gcnc("check", call.toString(), "--machine", "fanuc"), 1, "error[E137]");
+    }
+
     @Test
     void numbersNoMacroHoldsAndDeepSignsAreLocatedErrors() throws Exception {
         ends(gcnc("check", limits("four-hundred-nines.nc"), "--machine", "fanuc"), 1,

@@ -32,13 +32,19 @@ import java.util.Set;
  *
  * <p>Memory: a program without a call is read one line at a time, as before. At the first call
  * the rest of the file is read and held (the called programs are after the main program's end),
- * at most {@link #HOLD_LIMIT} blocks in all, with the files beside it that calls name; past that
+ * at most {@link #holdLimit()} blocks in all, with the files beside it that calls name; past that
  * the call is E137 and calls are no longer followed. A main program is held from its first macro
  * statement on (GOTO and END jump back), up to the same limit.
  */
 public final class ProgramFlow implements BlockSource {
     /** The most blocks held in memory for calls (the rest of the file after the first call, and the called files), and for jumps. */
     public static final int HOLD_LIMIT = 200_000;
+    /**
+     * Bytes of heap allowed per block held: a held block takes about 400 bytes, so a quarter to a
+     * half of the heap at most. In a small heap ({@code -Xmx64m}: 65,536 blocks) the limit is lower
+     * than {@link #HOLD_LIMIT}, so that holding ends with E137 and never runs the JVM out of memory.
+     */
+    private static final long HEAP_PER_BLOCK = 1024;
     /** How many times a WHILE loop may run from one entry, and a GOTO jump back, before it is taken for endless (E149). */
     public static final int LOOP_LIMIT = 100_000;
     /**
@@ -64,7 +70,7 @@ public final class ProgramFlow implements BlockSource {
     /** The main program's blocks that an M97 call ran (a local subprogram after M30 is not "after the end"). */
     private final BitSet ranLocally = new BitSet();
     /** The labels a GOTO (taken or not) or an M97 names: a stretch after M30 from one of them can be reached. */
-    private final Set<Long> named = new HashSet<>();
+    private final BitSet named = new BitSet();
     /** After the main program's end: in a stretch from a named label to the next end code (M30, M02, M99). */
     private boolean inReachable;
     private final MacroJumps jumps;
@@ -84,7 +90,7 @@ public final class ProgramFlow implements BlockSource {
      *               looked for (the program file's folder); empty: only its own file
      */
     public ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder) {
-        this(reader, control, diags, folder, HOLD_LIMIT);
+        this(reader, control, diags, folder, holdLimit());
     }
 
     ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder, int holdLimit) {
@@ -96,6 +102,11 @@ public final class ProgramFlow implements BlockSource {
         this.library = new Library(folder, diags, holdLimit, control.macros());
         this.jumps = new MacroJumps(diags);
         stack.push(Frame.main(mainBlocks));
+    }
+
+    /** The most blocks this JVM holds: {@link #HOLD_LIMIT}, or one per KiB of its largest heap if that is fewer. */
+    public static int holdLimit() {
+        return (int) Math.min(HOLD_LIMIT, Runtime.getRuntime().maxMemory() / HEAP_PER_BLOCK);
     }
 
     @Override
@@ -179,6 +190,16 @@ public final class ProgramFlow implements BlockSource {
         }
     }
 
+    /** N numbers go up to 9999999 (the checker's E009 past it): a computed GOTO cannot grow the set past that. */
+    private static final long MAX_LABEL = 10_000_000;
+
+    /** A label a GOTO or M97 names (a bit each: a loop of computed GOTOs holds no more than 1.25 MB). */
+    private void name(long label) {
+        if (label >= 0 && label < MAX_LABEL) {
+            named.set((int) label);
+        }
+    }
+
     /**
      * Whether a block after the main program's end can be reached from a GOTO or M97 that names its
      * label (or one before it in the same stretch, up to an end code), though this run did not go
@@ -186,7 +207,7 @@ public final class ProgramFlow implements BlockSource {
      */
     private boolean reachable(RawBlock b) {
         long label = MacroJumps.label(b);
-        if (!inReachable && label >= 0 && named.contains(label)) {
+        if (!inReachable && label >= 0 && label < MAX_LABEL && named.get((int) label)) {
             inReachable = true;
             diags.report(new Diagnostic(Code.E138_NEVER_CALLED, gcnc.diag.Severity.NOTE,
                     b.words().isEmpty() ? b.last() : b.words().get(0).span(), List.of("N" + label), Origin.PROGRAM));
@@ -214,7 +235,7 @@ public final class ProgramFlow implements BlockSource {
             return null; // jumps are no longer followed: the program runs on to its end
         }
         if (o instanceof MacroLine.Jump j) {
-            named.add(j.label());
+            name(j.label());
             if (j.taken()) {
                 jumps.goTo(f, j, at);
             }
@@ -377,7 +398,7 @@ public final class ProgramFlow implements BlockSource {
             }
             return null;
         }
-        named.add(label);
+        name(label);
         if (caller.blocks == mainBlocks) {
             mainBlocks.hold();
         }
