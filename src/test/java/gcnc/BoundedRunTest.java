@@ -92,6 +92,11 @@ class BoundedRunTest {
     void aLoopOfManyCleanBlocksStreams() throws Exception {
         ends(gcnc("check", limits("loop-many-blocks.nc"), "--machine", "fanuc"), 0,
                 "loop-many-blocks.nc: 400008 blocks, no errors");
+        // translated, replayed and written (2,000,021 lines) in the same heap
+        Path dmc = dir.resolve("loop-many-blocks.dmc");
+        Run r = gcnc("compile", limits("loop-many-blocks.nc"), "--machine", "fanuc", "-o", dmc.toString());
+        ends(r, 0, "simulation: 400002 sequences, 400002 segments, 0 findings");
+        assertTrue(Files.size(dmc) > 10_000_000, "the program was written whole");
     }
 
     /** A program of {@code blocks} moves after {@code first} (a macro statement, or a call), then M30 and {@code after}. */
