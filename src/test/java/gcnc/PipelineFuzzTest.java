@@ -27,7 +27,8 @@ import org.junit.jupiter.api.TestFactory;
  * numbered diagnostic on a line of the program; a clean result has emitted a program ending in EN.
  * And in the galil dialect, on either machine, the replayed DMC follows the program: no
  * conformance finding (E308, E309, E311, E314), which would be the compiler's fault, not the
- * program's. A failure names its seed. A longer campaign:
+ * program's. A failure names its seed. Real-style programs mutated line by line go through the same
+ * checks ({@link #mutatedRealProgramsNeverBreakThePipeline}). A longer campaign:
  * {@code gradle junitPlatformTest -PfuzzSeed=1 -PfuzzCount=100000} (10,000 programs take about 15 s here).
  */
 class PipelineFuzzTest {
@@ -90,6 +91,82 @@ class PipelineFuzzTest {
             }));
         }
         return tests.stream();
+    }
+
+    /**
+     * Real-style programs (src/test/resources/fuzz: written for this test in the style of shop
+     * programs: cycles, tool changes, a macro loop with a subprogram, an M97 local subprogram), each
+     * clean on its machine, mutated as a hand or a bad transfer would: lines deleted, duplicated or
+     * swapped, a digit changed, a decimal point dropped, a word inserted. Nothing may throw, and
+     * check, compile and the replay of what compile wrote must agree ({@link #run}). The default run
+     * makes a fifth as many mutants of each as there are random programs; -PfuzzCount raises both.
+     */
+    @TestFactory
+    Stream<DynamicTest> mutatedRealProgramsNeverBreakThePipeline() throws Exception {
+        MachineProfile haas = ProfileLoader.load("haas", TableSource.builtIn(), TABLES);
+        MachineProfile fanuc = ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES);
+        long first = Long.getLong("gcnc.fuzz.seed", 20261122L);
+        long count = Math.max(4, Long.getLong("gcnc.fuzz.count", 60) / 5);
+        List<DynamicTest> tests = new ArrayList<>();
+        for (String base : new String[] {"haas-bushing", "haas-box-local", "fanuc-thread-shaft", "fanuc-macro-grooves"}) {
+            String program = java.nio.file.Files.readString(java.nio.file.Path.of("src/test/resources/fuzz", base + ".nc"));
+            MachineProfile machine = base.startsWith("haas") ? haas : fanuc;
+            tests.add(dynamicTest(base + " as written", () -> {
+                Compiler.Result clean = Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, machine,
+                        "galil", Optional.empty()));
+                assertEquals(List.of(), errors(clean, false), base + " is a clean base program");
+                run(program, machine, "galil", 0);
+            }));
+            for (long seed = first; seed < first + count; seed++) {
+                long s = seed;
+                tests.add(dynamicTest(base + " seed " + s, () -> run(mutated(program, new Random(s)), machine, "galil", s)));
+            }
+        }
+        return tests.stream();
+    }
+
+    /** One to three mutations of a program's lines (never of its first line, the % or O line). */
+    static String mutated(String program, Random rnd) {
+        List<String> lines = new ArrayList<>(program.lines().toList());
+        for (int m = 1 + rnd.nextInt(3); m > 0 && lines.size() > 3; m--) {
+            int i = 2 + rnd.nextInt(lines.size() - 2);
+            String line = lines.get(i);
+            switch (rnd.nextInt(6)) {
+                case 0 -> lines.remove(i);
+                case 1 -> lines.add(i, line);
+                case 2 -> {
+                    int j = i == lines.size() - 1 ? i - 1 : i + 1;
+                    lines.set(i, lines.get(j));
+                    lines.set(j, line);
+                }
+                case 3 -> lines.set(i, replaceOne(line, rnd, Character::isDigit, () -> (char) ('0' + rnd.nextInt(10))));
+                case 4 -> lines.set(i, replaceOne(line, rnd, c -> c == '.', null));
+                default -> {
+                    String words = "GMXZUWIKRFSTPQL";
+                    String word = words.charAt(rnd.nextInt(words.length())) + Integer.toString(rnd.nextInt(200))
+                            + (rnd.nextBoolean() ? "." + rnd.nextInt(100) : "");
+                    int at = rnd.nextInt(line.length() + 1);
+                    lines.set(i, line.substring(0, at) + " " + word + " " + line.substring(at));
+                }
+            }
+        }
+        return String.join("\n", lines) + "\n";
+    }
+
+    /** {@code line} with one character that {@code which} picks replaced by {@code by} (removed when null). */
+    private static String replaceOne(String line, Random rnd, java.util.function.IntPredicate which,
+                                     java.util.function.Supplier<Character> by) {
+        List<Integer> at = new ArrayList<>();
+        for (int k = 0; k < line.length(); k++) {
+            if (which.test(line.charAt(k))) {
+                at.add(k);
+            }
+        }
+        if (at.isEmpty()) {
+            return line;
+        }
+        int k = at.get(rnd.nextInt(at.size()));
+        return line.substring(0, k) + (by == null ? "" : String.valueOf(by.get())) + line.substring(k + 1);
     }
 
     /**

@@ -165,7 +165,9 @@ public final class Compiler {
      * parser's blocks go through the program flow (subprogram calls, macro statements), which
      * keeps a program without calls or macro statements streaming.
      */
-    private static BlockSource blocks(Reader source, Settings settings, Diagnostics diags) {
+    private static BlockSource blocks(Reader text, Settings settings, Diagnostics diags) {
+        // no line and no text past the input limits (E503, E504): bounded memory and time whatever is read
+        Reader source = new gcnc.parse.BoundedReader(text, diags, gcnc.diag.Origin.PROGRAM);
         gcnc.machine.Control control = settings.profile().control();
         if (!control.hasProgramFlow()) {
             // no calls, no macros

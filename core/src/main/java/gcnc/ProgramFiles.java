@@ -24,6 +24,8 @@ public final class ProgramFiles {
         List<String> lower = normal(extensions);
         try (Stream<Path> files = Files.walk(folder)) {
             return files.filter(Files::isRegularFile).filter(p -> has(p, lower)).sorted().toList();
+        } catch (java.io.UncheckedIOException e) {
+            throw e.getCause(); // a sub-folder that cannot be read, found while walking: the caller's E500, not a trace
         }
     }
 

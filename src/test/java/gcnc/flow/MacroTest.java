@@ -171,6 +171,47 @@ class MacroTest {
         assertEquals("p.nc:1:1: error[E148]: alarm 12 (#3000): TOOL WORN", ProgramFlowTest.messages(r));
     }
 
+    @Test
+    void aNumberNoMacroVariableHoldsIsAlarm111() {
+        // 400 nines: an infinity as a double; it threw NumberFormatException formatting the word
+        String nines = "9".repeat(400);
+        Compiler.Result r = check("fanuc-a", "G00 X[" + nines + "]\nM30\n");
+        assertEquals("p.nc:1:7: error[E683]: 999999999999999999999999999999... comes to >1.8E+308: a macro value"
+                + " is 0 or between 10^-29 and 10^47 in size; the control stops (alarm 111)", ProgramFlowTest.messages(r));
+        // an overflow, an underflow, at the start of the operation that comes to it
+        assertEquals(" // 2:6:E683", run("#1 = 10000000\n#2 = #1*#1*#1*#1*#1*#1*#1\n"));
+        assertEquals(" // 2:6:E683", run("#1 = 0.0000001\n#2 = #1*#1*#1*#1*#1\n"));
+        // up to 10^47 and down to 10^-29 are values; vacant minus vacant is 0, not NaN
+        assertEquals("3: X0.", run("#1 = 10000000\n#2 = #1*#1*#1*#1*#1*#1\nX[#2 - #2]\n"));
+        assertEquals("1: X0.", run("X[#1 - #1]\n"));
+    }
+
+    @Test
+    void anyRunOfSignsIsReadWithoutRecursion() {
+        // 10,000 minus signs overflowed the stack
+        assertEquals("3: X-1.", run("#1 = 1\n#2 = " + "-".repeat(10_001) + "#1\nX#2\n"));
+        assertEquals("3: X1.", run("#1 = 1\n#2 = " + "-".repeat(10_000) + "#1\nX#2\n"));
+        assertEquals("1: X-5.", run("X[-+-+-5]\n"));
+    }
+
+    @Test
+    void alarm3000TakesAnAlarmNumberFrom0To200() {
+        Compiler.Result r = check("fanuc-a", "#3000 = 1000000000000000000000 (BAD)\nM30\n");
+        assertEquals("p.nc:1:1: error[E682]: #3000 = 1E+21: an alarm number is a whole number from 0 to 200; the control"
+                + " stops with an alarm of its own", ProgramFlowTest.messages(r));
+        assertEquals(" // 1:1:E682", run("#3000 = -1\n"));
+        assertEquals(" // 1:1:E148", run("#3000 = 200 (LAST)\n"));
+    }
+
+    @Test
+    void aWhileEnteredWithoutItsEndIsReported() {
+        // it passed silently: the body ran once and the program went on
+        Compiler.Result r = check("fanuc-a", "#1 = 0\nWHILE [#1 LT 3] DO1\nG00 X[40 + #1]\n#1 = #1 + 1\nM30\n");
+        assertTrue(ProgramFlowTest.messages(r).startsWith(
+                "p.nc:2:1: error[E141]: WHILE [#1 LT 3] DO1: no END 1 to go to in this program from line 1 on"),
+                ProgramFlowTest.messages(r));
+    }
+
     // ---- flow ----
 
     @Test

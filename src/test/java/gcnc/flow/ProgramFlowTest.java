@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Compiler;
+import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.GnuRenderer;
@@ -198,6 +199,49 @@ class ProgramFlowTest {
         assertEquals("6:1:E133", codes("fanuc-a", START + "M98 P1\nM30\n"));
     }
 
+    // ---- issue 18: the origin of an end in a called program, what is not a file ----
+
+    @Test
+    void anEndCodeInACalledFileIsReportedThereNotOnTheCallersLines() throws IOException {
+        // the caller's correct lines 7-10 were each E053 "M30 can only be at the end"
+        Files.writeString(dir.resolve("O1000.nc"), "O1000\nG01 Z-10. F0.2\nM30\nM99\n");
+        String p = START + "M98 P1000\nG00 X60. Z5.\nG01 Z-5. F0.2\nG00 X70.\nM30\n";
+        Compiler.Result r = check("fanuc-a", p, Optional.of(dir));
+        assertEquals("O1000.nc:3:1:E685, O1000.nc:3:1:E145", codes(r));
+        assertTrue(messages(r).contains(":3:1: error[E685]: M30 in O1000 ends the whole program: the caller never"
+                + " goes on after the call (a called program ends with M99)"), messages(r));
+        // after the main program's end in the same file, with other words in the block
+        assertEquals("9:16:E685, 9:16:E136", codes("fanuc-a", START + "M98 P1000\nM30\nO1000\nG01 Z-20. F0.2 M30\nM99\n"));
+    }
+
+    @Test
+    void aCalledFileThatIsADirectoryIsSaidToBeOne() throws IOException {
+        Files.createDirectory(dir.resolve("O1000.nc"));
+        Compiler.Result r = check("fanuc-a", START + "M98 P1000\nM30\n", Optional.of(dir));
+        assertEquals("6:1:E505", codes(r));
+        assertTrue(messages(r).endsWith("O1000.nc is a directory or a device and not a program file"), messages(r));
+    }
+
+    @Test
+    void aCalledFileWithALineTooLongIsCutThere() throws IOException {
+        Files.writeString(dir.resolve("O1000.nc"), "O1000\n(" + "X".repeat(gcnc.parse.BoundedReader.LINE_LIMIT + 10)
+                + ")\nM99\n");
+        Compiler.Result r = check("fanuc-a", START + "M98 P1000\nM30\n", Optional.of(dir));
+        assertTrue(codes(r).contains("O1000.nc:2:" + (gcnc.parse.BoundedReader.LINE_LIMIT + 1) + ":E503"), codes(r));
+    }
+
+    @Test
+    void aLoopThatRepeatsAnErrorReportsItOnceWithItsPasses() {
+        // 170 bytes that printed 1,249,222 identical E146 errors (2.9 GB)
+        String p = "#2 = 0\nWHILE [#2 LT 20] DO2\n#1 = 0\nWHILE [#1 LT 30] DO1\nG01 X#24\n#1 = #1 + 1\nEND1\n"
+                + "#2 = #2 + 1\nEND2\nM30\n";
+        Compiler.Result r = check("fanuc-a", p, Optional.empty());
+        assertTrue(messages(r).contains("p.nc:5:5: error[E146]: X#24 has no value: a vacant variable or a division by"
+                + " zero or a function outside its domain\np.nc:5:5: note[E680]: the same in 600 passes of this block;"
+                + " shown once"), messages(r));
+        assertEquals(1, r.diagnostics().sorted().stream().filter(d -> d.code() == Code.E146_MACRO_NO_VALUE).count());
+    }
+
     // ---- what is missing ----
 
     @Test
@@ -271,7 +315,10 @@ class ProgramFlowTest {
     @Test
     void aFindingInARepeatedProgramIsReportedOnce() {
         String p = START + "M98 P1000 L3\nM30\nO1000\nG01 Z-20. F0.2 Q1.\nM99\n";
-        assertEquals("9:16:E108, 9:16:E136", codes("haas", p));
+        Compiler.Result r = check("haas", p, Optional.empty());
+        assertEquals("9:16:E108, 9:16:E136, 9:16:E680", codes(r));
+        assertTrue(messages(r).endsWith("p.nc:9:16: note[E680]: the same in 3 passes of this block; shown once"),
+                messages(r));
     }
 
     @Test

@@ -40,8 +40,8 @@ import java.util.Set;
  * reported with a note saying so.
  */
 public final class Checker {
-    /** After this many errors the checker reports E116 once and stops. */
-    public static final int ERROR_CAP = 10_000;
+    /** After this many errors the checker reports E116 once and stops (the run keeps no more: {@link Diagnostics}). */
+    public static final int ERROR_CAP = Diagnostics.ERROR_CAP;
     /** Prerequisite errors that later blocks repeat until the program fixes the cause. */
     private static final Set<Code> ROOT_CAUSES = Set.of(Code.E037_SPINDLE_DIRECTION_BEFORE_CUT,
             Code.E038_CHUCK_OPEN_CUT, Code.E039_FEED_NOT_SET, Code.E041_G50_NOT_SET_BEFORE_CUT,

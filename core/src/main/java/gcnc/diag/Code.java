@@ -5,7 +5,8 @@ package gcnc.diag;
  * 1-54 are the thesis's Table 5; gcnc's own codes start at 100:
  * 100-199 checker (G-code semantics), 200-299 Galil backend (but 240-249: checker again, the
  * chamfered thread pull-out, since the threads' E190-E199 are full), 300-399 simulator,
- * 400-499 tables and machine profiles, 500-599 command line and files.
+ * 400-499 tables and machine profiles, 500-599 command line and files, 680-699 program flow and
+ * macros again (the flow's E130-E159 are full) and the run's caps.
  * Message texts live in tables/errors.csv; {@code CodeTableTest} keeps the two in step.
  */
 public enum Code {
@@ -383,6 +384,14 @@ public enum Code {
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
     E400_TABLE(400),
+    /** A number in a profile or control larger in size than any Galil register (2^31 - 1). */
+    E401_PROFILE_NUMBER_TOO_LARGE(401),
+    /** A profile value outside the range gcnc takes for it (counts per mm, r/min, feed.per_f). */
+    E402_PROFILE_VALUE_RANGE(402),
+    /** A work or tool offset that, in counts, does not fit a 32-bit position register. */
+    E403_PROFILE_COUNTS_OVERFLOW(403),
+    /** A table, control or profile file larger than gcnc reads (a link to a device, a file of another kind). */
+    E404_TABLE_FILE_TOO_LARGE(404),
     /** An input file could not be read or an output file written. */
     /** Parser: a space inside a number (X10 5 reads as X105; not warned in a T word, T1 01). */
     E600_SPACE_IN_NUMBER(600),
@@ -419,6 +428,12 @@ public enum Code {
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
     E502_OUTPUT_IS_DIRECTORY(502),
+    /** A line of a program longer than gcnc reads (BoundedReader.LINE_LIMIT); the rest of it is skipped. */
+    E503_LINE_TOO_LONG(503),
+    /** A program text longer than gcnc reads (BoundedReader.TEXT_LIMIT); reading ends there. */
+    E504_TEXT_TOO_LONG(504),
+    /** The file a call would read (O1000.nc) is a directory or a device, not a program file. */
+    E505_CALLED_NOT_A_FILE(505),
 
     // 620-639: the language CAM posts write (issue 17): blocks under nose compensation, G32
     // sequences, hole cycles, G10/G30/G49.
@@ -472,7 +487,17 @@ public enum Code {
     /** Checker (note): a C-axis or live-tool M code in a program with no C-axis motion: accepted, it drives nothing. */
     E649_M_FOR_AXIS_NOT_USED(649),
     /** Checker: C-axis motion (a C word after a C-axis M code) is not supported yet. */
-    E650_C_AXIS_NOT_SUPPORTED(650);
+    E650_C_AXIS_NOT_SUPPORTED(650),
+    /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
+    E680_FOLDED(680),
+    /** Note: the cap on warnings and notes was reached; later ones are not kept. */
+    E681_OTHER_CAP(681),
+    /** {@code #3000 = n}: n is not an alarm number (0 to 200); the control stops with an alarm of its own. */
+    E682_MACRO_ALARM_NUMBER(682),
+    /** A macro value outside what a variable holds (0, or 10^-29 to 10^47 in size): alarm 111. */
+    E683_MACRO_VALUE_RANGE(683),
+    /** An end code (M30, M02) in a called program: the whole run ends there, the caller never resumes. */
+    E685_END_IN_CALLED_PROGRAM(685);
 
     private final int number;
 

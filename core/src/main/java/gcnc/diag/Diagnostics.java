@@ -1,14 +1,29 @@
 package gcnc.diag;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
  * Collects the findings of one run. One instance per run: there is no global error flag.
- * Memory grows with the number of findings, never with program length.
+ * Memory is bounded whatever the program does: it grows with the number of places that have a
+ * finding, never with program length or with how often a loop runs, and no further than the caps.
+ *
+ * <p>Folding (every stage alike: parser, program flow, checker, backend, simulator): one finding
+ * per cause and place. An error or warning with the same code at the same place as one already
+ * reported (a block a WHILE loop, a repeat or a cycle's passes run again) is not reported again; it
+ * is counted, and the first report gets a note with the count, E680 "the same in 2000 passes of this
+ * block". A note that accompanies a folded finding goes with it; any other note is kept once.
+ *
+ * <p>Caps: at most {@link #ERROR_CAP} errors are kept; the first one past it is replaced by E116
+ * (once for the run: a later E116 is not repeated) and the rest are counted in {@link #errorCount}
+ * but not kept. At most {@link #OTHER_CAP} warnings and notes are kept; past it a note E681 says
+ * so, once. (docs/program-flow.md, "Caps and folding".)
  *
  * <p>Placing: the stage that follows the program's flow says where the blocks it hands on come
  * from ({@link #placeIn}); a finding reported without an origin of its own is put there (the
@@ -17,12 +32,31 @@ import java.util.Set;
  * the subprogram runs again (a repeat or a second call finds the same thing at the same place).
  */
 public final class Diagnostics {
+    /** The most errors a run keeps (the checker stops there too, E116). */
+    public static final int ERROR_CAP = 10_000;
+    /** The most warnings and notes a run keeps (E681 past it). */
+    public static final int OTHER_CAP = 10_000;
+
     private final List<Diagnostic> all = new ArrayList<>();
+    /** How many times each kept finding was found (1: once); parallel to {@link #all}. */
+    private int[] counts = new int[16];
+    /** Where each kept error or warning is in {@link #all}, by code, severity, file and place. */
+    private final Map<String, Integer> byPlace = new HashMap<>();
+    /** Notes kept, exactly (code, file, place, text): a note is never repeated. */
+    private final Set<String> notes = new HashSet<>();
+    /** The last error or warning reported: the index in {@link #all} of it or of the one it was folded into; -1 past a cap. */
+    private int last = -1;
+    /** Whether the last error or warning was folded into an earlier one or dropped at a cap, and its place. */
+    private boolean lastNotKept;
+    private Span lastSpan;
+    /** Errors found once per place (kept or past the cap), errors kept, warnings and notes kept. */
     private int errors;
+    private int keptErrors;
+    private int others;
+    private boolean errorCapReached;
+    private boolean otherCapReached;
     /** Shared with {@link #sibling()}s: where the blocks being checked now come from. */
     private final Place place;
-    /** Placed findings inside subprograms already reported (code, file, span, text). */
-    private final Set<String> placed = new HashSet<>();
 
     /** Null until the first {@link #placeIn}: a collection no stage places (a scratch one) keeps findings as made. */
     private static final class Place {
@@ -67,10 +101,9 @@ public final class Diagnostics {
     /** A finding in a called program: once per place, with a note per call. */
     private void withCalls(Diagnostic d) {
         Origin o = d.origin();
-        if (!placed.add(d.code() + "@" + o.file() + ":" + d.span() + d.args())) {
-            return;
+        if (!add(d)) {
+            return; // found before at this place (another pass or call: counted), or past a cap
         }
-        add(d);
         if (d.severity() != Severity.NOTE) {
             for (Origin.Call c : o.calls()) {
                 add(calledFrom(c, d.span(), o.withoutCalls()));
@@ -94,11 +127,101 @@ public final class Diagnostics {
         return new Diagnostic(code, Severity.NOTE, at, args, where);
     }
 
-    private void add(Diagnostic d) {
-        all.add(d);
-        if (d.severity() == Severity.ERROR) {
-            errors++;
+    /** Keeps a finding, or counts it (folded, or past a cap); whether it was kept. */
+    private boolean add(Diagnostic d) {
+        if (d.severity() == Severity.NOTE) {
+            return addNote(d);
         }
+        String key = d.code() + "/" + d.severity() + "@" + d.origin().file() + ":" + d.span();
+        Integer at = byPlace.get(key);
+        lastSpan = d.span();
+        if (at != null) {
+            counts[at]++;
+            last = at;
+            lastNotKept = true;
+            return false;
+        }
+        boolean room = d.severity() == Severity.ERROR ? roomForError(d) : roomForOther(d);
+        if (d.severity() == Severity.ERROR && (room || d.code() != Code.E116_ERROR_CAP)) {
+            errors++; // kept or past the cap; a second E116 is not another error
+        }
+        if (!room) {
+            last = -1;
+            lastNotKept = true;
+            return false;
+        }
+        lastNotKept = false;
+        last = keep(d);
+        byPlace.put(key, last);
+        if (d.severity() == Severity.ERROR) {
+            keptErrors++;
+        } else {
+            others++;
+        }
+        return true;
+    }
+
+    /**
+     * A note: E680 (another collection's count, as the checker's per-block one) adds to the finding
+     * before it; one that goes with a finding not kept (at its place) is not kept either; else kept once.
+     */
+    private boolean addNote(Diagnostic d) {
+        if (d.code() == Code.E680_FOLDED) {
+            if (last >= 0) {
+                counts[last] += Integer.parseInt(d.args().get(0)) - 1;
+            }
+            return false;
+        }
+        if (lastNotKept && d.span().equals(lastSpan)) {
+            return false;
+        }
+        if (!notes.add(d.code() + "@" + d.origin().file() + ":" + d.span() + d.args()) || !roomForOther(d)) {
+            return false;
+        }
+        others++;
+        keep(d);
+        return true;
+    }
+
+    /** Whether one more error may be kept; the first past the cap becomes E116, and a second E116 is not kept. */
+    private boolean roomForError(Diagnostic d) {
+        if (d.code() == Code.E116_ERROR_CAP) {
+            boolean first = !errorCapReached;
+            errorCapReached = true;
+            return first;
+        }
+        if (keptErrors < ERROR_CAP) {
+            return true;
+        }
+        if (!errorCapReached) {
+            errorCapReached = true;
+            keptErrors++;
+            keep(new Diagnostic(Code.E116_ERROR_CAP, Severity.ERROR, d.span(), List.of(Integer.toString(ERROR_CAP)),
+                    d.origin()));
+        }
+        return false;
+    }
+
+    /** Whether one more warning or note may be kept; the first past the cap becomes E681. */
+    private boolean roomForOther(Diagnostic d) {
+        if (others < OTHER_CAP) {
+            return true;
+        }
+        if (!otherCapReached) {
+            otherCapReached = true;
+            keep(new Diagnostic(Code.E681_OTHER_CAP, Severity.NOTE, d.span(), List.of(Integer.toString(OTHER_CAP)),
+                    d.origin()));
+        }
+        return false;
+    }
+
+    private int keep(Diagnostic d) {
+        if (all.size() == counts.length) {
+            counts = Arrays.copyOf(counts, counts.length * 2);
+        }
+        counts[all.size()] = 1;
+        all.add(d);
+        return all.size() - 1;
     }
 
     /**
@@ -121,25 +244,63 @@ public final class Diagnostics {
 
     /** Forgets every finding (a scratch collection reused block after block). */
     public void clear() {
+        if (all.isEmpty() && errors == 0) {
+            return;
+        }
         all.clear();
+        byPlace.clear();
+        notes.clear();
+        last = -1;
+        lastNotKept = false;
+        lastSpan = null;
         errors = 0;
+        keptErrors = 0;
+        others = 0;
+        errorCapReached = false;
+        otherCapReached = false;
     }
 
     public boolean hasErrors() {
         return errors > 0;
     }
 
+    /** Every error found once per place: those past the cap included, a folded repeat not. */
     public int errorCount() {
         return errors;
     }
 
+    /** Whether the error cap was reached: later errors are only counted (E116). */
+    public boolean capped() {
+        return errorCapReached;
+    }
+
+    /** How many findings are kept (folded repeats and those past a cap not counted). */
     public int size() {
         return all.size();
     }
 
-    /** Every finding, sorted by file and position (stable: same position keeps reporting order). */
+    /**
+     * Every finding kept, sorted by file and position (stable: same position keeps reporting order),
+     * each found more than once followed by its count (E680).
+     */
     public List<Diagnostic> sorted() {
-        List<Diagnostic> copy = new ArrayList<>(all);
+        List<Diagnostic> copy = new ArrayList<>(all.size());
+        Diagnostic count = null; // the E680 of the last finding, after the notes that go with it
+        for (int k = 0; k < all.size(); k++) {
+            Diagnostic d = all.get(k);
+            if (count != null && (d.severity() != Severity.NOTE || !d.span().equals(count.span()))) {
+                copy.add(count);
+                count = null;
+            }
+            copy.add(d);
+            if (counts[k] > 1) {
+                count = new Diagnostic(Code.E680_FOLDED, Severity.NOTE, d.span(),
+                        List.of(Integer.toString(counts[k])), d.origin().withoutCalls());
+            }
+        }
+        if (count != null) {
+            copy.add(count);
+        }
         Collections.sort(copy);
         return Collections.unmodifiableList(copy);
     }

@@ -104,6 +104,14 @@ final class Library {
                 return read(number, file, call);
             }
         }
+        for (String name : names(number)) {
+            Path file = dir.resolve(name);
+            if (Files.exists(file)) {
+                // there is something by that name, but not a program file: say so rather than "there is no file"
+                diags.error(Code.E505_CALLED_NOT_A_FILE, call, Program.name(number), file.toString());
+                return null;
+            }
+        }
         missing.add(number);
         return null;
     }
@@ -114,7 +122,7 @@ final class Library {
         Span start = Span.of(1, 1);
         Origin caller = diags.place();
         diags.placeIn(Origin.file(shown));
-        try (Reader in = open(file)) {
+        try (Reader in = new gcnc.parse.BoundedReader(open(file), diags, Origin.file(shown))) {
             BlockReader reader = BlockReader.forControl(in, diags, macros, lineComments);
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
                 if (held + blocks.size() >= limit) {

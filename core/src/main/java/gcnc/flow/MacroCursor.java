@@ -121,6 +121,12 @@ class MacroCursor {
         return t.isEmpty() ? "end of line" : t.length() > 30 ? t.substring(0, 30) + "..." : t;
     }
 
+    /** The text from {@code from} to {@code to}, shortened as {@link #excerpt(int)} does. */
+    String excerpt(int from, int to) {
+        String t = s.substring(Math.min(from, s.length()), Math.min(Math.max(from, to), s.length())).strip();
+        return t.isEmpty() ? excerpt(from) : t.length() > 30 ? t.substring(0, 30) + "..." : t;
+    }
+
     /** A statement's text as written, from {@code from} to here. */
     String text(int from) {
         return s.substring(from, i);

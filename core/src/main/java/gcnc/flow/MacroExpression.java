@@ -7,8 +7,18 @@ import gcnc.diag.Code;
  * {@code * / MOD}, then {@code + -}; a value is a double, null when vacant (0 in arithmetic);
  * conditions {@code a EQ|NE|GT|GE|LT|LE b}. Variables are read from {@link Variables}: one the
  * machine alone knows is E147; a division by zero or a function outside its domain is E146.
+ *
+ * <p>Every number a line writes or works out is held to what a Fanuc macro variable holds: 0, or a
+ * size from 10^-29 to 10^47 (FANUC 0i/16/18 operator's manual, custom macro, "Range of variable
+ * values": past it the control stops with alarm 111, calculated data overflow); past it E683 at the
+ * number or the operation. Brackets nest at most five deep (MacroLine.brackets, alarm 118); a run of
+ * signs ({@code --#1}) is read in a loop, not by recursion, so no line can overflow the stack.
  */
 class MacroExpression extends MacroCursor {
+    /** The largest and smallest size of a value other than 0 (alarm 111 outside them). */
+    static final double MAX_VALUE = 1e47;
+    static final double MIN_VALUE = 1e-29;
+
     final Variables vars;
 
     MacroExpression(String s, Variables vars) {
@@ -63,7 +73,7 @@ class MacroExpression extends MacroCursor {
             if (c == '+' || c == '-') {
                 i++;
                 double b = value(term());
-                v = c == '+' ? value(v) + b : value(v) - b;
+                v = held(c == '+' ? value(v) + b : value(v) - b, start);
             } else if (keywordAhead("OR") || keywordAhead("XOR")) {
                 throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
             } else {
@@ -81,20 +91,20 @@ class MacroExpression extends MacroCursor {
             char c = peek();
             if (c == '*') {
                 i++;
-                v = value(v) * value(unary());
+                v = held(value(v) * value(unary()), start);
             } else if (c == '/') {
                 i++;
                 double b = value(unary());
                 if (b == 0) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, s.substring(start, i).strip());
+                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, excerpt(start, i));
                 }
-                v = value(v) / b;
+                v = held(value(v) / b, start);
             } else if (keyword("MOD")) {
                 double b = value(unary());
                 if (b == 0) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, s.substring(start, i).strip());
+                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, excerpt(start, i));
                 }
-                v = value(v) % b;
+                v = held(value(v) % b, start);
             } else if (keywordAhead("AND")) {
                 throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
             } else {
@@ -103,18 +113,42 @@ class MacroExpression extends MacroCursor {
         }
     }
 
+    /** Signs before a value, any number of them: counted in a loop (no recursion, no depth). */
     Double unary() throws Fault {
-        blank();
-        if (peek() == '-') {
+        boolean negative = false;
+        for (blank(); peek() == '-' || peek() == '+'; blank()) {
+            negative ^= peek() == '-';
             i++;
-            Double v = unary();
-            return v == null ? null : -v;
         }
-        if (peek() == '+') {
-            i++;
-            return unary();
+        Double v = primary();
+        if (v == null || !negative) {
+            return v;
         }
-        return primary();
+        return -v;
+    }
+
+    /**
+     * {@code v}, when a macro variable can hold it; else E683 at {@code at} (the number or the
+     * operation that came to it): a control stops there with alarm 111. NaN and infinities are
+     * outside too.
+     */
+    double held(double v, int at) throws Fault {
+        double size = Math.abs(v);
+        if (v != 0 && !(size >= MIN_VALUE && size <= MAX_VALUE)) {
+            throw new Fault(Code.E683_MACRO_VALUE_RANGE, at, excerpt(at, i), written(v));
+        }
+        return v + 0.0; // no -0
+    }
+
+    /** A value for a message, in any language: six digits and a power of ten; past a double's range "&gt;1.8E+308". */
+    static String written(double v) {
+        if (Double.isNaN(v)) {
+            return "NaN";
+        }
+        if (Double.isInfinite(v)) {
+            return v > 0 ? ">1.8E+308" : "<-1.8E+308";
+        }
+        return new java.math.BigDecimal(v).round(new java.math.MathContext(6)).stripTrailingZeros().toString();
     }
 
     Double primary() throws Fault {
@@ -139,7 +173,7 @@ class MacroExpression extends MacroCursor {
         if (Character.isDigit(c) || c == '.') {
             String t = literal();
             try {
-                return Double.valueOf(t);
+                return held(Double.parseDouble(t), at);
             } catch (NumberFormatException e) {
                 throw syntax(at);
             }
@@ -203,10 +237,10 @@ class MacroExpression extends MacroCursor {
             case "LN" -> a > 0 ? Math.log(a) : Double.NaN;
             default -> Math.exp(a);
         };
-        if (Double.isNaN(r) || Double.isInfinite(r)) {
-            throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
+        if (Double.isNaN(r)) {
+            throw new Fault(Code.E146_MACRO_NO_VALUE, at, excerpt(at, i));
         }
-        return r + 0.0;
+        return held(r, at);
     }
 
     /** After '#': the variable's number, written or computed ({@code #[#1 + 100]}). */
@@ -227,11 +261,11 @@ class MacroExpression extends MacroCursor {
 
     long whole(Double v, int at) throws Fault {
         if (v == null) {
-            throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
+            throw new Fault(Code.E146_MACRO_NO_VALUE, at, excerpt(at, i));
         }
         long r = Math.round(v);
         if (Math.abs(v - r) > 1e-6 || r < 0) {
-            throw new Fault(Code.E013_INTEGER_EXPECTED, at, s.substring(at, i).strip());
+            throw new Fault(Code.E013_INTEGER_EXPECTED, at, excerpt(at, i));
         }
         return r;
     }

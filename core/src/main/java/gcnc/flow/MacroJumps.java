@@ -53,19 +53,31 @@ final class MacroJumps {
             diags.error(Code.E149_MACRO_ENDLESS_LOOP, l.at(), l.text(), l.at().line(), ProgramFlow.LOOP_LIMIT);
             holds = false;
         }
-        if (holds) {
+        if (holds && again) {
             return;
         }
-        f.whileAt[id] = -1;
+        // entering the loop, or leaving it: either way its END must follow (Fanuc alarm 124, missing END)
+        int end = end(f, id, at);
+        if (end < 0) {
+            diags.error(Code.E141_NO_JUMP_TARGET, l.at(), l.text(), "END " + id, firstLine(f));
+            f.whileAt[id] = -1;
+            return;
+        }
+        if (!holds) {
+            f.whileAt[id] = -1;
+            f.next = end + 1;
+        }
+    }
+
+    /** The index of the first {@code END id} after the WHILE at {@code at}, or -1. */
+    private static int end(Frame f, int id, int at) throws IOException {
         for (int k = at + 1; ; k++) {
             RawBlock b = f.blocks.get(k);
             if (b == null) {
-                diags.error(Code.E141_NO_JUMP_TARGET, l.at(), l.text(), "END " + id, firstLine(f));
-                return;
+                return -1;
             }
             if (b.macro() != null && MacroLine.isEnd(b.macro(), id)) {
-                f.next = k + 1;
-                return;
+                return k;
             }
         }
     }

@@ -57,6 +57,8 @@ final class MacroLine extends MacroExpression {
     }
 
     static final Done DONE = new Done();
+    /** The largest alarm number #3000 takes (Fanuc: 0 to 200). */
+    static final int MAX_ALARM = 200;
     /** The addresses that take a whole number (the parser's integer words, and P and L). */
     private static final String WHOLE = "GMNOSTPL";
 
@@ -225,8 +227,13 @@ final class MacroLine extends MacroExpression {
         Double v = expr();
         end(DONE);
         if (n == 3000) {
-            String number = v == null ? "0" : v == Math.rint(v) ? Long.toString((long) (double) v) : format(v);
-            diags.error(Code.E148_MACRO_ALARM, span(at), number, comment);
+            // Fanuc 0i/16/18, custom macro, "Alarms": #3000 = n (ALARM MESSAGE), n from 0 to 200
+            double number = v == null ? 0 : Math.rint(v);
+            if (number < 0 || number > MAX_ALARM) {
+                diags.error(Code.E682_MACRO_ALARM_NUMBER, span(at), written(v), MAX_ALARM);
+                return;
+            }
+            diags.error(Code.E148_MACRO_ALARM, span(at), Long.toString((long) number), comment);
             return;
         }
         try {
@@ -257,7 +264,7 @@ final class MacroLine extends MacroExpression {
             if (computed) {
                 Double v = unary();
                 if (v == null) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, at, s.substring(at, i).strip());
+                    throw new Fault(Code.E146_MACRO_NO_VALUE, at, excerpt(at, i));
                 }
                 number = number(l, v, at);
             } else {

@@ -32,13 +32,19 @@ import java.util.Set;
  *
  * <p>Memory: a program without a call is read one line at a time, as before. At the first call
  * the rest of the file is read and held (the called programs are after the main program's end),
- * at most {@link #HOLD_LIMIT} blocks in all, with the files beside it that calls name; past that
+ * at most {@link #holdLimit()} blocks in all, with the files beside it that calls name; past that
  * the call is E137 and calls are no longer followed. A main program is held from its first macro
  * statement on (GOTO and END jump back), up to the same limit.
  */
 public final class ProgramFlow implements BlockSource {
     /** The most blocks held in memory for calls (the rest of the file after the first call, and the called files), and for jumps. */
     public static final int HOLD_LIMIT = 200_000;
+    /**
+     * Bytes of heap allowed per block held: a held block takes about 400 bytes, so a quarter to a
+     * half of the heap at most. In a small heap ({@code -Xmx64m}: 65,536 blocks) the limit is lower
+     * than {@link #HOLD_LIMIT}, so that holding ends with E137 and never runs the JVM out of memory.
+     */
+    private static final long HEAP_PER_BLOCK = 1024;
     /** How many times a WHILE loop may run from one entry, and a GOTO jump back, before it is taken for endless (E149). */
     public static final int LOOP_LIMIT = 100_000;
     /**
@@ -64,7 +70,7 @@ public final class ProgramFlow implements BlockSource {
     /** The main program's blocks that an M97 call ran (a local subprogram after M30 is not "after the end"). */
     private final BitSet ranLocally = new BitSet();
     /** The labels a GOTO (taken or not) or an M97 names: a stretch after M30 from one of them can be reached. */
-    private final Set<Long> named = new HashSet<>();
+    private final BitSet named = new BitSet();
     /** After the main program's end: in a stretch from a named label to the next end code (M30, M02, M99). */
     private boolean inReachable;
     private final MacroJumps jumps;
@@ -84,7 +90,7 @@ public final class ProgramFlow implements BlockSource {
      *               looked for (the program file's folder); empty: only its own file
      */
     public ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder) {
-        this(reader, control, diags, folder, HOLD_LIMIT);
+        this(reader, control, diags, folder, holdLimit());
     }
 
     ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder, int holdLimit) {
@@ -96,6 +102,11 @@ public final class ProgramFlow implements BlockSource {
         this.library = new Library(folder, diags, holdLimit, control.macros(), control.lineComments());
         this.jumps = new MacroJumps(diags);
         stack.push(Frame.main(mainBlocks));
+    }
+
+    /** The most blocks this JVM holds: {@link #HOLD_LIMIT}, or one per KiB of its largest heap if that is fewer. */
+    public static int holdLimit() {
+        return (int) Math.min(HOLD_LIMIT, Runtime.getRuntime().maxMemory() / HEAP_PER_BLOCK);
     }
 
     @Override
@@ -144,7 +155,10 @@ public final class ProgramFlow implements BlockSource {
                     continue;
                 }
             }
-            return follow(b, f);
+            b = follow(b, f);
+            if (b != null) {
+                return b;
+            }
         }
     }
 
@@ -176,6 +190,16 @@ public final class ProgramFlow implements BlockSource {
         }
     }
 
+    /** N numbers go up to 9999999 (the checker's E009 past it): a computed GOTO cannot grow the set past that. */
+    private static final long MAX_LABEL = 10_000_000;
+
+    /** A label a GOTO or M97 names (a bit each: a loop of computed GOTOs holds no more than 1.25 MB). */
+    private void name(long label) {
+        if (label >= 0 && label < MAX_LABEL) {
+            named.set((int) label);
+        }
+    }
+
     /**
      * Whether a block after the main program's end can be reached from a GOTO or M97 that names its
      * label (or one before it in the same stretch, up to an end code), though this run did not go
@@ -183,7 +207,7 @@ public final class ProgramFlow implements BlockSource {
      */
     private boolean reachable(RawBlock b) {
         long label = MacroJumps.label(b);
-        if (!inReachable && label >= 0 && named.contains(label)) {
+        if (!inReachable && label >= 0 && label < MAX_LABEL && named.get((int) label)) {
             inReachable = true;
             diags.report(new Diagnostic(Code.E138_NEVER_CALLED, gcnc.diag.Severity.NOTE,
                     b.words().isEmpty() ? b.last() : b.words().get(0).span(), List.of("N" + label), Origin.PROGRAM));
@@ -211,7 +235,7 @@ public final class ProgramFlow implements BlockSource {
             return null; // jumps are no longer followed: the program runs on to its end
         }
         if (o instanceof MacroLine.Jump j) {
-            named.add(j.label());
+            name(j.label());
             if (j.taken()) {
                 jumps.goTo(f, j, at);
             }
@@ -228,6 +252,12 @@ public final class ProgramFlow implements BlockSource {
     /** The block as the checker is given it, after following its call or return ({@code f}: the program it is in). */
     private RawBlock follow(RawBlock b, Frame f) throws IOException {
         int depth = stack.size() - 1;
+        if (depth > 0 && !b.malformed()) {
+            b = withoutEnd(b, f);
+            if (b == null) {
+                return null;
+            }
+        }
         if (b.malformed() || b.blockDelete() > 0 && control.blockDelete() == Control.BlockDelete.ON) {
             return depth == 0 ? b : b.called(b.words(), b.last(), depth);
         }
@@ -244,6 +274,29 @@ public final class ProgramFlow implements BlockSource {
             stack.push(callee);
         }
         return rest;
+    }
+
+    /**
+     * An end code (M30, M02) in a called program ends the whole run there: E685 at it, in the called
+     * program, and the block goes on without it, so that the caller's blocks after the call are
+     * checked as written rather than each blamed for coming after the end (E053). Null when the end
+     * code was the block's only word.
+     */
+    private RawBlock withoutEnd(RawBlock b, Frame f) {
+        List<Word> kept = null;
+        for (Word w : b.words()) {
+            if (codes.role(w) == MRole.END) {
+                diags.error(Code.E685_END_IN_CALLED_PROGRAM, w.span(), w, f.name);
+                if (kept == null) {
+                    kept = new ArrayList<>(b.words());
+                }
+                kept.remove(w);
+            }
+        }
+        if (kept == null) {
+            return b;
+        }
+        return kept.isEmpty() ? null : b.called(kept, kept.get(kept.size() - 1).span(), b.depth());
     }
 
     /** M99: the end of a called program; in the main program its end, with a warning (E139). M99 P: E110. */
@@ -345,7 +398,7 @@ public final class ProgramFlow implements BlockSource {
             }
             return null;
         }
-        named.add(label);
+        name(label);
         if (caller.blocks == mainBlocks) {
             mainBlocks.hold();
         }

@@ -134,13 +134,45 @@ public final class ProfileFile {
         return number(e, e.value());
     }
 
+    /**
+     * The largest size of any number in a profile or control: 10^12. No length (mm), speed, rate or
+     * count of a lathe comes near it, and a product of two such numbers (mm times counts per mm)
+     * stays a finite number, so that the checks in counts that follow can speak; past it a value is
+     * a slip of the keyboard (1e306) that would overflow every sum it enters (E401).
+     */
+    public static final double MAX_SIZE = 1e12;
+
     /** One number written inside the value of {@code e} (a pair, a list of points). */
     public double number(Entry e, String text) throws TableException {
         OptionalDouble v = Decimal.parse(text.trim());
         if (v.isEmpty()) {
             throw fault(e, Phrase.NOT_A_NUMBER.with(text.trim(), e.key()));
         }
+        if (Math.abs(v.getAsDouble()) > MAX_SIZE) {
+            throw fault(e, Code.E401_PROFILE_NUMBER_TOO_LARGE, e.key(), text.trim(), written(MAX_SIZE));
+        }
         return v.getAsDouble();
+    }
+
+    /**
+     * A number that must lie in {@code [min, max]} (E402 at its value): a rate, a count or a speed
+     * past which no lathe goes (docs/profiles.md, "Checked when loaded").
+     */
+    public double within(String key, double min, double max) throws TableException {
+        return within(required(key), min, max);
+    }
+
+    public double within(Entry e, double min, double max) throws TableException {
+        double v = min > 0 ? positive(e.key()) : number(e);
+        if (!(v >= min && v <= max)) {
+            throw fault(e, Code.E402_PROFILE_VALUE_RANGE, e.key(), written(v), written(min), written(max));
+        }
+        return v;
+    }
+
+    /** A fault with a code of its own (not E400's phrase) at the value of {@code e}. */
+    public TableException fault(Entry e, Code code, Object... args) {
+        return new TableException(path, Diagnostic.error(code, Span.of(e.line(), e.column()), args));
     }
 
     /** A value written as {@code a, b} (two numbers). */
@@ -172,7 +204,13 @@ public final class ProfileFile {
 
     /** A number for a message as a person would write it in a profile (no 1.0E7, no trailing zeros). */
     public static String written(double v) {
-        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+        if (!Double.isFinite(v)) {
+            return Double.isNaN(v) ? "NaN" : v > 0 ? "+inf" : "-inf";
+        }
+        java.math.BigDecimal d = java.math.BigDecimal.valueOf(v).stripTrailingZeros();
+        // past 15 digits a plain number is a wall of zeros: 1E+306 says it
+        return Math.abs(v) >= 1e15 || v != 0 && Math.abs(v) < 1e-9 ? d.round(new java.math.MathContext(6)).toString()
+                : d.toPlainString();
     }
 
     /**

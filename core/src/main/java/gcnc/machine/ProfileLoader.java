@@ -10,7 +10,6 @@ import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
 import gcnc.tables.Utf8;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -31,6 +30,17 @@ public final class ProfileLoader {
 
     /** The largest value of a Galil register (positions, VS, VA, VD are 32-bit). */
     private static final double REGISTER_MAX = Integer.MAX_VALUE;
+    /**
+     * Counts per mm gcnc takes: one count from 1 mm (the thesis machine has 1.5 counts per mm)
+     * down to 1 nm; outside that a value is a slip (a zero too many or too few), E402.
+     */
+    private static final double MIN_COUNTS_PER_MM = 1;
+    private static final double MAX_COUNTS_PER_MM = 1_000_000;
+    /** Spindle speed (and drive gain per volt) gcnc takes: up to 100,000 r/min, beyond any lathe spindle. */
+    private static final double MAX_RPM = 100_000;
+    /** feed.per_f: counts/s per unit of F (the thesis machine: 20; by default counts per mm / 60). */
+    private static final double MIN_PER_F = 0.001;
+    private static final double MAX_PER_F = 1_000_000;
 
     private ProfileLoader() {
     }
@@ -56,7 +66,7 @@ public final class ProfileLoader {
     /** A profile given as a path, decoded as the tables are ({@link Utf8}). */
     private static String readFile(Path p) throws TableException {
         try {
-            return Utf8.decode(p.toString(), Files.readAllBytes(p));
+            return Utf8.read(p.toString(), p);
         } catch (NoSuchFileException e) {
             throw ProfileFile.fault(p.toString(), 1, 1, Phrase.PROFILE_NOT_FOUND.arg());
         } catch (IOException e) {
@@ -100,6 +110,7 @@ public final class ProfileLoader {
             }
         }
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
+        lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
@@ -107,7 +118,7 @@ public final class ProfileLoader {
                 register(f, "feed.max", Phrase.REGISTER_SPEED),
                 register(f, "vector.acceleration", 256000, Phrase.REGISTER_ACCELERATION),
                 register(f, "vector.deceleration", 256000, Phrase.REGISTER_DECELERATION),
-                f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis,
+                f.within("spindle.max_rpm", 1, MAX_RPM), f.within("spindle.rpm_per_volt", 1, MAX_RPM), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
                 workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
                 machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z),
@@ -177,7 +188,8 @@ public final class ProfileLoader {
         try {
             return ControlLoader.load(name, tables);
         } catch (TableException e) {
-            if (override == null && f.entry("control").isPresent()) {
+            // a fault of its own code (a file too large, E404) is shown as it is, at the control's file
+            if (override == null && f.entry("control").isPresent() && e.diagnostic().code() == gcnc.diag.Code.E400_TABLE) {
                 throw f.fault(f.required("control"), Phrase.CONTROL_FAULT.with(name,
                         e.path() + ":" + e.diagnostic().span().line() + ":" + e.diagnostic().span().column(),
                         e.diagnostic().args().isEmpty() ? "" : e.diagnostic().args().get(0)));
@@ -190,13 +202,14 @@ public final class ProfileLoader {
         if (f.entry("feed.per_f").isEmpty()) {
             return 0;
         }
-        return f.positive("feed.per_f");
+        return f.within("feed.per_f", MIN_PER_F, MAX_PER_F);
     }
 
     private static Axis axis(ProfileFile f, String a) throws TableException {
         char letter = channelLetter(f, a + ".galil", null);
-        double perMm = f.positive(a + ".counts_per_mm");
-        double perInch = f.positive(a + ".counts_per_inch", perMm * 25.4);
+        double perMm = f.within(a + ".counts_per_mm", MIN_COUNTS_PER_MM, MAX_COUNTS_PER_MM);
+        double perInch = f.entry(a + ".counts_per_inch").isPresent()
+                ? f.within(a + ".counts_per_inch", MIN_COUNTS_PER_MM * 25.4, MAX_COUNTS_PER_MM * 25.4) : perMm * 25.4;
         double sign = f.number(a + ".sign", 1);
         if (sign != 1 && sign != -1) {
             throw f.fault(f.required(a + ".sign"), Phrase.SIGN.with(a));
@@ -284,7 +297,7 @@ public final class ProfileLoader {
         Map<Integer, Point> work = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("work.")) {
             int g = Integer.parseInt(e.key().substring("work.G".length())); // ProfileKeys: work.G54 .. work.G59
-            work.put(g, offset(f.pair(e), counts, x, z));
+            work.put(g, offset(f, e, counts, x, z));
         }
         for (int g = 54; g <= 59; g++) {
             work.putIfAbsent(g, Point.ORIGIN);
@@ -308,7 +321,7 @@ public final class ProfileLoader {
             if (n < 1) {
                 throw f.faultAtKey(e, Phrase.TOOL_OFFSET_FROM_ONE.with(e.key()));
             }
-            tools.put(n, offset(f.pair(e), counts, x, z));
+            tools.put(n, offset(f, e, counts, x, z));
         }
         if (f.entry("tools.offsets").isPresent()) {
             int n = whole(f, "tools.offsets", Phrase.TOOLS_OFFSETS_RANGE);
@@ -397,5 +410,42 @@ public final class ProfileLoader {
 
     private static Point offset(double[] v, boolean counts, Axis x, Axis z) {
         return counts ? new Point(v[0], v[1]) : new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm());
+    }
+
+    /** The simulator's lengths in mm (chuck, tailstock, blank, spindle centre), each of which becomes counts. */
+    private static final String[] LENGTHS = {"sim.centre_x", "chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length",
+        "chuck.diameter", "tailstock.centre_z", "tailstock.quill_diameter", "stock.diameter", "stock.length",
+        "stock.stickout"};
+
+    /** Each of {@link #LENGTHS} given must fit a 32-bit register in counts (E403 at its value), as positions do. */
+    private static void lengthsInCounts(ProfileFile f, double perMm) throws TableException {
+        for (String key : LENGTHS) {
+            if (f.entry(key).isPresent()) {
+                ProfileFile.Entry e = f.required(key);
+                double mm = f.number(e);
+                if (Math.abs(mm * perMm) > REGISTER_MAX) {
+                    throw f.fault(e, gcnc.diag.Code.E403_PROFILE_COUNTS_OVERFLOW, key, written(mm),
+                            written(Math.rint(mm * perMm)), written(REGISTER_MAX));
+                }
+            }
+        }
+    }
+
+    /**
+     * An offset as {@link #offset}, which must fit a 32-bit position register in counts (E403 at
+     * its value): an offset past it would overflow every position it is added to.
+     */
+    private static Point offset(ProfileFile f, ProfileFile.Entry e, boolean counts, Axis x, Axis z)
+            throws TableException {
+        double[] v = f.pair(e);
+        Point p = offset(v, counts, x, z);
+        double[] inCounts = {p.x(), p.z()};
+        for (int k = 0; k < 2; k++) {
+            if (Math.abs(inCounts[k]) > REGISTER_MAX) {
+                throw f.fault(e, gcnc.diag.Code.E403_PROFILE_COUNTS_OVERFLOW, e.key(), written(v[k]),
+                        written(Math.rint(inCounts[k])), written(REGISTER_MAX));
+            }
+        }
+        return p;
     }
 }

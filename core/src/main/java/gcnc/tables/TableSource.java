@@ -3,7 +3,6 @@ package gcnc.tables;
 import gcnc.diag.Phrase;
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 
@@ -27,7 +26,7 @@ public interface TableSource {
                     if (in == null) {
                         throw Csv.fault(describe(name), 1, 1, Phrase.TABLE_NOT_IN_JAR.arg());
                     }
-                    return Utf8.decode(describe(name), in.readAllBytes());
+                    return Utf8.decode(describe(name), Utf8.bounded(describe(name), in));
                 } catch (IOException e) {
                     throw Csv.fault(describe(name), 1, 1, Phrase.reason(e));
                 }
@@ -46,7 +45,7 @@ public interface TableSource {
             public String read(String name) throws TableException {
                 Path p = dir.resolve(name);
                 try {
-                    return Utf8.decode(describe(name), Files.readAllBytes(p));
+                    return Utf8.read(describe(name), p);
                 } catch (NoSuchFileException e) {
                     throw Csv.fault(describe(name), 1, 1, Phrase.TABLE_FILE_NOT_FOUND.arg());
                 } catch (IOException e) {

@@ -20,6 +20,30 @@ public final class Utf8 {
     private Utf8() {
     }
 
+    /**
+     * The most bytes a table, control or profile file may have: 8 MiB, a hundred times the largest
+     * shipped table. A link to {@code /dev/zero} or a file of another kind named by mistake is
+     * refused there (E404) rather than read until memory runs out.
+     */
+    public static final int MAX_BYTES = 8 << 20;
+
+    /** The text of the file {@code file}, at most {@link #MAX_BYTES} bytes ({@code path}: the name faults carry). */
+    public static String read(String path, java.nio.file.Path file) throws java.io.IOException, TableException {
+        try (java.io.InputStream in = java.nio.file.Files.newInputStream(file)) {
+            return decode(path, bounded(path, in));
+        }
+    }
+
+    /** The bytes of {@code in}, refused (E404) past {@link #MAX_BYTES}: never more than that is held. */
+    public static byte[] bounded(String path, java.io.InputStream in) throws java.io.IOException, TableException {
+        byte[] bytes = in.readNBytes(MAX_BYTES + 1);
+        if (bytes.length > MAX_BYTES) {
+            throw new TableException(path, gcnc.diag.Diagnostic.error(gcnc.diag.Code.E404_TABLE_FILE_TOO_LARGE,
+                    gcnc.diag.Span.of(1, 1), MAX_BYTES));
+        }
+        return bytes;
+    }
+
     /** The text of {@code bytes}, read from the file {@code path} (the name faults carry). */
     public static String decode(String path, byte[] bytes) throws TableException {
         int start = startsWithBom(bytes) ? BOM.length : 0;

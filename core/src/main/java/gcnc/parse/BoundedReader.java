@@ -1,0 +1,113 @@
+package gcnc.parse;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Origin;
+import gcnc.diag.Span;
+import java.io.IOException;
+import java.io.Reader;
+
+/**
+ * A program's text with two limits, so that no input can hold gcnc in memory or in time: a line
+ * longer than {@link #LINE_LIMIT} characters is cut there (E503 at the first character past it; the
+ * rest of the line is skipped, not kept), and a text longer than {@link #TEXT_LIMIT} characters
+ * ends there (E504). {@code check /dev/zero}, a flood of NULs without a newline, a line of 300 MB:
+ * each is refused at a located place after reading at most the limits, in a fixed amount of memory.
+ *
+ * <p>Lines are counted as the parser counts them: {@code \n}, {@code \r\n} and a lone {@code \r} each
+ * end one. The findings are placed in {@code origin} (the program file, or a called program's file),
+ * wherever the flow is when the text is read.
+ */
+public final class BoundedReader extends Reader {
+    /** The longest line read: a block of a real program is under 200 characters, a long comment a few thousand. */
+    public static final int LINE_LIMIT = 65_536;
+    /** The longest text read: 1 GiB, ten times a program of five million blocks. */
+    public static final long TEXT_LIMIT = 1L << 30;
+
+    private final Reader in;
+    private final Diagnostics diags;
+    private final Origin origin;
+    private final long textLimit;
+    private final int lineLimit;
+    private final char[] buffer = new char[8192];
+    private long read;
+    private int line = 1;
+    private int column;
+    private boolean lastCr;
+    /** Skipping the rest of a line cut at the limit. */
+    private boolean skipping;
+    private boolean ended;
+
+    public BoundedReader(Reader in, Diagnostics diags, Origin origin) {
+        this(in, diags, origin, LINE_LIMIT, TEXT_LIMIT);
+    }
+
+    BoundedReader(Reader in, Diagnostics diags, Origin origin, int lineLimit, long textLimit) {
+        this.in = in;
+        this.diags = diags;
+        this.origin = origin;
+        this.lineLimit = lineLimit;
+        this.textLimit = textLimit;
+    }
+
+    @Override
+    public int read(char[] out, int off, int len) throws IOException {
+        if (len == 0) {
+            return 0;
+        }
+        while (!ended) {
+            int n = in.read(buffer, 0, Math.min(len, buffer.length));
+            if (n < 0) {
+                ended = true;
+                break;
+            }
+            int kept = pass(n, out, off);
+            if (kept > 0) {
+                return kept;
+            }
+        }
+        return -1;
+    }
+
+    /** Copies the {@code n} characters read to {@code out}, keeping count of lines; how many were kept. */
+    private int pass(int n, char[] out, int off) {
+        int kept = 0;
+        for (int k = 0; k < n; k++) {
+            if (++read > textLimit) {
+                ended = true;
+                diags.report(new Diagnostic(Code.E504_TEXT_TOO_LONG, gcnc.diag.Severity.ERROR,
+                        Span.of(line, Math.max(1, column + 1)), java.util.List.of(Long.toString(textLimit)), origin));
+                return kept;
+            }
+            char c = buffer[k];
+            if (c == '\n' || c == '\r') {
+                if (!(c == '\n' && lastCr)) {
+                    line++;
+                }
+                lastCr = c == '\r';
+                column = 0;
+                skipping = false;
+                out[off + kept++] = c;
+                continue;
+            }
+            lastCr = false;
+            if (skipping) {
+                continue;
+            }
+            if (++column > lineLimit) {
+                skipping = true;
+                diags.report(new Diagnostic(Code.E503_LINE_TOO_LONG, gcnc.diag.Severity.ERROR, Span.of(line, column),
+                        java.util.List.of(Integer.toString(lineLimit)), origin));
+                continue;
+            }
+            out[off + kept++] = c;
+        }
+        return kept;
+    }
+
+    @Override
+    public void close() throws IOException {
+        in.close();
+    }
+}
