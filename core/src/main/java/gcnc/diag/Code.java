@@ -5,8 +5,11 @@ package gcnc.diag;
  * 1-54 are the thesis's Table 5; gcnc's own codes start at 100:
  * 100-199 checker (G-code semantics), 200-299 Galil backend (but 240-249: checker again, the
  * chamfered thread pull-out, since the threads' E190-E199 are full), 300-399 simulator,
- * 400-499 tables and machine profiles, 500-599 command line and files, 680-699 program flow and
- * macros again (the flow's E130-E159 are full) and the run's caps.
+ * 400-499 tables and machine profiles, 500-599 command line and files. Issue 17's language work
+ * has 600-619 (the parser's leniency, G01 chamfers and corners), 620-639 (blocks under nose
+ * compensation, G32 sequences, hole cycles, G10, G30), 640-659 (what the control runs though the
+ * result may not be what was meant) and 700-729 (threads and codes the CAM posts write);
+ * 680-699 are program flow and macros again (the flow's E130-E159 are full) and the run's caps.
  * Message texts live in tables/errors.csv; {@code CodeTableTest} keeps the two in step.
  */
 public enum Code {
@@ -393,6 +396,19 @@ public enum Code {
     /** A table, control or profile file larger than gcnc reads (a link to a device, a file of another kind). */
     E404_TABLE_FILE_TOO_LARGE(404),
     /** An input file could not be read or an output file written. */
+    E500_IO(500),
+    /** The output named (-o, --svg) is the program being read, under this or another name. */
+    E501_OUTPUT_IS_INPUT(501),
+    /** The output named is a directory (or {@code /}), not a file. */
+    E502_OUTPUT_IS_DIRECTORY(502),
+    /** A line of a program longer than gcnc reads (BoundedReader.LINE_LIMIT); the rest of it is skipped. */
+    E503_LINE_TOO_LONG(503),
+    /** A program text longer than gcnc reads (BoundedReader.TEXT_LIMIT); reading ends there. */
+    E504_TEXT_TOO_LONG(504),
+    /** The file a call would read (O1000.nc) is a directory or a device, not a program file. */
+    E505_CALLED_NOT_A_FILE(505),
+
+    // 600-619: the parser's leniency and G01 chamfering and corner rounding (issue 17).
     /** Parser: a space inside a number (X10 5 reads as X105; not warned in a T word, T1 01). */
     E600_SPACE_IN_NUMBER(600),
     /** Parser (Haas, Fanuc): a '(' comment with no ')' on its line, which the control ends at the end of the block. */
@@ -423,17 +439,6 @@ public enum Code {
     E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET(614),
     /** Checker (Fanuc): the sign of a 90-degree chamfer or corner R points away from the next move. */
     E615_CORNER_SIGN(615),
-    E500_IO(500),
-    /** The output named (-o, --svg) is the program being read, under this or another name. */
-    E501_OUTPUT_IS_INPUT(501),
-    /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502),
-    /** A line of a program longer than gcnc reads (BoundedReader.LINE_LIMIT); the rest of it is skipped. */
-    E503_LINE_TOO_LONG(503),
-    /** A program text longer than gcnc reads (BoundedReader.TEXT_LIMIT); reading ends there. */
-    E504_TEXT_TOO_LONG(504),
-    /** The file a call would read (O1000.nc) is a directory or a device, not a program file. */
-    E505_CALLED_NOT_A_FILE(505),
 
     // 620-639: the language CAM posts write (issue 17): blocks under nose compensation, G32
     // sequences, hole cycles, G10/G30/G49.
