@@ -388,7 +388,19 @@ public enum Code {
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502);
+    E502_OUTPUT_IS_DIRECTORY(502),
+
+    // 660-679: the machine as a shop sets it up (tool table, work zero from the blank).
+    /**
+     * Warning: a feed per minute with the spindle stopped by the program: not a cut unless it meets
+     * stock, which only the simulation knows (compile reports E306 then); check cannot tell.
+     */
+    E660_FEED_SPINDLE_STOPPED_NOT_JUDGED(660),
+    /**
+     * Warning: a feed per minute with the spindle stopped and the chuck open: a bar or stock pull,
+     * not a cut unless it meets stock (compile's simulation: E306, E307).
+     */
+    E661_PULL_NOT_JUDGED(661);
 
     private final int number;
 

@@ -170,7 +170,20 @@ final class MotionChecks {
     private boolean holderHit;
     private boolean backHit;
 
-    void sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec) {
+    /** Whether the sequence being replayed really took material away (asked for with {@code judgeCut}). */
+    private boolean judgeCut;
+    private boolean removed;
+
+    /**
+     * Replays one sequence. With {@code judgeCut} the stock is asked exactly whether the move takes
+     * more than {@link Stock#DEPTH} of material (a feed with the spindle stopped or the chuck open:
+     * a bar puller's pull in the air is no cut, E306/E307 are for a real one); returns that answer,
+     * false without {@code judgeCut}.
+     */
+    boolean sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec,
+                     boolean judgeCut) {
+        this.judgeCut = judgeCut;
+        removed = false;
         sequences++;
         segments += segs.size();
         double length = 0;
@@ -202,7 +215,7 @@ final class MotionChecks {
         if (poly != null) {
             path.move(rapid, poly);
             path.frame(frame, rapid);
-        }
+        }        return removed;
     }
 
     /**
@@ -336,8 +349,9 @@ final class MotionChecks {
      * material at all (a rapid or holder that only came near did not: the segment is quiet).
      */
     private boolean stockMove(List<Stock.Sweep> cuts, List<Stock.Sweep> holders, boolean rapid, int line) {
-        if (rapid) {
+        if (rapid || judgeCut) {
             cuts = stock.biting(cuts);
+            removed |= !rapid && !cuts.isEmpty();
         }
         holders = stock.biting(holders);
         if (cuts.isEmpty() && holders.isEmpty()) {

@@ -231,13 +231,20 @@ public final class Simulator {
             }
             boolean rapid = m == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
-            if (!rapid && outputs.spindleKnown && !outputs.running) {
+            boolean stopped = !rapid && outputs.spindleKnown && !outputs.running;
+            boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
+            boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
+                    stopped || open);
+            // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
+            // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
+            // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
+            boolean cut = checks.hasStock() ? removed : expected == null;
+            if (stopped && cut) {
                 report(Code.E306_SIM_FEED_SPINDLE_STOPPED, line, outputs.describe());
             }
-            if (!rapid && outputs.chuckKnown && !outputs.closed) {
+            if (open && cut) {
                 report(Code.E307_SIM_FEED_CHUCK_OPEN, line, outputs.describe());
             }
-            checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration);
             if (m != null) {
                 double[] resync = checks.conformance(m, segments, line);
                 if (resync != null) {
