@@ -65,6 +65,7 @@ public final class Compiler {
     /** Checks a program: parse and every thesis check and semantic rule, no output. */
     public static Result check(Reader source, Settings settings) throws IOException {
         Diagnostics diags = new Diagnostics();
+        WorkZeroNotes.report(settings.profile(), Optional.empty(), diags);
         BlockSource reader = blocks(source, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         long blocks = 0;
@@ -86,6 +87,8 @@ public final class Compiler {
         Diagnostics diags = new Diagnostics();
         java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
         settings = withStockHeader(buffered, settings);
+        settings = onTheBlank(settings);
+        WorkZeroNotes.report(settings.profile(), settings.simulation().flatMap(SimOptions::stock), diags);
         BlockSource reader = blocks(buffered, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
@@ -212,6 +215,21 @@ public final class Compiler {
         }
         double stickout = profile.model().stock().map(gcnc.machine.MachineModel.Blank::stickout).orElse(0.0);
         return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
+    }
+
+    /**
+     * The machine with the work offsets a shop sets on the blank's face ({@code work.G54 = 0, face})
+     * moved to the face of the blank the simulation is given ({@code --stock D,L,S}): the program's
+     * Z0 is where the operator would have touched off.
+     */
+    static Settings onTheBlank(Settings s) {
+        Optional<gcnc.sim.StockSize> blank = s.simulation().flatMap(SimOptions::stock);
+        if (blank.isEmpty()) {
+            return s;
+        }
+        MachineProfile p = s.profile().withStickout(blank.get().stickout());
+        return p == s.profile() ? s
+                : new Settings(s.tables(), p, s.dialect(), s.simulation(), s.inlineSourceMap(), s.programs());
     }
 
     private static void flush(List<GalilLine> lines, LineSink out) {

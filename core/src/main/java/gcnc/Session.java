@@ -151,7 +151,9 @@ public final class Session {
     }
 
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {
-        Compiler.Settings s = new Compiler.Settings(tables, profile, options.dialect(), simulation, inlineSourceMap);
+        // the blank given to the session sets the work zero for check too (work.G54 = 0, face), not only for a simulation
+        MachineProfile p = options.stock().map(b -> profile.withStickout(b.stickout())).orElse(profile);
+        Compiler.Settings s = new Compiler.Settings(tables, p, options.dialect(), simulation, inlineSourceMap);
         return programs.map(s::withPrograms).orElse(s);
     }
 }

@@ -165,6 +165,30 @@ class ProfileLoaderTest {
         assertTrue(load(ProfileLoader.DEFAULT).model().stockHeader());
     }
 
+    @Test
+    void aWorkOffsetOnTheBlanksFaceFollowsTheBlankOfTheRun() throws Exception {
+        MachineProfile p = load(ProfileLoader.DEFAULT);
+        assertEquals(java.util.Set.of(54), p.model().workZero().atFace());
+        assertEquals(new Point(0, 150_000), p.workOffset(54).orElseThrow(), "the profile's blank: 150 mm out");
+        MachineProfile q = p.withStickout(80);
+        assertEquals(new Point(0, 80_000), q.workOffset(54).orElseThrow(), "--stock 44,200,80: the face is 80 mm out");
+        assertEquals(new Point(0, 140_000), q.workOffset(55).orElseThrow(), "G55 is pinned: it stays");
+        assertTrue(q.model().workZero().given());
+        assertFalse(p.model().workZero().given());
+        assertTrue(p == p.withStickout(150), "the profile's own stick-out changes nothing");
+        // 'x, face' keeps an X; thesis-2004 pins its offsets (counts of Table 5.2)
+        assertEquals(new Point(5000, 150_000), loadText(GOOD.replace("work.G54 = face", "work.G54 = 5, face"))
+                .workOffset(54).orElseThrow());
+        assertTrue(load("thesis-2004").model().workZero().atFace().isEmpty());
+        assertEquals(new Point(-20000, -20000), load("thesis-2004").withStickout(10).workOffset(54).orElseThrow());
+        // the face needs the chuck and the profile's blank; a bad X is a fault at its line like any number
+        String noBlank = GOOD.replace("stock.diameter = 44", "#").replace("stock.length = 200", "#")
+                .replace("stock.stickout = 150", "#");
+        assertFault(noBlank, "work.G54", "'work.G54' puts the work zero's Z on the face of the blank (face): that needs the chuck");
+        assertFault(GOOD.replace("work.G54 = face", "work.G54 = ten, face"), "work.G54", "'ten' is not a number");
+        assertFault(GOOD.replace("work.G54 = face", "work.G54 = fac"), "work.G54", "work.G54");
+    }
+
     // ---- speeds, counts, channels ----
 
     @Test

@@ -400,7 +400,17 @@ public enum Code {
      * Warning: a feed per minute with the spindle stopped and the chuck open: a bar or stock pull,
      * not a cut unless it meets stock (compile's simulation: E306, E307).
      */
-    E661_PULL_NOT_JUDGED(661);
+    E661_PULL_NOT_JUDGED(661),
+    /**
+     * Note: the work offsets a shop sets on the blank's face ({@code work.G54 = 0, face}) follow the
+     * blank given for this run ({@code --stock D,L,S}): where they are now.
+     */
+    E662_WORK_ZERO_FROM_BLANK(662),
+    /**
+     * Warning: the blank given for this run has its face elsewhere than the G54 the profile pins:
+     * the program's Z0 is not the face it was written for.
+     */
+    E663_WORK_ZERO_PINNED(663);
 
     private final int number;
 

@@ -165,7 +165,8 @@ public enum Phrase {
     TOOL_AGAIN,
     TOOL_FROM_LIBRARY,
     POINT_LIST,
-    CONVEX;
+    CONVEX,
+    WORK_AT_FACE;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

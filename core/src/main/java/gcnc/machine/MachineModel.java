@@ -23,12 +23,44 @@ import java.util.Optional;
  *                    false for a profile whose frame is not real millimetres (thesis-2004)
  * @param defaultTool outline of a tool that has none of its own
  * @param tools       tool number to its own outline
+ * @param workZero    which work offsets are the face of the blank ({@code work.G54 = 0, face})
  */
 public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tailstock> tailstock,
                            Optional<Blank> stock, boolean stockHeader, ToolOutline defaultTool,
-                           Map<Integer, ToolOutline> tools) {
+                           Map<Integer, ToolOutline> tools, WorkZero workZero) {
     public MachineModel {
         tools = Map.copyOf(tools);
+    }
+
+    /**
+     * The work offsets whose Z is the face of the blank, as a shop sets G54 by touching the face
+     * ({@code work.G54 = 0, face}): at {@code chuck.face_z} + the stick-out, the profile's
+     * {@code stock.stickout} until a run gives its own blank ({@code --stock D,L,S}).
+     *
+     * @param atFace   G numbers (54..59) whose Z follows the blank's face; empty: every offset is pinned
+     * @param stickout the stick-out the face is at, mm from the jaws' face
+     * @param given    the stick-out is the run's blank's, not the profile's (a note says so, E662)
+     */
+    public record WorkZero(java.util.Set<Integer> atFace, double stickout, boolean given) {
+        public WorkZero {
+            atFace = java.util.Set.copyOf(atFace);
+        }
+    }
+
+    /** The same model with the face of the blank {@code stickout} mm in front of the jaws, given for a run. */
+    public MachineModel withStickout(double stickout) {
+        return new MachineModel(centreX, chuck, tailstock, stock, stockHeader, defaultTool, tools,
+                new WorkZero(workZero.atFace(), stickout, true));
+    }
+
+    /** The value of a work offset's Z that puts it on the blank's face: {@code work.G54 = 0, face}. */
+    public static final String FACE = "face";
+
+    /** {@code face} (X 0) or {@code x, face}: a work offset whose Z is the blank's face. */
+    static boolean atFace(String value) {
+        String[] xz = value.split(",", -1);
+        return xz.length == 1 && xz[0].trim().equalsIgnoreCase(FACE)
+                || xz.length == 2 && xz[1].trim().equalsIgnoreCase(FACE);
     }
 
     /** The jaws (from {@code faceZ - jawLength} to {@code faceZ}) and the body behind them. */
@@ -72,8 +104,28 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
     static MachineModel read(ProfileFile f) throws TableException {
         Optional<Chuck> chuck = chuck(f);
         ToolOutline def = toolOutline(f, "sim.tool.default", TIP_ONLY);
-        return new MachineModel(f.number("sim.centre_x", 0), chuck, tailstock(f, chuck), stock(f, chuck),
-                f.choice("stock.header", "use", "use", "ignore").equals("use"), def, tools(f, def));
+        Optional<Blank> stock = stock(f, chuck);
+        return new MachineModel(f.number("sim.centre_x", 0), chuck, tailstock(f, chuck), stock,
+                f.choice("stock.header", "use", "use", "ignore").equals("use"), def, tools(f, def),
+                workZero(f, chuck, stock));
+    }
+
+    /**
+     * The work offsets given as {@code x, face}: their Z is the blank's face, which needs the chuck
+     * (the face is measured from its jaws) and the profile's blank (its stick-out until a run gives one).
+     */
+    private static WorkZero workZero(ProfileFile f, Optional<Chuck> chuck, Optional<Blank> stock)
+            throws TableException {
+        java.util.Set<Integer> atFace = new java.util.TreeSet<>();
+        for (ProfileFile.Entry e : f.withPrefix("work.")) {
+            if (atFace(e.value())) {
+                if (chuck.isEmpty() || stock.isEmpty()) {
+                    throw f.fault(e, Phrase.WORK_AT_FACE.with(e.key()));
+                }
+                atFace.add(Integer.parseInt(e.key().substring("work.G".length())));
+            }
+        }
+        return new WorkZero(atFace, stock.map(Blank::stickout).orElse(0.0), false);
     }
 
     /**

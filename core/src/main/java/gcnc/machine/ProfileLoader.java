@@ -95,6 +95,7 @@ public final class ProfileLoader {
         Point home = position(f, "home", x, z);
         Point machineZero = f.entry("machine_zero").isPresent() ? position(f, "machine_zero", x, z) : home;
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
+        MachineModel model = MachineModel.read(f);
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
@@ -104,8 +105,8 @@ public final class ProfileLoader {
                 register(f, "vector.deceleration", 256000, Phrase.REGISTER_DECELERATION),
                 f.positive("spindle.max_rpm"), f.positive("spindle.rpm_per_volt"), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
-                workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
-                machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z),
+                workOffsets(f, counts, x, z, model), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
+                machineZero, chuckByProgram, model, encoder(f, x, z),
                 noses(f, counts, x), threadChamfer(f));
     }
 
@@ -275,11 +276,24 @@ public final class ProfileLoader {
         return f.entry(key).isPresent() ? register(f, key, what) : otherwise;
     }
 
-    private static Map<Integer, Point> workOffsets(ProfileFile f, boolean counts, Axis x, Axis z) throws TableException {
+    /**
+     * {@code work.G54 = x, z}, or {@code x, face} ({@code face} alone: X 0): Z on the face of the blank (chuck.face_z + the
+     * stick-out, in mm whatever offsets.unit says), which a run's own blank moves
+     * ({@link MachineProfile#withStickout}); {@link MachineModel#workZero} checked it has a chuck and a blank.
+     */
+    private static Map<Integer, Point> workOffsets(ProfileFile f, boolean counts, Axis x, Axis z, MachineModel model)
+            throws TableException {
         Map<Integer, Point> work = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("work.")) {
             int g = Integer.parseInt(e.key().substring("work.G".length())); // ProfileKeys: work.G54 .. work.G59
-            work.put(g, offset(f.pair(e), counts, x, z));
+            if (model.workZero().atFace().contains(g)) {
+                String[] xz = e.value().split(",", -1);
+                double xValue = xz.length == 1 ? 0 : f.number(e, xz[0]);
+                double faceMm = model.chuck().orElseThrow().faceZ() + model.workZero().stickout();
+                work.put(g, new Point(counts ? xValue : xValue * x.countsPerMm(), faceMm * z.countsPerMm()));
+            } else {
+                work.put(g, offset(f.pair(e), counts, x, z));
+            }
         }
         for (int g = 54; g <= 59; g++) {
             work.putIfAbsent(g, Point.ORIGIN);
