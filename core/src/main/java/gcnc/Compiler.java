@@ -1,6 +1,7 @@
 package gcnc;
 
 import gcnc.check.Checker;
+import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.flow.ProgramFlow;
 import gcnc.galil.Dialect;
@@ -86,9 +87,12 @@ public final class Compiler {
     public static Result compile(Reader source, Settings settings, LineSink out) throws IOException {
         Diagnostics diags = new Diagnostics();
         java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
-        settings = withStockHeader(buffered, settings);
+        // the blank given for the run sets the work zero; a header's blank does not (the program's
+        // DMC does not change with its first comment)
         settings = onTheBlank(settings);
-        WorkZeroNotes.report(settings.profile(), settings.simulation().flatMap(SimOptions::stock), diags);
+        Optional<gcnc.sim.StockSize> given = settings.simulation().flatMap(SimOptions::stock);
+        settings = withStockHeader(buffered, settings);
+        WorkZeroNotes.report(settings.profile(), given, diags);
         BlockSource reader = blocks(buffered, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
@@ -130,6 +134,12 @@ public final class Compiler {
             if (sim != null) {
                 diags.addAll(sim.finish());
                 report = translated ? Optional.of(sim.report()) : Optional.empty();
+                if (translated && diags.sorted().stream().noneMatch(d -> d.code() == Code.E316_SIM_NO_STOCK)) {
+                    // the simulation cut the blank: it judged every feed check left open (E306/E307 where
+                    // one really took material), so check's "compile decides" warnings are settled
+                    diags.withdraw(d -> d.code() == Code.E660_FEED_SPINDLE_STOPPED_NOT_JUDGED
+                            || d.code() == Code.E661_PULL_NOT_JUDGED);
+                }
             }
             return new Result(diags, blocks, report);
         }

@@ -379,6 +379,19 @@ public enum Code {
     E319_SIM_THREAD_UNSYNCHRONISED(319),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
+    /**
+     * Warning, once per station: a station the profile does not describe (no station.N or
+     * sim.tool.N) is checked as the profile's default tool; what is found about its outline rests on
+     * that assumption, and the findings say so.
+     */
+    E321_SIM_STATION_ASSUMED(321),
+    /**
+     * Warning, once per station: a station the profile does not describe, on a profile with no
+     * default tool either: checked at its tip only, the holder and back-of-insert checks skipped.
+     */
+    E322_SIM_STATION_TIP_ONLY(322),
+    /** A drill, centre drill or tap meets material with an edge that does not cut: moved sideways, or a tap into solid material. */
+    E323_SIM_AXIAL_TOOL_SIDEWAYS(323),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

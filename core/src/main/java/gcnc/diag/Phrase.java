@@ -166,7 +166,14 @@ public enum Phrase {
     TOOL_FROM_LIBRARY,
     POINT_LIST,
     CONVEX,
-    WORK_AT_FACE;
+    WORK_AT_FACE,
+    STATION_FORM,
+    STATION_FROM_ONE,
+    STATION_ANGLE,
+    STATION_TWICE,
+    NOSE_TWICE,
+    UNKNOWN_KEY_STATION,
+    TOOL_ASSUMED;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

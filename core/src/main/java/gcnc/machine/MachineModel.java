@@ -83,22 +83,54 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
     public record Outline(double[] dz, double[] dx) {
     }
 
+    /** What a tool is, as far as the simulator's checks go. */
+    public enum ToolKind {
+        TURN, THREAD, GROOVE, PART, BORE,
+        /** Drills, centre drills and taps work on the centreline along Z: their sides do not cut (E323). */
+        DRILL, CENTRE_DRILL, TAP,
+        /**
+         * A bar puller (or stock stop): it grips or touches the bar and cuts nothing, so its moves
+         * neither take stock nor count as cuts (a pull with the spindle stopped and the chuck open
+         * is clean); the chuck and tailstock are still checked against its tip.
+         */
+        PULLER,
+        /** An outline given point by point ({@code sim.tool.<n>.insert}): its back is not known. */
+        OUTLINE,
+        /** No outline at all: a point at the programmed tip (a profile with no tools). */
+        TIP;
+
+        public boolean axial() {
+            return this == DRILL || this == CENTRE_DRILL || this == TAP;
+        }
+    }
+
     /**
      * A tool's insert and holder; {@code holder} is null when there is none (the tip-only default).
      * {@code back} lists the insert's edges that do not cut (edge i runs from corner i to corner
-     * i + 1): the simulator reports material that such an edge meets first (E320). The library
+     * i + 1): the simulator reports material that such an edge meets first (E320, E323). The library
      * knows its shapes' backs; an outline given point by point has none, as its back is not known.
+     *
+     * @param kind what the tool is
+     * @param name how the profile names it, for messages ({@code C 12.7}, {@code drill 10})
+     * @param side 1: the tool works on the +X side of the spindle centreline (a turret); -1: on the
+     *             -X side, as a gang lathe carries its tools (the outline is mirrored through the axis)
      */
-    public record ToolOutline(Outline insert, Outline holder, int[] back) {
+    public record ToolOutline(Outline insert, Outline holder, int[] back, ToolKind kind, String name, int side) {
         public ToolOutline(Outline insert, Outline holder) {
-            this(insert, holder, new int[0]);
+            this(insert, holder, new int[0], ToolKind.OUTLINE, "outline", 1);
+        }
+
+        /** The same tool on the other side of the centreline ({@code side -x}) or under another name. */
+        ToolOutline with(String newName, int newSide) {
+            return new ToolOutline(insert, holder, back, kind, newName, newSide);
         }
     }
 
     private static final String[] CHUCK = {"chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter"};
     private static final String[] TAILSTOCK = {"tailstock.centre_z", "tailstock.quill_diameter"};
     private static final String[] STOCK = {"stock.diameter", "stock.length", "stock.stickout"};
-    private static final ToolOutline TIP_ONLY = new ToolOutline(new Outline(new double[] {0}, new double[] {0}), null);
+    private static final ToolOutline TIP_ONLY = new ToolOutline(new Outline(new double[] {0}, new double[] {0}), null,
+            new int[0], ToolKind.TIP, "tip", 1);
 
     /** Reads and checks the simulator's keys of a profile whose other keys ProfileLoader has read. */
     static MachineModel read(ProfileFile f) throws TableException {
@@ -200,9 +232,14 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         return first != null;
     }
 
-    /** Per-tool outlines; a tool that gives only an insert or a holder takes the other from the default. */
+    /**
+     * Per-station outlines: the tool table's ({@code station.N}, {@link ToolTable}) or the library
+     * name's ({@code sim.tool.N}), not both; {@code sim.tool.N.insert}/{@code .holder} redraw either,
+     * and a station that gives only an insert or a holder takes the other from the default.
+     */
     private static Map<Integer, ToolOutline> tools(ProfileFile f, ToolOutline def) throws TableException {
         Map<Integer, ToolOutline> tools = new HashMap<>();
+        Map<Integer, ToolTable.Station> stations = ToolTable.read(f);
         Map<Integer, String> ids = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("sim.tool.")) {
             String id = e.key().split("\\.")[2]; // ProfileKeys checked the form: sim.tool.<id>[.insert|.holder]
@@ -214,7 +251,15 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
             if (before != null && !before.equals(id)) {
                 throw f.faultAtKey(e, Phrase.TOOL_AGAIN.with(e.key(), n, before));
             }
-            tools.put(n, toolOutline(f, "sim.tool." + id, def));
+            ToolTable.Station station = stations.get(n);
+            Optional<ProfileFile.Entry> named = f.entry("sim.tool." + id);
+            if (station != null && named.isPresent()) {
+                throw f.faultAtKey(named.get(), Phrase.STATION_TWICE.with(n, station.entry().key(), named.get().key()));
+            }
+            tools.put(n, toolOutline(f, "sim.tool." + id, station != null ? station.outline() : def));
+        }
+        for (ToolTable.Station s : stations.values()) {
+            tools.putIfAbsent(s.number(), s.outline());
         }
         return tools;
     }
@@ -229,9 +274,14 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         }
         Optional<ProfileFile.Entry> insert = f.entry(prefix + ".insert");
         Optional<ProfileFile.Entry> holder = f.entry(prefix + ".holder");
+        if (insert.isEmpty() && holder.isEmpty()) {
+            return otherwise;
+        }
         return new ToolOutline(insert.isPresent() ? outline(f, insert.get()) : otherwise.insert(),
                 holder.isPresent() ? outline(f, holder.get()) : otherwise.holder(),
-                insert.isPresent() ? new int[0] : otherwise.back());
+                insert.isPresent() ? new int[0] : otherwise.back(),
+                insert.isPresent() ? ToolKind.OUTLINE : otherwise.kind(),
+                insert.isPresent() ? "outline" : otherwise.name(), otherwise.side());
     }
 
     /** "dz, dx; dz, dx; ..." in mm from the tip, convex (the simulator's collision test needs it). */

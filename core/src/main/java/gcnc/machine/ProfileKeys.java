@@ -46,7 +46,9 @@ final class ProfileKeys {
             new Family("nose.", "nose\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_NOSE),
             new Family("m.", "m\\.[0-9]{1,3}", Phrase.UNKNOWN_KEY_M),
             new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
-                    Phrase.UNKNOWN_KEY_SIM_TOOL));
+                    Phrase.UNKNOWN_KEY_SIM_TOOL),
+            // the shop's tool table: one line per turret station (ToolTable)
+            new Family("station.", "station\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_STATION));
 
     private ProfileKeys() {
     }

@@ -351,6 +351,18 @@ public final class ProfileLoader {
             }
             noses.put(n, new Nose(mm * x.countsPerMm(), (int) v[1]));
         }
+        // a station of the tool table that names its nose gives it to the offset of its number (T0303)
+        for (ToolTable.Station s : ToolTable.read(f).values()) {
+            if (!s.hasNose()) {
+                continue;
+            }
+            if (seen.containsKey(s.number())) {
+                throw f.faultAtKey(s.entry(), Phrase.NOSE_TWICE.with(s.number()));
+            }
+            double radius = Double.isNaN(s.noseRadius()) ? 0 : s.noseRadius();
+            double mm = counts ? radius / x.countsPerMm() : radius;
+            noses.put(s.number(), new Nose(mm * x.countsPerMm(), Math.max(0, s.tip())));
+        }
         return noses;
     }
 

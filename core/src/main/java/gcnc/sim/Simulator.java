@@ -26,6 +26,9 @@ public final class Simulator {
     private final DmcInterpreter dmc;
     private final OutputState outputs;
     private final MotionChecks checks;
+    private final SimMachine machine;
+    /** The stations already warned of as not described (E321/E322): once per station, not per tool change. */
+    private final java.util.Set<Integer> undescribed = new java.util.HashSet<>();
     private final Trace trace;
     private final List<Motion> motions = new ArrayList<>();
     private List<Motion> expected = List.of();
@@ -44,7 +47,8 @@ public final class Simulator {
         this.diagnostics = diagnostics;
         this.plane = new Plane(profile);
         this.outputs = new OutputState(profile);
-        this.checks = new MotionChecks(profile, SimMachine.read(profile), options, this::report);
+        this.machine = SimMachine.read(profile);
+        this.checks = new MotionChecks(profile, machine, options, this::report);
         if (!checks.hasStock()) {
             // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
             diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
@@ -261,6 +265,13 @@ public final class Simulator {
         @Override
         public void tool(int n, int line) {
             checks.selectTool(n);
+            if (n != 0 && !machine.described(n) && undescribed.add(n)) {
+                // never silently the default outline: say which station, and what its checks rest on
+                boolean tipOnly = machine.defaultTool().kind() == gcnc.machine.MachineModel.ToolKind.TIP;
+                diagnostics.report(Diagnostic.warning(tipOnly ? Code.E322_SIM_STATION_TIP_ONLY
+                        : Code.E321_SIM_STATION_ASSUMED, Span.of(Math.max(1, line), 1), n, profile.name(),
+                        machine.defaultTool().name()).in(origin));
+            }
         }
 
         @Override
