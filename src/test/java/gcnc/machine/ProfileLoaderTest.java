@@ -189,6 +189,68 @@ class ProfileLoaderTest {
         assertFault(GOOD.replace("work.G54 = face", "work.G54 = fac"), "work.G54", "work.G54");
     }
 
+    @Test
+    void theToolTableDescribesEachStation() throws Exception {
+        MachineProfile p = loadText(GOOD + String.join("\n",
+                "station.2 = turn D 12.7, nose 0.4, tip 3",
+                "station.4 = drill 10, angle 140, reach 60",
+                "station.5 = groove 3, reach 12",
+                "station.6 = part 3",
+                "station.7 = thread 16",
+                "station.8 = bore 16, nose 0.4, tip 2",
+                "station.9 = centre 3.15",
+                "station.10 = tap 10",
+                "station.11 = puller",
+                "station.12 = turn T 9.525, side -x", ""));
+        MachineModel m = p.model();
+        assertEquals(MachineModel.ToolKind.TURN, m.tools().get(2).kind());
+        assertEquals("turn D 12.7", m.tools().get(2).name());
+        assertEquals(MachineModel.ToolKind.DRILL, m.tools().get(4).kind());
+        assertEquals(MachineModel.ToolKind.GROOVE, m.tools().get(5).kind());
+        assertEquals(12, m.tools().get(5).insert().dx()[2], 1e-9, "the blade reaches 12 mm");
+        assertEquals(MachineModel.ToolKind.PART, m.tools().get(6).kind());
+        assertEquals(MachineModel.ToolKind.THREAD, m.tools().get(7).kind());
+        assertEquals(MachineModel.ToolKind.BORE, m.tools().get(8).kind());
+        assertEquals(MachineModel.ToolKind.CENTRE_DRILL, m.tools().get(9).kind());
+        assertEquals(MachineModel.ToolKind.TAP, m.tools().get(10).kind());
+        assertEquals(MachineModel.ToolKind.PULLER, m.tools().get(11).kind());
+        assertEquals(-1, m.tools().get(12).side());
+        assertEquals(1, m.tools().get(2).side());
+        // the nose a station names is its tool offset's (T0202), as nose.2 would give it
+        assertEquals(0.4 * p.x().countsPerMm(), p.nose(2).radius(), 1e-9);
+        assertEquals(3, p.nose(2).tip());
+        assertEquals(2, p.nose(8).tip());
+        assertEquals(0, p.nose(4).radius());
+        assertFalse(m.tools().containsKey(3), "station 3 is not described");
+        assertTrue(m.tools().containsKey(1), "generic describes station 1");
+    }
+
+    @Test
+    void aBadStationIsAFaultAtItsLine() throws Exception {
+        String form = "describes a turret station: a kind and its size";
+        assertFault(GOOD + "station.3 = mill 10\n", "station.3", form + " (turn C 12.7; turn with C D V W T or S;");
+        assertFault(GOOD + "station.3 = turn Q 12.7\n", "station.3", "(not 'turn Q 12.7')");
+        assertFault(GOOD + "station.3 = turn C\n", "station.3", form);
+        assertFault(GOOD + "station.3 = drill -4\n", "station.3", form);
+        assertFault(GOOD + "station.3 = drill ten\n", "station.3", "'ten' is not a number");
+        assertFault(GOOD + "station.3 = drill 10, colour red\n", "station.3", form);
+        assertFault(GOOD + "station.3 = drill 10, reach 0\n", "station.3", form);
+        assertFault(GOOD + "station.3 = turn C 12.7, side left\n", "station.3", form);
+        assertFault(GOOD + "station.3 = turn C 12.7, tip 10\n", "station.3", "a tip direction is a whole number 0 to 9 (not 10) (station.3)");
+        assertFault(GOOD + "station.3 = turn C 12.7, nose 30\n", "station.3", "a nose radius is at least 0 and below 25 mm (not 30)");
+        assertFault(GOOD + "station.3 = drill 10, angle 200\n", "station.3", "a point angle is a drill's: more than 60");
+        assertFault(GOOD + "station.3 = turn C 12.7, angle 90\n", "station.3", "a point angle is a drill's");
+        assertFault(GOOD + "station.0 = drill 10\n", "station.0", "turret stations are numbered from 1 ('station.0')");
+        assertFault(GOOD + "station.3 = drill 10\nstation.03 = tap 10\n", "station.03", "'station.03' is number 3 again");
+        assertFault(GOOD + "station.100 = drill 10\n", "station.100", "the tool table is station.<n> = kind size; options");
+        // one description per station; and one nose per tool offset
+        assertFault(GOOD + "sim.tool.1 = D 12.7\n", "sim.tool.1", "station 1 is described twice: by station.1 and by sim.tool.1");
+        assertFault(GOOD + "station.3 = turn C 12.7, nose 0.8, tip 3\nnose.3 = 0.4, 3\n", "station.3",
+                "the nose of tool offset 3 is given twice: by nose.3 and by station.3");
+        // an outline redraws a station: allowed
+        loadText(GOOD + "sim.tool.1.holder = 0, 20; 10, 20; 10, 40; 0, 40\n");
+    }
+
     // ---- speeds, counts, channels ----
 
     @Test
