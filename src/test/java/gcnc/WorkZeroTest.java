@@ -51,6 +51,7 @@ class WorkZeroTest {
         java.nio.file.Files.writeString(f, java.nio.file.Files.readString(
                 java.nio.file.Path.of("tables/machines/fanuc.machine")).replace("work.G54 = face", "work.G54 = 0, 100"));
         assertEquals(List.of("1:E663"), codes(f.toString(), Optional.of(new StockSize(50, 200, 60)), true));
+        assertEquals(List.of("1:E663"), codes(f.toString(), Optional.of(new StockSize(50, 200, 60)), false));
         assertEquals(List.of(), codes(f.toString(), Optional.of(new StockSize(50, 200, 100)), true));
     }
 }

@@ -66,7 +66,9 @@ public final class Compiler {
     /** Checks a program: parse and every thesis check and semantic rule, no output. */
     public static Result check(Reader source, Settings settings) throws IOException {
         Diagnostics diags = new Diagnostics();
-        WorkZeroNotes.report(settings.profile(), Optional.empty(), diags);
+        // check does not simulate; a blank in its settings only places the work zero (work.G54 = face)
+        settings = onTheBlank(settings);
+        WorkZeroNotes.report(settings.profile(), settings.simulation().flatMap(SimOptions::stock), diags);
         BlockSource reader = blocks(source, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         long blocks = 0;

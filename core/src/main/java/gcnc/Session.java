@@ -122,7 +122,8 @@ public final class Session {
 
     /** Parse and every check: no output, no simulation. */
     public Compiler.Result check(Reader program) throws IOException {
-        return Compiler.check(program, settings(Optional.empty(), false));
+        // the blank, if one was given, places the work zero (work.G54 = face); nothing is simulated
+        return Compiler.check(program, settings(options.stock().map(b -> simulation()), false));
     }
 
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); Galil lines go to {@code out}. */
@@ -151,9 +152,7 @@ public final class Session {
     }
 
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {
-        // the blank given to the session sets the work zero for check too (work.G54 = 0, face), not only for a simulation
-        MachineProfile p = options.stock().map(b -> profile.withStickout(b.stickout())).orElse(profile);
-        Compiler.Settings s = new Compiler.Settings(tables, p, options.dialect(), simulation, inlineSourceMap);
+        Compiler.Settings s = new Compiler.Settings(tables, profile, options.dialect(), simulation, inlineSourceMap);
         return programs.map(s::withPrograms).orElse(s);
     }
 }
