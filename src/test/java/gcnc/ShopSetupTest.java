@@ -85,8 +85,9 @@ class ShopSetupTest {
 
     @Test
     void aPartingBladeAtAStationTheProfileDoesNotDescribeIsWarned() throws Exception {
-        // generic describes station 1 only: the blade is checked as the default 80° insert, and said so
-        assertEquals("5:E321", run(ProfileLoaderDefault.NAME, PART_OFF, true));
+        // generic describes station 1 only: the blade is checked as the default 80° insert, and said so;
+        // plunged 22 mm deep, that insert's holder head meets the wall (a finding resting on the assumption)
+        assertEquals("5:E321, 8:E315", run(ProfileLoaderDefault.NAME, PART_OFF, true));
         // described: no assumption, nothing to say
         assertEquals("", run(genericWith("station.6 = part 3, reach 32\n"), PART_OFF, true));
         // check does not simulate: no tool geometry involved

@@ -147,6 +147,20 @@ class ToolTableTest {
     }
 
     @Test
+    void aTurningInsertPlungedDeeperThanItStandsMeetsTheWallWithItsHolderHead() throws Exception {
+        // the C 12.7 stands 15.1 mm above its tip; its holder's head reaches 3 mm past it toward the tailstock
+        SimFixture f = fixture(TOOLS);
+        f.start();
+        f.block(List.of(), "TOOL=1");
+        f.move(true, 25, 60);
+        f.move(false, 10, 60);               // line 4: 10 mm into the r 20 bar: the insert cuts it all
+        f.move(true, 25, 60);
+        assertEquals(List.of(), f.codes());
+        f.move(false, 2, 60);                // line 6: 18 mm: the head meets the wall on the tailstock side
+        assertEquals(List.of("E315@6"), f.codes());
+    }
+
+    @Test
     void anUndescribedStationIsWarnedOnceAndItsFindingsSaySo() throws Exception {
         SimFixture f = fixture(TOOLS);
         f.start();

@@ -91,7 +91,7 @@ final class ToolLibrary {
                 double side = ic * Math.sqrt(3);
                 insert = new double[][] {{0, 0, side * cos(30)}, {0, side, side * sin(30)}};
                 // its third edge faces the tailstock and the holder: its back
-                return new MachineModel.ToolOutline(outline(insert), outline(holder(insert)), new int[] {1},
+                return new MachineModel.ToolOutline(outline(insert), outline(head(holder(insert))), new int[] {1},
                         MachineModel.ToolKind.TURN, name, 1);
             }
             default -> {
@@ -100,7 +100,7 @@ final class ToolLibrary {
         }
         // the rhombus's back edge (corner 2 to corner 3, facing the tailstock) does not cut
         back = new int[] {2};
-        return new MachineModel.ToolOutline(outline(insert), outline(holder(insert)), back,
+        return new MachineModel.ToolOutline(outline(insert), outline(head(holder(insert))), back,
                 MachineModel.ToolKind.TURN, name, 1);
     }
 
@@ -247,6 +247,37 @@ final class ToolLibrary {
         out[1][n] = top + HOLDER;
         out[0][n + 1] = out[0][0];
         out[1][n + 1] = top + HOLDER;
+        return out;
+    }
+
+    /** How far a turning holder's head reaches past its insert toward the tailstock, mm. */
+    static final double HEAD = 3;
+
+    /**
+     * A turning insert's holder with its head: it reaches {@link #HEAD} mm past the insert toward
+     * the tailstock, its underside going on along the insert's last upper edge (so the outline
+     * stays convex and leaves no gap). A real holder is wider than its insert: plunged straight in
+     * deeper than the insert stands, its head meets the wall the insert did not cut (E315), where a
+     * holder exactly as wide as the insert would follow it down its own slot unchallenged.
+     */
+    private static double[][] head(double[][] holder) {
+        // holder(): the underside corners first (left to right), then the two top corners
+        int n = holder[0].length - 2;
+        double z1 = holder[0][n - 1];
+        double r1 = holder[1][n - 1];
+        double slope = n >= 2 ? (r1 - holder[1][n - 2]) / (z1 - holder[0][n - 2]) : 0;
+        double[][] out = new double[2][n + 3];
+        for (int k = 0; k < n; k++) {
+            out[0][k] = holder[0][k];
+            out[1][k] = holder[1][k];
+        }
+        double top = holder[1][n];
+        out[0][n] = z1 + HEAD;
+        out[1][n] = Math.min(r1 + slope * HEAD, top);
+        out[0][n + 1] = z1 + HEAD;
+        out[1][n + 1] = top;
+        out[0][n + 2] = holder[0][n + 1];
+        out[1][n + 2] = top;
         return out;
     }
 
