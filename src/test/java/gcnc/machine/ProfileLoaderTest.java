@@ -226,6 +226,34 @@ class ProfileLoaderTest {
     }
 
     @Test
+    void theToolTableMayBeAFileBesideTheProfile() throws Exception {
+        Path dir = Files.createTempDirectory("shop");
+        Path profile = dir.resolve("lathe.machine");
+        Files.writeString(profile, GOOD + "tools.file = turret.tools\n");
+        Files.writeString(dir.resolve("turret.tools"), "# our turret\nstation.4 = drill 10\nstation.7 = tap 10, reach 15\n");
+        MachineProfile p = ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES);
+        assertEquals(MachineModel.ToolKind.DRILL, p.model().tools().get(4).kind());
+        assertEquals(MachineModel.ToolKind.TAP, p.model().tools().get(7).kind());
+        assertTrue(p.model().tools().containsKey(1), "the profile's own station 1 stays");
+        // a fault in the file is at its own line
+        Files.writeString(dir.resolve("turret.tools"), "station.4 = drill 10\nstation.7 = tap ten\n");
+        TableException bad = assertThrows(TableException.class,
+                () -> ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES));
+        assertEquals(2, bad.diagnostic().span().line());
+        assertTrue(bad.getMessage().contains("turret.tools"), bad.getMessage());
+        Files.writeString(dir.resolve("turret.tools"), "station.4 = drill 10\nhome = 0, 0\n");
+        assertTrue(assertThrows(TableException.class,
+                () -> ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES)).english()
+                .contains("a tool table file holds station.<n> lines only (not 'home')"));
+        Files.writeString(dir.resolve("turret.tools"), "station.1 = drill 10\n");
+        assertTrue(assertThrows(TableException.class,
+                () -> ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES)).english()
+                .contains("'station.1' is number 1 again"));
+        Files.delete(dir.resolve("turret.tools"));
+        assertFault(GOOD + "tools.file = turret.tools\n", "tools.file", "turret.tools does not exist");
+    }
+
+    @Test
     void aBadStationIsAFaultAtItsLine() throws Exception {
         String form = "describes a turret station: a kind and its size";
         assertFault(GOOD + "station.3 = mill 10\n", "station.3", form + " (turn C 12.7; turn with C D V W T or S;");

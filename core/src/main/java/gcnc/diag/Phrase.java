@@ -173,7 +173,9 @@ public enum Phrase {
     STATION_TWICE,
     NOSE_TWICE,
     UNKNOWN_KEY_STATION,
-    TOOL_ASSUMED;
+    TOOL_ASSUMED,
+    TOOLS_FILE_MISSING,
+    TOOLS_FILE_KEYS;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

@@ -21,7 +21,7 @@ final class ProfileKeys {
             "x.counts_per_inch", "z.counts_per_inch", "x.travel", "z.travel", "x.programming",
             "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",
             "spindle.max_rpm", "spindle.rpm_per_volt", "spindle.axis", "spindle.encoder", "spindle.encoder_axis", "tool_post", "offsets.unit",
-            "tools.table", "tools.offsets", "tools.count", "feed.per_f", "thread.chamfer_leads",
+            "tools.table", "tools.offsets", "tools.count", "tools.file", "feed.per_f", "thread.chamfer_leads",
             "thread.chamfer_angle",
             // the simulator's machine model
             "sim.centre_x", "chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter",

@@ -53,8 +53,8 @@ public final class ProfileLoader {
         return read(f, data, tables, control);
     }
 
-    /** A profile given as a path, decoded as the tables are ({@link Utf8}). */
-    private static String readFile(Path p) throws TableException {
+    /** A profile (or the tool table file it names) given as a path, decoded as the tables are ({@link Utf8}). */
+    static String readFile(Path p) throws TableException {
         try {
             return Utf8.decode(p.toString(), Files.readAllBytes(p));
         } catch (NoSuchFileException e) {

@@ -4,9 +4,12 @@ import static gcnc.machine.ProfileFile.written;
 
 import gcnc.diag.Phrase;
 import gcnc.tables.TableException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 
 /**
  * The tool table a shop writes for its turret, one line per station (docs/profiles.md, "Tool
@@ -44,10 +47,41 @@ final class ToolTable {
     private ToolTable() {
     }
 
-    /** Every {@code station.N} of the profile, checked. */
+    /**
+     * Every {@code station.N} of the profile and of the tool table file it names ({@code tools.file},
+     * beside the profile), checked; a fault in the file is at its own line.
+     */
     static Map<Integer, Station> read(ProfileFile f) throws TableException {
         Map<Integer, Station> out = new HashMap<>();
         Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
+        read(f, out, seen);
+        Optional<ProfileFile.Entry> ref = f.entry("tools.file");
+        if (ref.isPresent()) {
+            read(file(f, ref.get()), out, seen);
+        }
+        return out;
+    }
+
+    /**
+     * The tool table file a profile names: a path relative to the profile's folder, holding only
+     * {@code station.N} lines (and comments), so that a shop keeps its turret apart from its machine.
+     */
+    private static ProfileFile file(ProfileFile f, ProfileFile.Entry ref) throws TableException {
+        Path p = Path.of(f.path()).resolveSibling(ref.value().trim());
+        if (!Files.isRegularFile(p)) {
+            throw f.fault(ref, Phrase.TOOLS_FILE_MISSING.with(p.toString()));
+        }
+        ProfileFile t = ProfileFile.parse(p.toString(), ProfileLoader.readFile(p));
+        for (String key : t.keys()) {
+            if (!key.startsWith("station.") || !ProfileKeys.known(key)) {
+                throw t.faultAtKey(t.required(key), Phrase.TOOLS_FILE_KEYS.with(key));
+            }
+        }
+        return t;
+    }
+
+    private static void read(ProfileFile f, Map<Integer, Station> out, Map<Integer, ProfileFile.Entry> seen)
+            throws TableException {
         for (ProfileFile.Entry e : f.withPrefix("station.")) {
             String id = e.key().substring("station.".length()); // ProfileKeys: station.<1-2 digits>
             int n = Integer.parseInt(id);
@@ -60,7 +94,6 @@ final class ToolTable {
             }
             out.put(n, station(f, e, n));
         }
-        return out;
     }
 
     private static Station station(ProfileFile f, ProfileFile.Entry e, int n) throws TableException {
