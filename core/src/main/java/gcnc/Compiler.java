@@ -1,6 +1,7 @@
 package gcnc;
 
 import gcnc.check.Checker;
+import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.flow.ProgramFlow;
 import gcnc.galil.Dialect;
@@ -65,6 +66,9 @@ public final class Compiler {
     /** Checks a program: parse and every thesis check and semantic rule, no output. */
     public static Result check(Reader source, Settings settings) throws IOException {
         Diagnostics diags = new Diagnostics();
+        // check does not simulate; a blank in its settings only places the work zero (work.G54 = face)
+        settings = onTheBlank(settings);
+        WorkZeroNotes.report(settings.profile(), settings.simulation().flatMap(SimOptions::stock), diags);
         BlockSource reader = blocks(source, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         long blocks = 0;
@@ -85,7 +89,12 @@ public final class Compiler {
     public static Result compile(Reader source, Settings settings, LineSink out) throws IOException {
         Diagnostics diags = new Diagnostics();
         java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
+        // the blank given for the run sets the work zero; a header's blank does not (the program's
+        // DMC does not change with its first comment)
+        settings = onTheBlank(settings);
+        Optional<gcnc.sim.StockSize> given = settings.simulation().flatMap(SimOptions::stock);
         settings = withStockHeader(buffered, settings);
+        WorkZeroNotes.report(settings.profile(), given, diags);
         BlockSource reader = blocks(buffered, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
@@ -127,6 +136,12 @@ public final class Compiler {
             if (sim != null) {
                 diags.addAll(sim.finish());
                 report = translated ? Optional.of(sim.report()) : Optional.empty();
+                if (translated && diags.sorted().stream().noneMatch(d -> d.code() == Code.E316_SIM_NO_STOCK)) {
+                    // the simulation cut the blank: it judged every feed check left open (E306/E307 where
+                    // one really took material), so check's "compile decides" warnings are settled
+                    diags.withdraw(d -> d.code() == Code.E660_FEED_SPINDLE_STOPPED_NOT_JUDGED
+                            || d.code() == Code.E661_PULL_NOT_JUDGED);
+                }
             }
             return new Result(diags, blocks, report);
         }
@@ -215,6 +230,21 @@ public final class Compiler {
         }
         double stickout = profile.model().stock().map(gcnc.machine.MachineModel.Blank::stickout).orElse(0.0);
         return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
+    }
+
+    /**
+     * The machine with the work offsets a shop sets on the blank's face ({@code work.G54 = 0, face})
+     * moved to the face of the blank the simulation is given ({@code --stock D,L,S}): the program's
+     * Z0 is where the operator would have touched off.
+     */
+    static Settings onTheBlank(Settings s) {
+        Optional<gcnc.sim.StockSize> blank = s.simulation().flatMap(SimOptions::stock);
+        if (blank.isEmpty()) {
+            return s;
+        }
+        MachineProfile p = s.profile().withStickout(blank.get().stickout());
+        return p == s.profile() ? s
+                : new Settings(s.tables(), p, s.dialect(), s.simulation(), s.inlineSourceMap(), s.programs());
     }
 
     private static void flush(List<GalilLine> lines, LineSink out) {

@@ -122,7 +122,8 @@ public final class Session {
 
     /** Parse and every check: no output, no simulation. */
     public Compiler.Result check(Reader program) throws IOException {
-        return Compiler.check(program, settings(Optional.empty(), false));
+        // the blank, if one was given, places the work zero (work.G54 = face); nothing is simulated
+        return Compiler.check(program, settings(options.stock().map(b -> simulation()), false));
     }
 
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); Galil lines go to {@code out}. */

@@ -74,7 +74,10 @@ class BlockChecksTest {
         assertEquals("6:1:E039", Run.generic(PRE + "G01 X40.\nM30").errors());
         assertEquals("4:1:E038", Run.generic("G21 G90 G98\nG50 S2500\nS1200 M03\nG01 X40. F100.\nM30").errors());
         assertEquals("3:1:E051", Run.generic("G50 S2500\nM11\nG01 X40. F100.\nM30").errors());
-        assertEquals("4:1:E037", Run.generic("G50 S2500\nM11\nM05\nG01 X40. F100.\nM30").errors());
+        // a feed per minute with the spindle stopped is a cut only if it meets stock (compile decides: E306)
+        assertEquals("4:1:E660", Run.generic("G50 S2500\nM11\nM05\nG01 X40. F100.\nM30").errors());
+        // per revolution the axis cannot feed while the spindle stands: E037 as in the thesis
+        assertEquals("5:1:E037", Run.generic("G50 S2500\nM11\nM05\nG99\nG01 X40. F0.2\nM30").errors());
         assertEquals("3:1:E041", Run.generic("M11\nM03\nG01 X40. F100.\nM30").errors());
         // M03 and M11 in the cutting block itself are applied before its motion
         assertEquals("", Run.generic("G50 S2500\nG01 X40. F100. M11 M03\nM30").errors());

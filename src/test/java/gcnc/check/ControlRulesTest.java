@@ -86,6 +86,26 @@ class ControlRulesTest {
     }
 
     @Test
+    void e038NamesTheChuckCloseCodeOfTheControl() {
+        // Haas clamps with M10, the thesis and fanuc-a with M11: the message says the machine's own code
+        String cut = "M11\nS1000 M03\n" + CUT + "M30\n";
+        assertTrue(messages("generic", "haas", cut).contains("the chuck must be closed (M10) before cutting"),
+                messages("generic", "haas", cut));
+        String open = "M10\nS1000 M03\n" + CUT + "M30\n";
+        assertTrue(messages("generic", "fanuc-a", open).contains("the chuck must be closed (M11) before cutting"),
+                messages("generic", "fanuc-a", open));
+    }
+
+    @Test
+    void aHaasBarPullIsAWarningForTheSimulationToJudge() {
+        // Haas: M05 stops, M11 unclamps, G98 G01 pulls the bar, M10 clamps again (spindle stopped)
+        String pull = "G50 S2500\nS1000 M03\n" + CUT + "M05\nM11\nG98 G01 Z50. F1000.\nM10\nM30\n";
+        assertEquals("8:5:E661", check("generic", "haas", pull));
+        assertTrue(messages("generic", "haas", pull).contains("spindle stopped and the chuck open (M11)"),
+                messages("generic", "haas", pull));
+    }
+
+    @Test
     void m02EndsTheProgramExceptOnTheThesisControl() {
         assertEquals("", check("generic", "haas", "G00 X42. Z2.\nM02\n"));
         assertEquals("", check("generic", "fanuc-a", "G00 X42. Z2.\nM02\n"));

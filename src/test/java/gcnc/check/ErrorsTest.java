@@ -59,7 +59,12 @@ class ErrorsTest {
         "G21|O5; 2:1:E034",
         "G01 G04 X1.; 1:5:E035",
         "G00 X1. P5; 1:9:E036",
-        "$|M05|G01 X40. F100.; 7:1:E037",
+        // E037 where the axis cannot feed: per revolution of a stopped spindle (G99)
+        "$|M05|G99|G01 X40. F0.2; 8:1:E037",
+        // per minute (G98) a move with the spindle stopped cuts only if it meets stock: compile decides
+        "$|M05|G01 X40. F100.; 7:1:E660",
+        // a Haas-style bar pull on the generic machine: M05, chuck open (M10 there), a G98 feed, chuck closed
+        "$|M05|M10|G01 Z50. F1000.|M11; 8:1:E661",
         "G21 G90 G98|G50 S2500|T0101|S1200 M03|G01 X40. F100.; 5:1:E038",
         "$|G01 X40.; 6:1:E039",
         "$|M10; 6:1:E040",
@@ -163,7 +168,7 @@ class ErrorsTest {
                 "N70 F100.",
                 "N80 M05",
                 "N90 M10",
-                "N100 G01 X40.",               // chuck open (38)
+                "N100 G01 X40.",               // spindle stopped, chuck open, G98: a pull unless it meets stock (661)
                 "N110 M11",
                 "N120 M03",
                 "N130 G01 X40.",
@@ -174,7 +179,7 @@ class ErrorsTest {
                 "N180 G01 X42.",
                 "N190 M05",
                 "N200 M30");
-        assertEquals("6:5:E051, 11:6:E038, 15:6:E048, 17:21:E101, 18:10:E015", Run.generic(program).errors());
+        assertEquals("6:5:E051, 11:6:E661, 15:6:E048, 17:21:E101, 18:10:E015", Run.generic(program).errors());
     }
 
     @Test

@@ -96,7 +96,8 @@ class MessagesTest {
         assertEquals("6:1:E039", ErrorsTest.run("$|G01 X40.").errors());
         // under a modal G01 the first axis word is the one that moves
         assertEquals("6:5:E051", ErrorsTest.run(noSpindle + "G01 F100.|N60 Z-10. F90.").errors());
-        assertEquals("7:5:E037", ErrorsTest.run(noSpindle + "G01 X40. F100. M03|M05|N70 Z-10. F90.").errors());
+        assertEquals("7:5:E660", ErrorsTest.run(noSpindle + "G01 X40. F100. M03|M05|N70 Z-10. F90.").errors());
+        assertEquals("8:5:E037", ErrorsTest.run(noSpindle + "G01 X40. F100. M03|M05|G99|N70 Z-10. F0.2").errors());
     }
 
     @Test

@@ -83,7 +83,9 @@ class NoseCompensationTest {
 
     /**
      * The same programs compiled and replayed: clean, and the simulator finds nothing (travel,
-     * chuck, rapids): over a 1 mm stub by the chuck, as they finish parts already roughed. The
+     * chuck, rapids), with no blank (--stock none), as they finish parts already roughed: a blank
+     * given would be where G54 is (work.G54 = face), and these programs are written for the
+     * profile's own work zero. The
      * Galil program, with its source map inline, is as reviewed in NAME.MACHINE.dmc.
      */
     @TestFactory
@@ -92,7 +94,7 @@ class NoseCompensationTest {
         return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             String name = p.getFileName().toString();
             gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, machine(name.split("\\.")[1]),
-                    "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults().withStock(new gcnc.sim.StockSize(10, 1, 1))), true);
+                    "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults().withoutBlank()), true);
             gcnc.Compiler.Result r;
             StringBuilder dmc = new StringBuilder();
             try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {

@@ -193,7 +193,8 @@ class CommandsTest {
         Files.createDirectories(dir.resolve("ops"));
         String clean = Files.readString(Path.of("samples/home.nc"));
         Files.writeString(dir.resolve("A.NC"), clean);
-        Files.writeString(dir.resolve("ops/b.tap"), clean.replace("M30", "G01 X10. F1.\nM30"));
+        // a feed per revolution after M05: the axis cannot feed (E037)
+        Files.writeString(dir.resolve("ops/b.tap"), clean.replace("M30", "G99 G01 X10. F0.1\nM30"));
         Files.writeString(dir.resolve("notes.txt"), "not a program");
         CliTest.Run r = CliTest.gcnc("check", dir.toString());
         assertEquals(1, r.status(), r.err());

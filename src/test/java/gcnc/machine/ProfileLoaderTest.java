@@ -165,6 +165,120 @@ class ProfileLoaderTest {
         assertTrue(load(ProfileLoader.DEFAULT).model().stockHeader());
     }
 
+    @Test
+    void aWorkOffsetOnTheBlanksFaceFollowsTheBlankOfTheRun() throws Exception {
+        MachineProfile p = load(ProfileLoader.DEFAULT);
+        assertEquals(java.util.Set.of(54), p.model().workZero().atFace());
+        assertEquals(new Point(0, 150_000), p.workOffset(54).orElseThrow(), "the profile's blank: 150 mm out");
+        MachineProfile q = p.withStickout(80);
+        assertEquals(new Point(0, 80_000), q.workOffset(54).orElseThrow(), "--stock 44,200,80: the face is 80 mm out");
+        assertEquals(new Point(0, 140_000), q.workOffset(55).orElseThrow(), "G55 is pinned: it stays");
+        assertTrue(q.model().workZero().given());
+        assertFalse(p.model().workZero().given());
+        assertTrue(p == p.withStickout(150), "the profile's own stick-out changes nothing");
+        // 'x, face' keeps an X; thesis-2004 pins its offsets (counts of Table 5.2)
+        assertEquals(new Point(5000, 150_000), loadText(GOOD.replace("work.G54 = face", "work.G54 = 5, face"))
+                .workOffset(54).orElseThrow());
+        assertTrue(load("thesis-2004").model().workZero().atFace().isEmpty());
+        assertEquals(new Point(-20000, -20000), load("thesis-2004").withStickout(10).workOffset(54).orElseThrow());
+        // the face needs the chuck and the profile's blank; a bad X is a fault at its line like any number
+        String noBlank = GOOD.replace("stock.diameter = 44", "#").replace("stock.length = 200", "#")
+                .replace("stock.stickout = 150", "#");
+        assertFault(noBlank, "work.G54", "'work.G54' puts the work zero's Z on the face of the blank (face): that needs the chuck");
+        assertFault(GOOD.replace("work.G54 = face", "work.G54 = ten, face"), "work.G54", "'ten' is not a number");
+        assertFault(GOOD.replace("work.G54 = face", "work.G54 = fac"), "work.G54", "work.G54");
+    }
+
+    @Test
+    void theToolTableDescribesEachStation() throws Exception {
+        MachineProfile p = loadText(GOOD + String.join("\n",
+                "station.2 = turn D 12.7, nose 0.4, tip 3",
+                "station.4 = drill 10, angle 140, reach 60",
+                "station.5 = groove 3, reach 12",
+                "station.6 = part 3",
+                "station.7 = thread 16",
+                "station.8 = bore 16, nose 0.4, tip 2",
+                "station.9 = centre 3.15",
+                "station.10 = tap 10",
+                "station.11 = puller",
+                "station.12 = turn T 9.525, side -x", ""));
+        MachineModel m = p.model();
+        assertEquals(MachineModel.ToolKind.TURN, m.tools().get(2).kind());
+        assertEquals("turn D 12.7", m.tools().get(2).name());
+        assertEquals(MachineModel.ToolKind.DRILL, m.tools().get(4).kind());
+        assertEquals(MachineModel.ToolKind.GROOVE, m.tools().get(5).kind());
+        assertEquals(12, m.tools().get(5).insert().dx()[2], 1e-9, "the blade reaches 12 mm");
+        assertEquals(MachineModel.ToolKind.PART, m.tools().get(6).kind());
+        assertEquals(MachineModel.ToolKind.THREAD, m.tools().get(7).kind());
+        assertEquals(MachineModel.ToolKind.BORE, m.tools().get(8).kind());
+        assertEquals(MachineModel.ToolKind.CENTRE_DRILL, m.tools().get(9).kind());
+        assertEquals(MachineModel.ToolKind.TAP, m.tools().get(10).kind());
+        assertEquals(MachineModel.ToolKind.PULLER, m.tools().get(11).kind());
+        assertEquals(-1, m.tools().get(12).side());
+        assertEquals(1, m.tools().get(2).side());
+        // the nose a station names is its tool offset's (T0202), as nose.2 would give it
+        assertEquals(0.4 * p.x().countsPerMm(), p.nose(2).radius(), 1e-9);
+        assertEquals(3, p.nose(2).tip());
+        assertEquals(2, p.nose(8).tip());
+        assertEquals(0, p.nose(4).radius());
+        assertFalse(m.tools().containsKey(3), "station 3 is not described");
+        assertTrue(m.tools().containsKey(1), "generic describes station 1");
+    }
+
+    @Test
+    void theToolTableMayBeAFileBesideTheProfile() throws Exception {
+        Path dir = Files.createTempDirectory("shop");
+        Path profile = dir.resolve("lathe.machine");
+        Files.writeString(profile, GOOD + "tools.file = turret.tools\n");
+        Files.writeString(dir.resolve("turret.tools"), "# our turret\nstation.4 = drill 10\nstation.7 = tap 10, reach 15\n");
+        MachineProfile p = ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES);
+        assertEquals(MachineModel.ToolKind.DRILL, p.model().tools().get(4).kind());
+        assertEquals(MachineModel.ToolKind.TAP, p.model().tools().get(7).kind());
+        assertTrue(p.model().tools().containsKey(1), "the profile's own station 1 stays");
+        // a fault in the file is at its own line
+        Files.writeString(dir.resolve("turret.tools"), "station.4 = drill 10\nstation.7 = tap ten\n");
+        TableException bad = assertThrows(TableException.class,
+                () -> ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES));
+        assertEquals(2, bad.diagnostic().span().line());
+        assertTrue(bad.getMessage().contains("turret.tools"), bad.getMessage());
+        Files.writeString(dir.resolve("turret.tools"), "station.4 = drill 10\nhome = 0, 0\n");
+        assertTrue(assertThrows(TableException.class,
+                () -> ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES)).english()
+                .contains("a tool table file holds station.<n> lines only (not 'home')"));
+        Files.writeString(dir.resolve("turret.tools"), "station.1 = drill 10\n");
+        assertTrue(assertThrows(TableException.class,
+                () -> ProfileLoader.load(profile.toString(), TableSource.builtIn(), TABLES)).english()
+                .contains("'station.1' is number 1 again"));
+        Files.delete(dir.resolve("turret.tools"));
+        assertFault(GOOD + "tools.file = turret.tools\n", "tools.file", "turret.tools does not exist");
+    }
+
+    @Test
+    void aBadStationIsAFaultAtItsLine() throws Exception {
+        String form = "describes a turret station: a kind and its size";
+        assertFault(GOOD + "station.3 = mill 10\n", "station.3", form + " (turn C 12.7; turn with C D V W T or S;");
+        assertFault(GOOD + "station.3 = turn Q 12.7\n", "station.3", "(not 'turn Q 12.7')");
+        assertFault(GOOD + "station.3 = turn C\n", "station.3", form);
+        assertFault(GOOD + "station.3 = drill -4\n", "station.3", form);
+        assertFault(GOOD + "station.3 = drill ten\n", "station.3", "'ten' is not a number");
+        assertFault(GOOD + "station.3 = drill 10, colour red\n", "station.3", form);
+        assertFault(GOOD + "station.3 = drill 10, reach 0\n", "station.3", form);
+        assertFault(GOOD + "station.3 = turn C 12.7, side left\n", "station.3", form);
+        assertFault(GOOD + "station.3 = turn C 12.7, tip 10\n", "station.3", "a tip direction is a whole number 0 to 9 (not 10) (station.3)");
+        assertFault(GOOD + "station.3 = turn C 12.7, nose 30\n", "station.3", "a nose radius is at least 0 and below 25 mm (not 30)");
+        assertFault(GOOD + "station.3 = drill 10, angle 200\n", "station.3", "a point angle is a drill's: more than 60");
+        assertFault(GOOD + "station.3 = turn C 12.7, angle 90\n", "station.3", "a point angle is a drill's");
+        assertFault(GOOD + "station.0 = drill 10\n", "station.0", "turret stations are numbered from 1 ('station.0')");
+        assertFault(GOOD + "station.3 = drill 10\nstation.03 = tap 10\n", "station.03", "'station.03' is number 3 again");
+        assertFault(GOOD + "station.100 = drill 10\n", "station.100", "the tool table is station.<n> = kind size; options");
+        // one description per station; and one nose per tool offset
+        assertFault(GOOD + "sim.tool.1 = D 12.7\n", "sim.tool.1", "station 1 is described twice: by station.1 and by sim.tool.1");
+        assertFault(GOOD + "station.3 = turn C 12.7, nose 0.8, tip 3\nnose.3 = 0.4, 3\n", "station.3",
+                "the nose of tool offset 3 is given twice: by nose.3 and by station.3");
+        // an outline redraws a station: allowed
+        loadText(GOOD + "sim.tool.1.holder = 0, 20; 10, 20; 10, 40; 0, 40\n");
+    }
+
     // ---- speeds, counts, channels ----
 
     @Test

@@ -189,7 +189,7 @@ class TrustTest {
     @Test
     void withoutABlankTheStockChecksAreSkippedWithANote() throws Exception {
         String noStock = java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/generic.machine"))
-                .replaceAll("(?m)^stock\\.\\w+ = .*$", "");
+                .replaceAll("(?m)^stock\\.\\w+ = .*$", "").replace("work.G54 = face", "work.G54 = 0, 150");
         String p = HEAD + "G00 X46. Z2.\nG00 X40.\nG00 Z-10.\nG00 X46.\nM05\nM30\n";
         assertEquals(List.of("E316@1"), compile(machine(noStock), p));
     }
@@ -262,8 +262,14 @@ class TrustTest {
         assertEquals(fromCheck, compile(program));
     }
 
+    /** The generic machine with one more line; a {@code sim.tool.N} line replaces the station's own tool table line. */
     private static MachineProfile machineWith(String line) throws Exception {
-        return machine(java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/generic.machine")) + line + "\n");
+        String generic = java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/generic.machine"));
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("sim\\.tool\\.([0-9]+) =").matcher(line);
+        if (m.lookingAt()) {
+            generic = generic.replaceAll("(?m)^station\\." + m.group(1) + " =", "# station." + m.group(1) + " =");
+        }
+        return machine(generic + line + "\n");
     }
 
     private static MachineProfile machine(String text) throws Exception {

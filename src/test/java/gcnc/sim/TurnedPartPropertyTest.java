@@ -270,7 +270,7 @@ class TurnedPartPropertyTest {
                     // an insert smaller than the 1 mm depth of cut: the holder ploughs through the stock
                     if (rough > 0 && !m.thesis()) {
                         String text = java.nio.file.Files.readString(java.nio.file.Path.of("tables/machines/" + m.name() + ".machine"))
-                                .replaceAll("(?m)^sim\\.tool\\.1 = .*$", "") + "sim.tool.1 = C 0.5\n";
+                                .replaceAll("(?m)^(sim\\.tool|station)\\.1 = .*$", "") + "sim.tool.1 = C 0.5\n";
                         MachineProfile small = ProfileLoader.read(ProfileFile.parse(m.name() + "-small.machine", text),
                                 TABLES, TableSource.builtIn(), null);
                         List<String> found = run(small, p, program, m.profilePerMm());

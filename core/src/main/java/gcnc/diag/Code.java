@@ -383,6 +383,19 @@ public enum Code {
     E319_SIM_THREAD_UNSYNCHRONISED(319),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
+    /**
+     * Warning, once per station: a station the profile does not describe (no station.N or
+     * sim.tool.N) is checked as the profile's default tool; what is found about its outline rests on
+     * that assumption, and the findings say so.
+     */
+    E321_SIM_STATION_ASSUMED(321),
+    /**
+     * Warning, once per station: a station the profile does not describe, on a profile with no
+     * default tool either: checked at its tip only, the holder and back-of-insert checks skipped.
+     */
+    E322_SIM_STATION_TIP_ONLY(322),
+    /** A drill, centre drill or tap meets material with an edge that does not cut: moved sideways, or a tap into solid material. */
+    E323_SIM_AXIAL_TOOL_SIDEWAYS(323),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
@@ -493,6 +506,27 @@ public enum Code {
     E649_M_FOR_AXIS_NOT_USED(649),
     /** Checker: C-axis motion (a C word after a C-axis M code) is not supported yet. */
     E650_C_AXIS_NOT_SUPPORTED(650),
+    // 660-679: the machine as a shop sets it up (tool table, work zero from the blank).
+    /**
+     * Warning: a feed per minute with the spindle stopped by the program: not a cut unless it meets
+     * stock, which only the simulation knows (compile reports E306 then); check cannot tell.
+     */
+    E660_FEED_SPINDLE_STOPPED_NOT_JUDGED(660),
+    /**
+     * Warning: a feed per minute with the spindle stopped and the chuck open: a bar or stock pull,
+     * not a cut unless it meets stock (compile's simulation: E306, E307).
+     */
+    E661_PULL_NOT_JUDGED(661),
+    /**
+     * Note: the work offsets a shop sets on the blank's face ({@code work.G54 = 0, face}) follow the
+     * blank given for this run ({@code --stock D,L,S}): where they are now.
+     */
+    E662_WORK_ZERO_FROM_BLANK(662),
+    /**
+     * Warning: the blank given for this run has its face elsewhere than the G54 the profile pins:
+     * the program's Z0 is not the face it was written for.
+     */
+    E663_WORK_ZERO_PINNED(663),
     /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
     E680_FOLDED(680),
     /** Note: the cap on warnings and notes was reached; later ones are not kept. */

@@ -242,6 +242,14 @@ public final class Diagnostics {
         report(Diagnostic.error(code, span, args));
     }
 
+    /**
+     * Takes back the warnings and notes {@code which} selects: a later stage settled what they left
+     * open (the simulation judged the feeds check could not, E660/E661). Errors are never taken back.
+     */
+    public void withdraw(java.util.function.Predicate<Diagnostic> which) {
+        all.removeIf(d -> d.severity() != Severity.ERROR && which.test(d));
+    }
+
     /** Forgets every finding (a scratch collection reused block after block). */
     public void clear() {
         if (all.isEmpty() && errors == 0) {

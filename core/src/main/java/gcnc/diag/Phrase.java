@@ -169,7 +169,17 @@ public enum Phrase {
     TOOL_AGAIN,
     TOOL_FROM_LIBRARY,
     POINT_LIST,
-    CONVEX;
+    CONVEX,
+    WORK_AT_FACE,
+    STATION_FORM,
+    STATION_FROM_ONE,
+    STATION_ANGLE,
+    STATION_TWICE,
+    NOSE_TWICE,
+    UNKNOWN_KEY_STATION,
+    TOOL_ASSUMED,
+    TOOLS_FILE_MISSING,
+    TOOLS_FILE_KEYS;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

@@ -23,12 +23,44 @@ import java.util.Optional;
  *                    false for a profile whose frame is not real millimetres (thesis-2004)
  * @param defaultTool outline of a tool that has none of its own
  * @param tools       tool number to its own outline
+ * @param workZero    which work offsets are the face of the blank ({@code work.G54 = 0, face})
  */
 public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tailstock> tailstock,
                            Optional<Blank> stock, boolean stockHeader, ToolOutline defaultTool,
-                           Map<Integer, ToolOutline> tools) {
+                           Map<Integer, ToolOutline> tools, WorkZero workZero) {
     public MachineModel {
         tools = Map.copyOf(tools);
+    }
+
+    /**
+     * The work offsets whose Z is the face of the blank, as a shop sets G54 by touching the face
+     * ({@code work.G54 = 0, face}): at {@code chuck.face_z} + the stick-out, the profile's
+     * {@code stock.stickout} until a run gives its own blank ({@code --stock D,L,S}).
+     *
+     * @param atFace   G numbers (54..59) whose Z follows the blank's face; empty: every offset is pinned
+     * @param stickout the stick-out the face is at, mm from the jaws' face
+     * @param given    the stick-out is the run's blank's, not the profile's (a note says so, E662)
+     */
+    public record WorkZero(java.util.Set<Integer> atFace, double stickout, boolean given) {
+        public WorkZero {
+            atFace = java.util.Set.copyOf(atFace);
+        }
+    }
+
+    /** The same model with the face of the blank {@code stickout} mm in front of the jaws, given for a run. */
+    public MachineModel withStickout(double stickout) {
+        return new MachineModel(centreX, chuck, tailstock, stock, stockHeader, defaultTool, tools,
+                new WorkZero(workZero.atFace(), stickout, true));
+    }
+
+    /** The value of a work offset's Z that puts it on the blank's face: {@code work.G54 = 0, face}. */
+    public static final String FACE = "face";
+
+    /** {@code face} (X 0) or {@code x, face}: a work offset whose Z is the blank's face. */
+    static boolean atFace(String value) {
+        String[] xz = value.split(",", -1);
+        return xz.length == 1 && xz[0].trim().equalsIgnoreCase(FACE)
+                || xz.length == 2 && xz[1].trim().equalsIgnoreCase(FACE);
     }
 
     /** The jaws (from {@code faceZ - jawLength} to {@code faceZ}) and the body behind them. */
@@ -51,29 +83,81 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
     public record Outline(double[] dz, double[] dx) {
     }
 
+    /** What a tool is, as far as the simulator's checks go. */
+    public enum ToolKind {
+        TURN, THREAD, GROOVE, PART, BORE,
+        /** Drills, centre drills and taps work on the centreline along Z: their sides do not cut (E323). */
+        DRILL, CENTRE_DRILL, TAP,
+        /**
+         * A bar puller (or stock stop): it grips or touches the bar and cuts nothing, so its moves
+         * neither take stock nor count as cuts (a pull with the spindle stopped and the chuck open
+         * is clean); the chuck and tailstock are still checked against its tip.
+         */
+        PULLER,
+        /** An outline given point by point ({@code sim.tool.<n>.insert}): its back is not known. */
+        OUTLINE,
+        /** No outline at all: a point at the programmed tip (a profile with no tools). */
+        TIP;
+
+        public boolean axial() {
+            return this == DRILL || this == CENTRE_DRILL || this == TAP;
+        }
+    }
+
     /**
      * A tool's insert and holder; {@code holder} is null when there is none (the tip-only default).
      * {@code back} lists the insert's edges that do not cut (edge i runs from corner i to corner
-     * i + 1): the simulator reports material that such an edge meets first (E320). The library
+     * i + 1): the simulator reports material that such an edge meets first (E320, E323). The library
      * knows its shapes' backs; an outline given point by point has none, as its back is not known.
+     *
+     * @param kind what the tool is
+     * @param name how the profile names it, for messages ({@code C 12.7}, {@code drill 10})
+     * @param side 1: the tool works on the +X side of the spindle centreline (a turret); -1: on the
+     *             -X side, as a gang lathe carries its tools (the outline is mirrored through the axis)
      */
-    public record ToolOutline(Outline insert, Outline holder, int[] back) {
+    public record ToolOutline(Outline insert, Outline holder, int[] back, ToolKind kind, String name, int side) {
         public ToolOutline(Outline insert, Outline holder) {
-            this(insert, holder, new int[0]);
+            this(insert, holder, new int[0], ToolKind.OUTLINE, "outline", 1);
+        }
+
+        /** The same tool on the other side of the centreline ({@code side -x}) or under another name. */
+        ToolOutline with(String newName, int newSide) {
+            return new ToolOutline(insert, holder, back, kind, newName, newSide);
         }
     }
 
     private static final String[] CHUCK = {"chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter"};
     private static final String[] TAILSTOCK = {"tailstock.centre_z", "tailstock.quill_diameter"};
     private static final String[] STOCK = {"stock.diameter", "stock.length", "stock.stickout"};
-    private static final ToolOutline TIP_ONLY = new ToolOutline(new Outline(new double[] {0}, new double[] {0}), null);
+    private static final ToolOutline TIP_ONLY = new ToolOutline(new Outline(new double[] {0}, new double[] {0}), null,
+            new int[0], ToolKind.TIP, "tip", 1);
 
     /** Reads and checks the simulator's keys of a profile whose other keys ProfileLoader has read. */
     static MachineModel read(ProfileFile f) throws TableException {
         Optional<Chuck> chuck = chuck(f);
         ToolOutline def = toolOutline(f, "sim.tool.default", TIP_ONLY);
-        return new MachineModel(f.number("sim.centre_x", 0), chuck, tailstock(f, chuck), stock(f, chuck),
-                f.choice("stock.header", "use", "use", "ignore").equals("use"), def, tools(f, def));
+        Optional<Blank> stock = stock(f, chuck);
+        return new MachineModel(f.number("sim.centre_x", 0), chuck, tailstock(f, chuck), stock,
+                f.choice("stock.header", "use", "use", "ignore").equals("use"), def, tools(f, def),
+                workZero(f, chuck, stock));
+    }
+
+    /**
+     * The work offsets given as {@code x, face}: their Z is the blank's face, which needs the chuck
+     * (the face is measured from its jaws) and the profile's blank (its stick-out until a run gives one).
+     */
+    private static WorkZero workZero(ProfileFile f, Optional<Chuck> chuck, Optional<Blank> stock)
+            throws TableException {
+        java.util.Set<Integer> atFace = new java.util.TreeSet<>();
+        for (ProfileFile.Entry e : f.withPrefix("work.")) {
+            if (atFace(e.value())) {
+                if (chuck.isEmpty() || stock.isEmpty()) {
+                    throw f.fault(e, Phrase.WORK_AT_FACE.with(e.key()));
+                }
+                atFace.add(Integer.parseInt(e.key().substring("work.G".length())));
+            }
+        }
+        return new WorkZero(atFace, stock.map(Blank::stickout).orElse(0.0), false);
     }
 
     /**
@@ -148,9 +232,14 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         return first != null;
     }
 
-    /** Per-tool outlines; a tool that gives only an insert or a holder takes the other from the default. */
+    /**
+     * Per-station outlines: the tool table's ({@code station.N}, {@link ToolTable}) or the library
+     * name's ({@code sim.tool.N}), not both; {@code sim.tool.N.insert}/{@code .holder} redraw either,
+     * and a station that gives only an insert or a holder takes the other from the default.
+     */
     private static Map<Integer, ToolOutline> tools(ProfileFile f, ToolOutline def) throws TableException {
         Map<Integer, ToolOutline> tools = new HashMap<>();
+        Map<Integer, ToolTable.Station> stations = ToolTable.read(f);
         Map<Integer, String> ids = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("sim.tool.")) {
             String id = e.key().split("\\.")[2]; // ProfileKeys checked the form: sim.tool.<id>[.insert|.holder]
@@ -162,7 +251,15 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
             if (before != null && !before.equals(id)) {
                 throw f.faultAtKey(e, Phrase.TOOL_AGAIN.with(e.key(), n, before));
             }
-            tools.put(n, toolOutline(f, "sim.tool." + id, def));
+            ToolTable.Station station = stations.get(n);
+            Optional<ProfileFile.Entry> named = f.entry("sim.tool." + id);
+            if (station != null && named.isPresent()) {
+                throw f.faultAtKey(named.get(), Phrase.STATION_TWICE.with(n, station.entry().key(), named.get().key()));
+            }
+            tools.put(n, toolOutline(f, "sim.tool." + id, station != null ? station.outline() : def));
+        }
+        for (ToolTable.Station s : stations.values()) {
+            tools.putIfAbsent(s.number(), s.outline());
         }
         return tools;
     }
@@ -177,9 +274,14 @@ public record MachineModel(double centreX, Optional<Chuck> chuck, Optional<Tails
         }
         Optional<ProfileFile.Entry> insert = f.entry(prefix + ".insert");
         Optional<ProfileFile.Entry> holder = f.entry(prefix + ".holder");
+        if (insert.isEmpty() && holder.isEmpty()) {
+            return otherwise;
+        }
         return new ToolOutline(insert.isPresent() ? outline(f, insert.get()) : otherwise.insert(),
                 holder.isPresent() ? outline(f, holder.get()) : otherwise.holder(),
-                insert.isPresent() ? new int[0] : otherwise.back());
+                insert.isPresent() ? new int[0] : otherwise.back(),
+                insert.isPresent() ? ToolKind.OUTLINE : otherwise.kind(),
+                insert.isPresent() ? "outline" : otherwise.name(), otherwise.side());
     }
 
     /** "dz, dx; dz, dx; ..." in mm from the tip, convex (the simulator's collision test needs it). */

@@ -98,6 +98,27 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
         return Optional.ofNullable(toolOffsets.get(n));
     }
 
+    /**
+     * The same machine with the blank given for a run sticking out {@code mm} from the jaws: the
+     * work offsets a shop sets on the blank's face ({@code work.G54 = 0, face}) follow it; pinned
+     * ones stay. Unchanged when the stick-out is the profile's or no offset is on the face.
+     */
+    public MachineProfile withStickout(double mm) {
+        MachineModel.WorkZero w = model.workZero();
+        if (w.atFace().isEmpty() || model.chuck().isEmpty() || mm == w.stickout()) {
+            return this;
+        }
+        Map<Integer, Point> work = new java.util.HashMap<>(workOffsets);
+        double faceZ = (model.chuck().get().faceZ() + mm) * z.countsPerMm();
+        for (int g : w.atFace()) {
+            work.put(g, new Point(work.get(g).x(), faceZ));
+        }
+        return new MachineProfile(name, galilModel, x, z, diameterX, noPointMm, noPointInch, home, rapidSpeed,
+                maxFeed, acceleration, deceleration, maxRpm, rpmPerVolt, spindleAxis, rearToolPost, work,
+                toolOffsets, tools, outputs, feedPerF, file, control, units, machineZero, chuckByProgram,
+                model.withStickout(mm), spindleEncoder, noses, threadChamfer);
+    }
+
     public List<String> outputsFor(int m) {
         return outputs.getOrDefault(m, List.of());
     }

@@ -21,7 +21,7 @@ final class ProfileKeys {
             "x.counts_per_inch", "z.counts_per_inch", "x.travel", "z.travel", "x.programming",
             "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",
             "spindle.max_rpm", "spindle.rpm_per_volt", "spindle.axis", "spindle.encoder", "spindle.encoder_axis", "tool_post", "offsets.unit",
-            "tools.table", "tools.offsets", "tools.count", "feed.per_f", "thread.chamfer_leads",
+            "tools.table", "tools.offsets", "tools.count", "tools.file", "feed.per_f", "thread.chamfer_leads",
             "thread.chamfer_angle", "reference.2", "reference.3", "reference.4",
             // the simulator's machine model
             "sim.centre_x", "chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter",
@@ -46,7 +46,9 @@ final class ProfileKeys {
             new Family("nose.", "nose\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_NOSE),
             new Family("m.", "m\\.[0-9]{1,3}", Phrase.UNKNOWN_KEY_M),
             new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
-                    Phrase.UNKNOWN_KEY_SIM_TOOL));
+                    Phrase.UNKNOWN_KEY_SIM_TOOL),
+            // the shop's tool table: one line per turret station (ToolTable)
+            new Family("station.", "station\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_STATION));
 
     private ProfileKeys() {
     }

@@ -63,8 +63,8 @@ public final class ProfileLoader {
         return read(f, data, tables, control);
     }
 
-    /** A profile given as a path, decoded as the tables are ({@link Utf8}). */
-    private static String readFile(Path p) throws TableException {
+    /** A profile (or the tool table file it names) given as a path, decoded as the tables are ({@link Utf8}). */
+    static String readFile(Path p) throws TableException {
         try {
             return Utf8.read(p.toString(), p);
         } catch (NoSuchFileException e) {
@@ -111,6 +111,7 @@ public final class ProfileLoader {
         }
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
         lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
+        MachineModel model = MachineModel.read(f);
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
@@ -120,8 +121,8 @@ public final class ProfileLoader {
                 register(f, "vector.deceleration", 256000, Phrase.REGISTER_DECELERATION),
                 f.within("spindle.max_rpm", 1, MAX_RPM), f.within("spindle.rpm_per_volt", 1, MAX_RPM), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
-                workOffsets(f, counts, x, z), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
-                machineZero, chuckByProgram, MachineModel.read(f), encoder(f, x, z),
+                workOffsets(f, counts, x, z, model), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
+                machineZero, chuckByProgram, model, encoder(f, x, z),
                 noses(f, counts, x), threadChamfer(f));
     }
 
@@ -293,11 +294,24 @@ public final class ProfileLoader {
         return f.entry(key).isPresent() ? register(f, key, what) : otherwise;
     }
 
-    private static Map<Integer, Point> workOffsets(ProfileFile f, boolean counts, Axis x, Axis z) throws TableException {
+    /**
+     * {@code work.G54 = x, z}, or {@code x, face} ({@code face} alone: X 0): Z on the face of the blank (chuck.face_z + the
+     * stick-out, in mm whatever offsets.unit says), which a run's own blank moves
+     * ({@link MachineProfile#withStickout}); {@link MachineModel#workZero} checked it has a chuck and a blank.
+     */
+    private static Map<Integer, Point> workOffsets(ProfileFile f, boolean counts, Axis x, Axis z, MachineModel model)
+            throws TableException {
         Map<Integer, Point> work = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("work.")) {
             int g = Integer.parseInt(e.key().substring("work.G".length())); // ProfileKeys: work.G54 .. work.G59
-            work.put(g, offset(f, e, counts, x, z));
+            if (model.workZero().atFace().contains(g)) {
+                String[] xz = e.value().split(",", -1);
+                double xValue = xz.length == 1 ? 0 : f.number(e, xz[0]);
+                double faceMm = model.chuck().orElseThrow().faceZ() + model.workZero().stickout();
+                work.put(g, new Point(counts ? xValue : xValue * x.countsPerMm(), faceMm * z.countsPerMm()));
+            } else {
+                work.put(g, offset(f, e, counts, x, z));
+            }
         }
         for (int g = 54; g <= 59; g++) {
             work.putIfAbsent(g, Point.ORIGIN);
@@ -354,6 +368,18 @@ public final class ProfileLoader {
                 throw f.fault(e, Phrase.TIP_DIRECTION.with(written(v[1]), e.key()));
             }
             noses.put(n, new Nose(mm * x.countsPerMm(), (int) v[1]));
+        }
+        // a station of the tool table that names its nose gives it to the offset of its number (T0303)
+        for (ToolTable.Station s : ToolTable.read(f).values()) {
+            if (!s.hasNose()) {
+                continue;
+            }
+            if (seen.containsKey(s.number())) {
+                throw f.faultAtKey(s.entry(), Phrase.NOSE_TWICE.with(s.number()));
+            }
+            double radius = Double.isNaN(s.noseRadius()) ? 0 : s.noseRadius();
+            double mm = counts ? radius / x.countsPerMm() : radius;
+            noses.put(s.number(), new Nose(mm * x.countsPerMm(), Math.max(0, s.tip())));
         }
         return noses;
     }

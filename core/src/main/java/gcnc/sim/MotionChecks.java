@@ -3,6 +3,7 @@ package gcnc.sim;
 import gcnc.diag.Code;
 import gcnc.ir.ArcGeometry;
 import gcnc.ir.Motion;
+import gcnc.machine.MachineModel;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
 import java.util.List;
@@ -33,8 +34,10 @@ final class MotionChecks {
     /** How far each part reaches from the tip, mm: {dr-, dz-, dz+} of the insert and of the holder. */
     private double[] insertReach;
     private double[] holderReach;
-    /** The insert's edges that do not cut (E320). */
+    /** The insert's edges that do not cut (E320, E323 for a drill, centre drill or tap). */
     private BackEdges back = BackEdges.NONE;
+    /** The side of the centreline the tool works on: 1 (+X) or -1 (-X, a gang lathe's tools). */
+    private int side = 1;
     private final PathRecorder path;
     private final Conformance conformance;
     private int tool;
@@ -88,6 +91,7 @@ final class MotionChecks {
         insertReach = insertMm == null ? null : partReach(insertMm);
         holderReach = holderMm == null ? null : partReach(holderMm);
         back = insertMm == null ? BackEdges.NONE : BackEdges.of(insertMm, toolShape.back());
+        side = toolShape == null ? 1 : toolShape.side();
     }
 
     private static double[] partReach(double[][] outline) {
@@ -136,13 +140,26 @@ final class MotionChecks {
         if (obstacle == null) {
             return false;
         }
-        double c = machine.centreX();
-        return seg[0] - c + reach[0] < obstacle[1] + tol && seg[1] - c + reach[1] > obstacle[0] - tol
+        double rLo = radius(seg[0], seg[1]);
+        double rHi = side > 0 ? seg[1] - centre() : centre() - seg[0];
+        return rLo + reach[0] < obstacle[1] + tol && rHi + reach[1] > obstacle[0] - tol
                 && seg[2] + reach[2] < obstacle[3] + tol && seg[3] + reach[3] > obstacle[2] - tol;
     }
 
     int tool() {
         return tool;
+    }
+
+    /**
+     * The tool as a finding names it: its number, and when the profile does not describe its
+     * station, that the finding rests on the default outline ({@code 3 (assumed: the default C 12.7;
+     * station 3 is not described)}), in the user's language.
+     */
+    private String toolName() {
+        if (tool == 0 || machine.described(tool)) {
+            return String.valueOf(tool);
+        }
+        return gcnc.diag.Phrase.TOOL_ASSUMED.with(tool, machine.defaultTool().name());
     }
 
     /** The program coordinates of the block being replayed (null for a bare DMC replay). */
@@ -170,7 +187,20 @@ final class MotionChecks {
     private boolean holderHit;
     private boolean backHit;
 
-    void sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec) {
+    /** Whether the sequence being replayed really took material away (asked for with {@code judgeCut}). */
+    private boolean judgeCut;
+    private boolean removed;
+
+    /**
+     * Replays one sequence. With {@code judgeCut} the stock is asked exactly whether the move takes
+     * more than {@link Stock#DEPTH} of material (a feed with the spindle stopped or the chuck open:
+     * a bar puller's pull in the air is no cut, E306/E307 are for a real one); returns that answer,
+     * false without {@code judgeCut}.
+     */
+    boolean sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec,
+                     boolean judgeCut) {
+        this.judgeCut = judgeCut;
+        removed = false;
         sequences++;
         segments += segs.size();
         double length = 0;
@@ -189,10 +219,12 @@ final class MotionChecks {
                     profile.x().countsPerMm());
             travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
-            double rMin = box[0] - centre();
+            double rMin = radius(box[0], box[1]);
             boolean nearChuck = near(chuckBox, box);
             boolean nearTail = near(tailBox, box);
-            boolean nearStock = stock != null && insertMm != null && stock.mayTouch((box[2] + reach[2]) / kz,
+            // a bar puller grips the bar: it neither cuts nor crashes into it
+            boolean nearStock = stock != null && insertMm != null && toolShape.kind() != MachineModel.ToolKind.PULLER
+                    && stock.mayTouch((box[2] + reach[2]) / kz,
                     (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
             if (poly != null || nearChuck || nearTail || nearStock) {
                 closeUp(s, rapid, line, poly, nearChuck, nearTail, nearStock);
@@ -202,7 +234,7 @@ final class MotionChecks {
         if (poly != null) {
             path.move(rapid, poly, line);
             path.frame(frame, rapid);
-        }
+        }        return removed;
     }
 
     /**
@@ -230,15 +262,15 @@ final class MotionChecks {
             if (poly != null) {
                 poly.add(b);
             }
-            double ar = a[0] - machine.centreX();
-            double br = b[0] - machine.centreX();
+            double ar = side * (a[0] - machine.centreX());
+            double br = side * (b[0] - machine.centreX());
             if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
                 chuckHit = true;
-                mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tool);
+                mark(Code.E303_SIM_CHUCK_COLLISION, line, b, toolName());
             }
             if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
                 tailHit = true;
-                mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tool);
+                mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, toolName());
             }
             if (nearStock) {
                 stockPiece(a[1], ar, b[1], br, cuts, holders, backs);
@@ -249,7 +281,8 @@ final class MotionChecks {
             double[] at = BackEdges.met(stock, backs, cuts);
             if (at != null) {
                 backHit = true;
-                mark(Code.E320_SIM_BACK_OF_INSERT, line, machinePoint(at), tool);
+                mark(toolShape.kind().axial() ? Code.E323_SIM_AXIAL_TOOL_SIDEWAYS : Code.E320_SIM_BACK_OF_INSERT, line,
+                        machinePoint(at), toolName());
             }
         }
         boolean touched = (!cuts.isEmpty() || !holders.isEmpty()) && stockMove(cuts, holders, rapid, line);
@@ -336,8 +369,9 @@ final class MotionChecks {
      * material at all (a rapid or holder that only came near did not: the segment is quiet).
      */
     private boolean stockMove(List<Stock.Sweep> cuts, List<Stock.Sweep> holders, boolean rapid, int line) {
-        if (rapid) {
+        if (rapid || judgeCut) {
             cuts = stock.biting(cuts);
+            removed |= !rapid && !cuts.isEmpty();
         }
         holders = stock.biting(holders);
         if (cuts.isEmpty() && holders.isEmpty()) {
@@ -359,7 +393,7 @@ final class MotionChecks {
             double[] at = stock.deepOverlap(holders);
             if (at != null) {
                 holderHit = crashed = true;
-                mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tool);
+                mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), toolName());
             }
         }
         if (crashed) {
@@ -383,7 +417,7 @@ final class MotionChecks {
 
     /** A point {z, r} of the stock's frame (mm) as machine counts {x, z}. */
     private double[] machinePoint(double[] zr) {
-        return new double[] {zr[1] * kx + centre(), zr[0] * kz};
+        return new double[] {side * zr[1] * kx + centre(), zr[0] * kz};
     }
 
     /** See {@link Conformance#check}. */
@@ -393,6 +427,15 @@ final class MotionChecks {
 
     private double centre() {
         return machine.centreX();
+    }
+
+    /**
+     * The smallest radius (counts from the centreline, on the tool's side) of a tip anywhere from
+     * machine X {@code xLo} to {@code xHi}: a tool on the -X side (a gang lathe's) sees the part
+     * mirrored through the axis, so the half-section and the tool's outline stay as they are.
+     */
+    private double radius(double xLo, double xHi) {
+        return side > 0 ? xLo - centre() : centre() - xHi;
     }
 
     private boolean hits(Shape[] obstacles, double az, double ar, double bz, double br) {

@@ -25,9 +25,10 @@ public record SimMachine(double centreX, Shape[] chuck, double chuckFace, Shape[
 
     /**
      * A tool's outline relative to its tip: insert and holder, each convex, and the insert's edges
-     * that do not cut ({@link MachineModel.ToolOutline#back}).
+     * that do not cut ({@link MachineModel.ToolOutline#back}); what it is, its name in the profile,
+     * and the side of the centreline it works on (1 = +X, -1 = -X, a gang lathe's).
      */
-    public record ToolShape(Shape insert, Shape holder, int[] back) {
+    public record ToolShape(Shape insert, Shape holder, int[] back, MachineModel.ToolKind kind, String name, int side) {
         Shape[] parts() {
             return holder == null ? new Shape[] {insert} : new Shape[] {insert, holder};
         }
@@ -35,6 +36,11 @@ public record SimMachine(double centreX, Shape[] chuck, double chuckFace, Shape[
 
     public ToolShape tool(int n) {
         return tools.getOrDefault(n, defaultTool);
+    }
+
+    /** Whether the profile describes station {@code n} (station.N, sim.tool.N): else it is checked as the default. */
+    public boolean described(int n) {
+        return tools.containsKey(n);
     }
 
     /**
@@ -89,7 +95,8 @@ public record SimMachine(double centreX, Shape[] chuck, double chuckFace, Shape[
         }
 
         ToolShape tool(MachineModel.ToolOutline t) {
-            return new ToolShape(shape(t.insert()), t.holder() == null ? null : shape(t.holder()), t.back());
+            return new ToolShape(shape(t.insert()), t.holder() == null ? null : shape(t.holder()), t.back(), t.kind(),
+                    t.name(), t.side());
         }
 
         private Shape shape(MachineModel.Outline o) {

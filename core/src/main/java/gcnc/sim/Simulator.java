@@ -26,6 +26,9 @@ public final class Simulator {
     private final DmcInterpreter dmc;
     private final OutputState outputs;
     private final MotionChecks checks;
+    private final SimMachine machine;
+    /** The stations already warned of as not described (E321/E322): once per station, not per tool change. */
+    private final java.util.Set<Integer> undescribed = new java.util.HashSet<>();
     private final Trace trace;
     private final List<Motion> motions = new ArrayList<>();
     private List<Motion> expected = List.of();
@@ -44,7 +47,8 @@ public final class Simulator {
         this.diagnostics = diagnostics;
         this.plane = new Plane(profile);
         this.outputs = new OutputState(profile);
-        this.checks = new MotionChecks(profile, SimMachine.read(profile), options, this::report);
+        this.machine = SimMachine.read(profile);
+        this.checks = new MotionChecks(profile, machine, options, this::report);
         if (!checks.hasStock()) {
             // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
             diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
@@ -231,13 +235,20 @@ public final class Simulator {
             }
             boolean rapid = m == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
-            if (!rapid && outputs.spindleKnown && !outputs.running) {
+            boolean stopped = !rapid && outputs.spindleKnown && !outputs.running;
+            boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
+            boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
+                    stopped || open);
+            // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
+            // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
+            // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
+            boolean cut = checks.hasStock() ? removed : expected == null;
+            if (stopped && cut) {
                 report(Code.E306_SIM_FEED_SPINDLE_STOPPED, line, outputs.describe());
             }
-            if (!rapid && outputs.chuckKnown && !outputs.closed) {
+            if (open && cut) {
                 report(Code.E307_SIM_FEED_CHUCK_OPEN, line, outputs.describe());
             }
-            checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration);
             if (m != null) {
                 double[] resync = checks.conformance(m, segments, line);
                 if (resync != null) {
@@ -254,6 +265,13 @@ public final class Simulator {
         @Override
         public void tool(int n, int line) {
             checks.selectTool(n);
+            if (n != 0 && !machine.described(n) && undescribed.add(n)) {
+                // never silently the default outline: say which station, and what its checks rest on
+                boolean tipOnly = machine.defaultTool().kind() == gcnc.machine.MachineModel.ToolKind.TIP;
+                diagnostics.report(Diagnostic.warning(tipOnly ? Code.E322_SIM_STATION_TIP_ONLY
+                        : Code.E321_SIM_STATION_ASSUMED, Span.of(Math.max(1, line), 1), n, profile.name(),
+                        machine.defaultTool().name()).in(origin));
+            }
         }
 
         @Override
