@@ -55,9 +55,7 @@ final class PostStyleGenerator {
      * implementing (docs/language.md, "What is not supported yet"). Never written by default;
      * PostStyleTest checks that each still has an error, like the PENDING ones.
      */
-    static final Set<Construct> NOT_SUPPORTED = EnumSet.of(Construct.FANUC_THREAD_CHAMFER,
-            Construct.THREAD_ANGLE_WITH_POINT, Construct.THREAD_ALTERNATE_FLANKS, Construct.THREAD_START_ANGLE,
-            Construct.WCS_EXTENDED);
+    static final Set<Construct> NOT_SUPPORTED = EnumSet.of(Construct.THREAD_START_ANGLE, Construct.WCS_EXTENDED);
 
     /**
      * Constructs that check clean but do not simulate clean yet: the machine profiles have no
@@ -236,6 +234,15 @@ final class PostStyleGenerator {
 
     boolean wants(Construct c) {
         return want(c);
+    }
+
+    /** Whether to write {@code c} where its post always does: whenever it is allowed or forced (not at random). */
+    boolean always(Construct c) {
+        boolean yes = c.on(post) && (forced.contains(c) || allowed.contains(c));
+        if (yes) {
+            used.add(c);
+        }
+        return yes;
     }
 
     void contourAt(int first, int last) {

@@ -53,6 +53,12 @@ final class Threading {
     private int angle = 60;
     private double minimum;
     private double allowance;
+    /**
+     * The Fanuc thread chamfer rr of the first block G76 P(mmrraa), in tenths of a lead
+     * (parameter 5130, which that block sets): every G76 pass on a control without Haas's M23
+     * ends with it ({@link PullOut#fanuc}). None before a first block gives one.
+     */
+    private int runOut;
 
     /**
      * Haas M23 in force: each pass of a G76 or G92 ends with the profile's chamfered pull-out
@@ -371,6 +377,11 @@ final class Threading {
         return chamfer && host.profile().threadChamfer().cuts();
     }
 
+    /** Whether the control has Haas's M23/M24 (its chamfer, not the Fanuc rr, ends a G76 pass). */
+    private boolean m23() {
+        return host.profile().control().allM().stream().anyMatch(f -> f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON);
+    }
+
     /** G76: the Fanuc first block sets what stays in force; the second block, or the Haas one block, cuts. */
     private void multiple(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label) {
         boolean x = words.containsKey(Letter.X) || words.containsKey(Letter.U);
@@ -424,6 +435,7 @@ final class Threading {
             return;
         }
         int angle = this.angle;
+        boolean bothFlanks = false; // Haas P2/P4
         ThreadPasses.Infeed infeed = ThreadPasses.Infeed.CONSTANT_AREA;
         int finishing = this.finishes;
         double min = this.minimum;
@@ -435,7 +447,7 @@ final class Threading {
             angle = 60;
             if (words.containsKey(Letter.A)) {
                 Word a = words.get(Letter.A);
-                long v = NumberText.integer(a.number());
+                long v = ThreadWords.degrees(a.number());
                 if (v == NumberText.NOT_INTEGER || v > 120) {
                     host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, Phrase.THREAD_ANGLE_RANGE.arg());
                     return;
@@ -445,12 +457,13 @@ final class Threading {
             if (words.containsKey(Letter.P)) {
                 Word p = words.get(Letter.P);
                 long v = NumberText.integer(p.number());
-                if (v != 1 && v != 3) {
+                if (v < 1 || v > 4) {
                     host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
                             Phrase.THREAD_INFEED.arg());
                     return;
                 }
-                infeed = v == 3 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
+                infeed = v == 3 || v == 4 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
+                bothFlanks = v == 2 || v == 4;
             }
         }
         if (allow >= height) {
@@ -500,8 +513,10 @@ final class Threading {
         for (int i = 0; i < depths.length; i++) {
             double depth = depths[i];
             double xEnd = top - side * depth * perRadius;
-            // flank infeed: the pass moves back along Z by depth x tan(angle / 2), so one flank cuts
-            double shift = -dir * depth * flank * perZ;
+            // flank infeed: the pass moves back along Z by depth x tan(angle / 2), so one flank cuts;
+            // both flanks in turn (Haas P2/P4): ThreadWords.alternate
+            double shift = bothFlanks ? -dir * ThreadWords.alternate(i, height, depth, flank) * perZ
+                    : -dir * depth * flank * perZ;
             int pass = i + 1;
             moves.add(Move.line(true, new Point(xEnd + t, a.z() + shift), pass));
             moves.add(Move.line(false, new Point(xEnd, root.z() + shift), pass));
@@ -509,7 +524,8 @@ final class Threading {
             moves.add(Move.line(true, a, pass));
         }
         int passes = depths.length;
-        PullOut pullOut = pullsOut() ? new PullOut(host.profile().threadChamfer(), (int) side) : null;
+        PullOut pullOut = pullsOut() ? new PullOut(host.profile().threadChamfer(), (int) side)
+                : m23() ? null : PullOut.fanuc(runOut, host.profile().threadChamfer(), (int) side);
         write(done, b.line(), g.span(), s, moves, lead, label,
                 i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut);
     }
@@ -523,6 +539,7 @@ final class Threading {
             }
         }
         int m = finishes;
+        int rr = runOut;
         int aa = angle;
         double q = minimum;
         double r = allowance;
@@ -535,16 +552,11 @@ final class Threading {
                 return;
             }
             m = (int) (v / 10000);
-            int rr = (int) (v / 100 % 100);
+            rr = (int) (v / 100 % 100);
             aa = (int) (v % 100);
             if (m < 1) {
                 host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
                         Phrase.THREAD_FINISH_PASSES.arg());
-                return;
-            }
-            if (rr != 0) {
-                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                        Phrase.THREAD_CHAMFER.with(rr));
                 return;
             }
             if (!FANUC_ANGLES.contains(aa)) {
@@ -571,6 +583,7 @@ final class Threading {
             }
         }
         finishes = m;
+        runOut = rr;
         angle = aa;
         minimum = q;
         allowance = r;
