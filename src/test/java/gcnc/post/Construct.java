@@ -78,9 +78,9 @@ enum Construct {
     THREAD_ANGLE_WITH_POINT,
     /** haas onCyclePoint: G76 P2, both flanks in turn (infeedMode "alternate"). */
     THREAD_ALTERNATE_FLANKS,
-    // --- constructs the posts write that gcnc rejects today and no helper of issue 17 implements
-    /** Multi-start threads: G76/G92 Q start angle (haas; fanuc G92) (E161/E108 today). */
+    /** Multi-start threads: G76/G92 Q start angle (haas; fanuc G92, fanuc B G78). */
     THREAD_START_ANGLE,
+    // --- constructs the posts write that gcnc rejects today and no helper of issue 17 implements
     /** wcsDefinitions "Extended": haas G154 P1, fanuc G54.1 P1 (E110/E013 today). */
     WCS_EXTENDED;
 

@@ -55,7 +55,7 @@ final class PostStyleGenerator {
      * implementing (docs/language.md, "What is not supported yet"). Never written by default;
      * PostStyleTest checks that each still has an error, like the PENDING ones.
      */
-    static final Set<Construct> NOT_SUPPORTED = EnumSet.of(Construct.THREAD_START_ANGLE, Construct.WCS_EXTENDED);
+    static final Set<Construct> NOT_SUPPORTED = EnumSet.of(Construct.WCS_EXTENDED);
 
     /**
      * Constructs that check clean but do not simulate clean yet: the machine profiles have no

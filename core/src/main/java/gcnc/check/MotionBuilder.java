@@ -214,11 +214,11 @@ final class MotionBuilder {
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
         Feed feed = new Feed(lead, zSpeed * path / dz);
         if (d.pullOut == null) {
-            return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, feed, null);
+            return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, feed, null, d.startAngle);
         }
         Point[] chamfer = pullOut(d, from, end, lead, rpm, at, out);
         return chamfer == null ? null
-                : new Motion.Thread(from, chamfer[1], leadCounts, rpm, spindle == 4, feed, chamfer[0]);
+                : new Motion.Thread(from, chamfer[1], leadCounts, rpm, spindle == 4, feed, chamfer[0], d.startAngle);
     }
 
     /**

@@ -30,6 +30,19 @@ final class ThreadWords {
     }
 
     /**
+     * The degrees of a start angle Q (G92 and the Haas one-block G76; Fanuc G92 "Q: shift angle of
+     * the threading start", Haas "Q: thread start angle, do not use a decimal point"): a whole number
+     * of thousandths of a degree, 0 to 360000 (360000 is a whole turn: 0); NaN for anything else.
+     */
+    static double startAngle(String number) {
+        long v = NumberText.hasPoint(number) ? NumberText.NOT_INTEGER : NumberText.integer(number);
+        if (v == NumberText.NOT_INTEGER || v < 0 || v > 360000) {
+            return Double.NaN;
+        }
+        return v % 360000 / 1000.0;
+    }
+
+    /**
      * How far back along Z (away from the cut's direction, program units, radius depths as the
      * cycle's) pass {@code index} (0 first) of a Haas G76 P2/P4 starts and ends: both flanks in
      * turn. The finished form is the one-flank infeed's (its apex {@code height · tan(angle / 2)}

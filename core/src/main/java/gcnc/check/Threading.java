@@ -48,6 +48,8 @@ final class Threading {
     /** G92 in force: its end point (counts), taper (radius counts) and lead (as written). */
     private Point end;
     private double taper;
+    /** The G92 in force's start angle, degrees (Q; a later block without Q keeps it, as the end and taper). */
+    private double startAngle;
     /** What the Fanuc first block G76 P Q R left in force: finishing passes, angle, minimum depth and allowance (program units). */
     private int finishes = 1;
     private int angle = 60;
@@ -212,7 +214,7 @@ final class Threading {
         return switch (role) {
             case THREAD -> l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W || l == Letter.F;
             case THREAD_SINGLE_CYCLE -> l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W
-                    || l == Letter.F || l == Letter.R || l == Letter.I;
+                    || l == Letter.F || l == Letter.R || l == Letter.I || l == Letter.Q;
             default -> switch (l) {
                 case X, U, Z, W, F, R, P, Q, K, D, I, A -> true;
                 default -> false;
@@ -292,6 +294,15 @@ final class Threading {
         return v;
     }
 
+    /** A start angle Q in degrees (ThreadWords.startAngle); NaN after E197. */
+    private double startAngle(Word w, String label) {
+        double v = ThreadWords.startAngle(w.number());
+        if (Double.isNaN(v)) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w, Phrase.THREAD_START_ANGLE.arg());
+        }
+        return v;
+    }
+
     /** A Fanuc G76 P/Q depth: a whole number of least increments, without a point; NaN after E197. */
     private double increments(Word w, String label) {
         long n = NumberText.integer(w.number());
@@ -340,6 +351,13 @@ final class Threading {
             }
             t = v * host.coordinates().perRadius(host.state().units());
         }
+        double q = g != null ? 0 : startAngle;
+        if (words.containsKey(Letter.Q)) {
+            q = startAngle(words.get(Letter.Q), label);
+            if (Double.isNaN(q)) {
+                return;
+            }
+        }
         Point reached = target(b, axes(words));
         if (reached == null) {
             return;
@@ -367,9 +385,10 @@ final class Threading {
         }
         end = to;
         taper = t;
+        startAngle = q;
         List<Move> moves = List.of(Move.line(true, new Point(end.x() + taper, a.z()), 1), Move.line(false, end, 1),
                 Move.line(true, new Point(a.x(), end.z()), 1), Move.line(true, a, 1));
-        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(modal.name(), b.line()), pullOut);
+        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(modal.name(), b.line()), pullOut, q);
     }
 
     /** Whether a G76 or G92 pass now ends with a chamfer: M23 in force and a chamfer of some length in the profile. */
@@ -407,7 +426,7 @@ final class Threading {
                 return;
             }
         }
-        for (Letter l : haas ? new Letter[] {Letter.Q, Letter.R}
+        for (Letter l : haas ? new Letter[] {Letter.R}
                 : new Letter[] {Letter.K, Letter.D, Letter.A, Letter.I}) {
             if (words.containsKey(l)) {
                 host.out().error(Code.E161_CYCLE_WORD, words.get(l).span(), label, words.get(l));
@@ -464,6 +483,13 @@ final class Threading {
                 }
                 infeed = v == 3 || v == 4 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
                 bothFlanks = v == 2 || v == 4;
+            }
+        }
+        double q = 0;
+        if (haas && words.containsKey(Letter.Q)) {
+            q = startAngle(words.get(Letter.Q), label);
+            if (Double.isNaN(q)) {
+                return;
             }
         }
         if (allow >= height) {
@@ -527,7 +553,7 @@ final class Threading {
         PullOut pullOut = pullsOut() ? new PullOut(host.profile().threadChamfer(), (int) side)
                 : m23() ? null : PullOut.fanuc(runOut, host.profile().threadChamfer(), (int) side);
         write(done, b.line(), g.span(), s, moves, lead, label,
-                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut);
+                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut, q);
     }
 
     /** The Fanuc first block G76 P(mmrraa) Q(minimum depth) R(finishing allowance): what stays in force. */
@@ -596,7 +622,8 @@ final class Threading {
      * ({@link CycleExpansion#abandon}).
      */
     private void write(List<CheckedBlock> done, int line, Span at, ModalState start, List<Move> moves, double lead,
-                       String label, java.util.function.IntFunction<CycleOrigin> origins, PullOut pullOut) {
+                       String label, java.util.function.IntFunction<CycleOrigin> origins, PullOut pullOut,
+                       double startAngle) {
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
         Point a = start.position();
         Point from = a;
@@ -611,7 +638,7 @@ final class Threading {
             if (m.kind() == Move.Kind.FEED) {
                 List<Word> ws = new ArrayList<>(block.words());
                 ws.add(f);
-                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label, pullOut);
+                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label, pullOut, startAngle);
             } else {
                 r = host.one(block, false, origin);
             }

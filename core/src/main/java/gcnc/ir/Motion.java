@@ -63,9 +63,22 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
      *                      the straight part, counts/s
      * @param chamferStart  where the straight part ends and the chamfered pull-out begins; null when the
      *                      pass ends square at {@code to} (M24, G32)
+     * @param startAngle    the spindle angle the pass starts at, degrees past the encoder's whole
+     *                      revolution, 0 to less than 360: a multi-start thread's start (G92/Haas G76 Q)
      */
-    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart)
-            implements Motion {
+    record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart,
+                  double startAngle) implements Motion {
+        public Thread {
+            if (!(startAngle >= 0 && startAngle < 360)) {
+                throw new IllegalArgumentException("a thread's start angle is 0 to less than 360 degrees, not " + startAngle);
+            }
+        }
+
+        /** A pass that starts at the encoder's whole revolution (start angle 0). */
+        public Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart) {
+            this(from, to, lead, rpm, reverse, feed, chamferStart, 0);
+        }
+
         /** Whether the pass ends with a chamfered pull-out (two geared segments). */
         public boolean chamfered() {
             return chamferStart != null;
