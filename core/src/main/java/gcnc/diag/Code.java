@@ -388,7 +388,24 @@ public enum Code {
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502);
+    E502_OUTPUT_IS_DIRECTORY(502),
+    /**
+     * A mode of the control that changes nothing in the path gcnc checks and writes (Fanuc G61
+     * exact stop mode, G64 cutting mode, G23 stroke check off): read as a no-op, said as a note.
+     */
+    E700_MODE_ONLY(700),
+    /**
+     * A mode of the control given values gcnc does not follow (Fanuc G22 X Z I K, the stored stroke
+     * check's forbidden area): the machine alarms if a move enters it, and gcnc does not check that.
+     */
+    E701_MODE_VALUES_NOT_CHECKED(701),
+    /**
+     * A G code written with a decimal point (Fanuc G12.1/G13.1 polar interpolation, G54.1 P added
+     * work coordinates, G50.3, G30.1, G07.1): not supported yet, named (rather than E013).
+     */
+    E702_DOTTED_G_NOT_SUPPORTED(702),
+    /** A spindle orientation angle (Haas M19 P whole degrees, R decimal degrees) outside 0-360. */
+    E703_ORIENT_ANGLE(703);
 
     private final int number;
 
