@@ -60,6 +60,9 @@ final class MotionBuilder {
                 motions.add(new Motion.Dwell(seconds));
             }
             case 28 -> {
+                if (!axis && d.functions.control().bareG28() == gcnc.machine.Control.BareG28.NOTHING) {
+                    break; // E704: a Fanuc G28 naming no axis moves nothing
+                }
                 Point via = d.next.g28;
                 Point home = p.home();
                 end = new Point(!axis || has(d, Letter.X, Letter.U) ? home.x() : via.x(),

@@ -405,7 +405,12 @@ public enum Code {
      */
     E702_DOTTED_G_NOT_SUPPORTED(702),
     /** A spindle orientation angle (Haas M19 P whole degrees, R decimal degrees) outside 0-360. */
-    E703_ORIENT_ANGLE(703);
+    E703_ORIENT_ANGLE(703),
+    /**
+     * A G28 with no axis word on a control where it moves nothing (Fanuc: G28 returns the axes it
+     * names): the block runs and nothing homes, which a Haas habit did not mean. A warning.
+     */
+    E704_BARE_G28_MOVES_NOTHING(704);
 
     private final int number;
 
