@@ -410,7 +410,12 @@ public enum Code {
      * A G28 with no axis word on a control where it moves nothing (Fanuc: G28 returns the axes it
      * names): the block runs and nothing homes, which a Haas habit did not mean. A warning.
      */
-    E704_BARE_G28_MOVES_NOTHING(704);
+    E704_BARE_G28_MOVES_NOTHING(704),
+    /**
+     * Text after the closing '%' (end of tape), which a control never reads (Fanuc and Haas stop
+     * at it): not read by gcnc either, said once as a note at its first character.
+     */
+    E705_AFTER_TAPE_END(705);
 
     private final int number;
 
