@@ -174,6 +174,22 @@ class ControlRulesTest {
     }
 
     @Test
+    void aBareG28MovesNothingOnFanucWithAWarning() {
+        for (String control : new String[] {"fanuc-a", "fanuc-b"}) {
+            MachineProfile p = machine("fanuc", control);
+            Run r = Run.of(p, "G00 X42. Z2.\nG28\nM30", Checker.ERROR_CAP);
+            assertEquals("2:1:E704", r.errors(), control);
+            assertEquals(r.line(1).end(), r.line(2).end(), control);
+            assertEquals(0, r.line(2).motions().size(), control);
+        }
+        // naming the axes homes them, as before
+        MachineProfile a = machine("fanuc", "fanuc-a");
+        Run named = Run.of(a, "G00 X42. Z2.\nG28 U0. W0.\nM30", Checker.ERROR_CAP);
+        assertEquals("", named.errors());
+        assertEquals(a.home(), named.line(2).end());
+    }
+
+    @Test
     void dwellPIsSecondsWithAPointOnHaasAndMillisecondsOnFanuc() {
         assertEquals(3.0, dwell("haas", "G04 P3."), 1e-9);
         assertEquals(0.003, dwell("haas", "G04 P3"), 1e-9);

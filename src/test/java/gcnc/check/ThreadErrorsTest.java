@@ -103,12 +103,12 @@ class ThreadErrorsTest {
 
     @Test
     void e197ValuesTheControlDoesNotTake() {
-        assertEquals("5:5:E197", fanuc("G76 P011060 Q100 R0.05\nM30\n")); // a chamfer: not supported yet
+        assertEquals("5:5:E197", fanuc("G76 P001060 Q100 R0.05\nM30\n")); // no finishing pass, with a chamfer
         assertEquals("5:5:E197", fanuc("G76 P010045 Q100 R0.05\nM30\n")); // no 45-degree thread
         assertEquals("5:5:E197", fanuc("G76 P000060 Q100 R0.05\nM30\n")); // no finishing pass
         assertEquals("5:18:E197", fanuc("G76 X22.16 Z-25. P0.92 Q350 F1.5\nM30\n")); // P with a point
         assertEquals("5:35:E197", Run.of("haas", "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5. M24\n"
-                + "G76 X22.16 Z-25. K0.92 D0.35 F1.5 P2\nM30\n").errors());
+                + "G76 X22.16 Z-25. K0.92 D0.35 F1.5 P5\nM30\n").errors()); // P1-P4 only
         // Haas M23 (on at power-up) is no longer one: its chamfered pull-out is cut (ThreadChamferTest)
         String haas = "G21 G99\nT303\nG97 S700 M03\nG00 X30. Z5.\n";
         String g92 = "G92 X23. Z-25. F1.5\nG00 X40.\n";

@@ -100,6 +100,17 @@ class BlockReaderErrorTest {
     }
 
     @Test
+    void aGCodeWithADecimalPointIsNamedAsNotSupportedYet702() {
+        // Fanuc G12.1 polar interpolation, G54.1 P added work coordinates: codes of the manual, named
+        expect("G12.1\n", List.of("1:1 E702 [G12.1]"), List.of("1: !"));
+        expect("G54.1 P10\n", List.of("1:1 E702 [G54.1]"), List.of("1: !"));
+        expect("X1. g50.3\n", List.of("1:5 E702 [G50.3]"), List.of("1: X1. !"));
+        // no digit after the point, or another letter: still E013
+        expect("G1.\n", List.of("1:1 E013 [G]"), List.of("1: !"));
+        expect("M3.5\n", List.of("1:1 E013 [M]"), List.of("1: !"));
+    }
+
+    @Test
     void malformedNumberIsError14() {
         for (String bad : List.of("X+", "X.", "X1.2.3", "X--1", "x-.", "F-1", "F+0.2", "Z1-2", "P1.2.", "y+-1")) {
             String letter = bad.substring(0, 1).toUpperCase();

@@ -71,15 +71,16 @@ enum Construct {
     DRILL_G83_FANUC,
     /** comp: G84 face tapping (haas G84 X0. Z R P F; fanuc M29 S, G84). */
     TAP_G84,
-    // --- constructs the posts write that gcnc rejects today and no helper of issue 17 implements
-    /** fanuc onCyclePoint: G76 P with the chamfer rr = 10 (one lead) the post always writes (E197 today). */
+    // --- the thread words the posts write that lang2 (issue 17) made gcnc accept
+    /** fanuc onCyclePoint: G76 P with the chamfer rr = 10 (one lead), which the post always writes. */
     FANUC_THREAD_CHAMFER,
-    /** haas onCyclePoint: G76 A with a decimal point ("A60.", zFormat) (E197 today: not read as degrees). */
+    /** haas onCyclePoint: G76 A with a decimal point ("A60.", zFormat): 60 degrees. */
     THREAD_ANGLE_WITH_POINT,
-    /** haas onCyclePoint: G76 P2, both flanks in turn (infeedMode "alternate") (E197 today: not supported yet). */
+    /** haas onCyclePoint: G76 P2, both flanks in turn (infeedMode "alternate"). */
     THREAD_ALTERNATE_FLANKS,
-    /** Multi-start threads: G76/G92 Q start angle (haas; fanuc G92) (E161/E108 today). */
+    /** Multi-start threads: G76/G92 Q start angle (haas; fanuc G92, fanuc B G78). */
     THREAD_START_ANGLE,
+    // --- constructs the posts write that gcnc rejects today and no helper of issue 17 implements
     /** wcsDefinitions "Extended": haas G154 P1, fanuc G54.1 P1 (E110/E013 today). */
     WCS_EXTENDED;
 

@@ -283,7 +283,7 @@ final class Sections {
                             "P" + (g.wants(Construct.THREAD_ALTERNATE_FLANKS) ? 2 : rnd.nextBoolean() ? 1 : 3), q, f);
                 } else {
                     // P mm rr aa: finishing passes, chamfer in tenths of a lead (the post always writes 10), angle
-                    String rr = g.wants(Construct.FANUC_THREAD_CHAMFER) ? "10" : "00";
+                    String rr = g.always(Construct.FANUC_THREAD_CHAMFER) ? "10" : "00";
                     out.block("G76", String.format("P%02d%s%02d", pickInt(rnd, 1, 2), rr, 60), "Q" + Blocks.micro(0.05), "R0");
                     out.block("G76", out.x(minor), out.z(zEnd), "P" + Blocks.micro(h), "Q" + Blocks.micro(h / 4), f);
                 }

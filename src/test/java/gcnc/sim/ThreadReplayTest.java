@@ -185,4 +185,27 @@ class ThreadReplayTest {
         assertEquals("E209@6", ReplayTest.codes(r.diagnostics()).get(0));
         assertTrue(!r.ok());
     }
+
+    @Test
+    void aStartAngleWaitsThatMuchPastTheWholeRevolutionAndReplaysCleanAlone() throws Exception {
+        MachineProfile fanuc = ReplayTest.profile("fanuc");
+        StringBuilder dmc = new StringBuilder();
+        // a two-start thread: the second start 180 degrees on (2048 of the encoder's 4096 counts)
+        String program = PROGRAM.replace("G92 X23.2 Z-25. F1.5\nX22.8\nX22.5\n",
+                "G92 X23.2 Z-25. Q0 F3.\nX22.8\nG92 X23.2 Z-25. Q180000 F3.\nX22.8\n");
+        Compiler.Result r = compile(fanuc, "galil", program, dmc);
+        assertTrue(r.ok(), r.diagnostics().sorted().toString());
+        assertEquals(0, r.simulation().orElseThrow().findings());
+        String text = dmc.toString();
+        assertEquals(2, text.split("gsp=\\(@INT\\[_TPC/4096\\]\\+1\\)\\*4096\n", -1).length - 1, text);
+        assertEquals(2, text.split("gsp=\\(@INT\\[_TPC/4096\\]\\+1\\)\\*4096\\+2048\n", -1).length - 1, text);
+        assertEquals(List.of(), replay(text, fanuc));
+        // under M04 the spindle counts down: the start is that many counts below the whole revolution
+        StringBuilder reverse = new StringBuilder();
+        assertTrue(compile(fanuc, "galil", program.replace("M03", "M04"), reverse).ok());
+        assertTrue(reverse.toString().contains("gsp=(@INT[_TPC/4096]-1)*4096-2048\n"), reverse.toString());
+        // a phase of a whole revolution or more is not what the backend writes: the replay refuses it
+        List<String> whole = replay(text.replaceFirst("\\*4096\\+2048\n", "*4096+4096\n"), fanuc);
+        assertTrue(whole.get(0).startsWith("E300@"), whole.toString());
+    }
 }

@@ -77,6 +77,8 @@ public final class BlockDraft {
      * and which way X goes out; null for a square end (M24, G32) and for every other block.
      */
     public PullOut pullOut;
+    /** The spindle angle a thread pass starts at, degrees (a multi-start thread's G92/Haas G76 Q); 0 otherwise. */
+    public double startAngle;
     /**
      * The block's first G or M word whose function gcnc cannot follow yet (a G whose role is
      * unsupported, an M that is unsupported or a call the flow stage did not take), or null: the

@@ -272,14 +272,26 @@ public final class Checker {
      * M23's chamfer instead of at the block's end point.
      */
     Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut) {
-        return one(b, isFirst, origin, thread, pullOut);
+        return thread(b, isFirst, origin, thread, pullOut, 0);
+    }
+
+    /** As above, the pass starting {@code startAngle} degrees past the spindle's whole revolution (Q of G92, Haas G76). */
+    Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut,
+                                  double startAngle) {
+        return one(b, isFirst, origin, thread, pullOut, startAngle);
     }
 
     private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
                                        PullOut pullOut) {
+        return one(b, isFirst, origin, thread, pullOut, 0);
+    }
+
+    private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
+                                       PullOut pullOut, double startAngle) {
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         d.thread = thread;
         d.pullOut = pullOut;
+        d.startAngle = startAngle;
         scratch.clear();
         CheckedBlock result = run(d, scratch, true);
         report(b, origin);

@@ -60,6 +60,9 @@ final class MotionBuilder {
                 motions.add(new Motion.Dwell(seconds));
             }
             case 28 -> {
+                if (!axis && d.functions.control().bareG28() == gcnc.machine.Control.BareG28.NOTHING) {
+                    break; // E704: a Fanuc G28 naming no axis moves nothing
+                }
                 Point via = d.next.g28;
                 Point home = p.home();
                 end = new Point(!axis || has(d, Letter.X, Letter.U) ? home.x() : via.x(),
@@ -214,11 +217,11 @@ final class MotionBuilder {
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
         Feed feed = new Feed(lead, zSpeed * path / dz);
         if (d.pullOut == null) {
-            return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, feed, null);
+            return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, feed, null, d.startAngle);
         }
         Point[] chamfer = pullOut(d, from, end, lead, rpm, at, out);
         return chamfer == null ? null
-                : new Motion.Thread(from, chamfer[1], leadCounts, rpm, spindle == 4, feed, chamfer[0]);
+                : new Motion.Thread(from, chamfer[1], leadCounts, rpm, spindle == 4, feed, chamfer[0], d.startAngle);
     }
 
     /**

@@ -54,11 +54,19 @@ final class Threading {
     /** G92 in force: its end point (counts), taper (radius counts) and lead (as written). */
     private Point end;
     private double taper;
+    /** The G92 in force's start angle, degrees (Q; a later block without Q keeps it, as the end and taper). */
+    private double startAngle;
     /** What the Fanuc first block G76 P Q R left in force: finishing passes, angle, minimum depth and allowance (program units). */
     private int finishes = 1;
     private int angle = 60;
     private double minimum;
     private double allowance;
+    /**
+     * The Fanuc thread chamfer rr of the first block G76 P(mmrraa), in tenths of a lead
+     * (parameter 5130, which that block sets): every G76 pass on a control without Haas's M23
+     * ends with it ({@link PullOut#fanuc}). None before a first block gives one.
+     */
+    private int runOut;
 
     /**
      * Haas M23 in force: each pass of a G76 or G92 ends with the profile's chamfered pull-out
@@ -211,7 +219,7 @@ final class Threading {
         return switch (role) {
             case THREAD -> l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W || l == Letter.F;
             case THREAD_SINGLE_CYCLE -> l == Letter.X || l == Letter.U || l == Letter.Z || l == Letter.W
-                    || l == Letter.F || l == Letter.R || l == Letter.I;
+                    || l == Letter.F || l == Letter.R || l == Letter.I || l == Letter.Q;
             default -> switch (l) {
                 case X, U, Z, W, F, R, P, Q, K, D, I, A -> true;
                 default -> false;
@@ -289,6 +297,15 @@ final class Threading {
         return v;
     }
 
+    /** A start angle Q in degrees (ThreadWords.startAngle); NaN after E197. */
+    private double startAngle(Word w, String label) {
+        double v = ThreadWords.startAngle(w.number());
+        if (Double.isNaN(v)) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, w.span(), label, w, Phrase.THREAD_START_ANGLE.arg());
+        }
+        return v;
+    }
+
     /** A Fanuc G76 P/Q depth: a whole number of least increments, without a point; NaN after E197. */
     private double increments(Word w, String label) {
         long n = NumberText.integer(w.number());
@@ -337,6 +354,13 @@ final class Threading {
             }
             t = v * host.coordinates().perRadius(host.state().units());
         }
+        double q = g != null ? 0 : startAngle;
+        if (words.containsKey(Letter.Q)) {
+            q = startAngle(words.get(Letter.Q), label);
+            if (Double.isNaN(q)) {
+                return;
+            }
+        }
         Point reached = target(b, axes(words));
         if (reached == null) {
             return;
@@ -364,14 +388,20 @@ final class Threading {
         }
         end = to;
         taper = t;
+        startAngle = q;
         List<Move> moves = List.of(Move.line(true, new Point(end.x() + taper, a.z()), 1), Move.line(false, end, 1),
                 Move.line(true, new Point(a.x(), end.z()), 1), Move.line(true, a, 1));
-        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(modal.name(), b.line()), pullOut);
+        write(done, b.line(), at, s, moves, lead, label, i -> CycleOrigin.single(modal.name(), b.line()), pullOut, q);
     }
 
     /** Whether a G76 or G92 pass now ends with a chamfer: M23 in force and a chamfer of some length in the profile. */
     private boolean pullsOut() {
         return chamfer && host.profile().threadChamfer().cuts();
+    }
+
+    /** Whether the control has Haas's M23/M24 (its chamfer, not the Fanuc rr, ends a G76 pass). */
+    private boolean m23() {
+        return host.profile().control().allM().stream().anyMatch(f -> f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON);
     }
 
     /** G76: the Fanuc first block sets what stays in force; the second block, or the Haas one block, cuts. */
@@ -399,7 +429,7 @@ final class Threading {
                 return;
             }
         }
-        for (Letter l : haas ? new Letter[] {Letter.Q, Letter.R}
+        for (Letter l : haas ? new Letter[] {Letter.R}
                 : new Letter[] {Letter.K, Letter.D, Letter.A, Letter.I}) {
             if (words.containsKey(l)) {
                 host.out().error(Code.E161_CYCLE_WORD, words.get(l).span(), label, words.get(l));
@@ -431,6 +461,7 @@ final class Threading {
             return;
         }
         int angle = this.angle;
+        boolean bothFlanks = false; // Haas P2/P4
         ThreadPasses.Infeed infeed = ThreadPasses.Infeed.CONSTANT_AREA;
         int finishing = this.finishes;
         double min = this.minimum;
@@ -442,7 +473,7 @@ final class Threading {
             angle = 60;
             if (words.containsKey(Letter.A)) {
                 Word a = words.get(Letter.A);
-                long v = NumberText.integer(a.number());
+                long v = ThreadWords.degrees(a.number());
                 if (v == NumberText.NOT_INTEGER || v > 120) {
                     host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, Phrase.THREAD_ANGLE_RANGE.arg());
                     return;
@@ -452,12 +483,20 @@ final class Threading {
             if (words.containsKey(Letter.P)) {
                 Word p = words.get(Letter.P);
                 long v = NumberText.integer(p.number());
-                if (v != 1 && v != 3) {
+                if (v < 1 || v > 4) {
                     host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
                             Phrase.THREAD_INFEED.arg());
                     return;
                 }
-                infeed = v == 3 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
+                infeed = v == 3 || v == 4 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
+                bothFlanks = v == 2 || v == 4;
+            }
+        }
+        double q = 0;
+        if (haas && words.containsKey(Letter.Q)) {
+            q = startAngle(words.get(Letter.Q), label);
+            if (Double.isNaN(q)) {
+                return;
             }
         }
         if (allow >= height) {
@@ -513,8 +552,10 @@ final class Threading {
         for (int i = 0; i < depths.length; i++) {
             double depth = depths[i];
             double xEnd = top - side * depth * perRadius;
-            // flank infeed: the pass moves back along Z by depth x tan(angle / 2), so one flank cuts
-            double shift = -dir * depth * flank * perZ;
+            // flank infeed: the pass moves back along Z by depth x tan(angle / 2), so one flank cuts;
+            // both flanks in turn (Haas P2/P4): ThreadWords.alternate
+            double shift = bothFlanks ? -dir * ThreadWords.alternate(i, height, depth, flank) * perZ
+                    : -dir * depth * flank * perZ;
             int pass = i + 1;
             moves.add(Move.line(true, new Point(xEnd + t, a.z() + shift), pass));
             moves.add(Move.line(false, new Point(xEnd, root.z() + shift), pass));
@@ -522,9 +563,10 @@ final class Threading {
             moves.add(Move.line(true, a, pass));
         }
         int passes = depths.length;
-        PullOut pullOut = pullsOut() ? new PullOut(host.profile().threadChamfer(), (int) side) : null;
+        PullOut pullOut = pullsOut() ? new PullOut(host.profile().threadChamfer(), (int) side)
+                : m23() ? null : PullOut.fanuc(runOut, host.profile().threadChamfer(), (int) side);
         write(done, b.line(), g.span(), s, moves, lead, label,
-                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut);
+                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut, q);
     }
 
     /** The Fanuc first block G76 P(mmrraa) Q(minimum depth) R(finishing allowance): what stays in force. */
@@ -536,6 +578,7 @@ final class Threading {
             }
         }
         int m = finishes;
+        int rr = runOut;
         int aa = angle;
         double q = minimum;
         double r = allowance;
@@ -548,16 +591,11 @@ final class Threading {
                 return;
             }
             m = (int) (v / 10000);
-            int rr = (int) (v / 100 % 100);
+            rr = (int) (v / 100 % 100);
             aa = (int) (v % 100);
             if (m < 1) {
                 host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
                         Phrase.THREAD_FINISH_PASSES.arg());
-                return;
-            }
-            if (rr != 0) {
-                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                        Phrase.THREAD_CHAMFER.with(rr));
                 return;
             }
             if (!FANUC_ANGLES.contains(aa)) {
@@ -584,6 +622,7 @@ final class Threading {
             }
         }
         finishes = m;
+        runOut = rr;
         angle = aa;
         minimum = q;
         allowance = r;
@@ -596,7 +635,8 @@ final class Threading {
      * ({@link CycleExpansion#abandon}).
      */
     private void write(List<CheckedBlock> done, int line, Span at, ModalState start, List<Move> moves, double lead,
-                       String label, java.util.function.IntFunction<CycleOrigin> origins, PullOut pullOut) {
+                       String label, java.util.function.IntFunction<CycleOrigin> origins, PullOut pullOut,
+                       double startAngle) {
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
         Point a = start.position();
         Point from = a;
@@ -611,7 +651,7 @@ final class Threading {
             if (m.kind() == Move.Kind.FEED) {
                 List<Word> ws = new ArrayList<>(block.words());
                 ws.add(f);
-                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label, pullOut);
+                r = host.thread(new RawBlock(line, ws, at, false), false, origin, label, pullOut, startAngle);
             } else {
                 r = host.one(block, false, origin);
             }

@@ -536,7 +536,35 @@ public enum Code {
     /** A macro value outside what a variable holds (0, or 10^-29 to 10^47 in size): alarm 111. */
     E683_MACRO_VALUE_RANGE(683),
     /** An end code (M30, M02) in a called program: the whole run ends there, the caller never resumes. */
-    E685_END_IN_CALLED_PROGRAM(685);
+    E685_END_IN_CALLED_PROGRAM(685),
+    // 700-729: threads and codes the CAM posts write (issue 17).
+    /**
+     * A mode of the control that changes nothing in the path gcnc checks and writes (Fanuc G61
+     * exact stop mode, G64 cutting mode, G23 stroke check off): read as a no-op, said as a note.
+     */
+    E700_MODE_ONLY(700),
+    /**
+     * A mode of the control given values gcnc does not follow (Fanuc G22 X Z I K, the stored stroke
+     * check's forbidden area): the machine alarms if a move enters it, and gcnc does not check that.
+     */
+    E701_MODE_VALUES_NOT_CHECKED(701),
+    /**
+     * A G code written with a decimal point (Fanuc G12.1/G13.1 polar interpolation, G54.1 P added
+     * work coordinates, G50.3, G30.1, G07.1): not supported yet, named (rather than E013).
+     */
+    E702_DOTTED_G_NOT_SUPPORTED(702),
+    /** A spindle orientation angle (Haas M19 P whole degrees, R decimal degrees) outside 0-360. */
+    E703_ORIENT_ANGLE(703),
+    /**
+     * A G28 with no axis word on a control where it moves nothing (Fanuc: G28 returns the axes it
+     * names): the block runs and nothing homes, which a Haas habit did not mean. A warning.
+     */
+    E704_BARE_G28_MOVES_NOTHING(704),
+    /**
+     * Text after the closing '%' (end of tape), which a control never reads (Fanuc and Haas stop
+     * at it): not read by gcnc either, said once as a note at its first character.
+     */
+    E705_AFTER_TAPE_END(705);
 
     private final int number;
 

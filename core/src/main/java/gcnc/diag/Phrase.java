@@ -33,8 +33,8 @@ public enum Phrase {
     THREAD_P_DIGITS,
     /** E197: the finishing passes mm. */
     THREAD_FINISH_PASSES,
-    /** E197: a chamfer rr other than 00 ({0}). */
-    THREAD_CHAMFER,
+    /** E197: a start angle Q (G92, Haas G76). */
+    THREAD_START_ANGLE,
     /** E197: the angle aa. */
     THREAD_ANGLE_DIGITS,
     /** E197: the finishing allowance R. */

@@ -190,7 +190,8 @@ final class GalilDialect implements Dialect {
      * One thread pass geared to the spindle encoder (docs/threading.md, docs/dmc-format.md):
      * {@code GA} makes the encoder's channel the master of both plane axes; the DMC waits with
      * {@code MF}/{@code MR} for the encoder to pass the next whole revolution (every pass starts at
-     * the same spindle angle); {@code GR} engages both axes at the ratios that advance Z one lead
+     * the same spindle angle; a multi-start thread's pass its start angle further on, {@code +phase}
+     * counts); {@code GR} engages both axes at the ratios that advance Z one lead
      * per revolution (X in proportion for a taper); {@code MF}/{@code MR} on Z waits for the end of
      * that segment. At each corner (a continuous G32 thread's joint, a chamfered pull-out's start
      * under Haas M23) the ratios change while geared ({@code GR} again, no new synchronisation) and
@@ -240,7 +241,10 @@ final class GalilDialect implements Dialect {
         out.emit("GA " + positional(plane, encoder, encoder));
         int cpr = enc.countsPerRev();
         String cross = t.reverse() ? "-1" : "+1";
-        out.emit(SYNC_VARIABLE + "=(@INT[_TP" + encoder + "/" + cpr + "]" + cross + ")*" + cpr);
+        // a multi-start thread's pass starts its start angle further on, in the spindle's direction
+        long phase = Math.round(t.startAngle() / 360 * cpr) % cpr;
+        String shift = phase == 0 ? "" : (t.reverse() ? "-" : "+") + phase;
+        out.emit(SYNC_VARIABLE + "=(@INT[_TP" + encoder + "/" + cpr + "]" + cross + ")*" + cpr + shift);
         out.emit((t.reverse() ? "MR " : "MF ") + positional(new String[] {encoder}, SYNC_VARIABLE));
         String zLetter = String.valueOf(profile.z().galil());
         String zWait = z[n - 1] >= z[0] ? "MF " : "MR "; // a thread's Z goes one way through all its segments

@@ -66,16 +66,33 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
      * @param joints        where the blocks of a continuous G32 thread meet (docs/threading.md,
      *                      "Continuous threads"): the pass runs geared through each, the ratios changing
      *                      there without a new synchronisation; empty for a pass of one block
+     * @param startAngle    the spindle angle the pass starts at, degrees past the encoder's whole
+     *                      revolution, 0 to less than 360: a multi-start thread's start (G92/Haas G76 Q)
      */
     record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart,
-                  java.util.List<Point> joints) implements Motion {
+                  java.util.List<Point> joints, double startAngle) implements Motion {
         public Thread {
             joints = java.util.List.copyOf(joints);
+            if (!(startAngle >= 0 && startAngle < 360)) {
+                throw new IllegalArgumentException("a thread's start angle is 0 to less than 360 degrees, not " + startAngle);
+            }
         }
 
-        /** A pass of one block. */
+        /** A pass of one block that starts at the encoder's whole revolution (start angle 0). */
         public Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart) {
-            this(from, to, lead, rpm, reverse, feed, chamferStart, java.util.List.of());
+            this(from, to, lead, rpm, reverse, feed, chamferStart, java.util.List.of(), 0);
+        }
+
+        /** A continuous G32 thread through {@code joints}, from the whole revolution. */
+        public Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart,
+                      java.util.List<Point> joints) {
+            this(from, to, lead, rpm, reverse, feed, chamferStart, joints, 0);
+        }
+
+        /** A pass of one block that starts {@code startAngle} degrees past the whole revolution. */
+        public Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart,
+                      double startAngle) {
+            this(from, to, lead, rpm, reverse, feed, chamferStart, java.util.List.of(), startAngle);
         }
 
         /**

@@ -28,7 +28,8 @@ import java.util.TreeMap;
  * @param increasingN       N must increase (E043); else a repeat is a warning (E114)
  * @param noPointLiteral    X42 is 42 mm; else 0.042 mm (least increments)
  * @param dwellPSeconds     G04 P is seconds (Haas); else milliseconds
- * @param bareG28Homes      a G28 with no axis word homes both axes; else E030
+ * @param bareG28          a G28 with no axis word: E030, both axes home (Haas), or nothing moves
+ *                          with the warning E704 (Fanuc)
  * @param blockDelete       how a '/' block is treated
  * @param builderM          an M code not in the table is passed to the machine; else E012
  * @param cycleRetractMm    the 45-degree retract of G71/G72 roughing passes when the program gives
@@ -54,7 +55,7 @@ import java.util.TreeMap;
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
                       int powerUpTool, int powerUpOffset, boolean clampFromG50, boolean chuckByProgram,
-                      boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, boolean bareG28Homes,
+                      boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, BareG28 bareG28,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
                       double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners,
                       boolean fanucDrilling) {
@@ -67,6 +68,9 @@ public record Control(String name, String description, Set<Letter> letters, Map<
 
     /** The block delete switch: none (a '/' is a syntax error), or its position as compiled. */
     public enum BlockDelete { NONE, OFF, ON }
+
+    /** What a G28 with no axis word does (key {@code g28.bare}): E030, both axes home, or nothing moves (E704). */
+    public enum BareG28 { ERROR, HOME, NOTHING }
 
     /**
      * Subprogram calls (keys {@code call.p} and {@code call.depth}).

@@ -89,7 +89,7 @@ public final class ControlLoader {
                 f.choice("sequence_numbers", "any", "increasing", "any").equals("increasing"),
                 f.choice("no_point", "increment", "literal", "increment").equals("literal"),
                 f.choice("dwell.p", "milliseconds", "milliseconds", "seconds").equals("seconds"),
-                f.choice("g28.bare", "error", "error", "home").equals("home"),
+                Control.BareG28.valueOf(f.choice("g28.bare", "error", "error", "home", "nothing").toUpperCase()),
                 Control.BlockDelete.valueOf(f.choice("block_delete", "off", "none", "off", "on").toUpperCase()),
                 f.choice("m.unlisted", "error", "error", "builder").equals("builder"),
                 retract(f), calls(f),

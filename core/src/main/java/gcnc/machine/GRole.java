@@ -54,6 +54,12 @@ public enum GRole {
     THREAD(32), THREAD_SINGLE_CYCLE(-92), THREAD_CYCLE(76),
     WORK_1(54), WORK_2(55), WORK_3(56), WORK_4(57), WORK_5(58), WORK_6(59), CYCLE_CANCEL(80),
     ABSOLUTE(90), INCREMENTAL(91), REGISTER(92), FEED_PER_MINUTE(94), FEED_PER_REV(95), CSS(96), RPM(97),
+    /**
+     * A mode of the control that changes nothing in the path gcnc checks and writes (Fanuc G61
+     * exact stop mode, G64 cutting mode, G22/G23 stored stroke check): read, with the note E700
+     * saying so (its words, such as G22's area, are its own and move nothing).
+     */
+    MODE_ONLY(-3),
     /** A function gcnc cannot follow yet: using it is E110, never a misreading. */
     UNSUPPORTED(-2);
 

@@ -73,17 +73,24 @@ public final class BlockReader implements BlockSource {
         this(in, diagnostics, true, false, false);
     }
 
-    /** A reader for a control that has Fanuc macro B when {@code macros}: its macro lines come back as {@link RawBlock#macro}. */
+    /**
+     * A reader for a control: it has Fanuc macro B when {@code macros} (its macro lines come back as
+     * {@link RawBlock#macro}), and it stops at the closing '%' as a control does ({@link #tapeEnd}).
+     * The other constructors read the whole text as the grammar does.
+     */
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros) {
-        return new BlockReader(in, diagnostics, true, macros, false);
+        return forControl(in, diagnostics, macros, false);
     }
 
     /**
      * A reader for a control: with Fanuc macro B when {@code macros}; with {@code lineComments},
-     * a comment ends at the end of its line at the latest and a '(' inside it is text (Haas, Fanuc).
+     * a comment ends at the end of its line at the latest and a '(' inside it is text (Haas, Fanuc);
+     * it stops at the closing '%' as a control does ({@link #tapeEnd}).
      */
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments) {
-        return new BlockReader(in, diagnostics, true, macros, lineComments);
+        BlockReader r = new BlockReader(in, diagnostics, true, macros, lineComments);
+        r.tape = true;
+        return r;
     }
 
     BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath) {
@@ -98,7 +105,7 @@ public final class BlockReader implements BlockSource {
         this.lineComments = lineComments;
     }
 
-    /** The next block, or null at the end of the input. */
+    /** The next block, or null at the end of the input (or of the tape: {@link #tapeEnd}). */
     @Override
     public RawBlock next() throws IOException {
         while (source.next()) {
@@ -106,12 +113,16 @@ public final class BlockReader implements BlockSource {
             if (mark >= 0 && eofMark == null) {
                 eofMark = Span.of(source.number(), mark + 1);
             }
+            if (tape && !inComment && betweenTapes()) {
+                continue;
+            }
             RawBlock block = readLine();
             if (block != null) {
                 if (eofMark != null && eofMark.line() < block.line()) {
                     diagnostics.report(Diagnostic.warning(Code.E602_TEXT_AFTER_END_OF_FILE_MARK, eofMark));
                     eofMark = null;
                 }
+                blocks++;
                 return block;
             }
         }
@@ -120,6 +131,59 @@ public final class BlockReader implements BlockSource {
             diagnostics.error(Code.E005_COMMENT_NOT_CLOSED, commentStart);
         }
         return null;
+    }
+
+    /** Blocks handed on so far: a '%' line after the first block is the end of the tape. */
+    private int blocks;
+    /** Stop at the closing '%' (a control's reading; the grammar's reading goes on). */
+    private boolean tape;
+    /** The line of the closing '%' while between tapes (0: reading a tape); whether E705 was said since. */
+    private int tapeEndLine;
+    private boolean skippedNoted;
+
+    /**
+     * The closing '%' (end of tape): a Fanuc or Haas control stops reading there. Whether the
+     * current line is that mark or a line after it before the next program: a line starting with
+     * an O word ({@code O2000}, {@code :2000}; a file holding several programs, or a '%' opening
+     * another tape) is read again. Anything else after the mark (a note, a DOS end-of-file byte)
+     * is not read: the note E705, once, at its first character (a lone DOS end-of-file byte is silent).
+     */
+    private boolean betweenTapes() {
+        int at = firstNonBlank();
+        char c = at < 0 ? ' ' : source.chars()[at];
+        if (tapeEndLine == 0) {
+            if (blocks > 0 && c == '%') {
+                tapeEndLine = source.number();
+                skippedNoted = false;
+                return true;
+            }
+            return false;
+        }
+        if ((c == 'O' || c == 'o' || c == ':') && at + 1 < source.length() && Character.isDigit(source.chars()[at + 1])) {
+            tapeEndLine = 0;
+            return false;
+        }
+        if (at >= 0 && c != '%' && !skippedNoted) {
+            skippedNoted = true;
+            diagnostics.report(new gcnc.diag.Diagnostic(Code.E705_AFTER_TAPE_END, gcnc.diag.Severity.NOTE,
+                    Span.of(source.number(), at + 1), java.util.List.of(Integer.toString(tapeEndLine))));
+        }
+        return true;
+    }
+
+    /**
+     * The index of the current line's first character that is not a blank, or -1. The DOS
+     * end-of-file byte (Ctrl-Z) a file sent from Windows ends with counts as a blank here: it is no
+     * text, and after the closing '%' it needs no note.
+     */
+    private int firstNonBlank() {
+        char[] cs = source.chars();
+        for (int i = 0; i < source.length(); i++) {
+            if (cs[i] != ' ' && cs[i] != '\t' && cs[i] != '\u001a') {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** Lines read so far (at the end: the number of lines in the input). */
@@ -219,7 +283,7 @@ public final class BlockReader implements BlockSource {
                 case GCodeLexer.BLOCK_DELETE -> blockDelete(t);
                 case GCodeLexer.BARE_LETTER -> bareLetter(start);
                 case GCodeLexer.TEXT -> fail(Code.E109_TEXT_OUTSIDE_COMMENT, start, excerpt(start));
-                case GCodeLexer.NOT_INTEGER -> fail(Code.E013_INTEGER_EXPECTED, start, letterAt(start));
+                case GCodeLexer.NOT_INTEGER -> notInteger(t, start);
                 case GCodeLexer.BAD_NUMBER -> fail(Code.E014_DECIMAL_EXPECTED, start, letterAt(start));
                 case GCodeLexer.MACRO -> macro(start);
                 case GCodeLexer.STRAY -> fail(Code.E010_SYNTAX, start, "'" + text(start) + "'");
@@ -361,6 +425,21 @@ public final class BlockReader implements BlockSource {
      * Keeps the line's first error, reported at the end of the line; later ones on the same line
      * are dropped (thesis §10).
      */
+    /**
+     * A G, M, N, O, S or T word with a sign or a point: E013; but a G code written with a decimal
+     * point (G12.1, G54.1, G50.3) is a code of the Fanuc manual gcnc does not follow yet: E702 names it.
+     */
+    private void notInteger(Token t, int start) {
+        String s = t.getText();
+        if (DOTTED_G.matcher(s).matches()) {
+            fail(Code.E702_DOTTED_G_NOT_SUPPORTED, start, "G" + s.substring(1));
+        } else {
+            fail(Code.E013_INTEGER_EXPECTED, start, letterAt(start));
+        }
+    }
+
+    private static final java.util.regex.Pattern DOTTED_G = java.util.regex.Pattern.compile("[Gg][0-9]+\\.[0-9]+");
+
     private void fail(Code code, int index, Object... args) {
         if (errorAt == null) {
             errorAt = span(index);

@@ -367,11 +367,15 @@ final class DmcInterpreter {
         gearMaster = true;
     }
 
-    /** {@code gsp=(@INT[_TPC/4096]+1)*4096}: the encoder count of the next whole revolution. */
+    /**
+     * {@code gsp=(@INT[_TPC/4096]+1)*4096}: the encoder count of the next whole revolution, or
+     * ({@code ...*4096+2048}) a start angle past it, less than one revolution (a multi-start thread).
+     */
     private void assignment(String t, int line) {
         java.util.regex.Matcher m = SYNC.matcher(t);
         if (!m.matches() || encoderChannel < 0 || Plane.channel(m.group(2).charAt(0)) != encoderChannel
-                || Integer.parseInt(m.group(3)) != encoderCounts || Integer.parseInt(m.group(5)) != encoderCounts) {
+                || Integer.parseInt(m.group(3)) != encoderCounts || Integer.parseInt(m.group(5)) != encoderCounts
+                || m.group(6) != null && Math.abs(Long.parseLong(m.group(6))) >= encoderCounts) {
             out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, line, t);
             return;
         }
@@ -380,7 +384,7 @@ final class DmcInterpreter {
     }
 
     private static final java.util.regex.Pattern SYNC = java.util.regex.Pattern.compile(
-            "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})");
+            "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})([+-][0-9]{1,7})?");
 
     /**
      * {@code MF}/{@code MR}: on the encoder's channel with the sync variable, the wait for the whole

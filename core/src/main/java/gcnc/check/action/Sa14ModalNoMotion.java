@@ -14,12 +14,39 @@ import gcnc.machine.GRole;
  * G41 to G42 or back without G40 is the warning E174), G96
  * (constant surface speed: S of this and later blocks is m/min or ft/min), and, added by gcnc for
  * real safe-start lines, G80 (canned cycle cancel) and the plane: G18 (ZX, the lathe's plane) is
- * accepted, G17 and G19 are E112. Emits E016, E112, E174. Writes next.css, next.nose, d.g96.
+ * accepted, G17 and G19 are E112; a control's mode that changes nothing in the path (G61/G64,
+ * G22/G23: function {@code mode_only}) is the note E700. Emits E016, E112, E174, E700. Writes next.css, next.nose, d.g96.
  */
 public final class Sa14ModalNoMotion implements SyntaxAction {
     @Override
     public int number() {
         return 14;
+    }
+
+    /**
+     * E700 (note): the mode changes nothing gcnc writes. E701 (warning) when the block gives the
+     * mode values (G22's forbidden area X Z I K): the machine acts on them and gcnc does not check them.
+     */
+    private static void modeOnly(Word w, BlockDraft d, GFunction f, Diagnostics out) {
+        StringBuilder values = new StringBuilder();
+        for (Word v : d.block.words()) {
+            switch (v.letter()) {
+                case X, Z, U, W, I, K, P, Q, R -> values.append(values.length() == 0 ? "" : " ").append(v);
+                default -> { }
+            }
+        }
+        String name = f.english().isEmpty() ? "" : Character.toLowerCase(f.english().charAt(0)) + f.english().substring(1);
+        if (values.length() == 0) {
+            out.report(new gcnc.diag.Diagnostic(Code.E700_MODE_ONLY, gcnc.diag.Severity.NOTE, w.span(),
+                    java.util.List.of(w.toString(), name)));
+        } else {
+            // the block's words are the mode's (G22's area), not a move of the modal G00/G01
+            if (d.oneShot == BlockDraft.NONE) {
+                d.oneShot = GRole.MODE_ONLY.number();
+                d.oneShotWord = w;
+            }
+            out.report(gcnc.diag.Diagnostic.warning(Code.E701_MODE_VALUES_NOT_CHECKED, w.span(), w, name, values));
+        }
     }
 
     @Override
@@ -45,6 +72,10 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
         } else if (f.role() == GRole.CSS) {
             d.next.css = true;
             d.g96 = w;
+        } else if (f.role() == GRole.MODE_ONLY) {
+            // G61/G64, G22/G23: the control's mode; every block gcnc writes ends at rest and the
+            // travel is the profile's, so the path is the same either way (docs/language.md)
+            modeOnly(w, d, f, out);
         }
     }
 }

@@ -42,7 +42,8 @@ public final class SyntaxActions {
             case SKIP -> 10;
             case EXACT_STOP -> 11;
             case RPM -> 13;
-            case NOSE_COMP_CANCEL, NOSE_COMP_LEFT, NOSE_COMP_RIGHT, CSS, CYCLE_CANCEL, PLANE_XY, PLANE_ZX, PLANE_YZ -> 14;
+            case NOSE_COMP_CANCEL, NOSE_COMP_LEFT, NOSE_COMP_RIGHT, CSS, CYCLE_CANCEL, PLANE_XY, PLANE_ZX, PLANE_YZ,
+                 MODE_ONLY -> 14;
             case MACHINE_COORDINATES -> 16;
             case UNSUPPORTED -> 17;
             // expanded before the syntax actions (gcnc.check.cycle): a cycle word met here is in a

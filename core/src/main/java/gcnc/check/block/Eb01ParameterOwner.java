@@ -14,7 +14,7 @@ import java.util.Set;
  * axis words with no motion in force are 44, a P with no function 32. Then Table 7, which was dead
  * code in the thesis (§12.1): X 21, Z 22, U 23, W 24, R 25, I 26, K 27, X with U 28, Z with W 29,
  * P 36. Each at the word to blame: 44 at the first axis word, 32 at the P. Emits E021-E029, E032,
- * E036, E044. Writes d.function.
+ * E036, E044; an M19's orientation angle P or R is the M19's (SpindleOrientAngle, E703). Writes d.function.
  */
 public final class Eb01ParameterOwner implements BlockCheck {
     private static final Letter[] ORDER = {Letter.X, Letter.Z, Letter.U, Letter.W, Letter.R, Letter.I, Letter.K};
@@ -30,6 +30,9 @@ public final class Eb01ParameterOwner implements BlockCheck {
 
     @Override
     public void run(BlockDraft d, Diagnostics out) {
+        if (SpindleOrientAngle.owns(d, out)) {
+            return; // Haas M19 P/R: the angle is the M19's (E703)
+        }
         int mov = d.motionWords();
         if (d.oneShot != BlockDraft.NONE) {
             d.function = d.oneShot;

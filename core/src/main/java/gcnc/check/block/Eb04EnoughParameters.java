@@ -29,8 +29,13 @@ public final class Eb04EnoughParameters implements BlockCheck {
                 }
             }
             case 28, 29, 53, 92 -> {
-                boolean bareHome = d.function == 28 && d.functions.control().bareG28Homes();
-                if (!axis && !bareHome) {
+                gcnc.machine.Control.BareG28 bare = d.function == 28 ? d.functions.control().bareG28()
+                        : gcnc.machine.Control.BareG28.ERROR;
+                if (!axis && bare == gcnc.machine.Control.BareG28.NOTHING) {
+                    // Fanuc: a G28 returns the axes it names; naming none moves nothing (no alarm)
+                    out.report(gcnc.diag.Diagnostic.warning(Code.E704_BARE_G28_MOVES_NOTHING, d.oneShotWord.span(),
+                            d.ownerName()));
+                } else if (!axis && bare == gcnc.machine.Control.BareG28.ERROR) {
                     d.fail(out, Code.E030_PARAMETER_EXPECTED, d.oneShotWord.span(), d.ownerName());
                 }
             }
