@@ -114,14 +114,14 @@ class CornerInsertionTest {
         }));
     }
 
-    /** The same contours compiled and replayed over a stub by the chuck (they finish roughed parts): clean, DMC as reviewed. */
+    /** The same contours compiled and replayed with no blank (they finish roughed parts; a blank would move G54 to its face): clean, DMC as reviewed. */
     @TestFactory
     Stream<DynamicTest> everyChamferedContourCompilesAndSimulatesClean() throws Exception {
         boolean update = Boolean.getBoolean("gcnc.updateGolden");
         return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             String name = p.getFileName().toString();
             gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile(name.split("\\.")[1]),
-                    "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults().withStock(new gcnc.sim.StockSize(10, 1, 1))), true);
+                    "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults().withoutBlank()), true);
             gcnc.Compiler.Result r;
             StringBuilder dmc = new StringBuilder();
             try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
