@@ -81,11 +81,15 @@ final class HoleDrilling {
         MachineProfile p = host.profile();
         double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
         boolean fanuc = p.control().fanucDrilling();
-        // Fanuc's Q counts least increments of input (IS-B), as G74/G75's P and Q do
+        // Fanuc's Q without a decimal point counts least increments of input (IS-B), as G74/G75's
+        // P and Q do; with a point it is a length in the program's unit, as the Fusion fanuc post
+        // writes it (Q2.5: docs/language.md), since a point is never read as increments
         double increment = u == Units.INCH ? 0.0001 : 0.001;
+        boolean qInIncrements = fanuc && b.words().stream()
+                .noneMatch(w -> w.letter() == Letter.Q && NumberText.hasPoint(w.number()));
         Word at = g;
-        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN, fanuc ? Set.of(Letter.Q) : Set.of(),
-                noPoint, increment, w -> isCycle(w), host.out());
+        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN,
+                qInIncrements ? Set.of(Letter.Q) : Set.of(), noPoint, increment, w -> isCycle(w), host.out());
         List<CheckedBlock> done = new ArrayList<>();
         List<Word> passOn = words != null ? words.passOn() : CycleBlocks.passOn(b, g, this::isCycle);
         CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
@@ -120,9 +124,11 @@ final class HoleDrilling {
         }
         double zOrigin = c.origin(start.next()).z();
         double holeBottom = newZ ? end.z() : bottom;
-        // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle starts) to it
+        // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle
+        // starts) to it, or with cycle.drill_r = absolute (parameter RAB) in G90 mode its Z
+        boolean rFromStart = fanuc && (!p.control().drillRAbsolute() || start.incremental());
         double plane = !words.has(Letter.R) ? g != null ? a.z() : rPlane
-                : (fanuc ? a.z() : zOrigin) + words.value(Letter.R) * perZ;
+                : (rFromStart ? a.z() : zOrigin) + words.value(Letter.R) * perZ;
         double eps = EPS_MM * p.z().countsPerMm();
         double toBottom = holeBottom - a.z();
         double toPlane = plane - a.z();
@@ -184,7 +190,8 @@ final class HoleDrilling {
                     words.has(Letter.Q) ? words.word(Letter.Q) : at, "more than " + MAX_PECKS, MAX_PECKS);
             return done;
         }
-        List<Move> moves = drill.plan(MAX_PECKS);
+        // Fanuc B/C G99: back to the R point after the hole; G98 (and Haas, Fanuc A): to the initial level
+        List<Move> moves = drill.plan(MAX_PECKS, start.returnToR());
         int bottomFeed = -1;
         for (int i = 0; i < moves.size(); i++) {
             if (moves.get(i).kind() == Move.Kind.FEED) {
@@ -206,7 +213,8 @@ final class HoleDrilling {
     /**
      * G84/G184 (Haas): a rapid to the hole's X, a rapid to the R plane, the tap fed to the bottom
      * (then the dwell P, if any), the spindle reversed (M04 after M03, M03 after M04), the tap fed
-     * back out to the R plane, the spindle turned back, a rapid to the start's Z. The feed is the F
+     * back out to the R plane, the spindle turned back, a rapid to the start's Z (not under Fanuc
+     * B/C G99: the tap stays at the R plane). The feed is the F
      * in force (G99: the lead; G98: lead x r/min): gcnc does not gear the tap to the spindle, so the
      * tap must sit in a floating holder (docs/cycles.md). E629 when the spindle turns against the
      * tap (M04 for G84, M03 for G184).
@@ -221,7 +229,9 @@ final class HoleDrilling {
         int in = moves.size();
         moves.add(Move.line(false, new Point(x, bottom), 1));
         moves.add(Move.line(false, new Point(x, rPlane), 1));
-        moves.add(Move.line(true, new Point(x, a.z()), 1));
+        if (!start.returnToR()) {
+            moves.add(Move.line(true, new Point(x, a.z()), 1)); // G98 (Haas, Fanuc A): the initial level
+        }
         int turning = start.spindle();
         boolean rightHand = modal.kind() == GRole.TAP_CYCLE;
         if (turning == (rightHand ? 4 : 3)) {
