@@ -270,7 +270,7 @@ class NoseCompensationTest {
     }
 
     /**
-     * Cycles under G41/G42 run: G71-G73 rough (E622: the control roughs the offset contour), G90/G94
+     * Cycles under G41/G42 run: G71-G73 rough (note E622: the control roughs the offset contour), G90/G94
      * (E623: it offsets each path), threads, peck and drilling cycles are not offset (E624). gcnc
      * makes their moves as programmed, the path before ending perpendicular, and starts the
      * compensation again with the next move. G31 stays an error (Fanuc alarm PS0035).
@@ -280,7 +280,9 @@ class NoseCompensationTest {
         Run g71 = Run.of("fanuc", HEAD + "G42 G00 X62. Z2.\nG71 U2. R0.5\n"
                 + "G71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nN20 G01 Z-10.\nG70 P10 Q20\nG40 G00 X60.\nM30\n");
         assertEquals("", errs(g71));
-        assertEquals("E622@7:1 [G71, G42]", codes(g71, gcnc.diag.Severity.WARNING));
+        // a note, not a warning: the program is right, gcnc's roughing model differs from the control's
+        assertEquals("", codes(g71, gcnc.diag.Severity.WARNING));
+        assertEquals("E622@7:1 [G71, G42]", codes(g71, gcnc.diag.Severity.NOTE));
         Run g90 = Run.of("fanuc", HEAD + "G42 G00 X32. Z2.\nG90 X28. Z-10. F0.2\nX26.\nG40 G00 X60.\nM30\n");
         assertEquals("", errs(g90));
         assertEquals("E623@6:1 [G90, G42]", codes(g90, gcnc.diag.Severity.WARNING));

@@ -65,11 +65,11 @@ enum Construct {
     CORNER_CHAMFER_RADIUS,
     /** lex: the DOS end-of-file byte (Ctrl-Z) after the closing '%' of a file sent from Windows. */
     DOS_EOF_BYTE,
-    /** comp: G71 roughing started under G42 (the contour carries the compensation). */
+    /** comp: G71 roughing started under G42 (the contour carries the compensation; note E622). */
     ROUGH_UNDER_G42,
-    /** comp: fanuc G83 face drilling, written by the fanuc post for deep-drilling (E110 today). */
+    /** comp, drill: fanuc G83 face drilling, written by the fanuc post for deep-drilling (Q2.5; fanuc B: G90 G98, R the R point's Z). */
     DRILL_G83_FANUC,
-    /** comp: G84 face tapping (haas G84 X0. Z R P F; fanuc M29 S, G84). */
+    /** comp, drill: G84 face tapping (haas G84 X0. Z R P F; fanuc M29 S, note E720, then G84). */
     TAP_G84,
     // --- the thread words the posts write that lang2 (issue 17) made gcnc accept
     /** fanuc onCyclePoint: G76 P with the chamfer rr = 10 (one lead), which the post always writes. */

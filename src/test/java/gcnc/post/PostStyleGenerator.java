@@ -44,9 +44,8 @@ final class PostStyleGenerator {
     /**
      * Constructs that do not check clean on this branch because another helper of issue 17 is
      * implementing them: the lead empties this set after merging (PostStyleTest fails for any
-     * construct here that has started to check clean, so it is not forgotten).
-     * lex: CORNER_CHAMFER_RADIUS; comp: ROUGH_UNDER_G42, DRILL_G83_FANUC, TAP_G84. (DOS_EOF_BYTE, the
-     * lex helper's, checks clean since lang2 stops reading at the closing '%', as a control does.)
+     * construct here that has started to check clean, so it is not forgotten). Empty since the
+     * lex, comp and drill work of issue 17 merged.
      */
     static final Set<Construct> PENDING = EnumSet.noneOf(Construct.class);
 

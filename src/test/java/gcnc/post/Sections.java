@@ -15,6 +15,8 @@ import java.util.Random;
 final class Sections {
     /** Clearance in front of the face and outside the blank (mm). */
     private static final double CLEAR = 2;
+    /** The initial level of a drilling or tapping cycle (the posts' cycle.clearance), above the R point at CLEAR. */
+    private static final double DRILL_CLEARANCE = 5;
 
     private final PostStyleGenerator g;
     private final Post post;
@@ -322,7 +324,10 @@ final class Sections {
         double depth = p.face() + pickInt(rnd, 5, 15);
         double peck = pickInt(rnd, 2, 4);
         int rpm = pickInt(rnd, 8, 12) * 100;
-        start(how == Construct.TAP_G84 ? "TAP" : "DRILL", post.haas() ? 5 : 2, false, rpm, 0, CLEAR);
+        // the cycle starts at the clearance height (the initial level) and feeds from the R point
+        // (the posts' cycle.clearance and cycle.retract)
+        start(how == Construct.TAP_G84 ? "TAP" : "DRILL", post.haas() ? 5 : 2, false, rpm, 0, DRILL_CLEARANCE);
+        String r = "R" + rPoint();
         String f = "F" + out.num(pickInt(rnd, 8, 15) / 100.0);
         switch (how) {
             case DRILL_G74 -> {
@@ -334,7 +339,7 @@ final class Sections {
                 }
             }
             case DRILL_G83_HAAS, DRILL_G83_FANUC -> {
-                out.block(post == Post.FANUC_B ? "G90 G98 G83" : "G83", out.x(0), out.z(-depth), "R" + out.num(CLEAR),
+                out.block(post == Post.FANUC_B ? "G90 G98 G83" : "G83", out.x(0), out.z(-depth), r,
                         "Q" + out.num(peck), f);
                 out.block("G80");
             }
@@ -343,13 +348,23 @@ final class Sections {
                 if (!post.haas()) {
                     out.block("M29", "S" + rpm);
                 }
-                out.block(post == Post.FANUC_B ? "G90 G98 G84" : "G84", out.x(0), out.z(-depth), "R" + out.num(CLEAR), "P0",
+                out.block(post == Post.FANUC_B ? "G90 G98 G84" : "G84", out.x(0), out.z(-depth), r, "P0",
                         "F" + out.num(pitch));
                 out.block("G80");
             }
         }
         out.block("G0", out.z(CLEAR));
         end(false, rpm);
+    }
+
+    /**
+     * The R word's value: the R point's Z as the posts write it (getCommonCycle: cycle.retract) on
+     * haas and fanuc-b (parameter RAB, cycle.drill_r = absolute); on fanuc-a the distance from the
+     * initial level to it, as the 0i-TF manual says R is read (docs/language.md: the post writes
+     * the Z there too).
+     */
+    private String rPoint() {
+        return out.num(post == Post.FANUC_A ? CLEAR - DRILL_CLEARANCE : CLEAR);
     }
 
     /** Part-off 1 mm behind the last zone: the blade's programmed point is its chuck-side corner, so it stands 4 mm behind. */

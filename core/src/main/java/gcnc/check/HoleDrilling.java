@@ -45,6 +45,8 @@ final class HoleDrilling {
     private final ModalCycle modal = new ModalCycle(f -> f.role().motion() || f.role().singleCycle());
     private double bottom;
     private double rPlane;
+    /** Fanuc: the initial level, the Z where the cycle in force was commanded (a repeat after G99 starts at the R point). */
+    private double initialZ;
     private double first;
     private double reduce;
     private double least;
@@ -81,11 +83,15 @@ final class HoleDrilling {
         MachineProfile p = host.profile();
         double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
         boolean fanuc = p.control().fanucDrilling();
-        // Fanuc's Q counts least increments of input (IS-B), as G74/G75's P and Q do
+        // Fanuc's Q without a decimal point counts least increments of input (IS-B), as G74/G75's
+        // P and Q do; with a point it is a length in the program's unit, as the Fusion fanuc post
+        // writes it (Q2.5: docs/language.md), since a point is never read as increments
         double increment = u == Units.INCH ? 0.0001 : 0.001;
+        boolean qInIncrements = fanuc && b.words().stream()
+                .noneMatch(w -> w.letter() == Letter.Q && NumberText.hasPoint(w.number()));
         Word at = g;
-        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN, fanuc ? Set.of(Letter.Q) : Set.of(),
-                noPoint, increment, w -> isCycle(w), host.out());
+        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN,
+                qInIncrements ? Set.of(Letter.Q) : Set.of(), noPoint, increment, w -> isCycle(w), host.out());
         List<CheckedBlock> done = new ArrayList<>();
         List<Word> passOn = words != null ? words.passOn() : CycleBlocks.passOn(b, g, this::isCycle);
         CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
@@ -120,9 +126,12 @@ final class HoleDrilling {
         }
         double zOrigin = c.origin(start.next()).z();
         double holeBottom = newZ ? end.z() : bottom;
-        // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle starts) to it
+        // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle
+        // starts) to it, or with cycle.drill_r = absolute (parameter RAB) in G90 mode its Z
+        boolean rFromStart = fanuc && (!p.control().drillRAbsolute() || start.incremental());
+        double initial = fanuc && g == null ? initialZ : a.z();
         double plane = !words.has(Letter.R) ? g != null ? a.z() : rPlane
-                : (fanuc ? a.z() : zOrigin) + words.value(Letter.R) * perZ;
+                : (rFromStart ? initial : zOrigin) + words.value(Letter.R) * perZ;
         double eps = EPS_MM * p.z().countsPerMm();
         double toBottom = holeBottom - a.z();
         double toPlane = plane - a.z();
@@ -138,6 +147,7 @@ final class HoleDrilling {
             return done;
         }
         if (g != null) {
+            initialZ = a.z();
             modal.start(role, function(g), label);
             first = Double.NaN;
             reduce = 0;
@@ -166,8 +176,10 @@ final class HoleDrilling {
             host.out().report(gcnc.diag.Diagnostic.warning(Code.E186_DRILL_OFF_CENTRE, x.span(), label,
                     NumberText.plain(holeX, 4)));
         }
+        // Fanuc B/C G99: back to the R point after the hole; G98 (and Haas, Fanuc A): to the initial level
+        double returnZ = start.returnToR() ? rPlane : initial;
         if (modal.kind().tapCycle()) {
-            done.addAll(tap(b, at, start, end.x(), label));
+            done.addAll(tap(b, at, start, end.x(), returnZ, label));
             return done;
         }
         double clearance = p.control().peckRetractMm();
@@ -184,7 +196,7 @@ final class HoleDrilling {
                     words.has(Letter.Q) ? words.word(Letter.Q) : at, "more than " + MAX_PECKS, MAX_PECKS);
             return done;
         }
-        List<Move> moves = drill.plan(MAX_PECKS);
+        List<Move> moves = drill.plan(MAX_PECKS, returnZ);
         int bottomFeed = -1;
         for (int i = 0; i < moves.size(); i++) {
             if (moves.get(i).kind() == Move.Kind.FEED) {
@@ -206,12 +218,13 @@ final class HoleDrilling {
     /**
      * G84/G184 (Haas): a rapid to the hole's X, a rapid to the R plane, the tap fed to the bottom
      * (then the dwell P, if any), the spindle reversed (M04 after M03, M03 after M04), the tap fed
-     * back out to the R plane, the spindle turned back, a rapid to the start's Z. The feed is the F
+     * back out to the R plane, the spindle turned back, a rapid to {@code returnZ}, the initial level
+     * (not under Fanuc B/C G99: the tap stays at the R plane). The feed is the F
      * in force (G99: the lead; G98: lead x r/min): gcnc does not gear the tap to the spindle, so the
      * tap must sit in a floating holder (docs/cycles.md). E629 when the spindle turns against the
      * tap (M04 for G84, M03 for G184).
      */
-    private List<CheckedBlock> tap(RawBlock b, Word at, ModalState start, double x, String label) {
+    private List<CheckedBlock> tap(RawBlock b, Word at, ModalState start, double x, double returnZ, String label) {
         Point a = start.position();
         List<Move> moves = new ArrayList<>(5);
         if (Math.abs(x - a.x()) > EPS_MM * host.profile().x().countsPerMm()) {
@@ -221,7 +234,9 @@ final class HoleDrilling {
         int in = moves.size();
         moves.add(Move.line(false, new Point(x, bottom), 1));
         moves.add(Move.line(false, new Point(x, rPlane), 1));
-        moves.add(Move.line(true, new Point(x, a.z()), 1));
+        if (Math.abs(returnZ - rPlane) > EPS_MM * host.profile().z().countsPerMm()) {
+            moves.add(Move.line(true, new Point(x, returnZ), 1)); // G98 (Haas, Fanuc A): the initial level
+        }
         int turning = start.spindle();
         boolean rightHand = modal.kind() == GRole.TAP_CYCLE;
         if (turning == (rightHand ? 4 : 3)) {
@@ -250,8 +265,8 @@ final class HoleDrilling {
     }
 
     /**
-     * Fanuc's words (G83, G84 on the spindle axis): C/H (C-axis positioning of live tooling), W (the
-     * bottom from the R point) and K other than 1 are not supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
+     * Fanuc's words (G83, G84 on the spindle axis): C/H (C-axis positioning of live tooling), W or
+     * G91 Z (the bottom from the R point) and K other than 1 are not supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
      * feed); P the dwell at the bottom, zero or more. False after the first error.
      */
     private boolean checkFanuc(CycleWords words, GRole role, String label) {
@@ -264,7 +279,9 @@ final class HoleDrilling {
             }
         }
         for (Word w : words.axes()) {
-            if (w.letter() == Letter.W) {
+            // W, or Z in G91 mode (system B): the distance from the R point to the bottom, not a move
+            // from where the tool stands as gcnc would read it
+            if (w.letter() == Letter.W || w.letter() == Letter.Z && host.state().incremental()) {
                 host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, w.span(), label, w, Phrase.DRILL_BOTTOM_W.arg());
                 return false;
             }

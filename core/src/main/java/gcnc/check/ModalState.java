@@ -34,11 +34,14 @@ import gcnc.machine.Units;
  * @param named        an O word was given
  * @param ended        M30 was given
  * @param nose         G40/G41/G42: tool nose radius compensation in force
+ * @param returnToR    Fanuc B/C G99 in force: a drilling or tapping cycle returns to the R point
+ *                     (else, G98, to the initial level where it started)
  */
 public record ModalState(int motion, Units units, boolean incremental, int workOffset, int tool, int toolOffset,
                          double feed, boolean feedPerRev, boolean css, double surfaceSpeed, double rpm,
                          double rpmClamp, int spindle, int chuck, Point position, Point shift, Point g28,
-                         long lastN, boolean named, boolean ended, NoseSide nose) {
+                         long lastN, boolean named, boolean ended, NoseSide nose,
+                         boolean returnToR) {
 
     /**
      * The state at cycle start: at home, with the control's power-up G codes, tool and offset,
@@ -49,7 +52,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         Control c = p.control();
         Next n = new ModalState(-1, p.units(), false, 54, c.powerUpTool(), c.powerUpOffset(), Double.NaN, false,
                 false, Double.NaN, Double.NaN, Double.NaN, -1, p.chuckByProgram() ? -1 : 11, p.home(), Point.ORIGIN,
-                null, -1, false, false, NoseSide.OFF).next();
+                null, -1, false, false, NoseSide.OFF, false).next();
         for (GFunction f : c.powerUp()) {
             n.set(f.role());
         }
@@ -87,6 +90,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         public boolean named;
         public boolean ended;
         public NoseSide nose;
+        public boolean returnToR;
 
         Next(ModalState s) {
             motion = s.motion;
@@ -110,6 +114,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
             named = s.named;
             ended = s.ended;
             nose = s.nose;
+            returnToR = s.returnToR;
         }
 
         /**
@@ -128,6 +133,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
                 case NOSE_COMP_CANCEL -> nose = NoseSide.OFF;
                 case NOSE_COMP_LEFT -> nose = NoseSide.LEFT;
                 case NOSE_COMP_RIGHT -> nose = NoseSide.RIGHT;
+                case CYCLE_RETURN_INITIAL, CYCLE_RETURN_R -> returnToR = r == GRole.CYCLE_RETURN_R;
                 default -> {
                 }
             }
@@ -144,7 +150,8 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
 
         public ModalState build() {
             return new ModalState(motion, units, incremental, workOffset, tool, toolOffset, feed, feedPerRev, css,
-                    surfaceSpeed, rpm, rpmClamp, spindle, chuck, position, shift, g28, lastN, named, ended, nose);
+                    surfaceSpeed, rpm, rpmClamp, spindle, chuck, position, shift, g28, lastN, named, ended, nose,
+                    returnToR);
         }
     }
 }

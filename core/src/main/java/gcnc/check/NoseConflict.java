@@ -8,6 +8,7 @@ import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
+import java.util.List;
 
 /**
  * What a block's functions do to the tool nose radius compensation in force
@@ -52,7 +53,7 @@ final class NoseConflict {
                  THREAD_SINGLE_CYCLE, THREAD_CYCLE -> Under.NOT_OFFSET;
             case RAPID, LINEAR, ARC_CW, ARC_CCW, DWELL, EXACT_STOP, PLANE_XY, PLANE_ZX, PLANE_YZ, INCH, METRIC,
                  NOSE_COMP_LEFT, NOSE_COMP_RIGHT, FINISHING_CYCLE, WORK_1, WORK_2, WORK_3, WORK_4, WORK_5,
-                 WORK_6, SET_OFFSETS, CYCLE_CANCEL, ABSOLUTE, INCREMENTAL, FEED_PER_MINUTE, FEED_PER_REV, CSS, RPM,
+                 WORK_6, SET_OFFSETS, CYCLE_CANCEL, CYCLE_RETURN_INITIAL, CYCLE_RETURN_R, ABSOLUTE, INCREMENTAL, FEED_PER_MINUTE, FEED_PER_REV, CSS, RPM,
                  UNSUPPORTED, MODE_ONLY -> Under.FOLLOWED;
         };
     }
@@ -131,7 +132,11 @@ final class NoseConflict {
             case SINGLE_CYCLE -> Code.E623_NOSE_SINGLE_CYCLE;
             default -> Code.E624_NOSE_NOT_OFFSET;
         };
-        out.report(Diagnostic.warning(c, at.span(), what, compensation));
+        // E622 is a note: the program is right and the control roughs as it should; the finding says
+        // what gcnc's model does differently (it roughs the programmed contour), not what to change
+        out.report(c == Code.E622_NOSE_ROUGHING_CYCLE
+                ? new Diagnostic(c, gcnc.diag.Severity.NOTE, at.span(), List.of(what, compensation))
+                : Diagnostic.warning(c, at.span(), what, compensation));
     }
 
     private static boolean cancels(RawBlock b, FunctionIndex functions) {

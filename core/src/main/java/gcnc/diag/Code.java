@@ -462,7 +462,10 @@ public enum Code {
     E620_NOSE_CANCELLED_FOR_THE_BLOCK(620),
     /** Nose compensation (warning): a T word under G41/G42; the new offset's nose applies from the next move. */
     E621_NOSE_TOOL_CHANGE(621),
-    /** Nose compensation (warning): G71/G72/G73 under G41/G42; the control roughs the offset contour. */
+    /**
+     * Nose compensation (note): G71/G72/G73 under G41/G42; the control roughs the offset contour,
+     * gcnc the programmed one. A note: the program is the Fusion posts' normal one and runs right.
+     */
     E622_NOSE_ROUGHING_CYCLE(622),
     /** Nose compensation (warning): G90/G94 under G41/G42; the control offsets each path of the cycle. */
     E623_NOSE_SINGLE_CYCLE(623),
@@ -564,7 +567,14 @@ public enum Code {
      * Text after the closing '%' (end of tape), which a control never reads (Fanuc and Haas stop
      * at it): not read by gcnc either, said once as a note at its first character.
      */
-    E705_AFTER_TAPE_END(705);
+    E705_AFTER_TAPE_END(705),
+
+    // --- drilling and tapping as the Fusion fanuc post writes them (issue 17, drill): E720-E729
+    /**
+     * Checker (note): M29, rigid tapping: the control gears the tap to the spindle; gcnc's G84
+     * feeds it at the F in force and reverses the spindle, as for a floating holder.
+     */
+    E720_RIGID_TAP_NOT_GEARED(720);
 
     private final int number;
 

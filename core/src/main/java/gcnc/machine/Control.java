@@ -51,6 +51,10 @@ import java.util.TreeMap;
  *                          distance from the initial level to the R point, Q the peck in least
  *                          increments, K the repeats; else Haas's (R the R plane's Z, Q a length,
  *                          I J K the pecks)
+ * @param drillRAbsolute    with Fanuc's words, R in absolute mode (G90) is the R point's Z, as the
+ *                          Fusion fanuc post writes it (parameter 5102#6 RAB, systems B and C);
+ *                          else R is the distance from the initial level (the 0i-TF manual's
+ *                          default, and always in incremental mode)
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
@@ -58,7 +62,7 @@ public record Control(String name, String description, Set<Letter> letters, Map<
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, BareG28 bareG28,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
                       double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners,
-                      boolean fanucDrilling) {
+                      boolean fanucDrilling, boolean drillRAbsolute) {
     /**
      * G01 chamfering and corner rounding (key {@code g01.corner}, docs/chamfer.md): none; Haas's
      * {@code ,C} and {@code ,R} at any angle, and I or K for a 90-degree chamfer; Fanuc T's

@@ -26,7 +26,7 @@ public final class ControlLoader {
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
             "cycle.peck_retract_mm", "cycle.pocket_allowance", "comments", "g01.corner",
-            "cycle.drill_words");
+            "cycle.drill_words", "cycle.drill_r");
 
     private ControlLoader() {
     }
@@ -98,7 +98,8 @@ public final class ControlLoader {
                 f.choice("cycle.pocket_allowance", "uniform", "uniform", "walls").equals("walls"),
                 f.choice("comments", "spanning", "spanning", "line").equals("line"),
                 Control.Corners.valueOf(f.choice("g01.corner", "none", "none", "comma", "letters").toUpperCase()),
-                f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"));
+                f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"),
+                f.choice("cycle.drill_r", "incremental", "incremental", "absolute").equals("absolute"));
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */

@@ -46,6 +46,13 @@ public enum GRole {
      */
     TAP_CYCLE(84), REVERSE_TAP_CYCLE(184),
     /**
+     * The return level of the drilling and tapping cycles (Fanuc system B/C G98, G99: a modal
+     * group of their own): after the hole the tool returns to the initial level (where the cycle
+     * started) or to the R point. The numbers are gcnc's own (G98/G99 are the feed modes of
+     * system A and Haas).
+     */
+    CYCLE_RETURN_INITIAL(-98), CYCLE_RETURN_R(-99),
+    /**
      * Threading, spindle-synchronised (docs/threading.md): G32 one pass (Fanuc B G33, modal in
      * group 1), G92 the single-pass thread cycle (Fanuc B G78, modal in group 1) and G76 the
      * multiple-pass thread cycle (one-shot). Expanded by the checker into thread passes; the numbers

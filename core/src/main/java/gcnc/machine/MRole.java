@@ -27,6 +27,12 @@ public enum MRole {
      * using it: the control runs it and gcnc drives nothing (note E649); a C word after one is E650.
      */
     AXIS_OPTION(-8),
+    /**
+     * Fanuc M29 (before G84): rigid tapping, the control gears the tap's feed to the spindle. gcnc's
+     * G84 feeds the tap at the F in force with the spindle reversed at the bottom, as a floating
+     * holder would be tapped: accepted with note E720, nothing driven for it.
+     */
+    RIGID_TAP(-9),
     /** A function gcnc cannot follow yet (Haas M97, live tooling): using it is E110. */
     UNSUPPORTED(-2);
 

@@ -10,7 +10,7 @@ import gcnc.machine.GRole;
  * Thesis §4.2.2 action 1: a modal G (motion, absolute/incremental, feed mode, units, work offset),
  * by what it does in the control (Fanuc B's G94 is the feed per minute of Fanuc A's G98). One G
  * per group per block: the thesis only checked group 1, gcnc checks all (reading §12.19).
- * Emits E016. Writes d.motionG, next.motion/incremental/feedPerRev/workOffset.
+ * Emits E016. Writes d.motionG, next.motion/incremental/feedPerRev/workOffset/returnToR.
  */
 public final class Sa01ModalG implements SyntaxAction {
     @Override

@@ -14,8 +14,9 @@ import gcnc.machine.MRole;
  * asks for it, the code never checked: §12.19). The chuck may not open while the spindle runs
  * (error 40, thesis §4.5; only a running spindle counts, not "never stopped"). The M goes to
  * {@code before} (moments 0, 1) or {@code after} (99) in source order (decision D2).
- * A C-axis or live-tool code (function {@code axis_option}) is a no-op with note E649.
- * Emits E016, E040, E649. Writes next.spindle, next.chuck, d.spindleBefore.
+ * A C-axis or live-tool code (function {@code axis_option}) is a no-op with note E649; Fanuc's
+ * M29 (function {@code rigid_tap}) one with note E720.
+ * Emits E016, E040, E649, E720. Writes next.spindle, next.chuck, d.spindleBefore.
  */
 public final class Sa12Miscellaneous implements SyntaxAction {
     @Override
@@ -37,8 +38,10 @@ public final class Sa12Miscellaneous implements SyntaxAction {
             d.fail(out, Code.E040_SPINDLE_RUNNING_CHUCK_OPEN, w.span());
             return;
         }
-        if (r == MRole.AXIS_OPTION) {
-            out.report(new gcnc.diag.Diagnostic(Code.E649_M_FOR_AXIS_NOT_USED, gcnc.diag.Severity.NOTE, w.span(),
+        if (r == MRole.AXIS_OPTION || r == MRole.RIGID_TAP) {
+            // the control runs it; what gcnc makes of it differs (no C axis; a tap not geared to the spindle)
+            out.report(new gcnc.diag.Diagnostic(r == MRole.AXIS_OPTION ? Code.E649_M_FOR_AXIS_NOT_USED
+                    : Code.E720_RIGID_TAP_NOT_GEARED, gcnc.diag.Severity.NOTE, w.span(),
                     java.util.List.of(Integer.toString(code))));
         }
         d.next.set(r);

@@ -33,7 +33,7 @@ public final class SyntaxActions {
     static int forG(GRole role) {
         return switch (role) {
             case RAPID, LINEAR, ARC_CW, ARC_CCW, INCH, METRIC, WORK_1, WORK_2, WORK_3, WORK_4, WORK_5, WORK_6,
-                 ABSOLUTE, INCREMENTAL, FEED_PER_MINUTE, FEED_PER_REV -> 1;
+                 ABSOLUTE, INCREMENTAL, FEED_PER_MINUTE, FEED_PER_REV, CYCLE_RETURN_INITIAL, CYCLE_RETURN_R -> 1;
             case DWELL -> 5;
             case HOME -> 6;
             case FROM_HOME -> 7;

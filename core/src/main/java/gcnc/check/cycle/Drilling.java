@@ -10,7 +10,8 @@ import java.util.List;
  * it is given), a rapid along Z to the R plane, the drill fed to the bottom, and a rapid back to
  * A's Z. A peck drill (G83) feeds one peck at a time, rapids back to the R plane after each (a
  * full retract, to clear the chips), and rapids down again to the clearance short of the depth
- * reached before feeding on. The pecks are {@code first}, then each {@code reduce} less, never
+ * reached before feeding on (Fanuc B/C G99: the last rapid ends at the R plane instead, {@link
+ * #plan(int, double)}). The pecks are {@code first}, then each {@code reduce} less, never
  * less than {@code least} (Haas I, J, K; Q alone is first = least, reduce = 0).
  *
  * @param start     A, where the tool is at the cycle block
@@ -45,8 +46,17 @@ public record Drilling(Point start, double x, double rPlane, double bottom, doub
         return reached;
     }
 
-    /** The moves; the index of the feed that reaches the bottom is the last FEED among them. */
+    /** The moves, back to A's Z; the index of the feed that reaches the bottom is the last FEED among them. */
     public List<Move> plan(int most) {
+        return plan(most, start.z());
+    }
+
+    /**
+     * The moves, the last a rapid back to {@code returnZ}: the R plane (Fanuc G99) or the initial
+     * level (G98, Haas: A's Z, or for a Fanuc hole drilled again after G99 the level the cycle
+     * started at).
+     */
+    public List<Move> plan(int most, double returnZ) {
         List<Move> moves = new ArrayList<>();
         double dir = Math.signum(bottom - rPlane);
         Point over = new Point(x, start.z());
@@ -69,7 +79,7 @@ public record Drilling(Point start, double x, double rPlane, double bottom, doub
             moves.add(Move.line(false, new Point(x, rPlane + dir * pecks.get(k)), 1));
             before = pecks.get(k);
         }
-        moves.add(Move.line(true, over, 1));
+        moves.add(Move.line(true, new Point(x, returnZ), 1));
         return moves;
     }
 }
