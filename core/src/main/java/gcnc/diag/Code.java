@@ -326,6 +326,13 @@ public enum Code {
     E208_GEAR_RATIO_RANGE(208),
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
+    // relsim's backend block (210-219)
+    /**
+     * Backend limit, also reported by check: the arc the Galil CR would run (radius in whole
+     * counts, angles to 4 decimals) strays from the programmed one by more than the simulator's
+     * tolerance, so compile would find the replay off the program (E308).
+     */
+    E210_ARC_CR_STRAYS(210),
 
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
@@ -379,16 +386,27 @@ public enum Code {
     E319_SIM_THREAD_UNSYNCHRONISED(319),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
+    // relsim's simulator block (330-339)
+    /** Checker warning: one cycle block expands into far more pecks or passes than its text suggests (a value without its decimal point). */
+    E330_CYCLE_MANY_PECKS(330),
+    /** Replay warning: the source map beside a DMC records another DMC (its hash differs): its lines are not used. */
+    E331_MAP_NOT_THIS_DMC(331),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
     E400_TABLE(400),
+    // relsim's profile block (410-414)
+    /** Profile: spindle.max_rpm needs more than the 10 V the OF output gives at spindle.rpm_per_volt: every compile at top speed would be E203. */
+    E410_SPINDLE_TOP_SPEED_VOLTS(410),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
     E501_OUTPUT_IS_INPUT(501),
     /** The output named is a directory (or {@code /}), not a file. */
-    E502_OUTPUT_IS_DIRECTORY(502);
+    E502_OUTPUT_IS_DIRECTORY(502),
+    // relsim's files block (510-514)
+    /** A side file gcnc writes unasked (the source map, OUT.map) is a symbolic link: gcnc does not write through it. */
+    E510_SIDE_FILE_IS_LINK(510);
 
     private final int number;
 

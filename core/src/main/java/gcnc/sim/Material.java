@@ -47,6 +47,8 @@ final class Material {
     private final double[] bounds;
     private final Geometry[] tiles;
     private final PreparedGeometry[] prepared;
+    /** Corners handed to JTS so far (each boolean and each preparation counts its tile's): the cost a test can bound. */
+    private long work;
 
     Material(GeometryFactory factory, double back, double face, double inner, double radius) {
         this.factory = factory;
@@ -77,6 +79,7 @@ final class Material {
 
     private PreparedGeometry prepared(int k) {
         if (prepared[k] == null) {
+            work += tiles[k].getNumPoints();
             prepared[k] = PreparedGeometryFactory.prepare(tiles[k]);
         }
         return prepared[k];
@@ -128,6 +131,7 @@ final class Material {
                 continue;
             }
             Geometry region = hit.size() == 1 ? hit.get(0) : UnaryUnionNG.union(factory.buildGeometry(hit), PM);
+            work += tiles[k].getNumPoints();
             tiles[k] = straighten(OverlayNG.overlay(tiles[k], region, OverlayNG.DIFFERENCE, PM));
             prepared[k] = null;
             first = Math.min(first, k);
@@ -142,6 +146,7 @@ final class Material {
         List<Geometry> pieces = new ArrayList<>();
         for (int k = s[0]; k <= s[1]; k++) {
             if (!tiles[k].isEmpty() && prepared(k).intersects(region)) {
+                work += tiles[k].getNumPoints();
                 Geometry piece = OverlayNG.overlay(tiles[k], region, OverlayNG.INTERSECTION, PM);
                 if (!piece.isEmpty()) {
                     pieces.add(piece);
@@ -191,6 +196,11 @@ final class Material {
 
     interface EdgeVisitor {
         void edge(Coordinate a, Coordinate b);
+    }
+
+    /** Corners handed to JTS so far (see {@link #work}). */
+    long work() {
+        return work;
     }
 
     /** How many corners the material has (for tests: a ragged stock stays bounded). */

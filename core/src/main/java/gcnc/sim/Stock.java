@@ -480,6 +480,11 @@ final class Stock {
         regroup(lo, hi);
     }
 
+    /** Corners handed to the polygon booleans so far: what a ragged stock costs, for tests to bound. */
+    long work() {
+        return material.work();
+    }
+
     /** How many corners the material's polygons have (the pending cuts taken first). */
     int corners() {
         settle();
