@@ -165,7 +165,9 @@ public enum Phrase {
     TOOL_AGAIN,
     TOOL_FROM_LIBRARY,
     POINT_LIST,
-    CONVEX;
+    CONVEX,
+    /** A simulator finding's place when the program's coordinates are not known (a DMC replayed by itself): {0} the DMC line. */
+    DMC_LINE;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';
