@@ -326,13 +326,6 @@ public enum Code {
     E208_GEAR_RATIO_RANGE(208),
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
-    // relsim's backend block (210-219)
-    /**
-     * Backend limit, also reported by check: the arc the Galil CR would run (radius in whole
-     * counts, angles to 4 decimals) strays from the programmed one by more than the simulator's
-     * tolerance, so compile would find the replay off the program (E308).
-     */
-    E210_ARC_CR_STRAYS(210),
 
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
