@@ -90,8 +90,9 @@ public final class AtomicOutput implements AutoCloseable {
     private boolean committed;
     /** The first write error, or null. */
     private IOException failure;
-    /** The SHA-256 of every byte written, for the source map to record which DMC it belongs to. */
+    /** The SHA-256 of every byte written once {@link #hashed} is called, for the source map to record which DMC it belongs to. */
     private final java.security.MessageDigest sha = sha256Digest();
+    private java.security.DigestOutputStream digesting;
     /** The target as it was before {@link #install} replaced it, kept until the whole commit is done. */
     private Path backup;
 
@@ -170,7 +171,9 @@ public final class AtomicOutput implements AutoCloseable {
 
     private OutputStream open(Opener opener) throws IOException {
         try {
-            return new java.security.DigestOutputStream(opener.open(temp), sha);
+            digesting = new java.security.DigestOutputStream(opener.open(temp), sha);
+            digesting.on(false); // only a DMC with a map is hashed (see hashed())
+            return digesting;
         } catch (IOException | RuntimeException e) {
             TempFiles.delete(temp);
             throw e;
@@ -303,8 +306,13 @@ public final class AtomicOutput implements AutoCloseable {
         commitAll(this);
     }
 
+    /** From now on every byte written is hashed ({@link #sha256()}); call it before the first line. */
+    public void hashed() {
+        digesting.on(true);
+    }
+
     /**
-     * The SHA-256 of what was written, in lowercase hex; ends the temporary file (no line may follow),
+     * The SHA-256 of what was written since {@link #hashed}, in lowercase hex; ends the temporary file (no line may follow),
      * so a write failure is thrown here as at commit.
      */
     public String sha256() throws IOException {

@@ -95,7 +95,9 @@ public final class DmcOutputs implements AutoCloseable {
             throw new Failed(mapPath, new AtomicOutput.Refused(gcnc.diag.Code.E510_SIDE_FILE_IS_LINK, mapPath.toString()));
         }
         try {
-            return new DmcOutputs(dmc, new AtomicOutput(mapPath), null);
+            AtomicOutput map = new AtomicOutput(mapPath);
+            dmc.hashed(); // the map's last line records it
+            return new DmcOutputs(dmc, map, null);
         } catch (IOException e) {
             discard(dmc);
             throw new Failed(mapPath, e);
@@ -133,15 +135,16 @@ public final class DmcOutputs implements AutoCloseable {
     }
 
     /**
-     * The map's head: the G-code file's name ({@code # source <name>}) and, when it is a file that
-     * can be read, its SHA-256 ({@code # source sha256 <hex>}); nothing when there is no map.
+     * The map's head: the G-code file's name ({@code # source <name>}) and, when it is a regular
+     * file that can be read, its SHA-256 ({@code # source sha256 <hex>}); nothing when there is no map.
      */
     public void mapSource(String name, Path program) {
         if (map == null) {
             return;
         }
         map.line(gcnc.galil.SourceMap.sourceLine(name));
-        if (program != null) {
+        // a regular file only: a named pipe would be drained here and the compile would wait for it forever
+        if (program != null && Files.isRegularFile(program)) {
             try {
                 map.line(gcnc.galil.SourceMap.SOURCE_HASH + sha256(program));
             } catch (IOException e) {
