@@ -273,7 +273,10 @@ class CliTest {
         // The side map is a line-number table: header from no block, then a run per emitting block.
         List<String> map = Files.readAllLines(p.resolveSibling("part.dmc.map"));
         assertEquals("# source part.nc", map.get(0), "the map names the G-code file");
-        map = map.subList(1, map.size());
+        // then the G-code file's SHA-256, and last the DMC's: the map belongs to this DMC (SideFilesTest)
+        assertTrue(map.get(1).startsWith("# source sha256 "), map.get(1));
+        assertTrue(map.get(map.size() - 1).startsWith("# dmc sha256 "), map.get(map.size() - 1));
+        map = map.subList(2, map.size() - 1);
         assertEquals("1 0", map.get(0), "DMC lines 1-5 are the header");
         assertEquals("6 4", map.get(1), "DMC line 6 (CB4) comes from G-code line 4 (N30 M11)");
         assertEquals(text.lines().count() + " 0", map.get(map.size() - 1), "the last line, EN, is the footer");

@@ -49,9 +49,11 @@ final class CompileCommand extends RunCommand {
         MachineProfile profile = setup.profile();
         Reporter reporter = setup.reporter();
         boolean toStdout = output != null && SourceFiles.isStdin(output);
-        refuseUsage(reporter.format(), toStdout);
+        // -o /dev/stdout (or the file stdout goes to) is standard output too: the DMC alone on it
+        boolean stdoutTaken = output != null && SourceFiles.isStandardOutput(output);
+        refuseUsage(reporter.format(), stdoutTaken);
         Optional<SimOptions> sim = simulation(profile, err, reporter.phrases());
-        if (toStdout) {
+        if (stdoutTaken) {
             reporter.stdoutTaken();
         }
         Path target = output != null ? output : DmcOutputs.defaultOutput(file);
@@ -66,7 +68,7 @@ final class CompileCommand extends RunCommand {
         }
         try (outputs) {
             SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
-            outputs.mapLine(SourceMap.sourceLine(SourceFiles.isStdin(file) ? name : file.getFileName().toString()));
+            outputs.mapSource(SourceFiles.isStdin(file) ? name : file.getFileName().toString(), SourceFiles.fileOf(file));
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
@@ -97,7 +99,7 @@ final class CompileCommand extends RunCommand {
     /** Combinations that cannot work, refused before anything is read or written. */
     private void refuseUsage(Reporter.Format format, boolean toStdout) {
         if (toStdout && format != Reporter.Format.GNU) {
-            throw new ParameterException(spec.commandLine(), "-o - and --format "
+            throw new ParameterException(spec.commandLine(), "-o " + output + " and --format "
                     + format.name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name an output file");
         }
         if (output == null && SourceFiles.isStdin(file)) {

@@ -87,7 +87,7 @@ final class SimulateCommand extends RunCommand {
         try (Reader in = SourceFiles.open(file, streams().in())) {
             if (file.toString().endsWith(".dmc")) {
                 diags = new Diagnostics();
-                gcnc.galil.SourceMap.Table map = sourceMap(file);
+                gcnc.galil.SourceMap.Table map = sourceMap(file, diags);
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
                         map == null ? null : map.lines()));
                 if (map != null) {
@@ -125,8 +125,13 @@ final class SimulateCommand extends RunCommand {
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
     }
 
-    /** The source map beside a .dmc ({@code OUT.dmc.map}, as compile writes it), or null when there is none or it cannot be read. */
-    private static gcnc.galil.SourceMap.Table sourceMap(Path dmc) {
+    /**
+     * The source map beside a .dmc ({@code OUT.dmc.map}, as compile writes it), or null when there
+     * is none or it cannot be read; also null, with warning E331 at the DMC's first line, when the
+     * map does not record this DMC's SHA-256 (another program's map, one left by an earlier compile,
+     * or one from before maps recorded it): its lines would blame the wrong G-code lines.
+     */
+    private static gcnc.galil.SourceMap.Table sourceMap(Path dmc, Diagnostics diags) {
         if (SourceFiles.isStdin(dmc)) {
             return null;
         }
@@ -134,10 +139,19 @@ final class SimulateCommand extends RunCommand {
         if (!java.nio.file.Files.isRegularFile(map)) {
             return null;
         }
+        gcnc.galil.SourceMap.Table table;
+        String sha;
         try (BufferedReader r = java.nio.file.Files.newBufferedReader(map)) {
-            return gcnc.galil.SourceMap.read(r);
+            table = gcnc.galil.SourceMap.read(r);
+            sha = gcnc.output.AtomicOutput.sha256(dmc);
         } catch (IOException | java.io.UncheckedIOException e) {
             return null; // located at DMC lines instead
         }
+        if (!table.belongsTo(sha)) {
+            diags.report(gcnc.diag.Diagnostic.warning(gcnc.diag.Code.E331_MAP_NOT_THIS_DMC, gcnc.diag.Span.of(1, 1),
+                    map.toString(), sha.substring(0, 12)));
+            return null;
+        }
+        return table;
     }
 }

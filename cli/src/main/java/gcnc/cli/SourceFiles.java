@@ -22,6 +22,24 @@ final class SourceFiles {
         return file.toString().equals(STDIN);
     }
 
+    /**
+     * Whether an output path is this process's standard output under another name: {@code -},
+     * {@code /dev/stdout}, {@code /dev/fd/1}, or the very file standard output is redirected to
+     * ({@code gcnc compile p.nc -o log > log}). Then standard output carries the program and the
+     * summaries go to standard error, as for {@code -o -}.
+     */
+    static boolean isStandardOutput(Path output) {
+        if (isStdin(output)) {
+            return true;
+        }
+        Path stdout = Path.of("/proc/self/fd/1");
+        try {
+            return Files.exists(output) && Files.exists(stdout) && Files.isSameFile(output, stdout);
+        } catch (java.io.IOException | SecurityException e) {
+            return false; // cannot tell: the summary stays where it was
+        }
+    }
+
     /** The program's file, or null for standard input (which has none to compare outputs with). */
     static Path fileOf(Path file) {
         return isStdin(file) ? null : file;

@@ -165,6 +165,7 @@ final class Grooving {
                     ? words.word(peckL) : words.word(stepL), pecks, MAX_PECKS);
             return done;
         }
+        Expansion.warnIfMany(host, name, words.word(peckL) != null ? words.word(peckL) : words.word(stepL), pecks);
         Pecking.Plan moves = plan.plan();
         done.addAll(CycleBlocks.write(host, name, b.line(), g.span(), moves.moves(), moves.passes(), start,
                 -1, null));

@@ -196,6 +196,7 @@ final class HoleDrilling {
                     words.has(Letter.Q) ? words.word(Letter.Q) : at, "more than " + MAX_PECKS, MAX_PECKS);
             return done;
         }
+        Expansion.warnIfMany(host, label, words.has(Letter.Q) ? words.word(Letter.Q) : at, pecks);
         List<Move> moves = drill.plan(MAX_PECKS, returnZ);
         int bottomFeed = -1;
         for (int i = 0; i < moves.size(); i++) {

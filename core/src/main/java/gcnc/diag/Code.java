@@ -396,6 +396,10 @@ public enum Code {
     E322_SIM_STATION_TIP_ONLY(322),
     /** A drill, centre drill or tap meets material with an edge that does not cut: moved sideways, or a tap into solid material. */
     E323_SIM_AXIAL_TOOL_SIDEWAYS(323),
+    /** Checker warning: one cycle block expands into far more pecks or passes than its text suggests (a value without its decimal point). */
+    E330_CYCLE_MANY_PECKS(330),
+    /** Replay warning: the source map beside a DMC records another DMC (its hash differs): its lines are not used. */
+    E331_MAP_NOT_THIS_DMC(331),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
@@ -408,6 +412,8 @@ public enum Code {
     E403_PROFILE_COUNTS_OVERFLOW(403),
     /** A table, control or profile file larger than gcnc reads (a link to a device, a file of another kind). */
     E404_TABLE_FILE_TOO_LARGE(404),
+    /** Profile: spindle.max_rpm needs more than the 10 V the OF output gives at spindle.rpm_per_volt: every compile at top speed would be E203. */
+    E410_SPINDLE_TOP_SPEED_VOLTS(410),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
@@ -420,6 +426,8 @@ public enum Code {
     E504_TEXT_TOO_LONG(504),
     /** The file a call would read (O1000.nc) is a directory or a device, not a program file. */
     E505_CALLED_NOT_A_FILE(505),
+    /** A side file gcnc writes unasked (the source map, OUT.map) is a symbolic link: gcnc does not write through it. */
+    E510_SIDE_FILE_IS_LINK(510),
 
     // 600-619: the parser's leniency and G01 chamfering and corner rounding (issue 17).
     /** Parser: a space inside a number (X10 5 reads as X105; not warned in a T word, T1 01). */

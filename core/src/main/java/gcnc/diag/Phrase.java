@@ -179,7 +179,9 @@ public enum Phrase {
     UNKNOWN_KEY_STATION,
     TOOL_ASSUMED,
     TOOLS_FILE_MISSING,
-    TOOLS_FILE_KEYS;
+    TOOLS_FILE_KEYS,
+    /** A simulator finding's place when the program's coordinates are not known (a DMC replayed by itself): {0} the DMC line. */
+    DMC_LINE;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

@@ -54,6 +54,29 @@ public final class ArcPlanner {
     private ArcPlanner() {
     }
 
+    /** An arc the galil dialect writes toward the whole-count target (tu, tv): its CR, or null when no printable arc ends there (E202). */
+    public record Written(long tu, long tv, Cr cr) {
+    }
+
+    /**
+     * What the galil dialect writes for an arc from the controller's whole-count position
+     * (posU, posV): null when it writes a straight move to the end count instead (the arc stays
+     * within a count of where it starts: a CR would sweep 0, or draw a circle of a whole count
+     * where the program has a smaller one); else the planned CR. The backend and check's
+     * prediction of the replay ({@code gcnc.sim.ArcVerdict}) both decide here, so they cannot differ.
+     */
+    public static Written forMotion(GalilFrame frame, long posU, long posV, gcnc.ir.Motion.Arc m) {
+        long tu = GalilNumbers.round(frame.u(m.to()));
+        long tv = GalilNumbers.round(frame.v(m.to()));
+        gcnc.ir.Point c = m.centre();
+        double sweep = frame.handedness() * gcnc.ir.ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
+        if (2 * m.radius() < 1 || tu == posU && tv == posV && Math.abs(sweep) <= 180) {
+            return null;
+        }
+        return new Written(tu, tv, plan(posU, posV, tu, tv, new Intended(frame.u(m.from()), frame.v(m.from()),
+                frame.u(c), frame.v(c), m.radius(), sweep)));
+    }
+
     /**
      * @param su,sv  where the sequence starts (the controller's whole-count position)
      * @param eu,ev  where the arc must end

@@ -152,17 +152,12 @@ final class GalilDialect implements Dialect {
         if (!inRange(b, "CR", tu) || !inRange(b, "CR", tv) || !inRange(b, "CR", GalilNumbers.round(m.radius()))) {
             return;
         }
-        Point c = m.centre();
-        double sweep = frame.handedness() * ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
-        if (2 * m.radius() < 1 || tu == posU && tv == posV && Math.abs(sweep) <= 180) {
-            // The arc stays within a count of where it starts: a straight move to its end count,
-            // or none (a CR would sweep 0, or draw a circle of a whole count where the program
-            // has a smaller one).
+        ArcPlanner.Written written = ArcPlanner.forMotion(frame, posU, posV, m);
+        if (written == null) {
             straight(b, m.to(), m.feed(), out);
             return;
         }
-        ArcPlanner.Cr cr = ArcPlanner.plan(posU, posV, tu, tv, new ArcPlanner.Intended(frame.u(m.from()),
-                frame.v(m.from()), frame.u(c), frame.v(c), m.radius(), sweep));
+        ArcPlanner.Cr cr = written.cr();
         if (cr == null) {
             diagnostics.error(Code.E202_ARC_NOT_REPRESENTABLE, at(b), GalilNumbers.round(m.radius()));
             return;

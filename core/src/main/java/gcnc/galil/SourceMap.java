@@ -50,6 +50,11 @@ public final class SourceMap {
         return dmcLines;
     }
 
+    /** What the map's last line starts with, before the SHA-256 of the DMC it was written with (hex). */
+    public static final String DMC_HASH = "# dmc sha256 ";
+    /** What the map's second line starts with, before the G-code file's SHA-256 (hex). */
+    public static final String SOURCE_HASH = "# source sha256 ";
+
     /** The first line of a map file: the G-code file the DMC was compiled from. */
     public static String sourceLine(String fileName) {
         return "# source " + fileName;
@@ -57,16 +62,27 @@ public final class SourceMap {
 
     /**
      * A map file read back: the G-code line of each DMC line (0 where a run came from no block,
-     * or before the first entry), and the G-code file's name when the map names it.
+     * or before the first entry), the G-code file's name when the map names it, and the SHA-256 of
+     * the DMC it was written with (none in a map of gcnc before 2026-11: it cannot be trusted).
      */
-    public record Table(java.util.function.IntUnaryOperator lines, java.util.Optional<String> source) {
+    public record Table(java.util.function.IntUnaryOperator lines, java.util.Optional<String> source,
+                        java.util.Optional<String> dmcSha256) {
+        /** Whether the map was written with the DMC of this SHA-256 (lowercase hex). */
+        public boolean belongsTo(String sha256) {
+            return dmcSha256.map(sha256::equals).orElse(false);
+        }
     }
 
-    /** Reads a map file back; lines that are neither an entry nor {@code # source} are skipped. */
+    /** Reads a map file back; lines that are neither an entry, {@code # source} nor {@code # dmc sha256} are skipped. */
     public static Table read(java.io.BufferedReader in) throws java.io.IOException {
         java.util.List<int[]> runs = new java.util.ArrayList<>();
         String source = null;
+        String dmc = null;
         for (String l = in.readLine(); l != null; l = in.readLine()) {
+            if (l.startsWith(DMC_HASH)) {
+                dmc = l.substring(DMC_HASH.length()).strip();
+                continue;
+            }
             if (l.startsWith("# source ") && source == null) {
                 source = l.substring("# source ".length());
                 continue;
@@ -86,7 +102,7 @@ public final class SourceMap {
             int i = java.util.Arrays.binarySearch(start, dmcLine);
             int run = i >= 0 ? i : -i - 2;
             return run < 0 ? 0 : from[run];
-        }, java.util.Optional.ofNullable(source));
+        }, java.util.Optional.ofNullable(source), java.util.Optional.ofNullable(dmc));
     }
 
     private static boolean number(String s) {

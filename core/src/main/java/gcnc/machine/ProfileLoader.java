@@ -112,6 +112,11 @@ public final class ProfileLoader {
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
         lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
         MachineModel model = MachineModel.read(f);
+        if (!c.name().equals("thesis-2004")) {
+            // the thesis's 2004 record writes OF S/300 unclamped for its G50 S5000 (Table 5.2): a
+            // record to reproduce, not a drive to configure (its galil compiles still get E203)
+            spindleReachesTopSpeed(f);
+        }
         return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
@@ -124,6 +129,27 @@ public final class ProfileLoader {
                 workOffsets(f, counts, x, z, model), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
                 machineZero, chuckByProgram, model, encoder(f, x, z),
                 noses(f, counts, x), threadChamfer(f));
+    }
+
+    /** The most volts the OF output gives (Galil's +-10 V analog output; the backend clamps 9.998..10 with E204). */
+    private static final double OF_VOLTS = 10.0;
+
+    /**
+     * A profile whose own top speed its spindle drive could not be given: {@code spindle.max_rpm}
+     * over {@code spindle.rpm_per_volt} is more than the OF output's 10 V, so every program that
+     * runs the spindle at the machine's top speed would be E203 at compile, after passing check
+     * (E410 at rpm_per_volt's line).
+     */
+    private static void spindleReachesTopSpeed(ProfileFile f) throws TableException {
+        double max = f.positive("spindle.max_rpm");
+        double gain = f.positive("spindle.rpm_per_volt");
+        if (max / gain > OF_VOLTS) {
+            ProfileFile.Entry e = f.required("spindle.rpm_per_volt");
+            throw new TableException(f.path(), gcnc.diag.Diagnostic.error(gcnc.diag.Code.E410_SPINDLE_TOP_SPEED_VOLTS,
+                    gcnc.diag.Span.of(e.line(), e.column()), ProfileFile.written(max),
+                    ProfileFile.written(Math.rint(max / gain * 1000) / 1000), ProfileFile.written(gain),
+                    ProfileFile.written(Math.ceil(max / OF_VOLTS * 1000) / 1000)));
+        }
     }
 
     /**

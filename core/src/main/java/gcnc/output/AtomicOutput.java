@@ -90,6 +90,9 @@ public final class AtomicOutput implements AutoCloseable {
     private boolean committed;
     /** The first write error, or null. */
     private IOException failure;
+    /** The SHA-256 of every byte written once {@link #hashed} is called, for the source map to record which DMC it belongs to. */
+    private final java.security.MessageDigest sha = sha256Digest();
+    private java.security.DigestOutputStream digesting;
     /** The target as it was before {@link #install} replaced it, kept until the whole commit is done. */
     private Path backup;
 
@@ -168,7 +171,9 @@ public final class AtomicOutput implements AutoCloseable {
 
     private OutputStream open(Opener opener) throws IOException {
         try {
-            return opener.open(temp);
+            digesting = new java.security.DigestOutputStream(opener.open(temp), sha);
+            digesting.on(false); // only a DMC with a map is hashed (see hashed())
+            return digesting;
         } catch (IOException | RuntimeException e) {
             TempFiles.delete(temp);
             throw e;
@@ -299,6 +304,48 @@ public final class AtomicOutput implements AutoCloseable {
 
     public void commit() throws IOException {
         commitAll(this);
+    }
+
+    /** From now on every byte written is hashed ({@link #sha256()}); call it before the first line. */
+    public void hashed() {
+        digesting.on(true);
+    }
+
+    /**
+     * The SHA-256 of what was written since {@link #hashed}, in lowercase hex; ends the temporary file (no line may follow),
+     * so a write failure is thrown here as at commit.
+     */
+    public String sha256() throws IOException {
+        finish();
+        return hex(sha.digest());
+    }
+
+    /** The SHA-256 of a file's bytes, in lowercase hex. */
+    public static String sha256(Path file) throws IOException {
+        java.security.MessageDigest d = sha256Digest();
+        try (java.io.InputStream in = Files.newInputStream(file)) {
+            byte[] b = new byte[1 << 16];
+            for (int n = in.read(b); n >= 0; n = in.read(b)) {
+                d.update(b, 0, n);
+            }
+        }
+        return hex(d.digest());
+    }
+
+    private static java.security.MessageDigest sha256Digest() {
+        try {
+            return java.security.MessageDigest.getInstance("SHA-256");
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java platform has SHA-256", e);
+        }
+    }
+
+    private static String hex(byte[] bytes) {
+        StringBuilder b = new StringBuilder(bytes.length * 2);
+        for (byte x : bytes) {
+            b.append(Character.forDigit((x >> 4) & 15, 16)).append(Character.forDigit(x & 15, 16));
+        }
+        return b.toString();
     }
 
     /**

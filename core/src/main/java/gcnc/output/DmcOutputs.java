@@ -2,14 +2,27 @@ package gcnc.output;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 
 /**
  * What {@code compile} writes: the DMC program and, beside a regular file, its source map
  * ({@code part.dmc.map}); opened together, committed together (both replaced or neither) and
  * discarded together. Every front end that writes a DMC (the command line, the Gradle plugin)
  * writes it through this, so none of them can leave a half-written program or a map that belongs
- * to another DMC behind.
+ * to another DMC behind:
+ * <ul>
+ *   <li>the map's last line records the SHA-256 of the DMC it was written with
+ *       ({@code # dmc sha256 <hex>}), so a replay can tell a map of another DMC (E331);</li>
+ *   <li>a compile that writes no map (--source-map puts the lines in the DMC) removes the map an
+ *       earlier compile left beside the same DMC, in the same commit: it is moved aside before the
+ *       DMC is put in place and back if that fails;</li>
+ *   <li>the map is a file the user never named: when its name is a symbolic link, gcnc does not
+ *       write through it (E510), since whoever planted the link would choose the file a compile
+ *       replaces. The DMC itself, named with -o, is written through a link as named.</li>
+ * </ul>
  */
 public final class DmcOutputs implements AutoCloseable {
     /** An output that could not be opened, and which one. */
@@ -36,16 +49,19 @@ public final class DmcOutputs implements AutoCloseable {
 
     private final AtomicOutput dmc;
     private final AtomicOutput map;
+    /** A map an earlier compile left beside the DMC, removed when this one is committed without a map; or null. */
+    private final Path stale;
 
-    private DmcOutputs(AtomicOutput dmc, AtomicOutput map) {
+    private DmcOutputs(AtomicOutput dmc, AtomicOutput map, Path stale) {
         this.dmc = dmc;
         this.map = map;
+        this.stale = stale;
     }
 
     /** The DMC alone into a stream (standard output for {@code -o -}), once committed. */
     public static DmcOutputs toStream(OutputStream stream) throws Failed {
         try {
-            return new DmcOutputs(AtomicOutput.toStream(stream), null);
+            return new DmcOutputs(AtomicOutput.toStream(stream), null, null);
         } catch (IOException e) {
             throw new Failed("<stdout>", e);
         }
@@ -68,11 +84,20 @@ public final class DmcOutputs implements AutoCloseable {
         } catch (IOException e) {
             throw new Failed(target, e);
         }
-        if (!withMap || !dmc.replacesFile()) {
-            return new DmcOutputs(dmc, null);
+        boolean beside = dmc.replacesFile();
+        if (!withMap || !beside) {
+            // a map left by an earlier compile of this DMC would be believed by a replay: it goes
+            Path stale = beside && Files.exists(mapPath, LinkOption.NOFOLLOW_LINKS) ? mapPath : null;
+            return new DmcOutputs(dmc, null, stale);
+        }
+        if (Files.isSymbolicLink(mapPath)) {
+            discard(dmc);
+            throw new Failed(mapPath, new AtomicOutput.Refused(gcnc.diag.Code.E510_SIDE_FILE_IS_LINK, mapPath.toString()));
         }
         try {
-            return new DmcOutputs(dmc, new AtomicOutput(mapPath));
+            AtomicOutput map = new AtomicOutput(mapPath);
+            dmc.hashed(); // the map's last line records it
+            return new DmcOutputs(dmc, map, null);
         } catch (IOException e) {
             discard(dmc);
             throw new Failed(mapPath, e);
@@ -109,6 +134,25 @@ public final class DmcOutputs implements AutoCloseable {
         }
     }
 
+    /**
+     * The map's head: the G-code file's name ({@code # source <name>}) and, when it is a regular
+     * file that can be read, its SHA-256 ({@code # source sha256 <hex>}); nothing when there is no map.
+     */
+    public void mapSource(String name, Path program) {
+        if (map == null) {
+            return;
+        }
+        map.line(gcnc.galil.SourceMap.sourceLine(name));
+        // a regular file only: a named pipe would be drained here and the compile would wait for it forever
+        if (program != null && Files.isRegularFile(program)) {
+            try {
+                map.line(gcnc.galil.SourceMap.SOURCE_HASH + sha256(program));
+            } catch (IOException e) {
+                // the program was read a moment ago; without its hash the map still names it
+            }
+        }
+    }
+
     /** Adds a map entry "{@code <dmc line> <source line>}"; nothing when there is no map. */
     public void mapEntry(int dmcLine, int sourceLine) {
         if (map != null) {
@@ -116,13 +160,45 @@ public final class DmcOutputs implements AutoCloseable {
         }
     }
 
-    /** Puts both in place, or neither: a failure of the second undoes the first. */
+    /**
+     * Puts both in place, or neither: a failure of the second undoes the first. The map ends with
+     * the DMC's SHA-256; without a map, a stale one beside the DMC is removed with the commit.
+     */
     public void commit() throws IOException {
         if (map != null) {
+            map.line(gcnc.galil.SourceMap.DMC_HASH + dmc.sha256());
             AtomicOutput.commitAll(dmc, map);
+        } else if (stale != null) {
+            commitRemovingStale();
         } else {
             dmc.commit();
         }
+    }
+
+    /**
+     * The stale map moved aside (the link itself, if it is one: never what it points to), the DMC
+     * put in place, then the aside copy deleted; if the DMC cannot be put in place the map comes back.
+     */
+    private void commitRemovingStale() throws IOException {
+        Path aside = TempFiles.create(stale.toAbsolutePath().getParent(), "." + stale.getFileName(), ".stale");
+        Files.move(stale, aside, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        try {
+            dmc.commit();
+        } catch (IOException | RuntimeException e) {
+            try {
+                Files.move(aside, stale, StandardCopyOption.ATOMIC_MOVE);
+                TempFiles.forget(aside);
+            } catch (IOException | RuntimeException u) {
+                e.addSuppressed(u);
+            }
+            throw e;
+        }
+        TempFiles.delete(aside);
+    }
+
+    /** The SHA-256 of a file (a G-code program, for its map's {@code # source sha256} line), lowercase hex. */
+    public static String sha256(Path file) throws IOException {
+        return AtomicOutput.sha256(file);
     }
 
     /** Removes what was not committed; a temporary file that cannot be removed is no reason to fail the run. */

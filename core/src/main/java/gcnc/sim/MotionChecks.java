@@ -169,6 +169,13 @@ final class MotionChecks {
         frame = f;
     }
 
+    /** The number of the DMC line being replayed (a finding without a program frame is placed by it). */
+    private int dmcLine;
+
+    void dmcLine(int n) {
+        dmcLine = n;
+    }
+
     void selectTool(int n) {
         tool = n;
         toolShape = machine.tool(n);
@@ -452,14 +459,16 @@ final class MotionChecks {
     /**
      * The finding, at machine position p = {x, z} (counts), with its place kept for the SVG: after
      * the lead arguments, where it is as the program writes it (X as a diameter, Z from work zero,
-     * "?" when the program frame is not known), the block's N word ("N110; " or ""), and the
-     * machine position in mm.
+     * the DMC's line when the program frame is not known), the block's N word ("N110; " or ""), and the
+     * machine position in mm. Without the program frame (a DMC replayed by itself: the work offsets
+     * are not in it) the place is the DMC's line, "DMC line 57", whatever line the finding is
+     * reported at (a source map's G-code line).
      */
     private void mark(Code code, int line, double[] p, Object... lead) {
         Object[] args = new Object[lead.length + 4];
         System.arraycopy(lead, 0, args, 0, lead.length);
         if (frame == null) {
-            args[lead.length] = "?";
+            args[lead.length] = gcnc.diag.Phrase.DMC_LINE.with(dmcLine);
             args[lead.length + 1] = "";
         } else {
             args[lead.length] = "X" + programmed((p[0] - frame.origin().x()) / frame.perX())

@@ -74,6 +74,9 @@ public final class Simulator {
         return Math.max(Math.max(2, options.tolerance()), THREAD_TOLERANCE_MM * profile.z().countsPerMm());
     }
 
+    /** How many DMC lines have been replayed. */
+    private int dmcLines;
+
     public void begin(List<GalilLine> header) {
         run(header);
     }
@@ -119,6 +122,8 @@ public final class Simulator {
 
     private void run(List<GalilLine> lines) {
         for (GalilLine l : lines) {
+            // every line of the DMC passes here in order: the count is the line's number in the file
+            checks.dmcLine(++dmcLines);
             dmc.line(l.text(), l.sourceLine());
             lastLine = Math.max(1, l.sourceLine());
             if (trace != null) {

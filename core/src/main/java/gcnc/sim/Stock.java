@@ -4,12 +4,8 @@ import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
-import org.locationtech.jts.geom.LineString;
-import org.locationtech.jts.geom.Polygon;
-import org.locationtech.jts.geom.prep.PreparedGeometry;
 import org.locationtech.jts.operation.overlayng.OverlayNG;
 import org.locationtech.jts.operation.overlayng.OverlayNGRobust;
-import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
 
 /**
  * The workpiece as an exact half-section: polygons in the (z, r) plane, millimetres of the
@@ -44,8 +40,8 @@ final class Stock {
     private final double[] groupMax;
     /** Largest radius in each run of GROUP groups: a long move over cut material skips whole runs. */
     private final double[] superMax;
-    private Geometry material;
-    private PreparedGeometry prepared;
+    /** The exact polygons, in tiles along z ({@link Material}). */
+    private final Material material;
 
     Stock(double back, double face, double radius) {
         this(back, face, 0, radius);
@@ -63,7 +59,7 @@ final class Stock {
         this.upper = new double[slices];
         this.groupMax = new double[slices / GROUP];
         this.superMax = new double[(groupMax.length + GROUP - 1) / GROUP];
-        this.material = factory.toGeometry(new Envelope(back, face, inner, radius));
+        this.material = new Material(factory, back, face, inner, radius);
         java.util.Arrays.fill(upper, radius);
         java.util.Arrays.fill(groupMax, radius);
         java.util.Arrays.fill(superMax, radius);
@@ -278,7 +274,7 @@ final class Stock {
      */
     private static final int PENDING_MAX = 4096;
 
-    /** Takes the pending cuts from the polygons (one union, one difference). */
+    /** Takes the pending cuts from the polygons (per tile: one union, one difference). */
     private void settle() {
         if (pending.isEmpty()) {
             return;
@@ -288,8 +284,7 @@ final class Stock {
             cuts.add(polygon(h));
         }
         pending.clear();
-        Geometry region = cuts.size() == 1 ? cuts.get(0) : OverlayNGRobust.union(cuts);
-        remove(region);
+        remove(cuts);
     }
 
     /**
@@ -446,7 +441,8 @@ final class Stock {
         if (region.isEmpty() || !touches(region)) {
             return null;
         }
-        Geometry overlap = OverlayNGRobust.overlay(material, region, OverlayNG.INTERSECTION);
+        // only the tiles the region spans: the finding is derived from the material near the move
+        Geometry overlap = material.intersection(region);
         if (overlap.isEmpty() || overlap.getArea() == 0) {
             return null;
         }
@@ -458,16 +454,13 @@ final class Stock {
         return new double[] {p.x, p.y};
     }
 
-    /** Removes {@code region} from the polygons (what the insert cuts away). Material is never added. */
-    private void remove(Geometry region) {
-        // not the envelope's answer: it was lowered under this region already ({@link #lower})
-        if (!polygons().intersects(region)) {
-            return;
+    /** Removes the cuts from the polygons (what the insert cuts away). Material is never added. */
+    private void remove(java.util.List<Geometry> cuts) {
+        // not the envelope's answer: it was lowered under these cuts already ({@link #lower})
+        double[] changed = material.remove(cuts);
+        if (changed != null) {
+            refresh(slice(changed[0]), slice(changed[1]));
         }
-        material = OverlayNGRobust.overlay(material, region, OverlayNG.DIFFERENCE);
-        prepared = null;
-        Envelope e = region.getEnvelopeInternal();
-        refresh(slice(e.getMinX()), slice(e.getMaxX()));
     }
 
     private boolean touches(Geometry region) {
@@ -475,32 +468,27 @@ final class Stock {
         if (!mayTouch(e.getMinX(), e.getMaxX(), e.getMinY())) {
             return false;
         }
-        return polygons().intersects(region);
+        return material.intersects(region);
     }
 
-    /** The material's polygons, prepared for many intersection tests until they change. */
-    private PreparedGeometry polygons() {
-        if (prepared == null) {
-            prepared = PreparedGeometryFactory.prepare(material);
-        }
-        return prepared;
-    }
-
-    /** Recomputes the upper envelope of slices lo..hi from the material's edges. */
+    /** Recomputes the upper envelope of slices lo..hi from the material's edges (only the tiles over them). */
     private void refresh(int lo, int hi) {
         for (int i = lo; i <= hi; i++) {
             upper[i] = 0;
         }
-        for (int n = 0; n < material.getNumGeometries(); n++) {
-            if (!(material.getGeometryN(n) instanceof Polygon p)) {
-                continue; // a difference leaves polygons; anything else has no area
-            }
-            edges(p.getExteriorRing(), lo, hi);
-            for (int h = 0; h < p.getNumInteriorRing(); h++) {
-                edges(p.getInteriorRingN(h), lo, hi);
-            }
-        }
+        material.edges(zOf(lo), zOf(hi + 1), (a, b) -> edge(a, b, lo, hi));
         regroup(lo, hi);
+    }
+
+    /** Corners handed to the polygon booleans so far: what a ragged stock costs, for tests to bound. */
+    long work() {
+        return material.work();
+    }
+
+    /** How many corners the material's polygons have (the pending cuts taken first). */
+    int corners() {
+        settle();
+        return material.corners();
     }
 
     /** Recomputes the group and super-group maxima over slices lo..hi. */
@@ -521,23 +509,18 @@ final class Stock {
         }
     }
 
-    private void edges(LineString ring, int lo, int hi) {
-        Coordinate[] c = ring.getCoordinates();
+    private void edge(Coordinate a, Coordinate b, int lo, int hi) {
         double zLo = back + lo * step;
         double zHi = back + (hi + 1) * step;
-        for (int k = 1; k < c.length; k++) {
-            Coordinate a = c[k - 1];
-            Coordinate b = c[k];
-            double z0 = Math.max(Math.min(a.x, b.x), zLo);
-            double z1 = Math.min(Math.max(a.x, b.x), zHi);
-            if (z0 > z1) {
-                continue;
-            }
-            for (int i = Math.max(lo, slice(z0)); i <= Math.min(hi, slice(z1)); i++) {
-                double s0 = Math.max(z0, back + i * step);
-                double s1 = Math.min(z1, back + (i + 1) * step);
-                upper[i] = Math.max(upper[i], Math.max(rAt(a, b, s0), rAt(a, b, s1)));
-            }
+        double z0 = Math.max(Math.min(a.x, b.x), zLo);
+        double z1 = Math.min(Math.max(a.x, b.x), zHi);
+        if (z0 > z1) {
+            return;
+        }
+        for (int i = Math.max(lo, slice(z0)); i <= Math.min(hi, slice(z1)); i++) {
+            double s0 = Math.max(z0, back + i * step);
+            double s1 = Math.min(z1, back + (i + 1) * step);
+            upper[i] = Math.max(upper[i], Math.max(rAt(a, b, s0), rAt(a, b, s1)));
         }
     }
 

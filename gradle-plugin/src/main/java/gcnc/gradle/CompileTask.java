@@ -42,7 +42,7 @@ public class CompileTask extends GcncTask {
         }
         try (outputs; Reader in = program.open()) {
             SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
-            outputs.mapLine(SourceMap.sourceLine(program.file().getName()));
+            outputs.mapSource(program.file().getName(), program.file().toPath());
             Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
                     mapper.wrap(line -> outputs.dmcLine(line.text())));
             findings.report(program.shown(), r.diagnostics());
