@@ -222,7 +222,8 @@ class StudioBrowserTest {
         assertTrue(Files.readString(dir.resolve("bishop.nc")).contains("Z-04500 (mine)\n"));
         // someone else changes the file; our next save must not silently overwrite it, nor lose our edit
         Files.writeString(dir.resolve("bishop.nc"), "(theirs)\nM30\n");
-        content.sendKeys(" (more)");
+        // found again: the folder's change event may redraw the page's elements meanwhile
+        endOfLine(6).sendKeys(" (more)");
         browser.findElement(By.id("save")).click();
         wait.until(ExpectedConditions.alertIsPresent()).dismiss(); // "changed on disk. Overwrite it?" No.
         wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("status"), "not saved: bishop.nc changed on disk"));

@@ -89,7 +89,7 @@ final class Analysis {
         Compiler.Result r;
         try (DmcOutputs outputs = DmcOutputs.open(program, dmc, true)) {
             SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
-            outputs.mapLine(SourceMap.sourceLine(program.getFileName().toString()));
+            outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
                 r = session.withPrograms(Optional.ofNullable(program.getParent())).compile(in,
                         Optional.of(session.simulation()), false, mapper.wrap(line -> outputs.dmcLine(line.text())));
