@@ -64,8 +64,8 @@ public final class ArcVerdict {
         }
         // the CR as the controller runs it: its printed angles, about the centre they imply
         double r = w.cr().radius();
-        double start = Double.parseDouble(GalilNumbers.angle(w.cr().start()));
-        double sweep = Double.parseDouble(GalilNumbers.angle(w.cr().sweep()));
+        double start = GalilNumbers.printedAngle(w.cr().start()); // the value the printed angle stands for,
+        double sweep = GalilNumbers.printedAngle(w.cr().sweep()); // without printing it and reading it back
         double th = Math.toRadians(start);
         double end = Math.toRadians(start + sweep);
         double c1 = su - r * Math.cos(th);
