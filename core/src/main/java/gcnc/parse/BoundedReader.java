@@ -72,38 +72,52 @@ public final class BoundedReader extends Reader {
 
     /** Copies the {@code n} characters read to {@code out}, keeping count of lines; how many were kept. */
     private int pass(int n, char[] out, int off) {
+        // the counters in locals for the loop (every character of the program comes through here)
+        long r = read;
+        int col = column;
+        int ln = line;
+        boolean cr = lastCr;
+        boolean skip = skipping;
         int kept = 0;
-        for (int k = 0; k < n; k++) {
-            if (++read > textLimit) {
-                ended = true;
-                diags.report(new Diagnostic(Code.E504_TEXT_TOO_LONG, gcnc.diag.Severity.ERROR,
-                        Span.of(line, Math.max(1, column + 1)), java.util.List.of(Long.toString(textLimit)), origin));
-                return kept;
-            }
-            char c = buffer[k];
-            if (c == '\n' || c == '\r') {
-                if (!(c == '\n' && lastCr)) {
-                    line++;
+        try {
+            for (int k = 0; k < n; k++) {
+                if (++r > textLimit) {
+                    ended = true;
+                    diags.report(new Diagnostic(Code.E504_TEXT_TOO_LONG, gcnc.diag.Severity.ERROR,
+                            Span.of(ln, Math.max(1, col + 1)), java.util.List.of(Long.toString(textLimit)), origin));
+                    return kept;
                 }
-                lastCr = c == '\r';
-                column = 0;
-                skipping = false;
+                char c = buffer[k];
+                if (c == '\n' || c == '\r') {
+                    if (!(c == '\n' && cr)) {
+                        ln++;
+                    }
+                    cr = c == '\r';
+                    col = 0;
+                    skip = false;
+                    out[off + kept++] = c;
+                    continue;
+                }
+                cr = false;
+                if (skip) {
+                    continue;
+                }
+                if (++col > lineLimit) {
+                    skip = true;
+                    diags.report(new Diagnostic(Code.E503_LINE_TOO_LONG, gcnc.diag.Severity.ERROR, Span.of(ln, col),
+                            java.util.List.of(Integer.toString(lineLimit)), origin));
+                    continue;
+                }
                 out[off + kept++] = c;
-                continue;
             }
-            lastCr = false;
-            if (skipping) {
-                continue;
-            }
-            if (++column > lineLimit) {
-                skipping = true;
-                diags.report(new Diagnostic(Code.E503_LINE_TOO_LONG, gcnc.diag.Severity.ERROR, Span.of(line, column),
-                        java.util.List.of(Integer.toString(lineLimit)), origin));
-                continue;
-            }
-            out[off + kept++] = c;
+            return kept;
+        } finally {
+            read = r;
+            column = col;
+            line = ln;
+            lastCr = cr;
+            skipping = skip;
         }
-        return kept;
     }
 
     @Override
