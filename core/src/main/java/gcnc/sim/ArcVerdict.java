@@ -23,8 +23,8 @@ import java.util.List;
  * <p>Here each arc is planned exactly as the backend plans it ({@link ArcPlanner#forMotion}, the
  * same code), from the whole-count position the controller is at (the arc's start rounded: every
  * sequence the galil dialect writes ends on its target's count), replayed into segments as the DMC
- * interpreter replays a CR (the second copy, of {@code DmcInterpreter.cr}: pinned to it by
- * ArcVerdictTest, which compares check's codes with compile's) and compared with the program by
+ * interpreter replays a CR (the same {@code Plane.cr}; ArcVerdictTest compares check's codes with
+ * compile's) and compared with the program by
  * the simulator's own {@link Conformance} at the default tolerance. Same codes, same lines.
  */
 public final class ArcVerdict {
@@ -63,23 +63,10 @@ public final class ArcVerdict {
             return;
         }
         // the CR as the controller runs it: its printed angles, about the centre they imply
-        double r = w.cr().radius();
         double start = GalilNumbers.printedAngle(w.cr().start()); // the value the printed angle stands for,
         double sweep = GalilNumbers.printedAngle(w.cr().sweep()); // without printing it and reading it back
-        double th = Math.toRadians(start);
-        double end = Math.toRadians(start + sweep);
-        double c1 = su - r * Math.cos(th);
-        double c2 = sv - r * Math.sin(th);
-        double e1 = c1 + r * Math.cos(end);
-        double e2 = c2 + r * Math.sin(end);
-        double fx = plane.machineX(su, sv);
-        double fz = plane.machineZ(su, sv);
-        double cx = plane.machineX(c1, c2);
-        double cz = plane.machineZ(c1, c2);
-        double from = Math.toDegrees(Math.atan2(fx - cx, fz - cz));
         List<Segment> segs = new ArrayList<>(2);
-        segs.add(new Segment(fx, fz, plane.machineX(e1, e2), plane.machineZ(e1, e2), true, cx, cz, r, from,
-                sweep * plane.handedness(), "CR"));
+        segs.add(plane.cr(su, sv, w.cr().radius(), start, sweep, "CR", new double[2]));
         if (w.cr().closing()) {
             Segment s = segs.get(0);
             segs.add(new Segment(s.toX(), s.toZ(), plane.machineX(w.tu(), w.tv()), plane.machineZ(w.tu(), w.tv()),

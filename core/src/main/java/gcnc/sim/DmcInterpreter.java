@@ -269,20 +269,9 @@ final class DmcInterpreter {
             out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, text);
         }
         startIfNeeded();
-        double r = v[0];
-        double th = Math.toRadians(v[1]);
-        double end = Math.toRadians(v[1] + v[2]);
-        double c1 = cursor1 - r * Math.cos(th);
-        double c2 = cursor2 - r * Math.sin(th);
-        double e1 = c1 + r * Math.cos(end);
-        double e2 = c2 + r * Math.sin(end);
-        double fx = plane.machineX(cursor1, cursor2);
-        double fz = plane.machineZ(cursor1, cursor2);
-        double cx = plane.machineX(c1, c2);
-        double cz = plane.machineZ(c1, c2);
-        double start = Math.toDegrees(Math.atan2(fx - cx, fz - cz));
-        add(new Segment(fx, fz, plane.machineX(e1, e2), plane.machineZ(e1, e2), true, cx, cz, r, start,
-                v[2] * plane.handedness(), text), e1, e2, line);
+        double[] end = new double[2];
+        Segment arc = plane.cr(cursor1, cursor2, v[0], v[1], v[2], text, end);
+        add(arc, end[0], end[1], line);
     }
 
     private void startIfNeeded() {
