@@ -90,23 +90,8 @@ class NoseCompensationTest {
      */
     @TestFactory
     Stream<DynamicTest> everyCompensatedProgramCompilesAndSimulatesClean() throws Exception {
-        boolean update = Boolean.getBoolean("gcnc.updateGolden");
         return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
-            String name = p.getFileName().toString();
-            gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, machine(name.split("\\.")[1]),
-                    "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults().withoutBlank()), true);
-            gcnc.Compiler.Result r;
-            StringBuilder dmc = new StringBuilder();
-            try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
-                r = gcnc.Compiler.compile(in, settings, l -> dmc.append(l.text()).append('\n'));
-            }
-            assertTrue(r.ok(), () -> name + ": " + r.diagnostics().sorted());
-            assertEquals(0, r.simulation().orElseThrow().findings(), () -> name + ": " + r.diagnostics().sorted());
-            Path golden = DIR.resolve(name.replaceAll("\\.nc$", ".dmc"));
-            if (update) {
-                Files.writeString(golden, dmc.toString(), StandardCharsets.UTF_8);
-            }
-            assertEquals(Files.readString(golden, StandardCharsets.UTF_8), dmc.toString());
+            Run.compilesCleanAsGolden(p, machine(p.getFileName().toString().split("\\.")[1]));
         }));
     }
 

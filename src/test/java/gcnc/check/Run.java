@@ -31,6 +31,31 @@ final class Run {
         checker = new Checker(TABLES, p, diagnostics, cap);
     }
 
+    /**
+     * Compiles {@code program} on {@code profile} with no blank (a finishing program; a blank would
+     * move G54 to its face), asserts it compiles and simulates clean and that its DMC is the golden
+     * file beside it ({@code .dmc} for {@code .nc}; rewritten with {@code -PupdateGolden}).
+     */
+    static void compilesCleanAsGolden(java.nio.file.Path program, MachineProfile profile) throws java.io.IOException {
+        String name = program.getFileName().toString();
+        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(TABLES, profile, "galil",
+                java.util.Optional.of(gcnc.sim.SimOptions.defaults().withoutBlank()), true);
+        gcnc.Compiler.Result r;
+        StringBuilder dmc = new StringBuilder();
+        try (java.io.Reader in = java.nio.file.Files.newBufferedReader(program, java.nio.charset.StandardCharsets.UTF_8)) {
+            r = gcnc.Compiler.compile(in, settings, l -> dmc.append(l.text()).append('\n'));
+        }
+        org.junit.jupiter.api.Assertions.assertTrue(r.ok(), () -> name + ": " + r.diagnostics().sorted());
+        org.junit.jupiter.api.Assertions.assertEquals(0, r.simulation().orElseThrow().findings(),
+                () -> name + ": " + r.diagnostics().sorted());
+        java.nio.file.Path golden = program.resolveSibling(name.replaceAll("\\.nc$", ".dmc"));
+        if (Boolean.getBoolean("gcnc.updateGolden")) {
+            java.nio.file.Files.writeString(golden, dmc.toString(), java.nio.charset.StandardCharsets.UTF_8);
+        }
+        org.junit.jupiter.api.Assertions.assertEquals(
+                java.nio.file.Files.readString(golden, java.nio.charset.StandardCharsets.UTF_8), dmc.toString());
+    }
+
     static MachineProfile profile(String name) {
         try {
             return ProfileLoader.load(name, TableSource.builtIn(), TABLES);
