@@ -423,4 +423,24 @@ class ProfileLoaderTest {
         assertEquals(lineOf(text, badLine), e.diagnostic().span().line(), e.getMessage());
         assertTrue(e.english().contains(message), e.english());
     }
+
+    @Test
+    void theShippedMachinesAreTheProfilesInTheTables() throws Exception {
+        try (Stream<Path> files = Files.list(Path.of("tables/machines"))) {
+            assertEquals(files.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".machine"))
+                    .map(n -> n.substring(0, n.length() - ".machine".length())).sorted().toList(), ProfileLoader.SHIPPED);
+        }
+    }
+
+    @Test
+    void aMisspeltMachineOrControlNameGetsTheNearestShippedOne() {
+        String hass = assertThrows(TableException.class, () -> load("hass")).english();
+        assertTrue(hass.contains("no machine profile 'hass': did you mean 'haas'? (shipped: fanuc, generic, haas, thesis-2004"), hass);
+        String okuma = assertThrows(TableException.class, () -> load("okuma")).english();
+        assertTrue(okuma.contains("no machine profile 'okuma' (shipped: fanuc, generic, haas, thesis-2004"), okuma);
+        assertFalse(okuma.contains("did you mean"), okuma);
+        String control = assertThrows(TableException.class,
+                () -> ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES, "fanuc-c")).english();
+        assertTrue(control.contains("no control 'fanuc-c': did you mean 'fanuc-a'?"), control);
+    }
 }

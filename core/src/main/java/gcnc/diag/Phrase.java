@@ -151,6 +151,12 @@ public enum Phrase {
     UNKNOWN_KEY_DOCS,
     UNKNOWN_CONTROL_KEY,
     NO_CONTROL,
+    /** A control name that is not shipped but near one: {0} the name, {1} the nearest, {2} the shipped ones. */
+    NO_CONTROL_TYPO,
+    /** A machine name that is not a shipped profile: {0} the name, {1} the shipped ones. */
+    NO_MACHINE,
+    /** A machine name near a shipped profile's: {0} the name, {1} the nearest, {2} the shipped ones. */
+    NO_MACHINE_TYPO,
     LETTERS,
     POWER_UP,
     LENGTH_MM,

@@ -42,8 +42,10 @@ public final class ControlLoader {
         try {
             tables.read(dir + "control.cfg");
         } catch (TableException e) {
-            throw ProfileFile.fault(tables.describe(dir + "control.cfg"), 1, 1, Phrase.NO_CONTROL.with(nameOrPath,
-                    String.join(", ", SHIPPED)));
+            String shipped = String.join(", ", SHIPPED);
+            throw ProfileFile.fault(tables.describe(dir + "control.cfg"), 1, 1, Spelling.typo(nameOrPath, SHIPPED)
+                    .map(near -> Phrase.NO_CONTROL_TYPO.with(nameOrPath, near, shipped))
+                    .orElse(Phrase.NO_CONTROL.with(nameOrPath, shipped)));
         }
         return read(tables, dir);
     }

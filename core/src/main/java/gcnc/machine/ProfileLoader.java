@@ -42,6 +42,9 @@ public final class ProfileLoader {
     private static final double MIN_PER_F = 0.001;
     private static final double MAX_PER_F = 1_000_000;
 
+    /** The machine profiles in gcnc's tables (tables/machines), by name. */
+    public static final java.util.List<String> SHIPPED = java.util.List.of("fanuc", "generic", "haas", "thesis-2004");
+
     private ProfileLoader() {
     }
 
@@ -58,7 +61,20 @@ public final class ProfileLoader {
             f = ProfileFile.parse(p.toString(), readFile(p));
         } else {
             String name = "machines/" + nameOrPath + ".machine";
-            f = ProfileFile.parse(tables.describe(name), tables.read(name));
+            String text;
+            try {
+                text = tables.read(name);
+            } catch (TableException e) {
+                if (!SHIPPED.contains(nameOrPath)) {
+                    // a name gcnc does not ship: say which it does, and the nearest ("hass": haas)
+                    String shipped = String.join(", ", SHIPPED);
+                    throw ProfileFile.fault(tables.describe(name), 1, 1, Spelling.typo(nameOrPath, SHIPPED)
+                            .map(near -> Phrase.NO_MACHINE_TYPO.with(nameOrPath, near, shipped))
+                            .orElse(Phrase.NO_MACHINE.with(nameOrPath, shipped)));
+                }
+                throw e;
+            }
+            f = ProfileFile.parse(tables.describe(name), text);
         }
         return read(f, data, tables, control);
     }
