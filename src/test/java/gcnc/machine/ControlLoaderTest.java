@@ -103,8 +103,12 @@ class ControlLoaderTest {
         for (String name : ControlLoader.SHIPPED) {
             assertEquals(name, builtIn(name).name());
         }
-        TableException e = assertThrows(TableException.class, () -> builtIn("fanuc"));
-        assertTrue(e.getMessage().contains("no control 'fanuc' (shipped: thesis-2004, fanuc-a, fanuc-b, haas"), e.getMessage());
+        TableException e = assertThrows(TableException.class, () -> builtIn("okuma"));
+        assertTrue(e.getMessage().contains("no control 'okuma' (shipped: thesis-2004, fanuc-a, fanuc-b, haas"), e.getMessage());
+        // the machine's name given for its control's: the nearest control is named
+        TableException near = assertThrows(TableException.class, () -> builtIn("fanuc"));
+        assertTrue(near.getMessage().contains("no control 'fanuc': did you mean 'fanuc-a'? (shipped: thesis-2004, fanuc-a, fanuc-b, haas"),
+                near.getMessage());
     }
 
     static Path copyOf(String control) throws IOException {
