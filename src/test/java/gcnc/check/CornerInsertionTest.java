@@ -35,22 +35,10 @@ class CornerInsertionTest {
     private static final Path DIR = Path.of("src/test/resources/chamfer");
 
     /** The program checked as the compiler reads it for {@code p} (its control's comments). */
-    static CycleExpansionTest.Expanded run(MachineProfile p, Reader program) throws Exception {
-        Diagnostics d = new Diagnostics();
-        BlockReader reader = BlockReader.forControl(program, d, false, p.control().lineComments());
-        Checker checker = new Checker(Run.TABLES, p, d);
-        List<CheckedBlock> blocks = new ArrayList<>();
-        for (RawBlock b = reader.next(); b != null; b = reader.next()) {
-            blocks.addAll(checker.check(b));
-        }
-        checker.finish(reader.lines());
-        return new CycleExpansionTest.Expanded(blocks, d);
-    }
-
     /** The generic machine (mm, X a diameter, no nose) under {@code control}. */
     static CycleExpansionTest.Expanded run(String control, String program) {
         try {
-            return run(Run.profileWithControl("generic", control), new StringReader(HEAD.get(control) + program));
+            return CycleExpansionTest.expand(Run.profileWithControl("generic", control), new StringReader(HEAD.get(control) + program));
         } catch (Exception e) {
             throw new IllegalStateException(e);
         }
@@ -87,37 +75,17 @@ class CornerInsertionTest {
         return out;
     }
 
-    private static List<Path> programs() throws Exception {
-        try (Stream<Path> s = Files.list(DIR)) {
-            return s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
-        }
-    }
 
     @TestFactory
     Stream<DynamicTest> everyChamferedContourIsAsReviewed() throws Exception {
-        boolean update = Boolean.getBoolean("gcnc.updateGolden");
-        return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
-            String name = p.getFileName().toString();
-            CycleExpansionTest.Expanded e;
-            try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
-                e = run(Run.profile(name.split("\\.")[1]), in);
-            }
-            for (Diagnostic d : e.diagnostics().sorted()) {
-                assertTrue(d.severity() != Severity.ERROR, () -> name + ": " + d);
-            }
-            String actual = CycleExpansionTest.render(e);
-            Path golden = DIR.resolve(name.replaceAll("\\.nc$", ".expanded"));
-            if (update) {
-                Files.writeString(golden, actual, StandardCharsets.UTF_8);
-            }
-            assertEquals(Files.readString(golden, StandardCharsets.UTF_8), actual);
-        }));
+        return Run.programsIn(DIR).stream().map(p -> dynamicTest(p.getFileName().toString(),
+                () -> Run.expandsAsGolden(p, Run.profile(p.getFileName().toString().split("\\.")[1]))));
     }
 
     /** The same contours compiled and replayed with no blank (they finish roughed parts; a blank would move G54 to its face): clean, DMC as reviewed. */
     @TestFactory
     Stream<DynamicTest> everyChamferedContourCompilesAndSimulatesClean() throws Exception {
-        return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
+        return Run.programsIn(DIR).stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             Run.compilesCleanAsGolden(p, Run.profile(p.getFileName().toString().split("\\.")[1]));
         }));
     }
@@ -284,7 +252,7 @@ class CornerInsertionTest {
     @Test
     void theCornerComposesWithNoseCompensation() throws Exception {
         MachineProfile p = Run.profile("fanuc");
-        CycleExpansionTest.Expanded e = run(p, new StringReader("G21 G99\nT0303\nG97 S1000 M03\nG00 X20. Z2.\n"
+        CycleExpansionTest.Expanded e = CycleExpansionTest.expand(p, new StringReader("G21 G99\nT0303\nG97 S1000 M03\nG00 X20. Z2.\n"
                 + "G42 G01 Z0. F0.1\nX30. C-1.\nZ-10.\nG40 G00 X60. Z5.\nM30\n"));
         assertEquals("", errs(e));
         // the compensated path goes round the chamfer's two corners: more moves on line 6 than the two it has

@@ -40,9 +40,10 @@ class CycleExpansionTest {
         return expand(Run.profile(machine), program);
     }
 
+    /** The program read as the profile's control reads it (its comments, the closing '%'), then checked. */
     static Expanded expand(gcnc.machine.MachineProfile profile, Reader program) throws Exception {
         Diagnostics d = new Diagnostics();
-        BlockReader reader = new BlockReader(program, d);
+        BlockReader reader = BlockReader.forControl(program, d, false, profile.control().lineComments());
         Checker checker = new Checker(Run.TABLES, profile, d);
         List<CheckedBlock> blocks = new ArrayList<>();
         for (RawBlock b = reader.next(); b != null; b = reader.next()) {

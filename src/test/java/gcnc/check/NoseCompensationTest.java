@@ -54,31 +54,11 @@ class NoseCompensationTest {
         return name.equals("fanuc-tips") ? tips() : Run.profile(name);
     }
 
-    private static List<Path> programs() throws Exception {
-        try (Stream<Path> s = Files.list(DIR)) {
-            return s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
-        }
-    }
 
     @TestFactory
     Stream<DynamicTest> everyCompensatedContourIsAsReviewed() throws Exception {
-        boolean update = Boolean.getBoolean("gcnc.updateGolden");
-        return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
-            String name = p.getFileName().toString();
-            CycleExpansionTest.Expanded e;
-            try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
-                e = CycleExpansionTest.expand(machine(name.split("\\.")[1]), in);
-            }
-            for (Diagnostic d : e.diagnostics().sorted()) {
-                assertTrue(d.severity() != gcnc.diag.Severity.ERROR, () -> name + ": " + d);
-            }
-            String actual = CycleExpansionTest.render(e);
-            Path golden = DIR.resolve(name.replaceAll("\\.nc$", ".expanded"));
-            if (update) {
-                Files.writeString(golden, actual, StandardCharsets.UTF_8);
-            }
-            assertEquals(Files.readString(golden, StandardCharsets.UTF_8), actual);
-        }));
+        return Run.programsIn(DIR).stream().map(p -> dynamicTest(p.getFileName().toString(),
+                () -> Run.expandsAsGolden(p, machine(p.getFileName().toString().split("\\.")[1]))));
     }
 
     /**
@@ -90,7 +70,7 @@ class NoseCompensationTest {
      */
     @TestFactory
     Stream<DynamicTest> everyCompensatedProgramCompilesAndSimulatesClean() throws Exception {
-        return programs().stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
+        return Run.programsIn(DIR).stream().map(p -> dynamicTest(p.getFileName().toString(), () -> {
             Run.compilesCleanAsGolden(p, machine(p.getFileName().toString().split("\\.")[1]));
         }));
     }

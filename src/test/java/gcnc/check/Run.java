@@ -31,6 +31,36 @@ final class Run {
         checker = new Checker(TABLES, p, diagnostics, cap);
     }
 
+    /** The part programs (*.nc) of a test folder, in name order. */
+    static List<java.nio.file.Path> programsIn(java.nio.file.Path dir) throws java.io.IOException {
+        try (java.util.stream.Stream<java.nio.file.Path> s = java.nio.file.Files.list(dir)) {
+            return s.filter(p -> p.toString().endsWith(".nc")).sorted().toList();
+        }
+    }
+
+    /**
+     * Checks {@code program} on {@code profile} as its control reads it: no error, and its blocks as
+     * the checker expanded them ({@link CycleExpansionTest#render}) are the golden file beside it
+     * ({@code .expanded} for {@code .nc}; rewritten with {@code -PupdateGolden}).
+     */
+    static void expandsAsGolden(java.nio.file.Path program, MachineProfile profile) throws Exception {
+        String name = program.getFileName().toString();
+        CycleExpansionTest.Expanded e;
+        try (java.io.Reader in = java.nio.file.Files.newBufferedReader(program, java.nio.charset.StandardCharsets.UTF_8)) {
+            e = CycleExpansionTest.expand(profile, in);
+        }
+        for (Diagnostic d : e.diagnostics().sorted()) {
+            org.junit.jupiter.api.Assertions.assertTrue(d.severity() != gcnc.diag.Severity.ERROR, () -> name + ": " + d);
+        }
+        String actual = CycleExpansionTest.render(e);
+        java.nio.file.Path golden = program.resolveSibling(name.replaceAll("\\.nc$", ".expanded"));
+        if (Boolean.getBoolean("gcnc.updateGolden")) {
+            java.nio.file.Files.writeString(golden, actual, java.nio.charset.StandardCharsets.UTF_8);
+        }
+        org.junit.jupiter.api.Assertions.assertEquals(
+                java.nio.file.Files.readString(golden, java.nio.charset.StandardCharsets.UTF_8), actual);
+    }
+
     /**
      * Compiles {@code program} on {@code profile} with no blank (a finishing program; a blank would
      * move G54 to its face), asserts it compiles and simulates clean and that its DMC is the golden

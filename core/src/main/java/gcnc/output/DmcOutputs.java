@@ -127,13 +127,6 @@ public final class DmcOutputs implements AutoCloseable {
         return map != null;
     }
 
-    /** Adds a line to the map; nothing when there is none. */
-    public void mapLine(String text) {
-        if (map != null) {
-            map.line(text);
-        }
-    }
-
     /**
      * The map's head: the G-code file's name ({@code # source <name>}) and, when it is a regular
      * file that can be read, its SHA-256 ({@code # source sha256 <hex>}); nothing when there is no map.
