@@ -330,6 +330,12 @@ public enum Code {
     E208_GEAR_RATIO_RANGE(208),
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
+    /** Warning: a dwell shorter than the 2 ms WT takes (G04 P1): the DMC waits 2 ms, as the clamp says. */
+    E250_DWELL_BELOW_WT(250),
+    /** The spindle speed needs more than the 10 V an analog output (AO) gives. */
+    E251_SPINDLE_AO_VOLTS(251),
+    /** Warning: the spindle speed needs between 9.998 V and 10 V; AO is clamped to 9.998 V. */
+    E252_SPINDLE_AO_CLAMPED(252),
 
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
@@ -414,6 +420,16 @@ public enum Code {
     E404_TABLE_FILE_TOO_LARGE(404),
     /** Profile: spindle.max_rpm needs more than the 10 V the OF output gives at spindle.rpm_per_volt: every compile at top speed would be E203. */
     E410_SPINDLE_TOP_SPEED_VOLTS(410),
+    /** Profile: spindle.output is neither OF (on spindle.axis) nor AO n. */
+    E430_SPINDLE_OUTPUT(430),
+    /** Profile: spindle.at_speed is neither IN n, a dwell in seconds, nor none. */
+    E431_SPINDLE_AT_SPEED(431),
+    /** Profile: a turret key without the others it needs (station outputs, strobe, in-position input). */
+    E432_TURRET_INCOMPLETE(432),
+    /** Profile: the turret's station outputs cannot code every station of tools.count. */
+    E433_TURRET_STATIONS(433),
+    /** Profile: homing.check is neither position, IN n, nor none. */
+    E434_HOMING_CHECK(434),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */

@@ -126,6 +126,7 @@ public final class ProfileLoader {
             }
         }
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
+        MachineIo.read(f, spindleAxis, toolCount(f, tools)); // the spindle drive, turret, homing: read by MachineIo.of
         lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
         MachineModel model = MachineModel.read(f);
         if (!c.name().equals("thesis-2004")) {
