@@ -1,7 +1,6 @@
 package gcnc.galil;
 
 import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.dmc.Command;
@@ -23,13 +22,11 @@ import java.util.function.Consumer;
  * The default dialect: a standalone DMC program (docs/dmc-format.md, docs/galil.md). Each motion is
  * its own vector sequence ending in {@code VE / BGS / AMS}, so VP is simply the displacement from
  * where the controller stands, and outputs never switch while the axes move. The controller's
- * position is tracked in whole counts so rounding never accumulates.
+ * position is tracked in whole counts so rounding never accumulates. The machine around the
+ * motion (spindle output and wait, turret, dwell, soft limits, homing check, error handlers) is
+ * {@link MachineCode}'s.
  */
 final class GalilDialect implements Dialect {
-    /** The OF output range (galil-notes.md §1); a request up to 10 V is clamped with a warning. */
-    private static final double MAX_VOLTS = 9.998;
-    private static final double CLAMP_LIMIT = 10.0;
-
     private final MachineProfile profile;
     private final Diagnostics diagnostics;
     private final boolean inlineSourceMap;
@@ -38,12 +35,15 @@ final class GalilDialect implements Dialect {
     private long posV;
     /** The profile's output directives of each M code, read once. */
     private final Map<Integer, List<Command>> outputs = new java.util.HashMap<>();
+    /** The spindle, the turret, the dwell, the soft limits, the homing check and the handlers. */
+    private final MachineCode machine;
 
     GalilDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
         this.profile = profile;
         this.diagnostics = diagnostics;
         this.inlineSourceMap = inlineSourceMap;
         this.frame = new GalilFrame(profile);
+        this.machine = new MachineCode(profile, frame, diagnostics);
         this.posU = GalilNumbers.round(frame.u(profile.home()));
         this.posV = GalilNumbers.round(frame.v(profile.home()));
     }
@@ -58,6 +58,7 @@ final class GalilDialect implements Dialect {
                 Source.NONE));
         out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(GalilNumbers.round(profile.deceleration()))),
                 Source.NONE));
+        machine.setup(out);
     }
 
     /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm, or {@code NO STOCK NONE} (docs/dmc-format.md). */
@@ -68,19 +69,20 @@ final class GalilDialect implements Dialect {
 
     @Override
     public void end(Consumer<Instruction> out) {
-        out.accept(new Instruction(new Command.End(), Source.NONE));
+        machine.finish(out);
     }
 
     @Override
     public void block(CheckedBlock b, Consumer<Instruction> sink) {
-        BlockWriter out = new BlockWriter(sink, b, inlineSourceMap);
+        BlockWriter out = new BlockWriter(machine.marking(b, sink), b, inlineSourceMap);
         if (b.spindleRpm().isPresent()) {
-            spindle(b, b.spindleRpm().getAsDouble(), out);
+            machine.spindleSpeed(b, b.spindleRpm().getAsDouble(), out);
         }
         if (b.tool().isPresent()) {
-            out.emit(new Command.ToolNumber(b.tool().getAsInt()));
+            machine.toolChange(b, b.tool().getAsInt(), out);
         }
-        outputs(b.before(), out);
+        outputs(b, b.before(), out);
+        machine.beforeMotions(b, out);
         List<Motion> motions = b.motions();
         for (int i = 0; i < motions.size(); i++) {
             out.motion(i);
@@ -111,28 +113,15 @@ final class GalilDialect implements Dialect {
             });
         }
         out.motion(-1);
-        outputs(b.after(), out);
+        outputs(b, b.after(), out);
     }
 
-    private void spindle(CheckedBlock b, double rpm, BlockWriter out) {
-        double volts = rpm / profile.rpmPerVolt();
-        if (volts > CLAMP_LIMIT) {
-            diagnostics.error(Code.E203_SPINDLE_VOLTS, at(b), GalilNumbers.round(rpm), GalilNumbers.volts(volts));
-            return;
-        }
-        if (volts > MAX_VOLTS) {
-            diagnostics.report(Diagnostic.warning(Code.E204_SPINDLE_VOLTS_CLAMPED, at(b),
-                    GalilNumbers.round(rpm), GalilNumbers.volts(volts)));
-            volts = MAX_VOLTS;
-        }
-        out.emit(new Command.Offset(frame.spindleIndex(), Fixed.exactly(volts, 4)));
-    }
-
-    private void outputs(List<MCall> calls, BlockWriter out) {
+    private void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
         for (MCall m : calls) {
             for (Command directive : outputs.computeIfAbsent(m.code(), this::directives)) {
                 out.emit(directive);
             }
+            machine.afterM(b, m, out);
         }
     }
 
@@ -303,10 +292,7 @@ final class GalilDialect implements Dialect {
     }
 
     private void dwell(CheckedBlock b, Motion.Dwell m, BlockWriter out) {
-        long ms = GalilNumbers.round(m.seconds() * 1000);
-        if (inRange(b, "WT", ms)) {
-            out.emit(new Command.Wait(ms));
-        }
+        machine.dwell(b, m.seconds(), out);
     }
 
     private static void finishSequence(BlockWriter out) {
