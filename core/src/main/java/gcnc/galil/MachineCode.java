@@ -53,9 +53,9 @@ final class MachineCode {
     private static final double MAX_VOLTS = 9.998;
     private static final double CLAMP_LIMIT = 10.0;
     /**
-     * A wait for speed follows a change of more than this fraction of the last speed: the small
-     * steps of G96 along a cut are followed on the move, as the spindle follows them, and do not
-     * stop the feed (nor end a blended group) at every block.
+     * With an at-speed input, a speed change of more than this fraction of the last speed is waited
+     * for too: the small steps of G96 along a cut are followed on the move, as the spindle follows
+     * them, and do not stop the feed (nor end a blended group) at every block.
      */
     private static final double SPEED_STEP = 0.1;
     /** WT's smallest argument, ms (COMALL WT: 2 to 2,147,483,646). */
@@ -65,7 +65,8 @@ final class MachineCode {
     private final GalilFrame frame;
     private final Diagnostics diagnostics;
     private final MachineIo io;
-    private boolean running;
+    /** The direction the spindle turns (M03's or M04's role), null when stopped. */
+    private MRole turning;
     /** The drive's speed reference is at zero (M05, the start): an M03 must set the last speed again. */
     private boolean zeroed = true;
     private double rpm = Double.NaN;
@@ -149,9 +150,11 @@ final class MachineCode {
 
     /**
      * The spindle's speed reference for {@code rpm}: OF on its channel or AO (E203/E251 above 10 V,
-     * clamped with E204/E252 between 9.998 and 10 V). A speed changed while the spindle turns is
-     * waited for before the next feed when it changes by more than 10%. A planner placing G96
-     * speeds along a blended group calls this for each.
+     * clamped with E204/E252 between 9.998 and 10 V). With an at-speed input, a change of more than
+     * 10% while the spindle turns is waited for before the next feed; with a dwell only such a
+     * change in a block that does not move (a G97 S of its own), never the G96 speeds that come
+     * with the moves (a fixed dwell at every G96 jump of a roughing cycle would add seconds a pass).
+     * A planner placing G96 speeds along a blended group calls this for each.
      */
     void spindleSpeed(CheckedBlock b, double rpm, BlockWriter out) {
         double v = rpm / profile.rpmPerVolt();
@@ -171,7 +174,8 @@ final class MachineCode {
                     : Diagnostic.warning(Code.E204_SPINDLE_VOLTS_CLAMPED, at(b), GalilNumbers.round(rpm), GalilNumbers.volts(v)));
             v = MAX_VOLTS;
         }
-        if (running && (Double.isNaN(this.rpm) || Math.abs(rpm - this.rpm) > SPEED_STEP * this.rpm)) {
+        boolean step = Double.isNaN(this.rpm) || Math.abs(rpm - this.rpm) > SPEED_STEP * this.rpm;
+        if (turning != null && step && (io.atSpeed() instanceof MachineIo.AtSpeed.Input || b.motions().isEmpty())) {
             waitForSpeed = true;
         }
         this.rpm = rpm;
@@ -194,7 +198,7 @@ final class MachineCode {
         MFunction f = profile.control().m().get(m.code());
         MRole role = f == null ? null : f.role();
         if (role == MRole.SPINDLE_STOP) {
-            running = false;
+            turning = null;
             waitForSpeed = false;
             if (!zeroed) {
                 out.emit(volts(0));
@@ -202,13 +206,11 @@ final class MachineCode {
             }
         } else if (role == MRole.SPINDLE_CW || role == MRole.SPINDLE_CCW) {
             if (zeroed && !Double.isNaN(rpm) && rpm > 0) {
-                boolean was = running;
-                running = false; // the start's wait below, not a speed change's
                 spindleSpeed(b, rpm, out);
-                running = was;
             }
-            running = true;
-            waitForSpeed = !(io.atSpeed() instanceof MachineIo.AtSpeed.None);
+            // a start, or a reversal (the spindle stops and runs up the other way): wait
+            waitForSpeed |= role != turning && !(io.atSpeed() instanceof MachineIo.AtSpeed.None);
+            turning = role;
         }
     }
 
