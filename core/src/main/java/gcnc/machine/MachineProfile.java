@@ -62,6 +62,11 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
         outputs = Map.copyOf(outputs);
     }
 
+    /** The checks of every number gcnc hands this machine's controller ({@link #galilModel}'s limits). */
+    public ControllerLimits controllerLimits() {
+        return new ControllerLimits(galilModel);
+    }
+
     /** The spindle encoder threads are geared to; empty on a machine that cannot cut threads (E190). */
     public Optional<SpindleEncoder> encoder() {
         return Optional.ofNullable(spindleEncoder);
