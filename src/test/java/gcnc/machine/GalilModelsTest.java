@@ -58,6 +58,47 @@ class GalilModelsTest {
         assertFalse(MODELS.find("DMC-1846").orElseThrow().hasFirmware12a());
     }
 
+    /**
+     * Every row against the reference, so that a slip in one of 34 rows (a digit dropped, a column
+     * shifted) fails here: the command ranges are the same on every model COMALL covers, the axes
+     * are the model number's digit, the outputs follow the axes, and only the families whose
+     * firmware reaches 1.2a get the larger memory.
+     */
+    @Test
+    void everyRowHoldsTheReferencesFigures() {
+        for (GalilModel m : MODELS.all()) {
+            String why = m.name() + " (galil_models.csv:" + m.row() + ")";
+            assertEquals(new GalilModel.Range(2, 15_000_000, 2), m.range(Limit.VECTOR_SPEED), why);
+            assertEquals(m.range(Limit.VECTOR_SPEED), m.range(Limit.SEGMENT_SPEED), why);
+            assertEquals(new GalilModel.Range(1024, 1_073_740_800, 1024), m.range(Limit.ACCELERATION), why);
+            assertEquals(8_388_607, m.range(Limit.SEGMENT_LENGTH).max(), why);
+            assertEquals(new GalilModel.Range(10, 6_000_000, 1), m.range(Limit.ARC_RADIUS), why);
+            assertEquals(450_000_000, m.range(Limit.ARC_LENGTH).max(), why);
+            assertEquals(new GalilModel.Range(2, 2_147_483_646, 2), m.range(Limit.DWELL), why);
+            assertEquals(80, m.range(Limit.LINE_LENGTH).max(), why);
+            assertEquals(510, m.range(Limit.LABELS).max(), why);
+            assertEquals(7, m.range(Limit.LABEL_LENGTH).max(), why);
+            assertEquals(1L << 30, m.range(Limit.SEQUENCE_LENGTH).max(), why);
+            assertEquals(511, m.range(Limit.BUFFER_SEGMENTS).max(), why);
+            assertEquals(2000, m.range(Limit.PROGRAM_LINES).max(), why);
+            assertEquals(16_000, m.range(Limit.ARRAY_ELEMENTS).max(), why);
+            assertEquals(1000, m.sampleMicros(), why);
+            assertEquals(m.axes() <= 4 ? 8 : 16, m.digitalOutputs(), why);
+            boolean fw12a = List.of("DMC-40x0", "DMC-41x3", "DMC-30010").contains(m.family());
+            assertEquals(fw12a, m.hasFirmware12a(), why);
+            assertEquals(fw12a ? 4000 : 2000, m.withFirmware12a().range(Limit.PROGRAM_LINES).max(), why);
+            assertEquals(fw12a ? 24_000 : 16_000, m.withFirmware12a().range(Limit.ARRAY_ELEMENTS).max(), why);
+            if (m.family().contains("x") && !m.name().equals("DMC-1700")) { // the thesis names the series, not a model
+                // DMC-40x0: DMC-40<n>0; DMC-41x3: DMC-41<n>3; the x is the axis count
+                int x = m.family().indexOf('x');
+                assertEquals(m.axes(), m.name().charAt(x) - '0', why);
+                assertTrue(m.name().startsWith(m.family().substring(0, x)), why);
+            }
+        }
+        assertEquals(1, MODELS.find("DMC-30010").orElseThrow().axes());
+        assertEquals(8, MODELS.find("DMC-1700").orElseThrow().axes(), "the series' most: any channel the thesis used passes");
+    }
+
     @Test
     void eachShippedProfileNamesAModelThatExists() throws Exception {
         Pattern key = Pattern.compile("(?m)^galil\\.model *= *([^\\s#]+)");
