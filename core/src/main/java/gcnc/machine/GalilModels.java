@@ -1,9 +1,7 @@
 package gcnc.machine;
 
 import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
 import gcnc.diag.Phrase;
-import gcnc.diag.Span;
 import gcnc.machine.GalilModel.Limit;
 import gcnc.machine.GalilModel.Range;
 import gcnc.tables.Csv;
@@ -27,7 +25,10 @@ import java.util.regex.Pattern;
  */
 public final class GalilModels {
     public static final String FILE = "galil_models.csv";
-    /** The model of a profile without {@code galil.model}: a DMC-40x0 with the four channels a lathe uses (Z, X, spindle, spare). */
+    /**
+     * The model of a profile without {@code galil.model}: a DMC-40x0 with the four channels a lathe
+     * uses (Z, X, the spindle's output, a spare).
+     */
     public static final String DEFAULT = "DMC-4040";
 
     private final Map<String, GalilModel> byName;
