@@ -258,23 +258,29 @@ final class MachineCode {
 
     /**
      * G04: {@code WT ms}. Below WT's 2 ms (G04 P1) the DMC waits 2 ms with warning E250: a dwell
-     * is a least time, so a machinist expects at least what was asked, never an alarm for it. A
-     * zero dwell waits for nothing and writes nothing.
+     * is a least time, so a machinist expects at least what was asked, never an alarm for it. An
+     * odd dwell is the even one above (E237), one beyond the model's WT is E226 (ControllerLimits).
+     * A zero dwell waits for nothing and writes nothing.
      */
     void dwell(CheckedBlock b, double seconds, BlockWriter out) {
         long ms = GalilNumbers.round(seconds * 1000);
         if (ms == 0) {
             return;
         }
-        if (!GalilNumbers.inRange(ms)) {
-            diagnostics.error(Code.E201_GALIL_RANGE, at(b), "WT", ms);
-            return;
-        }
         if (ms < MIN_WAIT_MS) {
             diagnostics.report(Diagnostic.warning(Code.E250_DWELL_BELOW_WT, at(b), ms));
             ms = MIN_WAIT_MS;
         }
-        out.emit(new Command.Wait(ms));
+        // the model's WT: an odd dwell is written as the even one above (E237), beyond its range E226
+        gcnc.machine.ControllerLimits limits = profile.controllerLimits();
+        gcnc.machine.ControllerLimits.Rounded even = limits.roundDwell(ms);
+        gcnc.machine.ControllerLimits.report(even, at(b), diagnostics);
+        java.util.Optional<gcnc.machine.ControllerLimits.Violation> beyond = limits.dwell(even.taken());
+        if (beyond.isPresent()) {
+            gcnc.machine.ControllerLimits.report(beyond, at(b), diagnostics);
+            return;
+        }
+        out.emit(new Command.Wait(even.taken()));
     }
 
     /** The spindle zeroed, EN, the routines the program jumps to, and the error handlers. */
