@@ -41,12 +41,19 @@ class MachineCodeTest {
     private static final String TURN = "O1\nN10 G21 G90 G98\nN20 G50 S2500\nN30 M11\nN40 T0101\nN50 S1200 M03\n"
             + "N60 G00 X42. Z2.\nN70 G01 X40. F120.\nN80 G00 X60. Z5.\nN90 M05\nN100 M30\n";
 
-    /** The generic lathe with an analog output for the spindle, an at-speed input and an indexed turret. */
+    /**
+     * The generic lathe on an eight-axis DMC-4080 (16 outputs: room for the turret's five) with a
+     * Modbus analog output for the spindle, an at-speed input and an indexed turret.
+     */
     private static final String WIRED = "spindle.output = AO 1\nspindle.at_speed = IN3\nspindle.at_speed_timeout = 8\n"
             + "turret.station_outputs = 9, 10, 11, 12\nturret.strobe = 13\nturret.in_position = 4\nturret.timeout = 5\n";
 
     private static String generic() throws Exception {
         return Files.readString(Path.of("tables/machines/generic.machine"));
+    }
+
+    private static String wired() throws Exception {
+        return generic().replace("galil.model = DMC-4030", "galil.model = DMC-4080") + WIRED;
     }
 
     private static MachineProfile profile(String text) throws Exception {
@@ -79,7 +86,7 @@ class MachineCodeTest {
     void theWiredMachinesProgramMatchesItsGoldenFile() throws Exception {
         Path golden = Path.of("src/test/resources/golden/machine-wired.generic.galil.dmc");
         String program = TURN.replace("T0101", "T0505").replace("N80 G00", "N75 G04 P1\nN80 G00");
-        String actual = String.join("\n", compile(program, profile(generic() + WIRED + "homing.check = IN7\n"))) + "\n";
+        String actual = String.join("\n", compile(program, profile(wired() + "homing.check = IN7\n"))) + "\n";
         if (Boolean.getBoolean("gcnc.updateGolden")) {
             Files.writeString(golden, actual);
         }
@@ -114,7 +121,7 @@ class MachineCodeTest {
 
     @Test
     void anAtSpeedInputIsWaitedForWithATimeout() throws Exception {
-        List<String> out = compile(TURN, profile(generic() + WIRED));
+        List<String> out = compile(TURN, profile(wired()));
         int feed = out.indexOf("gline=8");
         assertEquals(List.of("gline=8", "JS #SPWAIT", "VS 2000"), out.subList(feed, feed + 3));
         int w = out.indexOf("#SPWAIT");
@@ -128,7 +135,7 @@ class MachineCodeTest {
 
     @Test
     void aToolChangeIndexesTheTurretAndWaitsForItsAnswer() throws Exception {
-        List<String> out = compile(TURN.replace("T0101", "T0505"), profile(generic() + WIRED));
+        List<String> out = compile(TURN.replace("T0101", "T0505"), profile(wired()));
         int t = out.indexOf("gline=5");
         // station 5 = 0101 on outputs 9 (lsb) .. 12, the strobe, the wait, then TOOL=5
         assertEquals(List.of("gline=5", "SB9", "CB10", "SB11", "CB12", "SB13", "JS #TURRET", "TOOL=5"),
@@ -145,7 +152,7 @@ class MachineCodeTest {
         // for before the first feed, the steps are followed on the move
         String css = "O1\nN10 G21 G90 G98\nN20 G50 S2500\nN30 M11\nN40 T0101\nN50 G96 S150 M03\n"
                 + "N60 G00 X42. Z2.\nN70 G01 X40. F120.\nN80 G01 X39.\nN90 G00 X60. Z5.\nN100 M05\nN110 M30\n";
-        List<String> out = compile(css, profile(generic() + WIRED));
+        List<String> out = compile(css, profile(wired()));
         assertEquals(List.of("JS #SPWAIT"), out.stream().filter(l -> l.startsWith("JS #SP")).toList());
         int feed = out.indexOf("gline=8");
         assertEquals(List.of("gline=8", "AO 1,2.9842", "JS #SPWAIT", "VS 2000"), out.subList(feed, feed + 4),
@@ -254,7 +261,7 @@ class MachineCodeTest {
 
     @Test
     void anAnalogSpindleAboveTenVoltsIsAnErrorAndJustBelowIsClamped() throws Exception {
-        MachineProfile p = profile(generic() + WIRED);
+        MachineProfile p = profile(wired());
         Diagnostics d = new Diagnostics();
         List<String> out = Fixtures.run("galil", p, d,
                 new CheckedBlock(5, OptionalDouble.of(4400), OptionalInt.empty(), List.of(), List.of(), List.of(), Point.ORIGIN),

@@ -36,7 +36,7 @@ class MachineIoTest {
 
     @Test
     void eachFormReadsAsWhatItSays() throws Exception {
-        MachineIo io = MachineIo.of(load(generic() + "spindle.output = AO 2\nspindle.at_speed = 1.5s\n"
+        MachineIo io = MachineIo.of(load(generic().replace("DMC-4030", "DMC-4080") + "spindle.output = AO 2\nspindle.at_speed = 1.5s\n"
                 + "turret.station_outputs = 9, 10, 11, 12\nturret.strobe = 13\nturret.in_position = 4\n"
                 + "homing.check = IN 6\n"));
         assertEquals(new MachineIo.SpindleDrive.Analog(2), io.drive());
@@ -53,11 +53,13 @@ class MachineIoTest {
     void aBadValueIsAFaultAtItsLine() throws Exception {
         String g = generic();
         assertFault(g + "spindle.output = OF D\n", "spindle.output", Code.E430_SPINDLE_OUTPUT, "write OF");
-        assertFault(g + "spindle.output = AO 16\n", "spindle.output", Code.E430_SPINDLE_OUTPUT, "0 to 15");
+        assertFault(g + "spindle.output = AO 9000\n", "spindle.output", Code.E430_SPINDLE_OUTPUT, "0 to 8999");
+        assertFault(g + "turret.station_outputs = 5, 6, 7, 8\nturret.strobe = 9\nturret.in_position = 4\n",
+                "turret.strobe", Code.E424_OUTPUT_BEYOND_MODEL, "output 9 is not one of the 8 digital outputs of the DMC-4030");
         assertFault(g + "spindle.at_speed = soon\n", "spindle.at_speed", Code.E431_SPINDLE_AT_SPEED, "IN n");
         assertFault(g + "turret.strobe = 13\n", "turret.strobe", Code.E432_TURRET_INCOMPLETE,
                 "turret.station_outputs is missing");
-        assertFault(g + "turret.station_outputs = 9, 10, 11\nturret.strobe = 13\nturret.in_position = 4\n",
+        assertFault(g + "turret.station_outputs = 5, 6, 7\nturret.strobe = 8\nturret.in_position = 4\n",
                 "turret.station_outputs", Code.E433_TURRET_STATIONS, "3 outputs code the stations 1 to 7 but tools.count is 12");
         assertFault(g + "homing.check = yes\n", "homing.check", Code.E434_HOMING_CHECK, "write position");
     }

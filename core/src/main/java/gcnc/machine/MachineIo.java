@@ -30,7 +30,12 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
         record Offset(char channel) implements SpindleDrive {
         }
 
-        /** {@code AO n,v}: a real analog output (DMC-41x3, DMC-30010, the RIO). */
+        /**
+         * {@code AO n,v}: the analog output with I/O number n of a Modbus device (an I/O module, a
+         * RIO) on the controller's Modbus handle; the controllers themselves have no general analog
+         * outputs (AO "sets the analog output voltage of Modbus Devices", DMC-40x0 Command
+         * Reference p.28; tables/galil_models.csv). The shop sets up the handle outside the program.
+         */
         record Analog(int output) implements SpindleDrive {
         }
     }
@@ -83,7 +88,9 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
     static final double DEFAULT_TOLERANCE_MM = 0.01;
 
     private static final Pattern OFFSET = Pattern.compile("OF(?:\\s*([A-HXYZW]))?", Pattern.CASE_INSENSITIVE);
-    private static final Pattern ANALOG = Pattern.compile("AO\\s*([0-9]{1,2})", Pattern.CASE_INSENSITIVE);
+    private static final Pattern ANALOG = Pattern.compile("AO\\s*([0-9]{1,4})", Pattern.CASE_INSENSITIVE);
+    /** The highest I/O number AO takes: a Modbus device's, on handles A-H (DMC-40x0 Command Reference, AO p.28). */
+    static final int MAX_ANALOG = 8999;
     private static final Pattern INPUT = Pattern.compile("IN\\s*([0-9]{1,3})", Pattern.CASE_INSENSITIVE);
     private static final Pattern SECONDS = Pattern.compile("([0-9]{1,3}(?:\\.[0-9]{1,3})?)\\s*s", Pattern.CASE_INSENSITIVE);
     /** Galil's digital inputs and outputs are numbered from 1; 999 is far above any model's extended I/O. */
@@ -92,7 +99,8 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
     /** The profile's machine I/O (checked when it was loaded); the defaults for a profile built without a file. */
     public static MachineIo of(MachineProfile p) {
         try {
-            return p.file() == null ? defaults(p.spindleAxis()) : read(p.file(), p.spindleAxis(), p.tools());
+            return p.file() == null ? defaults(p.spindleAxis())
+                    : read(p.file(), p.spindleAxis(), p.tools(), p.galilModel());
         } catch (TableException e) {
             throw new IllegalStateException("the machine I/O keys were checked when the profile was loaded", e);
         }
@@ -103,8 +111,9 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
                 new Homing.Position(DEFAULT_TOLERANCE_MM));
     }
 
-    static MachineIo read(ProfileFile f, char spindleAxis, int tools) throws TableException {
-        return new MachineIo(drive(f, spindleAxis), atSpeed(f), turret(f, tools), homing(f));
+    /** The keys of {@code f}, checked against the turret's station count and the model's digital outputs (E424). */
+    static MachineIo read(ProfileFile f, char spindleAxis, int tools, GalilModel model) throws TableException {
+        return new MachineIo(drive(f, spindleAxis), atSpeed(f), turret(f, tools, model), homing(f));
     }
 
     private static SpindleDrive drive(ProfileFile f, char spindleAxis) throws TableException {
@@ -119,7 +128,7 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
             return new SpindleDrive.Offset(spindleAxis);
         }
         m = ANALOG.matcher(v);
-        if (m.matches() && Integer.parseInt(m.group(1)) <= 15) {
+        if (m.matches() && Integer.parseInt(m.group(1)) <= MAX_ANALOG) {
             return new SpindleDrive.Analog(Integer.parseInt(m.group(1)));
         }
         throw f.fault(e.get(), Code.E430_SPINDLE_OUTPUT, v, String.valueOf(spindleAxis));
@@ -150,7 +159,7 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
     private static final List<String> TURRET_KEYS = List.of("turret.station_outputs", "turret.strobe",
             "turret.in_position");
 
-    private static Optional<Turret> turret(ProfileFile f, int tools) throws TableException {
+    private static Optional<Turret> turret(ProfileFile f, int tools, GalilModel model) throws TableException {
         ProfileFile.Entry given = null;
         String missing = null;
         for (String k : TURRET_KEYS) {
@@ -175,7 +184,11 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
         if (bits.size() > 8 || (1 << bits.size()) - 1 < tools) {
             throw f.fault(outs, Code.E433_TURRET_STATIONS, bits.size(), (1 << Math.min(bits.size(), 30)) - 1, tools);
         }
+        for (int b : bits) {
+            output(f, outs, b, model);
+        }
         int strobe = bit(f, f.required("turret.strobe"), f.required("turret.strobe").value().strip());
+        output(f, f.required("turret.strobe"), strobe, model);
         int input = bit(f, f.required("turret.in_position"), f.required("turret.in_position").value().strip());
         double timeout = f.entry("turret.timeout").isPresent() ? f.within("turret.timeout", 0.1, 600) : DEFAULT_TIMEOUT;
         return Optional.of(new Turret(bits, strobe, input, timeout));
@@ -206,6 +219,14 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
     private static int channel(char letter) {
         int xyzw = "XYZW".indexOf(letter);
         return xyzw >= 0 ? xyzw : letter - 'A';
+    }
+
+    /** An output the model has, as the M codes' outputs must be (E424, GalilModels). */
+    private static void output(ProfileFile f, ProfileFile.Entry e, int bit, GalilModel model) throws TableException {
+        if (bit > model.digitalOutputs()) {
+            throw f.fault(e, Code.E424_OUTPUT_BEYOND_MODEL, e.key(), String.valueOf(bit), model.name(),
+                    model.digitalOutputs());
+        }
     }
 
     private static boolean bit(String digits) {

@@ -126,7 +126,6 @@ public final class ProfileLoader {
             }
         }
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
-        MachineIo.read(f, spindleAxis, toolCount(f, tools)); // the spindle drive, turret, homing: read by MachineIo.of
         lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
         MachineModel model = MachineModel.read(f);
         if (!c.name().equals("thesis-2004")) {
@@ -148,6 +147,7 @@ public final class ProfileLoader {
                 machineZero, chuckByProgram, model, encoder(f, x, z),
                 noses(f, counts, x), threadChamfer(f));
         GalilModels.holds(p, f); // channels, speeds, accelerations and outputs the model has (E421-E424)
+        MachineIo.read(f, spindleAxis, p.tools(), p.galilModel()); // the spindle drive, turret, homing (E424, E430-E434)
         return p;
     }
 
