@@ -102,10 +102,10 @@ public final class SvgWriter {
                 + " fill=\"none\" stroke=\"#20a020\" stroke-width=\"1.5\" stroke-dasharray=\"3 3\"/>\n", x0, y0,
                 Math.max(0, x1 - x0), Math.max(0, y1 - y0)));
         if (v.x(t[0]) >= 0 && v.x(t[0]) < WIDTH) {
-            w.write(label(v.x(t[0]) + 3, Math.max(y0 + 26, 40), "Z travel", "#20a020", v));
+            w.write(label(v.x(t[0]) + 3, (y0 + y1) / 2, "Z travel", "#20a020", v));
         }
         if (v.x(t[1]) > 0 && v.x(t[1]) <= WIDTH) {
-            w.write(label(v.x(t[1]) - 3 - textWidth("Z travel"), Math.max(y0 + 26, 40), "Z travel", "#20a020", v));
+            w.write(label(v.x(t[1]) - 3 - textWidth("Z travel"), (y0 + y1) / 2, "Z travel", "#20a020", v));
         }
         if (v.y(t[3]) >= 0 && v.y(t[3]) < v.height()) {
             w.write(label(WIDTH / 2, v.y(t[3]) + 14, "X travel", "#20a020", v));
@@ -153,15 +153,33 @@ public final class SvgWriter {
             }
         }
         w.write("</g>\n");
+        java.util.List<double[]> placed = new java.util.ArrayList<>();
         for (Drawing.Mark m : d.marks()) {
             String text = m.code() + " " + m.block();
             double x = v.x(m.z());
             double y = v.y(m.r());
             w.write(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"7\" fill=\"none\" stroke=\"#ff00ff\""
                     + " stroke-width=\"2.5\"/>", x, y));
-            // the label right of and above the circle, moved back onto the canvas near an edge
-            w.write(label(x + 9, y - 9, text, "#ff00ff", v));
+            // the label right of and above the circle, moved back onto the canvas near an edge, and
+            // below an earlier label it would cover (two findings close together)
+            double lx = Math.max(2, Math.min(x + 9, WIDTH - 2 - textWidth(text)));
+            double ly = Math.max(16, Math.min(y - 9, v.height() - 4));
+            for (int tries = 0; tries < 40 && covers(placed, lx, ly, textWidth(text)); tries++) {
+                ly = ly + 16 > v.height() - 4 ? 16 + tries : ly + 16;
+            }
+            placed.add(new double[] {lx, ly, textWidth(text)});
+            w.write(label(lx, ly, text, "#ff00ff", v));
         }
+    }
+
+    /** Whether a label at (x, y), {@code width} wide, would overlap one already placed ({x, y, width}). */
+    private static boolean covers(java.util.List<double[]> placed, double x, double y, double width) {
+        for (double[] p : placed) {
+            if (Math.abs(p[1] - y) < 15 && x < p[0] + p[2] && p[0] < x + width) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** A label at (x, y), moved back onto the view near an edge. */
@@ -185,7 +203,7 @@ public final class SvgWriter {
         w.write("<g id=\"grid\" stroke=\"#d8d8d8\" stroke-width=\"0.8\" fill=\"#707070\" font-size=\"11\">\n");
         double q0 = Math.min(a.programZ(v.zMin()), a.programZ(v.zMax()));
         double q1 = Math.max(a.programZ(v.zMin()), a.programZ(v.zMax()));
-        double step = roundStep((q1 - q0) / 8);
+        double step = roundStep((q1 - q0) / 12);
         for (double q = Math.ceil(q0 / step) * step; q <= q1; q += step) {
             double x = v.x(a.z(q));
             String label = "Z" + MotionChecks.mm(Math.abs(q) < step / 1e6 ? 0 : q);
@@ -195,7 +213,7 @@ public final class SvgWriter {
         }
         double p0 = Math.min(a.programX(Math.max(0, v.rMin())), a.programX(v.rMax()));
         double p1 = Math.max(a.programX(Math.max(0, v.rMin())), a.programX(v.rMax()));
-        double xStep = roundStep((p1 - p0) / 6);
+        double xStep = roundStep((p1 - p0) / 8);
         for (double p = Math.ceil(p0 / xStep) * xStep; p <= p1; p += xStep) {
             double y = v.y(a.r(p));
             String label = "X" + MotionChecks.mm(Math.abs(p) < xStep / 1e6 ? 0 : p);
