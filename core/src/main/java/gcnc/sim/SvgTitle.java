@@ -85,9 +85,9 @@ final class SvgTitle {
         w.write("</g>\n");
     }
 
-    /** The text, cut with an ellipsis where it would not fit {@code width} pixels (16 px type: 10 px a character). */
+    /** The text, cut with an ellipsis where it would not fit {@code width} pixels (16 px type: 9 px a character). */
     static String fit(String s, double width) {
-        int max = (int) (width / 10);
+        int max = (int) (width / 9);
         return s.length() <= max ? s : "…" + s.substring(s.length() - max + 1);
     }
 
