@@ -80,6 +80,18 @@ class ProgramTermsTest {
     }
 
     @Test
+    void theEnvelopeIsWrittenAsTheProgramWritesItNotAsTheCountsRoundIt() throws Exception {
+        // haas: 984.252 counts/mm; X-1.6 (a diameter) is -787.4 counts, replayed at -787: X-1.5992
+        String facing = "O7\nG21 G99\nG50 S2500\nM10\nT0101\nG97 S1000 M03\nG00 X44. Z2.\nG01 Z0. F0.2\n"
+                + "X-1.6 F0.15\nG00 Z2.\nM05\nM30\n";
+        ProgramEnvelope p = simulate(facing, "haas").program();
+        assertEquals(-1.6, p.xMin(), "exactly as written");
+        assertEquals(-1.6, ProgramTerms.written(-1.5992, 0.001, 3));
+        assertEquals(-1.599, ProgramTerms.written(-1.5992, 0.0003, 3), "not further than half a count");
+        assertEquals(12.3456789, ProgramTerms.written(12.3456789, 1e-9, 3), "finer than the places: as it is");
+    }
+
+    @Test
     void aProgramSwitchingUnitsIsGivenInItsFirstUnits() throws Exception {
         // samples/units.nc starts in mm and cuts to Z-1.5 under G20: -38.1 mm
         SimReport r = simulate(Files.readString(Path.of("samples/units.nc")), "generic");

@@ -91,12 +91,32 @@ final class ProgramTerms {
         }
     }
 
-    /** The envelope in program terms, null when no move had a program frame. */
+    /**
+     * The envelope in program terms, null when no move had a program frame. The machine stands on
+     * whole counts, so X-1.6 may be replayed at X-1.5992: each value is given as the program would
+     * write it, the shortest decimal (at most 3 in mm, 4 in inches) within half a count of it.
+     */
     ProgramEnvelope envelope() {
         if (Double.isNaN(unitMm) || xMin > xMax) {
             return null;
         }
-        return new ProgramEnvelope(unitMm > 2 ? Units.INCH : Units.MM, diameter, xMin, xMax, zMin, zMax);
+        boolean inch = unitMm > 2;
+        double halfX = 0.5 / (kx * unitMm / (diameter ? 2 : 1));
+        double halfZ = 0.5 / (kz * unitMm);
+        int places = inch ? 4 : 3;
+        return new ProgramEnvelope(inch ? Units.INCH : Units.MM, diameter, written(xMin, halfX, places),
+                written(xMax, halfX, places), written(zMin, halfZ, places), written(zMax, halfZ, places));
+    }
+
+    /** The shortest decimal of at most {@code places} places within {@code half} of {@code v}, else v. */
+    static double written(double v, double half, int places) {
+        for (int p = 0; p <= places; p++) {
+            double r = java.math.BigDecimal.valueOf(v).setScale(p, java.math.RoundingMode.HALF_UP).doubleValue();
+            if (Math.abs(r - v) <= half) {
+                return r;
+            }
+        }
+        return v;
     }
 
     SetupFacts facts(SimMachine machine, StockSize blank) {

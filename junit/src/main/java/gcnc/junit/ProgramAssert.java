@@ -106,8 +106,8 @@ public final class ProgramAssert {
 
     /**
      * The tool tip stays within these limits in the machine frame, in mm: X as a radius from
-     * machine X zero, Z along the bed (the simulation summary's second envelope). Before 0.2 this
-     * was {@code staysWithin}.
+     * machine X zero, Z along the bed (the simulation summary's second envelope): what
+     * {@code staysWithin} asked in earlier builds.
      */
     public ProgramAssert staysWithinMachine(double xMinMm, double xMaxMm, double zMinMm, double zMaxMm) {
         SimReport r = simulation();
