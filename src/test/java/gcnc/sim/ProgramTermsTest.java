@@ -137,6 +137,26 @@ class ProgramTermsTest {
         assertEquals(150, s.workZeroFromFaceMm(), 1e-6, "G54 is the blank's face, 150 mm out of the jaws");
     }
 
+    @Test
+    void travelIsExceededAtAPlaceAsTheProgramWritesItThenInTheMachineFrame() throws Exception {
+        // SimFixture's tiny lathe: 1 count/mm, X travel -2..100 (a radius), work zero at X 0 Z 100
+        // with X written as a diameter (0.5 counts per unit); the arc's top, X 105, is X210. as written
+        SimFixture f = new SimFixture();
+        f.start();
+        f.move(true, 95, 150);
+        gcnc.ir.ProgramFrame frame = new gcnc.ir.ProgramFrame(new gcnc.ir.Point(0, 100), 0.5, 1, "110", null);
+        f.sim.block(new gcnc.ir.CheckedBlock(3, java.util.OptionalDouble.empty(), java.util.OptionalInt.empty(),
+                List.of(), List.of(new gcnc.ir.Motion.Arc(false, new gcnc.ir.Point(95, 150), new gcnc.ir.Point(95, 130),
+                        new gcnc.ir.Point(95, 140), 10, SimFixture.FEED, new gcnc.ir.Motion.ArcWords(10.0, null, null))),
+                List.of(), new gcnc.ir.Point(95, 130), frame),
+                SimFixture.lines(3, "VS 100", "CR 10,0,180", "VE", "BGS", "AMS"));
+        gcnc.diag.Diagnostic d = f.diagnostics.sorted().get(0);
+        assertEquals("X travel exceeded at X210. (N110; machine X 105 mm is outside -2 .. 100 mm)",
+                TABLES.messages().render(d.code(), d.args(), gcnc.tables.ErrorMessages.Lang.EN));
+        assertEquals("recorrido de X excedido en X210. (N110; máquina X 105 mm está fuera de -2 .. 100 mm)",
+                TABLES.messages().render(d.code(), d.args(), gcnc.tables.ErrorMessages.Lang.ES));
+    }
+
     // ---- the drawing ----
 
     private static String svg(SimReport r, String number) throws Exception {

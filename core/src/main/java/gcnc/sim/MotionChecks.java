@@ -513,12 +513,26 @@ final class MotionChecks {
         return t.contains(".") ? t : t + ".";
     }
 
+    /**
+     * E302: where the axis went as the program writes it first ("X460.", the block's N word), then
+     * in the machine frame against the travel; without the program frame (a DMC replayed by itself)
+     * the place is the DMC's line.
+     */
     private boolean travel(int line, String axis, double lo, double hi, double min, double max, double perMm) {
         if (lo >= min - tol && hi <= max + tol) {
             return false;
         }
         double bad = lo < min - tol ? lo : hi;
-        out.report(Code.E302_SIM_TRAVEL, line, axis, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
+        Object where;
+        String block = "";
+        if (frame == null) {
+            where = gcnc.diag.Phrase.DMC_LINE.with(dmcLine);
+        } else {
+            boolean x = axis.equals("X");
+            where = axis + programmed((bad - (x ? frame.origin().x() : frame.origin().z())) / (x ? frame.perX() : frame.perZ()));
+            block = frame.sequence().isEmpty() ? "" : frame.sequence() + "; ";
+        }
+        out.report(Code.E302_SIM_TRAVEL, line, axis, where, block, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
         return true;
     }
 
