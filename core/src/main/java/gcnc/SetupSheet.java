@@ -50,7 +50,7 @@ public final class SetupSheet {
      */
     public String summary() {
         return (number == null ? "" : number + ", ") + "cycle about " + clock(sim.cycleSeconds()) + "; " + envelope()
-                + "; " + plural(sim.setup().tools().size(), "tool") + "; "
+                + "; " + plural(sim.setup().tools().stream().filter(t -> t.station() != 0).count(), "tool") + "; "
                 + (findings.isEmpty() ? "no findings" : plural(findings.size(), "finding"));
     }
 

@@ -159,6 +159,25 @@ class ProgramTermsTest {
 
     // ---- the drawing ----
 
+    @Test
+    void aTailstockNearThePartIsInTheViewAndAFarOneIsNamedUnderIt() throws Exception {
+        // SimFixture's lathe: blank z -20..100, the tailstock's centre at z 200 (quill r 15)
+        SimFixture near = new SimFixture(SimFixture.PROFILE, SimOptions.defaults().withPath());
+        near.start();
+        near.move(true, 30, 102);
+        near.move(false, 18, 60);
+        SvgView v = SvgView.of(near.sim.report().drawing());
+        assertTrue(v.zMax() >= 200, "the centre's point is in the view: " + v.zMax());
+        SimFixture far = new SimFixture(SimFixture.PROFILE.replace("tailstock.centre_z = 200", "tailstock.centre_z = 290"),
+                SimOptions.defaults().withPath());
+        far.start();
+        far.move(true, 30, 102);
+        far.move(false, 18, 60);
+        SimReport r = far.sim.report();
+        assertTrue(SvgView.of(r.drawing()).zMax() < 290);
+        assertTrue(svg(r, null).contains("the tailstock's centre, beyond the view, at Z 290 mm"));
+    }
+
     private static String svg(SimReport r, String number) throws Exception {
         StringWriter w = new StringWriter();
         SvgWriter.write(r, "part.nc", number, w, true);

@@ -33,9 +33,12 @@ final class SvgTitle {
                     MotionChecks.mm(Math.min(x0, x1)), MotionChecks.mm(Math.max(x0, x1)), unit,
                     a.xPer() * 2 < a.zPer() * 1.5 ? "diameter" : "radius")));
         }
+        double tip = d.tailstockTip();
+        String tail = Double.isNaN(tip) || tip <= v.zMax() ? ""
+                : "; the tailstock's centre, beyond the view, at Z " + MotionChecks.mm(tip) + " mm";
         w.write(text(10, y + 52, String.format(Locale.ROOT, "machine frame: Z %s .. %s mm, radius %s .. %s mm;"
-                + " path above the centreline, part mirrored below", MotionChecks.mm(v.zMin()),
-                MotionChecks.mm(v.zMax()), MotionChecks.mm(v.rMin()), MotionChecks.mm(v.rMax()))));
+                + " path above the centreline, part mirrored below%s", MotionChecks.mm(v.zMin()),
+                MotionChecks.mm(v.zMax()), MotionChecks.mm(v.rMin()), MotionChecks.mm(v.rMax()), tail)));
         titleBlock(w, y + 70, report, file, number);
     }
 

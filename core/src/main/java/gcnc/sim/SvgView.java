@@ -6,7 +6,8 @@ import java.util.Locale;
  * What part of the half-section a drawing shows, and machine mm to SVG pixels (z right, radius
  * up). The view fits what a setup person works from: the blank and where the tool cut it, the
  * chuck's face with its jaws, and the tailstock's centre when it stands near the part (a path
- * with no blank: the whole path). Its aspect ratio is capped (never taller than {@link #MAX_HEIGHT}
+ * with no blank: the whole path; a tailstock further from the part than the view is long is named
+ * under the drawing instead, {@link SvgTitle}). Its aspect ratio is capped (never taller than {@link #MAX_HEIGHT}
  * nor flatter than {@link #MIN_HEIGHT} at {@link SvgWriter#WIDTH} pixels wide): a short part of a
  * large diameter shows more of the bed beside it rather than becoming a 3000-pixel column.
  */
@@ -69,7 +70,7 @@ record SvgView(double zMin, double zMax, double rMin, double rMax, double scale)
             rHi = Math.max(rHi, max(jaws.r()));
         }
         double tip = d.tailstockTip();
-        if (!Double.isNaN(tip) && tip >= zHi && tip - zHi < 0.5 * (zHi - zLo)) {
+        if (!Double.isNaN(tip) && tip >= zHi && tip - zHi < zHi - zLo) {
             zHi = tip + 0.05 * (zHi - zLo); // the centre's cone and a little of the quill
         }
         double mz = Math.max(zHi - zLo, 1e-9) * 0.06;
