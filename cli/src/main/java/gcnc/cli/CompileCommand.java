@@ -91,7 +91,10 @@ final class CompileCommand extends RunCommand {
             Phrases say = reporter.phrases();
             reporter.say(say.get("compile.written", name, say.count(r.blocks(), "block"), targetName,
                     say.count(mapper.lines(), "line"), dialect.name()));
-            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s, reporter.phrases())));
+            r.simulation().ifPresent(s -> {
+                reporter.say(SimSummary.format(s, reporter.phrases()));
+                reporter.simulation(name, s);
+            });
             return ExitCode.CLEAN;
         }
     }

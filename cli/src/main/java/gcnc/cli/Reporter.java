@@ -38,6 +38,8 @@ final class Reporter {
     private final PrintWriter err;
     private final ErrorMessages.Lang lang;
     private final List<Finding> findings = new ArrayList<>();
+    /** The simulations' summaries for the JSON document, by file, in the order they ran. */
+    private final List<SimulationJson.Run> simulations = new ArrayList<>();
     private TableSource source = TableSource.builtIn();
     private Messages messages;
     private PrintWriter human;
@@ -97,6 +99,13 @@ final class Reporter {
         }
     }
 
+    /** A simulation's summary for the JSON document ({@code "simulations"}); GNU and SARIF have their own. */
+    void simulation(String path, gcnc.sim.SimReport report) {
+        if (format == Format.JSON) {
+            simulations.add(new SimulationJson.Run(path, report));
+        }
+    }
+
     /** Every finding of one file; returns how many were errors. */
     int report(String path, Diagnostics diags) {
         for (Diagnostic d : diags.sorted()) {
@@ -144,7 +153,7 @@ final class Reporter {
         }
         try {
             if (format == Format.JSON) {
-                JsonRenderer.write(findings, Main.version(), out);
+                JsonRenderer.write(findings, Main.version(), out, json -> SimulationJson.write(simulations, json));
             } else {
                 SarifRenderer.write(findings, rules(), Main.version(), out);
             }

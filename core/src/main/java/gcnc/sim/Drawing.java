@@ -16,10 +16,27 @@ import java.util.List;
  * @param moves       the tool path, one polyline per sequence
  * @param marks       where findings were reported
  * @param program     where the program's coordinates are, for the grid; null when not known (a bare DMC replay)
+ * @param machine     the machine: its name, control, chuck face and travel, for the view and the title block
  */
 public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace,
                       double stockRadius, double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks,
-                      ProgramAxes program) {
+                      ProgramAxes program, Machine machine) {
+    /**
+     * The machine around the part, in the drawing's millimetres.
+     *
+     * @param name       the profile's name
+     * @param control    its control's name
+     * @param chuckFace  z of the jaws' front face, NaN without a chuck
+     * @param travel     {zMin, zMax, rMin, rMax}: the axes' travel, r from the spindle centreline
+     */
+    public record Machine(String name, String control, double chuckFace, double[] travel) {
+    }
+
+    /** z of the tailstock centre's point, NaN without a tailstock. */
+    public double tailstockTip() {
+        return tailstock.isEmpty() ? Double.NaN : tailstock.get(0).z()[0];
+    }
+
     /**
      * The program's coordinates in the drawing: programmed Z value q is at z = z0 + q * zPer mm,
      * programmed X value p (a diameter where the control reads one) at radius r0 + p * xPer mm.
@@ -49,7 +66,14 @@ public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack
     public record Move(boolean rapid, double[] z, double[] r, int line) {
     }
 
-    /** A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12") and the point. */
-    public record Mark(String code, String block, double z, double r) {
+    /**
+     * A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12"), the point,
+     * and the tool's outline (insert, holder; mm, absolute) where its tip was then: empty for a
+     * tool without an outline.
+     */
+    public record Mark(String code, String block, double z, double r, List<Shape> tool) {
+        public Mark {
+            tool = List.copyOf(tool);
+        }
     }
 }
