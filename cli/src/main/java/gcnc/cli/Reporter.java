@@ -38,6 +38,8 @@ final class Reporter {
     private final PrintWriter err;
     private final ErrorMessages.Lang lang;
     private final List<Finding> findings = new ArrayList<>();
+    /** The finding the GNU report's last line names (gcnc explain). */
+    private final GnuRenderer.Hint hint = new GnuRenderer.Hint();
     private TableSource source = TableSource.builtIn();
     private Messages messages;
     private PrintWriter human;
@@ -111,6 +113,9 @@ final class Reporter {
 
     private void report(String path, Diagnostic d, Messages m) {
         if (format == Format.GNU) {
+            if (!gcnc.tables.Explanations.INTERNAL.containsKey(d.code())) {
+                hint.saw(d); // a file or table fault is not what gcnc explain is for
+            }
             err.println(Printable.escape(new GnuRenderer(m).render(path, d)));
             String line = programLines == null ? null : programLines.line(path, d.span().line());
             if (line != null) {
@@ -137,9 +142,15 @@ final class Reporter {
         return ExitCode.USAGE;
     }
 
-    /** Writes the JSON or SARIF document, findings sorted by file and place; nothing for GNU. */
+    /**
+     * Writes the JSON or SARIF document, findings sorted by file and place; for GNU, the closing
+     * hint (rustc's "For more information about this error, try ..."), once for the run, unless quiet.
+     */
     void finish() {
         if (format == Format.GNU) {
+            if (!quiet) {
+                hint.chosen().ifPresent(d -> err.println(new GnuRenderer(messages()).hint(d)));
+            }
             return;
         }
         try {

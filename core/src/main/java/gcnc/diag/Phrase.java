@@ -187,7 +187,11 @@ public enum Phrase {
     TOOLS_FILE_MISSING,
     TOOLS_FILE_KEYS,
     /** A simulator finding's place when the program's coordinates are not known (a DMC replayed by itself): {0} the DMC line. */
-    DMC_LINE;
+    DMC_LINE,
+    /** The last line of a GCC-style report (as rustc's): where to read more about an error ({0}: its code). */
+    EXPLAIN_HINT_ERROR,
+    /** The same for a run whose findings are warnings only ({0}: the first warning's code). */
+    EXPLAIN_HINT_WARNING;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';
