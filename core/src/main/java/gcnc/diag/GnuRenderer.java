@@ -17,9 +17,43 @@ public final class GnuRenderer {
     }
 
     public String render(String path, Diagnostic d) {
+        return render(path, d, PLAIN);
+    }
+
+    /**
+     * How the pieces of a line are shown: as they are ({@link #PLAIN}), or escaped and coloured by
+     * a front end on a terminal (the command line's colours; the line's text stays the same).
+     */
+    public interface Paint {
+        String place(String text);
+
+        String severity(Severity s, String label);
+
+        String text(String text);
+    }
+
+    public static final Paint PLAIN = new Paint() {
+        @Override
+        public String place(String text) {
+            return text;
+        }
+
+        @Override
+        public String severity(Severity s, String label) {
+            return label;
+        }
+
+        @Override
+        public String text(String text) {
+            return text;
+        }
+    };
+
+    public String render(String path, Diagnostic d, Paint paint) {
         String file = d.origin().file() != null ? d.origin().file() : path;
-        return file + ":" + d.span().line() + ":" + d.span().column() + ": " + d.severity().label()
-                + "[" + d.code().id() + "]: " + messages.render(d.code(), d.args());
+        return paint.place(file + ":" + d.span().line() + ":" + d.span().column() + ":") + " "
+                + paint.severity(d.severity(), d.severity().label())
+                + paint.text("[" + d.code().id() + "]: " + messages.render(d.code(), d.args()));
     }
 
     /**

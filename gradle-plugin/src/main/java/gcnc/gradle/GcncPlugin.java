@@ -56,6 +56,12 @@ public class GcncPlugin implements Plugin<Project> {
                 .withPropertyName("gcncSettingFiles").withPathSensitivity(PathSensitivity.RELATIVE);
         task.getInputs().property("gcncMachine", (Callable<Object>) settings::getMachine);
         task.getInputs().property("gcncControl", (Callable<Object>) () -> String.valueOf(settings.getControl()));
+        task.getInputs().property("gcncExtensions", (Callable<Object>) () -> String.join(",", settings.getExtensions()));
+        if (task instanceof org.gradle.process.JavaForkOptions) {
+            // the fixtures' everyProgramIn takes the build's list of extensions (gcnc.ProgramFiles.configured)
+            task.doFirst(t -> ((org.gradle.process.JavaForkOptions) t).systemProperty(gcnc.ProgramFiles.PROPERTY,
+                    String.join(",", settings.getExtensions())));
+        }
     }
 
     private static <T extends GcncTask> T task(Project project, String name, Class<T> type, GcncExtension settings,
