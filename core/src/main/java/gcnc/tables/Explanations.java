@@ -73,7 +73,7 @@ public final class Explanations {
         Map<Code, String> m = new EnumMap<>(Code.class);
         String table = "a broken table or machine profile (tables/, --tables, --machine FILE), not a program";
         for (Code c : List.of(Code.E400_TABLE, Code.byNumber(401), Code.byNumber(402), Code.byNumber(403),
-                Code.byNumber(404), Code.byNumber(410))) {
+                Code.byNumber(404), Code.E405_SPINDLE_TOP_SPEED_CLAMPED, Code.byNumber(410))) {
             m.put(c, table);
         }
         String files = "the command line's files (reading, writing, links), not the program's text";
