@@ -188,6 +188,16 @@ public enum Phrase {
     TOOLS_FILE_KEYS,
     /** A simulator finding's place when the program's coordinates are not known (a DMC replayed by itself): {0} the DMC line. */
     DMC_LINE,
+    /** E420: the nearest known Galil model ({0}). */
+    DID_YOU_MEAN,
+    /** galil_models.csv: a model name that is not DMC- and four or five digits ({0}). */
+    GALIL_MODEL_NAME,
+    /** galil_models.csv: a model listed twice ({0}, first on line {1}). */
+    GALIL_MODEL_TWICE,
+    /** galil_models.csv: a whole number outside what the column can hold ({0} column, {1} value, {2}..{3}). */
+    GALIL_MODEL_RANGE,
+    /** galil_models.csv: a firmware-1.2a figure smaller than the older one ({0} column, {1} the older column). */
+    GALIL_FIRMWARE_SMALLER,
     /** The last line of a GCC-style report (as rustc's): where to read more about an error ({0}: its code). */
     EXPLAIN_HINT_ERROR,
     /** The same for a run whose findings are warnings only ({0}: the first warning's code). */

@@ -72,9 +72,18 @@ public final class Explanations {
     private static Map<Code, String> internal() {
         Map<Code, String> m = new EnumMap<>(Code.class);
         String table = "a broken table or machine profile (tables/, --tables, --machine FILE), not a program";
-        for (Code c : List.of(Code.E400_TABLE, Code.byNumber(401), Code.byNumber(402), Code.byNumber(403),
-                Code.byNumber(404), Code.E405_SPINDLE_TOP_SPEED_CLAMPED, Code.byNumber(410))) {
-            m.put(c, table);
+        for (Code c : Code.values()) {
+            if (c.number() >= 400 && c.number() < 500) { // the tables' and profiles' range (docs/architecture.md)
+                m.put(c, table);
+            }
+        }
+        // E220-E237: the controller's own limits (tables/galil_models.csv, gcnc.machine.ControllerLimits),
+        // which no stage checks on a program yet; when the backend does, ExplainTest asks for their prose
+        String limits = "the Galil model's limits (tables/galil_models.csv), not yet checked on a program";
+        for (Code c : Code.values()) {
+            if (c.number() >= 220 && c.number() < 240 && !ControllerLimitsWired.YET) {
+                m.put(c, limits);
+            }
         }
         String files = "the command line's files (reading, writing, links), not the program's text";
         for (int n : new int[] {500, 501, 502, 510}) {
@@ -91,6 +100,11 @@ public final class Explanations {
         }
         m.put(Code.byNumber(45), "the thesis's out-of-memory error: gcnc reports E116 at its cap instead");
         return java.util.Collections.unmodifiableMap(m);
+    }
+
+    /** Whether the backend checks programs against gcnc.machine.ControllerLimits (E220-E237); flip it when it does. */
+    private static final class ControllerLimitsWired {
+        static final boolean YET = false;
     }
 
     public static final String DIR = "explain/";
