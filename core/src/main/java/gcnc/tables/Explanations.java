@@ -81,7 +81,7 @@ public final class Explanations {
         // which no stage checks on a program yet; when the backend does, ExplainTest asks for their prose
         String limits = "the Galil model's limits (tables/galil_models.csv), not yet checked on a program";
         for (Code c : Code.values()) {
-            if (c.number() >= 220 && c.number() < 240 && !ControllerLimitsWired.YET) {
+            if (c.number() >= 220 && c.number() < 240) {
                 m.put(c, limits);
             }
         }
@@ -100,11 +100,6 @@ public final class Explanations {
         }
         m.put(Code.byNumber(45), "the thesis's out-of-memory error: gcnc reports E116 at its cap instead");
         return java.util.Collections.unmodifiableMap(m);
-    }
-
-    /** Whether the backend checks programs against gcnc.machine.ControllerLimits (E220-E237); flip it when it does. */
-    private static final class ControllerLimitsWired {
-        static final boolean YET = false;
     }
 
     public static final String DIR = "explain/";
