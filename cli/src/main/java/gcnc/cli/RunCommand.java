@@ -30,6 +30,9 @@ abstract class RunCommand implements Callable<Integer> {
         if (report.carets()) {
             reporter.showSource();
         }
+        if (report.format == Reporter.Format.GNU) {
+            reporter.colour(report.colour());
+        }
         int status;
         try {
             status = run(common.load(reporter), out, err);

@@ -152,7 +152,7 @@ public enum Code {
     E113_M_WITHOUT_OUTPUT(113),
     /** Checker (warning): a sequence number that an earlier block already has. */
     E114_DUPLICATE_SEQUENCE_NUMBER(114),
-    /** Checker (note): later blocks that broke the same prerequisite as the first one reported. */
+    /** Note: later blocks that broke the same prerequisite as the first one reported (the checker), or got the same warning with the same arguments (any stage: Diagnostics folds it). */
     E115_SAME_CAUSE(115),
     /** Checker: the error cap was reached; checking stopped there. */
     E116_ERROR_CAP(116),
@@ -452,6 +452,12 @@ public enum Code {
     E403_PROFILE_COUNTS_OVERFLOW(403),
     /** A table, control or profile file larger than gcnc reads (a link to a device, a file of another kind). */
     E404_TABLE_FILE_TOO_LARGE(404),
+    /**
+     * Profile: spindle.max_rpm needs more than the 9.998 V the OF output gives (but not more than
+     * 10 V, E410) at spindle.rpm_per_volt: every program at the machine's own top speed would get
+     * E204 (its spindle clamped, a little slower) at every S that asks for it.
+     */
+    E405_SPINDLE_TOP_SPEED_CLAMPED(405),
     /** Profile: spindle.max_rpm needs more than the 10 V the OF output gives at spindle.rpm_per_volt: every compile at top speed would be E203. */
     E410_SPINDLE_TOP_SPEED_VOLTS(410),
     /** Profile: galil.model names no model of tables/galil_models.csv. */

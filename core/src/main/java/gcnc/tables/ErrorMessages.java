@@ -57,7 +57,7 @@ public final class ErrorMessages {
         }
         List<String> shown = arguments(args, lang);
         try {
-            return new MessageFormat(pattern(t[lang.ordinal()]), Locale.ROOT).format(shown.toArray());
+            return new MessageFormat(pattern(Plurals.choose(t[lang.ordinal()], shown)), Locale.ROOT).format(shown.toArray());
         } catch (IllegalArgumentException e) {
             return code.id() + " " + shown;
         }
@@ -91,7 +91,7 @@ public final class ErrorMessages {
             inner.add(phrase(Phrase.unnested(i), lang));
         }
         try {
-            return new MessageFormat(pattern(texts[lang.ordinal()]), Locale.ROOT).format(inner.toArray());
+            return new MessageFormat(pattern(Plurals.choose(texts[lang.ordinal()], inner)), Locale.ROOT).format(inner.toArray());
         } catch (IllegalArgumentException e) {
             return Phrase.plain(a);
         }
@@ -199,7 +199,8 @@ public final class ErrorMessages {
     private static String template(Csv.Row r, String column) throws TableException {
         String t = r.get(column);
         try {
-            new MessageFormat(pattern(t), Locale.ROOT);
+            new MessageFormat(pattern(Plurals.choose(t, List.of())), Locale.ROOT); // the plural forms
+            new MessageFormat(pattern(Plurals.choose(t, List.of("1", "1", "1", "1", "1", "1", "1", "1"))), Locale.ROOT);
             return t;
         } catch (IllegalArgumentException e) {
             int open = badPlaceholder(t);
