@@ -30,8 +30,8 @@ final class ReportOptions {
                     + " (auto: when gcnc runs on a terminal).")
     Caret caret;
 
-    /** Whether to show source lines: asked for, or on a terminal. */
-    boolean carets() {
-        return caret == Caret.ALWAYS || caret == Caret.AUTO && System.console() != null;
+    /** Whether to show source lines: asked for, or on a terminal ({@code console}: standard input and output are one). */
+    boolean carets(boolean console) {
+        return caret == Caret.ALWAYS || caret == Caret.AUTO && console;
     }
 }
