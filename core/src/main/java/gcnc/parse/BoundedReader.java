@@ -82,9 +82,35 @@ public final class BoundedReader extends Reader {
         boolean skip = skipping;
         // the characters that may still be read: the text limit is reached within this pass when fewer than n
         int room = (int) Math.min(n, textLimit - read);
-        int w = off;
+        int end = off + room;
+        int k = off;
         try {
-            for (int k = off, end = off + room; k < end; k++) {
+            if (!skip) {
+                // The usual case, no line cut yet: the characters stay where they are, and only line
+                // ends and the length of the line are looked at. The first character past the line
+                // limit, or any after it, goes to the loop below, which drops them.
+                for (; k < end; k++) {
+                    char c = text[k];
+                    if (c == '\n') {
+                        if (!cr) {
+                            ln++;
+                        }
+                        cr = false;
+                        col = 0;
+                    } else if (c == '\r') {
+                        ln++;
+                        cr = true;
+                        col = 0;
+                    } else if (col < lineLimit) {
+                        cr = false;
+                        col++;
+                    } else {
+                        break;
+                    }
+                }
+            }
+            int w = k;
+            for (; k < end; k++) {
                 char c = text[k];
                 if (c == '\n' || c == '\r') {
                     if (!(c == '\n' && cr)) {
