@@ -37,7 +37,20 @@ def read_state():
         for line in f:
             key, _, value = line.rstrip("\n").partition("=")
             state[key] = value
-    return int(state["port"]), state["token"]
+    return int(state["port"]), state["token"], int(state["pid"])
+
+
+def forget_dead(pid):
+    """A state file whose daemon is gone (a reboot, a kill): removed, so that later runs skip Python."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        try:
+            os.remove(os.path.join(state_folder(), "daemon.state"))
+        except OSError:
+            pass
+    except OSError:
+        pass
 
 
 def frame(kind, data):
@@ -95,8 +108,12 @@ def pump_stdin(sock):
 def main():
     jar, args = sys.argv[1], sys.argv[2:]
     try:
-        port, token = read_state()
-        sock = socket.create_connection(("127.0.0.1", port), timeout=2)
+        port, token, pid = read_state()
+        try:
+            sock = socket.create_connection(("127.0.0.1", port), timeout=2)
+        except ConnectionRefusedError:
+            forget_dead(pid)
+            return COLD
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         stdin = reads_stdin(args)
         request = [frame("T", token), frame("R", b""), frame("J", os.path.abspath(jar)), frame("C", os.getcwd())]

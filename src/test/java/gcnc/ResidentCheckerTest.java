@@ -202,6 +202,22 @@ class ResidentCheckerTest {
     }
 
     @Test
+    void aStateFileLeftByADeadDaemonIsRemovedAndTheRunGoesCold() throws Exception {
+        Path dir = Files.createTempDirectory("gcnc-dead-daemon");
+        Process gone = new ProcessBuilder("true").start();
+        gone.waitFor();
+        int port;
+        try (java.net.ServerSocket free = new java.net.ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            port = free.getLocalPort(); // closed below: nothing answers there
+        }
+        Files.writeString(dir.resolve("daemon.state"), "pid=" + gone.pid() + "\nport=" + port + "\ntoken=" + "0".repeat(64)
+                + "\njar=" + JAR + "\ndir=" + Path.of("").toAbsolutePath() + "\n");
+        Run r = client(List.of("check", "samples/turning.nc"), null, Map.of("GCNC_DAEMON_DIR", dir.toString()), JAR, null);
+        assertEquals(COLD, r.status(), r.text());
+        assertTrue(Files.notExists(dir.resolve("daemon.state")));
+    }
+
+    @Test
     void anotherJarAnotherFolderOrABusyDaemonRunCold() throws Exception {
         Path other = Files.createTempDirectory("gcnc-other-jar").resolve("gcnc.jar");
         Files.copy(JAR, other);
