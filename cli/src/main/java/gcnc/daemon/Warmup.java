@@ -10,12 +10,18 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Before the server takes requests, it checks and compiles a 2,000-block turning program a few
+ * Before the server takes requests, it checks and compiles a 2,000-block turning program a dozen
  * times (roughing passes with arcs, as bench/gen_program.py writes): the JIT compiles the hot code
  * once, at start, instead of in the first runs a user waits for.
  */
 final class Warmup {
-    private static final int ROUNDS = 4;
+    /**
+     * Rounds of check (and of compile and simulate every other round): after a dozen a check's own
+     * thread no longer gets faster and the JIT's threads have little left to compile (measured with a
+     * loop of Main.execute, issue 23). At most {@link #LONGEST_NS} on a slow machine.
+     */
+    private static final int ROUNDS = 12;
+    private static final long LONGEST_NS = 30_000_000_000L;
 
     private Warmup() {
     }
@@ -28,10 +34,13 @@ final class Warmup {
             Files.writeString(program, program(2000));
             String p = program.toString();
             String dmc = dir.resolve("warmup.dmc").toString();
-            for (int i = 0; i < ROUNDS; i++) {
+            long until = System.nanoTime() + LONGEST_NS;
+            for (int i = 0; i < ROUNDS && System.nanoTime() < until; i++) {
                 quietly("check", p);
-                quietly("compile", p, "-o", dmc);
-                quietly("simulate", dmc);
+                if (i % 2 == 0) {
+                    quietly("compile", p, "-o", dmc);
+                    quietly("simulate", dmc);
+                }
             }
         } catch (IOException | RuntimeException e) {
             // a warm-up that fails leaves the server as fast as a cold JVM, no less correct
