@@ -50,7 +50,7 @@ final class CompileCommand extends RunCommand {
         Reporter reporter = setup.reporter();
         boolean toStdout = output != null && SourceFiles.isStdin(output);
         // -o /dev/stdout (or the file stdout goes to) is standard output too: the DMC alone on it
-        boolean stdoutTaken = output != null && SourceFiles.isStandardOutput(output);
+        boolean stdoutTaken = output != null && (SourceFiles.isStdin(output) || streams().isStandardOutput().test(output));
         refuseUsage(reporter.format(), stdoutTaken);
         Optional<SimOptions> sim = simulation(profile, err, reporter.phrases());
         if (stdoutTaken) {

@@ -40,8 +40,8 @@ final class ReportOptions {
                 : Colour.of(color, System.getenv(), color == Colour.When.AUTO && Colour.stderrIsTerminal());
     }
 
-    /** Whether to show source lines: asked for, or on a terminal. */
-    boolean carets() {
-        return caret == Caret.ALWAYS || caret == Caret.AUTO && System.console() != null;
+    /** Whether to show source lines: asked for, or on a terminal ({@code console}: standard input and output are one). */
+    boolean carets(boolean console) {
+        return caret == Caret.ALWAYS || caret == Caret.AUTO && console;
     }
 }
