@@ -16,10 +16,28 @@ import java.util.List;
  * @param moves       the tool path, one polyline per sequence
  * @param marks       where findings were reported
  * @param program     where the program's coordinates are, for the grid; null when not known (a bare DMC replay)
+ * @param scrub       the stock before and after one block, when asked for ({@link SimOptions#withScrub}); else null
  */
 public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace,
                       double stockRadius, double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks,
-                      ProgramAxes program) {
+                      ProgramAxes program, Scrub scrub) {
+    /** A drawing without a scrub. */
+    public Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace, double stockRadius,
+                   double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks, ProgramAxes program) {
+        this(chuck, tailstock, stockBack, stockFace, stockRadius, finalZ, finalR, moves, marks, program, null);
+    }
+
+    /**
+     * The stock around the first run of one G-code line's moves (a block, or all the passes of a
+     * cycle written on it): its outline before the run ({@code beforeZ}, {@code beforeR}: for each
+     * slice the largest radius of material, as {@code finalZ}/{@code finalR}) and after it, so that
+     * what the block removed lies between the two; the tool's insert and holder ({@code holder}
+     * null when it has none) placed where the run ended; the run's moves, {@code first} to
+     * {@code last} (indices into {@link #moves}). With no blank the outlines are empty.
+     */
+    public record Scrub(int line, int first, int last, int tool, double[] beforeZ, double[] beforeR, double[] afterZ,
+                        double[] afterR, Shape insert, Shape holder) {
+    }
     /**
      * The program's coordinates in the drawing: programmed Z value q is at z = z0 + q * zPer mm,
      * programmed X value p (a diameter where the control reads one) at radius r0 + p * xPer mm.

@@ -70,6 +70,7 @@ final class MotionChecks {
             stock = null;
         }
         path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
+        scrub = path == null || options.scrubLine() == 0 ? null : new StockScrub(options.scrubLine(), stock);
         conformance = new Conformance(out, path, tol, Simulator.threadTolerance(profile, options));
         toolShape = machine.defaultTool();
         chuckBox = box(machine.chuck());
@@ -206,6 +207,9 @@ final class MotionChecks {
      */
     boolean sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec,
                      boolean judgeCut) {
+        if (scrub != null) {
+            scrub.before(line, sequences);
+        }
         this.judgeCut = judgeCut;
         removed = false;
         sequences++;
@@ -241,7 +245,31 @@ final class MotionChecks {
         if (poly != null) {
             path.move(rapid, poly, line);
             path.frame(frame, rapid);
-        }        return removed;
+        }
+        if (scrub != null && scrub.inRun() && !segs.isEmpty()) {
+            Segment last = segs.get(segs.size() - 1);
+            double tipZ = last.toZ() / kz;
+            double tipR = (last.toX() - centre()) / kx;
+            scrub.after(sequences - 1, tool, placed(insertMm, tipZ, tipR), placed(holderMm, tipZ, tipR));
+        }
+        return removed;
+    }
+
+    /** The studio's scrub ({@link SimOptions#withScrub}), null when none was asked for. */
+    private final StockScrub scrub;
+
+    /** A tool part's outline (mm from the tip, on the tool's side) with its tip at (z, r) of the drawing. */
+    private Shape placed(double[][] outline, double z, double r) {
+        if (outline == null) {
+            return null;
+        }
+        double[] zs = new double[outline[0].length];
+        double[] rs = new double[zs.length];
+        for (int i = 0; i < zs.length; i++) {
+            zs[i] = z + outline[0][i];
+            rs[i] = r + side * outline[1][i];
+        }
+        return new Shape(zs, rs);
     }
 
     /**
@@ -532,7 +560,7 @@ final class MotionChecks {
     }
 
     SimReport report(int findings) {
-        Drawing d = path == null ? null : path.drawing(machine, stock);
+        Drawing d = path == null ? null : path.drawing(machine, stock, scrub == null ? null : scrub.result());
         boolean moved = sequences > 0;
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,

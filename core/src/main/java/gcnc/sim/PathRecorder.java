@@ -56,7 +56,8 @@ final class PathRecorder {
         }
     }
 
-    Drawing drawing(SimMachine machine, Stock stock) {
+    /** The drawing; {@code scrub} the stock around one block when one was asked for, else null. */
+    Drawing drawing(SimMachine machine, Stock stock, Drawing.Scrub scrub) {
         List<Shape> chuck = new ArrayList<>();
         List<Shape> tail = new ArrayList<>();
         for (Shape s : machine.chuck()) {
@@ -66,11 +67,11 @@ final class PathRecorder {
             tail.add(scale(s));
         }
         if (stock == null) {
-            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes());
+            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes(), scrub);
         }
         double[][] part = stock.profile();
         return new Drawing(chuck, tail, stock.back(), stock.face(), stock.initialRadius(), part[0], part[1],
-                moves, marks, axes());
+                moves, marks, axes(), scrub);
     }
 
     private Drawing.ProgramAxes axes() {

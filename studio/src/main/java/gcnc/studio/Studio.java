@@ -73,8 +73,7 @@ public final class Studio implements AutoCloseable {
         this.contentPolicy = "default-src 'none'; script-src 'self' '" + sha256(webJars.importMap())
                 + "'; style-src 'self' 'unsafe-inline'; connect-src 'self'; img-src 'self' data:; base-uri 'none';"
                 + " form-action 'none'; frame-ancestors 'none'";
-        this.api = new Api(workspace, new Analysis(config.session(),
-                config.session().tables().messages().in(config.lang()), config.version()), config);
+        this.api = new Api(workspace, config);
     }
 
     /** Binds the loopback address (never another interface) and starts serving. */

@@ -162,6 +162,19 @@ final class Workspace {
         return p;
     }
 
+    /**
+     * A machine profile Configure may write: a name ending in .machine, inside DIR, in a folder
+     * that exists, never through a link, a device or a pipe.
+     */
+    Path writableProfile(String name) throws Refused, IOException {
+        Path p = resolve(name);
+        if (!p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".machine")
+                || p.getFileName().toString().length() <= ".machine".length()) {
+            throw new Refused(400, shown(name) + ": a machine profile's name ends in .machine");
+        }
+        return writable(p, name, false);
+    }
+
     /** The name of {@code p} relative to DIR, '/' between folders. */
     String name(Path p) {
         return root.relativize(p).toString().replace(java.io.File.separatorChar, '/');
