@@ -45,6 +45,8 @@ public final class Studio implements AutoCloseable {
             "studio.js", "text/javascript; charset=utf-8",
             "gcode-mode.js", "text/javascript; charset=utf-8",
             "profile.js", "text/javascript; charset=utf-8",
+            "hover.js", "text/javascript; charset=utf-8",
+            "configure.js", "text/javascript; charset=utf-8",
             "i18n.js", "text/javascript; charset=utf-8",
             "studio.css", "text/css; charset=utf-8");
 

@@ -31,7 +31,9 @@ function bounds(d) {
 
 /**
  * Draws `drawing` into `svg`; `onPick(line)` when a move is clicked. Returns a function that lights the
- * moves of one G-code line (and returns how many it lit).
+ * moves of one G-code line (and returns how many it lit); its `scrub(answer)` draws an answer of
+ * POST /api/stock over the drawing (null takes it away): the stock as it stood after the block, what the
+ * block removed (between the outline before it and after it) and the insert and holder where it ended.
  */
 export function drawProfile(svg, drawing, onPick) {
   svg.replaceChildren();
@@ -85,10 +87,32 @@ export function drawProfile(svg, drawing, onPick) {
   label(4, 12, `X ${fmt(b.xMax)}`, "start");
   label(4, py(0) - 3, "X 0", "start");
   let lit = [];
-  return (line) => {
+  const light = (line) => {
     lit.forEach((g) => g.classList.remove("current"));
     lit = byLine.get(line) || [];
     lit.forEach((g) => { g.classList.add("current"); svg.appendChild(g); }); // drawn last: on top
     return lit.length;
   };
+  const axis = drawing.stock ? drawing.stock.xAxis : 0;
+  /** A stock outline (x for each z) closed down to the centreline. */
+  const solid = (o) => {
+    const n = o.z.length;
+    return pts([o.z[0], ...o.z, o.z[n - 1]], [axis, ...o.x, axis]);
+  };
+  light.scrub = (s) => {
+    const old = svg.querySelector("g.scrub");
+    if (old) old.remove();
+    svg.classList.toggle("scrubbing", !!(s && s.found));
+    if (!s || !s.found) return;
+    const g = el("g", { class: "scrub", "data-line": s.line }, svg);
+    // the outline before the block, then the one after it over it: what shows of the first is what the block took
+    if (s.before.z.length > 1) el("polygon", { points: solid(s.before), class: "removed" }, g);
+    if (s.after.z.length > 1) el("polygon", { points: solid(s.after), class: "left" }, g);
+    if (s.holder) el("polygon", { points: pts(s.holder.z, s.holder.x), class: "holder" }, g);
+    if (s.insert) el("polygon", { points: pts(s.insert.z, s.insert.x), class: "insert" }, g);
+    // the moves stay on top, so that the path can still be clicked
+    for (const m of svg.querySelectorAll("g.move")) svg.appendChild(m);
+    for (const m of svg.querySelectorAll("circle.mark")) svg.appendChild(m);
+  };
+  return light;
 }
