@@ -257,6 +257,8 @@ class StudioWorkbenchBrowserTest {
                 "G00 X52. Z2.",
                 "M99",
                 "%", ""));
+        Files.writeString(haasDir.resolve("main.nc"), String.join("\n", MAIN) + "\n");
+        Files.writeString(haasDir.resolve("O1000.nc"), String.join("\n", O1000) + "\n");
         Session s = Session.open(Session.Options.defaults().withMachine("haas"));
         try (Studio haas = Studio.start(new Studio.Config(haasDir, 0, s, ErrorMessages.Lang.EN, "test"))) {
             open(haas, "sub.nc");
@@ -270,6 +272,22 @@ class StudioWorkbenchBrowserTest {
                 wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", String.valueOf(line)));
                 assertTrue(move.getAttribute("class").contains("current"));
             }
+            // a subprogram in a file of its own: a click on its pass opens that file at the pass's line
+            open(haas, "main.nc");
+            WebElement pass = wait.until(d -> d.findElement(By.cssSelector("#profile g.move.feed[data-file='O1000.nc']")));
+            assertEquals("3", pass.getAttribute("data-line"));
+            @SuppressWarnings("unchecked")
+            List<Number> xy = (List<Number>) js("const r = arguments[0].getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];", pass);
+            new Actions(browser).moveToLocation((int) Math.round(xy.get(0).doubleValue()),
+                    (int) Math.round(xy.get(1).doubleValue())).click().perform();
+            wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("name"), "O1000.nc"));
+            wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "3"));
+            assertTrue(browser.getCurrentUrl().endsWith("&file=O1000.nc"), browser.getCurrentUrl());
         }
     }
+
+    /** A program that calls O1000 (M98 P1000), which is in a file of its own beside it. */
+    static final String[] MAIN = {"%", "O01001 (A PASS FROM A SUBPROGRAM IN ITS OWN FILE)", "G21 G18 G99", "T0101", "G50 S2000",
+        "G97 S1000 M03", "G00 X46. Z2.", "M98 P1000", "G00 X100. Z100.", "M30", "%"};
+    static final String[] O1000 = {"%", "O01000 (ONE PASS)", "G01 Z-20. F0.2", "G00 X52. Z2.", "M99", "%"};
 }

@@ -160,6 +160,22 @@ class StudioWorkbenchTest {
         assertFalse(stock(text, 4).get("found").getAsBoolean()); // G50 S5000 M11 M03 F150
     }
 
+    @Test
+    void aMoveOfACalledProgramNamesItsFile() throws Exception {
+        start("haas");
+        Files.writeString(dir.resolve("O1000.nc"), String.join("\n", StudioWorkbenchBrowserTest.O1000) + "\n");
+        String main = String.join("\n", StudioWorkbenchBrowserTest.MAIN) + "\n";
+        JsonArray moves = post("simulate", body("name", "main.nc", "text", main)).json().getAsJsonObject("drawing")
+                .getAsJsonArray("moves");
+        List<String> seen = new ArrayList<>();
+        for (JsonElement m : moves) {
+            JsonObject o = m.getAsJsonObject();
+            seen.add((o.has("file") ? o.get("file").getAsString() + ":" : "") + o.get("line").getAsInt());
+        }
+        // G00 X46. Z2. (line 7), O1000's pass and retract (its lines 3, 4), G00 X100. Z100. (line 9)
+        assertEquals(List.of("7", "O1000.nc:3", "O1000.nc:4", "9"), seen);
+    }
+
     // ---- Configure ----
 
     static JsonObject values(String... pairs) {

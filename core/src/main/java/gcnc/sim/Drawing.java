@@ -62,9 +62,15 @@ public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack
 
     /**
      * One sequence of the path as a polyline; rapid ones are drawn dashed. {@code line} is the
-     * G-code line it came from (as its findings are reported), so a front end can link the two.
+     * G-code line it came from (as its findings are reported), so a front end can link the two;
+     * {@code file} the file that line is in when it is not the program's own (a called program
+     * beside it), else null.
      */
-    public record Move(boolean rapid, double[] z, double[] r, int line) {
+    public record Move(boolean rapid, double[] z, double[] r, int line, String file) {
+        /** A move from a line of the program's own file. */
+        public Move(boolean rapid, double[] z, double[] r, int line) {
+            this(rapid, z, r, line, null);
+        }
     }
 
     /** A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12") and the point. */

@@ -243,7 +243,7 @@ final class MotionChecks {
         }
         seconds += time(length, speed, acc, dec);
         if (poly != null) {
-            path.move(rapid, poly, line);
+            path.move(rapid, poly, line, frame == null ? null : frame.file());
             path.frame(frame, rapid);
         }
         if (scrub != null && scrub.inRun() && !segs.isEmpty()) {

@@ -23,15 +23,15 @@ final class PathRecorder {
         this.centre = centreX;
     }
 
-    /** One sequence as points {x, z} in machine counts, from G-code line {@code line}. */
-    void move(boolean rapid, List<double[]> points, int line) {
+    /** One sequence as points {x, z} in machine counts, from G-code line {@code line} of {@code file} (null: the program's). */
+    void move(boolean rapid, List<double[]> points, int line, String file) {
         double[] z = new double[points.size()];
         double[] r = new double[points.size()];
         for (int i = 0; i < z.length; i++) {
             z[i] = points.get(i)[1] / kz;
             r[i] = (points.get(i)[0] - centre) / kx;
         }
-        moves.add(new Drawing.Move(rapid, z, r, line));
+        moves.add(new Drawing.Move(rapid, z, r, line, file));
     }
 
     /** A finding on a block ("N110", "line 12") at machine counts (x, z). */

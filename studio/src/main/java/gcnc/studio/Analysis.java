@@ -36,11 +36,15 @@ final class Analysis {
     private final Session session;
     private final Messages messages;
     private final String toolVersion;
+    /** A called program's file as the page names it (relative to DIR), empty when it is not under DIR. */
+    private final java.util.function.Function<String, Optional<String>> fileNames;
 
-    Analysis(Session session, Messages messages, String toolVersion) {
+    Analysis(Session session, Messages messages, String toolVersion,
+             java.util.function.Function<String, Optional<String>> fileNames) {
         this.session = session;
         this.messages = messages;
         this.toolVersion = toolVersion;
+        this.fileNames = fileNames;
     }
 
     /** The program's diagnostics, as {@code gcnc check --format json} prints them. */
@@ -74,7 +78,7 @@ final class Analysis {
         r.simulation().ifPresent(s -> {
             doc.add("summary", summary(s));
             if (s.drawing() != null) {
-                doc.add("drawing", drawing(s.drawing()));
+                doc.add("drawing", drawing(s.drawing(), fileNames));
             }
         });
         return doc;
@@ -251,13 +255,21 @@ final class Analysis {
      * program writes X (a diameter on a lathe whose control reads one). Without a program frame (no
      * move), machine millimetres with x as twice the radius.
      */
-    private static JsonObject drawing(Drawing d) {
+    private static JsonObject drawing(Drawing d, java.util.function.Function<String, Optional<String>> fileNames) {
         Frame f = new Frame(d.program());
         JsonObject o = new JsonObject();
         JsonArray moves = new JsonArray();
         for (Drawing.Move m : d.moves()) {
             JsonObject mv = new JsonObject();
             mv.addProperty("line", m.line());
+            if (m.file() != null) { // a called program's line: the page opens that file to show it
+                Optional<String> named = fileNames.apply(m.file());
+                if (named.isPresent()) {
+                    mv.addProperty("file", named.get());
+                } else {
+                    mv.addProperty("elsewhere", true);
+                }
+            }
             mv.addProperty("rapid", m.rapid());
             mv.add("z", f.zs(m.z()));
             mv.add("x", f.xs(m.r()));

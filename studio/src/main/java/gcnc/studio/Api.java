@@ -50,8 +50,11 @@ final class Api implements AutoCloseable {
     }
 
     private Engine engine(Session session, ProfileEdit profile, String profileFile) {
-        return new Engine(session, new Analysis(session, messages, config.version()), new Modal(session, config.lang()),
-                profile, profileFile);
+        return new Engine(session, analysis(session), new Modal(session, config.lang()), profile, profileFile);
+    }
+
+    private Analysis analysis(Session session) {
+        return new Analysis(session, messages, config.version(), workspace::nameOf);
     }
 
     Path root() {
@@ -277,7 +280,7 @@ final class Api implements AutoCloseable {
         o.addProperty("valid", true);
         if (name != null) {
             Engine e = engine;
-            Analysis then = new Analysis(e.session().withProfile(edited), messages, config.version());
+            Analysis then = analysis(e.session().withProfile(edited));
             JsonObject impact = e.analysis().impact(then, name, text, folder(name));
             o.add("became", impact.get("became"));
             o.add("gone", impact.get("gone"));

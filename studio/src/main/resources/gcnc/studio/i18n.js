@@ -43,6 +43,7 @@ const WORDS = {
     askProfile: "Save the profile as (in the studio's folder, ending in .machine):",
     profileSaved: (f) => `profile saved as ${f}; the studio uses it now`, profileNotSaved: (m) => `profile not saved: ${m}`,
     profileSaveAs: "Save profile as…", close: "Close",
+    elsewhere: (l) => `line ${l} of a called program outside the studio's folder`,
   },
   es: {
     program: "Programa", new: "Nuevo", save: "Guardar", saveas: "Guardar como…", compile: "Compilar",
@@ -86,6 +87,7 @@ const WORDS = {
     askProfile: "Guardar el perfil como (en la carpeta del estudio, terminado en .machine):",
     profileSaved: (f) => `perfil guardado como ${f}; el estudio ya lo usa`, profileNotSaved: (m) => `no se guardó el perfil: ${m}`,
     profileSaveAs: "Guardar perfil como…", close: "Cerrar",
+    elsewhere: (l) => `línea ${l} de un programa llamado fuera de la carpeta del estudio`,
   },
 };
 

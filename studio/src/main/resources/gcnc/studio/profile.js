@@ -30,7 +30,8 @@ function bounds(d) {
 }
 
 /**
- * Draws `drawing` into `svg`; `onPick(line)` when a move is clicked. Returns a function that lights the
+ * Draws `drawing` into `svg`; `onPick(line, file, elsewhere)` when a move is clicked (`file`: the called program
+ * the line is in, when not this one; `elsewhere`: in a file outside the studio's folder). Returns a function that lights the
  * moves of one G-code line (and returns how many it lit); its `scrub(answer)` draws an answer of
  * POST /api/stock over the drawing (null takes it away): the stock as it stood after the block, what the
  * block removed (between the outline before it and after it) and the insert and holder where it ended.
@@ -63,12 +64,14 @@ export function drawProfile(svg, drawing, onPick) {
   const ordered = [...drawing.moves.filter((m) => m.rapid), ...drawing.moves.filter((m) => !m.rapid)];
   ordered.forEach((m) => {
     const g = el("g", { class: "move" + (m.rapid ? " rapid" : " feed"), "data-line": m.line }, svg);
+    if (m.file) g.dataset.file = m.file;
     const title = el("title", {}, g);
-    title.textContent = `line ${m.line}`;
+    title.textContent = m.file ? `${m.file}: line ${m.line}` : `line ${m.line}`;
     // a wide transparent stroke under the visible one: a thin move is easy to click
     el("polyline", { points: pts(m.z, m.x), class: "hit" }, g);
     el("polyline", { points: pts(m.z, m.x), class: "stroke" }, g);
-    g.addEventListener("click", () => onPick(m.line));
+    g.addEventListener("click", () => onPick(m.line, m.file, m.elsewhere));
+    if (m.file || m.elsewhere) return; // a line of another file: not lit by this file's cursor
     if (!byLine.has(m.line)) byLine.set(m.line, []);
     byLine.get(m.line).push(g);
   });

@@ -198,7 +198,7 @@ function showSimulation(r) {
   $("path").classList.toggle("stale", !fresh && $("profile").childElementCount > 0);
   $("galil").classList.toggle("stale", !fresh && $("dmc").childElementCount > 0);
   if (fresh) {
-    lightPath = drawProfile($("profile"), r.drawing, (line) => goTo(line, 1));
+    lightPath = drawProfile($("profile"), r.drawing, pick);
     showDmc(r.dmc);
     $("pathnote").textContent = "";
     scrubBlocks(r.drawing.moves);
@@ -207,6 +207,14 @@ function showSimulation(r) {
   }
   showSummary(r);
   cursorMoved();
+}
+
+/** A click on a move: its line, in this program or in the called program it is written in. */
+async function pick(line, file, elsewhere) {
+  if (elsewhere) { status(t.elsewhere(line), "bad"); return; }
+  if (!file || file === current.name) { goTo(line, 1); return; }
+  await open(file);
+  if (current.name === file) goTo(line, 1);
 }
 
 // ---- scrub: the stock after a block ---------------------------------------------------------------------
