@@ -2,7 +2,7 @@ package gcnc.sim;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Feed;
 import gcnc.ir.MCall;
@@ -75,10 +75,12 @@ final class SimFixture {
         sim.begin(lines(0, "#GCNC", "SH XY", "VM XY", "VA 10000", "VD 10000"));
     }
 
-    static List<GalilLine> lines(int source, String... text) {
-        List<GalilLine> out = new ArrayList<>();
+    static List<Instruction> lines(int source, String... text) {
+        List<Instruction> out = new ArrayList<>();
         for (String t : text) {
-            out.add(new GalilLine(t, source));
+            out.add(new Instruction(java.util.Objects.requireNonNull(gcnc.dmc.DmcReader.read(t, (code, args) -> {
+                throw new IllegalArgumentException(code + " " + java.util.Arrays.toString(args));
+            }), t), gcnc.dmc.Source.line(source)));
         }
         return out;
     }
@@ -93,8 +95,16 @@ final class SimFixture {
                 end = a.to();
             }
         }
+        // a line the reader refuses is reported as a replay of the file reports it (DmcReplay), and left out
+        List<Instruction> read = new ArrayList<>();
+        for (String t : dmc) {
+            gcnc.dmc.Command c = gcnc.dmc.DmcReader.read(t, (code, args) -> sim.fault(gcnc.dmc.Source.line(line), code, args));
+            if (c != null) {
+                read.add(new Instruction(c, gcnc.dmc.Source.line(line)));
+            }
+        }
         sim.block(new CheckedBlock(line, OptionalDouble.empty(), OptionalInt.empty(), List.<MCall>of(), motions,
-                List.<MCall>of(), end), lines(line, dmc));
+                List.<MCall>of(), end), read);
         at = end;
         line++;
     }
