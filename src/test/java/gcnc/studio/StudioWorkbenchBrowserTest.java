@@ -283,6 +283,13 @@ class StudioWorkbenchBrowserTest {
             wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("name"), "O1000.nc"));
             wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "3"));
             assertTrue(browser.getCurrentUrl().endsWith("&file=O1000.nc"), browser.getCurrentUrl());
+            // its DMC lines too: a click on one in main.nc's DMC opens O1000.nc at the retract's line
+            open(haas, "main.nc");
+            WebElement retract = wait.until(d -> d.findElement(By.cssSelector("#dmc li[data-file='O1000.nc'][data-source='4']")));
+            js("arguments[0].scrollIntoView({block: 'center'})", retract);
+            retract.click();
+            wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("name"), "O1000.nc"));
+            wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "4"));
         }
     }
 

@@ -68,8 +68,13 @@ final class Analysis {
                     JsonObject l = new JsonObject();
                     l.addProperty("text", DmcPrinter.print(i.command()));
                     l.addProperty("line", i.source().line());
-                    if (i.source().file() != null) {
-                        l.addProperty("file", i.source().file()); // a called program's line
+                    if (i.source().file() != null) { // a called program's line: named as the page names files
+                        Optional<String> named = fileNames.apply(i.source().file());
+                        if (named.isPresent()) {
+                            l.addProperty("file", named.get());
+                        } else {
+                            l.addProperty("elsewhere", true);
+                        }
                     }
                     dmc.add(l);
                 });

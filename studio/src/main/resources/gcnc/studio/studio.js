@@ -280,8 +280,10 @@ function showDmc(lines) {
     const li = document.createElement("li");
     li.textContent = l.text;
     li.dataset.source = l.line;
-    if (l.line > 0) li.addEventListener("click", () => goTo(l.line, 1));
+    if (l.file) li.dataset.file = l.file;
+    if (l.line > 0) li.addEventListener("click", () => pick(l.line, l.file, l.elsewhere));
     ol.appendChild(li);
+    if (l.file || l.elsewhere) continue; // a called program's line: not this file's cursor's
     if (!dmcBySource.has(l.line)) dmcBySource.set(l.line, []);
     dmcBySource.get(l.line).push(li);
   }
