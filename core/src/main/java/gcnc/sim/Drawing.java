@@ -17,10 +17,30 @@ import java.util.List;
  * @param marks       where findings were reported
  * @param program     where the program's coordinates are, for the grid; null when not known (a bare DMC replay)
  * @param machine     the machine: its name, control, chuck face and travel, for the view and the title block
+ * @param scrub       the stock before and after one block, when asked for ({@link SimOptions#withScrub}); else null
  */
 public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace,
                       double stockRadius, double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks,
-                      ProgramAxes program, Machine machine) {
+                      ProgramAxes program, Machine machine, Scrub scrub) {
+    /** A drawing without a scrub. */
+    public Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace, double stockRadius,
+                   double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks, ProgramAxes program,
+                   Machine machine) {
+        this(chuck, tailstock, stockBack, stockFace, stockRadius, finalZ, finalR, moves, marks, program, machine, null);
+    }
+
+    /**
+     * The stock around the first run of one G-code line's moves (a block, or all the passes of a
+     * cycle written on it): its outline before the run ({@code beforeZ}, {@code beforeR}: for each
+     * slice the largest radius of material, as {@code finalZ}/{@code finalR}) and after it, so that
+     * what the block removed lies between the two; the tool's insert and holder ({@code holder}
+     * null when it has none) placed where the run ended; the run's moves, {@code first} to
+     * {@code last} (indices into {@link #moves}). With no blank the outlines are empty.
+     */
+    public record Scrub(int line, int first, int last, int tool, double[] beforeZ, double[] beforeR, double[] afterZ,
+                        double[] afterR, Shape insert, Shape holder) {
+    }
+
     /**
      * The machine around the part, in the drawing's millimetres.
      *
@@ -61,9 +81,15 @@ public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack
 
     /**
      * One sequence of the path as a polyline; rapid ones are drawn dashed. {@code line} is the
-     * G-code line it came from (as its findings are reported), so a front end can link the two.
+     * G-code line it came from (as its findings are reported), so a front end can link the two;
+     * {@code file} the file that line is in when it is not the program's own (a called program
+     * beside it), else null.
      */
-    public record Move(boolean rapid, double[] z, double[] r, int line) {
+    public record Move(boolean rapid, double[] z, double[] r, int line, String file) {
+        /** A move from a line of the program's own file. */
+        public Move(boolean rapid, double[] z, double[] r, int line) {
+            this(rapid, z, r, line, null);
+        }
     }
 
     /**

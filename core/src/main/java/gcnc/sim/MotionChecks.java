@@ -77,6 +77,7 @@ final class MotionChecks {
         }
         terms = new ProgramTerms(profile);
         path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
+        scrub = path == null || options.scrubLine() == 0 ? null : new StockScrub(options.scrubLine(), stock);
         conformance = new Conformance(out, path, tol, Simulator.threadTolerance(profile, options));
         toolShape = machine.defaultTool();
         chuckBox = box(machine.chuck());
@@ -223,6 +224,9 @@ final class MotionChecks {
      */
     boolean sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec,
                      boolean judgeCut) {
+        if (scrub != null) {
+            scrub.before(line, sequences);
+        }
         this.judgeCut = judgeCut;
         removed = false;
         sequences++;
@@ -259,10 +263,33 @@ final class MotionChecks {
         seconds += t;
         terms.move(tool, line, t);
         if (poly != null) {
-            path.move(rapid, poly, line);
+            path.move(rapid, poly, line, frame == null ? null : frame.file());
             path.frame(frame, rapid);
         }
+        if (scrub != null && scrub.inRun() && !segs.isEmpty()) {
+            Segment last = segs.get(segs.size() - 1);
+            double tipZ = last.toZ() / kz;
+            double tipR = (last.toX() - centre()) / kx;
+            scrub.after(sequences - 1, tool, placed(insertMm, tipZ, tipR), placed(holderMm, tipZ, tipR));
+        }
         return removed;
+    }
+
+    /** The studio's scrub ({@link SimOptions#withScrub}), null when none was asked for. */
+    private final StockScrub scrub;
+
+    /** A tool part's outline (mm from the tip, on the tool's side) with its tip at (z, r) of the drawing. */
+    private Shape placed(double[][] outline, double z, double r) {
+        if (outline == null) {
+            return null;
+        }
+        double[] zs = new double[outline[0].length];
+        double[] rs = new double[zs.length];
+        for (int i = 0; i < zs.length; i++) {
+            zs[i] = z + outline[0][i];
+            rs[i] = r + side * outline[1][i];
+        }
+        return new Shape(zs, rs);
     }
 
     /**
@@ -569,7 +596,7 @@ final class MotionChecks {
     }
 
     SimReport report(int findings) {
-        Drawing d = path == null ? null : path.drawing(machine, stock);
+        Drawing d = path == null ? null : path.drawing(machine, stock, scrub == null ? null : scrub.result());
         boolean moved = sequences > 0;
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,

@@ -26,15 +26,15 @@ final class PathRecorder {
         this.centre = centreX;
     }
 
-    /** One sequence as points {x, z} in machine counts, from G-code line {@code line}. */
-    void move(boolean rapid, List<double[]> points, int line) {
+    /** One sequence as points {x, z} in machine counts, from G-code line {@code line} of {@code file} (null: the program's). */
+    void move(boolean rapid, List<double[]> points, int line, String file) {
         double[] z = new double[points.size()];
         double[] r = new double[points.size()];
         for (int i = 0; i < z.length; i++) {
             z[i] = points.get(i)[1] / kz;
             r[i] = (points.get(i)[0] - centre) / kx;
         }
-        moves.add(new Drawing.Move(rapid, z, r, line));
+        moves.add(new Drawing.Move(rapid, z, r, line, file));
     }
 
     /** A finding on a block ("N110", "line 12") at machine counts (x, z), drawn without the tool. */
@@ -82,7 +82,8 @@ final class PathRecorder {
         }
     }
 
-    Drawing drawing(SimMachine machine, Stock stock) {
+    /** The drawing; {@code scrub} the stock around one block when one was asked for, else null. */
+    Drawing drawing(SimMachine machine, Stock stock, Drawing.Scrub scrub) {
         List<Shape> chuck = new ArrayList<>();
         List<Shape> tail = new ArrayList<>();
         for (Shape s : machine.chuck()) {
@@ -95,11 +96,11 @@ final class PathRecorder {
                 new double[] {profile.z().min() / kz, profile.z().max() / kz, (profile.x().min() - centre) / kx,
                     (profile.x().max() - centre) / kx});
         if (stock == null) {
-            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes(), m);
+            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes(), m, scrub);
         }
         double[][] part = stock.profile();
         return new Drawing(chuck, tail, stock.back(), stock.face(), stock.initialRadius(), part[0], part[1],
-                moves, marks, axes(), m);
+                moves, marks, axes(), m, scrub);
     }
 
     private Drawing.ProgramAxes axes() {
