@@ -67,6 +67,7 @@ public final class Main implements Runnable {
         m.put("check", CheckCommand.class);
         m.put("compile", CompileCommand.class);
         m.put("simulate", SimulateCommand.class);
+        m.put("run", SendCommand.class);
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
@@ -98,7 +99,7 @@ public final class Main implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate, tables, explain, machines or completion");
+        throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate, run, tables, explain, machines or completion");
     }
 
     public static void main(String[] args) {
