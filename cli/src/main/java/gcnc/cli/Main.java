@@ -72,6 +72,7 @@ public final class Main implements Runnable {
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
         m.put("studio", StudioCommand.class);
+        m.put("controller", ControllerCommand.class);
         m.put("completion", CompletionCommand.class);
         m.put("help", CommandLine.HelpCommand.class);
         return java.util.Collections.unmodifiableMap(m);

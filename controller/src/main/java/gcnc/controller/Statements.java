@@ -1,0 +1,688 @@
+package gcnc.controller;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Executes one Galil statement for the host (thread null) or for a program thread, and runs threads.
+ * The command set is what a gcnc program (downloaded or streamed with its resident program) and its
+ * sender use, listed in docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
+ */
+final class Statements {
+    private final Controller c;
+
+    Statements(Controller c) {
+        this.c = c;
+    }
+
+    /** {@code name=expr}, {@code name[i]=expr}, {@code KPC=0}; group 1 the target, 2 the index, 3 the value. */
+    private static final Pattern ASSIGNMENT = Pattern.compile("([A-Za-z][A-Za-z0-9]{0,7})\\s*(?:\\[(.*)\\])?\\s*=(.*)");
+
+    /** Commands with a per-axis assignment form ({@code OFC=0}); the value is accepted and, but for OF, not used. */
+    private static final java.util.Set<String> AXIS_ASSIGNABLE = java.util.Set.of("KP", "KI", "KD", "ER", "OF", "BL",
+            "FL", "TL", "AC", "DC", "SP", "IT", "OE");
+
+    /** Accepted and stored nowhere: servo tuning, soft limits, smoothing (not modelled; docs say so). */
+    private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
+            "IT", "OE", "EO", "NO");
+
+    String execute(String st, ProgramThread th) throws GalilException {
+        if (st.isEmpty()) {
+            return "";
+        }
+        if (st.equals("\u0012\u0016")) {
+            return c.model.revision + "\r\n";
+        }
+        if (st.charAt(0) == '#') {
+            if (th == null) {
+                throw new GalilException(Tc.UNRECOGNIZED);
+            }
+            return "";
+        }
+        if (word(st, "IF") || st.equals("ELSE") || st.equals("ENDIF")) {
+            if (th == null) {
+                throw new GalilException(Tc.ONLY_IN_PROGRAM);
+            }
+            flow(st, th);
+            return "";
+        }
+        Matcher m = ASSIGNMENT.matcher(st);
+        if (m.matches()) {
+            return assign(m.group(1), m.group(2), m.group(3).strip(), th);
+        }
+        if (st.length() < 2 || !upper(st.charAt(0)) || !upper(st.charAt(1))) {
+            throw new GalilException(Tc.UNRECOGNIZED);
+        }
+        String cmd = st.substring(0, 2);
+        String args = st.substring(2).strip();
+        return command(cmd, args, th);
+    }
+
+    private static boolean upper(char ch) {
+        return ch >= 'A' && ch <= 'Z';
+    }
+
+    private static boolean word(String st, String w) {
+        return st.startsWith(w) && (st.length() == w.length() || st.charAt(w.length()) == ' '
+                || st.charAt(w.length()) == '(');
+    }
+
+    private double eval(String e) throws GalilException {
+        return Expressions.eval(e, c);
+    }
+
+    private String assign(String name, String index, String value, ProgramThread th) throws GalilException {
+        if (index == null && name.length() == 3 && AXIS_ASSIGNABLE.contains(name.substring(0, 2))
+                && c.axis(name.charAt(2)) >= 0) {
+            int a = c.axis(name.charAt(2));
+            double v = eval(value);
+            if (name.startsWith("OF")) {
+                if (Math.abs(v) > 9.9982) {
+                    throw new GalilException(Tc.RANGE);
+                }
+                c.offsets[a] = v;
+            }
+            return "";
+        }
+        if (index != null) {
+            double[] arr = c.arrays.get(name);
+            if (arr == null) {
+                throw new GalilException(Tc.BAD_FUNCTION);
+            }
+            double i = eval(index);
+            if (i < 0 || i != Math.rint(i) || i >= arr.length) {
+                throw new GalilException(Tc.BAD_INDEX);
+            }
+            if (value.isEmpty()) {
+                return number(arr[(int) i]) + "\r\n";
+            }
+            arr[(int) i] = eval(value);
+            return "";
+        }
+        if (value.isEmpty()) {
+            return number(c.variable(name)) + "\r\n";
+        }
+        double v = eval(value);
+        if (!c.variables.containsKey(name) && c.variables.size() >= Model.VARIABLES) {
+            throw new GalilException(Tc.TOO_MANY_VARIABLES);
+        }
+        c.variables.put(name, v);
+        return "";
+    }
+
+    /** Galil's number format for MG and interrogations: a sign or a space, then 4 decimals. */
+    static String number(double v) {
+        return (v < 0 ? "-" : " ") + String.format(Locale.ROOT, "%.4f", Math.abs(v));
+    }
+
+    private String command(String cmd, String args, ProgramThread th) throws GalilException {
+        VectorMotion mo = c.motion;
+        switch (cmd) {
+            case "TC": {
+                double n = args.isEmpty() ? 0 : eval(args);
+                Tc e = c.lastError;
+                c.lastError = Tc.NONE;
+                return (n == 1 && e != Tc.NONE ? e.code + " " + e.text : String.valueOf(e.code)) + "\r\n";
+            }
+            case "MG":
+                return message(args, th);
+            case "CW": {
+                List<String> a = split(args);
+                double n = eval(a.get(0));
+                if (n != 1 && n != 2) {
+                    throw new GalilException(Tc.RANGE);
+                }
+                c.cw = (int) n;
+                return "";
+            }
+            case "CF":
+                return "";
+            case "XQ":
+                return execute(args);
+            case "HX":
+                return halt(args);
+            case "UL":
+                if (th != null) {
+                    throw new GalilException(Tc.NOT_IN_PROGRAM);
+                }
+                return c.program.upload() + "\\";
+            case "DL":
+                throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
+            case "EN":
+            case "RE":
+                if (th != null) {
+                    th.back();
+                }
+                return "";
+            case "JP":
+            case "JS":
+                return jump(cmd, args, th);
+            case "SH":
+                for (int a : axesOrAll(args)) {
+                    c.servo[a] = true;
+                }
+                return "";
+            case "MO":
+                for (int a : axesOrAll(args)) {
+                    c.servo[a] = false;
+                    if (a == mo.axis1 || a == mo.axis2) {
+                        mo.abort(0, c.time());
+                    }
+                }
+                return "";
+            case "VM":
+                return vm(args);
+            case "CA":
+                if (!args.equals("S")) {
+                    throw new GalilException(Tc.S_OPERAND);
+                }
+                return "";
+            case "VS":
+                mo.vs = range(eval(args), 2, VectorMotion.MAX_SPEED);
+                mo.changed();
+                return "";
+            case "VA":
+                mo.va = Math.floor(range(eval(args), 1024, 1_073_740_800) / 1024) * 1024;
+                mo.changed();
+                return "";
+            case "VD":
+                if (mo.running()) {
+                    throw new GalilException(Tc.WHILE_RUNNING);
+                }
+                mo.vd = Math.floor(range(eval(args), 1024, 1_073_740_800) / 1024) * 1024;
+                mo.changed();
+                return "";
+            case "VR":
+                mo.vr = range(eval(args), 0, 10);
+                mo.changed();
+                return "";
+            case "VP":
+            case "CR":
+                return segment(cmd, args);
+            case "VE":
+            case "LE":
+                mo.ve();
+                return "";
+            case "BG":
+                return begin(args);
+            case "AM":
+            case "MC":
+                onlyInProgram(th);
+                th.waitingFor = () -> !mo.running();
+                return "";
+            case "WT": {
+                onlyInProgram(th);
+                double ms = range(eval(split(args).get(0)), 2, 2_147_483_646);
+                double until = c.time() + ms / 1000;
+                th.waitingFor = () -> c.time() >= until - 1e-9;
+                return "";
+            }
+            case "AI": {
+                onlyInProgram(th);
+                int n = (int) eval(args);
+                int bit = Math.abs(n);
+                c.io("IN", bit);
+                th.waitingFor = () -> ((c.inputs >> (bit - 1) & 1) != 0) == n > 0;
+                return "";
+            }
+            case "ST":
+                if (args.isEmpty()) {
+                    for (ProgramThread t : c.threads) {
+                        if (t != th) {
+                            t.halt();
+                        }
+                    }
+                }
+                mo.stop(4);
+                return "";
+            case "AB": {
+                double n = args.isEmpty() ? 0 : eval(args);
+                if (n != 1) {
+                    for (ProgramThread t : c.threads) {
+                        if (t != th) {
+                            t.halt();
+                        }
+                    }
+                }
+                mo.abort(7, c.time());
+                return "";
+            }
+            case "CS":
+                if (!args.isEmpty() && !args.equals("S")) {
+                    throw new GalilException(Tc.S_OPERAND);
+                }
+                mo.clear();
+                return "";
+            case "DP":
+                return define(args);
+            case "TP":
+            case "RP":
+                return tell(args);
+            case "SB":
+            case "CB": {
+                int n = (int) range(eval(args), 1, c.model.outputs);
+                c.outputs = cmd.equals("SB") ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
+                return "";
+            }
+            case "OB": {
+                List<String> a = split(args);
+                if (a.size() != 2) {
+                    throw new GalilException(Tc.OPERAND);
+                }
+                int n = (int) range(eval(a.get(0)), 1, c.model.outputs);
+                boolean on = eval(a.get(1)) != 0;
+                c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
+                return "";
+            }
+            case "OF":
+                return offsets(args);
+            case "LM":
+                if (args.equals("?")) {
+                    return mo.free() + "\r\n";
+                }
+                throw new GalilException(Tc.UNRECOGNIZED); // LM/LI linear mode is not modelled
+            case "DM":
+                return dimension(args);
+            case "RS":
+                return reset();
+            default:
+                if (NO_EFFECT.contains(cmd)) {
+                    return "";
+                }
+                throw new GalilException(Tc.UNRECOGNIZED);
+        }
+    }
+
+    private static void onlyInProgram(ProgramThread th) throws GalilException {
+        if (th == null) {
+            throw new GalilException(Tc.ONLY_IN_PROGRAM);
+        }
+    }
+
+    private static double range(double v, double min, double max) throws GalilException {
+        if (Double.isNaN(v) || v < min || v > max) {
+            throw new GalilException(Tc.RANGE);
+        }
+        return v;
+    }
+
+    private List<Integer> axesOrAll(String args) throws GalilException {
+        if (args.isEmpty()) {
+            List<Integer> all = new ArrayList<>();
+            for (int i = 0; i < c.model.axes; i++) {
+                all.add(i);
+            }
+            return all;
+        }
+        return c.axes(args);
+    }
+
+    private String vm(String args) throws GalilException {
+        List<Integer> a = c.axes(args);
+        if (a.size() != 2) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        if (c.motion.running()) {
+            throw new GalilException(Tc.WHILE_RUNNING);
+        }
+        c.motion.clear();
+        c.motion.axis1 = a.get(0);
+        c.motion.axis2 = a.get(1);
+        return "";
+    }
+
+    /** VP a,b{@code <o >p} or CR r,start,sweep{@code <o >p}. */
+    private String segment(String cmd, String args) throws GalilException {
+        double o = Double.NaN;
+        double p = Double.NaN;
+        int lt = depthZero(args, '<');
+        int gt = depthZero(args, '>');
+        int cut = lt >= 0 ? (gt >= 0 ? Math.min(lt, gt) : lt) : gt;
+        String coords = cut >= 0 ? args.substring(0, cut) : args;
+        if (lt >= 0) {
+            o = eval(args.substring(lt + 1, gt > lt ? gt : args.length()));
+        }
+        if (gt >= 0) {
+            p = eval(args.substring(gt + 1, lt > gt ? lt : args.length()));
+        }
+        List<String> a = split(coords);
+        if (cmd.equals("VP")) {
+            if (a.size() != 2) {
+                throw new GalilException(Tc.OPERAND);
+            }
+            c.motion.vp(integral(eval(a.get(0))), integral(eval(a.get(1))), o, p);
+        } else {
+            if (a.size() != 3) {
+                throw new GalilException(Tc.OPERAND);
+            }
+            c.motion.cr(eval(a.get(0)), eval(a.get(1)), eval(a.get(2)), o, p);
+        }
+        return "";
+    }
+
+    /** VP's resolution is one count: a fraction is truncated, as Galil truncates integer arguments. */
+    private static double integral(double v) throws GalilException {
+        if (Math.abs(v) > 2_147_483_647d) {
+            throw new GalilException(Tc.RANGE);
+        }
+        return v < 0 ? Math.ceil(v) : Math.floor(v);
+    }
+
+    private String begin(String args) throws GalilException {
+        if (!args.equals("S")) {
+            throw new GalilException(Tc.UNRECOGNIZED); // independent moves (BG X) are not modelled
+        }
+        VectorMotion mo = c.motion;
+        if (mo.axis1 < 0) {
+            throw new GalilException(Tc.NO_SEQUENCE);
+        }
+        if (!c.servo[mo.axis1] || !c.servo[mo.axis2]) {
+            throw new GalilException(Tc.MOTOR_OFF);
+        }
+        if (c.limitTripped) {
+            throw new GalilException(Tc.LIMIT_SWITCH);
+        }
+        mo.begin();
+        return "";
+    }
+
+    private String define(String args) throws GalilException {
+        if (c.motion.running()) {
+            throw new GalilException(Tc.WHILE_RUNNING);
+        }
+        List<String> a = split(args);
+        if (a.size() > c.model.axes) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        for (int i = 0; i < a.size(); i++) {
+            if (!a.get(i).isEmpty()) {
+                c.motion.position[i] = integral(eval(a.get(i)));
+            }
+        }
+        c.motion.clear();
+        return "";
+    }
+
+    private String tell(String args) throws GalilException {
+        List<Integer> axes = axesOrAll(args);
+        StringBuilder b = new StringBuilder();
+        for (int a : axes) {
+            b.append(b.length() == 0 ? "" : ", ").append((long) Math.rint(c.motion.position[a]));
+        }
+        return b + "\r\n";
+    }
+
+    private String offsets(String args) throws GalilException {
+        List<String> a = split(args);
+        if (a.size() > c.model.axes) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        double[] next = c.offsets.clone();
+        for (int i = 0; i < a.size(); i++) {
+            if (!a.get(i).isEmpty()) {
+                next[i] = range(eval(a.get(i)), -9.9982, 9.9982);
+            }
+        }
+        System.arraycopy(next, 0, c.offsets, 0, next.length);
+        return "";
+    }
+
+    private String dimension(String args) throws GalilException {
+        for (String d : split(args)) {
+            Matcher m = Pattern.compile("([A-Za-z][A-Za-z0-9]{0,7})\\[(.+)\\]").matcher(d);
+            if (!m.matches()) {
+                throw new GalilException(Tc.OPERAND);
+            }
+            int n = (int) range(eval(m.group(2)), 1, c.model.arrayElements);
+            int used = 0;
+            for (double[] arr : c.arrays.values()) {
+                used += arr.length;
+            }
+            double[] old = c.arrays.get(m.group(1));
+            if (used - (old == null ? 0 : old.length) + n > c.model.arrayElements) {
+                throw new GalilException(Tc.ARRAY_SPACE);
+            }
+            if (old == null && c.arrays.size() >= Model.ARRAYS) {
+                throw new GalilException(Tc.TOO_MANY_VARIABLES);
+            }
+            c.arrays.put(m.group(1), new double[n]);
+        }
+        return "";
+    }
+
+    /** RS: motion, threads, variables, arrays, outputs and errors back to power-up; the program stays; #AUTO runs. */
+    private String reset() {
+        for (ProgramThread t : c.threads) {
+            t.halt();
+        }
+        c.motion.abort(7, c.time());
+        c.variables.clear();
+        c.arrays.clear();
+        c.outputs = 0;
+        java.util.Arrays.fill(c.offsets, 0);
+        java.util.Arrays.fill(c.servo, false);
+        c.lastError = Tc.NONE;
+        c.cw = 2;
+        int auto = c.program.label("AUTO");
+        if (auto >= 0) {
+            c.threads[0].start(auto);
+        }
+        return "";
+    }
+
+    // ---- program flow ----
+
+    /** XQ [#label|line][,thread]. */
+    private String execute(String args) throws GalilException {
+        List<String> a = split(args);
+        int line = 0;
+        if (!a.isEmpty() && !a.get(0).isEmpty()) {
+            line = target(a.get(0));
+        }
+        int thread = a.size() > 1 ? (int) range(eval(a.get(1)), 0, 7) : 0;
+        if (line >= c.program.size()) {
+            throw new GalilException(Tc.UNDEFINED_LABEL);
+        }
+        c.threads[thread].start(line);
+        return "";
+    }
+
+    /** A label ({@code #NAME}) or a line number, as XQ, JP and JS take them. */
+    private int target(String t) throws GalilException {
+        if (t.startsWith("#")) {
+            int line = c.program.label(t.substring(1).strip());
+            if (line < 0) {
+                throw new GalilException(Tc.UNDEFINED_LABEL);
+            }
+            return line;
+        }
+        return (int) range(eval(t), 0, c.program.size() - 1);
+    }
+
+    private String halt(String args) throws GalilException {
+        if (args.isEmpty()) {
+            for (ProgramThread t : c.threads) {
+                t.halt();
+            }
+        } else {
+            c.threads[(int) range(eval(args), 0, 7)].halt();
+        }
+        return "";
+    }
+
+    private String jump(String cmd, String args, ProgramThread th) throws GalilException {
+        onlyInProgram(th);
+        List<String> a = split(args);
+        int to = target(a.get(0));
+        if (a.size() > 1 && eval(a.get(1)) == 0) {
+            return "";
+        }
+        if (cmd.equals("JS")) {
+            th.call(to);
+        } else {
+            th.jump(to);
+        }
+        return "";
+    }
+
+    /** IF (cond) / ELSE / ENDIF: a false IF, or an ELSE reached from its IF branch, skips to its match. */
+    private void flow(String st, ProgramThread th) throws GalilException {
+        if (st.equals("ENDIF")) {
+            return;
+        }
+        if (st.equals("ELSE")) {
+            skip(th, false);
+            return;
+        }
+        if (eval(st.substring(2).strip()) == 0) {
+            skip(th, true);
+        }
+    }
+
+    /** Moves the thread past the matching ENDIF (or, when {@code toElse}, past a matching ELSE first). */
+    private void skip(ProgramThread th, boolean toElse) throws GalilException {
+        int depth = 0;
+        int line = th.line;
+        int at = th.statement;
+        while (line < c.program.size()) {
+            List<String> sts = c.program.line(line).statements();
+            for (; at < sts.size(); at++) {
+                String s = sts.get(at);
+                if (word(s, "IF")) {
+                    depth++;
+                } else if (s.equals("ENDIF") && depth-- == 0 || s.equals("ELSE") && depth == 0 && toElse) {
+                    th.line = line;
+                    th.statement = at + 1;
+                    return;
+                }
+            }
+            line++;
+            at = 0;
+        }
+        throw new GalilException(Tc.IF_WITHOUT_ENDIF);
+    }
+
+    /** Runs up to {@code budget} statements of a thread, or until it waits on a trippoint that has not passed. */
+    void run(ProgramThread th, int budget) {
+        for (int n = 0; n < budget && th.running(); n++) {
+            if (th.waitingFor != null) {
+                if (!th.waitingFor.getAsBoolean()) {
+                    return;
+                }
+                th.waitingFor = null;
+            }
+            if (th.line >= c.program.size()) {
+                th.halt();
+                return;
+            }
+            List<String> sts = c.program.line(th.line).statements();
+            if (th.statement >= sts.size()) {
+                th.line++;
+                th.statement = 0;
+                continue;
+            }
+            int line = th.line;
+            String st = sts.get(th.statement++);
+            try {
+                execute(st, th);
+            } catch (GalilException e) {
+                c.programError(th, line, st, e);
+            }
+        }
+    }
+
+    // ---- MG ----
+
+    private static final Pattern FORMAT = Pattern.compile("\\{F(\\d+)\\.(\\d+)\\}");
+    private static final Pattern LOCAL_FORMAT = Pattern.compile("(.+?)\\{F(\\d+)\\.(\\d+)\\}");
+
+    /** A number as MG writes it: Galil's default (sign or space, 4 decimals), or {@code {Fn.m}} (n digits, m decimals). */
+    private static String formatted(double v, int digits, int decimals) {
+        if (digits < 0) {
+            return (v < 0 ? "-" : " ") + String.format(Locale.ROOT, "%." + decimals + "f", Math.abs(v));
+        }
+        String body = String.format(Locale.ROOT, "%0" + (digits + (decimals > 0 ? decimals + 1 : 0)) + "." + decimals + "f",
+                Math.abs(v));
+        return (v < 0 ? "-" : "") + body;
+    }
+
+    private String message(String args, ProgramThread th) throws GalilException {
+        StringBuilder b = new StringBuilder();
+        boolean newline = true;
+        int digits = -1;
+        int decimals = 4;
+        for (String item : split(args)) {
+            String it = item.strip();
+            Matcher f = FORMAT.matcher(it);
+            if (it.startsWith("\"")) {
+                if (it.length() < 2 || !it.endsWith("\"")) {
+                    throw new GalilException(Tc.MISSING_QUOTE);
+                }
+                b.append(it, 1, it.length() - 1);
+            } else if (it.equals("{N}")) {
+                newline = false;
+            } else if (f.matches()) {
+                digits = Integer.parseInt(f.group(1));
+                decimals = Integer.parseInt(f.group(2));
+            } else if (!it.isEmpty()) {
+                // a format right after an operand ({@code MG _LMS{F3.0}}) is for that operand only
+                Matcher local = LOCAL_FORMAT.matcher(it);
+                if (local.matches()) {
+                    b.append(formatted(eval(local.group(1)), Integer.parseInt(local.group(2)),
+                            Integer.parseInt(local.group(3))));
+                } else {
+                    b.append(formatted(eval(it), digits, decimals));
+                }
+            }
+        }
+        String text = b + (newline ? "\r\n" : "");
+        if (th != null) {
+            c.unsolicited(text);
+            return "";
+        }
+        return text;
+    }
+
+    // ---- argument lists ----
+
+    /** The arguments split at commas outside quotes, parentheses and brackets (blanks kept inside). */
+    static List<String> split(String args) {
+        List<String> out = new ArrayList<>();
+        int depth = 0;
+        boolean quoted = false;
+        int from = 0;
+        for (int i = 0; i < args.length(); i++) {
+            char ch = args.charAt(i);
+            if (ch == '"') {
+                quoted = !quoted;
+            } else if (!quoted && (ch == '(' || ch == '[' || ch == '{')) {
+                depth++;
+            } else if (!quoted && (ch == ')' || ch == ']' || ch == '}')) {
+                depth--;
+            } else if (!quoted && depth == 0 && ch == ',') {
+                out.add(args.substring(from, i).strip());
+                from = i + 1;
+            }
+        }
+        out.add(args.substring(from).strip());
+        return out;
+    }
+
+    private static int depthZero(String s, char want) {
+        int depth = 0;
+        for (int i = 0; i < s.length(); i++) {
+            char ch = s.charAt(i);
+            if (ch == '(' || ch == '[') {
+                depth++;
+            } else if (ch == ')' || ch == ']') {
+                depth--;
+            } else if (ch == want && depth == 0) {
+                return i;
+            }
+        }
+        return -1;
+    }
+}
