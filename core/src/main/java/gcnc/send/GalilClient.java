@@ -24,6 +24,29 @@ public final class GalilClient implements AutoCloseable {
     public record Reply(boolean ok, String data) {
     }
 
+    /** GCNC_RUN_TRACE set: every command and reply on standard error (for a bench session). */
+    private static final boolean TRACE = System.getenv("GCNC_RUN_TRACE") != null;
+
+    /**
+     * Forgets what is in flight after a reply that could not be read (garbage, a timeout): what is
+     * pending is dropped and what arrives within {@code ms} is read and dropped too, so that the
+     * next command's reply is its own.
+     */
+    public void resync(int ms) {
+        pending.setLength(0);
+        long until = System.currentTimeMillis() + ms;
+        try {
+            while (System.currentTimeMillis() < until) {
+                int n = link.read(buffer, (int) Math.max(1, until - System.currentTimeMillis()));
+                if (n < 0) {
+                    return;
+                }
+            }
+        } catch (IOException e) {
+            // the link is gone: the next command says so
+        }
+    }
+
     private final Link link;
     private final int timeoutMs;
     private final Consumer<String> unsolicited;
@@ -184,6 +207,9 @@ public final class GalilClient implements AutoCloseable {
     /** Sends raw bytes that need no reply: Ctrl-R Ctrl-V is sent through {@link #query} instead. */
     private void write(String command, String text) throws IOException {
         commands++;
+        if (TRACE) {
+            System.err.println("gcnc run > " + printable(text));
+        }
         try {
             link.write(text.getBytes(StandardCharsets.ISO_8859_1));
         } catch (IOException e) {
@@ -209,6 +235,9 @@ public final class GalilClient implements AutoCloseable {
                     String text = pending.substring(0, i);
                     pending.delete(0, i + 1);
                     String body = text.strip();
+                    if (TRACE) {
+                        System.err.println("gcnc run < " + printable(text) + c);
+                    }
                     if (!data && !body.isEmpty()) {
                         throw new LinkFault(LinkFault.Kind.GARBAGE, command, "'" + printable(text) + "' where only : or ? belongs");
                     }

@@ -65,7 +65,8 @@ public final class Sender {
         Progress progress = new Progress(program, blocks, events);
         GalilClient client = new GalilClient(link, timeoutMs, m -> events.accept(new Event.Message(m)));
         Controller c = new Controller(client, profile, program.plane());
-        try (client) {
+        // closed in finally, not by try-with-resources: the catches below still talk to the controller
+        try {
             Piece piece = preflight(c, link.name());
             events.accept(new Event.Started(form.name(), piece.lines().size(), countBlocks(piece),
                     program.totalSeconds() - program.secondsBefore(firstMotion(piece)), options.dryRun(),
@@ -83,6 +84,7 @@ public final class Sender {
             return stopped(f, progress);
         } catch (LinkFault lf) {
             if (progress.hasStarted() && lf.kind() != LinkFault.Kind.DROPPED) {
+                client.resync(300);
                 c.stopAll();
             }
             String done = block(progress.completedLine());
@@ -104,6 +106,8 @@ public final class Sender {
             c.stopAll();
             return stopped(new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true,
                     progress.executingLine()), progress);
+        } finally {
+            client.close();
         }
     }
 
@@ -167,6 +171,11 @@ public final class Sender {
         if (!f.pendingError().isEmpty()) {
             events.accept(new Event.Message("the controller had an error pending, read and cleared with TC1: "
                     + f.pendingError()));
+        }
+        if (f.programRunning()) {
+            // a program left running (an earlier run whose link dropped goes on without it): HX would cut it off
+            throw new RunFault(Code.E825_NOT_READY, 0, false, "a program is running in thread 0 (_XQ0 >= 0): let it end,"
+                    + " or halt it (HX) and stop the axes (ST) at the controller, then run or resume again");
         }
         if (f.moving()) {
             throw new RunFault(Code.E825_NOT_READY, 0, false, "a vector sequence is moving (_BGS = 1): stop it first");
