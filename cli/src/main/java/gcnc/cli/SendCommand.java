@@ -201,7 +201,7 @@ final class SendCommand implements Callable<Integer> {
         // 4. the run, with the operator's keys and Ctrl-C
         Operator operator = new Operator();
         Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
-                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs), this::resumeCommand);
+                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs, Sender.tolerance(setup.profile())), this::resumeCommand);
         Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
         try (keys) {
             return sender.run(link, timeoutMs);

@@ -605,7 +605,7 @@ public enum Code {
     E823_GARBAGE(823),
     /** Sender: the program read back with UL is not the one downloaded with DL. */
     E824_READBACK_DIFFERS(824),
-    /** Sender: the controller is not ready to run (a limit switch active, a sequence moving). */
+    /** Sender: the controller cannot run the program (a limit switch active, a sequence moving, a program running; or it ended the program early). */
     E825_NOT_READY(825),
     /** Sender: the axes are not where the program was verified to start (home). */
     E826_NOT_AT_START(826),

@@ -158,6 +158,27 @@ public final class Controller {
         return (int) client.number("_ED");
     }
 
+    /** {@code MG _SC} of the plane's first channel: why its motion ended (COMALL SC). */
+    public int stopCode() throws IOException {
+        return (int) client.number("_SC" + letter(plane.first()));
+    }
+
+    /** The meaning of a stop code (COMALL SC; the codes a lathe program meets). */
+    public static String stopReason(int code) {
+        return switch (code) {
+            case 1 -> "stopped at the commanded position";
+            case 2, 3 -> "a limit switch";
+            case 4 -> "ST";
+            case 6 -> "the abort input";
+            case 7 -> "AB";
+            case 8 -> "off on error";
+            case 99 -> "MC timeout";
+            case 100 -> "a vector sequence still running";
+            case 101 -> "stopped at the end of a vector sequence";
+            default -> "see the command reference, SC";
+        };
+    }
+
     /** {@code TC1}: "code text" of the last error (and clears it). */
     public String explain() throws IOException {
         GalilClient.Reply r = client.query("TC1");

@@ -34,7 +34,7 @@ public final class DmcProgram {
      * @param xFirst     lathe X is the first channel (else lathe Z is)
      */
     public record Plane(int first, int second, boolean xFirst, int xSign, int zSign) {
-        static Plane of(MachineProfile p) {
+        public static Plane of(MachineProfile p) {
             int x = channel(p.x().galil());
             int z = channel(p.z().galil());
             return new Plane(Math.min(x, z), Math.max(x, z), x < z, p.x().sign(), p.z().sign());

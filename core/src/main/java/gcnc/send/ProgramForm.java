@@ -15,9 +15,12 @@ import java.util.List;
  */
 public final class ProgramForm implements Form {
     private final int pollMs;
+    private final double tolerance;
 
-    public ProgramForm(int pollMs) {
+    /** @param tolerance how far (counts) the axes may end from the program's end point */
+    public ProgramForm(int pollMs, double tolerance) {
         this.pollMs = pollMs;
+        this.tolerance = tolerance;
     }
 
     @Override
@@ -121,6 +124,35 @@ public final class ProgramForm implements Form {
         }
     }
 
+    /**
+     * A thread that ended without an error code may still have been cut short: a limit switch
+     * without a #LIMSWI routine stops the motion and the program (COMALL: "without it the controller
+     * issues ST"). The axes must be where the piece's last motion ends; else the stop code says why.
+     */
+    private void endedAtItsEnd(Piece piece, Controller c, Progress progress, Operator op) throws IOException, RunFault {
+        Sequence last = null;
+        for (int o : piece.origin()) {
+            Sequence s = progress.program().sequenceAt(o);
+            if (s != null) {
+                last = s;
+            }
+        }
+        if (last == null) {
+            return;
+        }
+        double[] at = c.position();
+        if (Math.hypot(at[0] - last.end()[0], at[1] - last.end()[1]) <= tolerance) {
+            progress.at(last.last(), at, op);
+            return;
+        }
+        int code = c.stopCode();
+        progress.at(progress.executingIndex(), at, op);
+        c.stopAll();
+        throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "it ended during line "
+                + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at the end "
+                + Resume.counts(last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+    }
+
     /** Polls until thread 0 ends, applying the operator's hold, override and stop between polls. */
     private void follow(Piece piece, Controller c, Progress progress, Operator op)
             throws RunFault, IOException, InterruptedException {
@@ -153,6 +185,7 @@ public final class ProgramForm implements Form {
                     c.stopAll();
                     throw f;
                 }
+                endedAtItsEnd(piece, c, progress, op);
                 return;
             }
             progress.at(piece.originOf(xq), c.position(), op);

@@ -57,6 +57,11 @@ public final class Sender {
 
     /** How far (counts) the axes may be from a point and still be at it: 3 counts, or 5 µm. */
     public double tolerance() {
+        return tolerance(profile);
+    }
+
+    /** {@link #tolerance()} of a machine. */
+    public static double tolerance(MachineProfile profile) {
         return Math.max(3, Math.max(profile.x().countsPerMm(), profile.z().countsPerMm()) * 0.005);
     }
 
@@ -126,6 +131,9 @@ public final class Sender {
     }
 
     private int firstMotion(Piece piece) {
+        if (options.resumeAt() != null) {
+            return Math.max(0, program.firstLineOf(options.resumeAt().line()));
+        }
         for (int o : piece.origin()) {
             if (program.sourceLine(o) > 0) {
                 return o;
