@@ -36,12 +36,14 @@ public final class ProgramForm implements Form {
             return;
         }
         for (Piece block : steps(piece, progress.program())) {
-            int at = progress.program().sourceLine(firstBlockLine(block));
+            progress.pointAt(firstBlockLine(block, progress.program()));
+            int at = progress.executingLine();
             BlockTable.Block b = progress.blocks().at(at);
             progress.events().accept(new Event.StepWait(at, b == null ? null : b.number()));
             while (!op.awaitEnter()) {
                 if (op.stopped()) {
-                    throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), progress.hasStarted(),
+                    // exit 3 even before the first block: the operator stopped a run, and its resume command is printed
+                    throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true,
                             progress.executingLine());
                 }
             }
@@ -49,13 +51,14 @@ public final class ProgramForm implements Form {
         }
     }
 
-    private static int firstBlockLine(Piece p) {
+    /** The first of the piece's lines that came from a G-code block (the header's come from none). */
+    private static int firstBlockLine(Piece p, DmcProgram program) {
         for (int o : p.origin()) {
-            if (o >= 0) {
+            if (program.sourceLine(o) > 0) {
                 return o;
             }
         }
-        return 0;
+        return p.originOf(0);
     }
 
     /**

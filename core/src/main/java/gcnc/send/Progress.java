@@ -78,6 +78,11 @@ public final class Progress {
         return new ResumePoint(line, k <= 0 ? 0 : k + 1);
     }
 
+    /** The line about to run (step mode, before its Enter): where a stop then says the run was. */
+    public void pointAt(int index) {
+        executing = index;
+    }
+
     /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */
     public void at(int index, double[] counts, Operator operator) {
         if (index >= 0) {
