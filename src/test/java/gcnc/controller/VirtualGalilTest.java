@@ -50,7 +50,7 @@ class VirtualGalilTest {
         assertEquals(Tc.ONLY_IN_PROGRAM, rejected("WT 100"));
         assertEquals(Tc.ONLY_IN_PROGRAM, rejected("AMS"));
         assertEquals(Tc.RANGE, rejected("SB 9"), "a 4-axis model has 8 outputs");
-        assertEquals(Tc.RANGE, rejected("OF ,,10"));
+        assertEquals(Tc.OPERAND, rejected("OF ,,10"), "gcnc.dmc reads no offset beyond 9.998 V");
         assertEquals("", ok("OF ,,3.25"));
         assertEquals(3.25, c.offset(2));
         assertEquals("", ok("OFC=0"));

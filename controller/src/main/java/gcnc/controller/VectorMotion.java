@@ -175,14 +175,14 @@ final class VectorMotion {
             throw new GalilException(Tc.SEGMENT_TOO_SHORT);
         }
         startIfNeeded();
-        // the same arithmetic as the simulator's replay of a CR (gcnc.sim.Plane.cr), so that the two end
-        // every arc on the same double and the trace compares count for count
+        // the simulator's own arithmetic for a CR (gcnc.dmc's), so that the two end every arc on the same
+        // double and the trace compares count for count
+        double[] g = gcnc.dmc.Command.CircularArc.geometry(cursor1, cursor2, r, startDeg, sweepDeg);
+        double c1 = g[0];
+        double c2 = g[1];
+        double e1 = g[2];
+        double e2 = g[3];
         double th = Math.toRadians(startDeg);
-        double to = Math.toRadians(startDeg + sweepDeg);
-        double c1 = cursor1 - r * Math.cos(th);
-        double c2 = cursor2 - r * Math.sin(th);
-        double e1 = c1 + r * Math.cos(to);
-        double e2 = c2 + r * Math.sin(to);
         double sweep = Math.toRadians(sweepDeg);
         add(new Segment(given + 1, true, cursor1, cursor2, e1, e2, c1, c2, r, th, sweep, Math.abs(sweep) * r, o, p, 0),
                 e1, e2);
