@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableSource;
@@ -50,7 +50,7 @@ class GoldenTest {
                 c.dialect(), c.dialect().equals("galil") ? Optional.of(SimOptions.defaults()) : Optional.empty());
         StringBuilder out = new StringBuilder();
         try (Reader in = Files.newBufferedReader(Path.of("samples", c.sample() + ".nc"))) {
-            Compiler.Result r = Compiler.compile(in, s, (GalilLine l) -> out.append(l.text()).append('\n'));
+            Compiler.Result r = Compiler.compile(in, s, (Instruction l) -> out.append(l.text()).append('\n'));
             assertTrue(r.ok(), () -> c + " has findings: " + r.diagnostics().sorted());
         }
         return out.toString();

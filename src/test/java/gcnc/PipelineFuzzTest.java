@@ -252,7 +252,7 @@ class PipelineFuzzTest {
     private static void run(String program, MachineProfile profile, String dialect, long seed) throws Exception {
         List<String> out = new ArrayList<>();
         List<String> mapLines = new ArrayList<>();
-        gcnc.galil.SourceMap map = new gcnc.galil.SourceMap(mapLines::add);
+        gcnc.dmc.SourceMap map = new gcnc.dmc.SourceMap(mapLines::add);
         Compiler.Result r;
         try {
             r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, profile, dialect,
@@ -287,7 +287,7 @@ class PipelineFuzzTest {
         if (r.ok() && dialect.equals("galil")) {
             gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
             gcnc.sim.DmcReplay.replay(new java.io.BufferedReader(new StringReader(String.join("\n", out))), profile,
-                    SimOptions.defaults(), replayed, gcnc.galil.SourceMap.read(new java.io.BufferedReader(
+                    SimOptions.defaults(), replayed, gcnc.dmc.SourceMap.read(new java.io.BufferedReader(
                             new StringReader(String.join("\n", mapLines)))).lines());
             assertEquals(errors(r, true), errors(new Compiler.Result(replayed, 0, Optional.empty()), true),
                     () -> "replay differs, seed " + seed + " on " + profile.name() + ":\n" + program);

@@ -5,8 +5,7 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.flow.ProgramFlow;
 import gcnc.galil.Dialect;
-import gcnc.galil.GalilLine;
-import gcnc.galil.LineSink;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
@@ -87,12 +86,12 @@ public final class Compiler {
     }
 
     /**
-     * Checks, translates and (if asked) simulates; Galil lines go to {@code out}. Emission and
+     * Checks, translates and (if asked) simulates; the DMC instructions go to {@code out}. Emission and
      * simulation stop at the first error of the checker or the backend (the output is void then),
      * while the simulator's own findings do not stop it: every one of them is reported. The
      * simulator runs on a thread of its own, a few blocks behind.
      */
-    public static Result compile(Reader source, Settings settings, LineSink out) throws IOException {
+    public static Result compile(Reader source, Settings settings, java.util.function.Consumer<Instruction> out) throws IOException {
         Diagnostics diags = new Diagnostics();
         java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
         // the blank given for the run sets the work zero; a header's blank does not (the program's
@@ -104,8 +103,8 @@ public final class Compiler {
         BlockSource reader = blocks(buffered, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
-        List<GalilLine> lines = new ArrayList<>();
-        LineSink collect = lines::add;
+        List<Instruction> lines = new ArrayList<>();
+        java.util.function.Consumer<Instruction> collect = lines::add;
         long blocks = 0;
         Optional<SimOptions> simulate = settings.simulation();
         // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
@@ -160,7 +159,7 @@ public final class Compiler {
      * large on-stack replacement of the loop in {@link #compile}.)
      */
     private static void translate(List<CheckedBlock> checkedBlocks, Dialect dialect, Diagnostics diags,
-                                  LineSink collect, List<GalilLine> lines, SimulatorThread sim, LineSink out)
+                                  java.util.function.Consumer<Instruction> collect, List<Instruction> lines, SimulatorThread sim, java.util.function.Consumer<Instruction> out)
             throws IOException {
         for (CheckedBlock checked : checkedBlocks) {
             if (diags.hasErrors()) {
@@ -253,8 +252,8 @@ public final class Compiler {
                 : new Settings(s.tables(), p, s.dialect(), s.simulation(), s.inlineSourceMap(), s.programs());
     }
 
-    private static void flush(List<GalilLine> lines, LineSink out) {
-        for (GalilLine l : lines) {
+    private static void flush(List<Instruction> lines, java.util.function.Consumer<Instruction> out) {
+        for (Instruction l : lines) {
             out.accept(l);
         }
         lines.clear();

@@ -1,6 +1,5 @@
 package gcnc;
 
-import gcnc.galil.LineSink;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
@@ -126,9 +125,9 @@ public final class Session {
         return Compiler.check(program, settings(options.stock().map(b -> simulation()), false));
     }
 
-    /** Check, translate and simulate (with {@code simulation}, or not at all when empty); Galil lines go to {@code out}. */
+    /** Check, translate and simulate (with {@code simulation}, or not at all when empty); the DMC instructions go to {@code out}. */
     public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
-                                   LineSink out) throws IOException {
+                                   java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
         return Compiler.compile(program, settings(simulation, inlineSourceMap), out);
     }
 

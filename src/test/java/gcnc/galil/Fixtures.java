@@ -1,6 +1,7 @@
 package gcnc.galil;
 
 import gcnc.diag.Diagnostics;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.MCall;
 import gcnc.ir.Motion;
@@ -62,7 +63,7 @@ final class Fixtures {
     /** Runs one program through a dialect and returns the texts of its lines. */
     static List<String> run(String dialect, MachineProfile p, Diagnostics d, CheckedBlock... blocks) {
         List<String> out = new ArrayList<>();
-        LineSink sink = l -> out.add(l.text());
+        java.util.function.Consumer<Instruction> sink = l -> out.add(l.text());
         Dialect g = Dialect.create(dialect, p, d);
         g.begin(sink);
         for (CheckedBlock b : blocks) {

@@ -1,5 +1,8 @@
 package gcnc.galil;
 
+import gcnc.dmc.Instruction;
+import gcnc.dmc.SourceMap;
+
 import static gcnc.galil.Fixtures.motions;
 import static gcnc.galil.Fixtures.rapid;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -131,16 +134,20 @@ class GalilDialectTest {
 
     @Test
     void inlineSourceMapNamesEachBlocksLine() {
-        List<GalilLine> out = new ArrayList<>();
+        List<Instruction> out = new ArrayList<>();
         Dialect g = Dialect.create("galil", AT_ORIGIN, new Diagnostics(), true);
         Point a = new Point(10, 10);
         g.begin(out::add);
         g.block(motions(17, a, rapid(Point.ORIGIN, a)), out::add);
         g.block(motions(18, a), out::add); // nothing to emit: no comment either
         g.end(out::add);
-        assertEquals(new GalilLine("NO L17", 17), out.get(5));
-        assertEquals(new GalilLine("VS 100000", 17), out.get(6));
-        assertEquals(new GalilLine("EN", 0), out.get(out.size() - 1));
+        assertEquals("NO L17", out.get(5).text());
+        assertEquals(17, out.get(5).source().line());
+        assertEquals("VS 100000", out.get(6).text());
+        assertEquals(17, out.get(6).source().line());
+        assertEquals(0, out.get(6).source().motion(), "the VS carries out the block's first motion");
+        assertEquals("EN", out.get(out.size() - 1).text());
+        assertEquals(gcnc.dmc.Source.NONE, out.get(out.size() - 1).source());
         assertEquals(1, out.stream().filter(l -> l.text().startsWith("NO")).count());
     }
 
@@ -148,8 +155,8 @@ class GalilDialectTest {
     void sideSourceMapListsOutputLinesOfBlocks() {
         List<String> mapLines = new ArrayList<>();
         SourceMap map = new SourceMap(mapLines::add);
-        List<GalilLine> out = new ArrayList<>();
-        LineSink sink = map.wrap(out::add);
+        List<Instruction> out = new ArrayList<>();
+        java.util.function.Consumer<Instruction> sink = map.wrap(out::add);
         Dialect g = Dialect.create("galil", AT_ORIGIN, new Diagnostics());
         Point a = new Point(10, 10);
         g.begin(sink);

@@ -90,7 +90,7 @@ class ModelTest {
     void arcBoundsIncludeTheQuadrantPointsItPasses() {
         // Quarter circle from angle 45 to 135 about (0,0), r 10: passes 90 (+x) -> x max 10.
         Segment s = new Segment(10 * Math.sin(Math.PI / 4), 10 * Math.cos(Math.PI / 4), 10 * Math.sin(3 * Math.PI / 4),
-                10 * Math.cos(3 * Math.PI / 4), true, 0, 0, 10, 45, 90, "CR");
+                10 * Math.cos(3 * Math.PI / 4), true, 0, 0, 10, 45, 90, null);
         double[] b = MotionChecks.bounds(s);
         assertEquals(10, b[1], 1e-12);
         assertEquals(-10 * Math.cos(Math.PI / 4), b[2], 1e-12);

@@ -7,7 +7,7 @@ import gcnc.check.Checker;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.galil.Dialect;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
@@ -35,7 +35,7 @@ class PipelineTest {
         Simulator sim = new Simulator(profile, gcnc.Compiler.withStockHeader(first, profile, options), d);
         Dialect out = Dialect.create(dialect, profile, d);
         Checker checker = new Checker(tables, profile, d);
-        List<GalilLine> buf = new ArrayList<>();
+        List<Instruction> buf = new ArrayList<>();
         out.begin(buf::add);
         sim.begin(buf);
         int last = 1;

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
@@ -123,11 +123,22 @@ class ReplayTest {
 
     @Test
     void aSourceMapFileLocatesReplayFindingsAtGcodeLines() throws Exception {
-        gcnc.galil.SourceMap.Table t = gcnc.galil.SourceMap.read(new BufferedReader(new StringReader(
+        gcnc.dmc.SourceMap.Table t = gcnc.dmc.SourceMap.read(new BufferedReader(new StringReader(
                 "# source part.nc\n1 0\n6 4\n9 7\n")));
         assertEquals(java.util.Optional.of("part.nc"), t.source());
-        assertEquals(List.of(0, 0, 4, 4, 4, 7, 7), List.of(t.lines().applyAsInt(1), t.lines().applyAsInt(5),
-                t.lines().applyAsInt(6), t.lines().applyAsInt(7), t.lines().applyAsInt(8), t.lines().applyAsInt(9),
-                t.lines().applyAsInt(500)));
+        java.util.function.IntUnaryOperator line = n -> t.lines().apply(n) == null ? 0 : t.lines().apply(n).line();
+        assertEquals(List.of(0, 0, 4, 4, 4, 7, 7), List.of(line.applyAsInt(1), line.applyAsInt(5),
+                line.applyAsInt(6), line.applyAsInt(7), line.applyAsInt(8), line.applyAsInt(9),
+                line.applyAsInt(500)));
+    }
+
+    @Test
+    void aSourceMapEntryNamesTheFileOfACalledProgram() throws Exception {
+        gcnc.dmc.SourceMap.Table t = gcnc.dmc.SourceMap.read(new BufferedReader(new StringReader(
+                "# source grooves.nc\n1 0\n6 4\n40 4 O2000.nc\n47 9\n")));
+        assertEquals(null, t.lines().apply(6).file());
+        assertEquals(4, t.lines().apply(40).line());
+        assertEquals("O2000.nc", t.lines().apply(46).file());
+        assertEquals(null, t.lines().apply(47).file());
     }
 }

@@ -2,7 +2,7 @@ package gcnc.sim;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Feed;
 import gcnc.ir.MCall;
@@ -75,10 +75,12 @@ final class SimFixture {
         sim.begin(lines(0, "#GCNC", "SH XY", "VM XY", "VA 10000", "VD 10000"));
     }
 
-    static List<GalilLine> lines(int source, String... text) {
-        List<GalilLine> out = new ArrayList<>();
+    static List<Instruction> lines(int source, String... text) {
+        List<Instruction> out = new ArrayList<>();
         for (String t : text) {
-            out.add(new GalilLine(t, source));
+            out.add(new Instruction(java.util.Objects.requireNonNull(gcnc.dmc.DmcReader.read(t, (code, args) -> {
+                throw new IllegalArgumentException(code + " " + java.util.Arrays.toString(args));
+            }), t), gcnc.dmc.Source.line(source)));
         }
         return out;
     }

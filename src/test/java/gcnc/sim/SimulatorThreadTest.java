@@ -9,7 +9,7 @@ import gcnc.check.Checker;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.galil.Dialect;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
@@ -87,7 +87,7 @@ class SimulatorThreadTest {
                 SimOptions.defaults()), d);
         Dialect out = Dialect.create("galil", profile, d);
         Checker checker = new Checker(tables, profile, d);
-        List<GalilLine> buf = new ArrayList<>();
+        List<Instruction> buf = new ArrayList<>();
         out.begin(buf::add);
         sim.begin(buf);
         BlockReader reader = new BlockReader(new StringReader(program), d);
@@ -135,9 +135,9 @@ class SimulatorThreadTest {
             List<String> mapWithout = new ArrayList<>();
             Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(Tables.builtIn(),
                     profile("generic"), "galil", Optional.of(SimOptions.defaults())),
-                    new gcnc.galil.SourceMap(mapWithSim::add).wrap(l -> withSim.add(l.text())));
+                    new gcnc.dmc.SourceMap(mapWithSim::add).wrap(l -> withSim.add(l.text())));
             Compiler.compile(new StringReader(program), new Compiler.Settings(Tables.builtIn(), profile("generic"),
-                    "galil", Optional.empty()), new gcnc.galil.SourceMap(mapWithout::add).wrap(l -> without.add(l.text())));
+                    "galil", Optional.empty()), new gcnc.dmc.SourceMap(mapWithout::add).wrap(l -> without.add(l.text())));
             assertTrue(withSim.size() > 3000, "lines: " + withSim.size());
             assertEquals(without, withSim);
             assertEquals(mapWithout, mapWithSim);

@@ -174,7 +174,7 @@ class ThreadReplayTest {
     }
 
     private static Segment line(gcnc.ir.Point a, gcnc.ir.Point b) {
-        return new Segment(a.x(), a.z(), b.x(), b.z(), false, 0, 0, 0, 0, 0, "GR");
+        return new Segment(a.x(), a.z(), b.x(), b.z(), false, 0, 0, 0, 0, 0, null);
     }
 
     @Test

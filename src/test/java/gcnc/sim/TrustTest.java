@@ -139,10 +139,10 @@ class TrustTest {
         StringBuilder dmc = new StringBuilder();
         StringBuilder map = new StringBuilder();
         Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil", Optional.empty()),
-                new gcnc.galil.SourceMap(l -> map.append(l).append('\n')).wrap(l -> dmc.append(l.text()).append('\n')));
+                new gcnc.dmc.SourceMap(l -> map.append(l).append('\n')).wrap(l -> dmc.append(l.text()).append('\n')));
         gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
         DmcReplay.replay(new java.io.BufferedReader(new StringReader(dmc.toString())), m, SimOptions.defaults(), replayed,
-                gcnc.galil.SourceMap.read(new java.io.BufferedReader(new StringReader(map.toString()))).lines());
+                gcnc.dmc.SourceMap.read(new java.io.BufferedReader(new StringReader(map.toString()))).lines());
         List<String> fromReplay = new ArrayList<>();
         replayed.sorted().forEach(d -> fromReplay.add(d.code().id() + "@" + d.span().line()));
         assertEquals(expected, fromReplay, "the replay of the DMC");
@@ -232,9 +232,10 @@ class TrustTest {
         Compiler.Result bar = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, "galil",
                 Optional.of(SimOptions.defaults().withStock(new gcnc.sim.StockSize(65, 150, 100)))), l -> { });
         assertEquals(List.of("E315@7"), codes(bar));
-        assertEquals(new gcnc.machine.MachineModel.Blank(65, 150, 100, 30),
-                gcnc.galil.StockComment.read("NO STOCK D65 L150 S100 B30"));
-        assertEquals(new gcnc.machine.MachineModel.Blank(65, 150, 100, 0), gcnc.galil.StockComment.read("NO STOCK D65 L150 S100"));
+        assertEquals(new gcnc.dmc.Command.Stock(Optional.of(new gcnc.machine.MachineModel.Blank(65, 150, 100, 30))),
+                gcnc.dmc.DmcReader.read("NO STOCK D65 L150 S100 B30", (c, a) -> { }));
+        assertEquals(new gcnc.dmc.Command.Stock(Optional.of(new gcnc.machine.MachineModel.Blank(65, 150, 100, 0))),
+                gcnc.dmc.DmcReader.read("NO STOCK D65 L150 S100", (c, a) -> { }));
     }
 
     private static List<String> codes(Compiler.Result r) {

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Session;
-import gcnc.galil.SourceMap;
+import gcnc.dmc.SourceMap;
 import gcnc.tables.ErrorMessages;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -182,7 +182,7 @@ class StudioBrowserTest {
         List<String> dmc = Files.readAllLines(dir.resolve("bishop.dmc"));
         IntUnaryOperator map;
         try (var in = Files.newBufferedReader(dir.resolve("bishop.dmc.map"))) {
-            map = SourceMap.read(in).lines();
+            map = SourceMap.read(in).lineNumbers();
         }
         List<String> expected = new ArrayList<>();
         for (int i = 1; i <= dmc.size(); i++) {

@@ -422,7 +422,7 @@ class StudioServerTest {
         assertEquals(written.size(), dmc.size());
         java.util.function.IntUnaryOperator map;
         try (var in = Files.newBufferedReader(dir.resolve("cli.dmc.map"))) {
-            map = gcnc.galil.SourceMap.read(in).lines();
+            map = gcnc.dmc.SourceMap.read(in).lineNumbers();
         }
         for (int i = 0; i < dmc.size(); i++) {
             JsonObject l = dmc.get(i).getAsJsonObject();

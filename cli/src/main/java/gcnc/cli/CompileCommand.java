@@ -1,7 +1,7 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
-import gcnc.galil.SourceMap;
+import gcnc.dmc.SourceMap;
 import gcnc.machine.MachineProfile;
 import gcnc.output.DmcOutputs;
 import gcnc.sim.SimOptions;
@@ -72,7 +72,7 @@ final class CompileCommand extends RunCommand {
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
-                        mapper.wrap(line -> outputs.dmcLine(line.text())));
+                        mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
             } catch (IOException e) {
                 return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
             }

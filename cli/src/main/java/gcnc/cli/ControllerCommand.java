@@ -46,7 +46,7 @@ final class ControllerCommand implements Callable<Integer> {
     }
 
     @Option(names = "--model", paramLabel = "NAME", defaultValue = "DMC4040",
-            description = "The model it answers as (^R^V) and whose memory it has: DMC4040, DMC4020, DMC4080 or DMC2143 (default: ${DEFAULT-VALUE}).")
+            description = "The model it answers as (^R^V) and whose memory it has: DMC4040, DMC4030, DMC4020, DMC4080 or DMC2143 (default: ${DEFAULT-VALUE}).")
     String model;
 
     @Option(names = "--speed", paramLabel = "X", defaultValue = "1",

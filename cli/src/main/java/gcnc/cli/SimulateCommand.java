@@ -2,7 +2,6 @@ package gcnc.cli;
 
 import gcnc.Compiler;
 import gcnc.diag.Diagnostics;
-import gcnc.galil.LineSink;
 import gcnc.machine.MachineProfile;
 import gcnc.output.AtomicOutput;
 import gcnc.sim.DmcReplay;
@@ -87,7 +86,7 @@ final class SimulateCommand extends RunCommand {
         try (Reader in = SourceFiles.open(file, streams().in())) {
             if (file.toString().endsWith(".dmc")) {
                 diags = new Diagnostics();
-                gcnc.galil.SourceMap.Table map = sourceMap(file, diags);
+                gcnc.dmc.SourceMap.Table map = sourceMap(file, diags);
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
                         map == null ? null : map.lines()));
                 if (map != null) {
@@ -95,7 +94,7 @@ final class SimulateCommand extends RunCommand {
                     shown = map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);
                 }
             } else {
-                LineSink discard = line -> { };
+                java.util.function.Consumer<gcnc.dmc.Instruction> discard = line -> { };
                 Compiler.Result r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, Optional.of(options), false,
                         discard);
                 diags = r.diagnostics();
@@ -131,7 +130,7 @@ final class SimulateCommand extends RunCommand {
      * map does not record this DMC's SHA-256 (another program's map, one left by an earlier compile,
      * or one from before maps recorded it): its lines would blame the wrong G-code lines.
      */
-    private static gcnc.galil.SourceMap.Table sourceMap(Path dmc, Diagnostics diags) {
+    private static gcnc.dmc.SourceMap.Table sourceMap(Path dmc, Diagnostics diags) {
         if (SourceFiles.isStdin(dmc)) {
             return null;
         }
@@ -139,10 +138,10 @@ final class SimulateCommand extends RunCommand {
         if (!java.nio.file.Files.isRegularFile(map)) {
             return null;
         }
-        gcnc.galil.SourceMap.Table table;
+        gcnc.dmc.SourceMap.Table table;
         String sha;
         try (BufferedReader r = java.nio.file.Files.newBufferedReader(map)) {
-            table = gcnc.galil.SourceMap.read(r);
+            table = gcnc.dmc.SourceMap.read(r);
             sha = gcnc.output.AtomicOutput.sha256(dmc);
         } catch (IOException | java.io.UncheckedIOException e) {
             return null; // located at DMC lines instead

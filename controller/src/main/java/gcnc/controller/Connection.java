@@ -30,13 +30,16 @@ final class Connection implements Controller.Listener {
         this.link = link;
     }
 
-    /** Serves the link until the host closes it, it fails, or a disconnect fault closes it. */
-    void serve() {
+    /**
+     * Serves the link until the host closes it, it fails, or a disconnect fault closes it; true in the
+     * last case.
+     */
+    boolean serve() {
         controller.addListener(this);
         try {
-            loop();
+            return loop();
         } catch (IOException e) {
-            // the host went away: nothing to answer
+            return false; // the host went away: nothing to answer
         } finally {
             controller.removeListener(this);
             try {
@@ -47,7 +50,7 @@ final class Connection implements Controller.Listener {
         }
     }
 
-    private void loop() throws IOException {
+    private boolean loop() throws IOException {
         StringBuilder command = new StringBuilder();
         StringBuilder download = null;
         boolean append = false;
@@ -58,7 +61,7 @@ final class Connection implements Controller.Listener {
             if (faults.received()) {
                 // the byte that reaches the count is the last one the controller takes
                 link.close();
-                return;
+                return true;
             }
             char ch = (char) (b & 0xFF);
             if (download != null) {
@@ -108,6 +111,7 @@ final class Connection implements Controller.Listener {
             }
             answer(st);
         }
+        return false;
     }
 
     private static boolean isDownload(String st) {

@@ -14,6 +14,8 @@ import java.util.Locale;
 public enum Model {
     /** A 4-axis Accelera on current firmware: the default. */
     DMC4040("DMC4040 Rev 1.2d", 4, 8, 4000, 24000),
+    /** The 3-axis Accelera of the generic profile: the two lathe axes and the spindle's channel. */
+    DMC4030("DMC4030 Rev 1.2d", 3, 8, 4000, 24000),
     /** The 2-axis Accelera, enough for a lathe's two axes and no spindle channel. */
     DMC4020("DMC4020 Rev 1.2d", 2, 8, 4000, 24000),
     /** An 8-axis Accelera with 16 outputs. */

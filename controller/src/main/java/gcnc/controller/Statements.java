@@ -50,8 +50,13 @@ final class Statements {
             return "";
         }
         Matcher m = ASSIGNMENT.matcher(st);
-        if (m.matches()) {
+        boolean tool = st.startsWith("TOOL=") && st.length() > 5;
+        if (m.matches() && !tool) {
             return assign(m.group(1), m.group(2), m.group(3).strip(), th);
+        }
+        if (tool || DmcCommands.handles(st)) {
+            DmcCommands.execute(st, c, th);
+            return "";
         }
         if (st.length() < 2 || !upper(st.charAt(0)) || !upper(st.charAt(1))) {
             throw new GalilException(Tc.UNRECOGNIZED);
@@ -151,7 +156,6 @@ final class Statements {
                 return c.program.upload() + "\\";
             case "DL":
                 throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
-            case "EN":
             case "RE":
                 if (th != null) {
                     th.back();
@@ -160,11 +164,6 @@ final class Statements {
             case "JP":
             case "JS":
                 return jump(cmd, args, th);
-            case "SH":
-                for (int a : axesOrAll(args)) {
-                    c.servo[a] = true;
-                }
-                return "";
             case "MO":
                 for (int a : axesOrAll(args)) {
                     c.servo[a] = false;
@@ -173,53 +172,19 @@ final class Statements {
                     }
                 }
                 return "";
-            case "VM":
-                return vm(args);
             case "CA":
                 if (!args.equals("S")) {
                     throw new GalilException(Tc.S_OPERAND);
                 }
                 return "";
-            case "VS":
-                mo.vs = range(eval(args), 2, VectorMotion.MAX_SPEED);
-                mo.changed();
-                return "";
-            case "VA":
-                mo.va = Math.floor(range(eval(args), 1024, 1_073_740_800) / 1024) * 1024;
-                mo.changed();
-                return "";
-            case "VD":
-                if (mo.running()) {
-                    throw new GalilException(Tc.WHILE_RUNNING);
-                }
-                mo.vd = Math.floor(range(eval(args), 1024, 1_073_740_800) / 1024) * 1024;
-                mo.changed();
-                return "";
             case "VR":
                 mo.vr = range(eval(args), 0, 10);
                 mo.changed();
                 return "";
-            case "VP":
-            case "CR":
-                return segment(cmd, args);
-            case "VE":
-            case "LE":
-                mo.ve();
-                return "";
-            case "BG":
-                return begin(args);
-            case "AM":
             case "MC":
                 onlyInProgram(th);
                 th.waitingFor = () -> !mo.running();
                 return "";
-            case "WT": {
-                onlyInProgram(th);
-                double ms = range(eval(split(args).get(0)), 2, 2_147_483_646);
-                double until = c.time() + ms / 1000;
-                th.waitingFor = () -> c.time() >= until - 1e-9;
-                return "";
-            }
             case "AI": {
                 onlyInProgram(th);
                 int n = (int) eval(args);
@@ -261,12 +226,6 @@ final class Statements {
             case "TP":
             case "RP":
                 return tell(args);
-            case "SB":
-            case "CB": {
-                int n = (int) range(eval(args), 1, c.model.outputs);
-                c.outputs = cmd.equals("SB") ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
-                return "";
-            }
             case "OB": {
                 List<String> a = split(args);
                 if (a.size() != 2) {
@@ -277,8 +236,6 @@ final class Statements {
                 c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
                 return "";
             }
-            case "OF":
-                return offsets(args);
             case "LM":
                 if (args.equals("?")) {
                     return mo.free() + "\r\n";
@@ -320,75 +277,6 @@ final class Statements {
         return c.axes(args);
     }
 
-    private String vm(String args) throws GalilException {
-        List<Integer> a = c.axes(args);
-        if (a.size() != 2) {
-            throw new GalilException(Tc.OPERAND);
-        }
-        if (c.motion.running()) {
-            throw new GalilException(Tc.WHILE_RUNNING);
-        }
-        c.motion.clear();
-        c.motion.axis1 = a.get(0);
-        c.motion.axis2 = a.get(1);
-        return "";
-    }
-
-    /** VP a,b{@code <o >p} or CR r,start,sweep{@code <o >p}. */
-    private String segment(String cmd, String args) throws GalilException {
-        double o = Double.NaN;
-        double p = Double.NaN;
-        int lt = depthZero(args, '<');
-        int gt = depthZero(args, '>');
-        int cut = lt >= 0 ? (gt >= 0 ? Math.min(lt, gt) : lt) : gt;
-        String coords = cut >= 0 ? args.substring(0, cut) : args;
-        if (lt >= 0) {
-            o = eval(args.substring(lt + 1, gt > lt ? gt : args.length()));
-        }
-        if (gt >= 0) {
-            p = eval(args.substring(gt + 1, lt > gt ? lt : args.length()));
-        }
-        List<String> a = split(coords);
-        if (cmd.equals("VP")) {
-            if (a.size() != 2) {
-                throw new GalilException(Tc.OPERAND);
-            }
-            c.motion.vp(integral(eval(a.get(0))), integral(eval(a.get(1))), o, p);
-        } else {
-            if (a.size() != 3) {
-                throw new GalilException(Tc.OPERAND);
-            }
-            c.motion.cr(eval(a.get(0)), eval(a.get(1)), eval(a.get(2)), o, p);
-        }
-        return "";
-    }
-
-    /** VP's resolution is one count: a fraction is truncated, as Galil truncates integer arguments. */
-    private static double integral(double v) throws GalilException {
-        if (Math.abs(v) > 2_147_483_647d) {
-            throw new GalilException(Tc.RANGE);
-        }
-        return v < 0 ? Math.ceil(v) : Math.floor(v);
-    }
-
-    private String begin(String args) throws GalilException {
-        if (!args.equals("S")) {
-            throw new GalilException(Tc.UNRECOGNIZED); // independent moves (BG X) are not modelled
-        }
-        VectorMotion mo = c.motion;
-        if (mo.axis1 < 0) {
-            throw new GalilException(Tc.NO_SEQUENCE);
-        }
-        if (!c.servo[mo.axis1] || !c.servo[mo.axis2]) {
-            throw new GalilException(Tc.MOTOR_OFF);
-        }
-        if (c.limitTripped) {
-            throw new GalilException(Tc.LIMIT_SWITCH);
-        }
-        mo.begin();
-        return "";
-    }
-
     private String define(String args) throws GalilException {
         if (c.motion.running()) {
             throw new GalilException(Tc.WHILE_RUNNING);
@@ -399,7 +287,7 @@ final class Statements {
         }
         for (int i = 0; i < a.size(); i++) {
             if (!a.get(i).isEmpty()) {
-                c.motion.position[i] = integral(eval(a.get(i)));
+                c.motion.position[i] = (long) eval(a.get(i));
             }
         }
         c.motion.clear();
@@ -413,21 +301,6 @@ final class Statements {
             b.append(b.length() == 0 ? "" : ", ").append((long) Math.rint(c.motion.position[a]));
         }
         return b + "\r\n";
-    }
-
-    private String offsets(String args) throws GalilException {
-        List<String> a = split(args);
-        if (a.size() > c.model.axes) {
-            throw new GalilException(Tc.OPERAND);
-        }
-        double[] next = c.offsets.clone();
-        for (int i = 0; i < a.size(); i++) {
-            if (!a.get(i).isEmpty()) {
-                next[i] = range(eval(a.get(i)), -9.9982, 9.9982);
-            }
-        }
-        System.arraycopy(next, 0, c.offsets, 0, next.length);
-        return "";
     }
 
     private String dimension(String args) throws GalilException {
@@ -669,20 +542,5 @@ final class Statements {
         }
         out.add(args.substring(from).strip());
         return out;
-    }
-
-    private static int depthZero(String s, char want) {
-        int depth = 0;
-        for (int i = 0; i < s.length(); i++) {
-            char ch = s.charAt(i);
-            if (ch == '(' || ch == '[') {
-                depth++;
-            } else if (ch == ')' || ch == ']') {
-                depth--;
-            } else if (ch == want && depth == 0) {
-                return i;
-            }
-        }
-        return -1;
     }
 }

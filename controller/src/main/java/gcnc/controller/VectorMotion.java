@@ -175,14 +175,14 @@ final class VectorMotion {
             throw new GalilException(Tc.SEGMENT_TOO_SHORT);
         }
         startIfNeeded();
-        // the same arithmetic as the simulator's replay of a CR (gcnc.sim.Plane.cr), so that the two end
-        // every arc on the same double and the trace compares count for count
+        // the simulator's own arithmetic for a CR (gcnc.dmc's), so that the two end every arc on the same
+        // double and the trace compares count for count
+        double[] g = gcnc.dmc.Command.CircularArc.geometry(cursor1, cursor2, r, startDeg, sweepDeg);
+        double c1 = g[0];
+        double c2 = g[1];
+        double e1 = g[2];
+        double e2 = g[3];
         double th = Math.toRadians(startDeg);
-        double to = Math.toRadians(startDeg + sweepDeg);
-        double c1 = cursor1 - r * Math.cos(th);
-        double c2 = cursor2 - r * Math.sin(th);
-        double e1 = c1 + r * Math.cos(to);
-        double e2 = c2 + r * Math.sin(to);
         double sweep = Math.toRadians(sweepDeg);
         add(new Segment(given + 1, true, cursor1, cursor2, e1, e2, c1, c2, r, th, sweep, Math.abs(sweep) * r, o, p, 0),
                 e1, e2);
@@ -278,28 +278,32 @@ final class VectorMotion {
         double left = dt;
         while (running && left > 1e-12) {
             double h = Math.min(left, STEP);
-            step(h, t);
-            t += h;
-            left -= h;
+            // a segment that ends within the step hands the rest of the step to the next one
+            double used = h - step(h, t);
+            t += used;
+            left -= used;
         }
     }
 
-    private void step(double h, double time) {
+    /** One step of at most {@code h} seconds; returns the part of it left unused when a segment ended in it. */
+    private double step(double h, double time) {
         if (current == null && !next(time)) {
-            return;
+            return 0;
         }
         if (stalled) {
             if (stopping != 0) {
                 end(stopping, "stop", time);
             }
-            return;
+            return 0;
         }
         if (dirty) {
             capsFor();
         }
         double cruise = stopping != 0 ? 0 : (Double.isNaN(current.o()) ? vs : current.o()) * vr;
         double remaining = current.length() - s;
-        double target = Math.min(cruise, Math.sqrt(caps[0] * caps[0] + 2 * vd * Math.max(0, remaining)));
+        // the braking curve read where this step will end at the present speed, so that the profile comes
+        // down to a segment's end speed on time instead of a step late
+        double target = Math.min(cruise, Math.sqrt(caps[0] * caps[0] + 2 * vd * Math.max(0, remaining - v * h)));
         if (stopping != 0) {
             target = 0;
         }
@@ -312,8 +316,10 @@ final class VectorMotion {
             events.limitTripped();
         }
         if (s + ds >= current.length()) {
-            finishSegment(time + h);
-            return;
+            double average = ds / h;
+            double used = average > 0 ? Math.min(h, remaining / average) : h;
+            finishSegment(time + used);
+            return h - used;
         }
         s += ds;
         position[axis1] = current.at1(s);
@@ -321,6 +327,7 @@ final class VectorMotion {
         if (stopping != 0 && v == 0) {
             end(stopping, "stop", time + h);
         }
+        return 0;
     }
 
     /** Takes the next segment from the buffer; false when the sequence ended (VE reached or underrun). */

@@ -17,7 +17,10 @@ import java.util.List;
  * {@code gcnc controller --virtual}: a {@link Controller} behind a transport, with a clock that runs it in
  * real time times {@code speed}. TCP binds 127.0.0.1 only and takes any number of connections (Galil's
  * Ethernet handles); the pty transport opens one end of a pty pair (socat's) and, when the far side goes
- * away, waits for the path to come back and opens it again. Faults and trace as in {@link Options}.
+ * away, waits for the path to come back and opens it again. A disconnect fault closes a TCP connection
+ * (the host sees it closed and may connect again); on the pty, where a closed end is invisible to the
+ * host behind socat, it makes the controller go silent for good, as a serial line whose cable is pulled.
+ * Faults and trace as in {@link Options}.
  */
 public final class VirtualController implements Closeable {
     /** What the command line gives: model, how much faster than real time, faults, trace file (or null). */
@@ -103,7 +106,10 @@ public final class VirtualController implements Closeable {
                     out.close();
                 };
                 ptyLink = link;
-                new Connection(controller, in, out, faults, link).serve();
+                if (new Connection(controller, in, out, faults, link).serve()) {
+                    // a serial line whose cable is pulled: the host hears nothing more, ever; the motion goes on
+                    return;
+                }
             } catch (IOException e) {
                 // the pty went away between the check and the open
             }

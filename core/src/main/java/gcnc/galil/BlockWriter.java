@@ -1,41 +1,46 @@
 package gcnc.galil;
 
+import gcnc.dmc.Command;
+import gcnc.dmc.DmcPrinter;
+import gcnc.dmc.Instruction;
+import gcnc.dmc.Source;
+import gcnc.ir.CheckedBlock;
+import java.util.function.Consumer;
+
 /**
- * Writes one block's lines tagged with its source line, preceded by {@code NO L<line>} when the
- * source map goes inline (only if the block writes anything). Enforces the 80-character line limit
- * of Galil program memory: every line a dialect builds is short by construction, so a longer one
- * is a bug here, not bad input.
+ * Hands on one block's instructions, each with its source (the block's file, line and the motion
+ * being written), preceded by {@code NO L<line>} when the source map goes inline (only if the block
+ * writes anything). Enforces the 80-character line limit of Galil program memory: every command a
+ * dialect builds prints short by construction, so a longer one is a bug here, not bad input.
  */
 final class BlockWriter {
     static final int MAX_LINE = 80;
 
-    private final LineSink sink;
-    private final int line;
+    private final Consumer<Instruction> sink;
+    private final CheckedBlock block;
     private boolean commented;
+    private Source source;
 
-    BlockWriter(LineSink sink, int line, boolean inlineSourceMap) {
+    BlockWriter(Consumer<Instruction> sink, CheckedBlock block, boolean inlineSourceMap) {
         this.sink = sink;
-        this.line = line;
+        this.block = block;
         this.commented = !inlineSourceMap;
+        this.source = new Source(block.origin(), block.line(), -1);
     }
 
-    void emit(String text) {
+    /** The instructions after this carry out the block's motion {@code index} (-1: none). */
+    void motion(int index) {
+        if (index != source.motion()) {
+            source = new Source(block.origin(), block.line(), index);
+        }
+    }
+
+    void emit(Command command) {
         if (!commented) {
             commented = true;
-            sink.accept(new GalilLine("NO L" + line, line));
+            sink.accept(new Instruction(new Command.SourceMark(block.line()), source));
         }
-        if (text.length() > MAX_LINE) {
-            throw new IllegalStateException("DMC line longer than " + MAX_LINE + ": " + text);
-        }
-        sink.accept(new GalilLine(text, line));
-    }
-
-    /** The OF command with {@code value} in field {@code index} (0-based), earlier fields empty. */
-    static String offset(int index, String value) {
-        StringBuilder sb = new StringBuilder(16).append("OF ");
-        for (int i = 0; i < index; i++) {
-            sb.append(',');
-        }
-        return sb.append(value).toString();
+        assert DmcPrinter.print(command).length() <= MAX_LINE : "DMC line longer than " + MAX_LINE + ": " + command;
+        sink.accept(new Instruction(command, source));
     }
 }

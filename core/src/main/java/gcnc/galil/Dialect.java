@@ -5,13 +5,14 @@ import gcnc.ir.CheckedBlock;
 import gcnc.machine.MachineProfile;
 
 /**
- * A DMC code generator (docs/dmc-format.md). One instance per program: it keeps the controller's
- * position between blocks. Faults in the output (a count beyond 32 bits, an arc no CR can draw)
+ * A DMC code generator (docs/dmc-format.md): checked blocks in, {@link gcnc.dmc.Instruction}s out,
+ * each with the block it came from; text is made only at the edge ({@link gcnc.dmc.DmcPrinter}).
+ * One instance per program: it keeps the controller's position between blocks. Faults in the output (a count beyond 32 bits, an arc no CR can draw)
  * are reported to {@link Diagnostics} at the block's line, column 1; the faulty motion is left out.
  */
 public interface Dialect {
     /** Writes what comes before the first block. */
-    void begin(LineSink out);
+    void begin(java.util.function.Consumer<gcnc.dmc.Instruction> out);
 
     /**
      * Records the blank the program was verified against when the program or the user gave one
@@ -19,13 +20,13 @@ public interface Dialect {
      * --stock none}), so that a replay of the DMC by itself cuts the same blank. Called after
      * {@link #begin}; a dialect that reproduces an old format writes nothing.
      */
-    void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, LineSink out);
+    void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, java.util.function.Consumer<gcnc.dmc.Instruction> out);
 
     /** Writes one block's directives, in the order of decision D2. */
-    void block(CheckedBlock block, LineSink out);
+    void block(CheckedBlock block, java.util.function.Consumer<gcnc.dmc.Instruction> out);
 
     /** Writes what comes after the last block. */
-    void end(LineSink out);
+    void end(java.util.function.Consumer<gcnc.dmc.Instruction> out);
 
     /** The dialect called {@code name} ("galil" or "thesis"), without inline source-map comments. */
     static Dialect create(String name, MachineProfile profile, Diagnostics diagnostics) {

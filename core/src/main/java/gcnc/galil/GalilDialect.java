@@ -4,6 +4,11 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
+import gcnc.dmc.Command;
+import gcnc.dmc.DmcReader;
+import gcnc.dmc.Fixed;
+import gcnc.dmc.Instruction;
+import gcnc.dmc.Source;
 import gcnc.ir.ArcGeometry;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.MCall;
@@ -11,6 +16,8 @@ import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
 
 /**
  * The default dialect: a standalone DMC program (docs/dmc-format.md, docs/galil.md). Each motion is
@@ -29,6 +36,8 @@ final class GalilDialect implements Dialect {
     private final GalilFrame frame;
     private long posU;
     private long posV;
+    /** The profile's output directives of each M code, read once. */
+    private final Map<Integer, List<Command>> outputs = new java.util.HashMap<>();
 
     GalilDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
         this.profile = profile;
@@ -40,38 +49,42 @@ final class GalilDialect implements Dialect {
     }
 
     @Override
-    public void begin(LineSink out) {
+    public void begin(Consumer<Instruction> out) {
         String plane = frame.plane();
-        out.accept(new GalilLine("#GCNC", 0));
-        out.accept(new GalilLine("SH " + plane, 0));
-        out.accept(new GalilLine("VM " + plane, 0));
-        out.accept(new GalilLine("VA " + GalilNumbers.round(profile.acceleration()), 0));
-        out.accept(new GalilLine("VD " + GalilNumbers.round(profile.deceleration()), 0));
+        out.accept(new Instruction(new Command.Label("GCNC"), Source.NONE));
+        out.accept(new Instruction(new Command.ServoHere(plane), Source.NONE));
+        out.accept(new Instruction(new Command.VectorMode(plane), Source.NONE));
+        out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(GalilNumbers.round(profile.acceleration()))),
+                Source.NONE));
+        out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(GalilNumbers.round(profile.deceleration()))),
+                Source.NONE));
     }
 
     /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm, or {@code NO STOCK NONE} (docs/dmc-format.md). */
     @Override
-    public void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, LineSink out) {
-        out.accept(new GalilLine(blank.map(StockComment::write).orElse(StockComment.NONE), 0));
+    public void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, Consumer<Instruction> out) {
+        out.accept(new Instruction(new Command.Stock(blank), Source.NONE));
     }
 
     @Override
-    public void end(LineSink out) {
-        out.accept(new GalilLine("EN", 0));
+    public void end(Consumer<Instruction> out) {
+        out.accept(new Instruction(new Command.End(), Source.NONE));
     }
 
     @Override
-    public void block(CheckedBlock b, LineSink sink) {
-        BlockWriter out = new BlockWriter(sink, b.line(), inlineSourceMap);
+    public void block(CheckedBlock b, Consumer<Instruction> sink) {
+        BlockWriter out = new BlockWriter(sink, b, inlineSourceMap);
         if (b.spindleRpm().isPresent()) {
             spindle(b, b.spindleRpm().getAsDouble(), out);
         }
         if (b.tool().isPresent()) {
-            out.emit("TOOL=" + b.tool().getAsInt());
+            out.emit(new Command.ToolNumber(b.tool().getAsInt()));
         }
         outputs(b.before(), out);
-        for (Motion m : b.motions()) {
-            m.accept(new Motion.Visitor<Void>() {
+        List<Motion> motions = b.motions();
+        for (int i = 0; i < motions.size(); i++) {
+            out.motion(i);
+            motions.get(i).accept(new Motion.Visitor<Void>() {
                 @Override
                 public Void linear(Motion.Linear l) {
                     GalilDialect.this.linear(b, l, out);
@@ -97,6 +110,7 @@ final class GalilDialect implements Dialect {
                 }
             });
         }
+        out.motion(-1);
         outputs(b.after(), out);
     }
 
@@ -111,15 +125,30 @@ final class GalilDialect implements Dialect {
                     GalilNumbers.round(rpm), GalilNumbers.volts(volts)));
             volts = MAX_VOLTS;
         }
-        out.emit(BlockWriter.offset(frame.spindleIndex(), GalilNumbers.volts(volts)));
+        out.emit(new Command.Offset(frame.spindleIndex(), Fixed.exactly(volts, 4)));
     }
 
     private void outputs(List<MCall> calls, BlockWriter out) {
         for (MCall m : calls) {
-            for (String directive : profile.outputsFor(m.code())) {
+            for (Command directive : outputs.computeIfAbsent(m.code(), this::directives)) {
                 out.emit(directive);
             }
         }
+    }
+
+    /** The profile's output directives of M code {@code m} as commands (the loader has checked their form). */
+    private List<Command> directives(int m) {
+        return directives(profile, m);
+    }
+
+    static List<Command> directives(MachineProfile profile, int m) {
+        List<Command> commands = new java.util.ArrayList<>();
+        for (String d : profile.outputsFor(m)) {
+            commands.add(java.util.Objects.requireNonNull(DmcReader.read(d, (code, args) -> {
+                throw new IllegalStateException("profile output directive " + d + " is not SB/CB n");
+            })));
+        }
+        return List.copyOf(commands);
     }
 
     private void linear(CheckedBlock b, Motion.Linear m, BlockWriter out) {
@@ -140,7 +169,7 @@ final class GalilDialect implements Dialect {
             return; // no move: an empty sequence would be TC 30 "segment too short"
         }
         speedLine(speed, feed != null, out);
-        out.emit("VP " + du + "," + dv);
+        out.emit(new Command.VectorPosition(du, dv));
         finishSequence(out);
         posU = tu;
         posV = tv;
@@ -167,9 +196,10 @@ final class GalilDialect implements Dialect {
             return;
         }
         speedLine(speed, true, out);
-        out.emit("CR " + cr.radius() + "," + GalilNumbers.angle(cr.start()) + "," + GalilNumbers.angle(cr.sweep()));
+        out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
+                Fixed.fourDecimals(cr.sweep())));
         if (cr.closing()) {
-            out.emit("VP " + (tu - posU) + "," + (tv - posV)); // VP is measured from the sequence start
+            out.emit(new Command.VectorPosition(tu - posU, tv - posV)); // VP is measured from the sequence start
         }
         finishSequence(out);
         posU = tu;
@@ -229,29 +259,28 @@ final class GalilDialect implements Dialect {
             diagnostics.error(Code.E208_GEAR_RATIO_RANGE, at(b), ratio(largest));
             return;
         }
-        String[] plane = {frame.plane().substring(0, 1), frame.plane().substring(1, 2)};
-        String encoder = String.valueOf(enc.channel());
-        boolean zFirst = frame.plane().charAt(0) == profile.z().galil();
+        char p1 = frame.plane().charAt(0);
+        char p2 = frame.plane().charAt(1);
+        char encoder = enc.channel();
+        boolean zFirst = p1 == profile.z().galil();
         long[] z = zFirst ? u : v;
-        out.emit("GA " + positional(plane, encoder, encoder));
+        out.emit(new Command.GearMaster(encoder, p1, p2));
         int cpr = enc.countsPerRev();
-        String cross = t.reverse() ? "-1" : "+1";
         // a multi-start thread's pass starts its start angle further on, in the spindle's direction
         long phase = Math.round(t.startAngle() / 360 * cpr) % cpr;
-        String shift = phase == 0 ? "" : (t.reverse() ? "-" : "+") + phase;
-        out.emit(SYNC_VARIABLE + "=(@INT[_TP" + encoder + "/" + cpr + "]" + cross + ")*" + cpr + shift);
-        out.emit((t.reverse() ? "MR " : "MF ") + positional(new String[] {encoder}, SYNC_VARIABLE));
-        String zLetter = String.valueOf(profile.z().galil());
-        String zWait = z[n - 1] >= z[0] ? "MF " : "MR "; // a thread's Z goes one way through all its segments
+        out.emit(new Command.SyncPoint(SYNC_VARIABLE, encoder, cpr, t.reverse(), t.reverse() ? -phase : phase));
+        out.emit(new Command.WaitPast(t.reverse(), encoder, new Command.Operand.Variable(SYNC_VARIABLE)));
+        char zLetter = profile.z().galil();
+        boolean zBack = z[n - 1] < z[0]; // a thread's Z goes one way through all its segments
         for (int i = 1; i < n; i++) {
-            out.emit("GR " + positional(plane, ratio(ratios[i - 1][0]), ratio(ratios[i - 1][1])));
+            out.emit(new Command.GearRatio(p1, Fixed.of(ratio(ratios[i - 1][0])), p2, Fixed.of(ratio(ratios[i - 1][1]))));
             // wait for Z to pass the segment's end: the next segment's ratios, or the pass's end
-            out.emit(zWait + positional(new String[] {zLetter}, Long.toString(z[i])));
+            out.emit(new Command.WaitPast(zBack, zLetter, new Command.Operand.Count(z[i])));
         }
-        out.emit("GR " + positional(plane, "0", "0"));
-        out.emit("PA " + positional(plane, Long.toString(u[n - 1]), Long.toString(v[n - 1])));
-        out.emit("BG " + frame.plane());
-        out.emit("AM " + frame.plane());
+        out.emit(new Command.GearRatio(p1, Fixed.of(0), p2, Fixed.of(0)));
+        out.emit(new Command.PositionAbsolute(p1, u[n - 1], p2, v[n - 1]));
+        out.emit(new Command.Begin(frame.plane()));
+        out.emit(new Command.AfterMotion(frame.plane()));
         posU = u[n - 1];
         posV = v[n - 1];
     }
@@ -273,50 +302,31 @@ final class GalilDialect implements Dialect {
         return s.equals("-0.0000") ? "0.0000" : s;
     }
 
-    /**
-     * Arguments by channel position (Galil's per-axis commands: {@code GA ,C,C} puts C in the B and
-     * C places): {@code values[i]} at the place of {@code letters[i]}, the others empty.
-     */
-    static String positional(String[] letters, String... values) {
-        int last = -1;
-        int[] at = new int[letters.length];
-        for (int i = 0; i < letters.length; i++) {
-            at[i] = GalilFrame.channel(letters[i].charAt(0));
-            last = Math.max(last, at[i]);
-        }
-        String[] slots = new String[last + 1];
-        java.util.Arrays.fill(slots, "");
-        for (int i = 0; i < letters.length; i++) {
-            slots[at[i]] = values[i];
-        }
-        return String.join(",", slots);
-    }
-
     private void dwell(CheckedBlock b, Motion.Dwell m, BlockWriter out) {
         long ms = GalilNumbers.round(m.seconds() * 1000);
         if (inRange(b, "WT", ms)) {
-            out.emit("WT " + ms);
+            out.emit(new Command.Wait(ms));
         }
     }
 
     private static void finishSequence(BlockWriter out) {
-        out.emit("VE");
-        out.emit("BGS");
-        out.emit("AMS");
+        out.emit(new Command.VectorEnd());
+        out.emit(new Command.BeginSequence());
+        out.emit(new Command.AwaitSequence());
     }
 
-    /** The vector speed in counts/s, or -1 (reported) when the controller cannot take it. */
     /**
      * The sequence's VS; a feed as fast as a rapid is marked with a {@code NO G01} comment first, so
      * that a replay of the DMC by itself knows it for a feed (docs/dmc-format.md).
      */
     private void speedLine(long speed, boolean feed, BlockWriter out) {
         if (feed && speed == GalilNumbers.round(profile.rapidSpeed())) {
-            out.emit("NO G01");
+            out.emit(new Command.FeedMark());
         }
-        out.emit("VS " + speed);
+        out.emit(new Command.VectorSpeed(Fixed.of(speed)));
     }
 
+    /** The vector speed in counts/s, or -1 (reported) when the controller cannot take it. */
     private long speed(CheckedBlock b, gcnc.ir.Feed feed) {
         double cps = feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
         long s = GalilNumbers.round(cps);

@@ -3,6 +3,8 @@ package gcnc.galil;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
+import gcnc.dmc.Command;
+import gcnc.dmc.Fixed;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.MCall;
 import gcnc.ir.Motion;
@@ -30,32 +32,34 @@ final class ThesisDialect implements Dialect {
     }
 
     @Override
-    public void begin(LineSink out) {
+    public void begin(java.util.function.Consumer<gcnc.dmc.Instruction> out) {
     }
 
     /** The thesis's format has no place for it: nothing. */
     @Override
-    public void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, LineSink out) {
+    public void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, java.util.function.Consumer<gcnc.dmc.Instruction> out) {
     }
 
     @Override
-    public void end(LineSink out) {
+    public void end(java.util.function.Consumer<gcnc.dmc.Instruction> out) {
     }
 
     @Override
-    public void block(CheckedBlock b, LineSink sink) {
-        BlockWriter out = new BlockWriter(sink, b.line(), inlineSourceMap);
+    public void block(CheckedBlock b, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
+        BlockWriter out = new BlockWriter(sink, b, inlineSourceMap);
         if (b.spindleRpm().isPresent()) {
             // The thesis divides the integer S by 300 as integers (L4236).
             long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
-            out.emit(BlockWriter.offset(frame.spindleIndex(), Long.toString(volts)));
+            out.emit(new Command.Offset(frame.spindleIndex(), Fixed.of(volts)));
         }
         if (b.tool().isPresent()) {
-            out.emit("Revolver " + b.tool().getAsInt());
+            out.emit(new Command.Revolver(b.tool().getAsInt()));
         }
         outputs(b.before(), out);
-        for (Motion m : b.motions()) {
-            m.accept(new Motion.Visitor<Void>() {
+        List<Motion> motions = b.motions();
+        for (int i = 0; i < motions.size(); i++) {
+            out.motion(i);
+            motions.get(i).accept(new Motion.Visitor<Void>() {
                 @Override
                 public Void linear(Motion.Linear l) {
                     double dx = l.to().x() - l.from().x();
@@ -74,7 +78,7 @@ final class ThesisDialect implements Dialect {
                 public Void dwell(Motion.Dwell d) {
                     String ms = number(b, "WT", d.seconds() * 1000);
                     if (ms != null) {
-                        out.emit("WT " + ms);
+                        out.emit(new Command.Wait(Long.parseLong(ms)));
                     }
                     return null;
                 }
@@ -88,16 +92,17 @@ final class ThesisDialect implements Dialect {
                 }
             });
         }
+        out.motion(-1);
         outputs(b.after(), out);
     }
 
     private void outputs(List<MCall> calls, BlockWriter out) {
         for (MCall m : calls) {
-            List<String> directives = profile.outputsFor(m.code());
+            List<Command> directives = GalilDialect.directives(profile, m.code());
             if (directives.isEmpty()) {
-                out.emit("M" + m.code()); // §7.2: any other M passes through unpadded
+                out.emit(new Command.PassThroughM(m.code())); // §7.2: any other M passes through unpadded
             }
-            for (String d : directives) {
+            for (Command d : directives) {
                 out.emit(d);
             }
         }
@@ -115,8 +120,8 @@ final class ThesisDialect implements Dialect {
             return;
         }
         String radius = number(b, "CR", r.radius());
-        String cr = radius == null ? null
-                : "CR " + radius + "," + DelphiFormat.fmt3x4(r.theta()) + "," + DelphiFormat.fmt3x4(r.delta());
+        Command cr = radius == null ? null : new Command.CircularArc(Fixed.of(radius),
+                Fixed.of(DelphiFormat.fmt3x4(r.theta())), Fixed.of(DelphiFormat.fmt3x4(r.delta())));
         double speed = speed(a.feed());
         group(b, speed, cr, out);
         if (r.twoPiece()) {
@@ -129,20 +134,20 @@ final class ThesisDialect implements Dialect {
     }
 
     /** {@code VS / <move> / BGS}, or nothing when a number did not fit (already reported). */
-    private void group(CheckedBlock b, double speed, String move, BlockWriter out) {
+    private void group(CheckedBlock b, double speed, Command move, BlockWriter out) {
         String vs = number(b, "VS", speed);
         if (vs == null || move == null) {
             return;
         }
-        out.emit("VS " + vs);
+        out.emit(new Command.VectorSpeed(Fixed.of(vs)));
         out.emit(move);
-        out.emit("BGS");
+        out.emit(new Command.BeginSequence());
     }
 
-    private String vp(CheckedBlock b, double dx, double dz) {
+    private Command vp(CheckedBlock b, double dx, double dz) {
         String u = number(b, "VP", frame.u(dx, dz));
         String v = number(b, "VP", frame.v(dx, dz));
-        return u == null || v == null ? null : "VP " + u + "," + v;
+        return u == null || v == null ? null : new Command.VectorPosition(Long.parseLong(u), Long.parseLong(v));
     }
 
     /** fmt8, or null (reported) when Delphi would have switched to scientific notation. */

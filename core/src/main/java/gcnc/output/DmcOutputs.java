@@ -135,21 +135,29 @@ public final class DmcOutputs implements AutoCloseable {
         if (map == null) {
             return;
         }
-        map.line(gcnc.galil.SourceMap.sourceLine(name));
+        map.line(gcnc.dmc.SourceMap.sourceLine(name));
         // a regular file only: a named pipe would be drained here and the compile would wait for it forever
         if (program != null && Files.isRegularFile(program)) {
             try {
-                map.line(gcnc.galil.SourceMap.SOURCE_HASH + sha256(program));
+                map.line(gcnc.dmc.SourceMap.SOURCE_HASH + sha256(program));
             } catch (IOException e) {
                 // the program was read a moment ago; without its hash the map still names it
             }
         }
     }
 
-    /** Adds a map entry "{@code <dmc line> <source line>}"; nothing when there is no map. */
-    public void mapEntry(int dmcLine, int sourceLine) {
-        if (map != null) {
+    /**
+     * Adds a map entry "{@code <dmc line> <source line>}", with the file after them when the line
+     * is in another file than the program's; nothing when there is no map.
+     */
+    public void mapEntry(int dmcLine, int sourceLine, String file) {
+        if (map == null) {
+            return;
+        }
+        if (file == null) {
             map.line(dmcLine, sourceLine);
+        } else {
+            map.line(dmcLine + " " + sourceLine + " " + file);
         }
     }
 
@@ -159,7 +167,7 @@ public final class DmcOutputs implements AutoCloseable {
      */
     public void commit() throws IOException {
         if (map != null) {
-            map.line(gcnc.galil.SourceMap.DMC_HASH + dmc.sha256());
+            map.line(gcnc.dmc.SourceMap.DMC_HASH + dmc.sha256());
             AtomicOutput.commitAll(dmc, map);
         } else if (stale != null) {
             commitRemovingStale();

@@ -3,7 +3,10 @@ package gcnc.sim;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Command;
+import gcnc.dmc.DmcReader;
+import gcnc.dmc.Instruction;
+import gcnc.dmc.Source;
 import gcnc.machine.MachineProfile;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -32,11 +35,11 @@ public final class DmcReplay {
     }
 
     /**
-     * @param sourceOf the G-code line of each DMC line, from the source-map side file
-     *                 ({@link gcnc.galil.SourceMap#read}); null when there is none
+     * @param sourceOf the G-code file and line of each DMC line, from the source-map side file
+     *                 ({@link gcnc.dmc.SourceMap#read}; null where it has none); null when there is no map
      */
     public static SimReport replay(BufferedReader in, MachineProfile profile, SimOptions options,
-                                   Diagnostics diagnostics, java.util.function.IntUnaryOperator sourceOf) {
+                                   Diagnostics diagnostics, java.util.function.IntFunction<Source> sourceOf) {
         List<String> head = new ArrayList<>();
         IOException failure = null;
         try {
@@ -48,31 +51,41 @@ public final class DmcReplay {
         }
         if (options.stock().isEmpty() && !options.noBlank()) {
             for (String l : head) {
-                if (gcnc.galil.StockComment.isNone(l)) {
-                    options = options.withoutBlank();
-                    break;
-                }
-                gcnc.machine.MachineModel.Blank b = gcnc.galil.StockComment.read(l);
-                if (b != null) {
-                    options = options.withStock(new StockSize(b.diameter(), b.length(), b.stickout(), b.bore()));
+                // read again below with its faults reported; here only the blank is looked for
+                if (DmcReader.read(l, (code, args) -> { }) instanceof Command.Stock stock) {
+                    if (stock.blank().isEmpty()) {
+                        options = options.withoutBlank();
+                    } else {
+                        gcnc.machine.MachineModel.Blank b = stock.blank().get();
+                        options = options.withStock(new StockSize(b.diameter(), b.length(), b.stickout(), b.bore()));
+                    }
                     break;
                 }
             }
         }
         Simulator sim = new Simulator(profile, options, diagnostics);
-        List<GalilLine> chunk = new ArrayList<>();
+        List<Instruction> chunk = new ArrayList<>();
         int dmcLine = 0;
         int source = -1;
+        List<Fault> faults = new ArrayList<>(1);
         try {
             java.util.Iterator<String> first = head.iterator();
             for (String l = next(first, in, failure); l != null; l = next(first, in, failure)) {
                 dmcLine++;
-                String t = l.strip();
-                if (t.startsWith("NO L")) {
-                    source = sourceLine(t.substring(4), source);
+                Source mapped = sourceOf == null ? null : sourceOf.apply(dmcLine);
+                Command c = DmcReader.read(l, (code, args) -> faults.add(new Fault(code, args)));
+                if (c instanceof Command.SourceMark mark) {
+                    source = mark.line();
                 }
-                int mapped = sourceOf == null ? 0 : sourceOf.applyAsInt(dmcLine);
-                chunk.add(new GalilLine(l, mapped > 0 ? mapped : source > 0 ? source : dmcLine));
+                Source at = mapped != null ? mapped : Source.line(source > 0 ? source : dmcLine);
+                if (!faults.isEmpty()) {
+                    sim.replay(chunk); // findings in the order of the lines
+                    chunk.clear();
+                    faults.forEach(f -> sim.fault(at, f.code(), f.args()));
+                }
+                // a blank or unreadable line is still a line of the file: the lines after it keep their numbers
+                chunk.add(new Instruction(c != null ? c : new Command.Remark(faults.isEmpty() ? l.strip() : ""), at));
+                faults.clear();
                 if (chunk.size() == 1024) {
                     sim.replay(chunk);
                     chunk.clear();
@@ -98,11 +111,6 @@ public final class DmcReplay {
         return in.readLine();
     }
 
-    private static int sourceLine(String digits, int otherwise) {
-        try {
-            return Integer.parseInt(digits.strip());
-        } catch (NumberFormatException e) {
-            return otherwise;
-        }
+    private record Fault(Code code, Object[] args) {
     }
 }

@@ -69,23 +69,22 @@ final class Plane {
     /**
      * The arc a Galil {@code CR r,start,sweep} draws from the Galil-plane position (p1, p2), as the
      * controller derives it: the centre from the start angle, the end from start + sweep. One
-     * place for the replay ({@code DmcInterpreter}) and for check's prediction of it
+     * place for the replay ({@code Controller}) and for check's prediction of it
      * ({@code ArcVerdict}), so that the two cannot differ. {@code end} receives the end in the
      * Galil plane (first, second channel).
      */
-    Segment cr(double p1, double p2, double r, double startDeg, double sweepDeg, String text, double[] end) {
-        double th = Math.toRadians(startDeg);
-        double to = Math.toRadians(startDeg + sweepDeg);
-        double c1 = p1 - r * Math.cos(th);
-        double c2 = p2 - r * Math.sin(th);
-        end[0] = c1 + r * Math.cos(to);
-        end[1] = c2 + r * Math.sin(to);
+    Segment cr(double p1, double p2, double r, double startDeg, double sweepDeg, gcnc.dmc.Command command, double[] end) {
+        double[] g = gcnc.dmc.Command.CircularArc.geometry(p1, p2, r, startDeg, sweepDeg);
+        double c1 = g[0];
+        double c2 = g[1];
+        end[0] = g[2];
+        end[1] = g[3];
         double fx = machineX(p1, p2);
         double fz = machineZ(p1, p2);
         double cx = machineX(c1, c2);
         double cz = machineZ(c1, c2);
         double from = Math.toDegrees(Math.atan2(fx - cx, fz - cz));
         return new Segment(fx, fz, machineX(end[0], end[1]), machineZ(end[0], end[1]), true, cx, cz, r, from,
-                sweepDeg * handedness(), text);
+                sweepDeg * handedness(), command);
     }
 }

@@ -6,7 +6,12 @@ package gcnc.sim;
  * machine drawing (z right, x up; counter-clockwise positive), as the Galil CR made it.
  */
 record Segment(double fromX, double fromZ, double toX, double toZ, boolean arc, double centreX, double centreZ,
-               double radius, double startDeg, double sweepDeg, String text) {
+               double radius, double startDeg, double sweepDeg, gcnc.dmc.Command command) {
+    /** The DMC line that made it, for findings (printed only when one is made). */
+    String text() {
+        return command == null ? "" : gcnc.dmc.DmcPrinter.print(command);
+    }
+
     /** Point at fraction t of the way along (arcs by angle). Returns {x, z}. */
     double[] at(double t) {
         if (!arc) {

@@ -4,7 +4,7 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
-import gcnc.galil.GalilLine;
+import gcnc.dmc.Instruction;
 import gcnc.ir.ArcGeometry;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
@@ -23,7 +23,7 @@ public final class Simulator {
     private final SimOptions options;
     private final Diagnostics diagnostics;
     private final Plane plane;
-    private final DmcInterpreter dmc;
+    private final Controller dmc;
     private final OutputState outputs;
     private final MotionChecks checks;
     private final SimMachine machine;
@@ -53,7 +53,7 @@ public final class Simulator {
             // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
             diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
         }
-        this.dmc = new DmcInterpreter(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
+        this.dmc = new Controller(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
                 profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
         profile.encoder().ifPresent(e -> {
             dmc.encoderChannel = Plane.channel(e.channel());
@@ -77,12 +77,12 @@ public final class Simulator {
     /** How many DMC lines have been replayed. */
     private int dmcLines;
 
-    public void begin(List<GalilLine> header) {
+    public void begin(List<Instruction> header) {
         run(header);
     }
 
     /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
-    public void block(CheckedBlock intended, List<GalilLine> emitted) {
+    public void block(CheckedBlock intended, List<Instruction> emitted) {
         origin = intended.origin();
         checks.frame(intended.frame());
         expected = motions;
@@ -104,13 +104,13 @@ public final class Simulator {
         expected = List.of();
     }
 
-    public void end(List<GalilLine> footer) {
+    public void end(List<Instruction> footer) {
         run(footer);
         closeSequences(lastLine);
     }
 
     /** Replays DMC with no G-code to compare against: a hand-edited file, or --trace. */
-    public void replay(List<GalilLine> lines) {
+    public void replay(List<Instruction> lines) {
         expected = null;
         checks.frame(null);
         run(lines);
@@ -120,14 +120,18 @@ public final class Simulator {
         return checks.report(findings);
     }
 
-    private void run(List<GalilLine> lines) {
-        for (GalilLine l : lines) {
+    private void run(List<Instruction> lines) {
+        for (Instruction i : lines) {
             // every line of the DMC passes here in order: the count is the line's number in the file
             checks.dmcLine(++dmcLines);
-            dmc.line(l.text(), l.sourceLine());
-            lastLine = Math.max(1, l.sourceLine());
+            int line = i.source().line();
+            if (line > 0) {
+                origin = i.source().origin(); // a called program's file: its findings go there
+            }
+            dmc.run(i.command(), line);
+            lastLine = Math.max(1, line);
             if (trace != null) {
-                trace.line(l, dmc.x(), dmc.z(), checks.tool(), outputs.describe());
+                trace.line(i, dmc.x(), dmc.z(), checks.tool(), outputs.describe());
             }
         }
     }
@@ -223,15 +227,21 @@ public final class Simulator {
         }
     }
 
+    /** A DMC line that could not be read (a replay of a file by itself), reported where it came from. */
+    void fault(gcnc.dmc.Source at, Code code, Object... args) {
+        origin = at.origin();
+        report(code, at.line(), args);
+    }
+
     private void report(Code code, int line, Object... args) {
         findings++;
         diagnostics.report(Diagnostic.error(code, Span.of(Math.max(1, line), 1), args).in(origin));
     }
 
     /** The interpreter's events, turned into machine state and checks. */
-    private final class Events implements DmcInterpreter.Listener {
+    private final class Events implements Controller.Listener {
         @Override
-        public void sequence(List<Segment> segments, double speed, int line, String text) {
+        public void sequence(List<Segment> segments, double speed, int line) {
             Motion m = null;
             if (expected != null) {
                 skipStandingMotions(segments);

@@ -1,8 +1,7 @@
 package gcnc.sim;
 
 import gcnc.diag.Diagnostics;
-import gcnc.galil.GalilLine;
-import gcnc.galil.LineSink;
+import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.machine.MachineProfile;
 import java.io.InterruptedIOException;
@@ -32,12 +31,12 @@ public final class SimulatorThread implements AutoCloseable {
     private enum Kind { BEGIN, BLOCK, END, OUTPUT_ONLY }
 
     /** One call to make on the simulator: the program's header, a block, or the footer; or lines only to hand on. */
-    private record Step(Kind kind, CheckedBlock block, List<GalilLine> lines) {
+    private record Step(Kind kind, CheckedBlock block, List<Instruction> lines) {
     }
 
     private final Diagnostics diagnostics = new Diagnostics();
     private final Simulator simulator;
-    private final LineSink output;
+    private final java.util.function.Consumer<Instruction> output;
     private final BlockingQueue<List<Step>> queue = new ArrayBlockingQueue<>(QUEUED_BATCHES);
     private final Thread thread;
     private List<Step> batch = new ArrayList<>(BATCH);
@@ -50,7 +49,7 @@ public final class SimulatorThread implements AutoCloseable {
     }
 
     /** A simulator that hands every line it replayed on to {@code output}, in order. */
-    public SimulatorThread(MachineProfile profile, SimOptions options, LineSink output) {
+    public SimulatorThread(MachineProfile profile, SimOptions options, java.util.function.Consumer<Instruction> output) {
         this.simulator = new Simulator(profile, options, diagnostics);
         this.output = output;
         this.thread = new Thread(this::work, "gcnc-simulator");
@@ -59,20 +58,20 @@ public final class SimulatorThread implements AutoCloseable {
     }
 
     /** The program's header lines. The lists passed in must not change afterwards. */
-    public void begin(List<GalilLine> header) throws InterruptedIOException {
+    public void begin(List<Instruction> header) throws InterruptedIOException {
         add(new Step(Kind.BEGIN, null, header));
     }
 
-    public void block(CheckedBlock intended, List<GalilLine> emitted) throws InterruptedIOException {
+    public void block(CheckedBlock intended, List<Instruction> emitted) throws InterruptedIOException {
         add(new Step(Kind.BLOCK, intended, emitted));
     }
 
-    public void end(List<GalilLine> footer) throws InterruptedIOException {
+    public void end(List<Instruction> footer) throws InterruptedIOException {
         add(new Step(Kind.END, null, footer));
     }
 
     /** Lines that are not replayed (written after an error) but go to the output in their turn. */
-    public void outputOnly(List<GalilLine> lines) throws InterruptedIOException {
+    public void outputOnly(List<Instruction> lines) throws InterruptedIOException {
         add(new Step(Kind.OUTPUT_ONLY, null, lines));
     }
 
@@ -150,7 +149,7 @@ public final class SimulatorThread implements AutoCloseable {
             case OUTPUT_ONLY -> {
             }
         }
-        for (GalilLine l : s.lines()) {
+        for (Instruction l : s.lines()) {
             output.accept(l);
         }
     }

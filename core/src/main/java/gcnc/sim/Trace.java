@@ -1,6 +1,7 @@
 package gcnc.sim;
 
-import gcnc.galil.GalilLine;
+import gcnc.dmc.DmcPrinter;
+import gcnc.dmc.Instruction;
 import gcnc.machine.MachineProfile;
 import java.io.IOException;
 
@@ -21,12 +22,12 @@ final class Trace {
         this.kz = p.z().countsPerMm();
     }
 
-    void line(GalilLine l, double x, double z, int tool, String outputs) {
+    void line(Instruction l, double x, double z, int tool, String outputs) {
         if (broken) {
             return;
         }
         try {
-            sink.append(l.text()).append("\t; L").append(Integer.toString(l.sourceLine()))
+            sink.append(DmcPrinter.print(l.command())).append("\t; L").append(Integer.toString(l.source().line()))
                     .append(" X").append(MotionChecks.mm(x / kx)).append(" Z").append(MotionChecks.mm(z / kz))
                     .append(" T").append(Integer.toString(tool)).append(" outputs ").append(outputs).append('\n');
         } catch (IOException e) {

@@ -2,7 +2,7 @@ package gcnc.gradle;
 
 import gcnc.Compiler;
 import gcnc.Session;
-import gcnc.galil.SourceMap;
+import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
 import java.io.File;
 import java.io.IOException;

@@ -9,7 +9,8 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Finding;
 import gcnc.diag.JsonRenderer;
 import gcnc.diag.Messages;
-import gcnc.galil.SourceMap;
+import gcnc.dmc.DmcPrinter;
+import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
 import gcnc.sim.Drawing;
 import gcnc.sim.Shape;
@@ -57,14 +58,16 @@ final class Analysis {
      */
     JsonObject simulate(String name, String text, Optional<Path> folder) throws IOException {
         JsonArray dmc = new JsonArray();
-        SourceMap map = SourceMap.toEntries((dmcLine, sourceLine) -> { });
         Compiler.Result r = session.withPrograms(folder).compile(new StringReader(text),
-                Optional.of(session.simulation().withPath()), false, map.wrap(line -> {
+                Optional.of(session.simulation().withPath()), false, i -> {
                     JsonObject l = new JsonObject();
-                    l.addProperty("text", line.text());
-                    l.addProperty("line", line.sourceLine());
+                    l.addProperty("text", DmcPrinter.print(i.command()));
+                    l.addProperty("line", i.source().line());
+                    if (i.source().file() != null) {
+                        l.addProperty("file", i.source().file()); // a called program's line
+                    }
                     dmc.add(l);
-                }));
+                });
         JsonObject doc = new JsonObject();
         doc.add("diagnostics", report(name, r));
         doc.addProperty("blocks", r.blocks());
@@ -92,7 +95,7 @@ final class Analysis {
             outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
                 r = session.withPrograms(Optional.ofNullable(program.getParent())).compile(in,
-                        Optional.of(session.simulation()), false, mapper.wrap(line -> outputs.dmcLine(line.text())));
+                        Optional.of(session.simulation()), false, mapper.wrap(i -> outputs.dmcLine(DmcPrinter.print(i.command()))));
             }
             doc.add("diagnostics", report(name, r));
             doc.addProperty("ok", r.ok());

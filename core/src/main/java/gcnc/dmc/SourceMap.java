@@ -1,27 +1,30 @@
-package gcnc.galil;
+package gcnc.dmc;
 
 import java.util.function.Consumer;
 
 /**
  * The side file that traces DMC output lines back to G-code lines when the map is not inline
  * (docs/dmc-format.md). Like a line-number table, it has one "{@code <dmc line> <source line>}"
- * entry where a run of output lines from one source line starts; the run goes on to the line
- * before the next entry. Source line 0 marks lines from no block (header, footer). Entries are
- * handed on as they arise, so memory stays flat however long the program.
+ * entry where a run of output lines from one source line starts, followed by the file when the
+ * line is in another file than the program's (a called subprogram, {@code O2000.nc}); the run goes
+ * on to the line before the next entry. Source line 0 marks lines from no block (header, footer).
+ * Entries are handed on as they arise, so memory stays flat however long the program.
  */
 public final class SourceMap {
     /** Where the entries go, as numbers: an output that writes them as text without making strings. */
     public interface Entries {
-        void entry(int dmcLine, int sourceLine);
+        /** @param file the G-code file, or null for the program's own */
+        void entry(int dmcLine, int sourceLine, String file);
     }
 
     private final Entries entries;
     private int dmcLines;
     private int lastSource = -1;
+    private String lastFile;
 
     /** @param mapLines receives each line of the map file ("{@code <dmc line> <source line>}"), in output order */
     public SourceMap(Consumer<String> mapLines) {
-        this((Entries) (dmc, source) -> mapLines.accept(dmc + " " + source));
+        this((Entries) (dmc, source, file) -> mapLines.accept(dmc + " " + source + (file == null ? "" : " " + file)));
     }
 
     private SourceMap(Entries entries) {
@@ -33,15 +36,17 @@ public final class SourceMap {
         return new SourceMap(entries);
     }
 
-    /** A sink that numbers the lines passing to {@code out} and records where each run came from. */
-    public LineSink wrap(LineSink out) {
-        return line -> {
+    /** A sink that numbers the instructions passing to {@code out} (one line each) and records where each run came from. */
+    public Consumer<Instruction> wrap(Consumer<Instruction> out) {
+        return i -> {
             dmcLines++;
-            if (line.sourceLine() != lastSource) {
-                lastSource = line.sourceLine();
-                entries.entry(dmcLines, lastSource);
+            Source s = i.source();
+            if (s.line() != lastSource || !java.util.Objects.equals(s.file(), lastFile)) {
+                lastSource = s.line();
+                lastFile = s.file();
+                entries.entry(dmcLines, lastSource, lastFile);
             }
-            out.accept(line);
+            out.accept(i);
         };
     }
 
@@ -61,12 +66,20 @@ public final class SourceMap {
     }
 
     /**
-     * A map file read back: the G-code line of each DMC line (0 where a run came from no block,
+     * A map file read back: where each DMC line came from (null where a run came from no block,
      * or before the first entry), the G-code file's name when the map names it, and the SHA-256 of
      * the DMC it was written with (none in a map of gcnc before 2026-11: it cannot be trusted).
      */
-    public record Table(java.util.function.IntUnaryOperator lines, java.util.Optional<String> source,
+    public record Table(java.util.function.IntFunction<Source> lines, java.util.Optional<String> source,
                         java.util.Optional<String> dmcSha256) {
+        /** The G-code line of each DMC line, whatever its file (0: from no block). */
+        public java.util.function.IntUnaryOperator lineNumbers() {
+            return n -> {
+                Source s = lines.apply(n);
+                return s == null ? 0 : s.line();
+            };
+        }
+
         /** Whether the map was written with the DMC of this SHA-256 (lowercase hex). */
         public boolean belongsTo(String sha256) {
             return dmcSha256.map(sha256::equals).orElse(false);
@@ -76,6 +89,7 @@ public final class SourceMap {
     /** Reads a map file back; lines that are neither an entry, {@code # source} nor {@code # dmc sha256} are skipped. */
     public static Table read(java.io.BufferedReader in) throws java.io.IOException {
         java.util.List<int[]> runs = new java.util.ArrayList<>();
+        java.util.List<String> files = new java.util.ArrayList<>();
         String source = null;
         String dmc = null;
         for (String l = in.readLine(); l != null; l = in.readLine()) {
@@ -87,21 +101,24 @@ public final class SourceMap {
                 source = l.substring("# source ".length());
                 continue;
             }
-            String[] f = l.strip().split(" ");
-            if (f.length == 2 && number(f[0]) && number(f[1])) {
+            String[] f = l.strip().split(" ", 3);
+            if (f.length >= 2 && number(f[0]) && number(f[1])) {
                 runs.add(new int[] {Integer.parseInt(f[0]), Integer.parseInt(f[1])});
+                files.add(f.length == 3 ? f[2] : null);
             }
         }
         int[] start = new int[runs.size()];
-        int[] from = new int[runs.size()];
+        Source[] from = new Source[runs.size()];
         for (int i = 0; i < start.length; i++) {
             start[i] = runs.get(i)[0];
-            from[i] = runs.get(i)[1];
+            int line = runs.get(i)[1];
+            from[i] = line == 0 ? null : files.get(i) == null ? Source.line(line)
+                    : new Source(gcnc.diag.Origin.file(files.get(i)), line, -1);
         }
         return new Table(dmcLine -> {
             int i = java.util.Arrays.binarySearch(start, dmcLine);
             int run = i >= 0 ? i : -i - 2;
-            return run < 0 ? 0 : from[run];
+            return run < 0 ? null : from[run];
         }, java.util.Optional.ofNullable(source), java.util.Optional.ofNullable(dmc));
     }
 

@@ -1,0 +1,317 @@
+package gcnc.dmc;
+
+import gcnc.machine.MachineModel;
+import java.util.Optional;
+
+/**
+ * One DMC command, as a value: everything gcnc writes for a Galil controller, one command per line
+ * (docs/dmc-format.md). {@link DmcPrinter} is the only place that spells a command as text and
+ * {@link DmcReader} the only place that reads one back; the backend builds commands, the simulator
+ * and the sender consume them. A new command is a new record here, and the compiler then names
+ * every {@link Visitor} that must learn it.
+ *
+ * <p>Per-axis commands ({@code GA}, {@code GR}, {@code PA}, {@code MF}/{@code MR}) name their axes
+ * by Galil letter; the printer puts each value at its channel's place ({@code GA ,C,C}), the reader
+ * names a place by its letter X, Y, Z, W, E..H.
+ */
+public sealed interface Command {
+    <R> R accept(Visitor<R> v);
+
+    /** {@code #NAME}: a program label (gcnc writes {@code #GCNC} first). */
+    record Label(String name) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.label(this);
+        }
+    }
+
+    /** {@code SH XY}: servo on for these axes. */
+    record ServoHere(String axes) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.servoHere(this);
+        }
+    }
+
+    /** {@code VM XY}: vector mode on this plane. */
+    record VectorMode(String axes) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.vectorMode(this);
+        }
+    }
+
+    /** {@code VA n}: vector acceleration, counts/s². */
+    record VectorAcceleration(Fixed countsPerSecond2) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.vectorAcceleration(this);
+        }
+    }
+
+    /** {@code VD n}: vector deceleration, counts/s². */
+    record VectorDeceleration(Fixed countsPerSecond2) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.vectorDeceleration(this);
+        }
+    }
+
+    /**
+     * {@code NO STOCK D<d> L<l> S<s>[ B<bore>]} or {@code NO STOCK NONE}: the blank the program was
+     * verified against, mm (empty: verified without one), so that a replay of the DMC by itself
+     * cuts the same blank. A Galil comment: the controller ignores it.
+     */
+    record Stock(Optional<MachineModel.Blank> blank) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.stock(this);
+        }
+    }
+
+    /**
+     * {@code NO G01}: the next {@code VS} is a feed although it equals the rapid speed, which a
+     * replay of the DMC by itself could not tell otherwise. A Galil comment: the controller ignores it.
+     */
+    record FeedMark() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.feedMark(this);
+        }
+    }
+
+    /** {@code NO L<line>}: the inline source map ({@code --source-map}); the lines after it come from this G-code line. */
+    record SourceMark(int line) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.sourceMark(this);
+        }
+    }
+
+    /** Any other comment ({@code NO text}, {@code 'text}), as written: gcnc writes none, a hand-edited file may. */
+    record Remark(String text) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.remark(this);
+        }
+    }
+
+    /** {@code VS n}: the vector speed of the segments that follow, counts/s. */
+    record VectorSpeed(Fixed countsPerSecond) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.vectorSpeed(this);
+        }
+    }
+
+    /** {@code VP a,b}: a straight segment to this point, counts, measured from the sequence's start. */
+    record VectorPosition(long first, long second) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.vectorPosition(this);
+        }
+    }
+
+    /** {@code CR r,θ,Δθ}: an arc segment of radius r counts from start angle θ through a signed sweep, degrees. */
+    record CircularArc(Fixed radius, Fixed start, Fixed sweep) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.circularArc(this);
+        }
+
+        /**
+         * The arc a Galil draws for {@code CR r,θ,Δθ} from (p1, p2) in the vector plane: the centre from
+         * the start angle (0° along the first plane axis, counter-clockwise positive), the end from
+         * θ + Δθ; {centre1, centre2, end1, end2}. The one place of this arithmetic for the simulator's
+         * replay (gcnc.sim.Plane) and the virtual controller (gcnc.controller), so that both end every
+         * arc on the same double and their paths compare count for count.
+         */
+        public static double[] geometry(double p1, double p2, double r, double startDeg, double sweepDeg) {
+            double th = Math.toRadians(startDeg);
+            double to = Math.toRadians(startDeg + sweepDeg);
+            double c1 = p1 - r * Math.cos(th);
+            double c2 = p2 - r * Math.sin(th);
+            return new double[] {c1, c2, c1 + r * Math.cos(to), c2 + r * Math.sin(to)};
+        }
+    }
+
+    /** {@code VE}: the sequence has no more segments. */
+    record VectorEnd() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.vectorEnd(this);
+        }
+    }
+
+    /** {@code BGS}: begin the sequence. */
+    record BeginSequence() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.beginSequence(this);
+        }
+    }
+
+    /** {@code AMS}: wait until the sequence's motion is complete. */
+    record AwaitSequence() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.awaitSequence(this);
+        }
+    }
+
+    /** {@code OF ,,v}: the offset (volts) of the channel at {@code channel} (0 = A/X); the spindle's drive voltage. */
+    record Offset(int channel, Fixed volts) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.offset(this);
+        }
+    }
+
+    /** {@code WT n}: wait n ms. */
+    record Wait(long milliseconds) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.await(this);
+        }
+    }
+
+    /** {@code TOOL=n}: the tool in the cutting position (a DMC variable). */
+    record ToolNumber(int station) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.toolNumber(this);
+        }
+    }
+
+    /** {@code Revolver n}: the thesis's tool change (thesis dialect only; not a Galil command). */
+    record Revolver(int station) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.revolver(this);
+        }
+    }
+
+    /** {@code M5}: the thesis's pass-through of an M function with no outputs (thesis dialect only). */
+    record PassThroughM(int code) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.passThroughM(this);
+        }
+    }
+
+    /** {@code SBn} (on) or {@code CBn} (off): a digital output. */
+    record Output(int bit, boolean on) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.output(this);
+        }
+    }
+
+    /** {@code GA C,C}: the channel {@code master} (the spindle encoder) becomes the gearing master of both axes. */
+    record GearMaster(char master, char first, char second) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.gearMaster(this);
+        }
+    }
+
+    /**
+     * {@code gsp=(@INT[_TPC/4096]+1)*4096+2048}: the encoder count of the next whole revolution
+     * ({@code -1} when the spindle turns backwards), plus a start angle in counts (a multi-start thread).
+     */
+    record SyncPoint(String variable, char encoder, int countsPerRev, boolean reverse, long phase) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.syncPoint(this);
+        }
+    }
+
+    /** {@code MF}/{@code MR} (reverse): wait until {@code axis} passes a count or a variable's value. */
+    record WaitPast(boolean reverse, char axis, Operand at) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.waitPast(this);
+        }
+    }
+
+    /** {@code GR r1,r2}: the gear ratios of two axes (4 decimals; {@code GR 0,0} disengages). */
+    record GearRatio(char first, Fixed firstRatio, char second, Fixed secondRatio) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.gearRatio(this);
+        }
+    }
+
+    /** {@code PA a,b}: absolute targets of two axes, counts. */
+    record PositionAbsolute(char first, long firstCount, char second, long secondCount) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.positionAbsolute(this);
+        }
+    }
+
+    /** {@code BG XY}: begin independent motion of these axes. */
+    record Begin(String axes) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.begin(this);
+        }
+    }
+
+    /** {@code AM XY}: wait until these axes' motion is complete. */
+    record AfterMotion(String axes) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.afterMotion(this);
+        }
+    }
+
+    /** {@code EN}: end of program. */
+    record End() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.end(this);
+        }
+    }
+
+    /** What {@code MF}/{@code MR} waits for: a count, or a variable's value. */
+    sealed interface Operand {
+        record Count(long counts) implements Operand {
+        }
+
+        record Variable(String name) implements Operand {
+        }
+    }
+
+    /** One method per command: a new command does not compile until every visitor handles it. */
+    interface Visitor<R> {
+        R label(Label c);
+
+        R servoHere(ServoHere c);
+
+        R vectorMode(VectorMode c);
+
+        R vectorAcceleration(VectorAcceleration c);
+
+        R vectorDeceleration(VectorDeceleration c);
+
+        R stock(Stock c);
+
+        R feedMark(FeedMark c);
+
+        R sourceMark(SourceMark c);
+
+        R remark(Remark c);
+
+        R vectorSpeed(VectorSpeed c);
+
+        R vectorPosition(VectorPosition c);
+
+        R circularArc(CircularArc c);
+
+        R vectorEnd(VectorEnd c);
+
+        R beginSequence(BeginSequence c);
+
+        R awaitSequence(AwaitSequence c);
+
+        R offset(Offset c);
+
+        R await(Wait c);
+
+        R toolNumber(ToolNumber c);
+
+        R revolver(Revolver c);
+
+        R passThroughM(PassThroughM c);
+
+        R output(Output c);
+
+        R gearMaster(GearMaster c);
+
+        R syncPoint(SyncPoint c);
+
+        R waitPast(WaitPast c);
+
+        R gearRatio(GearRatio c);
+
+        R positionAbsolute(PositionAbsolute c);
+
+        R begin(Begin c);
+
+        R afterMotion(AfterMotion c);
+
+        R end(End c);
+    }
+}

@@ -1,0 +1,179 @@
+package gcnc.dmc;
+
+import gcnc.dmc.Command.*;
+import gcnc.machine.MachineModel;
+
+/**
+ * The one place that spells a {@link Command} as a DMC line (docs/dmc-format.md): upper case, a
+ * space between command and arguments, arguments separated by commas without spaces, per-axis
+ * arguments at their channels' places with the empty places' commas kept ({@code OF ,,3.0000}).
+ * Numbers print as they are held ({@link Fixed}), so the dialect that built them decides their form.
+ * {@link DmcReader} reads every line this prints back to an equal command.
+ */
+public final class DmcPrinter {
+    private DmcPrinter() {
+    }
+
+    public static String print(Command c) {
+        return c.accept(SPELL);
+    }
+
+    private static final Visitor<String> SPELL = new Visitor<>() {
+        public String label(Label c) {
+            return "#" + c.name();
+        }
+
+        public String servoHere(ServoHere c) {
+            return "SH " + c.axes();
+        }
+
+        public String vectorMode(VectorMode c) {
+            return "VM " + c.axes();
+        }
+
+        public String vectorAcceleration(VectorAcceleration c) {
+            return "VA " + c.countsPerSecond2();
+        }
+
+        public String vectorDeceleration(VectorDeceleration c) {
+            return "VD " + c.countsPerSecond2();
+        }
+
+        public String stock(Stock c) {
+            if (c.blank().isEmpty()) {
+                return DmcReader.STOCK_NONE;
+            }
+            MachineModel.Blank b = c.blank().get();
+            return "NO STOCK D" + Fixed.fourDecimals(b.diameter()) + " L" + Fixed.fourDecimals(b.length())
+                    + " S" + Fixed.fourDecimals(b.stickout()) + (b.bore() > 0 ? " B" + Fixed.fourDecimals(b.bore()) : "");
+        }
+
+        public String feedMark(FeedMark c) {
+            return DmcReader.FEED_MARK;
+        }
+
+        public String sourceMark(SourceMark c) {
+            return "NO L" + c.line();
+        }
+
+        public String remark(Remark c) {
+            return c.text();
+        }
+
+        public String vectorSpeed(VectorSpeed c) {
+            return "VS " + c.countsPerSecond();
+        }
+
+        public String vectorPosition(VectorPosition c) {
+            return new StringBuilder(24).append("VP ").append(c.first()).append(',').append(c.second()).toString();
+        }
+
+        public String circularArc(CircularArc c) {
+            StringBuilder sb = new StringBuilder(32).append("CR ");
+            c.radius().appendTo(sb);
+            c.start().appendTo(sb.append(','));
+            c.sweep().appendTo(sb.append(','));
+            return sb.toString();
+        }
+
+        public String vectorEnd(VectorEnd c) {
+            return "VE";
+        }
+
+        public String beginSequence(BeginSequence c) {
+            return "BGS";
+        }
+
+        public String awaitSequence(AwaitSequence c) {
+            return "AMS";
+        }
+
+        public String offset(Offset c) {
+            StringBuilder sb = new StringBuilder(16).append("OF ");
+            for (int i = 0; i < c.channel(); i++) {
+                sb.append(',');
+            }
+            c.volts().appendTo(sb);
+            return sb.toString();
+        }
+
+        public String await(Wait c) {
+            return "WT " + c.milliseconds();
+        }
+
+        public String toolNumber(ToolNumber c) {
+            return "TOOL=" + c.station();
+        }
+
+        public String revolver(Revolver c) {
+            return "Revolver " + c.station();
+        }
+
+        public String passThroughM(PassThroughM c) {
+            return "M" + c.code();
+        }
+
+        public String output(Output c) {
+            return (c.on() ? "SB" : "CB") + c.bit();
+        }
+
+        public String gearMaster(GearMaster c) {
+            String m = String.valueOf(c.master());
+            return "GA " + places(new char[] {c.first(), c.second()}, m, m);
+        }
+
+        public String syncPoint(SyncPoint c) {
+            String n = Integer.toString(c.countsPerRev());
+            String shift = c.phase() == 0 ? "" : (c.phase() > 0 ? "+" : "") + c.phase();
+            return c.variable() + "=(@INT[_TP" + c.encoder() + "/" + n + "]" + (c.reverse() ? "-1" : "+1") + ")*" + n
+                    + shift;
+        }
+
+        public String waitPast(WaitPast c) {
+            String at = c.at() instanceof Operand.Count n ? Long.toString(n.counts())
+                    : ((Operand.Variable) c.at()).name();
+            return (c.reverse() ? "MR " : "MF ") + places(new char[] {c.axis()}, at);
+        }
+
+        public String gearRatio(GearRatio c) {
+            return "GR " + places(new char[] {c.first(), c.second()}, c.firstRatio().toString(),
+                    c.secondRatio().toString());
+        }
+
+        public String positionAbsolute(PositionAbsolute c) {
+            return "PA " + places(new char[] {c.first(), c.second()}, Long.toString(c.firstCount()),
+                    Long.toString(c.secondCount()));
+        }
+
+        public String begin(Begin c) {
+            return "BG " + c.axes();
+        }
+
+        public String afterMotion(AfterMotion c) {
+            return "AM " + c.axes();
+        }
+
+        public String end(End c) {
+            return "EN";
+        }
+    };
+
+    /** Values at their axes' channel places, the places before the last one empty where no value goes. */
+    private static String places(char[] axes, String... values) {
+        int last = -1;
+        int[] at = new int[axes.length];
+        for (int i = 0; i < axes.length; i++) {
+            at[i] = Channels.index(axes[i]);
+            if (at[i] < 0) {
+                throw new IllegalArgumentException("not a Galil axis: " + axes[i]);
+            }
+            last = Math.max(last, at[i]);
+        }
+        String[] slots = new String[last + 1];
+        java.util.Arrays.fill(slots, "");
+        for (int i = 0; i < axes.length; i++) {
+            slots[at[i]] = values[i];
+        }
+        return String.join(",", slots);
+    }
+}

@@ -1,0 +1,328 @@
+package gcnc.dmc;
+
+import gcnc.diag.Code;
+import gcnc.dmc.Command.*;
+import gcnc.machine.MachineModel;
+import java.util.Optional;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * The one place that reads a DMC line into a {@link Command} (docs/dmc-format.md): the lines
+ * gcnc writes, and the few forms a hand-edited file adds (comments, {@code BG S}, {@code SB 1},
+ * blanks around a line). What it cannot read is reported: E300 for an instruction it does not know,
+ * E301 for arguments that are not of the command's form, E310 for a count beyond the controller's
+ * 32-bit registers. Whether a command makes sense where it stands (the plane, the gearing) is the
+ * controller model's to judge, not the reader's.
+ */
+public final class DmcReader {
+    /** How gcnc's feed mark is written. */
+    public static final String FEED_MARK = "NO G01";
+    /** How the comment of a program verified without a blank is written. */
+    public static final String STOCK_NONE = "NO STOCK NONE";
+
+    private static final double INT32 = 2147483647;
+    private static final Pattern LABEL = Pattern.compile("#[A-Za-z][A-Za-z0-9_]{0,7}");
+    private static final Pattern STOCK = Pattern.compile("NO STOCK D([0-9]+(?:\\.[0-9]+)?) L([0-9]+(?:\\.[0-9]+)?)"
+            + " S(-?[0-9]+(?:\\.[0-9]+)?)(?: B([0-9]+(?:\\.[0-9]+)?))?");
+    private static final Pattern SYNC = Pattern.compile(
+            "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})([+-][0-9]{1,7})?");
+    private static final Pattern VARIABLE = Pattern.compile("[a-z][a-z0-9]{0,7}");
+
+    /** Where the reader reports a line it cannot read. */
+    @FunctionalInterface
+    public interface Faults {
+        void fault(Code code, Object... args);
+    }
+
+    private DmcReader() {
+    }
+
+    /** The command on {@code raw}, or null for a blank line or one reported to {@code faults}. */
+    public static Command read(String raw, Faults faults) {
+        String t = raw.strip();
+        if (t.isEmpty()) {
+            return null;
+        }
+        if (t.startsWith("'") || t.equals("NO") || t.startsWith("NO ")) {
+            return comment(t);
+        }
+        if (t.charAt(0) == '#') {
+            if (!LABEL.matcher(t).matches()) {
+                faults.fault(Code.E301_SIM_BAD_ARGUMENTS, "#", t);
+                return null;
+            }
+            return new Label(t.substring(1));
+        }
+        if (t.startsWith("TOOL=")) {
+            int n = integer(t.substring(5), 0, 9999);
+            return n < 0 ? bad(faults, "TOOL", t) : new ToolNumber(n);
+        }
+        if (t.regionMatches(true, 0, "Revolver ", 0, 9)) {
+            int n = integer(t.substring(9).strip(), 0, 9999);
+            return n < 0 ? bad(faults, "Revolver", t) : new Revolver(n);
+        }
+        if (t.length() >= 2 && t.charAt(0) == 'M' && Character.isDigit(t.charAt(1))) {
+            int n = integer(t.substring(1), 0, 999);
+            return n < 0 ? bad(faults, "M", t) : new PassThroughM(n);
+        }
+        if (t.length() < 2) {
+            faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
+            return null;
+        }
+        if (Character.isLowerCase(t.charAt(0)) && t.indexOf('=') > 0) {
+            return syncPoint(t, faults);
+        }
+        String cmd = t.substring(0, 2);
+        String args = t.substring(2).strip();
+        switch (cmd) {
+            case "VP":
+                return vectorPosition(args, t, faults);
+            case "CR":
+                return arc(args, t, faults);
+            case "VS":
+                return positive(args, cmd, t, faults, VectorSpeed::new);
+            case "VA":
+                return positive(args, cmd, t, faults, VectorAcceleration::new);
+            case "VD":
+                return positive(args, cmd, t, faults, VectorDeceleration::new);
+            case "BG":
+                return args.equals("S") ? new BeginSequence() : axes(args) ? new Begin(args) : bad(faults, cmd, t);
+            case "AM":
+                return args.equals("S") ? new AwaitSequence() : axes(args) ? new AfterMotion(args) : bad(faults, cmd, t);
+            case "SH":
+                return axes(args) ? new ServoHere(args) : bad(faults, cmd, t);
+            case "VM":
+                return axes(args) ? new VectorMode(args) : bad(faults, cmd, t);
+            case "VE":
+                return args.isEmpty() ? new VectorEnd() : bad(faults, cmd, t);
+            case "EN":
+                return args.isEmpty() ? new End() : bad(faults, cmd, t);
+            case "WT": {
+                int ms = integer(args, 0, Integer.MAX_VALUE);
+                return ms < 0 ? bad(faults, cmd, t) : new Wait(ms);
+            }
+            case "SB":
+            case "CB": {
+                int bit = integer(args, 0, 999);
+                return bit < 0 ? bad(faults, cmd, t) : new Output(bit, cmd.equals("SB"));
+            }
+            case "OF":
+                return offset(args, t, faults);
+            case "GA":
+                return gearMaster(args, t, faults);
+            case "MF":
+            case "MR":
+                return waitPast(cmd, args, t, faults);
+            case "GR":
+                return gearRatio(args, t, faults);
+            case "PA":
+                return positionAbsolute(args, t, faults);
+            default:
+                // BGS and AMS are read as BG S and AM S above; anything else is not a command gcnc writes
+                faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
+                return null;
+        }
+    }
+
+    private static Command comment(String t) {
+        if (t.equals(FEED_MARK)) {
+            return new FeedMark();
+        }
+        if (t.equals(STOCK_NONE)) {
+            return new Stock(Optional.empty());
+        }
+        if (t.startsWith("NO L") && t.length() > 4 && t.length() < 14 && t.substring(4).chars().allMatch(Character::isDigit)) {
+            return new SourceMark(Integer.parseInt(t.substring(4)));
+        }
+        MachineModel.Blank b = blank(t);
+        return b != null ? new Stock(Optional.of(b)) : new Remark(t);
+    }
+
+    /** The blank of a {@code NO STOCK} comment, or null when the line is not one gcnc writes. */
+    private static MachineModel.Blank blank(String t) {
+        Matcher m = STOCK.matcher(t);
+        if (!m.matches()) {
+            return null;
+        }
+        double bore = m.group(4) == null ? 0 : Double.parseDouble(m.group(4));
+        if (!(bore < Double.parseDouble(m.group(1)))) {
+            return null; // a bore as wide as the blank: not a comment gcnc writes
+        }
+        return new MachineModel.Blank(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)),
+                Double.parseDouble(m.group(3)), bore);
+    }
+
+    private static Command bad(Faults faults, String cmd, String text) {
+        faults.fault(Code.E301_SIM_BAD_ARGUMENTS, cmd, text);
+        return null;
+    }
+
+    /** Axis letters: one to eight of A-H, X, Y, Z, W. */
+    private static boolean axes(String s) {
+        if (s.isEmpty() || s.length() > 8) {
+            return false;
+        }
+        for (int i = 0; i < s.length(); i++) {
+            if (Channels.index(s.charAt(i)) < 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static Command vectorPosition(String args, String text, Faults faults) {
+        int comma = args.indexOf(',');
+        Fixed p = comma < 0 ? null : Fixed.parse(args, 0, comma, true);
+        Fixed q = comma < 0 ? null : Fixed.parse(args, comma + 1, args.length(), true);
+        if (p == null || q == null) {
+            return bad(faults, "VP", text);
+        }
+        if (Math.abs(p.unscaled()) > INT32 || Math.abs(q.unscaled()) > INT32) {
+            faults.fault(Code.E310_SIM_COUNT_RANGE, text);
+            return null;
+        }
+        return new VectorPosition(p.unscaled(), q.unscaled());
+    }
+
+    private static Command arc(String args, String text, Faults faults) {
+        String[] a = args.split(",", -1);
+        Fixed[] v = new Fixed[3];
+        for (int i = 0; a.length == 3 && i < 3; i++) {
+            v[i] = Fixed.parse(a[i], 0, a[i].length(), false);
+        }
+        if (v[2] == null || v[0] == null || v[1] == null || v[0].value() <= 0 || Math.abs(v[2].value()) > 360 * 1000) {
+            return bad(faults, "CR", text);
+        }
+        return new CircularArc(v[0], v[1], v[2]);
+    }
+
+    private static Command positive(String args, String cmd, String text, Faults faults,
+                                    java.util.function.Function<Fixed, Command> make) {
+        Fixed v = Fixed.parse(args, 0, args.length(), false);
+        if (v == null || v.value() <= 0) {
+            return bad(faults, cmd, text);
+        }
+        if (v.value() > INT32) {
+            faults.fault(Code.E310_SIM_COUNT_RANGE, cmd + " " + args);
+        }
+        return make.apply(v);
+    }
+
+    private static Command offset(String args, String text, Faults faults) {
+        String[] a = args.split(",", -1);
+        int channel = -1;
+        Fixed volts = null;
+        for (int i = 0; i < a.length; i++) {
+            if (a[i].isBlank()) {
+                continue;
+            }
+            Fixed v = Fixed.parse(a[i], 0, a[i].length(), false);
+            if (v == null || Math.abs(v.value()) > 9.998 || channel >= 0) {
+                return bad(faults, "OF", text); // gcnc writes one channel's offset per OF
+            }
+            channel = i;
+            volts = v;
+        }
+        return channel < 0 || channel > 7 ? bad(faults, "OF", text) : new Offset(channel, volts);
+    }
+
+    /** Per-channel arguments: the value at each channel's place, "" where empty; null past eight places. */
+    private static String[] places(String args) {
+        String[] a = args.split(",", -1);
+        if (a.length > 8) {
+            return null;
+        }
+        for (int i = 0; i < a.length; i++) {
+            a[i] = a[i].strip();
+        }
+        return a;
+    }
+
+    /** The places that hold a value, in channel order; null unless exactly {@code n}. */
+    private static int[] filled(String[] slots, int n) {
+        if (slots == null) {
+            return null;
+        }
+        int[] at = new int[n];
+        int k = 0;
+        for (int i = 0; i < slots.length; i++) {
+            if (!slots[i].isEmpty()) {
+                if (k == n) {
+                    return null;
+                }
+                at[k++] = i;
+            }
+        }
+        return k == n ? at : null;
+    }
+
+    private static Command gearMaster(String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 2);
+        if (at == null || slots[at[0]].length() != 1 || !slots[at[0]].equals(slots[at[1]])
+                || Channels.index(slots[at[0]].charAt(0)) < 0) {
+            return bad(faults, "GA", text);
+        }
+        return new GearMaster(slots[at[0]].charAt(0), Channels.letter(at[0]), Channels.letter(at[1]));
+    }
+
+    private static Command syncPoint(String t, Faults faults) {
+        Matcher m = SYNC.matcher(t);
+        if (!m.matches() || !m.group(3).equals(m.group(5))) {
+            faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
+            return null;
+        }
+        long phase = m.group(6) == null ? 0 : Long.parseLong(m.group(6));
+        return new SyncPoint(m.group(1), m.group(2).charAt(0), Integer.parseInt(m.group(3)), m.group(4).equals("-1"),
+                phase);
+    }
+
+    private static Command waitPast(String cmd, String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 1);
+        if (at == null) {
+            return bad(faults, cmd, text);
+        }
+        String v = slots[at[0]];
+        Command.Operand operand;
+        if (VARIABLE.matcher(v).matches()) {
+            operand = new Operand.Variable(v);
+        } else {
+            Fixed n = Fixed.parse(v, 0, v.length(), true);
+            if (n == null) {
+                return bad(faults, cmd, text);
+            }
+            operand = new Operand.Count(n.unscaled());
+        }
+        return new WaitPast(cmd.equals("MR"), Channels.letter(at[0]), operand);
+    }
+
+    private static Command gearRatio(String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 2);
+        Fixed r1 = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), false);
+        Fixed r2 = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), false);
+        if (r1 == null || r2 == null) {
+            return bad(faults, "GR", text);
+        }
+        return new GearRatio(Channels.letter(at[0]), r1, Channels.letter(at[1]), r2);
+    }
+
+    private static Command positionAbsolute(String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 2);
+        Fixed p = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), true);
+        Fixed q = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), true);
+        if (p == null || q == null) {
+            return bad(faults, "PA", text);
+        }
+        return new PositionAbsolute(Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]), q.unscaled());
+    }
+
+    /** The whole number in s within [min, max], or -1. */
+    private static int integer(String s, int min, int max) {
+        Fixed v = Fixed.parse(s, 0, s.length(), true);
+        return v == null || v.unscaled() < min || v.unscaled() > max ? -1 : (int) v.unscaled();
+    }
+}

@@ -1,0 +1,590 @@
+package gcnc.sim;
+
+import gcnc.diag.Code;
+import gcnc.dmc.Command;
+import gcnc.dmc.DmcPrinter;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The controller: what a Galil does with the commands gcnc emits (docs/dmc-format.md, both
+ * dialects), one {@link Command} at a time, handed on to a {@link Listener} as what the machine
+ * does: vector sequences when BGS starts them, dwells, tool changes, output changes. It holds the
+ * controller's state (position in whole counts, the sequence being buffered, speed, acceleration,
+ * the gearing of a thread pass) and no checks of the machine around it: those are the
+ * {@link Simulator}'s. A command that makes no sense where it stands (another plane, a gear ratio
+ * with no master, anything after EN) is reported, never skipped silently. Positions are Galil
+ * coordinates in the vector plane; {@link Plane} turns them into machine counts.
+ */
+final class Controller {
+    /** What the replayed program makes the machine do. */
+    interface Listener {
+        void sequence(List<Segment> segments, double speed, int line);
+
+        void dwell(double seconds, int line);
+
+        void tool(int n, int line);
+
+        void output(int bit, boolean on, int line);
+
+        void spindleVolts(double volts, int line);
+
+        void report(Code code, int line, Object... args);
+    }
+
+    private static final double INT32 = 2147483647;
+
+    private final Plane plane;
+    private final Listener out;
+    private double g1;
+    private double g2;
+    private double seqStart1;
+    private double seqStart2;
+    private double cursor1;
+    private double cursor2;
+    private final List<Segment> pending = new ArrayList<>();
+    private double speed;
+    double acceleration;
+    double deceleration;
+    private boolean ended;
+    /** When a G-code block is there to compare with, conformance reports zero sweeps instead. */
+    boolean checkedByCaller;
+    private final int spindleChannel;
+
+    /**
+     * The spindle encoder threads are geared to (channel, counts per revolution; -1 when the
+     * machine has none), the drive's r/min per volt (for a thread pass's speed) and how far, in
+     * counts, a geared pass may end from its settling move before it is E317.
+     */
+    int encoderChannel = -1;
+    int encoderCounts;
+    double rpmPerVolt;
+    double threadTolerance = 2;
+    private double volts;
+    /** The gearing of a thread pass as the DMC sets it up (docs/dmc-format.md, "Thread passes"). */
+    private boolean gearMaster;
+    private String syncVariable;
+    private boolean synchronised;
+    private boolean engaged;
+    private double ratio1;
+    private double ratio2;
+    private double engaged1;
+    private double engaged2;
+    /** The plane index (0, 1) whose trip point ends the pass, and that point; -1 when none yet. */
+    private int tripAxis = -1;
+    private double trip;
+    /** Where the disengaged pass left the axes, and the PA target; NaN when none. */
+    private double geared1 = Double.NaN;
+    private double geared2 = Double.NaN;
+    private double target1 = Double.NaN;
+    private double target2 = Double.NaN;
+    private Command gearLine;
+    /**
+     * The geared segments of the pass before the current ratios: one per change of the ratios
+     * while geared (a chamfered pull-out's corner, docs/threading.md); empty for a straight pass.
+     */
+    private final List<Segment> geared = new ArrayList<>(1);
+    /** The encoder counts the master turned over those segments (for the pass's speed). */
+    private double masterTurned;
+
+    Controller(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
+                   Listener out) {
+        this.plane = plane;
+        this.out = out;
+        this.acceleration = acc;
+        this.deceleration = dec;
+        this.speed = speed;
+        this.spindleChannel = Plane.channel(spindleAxis);
+        moveTo(x, z);
+    }
+
+    /** Puts the machine at a position (machine counts): the start, or a resync after a mismatch. */
+    void moveTo(double x, double z) {
+        g1 = Math.rint(plane.galil1(x, z));
+        g2 = Math.rint(plane.galil2(x, z));
+    }
+
+    double x() {
+        return plane.machineX(g1, g2);
+    }
+
+    double z() {
+        return plane.machineZ(g1, g2);
+    }
+
+    boolean hasPending() {
+        return !pending.isEmpty();
+    }
+
+    void dropPending() {
+        pending.clear();
+    }
+
+    /**
+     * A {@code NO G01} comment came before this sequence: gcnc marks a feed whose speed equals the
+     * rapid speed so that a bare replay does not take it for a rapid (docs/dmc-format.md).
+     */
+    private boolean feedMarked;
+
+    boolean feedMarked() {
+        return feedMarked;
+    }
+
+    /**
+     * Runs one command of the G-code {@code line}. Comments, labels and the marks gcnc writes are
+     * taken anywhere; any other command after {@code EN} is E312.
+     */
+    void run(Command c, int line) {
+        this.command = c;
+        this.line = line;
+        c.accept(step);
+    }
+
+    /** The command being run and its G-code line, for the findings about it. */
+    private Command command;
+    private int line;
+
+    private String text() {
+        return DmcPrinter.print(command);
+    }
+
+    /** Whether the program has ended: E312 for the command, which then does nothing. */
+    private boolean afterEnd() {
+        if (ended) {
+            out.report(Code.E312_SIM_AFTER_END, line, text());
+        }
+        return ended;
+    }
+
+    private final Command.Visitor<Void> step = new Command.Visitor<>() {
+        public Void label(Command.Label c) {
+            return null;
+        }
+
+        public Void stock(Command.Stock c) {
+            return null;
+        }
+
+        public Void feedMark(Command.FeedMark c) {
+            feedMarked = true;
+            return null;
+        }
+
+        public Void sourceMark(Command.SourceMark c) {
+            return null;
+        }
+
+        public Void remark(Command.Remark c) {
+            return null;
+        }
+
+        public Void servoHere(Command.ServoHere c) {
+            if (!afterEnd() && !plane.sameChannels(c.axes())) {
+                out.report(Code.E313_SIM_VECTOR_PLANE, line, "SH", c.axes(), plane.letters);
+            }
+            return null;
+        }
+
+        public Void vectorMode(Command.VectorMode c) {
+            if (!afterEnd() && !plane.sameChannels(c.axes())) {
+                out.report(Code.E313_SIM_VECTOR_PLANE, line, "VM", c.axes(), plane.letters);
+            }
+            return null;
+        }
+
+        public Void vectorAcceleration(Command.VectorAcceleration c) {
+            if (!afterEnd()) {
+                acceleration = c.countsPerSecond2().value();
+            }
+            return null;
+        }
+
+        public Void vectorDeceleration(Command.VectorDeceleration c) {
+            if (!afterEnd()) {
+                deceleration = c.countsPerSecond2().value();
+            }
+            return null;
+        }
+
+        public Void vectorSpeed(Command.VectorSpeed c) {
+            if (!afterEnd()) {
+                speed = c.countsPerSecond().value();
+            }
+            return null;
+        }
+
+        public Void vectorPosition(Command.VectorPosition c) {
+            if (!afterEnd()) {
+                Controller.this.vp(c.first(), c.second());
+            }
+            return null;
+        }
+
+        public Void circularArc(Command.CircularArc c) {
+            if (!afterEnd()) {
+                Controller.this.cr(c.radius().value(), c.start().value(), c.sweep().value());
+            }
+            return null;
+        }
+
+        public Void vectorEnd(Command.VectorEnd c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void beginSequence(Command.BeginSequence c) {
+            if (!afterEnd()) {
+                Controller.this.startSequence();
+            }
+            return null;
+        }
+
+        public Void awaitSequence(Command.AwaitSequence c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void offset(Command.Offset c) {
+            if (!afterEnd() && c.channel() == spindleChannel) {
+                volts = c.volts().value();
+                out.spindleVolts(volts, line);
+            }
+            return null;
+        }
+
+        public Void await(Command.Wait c) {
+            if (!afterEnd()) {
+                out.dwell(c.milliseconds() / 1000.0, line);
+            }
+            return null;
+        }
+
+        public Void toolNumber(Command.ToolNumber c) {
+            if (!afterEnd()) {
+                out.tool(c.station(), line);
+            }
+            return null;
+        }
+
+        public Void revolver(Command.Revolver c) {
+            if (!afterEnd()) {
+                out.tool(c.station(), line);
+            }
+            return null;
+        }
+
+        public Void passThroughM(Command.PassThroughM c) {
+            afterEnd(); // the thesis's pass-through: no output, no effect
+            return null;
+        }
+
+        public Void output(Command.Output c) {
+            if (!afterEnd()) {
+                out.output(c.bit(), c.on(), line);
+            }
+            return null;
+        }
+
+        public Void gearMaster(Command.GearMaster c) {
+            if (!afterEnd()) {
+                Controller.this.gearAxes(c);
+            }
+            return null;
+        }
+
+        public Void syncPoint(Command.SyncPoint c) {
+            if (!afterEnd()) {
+                Controller.this.assignment(c);
+            }
+            return null;
+        }
+
+        public Void waitPast(Command.WaitPast c) {
+            if (!afterEnd()) {
+                Controller.this.tripPoint(c);
+            }
+            return null;
+        }
+
+        public Void gearRatio(Command.GearRatio c) {
+            if (!afterEnd()) {
+                Controller.this.gearRatio(c);
+            }
+            return null;
+        }
+
+        public Void positionAbsolute(Command.PositionAbsolute c) {
+            if (!afterEnd()) {
+                Controller.this.settle(c);
+            }
+            return null;
+        }
+
+        public Void begin(Command.Begin c) {
+            if (afterEnd()) {
+                return null;
+            }
+            if (plane.sameChannels(c.axes()) && !Double.isNaN(target1)) {
+                Controller.this.threadPass();
+            } else {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "BG", text());
+            }
+            return null;
+        }
+
+        public Void afterMotion(Command.AfterMotion c) {
+            if (!afterEnd() && !plane.sameChannels(c.axes())) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "AM", text());
+            }
+            return null;
+        }
+
+        public Void end(Command.End c) {
+            afterEnd();
+            ended = true;
+            return null;
+        }
+    };
+
+    /** VP: a straight segment to (p, q) from the sequence's start. */
+    private void vp(long p, long q) {
+        startIfNeeded();
+        double e1 = seqStart1 + p;
+        double e2 = seqStart2 + q;
+        add(new Segment(plane.machineX(cursor1, cursor2), plane.machineZ(cursor1, cursor2),
+                plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, command), e1, e2);
+    }
+
+    /** CR: an arc of radius r from the start angle through the sweep, degrees. */
+    private void cr(double r, double startDeg, double sweepDeg) {
+        if (sweepDeg == 0 && !checkedByCaller) {
+            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, text());
+        }
+        startIfNeeded();
+        double[] end = new double[2];
+        Segment arc = plane.cr(cursor1, cursor2, r, startDeg, sweepDeg, command, end);
+        add(arc, end[0], end[1]);
+    }
+
+    private void startIfNeeded() {
+        if (pending.isEmpty()) {
+            seqStart1 = g1;
+            seqStart2 = g2;
+            cursor1 = g1;
+            cursor2 = g2;
+        }
+    }
+
+    private void add(Segment s, double e1, double e2) {
+        if (Math.abs(e1) > INT32 || Math.abs(e2) > INT32) {
+            out.report(Code.E310_SIM_COUNT_RANGE, line, "the end point of '" + s.text() + "'");
+        }
+        pending.add(s);
+        cursor1 = e1;
+        cursor2 = e2;
+    }
+
+    private void startSequence() {
+        if (pending.isEmpty()) {
+            return;
+        }
+        // The controller's position is whole counts: an arc that ends a fraction off its target
+        // leaves the axes at the nearest count, and the next sequence starts from there.
+        g1 = Math.rint(cursor1);
+        g2 = Math.rint(cursor2);
+        // The listener reads the segments during the call and keeps none of them.
+        out.sequence(pending, speed, line);
+        pending.clear();
+        feedMarked = false;
+    }
+
+    /** The plane's two channels in plane order (0: the first of VP's arguments). */
+    private int planeChannel(int i) {
+        return Plane.channel(plane.letters.charAt(i));
+    }
+
+    /** {@code GA}: the spindle encoder's channel is the master of both plane axes, and of nothing else. */
+    private void gearAxes(Command.GearMaster c) {
+        if (encoderChannel < 0 || Plane.channel(c.master()) != encoderChannel
+                || !plane.sameChannels("" + c.first() + c.second())) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GA", text());
+            return;
+        }
+        gearMaster = true;
+    }
+
+    /**
+     * {@code gsp=(@INT[_TPC/4096]+1)*4096}: the encoder count of the next whole revolution, or
+     * ({@code ...*4096+2048}) a start angle past it, less than one revolution (a multi-start thread).
+     */
+    private void assignment(Command.SyncPoint c) {
+        if (encoderChannel < 0 || Plane.channel(c.encoder()) != encoderChannel || c.countsPerRev() != encoderCounts
+                || Math.abs(c.phase()) >= encoderCounts) {
+            out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, line, text());
+            return;
+        }
+        syncVariable = c.variable();
+        synchronised = false;
+    }
+
+    /**
+     * {@code MF}/{@code MR}: on the encoder's channel with the sync variable, the wait for the whole
+     * revolution (the pass will start at the same spindle angle as every other); on a plane axis
+     * while geared, the point where the pass ends.
+     */
+    private void tripPoint(Command.WaitPast c) {
+        String cmd = c.reverse() ? "MR" : "MF";
+        int at = Plane.channel(c.axis());
+        if (at == encoderChannel && c.at() instanceof Command.Operand.Variable v && v.name().equals(syncVariable)) {
+            synchronised = true;
+            return;
+        }
+        int axis = at == planeChannel(0) ? 0 : at == planeChannel(1) ? 1 : -1;
+        if (axis < 0 || !(c.at() instanceof Command.Operand.Count n) || !engaged) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text());
+            return;
+        }
+        tripAxis = axis;
+        trip = n.counts();
+    }
+
+    /** {@code GR}: engages the plane axes at their ratios, or ({@code GR 0,0}) disengages them at the trip point. */
+    private void gearRatio(Command.GearRatio c) {
+        boolean firstIsFirst = Plane.channel(c.first()) == planeChannel(0);
+        double r1 = (firstIsFirst ? c.firstRatio() : c.secondRatio()).value();
+        double r2 = (firstIsFirst ? c.secondRatio() : c.firstRatio()).value();
+        if (!plane.sameChannels("" + c.first() + c.second()) || Math.abs(r1) > gcnc.machine.SpindleEncoder.MAX_RATIO
+                || Math.abs(r2) > gcnc.machine.SpindleEncoder.MAX_RATIO) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text());
+            return;
+        }
+        if (r1 == 0 && r2 == 0) {
+            if (engaged) {
+                disengage();
+            }
+            return;
+        }
+        if (engaged) {
+            change(r1, r2);
+            return;
+        }
+        if (!gearMaster) {
+            out.report(Code.E318_SIM_THREAD_NO_MASTER, line, text());
+        } else if (!synchronised) {
+            out.report(Code.E319_SIM_THREAD_UNSYNCHRONISED, line, text());
+        }
+        engaged = true;
+        synchronised = false;
+        ratio1 = r1;
+        ratio2 = r2;
+        engaged1 = g1;
+        engaged2 = g2;
+        tripAxis = -1;
+        gearLine = command;
+        geared.clear();
+        masterTurned = 0;
+    }
+
+    /**
+     * {@code GR} with other ratios while geared: at the MF/MR point on a plane axis the ratios
+     * change and the master goes on (a chamfered pull-out, docs/threading.md). The segment geared so
+     * far is kept; the next starts where it ended.
+     */
+    private void change(double r1, double r2) {
+        double[] at = tripped(" (no MF/MR point on a geared axis says where the ratios change)");
+        if (at == null) {
+            return;
+        }
+        geared.add(new Segment(plane.machineX(engaged1, engaged2), plane.machineZ(engaged1, engaged2),
+                plane.machineX(at[0], at[1]), plane.machineZ(at[0], at[1]), false, 0, 0, 0, 0, 0, gearLine));
+        engaged1 = at[0];
+        engaged2 = at[1];
+        ratio1 = r1;
+        ratio2 = r2;
+        tripAxis = -1;
+        gearLine = command;
+    }
+
+    /** Where the geared axes stand when the trip axis reaches its point (the master turned the same counts for both). */
+    private void disengage() {
+        engaged = false;
+        double[] at = tripped(" (no MF/MR point on a geared axis ends the pass)");
+        if (at != null) {
+            geared1 = at[0];
+            geared2 = at[1];
+        }
+    }
+
+    /**
+     * {first plane axis, second, master counts turned} when the trip axis reaches its point from
+     * where the current ratios began, the master's counts added to {@link #masterTurned}; null
+     * after E301 when no MF/MR on a geared axis gave the point ({@code why}).
+     */
+    private double[] tripped(String why) {
+        double r = tripAxis == 0 ? ratio1 : ratio2;
+        if (tripAxis < 0 || r == 0) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "GR", text() + why);
+            return null;
+        }
+        double master = (trip - (tripAxis == 0 ? engaged1 : engaged2)) / r;
+        masterTurned += Math.abs(master);
+        return new double[] {engaged1 + ratio1 * master, engaged2 + ratio2 * master, master};
+    }
+
+    /** {@code PA}: the settling move to the pass's exact end, started by {@code BG} on the plane. */
+    private void settle(Command.PositionAbsolute c) {
+        boolean firstIsFirst = Plane.channel(c.first()) == planeChannel(0);
+        long p = firstIsFirst ? c.firstCount() : c.secondCount();
+        long q = firstIsFirst ? c.secondCount() : c.firstCount();
+        if (!plane.sameChannels("" + c.first() + c.second()) || Double.isNaN(geared1) || engaged) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "PA", text());
+            return;
+        }
+        target1 = p;
+        target2 = q;
+    }
+
+    /**
+     * The geared pass and its settling move, replayed as one cutting sequence from where the gearing
+     * began to the PA target at the speed the spindle gives it; E317 when the gearing ended further
+     * than the tolerance from that target (the ratios make the wrong lead or taper).
+     */
+    private void threadPass() {
+        double off = Math.hypot(geared1 - target1, geared2 - target2);
+        if (off > threadTolerance) {
+            double zOff = Math.abs(plane.machineZ(geared1, geared2) - plane.machineZ(target1, target2));
+            out.report(Code.E317_SIM_THREAD_LEAD, line, String.format(java.util.Locale.ROOT, "%.1f", off),
+                    zOff > threadTolerance ? "Z" : "X");
+        }
+        double rpm = volts * rpmPerVolt;
+        Segment last = new Segment(plane.machineX(engaged1, engaged2), plane.machineZ(engaged1, engaged2),
+                plane.machineX(target1, target2), plane.machineZ(target1, target2), false, 0, 0, 0, 0, 0, gearLine);
+        List<Segment> one;
+        double speed;
+        if (geared.isEmpty()) {
+            one = List.of(last);
+            speed = Math.max(1, Math.abs(rpm) / 60 * encoderCounts * Math.hypot(ratio1, ratio2));
+        } else {
+            // a chamfered pull-out: the straight part, the chamfer; the spindle turns at one speed
+            // over both, so the pass's mean speed is its length over the time the master takes
+            one = new ArrayList<>(geared);
+            one.add(last);
+            double length = 0;
+            for (Segment seg : one) {
+                length += seg.length();
+            }
+            double seconds = masterTurned / (Math.abs(rpm) / 60 * encoderCounts);
+            speed = seconds > 0 && length / seconds > 1 ? length / seconds : 1;
+            geared.clear();
+        }
+        g1 = target1;
+        g2 = target2;
+        target1 = Double.NaN;
+        target2 = Double.NaN;
+        geared1 = Double.NaN;
+        geared2 = Double.NaN;
+        feedMarked = true; // a geared pass always cuts
+        out.sequence(one, speed, line);
+        feedMarked = false;
+    }
+}
