@@ -4,7 +4,7 @@ import gcnc.Compiler;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Messages;
-import gcnc.galil.SourceMap;
+import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
 import gcnc.send.BlockTable;
 import gcnc.send.DmcProgram;
@@ -158,7 +158,7 @@ final class SendCommand implements Callable<Integer> {
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file)) {
                 r = setup.session().withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, false,
-                        mapper.wrap(line -> outputs.dmcLine(line.text())));
+                        mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
             }
             if (!r.ok()) {
                 if (json) {
