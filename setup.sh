@@ -9,7 +9,8 @@ command -v gradle >/dev/null 2>&1 || need+=(gradle)
 command -v java >/dev/null 2>&1 || need+=(openjdk-17-jdk-headless)
 command -v chromium >/dev/null 2>&1 || need+=(chromium)
 command -v chromedriver >/dev/null 2>&1 || need+=(chromium-driver)
-# socat makes the pty pairs of the virtual controller's serial tests (docs/virtual-controller.md)
+# socat makes the pty pairs of the virtual controller's serial tests (docs/virtual-controller.md) and
+# of gcnc run's (RunOnControllerTest, docs/run.md)
 command -v socat >/dev/null 2>&1 || need+=(socat)
 if [ ${#need[@]} -gt 0 ]; then
     sudo=""

@@ -474,6 +474,45 @@ class RunOnControllerTest {
         }
     }
 
+    /** Feed hold (h, as the first Ctrl-C), Enter to resume, + for the override: VR 0, VR 1, VR 1.1 on the controller. */
+    @Test
+    void feedHoldAndOverrideGoToTheController() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(Model.DMC4040)) {
+            homed(vc);
+            java.io.PipedOutputStream keys = new java.io.PipedOutputStream();
+            java.io.PipedInputStream in = new java.io.PipedInputStream(keys);
+            Thread operator = new Thread(() -> {
+                try {
+                    Thread.sleep(900);
+                    keys.write("h\n".getBytes(StandardCharsets.UTF_8));
+                    keys.flush();
+                    Thread.sleep(600);
+                    keys.write("\n+\n".getBytes(StandardCharsets.UTF_8));
+                    keys.flush();
+                    Thread.sleep(200);
+                    keys.close();
+                } catch (IOException | InterruptedException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            operator.start();
+            String[] args = {"run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20"};
+            CommandLine cl = Main.commandLine(new Main.Streams(in, System.out), gcnc.tables.ErrorMessages.Lang.EN, args);
+            StringWriter out = new StringWriter();
+            StringWriter err = new StringWriter();
+            cl.setOut(new PrintWriter(out, true));
+            cl.setErr(new PrintWriter(err, true));
+            int status = cl.execute(args);
+            operator.join();
+            assertEquals(0, status, out + "" + err);
+            String o = out.toString();
+            assertTrue(o.contains("feed hold (VR 0): Enter resumes, Ctrl-C again stops"), o);
+            assertTrue(o.indexOf("feed at 110% (VR 1.10)") > o.indexOf("feed hold"), o);
+            assertArrayEquals(programEnd(p), axes(vc));
+        }
+    }
+
     /** A tiny scripted controller for one reply sequence: the program it reads back is not the one sent. */
     @Test
     void aReadBackThatDiffersIsNotRun() throws Exception {

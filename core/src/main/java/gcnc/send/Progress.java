@@ -94,7 +94,7 @@ public final class Progress {
             lastBlock = line;
             events.accept(new Event.Block(line, b == null ? null : b.number(), completedLine()));
         }
-        double done = program.secondsBefore(Math.max(executing, 0));
+        double done = program.secondsBefore(Math.max(executing, 0)) + partDone(counts);
         double total = program.totalSeconds();
         double[] machine = counts == null ? null : program.plane().machine(counts);
         double[] prog = b == null || machine == null ? null : b.program(machine);
@@ -103,6 +103,17 @@ public final class Progress {
                 b != null && b.inch(), b == null ? Double.NaN : b.rpm(), b == null ? null : spindle(b.spindle()),
                 total <= 0 ? 0 : Math.min(1, done / total), Math.max(0, total - done), operator.override(),
                 operator.held()));
+    }
+
+    /** Seconds of the executing motion already done, from how far along it the axes are (the chord, for arcs). */
+    private double partDone(double[] counts) {
+        Sequence s = counts == null || executing < 0 ? null : program.sequenceAt(executing);
+        if (s == null || s.seconds() <= 0) {
+            return 0;
+        }
+        double from = Math.hypot(counts[0] - s.start()[0], counts[1] - s.start()[1]);
+        double to = Math.hypot(counts[0] - s.end()[0], counts[1] - s.end()[1]);
+        return from + to == 0 ? 0 : s.seconds() * from / (from + to);
     }
 
     private static String spindle(int m) {

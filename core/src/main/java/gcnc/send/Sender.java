@@ -160,7 +160,7 @@ public final class Sender {
         int needSlots = program.mostSegments();
         events.accept(new Event.Preflight(f.model(), f.programLines(), needLines, f.labelsLeft(), needLabels,
                 f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
-                f.limits(), String.valueOf(f.motorsOff()), f.position()));
+                f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
         if (needLines > f.programLines()) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", f.programLines()
                     + " (" + f.revision() + ")", "split the program, or run it in the stream form when it is available");
