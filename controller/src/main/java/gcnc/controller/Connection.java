@@ -24,7 +24,8 @@ final class Connection implements Controller.Listener {
 
     Connection(Controller controller, InputStream in, OutputStream out, Faults faults, Closeable link) {
         this.controller = controller;
-        this.in = in;
+        // bytes are taken one at a time: buffered, so that each is not a system call of its own
+        this.in = new java.io.BufferedInputStream(in);
         this.out = out;
         this.faults = faults;
         this.link = link;

@@ -164,7 +164,7 @@ public final class Controller implements Expressions.Scope {
             int budget = Math.max(1, (int) Math.round(h * 20_000));
             for (ProgramThread t : threads) {
                 if (t.running()) {
-                    statements.run(t, budget);
+                    statements.flow.run(t, budget);
                 }
             }
         }

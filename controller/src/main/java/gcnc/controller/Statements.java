@@ -14,8 +14,11 @@ import java.util.regex.Pattern;
 final class Statements {
     private final Controller c;
 
+    final ProgramFlow flow;
+
     Statements(Controller c) {
         this.c = c;
+        this.flow = new ProgramFlow(c, this);
     }
 
     /** {@code name=expr}, {@code name[i]=expr}, {@code KPC=0}; group 1 the target, 2 the index, 3 the value. */
@@ -46,7 +49,7 @@ final class Statements {
             if (th == null) {
                 throw new GalilException(Tc.ONLY_IN_PROGRAM);
             }
-            flow(st, th);
+            flow.flow(st, th);
             return "";
         }
         Matcher m = ASSIGNMENT.matcher(st);
@@ -70,7 +73,7 @@ final class Statements {
         return ch >= 'A' && ch <= 'Z';
     }
 
-    private static boolean word(String st, String w) {
+    static boolean word(String st, String w) {
         return st.startsWith(w) && (st.length() == w.length() || st.charAt(w.length()) == ' '
                 || st.charAt(w.length()) == '(');
     }
@@ -133,7 +136,7 @@ final class Statements {
                 return (n == 1 && e != Tc.NONE ? e.code + " " + e.text : String.valueOf(e.code)) + "\r\n";
             }
             case "MG":
-                return message(args, th);
+                return Messages.message(c, args, th);
             case "CW": {
                 List<String> a = split(args);
                 double n = eval(a.get(0));
@@ -146,9 +149,9 @@ final class Statements {
             case "CF":
                 return "";
             case "XQ":
-                return execute(args);
+                return flow.execute(args);
             case "HX":
-                return halt(args);
+                return flow.halt(args);
             case "UL":
                 if (th != null) {
                     throw new GalilException(Tc.NOT_IN_PROGRAM);
@@ -163,7 +166,7 @@ final class Statements {
                 return "";
             case "JP":
             case "JS":
-                return jump(cmd, args, th);
+                return flow.jump(cmd, args, th);
             case "MO":
                 for (int a : axesOrAll(args)) {
                     c.servo[a] = false;
@@ -253,13 +256,13 @@ final class Statements {
         }
     }
 
-    private static void onlyInProgram(ProgramThread th) throws GalilException {
+    static void onlyInProgram(ProgramThread th) throws GalilException {
         if (th == null) {
             throw new GalilException(Tc.ONLY_IN_PROGRAM);
         }
     }
 
-    private static double range(double v, double min, double max) throws GalilException {
+    static double range(double v, double min, double max) throws GalilException {
         if (Double.isNaN(v) || v < min || v > max) {
             throw new GalilException(Tc.RANGE);
         }
@@ -344,179 +347,6 @@ final class Statements {
             c.threads[0].start(auto);
         }
         return "";
-    }
-
-    // ---- program flow ----
-
-    /** XQ [#label|line][,thread]. */
-    private String execute(String args) throws GalilException {
-        List<String> a = split(args);
-        int line = 0;
-        if (!a.isEmpty() && !a.get(0).isEmpty()) {
-            line = target(a.get(0));
-        }
-        int thread = a.size() > 1 ? (int) range(eval(a.get(1)), 0, 7) : 0;
-        if (line >= c.program.size()) {
-            throw new GalilException(Tc.UNDEFINED_LABEL);
-        }
-        c.threads[thread].start(line);
-        return "";
-    }
-
-    /** A label ({@code #NAME}) or a line number, as XQ, JP and JS take them. */
-    private int target(String t) throws GalilException {
-        if (t.startsWith("#")) {
-            int line = c.program.label(t.substring(1).strip());
-            if (line < 0) {
-                throw new GalilException(Tc.UNDEFINED_LABEL);
-            }
-            return line;
-        }
-        return (int) range(eval(t), 0, c.program.size() - 1);
-    }
-
-    private String halt(String args) throws GalilException {
-        if (args.isEmpty()) {
-            for (ProgramThread t : c.threads) {
-                t.halt();
-            }
-        } else {
-            c.threads[(int) range(eval(args), 0, 7)].halt();
-        }
-        return "";
-    }
-
-    private String jump(String cmd, String args, ProgramThread th) throws GalilException {
-        onlyInProgram(th);
-        List<String> a = split(args);
-        int to = target(a.get(0));
-        if (a.size() > 1 && eval(a.get(1)) == 0) {
-            return "";
-        }
-        if (cmd.equals("JS")) {
-            th.call(to);
-        } else {
-            th.jump(to);
-        }
-        return "";
-    }
-
-    /** IF (cond) / ELSE / ENDIF: a false IF, or an ELSE reached from its IF branch, skips to its match. */
-    private void flow(String st, ProgramThread th) throws GalilException {
-        if (st.equals("ENDIF")) {
-            return;
-        }
-        if (st.equals("ELSE")) {
-            skip(th, false);
-            return;
-        }
-        if (eval(st.substring(2).strip()) == 0) {
-            skip(th, true);
-        }
-    }
-
-    /** Moves the thread past the matching ENDIF (or, when {@code toElse}, past a matching ELSE first). */
-    private void skip(ProgramThread th, boolean toElse) throws GalilException {
-        int depth = 0;
-        int line = th.line;
-        int at = th.statement;
-        while (line < c.program.size()) {
-            List<String> sts = c.program.line(line).statements();
-            for (; at < sts.size(); at++) {
-                String s = sts.get(at);
-                if (word(s, "IF")) {
-                    depth++;
-                } else if (s.equals("ENDIF") && depth-- == 0 || s.equals("ELSE") && depth == 0 && toElse) {
-                    th.line = line;
-                    th.statement = at + 1;
-                    return;
-                }
-            }
-            line++;
-            at = 0;
-        }
-        throw new GalilException(Tc.IF_WITHOUT_ENDIF);
-    }
-
-    /** Runs up to {@code budget} statements of a thread, or until it waits on a trippoint that has not passed. */
-    void run(ProgramThread th, int budget) {
-        for (int n = 0; n < budget && th.running(); n++) {
-            if (th.waitingFor != null) {
-                if (!th.waitingFor.getAsBoolean()) {
-                    return;
-                }
-                th.waitingFor = null;
-            }
-            if (th.line >= c.program.size()) {
-                th.halt();
-                return;
-            }
-            List<String> sts = c.program.line(th.line).statements();
-            if (th.statement >= sts.size()) {
-                th.line++;
-                th.statement = 0;
-                continue;
-            }
-            int line = th.line;
-            String st = sts.get(th.statement++);
-            try {
-                execute(st, th);
-            } catch (GalilException e) {
-                c.programError(th, line, st, e);
-            }
-        }
-    }
-
-    // ---- MG ----
-
-    private static final Pattern FORMAT = Pattern.compile("\\{F(\\d+)\\.(\\d+)\\}");
-    private static final Pattern LOCAL_FORMAT = Pattern.compile("(.+?)\\{F(\\d+)\\.(\\d+)\\}");
-
-    /** A number as MG writes it: Galil's default (sign or space, 4 decimals), or {@code {Fn.m}} (n digits, m decimals). */
-    private static String formatted(double v, int digits, int decimals) {
-        if (digits < 0) {
-            return (v < 0 ? "-" : " ") + String.format(Locale.ROOT, "%." + decimals + "f", Math.abs(v));
-        }
-        String body = String.format(Locale.ROOT, "%0" + (digits + (decimals > 0 ? decimals + 1 : 0)) + "." + decimals + "f",
-                Math.abs(v));
-        return (v < 0 ? "-" : "") + body;
-    }
-
-    private String message(String args, ProgramThread th) throws GalilException {
-        StringBuilder b = new StringBuilder();
-        boolean newline = true;
-        int digits = -1;
-        int decimals = 4;
-        for (String item : split(args)) {
-            String it = item.strip();
-            Matcher f = FORMAT.matcher(it);
-            if (it.startsWith("\"")) {
-                if (it.length() < 2 || !it.endsWith("\"")) {
-                    throw new GalilException(Tc.MISSING_QUOTE);
-                }
-                b.append(it, 1, it.length() - 1);
-            } else if (it.equals("{N}")) {
-                newline = false;
-            } else if (f.matches()) {
-                digits = Integer.parseInt(f.group(1));
-                decimals = Integer.parseInt(f.group(2));
-            } else if (!it.isEmpty()) {
-                // a format right after an operand ({@code MG _LMS{F3.0}}) is for that operand only
-                Matcher local = LOCAL_FORMAT.matcher(it);
-                if (local.matches()) {
-                    b.append(formatted(eval(local.group(1)), Integer.parseInt(local.group(2)),
-                            Integer.parseInt(local.group(3))));
-                } else {
-                    b.append(formatted(eval(it), digits, decimals));
-                }
-            }
-        }
-        String text = b + (newline ? "\r\n" : "");
-        if (th != null) {
-            c.unsolicited(text);
-            return "";
-        }
-        return text;
     }
 
     // ---- argument lists ----
