@@ -90,11 +90,28 @@ class RunOnControllerTest {
     }
 
     static VirtualController controller(Model model, String... faults) throws IOException {
+        return traced(model, null, faults);
+    }
+
+    /** A virtual controller that writes the end of every segment it executes to {@code trace}. */
+    static VirtualController traced(Model model, Path trace, String... faults) throws IOException {
         List<Fault> f = new ArrayList<>();
         for (String s : faults) {
             f.add(Fault.parse(s));
         }
-        return VirtualController.tcp(0, new VirtualController.Options(model, 5, f, null));
+        return VirtualController.tcp(0, new VirtualController.Options(model, 5, f, trace));
+    }
+
+    /** The end points of the segments a controller executed, in order ("END1 END2" of its trace). */
+    static List<String> path(Path trace) throws IOException {
+        List<String> ends = new ArrayList<>();
+        for (String l : Files.readAllLines(trace)) {
+            if (!l.startsWith("#") && !l.isBlank()) {
+                String[] f = l.split(" ");
+                ends.add(f[3] + " " + f[4]);
+            }
+        }
+        return ends;
     }
 
     /** One command to the controller on a connection of its own, its reply. */
@@ -365,11 +382,21 @@ class RunOnControllerTest {
         }
     }
 
-    /** A run stopped by a fault: exit 3, the blocks named, and the resume command that finishes the part. */
+    /**
+     * A run stopped by a fault: exit 3, the blocks named, and the resume command that finishes the part
+     * along the same path, segment end for segment end, as a run that was never stopped.
+     */
     @Test
     void aRejectedCommandStopsMotionAndSpindleAndTheResumeFinishesThePart() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040, "reject=45")) {
+        Path dir = Files.createTempDirectory("gcnc-trace");
+        Path whole = dir.resolve("whole.trace");
+        Path stopped = dir.resolve("stopped.trace");
+        try (VirtualController vc = traced(Model.DMC4040, whole)) {
+            homed(vc);
+            assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
+        }
+        try (VirtualController vc = traced(Model.DMC4040, stopped, "reject=45")) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -388,6 +415,8 @@ class RunOnControllerTest {
             assertTrue(again.out().contains("from line " + line), again.out());
             assertArrayEquals(programEnd(p), axes(vc));
         }
+        assertEquals(path(whole), path(stopped));
+        assertEquals(6, path(whole).size());
     }
 
     static String resumeCommand(String out) {

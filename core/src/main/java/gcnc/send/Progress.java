@@ -75,6 +75,14 @@ public final class Progress {
         Sequence s = program.sequenceAt(e);
         java.util.List<Sequence> all = program.sequencesOf(line);
         int k = s == null ? -1 : all.indexOf(s);
+        if (s == null) {
+            // between motions (an output, a dwell): the last motion of the block already done, if any
+            for (int i = 0; i < all.size(); i++) {
+                if (all.get(i).last() < e) {
+                    k = i;
+                }
+            }
+        }
         return new ResumePoint(line, k <= 0 ? 0 : k + 1);
     }
 
