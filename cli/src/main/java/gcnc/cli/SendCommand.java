@@ -50,7 +50,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Check, compile and simulate a program, then run it on a Galil controller (the thesis's MEMORY mode).",
                 "Refuses any program that is not clean. Keys while it runs: Enter = next step / end a hold,"
-                        + " + and - = feed override by 10%, h = feed hold, q = stop; Ctrl-C holds, a second Ctrl-C stops."},
+                        + " + and - = feed override by 10%%, h = feed hold, q = stop; Ctrl-C holds, a second Ctrl-C stops."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:the program ran to its end (--dry-run: everything but motion was done)",
                 "1:the program is not clean: nothing was sent", "2:usage or connection problem (no port, port held, wrong"
@@ -143,7 +143,7 @@ final class SendCommand implements Callable<Integer> {
                      PrintWriter err) throws TableException {
         String name = SourceFiles.display(file);
         Messages messages = setup.tables().messages().in(common.language());
-        EventSink events = json ? new JsonEvents(out) : new StatusText(out, err, name, quiet, System.console() != null);
+        EventSink events = json ? new JsonEvents(out) : new StatusText(out, err, name, quiet, System.console() != null, reporter.phrases());
         Optional<SimOptions> sim;
         try {
             sim = Optional.of(stock.options(setup.profile()));
@@ -169,8 +169,8 @@ final class SendCommand implements Callable<Integer> {
                 } else {
                     reporter.report(name, r.diagnostics());
                 }
-                err.println(name + ": not clean (" + r.diagnostics().errorCount() + " error"
-                        + (r.diagnostics().errorCount() == 1 ? "" : "s") + "): nothing was sent to the controller");
+                err.println(reporter.phrases().get("run.not_clean", name,
+                        reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
             outputs.commit();

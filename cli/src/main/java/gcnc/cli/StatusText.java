@@ -19,10 +19,12 @@ final class StatusText implements EventSink {
     private final String file;
     private final boolean quiet;
     private final boolean terminal;
+    private final Phrases say;
     private boolean blockChanged;
     private boolean lineOpen;
 
-    StatusText(PrintWriter out, PrintWriter err, String file, boolean quiet, boolean terminal) {
+    StatusText(PrintWriter out, PrintWriter err, String file, boolean quiet, boolean terminal, Phrases say) {
+        this.say = say;
         this.out = out;
         this.err = err;
         this.file = file;
@@ -54,9 +56,9 @@ final class StatusText implements EventSink {
             blockChanged = true;
         } else if (e instanceof Event.Stopped s) {
             endLine();
-            out.println("stopped: last block completed: " + block(s.completed()) + "; executing: " + block(s.executing()));
+            out.println(say.get("run.stopped", block(s.completed()), block(s.executing())));
             if (s.resume() != null) {
-                out.println("resume with: " + s.resume());
+                out.println(say.get("run.resume", s.resume()));
             }
             out.flush();
         } else if (!quiet) {
@@ -64,8 +66,8 @@ final class StatusText implements EventSink {
         }
     }
 
-    private static String block(int line) {
-        return line == 0 ? "none" : "line " + line;
+    private String block(int line) {
+        return line == 0 ? say.get("run.none") : say.get("run.line", line);
     }
 
     private void say(String text) {
@@ -86,49 +88,45 @@ final class StatusText implements EventSink {
 
     private String text(Event e) {
         if (e instanceof Event.Connected c) {
-            return "connected to " + c.link() + ": " + c.controller();
+            return say.get("run.connected", c.link(), c.controller());
         }
         if (e instanceof Event.Preflight p) {
-            return String.format(Locale.ROOT,
-                    "pre-flight: %s, %d of %d program lines, %d label(s) of %d left, %d variable(s) of %s left,"
-                            + " vector buffer %d free (needs %d), limit switches %s, axes at %s",
-                    p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(), p.labelsLeft(), p.variablesNeeded(),
-                    p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()), p.vectorSlots(), p.vectorSlotsNeeded(),
-                    p.limitSwitches().isEmpty() ? "clear" : p.limitSwitches(),
+            return say.get("run.preflight", p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(),
+                    p.labelsLeft(), p.variablesNeeded(), p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()),
+                    p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
                     Math.round(p.position()[0]) + "," + Math.round(p.position()[1]));
         }
         if (e instanceof Event.Downloaded d) {
-            return "downloaded " + d.lines() + " lines (DL), read back identical (UL)";
+            return say.get("run.downloaded", d.lines());
         }
         if (e instanceof Event.Started s) {
-            return (s.dryRun() ? "dry run of " : "running ") + file + (s.resumeAt() != null ? " from line " + s.resumeAt() : "")
-                    + ": " + s.blocks() + " blocks, " + s.lines() + " DMC lines, about " + clock(s.seconds())
-                    + (s.step() ? "; Enter runs each block" : "; Ctrl-C holds, a second Ctrl-C stops");
+            return say.get(s.dryRun() ? "run.started_dry" : "run.started", file,
+                    s.resumeAt() != null ? say.get("run.from_line", s.resumeAt()) : "", s.blocks(), s.lines(), clock(s.seconds()),
+                    say.get(s.step() ? "run.keys_step" : "run.keys"));
         }
         if (e instanceof Event.StepWait w) {
-            return "next: line " + w.line() + (w.number() != null ? " (N" + w.number() + ")" : "") + " - press Enter to run it";
+            return say.get("run.step_wait", w.line(), w.number() != null ? " (N" + w.number() + ")" : "");
         }
         if (e instanceof Event.Hold h) {
-            return h.held() ? "feed hold (VR 0): Enter resumes, Ctrl-C again stops"
-                    : String.format(Locale.ROOT, "feed at %d%% (VR %.2f)", Math.round(h.override() * 100), h.override());
+            return h.held() ? say.get("run.hold")
+                    : say.get("run.feed", Math.round(h.override() * 100), String.format(Locale.ROOT, "%.2f", h.override()));
         }
         if (e instanceof Event.Message m) {
-            return "controller: " + m.text();
+            return say.get("run.message", m.text());
         }
         if (e instanceof Event.Finished f) {
-            return f.dryRun() ? "dry run done: connected, checked, downloaded and read back; nothing moved"
-                    : "ran to the end in " + clock(f.seconds());
+            return f.dryRun() ? say.get("run.finished_dry") : say.get("run.finished", clock(f.seconds()));
         }
         return null;
     }
 
     /** The status line: block, position in program coordinates, feed, spindle, progress, time left. */
-    static String line(Event.Status s) {
+    String line(Event.Status s) {
         StringBuilder b = new StringBuilder();
         if (s.number() != null) {
             b.append('N').append(s.number()).append(' ');
         }
-        b.append("line ").append(s.line());
+        b.append(say.get("run.line", s.line()));
         if (s.program() != null) {
             b.append(String.format(Locale.ROOT, "  X%.3f Z%.3f", s.program()[0], s.program()[1]));
         } else if (s.counts() != null) {
@@ -140,7 +138,8 @@ final class StatusText implements EventSink {
         if (!Double.isNaN(s.rpm()) && s.spindle() != null) {
             b.append("  S").append(Math.round(s.rpm())).append(' ').append(s.spindle());
         }
-        b.append(String.format(Locale.ROOT, "  %d%%  %s left", Math.round(s.progress() * 100), clock(s.secondsLeft())));
+        b.append(String.format(Locale.ROOT, "  %d%%  %s %s", Math.round(s.progress() * 100), clock(s.secondsLeft()),
+                say.get("run.left")));
         if (s.held()) {
             b.append("  HOLD");
         } else if (s.override() != 1) {
