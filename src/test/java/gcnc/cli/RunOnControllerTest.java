@@ -169,6 +169,19 @@ class RunOnControllerTest {
         }
     }
 
+    @Test
+    void theRunSpeaksSpanish() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(Model.DMC4040, "reject=45")) {
+            homed(vc);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--lang", "es", "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("error[E820]: el controlador rechazó"), r.err());
+            assertTrue(r.out().contains("detenido: último bloque terminado: línea "), r.out());
+            assertTrue(r.out().contains("para reanudar: gcnc run "), r.out());
+        }
+    }
+
     private static void assertThrowsTimeout(ServerSocket server) throws IOException {
         try (Socket s = server.accept()) {
             throw new AssertionError("gcnc connected to the controller for a program with errors");
