@@ -100,7 +100,7 @@ public final class Main implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate, run, tables, explain, machines or completion");
+        throw new CommandLine.ParameterException(spec.commandLine(), "name a command: check, compile, simulate, tables, explain, machines or completion");
     }
 
     public static void main(String[] args) {
