@@ -136,7 +136,13 @@ public final class VirtualController implements Closeable {
             // a long pause of this JVM (a collection) runs at most 50 ms of real time at once
             double dt = Math.min(0.05, (now - last) / 1e9) * speed;
             last = now;
-            controller.advance(dt);
+            // in slices of 10 ms of controller time, so that at a high --speed a command from the host
+            // waits for one slice, not for the whole tick
+            while (dt > 1e-12 && !closed) {
+                double slice = Math.min(dt, 0.01);
+                controller.advance(slice);
+                dt -= slice;
+            }
         }
     }
 
