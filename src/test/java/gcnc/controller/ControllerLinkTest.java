@@ -253,4 +253,30 @@ class ControllerLinkTest {
             }
         }
     }
+
+    /** With no clock (speed 0) the test turns the controller's time itself: the trace is the same every run. */
+    @ParameterizedTest
+    @EnumSource(Links.Kind.class)
+    void withoutAClockTheTestTurnsTheTime(Links.Kind kind) throws IOException {
+        try (Links l = open(kind, 0)) {
+            HostLink h = l.host;
+            fiveSegments(h);
+            assertEquals(" 1.0000 0.0000\r\n:", h.send("MG _BGS,_CSS"), "begun; no time has passed");
+            l.controller.controller().advance(0.15);
+            assertEquals(" 3.0000\r\n:", h.send("MG _CSS"));
+            l.controller.controller().settle(5);
+            List<String[]> lines = trace().stream().filter(t -> !t.startsWith("#")).map(t -> t.split(" ")).toList();
+            // VS 20000 at the default VA = VD = 256000: 0.078125 s and 781.25 counts to reach speed and to stop
+            double ramp = 20000 / 256000.0;
+            double first = ramp + (1000 - 781.25) / 20000;
+            double[] ends = {first, first + 0.05, first + 0.1, first + 0.15, first + 0.15 + first};
+            for (int i = 0; i < 5; i++) {
+                String[] t = lines.get(i);
+                assertEquals("1 " + (i + 1) + " VP " + 1000 * (i + 1) + " 0 " + (506 + i), String.join(" ",
+                        Arrays.asList(t).subList(0, 6)), "segment, end, free slots (VE holds one to the end)");
+                assertEquals(ends[i], Double.parseDouble(t[6]), 0.001, "segment " + (i + 1) + " ends on time");
+            }
+            assertEquals(5, lines.size());
+        }
+    }
 }
