@@ -59,7 +59,7 @@ public final class Controller implements Expressions.Scope {
         }
         this.motion = new VectorMotion(model.axes, Model.SLOTS, new VectorMotion.Events() {
             @Override
-            public void segmentDone(int sequence, int css, VectorMotion.Segment s, int free, double t) {
+            public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {
                     Controller.this.trace.segment(sequence, css, s, free, t);
                 }
