@@ -210,4 +210,73 @@ class ControllerLinkTest {
             assertEquals(":", h.send("VP 1000,0"), "the limit is released after the stop: motion may resume");
         }
     }
+
+    /**
+     * 600 segments streamed as a sender streams them (more than the buffer holds): never more in flight
+     * than {@code sent - _CSS <= 511}, VE at the end; the buffer never refuses one, the sequence never
+     * runs dry, and the trace has every segment, in order, at its end point.
+     */
+    @ParameterizedTest
+    @EnumSource(Links.Kind.class)
+    void aLongStreamWithFlowControlRunsEverySegment(Links.Kind kind) throws IOException, InterruptedException {
+        try (Links l = open(kind, 4)) {
+            HostLink h = l.host;
+            for (String c : List.of("SH XY", "VM XY", "VS 100000", "VA 1024000", "VD 1024000")) {
+                assertEquals(":", h.send(c), c);
+            }
+            int sent = 0;
+            boolean begun = false;
+            while (sent < 600) {
+                double css = begun ? h.number("MG _CSS") : 0;
+                while (sent < 600 && sent - css < 500) {
+                    sent++;
+                    assertEquals(":", h.send("VP " + 1000 * sent + "," + (sent % 2 == 0 ? 0 : 500)), "segment " + sent);
+                }
+                if (!begun) {
+                    assertEquals(":", h.send("BGS"));
+                    begun = true;
+                }
+                Thread.sleep(20);
+            }
+            assertEquals(":", h.send("VE"));
+            long until = System.nanoTime() + 20_000_000_000L;
+            while (h.number("MG _BGS") != 0 && System.nanoTime() < until) {
+                Thread.sleep(20);
+            }
+            List<String> t = trace();
+            assertTrue(t.stream().noneMatch(s -> s.startsWith("# underrun")), t.get(t.size() - 1));
+            List<String> ends = t.stream().filter(s -> !s.startsWith("#"))
+                    .map(s -> String.join(" ", Arrays.asList(s.split(" ")).subList(1, 5))).toList();
+            assertEquals(600, ends.size());
+            for (int i = 1; i <= 600; i++) {
+                assertEquals(i + " VP " + 1000 * i + " " + (i % 2 == 0 ? 0 : 500), ends.get(i - 1));
+            }
+        }
+    }
+
+    /** With no clock (speed 0) the test turns the controller's time itself: the trace is the same every run. */
+    @ParameterizedTest
+    @EnumSource(Links.Kind.class)
+    void withoutAClockTheTestTurnsTheTime(Links.Kind kind) throws IOException {
+        try (Links l = open(kind, 0)) {
+            HostLink h = l.host;
+            fiveSegments(h);
+            assertEquals(" 1.0000 0.0000\r\n:", h.send("MG _BGS,_CSS"), "begun; no time has passed");
+            l.controller.controller().advance(0.15);
+            assertEquals(" 3.0000\r\n:", h.send("MG _CSS"));
+            l.controller.controller().settle(5);
+            List<String[]> lines = trace().stream().filter(t -> !t.startsWith("#")).map(t -> t.split(" ")).toList();
+            // VS 20000 at the default VA = VD = 256000: 0.078125 s and 781.25 counts to reach speed and to stop
+            double ramp = 20000 / 256000.0;
+            double first = ramp + (1000 - 781.25) / 20000;
+            double[] ends = {first, first + 0.05, first + 0.1, first + 0.15, first + 0.15 + first};
+            for (int i = 0; i < 5; i++) {
+                String[] t = lines.get(i);
+                assertEquals("1 " + (i + 1) + " VP " + 1000 * (i + 1) + " 0 " + (506 + i), String.join(" ",
+                        Arrays.asList(t).subList(0, 6)), "segment, end, free slots (VE holds one to the end)");
+                assertEquals(ends[i], Double.parseDouble(t[6]), 0.001, "segment " + (i + 1) + " ends on time");
+            }
+            assertEquals(5, lines.size());
+        }
+    }
 }

@@ -53,6 +53,9 @@ class VirtualGalilTest {
         assertEquals(Tc.OPERAND, rejected("OF ,,10"), "gcnc.dmc reads no offset beyond 9.998 V");
         assertEquals("", ok("OF ,,3.25"));
         assertEquals(3.25, c.offset(2));
+        assertEquals("", ok("AO 2,4.5"));
+        assertEquals(" 4.5000\r\n", ok("MG @AO[2]"));
+        assertEquals(Tc.RANGE, rejected("AO 2,12"));
         assertEquals("", ok("OFC=0"));
         assertEquals(0, c.offset(2));
         assertEquals("", ok("feed=12"));
@@ -62,6 +65,8 @@ class VirtualGalilTest {
         assertEquals(" 24.0000\r\n", ok("MG ring[3]"));
         assertEquals(Tc.BAD_INDEX, rejected("ring[10]=1"));
         assertEquals(" 23990.0000\r\n", ok("MG _DM"));
+        assertEquals("23990\r\n", ok("DM ?"), "what a sender's pre-flight asks");
+        assertEquals(" 1.0000 1.0000 1.0000 1.0000\r\n", ok("MG _LFX,_LRX,_HMX,_MOX"), "limits and home inactive, motor off");
         assertEquals(Tc.NO_SEQUENCE, rejected("BGS"));
         assertEquals("0, 0, 0, 0\r\n", ok("TP"));
     }

@@ -32,6 +32,8 @@ public final class Controller implements Expressions.Scope {
     final VectorMotion motion;
     final boolean[] servo;
     final double[] offsets;
+    /** AO: eight analog outputs, volts. */
+    final double[] analogOutputs = new double[8];
     long outputs;
     /** Inputs read 1 when nothing pulls them low (Galil's inputs are pulled up). */
     long inputs = -1L;
@@ -57,7 +59,7 @@ public final class Controller implements Expressions.Scope {
         }
         this.motion = new VectorMotion(model.axes, Model.SLOTS, new VectorMotion.Events() {
             @Override
-            public void segmentDone(int sequence, int css, VectorMotion.Segment s, int free, double t) {
+            public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {
                     Controller.this.trace.segment(sequence, css, s, free, t);
                 }
@@ -281,6 +283,12 @@ public final class Controller implements Expressions.Scope {
 
     @Override
     public double io(String function, int n) throws GalilException {
+        if (function.equals("AO")) {
+            if (n < 1 || n > analogOutputs.length) {
+                throw new GalilException(Tc.RANGE);
+            }
+            return analogOutputs[n - 1];
+        }
         if (n < 1 || n > model.outputs) {
             throw new GalilException(Tc.RANGE);
         }
@@ -330,6 +338,7 @@ public final class Controller implements Expressions.Scope {
                     // limit inputs are active low: 0 while the switch is tripped
                     case "LF": return limitTripped && a == motion.axis1 ? 0 : 1;
                     case "LR": return 1;
+                    case "HM": return 1; // the home input, inactive: no homing is modelled
                     default: break;
                 }
             }

@@ -239,6 +239,16 @@ final class Statements {
                 c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
                 return "";
             }
+            case "AO": {
+                // an analog output (DMC-40x0: AO n,v), ±9.9982 V like OF: another way to give a spindle drive its speed
+                List<String> a = split(args);
+                if (a.size() != 2) {
+                    throw new GalilException(Tc.OPERAND);
+                }
+                int n = (int) range(eval(a.get(0)), 1, c.analogOutputs.length);
+                c.analogOutputs[n - 1] = range(eval(a.get(1)), -9.9982, 9.9982);
+                return "";
+            }
             case "LM":
                 if (args.equals("?")) {
                     return mo.free() + "\r\n";
@@ -306,7 +316,11 @@ final class Statements {
         return b + "\r\n";
     }
 
+    /** DM name[n], ...; {@code DM ?} answers the array elements still free (a sender's pre-flight). */
     private String dimension(String args) throws GalilException {
+        if (args.equals("?")) {
+            return (int) c.operand("DM") + "\r\n";
+        }
         for (String d : split(args)) {
             Matcher m = Pattern.compile("([A-Za-z][A-Za-z0-9]{0,7})\\[(.+)\\]").matcher(d);
             if (!m.matches()) {
@@ -339,6 +353,7 @@ final class Statements {
         c.arrays.clear();
         c.outputs = 0;
         java.util.Arrays.fill(c.offsets, 0);
+        java.util.Arrays.fill(c.analogOutputs, 0);
         java.util.Arrays.fill(c.servo, false);
         c.lastError = Tc.NONE;
         c.cw = 2;

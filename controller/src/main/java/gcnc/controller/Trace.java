@@ -29,7 +29,7 @@ final class Trace {
         line("# gcnc virtual controller " + revision + ": sequence segment kind end1 end2 free time");
     }
 
-    void segment(int sequence, int css, VectorMotion.Segment s, int free, double time) {
+    void segment(int sequence, int css, VectorSegment s, int free, double time) {
         line(String.format(Locale.ROOT, "%d %d %s %d %d %d %.4f", sequence, css, s.arc() ? "CR" : "VP",
                 (long) Math.rint(s.end1()), (long) Math.rint(s.end2()), free, time));
     }

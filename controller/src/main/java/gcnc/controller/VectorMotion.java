@@ -24,27 +24,12 @@ import java.util.Iterator;
 final class VectorMotion {
     /** What becomes of a segment and a sequence; the trace and the program threads listen. */
     interface Events {
-        void segmentDone(int sequence, int css, Segment s, int free, double time);
+        void segmentDone(int sequence, int css, VectorSegment s, int free, double time);
 
         void sequenceEnded(int sequence, String why, double p1, double p2, double time);
 
         /** The limit fault has tripped during a segment (the controller decides what follows). */
         void limitTripped();
-    }
-
-    /** One VP or CR in the buffer, its end as absolute positions of the two plane axes. */
-    record Segment(int number, boolean arc, double from1, double from2, double end1, double end2, double centre1,
-                   double centre2, double radius, double startRad, double sweepRad, double length, double o,
-                   double p, long global) {
-        double at1(double s) {
-            return arc ? centre1 + radius * Math.cos(startRad + sweepRad * s / length)
-                    : from1 + (end1 - from1) * s / length;
-        }
-
-        double at2(double s) {
-            return arc ? centre2 + radius * Math.sin(startRad + sweepRad * s / length)
-                    : from2 + (end2 - from2) * s / length;
-        }
     }
 
     static final double MAX_SPEED = 15_000_000;
@@ -64,8 +49,8 @@ final class VectorMotion {
     double vd = 256_000;
     double vr = 1;
 
-    private final ArrayDeque<Segment> waiting = new ArrayDeque<>();
-    private Segment current;
+    private final ArrayDeque<VectorSegment> waiting = new ArrayDeque<>();
+    private VectorSegment current;
     private double s;
     private double v;
     private boolean ve;
@@ -160,7 +145,7 @@ final class VectorMotion {
         if (length == 0) {
             throw new GalilException(Tc.SEGMENT_TOO_SHORT);
         }
-        add(new Segment(given + 1, false, cursor1, cursor2, e1, e2, 0, 0, 0, 0, 0, length, o, p, 0), e1, e2);
+        add(new VectorSegment(given + 1, false, cursor1, cursor2, e1, e2, 0, 0, 0, 0, 0, length, o, p, 0), e1, e2);
     }
 
     /** {@code CR r,start,sweep <o >p}, angles in degrees. */
@@ -184,7 +169,7 @@ final class VectorMotion {
         double e2 = g[3];
         double th = Math.toRadians(startDeg);
         double sweep = Math.toRadians(sweepDeg);
-        add(new Segment(given + 1, true, cursor1, cursor2, e1, e2, c1, c2, r, th, sweep, Math.abs(sweep) * r, o, p, 0),
+        add(new VectorSegment(given + 1, true, cursor1, cursor2, e1, e2, c1, c2, r, th, sweep, Math.abs(sweep) * r, o, p, 0),
                 e1, e2);
     }
 
@@ -194,7 +179,7 @@ final class VectorMotion {
         }
     }
 
-    private void add(Segment seg, double e1, double e2) throws GalilException {
+    private void add(VectorSegment seg, double e1, double e2) throws GalilException {
         if (pathTotal + seg.length() > MAX_SEQUENCE) {
             throw new GalilException(Tc.SEQUENCE_TOO_LONG);
         }
@@ -332,13 +317,13 @@ final class VectorMotion {
 
     /** Takes the next segment from the buffer; false when the sequence ended (VE reached or underrun). */
     private boolean next(double time) {
-        Segment seg = waiting.poll();
+        VectorSegment seg = waiting.poll();
         if (seg == null) {
             end(101, ve ? "end" : "underrun", time);
             return false;
         }
         executed++;
-        current = new Segment(seg.number(), seg.arc(), seg.from1(), seg.from2(), seg.end1(), seg.end2(),
+        current = new VectorSegment(seg.number(), seg.arc(), seg.from1(), seg.from2(), seg.end1(), seg.end2(),
                 seg.centre1(), seg.centre2(), seg.radius(), seg.startRad(), seg.sweepRad(), seg.length(), seg.o(),
                 seg.p(), executed);
         css = seg.number();
@@ -348,7 +333,7 @@ final class VectorMotion {
     }
 
     private void finishSegment(double time) {
-        Segment done = current;
+        VectorSegment done = current;
         position[axis1] = done.end1();
         position[axis2] = done.end2();
         corner1 = Math.rint(done.end1());
@@ -398,9 +383,9 @@ final class VectorMotion {
         if (caps.length < n) {
             caps = new double[Math.max(n, 2 * caps.length)];
         }
-        Segment[] order = new Segment[n];
+        VectorSegment[] order = new VectorSegment[n];
         order[0] = current;
-        Iterator<Segment> it = waiting.iterator();
+        Iterator<VectorSegment> it = waiting.iterator();
         for (int i = 1; i < n; i++) {
             order[i] = it.next();
         }

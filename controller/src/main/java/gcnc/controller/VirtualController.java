@@ -23,7 +23,12 @@ import java.util.List;
  * Faults and trace as in {@link Options}.
  */
 public final class VirtualController implements Closeable {
-    /** What the command line gives: model, how much faster than real time, faults, trace file (or null). */
+    /**
+     * What the command line gives: model, how much faster than real time, faults, trace file (or null).
+     * A speed of 0 (not offered on the command line) starts no clock: a test turns it with
+     * {@code controller().advance(seconds)} and the run, times and buffer states too, is then a function
+     * of the commands alone.
+     */
     public record Options(Model model, double speed, List<Fault> faults, Path trace) {
     }
 
@@ -51,7 +56,7 @@ public final class VirtualController implements Closeable {
         Thread accept = new Thread(v::accept, "gcnc-controller-accept");
         accept.setDaemon(true);
         accept.start();
-        v.clock.start();
+        v.startClock();
         return v;
     }
 
@@ -64,8 +69,14 @@ public final class VirtualController implements Closeable {
         Thread serve = new Thread(() -> v.servePty(path), "gcnc-controller-pty");
         serve.setDaemon(true);
         serve.start();
-        v.clock.start();
+        v.startClock();
         return v;
+    }
+
+    private void startClock() {
+        if (speed > 0) {
+            clock.start();
+        }
     }
 
     public int port() {
@@ -136,7 +147,13 @@ public final class VirtualController implements Closeable {
             // a long pause of this JVM (a collection) runs at most 50 ms of real time at once
             double dt = Math.min(0.05, (now - last) / 1e9) * speed;
             last = now;
-            controller.advance(dt);
+            // in slices of 10 ms of controller time, so that at a high --speed a command from the host
+            // waits for one slice, not for the whole tick
+            while (dt > 1e-12 && !closed) {
+                double slice = Math.min(dt, 0.01);
+                controller.advance(slice);
+                dt -= slice;
+            }
         }
     }
 
@@ -155,7 +172,9 @@ public final class VirtualController implements Closeable {
             // closing anyway
         }
         try {
-            clock.join(1000);
+            if (clock.isAlive()) {
+                clock.join(1000);
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
