@@ -28,7 +28,7 @@ public final class Controller {
     }
 
     /** What pre-flight found. */
-    public record Facts(String revision, String model, int programLines, int labelsLeft, int variablesLeft,
+    public record Facts(String revision, String model, boolean firmware12a, int labelsLeft, int variablesLeft,
                         int arraySpace, int vectorSlots, String pendingError, String limits, List<Character> motorsOff,
                         double[] position, boolean programRunning, boolean moving) {
     }
@@ -73,7 +73,7 @@ public final class Controller {
         double[] pos = position();
         boolean running = optional("_XQ0", -1) >= 0;
         boolean moving = optional("_BGS", 0) != 0;
-        return new Facts(rev, model(rev), lines(rev), labels, variables, arrays, slots,
+        return new Facts(rev, model(rev), firmware12a(rev), labels, variables, arrays, slots,
                 pending.isEmpty() || pending.startsWith("0") ? "" : pending, limits.toString(), off, pos, running, moving);
     }
 
@@ -93,17 +93,18 @@ public final class Controller {
     }
 
     /**
-     * Program lines a model holds: 0-1,999, or 0-3,999 on "Firmware Rev 1.2a and later" (COMALL XQ,
-     * DL argument ranges). A revision the sender cannot read counts as the smaller.
+     * Whether a revision report names firmware 1.2a or later ("DMC4040 Rev 1.2d"), which raises the
+     * program lines from 2,000 to 4,000 (COMALL XQ, DL argument ranges). A revision the sender cannot
+     * read counts as older.
      */
-    public static int lines(String revision) {
+    public static boolean firmware12a(String revision) {
         java.util.regex.Matcher m = java.util.regex.Pattern.compile("(?i)Rev\\s*(\\d+)\\.(\\d+)([a-z]?)").matcher(revision);
         if (!m.find()) {
-            return 2000;
+            return false;
         }
         int major = Integer.parseInt(m.group(1));
         int minor = Integer.parseInt(m.group(2));
-        return major > 1 || major == 1 && minor >= 2 ? 4000 : 2000;
+        return major > 1 || major == 1 && minor >= 2;
     }
 
     /** An operand's value, or {@code fallback} when the controller does not know it ({@code ?}). */

@@ -146,11 +146,20 @@ public final class Sender {
     private Piece preflight(Controller c, String link) throws IOException, RunFault {
         Controller.Facts f = c.preflight();
         events.accept(new Event.Connected(link, f.revision()));
-        if (f.model().isEmpty() || !Controller.sameModel(f.model(), profile.galilModel())) {
+        gcnc.machine.GalilModel model = profile.galilModel();
+        if (f.model().isEmpty() || !Controller.sameModel(f.model(), model.name())) {
             String what = f.model().isEmpty() ? "the controller did not name a Galil model ('"
                     + GalilClient.printable(f.revision()) + "' to ^R^V)" : "the controller is a " + f.revision();
-            throw new RunFault(Code.E818_WRONG_CONTROLLER, 0, false, what, profile.name(), profile.galilModel());
+            throw new RunFault(Code.E818_WRONG_CONTROLLER, 0, false, what, profile.name(), model.name());
         }
+        // the model's memory (tables/galil_models.csv, the lead's GalilModel) with the firmware the controller reported
+        if (model.newFirmware() && !f.firmware12a()) {
+            // the profile counted on firmware 1.2a's memory; this controller runs older firmware
+            model = new gcnc.machine.GalilModel(model.name(), model.family(), model.axes(), model.digitalOutputs(),
+                    model.analogOutputs(), model.sampleMicros(), model.limits(), model.firmware12a(), false, model.row());
+        }
+        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+        int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
         Piece piece = options.resumeAt() == null ? Piece.whole(program)
                 : new Resume(program, tolerance()).plan(options.resumeAt(), f.position());
         int needLines = options.step() ? ProgramForm.steps(piece, program).stream().mapToInt(p -> p.lines().size()).max().orElse(0)
@@ -158,15 +167,16 @@ public final class Sender {
         int needLabels = program.labels();
         List<String> vars = program.variables();
         int needSlots = program.mostSegments();
-        events.accept(new Event.Preflight(f.model(), f.programLines(), needLines, f.labelsLeft(), needLabels,
+        events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), needLabels,
                 f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
                 f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
-        if (needLines > f.programLines()) {
-            throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", f.programLines()
+        if (needLines > programLines) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", programLines
                     + " (" + f.revision() + ")", "split the program, or run it in the stream form when it is available");
         }
-        if (needLabels > 510) {
-            throw new RunFault(Code.E819_CAPACITY, 0, false, needLabels + " labels", "510", "the program has too many labels");
+        if (needLabels > maxLabels) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needLabels + " labels", Integer.toString(maxLabels),
+                    "the program has too many labels");
         }
         if (f.variablesLeft() >= 0 && vars.size() > f.variablesLeft()) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, vars.size() + " variables " + vars,
