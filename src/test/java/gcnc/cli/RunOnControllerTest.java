@@ -488,6 +488,18 @@ class RunOnControllerTest {
     }
 
     @Test
+    void aStalledSequenceIsStopped() throws Exception {
+        try (VirtualController vc = controller(Model.DMC4040, "stall=3")) {
+            homed(vc);
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--stall", "1", "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("error[E825]: the controller cannot run the program: the axes stood still for 1 s during line 8"),
+                    r.err());
+            assertTrue(r.out().contains("resume with: gcnc run"), r.out());
+        }
+    }
+
+    @Test
     void resumingWhereTheAxesAreNotIsRefused() throws Exception {
         try (VirtualController vc = controller(Model.DMC4040)) {
             homed(vc);

@@ -110,6 +110,10 @@ final class SendCommand implements Callable<Integer> {
     @Option(names = "--poll", paramLabel = "MS", defaultValue = "100", description = "How often to ask where the program is (default: ${DEFAULT-VALUE} ms).")
     int pollMs;
 
+    @Option(names = "--stall", paramLabel = "SECONDS", defaultValue = "10",
+            description = "Stop the run when the axes stand still this long inside a motion that has not ended (default: ${DEFAULT-VALUE}).")
+    double stallSeconds;
+
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
@@ -201,7 +205,7 @@ final class SendCommand implements Callable<Integer> {
         // 4. the run, with the operator's keys and Ctrl-C
         Operator operator = new Operator();
         Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
-                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs, Sender.tolerance(setup.profile())), this::resumeCommand);
+                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
         Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
         try (keys) {
             return sender.run(link, timeoutMs);

@@ -16,11 +16,17 @@ import java.util.List;
 public final class ProgramForm implements Form {
     private final int pollMs;
     private final double tolerance;
+    private final double stallSeconds;
 
-    /** @param tolerance how far (counts) the axes may end from the program's end point */
-    public ProgramForm(int pollMs, double tolerance) {
+    /**
+     * @param tolerance    how far (counts) the axes may end from the program's end point
+     * @param stallSeconds how long the axes may stand still inside a vector sequence (no feed hold)
+     *                     before the run is stopped as stalled
+     */
+    public ProgramForm(int pollMs, double tolerance, double stallSeconds) {
         this.pollMs = pollMs;
         this.tolerance = tolerance;
+        this.stallSeconds = stallSeconds;
     }
 
     @Override
@@ -161,6 +167,8 @@ public final class ProgramForm implements Form {
             throws RunFault, IOException, InterruptedException {
         boolean held = false;
         double ratio = 1;
+        double[] still = null;
+        long stillSince = 0;
         while (true) {
             if (op.stopped()) {
                 c.stopAll();
@@ -191,7 +199,21 @@ public final class ProgramForm implements Form {
                 endedAtItsEnd(piece, c, progress, op);
                 return;
             }
-            progress.at(piece.originOf(xq), c.position(), op);
+            double[] at = c.position();
+            progress.at(piece.originOf(xq), at, op);
+            // a sequence that has begun and does not move (the profiler stopped taking segments): no
+            // reply tells it, so the axes do; a hold, a dwell and a thread pass's wait for the spindle are not stalls
+            Sequence s = progress.program().sequenceAt(piece.originOf(xq));
+            boolean inMotion = s != null && !s.isThreadPass() && !held && op.override() > 0;
+            if (!inMotion || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
+                still = at;
+                stillSince = System.nanoTime();
+            } else if ((System.nanoTime() - stillSince) / 1e9 > stallSeconds) {
+                c.stopAll();
+                throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the axes stood still for "
+                        + Math.round(stallSeconds) + " s during line " + progress.executingLine()
+                        + " while its motion had not ended (the controller stopped feeding the sequence)");
+            }
             Thread.sleep(pollMs);
         }
     }
