@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
  */
 class VirtualGalilTest {
     private final StringWriter trace = new StringWriter();
-    private final Controller c = new Controller(Model.DMC4040, List.of(), trace);
+    private final Controller c = new Controller(Model.standard(), List.of(), trace);
 
     private String ok(String command) throws GalilException {
         return c.command(command);
@@ -53,9 +53,7 @@ class VirtualGalilTest {
         assertEquals(Tc.OPERAND, rejected("OF ,,10"), "gcnc.dmc reads no offset beyond 9.998 V");
         assertEquals("", ok("OF ,,3.25"));
         assertEquals(3.25, c.offset(2));
-        assertEquals("", ok("AO 2,4.5"));
-        assertEquals(" 4.5000\r\n", ok("MG @AO[2]"));
-        assertEquals(Tc.RANGE, rejected("AO 2,12"));
+        assertEquals(Tc.UNRECOGNIZED, rejected("AO 2,4.5"), "the DMC-40x0 has no general analog outputs (galil_models.csv)");
         assertEquals("", ok("OFC=0"));
         assertEquals(0, c.offset(2));
         assertEquals("", ok("feed=12"));
@@ -77,12 +75,13 @@ class VirtualGalilTest {
         c.download(program, false);
         assertEquals(program, c.programText());
         assertEquals(" 509.0000\r\n", ok("MG _DL"), "one label of 510");
+        assertEquals(" 254.0000\r\n", ok("MG _UL"), "the variables galil_models.csv gives the model");
         GalilException longLine = assertThrows(GalilException.class, () -> c.download("x=" + "1".repeat(79), false));
         assertEquals(Tc.DOWNLOAD, longLine.tc);
         assertEquals(program, c.programText(), "a refused download leaves the program as it was");
         assertEquals(Tc.BAD_LABEL, assertThrows(GalilException.class, () -> c.download("#A\r#A\r", false)).tc);
         assertEquals(Tc.BAD_LABEL, assertThrows(GalilException.class, () -> c.download("#TOOLONG8\r", false)).tc);
-        Controller small = new Controller(Model.DMC2143, List.of(), null);
+        Controller small = new Controller(Model.named("DMC-2143").orElseThrow(), List.of(), null);
         assertEquals(Tc.DOWNLOAD, assertThrows(GalilException.class, () -> small.download("EN\r".repeat(2001), false)).tc);
         small.download("EN\r".repeat(2000), false);
     }

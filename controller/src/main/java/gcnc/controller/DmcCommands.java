@@ -309,7 +309,7 @@ final class DmcCommands implements Command.Visitor<Void> {
 
     @Override
     public Void toolNumber(Command.ToolNumber x) {
-        if (!c.variables.containsKey("TOOL") && c.variables.size() >= Model.VARIABLES) {
+        if (!c.variables.containsKey("TOOL") && c.variables.size() >= c.model.variables) {
             throw refuse(Tc.TOO_MANY_VARIABLES);
         }
         c.variables.put("TOOL", (double) x.station());

@@ -114,7 +114,7 @@ final class Statements {
             return number(c.variable(name)) + "\r\n";
         }
         double v = eval(value);
-        if (!c.variables.containsKey(name) && c.variables.size() >= Model.VARIABLES) {
+        if (!c.variables.containsKey(name) && c.variables.size() >= c.model.variables) {
             throw new GalilException(Tc.TOO_MANY_VARIABLES);
         }
         c.variables.put(name, v);
@@ -239,16 +239,6 @@ final class Statements {
                 c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
                 return "";
             }
-            case "AO": {
-                // an analog output (DMC-40x0: AO n,v), ±9.9982 V like OF: another way to give a spindle drive its speed
-                List<String> a = split(args);
-                if (a.size() != 2) {
-                    throw new GalilException(Tc.OPERAND);
-                }
-                int n = (int) range(eval(a.get(0)), 1, c.analogOutputs.length);
-                c.analogOutputs[n - 1] = range(eval(a.get(1)), -9.9982, 9.9982);
-                return "";
-            }
             case "LM":
                 if (args.equals("?")) {
                     return mo.free() + "\r\n";
@@ -353,7 +343,6 @@ final class Statements {
         c.arrays.clear();
         c.outputs = 0;
         java.util.Arrays.fill(c.offsets, 0);
-        java.util.Arrays.fill(c.analogOutputs, 0);
         java.util.Arrays.fill(c.servo, false);
         c.lastError = Tc.NONE;
         c.cw = 2;
