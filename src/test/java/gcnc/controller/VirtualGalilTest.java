@@ -225,4 +225,20 @@ class VirtualGalilTest {
         c.advance(0.001);
         assertEquals(" 1.0000 1.0000\r\n", ok("MG _LMS,_CSS"), "the executing segment gave its slot back");
     }
+
+    /** The ranges are the model's row of tables/galil_models.csv, the compiler's own (COMALL VS, VP, CR). */
+    @Test
+    void theModelsRangesAreTheTablesOwn() throws GalilException {
+        ok("SH XY");
+        ok("VM XY");
+        assertEquals(Tc.RANGE, rejected("VS 1"));
+        assertEquals(Tc.RANGE, rejected("VS 15000002"));
+        assertEquals(Tc.RANGE, rejected("VP 8388608,0"), "a segment longer than 8,388,607 counts");
+        assertEquals(Tc.RANGE, rejected("CR 9,0,90"), "a radius under 10");
+        assertEquals(Tc.RANGE, rejected("CR 5000000,0,90"), "r times the degrees reaches 450,000,000");
+        assertEquals(Tc.RANGE, rejected("VA 1000"));
+        assertEquals(Tc.RANGE, rejected("VP 1000,0 <1"), "a segment speed under 2");
+        ok("VP 8388607,0");
+        ok("CR 4999999,0,90");
+    }
 }

@@ -55,7 +55,7 @@ public final class Controller implements Expressions.Scope {
         for (int i = 0; i < threads.length; i++) {
             threads[i] = new ProgramThread(i);
         }
-        this.motion = new VectorMotion(model.axes, model.slots, new VectorMotion.Events() {
+        this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
             @Override
             public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {

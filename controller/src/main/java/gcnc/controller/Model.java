@@ -28,7 +28,6 @@ public final class Model {
     final int labels;
     final int variables;
     final int arrayElements;
-    final int slots;
 
     private Model(GalilModel row) {
         this.galil = row.hasFirmware12a() ? row.withFirmware12a() : row;
@@ -40,7 +39,6 @@ public final class Model {
         this.labels = (int) galil.range(Limit.LABELS).max();
         this.variables = (int) galil.range(Limit.VARIABLES).max();
         this.arrayElements = (int) galil.range(Limit.ARRAY_ELEMENTS).max();
-        this.slots = (int) galil.range(Limit.BUFFER_SEGMENTS).max();
     }
 
     /** The model gcnc assumes when a profile names none (DMC-4040). */
