@@ -7,9 +7,11 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Executes one Galil statement for the host (thread null) or for a program thread, and runs threads.
- * The command set is what a gcnc program (downloaded or streamed with its resident program) and its
- * sender use, listed in docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
+ * Executes one Galil statement for the host (thread null) or for a program thread: the commands gcnc
+ * writes go to {@link DmcCommands} (read by gcnc.dmc), program flow to {@link ProgramFlow}, MG to
+ * {@link Messages}; the protocol's own commands, variables and arrays are here. The command set is what a
+ * gcnc program (downloaded, or streamed with its resident program) and its sender use, listed in
+ * docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
  */
 final class Statements {
     private final Controller c;
