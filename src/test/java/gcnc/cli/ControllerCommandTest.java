@@ -28,7 +28,8 @@ class ControllerCommandTest {
         assertTrue(fault.err().contains("'stall=0' is not a fault: give garbage-after=BYTES"), fault.err());
         CliTest.Run model = CliTest.gcnc("controller", "--virtual", "--tcp", "0", "--model", "DMC9999");
         assertEquals(2, model.status());
-        assertTrue(model.err().contains("'DMC9999' is not a model"), model.err());
+        assertTrue(model.err().contains("'DMC9999' is not a Galil model gcnc knows (tables/galil_models.csv): DMC-4010,"),
+                model.err());
         CliTest.Run pty = CliTest.gcnc("controller", "--virtual", "--pty", "/nonexistent/galil");
         assertEquals(2, pty.status());
         assertTrue(pty.err().contains("socat -d -d pty,raw,echo=0,link=/nonexistent/galil"), pty.err());

@@ -43,7 +43,7 @@ class ControllerLinkTest {
 
     private Links open(Links.Kind kind, double speed, Fault... faults) throws IOException {
         assumeTrue(kind == Links.Kind.TCP || Links.socat(), "socat is not installed (setup.sh installs it): no pty pair");
-        return Links.open(kind, Model.DMC4040, speed, List.of(faults), tmp.resolve("trace.txt"));
+        return Links.open(kind, Model.standard(), speed, List.of(faults), tmp.resolve("trace.txt"));
     }
 
     private List<String> trace() throws IOException {

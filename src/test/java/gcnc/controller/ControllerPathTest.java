@@ -80,7 +80,7 @@ class ControllerPathTest {
                 simulated.add(g[0] + "," + g[1]);
             }
         }
-        try (Links l = Links.open(Links.Kind.TCP, Model.DMC4030, 200, List.of(), trace)) {
+        try (Links l = Links.open(Links.Kind.TCP, Model.named("DMC-4030").orElseThrow(), 200, List.of(), trace)) {
             HostLink h = l.host;
             assertEquals(":", h.send("DP " + home[0] + "," + home[1]), "the machine stands at the profile's home");
             String program = Files.readString(dmc).replace("\n", "\r\n");

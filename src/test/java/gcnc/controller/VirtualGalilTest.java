@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
  */
 class VirtualGalilTest {
     private final StringWriter trace = new StringWriter();
-    private final Controller c = new Controller(Model.DMC4040, List.of(), trace);
+    private final Controller c = new Controller(Model.standard(), List.of(), trace);
 
     private String ok(String command) throws GalilException {
         return c.command(command);
@@ -53,9 +53,7 @@ class VirtualGalilTest {
         assertEquals(Tc.OPERAND, rejected("OF ,,10"), "gcnc.dmc reads no offset beyond 9.998 V");
         assertEquals("", ok("OF ,,3.25"));
         assertEquals(3.25, c.offset(2));
-        assertEquals("", ok("AO 2,4.5"));
-        assertEquals(" 4.5000\r\n", ok("MG @AO[2]"));
-        assertEquals(Tc.RANGE, rejected("AO 2,12"));
+        assertEquals(Tc.UNRECOGNIZED, rejected("AO 2,4.5"), "the DMC-40x0 has no general analog outputs (galil_models.csv)");
         assertEquals("", ok("OFC=0"));
         assertEquals(0, c.offset(2));
         assertEquals("", ok("feed=12"));
@@ -77,12 +75,13 @@ class VirtualGalilTest {
         c.download(program, false);
         assertEquals(program, c.programText());
         assertEquals(" 509.0000\r\n", ok("MG _DL"), "one label of 510");
+        assertEquals(" 254.0000\r\n", ok("MG _UL"), "the variables galil_models.csv gives the model");
         GalilException longLine = assertThrows(GalilException.class, () -> c.download("x=" + "1".repeat(79), false));
         assertEquals(Tc.DOWNLOAD, longLine.tc);
         assertEquals(program, c.programText(), "a refused download leaves the program as it was");
         assertEquals(Tc.BAD_LABEL, assertThrows(GalilException.class, () -> c.download("#A\r#A\r", false)).tc);
         assertEquals(Tc.BAD_LABEL, assertThrows(GalilException.class, () -> c.download("#TOOLONG8\r", false)).tc);
-        Controller small = new Controller(Model.DMC2143, List.of(), null);
+        Controller small = new Controller(Model.named("DMC-2143").orElseThrow(), List.of(), null);
         assertEquals(Tc.DOWNLOAD, assertThrows(GalilException.class, () -> small.download("EN\r".repeat(2001), false)).tc);
         small.download("EN\r".repeat(2000), false);
     }
@@ -225,5 +224,21 @@ class VirtualGalilTest {
         ok("BGS");
         c.advance(0.001);
         assertEquals(" 1.0000 1.0000\r\n", ok("MG _LMS,_CSS"), "the executing segment gave its slot back");
+    }
+
+    /** The ranges are the model's row of tables/galil_models.csv, the compiler's own (COMALL VS, VP, CR). */
+    @Test
+    void theModelsRangesAreTheTablesOwn() throws GalilException {
+        ok("SH XY");
+        ok("VM XY");
+        assertEquals(Tc.RANGE, rejected("VS 1"));
+        assertEquals(Tc.RANGE, rejected("VS 15000002"));
+        assertEquals(Tc.RANGE, rejected("VP 8388608,0"), "a segment longer than 8,388,607 counts");
+        assertEquals(Tc.RANGE, rejected("CR 9,0,90"), "a radius under 10");
+        assertEquals(Tc.RANGE, rejected("CR 5000000,0,90"), "r times the degrees reaches 450,000,000");
+        assertEquals(Tc.RANGE, rejected("VA 1000"));
+        assertEquals(Tc.RANGE, rejected("VP 1000,0 <1"), "a segment speed under 2");
+        ok("VP 8388607,0");
+        ok("CR 4999999,0,90");
     }
 }

@@ -45,8 +45,8 @@ final class ControllerCommand implements Callable<Integer> {
         Path pty;
     }
 
-    @Option(names = "--model", paramLabel = "NAME", defaultValue = "DMC4040",
-            description = "The model it answers as (^R^V) and whose memory it has: DMC4040, DMC4030, DMC4020, DMC4080 or DMC2143 (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--model", paramLabel = "NAME", defaultValue = "DMC-4040",
+            description = "The model it answers as (^R^V) and whose memory and outputs it has, a model of tables/galil_models.csv (default: ${DEFAULT-VALUE}).")
     String model;
 
     @Option(names = "--speed", paramLabel = "X", defaultValue = "1",
@@ -77,9 +77,9 @@ final class ControllerCommand implements Callable<Integer> {
                 : spec.root().userObject() instanceof Main m && m.lang != null ? m.lang
                 : CommonOptions.fromEnvironment(System.getenv());
         Phrases say = new Phrases(language);
-        Model m = Model.named(model);
+        Model m = Model.named(model).orElse(null);
         if (m == null) {
-            err.println("gcnc: " + say.get("controller.bad_model", model));
+            err.println("gcnc: " + say.get("controller.bad_model", model, Model.names()));
             return ExitCode.USAGE;
         }
         if (!(speed > 0) || speed > 10_000) {

@@ -32,8 +32,6 @@ public final class Controller implements Expressions.Scope {
     final VectorMotion motion;
     final boolean[] servo;
     final double[] offsets;
-    /** AO: eight analog outputs, volts. */
-    final double[] analogOutputs = new double[8];
     long outputs;
     /** Inputs read 1 when nothing pulls them low (Galil's inputs are pulled up). */
     long inputs = -1L;
@@ -57,7 +55,7 @@ public final class Controller implements Expressions.Scope {
         for (int i = 0; i < threads.length; i++) {
             threads[i] = new ProgramThread(i);
         }
-        this.motion = new VectorMotion(model.axes, Model.SLOTS, new VectorMotion.Events() {
+        this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
             @Override
             public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {
@@ -283,12 +281,6 @@ public final class Controller implements Expressions.Scope {
 
     @Override
     public double io(String function, int n) throws GalilException {
-        if (function.equals("AO")) {
-            if (n < 1 || n > analogOutputs.length) {
-                throw new GalilException(Tc.RANGE);
-            }
-            return analogOutputs[n - 1];
-        }
         if (n < 1 || n > model.outputs) {
             throw new GalilException(Tc.RANGE);
         }
@@ -312,8 +304,8 @@ public final class Controller implements Expressions.Scope {
             case "TC": return lastError.code;
             case "ED": return errorLine;
             case "ED1": return errorThread;
-            case "DL": return Model.LABELS - program.labelCount();
-            case "UL": return Model.VARIABLES - variables.size();
+            case "DL": return model.labels - program.labelCount();
+            case "UL": return model.variables - variables.size();
             case "DA": return Model.ARRAYS - arrays.size();
             case "DM": return model.arrayElements - elements;
             default: break;

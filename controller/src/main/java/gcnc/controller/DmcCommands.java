@@ -3,6 +3,7 @@ package gcnc.controller;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.DmcReader;
+import gcnc.machine.GalilModel;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -202,9 +203,19 @@ final class DmcCommands implements Command.Visitor<Void> {
         });
     }
 
-    /** VA and VD: 1,024 to 1,073,740,800, rounded down to a multiple of 1,024 (command reference VA). */
-    private static double acceleration(double v) {
-        return Math.floor(range(v, 1024, 1_073_740_800) / 1024) * 1024;
+    /** The model's range of a limit (tables/galil_models.csv), TC 6 outside it. */
+    private double within(double v, GalilModel.Limit limit) {
+        GalilModel.Range r = c.model.galil.range(limit);
+        if (!r.holds(v, limit.below())) {
+            throw refuse(Tc.RANGE);
+        }
+        return v;
+    }
+
+    /** VA and VD: rounded down to a multiple of the step, 1,024 (command reference VA: "VA 20000" reads 19456). */
+    private double acceleration(double v) {
+        long step = c.model.galil.range(GalilModel.Limit.ACCELERATION).step();
+        return Math.floor(within(v, GalilModel.Limit.ACCELERATION) / step) * step;
     }
 
     @Override
@@ -246,7 +257,7 @@ final class DmcCommands implements Command.Visitor<Void> {
 
     @Override
     public Void vectorSpeed(Command.VectorSpeed x) {
-        c.motion.vs = range(x.countsPerSecond().value(), 2, VectorMotion.MAX_SPEED);
+        c.motion.vs = within(x.countsPerSecond().value(), GalilModel.Limit.VECTOR_SPEED);
         c.motion.changed();
         return null;
     }
@@ -302,14 +313,14 @@ final class DmcCommands implements Command.Visitor<Void> {
     public Void await(Command.Wait x) {
         onlyInProgram();
         // WT: 2 to 2,147,483,646 ms (command reference WT)
-        double until = c.time() + range(x.milliseconds(), 2, 2_147_483_646) / 1000;
+        double until = c.time() + within(x.milliseconds(), GalilModel.Limit.DWELL) / 1000;
         th.waitingFor = () -> c.time() >= until - 1e-9;
         return null;
     }
 
     @Override
     public Void toolNumber(Command.ToolNumber x) {
-        if (!c.variables.containsKey("TOOL") && c.variables.size() >= Model.VARIABLES) {
+        if (!c.variables.containsKey("TOOL") && c.variables.size() >= c.model.variables) {
             throw refuse(Tc.TOO_MANY_VARIABLES);
         }
         c.variables.put("TOOL", (double) x.station());

@@ -20,7 +20,7 @@ final class Expressions {
         /** An operand without its underscore: "LMS", "TPX", "XQ0", "TC". */
         double operand(String name) throws GalilException;
 
-        /** {@code @IN[n]}, {@code @OUT[n]}, {@code @AO[n]}. */
+        /** {@code @IN[n]}, {@code @OUT[n]}. */
         double io(String function, int n) throws GalilException;
     }
 
@@ -190,7 +190,7 @@ final class Expressions {
             }
             case "SIN" -> Math.sin(Math.toRadians(x));
             case "COS" -> Math.cos(Math.toRadians(x));
-            case "IN", "OUT", "AO" -> scope.io(fn, (int) x);
+            case "IN", "OUT" -> scope.io(fn, (int) x);
             default -> throw new GalilException(Tc.BAD_FUNCTION);
         };
     }

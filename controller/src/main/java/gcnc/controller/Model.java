@@ -1,56 +1,73 @@
 package gcnc.controller;
 
+import gcnc.machine.GalilModel;
+import gcnc.machine.GalilModel.Limit;
+import gcnc.machine.GalilModels;
 import java.util.Locale;
+import java.util.Optional;
 
 /**
- * The Galil models the virtual controller can be: what {@code ^R^V} answers and the memory a sender's
- * pre-flight reads ({@code _DL}, {@code _UL}, {@code _DA}, {@code _DM}, the line count a DL may fill).
- *
- * <p>Numbers from the command reference (docs/virtual-controller.md, "Memory"): program lines 0-3,999 on
- * firmware 1.2a and later, 0-1,999 before; 510 labels; 16,000 array elements, 24,000 on 1.2a and later;
- * 511 vector-buffer slots. The variable and array-name counts of these models are not published (the
- * reference says to ask {@code _UL}/{@code _DA}); 510 and 30 are assumed.
+ * The Galil the virtual controller is: a row of tables/galil_models.csv ({@link GalilModel}, the table
+ * gcnc checks its programs against), so that the controller has exactly the memory and outputs the
+ * compiler assumes. A model whose row gives firmware 1.2a figures runs firmware 1.2d (4,000 program
+ * lines, 24,000 array elements); one without runs 1.0h (2,000 and 16,000). What {@code ^R^V} answers is
+ * the model and that revision, as a Galil writes them ("DMC4040 Rev 1.2d").
  */
-public enum Model {
-    /** A 4-axis Accelera on current firmware: the default. */
-    DMC4040("DMC4040 Rev 1.2d", 4, 8, 4000, 24000),
-    /** The 3-axis Accelera of the generic profile: the two lathe axes and the spindle's channel. */
-    DMC4030("DMC4030 Rev 1.2d", 3, 8, 4000, 24000),
-    /** The 2-axis Accelera, enough for a lathe's two axes and no spindle channel. */
-    DMC4020("DMC4020 Rev 1.2d", 2, 8, 4000, 24000),
-    /** An 8-axis Accelera with 16 outputs. */
-    DMC4080("DMC4080 Rev 1.2d", 8, 16, 4000, 24000),
-    /** A firmware before 1.2a: half the program lines and 16,000 array elements (a smaller controller for tests). */
-    DMC2143("DMC2143 Rev 1.0h", 4, 8, 2000, 16000);
+public final class Model {
+    /** Array names: not in the table (the reference gives no count for these models; 30 assumed). */
+    static final int ARRAYS = 30;
 
+    /** The model's row, at the firmware the virtual controller runs. */
+    public final GalilModel galil;
     /** The reply to {@code ^R^V}: model and firmware revision. */
     public final String revision;
     final int axes;
     final int outputs;
     final int lines;
+    final int lineChars;
+    final int labels;
+    final int variables;
     final int arrayElements;
-    static final int LABELS = 510;
-    static final int VARIABLES = 510;
-    static final int ARRAYS = 30;
-    static final int SLOTS = 511;
-    static final int LINE_CHARS = 80;
 
-    Model(String revision, int axes, int outputs, int lines, int arrayElements) {
-        this.revision = revision;
-        this.axes = axes;
-        this.outputs = outputs;
-        this.lines = lines;
-        this.arrayElements = arrayElements;
+    private Model(GalilModel row) {
+        this.galil = row.hasFirmware12a() ? row.withFirmware12a() : row;
+        this.revision = galil.name().replace("-", "") + " Rev " + (galil.newFirmware() ? "1.2d" : "1.0h");
+        this.axes = galil.axes();
+        this.outputs = galil.digitalOutputs();
+        this.lines = (int) galil.range(Limit.PROGRAM_LINES).max();
+        this.lineChars = (int) galil.range(Limit.LINE_LENGTH).max();
+        this.labels = (int) galil.range(Limit.LABELS).max();
+        this.variables = (int) galil.range(Limit.VARIABLES).max();
+        this.arrayElements = (int) galil.range(Limit.ARRAY_ELEMENTS).max();
     }
 
-    /** The model named (any case, with or without "DMC-"), or null. */
-    public static Model named(String name) {
-        String n = name.toUpperCase(Locale.ROOT).replace("-", "");
-        for (Model m : values()) {
-            if (m.name().equals(n)) {
-                return m;
-            }
+    /** The model gcnc assumes when a profile names none (DMC-4040). */
+    public static Model standard() {
+        return named(GalilModels.DEFAULT).orElseThrow();
+    }
+
+    /** The model named as the table names it or as a controller's label reads it ("DMC4040", "dmc-4040"). */
+    public static Optional<Model> named(String name) {
+        String want = squeeze(name);
+        return GalilModels.builtIn().all().stream().filter(m -> squeeze(m.name()).equals(want)).findFirst()
+                .map(Model::new);
+    }
+
+    /** Every model name of the table, for a message. */
+    public static String names() {
+        StringBuilder b = new StringBuilder();
+        for (GalilModel m : GalilModels.builtIn().all()) {
+            b.append(b.length() == 0 ? "" : ", ").append(m.name());
         }
-        return null;
+        return b.toString();
+    }
+
+    private static String squeeze(String s) {
+        return s.replace("-", "").toUpperCase(Locale.ROOT);
+    }
+
+    @Override
+    public String toString() {
+        return revision;
     }
 }

@@ -58,7 +58,7 @@ final class Program {
         List<Line> next = new ArrayList<>(append ? lines : List.of());
         Map<String, Integer> nextLabels = new HashMap<>(append ? labels : Map.of());
         for (String t : texts) {
-            if (t.length() > Model.LINE_CHARS || next.size() >= model.lines) {
+            if (t.length() > model.lineChars || next.size() >= model.lines) {
                 throw new GalilException(Tc.DOWNLOAD);
             }
             List<String> statements = statements(t);
@@ -69,7 +69,7 @@ final class Program {
                         throw new GalilException(Tc.BAD_LABEL);
                     }
                     nextLabels.put(name, next.size());
-                    if (nextLabels.size() > Model.LABELS) {
+                    if (nextLabels.size() > model.labels) {
                         throw new GalilException(Tc.TOO_MANY_LABELS);
                     }
                 }

@@ -7,9 +7,11 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Executes one Galil statement for the host (thread null) or for a program thread, and runs threads.
- * The command set is what a gcnc program (downloaded or streamed with its resident program) and its
- * sender use, listed in docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
+ * Executes one Galil statement for the host (thread null) or for a program thread: the commands gcnc
+ * writes go to {@link DmcCommands} (read by gcnc.dmc), program flow to {@link ProgramFlow}, MG to
+ * {@link Messages}; the protocol's own commands, variables and arrays are here. The command set is what a
+ * gcnc program (downloaded, or streamed with its resident program) and its sender use, listed in
+ * docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
  */
 final class Statements {
     private final Controller c;
@@ -114,7 +116,7 @@ final class Statements {
             return number(c.variable(name)) + "\r\n";
         }
         double v = eval(value);
-        if (!c.variables.containsKey(name) && c.variables.size() >= Model.VARIABLES) {
+        if (!c.variables.containsKey(name) && c.variables.size() >= c.model.variables) {
             throw new GalilException(Tc.TOO_MANY_VARIABLES);
         }
         c.variables.put(name, v);
@@ -239,16 +241,6 @@ final class Statements {
                 c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
                 return "";
             }
-            case "AO": {
-                // an analog output (DMC-40x0: AO n,v), ±9.9982 V like OF: another way to give a spindle drive its speed
-                List<String> a = split(args);
-                if (a.size() != 2) {
-                    throw new GalilException(Tc.OPERAND);
-                }
-                int n = (int) range(eval(a.get(0)), 1, c.analogOutputs.length);
-                c.analogOutputs[n - 1] = range(eval(a.get(1)), -9.9982, 9.9982);
-                return "";
-            }
             case "LM":
                 if (args.equals("?")) {
                     return mo.free() + "\r\n";
@@ -353,7 +345,6 @@ final class Statements {
         c.arrays.clear();
         c.outputs = 0;
         java.util.Arrays.fill(c.offsets, 0);
-        java.util.Arrays.fill(c.analogOutputs, 0);
         java.util.Arrays.fill(c.servo, false);
         c.lastError = Tc.NONE;
         c.cw = 2;

@@ -1,5 +1,6 @@
 package gcnc.controller;
 
+import gcnc.machine.GalilModel;
 import java.util.ArrayDeque;
 import java.util.Iterator;
 
@@ -32,12 +33,16 @@ final class VectorMotion {
         void limitTripped();
     }
 
-    static final double MAX_SPEED = 15_000_000;
-    static final double MAX_SEGMENT = 8_388_607;
+    /** TC 31 "Total move distance in a sequence > 2 billion" (the table's sequence_max is LI's 2^30, stricter). */
     static final double MAX_SEQUENCE = 2_000_000_000;
     static final double STEP = 0.001;
 
     private final int slots;
+    /** The model's ranges (tables/galil_models.csv): segment length, radius, arc, segment speeds. */
+    private final GalilModel.Range segment;
+    private final GalilModel.Range radius;
+    private final GalilModel.Range arc;
+    private final GalilModel.Range speed;
     private final Events events;
     /** The two plane axes (channel indices), -1 before VM. */
     int axis1 = -1;
@@ -77,8 +82,13 @@ final class VectorMotion {
     private double[] caps = new double[0];
     private boolean dirty = true;
 
-    VectorMotion(int axes, int slots, Events events) {
-        this.slots = slots;
+    VectorMotion(GalilModel model, Events events) {
+        this.slots = (int) model.range(GalilModel.Limit.BUFFER_SEGMENTS).max();
+        this.segment = model.range(GalilModel.Limit.SEGMENT_LENGTH);
+        this.radius = model.range(GalilModel.Limit.ARC_RADIUS);
+        this.arc = model.range(GalilModel.Limit.ARC_LENGTH);
+        this.speed = model.range(GalilModel.Limit.SEGMENT_SPEED);
+        int axes = model.axes();
         this.events = events;
         this.position = new double[Math.max(axes, 2)];
     }
@@ -138,7 +148,7 @@ final class VectorMotion {
         startIfNeeded();
         double e1 = origin1 + a;
         double e2 = origin2 + b;
-        if (Math.abs(e1 - cursor1) > MAX_SEGMENT || Math.abs(e2 - cursor2) > MAX_SEGMENT) {
+        if (Math.abs(e1 - cursor1) > segment.max() || Math.abs(e2 - cursor2) > segment.max()) {
             throw new GalilException(Tc.RANGE);
         }
         double length = Math.hypot(e1 - cursor1, e2 - cursor2);
@@ -152,8 +162,8 @@ final class VectorMotion {
     void cr(double r, double startDeg, double sweepDeg, double o, double p) throws GalilException {
         room();
         speeds(o, p);
-        if (r < 10 || r > 6_000_000 || Math.abs(startDeg) > 32000 || Math.abs(sweepDeg) > 32000
-                || r * Math.abs(sweepDeg) >= 4.5e8) {
+        if (!radius.holds(r, false) || Math.abs(startDeg) > 32000 || Math.abs(sweepDeg) > 32000
+                || !arc.holds(r * Math.abs(sweepDeg), true)) {
             throw new GalilException(Tc.RANGE);
         }
         if (sweepDeg == 0) {
@@ -173,8 +183,8 @@ final class VectorMotion {
                 e1, e2);
     }
 
-    private static void speeds(double o, double p) throws GalilException {
-        if (!Double.isNaN(o) && (o < 2 || o > MAX_SPEED) || !Double.isNaN(p) && (p < 0 || p > MAX_SPEED)) {
+    private void speeds(double o, double p) throws GalilException {
+        if (!Double.isNaN(o) && !speed.holds(o, false) || !Double.isNaN(p) && (p < 0 || p > speed.max())) {
             throw new GalilException(Tc.RANGE);
         }
     }
