@@ -89,6 +89,11 @@ class RunOnControllerTest {
         return new long[] {Math.round(g[0]), Math.round(g[1])};
     }
 
+    /** A model of tables/galil_models.csv as the virtual controller plays it. */
+    static Model model(String name) {
+        return Model.named(name).orElseThrow();
+    }
+
     static VirtualController controller(Model model, String... faults) throws IOException {
         return traced(model, null, faults);
     }
@@ -172,7 +177,7 @@ class RunOnControllerTest {
     @Test
     void theRunSpeaksSpanish() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040, "reject=45")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "reject=45")) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--lang", "es", "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -193,7 +198,7 @@ class RunOnControllerTest {
     @Test
     void runsToTheEndOverTcp() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
             assertEquals(0, r.status(), r.all());
@@ -214,7 +219,7 @@ class RunOnControllerTest {
     @Test
     void theJsonEventStreamIsOneObjectPerLine() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--format", "json", "--poll", "20");
             assertEquals(0, r.status(), r.all());
@@ -246,7 +251,7 @@ class RunOnControllerTest {
                 Thread.sleep(100);
             }
             Path p = part(PART);
-            try (VirtualController vc = VirtualController.pty(a, new VirtualController.Options(Model.DMC4040, 5, List.of(), null))) {
+            try (VirtualController vc = VirtualController.pty(a, new VirtualController.Options(model("DMC-4040"), 5, List.of(), null))) {
                 Run dp = gcnc("", "run", p.toString(), "--machine", "haas", "--port", b.toString(), "--dry-run");
                 // not homed yet: refused before anything moves, and the link worked (pre-flight read the axes)
                 assertEquals(2, dp.status(), dp.all());
@@ -326,7 +331,7 @@ class RunOnControllerTest {
 
     @Test
     void aControllerOfAnotherModelIsExit2AndNothingMoves() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4020)) {
+        try (VirtualController vc = controller(model("DMC-4020"))) {
             homed(vc);
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
             assertEquals(2, r.status(), r.all());
@@ -368,7 +373,7 @@ class RunOnControllerTest {
 
     @Test
     void axesNotAtHomeAreExit2() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
             assertEquals(2, r.status(), r.all());
             long[] h = home();
@@ -379,7 +384,7 @@ class RunOnControllerTest {
 
     @Test
     void aProgramStillRunningOnTheControllerIsNotCutOff() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             try (Socket s = new Socket("127.0.0.1", vc.port())) {
                 s.getOutputStream().write("DL\r#BUSY\rWT 20000\rEN\r\\XQ #BUSY,0\r".getBytes(StandardCharsets.ISO_8859_1));
@@ -394,7 +399,7 @@ class RunOnControllerTest {
     @Test
     void theDryRunDoesEverythingButMotion() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--dry-run");
             assertEquals(0, r.status(), r.all());
@@ -414,11 +419,11 @@ class RunOnControllerTest {
         Path dir = Files.createTempDirectory("gcnc-trace");
         Path whole = dir.resolve("whole.trace");
         Path stopped = dir.resolve("stopped.trace");
-        try (VirtualController vc = traced(Model.DMC4040, whole)) {
+        try (VirtualController vc = traced(model("DMC-4040"), whole)) {
             homed(vc);
             assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
         }
-        try (VirtualController vc = traced(Model.DMC4040, stopped, "reject=45")) {
+        try (VirtualController vc = traced(model("DMC-4040"), stopped, "reject=45")) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -454,7 +459,7 @@ class RunOnControllerTest {
 
     @Test
     void aDroppedConnectionNamesTheLastCompletedAndTheExecutingBlock() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040, "disconnect-after=600")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "disconnect-after=600")) {
             homed(vc);
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -468,7 +473,7 @@ class RunOnControllerTest {
 
     @Test
     void garbageFromTheControllerStopsTheRun() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040, "garbage-after=900")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "garbage-after=900")) {
             homed(vc);
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -480,7 +485,7 @@ class RunOnControllerTest {
 
     @Test
     void aControllerThatDoesNotAnswerInTimeIsExit2BeforeMotion() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040, "slow=1500")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "slow=1500")) {
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--timeout", "500");
             assertEquals(2, r.status(), r.all());
             assertTrue(r.err().contains("error[E822]: the controller did not answer '\\x12\\x16' in time"), r.err());
@@ -489,7 +494,7 @@ class RunOnControllerTest {
 
     @Test
     void aStalledSequenceIsStopped() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040, "stall=3")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "stall=3")) {
             homed(vc);
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--stall", "1", "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -501,7 +506,7 @@ class RunOnControllerTest {
 
     @Test
     void resumingWhereTheAxesAreNotIsRefused() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             // the axes are at home, nowhere on line 9's arc
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--resume-at", "9");
@@ -514,7 +519,7 @@ class RunOnControllerTest {
     @Test
     void stepModeRunsOneBlockPerEnterToTheEnd() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("\n".repeat(20), "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--step", "--poll", "20");
             assertEquals(0, r.status(), r.all());
@@ -528,7 +533,7 @@ class RunOnControllerTest {
 
     @Test
     void theOperatorStopsAStepRun() throws Exception {
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("\nq\n", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--step");
             assertEquals(3, r.status(), r.all());
@@ -541,7 +546,7 @@ class RunOnControllerTest {
     @Test
     void feedHoldAndOverrideGoToTheController() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(Model.DMC4040)) {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
             homed(vc);
             java.io.PipedOutputStream keys = new java.io.PipedOutputStream();
             java.io.PipedInputStream in = new java.io.PipedInputStream(keys);
