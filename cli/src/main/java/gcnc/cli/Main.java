@@ -87,11 +87,13 @@ public final class Main implements Runnable {
         m.put("check", CheckCommand.class);
         m.put("compile", CompileCommand.class);
         m.put("simulate", SimulateCommand.class);
+        m.put("run", SendCommand.class);
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
         m.put("studio", StudioCommand.class);
         m.put("daemon", DaemonCommand.class);
+        m.put("controller", ControllerCommand.class);
         m.put("completion", CompletionCommand.class);
         m.put("help", CommandLine.HelpCommand.class);
         return java.util.Collections.unmodifiableMap(m);

@@ -640,7 +640,39 @@ public enum Code {
      * Checker (note): M29, rigid tapping: the control gears the tap to the spindle; gcnc's G84
      * feeds it at the F in force and reverses the spindle, as for a floating holder.
      */
-    E720_RIGID_TAP_NOT_GEARED(720);
+    E720_RIGID_TAP_NOT_GEARED(720),
+
+    // --- gcnc run, the sender (issue 20, run; docs/run.md): E815-E829
+    /** Sender: the serial device named by --port does not exist. */
+    E815_PORT_MISSING(815),
+    /** Sender: the serial device exists but another program holds it (or it may not be opened). */
+    E816_PORT_HELD(816),
+    /** Sender: no connection to the controller (TCP refused, unreachable, timed out). */
+    E817_NO_CONNECTION(817),
+    /** Sender: the controller is not the model the machine profile names (^R^V), or not a Galil. */
+    E818_WRONG_CONTROLLER(818),
+    /** Sender: the program needs more of the controller (lines, labels, variables, buffer) than it has. */
+    E819_CAPACITY(819),
+    /** Sender: the controller answered ? or stopped the program with an error: its TC code and text, at the G-code line. */
+    E820_CONTROLLER_ERROR(820),
+    /** Sender: the link closed during the run; the last block completed and the one executing are named. */
+    E821_CONNECTION_DROPPED(821),
+    /** Sender: no reply within the timeout. */
+    E822_NO_REPLY(822),
+    /** Sender: a reply that is not Galil's protocol. */
+    E823_GARBAGE(823),
+    /** Sender: the program read back with UL is not the one downloaded with DL. */
+    E824_READBACK_DIFFERS(824),
+    /** Sender: the controller cannot run the program (a limit switch active, a sequence moving, a program running; or it ended the program early). */
+    E825_NOT_READY(825),
+    /** Sender: the axes are not where the program was verified to start (home). */
+    E826_NOT_AT_START(826),
+    /** Sender: --resume-at cannot continue from where the axes are. */
+    E827_CANNOT_RESUME(827),
+    /** Sender (warning): the operator stopped the run. */
+    E828_STOPPED_BY_OPERATOR(828),
+    /** Sender (warning): motors are off on the program's axes; its SH turns them on. */
+    E829_MOTORS_OFF(829);
 
     private final int number;
 
