@@ -18,6 +18,7 @@ mkdir -p "$prefix/bin" "$prefix/lib/gcnc"
 lib="$(cd "$prefix/lib/gcnc" && pwd)"
 # Written beside and renamed into place: a run that starts meanwhile never sees half a jar.
 cp build/libs/gcnc.jar "$lib/gcnc.jar.new" && mv -f "$lib/gcnc.jar.new" "$lib/gcnc.jar"
+cp scripts/gcnc-client.py "$lib/gcnc-client.py.new" && mv -f "$lib/gcnc-client.py.new" "$lib/gcnc-client.py"
 cp scripts/gcnc "$prefix/bin/gcnc.new" && chmod 755 "$prefix/bin/gcnc.new" && mv -f "$prefix/bin/gcnc.new" "$prefix/bin/gcnc"
 # The archive: the classes a check, a compile and a simulate load, dumped at the end of a training
 # run over the installed jar (JDK 13+ dynamic archive). The JVM checks it against the jar's size and

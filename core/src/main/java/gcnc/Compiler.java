@@ -77,7 +77,10 @@ public final class Compiler {
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
             List<CheckedBlock> checked = checker.check(raw);
             if (arcs != null) {
-                checked.forEach(arcs::block);
+                // a plain loop: checked.forEach(arcs::block) made a bound method reference per block
+                for (int i = 0; i < checked.size(); i++) {
+                    arcs.block(checked.get(i));
+                }
             }
             blocks++;
         }

@@ -96,6 +96,14 @@ public final class Session {
         return new Session(options.withStock(blank), tables, profile, programs);
     }
 
+    /**
+     * The same tables and options with another machine profile, already loaded (the studio's
+     * Configure: a profile edited in memory, to see what it changes before it is saved).
+     */
+    public Session withProfile(MachineProfile edited) {
+        return new Session(options, tables, java.util.Objects.requireNonNull(edited), programs);
+    }
+
     /** The same session looking for called programs ({@code O1000.nc}, {@code 1000.nc}) in {@code folder}. */
     public Session withPrograms(Optional<Path> folder) {
         return new Session(options, tables, profile, folder);

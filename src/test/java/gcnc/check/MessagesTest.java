@@ -143,4 +143,21 @@ class MessagesTest {
         assertEquals("2:1 line number N0005 must be greater than the previous one: N10", generic("N0010|N0005"));
         assertEquals("1:1 tool offset 99 out of range", generic("T0199"));
     }
+    // ---- E103: a feed in the program's terms (F as written, per minute in its units), counts second ----
+
+    @Test
+    void aFeedPerRevolutionAboveTheMaximumIsGivenPerRevolutionAndPerMinute() {
+        // generic: feed.max 50000 counts/s at 1000 counts/mm = 3000 mm/min; F2. mm/rev at 2500 rpm is 5000 mm/min
+        assertEquals("7:11 feed F2. mm/rev × 2500 rpm moves the tool at 5000 mm/min: above the machine's maximum feed"
+                + " of 3000 mm/min (83333.333 counts/s; at most 50000)",
+                generic("G21 G90 G99|G50 S2500|M11|T0101|S2500 M03|G00 X40. Z2.|G01 Z-10. F2."));
+    }
+
+    @Test
+    void anInchFeedPerMinuteAboveTheMaximumIsGivenInInchesPerMinute() {
+        // 200 in/min = 5080 mm/min; the maximum 3000 mm/min = 118.11 in/min
+        assertEquals("7:10 feed F200. in/min moves the tool at 200 in/min: above the machine's maximum feed"
+                + " of 118.11 in/min (84666.667 counts/s; at most 50000)",
+                generic("G20 G90 G98|G50 S2500|M11|T0101|S1000 M03|G00 X1.6 Z0.1|G01 Z-1. F200."));
+    }
 }

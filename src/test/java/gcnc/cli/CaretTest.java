@@ -42,7 +42,8 @@ class CaretTest {
         Path p = CliTest.program(PROGRAM);
         for (String[] args : new String[][] {{"check", p.toString()}, {"check", p.toString(), "--caret", "never"}}) {
             CliTest.Run r = CliTest.gcnc(args);
-            assertEquals(1, r.err().strip().split("\n").length, r.err());
+            // the finding, and the closing hint to gcnc explain (ExplainHintTest)
+            assertEquals(2, r.err().strip().split("\n").length, r.err());
         }
     }
 

@@ -165,7 +165,8 @@ class CliTest {
         Run r = gcnc("check", p.toString());
         assertEquals(1, r.status(), r.err());
         String[] lines = r.err().strip().split("\n");
-        assertEquals(3, lines.length, r.err());
+        assertEquals(4, lines.length, r.err());
+        assertEquals("For more information about this error try `gcnc explain E051`.", lines[3]);
         assertTrue(lines[0].startsWith(p + ":6:"), lines[0]);
         assertTrue(lines[1].startsWith(p + ":9:15: error[E003]:"), lines[1]);
         assertTrue(lines[2].startsWith(p + ":10:"), lines[2]);

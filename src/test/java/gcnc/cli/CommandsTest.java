@@ -201,12 +201,14 @@ class CommandsTest {
         assertTrue(r.out().contains(dir.resolve("A.NC") + ": "), r.out());
         assertTrue(r.err().contains(dir.resolve("ops/b.tap") + ":"), r.err());
         assertFalse((r.out() + r.err()).contains("notes.txt"), r.out());
+        // not passed over silently: the note counts it (ProgramFilesTest)
+        assertTrue(r.out().contains(dir + ": skipped 1 file (.txt 1)"), r.out());
         String[] lines = r.out().strip().split("\n");
         assertTrue(lines[lines.length - 1].matches("total: 2 programs, \\d+ blocks, \\d+ errors?"), lines[lines.length - 1]);
         Path empty = Files.createTempDirectory("gcnc-empty");
         CliTest.Run none = CliTest.gcnc("check", empty.toString());
         assertEquals(2, none.status());
-        assertTrue(none.err().contains(empty + ":1:1: error[E500]: cannot check: no part program (.nc, .ngc, .tap) in it"),
+        assertTrue(none.err().contains(empty + ":1:1: error[E500]: cannot check: no part program (.nc, .ngc, .tap, .gcode) in it"),
                 none.err());
         CliTest.Run es = CliTest.gcnc("--lang", "es", "check", empty.toString(), dir.resolve("missing.nc").toString());
         assertTrue(es.err().contains("error[E500]: no se puede comprobar: no hay ningún programa pieza"), es.err());

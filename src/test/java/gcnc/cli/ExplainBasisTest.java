@@ -24,9 +24,13 @@ class ExplainBasisTest {
     }
 
     @Test
-    void aCodeWithoutARowPrintsNoBasis() {
+    void aCodeWithoutARowPrintsNoBasisButWhatTheControlDoesFromItsProse() {
+        // no basis row: the prose (tables/explain/) says what the control does, else the severity does
         CliTest.Run r = CliTest.gcnc("explain", "E305");
-        assertFalse(r.out().contains("the control"), r.out());
+        assertFalse(r.out().contains("the control stops (alarm)"), r.out());
+        assertTrue(r.out().contains("  What the control does: The control runs the rapid as written"), r.out());
+        CliTest.Run e = CliTest.gcnc("explain", "E049");
+        assertTrue(e.out().contains("  What the control does: it stops with an alarm at this block"), e.out());
     }
 
     @Test

@@ -51,6 +51,8 @@ class LauncherTest {
         assertEquals(0, install.status(), install.out());
         assertTrue(Files.isRegularFile(prefix.resolve("lib/gcnc/gcnc.jar")), install.out());
         assertTrue(Files.size(prefix.resolve("lib/gcnc/gcnc.jsa")) > 0, install.out());
+        // the resident checker's client, which the launcher finds beside the jar (ResidentCheckerTest)
+        assertTrue(Files.isRegularFile(prefix.resolve("lib/gcnc/gcnc-client.py")), install.out());
         Path link = Files.createSymbolicLink(tmp.resolve("gcnc"), prefix.resolve("bin/gcnc"));
         Run r = run(List.of(link.toString(), "check", BISHOP, "--machine", "thesis-2004"), Map.of());
         assertEquals(0, r.status(), r.out());

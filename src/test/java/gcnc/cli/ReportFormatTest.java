@@ -50,7 +50,8 @@ class ReportFormatTest {
         JsonNode doc = JSON.readTree(r.out());
         assertEquals("gcnc-diagnostics", doc.get("format").asText());
         assertEquals(1, doc.get("version").asInt());
-        String[] lines = gnu.err().split("\n");
+        // every line a finding but the last: the hint to gcnc explain (ExplainHintTest)
+        String[] lines = gnu.err().substring(0, gnu.err().lastIndexOf("For more information")).split("\n");
         JsonNode all = doc.get("diagnostics");
         assertEquals(lines.length, all.size(), "the JSON holds exactly the findings the GNU format prints");
         for (int i = 0; i < lines.length; i++) {
@@ -104,6 +105,28 @@ class ReportFormatTest {
         assertTrue(all.contains("\"uri\": \"file://" + dir.toString().replace(" ", "%20") + "/my%20part%20%C3%A9.nc\""), all);
         assertTrue(all.contains("\"uri\": \"no/such.nc\""), "an unreadable file is a result too");
         assertTrue(all.contains("\"ruleId\": \"E500\""), all);
+    }
+
+    /** SARIF rules carry gcnc explain's prose: why as fullDescription, the fix and an example as help. */
+    @Test
+    void sarifRulesHaveAFullDescriptionAndHelpFromTheExplanations() throws IOException {
+        CliTest.Run r = CliTest.gcnc("check", "--format", "sarif", "docs/examples/mistakes.nc");
+        JsonNode doc = JSON.readTree(r.out());
+        assertValidSarif(doc);
+        JsonNode rule = null;
+        for (JsonNode x : doc.get("runs").get(0).get("tool").get("driver").get("rules")) {
+            if (x.get("id").asText().equals("E051")) {
+                rule = x;
+            }
+        }
+        assertTrue(rule.get("fullDescription").get("text").asText().startsWith("A feed move before the spindle"),
+                rule.toString());
+        assertTrue(rule.get("help").get("text").asText().startsWith("Fix: Start the spindle with M03"), rule.toString());
+        assertTrue(rule.get("help").get("text").asText().contains("Example:\nG21 G99\nG01 X20. Z-5. F0.2"),
+                rule.toString());
+        assertTrue(rule.get("help").get("markdown").asText().contains("```gcode\nG21 G99\n"), rule.toString());
+        CliTest.Run es = CliTest.gcnc("check", "--lang", "es", "--format", "sarif", "docs/examples/mistakes.nc");
+        assertTrue(es.out().contains("\"text\": \"Arreglo: Arranque el husillo"), es.out());
     }
 
     /** The validator is not vacuous: a level SARIF does not have, or a missing ruleId's message, is caught. */

@@ -18,6 +18,39 @@ class DiagnosticsTest {
         return String.join(", ", out);
     }
 
+    /** Issue 22: a warning repeated elsewhere with the same code and arguments is kept once, with E115 and the lines. */
+    @Test
+    void aRepeatedWarningIsFoldedIntoItsFirstWithTheLaterLines() {
+        Diagnostics d = new Diagnostics();
+        for (int line : new int[] {4, 10, 12}) {
+            d.report(Diagnostic.warning(Code.E204_SPINDLE_VOLTS_CLAMPED, Span.of(line, 1), "4000", "10.0000"));
+        }
+        d.report(Diagnostic.warning(Code.E204_SPINDLE_VOLTS_CLAMPED, Span.of(14, 1), "3999", "9.9990"));
+        d.error(Code.E051_SPINDLE_DIRECTION, Span.of(20, 1));
+        d.error(Code.E051_SPINDLE_DIRECTION, Span.of(21, 1));
+        assertEquals("4:1:E204, 4:1:E115, 14:1:E204, 20:1:E051, 21:1:E051", codes(d));
+        Diagnostic note = d.sorted().get(1);
+        assertEquals(List.of("2", "10, 12"), note.args());
+        assertEquals("2 later blocks have the same cause (lines 10, 12)", gcnc.tables.Tables.builtIn().messages()
+                .render(note.code(), note.args(), gcnc.tables.ErrorMessages.Lang.EN));
+        assertEquals(2, d.errorCount(), "errors are not folded across places");
+    }
+
+    @Test
+    void aFoldedWarningsNotesAndItsLaterLinesSurviveAWithdrawal() {
+        Diagnostics d = new Diagnostics();
+        d.report(Diagnostic.warning(Code.E660_FEED_SPINDLE_STOPPED_NOT_JUDGED, Span.of(3, 1), "M05"));
+        d.report(Diagnostic.warning(Code.E107_NO_DECIMAL_POINT, Span.of(5, 5), "X20", "0.02", "mm", "20"));
+        for (int line = 6; line < 20; line++) {
+            d.report(Diagnostic.warning(Code.E107_NO_DECIMAL_POINT, Span.of(line, 5), "X20", "0.02", "mm", "20"));
+        }
+        d.withdraw(x -> x.code() == Code.E660_FEED_SPINDLE_STOPPED_NOT_JUDGED);
+        assertEquals("5:5:E107, 5:5:E115", codes(d));
+        assertEquals(List.of("14", "6, 7, 8, 9, 10, 11, 12, 13, 14, 15, ..."), d.sorted().get(1).args());
+        d.report(Diagnostic.warning(Code.E107_NO_DECIMAL_POINT, Span.of(30, 5), "X20", "0.02", "mm", "20"));
+        assertEquals(List.of("15", "6, 7, 8, 9, 10, 11, 12, 13, 14, 15, ..."), d.sorted().get(1).args());
+    }
+
     @Test
     void theSameErrorAtTheSamePlaceIsKeptOnceWithItsCount() {
         Diagnostics d = new Diagnostics();
@@ -75,7 +108,8 @@ class DiagnosticsTest {
     void warningsAndNotesHaveACapOfTheirOwn() {
         Diagnostics d = new Diagnostics();
         for (int line = 1; line <= Diagnostics.OTHER_CAP + 10; line++) {
-            d.report(Diagnostic.warning(Code.E113_M_WITHOUT_OUTPUT, Span.of(line, 1), 7, "generic"));
+            // a different M each time: the same warning with the same words elsewhere would be folded
+            d.report(Diagnostic.warning(Code.E113_M_WITHOUT_OUTPUT, Span.of(line, 1), line, "generic"));
         }
         assertEquals(Diagnostics.OTHER_CAP + 1, d.size());
         assertEquals(1, d.sorted().stream().filter(x -> x.code() == Code.E681_OTHER_CAP).count());

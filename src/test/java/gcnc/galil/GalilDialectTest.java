@@ -76,9 +76,9 @@ class GalilDialectTest {
                 List.of(new MCall(11), new MCall(3), new MCall(41)), List.of(new Motion.Dwell(0.25)),
                 List.of(new MCall(9)), Point.ORIGIN);
         List<String> out = Fixtures.run("galil", AT_ORIGIN, new Diagnostics(), b);
-        // 1200 rpm / 400 rpm per volt = 3 V on C, the third channel; M41 has no outputs.
+        // 1200 rpm / 410 rpm per volt = 2.9268 V on C, the third channel; M41 has no outputs.
         // gline first; the spindle still turns at the end: zero volts before EN
-        assertEquals(List.of("gline=9", "OF ,,3.0000", "TOOL=3", "CB4", "CB2", "SB1", "WT 250", "CB3", "CB7",
+        assertEquals(List.of("gline=9", "OF ,,2.9268", "TOOL=3", "CB4", "CB2", "SB1", "WT 250", "CB3", "CB7",
                 "OF ,,0.0000"), body(out));
     }
 
@@ -87,7 +87,8 @@ class GalilDialectTest {
         Diagnostics d = new Diagnostics();
         CheckedBlock over = new CheckedBlock(5, OptionalDouble.of(4400), OptionalInt.empty(), List.of(),
                 List.of(), List.of(), Point.ORIGIN);
-        CheckedBlock max = new CheckedBlock(6, OptionalDouble.of(4000), OptionalInt.empty(), List.of(),
+        // 4100 rpm at the generic profile's 410 rpm per volt: 10 V, just above the 9.998 V written
+        CheckedBlock max = new CheckedBlock(6, OptionalDouble.of(4100), OptionalInt.empty(), List.of(),
                 List.of(), List.of(), Point.ORIGIN);
         List<String> out = Fixtures.run("galil", AT_ORIGIN, d, over, max);
         assertEquals(List.of("OF ,,9.9980", "OF ,,0.0000"), body(out).stream().filter(l -> l.startsWith("OF")).toList());

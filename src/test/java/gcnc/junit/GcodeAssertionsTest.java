@@ -30,9 +30,15 @@ class GcodeAssertionsTest {
 
     @Test
     void oneDynamicTestPerProgramInAFolder() throws Throwable {
-        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(Path.of("samples"), "generic").collect(Collectors.toList());
+        // .nc only: samples/shop-project/ holds the sample shop's .gcode programs, for its own machine
+        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(Path.of("samples"), GcodeAssertions.session("generic"),
+                List.of("nc")).collect(Collectors.toList());
         assertEquals(List.of("arcs.nc", "bishop.nc", "dwell-css.nc", "home.nc", "offsets.nc", "turning.nc", "units.nc"),
                 tests.stream().map(DynamicTest::getDisplayName).collect(Collectors.toList()));
+        // the default list (gcnc.ProgramFiles.EXTENSIONS, as the command line's) takes them too
+        List<String> all = GcodeAssertions.everyProgramIn(Path.of("samples"), "generic").map(DynamicTest::getDisplayName)
+                .collect(Collectors.toList());
+        assertTrue(all.contains("shop-project/src/main/gcode/o1201-pin.gcode"), all.toString());
         for (DynamicTest t : tests) {
             t.getExecutable().execute();
         }

@@ -291,7 +291,7 @@ class ProfileLoaderTest {
         assertFault(GOOD.replace("vector.deceleration = 1000000", "vector.deceleration = -5"), "vector.deceleration",
                 "must be greater than 0");
         assertFault(GOOD.replace("spindle.max_rpm = 4000", "spindle.max_rpm = 0"), "spindle.max_rpm", "greater than 0");
-        assertFault(GOOD.replace("spindle.rpm_per_volt = 400", "spindle.rpm_per_volt = -400"), "spindle.rpm_per_volt",
+        assertFault(GOOD.replace("spindle.rpm_per_volt = 410", "spindle.rpm_per_volt = -400"), "spindle.rpm_per_volt",
                 "greater than 0");
     }
 

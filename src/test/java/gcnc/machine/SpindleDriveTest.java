@@ -37,14 +37,27 @@ class SpindleDriveTest {
         assertEquals(List.of("4000", "40", "100", "400"), e.diagnostic().args().stream().map(String::valueOf).toList());
     }
 
-    /** 10 V exactly is the top of the output (the backend writes 9.998 V with warning E204): accepted. */
-    @Test
-    void aDriveThatReachesTheTopSpeedAtTenVoltsIsAccepted() throws Exception {
+    private static Path withGain(String gain) throws Exception {
         String text = Files.readString(Path.of("src/test/resources/gcnc/machine/slow-drive.machine"))
-                .replaceFirst("spindle.rpm_per_volt = 100", "spindle.rpm_per_volt = 400");
-        Path ok = Files.createTempDirectory("gcnc-drive").resolve("ok.machine");
-        Files.writeString(ok, text);
-        assertEquals(4000, ProfileLoader.load(ok.toString(), TableSource.builtIn(), Tables.builtIn()).maxRpm());
+                .replaceFirst("spindle.rpm_per_volt = 100", "spindle.rpm_per_volt = " + gain);
+        Path p = Files.createTempDirectory("gcnc-drive").resolve("drive.machine");
+        Files.writeString(p, text);
+        return p;
+    }
+
+    /**
+     * 10 V exactly is more than the 9.998 V the backend writes: every program at the machine's top
+     * speed would get warning E204 (clamped): the profile is refused at load, E405 (issue 22).
+     */
+    @Test
+    void aDriveThatNeedsTenVoltsAtTheTopSpeedIsRefusedSoThatNoProgramIsWarnedForIt() throws Exception {
+        TableException e = assertThrows(TableException.class,
+                () -> ProfileLoader.load(withGain("400").toString(), TableSource.builtIn(), Tables.builtIn()));
+        assertEquals(Code.E405_SPINDLE_TOP_SPEED_CLAMPED, e.diagnostic().code());
+        assertEquals(List.of("4000", "10", "400", "400.081"), e.diagnostic().args());
+        // just under 9.998 V at 4000 r/min: accepted, and S4000 gives no E204
+        assertEquals(4000, ProfileLoader.load(withGain("400.081").toString(), TableSource.builtIn(), Tables.builtIn())
+                .maxRpm());
     }
 
     @ParameterizedTest

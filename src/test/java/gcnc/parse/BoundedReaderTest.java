@@ -54,4 +54,76 @@ class BoundedReaderTest {
         assertEquals(program, readAll(new BoundedReader(new StringReader(program), d, Origin.PROGRAM)));
         assertEquals("", found(d));
     }
+
+    /**
+     * Random texts of letters and line ends, read in random chunks, against the rule read one
+     * character at a time (how BoundedReader read before issue 23 made its loop faster): the same
+     * characters kept, the same E503 and E504 at the same places.
+     */
+    @Test
+    void randomTextsInRandomChunksFollowTheRuleCharacterByCharacter() throws IOException {
+        java.util.Random random = new java.util.Random(23);
+        String alphabet = "aaaaab\n\r";
+        for (int n = 0; n < 5000; n++) {
+            StringBuilder t = new StringBuilder();
+            for (int i = random.nextInt(60); i > 0; i--) {
+                t.append(alphabet.charAt(random.nextInt(alphabet.length())));
+            }
+            int lineLimit = 1 + random.nextInt(8);
+            long textLimit = 1 + random.nextInt(70);
+            Diagnostics d = new Diagnostics();
+            long seed = random.nextLong();
+            Reader chunks = new Reader() {
+                private final java.util.Random sizes = new java.util.Random(seed);
+                private final StringReader in = new StringReader(t.toString());
+
+                @Override
+                public int read(char[] b, int off, int len) throws IOException {
+                    return in.read(b, off, Math.min(len, 1 + sizes.nextInt(5)));
+                }
+
+                @Override
+                public void close() {
+                }
+            };
+            String kept = readAll(new BoundedReader(chunks, d, Origin.PROGRAM, lineLimit, textLimit));
+            StringBuilder expected = new StringBuilder();
+            List<String> findings = new ArrayList<>();
+            int line = 1;
+            int col = 0;
+            boolean cr = false;
+            boolean skip = false;
+            for (int k = 0; k < t.length(); k++) {
+                if (k + 1 > textLimit) {
+                    findings.add(line + ":" + Math.max(1, col + 1) + ":E504 [" + textLimit + "]");
+                    break;
+                }
+                char c = t.charAt(k);
+                if (c == '\n' || c == '\r') {
+                    if (!(c == '\n' && cr)) {
+                        line++;
+                    }
+                    cr = c == '\r';
+                    col = 0;
+                    skip = false;
+                    expected.append(c);
+                } else {
+                    cr = false;
+                    if (!skip && ++col > lineLimit) {
+                        skip = true;
+                        findings.add(line + ":" + col + ":E503 [" + lineLimit + "]");
+                    } else if (!skip) {
+                        expected.append(c);
+                    }
+                }
+            }
+            String what = t.toString().replace("\r", "\\r").replace("\n", "\\n") + " limits " + lineLimit + ", " + textLimit;
+            assertEquals(expected.toString(), kept, what);
+            findings.sort(null);
+            List<String> actual = new ArrayList<>(List.of(found(d).split(", ")));
+            actual.removeIf(String::isEmpty);
+            actual.sort(null);
+            assertEquals(findings, actual, what);
+        }
+    }
 }

@@ -73,6 +73,23 @@ class ArcVerdictTest {
         assertEquals(List.of("E202@9"), compile(program));
     }
 
+    /**
+     * ArcVerdict remembers the arcs it judged clean (issue 23: a roughing program repeats them): the
+     * same arc cut again is clean again, and an arc with a finding is reported at every line that
+     * cuts it, as compile reports it, not once.
+     */
+    @Test
+    void aRepeatedArcIsJudgedAtEveryLineItIsCut() throws Exception {
+        String bad = "G03 X1.99 Z-0.001 R100.\n";
+        String good = "G03 X2.1 Z-0.1 R0.1\n";
+        String back = "G00 X2.2\nZ0.1\nG01 X1.9\nZ0.\n";
+        String program = "%\nO1005\nG20 G18 G40 G54 G80 G99\nT0101\nG97 S1000 M03\nG00 X2.2 Z0.1\nG01 X1.9 F0.005\nZ0.\n"
+                + good + back + good + back + bad + back + bad + back + good + "G00 X2.2\nZ1.\nM30\n%\n";
+        List<String> expected = List.of("E308@19", "E308@24");
+        assertEquals(expected, compile(program));
+        assertEquals(expected, check(program));
+    }
+
     /** Radii from a fraction of the chord's length to thousands of times it, both directions. */
     @ParameterizedTest(name = "{0} R{1} over {2}")
     @CsvSource({"G03,0.05,0.045", "G02,0.05,0.045", "G03,1.,0.045", "G03,10.,0.045", "G02,50.,0.045",

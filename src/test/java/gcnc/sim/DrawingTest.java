@@ -45,9 +45,11 @@ class DrawingTest {
     @Test
     void theGridIsInProgramCoordinates() throws Exception {
         String svg = svg(simulate(PROGRAM), true);
-        // the pass ran from Z2. to Z-30. at X41.: program zero and the pass's end are grid lines
+        // the view runs from behind the jaws' face (Z-150, as the blank's face is 150 mm out) to Z2.:
+        // program zero and every 20 mm of Z are grid lines
         assertTrue(svg.contains(">Z0</text>"), "Z0 line");
-        assertTrue(svg.contains(">Z-30</text>"), "Z-30 line");
+        assertTrue(svg.contains(">Z-20</text>"), "Z-20 line");
+        assertTrue(svg.contains(">Z-140</text>"), "Z-140 line");
         assertTrue(svg.contains(">X40</text>"), "X as a diameter: the 44 mm blank reaches X44");
         assertFalse(svg.contains(">X22</text>"), "not the radius");
     }

@@ -63,7 +63,7 @@ class StudioBrowserTest {
         }
         Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
         Files.writeString(dir.resolve("other.nc"), "M30\n");
-        wait = new WebDriverWait(browser, Duration.ofSeconds(15));
+        wait = new WebDriverWait(browser, Duration.ofSeconds(45)); // a shared, busy machine: a first simulation can take a while
         browser.get("about:blank"); // leaves the last test's page (an unsaved edit there would ask first)
         dismissAnyAlert();
         browser.get(studio.url("bishop.nc").toString());

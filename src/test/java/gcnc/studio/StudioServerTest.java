@@ -78,7 +78,12 @@ class StudioServerTest {
 
     /** One request; {@code headers} null values are left out (so Host can be missing). */
     static Reply request(String method, String target, Map<String, String> headers, String body) throws IOException {
-        try (Socket s = new Socket(InetAddress.getLoopbackAddress(), studio.port())) {
+        return request(studio, method, target, headers, body);
+    }
+
+    /** One request to the studio {@code on}. */
+    static Reply request(Studio on, String method, String target, Map<String, String> headers, String body) throws IOException {
+        try (Socket s = new Socket(InetAddress.getLoopbackAddress(), on.port())) {
             s.setSoTimeout(20000);
             StringBuilder req = new StringBuilder(method + " " + target + " HTTP/1.1\r\n");
             for (Map.Entry<String, String> h : headers.entrySet()) {
@@ -104,9 +109,14 @@ class StudioServerTest {
     }
 
     static Map<String, String> good() {
+        return good(studio);
+    }
+
+    /** The headers the studio's own page sends to {@code on}. */
+    static Map<String, String> good(Studio on) {
         Map<String, String> h = new java.util.LinkedHashMap<>();
-        h.put("Host", "127.0.0.1:" + studio.port());
-        h.put(Guard.TOKEN_HEADER, studio.token());
+        h.put("Host", "127.0.0.1:" + on.port());
+        h.put(Guard.TOKEN_HEADER, on.token());
         return h;
     }
 

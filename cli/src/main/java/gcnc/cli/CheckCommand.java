@@ -18,9 +18,14 @@ import picocli.CommandLine.Parameters;
         exitCodeList = {"0:no errors", "1:a program has errors", "2:usage, unreadable file, broken table or profile"})
 final class CheckCommand extends RunCommand {
     @Parameters(arity = "1..*", paramLabel = "FILE",
-            description = "G-code programs to check; a folder: every .nc, .ngc and .tap file in it (any case,"
-                    + " sub-folders too); - reads standard input.")
+            description = "G-code programs to check; a folder: every program in it by its extension (--extensions;"
+                    + " any case, sub-folders too); - reads standard input.")
     List<Path> files;
+
+    @picocli.CommandLine.Option(names = "--extensions", split = ",", paramLabel = "EXT[,EXT...]",
+            description = "The extensions of the programs in a folder (default: nc,ngc,tap,gcode). A folder's other"
+                    + " files are skipped, and counted in a note.")
+    List<String> extensions;
 
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) {
@@ -37,12 +42,18 @@ final class CheckCommand extends RunCommand {
                 programs.add(file);
                 continue;
             }
+            List<String> ext = extensions == null || extensions.isEmpty() ? ProgramFiles.configured()
+                    : ProgramFiles.normal(extensions);
             try {
-                List<Path> found = ProgramFiles.in(file, ProgramFiles.EXTENSIONS);
+                ProgramFiles.Scan scan = ProgramFiles.scan(file, ext);
+                List<Path> found = scan.programs();
                 if (found.isEmpty()) {
                     faults++;
                     status = reporter.ioFault(SourceFiles.display(file), gcnc.diag.Phrase.IO_CANNOT_CHECK,
-                            new IOException(gcnc.diag.Phrase.IO_NO_PROGRAM.with("." + String.join(", .", ProgramFiles.EXTENSIONS))));
+                            new IOException(gcnc.diag.Phrase.IO_NO_PROGRAM.with("." + String.join(", .", ext))));
+                }
+                if (scan.skippedCount() > 0) {
+                    reporter.say(skipped(reporter.phrases(), SourceFiles.display(file), scan, ext));
                 }
                 programs.addAll(found);
             } catch (IOException e) {
@@ -80,5 +91,13 @@ final class CheckCommand extends RunCommand {
                     errors == 0 ? say.get("no_errors") : say.count(errors, "error")));
         }
         return status;
+    }
+
+    /** "parts/: skipped 3 files (.txt 2, .dmc 1): not a program's extension (.nc, .ngc, ...); --extensions to add one". */
+    static String skipped(Phrases say, String folder, ProgramFiles.Scan scan, List<String> ext) {
+        StringBuilder which = new StringBuilder();
+        scan.skipped().forEach((e, n) -> which.append(which.length() > 0 ? ", " : "")
+                .append(e.isEmpty() ? say.get("check.no_extension") : "." + e).append(' ').append(n));
+        return say.get("check.skipped", folder, scan.skippedCount(), which, "." + String.join(", .", ext));
     }
 }

@@ -84,6 +84,9 @@ final class CommonOptions {
         if (mixee != null && mixee.root().userObject() instanceof Main m && m.lang != null) {
             return m.lang;
         }
+        if (mixee != null && mixee.root().userObject() instanceof Main m) {
+            return fromEnvironment(m.streams().env()); // the client's environment, under the resident checker
+        }
         return fromEnvironment(System.getenv());
     }
 

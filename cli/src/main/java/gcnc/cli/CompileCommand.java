@@ -50,7 +50,7 @@ final class CompileCommand extends RunCommand {
         Reporter reporter = setup.reporter();
         boolean toStdout = output != null && SourceFiles.isStdin(output);
         // -o /dev/stdout (or the file stdout goes to) is standard output too: the DMC alone on it
-        boolean stdoutTaken = output != null && SourceFiles.isStandardOutput(output);
+        boolean stdoutTaken = output != null && (SourceFiles.isStdin(output) || streams().isStandardOutput().test(output));
         refuseUsage(reporter.format(), stdoutTaken);
         Optional<SimOptions> sim = simulation(profile, err, reporter.phrases());
         if (stdoutTaken) {
@@ -91,7 +91,10 @@ final class CompileCommand extends RunCommand {
             Phrases say = reporter.phrases();
             reporter.say(say.get("compile.written", name, say.count(r.blocks(), "block"), targetName,
                     say.count(mapper.lines(), "line"), dialect.name()));
-            r.simulation().ifPresent(s -> reporter.say(SimSummary.format(s, reporter.phrases())));
+            r.simulation().ifPresent(s -> {
+                reporter.say(SimSummary.format(s, reporter.phrases()));
+                reporter.simulation(name, s);
+            });
             return ExitCode.CLEAN;
         }
     }

@@ -4,6 +4,7 @@ import gcnc.diag.Code;
 import gcnc.tables.CodeTable;
 import gcnc.tables.ErrorBasis;
 import gcnc.tables.ErrorMessages;
+import gcnc.tables.Explanations;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import java.io.PrintWriter;
@@ -18,10 +19,15 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** {@code gcnc explain E305}: what a diagnostic code means, from errors.csv. */
+/**
+ * {@code gcnc explain E305}: what a diagnostic code means: its message (errors.csv), which control
+ * behaviour it stands for (error_basis.csv), and in prose why it is reported, what the control
+ * does, the usual fix and an example program that brings it about (tables/explain/).
+ */
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = "Explain diagnostic codes: severity, the message in English and Spanish, which control"
-                + " behaviour the rule stands for (tables/error_basis.csv) and the table's explanation if it has one.",
+                + " behaviour the rule stands for (tables/error_basis.csv), why it is reported, what the control"
+                + " does, the usual fix and an example program (tables/explain/).",
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:every code was explained", "2:no such code, or a broken errors.csv"})
 final class ExplainCommand implements Callable<Integer> {
@@ -49,6 +55,8 @@ final class ExplainCommand implements Callable<Integer> {
         } catch (TableException e) {
             return Reporter.tableFault(spec.commandLine().getErr(), e, lang);
         }
+        Explanations prose = Explanations.builtIn();
+        Phrases say = new Phrases(lang);
         boolean placeholders = false;
         for (Code c : wanted) {
             CodeTable.Entry e = table.find(c).orElseThrow(() ->
@@ -57,19 +65,53 @@ final class ExplainCommand implements Callable<Integer> {
             ErrorMessages.Lang other = lang == ErrorMessages.Lang.EN ? ErrorMessages.Lang.ES : ErrorMessages.Lang.EN;
             out.println("  " + lang.name().toLowerCase(Locale.ROOT) + ": " + e.text(lang));
             out.println("  " + other.name().toLowerCase(Locale.ROOT) + ": " + e.text(other));
-            basis.find(c).ifPresent(b -> out.println("  " + BASIS_LABELS.get(lang)[b.behaviour().ordinal()]
+            java.util.Optional<ErrorBasis.Row> row = basis.find(c);
+            row.ifPresent(b -> out.println("  " + BASIS_LABELS.get(lang)[b.behaviour().ordinal()]
                     + " (" + BASIS_LABELS.get(lang)[3 + b.source().ordinal()] + "): " + b.text(lang)));
             if (!e.explanation().isEmpty()) {
                 out.println();
                 out.println("  " + e.explanation());
             }
+            prose(out, say, prose, c, e, row.isPresent());
             placeholders |= e.english().contains("{0}");
         }
         if (placeholders) {
-            out.println("({0}, {1}... stand for the word or value each finding names.)");
+            out.println(say.get("explain.placeholders"));
         }
         out.flush();
         return ExitCode.CLEAN;
+    }
+
+    /**
+     * tables/explain/: why, what the control does (when error_basis.csv has no row for it: the
+     * prose's own words, else the severity's), the fix and the example; for a code no program
+     * brings about, why not.
+     */
+    private void prose(PrintWriter out, Phrases say, Explanations prose, Code c, CodeTable.Entry e, boolean basisShown) {
+        String internal = Explanations.INTERNAL.get(c);
+        java.util.Optional<Explanations.Prose> p = prose.prose(c, lang);
+        if (internal != null || p.isEmpty()) {
+            out.println();
+            out.println("  " + say.get("explain.internal", internal == null ? "" : internal));
+            return;
+        }
+        out.println();
+        out.println("  " + say.get("explain.cause", p.get().cause()));
+        if (!p.get().control().isEmpty() || !basisShown) {
+            String control = p.get().control().isEmpty()
+                    ? say.get("explain.control." + e.severity().label()) : p.get().control();
+            out.println("  " + say.get("explain.control", control));
+        }
+        out.println("  " + say.get("explain.fix", p.get().fix()));
+        prose.example(c).filter(x -> !x.lines().isEmpty()).ifPresent(x -> {
+            String machine = x.machine() + (x.control().isEmpty() ? "" : ", control " + x.control())
+                    + (x.dialect().equals("galil") ? "" : ", --dialect " + x.dialect());
+            out.println("  " + (x.prelude().isEmpty() ? say.get("explain.example", machine)
+                    : say.get("explain.example_after", machine, String.join(" / ", x.prelude()))));
+            for (String line : x.lines()) {
+                out.println("      " + Printable.escape(line));
+            }
+        });
     }
 
     /** The words before a basis row: the control's behaviour, then the rule's source, per language. */

@@ -29,8 +29,28 @@ public final class Main implements Runnable {
         }
     }
 
-    /** Standard input and output as bytes: a program read from {@code -}, a DMC written to {@code -o -}. */
-    record Streams(InputStream in, OutputStream out) {
+    /**
+     * What a run is given besides its arguments: standard input and output as bytes (a program read
+     * from {@code -}, a DMC written to {@code -o -}), the environment (the language of the messages),
+     * whether it runs on a terminal (carets under findings) and which file is its standard output
+     * ({@code -o log > log}). A cold run takes this JVM's own; the resident checker (gcnc.daemon) its
+     * client's, so that both print the same bytes.
+     */
+    record Streams(InputStream in, OutputStream out, java.util.Map<String, String> env, boolean console,
+                   java.util.function.Predicate<Path> isStandardOutput) {
+        /** This JVM's standard input and output, environment and terminal. */
+        Streams(InputStream in, OutputStream out) {
+            this(in, out, System.getenv(), System.console() != null, SourceFiles::isStandardOutput);
+        }
+    }
+
+    /**
+     * A run as the resident checker makes one for a client: the client's standard input, output and
+     * error, its environment, whether its standard input and output are a terminal, and which file its
+     * standard output is.
+     */
+    public record Invocation(InputStream in, OutputStream out, OutputStream err, java.util.Map<String, String> env,
+                             boolean console, java.util.function.Predicate<Path> isStandardOutput) {
     }
 
     @CommandLine.Spec
@@ -67,10 +87,13 @@ public final class Main implements Runnable {
         m.put("check", CheckCommand.class);
         m.put("compile", CompileCommand.class);
         m.put("simulate", SimulateCommand.class);
+        m.put("run", SendCommand.class);
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
         m.put("studio", StudioCommand.class);
+        m.put("daemon", DaemonCommand.class);
+        m.put("controller", ControllerCommand.class);
         m.put("completion", CompletionCommand.class);
         m.put("help", CommandLine.HelpCommand.class);
         return java.util.Collections.unmodifiableMap(m);
@@ -102,11 +125,30 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = commandLine(args);
+        System.exit(execute(args, new Invocation(System.in, System.out, System.err, System.getenv(),
+                System.console() != null, SourceFiles::isStandardOutput)));
+    }
+
+    /**
+     * Runs one command line and returns its exit status: what {@link #main} does in a JVM of its own,
+     * and the resident checker in a warm one (the same code for both, so the same bytes).
+     * {@code onError} gets what a command threw, which picocli would otherwise print with a stack trace
+     * (the resident checker then hands the run to a cold JVM).
+     */
+    public static int execute(String[] args, Invocation run) {
+        return execute(args, run, null);
+    }
+
+    public static int execute(String[] args, Invocation run, CommandLine.IExecutionExceptionHandler onError) {
+        CommandLine cl = commandLine(new Streams(run.in(), run.out(), run.env(), run.console(), run.isStandardOutput()),
+                HelpLanguage.of(args, run.env()), args);
         // Messages are UTF-8 whatever the locale: in LANG=C Java would print every 'é' or 'ñ' as '?'.
-        cl.setOut(new PrintWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), true));
-        cl.setErr(new PrintWriter(new OutputStreamWriter(System.err, StandardCharsets.UTF_8), true));
-        System.exit(cl.execute(args));
+        cl.setOut(new PrintWriter(new OutputStreamWriter(run.out(), StandardCharsets.UTF_8), true));
+        cl.setErr(new PrintWriter(new OutputStreamWriter(run.err(), StandardCharsets.UTF_8), true));
+        if (onError != null) {
+            cl.setExecutionExceptionHandler(onError);
+        }
+        return cl.execute(args);
     }
 
     /**

@@ -1,6 +1,7 @@
 package gcnc.cli;
 
 import gcnc.tables.ErrorMessages;
+import gcnc.tables.Plurals;
 import java.text.MessageFormat;
 import java.util.Locale;
 import java.util.ResourceBundle;
@@ -26,11 +27,12 @@ final class Phrases {
         for (int i = 0; i < args.length; i++) {
             text[i] = String.valueOf(args[i]);
         }
-        return new MessageFormat(bundle.getString(key), Locale.ROOT).format(text);
+        java.util.List<String> shown = java.util.Arrays.stream(text).map(String::valueOf).toList();
+        return new MessageFormat(Plurals.choose(bundle.getString(key), shown), Locale.ROOT).format(text);
     }
 
-    /** "1 block", "5 blocks" ({@code what}.one and .other). */
+    /** "0 blocks", "1 block", "5 blocks": the form the key's ChoiceFormat picks for {@code n}. */
     String count(long n, String what) {
-        return get(what + (n == 1 ? ".one" : ".other"), n);
+        return get(what, n);
     }
 }

@@ -30,8 +30,18 @@ final class ReportOptions {
                     + " (auto: when gcnc runs on a terminal).")
     Caret caret;
 
-    /** Whether to show source lines: asked for, or on a terminal. */
-    boolean carets() {
-        return caret == Caret.ALWAYS || caret == Caret.AUTO && System.console() != null;
+    @Option(names = {"--color", "--colour"}, paramLabel = "auto|always|never", defaultValue = "auto",
+            description = "Colour in the GNU format (auto: on a terminal, unless NO_COLOR is set).")
+    Colour.When color;
+
+    /** The report's colour for this run (off unless asked for or on a terminal: {@link Colour}). */
+    Colour colour() {
+        return color == Colour.When.NEVER ? Colour.OFF
+                : Colour.of(color, System.getenv(), color == Colour.When.AUTO && Colour.stderrIsTerminal());
+    }
+
+    /** Whether to show source lines: asked for, or on a terminal ({@code console}: standard input and output are one). */
+    boolean carets(boolean console) {
+        return caret == Caret.ALWAYS || caret == Caret.AUTO && console;
     }
 }

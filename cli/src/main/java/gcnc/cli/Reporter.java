@@ -38,6 +38,38 @@ final class Reporter {
     private final PrintWriter err;
     private final ErrorMessages.Lang lang;
     private final List<Finding> findings = new ArrayList<>();
+    /** The simulations' summaries for the JSON document, by file, in the order they ran. */
+    private final List<SimulationJson.Run> simulations = new ArrayList<>();
+    /** Colour on a terminal (--color; NO_COLOR), else none: the report as it is without colour. */
+    private Colour colour = Colour.OFF;
+
+    /** The GNU line's pieces escaped ({@link Printable}) one by one, then coloured. */
+    private GnuRenderer.Paint painted() {
+        return new GnuRenderer.Paint() {
+            @Override
+            public String place(String text) {
+                return colour.place(Printable.escape(text));
+            }
+
+            @Override
+            public String severity(gcnc.diag.Severity s, String label) {
+                return colour.severity(s, label);
+            }
+
+            @Override
+            public String text(String text) {
+                return Printable.escape(text);
+            }
+        };
+    }
+
+    /** Colours the GNU report from now on (on a terminal, or as --color says). */
+    void colour(Colour c) {
+        this.colour = java.util.Objects.requireNonNull(c);
+    }
+
+    /** The finding the GNU report's last line names (gcnc explain). */
+    private final GnuRenderer.Hint hint = new GnuRenderer.Hint();
     private TableSource source = TableSource.builtIn();
     private Messages messages;
     private PrintWriter human;
@@ -97,6 +129,13 @@ final class Reporter {
         }
     }
 
+    /** A simulation's summary for the JSON document ({@code "simulations"}); GNU and SARIF have their own. */
+    void simulation(String path, gcnc.sim.SimReport report) {
+        if (format == Format.JSON) {
+            simulations.add(new SimulationJson.Run(path, report));
+        }
+    }
+
     /** Every finding of one file; returns how many were errors. */
     int report(String path, Diagnostics diags) {
         for (Diagnostic d : diags.sorted()) {
@@ -111,10 +150,19 @@ final class Reporter {
 
     private void report(String path, Diagnostic d, Messages m) {
         if (format == Format.GNU) {
-            err.println(Printable.escape(new GnuRenderer(m).render(path, d)));
+            if (!gcnc.tables.Explanations.INTERNAL.containsKey(d.code())) {
+                hint.saw(d); // a file or table fault is not what gcnc explain is for
+            }
+            if (!colour.on()) {
+                err.println(Printable.escape(new GnuRenderer(m).render(path, d)));
+            } else {
+                err.println(new GnuRenderer(m).render(path, d, painted()));
+            }
             String line = programLines == null ? null : programLines.line(path, d.span().line());
             if (line != null) {
-                err.println(SourceLines.withCaret(line, d.span()));
+                String shown = SourceLines.withCaret(line, d.span());
+                int caret = shown.lastIndexOf('\n') + 1;
+                err.println(shown.substring(0, caret) + colour.caret(shown.substring(caret)));
             }
         } else {
             findings.add(Finding.of(path, d, m));
@@ -137,14 +185,26 @@ final class Reporter {
         return ExitCode.USAGE;
     }
 
-    /** Writes the JSON or SARIF document, findings sorted by file and place; nothing for GNU. */
+    /**
+     * Writes the JSON or SARIF document, findings sorted by file and place; for GNU, the closing
+     * hint (rustc's "For more information about this error, try ..."), once for the run, unless quiet.
+     */
     void finish() {
         if (format == Format.GNU) {
+            if (!quiet) {
+                hint.chosen().ifPresent(d -> {
+                    String text = new GnuRenderer(messages()).hint(d);
+                    int tick = text.indexOf('`');
+                    int end = text.lastIndexOf('`');
+                    err.println(tick < 0 || end <= tick ? text
+                            : text.substring(0, tick) + colour.command(text.substring(tick, end + 1)) + text.substring(end + 1));
+                });
+            }
             return;
         }
         try {
             if (format == Format.JSON) {
-                JsonRenderer.write(findings, Main.version(), out);
+                JsonRenderer.write(findings, Main.version(), out, json -> SimulationJson.write(simulations, json));
             } else {
                 SarifRenderer.write(findings, rules(), Main.version(), out);
             }

@@ -27,8 +27,11 @@ abstract class RunCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Reporter reporter = new Reporter(report.format, report.quiet, out, err, common.language());
-        if (report.carets()) {
+        if (report.carets(streams().console())) {
             reporter.showSource();
+        }
+        if (report.format == Reporter.Format.GNU) {
+            reporter.colour(report.colour());
         }
         int status;
         try {

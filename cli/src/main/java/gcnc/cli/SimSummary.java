@@ -1,22 +1,44 @@
 package gcnc.cli;
 
+import gcnc.machine.Units;
+import gcnc.sim.ProgramEnvelope;
 import gcnc.sim.SimReport;
 import java.math.BigDecimal;
 import java.math.RoundingMode;
 
-/** The simulator's summary as printed after a run. */
+/**
+ * The simulator's summary as printed after a run. Its envelope is in the program's terms first
+ * (X as the program writes it, Z from work zero, the program's units), the machine frame second:
+ * {@code envelope X 0.000..44.000 (diameter), Z -30.000..2.000 mm from work zero; machine X
+ * 0.000..22.000 mm (radius), Z 120.000..152.000 mm}.
+ */
 final class SimSummary {
     private SimSummary() {
     }
 
     static String format(SimReport r, Phrases phrases) {
-        String envelope = Double.isNaN(r.xMinMm()) ? phrases.get("simulation.no_motion")
-                : phrases.get("simulation.envelope", millis(r.xMinMm()) + ".." + millis(r.xMaxMm()),
-                        millis(r.zMinMm()) + ".." + millis(r.zMaxMm()));
+        String envelope = Double.isNaN(r.xMinMm()) ? phrases.get("simulation.no_motion") : envelope(r, phrases);
         long s = Math.round(r.cycleSeconds());
         return phrases.get("simulation.summary", phrases.count(r.sequences(), "sequence"),
                 phrases.count(r.segments(), "segment"), phrases.count(r.findings(), "finding"), envelope,
                 s / 3600 + ":" + two(s / 60 % 60) + ":" + two(s % 60));
+    }
+
+    private static String envelope(SimReport r, Phrases phrases) {
+        String machineX = millis(r.xMinMm()) + ".." + millis(r.xMaxMm());
+        String machineZ = millis(r.zMinMm()) + ".." + millis(r.zMaxMm());
+        ProgramEnvelope p = r.program();
+        if (p == null) {
+            return phrases.get("simulation.envelope_machine", machineX, machineZ);
+        }
+        return phrases.get("simulation.envelope", programmed(p.xMin(), p.units()) + ".." + programmed(p.xMax(), p.units()),
+                phrases.get(p.diameter() ? "simulation.diameter" : "simulation.radius"),
+                programmed(p.zMin(), p.units()) + ".." + programmed(p.zMax(), p.units()), p.unit(), machineX, machineZ);
+    }
+
+    /** A program coordinate with the decimals its units are written with: 3 for mm, 4 for inches. */
+    static String programmed(double v, Units u) {
+        return BigDecimal.valueOf(v).setScale(u == Units.INCH ? 4 : 3, RoundingMode.HALF_UP).toPlainString();
     }
 
     /**

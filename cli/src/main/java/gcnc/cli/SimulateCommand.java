@@ -107,11 +107,12 @@ final class SimulateCommand extends RunCommand {
         reporter.report(shown, diags);
         if (report.isPresent()) {
             reporter.say(SimSummary.format(report.get(), reporter.phrases()));
+            reporter.simulation(shown, report.get());
             if (svg != null) {
                 out.flush();
                 try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(svg)) {
                     String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
-                    SvgWriter.write(report.get(), title, o.writer(), !hideRapids);
+                    SvgWriter.write(report.get(), title, number(file), o.writer(), !hideRapids);
                     o.commit();
                     reporter.say(reporter.phrases().get("simulate.drawing", svgToStdout ? "<stdout>" : svg));
                 } catch (IOException e) {
@@ -122,6 +123,18 @@ final class SimulateCommand extends RunCommand {
             reporter.say(reporter.phrases().get("simulate.nothing", name, reporter.phrases().count(diags.errorCount(), "error")));
         }
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
+    }
+
+    /** The program's O number for the drawing's title block; null for standard input, a DMC or a file without one. */
+    private static String number(Path file) {
+        if (SourceFiles.isStdin(file) || file.toString().endsWith(".dmc")) {
+            return null;
+        }
+        try (Reader in = gcnc.Session.decode(java.nio.file.Files.newInputStream(file))) {
+            return gcnc.ProgramNumber.of(in).orElse(null);
+        } catch (IOException e) {
+            return null; // it was read a moment ago; the title block then says it has no number
+        }
     }
 
     /**

@@ -152,7 +152,7 @@ public enum Code {
     E113_M_WITHOUT_OUTPUT(113),
     /** Checker (warning): a sequence number that an earlier block already has. */
     E114_DUPLICATE_SEQUENCE_NUMBER(114),
-    /** Checker (note): later blocks that broke the same prerequisite as the first one reported. */
+    /** Note: later blocks that broke the same prerequisite as the first one reported (the checker), or got the same warning with the same arguments (any stage: Diagnostics folds it). */
     E115_SAME_CAUSE(115),
     /** Checker: the error cap was reached; checking stopped there. */
     E116_ERROR_CAP(116),
@@ -460,6 +460,12 @@ public enum Code {
     E403_PROFILE_COUNTS_OVERFLOW(403),
     /** A table, control or profile file larger than gcnc reads (a link to a device, a file of another kind). */
     E404_TABLE_FILE_TOO_LARGE(404),
+    /**
+     * Profile: spindle.max_rpm needs more than the 9.998 V the OF output gives (but not more than
+     * 10 V, E410) at spindle.rpm_per_volt: every program at the machine's own top speed would get
+     * E204 (its spindle clamped, a little slower) at every S that asks for it.
+     */
+    E405_SPINDLE_TOP_SPEED_CLAMPED(405),
     /** Profile: spindle.max_rpm needs more than the 10 V the OF output gives at spindle.rpm_per_volt: every compile at top speed would be E203. */
     E410_SPINDLE_TOP_SPEED_VOLTS(410),
     /** Profile: galil.model names no model of tables/galil_models.csv. */
@@ -652,7 +658,39 @@ public enum Code {
      * Checker (note): M29, rigid tapping: the control gears the tap to the spindle; gcnc's G84
      * feeds it at the F in force and reverses the spindle, as for a floating holder.
      */
-    E720_RIGID_TAP_NOT_GEARED(720);
+    E720_RIGID_TAP_NOT_GEARED(720),
+
+    // --- gcnc run, the sender (issue 20, run; docs/run.md): E815-E829
+    /** Sender: the serial device named by --port does not exist. */
+    E815_PORT_MISSING(815),
+    /** Sender: the serial device exists but another program holds it (or it may not be opened). */
+    E816_PORT_HELD(816),
+    /** Sender: no connection to the controller (TCP refused, unreachable, timed out). */
+    E817_NO_CONNECTION(817),
+    /** Sender: the controller is not the model the machine profile names (^R^V), or not a Galil. */
+    E818_WRONG_CONTROLLER(818),
+    /** Sender: the program needs more of the controller (lines, labels, variables, buffer) than it has. */
+    E819_CAPACITY(819),
+    /** Sender: the controller answered ? or stopped the program with an error: its TC code and text, at the G-code line. */
+    E820_CONTROLLER_ERROR(820),
+    /** Sender: the link closed during the run; the last block completed and the one executing are named. */
+    E821_CONNECTION_DROPPED(821),
+    /** Sender: no reply within the timeout. */
+    E822_NO_REPLY(822),
+    /** Sender: a reply that is not Galil's protocol. */
+    E823_GARBAGE(823),
+    /** Sender: the program read back with UL is not the one downloaded with DL. */
+    E824_READBACK_DIFFERS(824),
+    /** Sender: the controller cannot run the program (a limit switch active, a sequence moving, a program running; or it ended the program early). */
+    E825_NOT_READY(825),
+    /** Sender: the axes are not where the program was verified to start (home). */
+    E826_NOT_AT_START(826),
+    /** Sender: --resume-at cannot continue from where the axes are. */
+    E827_CANNOT_RESUME(827),
+    /** Sender (warning): the operator stopped the run. */
+    E828_STOPPED_BY_OPERATOR(828),
+    /** Sender (warning): motors are off on the program's axes; its SH turns them on. */
+    E829_MOTORS_OFF(829);
 
     private final int number;
 

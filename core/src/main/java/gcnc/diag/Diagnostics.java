@@ -19,6 +19,10 @@ import java.util.Set;
  * reported (a block a WHILE loop, a repeat or a cycle's passes run again) is not reported again; it
  * is counted, and the first report gets a note with the count, E680 "the same in 2000 passes of this
  * block". A note that accompanies a folded finding goes with it; any other note is kept once.
+ * A warning repeated elsewhere with the same code and the same arguments (the shipped Haas
+ * profile's clamped spindle at each S4000; the same word without its point on every line) is
+ * folded too: kept once, where it was first found, with E115 "3 later blocks have the same cause
+ * (lines 12, 30, 41)"; what it says is the same, so a second report adds nothing but noise.
  *
  * <p>Caps: at most {@link #ERROR_CAP} errors are kept; the first one past it is replaced by E116
  * (once for the run: a later E116 is not repeated) and the rest are counted in {@link #errorCount}
@@ -42,6 +46,20 @@ public final class Diagnostics {
     private int[] counts = new int[16];
     /** Where each kept error or warning is in {@link #all}, by code, severity, file and place. */
     private final Map<String, Integer> byPlace = new HashMap<>();
+    /** Where each kept warning is in {@link #all}, by code, file and arguments (not place): a repeat elsewhere is folded. */
+    private final Map<String, Integer> warningByArgs = new HashMap<>();
+    /** For a kept warning repeated elsewhere: how many later places, and their lines (the first few). */
+    private final Map<Integer, Later> later = new HashMap<>();
+
+    /** The later places of a folded warning, as E115 lists them. */
+    private static final class Later {
+        int count;
+        final StringBuilder lines = new StringBuilder();
+    }
+
+    /** The most lines E115 lists for a folded warning; past it "...". */
+    static final int LATER_LINES = 10;
+
     /** Notes kept, exactly (code, file, place, text): a note is never repeated. */
     private final Set<String> notes = new HashSet<>();
     /** The last error or warning reported: the index in {@link #all} of it or of the one it was folded into; -1 past a cap. */
@@ -141,6 +159,9 @@ public final class Diagnostics {
             lastNotKept = true;
             return false;
         }
+        if (d.severity() == Severity.WARNING && foldedElsewhere(d)) {
+            return false;
+        }
         boolean room = d.severity() == Severity.ERROR ? roomForError(d) : roomForOther(d);
         if (d.severity() == Severity.ERROR && (room || d.code() != Code.E116_ERROR_CAP)) {
             errors++; // kept or past the cap; a second E116 is not another error
@@ -153,11 +174,38 @@ public final class Diagnostics {
         lastNotKept = false;
         last = keep(d);
         byPlace.put(key, last);
+        if (d.severity() == Severity.WARNING) {
+            warningByArgs.putIfAbsent(argsKey(d), last);
+        }
         if (d.severity() == Severity.ERROR) {
             keptErrors++;
         } else {
             others++;
         }
+        return true;
+    }
+
+    private static String argsKey(Diagnostic d) {
+        return d.code() + "@" + d.origin().file() + d.args();
+    }
+
+    /** A warning already kept at another place with the same code and arguments: counted there (E115), not kept. */
+    private boolean foldedElsewhere(Diagnostic d) {
+        Integer at = warningByArgs.get(argsKey(d));
+        if (at == null) {
+            return false;
+        }
+        Later l = later.computeIfAbsent(at, k -> new Later());
+        l.count++;
+        if (l.count <= LATER_LINES) {
+            l.lines.append(l.lines.length() == 0 ? "" : ", ").append(d.span().line());
+        } else if (l.count == LATER_LINES + 1) {
+            l.lines.append(", ...");
+        }
+        last = at;
+        lastNotKept = true;
+        lastSpan = d.span();
+        byPlace.put(d.code() + "/" + d.severity() + "@" + d.origin().file() + ":" + d.span(), at);
         return true;
     }
 
@@ -247,7 +295,35 @@ public final class Diagnostics {
      * open (the simulation judged the feeds check could not, E660/E661). Errors are never taken back.
      */
     public void withdraw(java.util.function.Predicate<Diagnostic> which) {
-        all.removeIf(d -> d.severity() != Severity.ERROR && which.test(d));
+        // the counts, the folded repeats and the indexes by place follow the findings that stay
+        int[] moved = new int[all.size()];
+        List<Diagnostic> kept = new ArrayList<>(all.size());
+        int[] keptCounts = new int[counts.length];
+        Map<Integer, Later> keptLater = new HashMap<>();
+        for (int k = 0; k < all.size(); k++) {
+            Diagnostic d = all.get(k);
+            if (d.severity() != Severity.ERROR && which.test(d)) {
+                moved[k] = -1;
+                continue;
+            }
+            moved[k] = kept.size();
+            keptCounts[kept.size()] = counts[k];
+            Later l = later.get(k);
+            if (l != null) {
+                keptLater.put(kept.size(), l);
+            }
+            kept.add(d);
+        }
+        all.clear();
+        all.addAll(kept);
+        counts = keptCounts;
+        later.clear();
+        later.putAll(keptLater);
+        for (Map<String, Integer> index : List.of(byPlace, warningByArgs)) {
+            index.replaceAll((key, at) -> moved[at]);
+            index.values().removeIf(at -> at < 0);
+        }
+        last = last >= 0 && last < moved.length ? moved[last] : -1;
     }
 
     /** Forgets every finding (a scratch collection reused block after block). */
@@ -257,6 +333,8 @@ public final class Diagnostics {
         }
         all.clear();
         byPlace.clear();
+        warningByArgs.clear();
+        later.clear();
         notes.clear();
         last = -1;
         lastNotKept = false;
@@ -301,6 +379,11 @@ public final class Diagnostics {
                 count = null;
             }
             copy.add(d);
+            Later l = later.get(k);
+            if (l != null) {
+                copy.add(new Diagnostic(Code.E115_SAME_CAUSE, Severity.NOTE, d.span(),
+                        List.of(Integer.toString(l.count), l.lines.toString()), d.origin().withoutCalls()));
+            }
             if (counts[k] > 1) {
                 count = new Diagnostic(Code.E680_FOLDED, Severity.NOTE, d.span(),
                         List.of(Integer.toString(counts[k])), d.origin().withoutCalls());

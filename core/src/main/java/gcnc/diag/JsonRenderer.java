@@ -18,7 +18,20 @@ public final class JsonRenderer {
     private JsonRenderer() {
     }
 
+    /**
+     * More of the document after the diagnostics, written by a front end that knows more than
+     * findings (the command line's {@code "simulations"}: gcnc.diag cannot know the simulator).
+     */
+    @FunctionalInterface
+    public interface Section {
+        void write(JsonWriter json) throws IOException;
+    }
+
     public static void write(List<Finding> findings, String toolVersion, Writer out) throws IOException {
+        write(findings, toolVersion, out, json -> { });
+    }
+
+    public static void write(List<Finding> findings, String toolVersion, Writer out, Section more) throws IOException {
         JsonWriter json = new JsonWriter(out);
         json.setIndent("  ");
         json.beginObject();
@@ -48,6 +61,7 @@ public final class JsonRenderer {
             json.endObject();
         }
         json.endArray();
+        more.write(json);
         json.endObject();
         json.flush();
         out.write('\n');

@@ -197,7 +197,11 @@ public enum Phrase {
     /** galil_models.csv: a whole number outside what the column can hold ({0} column, {1} value, {2}..{3}). */
     GALIL_MODEL_RANGE,
     /** galil_models.csv: a firmware-1.2a figure smaller than the older one ({0} column, {1} the older column). */
-    GALIL_FIRMWARE_SMALLER;
+    GALIL_FIRMWARE_SMALLER,
+    /** The last line of a GCC-style report (as rustc's): where to read more about an error ({0}: its code). */
+    EXPLAIN_HINT_ERROR,
+    /** The same for a run whose findings are warnings only ({0}: the first warning's code). */
+    EXPLAIN_HINT_WARNING;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

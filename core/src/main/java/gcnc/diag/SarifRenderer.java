@@ -16,8 +16,16 @@ import java.util.Map;
  * Columns count UTF-16 code units, as gcnc's do (SARIF's default column kind).
  */
 public final class SarifRenderer {
-    /** A diagnostic code as SARIF describes it: its default severity and the text of its message. */
-    public record Rule(Code code, Severity severity, String text) {
+    /**
+     * A diagnostic code as SARIF describes it: its default severity, the text of its message, and
+     * from gcnc explain's prose (tables/explain/) why it is reported ({@code fullDescription}) and
+     * the usual fix with an example ({@code help}, plain and Markdown); empty where there is none.
+     */
+    public record Rule(Code code, Severity severity, String text, String fullDescription, String help,
+                       String helpMarkdown) {
+        public Rule(Code code, Severity severity, String text) {
+            this(code, severity, text, "", "", "");
+        }
     }
 
     static final String SCHEMA = "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json";
@@ -59,7 +67,14 @@ public final class SarifRenderer {
             json.name("name").value(name(r.code()));
             json.name("shortDescription").beginObject()
                     .name("text").value(r.text().replaceAll("\\{[0-9]+\\}", "…")).endObject();
+            if (!r.fullDescription().isEmpty()) {
+                json.name("fullDescription").beginObject().name("text").value(r.fullDescription()).endObject();
+            }
             json.name("defaultConfiguration").beginObject().name("level").value(level(r.severity())).endObject();
+            if (!r.help().isEmpty()) {
+                json.name("help").beginObject().name("text").value(r.help())
+                        .name("markdown").value(r.helpMarkdown()).endObject();
+            }
             json.endObject();
         }
         json.endArray();

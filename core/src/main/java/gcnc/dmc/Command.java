@@ -106,6 +106,21 @@ public sealed interface Command {
         public <R> R accept(Visitor<R> v) {
             return v.circularArc(this);
         }
+
+        /**
+         * The arc a Galil draws for {@code CR r,θ,Δθ} from (p1, p2) in the vector plane: the centre from
+         * the start angle (0° along the first plane axis, counter-clockwise positive), the end from
+         * θ + Δθ; {centre1, centre2, end1, end2}. The one place of this arithmetic for the simulator's
+         * replay (gcnc.sim.Plane) and the virtual controller (gcnc.controller), so that both end every
+         * arc on the same double and their paths compare count for count.
+         */
+        public static double[] geometry(double p1, double p2, double r, double startDeg, double sweepDeg) {
+            double th = Math.toRadians(startDeg);
+            double to = Math.toRadians(startDeg + sweepDeg);
+            double c1 = p1 - r * Math.cos(th);
+            double c2 = p2 - r * Math.sin(th);
+            return new double[] {c1, c2, c1 + r * Math.cos(to), c2 + r * Math.sin(to)};
+        }
     }
 
     /** {@code VE}: the sequence has no more segments. */

@@ -37,9 +37,10 @@ public record CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool
         this(line, spindleRpm, tool, before, motions, after, end, frame, Origin.PROGRAM);
     }
 
-    /** The same block, run from {@code o}. */
+    /** The same block, run from {@code o} (its frame names the file it is written in). */
     public CheckedBlock from(Origin o) {
-        return new CheckedBlock(line, spindleRpm, tool, before, motions, after, end, frame, o);
+        return new CheckedBlock(line, spindleRpm, tool, before, motions, after, end,
+                frame == null ? null : frame.inFile(o.file()), o);
     }
 
     /** A block whose program frame is not known (built by hand, as the backend's tests do). */

@@ -154,6 +154,9 @@ public final class ProfileLoader {
     /** The most volts the OF output gives (Galil's +-10 V analog output; the backend clamps 9.998..10 with E204). */
     private static final double OF_VOLTS = 10.0;
 
+    /** The most the backend writes on OF (Galil's 9.998 V); above it, up to 10 V, it clamps with E204. */
+    private static final double OF_VOLTS_CLAMP = 9.998;
+
     /**
      * A profile whose own top speed its spindle drive could not be given: {@code spindle.max_rpm}
      * over {@code spindle.rpm_per_volt} is more than the OF output's 10 V, so every program that
@@ -163,6 +166,15 @@ public final class ProfileLoader {
     private static void spindleReachesTopSpeed(ProfileFile f) throws TableException {
         double max = f.positive("spindle.max_rpm");
         double gain = f.positive("spindle.rpm_per_volt");
+        if (max / gain > OF_VOLTS_CLAMP && max / gain <= OF_VOLTS) {
+            // 9.998..10 V: the backend clamps it with E204 at every S that asks for the top speed, a
+            // warning of the profile's own making in every program (issue 22): the profile is wrong
+            ProfileFile.Entry e = f.required("spindle.rpm_per_volt");
+            throw new TableException(f.path(), gcnc.diag.Diagnostic.error(gcnc.diag.Code.E405_SPINDLE_TOP_SPEED_CLAMPED,
+                    gcnc.diag.Span.of(e.line(), e.column()), ProfileFile.written(max),
+                    ProfileFile.written(Math.rint(max / gain * 10000) / 10000), ProfileFile.written(gain),
+                    ProfileFile.written(Math.ceil(max / OF_VOLTS_CLAMP * 1000) / 1000)));
+        }
         if (max / gain > OF_VOLTS) {
             ProfileFile.Entry e = f.required("spindle.rpm_per_volt");
             throw new TableException(f.path(), gcnc.diag.Diagnostic.error(gcnc.diag.Code.E410_SPINDLE_TOP_SPEED_VOLTS,

@@ -30,7 +30,6 @@ public final class BoundedReader extends Reader {
     private final Origin origin;
     private final long textLimit;
     private final int lineLimit;
-    private final char[] buffer = new char[8192];
     private long read;
     private int line = 1;
     private int column;
@@ -57,12 +56,13 @@ public final class BoundedReader extends Reader {
             return 0;
         }
         while (!ended) {
-            int n = in.read(buffer, 0, Math.min(len, buffer.length));
+            // read straight into the caller's array and keep what passes in place (no second copy)
+            int n = in.read(out, off, len);
             if (n < 0) {
                 ended = true;
                 break;
             }
-            int kept = pass(n, out, off);
+            int kept = pass(out, off, n);
             if (kept > 0) {
                 return kept;
             }
@@ -70,24 +70,48 @@ public final class BoundedReader extends Reader {
         return -1;
     }
 
-    /** Copies the {@code n} characters read to {@code out}, keeping count of lines; how many were kept. */
-    private int pass(int n, char[] out, int off) {
+    /**
+     * Keeps count of lines over the {@code n} characters read into {@code text} at {@code off}, moving
+     * those kept to the front (a line's characters past the limit are dropped); how many were kept.
+     */
+    private int pass(char[] text, int off, int n) {
         // the counters in locals for the loop (every character of the program comes through here)
-        long r = read;
         int col = column;
         int ln = line;
         boolean cr = lastCr;
         boolean skip = skipping;
-        int kept = 0;
+        // the characters that may still be read: the text limit is reached within this pass when fewer than n
+        int room = (int) Math.min(n, textLimit - read);
+        int end = off + room;
+        int k = off;
         try {
-            for (int k = 0; k < n; k++) {
-                if (++r > textLimit) {
-                    ended = true;
-                    diags.report(new Diagnostic(Code.E504_TEXT_TOO_LONG, gcnc.diag.Severity.ERROR,
-                            Span.of(ln, Math.max(1, col + 1)), java.util.List.of(Long.toString(textLimit)), origin));
-                    return kept;
+            if (!skip) {
+                // The usual case, no line cut yet: the characters stay where they are, and only line
+                // ends and the length of the line are looked at. The first character past the line
+                // limit, or any after it, goes to the loop below, which drops them.
+                for (; k < end; k++) {
+                    char c = text[k];
+                    if (c == '\n') {
+                        if (!cr) {
+                            ln++;
+                        }
+                        cr = false;
+                        col = 0;
+                    } else if (c == '\r') {
+                        ln++;
+                        cr = true;
+                        col = 0;
+                    } else if (col < lineLimit) {
+                        cr = false;
+                        col++;
+                    } else {
+                        break;
+                    }
                 }
-                char c = buffer[k];
+            }
+            int w = k;
+            for (; k < end; k++) {
+                char c = text[k];
                 if (c == '\n' || c == '\r') {
                     if (!(c == '\n' && cr)) {
                         ln++;
@@ -95,7 +119,7 @@ public final class BoundedReader extends Reader {
                     cr = c == '\r';
                     col = 0;
                     skip = false;
-                    out[off + kept++] = c;
+                    text[w++] = c;
                     continue;
                 }
                 cr = false;
@@ -108,11 +132,16 @@ public final class BoundedReader extends Reader {
                             java.util.List.of(Integer.toString(lineLimit)), origin));
                     continue;
                 }
-                out[off + kept++] = c;
+                text[w++] = c;
             }
-            return kept;
+            read += room;
+            if (room < n) {
+                ended = true;
+                diags.report(new Diagnostic(Code.E504_TEXT_TOO_LONG, gcnc.diag.Severity.ERROR,
+                        Span.of(ln, Math.max(1, col + 1)), java.util.List.of(Long.toString(textLimit)), origin));
+            }
+            return w - off;
         } finally {
-            read = r;
             column = col;
             line = ln;
             lastCr = cr;

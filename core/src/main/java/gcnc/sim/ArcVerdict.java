@@ -26,20 +26,33 @@ import java.util.List;
  * interpreter replays a CR (the same {@code Plane.cr}; ArcVerdictTest compares check's codes with
  * compile's) and compared with the program by
  * the simulator's own {@link Conformance} at the default tolerance. Same codes, same lines.
+ *
+ * <p>The verdict is a function of the arc's geometry alone (its start, end, centre, radius and
+ * direction: the start fixes the whole-count position, the feed and the words play no part), so
+ * an arc already judged clean is not planned again: a roughing program repeats the same arcs pass
+ * after pass, and planning was a sixth of a check's time (bench/HISTORY.md, issue 23). Only clean
+ * verdicts are remembered, so every finding is still reported at its own line.
  */
 public final class ArcVerdict {
     private final GalilFrame frame;
     private final Plane plane;
     private final Diagnostics out;
     private final Conformance conformance;
+    /** Set when the conformance check reports: the arc is then not remembered as clean. */
+    private boolean found;
+    /** The arcs judged clean, up to {@link #REMEMBERED} of them (then forgotten all at once). */
+    private final java.util.Set<Shape> clean = new java.util.HashSet<>();
+    private static final int REMEMBERED = 4096;
 
     public ArcVerdict(MachineProfile profile, Diagnostics out) {
         this.frame = new GalilFrame(profile);
         this.plane = new Plane(profile);
         this.out = out;
         SimOptions options = SimOptions.defaults();
-        this.conformance = new Conformance((code, line, args) -> out.error(code, Span.of(line, 1), args), null,
-                options.tolerance(), Simulator.threadTolerance(profile, options));
+        this.conformance = new Conformance((code, line, args) -> {
+            found = true;
+            out.error(code, Span.of(line, 1), args);
+        }, null, options.tolerance(), Simulator.threadTolerance(profile, options));
     }
 
     /** Every arc of a checked block. */
@@ -52,15 +65,29 @@ public final class ArcVerdict {
     }
 
     private void arc(int line, Motion.Arc a) {
+        Shape shape = new Shape(a);
+        if (clean.contains(shape)) {
+            return;
+        }
+        if (judge(line, a)) {
+            if (clean.size() >= REMEMBERED) {
+                clean.clear();
+            }
+            clean.add(shape);
+        }
+    }
+
+    /** Plans and replays one arc; true when it is clean (nothing reported). */
+    private boolean judge(int line, Motion.Arc a) {
         long su = GalilNumbers.round(frame.u(a.from()));
         long sv = GalilNumbers.round(frame.v(a.from()));
         ArcPlanner.Written w = ArcPlanner.forMotion(frame, su, sv, a);
         if (w == null) {
-            return; // a straight move to the end count: within a count of the arc
+            return true; // a straight move to the end count: within a count of the arc
         }
         if (w.cr() == null) {
             out.error(Code.E202_ARC_NOT_REPRESENTABLE, Span.of(line, 1), GalilNumbers.round(a.radius()));
-            return;
+            return false;
         }
         // the CR as the controller runs it: its printed angles, about the centre they imply
         double start = GalilNumbers.printedAngle(w.cr().start()); // the value the printed angle stands for,
@@ -74,6 +101,41 @@ public final class ArcVerdict {
             segs.add(new Segment(s.toX(), s.toZ(), plane.machineX(w.tu(), w.tv()), plane.machineZ(w.tu(), w.tv()),
                     false, 0, 0, 0, 0, 0, null));
         }
+        found = false;
         conformance.check(a, segs, line);
+        return !found;
+    }
+
+    /**
+     * What the verdict depends on: the arc's start, end, centre, radius and direction, compared bit
+     * for bit. (Equality written out rather than a record's: a record's is made at run time by a
+     * bootstrap method, which a short check would pay for in start-up.)
+     */
+    private static final class Shape {
+        private final double[] v;
+        private final boolean clockwise;
+        private final int hash;
+
+        Shape(Motion.Arc a) {
+            v = new double[] {a.from().x(), a.from().z(), a.to().x(), a.to().z(), a.centre().x(), a.centre().z(),
+                a.radius()};
+            clockwise = a.clockwise();
+            int h = clockwise ? 1 : 0;
+            for (double d : v) {
+                long bits = Double.doubleToLongBits(d);
+                h = 31 * h + (int) (bits ^ bits >>> 32);
+            }
+            hash = h;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Shape s && s.hash == hash && s.clockwise == clockwise && java.util.Arrays.equals(s.v, v);
+        }
+
+        @Override
+        public int hashCode() {
+            return hash;
+        }
     }
 }

@@ -23,6 +23,10 @@ final class MotionChecks {
     private final Reporter out;
     private final double tol;
     private final Stock stock;
+    /** The blank simulated, null when none. */
+    private final StockSize blank;
+    /** The envelope in the program's terms, the tools' use: what a person reads ({@link SimReport#program()}). */
+    private final ProgramTerms terms;
     private final double kx;
     private final double kz;
     /** The current tool's insert and holder relative to its tip, mm ({z[], r[]}; holder null if none). */
@@ -66,10 +70,14 @@ final class MotionChecks {
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
             stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);
+            blank = s;
         } else {
             stock = null;
+            blank = null;
         }
+        terms = new ProgramTerms(profile);
         path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
+        scrub = path == null || options.scrubLine() == 0 ? null : new StockScrub(options.scrubLine(), stock);
         conformance = new Conformance(out, path, tol, Simulator.threadTolerance(profile, options));
         toolShape = machine.defaultTool();
         chuckBox = box(machine.chuck());
@@ -167,7 +175,16 @@ final class MotionChecks {
 
     void frame(gcnc.ir.ProgramFrame f) {
         frame = f;
+        terms.frame(f);
     }
+
+    /** The spindle was set to {@code rpm} (for the setup sheet's highest speed). */
+    void spindle(double rpm) {
+        terms.spindle(rpm);
+    }
+
+    /** Where the tool tip was (machine counts {x, z}) when the last finding was made: its outline is drawn there. */
+    private double[] tip;
 
     /** The number of the DMC line being replayed (a finding without a program frame is placed by it). */
     private int dmcLine;
@@ -185,6 +202,7 @@ final class MotionChecks {
 
     void dwell(double s) {
         seconds += s;
+        terms.time(tool, s);
     }
 
     /** What this sequence has already reported: one finding per check per sequence, so one bad move is one finding. */
@@ -206,6 +224,9 @@ final class MotionChecks {
      */
     boolean sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec,
                      boolean judgeCut) {
+        if (scrub != null) {
+            scrub.before(line, sequences);
+        }
         this.judgeCut = judgeCut;
         removed = false;
         sequences++;
@@ -222,6 +243,7 @@ final class MotionChecks {
             xMax = Math.max(xMax, box[1]);
             zMin = Math.min(zMin, box[2]);
             zMax = Math.max(zMax, box[3]);
+            terms.box(box, rapid);
             travelX = travelX || travel(line, "X", box[0], box[1], profile.x().min(), profile.x().max(),
                     profile.x().countsPerMm());
             travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
@@ -237,11 +259,37 @@ final class MotionChecks {
                 closeUp(s, rapid, line, poly, nearChuck, nearTail, nearStock);
             }
         }
-        seconds += time(length, speed, acc, dec);
+        double t = time(length, speed, acc, dec);
+        seconds += t;
+        terms.move(tool, line, t);
         if (poly != null) {
-            path.move(rapid, poly, line);
+            path.move(rapid, poly, line, frame == null ? null : frame.file());
             path.frame(frame, rapid);
-        }        return removed;
+        }
+        if (scrub != null && scrub.inRun() && !segs.isEmpty()) {
+            Segment last = segs.get(segs.size() - 1);
+            double tipZ = last.toZ() / kz;
+            double tipR = (last.toX() - centre()) / kx;
+            scrub.after(sequences - 1, tool, placed(insertMm, tipZ, tipR), placed(holderMm, tipZ, tipR));
+        }
+        return removed;
+    }
+
+    /** The studio's scrub ({@link SimOptions#withScrub}), null when none was asked for. */
+    private final StockScrub scrub;
+
+    /** A tool part's outline (mm from the tip, on the tool's side) with its tip at (z, r) of the drawing. */
+    private Shape placed(double[][] outline, double z, double r) {
+        if (outline == null) {
+            return null;
+        }
+        double[] zs = new double[outline[0].length];
+        double[] rs = new double[zs.length];
+        for (int i = 0; i < zs.length; i++) {
+            zs[i] = z + outline[0][i];
+            rs[i] = r + side * outline[1][i];
+        }
+        return new Shape(zs, rs);
     }
 
     /**
@@ -271,6 +319,7 @@ final class MotionChecks {
             }
             double ar = side * (a[0] - machine.centreX());
             double br = side * (b[0] - machine.centreX());
+            tip = b;
             if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
                 chuckHit = true;
                 mark(Code.E303_SIM_CHUCK_COLLISION, line, b, toolName());
@@ -284,6 +333,7 @@ final class MotionChecks {
             }
             a = b;
         }
+        tip = new double[] {s.toX(), s.toZ()};
         if (backs != null && !backs.isEmpty() && !backHit) {
             double[] at = BackEdges.met(stock, backs, cuts);
             if (at != null) {
@@ -480,7 +530,7 @@ final class MotionChecks {
         out.report(code, line, args);
         if (path != null) {
             String block = frame != null && !frame.sequence().isEmpty() ? frame.sequence() : "line " + line;
-            path.mark(code.id(), block, p[0], p[1]);
+            path.mark(code.id(), block, p[0], p[1], toolShape, side, tip);
         }
     }
 
@@ -490,12 +540,26 @@ final class MotionChecks {
         return t.contains(".") ? t : t + ".";
     }
 
+    /**
+     * E302: where the axis went as the program writes it first ("X460.", the block's N word), then
+     * in the machine frame against the travel; without the program frame (a DMC replayed by itself)
+     * the place is the DMC's line.
+     */
     private boolean travel(int line, String axis, double lo, double hi, double min, double max, double perMm) {
         if (lo >= min - tol && hi <= max + tol) {
             return false;
         }
         double bad = lo < min - tol ? lo : hi;
-        out.report(Code.E302_SIM_TRAVEL, line, axis, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
+        Object where;
+        String block = "";
+        if (frame == null) {
+            where = gcnc.diag.Phrase.DMC_LINE.with(dmcLine);
+        } else {
+            boolean x = axis.equals("X");
+            where = axis + programmed((bad - (x ? frame.origin().x() : frame.origin().z())) / (x ? frame.perX() : frame.perZ()));
+            block = frame.sequence().isEmpty() ? "" : frame.sequence() + "; ";
+        }
+        out.report(Code.E302_SIM_TRAVEL, line, axis, where, block, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
         return true;
     }
 
@@ -532,11 +596,11 @@ final class MotionChecks {
     }
 
     SimReport report(int findings) {
-        Drawing d = path == null ? null : path.drawing(machine, stock);
+        Drawing d = path == null ? null : path.drawing(machine, stock, scrub == null ? null : scrub.result());
         boolean moved = sequences > 0;
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
-                seconds, d);
+                seconds, d, terms.envelope(), terms.facts(machine, blank));
     }
 }

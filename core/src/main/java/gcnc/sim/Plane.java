@@ -74,12 +74,11 @@ final class Plane {
      * Galil plane (first, second channel).
      */
     Segment cr(double p1, double p2, double r, double startDeg, double sweepDeg, gcnc.dmc.Command command, double[] end) {
-        double th = Math.toRadians(startDeg);
-        double to = Math.toRadians(startDeg + sweepDeg);
-        double c1 = p1 - r * Math.cos(th);
-        double c2 = p2 - r * Math.sin(th);
-        end[0] = c1 + r * Math.cos(to);
-        end[1] = c2 + r * Math.sin(to);
+        double[] g = gcnc.dmc.Command.CircularArc.geometry(p1, p2, r, startDeg, sweepDeg);
+        double c1 = g[0];
+        double c2 = g[1];
+        end[0] = g[2];
+        end[1] = g[3];
         double fx = machineX(p1, p2);
         double fz = machineZ(p1, p2);
         double cx = machineX(c1, c2);

@@ -6,13 +6,18 @@ package gcnc.sim;
  * @param sequences     vector sequences replayed (one per motion)
  * @param segments      VP/CR segments replayed
  * @param findings      diagnostics the simulator reported (they are in the run's Diagnostics)
- * @param xMinMm        travel envelope of machine X (mm), NaN when nothing moved
+ * @param xMinMm        travel envelope of machine X (mm, a radius from machine X zero), NaN when nothing moved
  * @param xMaxMm        ...
  * @param zMinMm        travel envelope of machine Z (mm)
  * @param zMaxMm        ...
  * @param cycleSeconds  estimated run time: trapezoidal speed profile per sequence plus dwells
  * @param drawing       the path and machine for an SVG, null unless {@link SimOptions#keepPath()}
+ * @param program       the same envelope as the program writes coordinates (X as written, Z from
+ *                      work zero, the program's units): what a person reads first; null when the
+ *                      program frame is not known (a DMC replayed by itself) or nothing moved
+ * @param setup         the blank, the work zero, the tools used and the top speed, for a setup sheet
  */
 public record SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
-                        double zMaxMm, double cycleSeconds, Drawing drawing) {
+                        double zMaxMm, double cycleSeconds, Drawing drawing, ProgramEnvelope program,
+                        SetupFacts setup) {
 }

@@ -70,8 +70,29 @@ public final class CodeTable {
         return entries.stream().filter(e -> e.code() == code).findFirst();
     }
 
-    /** Every code as a SARIF rule, its description in {@code lang}. */
+    /**
+     * Every code as a SARIF rule, its description in {@code lang}; with gcnc explain's prose where
+     * it has one (tables/explain/, read only here and by explain): why as the full description,
+     * the fix and the example as the help.
+     */
     public List<SarifRenderer.Rule> rules(ErrorMessages.Lang lang) {
-        return entries.stream().map(e -> new SarifRenderer.Rule(e.code(), e.severity(), e.text(lang))).toList();
+        Explanations explain = Explanations.builtIn();
+        return entries.stream().map(e -> rule(e, lang, explain)).toList();
+    }
+
+    private static SarifRenderer.Rule rule(Entry e, ErrorMessages.Lang lang, Explanations explain) {
+        Optional<Explanations.Prose> p = explain.prose(e.code(), lang);
+        if (p.isEmpty()) {
+            return new SarifRenderer.Rule(e.code(), e.severity(), e.text(lang));
+        }
+        String full = p.get().control().isEmpty() ? p.get().cause() : p.get().cause() + " " + p.get().control();
+        List<String> example = explain.example(e.code()).map(Explanations.Example::lines).orElse(List.of());
+        String fix = (lang == ErrorMessages.Lang.ES ? "Arreglo: " : "Fix: ") + p.get().fix();
+        String label = lang == ErrorMessages.Lang.ES ? "Ejemplo" : "Example";
+        String text = example.isEmpty() ? fix : fix + "\n" + label + ":\n" + String.join("\n", example);
+        String markdown = example.isEmpty() ? fix
+                : fix + "\n\n" + label + " (`gcnc explain " + e.code().id() + "`):\n\n```gcode\n"
+                        + String.join("\n", example) + "\n```";
+        return new SarifRenderer.Rule(e.code(), e.severity(), e.text(lang), full, text, markdown);
     }
 }

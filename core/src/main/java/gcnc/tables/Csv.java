@@ -97,10 +97,15 @@ public final class Csv {
     public static Csv parse(String path, String text) throws TableException {
         List<String> header = null;
         List<Row> rows = new ArrayList<>();
-        String[] lines = text.split("\r?\n", -1);
         Csv csv = null;
-        for (int n = 0; n < lines.length; n++) {
-            String l = lines[n];
+        // lines end at \n, a \r before it dropped (as split("\r?\n") would, without a regular expression)
+        int n = -1;
+        for (int at = 0; at <= text.length(); ) {
+            n++;
+            int nl = text.indexOf('\n', at);
+            int end = nl < 0 ? text.length() : nl;
+            String l = text.substring(at, nl >= 0 && end > at && text.charAt(end - 1) == '\r' ? end - 1 : end);
+            at = nl < 0 ? text.length() + 1 : nl + 1;
             if (l.isBlank() || l.stripLeading().startsWith("#")) {
                 continue;
             }

@@ -57,7 +57,7 @@ public final class ErrorMessages {
         }
         List<String> shown = arguments(args, lang);
         try {
-            return new MessageFormat(pattern(t[lang.ordinal()]), Locale.ROOT).format(shown.toArray());
+            return new MessageFormat(pattern(Plurals.choose(t[lang.ordinal()], shown)), Locale.ROOT).format(shown.toArray());
         } catch (IllegalArgumentException e) {
             return code.id() + " " + shown;
         }
@@ -91,7 +91,7 @@ public final class ErrorMessages {
             inner.add(phrase(Phrase.unnested(i), lang));
         }
         try {
-            return new MessageFormat(pattern(texts[lang.ordinal()]), Locale.ROOT).format(inner.toArray());
+            return new MessageFormat(pattern(Plurals.choose(texts[lang.ordinal()], inner)), Locale.ROOT).format(inner.toArray());
         } catch (IllegalArgumentException e) {
             return Phrase.plain(a);
         }
@@ -198,14 +198,45 @@ public final class ErrorMessages {
      */
     private static String template(Csv.Row r, String column) throws TableException {
         String t = r.get(column);
+        if (plainPlaceholders(t)) {
+            return t; // what MessageFormat accepts, told without making one for each of ~1000 templates at every start
+        }
         try {
-            new MessageFormat(pattern(t), Locale.ROOT);
+            new MessageFormat(pattern(Plurals.choose(t, List.of())), Locale.ROOT); // the plural forms
+            new MessageFormat(pattern(Plurals.choose(t, List.of("1", "1", "1", "1", "1", "1", "1", "1"))), Locale.ROOT);
             return t;
         } catch (IllegalArgumentException e) {
             int open = badPlaceholder(t);
             throw r.faultAt(column, Math.max(open, 0), open < 0 ? Phrase.TEMPLATE_BROKEN.with(e.getMessage())
                     : placeholderProblem(t, open));
         }
+    }
+
+    /**
+     * Every brace of the template is a plain placeholder {n} of one to four digits, and no '}' stands
+     * alone: a template MessageFormat surely accepts (with its apostrophes doubled by {@link #pattern},
+     * everything else is literal text). A template with any other brace is judged by MessageFormat itself.
+     */
+    static boolean plainPlaceholders(String t) {
+        int n = t.length();
+        for (int i = 0; i < n; i++) {
+            char c = t.charAt(i);
+            if (c == '}') {
+                return false;
+            }
+            if (c == '{') {
+                int digits = 0;
+                while (i + 1 < n && t.charAt(i + 1) >= '0' && t.charAt(i + 1) <= '9') {
+                    i++;
+                    digits++;
+                }
+                if (digits == 0 || digits > 4 || i + 1 >= n || t.charAt(i + 1) != '}') {
+                    return false;
+                }
+                i++; // the closing brace
+            }
+        }
+        return true;
     }
 
     /** The index of the first '{' that does not start a plain {n} placeholder, or -1. */

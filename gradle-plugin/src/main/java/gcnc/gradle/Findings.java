@@ -62,6 +62,11 @@ final class Findings {
         all.add(Finding.of(file, d, messages));
     }
 
+    /** One finding with its message in the reports' language (a setup sheet's row). */
+    Finding finding(String file, Diagnostic d) {
+        return Finding.of(file, d, messages);
+    }
+
     /** One finding as a GCC-style line. */
     String render(String file, Diagnostic d) {
         return new GnuRenderer(messages).render(file, d);

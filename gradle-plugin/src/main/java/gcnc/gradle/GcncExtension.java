@@ -21,10 +21,43 @@ public class GcncExtension {
     private File tables;
     private FileCollection programs;
     private boolean ignoreFailures;
+    private List<String> extensions = gcnc.ProgramFiles.EXTENSIONS;
 
     public GcncExtension(Project project) {
         this.project = project;
-        this.programs = project.fileTree("src/main/gcode");
+        // by default the programs under src/main/gcode whose names end in one of the extensions (any
+        // case), as the command line finds them in a folder: the extensions are read when Gradle
+        // walks the tree, so `extensions = [...]` later in the build script holds
+        this.programs = project.fileTree("src/main/gcode", tree -> tree.include(
+                f -> f.isDirectory() || gcnc.ProgramFiles.isProgram(f.getName(), extensions)));
+    }
+
+    /**
+     * The extensions of the part programs (default: nc, ngc, tap, gcode: {@code gcnc.ProgramFiles}),
+     * shared with the command line and with the shop's tests (the JUnit fixtures' everyProgramIn
+     * read it from the system property gcnc.extensions, which the plugin sets on every test task).
+     */
+    public List<String> getExtensions() {
+        return extensions;
+    }
+
+    public void setExtensions(List<String> extensions) {
+        this.extensions = gcnc.ProgramFiles.normal(extensions);
+    }
+
+    /** The files under src/main/gcode that are not programs by their extension (for the tasks' note). */
+    List<File> skipped() {
+        File folder = project.file("src/main/gcode");
+        if (ownPrograms || !folder.isDirectory()) {
+            return List.of();
+        }
+        List<File> out = new ArrayList<>();
+        project.fileTree(folder).forEach(f -> {
+            if (!f.getName().startsWith(".") && !gcnc.ProgramFiles.isProgram(f.getName(), extensions)) {
+                out.add(f);
+            }
+        });
+        return out;
     }
 
     public String getMachine() {
@@ -57,7 +90,11 @@ public class GcncExtension {
 
     public void setPrograms(FileCollection programs) {
         this.programs = programs;
+        this.ownPrograms = true;
     }
+
+    /** Whether the build script named its programs (then the plugin does not judge what src/main/gcode holds). */
+    private boolean ownPrograms;
 
     /** {@code true}: errors are reported but do not fail the task (Gradle's own name for it, as on {@code Test}). */
     public boolean getIgnoreFailures() {

@@ -56,6 +56,28 @@ public class GcncPlugin implements Plugin<Project> {
                 .withPropertyName("gcncSettingFiles").withPathSensitivity(PathSensitivity.RELATIVE);
         task.getInputs().property("gcncMachine", (Callable<Object>) settings::getMachine);
         task.getInputs().property("gcncControl", (Callable<Object>) () -> String.valueOf(settings.getControl()));
+        task.getInputs().property("gcncExtensions", (Callable<Object>) () -> String.join(",", settings.getExtensions()));
+        if (task instanceof org.gradle.process.JavaForkOptions) {
+            // the fixtures' everyProgramIn takes the build's list of extensions (gcnc.ProgramFiles.configured),
+            // set when the task runs (after the build script); a class, not a lambda: Gradle cannot tell
+            // a lambda's implementation from one build to the next, and the task would never be UP-TO-DATE
+            task.doFirst(new PassExtensions(settings));
+        }
+    }
+
+    /** Hands the build's list of program extensions to a test JVM as the system property gcnc.extensions. */
+    static final class PassExtensions implements org.gradle.api.Action<Task> {
+        private final GcncExtension settings;
+
+        PassExtensions(GcncExtension settings) {
+            this.settings = settings;
+        }
+
+        @Override
+        public void execute(Task t) {
+            ((org.gradle.process.JavaForkOptions) t).systemProperty(gcnc.ProgramFiles.PROPERTY,
+                    String.join(",", settings.getExtensions()));
+        }
     }
 
     private static <T extends GcncTask> T task(Project project, String name, Class<T> type, GcncExtension settings,

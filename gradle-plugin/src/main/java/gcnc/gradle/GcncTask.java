@@ -119,6 +119,13 @@ public abstract class GcncTask extends DefaultTask {
         Findings findings = new Findings(session, getLogger());
         begin();
         List<Program> programs = programs();
+        List<File> skipped = settings.skipped();
+        if (!skipped.isEmpty()) {
+            // as the command line's note: a program saved under another extension is not silently unchecked
+            getLogger().lifecycle("{}: skipped {} under src/main/gcode: not a program's extension (.{}); gcnc { extensions } adds one: {}",
+                    getName(), plural(skipped.size(), "file"), String.join(", .", settings.getExtensions()),
+                    skipped.stream().map(f -> shown(getProject().getRootDir(), f)).toList());
+        }
         for (Program p : programs) {
             try {
                 process(session, p, findings);

@@ -1,8 +1,11 @@
 package gcnc.gradle;
 
 import gcnc.Compiler;
+import gcnc.ProgramNumber;
 import gcnc.Session;
+import gcnc.SetupSheet;
 import gcnc.diag.Diagnostic;
+import gcnc.diag.Finding;
 import gcnc.sim.SimReport;
 import gcnc.sim.SvgWriter;
 import java.io.File;
@@ -21,7 +24,8 @@ import org.gradle.api.tasks.OutputDirectory;
 /**
  * {@code gcncSimulate}: each program checked, translated and replayed on the machine model with
  * its tool path kept, as {@code gcnc simulate} does. Under build/reports/gcnc/gcncSimulate/: per
- * program a drawing (.svg) and a setup sheet (.html: drawing, extents, cycle time, findings), and
+ * program a drawing (.svg) and a setup sheet ({@link SetupSheet}: program, machine, units, blank,
+ * work zero, tools, cycle time, findings, envelope and the drawing), and
  * for all of them summary.txt, one line a program.
  */
 public class SimulateTask extends GcncTask {
@@ -51,16 +55,20 @@ public class SimulateTask extends GcncTask {
             summary.add(program.shown() + ": not simulated, " + GcncTask.plural(r.diagnostics().errorCount(), "error"));
             return;
         }
+        String number;
+        try (Reader in = program.open()) {
+            number = ProgramNumber.of(in).orElse(null);
+        }
         StringWriter svg = new StringWriter();
-        SvgWriter.write(sim.get(), program.shown(), svg, true);
+        SvgWriter.write(sim.get(), program.shown(), number, svg, true);
         Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
         Files.createDirectories(svgFile.getParent());
         Files.writeString(svgFile, svg.toString(), StandardCharsets.UTF_8);
-        List<String> lines = new ArrayList<>();
+        List<Finding> lines = new ArrayList<>();
         for (Diagnostic d : r.diagnostics().sorted()) {
-            lines.add(findings.render(program.shown(), d));
+            lines.add(findings.finding(program.shown(), d));
         }
-        SetupSheet sheet = new SetupSheet(program.shown(), getMachine(), sim.get(), lines);
+        SetupSheet sheet = new SetupSheet(program.shown(), number, session.profile(), sim.get(), lines);
         try (Writer w = Files.newBufferedWriter(getOutputDir().toPath().resolve(program.withExtension(".html")),
                 StandardCharsets.UTF_8)) {
             sheet.write(svg.toString(), w);

@@ -69,10 +69,17 @@ public final class GcodeAssertions {
         }
     }
 
-    /** The file names a shop's part programs have (any case): .nc, .ngc, .tap ({@link ProgramFiles}). */
+    /**
+     * The file names a shop's part programs have (any case) unless told otherwise: .nc, .ngc, .tap,
+     * .gcode ({@link ProgramFiles#EXTENSIONS}, the list the command line and the Gradle plugin use).
+     */
     public static final List<String> PROGRAM_EXTENSIONS = ProgramFiles.EXTENSIONS;
 
-    /** One dynamic test per part program below a folder ({@link #PROGRAM_EXTENSIONS}, any case). */
+    /**
+     * One dynamic test per part program below a folder: by the build's list when the Gradle plugin
+     * runs the tests ({@code gcnc { extensions }}, {@link ProgramFiles#configured}), else
+     * {@link #PROGRAM_EXTENSIONS}, any case.
+     */
     public static Stream<DynamicTest> everyProgramIn(Path folder, String machine) {
         return everyProgramIn(folder, session(machine));
     }
@@ -82,7 +89,7 @@ public final class GcodeAssertions {
      * program in it is a failing test (a misspelt path must not pass a build).
      */
     public static Stream<DynamicTest> everyProgramIn(Path folder, Session session) {
-        return everyProgramIn(folder, session, PROGRAM_EXTENSIONS);
+        return everyProgramIn(folder, session, ProgramFiles.configured());
     }
 
     /**
@@ -93,7 +100,14 @@ public final class GcodeAssertions {
         List<String> lower = ProgramFiles.normal(extensions);
         List<Path> programs;
         try {
-            programs = ProgramFiles.in(folder, lower);
+            ProgramFiles.Scan scan = ProgramFiles.scan(folder, lower);
+            programs = scan.programs();
+            if (scan.skippedCount() > 0) {
+                // the note the command line gives too: a program saved as .txt is not silently untested
+                System.out.println("gcnc: " + folder + ": skipped " + scan.skippedCount() + " file"
+                        + (scan.skippedCount() == 1 ? "" : "s") + " " + scan.skipped()
+                        + ": not a program's extension (." + String.join(", .", lower) + ")");
+            }
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read the folder " + folder, e);
         }

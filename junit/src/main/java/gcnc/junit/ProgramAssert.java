@@ -4,6 +4,7 @@ import gcnc.Compiler;
 import gcnc.Session;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.GnuRenderer;
+import gcnc.sim.ProgramEnvelope;
 import gcnc.sim.SimReport;
 import gcnc.tables.ErrorMessages;
 import java.io.IOException;
@@ -12,6 +13,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * Fluent assertions on a part program that read like the shop's intent:
@@ -19,7 +21,7 @@ import java.util.List;
  * <pre>
  * assertThat(program("programs/flange.nc")).on(machine("haas"))
  *         .compilesClean()
- *         .staysWithin(0, 40, 50, 160)
+ *         .staysWithin(0, Double.POSITIVE_INFINITY, -30, Double.POSITIVE_INFINITY) // X as written, Z from work zero: never behind Z-30
  *         .cycleTimeBelow(Duration.ofMinutes(3));
  * </pre>
  *
@@ -77,24 +79,64 @@ public final class ProgramAssert {
     }
 
     /**
-     * The tool tip stays within these limits in the machine frame, in mm: X as a radius from the
-     * spindle centreline, Z along the bed (what the simulation summary prints as its envelope).
+     * The tool tip stays within these limits as the program writes coordinates: X as the program
+     * writes it (a diameter where the machine's control reads X as one), Z from work zero, in the
+     * program's units (what the simulation summary prints first as its envelope). Each move is
+     * measured in its own block's frame (work and tool offsets), so a G28 to the reference point
+     * counts where the control's position display would put it; an infinite limit is open:
+     * {@code staysWithin(-2, Double.POSITIVE_INFINITY, -30, Double.POSITIVE_INFINITY)} is "never
+     * behind Z-30". {@link #staysWithinMachine} asks the same in the machine frame.
      */
-    public ProgramAssert staysWithin(double xMinMm, double xMaxMm, double zMinMm, double zMaxMm) {
+    public ProgramAssert staysWithin(double xMin, double xMax, double zMin, double zMax) {
         SimReport r = simulation();
-        if (r.xMinMm() < xMinMm || r.xMaxMm() > xMaxMm || r.zMinMm() < zMinMm || r.zMaxMm() > zMaxMm) {
-            throw new AssertionError(String.format(java.util.Locale.ROOT, "%s moves over X %.3f..%.3f mm (radius),"
-                    + " Z %.3f..%.3f mm, not within X %s..%s, Z %s..%s", program, r.xMinMm(), r.xMaxMm(), r.zMinMm(),
-                    r.zMaxMm(), xMinMm, xMaxMm, zMinMm, zMaxMm));
+        ProgramEnvelope p = r.program();
+        if (p == null) {
+            throw new AssertionError(program + " did not move: nothing to keep within X " + xMin + ".." + xMax
+                    + ", Z " + zMin + ".." + zMax);
+        }
+        if (!p.within(xMin, xMax, zMin, zMax)) {
+            throw new AssertionError(String.format(Locale.ROOT, "%s moves over X %s..%s (%s), Z %s..%s %s from work"
+                    + " zero, not within X %s..%s, Z %s..%s (machine frame: X %.3f..%.3f mm, a radius; Z %.3f..%.3f mm)",
+                    program, programmed(p.xMin(), p), programmed(p.xMax(), p), p.xMode(), programmed(p.zMin(), p),
+                    programmed(p.zMax(), p), p.unit(), limit(xMin), limit(xMax), limit(zMin), limit(zMax),
+                    r.xMinMm(), r.xMaxMm(), r.zMinMm(), r.zMaxMm()));
         }
         return this;
+    }
+
+    /**
+     * The tool tip stays within these limits in the machine frame, in mm: X as a radius from
+     * machine X zero, Z along the bed (the simulation summary's second envelope): what
+     * {@code staysWithin} asked in earlier builds.
+     */
+    public ProgramAssert staysWithinMachine(double xMinMm, double xMaxMm, double zMinMm, double zMaxMm) {
+        SimReport r = simulation();
+        if (r.xMinMm() < xMinMm || r.xMaxMm() > xMaxMm || r.zMinMm() < zMinMm || r.zMaxMm() > zMaxMm) {
+            throw new AssertionError(String.format(Locale.ROOT, "%s moves over machine X %.3f..%.3f mm (radius),"
+                    + " Z %.3f..%.3f mm, not within X %s..%s, Z %s..%s", program, r.xMinMm(), r.xMaxMm(), r.zMinMm(),
+                    r.zMaxMm(), limit(xMinMm), limit(xMaxMm), limit(zMinMm), limit(zMaxMm)));
+        }
+        return this;
+    }
+
+    /** A program coordinate with its units' decimals (3 for mm, 4 for inches). */
+    private static String programmed(double v, ProgramEnvelope p) {
+        return String.format(Locale.ROOT, p.units() == gcnc.machine.Units.INCH ? "%.4f" : "%.3f", v);
+    }
+
+    /** A limit as the test wrote it: 30, -2.5, open (an infinity). */
+    private static String limit(double v) {
+        if (Double.isInfinite(v)) {
+            return v > 0 ? "+inf" : "-inf";
+        }
+        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
     }
 
     /** The simulated cycle time (the moves' trapezoidal profiles and the dwells) is below {@code limit}. */
     public ProgramAssert cycleTimeBelow(Duration limit) {
         double seconds = simulation().cycleSeconds();
         if (seconds >= limit.toMillis() / 1000.0) {
-            throw new AssertionError(String.format(java.util.Locale.ROOT, "%s takes about %.1f s, not below %s",
+            throw new AssertionError(String.format(Locale.ROOT, "%s takes about %.1f s, not below %s",
                     program, seconds, limit));
         }
         return this;

@@ -23,6 +23,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 
 /**
@@ -36,11 +37,15 @@ final class Analysis {
     private final Session session;
     private final Messages messages;
     private final String toolVersion;
+    /** A called program's file as the page names it (relative to DIR), empty when it is not under DIR. */
+    private final java.util.function.Function<String, Optional<String>> fileNames;
 
-    Analysis(Session session, Messages messages, String toolVersion) {
+    Analysis(Session session, Messages messages, String toolVersion,
+             java.util.function.Function<String, Optional<String>> fileNames) {
         this.session = session;
         this.messages = messages;
         this.toolVersion = toolVersion;
+        this.fileNames = fileNames;
     }
 
     /** The program's diagnostics, as {@code gcnc check --format json} prints them. */
@@ -63,8 +68,13 @@ final class Analysis {
                     JsonObject l = new JsonObject();
                     l.addProperty("text", DmcPrinter.print(i.command()));
                     l.addProperty("line", i.source().line());
-                    if (i.source().file() != null) {
-                        l.addProperty("file", i.source().file()); // a called program's line
+                    if (i.source().file() != null) { // a called program's line: named as the page names files
+                        Optional<String> named = fileNames.apply(i.source().file());
+                        if (named.isPresent()) {
+                            l.addProperty("file", named.get());
+                        } else {
+                            l.addProperty("elsewhere", true);
+                        }
                     }
                     dmc.add(l);
                 });
@@ -76,7 +86,7 @@ final class Analysis {
         r.simulation().ifPresent(s -> {
             doc.add("summary", summary(s));
             if (s.drawing() != null) {
-                doc.add("drawing", drawing(s.drawing()));
+                doc.add("drawing", drawing(s.drawing(), fileNames));
             }
         });
         return doc;
@@ -109,6 +119,113 @@ final class Analysis {
         }
         r.simulation().ifPresent(s -> doc.add("summary", summary(s)));
         return doc;
+    }
+
+    /**
+     * The scrub: the stock as it stood before and after the first run of {@code line}'s moves, and
+     * the insert and holder where the run ended, in the program's coordinates as the drawing's.
+     * {@code found} is false when that line moved nothing (or the program has an error).
+     */
+    JsonObject scrub(String name, String text, int line, Optional<Path> folder) throws IOException {
+        Compiler.Result r = session.withPrograms(folder).compile(new StringReader(text),
+                Optional.of(session.simulation().withScrub(line)), false, l -> { });
+        JsonObject o = new JsonObject();
+        o.addProperty("line", line);
+        Drawing d = r.simulation().map(SimReport::drawing).orElse(null);
+        Drawing.Scrub s = d == null ? null : d.scrub();
+        o.addProperty("found", s != null);
+        if (s == null) {
+            o.addProperty("errors", r.diagnostics().sorted().stream().filter(x -> x.severity() == gcnc.diag.Severity.ERROR).count());
+            return o;
+        }
+        Frame f = new Frame(d.program());
+        o.addProperty("tool", s.tool());
+        o.addProperty("first", s.first());
+        o.addProperty("last", s.last());
+        o.add("before", outline(s.beforeZ(), s.beforeR(), f));
+        o.add("after", outline(s.afterZ(), s.afterR(), f));
+        if (s.insert() != null) {
+            o.add("insert", shape(s.insert(), f));
+        }
+        if (s.holder() != null) {
+            o.add("holder", shape(s.holder(), f));
+        }
+        o.addProperty("programFrame", d.program() != null);
+        return o;
+    }
+
+    /** A stock outline with the points of each flat stretch but its ends left out: the same steps, a much shorter answer. */
+    private static JsonObject outline(double[] z, double[] r, Frame f) {
+        List<Integer> keep = new ArrayList<>();
+        for (int i = 0; i < z.length; i++) {
+            if (i == 0 || i == z.length - 1 || r[i] != r[i - 1] || r[i] != r[i + 1]) {
+                keep.add(i);
+            }
+        }
+        double[] zs = new double[keep.size()];
+        double[] rs = new double[keep.size()];
+        for (int k = 0; k < zs.length; k++) {
+            zs[k] = z[keep.get(k)];
+            rs[k] = r[keep.get(k)];
+        }
+        JsonObject o = new JsonObject();
+        o.add("z", f.zs(zs));
+        o.add("x", f.xs(rs));
+        return o;
+    }
+
+    private static JsonObject shape(Shape s, Frame f) {
+        JsonObject o = new JsonObject();
+        o.add("z", f.zs(java.util.Arrays.copyOf(s.z(), s.size())));
+        o.add("x", f.xs(java.util.Arrays.copyOf(s.r(), s.size())));
+        return o;
+    }
+
+    /**
+     * What an edited profile changes for a program: the findings (errors, and the simulator's
+     * findings: travel, collisions, cuts into the stock) at a line with {@code edited} that this
+     * studio's profile does not give there ({@code became}), and those it gives that the edited one
+     * does not ({@code gone}). A finding is its file, line and code: a message that only quotes
+     * the new limit is the same finding.
+     */
+    JsonObject impact(Analysis edited, String name, String text, Optional<Path> folder) throws IOException {
+        Map<String, Finding> now = findings(name, text, folder);
+        Map<String, Finding> then = edited.findings(name, text, folder);
+        JsonObject o = new JsonObject();
+        o.add("became", only(then, now));
+        o.add("gone", only(now, then));
+        return o;
+    }
+
+    private Map<String, Finding> findings(String name, String text, Optional<Path> folder) throws IOException {
+        Compiler.Result r = session.withPrograms(folder).compile(new StringReader(text), Optional.of(session.simulation()),
+                false, l -> { });
+        Map<String, Finding> out = new java.util.LinkedHashMap<>();
+        for (Diagnostic d : r.diagnostics().sorted()) {
+            if (d.severity() == gcnc.diag.Severity.ERROR || d.code().name().contains("_SIM_")) {
+                Finding f = Finding.of(name, d, messages);
+                out.putIfAbsent(f.file() + ':' + d.span().line() + ':' + d.code().id(), f);
+            }
+        }
+        return out;
+    }
+
+    private static JsonArray only(Map<String, Finding> in, Map<String, Finding> notIn) {
+        JsonArray a = new JsonArray();
+        for (Map.Entry<String, Finding> e : in.entrySet()) {
+            if (!notIn.containsKey(e.getKey())) {
+                Finding f = e.getValue();
+                JsonObject o = new JsonObject();
+                o.addProperty("file", f.file());
+                o.addProperty("line", f.diagnostic().span().line());
+                o.addProperty("column", f.diagnostic().span().column());
+                o.addProperty("code", f.diagnostic().code().id());
+                o.addProperty("severity", f.diagnostic().severity().name().toLowerCase(java.util.Locale.ROOT));
+                o.addProperty("message", f.message());
+                a.add(o);
+            }
+        }
+        return a;
     }
 
     private JsonObject report(String name, Compiler.Result r) throws IOException {
@@ -146,13 +263,21 @@ final class Analysis {
      * program writes X (a diameter on a lathe whose control reads one). Without a program frame (no
      * move), machine millimetres with x as twice the radius.
      */
-    private static JsonObject drawing(Drawing d) {
+    private static JsonObject drawing(Drawing d, java.util.function.Function<String, Optional<String>> fileNames) {
         Frame f = new Frame(d.program());
         JsonObject o = new JsonObject();
         JsonArray moves = new JsonArray();
         for (Drawing.Move m : d.moves()) {
             JsonObject mv = new JsonObject();
             mv.addProperty("line", m.line());
+            if (m.file() != null) { // a called program's line: the page opens that file to show it
+                Optional<String> named = fileNames.apply(m.file());
+                if (named.isPresent()) {
+                    mv.addProperty("file", named.get());
+                } else {
+                    mv.addProperty("elsewhere", true);
+                }
+            }
             mv.addProperty("rapid", m.rapid());
             mv.add("z", f.zs(m.z()));
             mv.add("x", f.xs(m.r()));

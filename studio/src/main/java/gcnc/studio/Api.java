@@ -3,6 +3,8 @@ package gcnc.studio;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import com.sun.net.httpserver.HttpExchange;
+import gcnc.Session;
+import gcnc.diag.Messages;
 import gcnc.output.AtomicOutput;
 import gcnc.output.DmcOutputs;
 import java.io.IOException;
@@ -24,18 +26,35 @@ import java.util.concurrent.ConcurrentHashMap;
  */
 final class Api implements AutoCloseable {
     private final Workspace workspace;
-    private final Analysis analysis;
     private final Studio.Config config;
+    private final Messages messages;
+    /**
+     * Everything that depends on the machine profile: replaced as a whole when Configure saves an
+     * edited profile, so that a request sees one profile from start to end.
+     */
+    private record Engine(Session session, Analysis analysis, Modal modal, ProfileEdit profile, String profileFile) {
+    }
+
+    private volatile Engine engine;
     /** The open event streams, closed when the studio stops. */
     private final Set<OutputStream> streams = ConcurrentHashMap.newKeySet();
     private volatile boolean closed;
     /** Each stream holds one of the server's threads: a few pages, and the rest keep answering. */
     static final int MAX_STREAMS = 3;
 
-    Api(Workspace workspace, Analysis analysis, Studio.Config config) {
+    Api(Workspace workspace, Studio.Config config) {
         this.workspace = workspace;
-        this.analysis = analysis;
         this.config = config;
+        this.messages = config.session().tables().messages().in(config.lang());
+        this.engine = engine(config.session(), null, null);
+    }
+
+    private Engine engine(Session session, ProfileEdit profile, String profileFile) {
+        return new Engine(session, analysis(session), new Modal(session, config.lang()), profile, profileFile);
+    }
+
+    private Analysis analysis(Session session) {
+        return new Analysis(session, messages, config.version(), workspace::nameOf);
     }
 
     Path root() {
@@ -52,6 +71,11 @@ final class Api implements AutoCloseable {
             case "check" -> timed(ex, () -> check(post(ex)));
             case "simulate" -> timed(ex, () -> simulate(post(ex)));
             case "compile" -> timed(ex, () -> compile(post(ex)));
+            case "hover" -> timed(ex, () -> hover(post(ex)));
+            case "stock" -> timed(ex, () -> stock(post(ex)));
+            case "profile" -> Http.json(ex, 200, profile(get(ex)));
+            case "profile/impact" -> timed(ex, () -> impact(post(ex)));
+            case "profile/save" -> Http.json(ex, 200, saveProfile(post(ex)));
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
         }
     }
@@ -91,8 +115,12 @@ final class Api implements AutoCloseable {
     private JsonObject info(HttpExchange ex) {
         JsonObject o = new JsonObject();
         o.addProperty("folder", workspace.root().getFileName() == null ? "/" : workspace.root().getFileName().toString());
-        o.addProperty("machine", config.session().profile().name());
-        o.addProperty("control", config.session().profile().control().name());
+        Engine e = engine;
+        o.addProperty("machine", e.session().profile().name());
+        o.addProperty("control", e.session().profile().control().name());
+        if (e.profileFile() != null) {
+            o.addProperty("profileFile", e.profileFile());
+        }
         o.addProperty("dialect", config.session().options().dialect());
         o.addProperty("lang", config.lang().name().toLowerCase(Locale.ROOT));
         o.addProperty("version", config.version());
@@ -141,13 +169,13 @@ final class Api implements AutoCloseable {
     /** POST /api/check {name, text}: the diagnostics, as gcnc check --format json. */
     private JsonObject check(JsonObject req) throws IOException, Http.Fail {
         String name = Http.required(req, "name");
-        return analysis.check(name, Http.required(req, "text"), folder(name));
+        return engine.analysis().check(name, Http.required(req, "text"), folder(name));
     }
 
     /** POST /api/simulate {name, text}: diagnostics, DMC, path, summary. */
     private JsonObject simulate(JsonObject req) throws IOException, Http.Fail {
         String name = Http.required(req, "name");
-        return analysis.simulate(name, Http.required(req, "text"), folder(name));
+        return engine.analysis().simulate(name, Http.required(req, "text"), folder(name));
     }
 
     /** POST /api/compile {name}: the saved program compiled to NAME.dmc and NAME.dmc.map beside it. */
@@ -160,7 +188,7 @@ final class Api implements AutoCloseable {
         refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
         JsonObject o;
         try {
-            o = analysis.compile(name, program, dmc);
+            o = engine.analysis().compile(name, program, dmc);
         } catch (AtomicOutput.Refused e) {
             throw new Http.Fail(403, "gcnc refuses to write " + dmcName + " (" + e.code().id() + ")");
         } catch (IOException e) {
@@ -170,6 +198,134 @@ final class Api implements AutoCloseable {
             o.addProperty("dmc", dmcName);
             o.addProperty("map", dmcName + ".map");
         }
+        return o;
+    }
+
+    /** POST /api/hover {name, text, line, word?}: what a G or M word does here, and the modal state after the line's block. */
+    private JsonObject hover(JsonObject req) throws IOException, Http.Fail {
+        String name = Http.required(req, "name");
+        String text = Http.required(req, "text");
+        int line = Http.integer(req, "line", 1, Integer.MAX_VALUE);
+        String word = Http.string(req, "word");
+        if (word != null && word.length() > 40) {
+            throw new Http.Fail(400, "\"word\" is one word of a block (at most 40 characters)");
+        }
+        return engine.modal().hover(name, text, line, word, folder(name));
+    }
+
+    /** POST /api/stock {name, text, line}: the stock before and after the line's block, and the tool there. */
+    private JsonObject stock(JsonObject req) throws IOException, Http.Fail {
+        String name = Http.required(req, "name");
+        String text = Http.required(req, "text");
+        int line = Http.integer(req, "line", 1, Integer.MAX_VALUE);
+        return engine.analysis().scrub(name, text, line, folder(name));
+    }
+
+    /** The profile being configured: the one the studio was started with, or the one last saved. */
+    private ProfileEdit profileEdit() throws IOException, Http.Fail {
+        Engine e = engine;
+        if (e.profile() != null) {
+            return e.profile();
+        }
+        ProfileEdit p;
+        try {
+            p = ProfileEdit.of(e.session(), messages);
+        } catch (IOException x) {
+            throw new Http.Fail(500, "could not read the machine profile: " + reason(x));
+        }
+        synchronized (this) {
+            if (engine == e) {
+                engine = new Engine(e.session(), e.analysis(), e.modal(), p, e.profileFile());
+            }
+        }
+        return p;
+    }
+
+    /** GET /api/profile: Configure's fields (travel, work and tool offsets, tool geometry) as written and as in force. */
+    private JsonObject profile(HttpExchange ex) throws IOException, Http.Fail {
+        try {
+            JsonObject o = profileEdit().form();
+            if (engine.profileFile() != null) {
+                o.addProperty("profileFile", engine.profileFile());
+            }
+            return o;
+        } catch (ProfileEdit.Invalid i) {
+            throw new Http.Fail(500, "the machine profile cannot be read: " + i.getMessage());
+        }
+    }
+
+    /**
+     * POST /api/profile/impact {values, name?, text?}: the edited profile read as the loader reads
+     * it ({"valid": false, "key", "error"} when refused); with a program, which of its lines become
+     * errors or collisions with it and which stop being.
+     */
+    private JsonObject impact(JsonObject req) throws IOException, Http.Fail {
+        ProfileEdit edit = profileEdit();
+        java.util.Map<String, String> values = ProfileEdit.values(req);
+        String name = Http.string(req, "name");
+        String text = Http.string(req, "text");
+        if ((name == null) != (text == null)) {
+            throw new Http.Fail(400, "give both \"name\" and \"text\" (the program to judge), or neither");
+        }
+        JsonObject o = new JsonObject();
+        gcnc.machine.MachineProfile edited;
+        try {
+            edited = edit.load(edit.edited(values));
+        } catch (ProfileEdit.Invalid i) {
+            o.addProperty("valid", false);
+            o.addProperty("key", i.key());
+            o.addProperty("error", i.getMessage());
+            return o;
+        }
+        o.addProperty("valid", true);
+        if (name != null) {
+            Engine e = engine;
+            Analysis then = analysis(e.session().withProfile(edited));
+            JsonObject impact = e.analysis().impact(then, name, text, folder(name));
+            o.add("became", impact.get("became"));
+            o.add("gone", impact.get("gone"));
+        }
+        return o;
+    }
+
+    /**
+     * POST /api/profile/save {file, values, force?}: the edited profile written under DIR as one step
+     * (a NAME.machine file; an existing one only with force), and used from then on by every check,
+     * simulation and compile of this studio.
+     */
+    private JsonObject saveProfile(JsonObject req) throws IOException, Http.Fail {
+        String file = Http.required(req, "file");
+        boolean force = Http.flag(req, "force");
+        ProfileEdit edit = profileEdit();
+        java.util.Map<String, String> values = ProfileEdit.values(req);
+        Path target = refusing(() -> workspace.writableProfile(file));
+        String text = edit.edited(values);
+        gcnc.machine.MachineProfile edited;
+        try {
+            edited = edit.load(text);
+        } catch (ProfileEdit.Invalid i) {
+            throw new Http.Fail(400, (i.key() == null ? "" : i.key() + ": ") + i.getMessage());
+        }
+        if (!force && java.nio.file.Files.exists(target, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+            throw new Http.Fail(409, file + " already exists");
+        }
+        try (AtomicOutput out = new AtomicOutput(target)) {
+            java.io.Writer w = out.writer();
+            w.write(text);
+            w.flush();
+            out.commit();
+        } catch (AtomicOutput.Refused e) {
+            throw new Http.Fail(403, "gcnc refuses to write " + file + " (" + e.code().id() + ")");
+        } catch (IOException e) {
+            throw new Http.Fail(500, "could not save " + file + ": " + reason(e));
+        }
+        Session session = engine.session().withProfile(edited);
+        synchronized (this) {
+            engine = engine(session, ProfileEdit.saved(session, target, text, messages), workspace.name(target));
+        }
+        JsonObject o = new JsonObject();
+        o.addProperty("file", workspace.name(target));
+        o.addProperty("machine", edited.name());
         return o;
     }
 

@@ -71,6 +71,20 @@ final class Http {
         return s;
     }
 
+    /** A whole-number member from {@code min} to {@code max}; 400 when absent or anything else. */
+    static int integer(JsonObject o, String name, int min, int max) throws Fail {
+        JsonElement e = o.get(name);
+        if (e == null || !e.isJsonPrimitive() || !e.getAsJsonPrimitive().isNumber()) {
+            throw new Fail(400, "the request needs \"" + name + "\", a whole number");
+        }
+        java.math.BigDecimal v = e.getAsBigDecimal();
+        if (v.signum() != 0 && v.stripTrailingZeros().scale() > 0 || v.compareTo(java.math.BigDecimal.valueOf(min)) < 0
+                || v.compareTo(java.math.BigDecimal.valueOf(max)) > 0) {
+            throw new Fail(400, "\"" + name + "\" must be a whole number from " + min + " to " + max);
+        }
+        return v.intValueExact();
+    }
+
     static boolean flag(JsonObject o, String name) throws Fail {
         JsonElement e = o.get(name);
         if (e == null || e.isJsonNull()) {

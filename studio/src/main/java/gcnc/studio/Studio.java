@@ -45,6 +45,8 @@ public final class Studio implements AutoCloseable {
             "studio.js", "text/javascript; charset=utf-8",
             "gcode-mode.js", "text/javascript; charset=utf-8",
             "profile.js", "text/javascript; charset=utf-8",
+            "hover.js", "text/javascript; charset=utf-8",
+            "configure.js", "text/javascript; charset=utf-8",
             "i18n.js", "text/javascript; charset=utf-8",
             "studio.css", "text/css; charset=utf-8");
 
@@ -73,8 +75,7 @@ public final class Studio implements AutoCloseable {
         this.contentPolicy = "default-src 'none'; script-src 'self' '" + sha256(webJars.importMap())
                 + "'; style-src 'self' 'unsafe-inline'; connect-src 'self'; img-src 'self' data:; base-uri 'none';"
                 + " form-action 'none'; frame-ancestors 'none'";
-        this.api = new Api(workspace, new Analysis(config.session(),
-                config.session().tables().messages().in(config.lang()), config.version()), config);
+        this.api = new Api(workspace, config);
     }
 
     /** Binds the loopback address (never another interface) and starts serving. */

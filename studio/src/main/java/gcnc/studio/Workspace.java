@@ -16,6 +16,7 @@ import java.util.ArrayList;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.regex.Pattern;
 
 /**
@@ -160,6 +161,29 @@ final class Workspace {
             throw new Refused(400, name + ": a program's name ends in ." + String.join(", .", ProgramFiles.EXTENSIONS));
         }
         return p;
+    }
+
+    /**
+     * A machine profile Configure may write: a name ending in .machine, inside DIR, in a folder
+     * that exists, never through a link, a device or a pipe.
+     */
+    Path writableProfile(String name) throws Refused, IOException {
+        Path p = resolve(name);
+        if (!p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".machine")
+                || p.getFileName().toString().length() <= ".machine".length()) {
+            throw new Refused(400, shown(name) + ": a machine profile's name ends in .machine");
+        }
+        return writable(p, name, false);
+    }
+
+    /** A file's name relative to DIR when it is a program under DIR (links followed), else empty. */
+    Optional<String> nameOf(String file) {
+        try {
+            Path real = Path.of(file).toRealPath();
+            return real.startsWith(root) && isProgram(real) ? Optional.of(name(real)) : Optional.empty();
+        } catch (IOException | InvalidPathException e) {
+            return Optional.empty();
+        }
     }
 
     /** The name of {@code p} relative to DIR, '/' between folders. */

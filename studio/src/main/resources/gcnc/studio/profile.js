@@ -30,8 +30,11 @@ function bounds(d) {
 }
 
 /**
- * Draws `drawing` into `svg`; `onPick(line)` when a move is clicked. Returns a function that lights the
- * moves of one G-code line (and returns how many it lit).
+ * Draws `drawing` into `svg`; `onPick(line, file, elsewhere)` when a move is clicked (`file`: the called program
+ * the line is in, when not this one; `elsewhere`: in a file outside the studio's folder). Returns a function that lights the
+ * moves of one G-code line (and returns how many it lit); its `scrub(answer)` draws an answer of
+ * POST /api/stock over the drawing (null takes it away): the stock as it stood after the block, what the
+ * block removed (between the outline before it and after it) and the insert and holder where it ended.
  */
 export function drawProfile(svg, drawing, onPick) {
   svg.replaceChildren();
@@ -61,12 +64,14 @@ export function drawProfile(svg, drawing, onPick) {
   const ordered = [...drawing.moves.filter((m) => m.rapid), ...drawing.moves.filter((m) => !m.rapid)];
   ordered.forEach((m) => {
     const g = el("g", { class: "move" + (m.rapid ? " rapid" : " feed"), "data-line": m.line }, svg);
+    if (m.file) g.dataset.file = m.file;
     const title = el("title", {}, g);
-    title.textContent = `line ${m.line}`;
+    title.textContent = m.file ? `${m.file}: line ${m.line}` : `line ${m.line}`;
     // a wide transparent stroke under the visible one: a thin move is easy to click
     el("polyline", { points: pts(m.z, m.x), class: "hit" }, g);
     el("polyline", { points: pts(m.z, m.x), class: "stroke" }, g);
-    g.addEventListener("click", () => onPick(m.line));
+    g.addEventListener("click", () => onPick(m.line, m.file, m.elsewhere));
+    if (m.file || m.elsewhere) return; // a line of another file: not lit by this file's cursor
     if (!byLine.has(m.line)) byLine.set(m.line, []);
     byLine.get(m.line).push(g);
   });
@@ -85,10 +90,32 @@ export function drawProfile(svg, drawing, onPick) {
   label(4, 12, `X ${fmt(b.xMax)}`, "start");
   label(4, py(0) - 3, "X 0", "start");
   let lit = [];
-  return (line) => {
+  const light = (line) => {
     lit.forEach((g) => g.classList.remove("current"));
     lit = byLine.get(line) || [];
     lit.forEach((g) => { g.classList.add("current"); svg.appendChild(g); }); // drawn last: on top
     return lit.length;
   };
+  const axis = drawing.stock ? drawing.stock.xAxis : 0;
+  /** A stock outline (x for each z) closed down to the centreline. */
+  const solid = (o) => {
+    const n = o.z.length;
+    return pts([o.z[0], ...o.z, o.z[n - 1]], [axis, ...o.x, axis]);
+  };
+  light.scrub = (s) => {
+    const old = svg.querySelector("g.scrub");
+    if (old) old.remove();
+    svg.classList.toggle("scrubbing", !!(s && s.found));
+    if (!s || !s.found) return;
+    const g = el("g", { class: "scrub", "data-line": s.line }, svg);
+    // the outline before the block, then the one after it over it: what shows of the first is what the block took
+    if (s.before.z.length > 1) el("polygon", { points: solid(s.before), class: "removed" }, g);
+    if (s.after.z.length > 1) el("polygon", { points: solid(s.after), class: "left" }, g);
+    if (s.holder) el("polygon", { points: pts(s.holder.z, s.holder.x), class: "holder" }, g);
+    if (s.insert) el("polygon", { points: pts(s.insert.z, s.insert.x), class: "insert" }, g);
+    // the moves stay on top, so that the path can still be clicked
+    for (const m of svg.querySelectorAll("g.move")) svg.appendChild(m);
+    for (const m of svg.querySelectorAll("circle.mark")) svg.appendChild(m);
+  };
+  return light;
 }

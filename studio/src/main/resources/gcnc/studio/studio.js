@@ -2,7 +2,7 @@
 // by G-code line. Everything it knows comes from the studio's JSON API (docs/studio.md), which runs the same
 // gcnc.Session as the command line.
 import { EditorView, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter, drawSelection } from "@codemirror/view";
-import { EditorState } from "@codemirror/state";
+import { EditorState, StateEffect } from "@codemirror/state";
 import { syntaxHighlighting, defaultHighlightStyle } from "@codemirror/language";
 import { history as undoHistory, defaultKeymap, historyKeymap } from "@codemirror/commands";
 import { searchKeymap } from "@codemirror/search";
@@ -10,6 +10,8 @@ import { linter, lintGutter, lintKeymap } from "@codemirror/lint";
 import { gcode } from "/static/gcode-mode.js";
 import { drawProfile } from "/static/profile.js";
 import { t, translatePage } from "/static/i18n.js";
+import { gcodeHover } from "/static/hover.js";
+import { configure } from "/static/configure.js";
 
 const params = new URLSearchParams(location.search);
 const token = params.get("token") || "";
@@ -73,6 +75,9 @@ async function lint(view) {
   });
 }
 
+/** Another machine profile is in use (Configure saved one): the text is judged again as it is. */
+const profileChanged = StateEffect.define();
+
 const view = new EditorView({
   parent: $("editor"),
   state: EditorState.create({ doc: "", extensions: extensions() }),
@@ -82,7 +87,8 @@ function extensions() {
   return [
     lineNumbers(), highlightActiveLineGutter(), undoHistory(), drawSelection(), highlightActiveLine(),
     syntaxHighlighting(defaultHighlightStyle, { fallback: true }), gcode,
-    lintGutter(), linter(lint, { delay: 250 }),
+    lintGutter(), linter(lint, { delay: 250, needsRefresh: (u) => u.transactions.some((tr) => tr.effects.some((e) => e.is(profileChanged))) }),
+    gcodeHover((line, word) => current.name ? api("hover", { name: current.name, text: view.state.doc.toString(), line, word }) : null),
     keymap.of([...defaultKeymap, ...historyKeymap, ...searchKeymap, ...lintKeymap,
       { key: "Mod-s", preventDefault: true, run: () => { save(false); return true; } }]),
     EditorView.updateListener.of((u) => {
@@ -111,12 +117,12 @@ function cursorMoved() {
 }
 
 /** Puts the cursor at a line (and column) and shows it: from the error list, the path or the DMC. */
-function goTo(line, column) {
+function goTo(line, column, keepFocus) {
   const doc = view.state.doc;
   const l = doc.line(Math.min(Math.max(line, 1), doc.lines));
   const pos = Math.min(l.from + Math.max((column || 1) - 1, 0), l.to);
   view.dispatch({ selection: { anchor: pos }, scrollIntoView: true });
-  view.focus();
+  if (!keepFocus) view.focus();
 }
 
 function dirty() {
@@ -192,14 +198,78 @@ function showSimulation(r) {
   $("path").classList.toggle("stale", !fresh && $("profile").childElementCount > 0);
   $("galil").classList.toggle("stale", !fresh && $("dmc").childElementCount > 0);
   if (fresh) {
-    lightPath = drawProfile($("profile"), r.drawing, (line) => goTo(line, 1));
+    lightPath = drawProfile($("profile"), r.drawing, pick);
     showDmc(r.dmc);
     $("pathnote").textContent = "";
+    scrubBlocks(r.drawing.moves);
   } else {
     $("pathnote").textContent = $("profile").childElementCount > 0 ? t.stalePath : t.noPath;
   }
   showSummary(r);
   cursorMoved();
+}
+
+/** A click on a move: its line, in this program or in the called program it is written in. */
+async function pick(line, file, elsewhere) {
+  if (elsewhere) { status(t.elsewhere(line), "bad"); return; }
+  if (!file || file === current.name) { goTo(line, 1); return; }
+  await open(file);
+  if (current.name === file) goTo(line, 1);
+}
+
+// ---- scrub: the stock after a block ---------------------------------------------------------------------
+
+/** The blocks the slider steps through: each G-code line that moved the tool, in the order it first did. */
+let scrubLines = [];
+let scrubTimer = null;
+let scrubSeq = 0;
+
+function scrubBlocks(moves) {
+  const was = scrubLines[$("scrub").value - 1];
+  scrubLines = [];
+  const seen = new Set();
+  for (const m of moves) {
+    if (!seen.has(m.line)) { seen.add(m.line); scrubLines.push(m.line); }
+  }
+  const slider = $("scrub");
+  slider.max = String(scrubLines.length);
+  const at = was === undefined ? -1 : scrubLines.indexOf(was);
+  slider.value = String(at + 1);
+  scrubbed();
+}
+
+/** The slider moved: 0 shows the finished part; k the stock after the k-th block. */
+function scrubbed() {
+  clearTimeout(scrubTimer);
+  const k = Number($("scrub").value);
+  if (k === 0) {
+    scrubSeq++;
+    lightPath.scrub && lightPath.scrub(null);
+    $("scrubinfo").textContent = t.scrubEnd;
+    $("scrubinfo").dataset.line = "";
+    return;
+  }
+  const line = scrubLines[k - 1];
+  $("scrubinfo").textContent = t.scrubAt(k, scrubLines.length, line) + " …";
+  scrubTimer = setTimeout(() => showStock(line), 120);
+}
+
+async function showStock(line) {
+  if (!current.name) return;
+  const my = ++scrubSeq;
+  let s;
+  try {
+    s = await api("stock", { name: current.name, text: view.state.doc.toString(), line });
+  } catch (e) {
+    status(e.message, "bad");
+    return;
+  }
+  if (my !== scrubSeq) return;
+  lightPath.scrub && lightPath.scrub(s);
+  const k = scrubLines.indexOf(line) + 1;
+  $("scrubinfo").textContent = t.scrubAt(k, scrubLines.length, line) + (s.found && s.tool ? ` · T${s.tool}` : "");
+  $("scrubinfo").dataset.line = String(line);
+  goTo(line, 1, true);
 }
 
 function showDmc(lines) {
@@ -210,8 +280,10 @@ function showDmc(lines) {
     const li = document.createElement("li");
     li.textContent = l.text;
     li.dataset.source = l.line;
-    if (l.line > 0) li.addEventListener("click", () => goTo(l.line, 1));
+    if (l.file) li.dataset.file = l.file;
+    if (l.line > 0) li.addEventListener("click", () => pick(l.line, l.file, l.elsewhere));
     ol.appendChild(li);
+    if (l.file || l.elsewhere) continue; // a called program's line: not this file's cursor's
     if (!dmcBySource.has(l.line)) dmcBySource.set(l.line, []);
     dmcBySource.get(l.line).push(li);
   }
@@ -275,6 +347,9 @@ function load(name, text, version) {
   $("profile").replaceChildren(); // another program: nothing of the last one's path or DMC stays
   $("dmc").replaceChildren();
   lightPath = () => 0;
+  scrubLines = [];
+  $("scrub").max = "0";
+  $("scrub").value = "0";
   dmcBySource = new Map();
   $("files").value = name;
   dirtyChanged();
@@ -372,14 +447,31 @@ $("new").addEventListener("click", newProgram);
 $("save").addEventListener("click", () => save(false));
 $("saveas").addEventListener("click", saveAs);
 $("compile").addEventListener("click", compile);
+$("scrub").addEventListener("input", scrubbed);
+configure({
+  api,
+  program: () => (current.name ? { name: current.name, text: view.state.doc.toString() } : null),
+  goTo: (line) => goTo(line, 1),
+  status,
+  saved: async () => {
+    // every check, simulation and compile now uses the saved profile: judge the program again
+    await showInfo();
+    view.dispatch({ effects: profileChanged.of(null) });
+    scheduleSimulate();
+  },
+});
+
+async function showInfo() {
+  const info = await api("info");
+  $("where").textContent = `${info.folder} · ${info.profileFile || info.machine} · ${info.control}`;
+}
 window.addEventListener("beforeunload", (e) => {
   if (dirty()) { e.preventDefault(); e.returnValue = ""; }
 });
 
 (async () => {
   try {
-    const info = await api("info");
-    $("where").textContent = `${info.folder} · ${info.machine} · ${info.control}`;
+    await showInfo();
     await listFiles();
     const events = new EventSource("/api/events?token=" + encodeURIComponent(token));
     events.addEventListener("files", (e) => listFiles(JSON.parse(e.data).files));

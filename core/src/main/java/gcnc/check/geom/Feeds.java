@@ -44,9 +44,24 @@ public final class Feeds {
             return null;
         }
         if (cps > p.maxFeed()) {
-            d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, Arcs.text(cps), Arcs.text(p.maxFeed()));
+            d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, programTerms(d, f, rpm, cps, p.maxFeed(), perUnitPerMin));
             return null;
         }
         return new Feed(f, cps);
+    }
+
+    /**
+     * A feed finding's arguments in the program's terms first, the controller's counts second
+     * (E103; E207 stays in counts, as the galil backend reports it too: 1 count/s is its limit): the F as written and its mode ({@code mm/rev × 800 rpm}, {@code in/min}), the
+     * speed along the path it gives and the limit, both per minute in the program's units, then
+     * the counts per second and the limit in counts.
+     */
+    private static Object[] programTerms(BlockDraft d, double f, double rpm, double cps, double limitCps,
+                                         double perUnitPerMin) {
+        String unit = d.units == gcnc.machine.Units.INCH ? "in" : "mm";
+        String mode = d.next.feedPerRev ? unit + "/rev × " + Arcs.text(rpm) + " rpm" : unit + "/min";
+        String written = d.has(Letter.F) ? d.word(Letter.F).number() : Arcs.text(f);
+        return new Object[] {written, mode, Arcs.text(cps / perUnitPerMin), unit + "/min",
+            Arcs.text(limitCps / perUnitPerMin), Arcs.text(cps), Arcs.text(limitCps)};
     }
 }

@@ -1,0 +1,304 @@
+package gcnc.cli;
+
+import gcnc.Compiler;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Messages;
+import gcnc.dmc.SourceMap;
+import gcnc.output.DmcOutputs;
+import gcnc.send.BlockTable;
+import gcnc.send.DmcProgram;
+import gcnc.send.Event;
+import gcnc.send.EventSink;
+import gcnc.send.JsonEvents;
+import gcnc.send.Link;
+import gcnc.send.MapReader;
+import gcnc.send.Operator;
+import gcnc.send.ProgramForm;
+import gcnc.send.ResumePoint;
+import gcnc.send.RunFault;
+import gcnc.send.Sender;
+import gcnc.send.TcpLink;
+import gcnc.sim.SimOptions;
+import gcnc.tables.TableException;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code gcnc run}: the thesis's MEMORY mode. Compiles and simulates the program as {@code compile}
+ * does (writing FILE.dmc and its map), refuses it unless clean, then runs it on a Galil over a
+ * serial port or Ethernet ({@link Sender}; docs/run.md).
+ */
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = {"Check, compile and simulate a program, then run it on a Galil controller (the thesis's MEMORY mode).",
+                "Refuses any program that is not clean. Keys while it runs: Enter = next step / end a hold,"
+                        + " + and - = feed override by 10%%, h = feed hold, q = stop; Ctrl-C holds, a second Ctrl-C stops."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:the program ran to its end (--dry-run: everything but motion was done)",
+                "1:the program is not clean: nothing was sent", "2:usage or connection problem (no port, port held, wrong"
+                        + " controller, too little memory, not ready): nothing moved",
+                "3:stopped by a fault or the operator; the command that resumes is printed"})
+final class SendCommand implements Callable<Integer> {
+    @Mixin
+    CommonOptions common;
+
+    @Mixin
+    StockOptions stock;
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(paramLabel = "FILE", description = "The G-code program.")
+    Path file;
+
+    static final class Target {
+        @Option(names = "--port", paramLabel = "DEV", required = true, description = "Serial device of the controller (/dev/ttyUSB0).")
+        String port;
+
+        @Option(names = "--tcp", paramLabel = "HOST[:PORT]", required = true, description = "Ethernet: the controller's address (port 23 unless given).")
+        String tcp;
+    }
+
+    @ArgGroup(exclusive = true, multiplicity = "1")
+    Target target;
+
+    @Option(names = "--baud", paramLabel = "N", defaultValue = "115200", description = "Serial speed (default: ${DEFAULT-VALUE}).")
+    int baud;
+
+    @Option(names = "--handshake", paramLabel = "hardware|none", defaultValue = "hardware",
+            description = "Serial flow control (default: ${DEFAULT-VALUE}, as Galil's own library).")
+    String handshake;
+
+    @Option(names = "--step", description = "One G-code block at a time: each runs on Enter (the thesis's Trace).")
+    boolean step;
+
+    @Option(names = "--resume-at", paramLabel = "N[:K]",
+            description = "Continue an interrupted run at G-code line N (K: its K-th motion), as the stop message printed.")
+    String resumeAt;
+
+    @Option(names = "--dry-run", description = "Everything but motion: connect, pre-flight, download and read back.")
+    boolean dryRun;
+
+    @Option(names = {"-q", "--quiet"}, description = "No status line: findings and the outcome only.")
+    boolean quiet;
+
+    @Option(names = "--format", paramLabel = "text|json", defaultValue = "text",
+            description = "text (default): a status line; json: one event object per line on standard output (docs/run.md).")
+    String format;
+
+    @Option(names = "--timeout", paramLabel = "MS", defaultValue = "2000", description = "How long to wait for each reply (default: ${DEFAULT-VALUE} ms).")
+    int timeoutMs;
+
+    @Option(names = "--poll", paramLabel = "MS", defaultValue = "100", description = "How often to ask where the program is (default: ${DEFAULT-VALUE} ms).")
+    int pollMs;
+
+    @Option(names = "--stall", paramLabel = "SECONDS", defaultValue = "10",
+            description = "Stop the run when the axes stand still this long inside a motion that has not ended (default: ${DEFAULT-VALUE}).")
+    double stallSeconds;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        if (!format.equals("text") && !format.equals("json")) {
+            throw new ParameterException(spec.commandLine(), "--format takes text or json, not '" + format + "'");
+        }
+        ResumePoint resume;
+        try {
+            resume = resumeAt == null ? null : ResumePoint.parse(resumeAt);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        if (SourceFiles.isStdin(file)) {
+            throw new ParameterException(spec.commandLine(), "run reads the keyboard on standard input: name the program's file");
+        }
+        boolean json = format.equals("json");
+        Reporter reporter = new Reporter(Reporter.Format.GNU, quiet, json ? err : out, err, common.language());
+        int status;
+        try {
+            status = send(common.load(reporter), reporter, resume, json, out, err);
+        } catch (TableException e) {
+            status = reporter.tableFault(e);
+        }
+        out.flush();
+        err.flush();
+        return status;
+    }
+
+    private int send(CommonOptions.Setup setup, Reporter reporter, ResumePoint resume, boolean json, PrintWriter out,
+                     PrintWriter err) throws TableException {
+        String name = SourceFiles.display(file);
+        Messages messages = setup.tables().messages().in(common.language());
+        EventSink events = json ? new JsonEvents(out) : new StatusText(out, err, name, quiet, System.console() != null, reporter.phrases());
+        Optional<SimOptions> sim;
+        try {
+            sim = Optional.of(stock.options(setup.profile()));
+        } catch (StockOptions.BadStock e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        // 1. the compile, as `gcnc compile` does it: FILE.dmc and FILE.dmc.map, written only when clean
+        Path dmc = DmcOutputs.defaultOutput(file);
+        try (DmcOutputs outputs = DmcOutputs.open(file, dmc, true)) {
+            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+            outputs.mapSource(file.getFileName().toString(), file);
+            Compiler.Result r;
+            try (Reader in = SourceFiles.open(file)) {
+                r = setup.session().withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, false,
+                        mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
+            }
+            if (!r.ok()) {
+                if (json) {
+                    for (Diagnostic d : r.diagnostics().sorted()) {
+                        events.accept(new Event.Finding(d.code().id(), d.severity().label(), d.span().line(),
+                                messages.render(d.code(), d.args())));
+                    }
+                } else {
+                    reporter.report(name, r.diagnostics());
+                }
+                err.println(reporter.phrases().get("run.not_clean", name,
+                        reporter.phrases().count(r.diagnostics().errorCount(), "error")));
+                return Sender.REFUSED;
+            }
+            outputs.commit();
+        } catch (DmcOutputs.Failed e) {
+            return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
+        } catch (IOException e) {
+            return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
+        }
+        // 2. the program as written, and its map read back
+        DmcProgram program;
+        BlockTable blocks;
+        try (BufferedReader map = Files.newBufferedReader(DmcOutputs.mapFile(dmc), StandardCharsets.UTF_8);
+             Reader again = SourceFiles.open(file)) {
+            program = DmcProgram.read(Files.readAllLines(dmc, StandardCharsets.UTF_8), MapReader.read(map), setup.profile());
+            blocks = BlockTable.of(again, setup.tables(), profileOnBlank(setup, sim), SourceFiles.programsFolder(file));
+        } catch (IOException e) {
+            return reporter.ioFault(dmc.toString(), gcnc.diag.Phrase.IO_CANNOT_READ, e);
+        }
+        // 3. the link
+        Link link;
+        try {
+            link = target.port != null ? SerialLink.open(target.port, baud, !handshake.equals("none"))
+                    : openTcp(target.tcp);
+        } catch (RunFault f) {
+            events.accept(new Event.Finding(f.code().id(), "error", 0, messages.render(f.code(), f.args())));
+            return Sender.CONNECTION;
+        }
+        // 4. the run, with the operator's keys and Ctrl-C
+        Operator operator = new Operator();
+        Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
+                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
+        Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
+        try (keys) {
+            return sender.run(link, timeoutMs);
+        }
+    }
+
+    /** The profile the compile used: with a blank given, the work offsets on the blank's face (as Compiler does). */
+    private static gcnc.machine.MachineProfile profileOnBlank(CommonOptions.Setup setup, Optional<SimOptions> sim) {
+        return sim.flatMap(SimOptions::stock).map(b -> setup.profile().withStickout(b.stickout())).orElse(setup.profile());
+    }
+
+    private Link openTcp(String hostPort) throws RunFault {
+        try {
+            return TcpLink.open(hostPort, timeoutMs);
+        } catch (IOException e) {
+            throw new RunFault(Code.E817_NO_CONNECTION, 0, false, hostPort,
+                    e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
+        }
+    }
+
+    /** The command line that resumes at {@code at}: this one with {@code --resume-at} set (and no --dry-run). */
+    String resumeCommand(ResumePoint at) {
+        List<String> args = new ArrayList<>(spec.commandLine().getParseResult().originalArgs());
+        List<String> outArgs = new ArrayList<>();
+        outArgs.add("gcnc");
+        for (int i = 0; i < args.size(); i++) {
+            String a = args.get(i);
+            if (a.equals("--resume-at")) {
+                i++;
+                continue;
+            }
+            if (a.startsWith("--resume-at=")) {
+                continue;
+            }
+            outArgs.add(quote(a));
+        }
+        outArgs.add("--resume-at");
+        outArgs.add(at.toString());
+        return String.join(" ", outArgs);
+    }
+
+    private static String quote(String a) {
+        return a.matches("[A-Za-z0-9_@%+=:,./-]+") ? a : "'" + a.replace("'", "'\\''") + "'";
+    }
+
+    /**
+     * The keyboard and Ctrl-C while a program runs: SIGINT is taken from the JVM for the run (the
+     * first holds, the second stops; the default handler is back afterwards) and standard input is
+     * read line by line (Enter, +, -, h, q).
+     */
+    static final class Keys implements AutoCloseable {
+        private final sun.misc.Signal interrupt = new sun.misc.Signal("INT");
+        private sun.misc.SignalHandler previous;
+        private final Thread reader;
+
+        Keys(Operator operator, java.io.InputStream in) {
+            try {
+                previous = sun.misc.Signal.handle(interrupt, s -> operator.interrupt());
+            } catch (IllegalArgumentException e) {
+                previous = null; // no SIGINT here (a JVM started with -Xrs): Ctrl-C ends the JVM as usual
+            }
+            reader = new Thread(() -> read(operator, in), "gcnc-run-keys");
+            reader.setDaemon(true);
+            reader.start();
+        }
+
+        private static void read(Operator operator, java.io.InputStream in) {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
+                for (String l = r.readLine(); l != null; l = r.readLine()) {
+                    String k = l.strip();
+                    switch (k) {
+                        case "" -> operator.enter();
+                        case "+" -> operator.override(Math.min(2, Math.round((operator.override() + 0.1) * 10) / 10.0));
+                        case "-" -> operator.override(Math.max(0.1, Math.round((operator.override() - 0.1) * 10) / 10.0));
+                        case "h" -> operator.interrupt();
+                        case "q" -> operator.stop();
+                        default -> {
+                            if (k.matches("\\d{1,3}%?")) {
+                                operator.override(Math.max(0.1, Math.min(2, Integer.parseInt(k.replace("%", "")) / 100.0)));
+                            }
+                        }
+                    }
+                }
+            } catch (IOException e) {
+                // standard input closed: the keys are gone, Ctrl-C still works
+            }
+        }
+
+        @Override
+        public void close() {
+            if (previous != null) {
+                sun.misc.Signal.handle(interrupt, previous);
+            }
+        }
+    }
+}

@@ -1,0 +1,160 @@
+package gcnc.cli;
+
+import gcnc.send.Event;
+import gcnc.send.EventSink;
+import java.io.PrintWriter;
+import java.util.Locale;
+
+/**
+ * {@code gcnc run}'s screen, like the thesis's MEMORY mode: a status line that the next one
+ * overwrites on a terminal (one line per block elsewhere, as a log), messages on their own lines,
+ * findings GCC-style on standard error ({@code part.nc:37:1: error[E820]: ...}).
+ * <pre>
+ * N120 line 37  X24.500 Z-3.200  F0.20/rev  S1200 cw  41%  0:00:19 left
+ * </pre>
+ */
+final class StatusText implements EventSink {
+    private final PrintWriter out;
+    private final PrintWriter err;
+    private final String file;
+    private final boolean quiet;
+    private final boolean terminal;
+    private final Phrases say;
+    private boolean blockChanged;
+    private boolean lineOpen;
+
+    StatusText(PrintWriter out, PrintWriter err, String file, boolean quiet, boolean terminal, Phrases say) {
+        this.say = say;
+        this.out = out;
+        this.err = err;
+        this.file = file;
+        this.quiet = quiet;
+        this.terminal = terminal;
+    }
+
+    @Override
+    public synchronized void accept(Event e) {
+        if (e instanceof Event.Finding f) {
+            endLine();
+            err.println(file + (f.line() > 0 ? ":" + f.line() + ":1" : "") + ": " + f.severity() + "[" + f.code() + "]: "
+                    + f.message());
+            err.flush();
+        } else if (e instanceof Event.Status s) {
+            if (quiet) {
+                return;
+            }
+            if (terminal) {
+                out.print("\r" + line(s) + "\u001b[K");
+                out.flush();
+                lineOpen = true;
+            } else if (blockChanged) {
+                out.println(line(s));
+                out.flush();
+            }
+            blockChanged = false;
+        } else if (e instanceof Event.Block) {
+            blockChanged = true;
+        } else if (e instanceof Event.Stopped s) {
+            endLine();
+            out.println(say.get("run.stopped", block(s.completed()), block(s.executing())));
+            if (s.resume() != null) {
+                out.println(say.get("run.resume", s.resume()));
+            }
+            out.flush();
+        } else if (!quiet) {
+            say(text(e));
+        }
+    }
+
+    private String block(int line) {
+        return line == 0 ? say.get("run.none") : say.get("run.line", line);
+    }
+
+    private void say(String text) {
+        if (text == null) {
+            return;
+        }
+        endLine();
+        out.println(text);
+        out.flush();
+    }
+
+    private void endLine() {
+        if (lineOpen) {
+            out.println();
+            lineOpen = false;
+        }
+    }
+
+    private String text(Event e) {
+        if (e instanceof Event.Connected c) {
+            return say.get("run.connected", c.link(), c.controller());
+        }
+        if (e instanceof Event.Preflight p) {
+            return say.get("run.preflight", p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(),
+                    p.labelsLeft(), p.variablesNeeded(), p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()),
+                    p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
+                    Math.round(p.position()[0]) + "," + Math.round(p.position()[1]));
+        }
+        if (e instanceof Event.Downloaded d) {
+            return say.get("run.downloaded", d.lines());
+        }
+        if (e instanceof Event.Started s) {
+            return say.get(s.dryRun() ? "run.started_dry" : "run.started", file,
+                    s.resumeAt() != null ? say.get("run.from_line", s.resumeAt()) : "", s.blocks(), s.lines(), clock(s.seconds()),
+                    say.get(s.step() ? "run.keys_step" : "run.keys"));
+        }
+        if (e instanceof Event.StepWait w) {
+            return say.get("run.step_wait", w.line(), w.number() != null ? " (N" + w.number() + ")" : "");
+        }
+        if (e instanceof Event.Hold h) {
+            return h.held() ? say.get("run.hold")
+                    : say.get("run.feed", Math.round(h.override() * 100), String.format(Locale.ROOT, "%.2f", h.override()));
+        }
+        if (e instanceof Event.Message m) {
+            return say.get("run.message", m.text());
+        }
+        if (e instanceof Event.Finished f) {
+            return f.dryRun() ? say.get("run.finished_dry") : say.get("run.finished", clock(f.seconds()));
+        }
+        return null;
+    }
+
+    /** The status line: block, position in program coordinates, feed, spindle, progress, time left. */
+    String line(Event.Status s) {
+        StringBuilder b = new StringBuilder();
+        if (s.number() != null) {
+            b.append('N').append(s.number()).append(' ');
+        }
+        b.append(say.get("run.line", s.line()));
+        if (s.program() != null) {
+            b.append(String.format(Locale.ROOT, "  X%.3f Z%.3f", s.program()[0], s.program()[1]));
+        } else if (s.counts() != null) {
+            b.append(String.format(Locale.ROOT, "  at %d,%d counts", Math.round(s.counts()[0]), Math.round(s.counts()[1])));
+        }
+        if (!Double.isNaN(s.feed())) {
+            b.append(String.format(Locale.ROOT, "  F%s%s", trim(s.feed()), s.perRev() ? "/rev" : "/min"));
+        }
+        if (!Double.isNaN(s.rpm()) && s.spindle() != null) {
+            b.append("  S").append(Math.round(s.rpm())).append(' ').append(s.spindle());
+        }
+        b.append(String.format(Locale.ROOT, "  %d%%  %s %s", Math.round(s.progress() * 100), clock(s.secondsLeft()),
+                say.get("run.left")));
+        if (s.held()) {
+            b.append("  HOLD");
+        } else if (s.override() != 1) {
+            b.append(String.format(Locale.ROOT, "  feed %d%%", Math.round(s.override() * 100)));
+        }
+        return b.toString();
+    }
+
+    private static String trim(double v) {
+        String t = String.format(Locale.ROOT, "%.4f", v).replaceAll("0+$", "");
+        return t.endsWith(".") ? t + "0" : t;
+    }
+
+    static String clock(double seconds) {
+        long s = Math.round(seconds);
+        return String.format(Locale.ROOT, "%d:%02d:%02d", s / 3600, s / 60 % 60, s % 60);
+    }
+}

@@ -1,0 +1,369 @@
+package gcnc.controller;
+
+import java.io.Writer;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+/**
+ * The state of one virtual Galil: program memory, variables and arrays, the eight program threads, the
+ * vector motion, the digital outputs and the spindle's analog offsets, the last error. Every entry point is
+ * synchronized on the controller: the connections' commands and the clock's {@link #advance} never
+ * interleave, so a run is a function of the commands and of how far the clock went, and a test that
+ * drives {@link #advance} itself gets the same run every time.
+ *
+ * <p>{@link Statements} executes a command, from the host or from a thread; this class holds what the
+ * commands act on and reads the operands ({@code _LMS}, {@code _CSS}, ...) for them.
+ */
+public final class Controller implements Expressions.Scope {
+    /** Where the controller's unsolicited output (a program's MG, a program error) goes. */
+    public interface Listener {
+        void unsolicited(byte[] bytes);
+    }
+
+    final Model model;
+    final Program program = new Program();
+    final Map<String, Double> variables = new HashMap<>();
+    final Map<String, double[]> arrays = new HashMap<>();
+    final ProgramThread[] threads = new ProgramThread[8];
+    final VectorMotion motion;
+    final boolean[] servo;
+    final double[] offsets;
+    long outputs;
+    /** Inputs read 1 when nothing pulls them low (Galil's inputs are pulled up). */
+    long inputs = -1L;
+    Tc lastError = Tc.NONE;
+    int errorLine = -1;
+    int errorThread = -1;
+    /** CW: 1 marks unsolicited characters with their high bit set, 2 does not (the power-up value). */
+    int cw = 2;
+    boolean limitTripped;
+    private double time;
+    private final Trace trace;
+    private final List<Listener> listeners = new CopyOnWriteArrayList<>();
+    final Statements statements;
+
+    /** A controller of {@code model} with the segment faults of {@code faults} armed, tracing to {@code trace} (or null). */
+    public Controller(Model model, List<Fault> faults, Writer trace) {
+        this.model = model;
+        this.trace = trace == null ? null : new Trace(trace);
+        this.servo = new boolean[model.axes];
+        this.offsets = new double[model.axes];
+        for (int i = 0; i < threads.length; i++) {
+            threads[i] = new ProgramThread(i);
+        }
+        this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
+            @Override
+            public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
+                if (Controller.this.trace != null) {
+                    Controller.this.trace.segment(sequence, css, s, free, t);
+                }
+            }
+
+            @Override
+            public void sequenceEnded(int sequence, String why, double p1, double p2, double t) {
+                limitTripped = false;
+                event(String.format(Locale.ROOT, "%s %d at %d,%d", why, sequence, (long) p1, (long) p2), t);
+            }
+
+            @Override
+            public void limitTripped() {
+                tripLimit();
+            }
+        });
+        for (Fault f : faults) {
+            if (f.kind() == Fault.Kind.STALL) {
+                motion.stallAfter = f.n();
+            } else if (f.kind() == Fault.Kind.LIMIT_AT) {
+                motion.limitAt = f.n();
+            }
+        }
+        this.statements = new Statements(this);
+        if (this.trace != null) {
+            this.trace.header(model.revision);
+        }
+    }
+
+    private void event(String text, double t) {
+        if (trace != null) {
+            trace.event(text, t);
+        }
+    }
+
+    public void addListener(Listener l) {
+        listeners.add(l);
+    }
+
+    public void removeListener(Listener l) {
+        listeners.remove(l);
+    }
+
+    /** Controller time, seconds since power-up. */
+    public synchronized double time() {
+        return time;
+    }
+
+    /**
+     * Executes one command from the host (a statement without its terminator) and returns what the
+     * controller sends before its {@code :} ("" for a command without data, "data\r\n" for an
+     * interrogation); a rejected command throws, sets the error {@code TC1} reports, and changes nothing.
+     */
+    synchronized String command(String statement) throws GalilException {
+        try {
+            return statements.execute(statement, null);
+        } catch (GalilException e) {
+            lastError = e.tc;
+            throw e;
+        }
+    }
+
+    /** A {@code reject} fault answered {@code ?}: TC1 says the command was not recognized. */
+    synchronized void rejected() {
+        lastError = Tc.UNRECOGNIZED;
+    }
+
+    /** Checks that a DL may start now (not while a thread runs: TC 17). */
+    synchronized void downloadAllowed(String args) throws GalilException {
+        try {
+            for (ProgramThread t : threads) {
+                if (t.running()) {
+                    throw new GalilException(Tc.DL_WHILE_RUNNING);
+                }
+            }
+            if (!args.isEmpty() && !args.equals("#")) {
+                throw new GalilException(Tc.OPERAND);
+            }
+        } catch (GalilException e) {
+            lastError = e.tc;
+            throw e;
+        }
+    }
+
+    /** Stores a downloaded program ({@code append} for {@code DL #}). */
+    synchronized void download(String text, boolean append) throws GalilException {
+        try {
+            program.download(text, append, model);
+        } catch (GalilException e) {
+            lastError = e.tc;
+            throw e;
+        }
+    }
+
+    /** Runs {@code seconds} of controller time: the motion, then every running thread, a millisecond at a time. */
+    public synchronized void advance(double seconds) {
+        double left = seconds;
+        while (left > 1e-12) {
+            double h = Math.min(left, VectorMotion.STEP);
+            motion.advance(h, time);
+            time += h;
+            left -= h;
+            // Galil decodes a command in about 0.05 ms (DMC-40x0 user manual): 20 a millisecond per thread
+            int budget = Math.max(1, (int) Math.round(h * 20_000));
+            for (ProgramThread t : threads) {
+                if (t.running()) {
+                    statements.flow.run(t, budget);
+                }
+            }
+        }
+    }
+
+    /** Runs until no thread runs and no motion moves, or {@code limit} seconds passed; the time it took. */
+    public synchronized double settle(double limit) {
+        double start = time;
+        while (time - start < limit && (motion.running() || anyThread())) {
+            advance(VectorMotion.STEP);
+        }
+        return time - start;
+    }
+
+    private boolean anyThread() {
+        for (ProgramThread t : threads) {
+            if (t.running()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The limit fault: the switch is active until the stop it causes ends, and #LIMSWI runs if there is one. */
+    private void tripLimit() {
+        limitTripped = true;
+        event("limit switch tripped", time);
+        int line = program.label("LIMSWI");
+        if (line >= 0) {
+            threads[0].interrupt(line);
+        }
+    }
+
+    /** Sends unsolicited text (a program's MG): every character's high bit set after {@code CW 1}. */
+    void unsolicited(String text) {
+        byte[] b = text.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+        if (cw == 1) {
+            for (int i = 0; i < b.length; i++) {
+                b[i] = (byte) (b[i] | 0x80);
+            }
+        }
+        for (Listener l : listeners) {
+            l.unsolicited(b);
+        }
+    }
+
+    /** A statement of a thread failed: #CMDERR takes the thread over, or every thread stops (Galil's rule). */
+    void programError(ProgramThread t, int line, String statement, GalilException e) {
+        lastError = e.tc;
+        errorLine = line;
+        errorThread = t.number;
+        int handler = program.label("CMDERR");
+        if (handler >= 0 && !t.inErrorHandler) {
+            t.start(handler);
+            t.inErrorHandler = true;
+            return;
+        }
+        for (ProgramThread each : threads) {
+            each.halt();
+        }
+        unsolicited("?" + line + " " + statement + "\r\n");
+    }
+
+    // ---- operands and names (Expressions.Scope) ----
+
+    /** A-H, or X Y Z W for A-D; -1 when not an axis of this model. */
+    int axis(char c) {
+        int a = switch (c) {
+            case 'X' -> 0;
+            case 'Y' -> 1;
+            case 'Z' -> 2;
+            case 'W' -> 3;
+            default -> c >= 'A' && c <= 'H' ? c - 'A' : -1;
+        };
+        return a < model.axes ? a : -1;
+    }
+
+    /** The axes a string of letters names ("XY", "AB"), in order; TC 4 for anything else. */
+    List<Integer> axes(String letters) throws GalilException {
+        List<Integer> out = new ArrayList<>();
+        for (char c : letters.toCharArray()) {
+            int a = axis(c);
+            if (a < 0 || out.contains(a)) {
+                throw new GalilException(Tc.OPERAND);
+            }
+            out.add(a);
+        }
+        return out;
+    }
+
+    @Override
+    public double variable(String name) throws GalilException {
+        if (name.equals("TIME")) {
+            return Math.floor(time * 1024);
+        }
+        Double v = variables.get(name);
+        if (v == null) {
+            throw new GalilException(Tc.UNRECOGNIZED);
+        }
+        return v;
+    }
+
+    @Override
+    public double array(String name, int index) throws GalilException {
+        double[] a = arrays.get(name);
+        if (a == null) {
+            throw new GalilException(Tc.BAD_FUNCTION);
+        }
+        if (index >= a.length) {
+            throw new GalilException(Tc.BAD_INDEX);
+        }
+        return a[index];
+    }
+
+    @Override
+    public double io(String function, int n) throws GalilException {
+        if (n < 1 || n > model.outputs) {
+            throw new GalilException(Tc.RANGE);
+        }
+        long bits = function.equals("IN") ? inputs : outputs;
+        return (bits >> (n - 1) & 1) != 0 ? 1 : 0;
+    }
+
+    @Override
+    public double operand(String name) throws GalilException {
+        int elements = 0;
+        for (double[] a : arrays.values()) {
+            elements += a.length;
+        }
+        switch (name) {
+            case "LMS": return motion.free();
+            case "CSS": return motion.css();
+            case "BGS": return motion.running() ? 1 : 0;
+            case "SCS": return motion.stopCode;
+            case "VRS": return motion.vr;
+            case "VSS": return motion.vs;
+            case "TC": return lastError.code;
+            case "ED": return errorLine;
+            case "ED1": return errorThread;
+            case "DL": return model.labels - program.labelCount();
+            case "UL": return model.variables - variables.size();
+            case "DA": return Model.ARRAYS - arrays.size();
+            case "DM": return model.arrayElements - elements;
+            default: break;
+        }
+        if (name.length() == 3 && name.startsWith("XQ") && Character.isDigit(name.charAt(2))) {
+            int n = name.charAt(2) - '0';
+            if (n > 7) {
+                throw new GalilException(Tc.OPERAND);
+            }
+            return threads[n].running() ? threads[n].line : -1;
+        }
+        if (name.length() == 3) {
+            int a = axis(name.charAt(2));
+            if (a >= 0) {
+                switch (name.substring(0, 2)) {
+                    case "TP", "RP": return Math.rint(motion.position[a]);
+                    case "VP": return motion.corner(a);
+                    case "BG": return motion.running() && (a == motion.axis1 || a == motion.axis2) ? 1 : 0;
+                    case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;
+                    case "MO": return servo[a] ? 0 : 1;
+                    case "OF": return offsets[a];
+                    // limit inputs are active low: 0 while the switch is tripped
+                    case "LF": return limitTripped && a == motion.axis1 ? 0 : 1;
+                    case "LR": return 1;
+                    case "HM": return 1; // the home input, inactive: no homing is modelled
+                    default: break;
+                }
+            }
+        }
+        throw new GalilException(Tc.UNRECOGNIZED);
+    }
+
+    // ---- reading state for a status line or a test ----
+
+    /** The commanded position of axis {@code a} (counts, whole). */
+    public synchronized long position(int a) {
+        return (long) Math.rint(motion.position[a]);
+    }
+
+    public synchronized boolean moving() {
+        return motion.running();
+    }
+
+    public synchronized boolean output(int n) {
+        return (outputs >> (n - 1) & 1) != 0;
+    }
+
+    public synchronized double offset(int axis) {
+        return offsets[axis];
+    }
+
+    public synchronized String programText() {
+        return program.upload();
+    }
+
+    public synchronized void close() {
+        if (trace != null) {
+            trace.close();
+        }
+    }
+}

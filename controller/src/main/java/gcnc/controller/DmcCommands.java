@@ -1,0 +1,459 @@
+package gcnc.controller;
+
+import gcnc.diag.Code;
+import gcnc.dmc.Command;
+import gcnc.dmc.DmcReader;
+import gcnc.machine.GalilModel;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.regex.Pattern;
+
+/**
+ * The commands gcnc writes (gcnc.dmc): read by {@link DmcReader}, the one reader of DMC, and executed
+ * here as the virtual controller does them, in time. A program on the controller may give their
+ * arguments as expressions ({@code WT dwms}, {@code VP p0[i],p1[i]}) and segment speeds
+ * ({@code VP a,b <o >p}), which gcnc does not write: the expressions are evaluated and the speeds taken
+ * off first, then the literal command is read. What the reader refuses is {@code ?}: E300 as TC 1,
+ * E301 as TC 4, E310 as TC 6.
+ */
+final class DmcCommands implements Command.Visitor<Void> {
+    /** The heads of the commands of gcnc.dmc that take arguments; {@code TOOL=} too. */
+    private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
+            "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA");
+    /** The commands whose arguments may be expressions here: each is evaluated to a number. */
+    private static final Set<String> NUMERIC = Set.of("VP", "CR", "VS", "VA", "VD", "WT", "SB", "CB", "OF");
+    private static final Pattern LITERAL = Pattern.compile("[+-]?[0-9]+(\\.[0-9]+)?");
+
+    private final Controller c;
+    private final ProgramThread th;
+    private double o = Double.NaN;
+    private double p = Double.NaN;
+
+    private DmcCommands(Controller c, ProgramThread th) {
+        this.c = c;
+        this.th = th;
+    }
+
+    /** Is {@code st} one of gcnc's DMC commands (so that this class executes it)? */
+    static boolean handles(String st) {
+        return st.startsWith("TOOL=") || st.length() >= 2 && HEADS.contains(st.substring(0, 2));
+    }
+
+    /** Executes {@code st} (for which {@link #handles} is true) for the host (th null) or a thread. */
+    static void execute(String st, Controller c, ProgramThread th) throws GalilException {
+        DmcCommands run = new DmcCommands(c, th);
+        String literal = run.literal(st);
+        GalilException[] refused = new GalilException[1];
+        Command command = DmcReader.read(literal, (code, args) -> refused[0] = new GalilException(
+                code == Code.E300_SIM_UNKNOWN_INSTRUCTION ? Tc.UNRECOGNIZED : code == Code.E310_SIM_COUNT_RANGE ? Tc.RANGE
+                        : Tc.OPERAND));
+        if (refused[0] != null) {
+            throw refused[0];
+        }
+        if (command == null) {
+            return;
+        }
+        try {
+            command.accept(run);
+        } catch (Refused r) {
+            throw r.reason;
+        }
+    }
+
+    /** {@code st} with its expressions evaluated and its segment speeds taken off (into {@link #o}, {@link #p}). */
+    private String literal(String st) throws GalilException {
+        if (st.startsWith("TOOL=")) {
+            String v = st.substring(5).strip();
+            return LITERAL.matcher(v).matches() ? st : "TOOL=" + whole(Expressions.eval(v, c));
+        }
+        String head = st.substring(0, 2);
+        String args = st.substring(2).strip();
+        if (!NUMERIC.contains(head)) {
+            return st;
+        }
+        if (head.equals("VP") || head.equals("CR")) {
+            int lt = depthZero(args, '<');
+            int gt = depthZero(args, '>');
+            if (lt >= 0) {
+                o = Expressions.eval(args.substring(lt + 1, gt > lt ? gt : args.length()), c);
+            }
+            if (gt >= 0) {
+                p = Expressions.eval(args.substring(gt + 1, lt > gt ? lt : args.length()), c);
+            }
+            int cut = lt >= 0 ? (gt >= 0 ? Math.min(lt, gt) : lt) : gt;
+            args = cut >= 0 ? args.substring(0, cut).strip() : args;
+        }
+        List<String> out = new ArrayList<>();
+        for (String a : Statements.split(args)) {
+            if (a.isEmpty() || LITERAL.matcher(a).matches()) {
+                out.add(a);
+            } else {
+                double v = Expressions.eval(a, c);
+                // VP, WT, SB and CB take whole numbers: Galil truncates a fraction
+                out.add(head.equals("CR") || head.equals("OF") || head.startsWith("V") && !head.equals("VP")
+                        ? decimal(v) : whole(v));
+            }
+        }
+        return head + (out.isEmpty() || out.size() == 1 && out.get(0).isEmpty() ? "" : " " + String.join(",", out));
+    }
+
+    private static String whole(double v) {
+        return Long.toString((long) v);
+    }
+
+    private static String decimal(double v) {
+        String s = String.format(Locale.ROOT, "%.4f", v);
+        return s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
+    }
+
+    static int depthZero(String s, char want) {
+        int depth = 0;
+        for (int i = 0; i < s.length(); i++) {
+            char ch = s.charAt(i);
+            if (ch == '(' || ch == '[') {
+                depth++;
+            } else if (ch == ')' || ch == ']') {
+                depth--;
+            } else if (ch == want && depth == 0) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /** A GalilException through the visitor, whose methods cannot throw it. */
+    private static final class Refused extends RuntimeException {
+        final GalilException reason;
+
+        Refused(GalilException reason) {
+            super(null, null, false, false);
+            this.reason = reason;
+        }
+    }
+
+    private static Refused refuse(Tc tc) {
+        return new Refused(new GalilException(tc));
+    }
+
+    private interface Action {
+        void run() throws GalilException;
+    }
+
+    private static Void doing(Action a) {
+        try {
+            a.run();
+        } catch (GalilException e) {
+            throw new Refused(e);
+        }
+        return null;
+    }
+
+    private static double range(double v, double min, double max) {
+        if (v < min || v > max) {
+            throw refuse(Tc.RANGE);
+        }
+        return v;
+    }
+
+    private void onlyInProgram() {
+        if (th == null) {
+            throw refuse(Tc.ONLY_IN_PROGRAM);
+        }
+    }
+
+    private void waitUntilStill() {
+        onlyInProgram();
+        VectorMotion mo = c.motion;
+        th.waitingFor = () -> !mo.running();
+    }
+
+    private Void notModelled() {
+        throw refuse(Tc.UNRECOGNIZED);
+    }
+
+    @Override
+    public Void label(Command.Label x) {
+        return null;
+    }
+
+    @Override
+    public Void servoHere(Command.ServoHere x) {
+        return doing(() -> {
+            for (int a : c.axes(x.axes())) {
+                c.servo[a] = true;
+            }
+        });
+    }
+
+    @Override
+    public Void vectorMode(Command.VectorMode x) {
+        return doing(() -> {
+            List<Integer> a = c.axes(x.axes());
+            if (a.size() != 2) {
+                throw new GalilException(Tc.OPERAND);
+            }
+            if (c.motion.running()) {
+                throw new GalilException(Tc.WHILE_RUNNING);
+            }
+            c.motion.clear();
+            c.motion.axis1 = a.get(0);
+            c.motion.axis2 = a.get(1);
+        });
+    }
+
+    /** The model's range of a limit (tables/galil_models.csv), TC 6 outside it. */
+    private double within(double v, GalilModel.Limit limit) {
+        GalilModel.Range r = c.model.galil.range(limit);
+        if (!r.holds(v, limit.below())) {
+            throw refuse(Tc.RANGE);
+        }
+        return v;
+    }
+
+    /** VA and VD: rounded down to a multiple of the step, 1,024 (command reference VA: "VA 20000" reads 19456). */
+    private double acceleration(double v) {
+        long step = c.model.galil.range(GalilModel.Limit.ACCELERATION).step();
+        return Math.floor(within(v, GalilModel.Limit.ACCELERATION) / step) * step;
+    }
+
+    @Override
+    public Void vectorAcceleration(Command.VectorAcceleration x) {
+        c.motion.va = acceleration(x.countsPerSecond2().value());
+        c.motion.changed();
+        return null;
+    }
+
+    @Override
+    public Void vectorDeceleration(Command.VectorDeceleration x) {
+        if (c.motion.running()) {
+            throw refuse(Tc.WHILE_RUNNING); // "VD Not Valid while in motion"
+        }
+        c.motion.vd = acceleration(x.countsPerSecond2().value());
+        c.motion.changed();
+        return null;
+    }
+
+    @Override
+    public Void stock(Command.Stock x) {
+        return null;
+    }
+
+    @Override
+    public Void feedMark(Command.FeedMark x) {
+        return null;
+    }
+
+    @Override
+    public Void sourceMark(Command.SourceMark x) {
+        return null;
+    }
+
+    @Override
+    public Void remark(Command.Remark x) {
+        return null;
+    }
+
+    @Override
+    public Void vectorSpeed(Command.VectorSpeed x) {
+        c.motion.vs = within(x.countsPerSecond().value(), GalilModel.Limit.VECTOR_SPEED);
+        c.motion.changed();
+        return null;
+    }
+
+    @Override
+    public Void vectorPosition(Command.VectorPosition x) {
+        return doing(() -> c.motion.vp(x.first(), x.second(), o, p));
+    }
+
+    @Override
+    public Void circularArc(Command.CircularArc x) {
+        return doing(() -> c.motion.cr(x.radius().value(), x.start().value(), x.sweep().value(), o, p));
+    }
+
+    @Override
+    public Void vectorEnd(Command.VectorEnd x) {
+        return doing(c.motion::ve);
+    }
+
+    @Override
+    public Void beginSequence(Command.BeginSequence x) {
+        return doing(() -> {
+            VectorMotion mo = c.motion;
+            if (mo.axis1 < 0) {
+                throw new GalilException(Tc.NO_SEQUENCE);
+            }
+            if (!c.servo[mo.axis1] || !c.servo[mo.axis2]) {
+                throw new GalilException(Tc.MOTOR_OFF);
+            }
+            if (c.limitTripped) {
+                throw new GalilException(Tc.LIMIT_SWITCH);
+            }
+            mo.begin();
+        });
+    }
+
+    @Override
+    public Void awaitSequence(Command.AwaitSequence x) {
+        waitUntilStill();
+        return null;
+    }
+
+    @Override
+    public Void offset(Command.Offset x) {
+        if (x.channel() >= c.model.axes) {
+            throw refuse(Tc.OPERAND);
+        }
+        c.offsets[x.channel()] = range(x.volts().value(), -9.9982, 9.9982);
+        return null;
+    }
+
+    @Override
+    public Void await(Command.Wait x) {
+        onlyInProgram();
+        // WT: 2 to 2,147,483,646 ms (command reference WT)
+        double until = c.time() + within(x.milliseconds(), GalilModel.Limit.DWELL) / 1000;
+        th.waitingFor = () -> c.time() >= until - 1e-9;
+        return null;
+    }
+
+    @Override
+    public Void toolNumber(Command.ToolNumber x) {
+        if (!c.variables.containsKey("TOOL") && c.variables.size() >= c.model.variables) {
+            throw refuse(Tc.TOO_MANY_VARIABLES);
+        }
+        c.variables.put("TOOL", (double) x.station());
+        return null;
+    }
+
+    @Override
+    public Void revolver(Command.Revolver x) {
+        return notModelled(); // the thesis dialect's own words, not a Galil command
+    }
+
+    @Override
+    public Void passThroughM(Command.PassThroughM x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void output(Command.Output x) {
+        int n = (int) range(x.bit(), 1, c.model.outputs);
+        c.outputs = x.on() ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
+        return null;
+    }
+
+    // Thread passes (gearing to the spindle encoder) and independent moves are not modelled: a program
+    // with them is refused at the command, never run as if it had none (docs/virtual-controller.md).
+
+    @Override
+    public Void gearMaster(Command.GearMaster x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void syncPoint(Command.SyncPoint x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void waitPast(Command.WaitPast x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void gearRatio(Command.GearRatio x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void positionAbsolute(Command.PositionAbsolute x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void begin(Command.Begin x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void afterMotion(Command.AfterMotion x) {
+        return doing(() -> {
+            for (int a : c.axes(x.axes())) {
+                if (a != c.motion.axis1 && a != c.motion.axis2) {
+                    throw new GalilException(Tc.UNRECOGNIZED);
+                }
+            }
+            waitUntilStill();
+        });
+    }
+
+    @Override
+    public Void end(Command.End x) {
+        if (th != null) {
+            th.back();
+        }
+        return null;
+    }
+
+    // The machine around the motion (gcnc.galil.MachineCode): program flow, messages, stops, the
+    // servo settings, soft limits and assignments are the controller's own statements (Statements,
+    // Expressions), which run them from the text before this class is asked (handles() is false
+    // for their heads); reaching one here is a command this controller does not model.
+
+    @Override
+    public Void analogOut(Command.AnalogOut x) {
+        return notModelled(); // AO addresses a Modbus device: none is attached to the virtual controller
+    }
+
+    @Override
+    public Void axisSetting(Command.AxisSetting x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void softLimit(Command.SoftLimit x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void jump(Command.Jump x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void call(Command.Call x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void message(Command.Message x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void stop(Command.Stop x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void abort(Command.Abort x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void clearStack(Command.ClearStack x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void setVariable(Command.SetVariable x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void setDeadline(Command.SetDeadline x) {
+        return notModelled();
+    }
+}

@@ -1,0 +1,410 @@
+package gcnc.controller;
+
+import gcnc.machine.GalilModel;
+import java.util.ArrayDeque;
+import java.util.Iterator;
+
+/**
+ * The coordinated (vector) motion of coordinate system S in time: the segment buffer (511 slots), the
+ * sequence origin, and the profiler that runs the segments one after the other.
+ *
+ * <p>Galil's rules (command reference VM, VP, CR, VE, VR, BG; docs/virtual-controller.md): a sequence's
+ * origin is where the axes stood when its first segment was given, and every VP is an end point from that
+ * origin; a CR starts where the previous segment ended (0 degrees along the first plane axis,
+ * counter-clockwise positive). A segment runs at its {@code <o} speed, or VS, times VR, accelerating at VA
+ * and decelerating at VD; {@code >p} is the speed it must have come down to at its end. After VE the
+ * profiler decelerates, over as many segments as it needs, to stop on the last end point. When the buffer
+ * runs dry without VE the motion "stops instantly at the last vector" and the sequence ends (an underrun).
+ *
+ * <p>The profile is a trapezoid per segment integrated in steps of at most one millisecond of controller
+ * time; a look-ahead (backward) pass over the buffer caps each segment's end speed so that every later
+ * {@code >p} and the VE stop are reachable at VD. Slot accounting: a segment frees its slot when it starts
+ * executing, VE holds one until the end, so {@code _LMS = 511 - waiting segments - VE} and a sender that
+ * keeps {@code sent - _CSS <= 511} never overflows (the EPICS driver's rule).
+ */
+final class VectorMotion {
+    /** What becomes of a segment and a sequence; the trace and the program threads listen. */
+    interface Events {
+        void segmentDone(int sequence, int css, VectorSegment s, int free, double time);
+
+        void sequenceEnded(int sequence, String why, double p1, double p2, double time);
+
+        /** The limit fault has tripped during a segment (the controller decides what follows). */
+        void limitTripped();
+    }
+
+    /** TC 31 "Total move distance in a sequence > 2 billion" (the table's sequence_max is LI's 2^30, stricter). */
+    static final double MAX_SEQUENCE = 2_000_000_000;
+    static final double STEP = 0.001;
+
+    private final int slots;
+    /** The model's ranges (tables/galil_models.csv): segment length, radius, arc, segment speeds. */
+    private final GalilModel.Range segment;
+    private final GalilModel.Range radius;
+    private final GalilModel.Range arc;
+    private final GalilModel.Range speed;
+    private final Events events;
+    /** The two plane axes (channel indices), -1 before VM. */
+    int axis1 = -1;
+    int axis2 = -1;
+    /** Commanded positions of every axis (counts). */
+    final double[] position;
+    double vs = 25_000;
+    double va = 256_000;
+    double vd = 256_000;
+    double vr = 1;
+
+    private final ArrayDeque<VectorSegment> waiting = new ArrayDeque<>();
+    private VectorSegment current;
+    private double s;
+    private double v;
+    private boolean ve;
+    private boolean running;
+    private int given;
+    private int css;
+    private double pathTotal;
+    private double origin1;
+    private double origin2;
+    private double cursor1;
+    private double cursor2;
+    private int sequence;
+    private double corner1;
+    private double corner2;
+    /** Nonzero while a stop decelerates the sequence: the stop code it will leave (4 ST, 2 limit). */
+    private int stopping;
+    int stopCode = 0;
+    /** Segments executed since power-up, for the faults that name a segment. */
+    private long executed;
+    long stallAfter = -1;
+    long limitAt = -1;
+    private boolean stalled;
+    /** End-speed caps of current and waiting, in deque order; recomputed when dirty. */
+    private double[] caps = new double[0];
+    private boolean dirty = true;
+
+    VectorMotion(GalilModel model, Events events) {
+        this.slots = (int) model.range(GalilModel.Limit.BUFFER_SEGMENTS).max();
+        this.segment = model.range(GalilModel.Limit.SEGMENT_LENGTH);
+        this.radius = model.range(GalilModel.Limit.ARC_RADIUS);
+        this.arc = model.range(GalilModel.Limit.ARC_LENGTH);
+        this.speed = model.range(GalilModel.Limit.SEGMENT_SPEED);
+        int axes = model.axes();
+        this.events = events;
+        this.position = new double[Math.max(axes, 2)];
+    }
+
+    boolean running() {
+        return running;
+    }
+
+    /** {@code _LMS}: free slots. */
+    int free() {
+        return slots - waiting.size() - (ve ? 1 : 0);
+    }
+
+    /** {@code _CSS}: the number of the segment executing (the last one after the sequence ended). */
+    int css() {
+        return css;
+    }
+
+    double corner(int axis) {
+        return axis == axis1 ? corner1 : axis == axis2 ? corner2 : position[axis];
+    }
+
+    /** Path speed now (counts/s), {@code _VPS}-like; used by the status of a test. */
+    double speed() {
+        return v;
+    }
+
+    /** A new sequence takes its origin from where the axes stand. */
+    private void startIfNeeded() {
+        if (!running && waiting.isEmpty() && given == 0) {
+            origin1 = position[axis1];
+            origin2 = position[axis2];
+            cursor1 = origin1;
+            cursor2 = origin2;
+            pathTotal = 0;
+            corner1 = origin1;
+            corner2 = origin2;
+        }
+    }
+
+    private void room() throws GalilException {
+        if (axis1 < 0) {
+            throw new GalilException(Tc.S_OPERAND);
+        }
+        if (ve) {
+            throw new GalilException(Tc.WHILE_RUNNING);
+        }
+        if (free() <= 0) {
+            throw new GalilException(Tc.BUFFER_FULL);
+        }
+    }
+
+    /** {@code VP a,b <o >p}: o and p NaN when not given. */
+    void vp(double a, double b, double o, double p) throws GalilException {
+        room();
+        speeds(o, p);
+        startIfNeeded();
+        double e1 = origin1 + a;
+        double e2 = origin2 + b;
+        if (Math.abs(e1 - cursor1) > segment.max() || Math.abs(e2 - cursor2) > segment.max()) {
+            throw new GalilException(Tc.RANGE);
+        }
+        double length = Math.hypot(e1 - cursor1, e2 - cursor2);
+        if (length == 0) {
+            throw new GalilException(Tc.SEGMENT_TOO_SHORT);
+        }
+        add(new VectorSegment(given + 1, false, cursor1, cursor2, e1, e2, 0, 0, 0, 0, 0, length, o, p, 0), e1, e2);
+    }
+
+    /** {@code CR r,start,sweep <o >p}, angles in degrees. */
+    void cr(double r, double startDeg, double sweepDeg, double o, double p) throws GalilException {
+        room();
+        speeds(o, p);
+        if (!radius.holds(r, false) || Math.abs(startDeg) > 32000 || Math.abs(sweepDeg) > 32000
+                || !arc.holds(r * Math.abs(sweepDeg), true)) {
+            throw new GalilException(Tc.RANGE);
+        }
+        if (sweepDeg == 0) {
+            throw new GalilException(Tc.SEGMENT_TOO_SHORT);
+        }
+        startIfNeeded();
+        // the simulator's own arithmetic for a CR (gcnc.dmc's), so that the two end every arc on the same
+        // double and the trace compares count for count
+        double[] g = gcnc.dmc.Command.CircularArc.geometry(cursor1, cursor2, r, startDeg, sweepDeg);
+        double c1 = g[0];
+        double c2 = g[1];
+        double e1 = g[2];
+        double e2 = g[3];
+        double th = Math.toRadians(startDeg);
+        double sweep = Math.toRadians(sweepDeg);
+        add(new VectorSegment(given + 1, true, cursor1, cursor2, e1, e2, c1, c2, r, th, sweep, Math.abs(sweep) * r, o, p, 0),
+                e1, e2);
+    }
+
+    private void speeds(double o, double p) throws GalilException {
+        if (!Double.isNaN(o) && !speed.holds(o, false) || !Double.isNaN(p) && (p < 0 || p > speed.max())) {
+            throw new GalilException(Tc.RANGE);
+        }
+    }
+
+    private void add(VectorSegment seg, double e1, double e2) throws GalilException {
+        if (pathTotal + seg.length() > MAX_SEQUENCE) {
+            throw new GalilException(Tc.SEQUENCE_TOO_LONG);
+        }
+        pathTotal += seg.length();
+        given++;
+        waiting.add(seg);
+        cursor1 = e1;
+        cursor2 = e2;
+        dirty = true;
+    }
+
+    /** {@code VE}: the end of the sequence; the profiler will stop on the last end point. */
+    void ve() throws GalilException {
+        if (axis1 < 0) {
+            throw new GalilException(Tc.S_OPERAND);
+        }
+        if (given == 0 && !running) {
+            return; // nothing to end: accepted, no effect
+        }
+        if (!ve) {
+            if (free() <= 0) {
+                throw new GalilException(Tc.BUFFER_FULL);
+            }
+            ve = true;
+            dirty = true;
+        }
+    }
+
+    /** {@code BGS}. */
+    void begin() throws GalilException {
+        if (running) {
+            throw new GalilException(Tc.BEGIN_WHILE_RUNNING);
+        }
+        if (waiting.isEmpty()) {
+            throw new GalilException(Tc.NO_SEQUENCE);
+        }
+        running = true;
+        stopping = 0;
+        stalled = false;
+        stopCode = 100;
+        sequence++;
+        css = 0;
+        v = 0;
+        current = null;
+    }
+
+    /** {@code CS S}: clears the buffer of a sequence that is not running. */
+    void clear() throws GalilException {
+        if (running) {
+            throw new GalilException(Tc.WHILE_RUNNING);
+        }
+        waiting.clear();
+        ve = false;
+        given = 0;
+        css = 0;
+        dirty = true;
+    }
+
+    /** {@code ST S}: decelerate at VD and end the sequence where it stops. */
+    void stop(int code) {
+        if (running && stopping == 0) {
+            stopping = code;
+        }
+    }
+
+    /** {@code AB}, {@code MO}: the motion ends here and now. */
+    void abort(int code, double time) {
+        if (running) {
+            v = 0;
+            end(code, "abort", time);
+        }
+    }
+
+    void changed() {
+        dirty = true;
+    }
+
+    /** Runs {@code dt} seconds of controller time from {@code time}. */
+    void advance(double dt, double time) {
+        double t = time;
+        double left = dt;
+        while (running && left > 1e-12) {
+            double h = Math.min(left, STEP);
+            // a segment that ends within the step hands the rest of the step to the next one
+            double used = h - step(h, t);
+            t += used;
+            left -= used;
+        }
+    }
+
+    /** One step of at most {@code h} seconds; returns the part of it left unused when a segment ended in it. */
+    private double step(double h, double time) {
+        if (current == null && !next(time)) {
+            return 0;
+        }
+        if (stalled) {
+            if (stopping != 0) {
+                end(stopping, "stop", time);
+            }
+            return 0;
+        }
+        if (dirty) {
+            capsFor();
+        }
+        double cruise = stopping != 0 ? 0 : (Double.isNaN(current.o()) ? vs : current.o()) * vr;
+        double remaining = current.length() - s;
+        // the braking curve read where this step will end at the present speed, so that the profile comes
+        // down to a segment's end speed on time instead of a step late
+        double target = Math.min(cruise, Math.sqrt(caps[0] * caps[0] + 2 * vd * Math.max(0, remaining - v * h)));
+        if (stopping != 0) {
+            target = 0;
+        }
+        double next = v < target ? Math.min(target, v + va * h) : Math.max(target, v - vd * h);
+        double ds = (v + next) / 2 * h;
+        v = next;
+        if (limitAt > 0 && current.global() == limitAt && stopping == 0 && s + ds >= current.length() / 2) {
+            limitAt = -1;
+            stopping = 2;
+            events.limitTripped();
+        }
+        if (s + ds >= current.length()) {
+            double average = ds / h;
+            double used = average > 0 ? Math.min(h, remaining / average) : h;
+            finishSegment(time + used);
+            return h - used;
+        }
+        s += ds;
+        position[axis1] = current.at1(s);
+        position[axis2] = current.at2(s);
+        if (stopping != 0 && v == 0) {
+            end(stopping, "stop", time + h);
+        }
+        return 0;
+    }
+
+    /** Takes the next segment from the buffer; false when the sequence ended (VE reached or underrun). */
+    private boolean next(double time) {
+        VectorSegment seg = waiting.poll();
+        if (seg == null) {
+            end(101, ve ? "end" : "underrun", time);
+            return false;
+        }
+        executed++;
+        current = new VectorSegment(seg.number(), seg.arc(), seg.from1(), seg.from2(), seg.end1(), seg.end2(),
+                seg.centre1(), seg.centre2(), seg.radius(), seg.startRad(), seg.sweepRad(), seg.length(), seg.o(),
+                seg.p(), executed);
+        css = seg.number();
+        s = 0;
+        dirty = true;
+        return true;
+    }
+
+    private void finishSegment(double time) {
+        VectorSegment done = current;
+        position[axis1] = done.end1();
+        position[axis2] = done.end2();
+        corner1 = Math.rint(done.end1());
+        corner2 = Math.rint(done.end2());
+        current = null;
+        events.segmentDone(sequence, done.number(), done, free(), time);
+        if (stopping != 0 && v == 0) {
+            end(stopping, "stop", time);
+            return;
+        }
+        if (stallAfter > 0 && done.global() == stallAfter) {
+            stallAfter = -1;
+            stalled = true;
+            v = 0;
+            current = done; // the profiler holds here: nothing more leaves the buffer
+            s = done.length();
+            return;
+        }
+        if (waiting.isEmpty() && !ve) {
+            // an underrun: no controlled deceleration, the axes stop on the last vector
+            v = 0;
+        }
+        if (waiting.isEmpty()) {
+            end(stopping != 0 ? stopping : 101, stopping != 0 ? "stop" : ve ? "end" : "underrun", time);
+        }
+    }
+
+    private void end(int code, String why, double time) {
+        running = false;
+        stopping = 0;
+        stalled = false;
+        stopCode = code;
+        v = 0;
+        current = null;
+        waiting.clear();
+        ve = false;
+        given = 0;
+        position[axis1] = Math.rint(position[axis1]);
+        position[axis2] = Math.rint(position[axis2]);
+        dirty = true;
+        events.sequenceEnded(sequence, why, position[axis1], position[axis2], time);
+    }
+
+    /** The end-speed cap of the current segment and of every waiting one, from the last back (look-ahead). */
+    private void capsFor() {
+        int n = waiting.size() + 1;
+        if (caps.length < n) {
+            caps = new double[Math.max(n, 2 * caps.length)];
+        }
+        VectorSegment[] order = new VectorSegment[n];
+        order[0] = current;
+        Iterator<VectorSegment> it = waiting.iterator();
+        for (int i = 1; i < n; i++) {
+            order[i] = it.next();
+        }
+        double after = ve ? 0 : Double.POSITIVE_INFINITY;
+        for (int i = n - 1; i >= 0; i--) {
+            double own = Double.isNaN(order[i].p()) ? Double.POSITIVE_INFINITY : order[i].p() * vr;
+            caps[i] = Math.min(own, after);
+            after = Math.sqrt(caps[i] * caps[i] + 2 * vd * order[i].length());
+        }
+        dirty = false;
+    }
+}

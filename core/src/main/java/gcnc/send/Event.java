@@ -1,0 +1,74 @@
+package gcnc.send;
+
+/**
+ * What a run tells its front ends, in order: the command line's status line and the JSON event
+ * stream ({@code gcnc run --format json}, one object per line, docs/run.md) are both made from
+ * these, and the studio reads the same stream. Each record's components are the JSON object's
+ * fields, in this order, after {@code "event"} (the record's name in kebab case).
+ */
+public sealed interface Event {
+    /** The link is open and the controller said what it is ({@code ^R^V}). */
+    record Connected(String link, String controller) implements Event {
+    }
+
+    /**
+     * Pre-flight: what the controller has and what the program needs (never fewer than needed, or
+     * the run stops here with E819).
+     */
+    record Preflight(String model, int programLines, int programLinesNeeded, int labelsLeft, int labelsNeeded,
+                     int variablesLeft, int variablesNeeded, int arraySpace, int vectorSlots, int vectorSlotsNeeded,
+                     String pendingError, String limitSwitches, String motorsOff, double[] position) implements Event {
+    }
+
+    /** The program (or one step of it) is on the controller and was read back identical. */
+    record Downloaded(int lines, boolean verified) implements Event {
+    }
+
+    /** The program starts; {@code lines} DMC lines from {@code blocks} G-code blocks, {@code seconds} estimated. */
+    record Started(String form, int lines, int blocks, double seconds, boolean dryRun, boolean step,
+                   String resumeAt) implements Event {
+    }
+
+    /**
+     * Where the machine is: the DMC line executing (1-based, as the .dmc file numbers it) and the
+     * G-code line (and N number, and file for a called program) it came from; the tool's position
+     * in program coordinates (X as programmed, Z; null when unknown) and in Galil counts; feed and
+     * spindle in force; progress 0..1 and the estimated seconds left; the override (VR) and
+     * whether a feed hold is on.
+     */
+    record Status(int dmcLine, int line, String number, String file, double[] program, double[] counts,
+                  double feed, boolean perRev, boolean inch, double rpm, String spindle, double progress,
+                  double secondsLeft, double override, boolean held) implements Event {
+    }
+
+    /** The executing G-code block changed: {@code completed} is the one before it (0: none yet). */
+    record Block(int line, String number, int completed) implements Event {
+    }
+
+    /** Step mode waits for Enter before running {@code line}. */
+    record StepWait(int line, String number) implements Event {
+    }
+
+    /** Feed hold on ({@code held}) or off; the override in force. */
+    record Hold(boolean held, double override) implements Event {
+    }
+
+    /** A diagnostic of the run (a fault, a warning of the pre-flight), with its code and G-code line (0: none). */
+    record Finding(String code, String severity, int line, String message) implements Event {
+    }
+
+    /** A message the controller sent on its own (MG of a program, its error text), or a note of the sender. */
+    record Message(String text) implements Event {
+    }
+
+    /**
+     * The run stopped before the end: why, the last block completed and the block executing (G-code
+     * lines; 0 = none), and the command that resumes it (null when there is nothing to resume).
+     */
+    record Stopped(String reason, int completed, int executing, String resumeAt, String resume) implements Event {
+    }
+
+    /** The program ran to its end (or the dry run did everything but motion). */
+    record Finished(double seconds, boolean dryRun) implements Event {
+    }
+}

@@ -1,0 +1,139 @@
+package gcnc.send;
+
+/**
+ * Where the run is, as the last poll saw it: the compiled program's line executing, hence the
+ * G-code block executing and the one completed before it; and the events that say so (a
+ * {@link Event.Block} when the block changes, a {@link Event.Status} per poll).
+ */
+public final class Progress {
+    private final DmcProgram program;
+    private final BlockTable blocks;
+    private final EventSink events;
+    private int executing = -1;
+    private int lastBlock = -1;
+    private boolean started;
+    private final long began = System.nanoTime();
+
+    public Progress(DmcProgram program, BlockTable blocks, EventSink events) {
+        this.program = program;
+        this.blocks = blocks;
+        this.events = events;
+    }
+
+    public DmcProgram program() {
+        return program;
+    }
+
+    public BlockTable blocks() {
+        return blocks;
+    }
+
+    public EventSink events() {
+        return events;
+    }
+
+    /** The program was started on the controller: from now on a stop leaves something to resume. */
+    public void started() {
+        started = true;
+    }
+
+    public boolean hasStarted() {
+        return started;
+    }
+
+    /** The compiled program's line executing now (0-based), -1 before the first poll. */
+    public int executingIndex() {
+        return executing;
+    }
+
+    /** G-code line of the block executing (0: none yet). */
+    public int executingLine() {
+        return executing < 0 ? 0 : program.sourceLine(executing);
+    }
+
+    /** G-code line of the last block completed (0: none). */
+    public int completedLine() {
+        return executing < 0 ? 0 : program.blockBefore(executing);
+    }
+
+    /**
+     * Where a resume continues: the block executing and, when it makes several motions, the one it
+     * was in ({@code N:K}); the block's start when no motion of it had begun.
+     */
+    public ResumePoint resumePoint() {
+        int e = Math.max(executing, 0);
+        int line = program.sourceLine(e);
+        if (line == 0) {
+            // the header or the footer: the first block, or nothing left to do after the last
+            for (int i = e; i < program.lines().size(); i++) {
+                if (program.sourceLine(i) > 0) {
+                    return new ResumePoint(program.sourceLine(i), 0);
+                }
+            }
+            return null;
+        }
+        Sequence s = program.sequenceAt(e);
+        java.util.List<Sequence> all = program.sequencesOf(line);
+        int k = s == null ? -1 : all.indexOf(s);
+        if (s == null) {
+            // between motions (an output, a dwell): the last motion of the block already done, if any
+            for (int i = 0; i < all.size(); i++) {
+                if (all.get(i).last() < e) {
+                    k = i;
+                }
+            }
+        }
+        return new ResumePoint(line, k <= 0 ? 0 : k + 1);
+    }
+
+    /** The line about to run (step mode, before its Enter): where a stop then says the run was. */
+    public void pointAt(int index) {
+        executing = index;
+    }
+
+    /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */
+    public void at(int index, double[] counts, Operator operator) {
+        if (index >= 0) {
+            executing = index;
+        }
+        int line = executingLine();
+        BlockTable.Block b = blocks.at(line);
+        if (line != lastBlock && line > 0) {
+            lastBlock = line;
+            events.accept(new Event.Block(line, b == null ? null : b.number(), completedLine()));
+        }
+        double done = program.secondsBefore(Math.max(executing, 0)) + partDone(counts);
+        double total = program.totalSeconds();
+        double[] machine = counts == null ? null : program.plane().machine(counts);
+        double[] prog = b == null || machine == null ? null : b.program(machine);
+        events.accept(new Event.Status(executing + 1, line, b == null ? null : b.number(),
+                program.sourceFile(executing), prog, counts, b == null ? Double.NaN : b.feed(), b != null && b.perRev(),
+                b != null && b.inch(), b == null ? Double.NaN : b.rpm(), b == null ? null : spindle(b.spindle()),
+                total <= 0 ? 0 : Math.min(1, done / total), Math.max(0, total - done), operator.override(),
+                operator.held()));
+    }
+
+    /** Seconds of the executing motion already done, from how far along it the axes are (the chord, for arcs). */
+    private double partDone(double[] counts) {
+        Sequence s = counts == null || executing < 0 ? null : program.sequenceAt(executing);
+        if (s == null || s.seconds() <= 0) {
+            return 0;
+        }
+        double from = Math.hypot(counts[0] - s.start()[0], counts[1] - s.start()[1]);
+        double to = Math.hypot(counts[0] - s.end()[0], counts[1] - s.end()[1]);
+        return from + to == 0 ? 0 : s.seconds() * from / (from + to);
+    }
+
+    private static String spindle(int m) {
+        return switch (m) {
+            case 3 -> "cw";
+            case 4 -> "ccw";
+            case 5 -> "stop";
+            default -> null;
+        };
+    }
+
+    public double seconds() {
+        return (System.nanoTime() - began) / 1e9;
+    }
+}

@@ -1,0 +1,233 @@
+package gcnc.send;
+
+import gcnc.diag.Code;
+import gcnc.diag.Messages;
+import gcnc.machine.MachineProfile;
+import java.io.IOException;
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * {@code gcnc run} after the compile: pre-flight against the controller, the program's capacity
+ * checked against what the controller has, then the {@link Form} that sends and follows it, and
+ * one outcome: 0 ran to the end, 2 a connection or controller problem before anything moved, 3
+ * stopped by a fault or the operator once it had started (with the command that resumes it).
+ * Every fault is a diagnostic (E815-E829) at the G-code line it concerns.
+ */
+public final class Sender {
+    /** Exit statuses of {@code gcnc run} (docs/run.md). */
+    public static final int RAN = 0;
+    public static final int REFUSED = 1;
+    public static final int CONNECTION = 2;
+    public static final int STOPPED = 3;
+
+    /**
+     * How to run.
+     *
+     * @param step     one G-code block at a time, on Enter
+     * @param dryRun   everything but motion (connect, pre-flight, download, read back)
+     * @param resumeAt where to continue an interrupted run, or null
+     * @param pollMs   how often the controller is asked where it is
+     */
+    public record Options(boolean step, boolean dryRun, ResumePoint resumeAt, int pollMs) {
+    }
+
+    private final MachineProfile profile;
+    private final DmcProgram program;
+    private final BlockTable blocks;
+    private final EventSink events;
+    private final Messages messages;
+    private final Operator operator;
+    private final Options options;
+    private final Form form;
+    private final Function<ResumePoint, String> resumeCommand;
+
+    public Sender(MachineProfile profile, DmcProgram program, BlockTable blocks, EventSink events, Messages messages,
+                  Operator operator, Options options, Form form, Function<ResumePoint, String> resumeCommand) {
+        this.profile = profile;
+        this.program = program;
+        this.blocks = blocks;
+        this.events = events;
+        this.messages = messages;
+        this.operator = operator;
+        this.options = options;
+        this.form = form;
+        this.resumeCommand = resumeCommand;
+    }
+
+    /** How far (counts) the axes may be from a point and still be at it: 3 counts, or 5 µm. */
+    public double tolerance() {
+        return tolerance(profile);
+    }
+
+    /** {@link #tolerance()} of a machine. */
+    public static double tolerance(MachineProfile profile) {
+        return Math.max(3, Math.max(profile.x().countsPerMm(), profile.z().countsPerMm()) * 0.005);
+    }
+
+    /** Runs the program over {@code link} (which it closes); returns the exit status. */
+    public int run(Link link, int timeoutMs) {
+        Progress progress = new Progress(program, blocks, events);
+        GalilClient client = new GalilClient(link, timeoutMs, m -> events.accept(new Event.Message(m)));
+        Controller c = new Controller(client, profile, program.plane());
+        // closed in finally, not by try-with-resources: the catches below still talk to the controller
+        try {
+            Piece piece = preflight(c, link.name());
+            events.accept(new Event.Started(form.name(), piece.lines().size(), countBlocks(piece),
+                    program.totalSeconds() - program.secondsBefore(firstMotion(piece)), options.dryRun(),
+                    options.step(), options.resumeAt() == null ? null : options.resumeAt().toString()));
+            form.run(piece, c, progress, operator, options.step(), options.dryRun());
+            events.accept(new Event.Finished(progress.seconds(), options.dryRun()));
+            return RAN;
+        } catch (RunFault f) {
+            return stopped(f, progress);
+        } catch (GalilClient.Rejected r) {
+            RunFault f = c.refused(r.command(), progress.executingLine(), progress.hasStarted());
+            if (progress.hasStarted()) {
+                c.stopAll();
+            }
+            return stopped(f, progress);
+        } catch (LinkFault lf) {
+            if (progress.hasStarted() && lf.kind() != LinkFault.Kind.DROPPED) {
+                client.resync(300);
+                c.stopAll();
+            }
+            String done = block(progress.completedLine());
+            String now = block(progress.executingLine());
+            RunFault f = switch (lf.kind()) {
+                case DROPPED -> new RunFault(Code.E821_CONNECTION_DROPPED, progress.executingLine(), progress.hasStarted(),
+                        lf.detail(), done, now);
+                case TIMEOUT -> new RunFault(Code.E822_NO_REPLY, progress.executingLine(), progress.hasStarted(),
+                        "'" + GalilClient.printable(lf.command()) + "'", lf.detail(), done, now);
+                case GARBAGE -> new RunFault(Code.E823_GARBAGE, progress.executingLine(), progress.hasStarted(),
+                        "'" + GalilClient.printable(lf.command()) + "'", lf.detail(), done, now);
+            };
+            return stopped(f, progress);
+        } catch (IOException e) {
+            return stopped(new RunFault(Code.E821_CONNECTION_DROPPED, progress.executingLine(), progress.hasStarted(),
+                    String.valueOf(e.getMessage()), block(progress.completedLine()), block(progress.executingLine())), progress);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            c.stopAll();
+            return stopped(new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true,
+                    progress.executingLine()), progress);
+        } finally {
+            client.close();
+        }
+    }
+
+    private static String block(int line) {
+        return line == 0 ? "none" : "line " + line;
+    }
+
+    private int countBlocks(Piece piece) {
+        java.util.Set<Integer> lines = new java.util.HashSet<>();
+        for (int o : piece.origin()) {
+            if (program.sourceLine(o) > 0) {
+                lines.add(program.sourceLine(o));
+            }
+        }
+        return lines.size();
+    }
+
+    private int firstMotion(Piece piece) {
+        if (options.resumeAt() != null) {
+            return Math.max(0, program.firstLineOf(options.resumeAt().line()));
+        }
+        for (int o : piece.origin()) {
+            if (program.sourceLine(o) > 0) {
+                return o;
+            }
+        }
+        return 0;
+    }
+
+    /** Pre-flight; returns what to download (the program, or the resume program built from where the axes are). */
+    private Piece preflight(Controller c, String link) throws IOException, RunFault {
+        Controller.Facts f = c.preflight();
+        events.accept(new Event.Connected(link, f.revision()));
+        gcnc.machine.GalilModel model = profile.galilModel();
+        if (f.model().isEmpty() || !Controller.sameModel(f.model(), model.name())) {
+            String what = f.model().isEmpty() ? "the controller did not name a Galil model ('"
+                    + GalilClient.printable(f.revision()) + "' to ^R^V)" : "the controller is a " + f.revision();
+            throw new RunFault(Code.E818_WRONG_CONTROLLER, 0, false, what, profile.name(), model.name());
+        }
+        // the model's memory (tables/galil_models.csv, the lead's GalilModel) with the firmware the controller reported
+        if (model.newFirmware() && !f.firmware12a()) {
+            // the profile counted on firmware 1.2a's memory; this controller runs older firmware
+            model = new gcnc.machine.GalilModel(model.name(), model.family(), model.axes(), model.digitalOutputs(),
+                    model.analogOutputs(), model.sampleMicros(), model.limits(), model.firmware12a(), false, model.row());
+        }
+        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+        int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
+        Piece piece = options.resumeAt() == null ? Piece.whole(program)
+                : new Resume(program, tolerance()).plan(options.resumeAt(), f.position());
+        int needLines = options.step() ? ProgramForm.steps(piece, program).stream().mapToInt(p -> p.lines().size()).max().orElse(0)
+                : piece.lines().size();
+        int needLabels = program.labels();
+        List<String> vars = program.variables();
+        int needSlots = program.mostSegments();
+        events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), needLabels,
+                f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
+                f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
+        if (needLines > programLines) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", programLines
+                    + " (" + f.revision() + ")", "split the program, or run it in the stream form when it is available");
+        }
+        if (needLabels > maxLabels) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needLabels + " labels", Integer.toString(maxLabels),
+                    "the program has too many labels");
+        }
+        if (f.variablesLeft() >= 0 && vars.size() > f.variablesLeft()) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, vars.size() + " variables " + vars,
+                    f.variablesLeft() + " free", "clear the controller's variables (reset) and run again");
+        }
+        if (f.vectorSlots() >= 0 && needSlots > f.vectorSlots()) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needSlots + " vector buffer slots", f.vectorSlots()
+                    + " free (_LMS)", "clear the sequence (CS S) or reset the controller");
+        }
+        if (!f.pendingError().isEmpty()) {
+            events.accept(new Event.Message("the controller had an error pending, read and cleared with TC1: "
+                    + f.pendingError()));
+        }
+        if (f.programRunning()) {
+            // a program left running (an earlier run whose link dropped goes on without it): HX would cut it off
+            throw new RunFault(Code.E825_NOT_READY, 0, false, "a program is running in thread 0 (_XQ0 >= 0): let it end,"
+                    + " or halt it (HX) and stop the axes (ST) at the controller, then run or resume again");
+        }
+        if (f.moving()) {
+            throw new RunFault(Code.E825_NOT_READY, 0, false, "a vector sequence is moving (_BGS = 1): stop it first");
+        }
+        if (!f.limits().isEmpty()) {
+            throw new RunFault(Code.E825_NOT_READY, 0, false, f.limits() + " is active: move the axis off the switch");
+        }
+        if (!f.motorsOff().isEmpty()) {
+            StringBuilder axes = new StringBuilder();
+            f.motorsOff().forEach(axes::append);
+            finding(Code.E829_MOTORS_OFF, 0, List.of(axes.toString()));
+        }
+        if (options.resumeAt() == null) {
+            double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();
+            if (Math.hypot(f.position()[0] - home[0], f.position()[1] - home[1]) > tolerance()) {
+                throw new RunFault(Code.E826_NOT_AT_START, 0, false, Resume.counts(f.position()), Resume.counts(home));
+            }
+        }
+        return piece;
+    }
+
+    private int stopped(RunFault f, Progress progress) {
+        finding(f.code(), f.line(), f.args());
+        if (!f.moved()) {
+            return CONNECTION;
+        }
+        ResumePoint at = progress.resumePoint();
+        events.accept(new Event.Stopped(f.code().id(), progress.completedLine(), progress.executingLine(),
+                at == null ? null : at.toString(), at == null ? null : resumeCommand.apply(at)));
+        return STOPPED;
+    }
+
+    private void finding(Code code, int line, List<String> args) {
+        String severity = code == Code.E828_STOPPED_BY_OPERATOR || code == Code.E829_MOTORS_OFF ? "warning" : "error";
+        events.accept(new Event.Finding(code.id(), severity, line, messages.render(code, args)));
+    }
+}

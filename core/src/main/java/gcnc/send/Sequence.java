@@ -1,0 +1,43 @@
+package gcnc.send;
+
+import java.util.List;
+
+/**
+ * One motion of the downloaded program as the controller runs it: a vector sequence ({@code VS},
+ * {@code VP}/{@code CR}..., {@code VE}, {@code BGS}, {@code AMS}) or a thread pass ({@code GA} ...
+ * {@code PA}, {@code BG}, {@code AM}), with where it starts and ends in Galil coordinates of the
+ * vector plane (absolute: the program starts at the profile's home).
+ *
+ * @param first    index of its first DMC line (0-based, as the controller numbers program lines)
+ * @param last     index of its last line ({@code AMS} or {@code AM})
+ * @param start    Galil coordinates where it starts
+ * @param end      Galil coordinates where it ends
+ * @param speed    its VS, counts/s (0 for a thread pass)
+ * @param pieces   its segments, in order; empty for a thread pass (it cannot be entered mid-way)
+ * @param seconds  how long it takes, estimated from length, speed and acceleration
+ */
+public record Sequence(int first, int last, double[] start, double[] end, double speed, List<Piece> pieces,
+                       double seconds) {
+    /** A segment of a vector sequence. */
+    public sealed interface Piece permits Line, Arc {
+        double[] from();
+
+        double[] to();
+    }
+
+    /** {@code VP}: a straight line. */
+    public record Line(double[] from, double[] to) implements Piece {
+    }
+
+    /**
+     * {@code CR r,theta,delta}: an arc about {@code centre}, from angle {@code theta} sweeping
+     * {@code delta} degrees (counter-clockwise positive, 0 along the plane's first channel).
+     */
+    public record Arc(double[] from, double[] to, double[] centre, double radius, double theta, double delta)
+            implements Piece {
+    }
+
+    public boolean isThreadPass() {
+        return pieces.isEmpty();
+    }
+}

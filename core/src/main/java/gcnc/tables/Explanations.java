@@ -1,0 +1,241 @@
+package gcnc.tables;
+
+import gcnc.diag.Code;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * The prose of {@code gcnc explain} (tables/explain/): for each code a program can meet, why it is
+ * reported, what the control would do, a typical fix (one file per language, {@code en.md} and
+ * {@code es.md}), and an example program that triggers it ({@code examples.md}, the same for both
+ * languages: G-code has no language). Loaded only when asked for (explain, SARIF's rules), never
+ * on a plain check. Markdown so that it reads well on GitHub as it is; the format is:
+ *
+ * <pre>
+ * ## E037
+ * cause: why gcnc reports it (one paragraph; may wrap onto lines that start with two spaces)
+ * control: what the control does (optional: else tables/error_basis.csv's row, else the severity's)
+ * fix: the usual fix
+ * </pre>
+ *
+ * and in examples.md
+ *
+ * <pre>
+ * ## E037
+ * machine: haas          (optional; haas unless said)
+ * control: fanuc-b       (optional: another control than the profile's own)
+ * dialect: thesis        (optional; galil unless said)
+ * after: start           (optional: the lines of "## start" go before it, unshown)
+ *     G01 X20. Z-5. F0.2 (the example, indented four spaces)
+ * </pre>
+ *
+ * Codes a program cannot meet (a broken table, a file the command line cannot write, the
+ * simulator's checks on gcnc's own DMC) have no entry: {@link #INTERNAL} lists them and says why.
+ */
+public final class Explanations {
+    /** One code's prose in one language. {@code control} is empty when the basis table or the severity says it. */
+    public record Prose(String cause, String control, String fix) {
+    }
+
+    /**
+     * A program that triggers a code: what is shown, what runs before it unshown, and where; or,
+     * for a code no short program can bring about (10,000 errors, a file beside the program),
+     * no lines and the reason in {@code none}.
+     */
+    public record Example(String machine, String control, String dialect, List<String> prelude, List<String> lines,
+                          String none) {
+        /** The whole program the example stands for, prelude and lines, one block a line. */
+        public String program() {
+            StringBuilder b = new StringBuilder();
+            for (String s : prelude) {
+                b.append(s).append('\n');
+            }
+            for (String s : lines) {
+                b.append(s).append('\n');
+            }
+            return b.toString();
+        }
+    }
+
+    /**
+     * Codes no G-code program can bring about (no entry, no example), and why: they report a
+     * broken table or profile, a file the command line cannot read or write, or an inconsistency
+     * in the DMC gcnc itself wrote (the simulator checking the backend), or a DMC file given to
+     * simulate. ExplainTest holds the list to the files.
+     */
+    public static final Map<Code, String> INTERNAL = internal();
+
+    private static Map<Code, String> internal() {
+        Map<Code, String> m = new EnumMap<>(Code.class);
+        String table = "a broken table or machine profile (tables/, --tables, --machine FILE), not a program";
+        for (Code c : Code.values()) {
+            if (c.number() >= 400 && c.number() < 500) { // the tables' and profiles' range (docs/architecture.md)
+                m.put(c, table);
+            }
+        }
+        // E220-E237: the controller's own limits (tables/galil_models.csv, gcnc.machine.ControllerLimits),
+        // which no stage checks on a program yet; when the backend does, ExplainTest asks for their prose
+        String limits = "the Galil model's limits (tables/galil_models.csv), not yet checked on a program";
+        for (Code c : Code.values()) {
+            if (c.number() >= 220 && c.number() < 240) {
+                m.put(c, limits);
+            }
+        }
+        String files = "the command line's files (reading, writing, links), not the program's text";
+        for (int n : new int[] {500, 501, 502, 510}) {
+            m.put(Code.byNumber(n), files);
+        }
+        String dmc = "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)";
+        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331}) {
+            m.put(Code.byNumber(n), dmc);
+        }
+        String second = "the backend's or the simulator's guard behind a check that comes first for any program"
+                + " (E015 the travel; E102 an arc off its circle)";
+        for (int n : new int[] {205, 206, 302}) {
+            m.put(Code.byNumber(n), second);
+        }
+        m.put(Code.byNumber(45), "the thesis's out-of-memory error: gcnc reports E116 at its cap instead");
+        return java.util.Collections.unmodifiableMap(m);
+    }
+
+    public static final String DIR = "explain/";
+
+    private final Map<Code, Prose> english;
+    private final Map<Code, Prose> spanish;
+    private final Map<Code, Example> examples;
+
+    private Explanations(Map<Code, Prose> english, Map<Code, Prose> spanish, Map<Code, Example> examples) {
+        this.english = english;
+        this.spanish = spanish;
+        this.examples = examples;
+    }
+
+    public static Explanations load(TableSource source) throws TableException {
+        return new Explanations(prose(source, "en.md"), prose(source, "es.md"), examples(source));
+    }
+
+    /** The built-in explanations (the jar's tables/explain/); a broken copy there is a bug of the build. */
+    public static Explanations builtIn() {
+        try {
+            return load(TableSource.builtIn());
+        } catch (TableException e) {
+            throw new IllegalStateException("the explanations built into gcnc.jar are broken", e);
+        }
+    }
+
+    public Optional<Prose> prose(Code code, ErrorMessages.Lang lang) {
+        return Optional.ofNullable((lang == ErrorMessages.Lang.ES ? spanish : english).get(code));
+    }
+
+    public Optional<Example> example(Code code) {
+        return Optional.ofNullable(examples.get(code));
+    }
+
+    public java.util.Set<Code> explained(ErrorMessages.Lang lang) {
+        return (lang == ErrorMessages.Lang.ES ? spanish : english).keySet();
+    }
+
+    public java.util.Set<Code> exemplified() {
+        return examples.keySet();
+    }
+
+    /** One {@code ## E037} section: its heading's line and its lines up to the next heading. */
+    private record Section(Code code, int line, List<String> body) {
+    }
+
+    private static List<Section> sections(TableSource source, String name) throws TableException {
+        String file = DIR + name;
+        String[] lines = source.read(file).split("\n", -1);
+        List<Section> out = new ArrayList<>();
+        Section current = null;
+        for (int i = 0; i < lines.length; i++) {
+            String s = lines[i].stripTrailing();
+            if (s.startsWith("## ")) {
+                String id = s.substring(3).trim();
+                Code code = null;
+                if (!id.equals("start")) {
+                    try {
+                        code = Code.byNumber(Integer.parseInt(id.toUpperCase(Locale.ROOT).replaceFirst("^E", "")));
+                    } catch (IllegalArgumentException e) {
+                        throw Csv.fault(source.describe(file), i + 1, 4, gcnc.diag.Phrase.NO_SUCH_CODE.with(id));
+                    }
+                }
+                current = new Section(code, i + 1, new ArrayList<>());
+                out.add(current);
+            } else if (current != null) {
+                current.body().add(s);
+            }
+        }
+        return out;
+    }
+
+    private static Map<Code, Prose> prose(TableSource source, String name) throws TableException {
+        Map<Code, Prose> m = new EnumMap<>(Code.class);
+        for (Section s : sections(source, name)) {
+            Map<String, String> fields = fields(s.body());
+            String cause = fields.getOrDefault("cause", "");
+            String fix = fields.getOrDefault("fix", "");
+            if (s.code() == null || cause.isEmpty() || fix.isEmpty()) {
+                throw Csv.fault(source.describe(DIR + name), s.line(), 1,
+                        gcnc.diag.Phrase.CSV_MISSING_VALUE.with(cause.isEmpty() ? "cause" : "fix"));
+            }
+            m.put(s.code(), new Prose(cause, fields.getOrDefault("control", ""), fix));
+        }
+        return m;
+    }
+
+    /** {@code key: text} lines; a line that starts with two spaces goes on with the field before it. */
+    private static Map<String, String> fields(List<String> body) {
+        Map<String, String> f = new java.util.LinkedHashMap<>();
+        String key = null;
+        for (String s : body) {
+            int colon = s.indexOf(':');
+            if (s.startsWith("  ") && key != null) {
+                f.put(key, f.get(key) + " " + s.strip());
+            } else if (colon > 0 && !s.startsWith(" ")) {
+                key = s.substring(0, colon).strip();
+                f.put(key, s.substring(colon + 1).strip());
+            }
+        }
+        return f;
+    }
+
+    private static Map<Code, Example> examples(TableSource source) throws TableException {
+        List<Section> sections = sections(source, "examples.md");
+        List<String> start = List.of();
+        Map<Code, Example> m = new EnumMap<>(Code.class);
+        for (Section s : sections) {
+            String machine = "haas";
+            String dialect = "galil";
+            String control = "";
+            String none = "";
+            boolean after = false;
+            List<String> lines = new ArrayList<>();
+            for (String line : s.body()) {
+                if (line.startsWith("    ")) {
+                    lines.add(line.substring(4));
+                } else if (line.startsWith("machine:")) {
+                    machine = line.substring(8).strip();
+                } else if (line.startsWith("control:")) {
+                    control = line.substring(8).strip();
+                } else if (line.startsWith("dialect:")) {
+                    dialect = line.substring(8).strip();
+                } else if (line.startsWith("none:")) {
+                    none = line.substring(5).strip();
+                } else if (line.startsWith("after:")) {
+                    after = true; // the one prelude there is: "## start"
+                }
+            }
+            if (s.code() == null) {
+                start = List.copyOf(lines);
+            } else {
+                m.put(s.code(), new Example(machine, control, dialect, after ? start : List.of(), List.copyOf(lines), none));
+            }
+        }
+        return m;
+    }
+}

@@ -1,0 +1,255 @@
+package gcnc;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The resident checker (gcnc daemon, issue 23) prints the same bytes on standard output and standard
+ * error, exits with the same status and writes the same files as a cold run: the samples, the
+ * pipeline fuzz test's random programs and mutated real-style programs, error cases (a missing file,
+ * usage errors, a misspelt machine, Spanish, standard input, -o to standard output). The client is
+ * called directly, so that a run the daemon did not serve (status 75, "run cold") fails the test
+ * instead of passing as a cold run. A wrong token is refused; another jar, another folder and a
+ * busy daemon are answered "cold", and through the launcher the user still gets a cold run's output.
+ */
+class ResidentCheckerTest {
+    private static final Path JAR = Path.of("build/libs/gcnc.jar").toAbsolutePath();
+    private static final int COLD = 75;
+    private static Path state;
+    /** Where the runs write, relative to the working directory as a user's names are. */
+    private static final Path WORK = Path.of("build/tmp/resident");
+
+    record Run(int status, byte[] out, byte[] err) {
+        String text() {
+            return "status " + status + "\n--- stdout\n" + new String(out, StandardCharsets.UTF_8) + "--- stderr\n"
+                    + new String(err, StandardCharsets.UTF_8);
+        }
+    }
+
+    @BeforeAll
+    static void start() throws Exception {
+        state = Files.createTempDirectory("gcnc-daemon-state");
+        Files.createDirectories(WORK);
+        Run r = run(List.of("java", "-jar", JAR.toString(), "daemon", "start"), null, Map.of(), null);
+        assertEquals(0, r.status(), r.text());
+    }
+
+    @AfterAll
+    static void stop() throws Exception {
+        Run r = run(List.of("java", "-jar", JAR.toString(), "daemon", "stop"), null, Map.of(), null);
+        assertEquals(0, r.status(), r.text());
+        assertEquals(3, run(List.of("java", "-jar", JAR.toString(), "daemon", "status"), null, Map.of(), null).status());
+    }
+
+    private static Run run(List<String> command, byte[] stdin, Map<String, String> env, Path dir) throws Exception {
+        Path tmp = Files.createTempDirectory("gcnc-resident-run");
+        Path in = tmp.resolve("stdin");
+        Files.write(in, stdin == null ? new byte[0] : stdin);
+        ProcessBuilder pb = new ProcessBuilder(command).redirectInput(in.toFile())
+                .redirectOutput(tmp.resolve("stdout").toFile()).redirectError(tmp.resolve("stderr").toFile());
+        if (dir != null) {
+            pb.directory(dir.toFile());
+        }
+        pb.environment().remove("GCNC_JAR");
+        pb.environment().remove("GCNC_JAVA_OPTS");
+        pb.environment().put("GCNC_DAEMON_DIR", state.toString());
+        pb.environment().put("LANG", "C.UTF-8");
+        pb.environment().remove("LC_ALL");
+        pb.environment().putAll(env);
+        Process p = pb.start();
+        assertTrue(p.waitFor(300, TimeUnit.SECONDS), command.toString());
+        return new Run(p.exitValue(), Files.readAllBytes(tmp.resolve("stdout")), Files.readAllBytes(tmp.resolve("stderr")));
+    }
+
+    private static Run cold(List<String> args, byte[] stdin, Map<String, String> env) throws Exception {
+        Map<String, String> off = new HashMap<>(env);
+        off.put("GCNC_DAEMON", "off");
+        List<String> c = new ArrayList<>(List.of("sh", "scripts/gcnc"));
+        c.addAll(args);
+        return run(c, stdin, off, null);
+    }
+
+    private static Run client(List<String> args, byte[] stdin, Map<String, String> env, Path jar, Path dir)
+            throws Exception {
+        List<String> c = new ArrayList<>(List.of("python3", Path.of("scripts/gcnc-client.py").toAbsolutePath().toString(),
+                jar.toString()));
+        c.addAll(args);
+        return run(c, stdin, env, dir);
+    }
+
+    /** The files a run may write, read and removed so that the next run writes them afresh. */
+    private static List<byte[]> take(List<Path> files) throws IOException {
+        List<byte[]> out = new ArrayList<>();
+        for (Path f : files) {
+            out.add(Files.exists(f) ? Files.readAllBytes(f) : null);
+            Files.deleteIfExists(f);
+        }
+        return out;
+    }
+
+    /** The same bytes, status and files, cold and through the daemon. */
+    private static void same(List<String> args, byte[] stdin, Map<String, String> env, Path... written) throws Exception {
+        Run cold = cold(args, stdin, env);
+        List<byte[]> coldFiles = take(List.of(written));
+        Run warm = client(args, stdin, env, JAR, null);
+        List<byte[]> warmFiles = take(List.of(written));
+        assertNotEquals(COLD, warm.status(), args + " was not served by the daemon:\n" + warm.text());
+        assertEquals(cold.text(), warm.text(), args.toString());
+        assertArrayEquals(cold.out(), warm.out(), args.toString());
+        assertArrayEquals(cold.err(), warm.err(), args.toString());
+        for (int i = 0; i < written.length; i++) {
+            assertArrayEquals(coldFiles.get(i), warmFiles.get(i), written[i] + " after " + args);
+        }
+    }
+
+    private static final Path DMC = WORK.resolve("out.dmc");
+    private static final Path MAP = WORK.resolve("out.dmc.map");
+
+    @Test
+    void theSamplesPrintAndWriteTheSame() throws Exception {
+        try (var files = Files.list(Path.of("samples"))) {
+            for (Path p : files.filter(f -> f.toString().endsWith(".nc")).sorted().toList()) {
+                String f = p.toString();
+                same(List.of("check", f), null, Map.of());
+                same(List.of("compile", f, "-o", DMC.toString()), null, Map.of(), DMC, MAP);
+                same(List.of("check", f, "--format", "json", "--machine", "haas"), null, Map.of());
+            }
+        }
+        Files.writeString(WORK.resolve("sim.dmc"), "");
+        cold(List.of("compile", "samples/turning.nc", "-o", WORK.resolve("sim.dmc").toString()), null, Map.of());
+        same(List.of("simulate", WORK.resolve("sim.dmc").toString()), null, Map.of());
+        same(List.of("check", "samples"), null, Map.of());
+    }
+
+    @Test
+    void randomAndMutatedProgramsPrintAndWriteTheSame() throws Exception {
+        String real = Files.readString(Path.of("samples/turning.nc"));
+        for (long seed = 1; seed <= 8; seed++) {
+            Path p = WORK.resolve("fuzz-" + seed + ".nc");
+            Files.writeString(p, PipelineFuzzTest.program(new Random(seed)));
+            same(List.of("check", p.toString()), null, Map.of());
+            same(List.of("compile", p.toString(), "-o", DMC.toString()), null, Map.of(), DMC, MAP);
+            Path m = WORK.resolve("mutated-" + seed + ".nc");
+            Files.writeString(m, PipelineFuzzTest.mutated(real, new Random(seed)));
+            same(List.of("check", m.toString(), "--caret", "always"), null, Map.of());
+        }
+    }
+
+    @Test
+    void errorsPrintTheSame() throws Exception {
+        same(List.of("check", "no-such-program.nc"), null, Map.of());
+        same(List.of("check", "--bogus", "samples/turning.nc"), null, Map.of());
+        same(List.of("compile"), null, Map.of());
+        same(List.of("check", "samples/turning.nc", "--machine", "hass"), null, Map.of());
+        Path bad = WORK.resolve("bad.nc");
+        Files.writeString(bad, "G21 G90\nG01 X10 Z-5\nG02 X20 Q3\n");
+        same(List.of("check", bad.toString()), null, Map.of());
+        same(List.of("check", bad.toString()), null, Map.of("LANG", "es_ES.UTF-8"));
+        same(List.of("--lang", "es", "compile", bad.toString(), "-o", DMC.toString()), null, Map.of(), DMC, MAP);
+        same(List.of("check", "-", "--machine", "thesis-2004"), Files.readAllBytes(Path.of("samples/bishop.nc")), Map.of());
+        same(List.of("compile", "-", "-o", "-"), Files.readAllBytes(Path.of("samples/turning.nc")), Map.of());
+        same(List.of("check", "-"), new byte[] {'G', '0', 0, (byte) 0xFF, '\n'}, Map.of());
+    }
+
+    @Test
+    void theStateFileIsTheUsersAloneAndAWrongTokenIsRefused() throws Exception {
+        Path file = state.resolve("daemon.state");
+        assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(file)));
+        int port = 0;
+        for (String line : Files.readAllLines(file)) {
+            if (line.startsWith("port=")) {
+                port = Integer.parseInt(line.substring(5));
+            }
+        }
+        try (Socket s = new Socket(InetAddress.getLoopbackAddress(), port)) {
+            DataOutputStream out = new DataOutputStream(s.getOutputStream());
+            byte[] token = "0".repeat(64).getBytes(StandardCharsets.UTF_8);
+            out.write('T');
+            out.writeInt(token.length);
+            out.write(token);
+            out.write('P');
+            out.writeInt(0);
+            out.flush();
+            DataInputStream in = new DataInputStream(s.getInputStream());
+            assertEquals('N', in.read());
+            byte[] why = new byte[in.readInt()];
+            in.readFully(why);
+            assertTrue(new String(why, StandardCharsets.UTF_8).startsWith("refused"));
+            assertEquals(-1, in.read()); // and closed
+        }
+    }
+
+    @Test
+    void aStateFileLeftByADeadDaemonIsRemovedAndTheRunGoesCold() throws Exception {
+        Path dir = Files.createTempDirectory("gcnc-dead-daemon");
+        Process gone = new ProcessBuilder("true").start();
+        gone.waitFor();
+        int port;
+        try (java.net.ServerSocket free = new java.net.ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            port = free.getLocalPort(); // closed below: nothing answers there
+        }
+        Files.writeString(dir.resolve("daemon.state"), "pid=" + gone.pid() + "\nport=" + port + "\ntoken=" + "0".repeat(64)
+                + "\njar=" + JAR + "\ndir=" + Path.of("").toAbsolutePath() + "\n");
+        Run r = client(List.of("check", "samples/turning.nc"), null, Map.of("GCNC_DAEMON_DIR", dir.toString()), JAR, null);
+        assertEquals(COLD, r.status(), r.text());
+        assertTrue(Files.notExists(dir.resolve("daemon.state")));
+    }
+
+    @Test
+    void anotherJarAnotherFolderOrABusyDaemonRunCold() throws Exception {
+        Path other = Files.createTempDirectory("gcnc-other-jar").resolve("gcnc.jar");
+        Files.copy(JAR, other);
+        List<String> args = List.of("check", Path.of("samples/turning.nc").toAbsolutePath().toString());
+        Run stale = client(args, null, Map.of(), other, null);
+        assertEquals(COLD, stale.status(), stale.text());
+        assertEquals(0, stale.out().length + stale.err().length, stale.text());
+        // through the launcher, the user gets the cold run's output
+        Run launcher = run(List.of("sh", "scripts/gcnc", "check", "samples/turning.nc"), null,
+                Map.of("GCNC_JAR", other.toString()), null);
+        assertEquals(cold(List.of("check", "samples/turning.nc"), null, Map.of()).text(), launcher.text());
+
+        Run elsewhere = client(args, null, Map.of(), JAR, other.getParent());
+        assertEquals(COLD, elsewhere.status(), elsewhere.text());
+
+        // a run waiting for its standard input keeps the daemon busy: another client is told to go cold
+        List<String> c = List.of("python3", "scripts/gcnc-client.py", JAR.toString(), "check", "-");
+        ProcessBuilder pb = new ProcessBuilder(c).redirectError(ProcessBuilder.Redirect.DISCARD)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        pb.environment().put("GCNC_DAEMON_DIR", state.toString());
+        Process waiting = pb.start();
+        try {
+            int status = 0;
+            for (int i = 0; i < 100 && status != COLD; i++) {
+                Thread.sleep(200);
+                status = client(args, null, Map.of(), JAR, null).status();
+            }
+            assertEquals(COLD, status, "a second run while the first waits for its input");
+        } finally {
+            waiting.getOutputStream().write("G21\nM30\n".getBytes(StandardCharsets.UTF_8));
+            waiting.getOutputStream().close();
+            assertTrue(waiting.waitFor(60, TimeUnit.SECONDS));
+        }
+    }
+}

@@ -1,0 +1,644 @@
+package gcnc.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import gcnc.Session;
+import gcnc.controller.Fault;
+import gcnc.controller.Model;
+import gcnc.controller.VirtualController;
+import gcnc.machine.MachineProfile;
+import gcnc.send.DmcProgram;
+import gcnc.send.MapReader;
+import gcnc.send.Sequence;
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+/**
+ * {@code gcnc run} against the virtual Galil ({@code gcnc controller --virtual}, branch vc) over
+ * loopback TCP and over a socat pty pair: a clean run, refusals, and the faults of issue 20 with
+ * the exit status, the diagnostic and the blocks each names; a stopped run resumed to the end.
+ */
+class RunOnControllerTest {
+    /** A Haas-style part: a facing approach, a turn, a G02 corner, a face-out and a retract (6 motions). */
+    static final String PART = String.join("\n",
+            "O1002 (RUN TEST PART)",
+            "G21 G99",
+            "G50 S2500",
+            "T0101",
+            "G97 S1200 M03",
+            "G00 X42. Z2.",
+            "G01 X40. F0.2",
+            "G01 Z-30.",
+            "G02 X46. Z-33. R3.",
+            "G01 X50.",
+            "G00 X60. Z5.",
+            "M05",
+            "M30", "");
+
+    record Run(int status, String out, String err) {
+        String all() {
+            return out + err;
+        }
+    }
+
+    static Run gcnc(String input, String... args) {
+        InputStream in = new ByteArrayInputStream(input.getBytes(StandardCharsets.UTF_8));
+        CommandLine cl = Main.commandLine(new Main.Streams(in, System.out), gcnc.tables.ErrorMessages.Lang.EN, args);
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        int status = cl.execute(args);
+        return new Run(status, out.toString(), err.toString());
+    }
+
+    static Path part(String text) throws IOException {
+        Path p = Files.createTempDirectory("gcnc-run").resolve("part.nc");
+        Files.writeString(p, text);
+        return p;
+    }
+
+    static MachineProfile haas() throws Exception {
+        return Session.open(Session.Options.defaults().withMachine("haas")).profile();
+    }
+
+    /** The haas profile's home in Galil counts of the plane: where the program was verified to start. */
+    static long[] home() throws Exception {
+        MachineProfile p = haas();
+        double[] g = DmcProgram.Plane.of(p).galil(p.home().x(), p.home().z());
+        return new long[] {Math.round(g[0]), Math.round(g[1])};
+    }
+
+    /** A model of tables/galil_models.csv as the virtual controller plays it. */
+    static Model model(String name) {
+        return Model.named(name).orElseThrow();
+    }
+
+    static VirtualController controller(Model model, String... faults) throws IOException {
+        return traced(model, null, faults);
+    }
+
+    /** A virtual controller that writes the end of every segment it executes to {@code trace}. */
+    static VirtualController traced(Model model, Path trace, String... faults) throws IOException {
+        List<Fault> f = new ArrayList<>();
+        for (String s : faults) {
+            f.add(Fault.parse(s));
+        }
+        return VirtualController.tcp(0, new VirtualController.Options(model, 5, f, trace));
+    }
+
+    /** The end points of the segments a controller executed, in order ("END1 END2" of its trace). */
+    static List<String> path(Path trace) throws IOException {
+        List<String> ends = new ArrayList<>();
+        for (String l : Files.readAllLines(trace)) {
+            if (!l.startsWith("#") && !l.isBlank()) {
+                String[] f = l.split(" ");
+                ends.add(f[3] + " " + f[4]);
+            }
+        }
+        return ends;
+    }
+
+    /** One command to the controller on a connection of its own, its reply. */
+    static String tell(VirtualController vc, String command) throws IOException {
+        try (Socket s = new Socket("127.0.0.1", vc.port())) {
+            s.setSoTimeout(3000);
+            s.getOutputStream().write((command + "\r").getBytes(StandardCharsets.ISO_8859_1));
+            StringBuilder b = new StringBuilder();
+            InputStream in = s.getInputStream();
+            for (int c = in.read(); c >= 0; c = in.read()) {
+                b.append((char) c);
+                if ((c == ':' || c == '?') && (b.length() == 1 || b.charAt(b.length() - 2) == '\n')) {
+                    break;
+                }
+            }
+            return b.toString();
+        }
+    }
+
+    /** The controller's axes defined at home (DP), as the machine's homing routine leaves them. */
+    static void homed(VirtualController vc) throws Exception {
+        long[] h = home();
+        assertEquals(":", tell(vc, "DP " + h[0] + "," + h[1]));
+    }
+
+    static long[] axes(VirtualController vc) {
+        return new long[] {vc.controller().position(0), vc.controller().position(1)};
+    }
+
+    /** Where the compiled program's last motion ends, Galil counts. */
+    static long[] programEnd(Path part) throws Exception {
+        Path dmc = part.resolveSibling("part.dmc");
+        DmcProgram p = DmcProgram.read(Files.readAllLines(dmc), MapReader.read(Files.newBufferedReader(
+                part.resolveSibling("part.dmc.map"))), haas());
+        List<Sequence> s = p.sequences();
+        double[] e = s.get(s.size() - 1).end();
+        return new long[] {Math.round(e[0]), Math.round(e[1])};
+    }
+
+    static String tcp(VirtualController vc) {
+        return "127.0.0.1:" + vc.port();
+    }
+
+    @Test
+    void aProgramThatIsNotCleanIsRefusedAndNothingIsSent() throws Exception {
+        // turning without closing the chuck first (Haas M10): E038, so not one byte may reach the controller
+        Path p = part(PART.replace("G00 X42. Z2.", "M11\nG00 X42. Z2."));
+        try (ServerSocket server = new ServerSocket(0)) {
+            server.setSoTimeout(300);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", "127.0.0.1:" + server.getLocalPort());
+            assertEquals(1, r.status(), r.all());
+            assertTrue(r.err().contains("error[E038]"), r.err());
+            assertTrue(r.err().contains("nothing was sent"), r.err());
+            assertThrowsTimeout(server);
+        }
+    }
+
+    @Test
+    void theRunSpeaksSpanish() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(model("DMC-4040"), "reject=45")) {
+            homed(vc);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--lang", "es", "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("error[E820]: el controlador rechazó"), r.err());
+            assertTrue(r.out().contains("detenido: último bloque terminado: línea "), r.out());
+            assertTrue(r.out().contains("para reanudar: gcnc run "), r.out());
+        }
+    }
+
+    private static void assertThrowsTimeout(ServerSocket server) throws IOException {
+        try (Socket s = server.accept()) {
+            throw new AssertionError("gcnc connected to the controller for a program with errors");
+        } catch (java.net.SocketTimeoutException expected) {
+            // nobody connected
+        }
+    }
+
+    @Test
+    void runsToTheEndOverTcp() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
+            assertEquals(0, r.status(), r.all());
+            assertTrue(r.out().contains("downloaded 41 lines (DL), read back identical (UL)"), r.out());
+            assertTrue(r.out().contains("ran to the end"), r.out());
+            // the motors are off at power-up: a warning, the program's SH turns them on
+            assertTrue(r.err().contains("warning[E829]"), r.err());
+            assertArrayEquals(programEnd(p), axes(vc));
+            assertEquals(String.join("\n", Files.readAllLines(p.resolveSibling("part.dmc"))) + "\n",
+                    vc.controller().programText().replace("\r\n", "\n").replace("\r", "\n"));
+        }
+    }
+
+    private static void assertArrayEquals(long[] expected, long[] actual) {
+        assertEquals(Arrays.toString(expected), Arrays.toString(actual));
+    }
+
+    @Test
+    void theJsonEventStreamIsOneObjectPerLine() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--format", "json", "--poll", "20");
+            assertEquals(0, r.status(), r.all());
+            List<String> events = new ArrayList<>();
+            for (String line : r.out().split("\n")) {
+                com.google.gson.JsonObject o = com.google.gson.JsonParser.parseString(line).getAsJsonObject();
+                events.add(o.get("event").getAsString());
+                if (o.get("event").getAsString().equals("status")) {
+                    assertTrue(o.has("line") && o.has("program") && o.has("progress") && o.has("secondsLeft"), line);
+                }
+            }
+            assertEquals("connected", events.get(0));
+            assertEquals("preflight", events.get(1));
+            assertTrue(events.contains("block") && events.contains("status"), events.toString());
+            assertEquals("finished", events.get(events.size() - 1));
+        }
+    }
+
+    @Test
+    void runsToTheEndOverAPtyPair() throws Exception {
+        assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")), "socat (setup.sh installs it)");
+        Path dir = Files.createTempDirectory("gcnc-pty");
+        Path a = dir.resolve("controller");
+        Path b = dir.resolve("host");
+        Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
+                .redirectErrorStream(true).redirectOutput(dir.resolve("socat.log").toFile()).start();
+        try {
+            for (int i = 0; i < 50 && !(Files.exists(a) && Files.exists(b)); i++) {
+                Thread.sleep(100);
+            }
+            Path p = part(PART);
+            try (VirtualController vc = VirtualController.pty(a, new VirtualController.Options(model("DMC-4040"), 5, List.of(), null))) {
+                Run dp = gcnc("", "run", p.toString(), "--machine", "haas", "--port", b.toString(), "--dry-run");
+                // not homed yet: refused before anything moves, and the link worked (pre-flight read the axes)
+                assertEquals(2, dp.status(), dp.all());
+                assertTrue(dp.err().contains("error[E826]"), dp.err());
+                definePosition(b, home());
+                Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--port", b.toString(), "--poll", "20");
+                assertEquals(0, r.status(), r.all());
+                assertTrue(r.out().contains("ran to the end"), r.out());
+                assertArrayEquals(programEnd(p), axes(vc));
+            }
+        } finally {
+            socat.destroy();
+            socat.waitFor();
+        }
+    }
+
+    /** DP over the pty, as an operator's terminal would send it. */
+    private static void definePosition(Path host, long[] h) throws Exception {
+        try (var io = java.nio.channels.FileChannel.open(host, java.nio.file.StandardOpenOption.READ,
+                java.nio.file.StandardOpenOption.WRITE)) {
+            io.write(java.nio.ByteBuffer.wrap(("DP " + h[0] + "," + h[1] + "\r").getBytes(StandardCharsets.ISO_8859_1)));
+            java.nio.ByteBuffer reply = java.nio.ByteBuffer.allocate(16);
+            long until = System.currentTimeMillis() + 3000;
+            while (reply.position() == 0 && System.currentTimeMillis() < until) {
+                io.read(reply);
+            }
+            assertEquals(":", new String(reply.array(), 0, reply.position(), StandardCharsets.ISO_8859_1));
+        }
+    }
+
+    @Test
+    void aPortThatDoesNotExistIsExit2() throws Exception {
+        Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--port", "/dev/ttyUSB-gcnc-none");
+        assertEquals(2, r.status(), r.all());
+        assertTrue(r.err().contains("error[E815]: the serial port /dev/ttyUSB-gcnc-none does not exist"), r.err());
+    }
+
+    @Test
+    void aPortHeldByAnotherProgramIsExit2() throws Exception {
+        assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")) && Files.isExecutable(Path.of("/usr/bin/flock")));
+        Path dir = Files.createTempDirectory("gcnc-pty");
+        Path a = dir.resolve("controller");
+        Path b = dir.resolve("host");
+        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b).start();
+        Process holder = null;
+        try {
+            for (int i = 0; i < 50 && !Files.exists(b); i++) {
+                Thread.sleep(100);
+            }
+            // another program holds the port as serial programs do (an exclusive lock on the device)
+            holder = new ProcessBuilder("flock", "-n", b.toString(), "sleep", "30").start();
+            Thread.sleep(300);
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--port", b.toString());
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E816]"), r.err());
+            assertTrue(r.err().contains("another program holds it"), r.err());
+        } finally {
+            if (holder != null) {
+                holder.descendants().forEach(ProcessHandle::destroy);
+                holder.destroy();
+            }
+            socat.destroy();
+            socat.waitFor();
+        }
+    }
+
+    @Test
+    void noControllerAtTheAddressIsExit2() throws Exception {
+        int port;
+        try (ServerSocket s = new ServerSocket(0)) {
+            port = s.getLocalPort();
+        }
+        Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", "127.0.0.1:" + port);
+        assertEquals(2, r.status(), r.all());
+        assertTrue(r.err().contains("error[E817]: no connection to the controller at 127.0.0.1:" + port), r.err());
+    }
+
+    @Test
+    void aControllerOfAnotherModelIsExit2AndNothingMoves() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4020"))) {
+            homed(vc);
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E818]: the controller is a DMC4020 Rev 1.2d: the machine profile haas is for a DMC-4040"),
+                    r.err());
+            assertArrayEquals(home(), axes(vc));
+        }
+    }
+
+    /**
+     * The profile counts on firmware 1.2a's 4,000 program lines (galil.firmware), so the program compiles;
+     * the controller says Rev 1.0h (2,000 lines): refused before a byte of the program is sent.
+     */
+    @Test
+    void aProgramLargerThanTheControllersMemoryIsExit2() throws Exception {
+        Path dir = Files.createTempDirectory("gcnc-small");
+        Path machine = dir.resolve("haas-12a.machine");
+        Files.writeString(machine, Files.readString(Path.of("tables/machines/haas.machine"))
+                .replace("galil.model = DMC-4040", "galil.model = DMC-4040\ngalil.firmware = 1.2a"));
+        StringBuilder b = new StringBuilder("O1003\nG21 G99\nG50 S2500\nT0101\nG97 S1200 M03\nG00 X42. Z2.\n");
+        for (int i = 0; i < 220; i++) {
+            b.append("G01 X40. F0.2\nG00 X42.\n");
+        }
+        b.append("M05\nM30\n");
+        long[] h = home();
+        try (ServerSocket server = new ServerSocket(0)) {
+            List<String> downloaded = new ArrayList<>();
+            Thread t = new Thread(() -> script(server, h, "DMC4040 Rev 1.0h", downloaded));
+            t.setDaemon(true);
+            t.start();
+            Run r = gcnc("", "run", part(b.toString()).toString(), "--machine", machine.toString(), "--tcp",
+                    "127.0.0.1:" + server.getLocalPort());
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E819]: the program needs 2216 program lines and the controller has 2000 (DMC4040 Rev 1.0h)"),
+                    r.err());
+            assertTrue(downloaded.isEmpty(), downloaded.toString());
+        }
+    }
+
+    @Test
+    void axesNotAtHomeAreExit2() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
+            assertEquals(2, r.status(), r.all());
+            long[] h = home();
+            assertTrue(r.err().contains("error[E826]: the axes are at 0,0 (Galil counts) but the program was verified from home at "
+                    + h[0] + "," + h[1]), r.err());
+        }
+    }
+
+    @Test
+    void aProgramStillRunningOnTheControllerIsNotCutOff() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            try (Socket s = new Socket("127.0.0.1", vc.port())) {
+                s.getOutputStream().write("DL\r#BUSY\rWT 20000\rEN\r\\XQ #BUSY,0\r".getBytes(StandardCharsets.ISO_8859_1));
+                Thread.sleep(300);
+            }
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E825]: the controller cannot run the program: a program is running in thread 0"), r.err());
+        }
+    }
+
+    @Test
+    void theDryRunDoesEverythingButMotion() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--dry-run");
+            assertEquals(0, r.status(), r.all());
+            assertTrue(r.out().contains("read back identical"), r.out());
+            assertTrue(r.out().contains("nothing moved"), r.out());
+            assertArrayEquals(home(), axes(vc));
+        }
+    }
+
+    /**
+     * A run stopped by a fault: exit 3, the blocks named, and the resume command that finishes the part
+     * along the same path, segment end for segment end, as a run that was never stopped.
+     */
+    @Test
+    void aRejectedCommandStopsMotionAndSpindleAndTheResumeFinishesThePart() throws Exception {
+        Path p = part(PART);
+        Path dir = Files.createTempDirectory("gcnc-trace");
+        Path whole = dir.resolve("whole.trace");
+        Path stopped = dir.resolve("stopped.trace");
+        try (VirtualController vc = traced(model("DMC-4040"), whole)) {
+            homed(vc);
+            assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
+        }
+        try (VirtualController vc = traced(model("DMC-4040"), stopped, "reject=45")) {
+            homed(vc);
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            Matcher m = Pattern.compile("part\\.nc:(\\d+):1: error\\[E820\\]: the controller refused (MG _XQ0|TP): error 1"
+                    + " \\(Unrecognized command\\); motion and spindle were stopped").matcher(r.err());
+            assertTrue(m.find(), r.err());
+            int line = Integer.parseInt(m.group(1));
+            assertTrue(r.out().contains("executing: line " + line), r.out());
+            assertFalse(vc.controller().moving());
+            assertEquals(0.0, vc.controller().offset(2), "the spindle reference OF on C is back to 0 V");
+            assertFalse(vc.controller().output(1), "M05's output (CB1)");
+            String resume = resumeCommand(r.out());
+            assertTrue(resume.endsWith("--resume-at " + line) || resume.contains("--resume-at " + line + ":"), resume);
+            Run again = gcnc("", resumeArgs(resume));
+            assertEquals(0, again.status(), again.all());
+            assertTrue(again.out().contains("from line " + line), again.out());
+            assertArrayEquals(programEnd(p), axes(vc));
+        }
+        assertEquals(path(whole), path(stopped));
+        assertEquals(6, path(whole).size());
+    }
+
+    static String resumeCommand(String out) {
+        Matcher m = Pattern.compile("resume with: (gcnc .*)").matcher(out);
+        assertTrue(m.find(), out);
+        return m.group(1);
+    }
+
+    static String[] resumeArgs(String command) {
+        String[] w = command.split(" ");
+        return Arrays.copyOfRange(w, 1, w.length);
+    }
+
+    @Test
+    void aDroppedConnectionNamesTheLastCompletedAndTheExecutingBlock() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"), "disconnect-after=600")) {
+            homed(vc);
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            Matcher m = Pattern.compile("error\\[E821\\]: the connection to the controller dropped \\(the link closed\\);"
+                    + " last block completed: line (\\d+); executing: line (\\d+)").matcher(r.err());
+            assertTrue(m.find(), r.err());
+            assertTrue(Integer.parseInt(m.group(1)) < Integer.parseInt(m.group(2)), r.err());
+            assertTrue(r.out().contains("resume with: gcnc run"), r.out());
+        }
+    }
+
+    @Test
+    void garbageFromTheControllerStopsTheRun() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"), "garbage-after=900")) {
+            homed(vc);
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("error[E823]: the controller's reply to"), r.err());
+            assertTrue(r.err().contains("is not Galil protocol"), r.err());
+            assertFalse(vc.controller().moving());
+        }
+    }
+
+    @Test
+    void aControllerThatDoesNotAnswerInTimeIsExit2BeforeMotion() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"), "slow=1500")) {
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--timeout", "500");
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E822]: the controller did not answer '\\x12\\x16' in time"), r.err());
+        }
+    }
+
+    @Test
+    void aStalledSequenceIsStopped() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"), "stall=3")) {
+            homed(vc);
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--stall", "1", "--poll", "50");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("error[E825]: the controller cannot run the program: the axes stood still for 1 s during line 8"),
+                    r.err());
+            assertTrue(r.out().contains("resume with: gcnc run"), r.out());
+        }
+    }
+
+    @Test
+    void resumingWhereTheAxesAreNotIsRefused() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            // the axes are at home, nowhere on line 9's arc
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--resume-at", "9");
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("part.nc:9:1: error[E827]: cannot resume at 9: the axes are at "), r.err());
+            assertArrayEquals(home(), axes(vc));
+        }
+    }
+
+    @Test
+    void stepModeRunsOneBlockPerEnterToTheEnd() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            Run r = gcnc("\n".repeat(20), "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--step", "--poll", "20");
+            assertEquals(0, r.status(), r.all());
+            // each block is a program of its own: one download (and read-back) per block
+            int downloads = r.out().split("read back identical", -1).length - 1;
+            assertEquals(9, downloads, r.out());
+            assertTrue(r.out().contains("next: line 8 - press Enter to run it"), r.out());
+            assertArrayEquals(programEnd(p), axes(vc));
+        }
+    }
+
+    @Test
+    void theOperatorStopsAStepRun() throws Exception {
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            Run r = gcnc("\nq\n", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--step");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("warning[E828]: stopped by the operator"), r.err());
+            assertTrue(r.out().contains("resume with: gcnc run"), r.out());
+        }
+    }
+
+    /** Feed hold (h, as the first Ctrl-C), Enter to resume, + for the override: VR 0, VR 1, VR 1.1 on the controller. */
+    @Test
+    void feedHoldAndOverrideGoToTheController() throws Exception {
+        Path p = part(PART);
+        try (VirtualController vc = controller(model("DMC-4040"))) {
+            homed(vc);
+            java.io.PipedOutputStream keys = new java.io.PipedOutputStream();
+            java.io.PipedInputStream in = new java.io.PipedInputStream(keys);
+            Thread operator = new Thread(() -> {
+                try {
+                    Thread.sleep(900);
+                    keys.write("h\n".getBytes(StandardCharsets.UTF_8));
+                    keys.flush();
+                    Thread.sleep(600);
+                    keys.write("\n+\n".getBytes(StandardCharsets.UTF_8));
+                    keys.flush();
+                    Thread.sleep(200);
+                    keys.close();
+                } catch (IOException | InterruptedException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            operator.start();
+            String[] args = {"run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20"};
+            CommandLine cl = Main.commandLine(new Main.Streams(in, System.out), gcnc.tables.ErrorMessages.Lang.EN, args);
+            StringWriter out = new StringWriter();
+            StringWriter err = new StringWriter();
+            cl.setOut(new PrintWriter(out, true));
+            cl.setErr(new PrintWriter(err, true));
+            int status = cl.execute(args);
+            operator.join();
+            assertEquals(0, status, out + "" + err);
+            String o = out.toString();
+            assertTrue(o.contains("feed hold (VR 0): Enter resumes, Ctrl-C again stops"), o);
+            assertTrue(o.indexOf("feed at 110% (VR 1.10)") > o.indexOf("feed hold"), o);
+            assertArrayEquals(programEnd(p), axes(vc));
+        }
+    }
+
+    /** A tiny scripted controller for one reply sequence: the program it reads back is not the one sent. */
+    @Test
+    void aReadBackThatDiffersIsNotRun() throws Exception {
+        long[] h = home();
+        try (ServerSocket server = new ServerSocket(0)) {
+            Thread t = new Thread(() -> script(server, h, "DMC4040 Rev 1.2d", new ArrayList<>()));
+            t.setDaemon(true);
+            t.start();
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", "127.0.0.1:" + server.getLocalPort());
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E824]: the program read back from the controller (UL) differs from the one"
+                    + " downloaded at DMC line 7: sent 'OF ,,3.0000' and read 'OF ,,3.0001'"), r.err());
+        }
+    }
+
+    /** Answers a pre-flight, takes a download and uploads it with one digit changed; XQ would be an error. */
+    private static void script(ServerSocket server, long[] home, String revision, List<String> program) {
+        try (Socket s = server.accept()) {
+            InputStream in = s.getInputStream();
+            OutputStream out = s.getOutputStream();
+            boolean download = false;
+            StringBuilder line = new StringBuilder();
+            for (int c = in.read(); c >= 0; c = in.read()) {
+                if (download && c == '\\') {
+                    download = false;
+                    out.write("::".getBytes(StandardCharsets.ISO_8859_1));
+                    continue;
+                }
+                if (c != '\r') {
+                    line.append((char) c);
+                    continue;
+                }
+                String cmd = line.toString();
+                line.setLength(0);
+                if (download) {
+                    synchronized (program) {
+                        program.add(cmd);
+                    }
+                    continue;
+                }
+                String reply = switch (cmd) {
+                    case "\u0012\u0016" -> revision + "\r\n:";
+                    case "TC1" -> "0\r\n:";
+                    case "TP" -> home[0] + ", " + home[1] + ", 0, 0\r\n:";
+                    case "MG _XQ0" -> "-1.0000\r\n:";
+                    case "MG _LFX", "MG _LRX", "MG _LFY", "MG _LRY" -> " 1.0000\r\n:";
+                    case "MG _MOX", "MG _MOY", "MG _BGS" -> " 0.0000\r\n:";
+                    case "MG _DL", "MG _UL", "MG _LMS" -> " 510.0000\r\n:";
+                    case "MG 20261127" -> " 20261127.0000\r\n:";
+                    case "DL" -> "";
+                    case "UL" -> String.join("\r\n", program).replace("OF ,,3.0000", "OF ,,3.0001") + "\r\n\\:";
+                    default -> cmd.startsWith("XQ") ? "?" : cmd.startsWith("MG") ? " 0.0000\r\n:" : ":";
+                };
+                download = cmd.equals("DL");
+                out.write(reply.getBytes(StandardCharsets.ISO_8859_1));
+            }
+        } catch (IOException e) {
+            // the test ends the connection
+        }
+    }
+}

@@ -1,0 +1,108 @@
+package gcnc.send;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.Session;
+import gcnc.diag.Code;
+import gcnc.machine.MachineProfile;
+import java.io.BufferedReader;
+import java.io.StringReader;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The resume program: the header, the state the program set before the resume point, the rest of an
+ * interrupted motion re-planned from where the axes stopped, then the program's own lines.
+ */
+class ResumeTest {
+    /** Line 6 a straight feed of 1000 counts, line 7 a quarter arc of radius 1000 (clockwise), line 8 M05. */
+    static final List<String> DMC = List.of("#GCNC", "SH XY", "VM XY", "VA 2000000", "VD 2000000",
+            "TOOL=1", "OF ,,3.0000", "CB2", "SB1",
+            "VS 1000", "VP 1000,0", "VE", "BGS", "AMS",
+            "VS 500", "CR 1000,90,-90", "VE", "BGS", "AMS",
+            "CB1", "EN");
+    static final String MAP = "# source part.nc\n1 0\n6 4\n7 5\n10 6\n15 7\n20 8\n21 0\n";
+
+    static DmcProgram program() throws Exception {
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        return DmcProgram.read(DMC, MapReader.read(new BufferedReader(new StringReader(MAP))), haas);
+    }
+
+    static double[] home(DmcProgram p) {
+        return p.sequences().get(0).start();
+    }
+
+    static double[] plus(double[] a, double dx, double dz) {
+        return new double[] {a[0] + dx, a[1] + dz};
+    }
+
+    @Test
+    void atTheBlocksStartTheStateComesFirstThenTheProgramFromThere() throws Exception {
+        DmcProgram p = program();
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
+        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 2000000", "VD 2000000",
+                "TOOL=1", "SB1", "CB2", "OF ,,3.0000", "WT 2000",
+                "VS 1000", "VP 1000,0", "VE", "BGS", "AMS", "VS 500", "CR 1000,90,-90", "VE", "BGS", "AMS", "CB1", "EN"),
+                r.lines());
+        // every line maps back to the compiled program's line it stands for
+        assertEquals(9, r.originOf(10));
+        assertEquals(6, p.sourceLine(r.originOf(10)));
+    }
+
+    @Test
+    void halfWayAlongALineTheRestOfItIsReplanned() throws Exception {
+        DmcProgram p = program();
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 1));
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 600,-1", "VE", "BGS", "AMS", "VS 500"), l.subList(vs, vs + 6));
+        assertEquals(6, p.sourceLine(r.originOf(vs + 1)));
+    }
+
+    @Test
+    void onAnArcTheRestOfTheArcIsReplannedFromTheStopAngle() throws Exception {
+        DmcProgram p = program();
+        double[] arcStart = plus(home(p), 1000, 0);
+        double[] centre = plus(arcStart, 0, -1000);
+        double[] at = plus(centre, Math.round(1000 * Math.cos(Math.toRadians(30))), Math.round(1000 * Math.sin(Math.toRadians(30))));
+        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), at);
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 500");
+        String cr = l.get(vs + 1);
+        assertTrue(cr.startsWith("CR 1000,29.99") || cr.startsWith("CR 1000,30.00"), cr);
+        assertTrue(cr.contains(",-29.99") || cr.contains(",-30.00"), cr);
+        // the arc from the stop ends where the programmed one does, or a closing VP takes it there
+        assertTrue(l.get(vs + 2).equals("VE") || l.get(vs + 2).startsWith("VP "), l.toString());
+        assertEquals("CB1", l.get(l.size() - 2));
+    }
+
+    @Test
+    void atTheEndOfTheMotionTheProgramGoesOnAfterIt() throws Exception {
+        DmcProgram p = program();
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 1000, 0));
+        assertEquals("VS 500", r.lines().get(r.lines().indexOf("WT 2000") + 1));
+    }
+
+    @Test
+    void offThePathNothingIsInvented() throws Exception {
+        DmcProgram p = program();
+        RunFault f = assertThrows(RunFault.class, () -> new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 500, 500)));
+        assertEquals(Code.E827_CANNOT_RESUME, f.code());
+        assertTrue(f.args().get(1).contains("not on the path of line 7"), f.args().toString());
+        RunFault none = assertThrows(RunFault.class, () -> new Resume(p, 3).plan(new ResumePoint(3, 0), home(p)));
+        assertTrue(none.args().get(1).contains("has no block"), none.args().toString());
+        RunFault k = assertThrows(RunFault.class, () -> new Resume(p, 3).plan(new ResumePoint(7, 2), home(p)));
+        assertTrue(k.args().get(1).contains("makes 1 motion"), k.args().toString());
+    }
+
+    @Test
+    void resumePointsAreWrittenNOrNK() {
+        assertEquals(new ResumePoint(37, 0), ResumePoint.parse("37"));
+        assertEquals(new ResumePoint(37, 4), ResumePoint.parse("37:4"));
+        assertEquals("37:4", new ResumePoint(37, 4).toString());
+        assertThrows(IllegalArgumentException.class, () -> ResumePoint.parse("x"));
+        assertThrows(IllegalArgumentException.class, () -> ResumePoint.parse("0"));
+    }
+}
