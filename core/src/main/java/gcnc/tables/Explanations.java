@@ -77,9 +77,10 @@ public final class Explanations {
                 m.put(c, table);
             }
         }
-        // E220-E237: the controller's own limits (tables/galil_models.csv, gcnc.machine.ControllerLimits),
-        // which no stage checks on a program yet; when the backend does, ExplainTest asks for their prose
-        String limits = "the Galil model's limits (tables/galil_models.csv), not yet checked on a program";
+        // E220-E239: the DMC gcnc writes held against the controller's own limits (gcnc.galil.LimitCheck);
+        // docs/galil.md explains each, with the reference's page
+        String limits = "the DMC gcnc writes held against the Galil model's limits (tables/galil_models.csv;"
+                + " docs/galil.md, \"The controller's limits\")";
         for (Code c : Code.values()) {
             if (c.number() >= 220 && c.number() < 240) {
                 m.put(c, limits);
@@ -99,6 +100,13 @@ public final class Explanations {
             m.put(Code.byNumber(n), second);
         }
         m.put(Code.byNumber(45), "the thesis's out-of-memory error: gcnc reports E116 at its cap instead");
+        String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
+                + " not the program's text";
+        for (Code c : Code.values()) {
+            if (c.number() >= 815 && c.number() < 830) {
+                m.put(c, link);
+            }
+        }
         return java.util.Collections.unmodifiableMap(m);
     }
 
