@@ -28,6 +28,10 @@ final class BlockWriter {
         this.source = new Source(block.origin(), block.line(), -1);
     }
 
+    CheckedBlock block() {
+        return block;
+    }
+
     /** The instructions after this carry out the block's motion {@code index} (-1: none). */
     void motion(int index) {
         if (index != source.motion()) {

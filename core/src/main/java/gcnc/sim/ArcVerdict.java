@@ -66,9 +66,10 @@ public final class ArcVerdict {
         double start = GalilNumbers.printedAngle(w.cr().start()); // the value the printed angle stands for,
         double sweep = GalilNumbers.printedAngle(w.cr().sweep()); // without printing it and reading it back
         List<Segment> segs = new ArrayList<>(2);
-        segs.add(plane.cr(su, sv, w.cr().radius(), start, sweep, new gcnc.dmc.Command.CircularArc(
-                gcnc.dmc.Fixed.of(w.cr().radius()), gcnc.dmc.Fixed.fourDecimals(w.cr().start()),
-                gcnc.dmc.Fixed.fourDecimals(w.cr().sweep())), new double[2]));
+        segs.add(plane.cr(su, sv, w.cr().radius(), start, sweep, new gcnc.dmc.Instruction(
+                new gcnc.dmc.Command.CircularArc(gcnc.dmc.Fixed.of(w.cr().radius()),
+                        gcnc.dmc.Fixed.fourDecimals(w.cr().start()), gcnc.dmc.Fixed.fourDecimals(w.cr().sweep())),
+                gcnc.dmc.Source.line(line)), new double[2]));
         if (w.cr().closing()) {
             Segment s = segs.get(0);
             segs.add(new Segment(s.toX(), s.toZ(), plane.machineX(w.tu(), w.tv()), plane.machineZ(w.tu(), w.tv()),

@@ -50,6 +50,8 @@ final class MotionChecks {
     private int sequences;
     private int segments;
     private double seconds;
+    /** What the cycle would take if every motion stopped at its end: what blending gains is the difference. */
+    private double exactStopSeconds;
     private double xMin = Double.POSITIVE_INFINITY;
     private double xMax = Double.NEGATIVE_INFINITY;
     private double zMin = Double.POSITIVE_INFINITY;
@@ -185,6 +187,7 @@ final class MotionChecks {
 
     void dwell(double s) {
         seconds += s;
+        exactStopSeconds += s;
     }
 
     /** What this sequence has already reported: one finding per check per sequence, so one bad move is one finding. */
@@ -215,16 +218,30 @@ final class MotionChecks {
         boolean travelZ = false;
         chuckHit = tailHit = stockHit = holderHit = backHit = false;
         List<double[]> poly = path == null ? null : new ArrayList<>();
+        int polyLine = line;
+        boolean blended = false;
         for (Segment s : segs) {
+            blended = blended || !Double.isNaN(s.speed()) || !Double.isNaN(s.end());
+        }
+        double entry = 0;
+        for (int k = 0; k < segs.size(); k++) {
+            Segment s = segs.get(k);
+            // a sequence may carry several blocks: each segment's findings go to its own block's line
+            int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
+            if (poly != null && at != polyLine && !poly.isEmpty()) {
+                path.move(rapid, poly, polyLine);
+                poly = new ArrayList<>();
+            }
+            polyLine = at;
             length += s.length();
             double[] box = bounds(s);
             xMin = Math.min(xMin, box[0]);
             xMax = Math.max(xMax, box[1]);
             zMin = Math.min(zMin, box[2]);
             zMax = Math.max(zMax, box[3]);
-            travelX = travelX || travel(line, "X", box[0], box[1], profile.x().min(), profile.x().max(),
+            travelX = travelX || travel(at, "X", box[0], box[1], profile.x().min(), profile.x().max(),
                     profile.x().countsPerMm());
-            travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
+            travelZ = travelZ || travel(at, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
             double rMin = radius(box[0], box[1]);
             boolean nearChuck = near(chuckBox, box);
@@ -234,14 +251,27 @@ final class MotionChecks {
                     && stock.mayTouch((box[2] + reach[2]) / kz,
                     (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
             if (poly != null || nearChuck || nearTail || nearStock) {
-                closeUp(s, rapid, line, poly, nearChuck, nearTail, nearStock);
+                closeUp(s, rapid, at, poly, nearChuck, nearTail, nearStock);
+            }
+            if (blended) {
+                // the segment at its own speed, from the corner before it to the corner after it
+                double v = Double.isNaN(s.speed()) ? speed : s.speed();
+                double exit = k == segs.size() - 1 ? 0 : Double.isNaN(s.end()) ? v : s.end();
+                seconds += Profiles.time(s.length(), entry, v, exit, acc, dec);
+                exactStopSeconds += time(s.length(), v, acc, dec);
+                entry = exit;
             }
         }
-        seconds += time(length, speed, acc, dec);
+        if (!blended) {
+            double t = time(length, speed, acc, dec);
+            seconds += t;
+            exactStopSeconds += t;
+        }
         if (poly != null) {
-            path.move(rapid, poly, line);
+            path.move(rapid, poly, polyLine);
             path.frame(frame, rapid);
-        }        return removed;
+        }
+        return removed;
     }
 
     /**
@@ -537,6 +567,6 @@ final class MotionChecks {
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
-                seconds, d);
+                seconds, exactStopSeconds, d);
     }
 }
