@@ -158,7 +158,8 @@ public final class Simulator {
     private Expected match(gcnc.dmc.Source source) {
         while (!expected.isEmpty()) {
             Expected e = expected.peek();
-            if (source != null && e.block().line() == source.line() && e.index() == source.motion()
+            // a hand-made DMC line names no motion (-1): its block's next one
+            if (source != null && e.block().line() == source.line() && (source.motion() < 0 || e.index() == source.motion())
                     && java.util.Objects.equals(e.block().origin().file(), source.file())) {
                 expected.poll();
                 e.done()[0]++;
