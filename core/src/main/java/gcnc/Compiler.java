@@ -206,7 +206,8 @@ public final class Compiler {
      * every motion; the galil dialect blends as the profile says ({@code plan.blend}).
      */
     private static gcnc.plan.Planner planner(Settings settings) {
-        return new gcnc.plan.ExactStop();
+        return "thesis".equals(settings.dialect()) ? new gcnc.plan.ExactStop()
+                : gcnc.plan.Planner.forProfile(settings.profile());
     }
 
     /** The longest first line read for a stock header; the program is read once, from the start. */

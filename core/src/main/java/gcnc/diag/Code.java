@@ -400,6 +400,10 @@ public enum Code {
     E330_CYCLE_MANY_PECKS(330),
     /** Replay warning: the source map beside a DMC records another DMC (its hash differs): its lines are not used. */
     E331_MAP_NOT_THIS_DMC(331),
+    /** A blended sequence takes a corner faster than the machine's acceleration and corner deviation allow. */
+    E332_SIM_CORNER_TOO_FAST(332),
+    /** A blended segment is too short for the machine to change from its entry speed to its exit speed. */
+    E333_SIM_SPEED_CHANGE_TOO_SHORT(333),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -30,6 +30,7 @@ public final class Simulator {
     /** The stations already warned of as not described (E321/E322): once per station, not per tool change. */
     private final java.util.Set<Integer> undescribed = new java.util.HashSet<>();
     private final Trace trace;
+    private final Corners corners;
     /**
      * The motions the checker meant that the DMC has not carried out yet, in program order; null
      * for a bare replay (nothing to compare with). The planner holds at most a sequence's worth of
@@ -69,6 +70,7 @@ public final class Simulator {
         dmc.rpmPerVolt = profile.rpmPerVolt();
         dmc.threadTolerance = threadTolerance(profile, options);
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
+        this.corners = new Corners(profile, this::report);
     }
 
     /**
@@ -269,6 +271,7 @@ public final class Simulator {
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
             boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
                     stopped || open);
+            corners.check(segments, speed, line);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
