@@ -107,7 +107,8 @@ class ErrorsTest {
         java.nio.file.Files.createDirectories(dir.resolve("machines"));
         java.nio.file.Files.createDirectories(dir.resolve("controls/thesis-2004"));
         for (String f : new String[] {"controls/thesis-2004/control.cfg", "controls/thesis-2004/m_codes.csv",
-            "parameter_limits.csv", "tool_offsets.csv", "work_offsets.csv", "errors.csv", "phrases.csv", "machines/generic.machine"}) {
+            "parameter_limits.csv", "tool_offsets.csv", "work_offsets.csv", "errors.csv", "phrases.csv", "galil_models.csv",
+            "machines/generic.machine"}) {
             java.nio.file.Files.copy(src.resolve(f), dir.resolve(f));
         }
         String usage = java.nio.file.Files.readString(src.resolve("controls/thesis-2004/g_codes.csv"))

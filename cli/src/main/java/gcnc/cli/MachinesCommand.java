@@ -61,7 +61,7 @@ final class MachinesCommand implements Callable<Integer> {
                 MachineProfile p = ProfileLoader.load(name, common.source(), tables, null);
                 String text = common.source().read("machines/" + name + ".machine");
                 out.println(phrases.get("machines.row", String.format("%-14s", name),
-                        String.format("%-12s", p.control().name()), String.format("%-9s", p.galilModel()), summary(text)));
+                        String.format("%-12s", p.control().name()), String.format("%-9s", p.galilModel().name()), summary(text)));
             } catch (TableException e) {
                 status = Reporter.tableFault(err, e, common.language());
             }

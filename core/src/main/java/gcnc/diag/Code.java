@@ -331,6 +331,46 @@ public enum Code {
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
 
+    // 220-239: the controller's limits (gcnc.machine.ControllerLimits; tables/galil_models.csv,
+    // docs/galil.md "The controller's limits"): a value the controller refuses (an error, TC 6 or
+    // the download's TC 60-62) or rounds (a warning: the machine would not do exactly what was written).
+    /** VS outside the model's vector speed range (2 to 15,000,000 counts/s). */
+    E220_VECTOR_SPEED_RANGE(220),
+    /** A segment speed {@code <o} or {@code >p} of VP or CR outside the model's range (2 to 15,000,000 counts/s). */
+    E221_SEGMENT_SPEED_RANGE(221),
+    /** VA or VD outside the model's acceleration range (1,024 to 1,073,740,800 counts/s^2). */
+    E222_ACCELERATION_RANGE(222),
+    /** A VP segment longer than the model takes in one segment (8,388,607 counts). */
+    E223_SEGMENT_TOO_LONG(223),
+    /** A CR radius outside the model's range (10 to 6,000,000 counts). */
+    E224_ARC_RADIUS_RANGE(224),
+    /** A CR arc whose radius times its degrees is not below the model's 450,000,000. */
+    E225_ARC_TOO_LONG(225),
+    /** WT outside the model's range (2 to 2,147,483,646 ms). */
+    E226_DWELL_RANGE(226),
+    /** A program line longer than the model's 80 characters (TC 60 at download). */
+    E227_LINE_TOO_LONG(227),
+    /** A program with more lines than the model's memory holds (TC 60 at download). */
+    E228_TOO_MANY_LINES(228),
+    /** A program with more labels than the model holds (TC 62). */
+    E229_TOO_MANY_LABELS(229),
+    /** A label name longer than the model takes (7 characters). */
+    E230_LABEL_TOO_LONG(230),
+    /** A program that creates more variables than the model holds. */
+    E231_TOO_MANY_VARIABLES(231),
+    /** Arrays with more elements together than the model holds. */
+    E232_TOO_MANY_ARRAY_ELEMENTS(232),
+    /** A sequence whose path is not below the model's total distance (2^30 counts) before BGS. */
+    E233_SEQUENCE_TOO_LONG(233),
+    /** More segments before BGS than the model's sequence buffer holds (511; TC 164). */
+    E234_TOO_MANY_SEGMENTS(234),
+    /** Warning: VA or VD is not a multiple of 1,024; written as the multiple the controller would take (rounded down). */
+    E235_ACCELERATION_ROUNDED(235),
+    /** Warning: a vector or segment speed is odd; written as the even speed below it (the controller's resolution is 2). */
+    E236_SPEED_ROUNDED(236),
+    /** Warning: a dwell of an odd number of milliseconds; written as the even one above it (WT's resolution is 2). */
+    E237_DWELL_ROUNDED(237),
+
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
     /** Checker: the chamfered pull-out (M23) is as long as the pass's Z travel or longer. */
@@ -418,6 +458,18 @@ public enum Code {
     E404_TABLE_FILE_TOO_LARGE(404),
     /** Profile: spindle.max_rpm needs more than the 10 V the OF output gives at spindle.rpm_per_volt: every compile at top speed would be E203. */
     E410_SPINDLE_TOP_SPEED_VOLTS(410),
+    /** Profile: galil.model names no model of tables/galil_models.csv. */
+    E420_UNKNOWN_GALIL_MODEL(420),
+    /** Profile: a channel (x.galil, z.galil, spindle.axis, spindle.encoder_axis) the model does not have. */
+    E421_CHANNEL_BEYOND_MODEL(421),
+    /** Profile: vector.acceleration or vector.deceleration outside what the model's VA and VD take. */
+    E422_ACCELERATION_BEYOND_MODEL(422),
+    /** Profile: rapid.speed or feed.max outside what the model's VS takes. */
+    E423_SPEED_BEYOND_MODEL(423),
+    /** Profile: an M code's output (SB n, CB n) the model does not have. */
+    E424_OUTPUT_BEYOND_MODEL(424),
+    /** Profile: galil.firmware is not a firmware revision (1.2a, 1.0c ...). */
+    E425_FIRMWARE_REVISION(425),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */

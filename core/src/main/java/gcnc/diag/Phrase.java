@@ -187,7 +187,17 @@ public enum Phrase {
     TOOLS_FILE_MISSING,
     TOOLS_FILE_KEYS,
     /** A simulator finding's place when the program's coordinates are not known (a DMC replayed by itself): {0} the DMC line. */
-    DMC_LINE;
+    DMC_LINE,
+    /** E420: the nearest known Galil model ({0}). */
+    DID_YOU_MEAN,
+    /** galil_models.csv: a model name that is not DMC- and four or five digits ({0}). */
+    GALIL_MODEL_NAME,
+    /** galil_models.csv: a model listed twice ({0}, first on line {1}). */
+    GALIL_MODEL_TWICE,
+    /** galil_models.csv: a whole number outside what the column can hold ({0} column, {1} value, {2}..{3}). */
+    GALIL_MODEL_RANGE,
+    /** galil_models.csv: a firmware-1.2a figure smaller than the older one ({0} column, {1} the older column). */
+    GALIL_FIRMWARE_SMALLER;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

@@ -12,7 +12,7 @@ import java.util.Optional;
  * here was checked when the profile was loaded ({@link ProfileLoader}).
  *
  * @param name            profile name
- * @param galilModel      controller model, e.g. DMC-4020
+ * @param galilModel      the controller model (galil.model, default DMC-4040) and its limits ({@link GalilModels})
  * @param x               lathe X (radial) axis
  * @param z               lathe Z axis
  * @param diameterX       X and U are programmed as diameters (I is always a radius)
@@ -46,7 +46,7 @@ import java.util.Optional;
  * @param threadChamfer   the chamfered pull-out of a G76/G92 pass under Haas M23 (keys
  *                        {@code thread.chamfer_leads}, {@code thread.chamfer_angle})
  */
-public record MachineProfile(String name, String galilModel, Axis x, Axis z, boolean diameterX,
+public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
                              double maxFeed, double acceleration, double deceleration, double maxRpm,
                              double rpmPerVolt, char spindleAxis, boolean rearToolPost,
@@ -60,6 +60,11 @@ public record MachineProfile(String name, String galilModel, Axis x, Axis z, boo
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);
         outputs = Map.copyOf(outputs);
+    }
+
+    /** The checks of every number gcnc hands this machine's controller ({@link #galilModel}'s limits). */
+    public ControllerLimits controllerLimits() {
+        return new ControllerLimits(galilModel);
     }
 
     /** The spindle encoder threads are geared to; empty on a machine that cannot cut threads (E190). */

@@ -134,7 +134,8 @@ public final class ProfileLoader {
             // record to reproduce, not a drive to configure (its galil compiles still get E203)
             spindleReachesTopSpeed(f);
         }
-        return new MachineProfile(f.text("name"), f.text("galil.model", "DMC-4020"), x, z,
+        GalilModel galil = GalilModels.load(tables).forProfile(f);
+        MachineProfile p = new MachineProfile(f.text("name"), galil, x, z,
                 f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
                 register(f, "rapid.speed", Phrase.REGISTER_SPEED),
@@ -146,6 +147,8 @@ public final class ProfileLoader {
                 workOffsets(f, counts, x, z, model), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
                 machineZero, chuckByProgram, model, encoder(f, x, z),
                 noses(f, counts, x), threadChamfer(f));
+        GalilModels.holds(p, f); // channels, speeds, accelerations and outputs the model has (E421-E424)
+        return p;
     }
 
     /** The most volts the OF output gives (Galil's +-10 V analog output; the backend clamps 9.998..10 with E204). */

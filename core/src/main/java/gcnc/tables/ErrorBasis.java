@@ -21,7 +21,9 @@ public final class ErrorBasis {
         /** The Haas or Fanuc operator's manual (an alarm it lists, or what it says the control does). */
         MANUAL,
         /** gcnc's own judgement beyond the manuals. */
-        GCNC
+        GCNC,
+        /** Galil's firmware command reference: a value the controller refuses or rounds (tables/galil_models.csv). */
+        GALIL
     }
 
     /** What the control does with the block. */
