@@ -104,7 +104,10 @@ public final class Compiler {
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
         List<Instruction> lines = new ArrayList<>();
-        java.util.function.Consumer<Instruction> collect = lines::add;
+        // every number the galil dialect writes is held against the controller's limits on its way out
+        gcnc.galil.LimitCheck limits = "galil".equals(settings.dialect())
+                ? new gcnc.galil.LimitCheck(settings.profile().controllerLimits(), diags, lines::add) : null;
+        java.util.function.Consumer<Instruction> collect = limits != null ? limits : lines::add;
         long blocks = 0;
         Optional<SimOptions> simulate = settings.simulation();
         // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
@@ -133,6 +136,9 @@ public final class Compiler {
             if (translated) {
                 planner.finish(lower); // the motions it still holds
                 dialect.end(collect);
+                if (limits != null) {
+                    limits.finish(); // the whole program against the controller's memory
+                }
                 if (sim != null) {
                     sim.end(List.copyOf(lines));
                     lines.clear();
@@ -174,7 +180,7 @@ public final class Compiler {
                 if (diags.hasErrors()) {
                     sim.outputOnly(List.copyOf(lines));
                 } else {
-                    sim.block(checked, List.copyOf(lines));
+                    sim.block(checked, List.copyOf(lines), !planner.holding());
                 }
                 lines.clear();
             } else {

@@ -370,6 +370,11 @@ public enum Code {
     E236_SPEED_ROUNDED(236),
     /** Warning: a dwell of an odd number of milliseconds; written as the even one above it (WT's resolution is 2). */
     E237_DWELL_ROUNDED(237),
+    /**
+     * The compiled program has more lines (or labels) than the model's program memory: written, but
+     * it cannot be downloaded whole (E228/E229 when the program form is required).
+     */
+    E238_PROGRAM_DOES_NOT_FIT(238),
 
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.

@@ -35,6 +35,7 @@ final class GalilDialect implements Dialect {
     private final Diagnostics diagnostics;
     private final boolean inlineSourceMap;
     private final GalilFrame frame;
+    private final gcnc.machine.ControllerLimits limits;
     long posU;
     long posV;
     /** The profile's output directives of each M code, read once. */
@@ -45,6 +46,7 @@ final class GalilDialect implements Dialect {
         this.diagnostics = diagnostics;
         this.inlineSourceMap = inlineSourceMap;
         this.frame = new GalilFrame(profile);
+        this.limits = profile.controllerLimits();
         this.posU = GalilNumbers.round(frame.u(profile.home()));
         this.posV = GalilNumbers.round(frame.v(profile.home()));
     }
@@ -55,10 +57,17 @@ final class GalilDialect implements Dialect {
         out.accept(new Instruction(new Command.Label("GCNC"), Source.NONE));
         out.accept(new Instruction(new Command.ServoHere(plane), Source.NONE));
         out.accept(new Instruction(new Command.VectorMode(plane), Source.NONE));
-        out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(GalilNumbers.round(profile.acceleration()))),
+        out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(acceleration(profile.acceleration()))),
                 Source.NONE));
-        out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(GalilNumbers.round(profile.deceleration()))),
+        out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(acceleration(profile.deceleration()))),
                 Source.NONE));
+    }
+
+    /** VA or VD as the controller takes it (a multiple of 1,024, rounded down), warned of at line 1 when that changes it. */
+    private long acceleration(double countsPerSecond2) {
+        gcnc.machine.ControllerLimits.Rounded r = limits.roundAcceleration(GalilNumbers.round(countsPerSecond2));
+        gcnc.machine.ControllerLimits.report(r, Span.of(1, 1), diagnostics);
+        return r.taken();
     }
 
     /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm, or {@code NO STOCK NONE} (docs/dmc-format.md). */
@@ -107,12 +116,14 @@ final class GalilDialect implements Dialect {
     /** The writer of block {@code b}'s instructions: one per block, so that its inline map comment comes once. */
     BlockWriter writer(CheckedBlock b, Consumer<Instruction> sink) {
         if (writer == null || writer.block() != b) {
-            writer = new BlockWriter(sink, b, inlineSourceMap);
+            writer = new BlockWriter(sink, b, inlineSourceMap, blocks++);
         }
         return writer;
     }
 
     private BlockWriter writer;
+    /** The blocks written so far: each new one's number in the run (Source#block). */
+    private long blocks;
 
     private void motion(CheckedBlock b, Motion m, BlockWriter out) {
         m.accept(new Motion.Visitor<Void>() {
@@ -354,11 +365,17 @@ final class GalilDialect implements Dialect {
         out.emit(new Command.VectorSpeed(Fixed.of(speed)));
     }
 
-    /** The vector speed in counts/s, or -1 (reported) when the controller cannot take it. */
+    /**
+     * The vector speed in counts/s at the controller's resolution (even: VS and the segment speeds
+     * take multiples of 2, and gcnc rounds down so that no feed runs faster than programmed), or -1
+     * (reported) when the controller cannot take it. A speed the rounding changes by more than 1 %
+     * (only a very slow feed) is warned of (E236); below that it is the same quantization as
+     * millimetres to counts.
+     */
     long speed(CheckedBlock b, gcnc.ir.Feed feed) {
         double cps = feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
         long s = GalilNumbers.round(cps);
-        if (s < 1) {
+        if (s < 2) { // VS 2 is the slowest the controller takes
             diagnostics.error(Code.E207_FEED_TOO_SLOW, at(b), GalilNumbers.angle(cps));
             return -1;
         }
@@ -366,7 +383,11 @@ final class GalilDialect implements Dialect {
             diagnostics.error(Code.E201_GALIL_RANGE, at(b), "VS", s);
             return -1;
         }
-        return s;
+        gcnc.machine.ControllerLimits.Rounded even = limits.roundSpeed(s);
+        if (even.changed() && (even.asked() - even.taken()) * 100 > even.asked()) {
+            even.diagnostic(at(b)).ifPresent(d -> diagnostics.report(d.in(b.origin())));
+        }
+        return even.taken();
     }
 
     boolean inRange(CheckedBlock b, String command, long counts) {

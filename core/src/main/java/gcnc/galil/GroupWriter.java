@@ -18,7 +18,7 @@ import java.util.function.Consumer;
  * and {@code CR r,θ,Δθ <o >p} measured from the sequence's start, {@code VE}, {@code BGS}; the
  * spindle speeds of the motions that change it on the way ({@code AV <distance>} then the speed);
  * {@code AMS} with the reason the machine stops there. Speeds are even, 2 or more (Galil's
- * resolution for {@code <} and {@code >}); a corner speed is rounded down, never up.
+ * resolution for {@code <} and {@code >}), rounded down, never up.
  */
 final class GroupWriter {
     private final GalilDialect d;
@@ -49,7 +49,7 @@ final class GroupWriter {
             if (vs < 0) {
                 continue; // reported (E207, E201): the output is void
             }
-            Command.Speeds speeds = new Command.Speeds(even(p.speed()), k == n - 1 ? 0 : evenDown(p.exit()));
+            Command.Speeds speeds = new Command.Speeds(Math.min(vs, evenDown(p.speed())), k == n - 1 ? 0 : evenDown(p.exit()));
             if (!started) {
                 d.speedLine(vs, feed != null, out);
                 started = true;
@@ -124,11 +124,6 @@ final class GroupWriter {
         }
         d.posU = tu;
         d.posV = tv;
-    }
-
-    /** The nearest even speed, at least 2. */
-    static long even(double v) {
-        return Math.max(2, 2 * Math.round(v / 2));
     }
 
     /** The even speed at or below {@code v}, at least 2. */

@@ -76,10 +76,12 @@ final class ThesisDialect implements Dialect {
     }
 
     private BlockWriter writer;
+    /** The blocks written so far: each new one's number in the run (Source#block). */
+    private long blocks;
 
     private BlockWriter writer(CheckedBlock b, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
         if (writer == null || writer.block() != b) {
-            writer = new BlockWriter(sink, b, inlineSourceMap);
+            writer = new BlockWriter(sink, b, inlineSourceMap, blocks++);
         }
         return writer;
     }

@@ -80,9 +80,14 @@ public final class Contouring implements Planner {
                 continue;
             }
             if (p.length() < 0.5) {
-                // shorter than a count: nothing to write, no direction to blend by (the emitter skips it)
-                out.accept(new Step.Alone(b, i));
-                continue;
+                // shorter than a count: nothing to write, no direction of its own. Alone when nothing is
+                // held; else in the sequence, in its order, turning neither way (the emitter skips it)
+                if (paths.isEmpty() || paths.get(paths.size() - 1).rapid() != p.rapid()) {
+                    flush(Stop.RAPID_FEED, out);
+                    out.accept(new Step.Alone(b, i));
+                    continue;
+                }
+                p = paths.get(paths.size() - 1).standing(p.speed());
             }
             if (!paths.isEmpty()) {
                 Stop stop = joins(b, p);
@@ -106,6 +111,11 @@ public final class Contouring implements Planner {
     @Override
     public void finish(Consumer<Step> out) {
         flush(Stop.END, out);
+    }
+
+    @Override
+    public boolean holding() {
+        return !paths.isEmpty();
     }
 
     /** Whether the block's first motion is a path that joins the sequence gathered so far. */
@@ -167,7 +177,7 @@ public final class Contouring implements Planner {
             return 0;
         }
         double sinHalf = Math.sqrt(0.5 * (1 - cos));
-        return Math.min(v, Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf)));
+        return Math.min(v, MARGIN * Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf)));
     }
 
     private void flush(Stop stop, Consumer<Step> out) {
@@ -181,10 +191,10 @@ public final class Contouring implements Planner {
             entry[i] = corner(paths.get(i - 1), paths.get(i));
         }
         for (int i = n - 1; i >= 1; i--) { // reverse pass: each corner one can still stop from
-            entry[i] = Math.min(entry[i], Math.sqrt(entry[i + 1] * entry[i + 1] + 2 * acceleration * paths.get(i).length()));
+            entry[i] = Math.min(entry[i], Math.sqrt(entry[i + 1] * entry[i + 1] + 2 * acceleration * usable(i)));
         }
         for (int i = 1; i < n; i++) { // forward pass: each corner one can reach
-            entry[i] = Math.min(entry[i], Math.sqrt(entry[i - 1] * entry[i - 1] + 2 * acceleration * paths.get(i - 1).length()));
+            entry[i] = Math.min(entry[i], Math.sqrt(entry[i - 1] * entry[i - 1] + 2 * acceleration * usable(i - 1)));
         }
         List<Piece> pieces = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
@@ -200,11 +210,33 @@ public final class Contouring implements Planner {
     }
 
     /**
+     * The length of motion i the passes count on: its length less {@link #ROUNDING} counts, since
+     * the emitter writes whole counts and a short segment may come out that much shorter.
+     */
+    private double usable(int i) {
+        return Math.max(0, paths.get(i).length() - ROUNDING);
+    }
+
+    /** How much shorter a segment may be written than planned (its two ends rounded to whole counts). */
+    static final double ROUNDING = 2;
+    /**
+     * The share of the junction speed the planner uses: the controller's corner is between segments
+     * rounded to whole counts and arcs of printed angles, whose directions differ a little from the
+     * program's; the simulator checks the written ones (E332).
+     */
+    static final double MARGIN = 0.9;
+
+    /**
      * A straight move or an arc as the planner sees it: its length (counts), its speed limit
      * (counts/s), and its unit directions where it starts and where it ends, in machine counts.
      */
     record Path(boolean rapid, double length, double speed, double entryX, double entryZ, double exitX,
                 double exitZ) {
+        /** A motion of no length after this one: it goes on in this one's direction. */
+        Path standing(double speed) {
+            return new Path(rapid, 0, speed, exitX, exitZ, exitX, exitZ);
+        }
+
         /** The path of a straight move or an arc; null for a dwell or a thread. */
         static Path of(Motion m, double rapidSpeed, double acceleration) {
             if (m instanceof Motion.Linear l) {

@@ -20,4 +20,9 @@ public final class ExactStop implements Planner {
     @Override
     public void finish(Consumer<Step> out) {
     }
+
+    @Override
+    public boolean holding() {
+        return false;
+    }
 }

@@ -15,6 +15,9 @@ public interface Planner {
 
     void finish(Consumer<Step> out);
 
+    /** Whether motions of the blocks given so far are still held back (not yet handed on). */
+    boolean holding();
+
     /** The planner a profile asks for: contouring ({@code plan.blend = on}, the default) or exact stop. */
     static Planner forProfile(MachineProfile profile) {
         Blending b = Blending.of(profile);

@@ -34,8 +34,12 @@ final class Corners {
     }
 
     void check(List<Segment> segs, double speed, int line) {
-        if (segs.size() < 2) {
-            return;
+        boolean blended = false;
+        for (Segment s : segs) {
+            blended = blended || !Double.isNaN(s.speed()) || !Double.isNaN(s.end());
+        }
+        if (segs.size() < 2 || !blended) {
+            return; // one segment, or a sequence without speeds of its own (a geared pass, an arc and its closing move)
         }
         double entry = 0;
         for (int k = 0; k < segs.size(); k++) {

@@ -169,6 +169,14 @@ final class MotionChecks {
 
     void frame(gcnc.ir.ProgramFrame f) {
         frame = f;
+        frames = null;
+    }
+
+    /** The program frame of each segment of the next sequence, when it carries several blocks (null: one frame). */
+    private gcnc.ir.ProgramFrame[] frames;
+
+    void frames(gcnc.ir.ProgramFrame[] perSegment) {
+        frames = perSegment;
     }
 
     /** The number of the DMC line being replayed (a finding without a program frame is placed by it). */
@@ -228,6 +236,9 @@ final class MotionChecks {
             Segment s = segs.get(k);
             // a sequence may carry several blocks: each segment's findings go to its own block's line
             int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
+            if (frames != null && frames[k] != null) {
+                frame = frames[k];
+            }
             if (poly != null && at != polyLine && !poly.isEmpty()) {
                 path.move(rapid, poly, polyLine);
                 poly = new ArrayList<>();

@@ -96,6 +96,14 @@ public final class Simulator {
      * is paired with the motions it carries out by where its segments came from ({@code Source}).
      */
     public void block(CheckedBlock intended, List<Instruction> emitted) {
+        block(intended, emitted, true);
+    }
+
+    /**
+     * @param settled whether the DMC of every motion meant so far has been given (the planner holds
+     *                none back): a motion still not carried out then never will be (E311)
+     */
+    public void block(CheckedBlock intended, List<Instruction> emitted, boolean settled) {
         if (expected == null) {
             expected = new java.util.ArrayDeque<>();
         }
@@ -114,6 +122,9 @@ public final class Simulator {
         run(emitted);
         dmc.checkedByCaller = false;
         closeSequences(intended.line());
+        while (settled && !expected.isEmpty()) {
+            skip(expected.poll());
+        }
     }
 
     public void end(List<Instruction> footer) {
@@ -157,11 +168,13 @@ public final class Simulator {
      * that do not move (G28 U0 W0's intermediate point, an arc shorter than a count), which the
      * backend may leave out. A motion that moves and was left out is E311 at its block.
      */
-    private Expected match(gcnc.dmc.Source source) {
+    private Expected match(gcnc.dmc.Source source, List<Segment> run) {
         while (!expected.isEmpty()) {
             Expected e = expected.peek();
-            // a hand-made DMC line names no motion (-1): its block's next one
-            if (source != null && e.block().line() == source.line() && (source.motion() < 0 || e.index() == source.motion())
+            // a hand-made DMC line names no motion (-1): its block's next one that moves as the run moves
+            boolean named = source != null && source.motion() >= 0 ? e.index() == source.motion()
+                    : !standing(e.motion()) || sameDisplacement(run, e.motion());
+            if (source != null && e.block().line() == source.line() && named
                     && java.util.Objects.equals(e.block().origin().file(), source.file())) {
                 expected.poll();
                 e.done()[0]++;
@@ -214,6 +227,16 @@ public final class Simulator {
         });
     }
 
+    /** Whether the segments move as the motion moves, within the tolerance. */
+    private boolean sameDisplacement(List<Segment> run, Motion m) {
+        Segment first = run.get(0);
+        Segment last = run.get(run.size() - 1);
+        Point from = m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Arc a ? a.from() : ((Motion.Thread) m).from();
+        Point to = m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Arc a ? a.to() : ((Motion.Thread) m).to();
+        return Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
+                last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
+    }
+
     private static double distance(Point a, Point b) {
         return Geometry.length(b.x() - a.x(), b.z() - a.z());
     }
@@ -250,7 +273,7 @@ public final class Simulator {
                     while (j < segments.size() && java.util.Objects.equals(segments.get(j).source(), from)) {
                         j++;
                     }
-                    Expected e = match(from);
+                    Expected e = match(from, segments.subList(i, j));
                     if (e == null) {
                         report(Code.E311_SIM_SEQUENCE_COUNT, line, 0, 1); // a sequence no motion of the program asked for
                     } else {
@@ -264,6 +287,14 @@ public final class Simulator {
             if (m != null) {
                 origin = meant.get(0).block().origin();
                 checks.frame(meant.get(0).block().frame());
+                if (meant.size() > 1) {
+                    // a sequence of several blocks: each segment's findings in its own block's coordinates
+                    gcnc.ir.ProgramFrame[] frames = new gcnc.ir.ProgramFrame[segments.size()];
+                    for (int k = 0; k < meant.size(); k++) {
+                        java.util.Arrays.fill(frames, runs.get(k)[0], runs.get(k)[1], meant.get(k).block().frame());
+                    }
+                    checks.frames(frames);
+                }
             }
             boolean rapid = expected == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
