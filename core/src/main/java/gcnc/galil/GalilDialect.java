@@ -368,9 +368,8 @@ final class GalilDialect implements Dialect {
     /**
      * The vector speed in counts/s at the controller's resolution (even: VS and the segment speeds
      * take multiples of 2, and gcnc rounds down so that no feed runs faster than programmed), or -1
-     * (reported) when the controller cannot take it. A speed the rounding changes by more than 1 %
-     * (only a very slow feed) is warned of (E236); below that it is the same quantization as
-     * millimetres to counts.
+     * (reported) when the controller cannot take it. The rounding is the controller's resolution, as
+     * millimetres to counts is the encoder's: not warned of.
      */
     long speed(CheckedBlock b, gcnc.ir.Feed feed) {
         double cps = feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
@@ -384,9 +383,6 @@ final class GalilDialect implements Dialect {
             return -1;
         }
         gcnc.machine.ControllerLimits.Rounded even = limits.roundSpeed(s);
-        if (even.changed() && (even.asked() - even.taken()) * 100 > even.asked()) {
-            even.diagnostic(at(b)).ifPresent(d -> diagnostics.report(d.in(b.origin())));
-        }
         return even.taken();
     }
 

@@ -14,6 +14,8 @@ import java.util.List;
  * into the next one. Findings go to the line of the segment they are about.
  */
 final class Corners {
+    /** A segment this short (counts) is the rounding of an arc's end, not a corner: no junction check. */
+    private static final double TINY = 4;
     /** Room for the even rounding of the written speeds, counts/s. */
     private static final double ROUNDING = 4;
 
@@ -48,7 +50,8 @@ final class Corners {
             double v = Double.isNaN(s.speed()) ? speed : s.speed();
             boolean last = k == segs.size() - 1;
             double exit = last ? 0 : Double.isNaN(s.end()) ? v : s.end();
-            if (!last) {
+            // a segment of a count or two (an arc's closing move) is a rounding, not a corner of the path
+            if (!last && s.length() > TINY && segs.get(k + 1).length() > TINY) {
                 double limit = junction(s, segs.get(k + 1), Math.min(v, speedOf(segs.get(k + 1), speed)));
                 if (exit > limit + ROUNDING) {
                     out.report(Code.E332_SIM_CORNER_TOO_FAST, at, perMinute(exit), perMinute(limit));

@@ -171,9 +171,11 @@ public final class Simulator {
     private Expected match(gcnc.dmc.Source source, List<Segment> run) {
         while (!expected.isEmpty()) {
             Expected e = expected.peek();
-            // a hand-made DMC line names no motion (-1): its block's next one that moves as the run moves
-            boolean named = source != null && source.motion() >= 0 ? e.index() == source.motion()
-                    : !standing(e.motion()) || sameDisplacement(run, e.motion());
+            // the motion the run names (a hand-made DMC line names none, -1: its block's next one); a
+            // motion that does not move is the run only when the run does not move either, since the
+            // backend may have left it out and the next block's motion can have the same line and index
+            boolean named = (source == null || source.motion() < 0 || e.index() == source.motion())
+                    && (!standing(e.motion()) || sameDisplacement(run, e.motion()));
             if (source != null && e.block().line() == source.line() && named
                     && java.util.Objects.equals(e.block().origin().file(), source.file())) {
                 expected.poll();
