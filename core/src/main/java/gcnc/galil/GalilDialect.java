@@ -102,7 +102,9 @@ final class GalilDialect implements Dialect {
             if (g.pieces().size() == 1) {
                 // one motion: what the exact-stop planner writes, no segment speeds
                 gcnc.plan.Piece p = g.pieces().get(0);
+                stop = g.stop();
                 lower(new Step.Alone(p.block(), p.motion()), sink);
+                stop = null;
             } else {
                 new GroupWriter(this, sink).write(g);
             }
@@ -348,11 +350,14 @@ final class GalilDialect implements Dialect {
         }
     }
 
-    private static void finishSequence(BlockWriter out) {
+    private void finishSequence(BlockWriter out) {
         out.emit(new Command.VectorEnd());
         out.emit(new Command.BeginSequence());
-        out.emit(new Command.AwaitSequence());
+        out.emit(new Command.AwaitSequence(stop));
     }
+
+    /** Why the machine stops after the motion being written alone, when the planner said (a group of one). */
+    private gcnc.plan.Stop stop;
 
     /**
      * The sequence's VS; a feed as fast as a rapid is marked with a {@code NO G01} comment first, so
