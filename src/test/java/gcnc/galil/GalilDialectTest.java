@@ -38,10 +38,11 @@ class GalilDialectTest {
         Diagnostics d = new Diagnostics();
         List<String> out = Fixtures.run("galil", AT_ORIGIN, d, motions(3, a, rapid(Point.ORIGIN, a)),
                 motions(4, b, new Motion.Linear(false, a, b, new Feed(0.1, 1666.7))));
-        // Generic: Galil X = lathe Z, Y = lathe X; VP is relative to where each sequence starts.
-        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 1000000", "VD 1000000",
+        // Generic: Galil X = lathe Z, Y = lathe X; VP is relative to where each sequence starts; the
+        // feed of 1666.7 counts/s is written at VS's resolution, even and not faster: 1666
+        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 999424", "VD 999424",
                 "VS 100000", "VP 2000,1000", "VE", "BGS", "AMS",
-                "VS 1667", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out);
+                "VS 1666", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out);
         assertEquals(0, d.size());
     }
 
