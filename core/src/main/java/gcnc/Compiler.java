@@ -107,7 +107,10 @@ public final class Compiler {
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
         List<Instruction> lines = new ArrayList<>();
-        java.util.function.Consumer<Instruction> collect = lines::add;
+        // every number the galil dialect writes is held against the controller's limits on its way out
+        gcnc.galil.LimitCheck limits = "galil".equals(settings.dialect())
+                ? new gcnc.galil.LimitCheck(settings.profile().controllerLimits(), diags, lines::add) : null;
+        java.util.function.Consumer<Instruction> collect = limits != null ? limits : lines::add;
         long blocks = 0;
         Optional<SimOptions> simulate = settings.simulation();
         // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
@@ -125,14 +128,20 @@ public final class Compiler {
             } else {
                 flush(lines, out);
             }
+            gcnc.plan.Planner planner = planner(settings);
+            java.util.function.Consumer<gcnc.plan.Step> lower = step -> dialect.lower(step, collect);
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                translate(checker.check(raw), dialect, diags, collect, lines, sim, out);
+                translate(checker.check(raw), planner, lower, diags, lines, sim, out);
             }
             checker.finish(reader.lines());
             boolean translated = !diags.hasErrors();
             if (translated) {
+                planner.finish(lower); // the motions it still holds
                 dialect.end(collect);
+                if (limits != null) {
+                    limits.finish(); // the whole program against the controller's memory
+                }
                 if (sim != null) {
                     sim.end(List.copyOf(lines));
                     lines.clear();
@@ -161,19 +170,20 @@ public final class Compiler {
      * after an error. (A method of its own, so that the JIT compiles it once rather than within a
      * large on-stack replacement of the loop in {@link #compile}.)
      */
-    private static void translate(List<CheckedBlock> checkedBlocks, Dialect dialect, Diagnostics diags,
-                                  java.util.function.Consumer<Instruction> collect, List<Instruction> lines, SimulatorThread sim, java.util.function.Consumer<Instruction> out)
+    private static void translate(List<CheckedBlock> checkedBlocks, gcnc.plan.Planner planner,
+                                  java.util.function.Consumer<gcnc.plan.Step> lower, Diagnostics diags,
+                                  List<Instruction> lines, SimulatorThread sim, java.util.function.Consumer<Instruction> out)
             throws IOException {
         for (CheckedBlock checked : checkedBlocks) {
             if (diags.hasErrors()) {
                 return;
             }
-            dialect.block(checked, collect); // into lines
+            planner.accept(checked, lower); // into lines: this block's, or a sequence of the blocks before it
             if (sim != null) {
                 if (diags.hasErrors()) {
                     sim.outputOnly(List.copyOf(lines));
                 } else {
-                    sim.block(checked, List.copyOf(lines));
+                    sim.block(checked, List.copyOf(lines), !planner.holding());
                 }
                 lines.clear();
             } else {
@@ -198,6 +208,15 @@ public final class Compiler {
         }
         return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), control, diags,
                 settings.programs());
+    }
+
+    /**
+     * The planner between the checker and the emitter (docs/galil.md): the thesis's format stops at
+     * every motion; the galil dialect blends as the profile says ({@code plan.blend}).
+     */
+    private static gcnc.plan.Planner planner(Settings settings) {
+        return "thesis".equals(settings.dialect()) ? new gcnc.plan.ExactStop()
+                : gcnc.plan.Planner.forProfile(settings.profile());
     }
 
     /** The longest first line read for a stock header; the program is read once, from the start. */

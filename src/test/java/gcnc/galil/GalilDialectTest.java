@@ -38,14 +38,15 @@ class GalilDialectTest {
         Diagnostics d = new Diagnostics();
         List<String> out = Fixtures.run("galil", AT_ORIGIN, d, motions(3, a, rapid(Point.ORIGIN, a)),
                 motions(4, b, new Motion.Linear(false, a, b, new Feed(0.1, 1666.7))));
-        // Generic: Galil X = lathe Z, Y = lathe X; VP is relative to where each sequence starts.
+        // Generic: Galil X = lathe Z, Y = lathe X; VP is relative to where each sequence starts; the
+        // feed of 1666.7 counts/s is written at VS's resolution, even and not faster: 1666.
         // The spindle's channel C is an open-loop output (zero gains, no error limit), zeroed; the
         // soft limits are the travel in counts; the program refuses to start away from home.
-        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 1000000", "VD 1000000",
+        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 999424", "VD 999424",
                 "gline=0", "KP ,,0", "KI ,,0", "KD ,,0", "ER ,,-1", "SH C", "OF ,,0.0000",
                 "BL 0,-2000", "FL 350000,110000", "JP #NOHOME,@ABS[_TPX-0]>10", "JP #NOHOME,@ABS[_TPY-0]>10",
                 "gline=3", "VS 100000", "VP 2000,1000", "VE", "BGS", "AMS",
-                "gline=4", "VS 1667", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out.subList(0, out.indexOf("EN") + 1));
+                "gline=4", "VS 1666", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out.subList(0, out.indexOf("EN") + 1));
         assertEquals(HEADER, out.indexOf("gline=3"));
         assertEquals(0, d.size());
     }

@@ -286,9 +286,9 @@ class ProfileLoaderTest {
         assertFault(GOOD.replace("rapid.speed = 100000", "rapid.speed = 0"), "rapid.speed", "must be greater than 0");
         assertFault(GOOD.replace("rapid.speed = 100000", "rapid.speed = 3000000000"), "rapid.speed",
                 "'rapid.speed' is a vector speed (VS) in counts/s: 1 to 2147483647 (not 3000000000)");
-        assertFault(GOOD.replace("vector.acceleration = 1000000", "vector.acceleration = 0.4"), "vector.acceleration",
+        assertFault(GOOD.replace("vector.acceleration = 999424", "vector.acceleration = 0.4"), "vector.acceleration",
                 "1 to 2147483647 (not 0.4)");
-        assertFault(GOOD.replace("vector.deceleration = 1000000", "vector.deceleration = -5"), "vector.deceleration",
+        assertFault(GOOD.replace("vector.deceleration = 999424", "vector.deceleration = -5"), "vector.deceleration",
                 "must be greater than 0");
         assertFault(GOOD.replace("spindle.max_rpm = 4000", "spindle.max_rpm = 0"), "spindle.max_rpm", "greater than 0");
         assertFault(GOOD.replace("spindle.rpm_per_volt = 410", "spindle.rpm_per_volt = -400"), "spindle.rpm_per_volt",

@@ -86,6 +86,7 @@ class SimulatorThreadTest {
         Simulator sim = new Simulator(profile, Compiler.withStockHeader(program.lines().findFirst().orElse(""), profile,
                 SimOptions.defaults()), d);
         Dialect out = Dialect.create("galil", profile, d);
+        gcnc.plan.Planner planner = gcnc.plan.Planner.forProfile(profile);
         Checker checker = new Checker(tables, profile, d);
         List<Instruction> buf = new ArrayList<>();
         out.begin(buf::add);
@@ -97,14 +98,15 @@ class SimulatorThreadTest {
                     break; // as the compiler does: after a checker error, check only
                 }
                 buf.clear();
-                out.block(cb, buf::add);
-                sim.block(cb, buf);
+                planner.accept(cb, step -> out.lower(step, buf::add));
+                sim.block(cb, buf, !planner.holding());
             }
         }
         checker.finish(reader.lines());
         boolean translated = d.errorCount() == sim.report().findings();
         if (translated) {
             buf.clear();
+            planner.finish(step -> out.lower(step, buf::add));
             out.end(buf::add);
             sim.end(buf);
         }

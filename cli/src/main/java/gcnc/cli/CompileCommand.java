@@ -67,7 +67,7 @@ final class CompileCommand extends RunCommand {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         }
         try (outputs) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry).withStops(outputs::mapStop);
             outputs.mapSource(SourceFiles.isStdin(file) ? name : file.getFileName().toString(), SourceFiles.fileOf(file));
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {

@@ -300,6 +300,16 @@ final class DmcCommands implements Command.Visitor<Void> {
         return null;
     }
 
+    /** {@code AV n}: the program thread waits until the sequence has run n counts along its path (or stopped). */
+    @Override
+    public Void afterVector(Command.AfterVector x) {
+        onlyInProgram();
+        VectorMotion mo = c.motion;
+        long n = x.counts();
+        th.waitingFor = () -> !mo.running() || mo.travelled() >= n;
+        return null;
+    }
+
     @Override
     public Void offset(Command.Offset x) {
         if (x.channel() >= c.model.axes) {

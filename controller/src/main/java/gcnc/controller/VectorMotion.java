@@ -234,7 +234,16 @@ final class VectorMotion {
         css = 0;
         v = 0;
         current = null;
+        doneLength = 0;
     }
+
+    /** The path run so far in the sequence, counts: for {@code AV} (after vector distance). */
+    double travelled() {
+        return doneLength + (current == null ? 0 : s);
+    }
+
+    /** The length of the segments of the running sequence already finished. */
+    private double doneLength;
 
     /** {@code CS S}: clears the buffer of a sequence that is not running. */
     void clear() throws GalilException {
@@ -344,6 +353,7 @@ final class VectorMotion {
 
     private void finishSegment(double time) {
         VectorSegment done = current;
+        doneLength += done.length();
         position[axis1] = done.end1();
         position[axis2] = done.end2();
         corner1 = Math.rint(done.end1());

@@ -370,6 +370,11 @@ public enum Code {
     E236_SPEED_ROUNDED(236),
     /** Warning: a dwell of an odd number of milliseconds; written as the even one above it (WT's resolution is 2). */
     E237_DWELL_ROUNDED(237),
+    /**
+     * The compiled program has more lines (or labels) than the model's program memory: written, but
+     * it cannot be downloaded whole (E228/E229 when the program form is required).
+     */
+    E238_PROGRAM_DOES_NOT_FIT(238),
 
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
@@ -448,6 +453,10 @@ public enum Code {
     E330_CYCLE_MANY_PECKS(330),
     /** Replay warning: the source map beside a DMC records another DMC (its hash differs): its lines are not used. */
     E331_MAP_NOT_THIS_DMC(331),
+    /** A blended sequence takes a corner faster than the machine's acceleration and corner deviation allow. */
+    E332_SIM_CORNER_TOO_FAST(332),
+    /** A blended segment is too short for the machine to change from its entry speed to its exit speed. */
+    E333_SIM_SPEED_CHANGE_TOO_SHORT(333),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -94,15 +94,30 @@ public sealed interface Command {
         }
     }
 
-    /** {@code VP a,b}: a straight segment to this point, counts, measured from the sequence's start. */
-    record VectorPosition(long first, long second) implements Command {
+    /**
+     * {@code VP a,b <o >p}: a straight segment to this point, counts, measured from the sequence's
+     * start; at speed o and ending at speed p (counts/s, {@link Speeds#NONE}: the sequence's VS
+     * and no slowing at its end).
+     */
+    record VectorPosition(long first, long second, Speeds speeds) implements Command {
+        public VectorPosition(long first, long second) {
+            this(first, second, Speeds.NONE);
+        }
+
         public <R> R accept(Visitor<R> v) {
             return v.vectorPosition(this);
         }
     }
 
-    /** {@code CR r,θ,Δθ}: an arc segment of radius r counts from start angle θ through a signed sweep, degrees. */
-    record CircularArc(Fixed radius, Fixed start, Fixed sweep) implements Command {
+    /**
+     * {@code CR r,θ,Δθ <o >p}: an arc segment of radius r counts from start angle θ through a signed
+     * sweep, degrees, with its speeds as {@link VectorPosition}'s.
+     */
+    record CircularArc(Fixed radius, Fixed start, Fixed sweep, Speeds speeds) implements Command {
+        public CircularArc(Fixed radius, Fixed start, Fixed sweep) {
+            this(radius, start, sweep, Speeds.NONE);
+        }
+
         public <R> R accept(Visitor<R> v) {
             return v.circularArc(this);
         }
@@ -123,6 +138,19 @@ public sealed interface Command {
         }
     }
 
+    /**
+     * A segment's own speeds ({@code <o >p}, Galil's per-segment vector speeds, counts/s at the
+     * default sample time): {@code speed} commanded from the segment's start, {@code end} reached at
+     * its end; 0 where the command gives none.
+     */
+    record Speeds(long speed, long end) {
+        public static final Speeds NONE = new Speeds(0, 0);
+
+        public boolean any() {
+            return speed != 0 || end != 0;
+        }
+    }
+
     /** {@code VE}: the sequence has no more segments. */
     record VectorEnd() implements Command {
         public <R> R accept(Visitor<R> v) {
@@ -137,10 +165,28 @@ public sealed interface Command {
         }
     }
 
-    /** {@code AMS}: wait until the sequence's motion is complete. */
-    record AwaitSequence() implements Command {
+    /**
+     * {@code AMS}: wait until the sequence's motion is complete. {@code why} is why the machine
+     * stops there, as the planner decided (null when not known: a file read back); it is not printed,
+     * the source map records it.
+     */
+    record AwaitSequence(gcnc.plan.Stop why) implements Command {
+        public AwaitSequence() {
+            this(null);
+        }
+
         public <R> R accept(Visitor<R> v) {
             return v.awaitSequence(this);
+        }
+    }
+
+    /**
+     * {@code AV n}: wait until the sequence has run n counts along its path (from its start; a
+     * trippoint of a program thread, the motion goes on): what follows happens there.
+     */
+    record AfterVector(long counts) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.afterVector(this);
         }
     }
 
@@ -390,6 +436,8 @@ public sealed interface Command {
         R beginSequence(BeginSequence c);
 
         R awaitSequence(AwaitSequence c);
+
+        R afterVector(AfterVector c);
 
         R offset(Offset c);
 

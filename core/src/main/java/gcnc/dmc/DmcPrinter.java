@@ -65,7 +65,7 @@ public final class DmcPrinter {
         }
 
         public String vectorPosition(VectorPosition c) {
-            return new StringBuilder(24).append("VP ").append(c.first()).append(',').append(c.second()).toString();
+            return speeds(new StringBuilder(40).append("VP ").append(c.first()).append(',').append(c.second()), c.speeds());
         }
 
         public String circularArc(CircularArc c) {
@@ -73,7 +73,7 @@ public final class DmcPrinter {
             c.radius().appendTo(sb);
             c.start().appendTo(sb.append(','));
             c.sweep().appendTo(sb.append(','));
-            return sb.toString();
+            return speeds(sb, c.speeds());
         }
 
         public String vectorEnd(VectorEnd c) {
@@ -86,6 +86,10 @@ public final class DmcPrinter {
 
         public String awaitSequence(AwaitSequence c) {
             return "AMS";
+        }
+
+        public String afterVector(AfterVector c) {
+            return "AV " + c.counts();
         }
 
         public String offset(Offset c) {
@@ -225,6 +229,17 @@ public final class DmcPrinter {
         Condition.PositionOff p = (Condition.PositionOff) w;
         String at = p.counts() < 0 ? "+" + (-p.counts()) : "-" + p.counts();
         return "@ABS[_TP" + p.axis() + at + "]>" + p.tolerance();
+    }
+
+    /** {@code <o >p} after a segment's arguments, each only when given. */
+    private static String speeds(StringBuilder sb, Speeds s) {
+        if (s.speed() != 0) {
+            sb.append(" <").append(s.speed());
+        }
+        if (s.end() != 0) {
+            sb.append(" >").append(s.end());
+        }
+        return sb.toString();
     }
 
     /** Values at their axes' channel places, the places before the last one empty where no value goes. */

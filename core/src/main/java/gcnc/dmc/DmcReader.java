@@ -94,9 +94,27 @@ public final class DmcReader {
         String args = t.substring(2).strip();
         switch (cmd) {
             case "VP":
-                return vectorPosition(args, t, faults);
-            case "CR":
-                return arc(args, t, faults);
+            case "CR": {
+                // the segment's own speeds follow its arguments: VP a,b <o >p
+                int lt = args.indexOf('<');
+                int gt = args.indexOf('>');
+                int cut = lt < 0 ? gt : gt < 0 ? lt : Math.min(lt, gt);
+                Command.Speeds speeds = Command.Speeds.NONE;
+                if (cut >= 0) {
+                    speeds = speeds(args.substring(cut));
+                    if (speeds == null) {
+                        return bad(faults, cmd, t);
+                    }
+                    args = args.substring(0, cut).strip();
+                }
+                Command c = cmd.equals("VP") ? vectorPosition(args, t, faults) : arc(args, t, faults);
+                if (c == null || !speeds.any()) {
+                    return c;
+                }
+                return c instanceof VectorPosition v ? new VectorPosition(v.first(), v.second(), speeds)
+                        : new CircularArc(((CircularArc) c).radius(), ((CircularArc) c).start(),
+                                ((CircularArc) c).sweep(), speeds);
+            }
             case "VS":
                 return positive(args, cmd, t, faults, VectorSpeed::new);
             case "VA":
@@ -126,6 +144,10 @@ public final class DmcReader {
             }
             case "OF":
                 return offset(args, t, faults);
+            case "AV": {
+                Fixed n = Fixed.parse(args, 0, args.length(), true);
+                return n == null || n.unscaled() < 0 ? bad(faults, cmd, t) : new AfterVector(n.unscaled());
+            }
             case "GA":
                 return gearMaster(args, t, faults);
             case "MF":
@@ -214,6 +236,27 @@ public final class DmcReader {
             }
         }
         return true;
+    }
+
+    /** {@code <o >p}, {@code <o} or {@code >p}: whole numbers of 2 to 15,000,000; null when not of that form. */
+    private static Command.Speeds speeds(String s) {
+        long o = 0;
+        long p = 0;
+        for (String part : s.strip().split("\\s+")) {
+            if (part.length() < 2 || part.charAt(0) != '<' && part.charAt(0) != '>') {
+                return null;
+            }
+            Fixed v = Fixed.parse(part, 1, part.length(), true);
+            if (v == null || v.unscaled() < 1 || (part.charAt(0) == '<' ? o : p) != 0) {
+                return null;
+            }
+            if (part.charAt(0) == '<') {
+                o = v.unscaled();
+            } else {
+                p = v.unscaled();
+            }
+        }
+        return new Command.Speeds(o, p);
     }
 
     private static Command vectorPosition(String args, String text, Faults faults) {

@@ -18,6 +18,26 @@ public final class SourceMap {
     }
 
     private final Entries entries;
+    private Stops stops = (line, why) -> { };
+
+    /** Where the map's stop lines go: the DMC line where the machine stops, and why. */
+    public interface Stops {
+        void stop(int dmcLine, gcnc.plan.Stop why);
+    }
+
+    /** The same map, handing each stop to {@code stops} ({@code # stop <dmc line> <reason>} lines). */
+    public SourceMap withStops(Stops stops) {
+        this.stops = stops;
+        return this;
+    }
+
+    /** How a stop is written in the map file. */
+    public static String stopLine(int dmcLine, gcnc.plan.Stop why) {
+        return STOP + dmcLine + " " + why.key();
+    }
+
+    /** What a map's stop line starts with: {@code # stop <dmc line> <reason>} (readers skip it as a comment). */
+    public static final String STOP = "# stop ";
     private int dmcLines;
     private int lastSource = -1;
     private String lastFile;
@@ -25,6 +45,7 @@ public final class SourceMap {
     /** @param mapLines receives each line of the map file ("{@code <dmc line> <source line>}"), in output order */
     public SourceMap(Consumer<String> mapLines) {
         this((Entries) (dmc, source, file) -> mapLines.accept(dmc + " " + source + (file == null ? "" : " " + file)));
+        this.stops = (line, why) -> mapLines.accept(stopLine(line, why));
     }
 
     private SourceMap(Entries entries) {
@@ -47,6 +68,9 @@ public final class SourceMap {
                 entries.entry(dmcLines, lastSource, lastFile);
             }
             out.accept(i);
+            if (i.command() instanceof Command.AwaitSequence a && a.why() != null) {
+                stops.stop(dmcLines, a.why());
+            }
         };
     }
 

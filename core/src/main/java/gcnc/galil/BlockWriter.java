@@ -21,17 +21,25 @@ final class BlockWriter {
     private boolean commented;
     private Source source;
 
-    BlockWriter(Consumer<Instruction> sink, CheckedBlock block, boolean inlineSourceMap) {
+    private final long ordinal;
+
+    /** @param ordinal which block of the run this is (Source#block) */
+    BlockWriter(Consumer<Instruction> sink, CheckedBlock block, boolean inlineSourceMap, long ordinal) {
         this.sink = sink;
         this.block = block;
         this.commented = !inlineSourceMap;
-        this.source = new Source(block.origin(), block.line(), -1);
+        this.ordinal = ordinal;
+        this.source = new Source(block.origin(), block.line(), -1, ordinal);
+    }
+
+    CheckedBlock block() {
+        return block;
     }
 
     /** The instructions after this carry out the block's motion {@code index} (-1: none). */
     void motion(int index) {
         if (index != source.motion()) {
-            source = new Source(block.origin(), block.line(), index);
+            source = new Source(block.origin(), block.line(), index, ordinal);
         }
     }
 

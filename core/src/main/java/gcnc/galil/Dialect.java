@@ -22,8 +22,13 @@ public interface Dialect {
      */
     void blank(java.util.Optional<gcnc.machine.MachineModel.Blank> blank, java.util.function.Consumer<gcnc.dmc.Instruction> out);
 
-    /** Writes one block's directives, in the order of decision D2. */
-    void block(CheckedBlock block, java.util.function.Consumer<gcnc.dmc.Instruction> out);
+    /** Writes one planned step (docs/galil.md): a block's setup, its motions alone or joined, its end. */
+    void lower(gcnc.plan.Step step, java.util.function.Consumer<gcnc.dmc.Instruction> out);
+
+    /** Writes one block's directives, in the order of decision D2, each motion stopped at its end. */
+    default void block(CheckedBlock block, java.util.function.Consumer<gcnc.dmc.Instruction> out) {
+        new gcnc.plan.ExactStop().accept(block, step -> lower(step, out));
+    }
 
     /** Writes what comes after the last block. */
     void end(java.util.function.Consumer<gcnc.dmc.Instruction> out);

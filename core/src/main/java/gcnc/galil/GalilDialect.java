@@ -14,6 +14,7 @@ import gcnc.ir.MCall;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
+import gcnc.plan.Step;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
@@ -31,8 +32,9 @@ final class GalilDialect implements Dialect {
     private final Diagnostics diagnostics;
     private final boolean inlineSourceMap;
     private final GalilFrame frame;
-    private long posU;
-    private long posV;
+    private final gcnc.machine.ControllerLimits limits;
+    long posU;
+    long posV;
     /** The profile's output directives of each M code, read once. */
     private final Map<Integer, List<Command>> outputs = new java.util.HashMap<>();
     /** The spindle, the turret, the dwell, the soft limits, the homing check and the handlers. */
@@ -43,6 +45,7 @@ final class GalilDialect implements Dialect {
         this.diagnostics = diagnostics;
         this.inlineSourceMap = inlineSourceMap;
         this.frame = new GalilFrame(profile);
+        this.limits = profile.controllerLimits();
         this.machine = new MachineCode(profile, frame, diagnostics);
         this.posU = GalilNumbers.round(frame.u(profile.home()));
         this.posV = GalilNumbers.round(frame.v(profile.home()));
@@ -54,11 +57,18 @@ final class GalilDialect implements Dialect {
         out.accept(new Instruction(new Command.Label("GCNC"), Source.NONE));
         out.accept(new Instruction(new Command.ServoHere(plane), Source.NONE));
         out.accept(new Instruction(new Command.VectorMode(plane), Source.NONE));
-        out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(GalilNumbers.round(profile.acceleration()))),
+        out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(acceleration(profile.acceleration()))),
                 Source.NONE));
-        out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(GalilNumbers.round(profile.deceleration()))),
+        out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(acceleration(profile.deceleration()))),
                 Source.NONE));
         machine.setup(out);
+    }
+
+    /** VA or VD as the controller takes it (a multiple of 1,024, rounded down), warned of at line 1 when that changes it. */
+    private long acceleration(double countsPerSecond2) {
+        gcnc.machine.ControllerLimits.Rounded r = limits.roundAcceleration(GalilNumbers.round(countsPerSecond2));
+        gcnc.machine.ControllerLimits.report(r, Span.of(1, 1), diagnostics);
+        return r.taken();
     }
 
     /** {@code NO STOCK D<diameter> L<length> S<stickout>}, mm, or {@code NO STOCK NONE} (docs/dmc-format.md). */
@@ -73,47 +83,94 @@ final class GalilDialect implements Dialect {
     }
 
     @Override
-    public void block(CheckedBlock b, Consumer<Instruction> sink) {
-        BlockWriter out = new BlockWriter(machine.marking(b, sink), b, inlineSourceMap);
-        if (b.spindleRpm().isPresent()) {
-            machine.spindleSpeed(b, b.spindleRpm().getAsDouble(), out);
+    public void lower(Step step, Consumer<Instruction> sink) {
+        if (step instanceof Step.Before s) {
+            CheckedBlock b = s.block();
+            BlockWriter out = writer(b, sink);
+            if (b.spindleRpm().isPresent()) {
+                spindle(b, b.spindleRpm().getAsDouble(), out);
+            }
+            if (b.tool().isPresent()) {
+                machine.toolChange(b, b.tool().getAsInt(), out);
+            }
+            outputs(b, b.before(), out);
+        } else if (step instanceof Step.Alone s) {
+            BlockWriter out = writer(s.block(), sink);
+            out.motion(s.motion());
+            machine.beforeMotion(s.block().motions().get(s.motion()), out); // the wait for spindle speed
+            motion(s.block(), s.block().motions().get(s.motion()), out);
+            out.motion(-1);
+        } else if (step instanceof Step.Group g) {
+            if (g.pieces().size() == 1) {
+                // one motion: what the exact-stop planner writes, no segment speeds
+                gcnc.plan.Piece p = g.pieces().get(0);
+                stop = g.stop();
+                lower(new Step.Alone(p.block(), p.motion()), sink);
+                stop = null;
+            } else {
+                gcnc.plan.Piece first = g.pieces().get(0);
+                machine.beforeMotion(first.block().motions().get(first.motion()), writer(first.block(), sink));
+                // gline=<line> where the group starts only: an assignment between buffered segments
+                // runs when it is read, not when the path gets there (docs/galil.md)
+                grouping = true;
+                try {
+                    new GroupWriter(this, sink).write(g);
+                } finally {
+                    grouping = false;
+                }
+            }
+        } else if (step instanceof Step.After s) {
+            BlockWriter out = writer(s.block(), sink);
+            out.motion(-1);
+            outputs(s.block(), s.block().after(), out);
         }
-        if (b.tool().isPresent()) {
-            machine.toolChange(b, b.tool().getAsInt(), out);
+    }
+
+    /** The writer of block {@code b}'s instructions: one per block, so that its inline map comment comes once. */
+    BlockWriter writer(CheckedBlock b, Consumer<Instruction> sink) {
+        if (writer == null || writer.block() != b) {
+            writer = new BlockWriter(grouping ? sink : machine.marking(b, sink), b, inlineSourceMap, blocks++);
         }
-        outputs(b, b.before(), out);
-        machine.beforeMotions(b, out);
-        List<Motion> motions = b.motions();
-        for (int i = 0; i < motions.size(); i++) {
-            out.motion(i);
-            motions.get(i).accept(new Motion.Visitor<Void>() {
-                @Override
-                public Void linear(Motion.Linear l) {
-                    GalilDialect.this.linear(b, l, out);
-                    return null;
-                }
+        return writer;
+    }
 
-                @Override
-                public Void arc(Motion.Arc a) {
-                    GalilDialect.this.arc(b, a, out);
-                    return null;
-                }
+    private BlockWriter writer;
+    /** A multi-motion group is being written: its blocks after the first get no gline=<line> (MachineCode). */
+    private boolean grouping;
+    /** The blocks written so far: each new one's number in the run (Source#block). */
+    private long blocks;
 
-                @Override
-                public Void dwell(Motion.Dwell d) {
-                    GalilDialect.this.dwell(b, d, out);
-                    return null;
-                }
+    private void motion(CheckedBlock b, Motion m, BlockWriter out) {
+        m.accept(new Motion.Visitor<Void>() {
+            @Override
+            public Void linear(Motion.Linear l) {
+                GalilDialect.this.linear(b, l, out);
+                return null;
+            }
 
-                @Override
-                public Void thread(Motion.Thread t) {
-                    GalilDialect.this.thread(b, t, out);
-                    return null;
-                }
-            });
-        }
-        out.motion(-1);
-        outputs(b, b.after(), out);
+            @Override
+            public Void arc(Motion.Arc a) {
+                GalilDialect.this.arc(b, a, out);
+                return null;
+            }
+
+            @Override
+            public Void dwell(Motion.Dwell d) {
+                GalilDialect.this.dwell(b, d, out);
+                return null;
+            }
+
+            @Override
+            public Void thread(Motion.Thread t) {
+                GalilDialect.this.thread(b, t, out);
+                return null;
+            }
+        });
+    }
+
+    /** The spindle's speed reference (also for G96 inside a group, GroupWriter): MachineCode's. */
+    void spindle(CheckedBlock b, double rpm, BlockWriter out) {
+        machine.spindleSpeed(b, rpm, out);
     }
 
     private void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
@@ -295,28 +352,36 @@ final class GalilDialect implements Dialect {
         machine.dwell(b, m.seconds(), out);
     }
 
-    private static void finishSequence(BlockWriter out) {
+    private void finishSequence(BlockWriter out) {
         out.emit(new Command.VectorEnd());
         out.emit(new Command.BeginSequence());
-        out.emit(new Command.AwaitSequence());
+        out.emit(new Command.AwaitSequence(stop));
     }
+
+    /** Why the machine stops after the motion being written alone, when the planner said (a group of one). */
+    private gcnc.plan.Stop stop;
 
     /**
      * The sequence's VS; a feed as fast as a rapid is marked with a {@code NO G01} comment first, so
      * that a replay of the DMC by itself knows it for a feed (docs/dmc-format.md).
      */
-    private void speedLine(long speed, boolean feed, BlockWriter out) {
+    void speedLine(long speed, boolean feed, BlockWriter out) {
         if (feed && speed == GalilNumbers.round(profile.rapidSpeed())) {
             out.emit(new Command.FeedMark());
         }
         out.emit(new Command.VectorSpeed(Fixed.of(speed)));
     }
 
-    /** The vector speed in counts/s, or -1 (reported) when the controller cannot take it. */
-    private long speed(CheckedBlock b, gcnc.ir.Feed feed) {
+    /**
+     * The vector speed in counts/s at the controller's resolution (even: VS and the segment speeds
+     * take multiples of 2, and gcnc rounds down so that no feed runs faster than programmed), or -1
+     * (reported) when the controller cannot take it. The rounding is the controller's resolution, as
+     * millimetres to counts is the encoder's: not warned of.
+     */
+    long speed(CheckedBlock b, gcnc.ir.Feed feed) {
         double cps = feed == null ? profile.rapidSpeed() : feed.countsPerSecond();
         long s = GalilNumbers.round(cps);
-        if (s < 1) {
+        if (s < 2) { // VS 2 is the slowest the controller takes
             diagnostics.error(Code.E207_FEED_TOO_SLOW, at(b), GalilNumbers.angle(cps));
             return -1;
         }
@@ -324,15 +389,24 @@ final class GalilDialect implements Dialect {
             diagnostics.error(Code.E201_GALIL_RANGE, at(b), "VS", s);
             return -1;
         }
-        return s;
+        gcnc.machine.ControllerLimits.Rounded even = limits.roundSpeed(s);
+        return even.taken();
     }
 
-    private boolean inRange(CheckedBlock b, String command, long counts) {
+    boolean inRange(CheckedBlock b, String command, long counts) {
         if (GalilNumbers.inRange(counts)) {
             return true;
         }
         diagnostics.error(Code.E201_GALIL_RANGE, at(b), command, counts);
         return false;
+    }
+
+    GalilFrame frame() {
+        return frame;
+    }
+
+    void error(Code code, CheckedBlock b, Object... args) {
+        diagnostics.error(code, at(b), args);
     }
 
     private static Span at(CheckedBlock b) {

@@ -214,9 +214,9 @@ final class MachineCode {
         }
     }
 
-    /** Before the block's motions: the wait for speed, when it is pending and the block feeds. */
-    void beforeMotions(CheckedBlock b, BlockWriter out) {
-        if (!waitForSpeed || !feeds(b)) {
+    /** Before a motion (an alone one, or a group's first): the wait for speed, when it is pending and the motion feeds. */
+    void beforeMotion(Motion m, BlockWriter out) {
+        if (!waitForSpeed || !feeds(m)) {
             return;
         }
         waitForSpeed = false;
@@ -228,14 +228,8 @@ final class MachineCode {
         }
     }
 
-    private static boolean feeds(CheckedBlock b) {
-        for (Motion m : b.motions()) {
-            if (m instanceof Motion.Arc || m instanceof Motion.Thread
-                    || m instanceof Motion.Linear l && !l.rapid()) {
-                return true;
-            }
-        }
-        return false;
+    private static boolean feeds(Motion m) {
+        return m instanceof Motion.Arc || m instanceof Motion.Thread || m instanceof Motion.Linear l && !l.rapid();
     }
 
     /**

@@ -44,22 +44,50 @@ final class ThesisDialect implements Dialect {
     public void end(java.util.function.Consumer<gcnc.dmc.Instruction> out) {
     }
 
+    /** The thesis's format stops at every motion: a group is written motion by motion. */
     @Override
-    public void block(CheckedBlock b, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
-        BlockWriter out = new BlockWriter(sink, b, inlineSourceMap);
-        if (b.spindleRpm().isPresent()) {
-            // The thesis divides the integer S by 300 as integers (L4236).
-            long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
-            out.emit(new Command.Offset(frame.spindleIndex(), Fixed.of(volts)));
+    public void lower(gcnc.plan.Step step, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
+        if (step instanceof gcnc.plan.Step.Before s) {
+            CheckedBlock b = s.block();
+            BlockWriter out = writer(b, sink);
+            if (b.spindleRpm().isPresent()) {
+                // The thesis divides the integer S by 300 as integers (L4236).
+                long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
+                out.emit(new Command.Offset(frame.spindleIndex(), Fixed.of(volts)));
+            }
+            if (b.tool().isPresent()) {
+                out.emit(new Command.Revolver(b.tool().getAsInt()));
+            }
+            outputs(b.before(), out);
+        } else if (step instanceof gcnc.plan.Step.Alone s) {
+            BlockWriter out = writer(s.block(), sink);
+            out.motion(s.motion());
+            motion(s.block(), s.block().motions().get(s.motion()), out);
+            out.motion(-1);
+        } else if (step instanceof gcnc.plan.Step.Group g) {
+            for (gcnc.plan.Piece p : g.pieces()) {
+                lower(new gcnc.plan.Step.Alone(p.block(), p.motion()), sink);
+            }
+        } else if (step instanceof gcnc.plan.Step.After s) {
+            BlockWriter out = writer(s.block(), sink);
+            out.motion(-1);
+            outputs(s.block().after(), out);
         }
-        if (b.tool().isPresent()) {
-            out.emit(new Command.Revolver(b.tool().getAsInt()));
+    }
+
+    private BlockWriter writer;
+    /** The blocks written so far: each new one's number in the run (Source#block). */
+    private long blocks;
+
+    private BlockWriter writer(CheckedBlock b, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
+        if (writer == null || writer.block() != b) {
+            writer = new BlockWriter(sink, b, inlineSourceMap, blocks++);
         }
-        outputs(b.before(), out);
-        List<Motion> motions = b.motions();
-        for (int i = 0; i < motions.size(); i++) {
-            out.motion(i);
-            motions.get(i).accept(new Motion.Visitor<Void>() {
+        return writer;
+    }
+
+    private void motion(CheckedBlock b, Motion m, BlockWriter out) {
+            m.accept(new Motion.Visitor<Void>() {
                 @Override
                 public Void linear(Motion.Linear l) {
                     double dx = l.to().x() - l.from().x();
@@ -91,9 +119,6 @@ final class ThesisDialect implements Dialect {
                     return null;
                 }
             });
-        }
-        out.motion(-1);
-        outputs(b.after(), out);
     }
 
     private void outputs(List<MCall> calls, BlockWriter out) {

@@ -161,6 +161,13 @@ public final class DmcOutputs implements AutoCloseable {
         }
     }
 
+    /** Adds a stop line ({@code # stop <dmc line> <reason>}); nothing when there is no map. */
+    public void mapStop(int dmcLine, gcnc.plan.Stop why) {
+        if (map != null) {
+            map.line(gcnc.dmc.SourceMap.stopLine(dmcLine, why));
+        }
+    }
+
     /**
      * Puts both in place, or neither: a failure of the second undoes the first. The map ends with
      * the DMC's SHA-256; without a map, a stale one beside the DMC is removed with the commit.

@@ -44,7 +44,10 @@ public final class ArcVerdict {
     private final java.util.Set<Shape> clean = new java.util.HashSet<>();
     private static final int REMEMBERED = 4096;
 
+    private final gcnc.machine.ControllerLimits limits;
+
     public ArcVerdict(MachineProfile profile, Diagnostics out) {
+        this.limits = profile.controllerLimits();
         this.frame = new GalilFrame(profile);
         this.plane = new Plane(profile);
         this.out = out;
@@ -89,13 +92,23 @@ public final class ArcVerdict {
             out.error(Code.E202_ARC_NOT_REPRESENTABLE, Span.of(line, 1), GalilNumbers.round(a.radius()));
             return false;
         }
+        // the controller's CR range (E224, E225): compile's limit check on the same CR, one verdict
+        java.util.Optional<gcnc.machine.ControllerLimits.Violation> v = limits.arcRadius(w.cr().radius());
+        if (v.isEmpty()) {
+            v = limits.arc(w.cr().radius(), GalilNumbers.printedAngle(w.cr().sweep()));
+        }
+        if (v.isPresent()) {
+            out.report(v.get().diagnostic(Span.of(line, 1)));
+            return false;
+        }
         // the CR as the controller runs it: its printed angles, about the centre they imply
         double start = GalilNumbers.printedAngle(w.cr().start()); // the value the printed angle stands for,
         double sweep = GalilNumbers.printedAngle(w.cr().sweep()); // without printing it and reading it back
         List<Segment> segs = new ArrayList<>(2);
-        segs.add(plane.cr(su, sv, w.cr().radius(), start, sweep, new gcnc.dmc.Command.CircularArc(
-                gcnc.dmc.Fixed.of(w.cr().radius()), gcnc.dmc.Fixed.fourDecimals(w.cr().start()),
-                gcnc.dmc.Fixed.fourDecimals(w.cr().sweep())), new double[2]));
+        segs.add(plane.cr(su, sv, w.cr().radius(), start, sweep, new gcnc.dmc.Instruction(
+                new gcnc.dmc.Command.CircularArc(gcnc.dmc.Fixed.of(w.cr().radius()),
+                        gcnc.dmc.Fixed.fourDecimals(w.cr().start()), gcnc.dmc.Fixed.fourDecimals(w.cr().sweep())),
+                gcnc.dmc.Source.line(line)), new double[2]));
         if (w.cr().closing()) {
             Segment s = segs.get(0);
             segs.add(new Segment(s.toX(), s.toZ(), plane.machineX(w.tu(), w.tv()), plane.machineZ(w.tu(), w.tv()),

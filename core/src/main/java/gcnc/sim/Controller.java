@@ -2,7 +2,7 @@ package gcnc.sim;
 
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
-import gcnc.dmc.DmcPrinter;
+import gcnc.dmc.Instruction;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -78,7 +78,7 @@ final class Controller {
     private double geared2 = Double.NaN;
     private double target1 = Double.NaN;
     private double target2 = Double.NaN;
-    private Command gearLine;
+    private Instruction gearLine;
     /**
      * The geared segments of the pass before the current ratios: one per change of the ratios
      * while geared (a chamfered pull-out's corner, docs/threading.md); empty for a straight pass.
@@ -131,21 +131,21 @@ final class Controller {
     }
 
     /**
-     * Runs one command of the G-code {@code line}. Comments, labels and the marks gcnc writes are
+     * Runs one instruction. Comments, labels and the marks gcnc writes are
      * taken anywhere; any other command after {@code EN} is E312.
      */
-    void run(Command c, int line) {
-        this.command = c;
-        this.line = line;
-        c.accept(step);
+    void run(Instruction i) {
+        this.instruction = i;
+        this.line = i.source().line();
+        i.command().accept(step);
     }
 
-    /** The command being run and its G-code line, for the findings about it. */
-    private Command command;
+    /** The instruction being run and its G-code line, for the findings about it. */
+    private Instruction instruction;
     private int line;
 
     private String text() {
-        return DmcPrinter.print(command);
+        return instruction.text();
     }
 
     /**
@@ -230,14 +230,14 @@ final class Controller {
 
         public Void vectorPosition(Command.VectorPosition c) {
             if (!afterEnd()) {
-                Controller.this.vp(c.first(), c.second());
+                Controller.this.vp(c.first(), c.second(), c.speeds());
             }
             return null;
         }
 
         public Void circularArc(Command.CircularArc c) {
             if (!afterEnd()) {
-                Controller.this.cr(c.radius().value(), c.start().value(), c.sweep().value());
+                Controller.this.cr(c.radius().value(), c.start().value(), c.sweep().value(), c.speeds());
             }
             return null;
         }
@@ -256,6 +256,11 @@ final class Controller {
 
         public Void awaitSequence(Command.AwaitSequence c) {
             afterEnd();
+            return null;
+        }
+
+        public Void afterVector(Command.AfterVector c) {
+            afterEnd(); // the sequence has been replayed whole at BGS: what follows acts on the state after it
             return null;
         }
 
@@ -434,23 +439,23 @@ final class Controller {
     };
 
     /** VP: a straight segment to (p, q) from the sequence's start. */
-    private void vp(long p, long q) {
+    private void vp(long p, long q, Command.Speeds speeds) {
         startIfNeeded();
         double e1 = seqStart1 + p;
         double e2 = seqStart2 + q;
         add(new Segment(plane.machineX(cursor1, cursor2), plane.machineZ(cursor1, cursor2),
-                plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, command), e1, e2);
+                plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, instruction), e1, e2, speeds);
     }
 
     /** CR: an arc of radius r from the start angle through the sweep, degrees. */
-    private void cr(double r, double startDeg, double sweepDeg) {
+    private void cr(double r, double startDeg, double sweepDeg, Command.Speeds speeds) {
         if (sweepDeg == 0 && !checkedByCaller) {
             out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, text());
         }
         startIfNeeded();
         double[] end = new double[2];
-        Segment arc = plane.cr(cursor1, cursor2, r, startDeg, sweepDeg, command, end);
-        add(arc, end[0], end[1]);
+        Segment arc = plane.cr(cursor1, cursor2, r, startDeg, sweepDeg, instruction, end);
+        add(arc, end[0], end[1], speeds);
     }
 
     private void startIfNeeded() {
@@ -462,7 +467,10 @@ final class Controller {
         }
     }
 
-    private void add(Segment s, double e1, double e2) {
+    private void add(Segment s, double e1, double e2, Command.Speeds speeds) {
+        if (speeds.any()) {
+            s = s.withSpeeds(speeds.speed() == 0 ? Double.NaN : speeds.speed(), speeds.end() == 0 ? Double.NaN : speeds.end());
+        }
         if (Math.abs(e1) > INT32 || Math.abs(e2) > INT32) {
             out.report(Code.E310_SIM_COUNT_RANGE, line, "the end point of '" + s.text() + "'");
         }
@@ -567,7 +575,7 @@ final class Controller {
         engaged1 = g1;
         engaged2 = g2;
         tripAxis = -1;
-        gearLine = command;
+        gearLine = instruction;
         geared.clear();
         masterTurned = 0;
     }
@@ -589,7 +597,7 @@ final class Controller {
         ratio1 = r1;
         ratio2 = r2;
         tripAxis = -1;
-        gearLine = command;
+        gearLine = instruction;
     }
 
     /** Where the geared axes stand when the trip axis reaches its point (the master turned the same counts for both). */

@@ -54,6 +54,8 @@ final class MotionChecks {
     private int sequences;
     private int segments;
     private double seconds;
+    /** What the cycle would take if every motion stopped at its end: what blending gains is the difference. */
+    private double exactStopSeconds;
     private double xMin = Double.POSITIVE_INFINITY;
     private double xMax = Double.NEGATIVE_INFINITY;
     private double zMin = Double.POSITIVE_INFINITY;
@@ -176,6 +178,14 @@ final class MotionChecks {
     void frame(gcnc.ir.ProgramFrame f) {
         frame = f;
         terms.frame(f);
+        frames = null;
+    }
+
+    /** The program frame of each segment of the next sequence, when it carries several blocks (null: one frame). */
+    private gcnc.ir.ProgramFrame[] frames;
+
+    void frames(gcnc.ir.ProgramFrame[] perSegment) {
+        frames = perSegment;
     }
 
     /** The spindle was set to {@code rpm} (for the setup sheet's highest speed). */
@@ -203,6 +213,7 @@ final class MotionChecks {
     void dwell(double s) {
         seconds += s;
         terms.time(tool, s);
+        exactStopSeconds += s;
     }
 
     /** What this sequence has already reported: one finding per check per sequence, so one bad move is one finding. */
@@ -236,7 +247,26 @@ final class MotionChecks {
         boolean travelZ = false;
         chuckHit = tailHit = stockHit = holderHit = backHit = false;
         List<double[]> poly = path == null ? null : new ArrayList<>();
+        int polyLine = line;
+        boolean blended = false;
         for (Segment s : segs) {
+            blended = blended || !Double.isNaN(s.speed()) || !Double.isNaN(s.end());
+        }
+        double entry = 0;
+        double secondsBefore = seconds;
+        for (int k = 0; k < segs.size(); k++) {
+            Segment s = segs.get(k);
+            // a sequence may carry several blocks: each segment's findings go to its own block's line
+            int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
+            if (frames != null && frames[k] != null && frames[k] != frame) {
+                frame = frames[k];
+                terms.frame(frame);
+            }
+            if (poly != null && at != polyLine && !poly.isEmpty()) {
+                path.move(rapid, poly, polyLine, frame == null ? null : frame.file());
+                poly = new ArrayList<>();
+            }
+            polyLine = at;
             length += s.length();
             double[] box = bounds(s);
             xMin = Math.min(xMin, box[0]);
@@ -244,9 +274,9 @@ final class MotionChecks {
             zMin = Math.min(zMin, box[2]);
             zMax = Math.max(zMax, box[3]);
             terms.box(box, rapid);
-            travelX = travelX || travel(line, "X", box[0], box[1], profile.x().min(), profile.x().max(),
+            travelX = travelX || travel(at, "X", box[0], box[1], profile.x().min(), profile.x().max(),
                     profile.x().countsPerMm());
-            travelZ = travelZ || travel(line, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
+            travelZ = travelZ || travel(at, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
             double rMin = radius(box[0], box[1]);
             boolean nearChuck = near(chuckBox, box);
@@ -256,14 +286,25 @@ final class MotionChecks {
                     && stock.mayTouch((box[2] + reach[2]) / kz,
                     (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
             if (poly != null || nearChuck || nearTail || nearStock) {
-                closeUp(s, rapid, line, poly, nearChuck, nearTail, nearStock);
+                closeUp(s, rapid, at, poly, nearChuck, nearTail, nearStock);
+            }
+            if (blended) {
+                // the segment at its own speed, from the corner before it to the corner after it
+                double v = Double.isNaN(s.speed()) ? speed : s.speed();
+                double exit = k == segs.size() - 1 ? 0 : Double.isNaN(s.end()) ? v : s.end();
+                seconds += Profiles.time(s.length(), entry, v, exit, acc, dec);
+                exactStopSeconds += time(s.length(), v, acc, dec);
+                entry = exit;
             }
         }
-        double t = time(length, speed, acc, dec);
-        seconds += t;
-        terms.move(tool, line, t);
+        if (!blended) {
+            double t = time(length, speed, acc, dec);
+            seconds += t;
+            exactStopSeconds += t;
+        }
+        terms.move(tool, line, seconds - secondsBefore);
         if (poly != null) {
-            path.move(rapid, poly, line, frame == null ? null : frame.file());
+            path.move(rapid, poly, polyLine, frame == null ? null : frame.file());
             path.frame(frame, rapid);
         }
         if (scrub != null && scrub.inRun() && !segs.isEmpty()) {
@@ -601,6 +642,6 @@ final class MotionChecks {
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
-                seconds, d, terms.envelope(), terms.facts(machine, blank));
+                seconds, exactStopSeconds, d, terms.envelope(), terms.facts(machine, blank));
     }
 }

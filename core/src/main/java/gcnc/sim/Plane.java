@@ -73,7 +73,7 @@ final class Plane {
      * ({@code ArcVerdict}), so that the two cannot differ. {@code end} receives the end in the
      * Galil plane (first, second channel).
      */
-    Segment cr(double p1, double p2, double r, double startDeg, double sweepDeg, gcnc.dmc.Command command, double[] end) {
+    Segment cr(double p1, double p2, double r, double startDeg, double sweepDeg, gcnc.dmc.Instruction instruction, double[] end) {
         double[] g = gcnc.dmc.Command.CircularArc.geometry(p1, p2, r, startDeg, sweepDeg);
         double c1 = g[0];
         double c2 = g[1];
@@ -85,6 +85,6 @@ final class Plane {
         double cz = machineZ(c1, c2);
         double from = Math.toDegrees(Math.atan2(fx - cx, fz - cz));
         return new Segment(fx, fz, machineX(end[0], end[1]), machineZ(end[0], end[1]), true, cx, cz, r, from,
-                sweepDeg * handedness(), command);
+                sweepDeg * handedness(), instruction);
     }
 }

@@ -1,15 +1,33 @@
 package gcnc.sim;
 
 /**
- * One replayed vector segment in the machine frame (counts; x = machine X, not the radius).
+ * One replayed vector segment in the machine frame (counts; x = machine X, not the radius), with
+ * the speeds its VP/CR gave it ({@code speed} from {@code <o}, {@code end} from {@code >p}, counts/s;
+ * NaN where it gave none).
  * A line has {@code arc == false}; an arc carries its centre, radius and signed sweep in the
  * machine drawing (z right, x up; counter-clockwise positive), as the Galil CR made it.
  */
 record Segment(double fromX, double fromZ, double toX, double toZ, boolean arc, double centreX, double centreZ,
-               double radius, double startDeg, double sweepDeg, gcnc.dmc.Command command) {
+               double radius, double startDeg, double sweepDeg, gcnc.dmc.Instruction instruction, double speed, double end) {
+    /** A segment with no speeds of its own: the sequence's VS, and no slowing at its end. */
+    Segment(double fromX, double fromZ, double toX, double toZ, boolean arc, double centreX, double centreZ,
+            double radius, double startDeg, double sweepDeg, gcnc.dmc.Instruction instruction) {
+        this(fromX, fromZ, toX, toZ, arc, centreX, centreZ, radius, startDeg, sweepDeg, instruction, Double.NaN, Double.NaN);
+    }
+
+    /** The same segment with the speeds its command gives ({@code <o >p}; NaN where none). */
+    Segment withSpeeds(double speed, double end) {
+        return new Segment(fromX, fromZ, toX, toZ, arc, centreX, centreZ, radius, startDeg, sweepDeg, instruction, speed, end);
+    }
+
+    /** Where it came from: the G-code block and motion it carries out (null: a segment made by hand). */
+    gcnc.dmc.Source source() {
+        return instruction == null ? null : instruction.source();
+    }
+
     /** The DMC line that made it, for findings (printed only when one is made). */
     String text() {
-        return command == null ? "" : gcnc.dmc.DmcPrinter.print(command);
+        return instruction == null ? "" : instruction.text();
     }
 
     /** Point at fraction t of the way along (arcs by angle). Returns {x, z}. */

@@ -10,7 +10,10 @@ package gcnc.sim;
  * @param xMaxMm        ...
  * @param zMinMm        travel envelope of machine Z (mm)
  * @param zMaxMm        ...
- * @param cycleSeconds  estimated run time: trapezoidal speed profile per sequence plus dwells
+ * @param cycleSeconds  estimated run time: the speed profile of every segment (from its corner speed
+ *                      to its own and down to the next corner, VA/VD) plus dwells
+ * @param exactStopSeconds the same program with every motion stopped at its end: the difference is
+ *                      what blending gains
  * @param drawing       the path and machine for an SVG, null unless {@link SimOptions#keepPath()}
  * @param program       the same envelope as the program writes coordinates (X as written, Z from
  *                      work zero, the program's units): what a person reads first; null when the
@@ -18,6 +21,6 @@ package gcnc.sim;
  * @param setup         the blank, the work zero, the tools used and the top speed, for a setup sheet
  */
 public record SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
-                        double zMaxMm, double cycleSeconds, Drawing drawing, ProgramEnvelope program,
-                        SetupFacts setup) {
+                        double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
+                        ProgramEnvelope program, SetupFacts setup) {
 }

@@ -30,9 +30,17 @@ public final class Simulator {
     /** The stations already warned of as not described (E321/E322): once per station, not per tool change. */
     private final java.util.Set<Integer> undescribed = new java.util.HashSet<>();
     private final Trace trace;
-    private final List<Motion> motions = new ArrayList<>();
-    private List<Motion> expected = List.of();
-    private int nextMotion;
+    private final Corners corners;
+    /**
+     * The motions the checker meant that the DMC has not carried out yet, in program order; null
+     * for a bare replay (nothing to compare with). The planner holds at most a sequence's worth of
+     * motions back, so this holds at most that many and one block's.
+     */
+    private java.util.ArrayDeque<Expected> expected;
+
+    /** A motion the checker meant: its block, its index there, the motion; {@code done} counts the block's carried out. */
+    private record Expected(CheckedBlock block, int index, Motion motion, int[] done, int count) {
+    }
     private int findings;
     private int lastLine = 1;
     /** Where the block being replayed was run from (a called program's file and calls): its findings go there. */
@@ -65,6 +73,7 @@ public final class Simulator {
         }
         dmc.threadTolerance = threadTolerance(profile, options);
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
+        this.corners = new Corners(profile, this::report);
     }
 
     /**
@@ -84,37 +93,55 @@ public final class Simulator {
         run(header);
     }
 
-    /** One G-code block: what the checker meant, and the DMC the backend wrote for it. */
+    /**
+     * One G-code block: what the checker meant, and the DMC the backend wrote when it was given it
+     * (its own, or a sequence that ends with it and carries the blocks before it too). Each sequence
+     * is paired with the motions it carries out by where its segments came from ({@code Source}).
+     */
     public void block(CheckedBlock intended, List<Instruction> emitted) {
-        origin = intended.origin();
-        checks.frame(intended.frame());
-        expected = motions;
-        motions.clear();
+        block(intended, emitted, true);
+    }
+
+    /**
+     * @param settled whether the DMC of every motion meant so far has been given (the planner holds
+     *                none back): a motion still not carried out then never will be (E311)
+     */
+    public void block(CheckedBlock intended, List<Instruction> emitted, boolean settled) {
+        if (expected == null) {
+            expected = new java.util.ArrayDeque<>();
+        }
+        int count = 0;
         for (Motion m : intended.motions()) {
-            if (!(m instanceof Motion.Dwell)) {
-                expected.add(m);
+            count += m instanceof Motion.Dwell ? 0 : 1;
+        }
+        int[] done = {0};
+        List<Motion> ms = intended.motions();
+        for (int i = 0; i < ms.size(); i++) {
+            if (!(ms.get(i) instanceof Motion.Dwell)) {
+                expected.add(new Expected(intended, i, ms.get(i), done, count));
             }
         }
-        nextMotion = 0;
         dmc.checkedByCaller = true;
         run(emitted);
         dmc.checkedByCaller = false;
         closeSequences(intended.line());
-        skipStandingMotions(null);
-        if (nextMotion != expected.size()) {
-            report(Code.E311_SIM_SEQUENCE_COUNT, intended.line(), expected.size(), nextMotion);
+        while (settled && !expected.isEmpty()) {
+            skip(expected.poll());
         }
-        expected = List.of();
     }
 
     public void end(List<Instruction> footer) {
         run(footer);
         closeSequences(lastLine);
+        if (expected != null) {
+            while (!expected.isEmpty()) {
+                skip(expected.poll());
+            }
+        }
     }
 
     /** Replays DMC with no G-code to compare against: a hand-edited file, or --trace. */
     public void replay(List<Instruction> lines) {
-        expected = null;
         checks.frame(null);
         run(lines);
     }
@@ -131,7 +158,7 @@ public final class Simulator {
             if (line > 0) {
                 origin = i.source().origin(); // a called program's file: its findings go there
             }
-            dmc.run(i.command(), line);
+            dmc.run(i);
             lastLine = Math.max(1, line);
             if (trace != null) {
                 trace.line(i, dmc.x(), dmc.z(), checks.tool(), outputs.describe());
@@ -140,14 +167,37 @@ public final class Simulator {
     }
 
     /**
-     * A motion that does not move (G28 U0 W0's intermediate point, an arc shorter than a count)
-     * needs no sequence: the backend may leave it out. Skips such motions unless the sequence at
-     * hand is that motion (the backend kept it: a move of a count or two after rounding).
+     * The motion the segments from {@code source} carry out: the next one meant, after the motions
+     * that do not move (G28 U0 W0's intermediate point, an arc shorter than a count), which the
+     * backend may leave out. A motion that moves and was left out is E311 at its block.
      */
-    private void skipStandingMotions(List<Segment> next) {
-        while (nextMotion < expected.size() && standing(expected.get(nextMotion))
-                && (next == null || !sameMove(expected.get(nextMotion), next))) {
-            nextMotion++;
+    private Expected match(gcnc.dmc.Source source, List<Segment> run) {
+        while (!expected.isEmpty()) {
+            Expected e = expected.peek();
+            // the motion the run names (a hand-made DMC line names none, -1: its block's next one); a
+            // motion that does not move is the run only when the run does not move either, since the
+            // backend may have left it out and the next block's motion can have the same line and index
+            boolean named = (source == null || source.motion() < 0 || e.index() == source.motion())
+                    && (!standing(e.motion()) || sameDisplacement(run, e.motion()));
+            if (source != null && e.block().line() == source.line() && named
+                    && java.util.Objects.equals(e.block().origin().file(), source.file())) {
+                expected.poll();
+                e.done()[0]++;
+                return e;
+            }
+            skip(expected.poll());
+        }
+        return null;
+    }
+
+    /** A motion meant and not carried out: nothing when it does not move, else E311 at its block (once). */
+    private void skip(Expected e) {
+        if (standing(e.motion())) {
+            e.done()[0]++;
+        } else if (e.done()[0] >= 0) {
+            origin = e.block().origin();
+            report(Code.E311_SIM_SEQUENCE_COUNT, e.block().line(), e.count(), e.done()[0]);
+            e.done()[0] = -1; // reported: once per block
         }
     }
 
@@ -182,41 +232,14 @@ public final class Simulator {
         });
     }
 
-    /**
-     * Is the sequence that motion: the same kind (an arc within the tolerance may be written as a
-     * straight move), and its displacement within the tolerance?
-     */
-    private boolean sameMove(Motion m, List<Segment> segs) {
-        Segment first = segs.get(0);
-        Segment last = segs.get(segs.size() - 1);
-        double dx = last.toX() - first.fromX();
-        double dz = last.toZ() - first.fromZ();
-        return m.accept(new Motion.Visitor<Boolean>() {
-            @Override
-            public Boolean linear(Motion.Linear l) {
-                return segs.size() == 1 && !first.arc() && sameDisplacement(dx, dz, l.from(), l.to());
-            }
-
-            @Override
-            public Boolean thread(Motion.Thread t) {
-                return segs.size() == Conformance.geared(t) && !first.arc() && sameDisplacement(dx, dz, t.from(), t.to());
-            }
-
-            @Override
-            public Boolean dwell(Motion.Dwell d) {
-                return false;
-            }
-
-            @Override
-            public Boolean arc(Motion.Arc a) {
-                return (first.arc() || Conformance.pointLike(a, options.tolerance()))
-                        && sameDisplacement(dx, dz, a.from(), a.to());
-            }
-        });
-    }
-
-    private boolean sameDisplacement(double dx, double dz, Point from, Point to) {
-        return Geometry.length(dx - (to.x() - from.x()), dz - (to.z() - from.z())) <= options.tolerance();
+    /** Whether the segments move as the motion moves, within the tolerance. */
+    private boolean sameDisplacement(List<Segment> run, Motion m) {
+        Segment first = run.get(0);
+        Segment last = run.get(run.size() - 1);
+        Point from = m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Arc a ? a.from() : ((Motion.Thread) m).from();
+        Point to = m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Arc a ? a.to() : ((Motion.Thread) m).to();
+        return Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
+                last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
     }
 
     private static double distance(Point a, Point b) {
@@ -245,18 +268,46 @@ public final class Simulator {
     private final class Events implements Controller.Listener {
         @Override
         public void sequence(List<Segment> segments, double speed, int line) {
-            Motion m = null;
+            // the runs of segments from one motion each, and the motions they carry out
+            List<Expected> meant = new ArrayList<>(1);
+            List<int[]> runs = new ArrayList<>(1);
             if (expected != null) {
-                skipStandingMotions(segments);
-                m = nextMotion < expected.size() ? expected.get(nextMotion) : null;
-                nextMotion++;
+                for (int i = 0; i < segments.size(); ) {
+                    gcnc.dmc.Source from = segments.get(i).source();
+                    int j = i + 1;
+                    while (j < segments.size() && java.util.Objects.equals(segments.get(j).source(), from)) {
+                        j++;
+                    }
+                    Expected e = match(from, segments.subList(i, j));
+                    if (e == null) {
+                        report(Code.E311_SIM_SEQUENCE_COUNT, line, 0, 1); // a sequence no motion of the program asked for
+                    } else {
+                        meant.add(e);
+                        runs.add(new int[] {i, j});
+                    }
+                    i = j;
+                }
             }
-            boolean rapid = m == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
+            Motion m = meant.isEmpty() ? null : meant.get(0).motion();
+            if (m != null) {
+                origin = meant.get(0).block().origin();
+                checks.frame(meant.get(0).block().frame());
+                if (meant.size() > 1) {
+                    // a sequence of several blocks: each segment's findings in its own block's coordinates
+                    gcnc.ir.ProgramFrame[] frames = new gcnc.ir.ProgramFrame[segments.size()];
+                    for (int k = 0; k < meant.size(); k++) {
+                        java.util.Arrays.fill(frames, runs.get(k)[0], runs.get(k)[1], meant.get(k).block().frame());
+                    }
+                    checks.frames(frames);
+                }
+            }
+            boolean rapid = expected == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
             boolean stopped = !rapid && outputs.spindleKnown && !outputs.running;
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
             boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
                     stopped || open);
+            corners.check(segments, speed, line);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
@@ -267,9 +318,13 @@ public final class Simulator {
             if (open && cut) {
                 report(Code.E307_SIM_FEED_CHUCK_OPEN, line, outputs.describe());
             }
-            if (m != null) {
-                double[] resync = checks.conformance(m, segments, line);
-                if (resync != null) {
+            for (int k = 0; k < meant.size(); k++) {
+                Expected e = meant.get(k);
+                origin = e.block().origin();
+                checks.frame(e.block().frame());
+                List<Segment> run = segments.subList(runs.get(k)[0], runs.get(k)[1]);
+                double[] resync = checks.conformance(e.motion(), run, e.block().line());
+                if (resync != null && k == meant.size() - 1) {
                     dmc.moveTo(resync[0], resync[1]);
                 }
             }

@@ -31,7 +31,10 @@ public final class SimulatorThread implements AutoCloseable {
     private enum Kind { BEGIN, BLOCK, END, OUTPUT_ONLY }
 
     /** One call to make on the simulator: the program's header, a block, or the footer; or lines only to hand on. */
-    private record Step(Kind kind, CheckedBlock block, List<Instruction> lines) {
+    private record Step(Kind kind, CheckedBlock block, List<Instruction> lines, boolean settled) {
+        Step(Kind kind, CheckedBlock block, List<Instruction> lines) {
+            this(kind, block, lines, true);
+        }
     }
 
     private final Diagnostics diagnostics = new Diagnostics();
@@ -63,7 +66,12 @@ public final class SimulatorThread implements AutoCloseable {
     }
 
     public void block(CheckedBlock intended, List<Instruction> emitted) throws InterruptedIOException {
-        add(new Step(Kind.BLOCK, intended, emitted));
+        block(intended, emitted, true);
+    }
+
+    /** @param settled whether every motion meant so far has been emitted (the planner holds none back) */
+    public void block(CheckedBlock intended, List<Instruction> emitted, boolean settled) throws InterruptedIOException {
+        add(new Step(Kind.BLOCK, intended, emitted, settled));
     }
 
     public void end(List<Instruction> footer) throws InterruptedIOException {
@@ -144,7 +152,7 @@ public final class SimulatorThread implements AutoCloseable {
     private void run(Step s) {
         switch (s.kind()) {
             case BEGIN -> simulator.begin(s.lines());
-            case BLOCK -> simulator.block(s.block(), s.lines());
+            case BLOCK -> simulator.block(s.block(), s.lines(), s.settled());
             case END -> simulator.end(s.lines());
             case OUTPUT_ONLY -> {
             }

@@ -41,7 +41,7 @@ public class CompileTask extends GcncTask {
             throw new IOException("cannot write " + e.path() + ": " + e.problem().getMessage(), e.problem());
         }
         try (outputs; Reader in = program.open()) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry).withStops(outputs::mapStop);
             outputs.mapSource(program.file().getName(), program.file().toPath());
             Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
                     mapper.wrap(line -> outputs.dmcLine(line.text())));

@@ -101,7 +101,7 @@ final class Analysis {
         JsonObject doc = new JsonObject();
         Compiler.Result r;
         try (DmcOutputs outputs = DmcOutputs.open(program, dmc, true)) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry).withStops(outputs::mapStop);
             outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
                 r = session.withPrograms(Optional.ofNullable(program.getParent())).compile(in,

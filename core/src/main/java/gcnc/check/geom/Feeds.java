@@ -13,7 +13,7 @@ import gcnc.machine.MachineProfile;
  * revolution at the spindle speed of the move; a profile may calibrate F directly ({@code feed.per_f}). A feed above the profile's maximum is an error
  * (E103), not a silent clamp: the part would be cut slower than programmed. Per revolution
  * without any spindle speed is E104. A feed the controller cannot give at all (under one count
- * per second, VS 1) is E207 here already, so check and compile give one verdict.
+ * per second, VS 2 is Galil's slowest) is E207 here already, so check and compile give one verdict.
  */
 public final class Feeds {
     private final MachineProfile p;
@@ -38,8 +38,8 @@ public final class Feeds {
         } else {
             cps = f * perUnitPerMin;
         }
-        if (Math.round(cps) < 1) {
-            // the slowest vector speed the controller has (VS 1): the same verdict as compile's backend
+        if (Math.round(cps) < 2) {
+            // the slowest vector speed the controller has (VS 2): the same verdict as compile's backend
             d.fail(out, Code.E207_FEED_TOO_SLOW, at, Arcs.text(cps));
             return null;
         }

@@ -1,0 +1,133 @@
+package gcnc.galil;
+
+import gcnc.diag.Code;
+import gcnc.dmc.Command;
+import gcnc.dmc.Fixed;
+import gcnc.dmc.Instruction;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Feed;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.plan.Piece;
+import gcnc.plan.Step;
+import java.util.function.Consumer;
+
+/**
+ * Writes a planned group (docs/galil.md, "Continuous contouring"): one vector sequence, every
+ * segment at its own speed with its corner speed, {@code VS <first speed>}, then {@code VP a,b <o >p}
+ * and {@code CR r,θ,Δθ <o >p} measured from the sequence's start, {@code VE}, {@code BGS}; the
+ * spindle speeds of the motions that change it on the way ({@code AV <distance>} then the speed);
+ * {@code AMS} with the reason the machine stops there. Speeds are even, 2 or more (Galil's
+ * resolution for {@code <} and {@code >}), rounded down, never up.
+ */
+final class GroupWriter {
+    private final GalilDialect d;
+    private final Consumer<Instruction> sink;
+
+    GroupWriter(GalilDialect dialect, Consumer<Instruction> sink) {
+        this.d = dialect;
+        this.sink = sink;
+    }
+
+    void write(Step.Group g) {
+        long u0 = d.posU;
+        long v0 = d.posV;
+        boolean started = false;
+        BlockWriter out = null;
+        double along = 0;
+        java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
+        java.util.List<Double> at = new java.util.ArrayList<>();
+        int n = g.pieces().size();
+        for (int k = 0; k < n; k++) {
+            Piece p = g.pieces().get(k);
+            CheckedBlock b = p.block();
+            out = d.writer(b, sink);
+            out.motion(p.motion());
+            Motion m = p.path();
+            Feed feed = m instanceof Motion.Linear l ? (l.rapid() ? null : l.feed()) : ((Motion.Arc) m).feed();
+            long vs = d.speed(b, feed);
+            if (vs < 0) {
+                continue; // reported (E207, E201): the output is void
+            }
+            Command.Speeds speeds = new Command.Speeds(Math.min(vs, evenDown(p.speed())), k == n - 1 ? 0 : evenDown(p.exit()));
+            if (!started) {
+                d.speedLine(vs, feed != null, out);
+                started = true;
+            }
+            if (p.spindle()) {
+                onTheWay.add(p);
+                at.add(along);
+            }
+            along += p.length();
+            if (m instanceof Motion.Arc a) {
+                arc(b, a, u0, v0, speeds, out);
+            } else {
+                straight(b, m instanceof Motion.Linear l ? l.to() : null, u0, v0, speeds, out);
+            }
+        }
+        if (!started) {
+            return;
+        }
+        out.emit(new Command.VectorEnd());
+        out.emit(new Command.BeginSequence());
+        for (int i = 0; i < onTheWay.size(); i++) {
+            Piece p = onTheWay.get(i);
+            BlockWriter w = d.writer(p.block(), sink);
+            w.motion(p.motion());
+            w.emit(new Command.AfterVector((long) Math.floor(at.get(i))));
+            d.spindle(p.block(), p.block().spindleRpm().getAsDouble(), w);
+            out = w;
+        }
+        out.emit(new Command.AwaitSequence(g.stop()));
+    }
+
+    private void straight(CheckedBlock b, Point to, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
+        long tu = GalilNumbers.round(d.frame().u(to));
+        long tv = GalilNumbers.round(d.frame().v(to));
+        if (!d.inRange(b, "VP", tu - u0) || !d.inRange(b, "VP", tv - v0)) {
+            return;
+        }
+        if (tu == d.posU && tv == d.posV) {
+            return; // no move: a segment of no length is TC 30
+        }
+        out.emit(new Command.VectorPosition(tu - u0, tv - v0, speeds));
+        d.posU = tu;
+        d.posV = tv;
+    }
+
+    private void arc(CheckedBlock b, Motion.Arc m, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
+        long tu = GalilNumbers.round(d.frame().u(m.to()));
+        long tv = GalilNumbers.round(d.frame().v(m.to()));
+        if (!d.inRange(b, "CR", tu - u0) || !d.inRange(b, "CR", tv - v0)
+                || !d.inRange(b, "CR", GalilNumbers.round(m.radius()))) {
+            return;
+        }
+        ArcPlanner.Written written = ArcPlanner.forMotion(d.frame(), d.posU, d.posV, m);
+        if (written == null) {
+            straight(b, m.to(), u0, v0, speeds, out);
+            return;
+        }
+        ArcPlanner.Cr cr = written.cr();
+        if (cr == null) {
+            d.error(Code.E202_ARC_NOT_REPRESENTABLE, b, GalilNumbers.round(m.radius()));
+            return;
+        }
+        if (!cr.closing()) {
+            out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
+                    Fixed.fourDecimals(cr.sweep()), speeds));
+        } else {
+            // the arc ends a count or two short; the closing move keeps the corner speed
+            out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
+                    Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), speeds.end())));
+            out.emit(new Command.VectorPosition(tu - u0, tv - v0,
+                    new Command.Speeds(speeds.end() == 0 ? speeds.speed() : speeds.end(), speeds.end())));
+        }
+        d.posU = tu;
+        d.posV = tv;
+    }
+
+    /** The even speed at or below {@code v}, at least 2. */
+    static long evenDown(double v) {
+        return Math.max(2, 2 * (long) Math.floor(v / 2));
+    }
+}

@@ -1,0 +1,279 @@
+package gcnc.plan;
+
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.MCall;
+import gcnc.ir.Motion;
+import gcnc.machine.Blending;
+import gcnc.machine.MachineProfile;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+
+/**
+ * Continuous contouring: consecutive path motions become one vector sequence wherever the machine
+ * may keep moving, with a speed for each motion and a speed for each corner (docs/galil.md,
+ * "Continuous contouring"). The algorithm, after Grbl's planner.c:
+ *
+ * <ol>
+ * <li><b>What joins.</b> A straight move or an arc joins the sequence being gathered when it is of the
+ * same kind (rapid, or feed), in the same program file, and turns from the last one by less than a
+ * reversal. Everything else ends the sequence, with its reason ({@link Stop}): a block that changes
+ * the tool or switches outputs, a dwell, a thread pass (geared, never blended), a rapid after a feed
+ * or back, a call into another file, the end of the program. A new spindle speed alone (G96 at the
+ * next diameter) does not stop a feed: the emitter sets it when the tool reaches that motion.</li>
+ * <li><b>The bound.</b> At most {@link #MAX_PIECES} motions are held back: each is written as at
+ * most two segments (an arc and its closing move), so a sequence always fits the controller's
+ * 511-segment buffer; and at most {@link #MAX_LENGTH} counts of path (the controller refuses a
+ * sequence longer than 2^31, TC 31).</li>
+ * <li><b>Speeds.</b> A motion's speed is its feed (the rapid speed for a rapid), an arc's at most
+ * √(a·r) so that its centripetal acceleration stays within the machine's. A corner's speed is the
+ * junction-deviation speed √(a·δ·sin(θ/2)/(1−sin(θ/2))) (θ the angle between the two directions,
+ * δ the profile's {@code corner.deviation}), never above either motion's speed: tangent joints keep
+ * the feed, sharp corners slow, a reversal stops.</li>
+ * <li><b>Passes.</b> The sequence starts and ends at rest. A reverse pass from the end lowers each
+ * corner to what the machine can still stop from over the motions after it; a forward pass from the
+ * start lowers each to what it can reach over the motions before it; so |v_in² − v_out²| ≤ 2·a·L for
+ * every motion, a = the smaller of the profile's acceleration and deceleration.</li>
+ * </ol>
+ * The emitter rounds the speeds to what the controller takes; the simulator replays them and checks
+ * every corner again (E332) from the segments it replayed, not from these numbers.
+ */
+public final class Contouring implements Planner {
+    /** The most motions a sequence holds (each at most two segments: 510 of the 511 buffer slots). */
+    public static final int MAX_PIECES = 255;
+    /** The longest sequence, counts (TC 31 is past 2^31; half of it leaves room for rounding). */
+    public static final double MAX_LENGTH = 1L << 30;
+    /** A corner slower than this (counts/s) is a reversal: Galil's slowest segment speed is 2. */
+    static final double SLOWEST = 2;
+
+    private final MachineProfile profile;
+    private final double acceleration;
+    private final double deviation;
+    private final List<CheckedBlock> blocks = new ArrayList<>();
+    private final List<Integer> motions = new ArrayList<>();
+    private final List<Path> paths = new ArrayList<>();
+    private final List<Boolean> spindles = new ArrayList<>();
+    private double length;
+
+    Contouring(MachineProfile profile, Blending blending) {
+        this.profile = profile;
+        this.acceleration = Math.min(profile.acceleration(), profile.deceleration());
+        this.deviation = blending.deviationMm() * Math.min(profile.x().countsPerMm(), profile.z().countsPerMm());
+    }
+
+    @Override
+    public void accept(CheckedBlock b, Consumer<Step> out) {
+        Stop before = before(b);
+        // a new spindle speed alone (G96 following the diameter) is set on the way, not at a stop
+        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !switches(b.before()) && joinsFirst(b);
+        if (before != null && !onTheWay) {
+            flush(before, out);
+            out.accept(new Step.Before(b));
+        }
+        List<Motion> ms = b.motions();
+        for (int i = 0; i < ms.size(); i++) {
+            Motion m = ms.get(i);
+            Path p = Path.of(m, profile.rapidSpeed(), acceleration);
+            if (p == null) {
+                flush(m instanceof Motion.Thread ? Stop.THREAD : Stop.DWELL, out);
+                out.accept(new Step.Alone(b, i));
+                continue;
+            }
+            if (p.length() < 0.5) {
+                // shorter than a count: nothing to write, no direction of its own. Alone when nothing is
+                // held; else in the sequence, in its order, turning neither way (the emitter skips it)
+                if (paths.isEmpty() || paths.get(paths.size() - 1).rapid() != p.rapid()) {
+                    flush(Stop.RAPID_FEED, out);
+                    out.accept(new Step.Alone(b, i));
+                    continue;
+                }
+                p = paths.get(paths.size() - 1).standing(p.speed());
+            }
+            if (!paths.isEmpty()) {
+                Stop stop = joins(b, p);
+                if (stop != null) {
+                    flush(stop, out);
+                }
+            }
+            blocks.add(b);
+            motions.add(i);
+            paths.add(p);
+            spindles.add(onTheWay);
+            onTheWay = false;
+            length += p.length();
+        }
+        if (switches(b.after())) {
+            flush(Stop.OUTPUT, out);
+            out.accept(new Step.After(b));
+        }
+    }
+
+    @Override
+    public void finish(Consumer<Step> out) {
+        flush(Stop.END, out);
+    }
+
+    @Override
+    public boolean holding() {
+        return !paths.isEmpty();
+    }
+
+    /** Whether the block's first motion is a path that joins the sequence gathered so far. */
+    private boolean joinsFirst(CheckedBlock b) {
+        if (paths.isEmpty() || b.motions().isEmpty()) {
+            return false;
+        }
+        Path p = Path.of(b.motions().get(0), profile.rapidSpeed(), acceleration);
+        return p != null && p.length() >= 0.5 && !p.rapid() && joins(b, p) == null;
+    }
+
+    /** Why the block's start stops the machine (its spindle, tool or outputs), or null when it does not. */
+    private Stop before(CheckedBlock b) {
+        if (b.spindleRpm().isPresent()) {
+            return Stop.SPINDLE;
+        }
+        if (b.tool().isPresent()) {
+            return Stop.TOOL;
+        }
+        return switches(b.before()) ? Stop.OUTPUT : null;
+    }
+
+    /** Whether any of the M functions switches an output (one without outputs writes nothing: no stop). */
+    private boolean switches(List<MCall> calls) {
+        for (MCall m : calls) {
+            if (!profile.outputsFor(m.code()).isEmpty()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Why {@code p} cannot join the sequence gathered so far, or null when it can. */
+    private Stop joins(CheckedBlock b, Path p) {
+        Path last = paths.get(paths.size() - 1);
+        if (last.rapid() != p.rapid()) {
+            return Stop.RAPID_FEED;
+        }
+        if (!java.util.Objects.equals(blocks.get(blocks.size() - 1).origin().file(), b.origin().file())) {
+            return Stop.CALL;
+        }
+        if (paths.size() == MAX_PIECES) {
+            return Stop.BUFFER;
+        }
+        if (length + p.length() > MAX_LENGTH) {
+            return Stop.LENGTH;
+        }
+        return corner(last, p) < SLOWEST ? Stop.REVERSAL : null;
+    }
+
+    /** The junction-deviation speed of the corner from {@code a} into {@code b}, at most either's speed. */
+    double corner(Path a, Path b) {
+        double cos = -(a.exitX() * b.entryX() + a.exitZ() * b.entryZ()); // Grbl: -1 straight on, +1 back
+        double v = Math.min(a.speed(), b.speed());
+        if (cos < -0.999999) {
+            return v;
+        }
+        if (cos > 0.999999) {
+            return 0;
+        }
+        double sinHalf = Math.sqrt(0.5 * (1 - cos));
+        return Math.min(v, MARGIN * Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf)));
+    }
+
+    private void flush(Stop stop, Consumer<Step> out) {
+        int n = paths.size();
+        if (n == 0) {
+            return;
+        }
+        // entry[i]: the speed at the start of motion i; entry[n]: at the end of the last (rest)
+        double[] entry = new double[n + 1];
+        for (int i = 1; i < n; i++) {
+            entry[i] = corner(paths.get(i - 1), paths.get(i));
+        }
+        for (int i = n - 1; i >= 1; i--) { // reverse pass: each corner one can still stop from
+            entry[i] = Math.min(entry[i], Math.sqrt(entry[i + 1] * entry[i + 1] + 2 * acceleration * usable(i)));
+        }
+        for (int i = 1; i < n; i++) { // forward pass: each corner one can reach
+            entry[i] = Math.min(entry[i], Math.sqrt(entry[i - 1] * entry[i - 1] + 2 * acceleration * usable(i - 1)));
+        }
+        List<Piece> pieces = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            pieces.add(new Piece(blocks.get(i), motions.get(i), paths.get(i).speed(), entry[i + 1],
+                    paths.get(i).length(), spindles.get(i)));
+        }
+        spindles.clear();
+        blocks.clear();
+        motions.clear();
+        paths.clear();
+        length = 0;
+        out.accept(new Step.Group(pieces, stop));
+    }
+
+    /**
+     * The length of motion i the passes count on: its length less {@link #ROUNDING} counts, since
+     * the emitter writes whole counts and a short segment may come out that much shorter.
+     */
+    private double usable(int i) {
+        return Math.max(0, paths.get(i).length() - ROUNDING);
+    }
+
+    /** How much shorter a segment may be written than planned (its two ends rounded to whole counts). */
+    static final double ROUNDING = 2;
+    /**
+     * The share of the junction speed the planner uses: the controller's corner is between segments
+     * rounded to whole counts and arcs of printed angles, whose directions differ a little from the
+     * program's; the simulator checks the written ones (E332).
+     */
+    static final double MARGIN = 0.9;
+
+    /**
+     * A straight move or an arc as the planner sees it: its length (counts), its speed limit
+     * (counts/s), and its unit directions where it starts and where it ends, in machine counts.
+     */
+    record Path(boolean rapid, double length, double speed, double entryX, double entryZ, double exitX,
+                double exitZ) {
+        /** A motion of no length after this one: it goes on in this one's direction. */
+        Path standing(double speed) {
+            return new Path(rapid, 0, speed, exitX, exitZ, exitX, exitZ);
+        }
+
+        /** The path of a straight move or an arc; null for a dwell or a thread. */
+        static Path of(Motion m, double rapidSpeed, double acceleration) {
+            if (m instanceof Motion.Linear l) {
+                double dx = l.to().x() - l.from().x();
+                double dz = l.to().z() - l.from().z();
+                double len = Math.hypot(dx, dz);
+                double ux = len == 0 ? 0 : dx / len;
+                double uz = len == 0 ? 0 : dz / len;
+                return new Path(l.rapid(), len, l.rapid() ? rapidSpeed : l.feed().countsPerSecond(), ux, uz, ux, uz);
+            }
+            if (m instanceof Motion.Arc a) {
+                double sweep = Math.toRadians(Math.abs(gcnc.ir.ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(),
+                        a.clockwise())));
+                double r = a.radius();
+                double[] in = tangent(a, a.from());
+                double[] out = tangent(a, a.to());
+                double speed = Math.min(a.feed().countsPerSecond(), Math.sqrt(acceleration * r));
+                return new Path(false, sweep * r, speed, in[0], in[1], out[0], out[1]);
+            }
+            return null;
+        }
+
+        /**
+         * The unit direction of travel at {@code p} on the arc, in machine counts (x, z). The
+         * drawing has z to the right and x up, and the arc turns clockwise or not as drawn there.
+         */
+        private static double[] tangent(Motion.Arc a, gcnc.ir.Point p) {
+            double rh = p.z() - a.centre().z();
+            double rv = p.x() - a.centre().x();
+            double len = Math.hypot(rh, rv);
+            if (len == 0) {
+                return new double[] {0, 0};
+            }
+            // counter-clockwise in (h, v) = (-rv, rh); back in (x, z) = (v, h)
+            double tx = a.clockwise() ? -rh : rh;
+            double tz = a.clockwise() ? rv : -rv;
+            return new double[] {tx / len, tz / len};
+        }
+    }
+}

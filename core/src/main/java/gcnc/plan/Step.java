@@ -1,0 +1,31 @@
+package gcnc.plan;
+
+import gcnc.ir.CheckedBlock;
+import java.util.List;
+
+/**
+ * What the planner hands the emitter, in the order of decision D2 (thesis §4.5): a block's setup
+ * before its motions, its motions (alone, or joined with the next blocks' into one sequence), and
+ * what comes after them. A sequence ends because of its type: every step but {@link Group} stands
+ * still.
+ */
+public sealed interface Step {
+    /** The spindle speed, tool change and M functions applied at the block's start. */
+    record Before(CheckedBlock block) implements Step {
+    }
+
+    /** One motion written by itself: a dwell, a thread pass, or a path motion the planner did not join. */
+    record Alone(CheckedBlock block, int motion) implements Step {
+    }
+
+    /** Path motions the machine runs in one vector sequence without stopping, and why it stops after them. */
+    record Group(List<Piece> pieces, Stop stop) implements Step {
+        public Group {
+            pieces = List.copyOf(pieces);
+        }
+    }
+
+    /** The M functions applied at the block's end. */
+    record After(CheckedBlock block) implements Step {
+    }
+}

@@ -1,0 +1,43 @@
+package gcnc.plan;
+
+/**
+ * Why the machine stops where a vector sequence ends: recorded with the sequence (the source map's
+ * {@code # stop} lines, the JSON summary), so that "why does the machine stop here?" has an answer.
+ */
+public enum Stop {
+    /** The exact-stop planner: every motion is a sequence of its own (the thesis dialect, {@code plan.blend = off}). */
+    EXACT_STOP("exact-stop"),
+    /** The next block changes the spindle's speed or direction. */
+    SPINDLE("spindle"),
+    /** The next block changes the tool. */
+    TOOL("tool"),
+    /** An M code with outputs: they switch when the axes stand still. */
+    OUTPUT("output"),
+    /** A dwell (G04). */
+    DWELL("dwell"),
+    /** A thread pass: geared to the spindle, never blended. */
+    THREAD("thread"),
+    /** A rapid after a feed or a feed after a rapid. */
+    RAPID_FEED("rapid-feed"),
+    /** The path turns back on itself: a corner no speed above zero can take. */
+    REVERSAL("reversal"),
+    /** The sequence holds as many motions as a group may ({@link Contouring#MAX_PIECES}). */
+    BUFFER("buffer"),
+    /** The sequence's total length reached the controller's limit. */
+    LENGTH("length"),
+    /** The next motion is in another program file (a call or a return). */
+    CALL("call"),
+    /** The program ends. */
+    END("end");
+
+    private final String key;
+
+    Stop(String key) {
+        this.key = key;
+    }
+
+    /** The name in the source map and the JSON summary. */
+    public String key() {
+        return key;
+    }
+}

@@ -1,0 +1,153 @@
+package gcnc.plan;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.Compiler;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.dmc.SourceMap;
+import gcnc.machine.MachineProfile;
+import gcnc.machine.ProfileFile;
+import gcnc.machine.ProfileLoader;
+import gcnc.sim.DmcReplay;
+import gcnc.sim.SimOptions;
+import gcnc.sim.SimReport;
+import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
+import java.io.BufferedReader;
+import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Continuous contouring (docs/galil.md): what joins one sequence, where the machine stops and why,
+ * the corner speeds the planner writes, and the simulator holding them to the machine.
+ */
+class ContouringTest {
+    private static final Tables TABLES = Tables.builtIn();
+
+    /** A compile's DMC, its source map and its result. */
+    record Out(String dmc, List<String> map, Compiler.Result result) {
+        List<String> lines() {
+            return dmc.lines().toList();
+        }
+
+        long sequences() {
+            return lines().stream().filter(l -> l.equals("BGS")).count();
+        }
+
+        List<String> stops() {
+            return map.stream().filter(l -> l.startsWith(SourceMap.STOP)).map(l -> l.substring(l.lastIndexOf(' ') + 1))
+                    .collect(Collectors.toList());
+        }
+    }
+
+    static MachineProfile profile(String name) throws Exception {
+        return ProfileLoader.load(name, TableSource.builtIn(), TABLES);
+    }
+
+    static Out compile(String program, MachineProfile p) throws Exception {
+        StringBuilder dmc = new StringBuilder();
+        List<String> map = new ArrayList<>();
+        SourceMap mapper = new SourceMap(map::add);
+        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, p, "galil",
+                Optional.of(SimOptions.defaults().withoutBlank())), mapper.wrap(l -> dmc.append(l.text()).append('\n')));
+        assertTrue(r.ok(), () -> r.diagnostics().sorted() + "\n" + dmc);
+        return new Out(dmc.toString(), map, r);
+    }
+
+    static String read(String name) throws Exception {
+        return Files.readString(Path.of("src/test/resources/plan", name), StandardCharsets.UTF_8);
+    }
+
+    /** The finishing contour: eight feed blocks with a chamfer, a fillet and a round run as one sequence at F. */
+    @Test
+    void aTangentFinishingContourIsOneSequenceAtItsFeed() throws Exception {
+        Out o = compile(read("finish-contour.fanuc.nc"), profile("fanuc"));
+        // the approach rapids, the eight feed blocks, the retract rapids: three sequences, not eleven
+        assertEquals(3, o.sequences(), o.dmc());
+        int from = o.lines().indexOf("VS 1000"); // F0.1 mm/rev at 1200 rpm
+        assertTrue(from > 0, o.dmc());
+        int ve = from + o.lines().subList(from, o.lines().size()).indexOf("VE");
+        List<String> contour = o.lines().subList(from + 1, ve);
+        assertEquals(8, contour.size(), contour.toString()); // one segment per block: VP, VP, VP, CR, VP, CR, VP, VP
+        for (String seg : contour.subList(0, 7)) {
+            assertTrue(seg.endsWith(" <1000 >1000"), "every joint keeps the feed: " + seg);
+        }
+        assertTrue(contour.get(7).endsWith(" <1000"), "the last stops: " + contour.get(7));
+        assertEquals(List.of("rapid-feed", "rapid-feed", "output"), o.stops());
+    }
+
+    /** A 90-degree corner at 2000 mm/min slows to the junction speed of the machine, Grbl's formula. */
+    @Test
+    void aSharpCornerSlowsToItsJunctionSpeed() throws Exception {
+        MachineProfile fanuc = profile("fanuc");
+        Out o = compile("G21 G98\nG50 S2000\nT0101\nG97 S1000 M03\nG00 X40. Z2.\nG01 Z-10. F2000.\nG01 X60.\n"
+                + "G00 Z2.\nM05\nM30\n", fanuc);
+        long feed = 2 * (long) Math.floor(Math.round(2000 / 60.0 * fanuc.z().countsPerMm()) / 2.0);
+        String corner = o.lines().stream().filter(l -> l.startsWith("VP ") && l.contains("<" + feed + " >"))
+                .findFirst().orElseThrow(() -> new AssertionError(o.dmc()));
+        double a = Math.min(fanuc.acceleration(), fanuc.deceleration());
+        double delta = 0.01 * Math.min(fanuc.x().countsPerMm(), fanuc.z().countsPerMm());
+        double sinHalf = Math.sin(Math.toRadians(45));
+        long expected = 2 * (long) Math.floor(0.9 * Math.sqrt(a * delta * sinHalf / (1 - sinHalf)) / 2);
+        assertTrue(expected < feed, "the corner is slower than the feed");
+        assertTrue(corner.endsWith(" >" + expected), corner + " (expected >" + expected + ")\n" + o.dmc());
+        SimReport sim = o.result().simulation().orElseThrow();
+        assertTrue(sim.cycleSeconds() < sim.exactStopSeconds(), "blending gains: " + sim);
+    }
+
+    @Test
+    void aDwellAToolChangeAndM05EndTheSequenceWithTheirReason() throws Exception {
+        Out o = compile(read("stops.fanuc.nc"), profile("fanuc"));
+        assertEquals(List.of("rapid-feed", "dwell", "tool", "rapid-feed", "output", "end"), o.stops(), o.dmc());
+    }
+
+    @Test
+    void blendingOffWritesEveryMotionAlone() throws Exception {
+        MachineProfile off = ProfileLoader.read(ProfileFile.parse("off.machine",
+                Files.readString(Path.of("tables/machines/fanuc.machine")) + "\nplan.blend = off\n"), TABLES);
+        Out o = compile(read("finish-contour.fanuc.nc"), off);
+        assertEquals(12, o.sequences()); // every motion of the program, the two rapids around the contour too
+        assertTrue(o.lines().stream().noneMatch(l -> l.contains("<")), o.dmc());
+    }
+
+    /** A G96 finish: the new speed of each diameter is set on the way (AV, then OF), the feed goes on. */
+    @Test
+    void aConstantSurfaceSpeedIsFollowedWithoutStopping() throws Exception {
+        Out o = compile("G21 G99\nG50 S2000\nT0101\nG96 S150 M03\nG00 X20. Z2.\nG01 Z0. F0.1\nG01 X30. Z-5.\n"
+                + "G01 X40. Z-10.\nG00 X50. Z5.\nM05\nM30\n", profile("fanuc"));
+        List<String> l = o.lines();
+        int bgs = -1;
+        for (int i = 0; i < l.size() - 2; i++) {
+            if (l.get(i).equals("BGS") && l.get(i + 1).startsWith("AV ") && l.get(i + 2).startsWith("OF ")) {
+                bgs = i;
+            }
+        }
+        assertTrue(bgs > 0, o.dmc());
+    }
+
+    /** The simulator does not trust the planner: a corner written faster than the machine takes is E332 in a replay. */
+    @Test
+    void aCornerTooFastInTheDmcIsFoundByTheSimulator() throws Exception {
+        MachineProfile fanuc = profile("fanuc");
+        Out o = compile("G21 G98\nG50 S2000\nT0101\nG97 S1000 M03\nG00 X40. Z2.\nG01 Z-10. F2000.\nG01 X60.\n"
+                + "G00 Z2.\nM05\nM30\n", fanuc);
+        long feed = 2 * (long) Math.floor(Math.round(2000 / 60.0 * fanuc.z().countsPerMm()) / 2.0);
+        String tampered = o.dmc().replaceFirst("<" + feed + " >\\d+", "<" + feed + " >" + feed);
+        assertTrue(!tampered.equals(o.dmc()), o.dmc());
+        Diagnostics d = new Diagnostics();
+        DmcReplay.replay(new BufferedReader(new StringReader(tampered)), fanuc, SimOptions.defaults().withoutBlank(), d);
+        assertTrue(d.sorted().stream().anyMatch(x -> x.code() == Code.E332_SIM_CORNER_TOO_FAST), d.sorted().toString());
+        Diagnostics clean = new Diagnostics();
+        DmcReplay.replay(new BufferedReader(new StringReader(o.dmc())), fanuc, SimOptions.defaults().withoutBlank(), clean);
+        assertTrue(clean.sorted().stream().noneMatch(x -> x.code() == Code.E332_SIM_CORNER_TOO_FAST), clean.sorted().toString());
+    }
+}
