@@ -36,7 +36,18 @@ public final class Compiler {
      * only the source itself.
      */
     public record Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
-                           boolean inlineSourceMap, Optional<Path> programs) {
+                           boolean inlineSourceMap, Optional<Path> programs, boolean exactStop) {
+        /** Blending as the profile says ({@code plan.blend}). */
+        public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
+                        boolean inlineSourceMap, Optional<Path> programs) {
+            this(tables, profile, dialect, simulation, inlineSourceMap, programs, false);
+        }
+
+        /** The same settings with every motion stopped at its end, whatever the profile says (gcnc run, for now). */
+        public Settings withExactStop() {
+            return new Settings(tables, profile, dialect, simulation, inlineSourceMap, programs, true);
+        }
+
         public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation) {
             this(tables, profile, dialect, simulation, false);
         }
@@ -48,7 +59,7 @@ public final class Compiler {
 
         /** The same settings with called programs looked for in {@code folder} too. */
         public Settings withPrograms(Path folder) {
-            return new Settings(tables, profile, dialect, simulation, inlineSourceMap, Optional.of(folder));
+            return new Settings(tables, profile, dialect, simulation, inlineSourceMap, Optional.of(folder), exactStop);
         }
     }
 
@@ -134,10 +145,20 @@ public final class Compiler {
                 blocks++;
                 translate(checker.check(raw), planner, lower, diags, lines, sim, out);
             }
+            if (!diags.hasErrors()) {
+                // the motions the planner still holds are of blocks already checked: replayed before the
+                // end-of-program checks, as each block's own sequences are
+                planner.finish(lower);
+                if (sim != null) {
+                    sim.held(List.copyOf(lines));
+                    lines.clear();
+                } else {
+                    flush(lines, out);
+                }
+            }
             checker.finish(reader.lines());
             boolean translated = !diags.hasErrors();
             if (translated) {
-                planner.finish(lower); // the motions it still holds
                 dialect.end(collect);
                 if (limits != null) {
                     limits.finish(); // the whole program against the controller's memory
@@ -215,7 +236,10 @@ public final class Compiler {
      * every motion; the galil dialect blends as the profile says ({@code plan.blend}).
      */
     private static gcnc.plan.Planner planner(Settings settings) {
-        return "thesis".equals(settings.dialect()) ? new gcnc.plan.ExactStop()
+        // the studio's scrub follows the stock sequence by sequence: every block its own (the path and the
+        // stock a block leaves are the same whether the machine blends through it or stops)
+        boolean scrub = settings.simulation().map(o -> o.scrubLine() != 0).orElse(false);
+        return "thesis".equals(settings.dialect()) || scrub || settings.exactStop() ? new gcnc.plan.ExactStop()
                 : gcnc.plan.Planner.forProfile(settings.profile());
     }
 
@@ -240,7 +264,7 @@ public final class Compiler {
         in.reset();
         SimOptions o = withStockHeader(first.toString(), settings.profile(), settings.simulation().get());
         return new Settings(settings.tables(), settings.profile(), settings.dialect(), Optional.of(o),
-                settings.inlineSourceMap(), settings.programs());
+                settings.inlineSourceMap(), settings.programs(), settings.exactStop());
     }
 
     /**
@@ -271,7 +295,7 @@ public final class Compiler {
         }
         MachineProfile p = s.profile().withStickout(blank.get().stickout());
         return p == s.profile() ? s
-                : new Settings(s.tables(), p, s.dialect(), s.simulation(), s.inlineSourceMap(), s.programs());
+                : new Settings(s.tables(), p, s.dialect(), s.simulation(), s.inlineSourceMap(), s.programs(), s.exactStop());
     }
 
     private static void flush(List<Instruction> lines, java.util.function.Consumer<Instruction> out) {

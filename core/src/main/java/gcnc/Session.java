@@ -158,6 +158,15 @@ public final class Session {
                         .onUnmappableCharacter(java.nio.charset.CodingErrorAction.REPLACE)), 1 << 16);
     }
 
+    /**
+     * Check, translate and simulate with every motion stopped at its end whatever the profile says: what
+     * {@code gcnc run} sends for now, since it follows a program sequence by sequence (docs/run.md).
+     */
+    public Compiler.Result compileExactStop(Reader program, Optional<SimOptions> simulation,
+                                            java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
+        return Compiler.compile(program, settings(simulation, false).withExactStop(), out);
+    }
+
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {
         Compiler.Settings s = new Compiler.Settings(tables, profile, options.dialect(), simulation, inlineSourceMap);
         return programs.map(s::withPrograms).orElse(s);

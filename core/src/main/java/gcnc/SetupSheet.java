@@ -89,6 +89,7 @@ public final class SetupSheet {
         row(w, "Blank", blank(s));
         row(w, "Work zero", workZero(s));
         row(w, "Cycle time (estimate)", clock(sim.cycleSeconds()));
+        row(w, "Cycle time stopping at every move", clock(sim.exactStopSeconds()));
         row(w, "Maximum spindle speed", Double.isNaN(s.maxRpm()) ? "not known" : Math.round(s.maxRpm()) + " rpm");
         row(w, "Envelope (as programmed)", envelope());
         row(w, "Envelope (machine frame)", Double.isNaN(sim.xMinMm()) ? "no motion" : machineEnvelope());

@@ -98,7 +98,7 @@ class ControllerPathTest {
             }
         }
         assertEquals(simulated, ran);
-        assertTrue(ran.size() >= 5, ran.toString());
+        assertTrue(ran.size() >= 3, ran.toString()); // blended: the approach, the cut and the retract at least
         Files.walk(dir).sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
     }
 }

@@ -112,7 +112,8 @@ class SimulatorThreadTest {
         }
 
         List<String> expected = render(d);
-        assertEquals(expected, render(threaded.diagnostics()), what);
+        // the compile also holds its DMC against the controller's memory (LimitCheck): E238 is not the simulator's
+        assertEquals(expected, render(threaded.diagnostics()).stream().filter(x -> !x.startsWith("E238@")).toList(), what);
         assertEquals(translated ? Optional.of(sim.report()) : Optional.empty(), threaded.simulation(), what);
         return expected;
     }

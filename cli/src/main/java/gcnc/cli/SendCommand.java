@@ -161,7 +161,8 @@ final class SendCommand implements Callable<Integer> {
             outputs.mapSource(file.getFileName().toString(), file);
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file)) {
-                r = setup.session().withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, false,
+                // exact stop: the sender follows the program sequence by sequence, one motion each (docs/run.md)
+                r = setup.session().withPrograms(SourceFiles.programsFolder(file)).compileExactStop(in, sim,
                         mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
             }
             if (!r.ok()) {

@@ -19,9 +19,16 @@ final class SimSummary {
     static String format(SimReport r, Phrases phrases) {
         String envelope = Double.isNaN(r.xMinMm()) ? phrases.get("simulation.no_motion") : envelope(r, phrases);
         long s = Math.round(r.cycleSeconds());
+        long exact = Math.round(r.exactStopSeconds());
+        // what blending gains: the same program with every move stopped at its end, when it differs
+        String stops = exact > s ? phrases.get("simulation.exact_stop", clock(exact)) : "";
         return phrases.get("simulation.summary", phrases.count(r.sequences(), "sequence"),
                 phrases.count(r.segments(), "segment"), phrases.count(r.findings(), "finding"), envelope,
-                s / 3600 + ":" + two(s / 60 % 60) + ":" + two(s % 60));
+                clock(s)) + stops;
+    }
+
+    private static String clock(long s) {
+        return s / 3600 + ":" + two(s / 60 % 60) + ":" + two(s % 60);
     }
 
     private static String envelope(SimReport r, Phrases phrases) {

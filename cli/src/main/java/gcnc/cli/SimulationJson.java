@@ -32,6 +32,7 @@ final class SimulationJson {
             json.name("segments").value(r.segments());
             json.name("findings").value(r.findings());
             json.name("cycleSeconds").value(round(r.cycleSeconds(), 3));
+            json.name("exactStopSeconds").value(round(r.exactStopSeconds(), 3)); // every move stopped: what blending gains
             boolean moved = !Double.isNaN(r.xMinMm());
             ProgramEnvelope p = r.program();
             if (moved && p != null) {

@@ -21,9 +21,9 @@ import java.util.regex.Pattern;
 final class DmcCommands implements Command.Visitor<Void> {
     /** The heads of the commands of gcnc.dmc that take arguments; {@code TOOL=} too. */
     private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
-            "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA");
+            "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV");
     /** The commands whose arguments may be expressions here: each is evaluated to a number. */
-    private static final Set<String> NUMERIC = Set.of("VP", "CR", "VS", "VA", "VD", "WT", "SB", "CB", "OF");
+    private static final Set<String> NUMERIC = Set.of("VP", "CR", "VS", "VA", "VD", "WT", "SB", "CB", "OF", "AV");
     private static final Pattern LITERAL = Pattern.compile("[+-]?[0-9]+(\\.[0-9]+)?");
 
     private final Controller c;

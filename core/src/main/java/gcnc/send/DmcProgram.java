@@ -227,6 +227,10 @@ public final class DmcProgram {
     /** The comma-separated arguments after a directive's two letters; an empty one is NaN. */
     static double[] args(String line) {
         String t = line.strip().substring(2).strip();
+        int speeds = t.indexOf('<') >= 0 ? t.indexOf('<') : t.indexOf('>');
+        if (speeds >= 0) {
+            t = t.substring(0, speeds).strip(); // a segment's own speeds (VP a,b <o >p) are not its arguments
+        }
         if (t.isEmpty()) {
             return new double[0];
         }

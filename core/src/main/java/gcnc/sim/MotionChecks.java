@@ -254,10 +254,17 @@ final class MotionChecks {
         }
         double entry = 0;
         double secondsBefore = seconds;
+        long lastBlock = -1;
         for (int k = 0; k < segs.size(); k++) {
             Segment s = segs.get(k);
             // a sequence may carry several blocks: each segment's findings go to its own block's line
             int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
+            long block = s.source() == null ? -1 : s.source().block();
+            if (k > 0 && (at != polyLine || block != lastBlock)) {
+                // one finding per check per motion's block: a sequence of several blocks reports each one's
+                chuckHit = tailHit = stockHit = holderHit = backHit = false;
+            }
+            lastBlock = block;
             if (frames != null && frames[k] != null && frames[k] != frame) {
                 frame = frames[k];
                 terms.frame(frame);

@@ -130,6 +130,14 @@ public final class Simulator {
         }
     }
 
+    /** The sequences the planner held back to the end of the program's blocks. */
+    public void held(List<Instruction> lines) {
+        dmc.checkedByCaller = true;
+        run(lines);
+        dmc.checkedByCaller = false;
+        closeSequences(lastLine);
+    }
+
     public void end(List<Instruction> footer) {
         run(footer);
         closeSequences(lastLine);

@@ -28,7 +28,7 @@ public final class SimulatorThread implements AutoCloseable {
     /** Ends the queue (compared by identity). */
     private static final List<Step> DONE = new ArrayList<>();
 
-    private enum Kind { BEGIN, BLOCK, END, OUTPUT_ONLY }
+    private enum Kind { BEGIN, BLOCK, HELD, END, OUTPUT_ONLY }
 
     /** One call to make on the simulator: the program's header, a block, or the footer; or lines only to hand on. */
     private record Step(Kind kind, CheckedBlock block, List<Instruction> lines, boolean settled) {
@@ -72,6 +72,11 @@ public final class SimulatorThread implements AutoCloseable {
     /** @param settled whether every motion meant so far has been emitted (the planner holds none back) */
     public void block(CheckedBlock intended, List<Instruction> emitted, boolean settled) throws InterruptedIOException {
         add(new Step(Kind.BLOCK, intended, emitted, settled));
+    }
+
+    /** The sequences the planner held back to the end of the program's blocks. */
+    public void held(List<Instruction> lines) throws InterruptedIOException {
+        add(new Step(Kind.HELD, null, lines));
     }
 
     public void end(List<Instruction> footer) throws InterruptedIOException {
@@ -153,6 +158,7 @@ public final class SimulatorThread implements AutoCloseable {
         switch (s.kind()) {
             case BEGIN -> simulator.begin(s.lines());
             case BLOCK -> simulator.block(s.block(), s.lines(), s.settled());
+            case HELD -> simulator.held(s.lines());
             case END -> simulator.end(s.lines());
             case OUTPUT_ONLY -> {
             }

@@ -241,6 +241,7 @@ final class Analysis {
     private static JsonObject summary(SimReport s) {
         JsonObject o = new JsonObject();
         o.addProperty("cycleSeconds", finite(s.cycleSeconds()));
+        o.addProperty("exactStopSeconds", finite(s.exactStopSeconds()));
         o.addProperty("sequences", s.sequences());
         o.addProperty("segments", s.segments());
         o.addProperty("findings", s.findings());
