@@ -278,9 +278,10 @@ class CliTest {
         assertTrue(map.get(1).startsWith("# source sha256 "), map.get(1));
         assertTrue(map.get(map.size() - 1).startsWith("# dmc sha256 "), map.get(map.size() - 1));
         map = map.subList(2, map.size() - 1);
-        assertEquals("1 0", map.get(0), "DMC lines 1-5 are the header");
-        assertEquals("6 4", map.get(1), "DMC line 6 (CB4) comes from G-code line 4 (N30 M11)");
-        assertEquals(text.lines().count() + " 0", map.get(map.size() - 1), "the last line, EN, is the footer");
+        assertEquals("1 0", map.get(0), "DMC lines 1-16 are the header (vector setup, spindle output, limits, homing)");
+        assertEquals("17 4", map.get(1), "DMC line 17 (gline=4, then CB4) comes from G-code line 4 (N30 M11)");
+        assertEquals((text.lines().toList().indexOf("EN") + 1) + " 0", map.get(map.size() - 1),
+                "from EN on (the routines, the handlers) is the footer");
         Run inline = gcnc("compile", "--source-map", p.toString(), "-o", p.resolveSibling("inline.dmc").toString());
         assertEquals(0, inline.status(), inline.err());
         assertTrue(Files.readString(p.resolveSibling("inline.dmc")).contains("NO L7\n"));

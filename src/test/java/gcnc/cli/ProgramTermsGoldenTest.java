@@ -98,7 +98,8 @@ class ProgramTermsGoldenTest {
         Compiler.Result r = session.compile(program("pin-inch"));
         SetupSheet sheet = new SetupSheet("pin-inch.nc", "O1301", session.profile(), r.simulation().orElseThrow(),
                 List.of());
-        assertEquals("O1301, cycle about 0:00:44; X -0.0600..16.6929 (diameter), Z -1.2000..14.2913 in from work zero;"
+        // each of its two tools starts the spindle: 2 s for it to reach speed before the first feed
+        assertEquals("O1301, cycle about 0:00:48; X -0.0600..16.6929 (diameter), Z -1.2000..14.2913 in from work zero;"
                 + " 2 tools; no findings", sheet.summary());
     }
 

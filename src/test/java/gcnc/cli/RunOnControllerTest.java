@@ -202,7 +202,7 @@ class RunOnControllerTest {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
             assertEquals(0, r.status(), r.all());
-            assertTrue(r.out().contains("downloaded 41 lines (DL), read back identical (UL)"), r.out());
+            assertTrue(r.out().contains("downloaded 87 lines (DL), read back identical (UL)"), r.out());
             assertTrue(r.out().contains("ran to the end"), r.out());
             // the motors are off at power-up: a warning, the program's SH turns them on
             assertTrue(r.err().contains("warning[E829]"), r.err());
@@ -365,7 +365,7 @@ class RunOnControllerTest {
             Run r = gcnc("", "run", part(b.toString()).toString(), "--machine", machine.toString(), "--tcp",
                     "127.0.0.1:" + server.getLocalPort());
             assertEquals(2, r.status(), r.all());
-            assertTrue(r.err().contains("error[E819]: the program needs 2216 program lines and the controller has 2000 (DMC4040 Rev 1.0h)"),
+            assertTrue(r.err().contains("error[E819]: the program needs 2697 program lines and the controller has 2000 (DMC4040 Rev 1.0h)"),
                     r.err());
             assertTrue(downloaded.isEmpty(), downloaded.toString());
         }

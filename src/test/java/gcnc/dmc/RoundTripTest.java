@@ -57,8 +57,37 @@ class RoundTripTest {
     }
 
     @Test
+    void theMachineCommandsPrintAndReadBack() {
+        Command[] all = {
+            new Command.AnalogOut(1, Fixed.exactly(3, 4)),
+            new Command.AxisSetting(Command.Setting.KP, 2, Fixed.of(0)),
+            new Command.AxisSetting(Command.Setting.ER, 3, Fixed.of(-1)),
+            new Command.SoftLimit(false, 'X', -5000, 'Y', -2500),
+            new Command.SoftLimit(true, 'Y', 107500, 'Z', 285000),
+            new Command.Jump("FAULT", java.util.Optional.empty()),
+            new Command.Jump("NOHOME", java.util.Optional.of(new Command.Condition.PositionOff('X', 340000, 10))),
+            new Command.Jump("NOHOME", java.util.Optional.of(new Command.Condition.PositionOff('Y', -105000, 10))),
+            new Command.Jump("NOHOME", java.util.Optional.of(new Command.Condition.PositionOff('Y', 0, 1))),
+            new Command.Jump("SPOK", java.util.Optional.of(new Command.Condition.InputIs(3, true))),
+            new Command.Jump("SPW", java.util.Optional.of(new Command.Condition.Before("twt"))),
+            new Command.Call("TURRET"),
+            new Command.Message("NOT AT HOME", List.of()),
+            new Command.Message("COMMAND ERROR AT G-CODE LINE", List.of("gline", "_TC")),
+            new Command.Stop(), new Command.Abort(), new Command.ClearStack(),
+            new Command.SetVariable("gline", 120), new Command.SetDeadline("twt", 8000)};
+        for (Command c : all) {
+            assertEquals(c, read(DmcPrinter.print(c)), DmcPrinter.print(c));
+        }
+        assertEquals("JP #NOHOME,@ABS[_TPY+105000]>10", DmcPrinter.print(all[7]));
+        assertEquals("BL -5000,-2500", DmcPrinter.print(all[3]));
+        assertEquals("FL ,107500,285000", DmcPrinter.print(all[4]));
+        assertEquals("ER ,,,-1", DmcPrinter.print(all[2]));
+    }
+
+    @Test
     void whatItCannotReadIsReportedNotGuessed() {
-        for (String bad : new String[] {"VP 1.5,2", "CR -5,0,90", "OF ,,12", "WT -1", "SB", "GA C", "VS 0", "#9X"}) {
+        for (String bad : new String[] {"VP 1.5,2", "CR -5,0,90", "OF ,,12", "WT -1", "SB", "GA C", "VS 0", "#9X",
+            "AO 1,12", "KP 1,2", "BL 5", "JP #A,x>1", "JS #A,@IN[1]=1", "MG text", "AB", "ST X", "ZS 1"}) {
             List<String> faults = new ArrayList<>();
             assertEquals(null, DmcReader.read(bad, (code, args) -> faults.add(code.name())), bad);
             assertEquals(List.of("E301_SIM_BAD_ARGUMENTS"), faults, bad);

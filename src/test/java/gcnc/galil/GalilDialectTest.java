@@ -39,11 +39,24 @@ class GalilDialectTest {
         List<String> out = Fixtures.run("galil", AT_ORIGIN, d, motions(3, a, rapid(Point.ORIGIN, a)),
                 motions(4, b, new Motion.Linear(false, a, b, new Feed(0.1, 1666.7))));
         // Generic: Galil X = lathe Z, Y = lathe X; VP is relative to where each sequence starts; the
-        // feed of 1666.7 counts/s is written at VS's resolution, even and not faster: 1666
+        // feed of 1666.7 counts/s is written at VS's resolution, even and not faster: 1666.
+        // The spindle's channel C is an open-loop output (zero gains, no error limit), zeroed; the
+        // soft limits are the travel in counts; the program refuses to start away from home.
         assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 999424", "VD 999424",
-                "VS 100000", "VP 2000,1000", "VE", "BGS", "AMS",
-                "VS 1666", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out);
+                "gline=0", "KP ,,0", "KI ,,0", "KD ,,0", "ER ,,-1", "SH C", "OF ,,0.0000",
+                "BL 0,-2000", "FL 350000,110000", "JP #NOHOME,@ABS[_TPX-0]>10", "JP #NOHOME,@ABS[_TPY-0]>10",
+                "gline=3", "VS 100000", "VP 2000,1000", "VE", "BGS", "AMS",
+                "gline=4", "VS 1666", "VP -1500,0", "VE", "BGS", "AMS", "EN"), out.subList(0, out.indexOf("EN") + 1));
+        assertEquals(HEADER, out.indexOf("gline=3"));
         assertEquals(0, d.size());
+    }
+
+    /** The generic profile's header: the vector setup, the spindle's output, the soft limits, the homing check. */
+    static final int HEADER = 16;
+
+    /** The lines the blocks wrote (and the zero volts of the end): between the header and EN. */
+    static List<String> body(List<String> out) {
+        return out.subList(HEADER, out.indexOf("EN"));
     }
 
     @Test
@@ -65,8 +78,9 @@ class GalilDialectTest {
                 List.of(new MCall(9)), Point.ORIGIN);
         List<String> out = Fixtures.run("galil", AT_ORIGIN, new Diagnostics(), b);
         // 1200 rpm / 410 rpm per volt = 2.9268 V on C, the third channel; M41 has no outputs.
-        assertEquals(List.of("OF ,,2.9268", "TOOL=3", "CB4", "CB2", "SB1", "WT 250", "CB3", "CB7"),
-                out.subList(5, out.size() - 1));
+        // gline first; the spindle still turns at the end: zero volts before EN
+        assertEquals(List.of("gline=9", "OF ,,2.9268", "TOOL=3", "CB4", "CB2", "SB1", "WT 250", "CB3", "CB7",
+                "OF ,,0.0000"), body(out));
     }
 
     @Test
@@ -78,7 +92,7 @@ class GalilDialectTest {
         CheckedBlock max = new CheckedBlock(6, OptionalDouble.of(4100), OptionalInt.empty(), List.of(),
                 List.of(), List.of(), Point.ORIGIN);
         List<String> out = Fixtures.run("galil", AT_ORIGIN, d, over, max);
-        assertEquals(List.of("OF ,,9.9980"), out.stream().filter(l -> l.startsWith("OF")).toList());
+        assertEquals(List.of("OF ,,9.9980", "OF ,,0.0000"), body(out).stream().filter(l -> l.startsWith("OF")).toList());
         List<Diagnostic> all = d.sorted();
         assertEquals(Code.E203_SPINDLE_VOLTS, all.get(0).code());
         assertEquals(Span.of(5, 1), all.get(0).span());
@@ -143,13 +157,14 @@ class GalilDialectTest {
         g.block(motions(17, a, rapid(Point.ORIGIN, a)), out::add);
         g.block(motions(18, a), out::add); // nothing to emit: no comment either
         g.end(out::add);
-        assertEquals("NO L17", out.get(5).text());
-        assertEquals(17, out.get(5).source().line());
-        assertEquals("VS 100000", out.get(6).text());
-        assertEquals(17, out.get(6).source().line());
-        assertEquals(0, out.get(6).source().motion(), "the VS carries out the block's first motion");
-        assertEquals("EN", out.get(out.size() - 1).text());
-        assertEquals(gcnc.dmc.Source.NONE, out.get(out.size() - 1).source());
+        assertEquals("NO L17", out.get(HEADER).text());
+        assertEquals(17, out.get(HEADER).source().line());
+        assertEquals("gline=17", out.get(HEADER + 1).text(), "the line running, for the handlers, after the mark");
+        assertEquals("VS 100000", out.get(HEADER + 2).text());
+        assertEquals(17, out.get(HEADER + 2).source().line());
+        assertEquals(0, out.get(HEADER + 2).source().motion(), "the VS carries out the block's first motion");
+        Instruction end = out.stream().filter(l -> l.text().equals("EN")).findFirst().orElseThrow();
+        assertEquals(gcnc.dmc.Source.NONE, end.source());
         assertEquals(1, out.stream().filter(l -> l.text().startsWith("NO")).count());
     }
 
@@ -164,10 +179,10 @@ class GalilDialectTest {
         g.begin(sink);
         g.block(motions(4, a, rapid(Point.ORIGIN, a)), sink);
         g.end(sink);
-        // Lines 1-5 are the header, 6-10 the sequence of line 4, 11 EN.
-        assertEquals(List.of("1 0", "6 4", "11 0"), mapLines);
-        assertEquals(11, out.size());
-        assertEquals(11, map.lines());
+        // Lines 1-16 are the header, 17-22 gline and the sequence of line 4, 23 EN and the routines.
+        assertEquals(List.of("1 0", "17 4", "23 0"), mapLines);
+        assertEquals("EN", out.get(22).text());
+        assertEquals(out.size(), map.lines());
     }
 
     @Test

@@ -70,7 +70,7 @@ class StudioBrowserTest {
         wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
         // checked and simulated: the error list says so, and the DMC is there
         wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "no errors"));
-        wait.until(d -> d.findElements(By.cssSelector("#dmc li")).size() == 294);
+        wait.until(d -> d.findElements(By.cssSelector("#dmc li")).size() == 388); // the header, gline per block, the handlers (galil.md)
     }
 
     private void dismissAnyAlert() {
@@ -209,7 +209,7 @@ class StudioBrowserTest {
         assertEquals(Files.readString(cli), Files.readString(dir.resolve("bishop.dmc")));
         assertEquals(Files.readString(Path.of(cli + ".map")), Files.readString(dir.resolve("bishop.dmc.map")));
         String summary = browser.findElement(By.id("summary")).getText();
-        assertTrue(summary.contains("Cycle time: 32.8 s"), summary);
+        assertTrue(summary.contains("Cycle time: 34.8 s"), summary); // with the 2 s wait for the spindle after M03
         Browser.screenshot(browser, "compile");
     }
 

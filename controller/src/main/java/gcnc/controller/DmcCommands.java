@@ -406,4 +406,64 @@ final class DmcCommands implements Command.Visitor<Void> {
         }
         return null;
     }
+
+    // The machine around the motion (gcnc.galil.MachineCode): program flow, messages, stops, the
+    // servo settings, soft limits and assignments are the controller's own statements (Statements,
+    // Expressions), which run them from the text before this class is asked (handles() is false
+    // for their heads); reaching one here is a command this controller does not model.
+
+    @Override
+    public Void analogOut(Command.AnalogOut x) {
+        return notModelled(); // AO addresses a Modbus device: none is attached to the virtual controller
+    }
+
+    @Override
+    public Void axisSetting(Command.AxisSetting x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void softLimit(Command.SoftLimit x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void jump(Command.Jump x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void call(Command.Call x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void message(Command.Message x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void stop(Command.Stop x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void abort(Command.Abort x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void clearStack(Command.ClearStack x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void setVariable(Command.SetVariable x) {
+        return notModelled();
+    }
+
+    @Override
+    public Void setDeadline(Command.SetDeadline x) {
+        return notModelled();
+    }
 }

@@ -385,6 +385,14 @@ public enum Code {
     /** Checker: the chamfered pull-out (M23) would move X faster than the machine's maximum feed. */
     E242_THREAD_CHAMFER_TOO_FAST(242),
 
+    // 250-259: the machine around the motion (gcnc.galil.MachineCode; docs/galil.md).
+    /** Warning: a dwell shorter than the 2 ms WT takes (G04 P1): the DMC waits 2 ms, as the clamp says. */
+    E250_DWELL_BELOW_WT(250),
+    /** The spindle speed needs more than the 10 V an analog output (AO) gives. */
+    E251_SPINDLE_AO_VOLTS(251),
+    /** Warning: the spindle speed needs between 9.998 V and 10 V; AO is clamped to 9.998 V. */
+    E252_SPINDLE_AO_CLAMPED(252),
+
     // 300-399: simulator (sim package).
     /** A DMC line the simulator does not know. */
     E300_SIM_UNKNOWN_INSTRUCTION(300),
@@ -481,6 +489,16 @@ public enum Code {
     E424_OUTPUT_BEYOND_MODEL(424),
     /** Profile: galil.firmware is not a firmware revision (1.2a, 1.0c ...). */
     E425_FIRMWARE_REVISION(425),
+    /** Profile: spindle.output is neither OF (on spindle.axis) nor AO n. */
+    E430_SPINDLE_OUTPUT(430),
+    /** Profile: spindle.at_speed is neither IN n, a dwell in seconds, nor none. */
+    E431_SPINDLE_AT_SPEED(431),
+    /** Profile: a turret key without the others it needs (station outputs, strobe, in-position input). */
+    E432_TURRET_INCOMPLETE(432),
+    /** Profile: the turret's station outputs cannot code every station of tools.count. */
+    E433_TURRET_STATIONS(433),
+    /** Profile: homing.check is neither position, IN n, nor none. */
+    E434_HOMING_CHECK(434),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */

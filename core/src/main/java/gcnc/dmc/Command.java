@@ -291,6 +291,111 @@ public sealed interface Command {
         }
     }
 
+    // ---- The machine around the motion (docs/galil.md "Spindle", "Tool changes", "Homing", "Handlers") ----
+
+    /** {@code AO n,v}: analog output n at v volts; the spindle drive's speed reference on a controller with analog outputs. */
+    record AnalogOut(int output, Fixed volts) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.analogOut(this);
+        }
+    }
+
+    /** The servo settings gcnc writes for one channel: the gains and the position error limit. */
+    enum Setting { KP, KI, KD, ER }
+
+    /**
+     * {@code KP ,,0}: a servo setting of the channel at {@code channel} (0 = A/X). gcnc writes
+     * {@code KP/KI/KD 0} and {@code ER -1} on the spindle's channel only, so that {@code OF} there is
+     * an open-loop voltage and the turning spindle is no position error.
+     */
+    record AxisSetting(Setting setting, int channel, Fixed value) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.axisSetting(this);
+        }
+    }
+
+    /** {@code BL a,b} (reverse) or {@code FL a,b} (forward): the software travel limits of two axes, counts. */
+    record SoftLimit(boolean forward, char first, long firstCount, char second, long secondCount) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.softLimit(this);
+        }
+    }
+
+    /** {@code JP #L} or {@code JP #L,condition}: jump to a label (when the condition holds). */
+    record Jump(String label, Optional<Condition> when) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.jump(this);
+        }
+    }
+
+    /** {@code JS #L}: call the routine at a label; its {@code EN} returns here. */
+    record Call(String label) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.call(this);
+        }
+    }
+
+    /** {@code MG "text",a,b}: a message to the host, the text then the values of the operands (variables, {@code _TC}). */
+    record Message(String text, java.util.List<String> operands) implements Command {
+        public Message {
+            operands = java.util.List.copyOf(operands);
+        }
+
+        public <R> R accept(Visitor<R> v) {
+            return v.message(this);
+        }
+    }
+
+    /** {@code ST}: a decelerating stop of every axis. */
+    record Stop() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.stop(this);
+        }
+    }
+
+    /** {@code AB 1}: abort the motion at once, not the program (the program goes on to report and end). */
+    record Abort() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.abort(this);
+        }
+    }
+
+    /** {@code ZS}: clear the subroutine stack, so that an error routine's {@code EN} ends the program instead of returning. */
+    record ClearStack() implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.clearStack(this);
+        }
+    }
+
+    /** {@code name=n}: a DMC variable set to a whole number (gcnc's {@code gline}: the G-code line running). */
+    record SetVariable(String name, long value) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.setVariable(this);
+        }
+    }
+
+    /** {@code name=TIME+n}: a deadline n samples (about 1 ms each at TM 1000) from now, for a wait with a timeout. */
+    record SetDeadline(String name, long samples) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.setDeadline(this);
+        }
+    }
+
+    /** What a conditional {@code JP} tests. */
+    sealed interface Condition {
+        /** {@code @IN[n]=1} (on) or {@code @IN[n]=0}. */
+        record InputIs(int input, boolean on) implements Condition {
+        }
+
+        /** {@code TIME<name}: the deadline in the variable is not reached yet. */
+        record Before(String deadline) implements Condition {
+        }
+
+        /** {@code @ABS[_TPX-340000]>10}: the axis stands further than the tolerance from a count. */
+        record PositionOff(char axis, long counts, long tolerance) implements Condition {
+        }
+    }
+
     /** What {@code MF}/{@code MR} waits for: a count, or a variable's value. */
     sealed interface Operand {
         record Count(long counts) implements Operand {
@@ -361,5 +466,27 @@ public sealed interface Command {
         R afterMotion(AfterMotion c);
 
         R end(End c);
+
+        R analogOut(AnalogOut c);
+
+        R axisSetting(AxisSetting c);
+
+        R softLimit(SoftLimit c);
+
+        R jump(Jump c);
+
+        R call(Call c);
+
+        R message(Message c);
+
+        R stop(Stop c);
+
+        R abort(Abort c);
+
+        R clearStack(ClearStack c);
+
+        R setVariable(SetVariable c);
+
+        R setDeadline(SetDeadline c);
     }
 }

@@ -160,7 +160,76 @@ public final class DmcPrinter {
         public String end(End c) {
             return "EN";
         }
+
+        public String analogOut(AnalogOut c) {
+            StringBuilder sb = new StringBuilder(16).append("AO ").append(c.output()).append(',');
+            c.volts().appendTo(sb);
+            return sb.toString();
+        }
+
+        public String axisSetting(AxisSetting c) {
+            StringBuilder sb = new StringBuilder(16).append(c.setting().name()).append(' ');
+            for (int i = 0; i < c.channel(); i++) {
+                sb.append(',');
+            }
+            c.value().appendTo(sb);
+            return sb.toString();
+        }
+
+        public String softLimit(SoftLimit c) {
+            return (c.forward() ? "FL " : "BL ") + places(new char[] {c.first(), c.second()},
+                    Long.toString(c.firstCount()), Long.toString(c.secondCount()));
+        }
+
+        public String jump(Jump c) {
+            return "JP #" + c.label() + c.when().map(w -> "," + condition(w)).orElse("");
+        }
+
+        public String call(Call c) {
+            return "JS #" + c.label();
+        }
+
+        public String message(Message c) {
+            StringBuilder sb = new StringBuilder(64).append("MG \"").append(c.text()).append('"');
+            for (String o : c.operands()) {
+                sb.append(',').append(o);
+            }
+            return sb.toString();
+        }
+
+        public String stop(Stop c) {
+            return "ST";
+        }
+
+        public String abort(Abort c) {
+            return "AB 1";
+        }
+
+        public String clearStack(ClearStack c) {
+            return "ZS";
+        }
+
+        public String setVariable(SetVariable c) {
+            return c.name() + "=" + c.value();
+        }
+
+        public String setDeadline(SetDeadline c) {
+            return c.name() + "=TIME+" + c.samples();
+        }
     };
+
+    /** A {@code JP} condition as DMC writes it. */
+    static String condition(Condition w) {
+        if (w instanceof Condition.InputIs in) {
+            return "@IN[" + in.input() + "]=" + (in.on() ? 1 : 0);
+        }
+        if (w instanceof Condition.Before b) {
+            return "TIME<" + b.deadline();
+        }
+        Condition.PositionOff p = (Condition.PositionOff) w;
+        String at = p.counts() < 0 ? "+" + (-p.counts()) : "-" + p.counts();
+        return "@ABS[_TP" + p.axis() + at + "]>" + p.tolerance();
+    }
 
     /** {@code <o >p} after a segment's arguments, each only when given. */
     private static String speeds(StringBuilder sb, Speeds s) {

@@ -28,6 +28,15 @@ public final class DmcReader {
     private static final Pattern SYNC = Pattern.compile(
             "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})([+-][0-9]{1,7})?");
     private static final Pattern VARIABLE = Pattern.compile("[a-z][a-z0-9]{0,7}");
+    private static final Pattern SET = Pattern.compile("([a-z][a-z0-9]{0,7})=(-?[0-9]{1,10})");
+    private static final Pattern DEADLINE = Pattern.compile("([a-z][a-z0-9]{0,7})=TIME\\+([0-9]{1,10})");
+    private static final Pattern JUMP = Pattern.compile("#([A-Za-z][A-Za-z0-9_]{0,7})(?:,(.+))?");
+    private static final Pattern INPUT_IS = Pattern.compile("@IN\\[([0-9]{1,3})\\]=([01])");
+    private static final Pattern BEFORE = Pattern.compile("TIME<([a-z][a-z0-9]{0,7})");
+    private static final Pattern POSITION_OFF = Pattern.compile(
+            "@ABS\\[_TP([A-HXYZW])([+-])([0-9]{1,10})\\]>([0-9]{1,10})");
+    /** {@code MG "text"} then operands: variables or underscore operands such as {@code _TC}. */
+    private static final Pattern MESSAGE = Pattern.compile("\"([^\"]*)\"((?:,(?:[a-z][a-z0-9]{0,7}|_[A-Z]{2,3}[A-HS]?))*)");
 
     /** Where the reader reports a line it cannot read. */
     @FunctionalInterface
@@ -71,6 +80,14 @@ public final class DmcReader {
             return null;
         }
         if (Character.isLowerCase(t.charAt(0)) && t.indexOf('=') > 0) {
+            Matcher set = SET.matcher(t);
+            if (set.matches()) {
+                return new SetVariable(set.group(1), Long.parseLong(set.group(2)));
+            }
+            Matcher deadline = DEADLINE.matcher(t);
+            if (deadline.matches()) {
+                return new SetDeadline(deadline.group(1), Long.parseLong(deadline.group(2)));
+            }
             return syncPoint(t, faults);
         }
         String cmd = t.substring(0, 2);
@@ -140,6 +157,34 @@ public final class DmcReader {
                 return gearRatio(args, t, faults);
             case "PA":
                 return positionAbsolute(args, t, faults);
+            case "AO":
+                return analogOut(args, t, faults);
+            case "KP":
+            case "KI":
+            case "KD":
+            case "ER":
+                return axisSetting(Setting.valueOf(cmd), args, t, faults);
+            case "BL":
+            case "FL":
+                return softLimit(cmd, args, t, faults);
+            case "JP":
+            case "JS":
+                return jump(cmd, args, t, faults);
+            case "MG": {
+                Matcher m = MESSAGE.matcher(args);
+                if (!m.matches()) {
+                    return bad(faults, cmd, t);
+                }
+                String ops = m.group(2);
+                return new Message(m.group(1), ops.isEmpty() ? java.util.List.of()
+                        : java.util.List.of(ops.substring(1).split(",")));
+            }
+            case "ST":
+                return args.isEmpty() ? new Stop() : bad(faults, cmd, t);
+            case "AB":
+                return args.equals("1") ? new Abort() : bad(faults, cmd, t); // gcnc aborts the motion only
+            case "ZS":
+                return args.isEmpty() ? new ClearStack() : bad(faults, cmd, t);
             default:
                 // BGS and AMS are read as BG S and AM S above; anything else is not a command gcnc writes
                 faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
@@ -361,6 +406,79 @@ public final class DmcReader {
             return bad(faults, "PA", text);
         }
         return new PositionAbsolute(Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]), q.unscaled());
+    }
+
+    private static Command analogOut(String args, String text, Faults faults) {
+        int comma = args.indexOf(',');
+        int n = comma < 0 ? -1 : integer(args.substring(0, comma).strip(), 0, 99);
+        Fixed v = comma < 0 ? null : Fixed.parse(args, comma + 1, args.length(), false);
+        if (n < 0 || v == null || Math.abs(v.value()) > 9.9998) {
+            return bad(faults, "AO", text);
+        }
+        return new AnalogOut(n, v);
+    }
+
+    private static Command axisSetting(Setting setting, String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 1);
+        Fixed v = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), false);
+        if (v == null) {
+            return bad(faults, setting.name(), text);
+        }
+        return new AxisSetting(setting, at[0], v);
+    }
+
+    private static Command softLimit(String cmd, String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 2);
+        Fixed p = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), true);
+        Fixed q = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), true);
+        if (p == null || q == null) {
+            return bad(faults, cmd, text);
+        }
+        if (Math.abs(p.unscaled()) > INT32 || Math.abs(q.unscaled()) > INT32) {
+            faults.fault(Code.E310_SIM_COUNT_RANGE, text);
+            return null;
+        }
+        return new SoftLimit(cmd.equals("FL"), Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]),
+                q.unscaled());
+    }
+
+    private static Command jump(String cmd, String args, String text, Faults faults) {
+        Matcher m = JUMP.matcher(args);
+        if (!m.matches() || cmd.equals("JS") && m.group(2) != null) {
+            return bad(faults, cmd, text);
+        }
+        if (cmd.equals("JS")) {
+            return new Call(m.group(1));
+        }
+        if (m.group(2) == null) {
+            return new Jump(m.group(1), Optional.empty());
+        }
+        Condition when = condition(m.group(2));
+        return when == null ? bad(faults, cmd, text) : new Jump(m.group(1), Optional.of(when));
+    }
+
+    /** The conditions gcnc writes after {@code JP #L,}; null for any other. */
+    private static Condition condition(String c) {
+        Matcher m = INPUT_IS.matcher(c);
+        if (m.matches()) {
+            return new Condition.InputIs(Integer.parseInt(m.group(1)), m.group(2).equals("1"));
+        }
+        m = BEFORE.matcher(c);
+        if (m.matches()) {
+            return new Condition.Before(m.group(1));
+        }
+        m = POSITION_OFF.matcher(c);
+        if (m.matches()) {
+            long n = Long.parseLong(m.group(3));
+            if (n == 0 && m.group(2).equals("+")) {
+                return null; // gcnc writes _TPX-0
+            }
+            return new Condition.PositionOff(m.group(1).charAt(0), m.group(2).equals("-") ? n : -n,
+                    Long.parseLong(m.group(4)));
+        }
+        return null;
     }
 
     /** The whole number in s within [min, max], or -1. */

@@ -1,7 +1,6 @@
 package gcnc.galil;
 
 import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.dmc.Command;
@@ -24,13 +23,11 @@ import java.util.function.Consumer;
  * The default dialect: a standalone DMC program (docs/dmc-format.md, docs/galil.md). Each motion is
  * its own vector sequence ending in {@code VE / BGS / AMS}, so VP is simply the displacement from
  * where the controller stands, and outputs never switch while the axes move. The controller's
- * position is tracked in whole counts so rounding never accumulates.
+ * position is tracked in whole counts so rounding never accumulates. The machine around the
+ * motion (spindle output and wait, turret, dwell, soft limits, homing check, error handlers) is
+ * {@link MachineCode}'s.
  */
 final class GalilDialect implements Dialect {
-    /** The OF output range (galil-notes.md §1); a request up to 10 V is clamped with a warning. */
-    private static final double MAX_VOLTS = 9.998;
-    private static final double CLAMP_LIMIT = 10.0;
-
     private final MachineProfile profile;
     private final Diagnostics diagnostics;
     private final boolean inlineSourceMap;
@@ -40,6 +37,8 @@ final class GalilDialect implements Dialect {
     long posV;
     /** The profile's output directives of each M code, read once. */
     private final Map<Integer, List<Command>> outputs = new java.util.HashMap<>();
+    /** The spindle, the turret, the dwell, the soft limits, the homing check and the handlers. */
+    private final MachineCode machine;
 
     GalilDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
         this.profile = profile;
@@ -47,6 +46,7 @@ final class GalilDialect implements Dialect {
         this.inlineSourceMap = inlineSourceMap;
         this.frame = new GalilFrame(profile);
         this.limits = profile.controllerLimits();
+        this.machine = new MachineCode(profile, frame, diagnostics);
         this.posU = GalilNumbers.round(frame.u(profile.home()));
         this.posV = GalilNumbers.round(frame.v(profile.home()));
     }
@@ -61,6 +61,7 @@ final class GalilDialect implements Dialect {
                 Source.NONE));
         out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(acceleration(profile.deceleration()))),
                 Source.NONE));
+        machine.setup(out);
     }
 
     /** VA or VD as the controller takes it (a multiple of 1,024, rounded down), warned of at line 1 when that changes it. */
@@ -78,7 +79,7 @@ final class GalilDialect implements Dialect {
 
     @Override
     public void end(Consumer<Instruction> out) {
-        out.accept(new Instruction(new Command.End(), Source.NONE));
+        machine.finish(out);
     }
 
     @Override
@@ -90,12 +91,13 @@ final class GalilDialect implements Dialect {
                 spindle(b, b.spindleRpm().getAsDouble(), out);
             }
             if (b.tool().isPresent()) {
-                out.emit(new Command.ToolNumber(b.tool().getAsInt()));
+                machine.toolChange(b, b.tool().getAsInt(), out);
             }
-            outputs(b.before(), out);
+            outputs(b, b.before(), out);
         } else if (step instanceof Step.Alone s) {
             BlockWriter out = writer(s.block(), sink);
             out.motion(s.motion());
+            machine.beforeMotion(s.block().motions().get(s.motion()), out); // the wait for spindle speed
             motion(s.block(), s.block().motions().get(s.motion()), out);
             out.motion(-1);
         } else if (step instanceof Step.Group g) {
@@ -106,24 +108,35 @@ final class GalilDialect implements Dialect {
                 lower(new Step.Alone(p.block(), p.motion()), sink);
                 stop = null;
             } else {
-                new GroupWriter(this, sink).write(g);
+                gcnc.plan.Piece first = g.pieces().get(0);
+                machine.beforeMotion(first.block().motions().get(first.motion()), writer(first.block(), sink));
+                // gline=<line> where the group starts only: an assignment between buffered segments
+                // runs when it is read, not when the path gets there (docs/galil.md)
+                grouping = true;
+                try {
+                    new GroupWriter(this, sink).write(g);
+                } finally {
+                    grouping = false;
+                }
             }
         } else if (step instanceof Step.After s) {
             BlockWriter out = writer(s.block(), sink);
             out.motion(-1);
-            outputs(s.block().after(), out);
+            outputs(s.block(), s.block().after(), out);
         }
     }
 
     /** The writer of block {@code b}'s instructions: one per block, so that its inline map comment comes once. */
     BlockWriter writer(CheckedBlock b, Consumer<Instruction> sink) {
         if (writer == null || writer.block() != b) {
-            writer = new BlockWriter(sink, b, inlineSourceMap, blocks++);
+            writer = new BlockWriter(grouping ? sink : machine.marking(b, sink), b, inlineSourceMap, blocks++);
         }
         return writer;
     }
 
     private BlockWriter writer;
+    /** A multi-motion group is being written: its blocks after the first get no gline=<line> (MachineCode). */
+    private boolean grouping;
     /** The blocks written so far: each new one's number in the run (Source#block). */
     private long blocks;
 
@@ -155,25 +168,17 @@ final class GalilDialect implements Dialect {
         });
     }
 
+    /** The spindle's speed reference (also for G96 inside a group, GroupWriter): MachineCode's. */
     void spindle(CheckedBlock b, double rpm, BlockWriter out) {
-        double volts = rpm / profile.rpmPerVolt();
-        if (volts > CLAMP_LIMIT) {
-            diagnostics.error(Code.E203_SPINDLE_VOLTS, at(b), GalilNumbers.round(rpm), GalilNumbers.volts(volts));
-            return;
-        }
-        if (volts > MAX_VOLTS) {
-            diagnostics.report(Diagnostic.warning(Code.E204_SPINDLE_VOLTS_CLAMPED, at(b),
-                    GalilNumbers.round(rpm), GalilNumbers.volts(volts)));
-            volts = MAX_VOLTS;
-        }
-        out.emit(new Command.Offset(frame.spindleIndex(), Fixed.exactly(volts, 4)));
+        machine.spindleSpeed(b, rpm, out);
     }
 
-    private void outputs(List<MCall> calls, BlockWriter out) {
+    private void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
         for (MCall m : calls) {
             for (Command directive : outputs.computeIfAbsent(m.code(), this::directives)) {
                 out.emit(directive);
             }
+            machine.afterM(b, m, out);
         }
     }
 
@@ -344,10 +349,7 @@ final class GalilDialect implements Dialect {
     }
 
     private void dwell(CheckedBlock b, Motion.Dwell m, BlockWriter out) {
-        long ms = GalilNumbers.round(m.seconds() * 1000);
-        if (inRange(b, "WT", ms)) {
-            out.emit(new Command.Wait(ms));
-        }
+        machine.dwell(b, m.seconds(), out);
     }
 
     private void finishSequence(BlockWriter out) {

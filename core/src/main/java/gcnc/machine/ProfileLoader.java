@@ -148,6 +148,7 @@ public final class ProfileLoader {
                 machineZero, chuckByProgram, model, encoder(f, x, z),
                 noses(f, counts, x), threadChamfer(f));
         GalilModels.holds(p, f); // channels, speeds, accelerations and outputs the model has (E421-E424)
+        MachineIo.read(f, spindleAxis, p.tools(), p.galilModel()); // the spindle drive, turret, homing (E424, E430-E434)
         return p;
     }
 

@@ -148,16 +148,30 @@ final class Controller {
         return instruction.text();
     }
 
-    /** Whether the program has ended: E312 for the command, which then does nothing. */
+    /**
+     * Whether the program has ended: E312 for the command, which then does nothing. A label after
+     * {@code EN} starts a routine the main program reaches only by a jump or a fault (the homing
+     * refusal, the waits, the error handlers: docs/galil.md): its commands are not run by the replay.
+     */
     private boolean afterEnd() {
-        if (ended) {
+        if (ended && !routine) {
             out.report(Code.E312_SIM_AFTER_END, line, text());
         }
         return ended;
     }
 
+    /** A label after EN has been met: what follows is a routine, not run in the replay. */
+    private boolean routine;
+
+    /**
+     * The analog output that drives the spindle ({@code spindle.output = AO n}), or -1 when the
+     * spindle is the OF of its channel; set by the simulator from the profile.
+     */
+    int spindleAnalog = -1;
+
     private final Command.Visitor<Void> step = new Command.Visitor<>() {
         public Void label(Command.Label c) {
+            routine |= ended;
             return null;
         }
 
@@ -179,7 +193,8 @@ final class Controller {
         }
 
         public Void servoHere(Command.ServoHere c) {
-            if (!afterEnd() && !plane.sameChannels(c.axes())) {
+            boolean spindle = c.axes().length() == 1 && Plane.channel(c.axes().charAt(0)) == spindleChannel;
+            if (!afterEnd() && !spindle && !plane.sameChannels(c.axes())) {
                 out.report(Code.E313_SIM_VECTOR_PLANE, line, "SH", c.axes(), plane.letters);
             }
             return null;
@@ -250,7 +265,7 @@ final class Controller {
         }
 
         public Void offset(Command.Offset c) {
-            if (!afterEnd() && c.channel() == spindleChannel) {
+            if (!afterEnd() && c.channel() == spindleChannel && spindleAnalog < 0) {
                 volts = c.volts().value();
                 out.spindleVolts(volts, line);
             }
@@ -347,6 +362,78 @@ final class Controller {
         public Void end(Command.End c) {
             afterEnd();
             ended = true;
+            return null;
+        }
+
+        public Void analogOut(Command.AnalogOut c) {
+            if (!afterEnd() && c.output() == spindleAnalog) {
+                volts = c.volts().value();
+                out.spindleVolts(volts, line);
+            }
+            return null;
+        }
+
+        /** Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel takes them. */
+        public Void axisSetting(Command.AxisSetting c) {
+            if (!afterEnd() && c.channel() != spindleChannel) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, c.setting().name(), text());
+            }
+            return null;
+        }
+
+        public Void softLimit(Command.SoftLimit c) {
+            if (!afterEnd() && !plane.sameChannels("" + c.first() + c.second())) {
+                out.report(Code.E313_SIM_VECTOR_PLANE, line, c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
+                        plane.letters);
+            }
+            return null;
+        }
+
+        /**
+         * A conditional jump leaves for a routine when the machine is not ready (not at home, the
+         * spindle not at speed, the turret not in position): the replay's machine is ready, so the
+         * jump is not taken. An unconditional jump in the main program is not followed: E301.
+         */
+        public Void jump(Command.Jump c) {
+            if (!afterEnd() && c.when().isEmpty()) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "JP", text());
+            }
+            return null;
+        }
+
+        /** A call of a wait routine (spindle at speed, turret in position): the replay's machine answers at once. */
+        public Void call(Command.Call c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void message(Command.Message c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void stop(Command.Stop c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void abort(Command.Abort c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void clearStack(Command.ClearStack c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void setVariable(Command.SetVariable c) {
+            afterEnd();
+            return null;
+        }
+
+        public Void setDeadline(Command.SetDeadline c) {
+            afterEnd();
             return null;
         }
     };

@@ -68,6 +68,9 @@ public final class Simulator {
             dmc.encoderCounts = e.countsPerRev();
         });
         dmc.rpmPerVolt = profile.rpmPerVolt();
+        if (gcnc.machine.MachineIo.of(profile).drive() instanceof gcnc.machine.MachineIo.SpindleDrive.Analog a) {
+            dmc.spindleAnalog = a.output(); // the spindle's volts come from AO, not the OF of its channel
+        }
         dmc.threadTolerance = threadTolerance(profile, options);
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
         this.corners = new Corners(profile, this::report);
