@@ -459,7 +459,7 @@ class RunOnControllerTest {
 
     @Test
     void aDroppedConnectionNamesTheLastCompletedAndTheExecutingBlock() throws Exception {
-        try (VirtualController vc = controller(model("DMC-4040"), "disconnect-after=600")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "disconnect-after=1300")) {
             homed(vc);
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());
@@ -473,7 +473,7 @@ class RunOnControllerTest {
 
     @Test
     void garbageFromTheControllerStopsTheRun() throws Exception {
-        try (VirtualController vc = controller(model("DMC-4040"), "garbage-after=900")) {
+        try (VirtualController vc = controller(model("DMC-4040"), "garbage-after=1600")) {
             homed(vc);
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());

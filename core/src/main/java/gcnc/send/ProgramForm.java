@@ -93,13 +93,30 @@ public final class ProgramForm implements Form {
                 b.add(lines.get(j), piece.originOf(j));
             }
             // the footer (source line 0 after the last block) stays with the last block
-            if (!lines.get(j - 1).strip().equals("EN")) {
-                b.add("EN", piece.originOf(j - 1));
+            if (j < lines.size() || !lines.subList(i, j).stream().anyMatch(l -> l.strip().equals("EN"))) {
+                if (!lines.get(j - 1).strip().equals("EN")) {
+                    b.add("EN", piece.originOf(j - 1));
+                }
+                // the program's routines (#NOHOME, #CMDERR ...: the labels after its EN) with every step,
+                // since the header's and the blocks' jumps name them
+                for (int k = routines(lines); k < lines.size(); k++) {
+                    b.add(lines.get(k), piece.originOf(k));
+                }
             }
             out.add(b.build());
             i = j;
         }
         return out;
+    }
+
+    /** The index of the first line after the program's first {@code EN} (its routines); the size when none. */
+    private static int routines(List<String> lines) {
+        for (int k = 0; k < lines.size(); k++) {
+            if (lines.get(k).strip().equals("EN")) {
+                return k + 1;
+            }
+        }
+        return lines.size();
     }
 
     private void send(Piece piece, Controller c, Progress progress, Operator op, boolean dryRun)

@@ -94,7 +94,10 @@ public final class Resume {
         List<String> lines = program.lines();
         int header = 0;
         while (header < lines.size() && program.sourceLine(header) == 0 && !lines.get(header).strip().equals("EN")) {
-            b.add(lines.get(header), header);
+            // not the homing check: a resumed run starts where the axes stopped, which the sender checks itself
+            if (!lines.get(header).strip().startsWith("JP #NOHOME")) {
+                b.add(lines.get(header), header);
+            }
             header++;
         }
         String of = null;
