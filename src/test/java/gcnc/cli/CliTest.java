@@ -88,7 +88,7 @@ class CliTest {
         assertEquals(0, gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1,200,150",
                 "-o", dmc.toString()).status());
         assertTrue(Files.readString(dmc).contains("\nGA C,C\n"), "the thread is geared to the spindle");
-        Path wrong = program(Files.readString(Path.of("docs/examples/bushing.nc")).replace("G00 X1.4 Z-1.4", "G00 X1.0 Z-1.4"));
+        Path wrong = program(Files.readString(Path.of("docs/examples/bushing.nc")).replace("G00 X1.4 Z-1.4", "G00 X1.2 Z-1.4"));
         Run crash = gcnc("simulate", wrong.toString(), "--machine", "haas", "--stock", "38.1,200,150");
         assertTrue(crash.err().contains(":40:1: error[E305]"), crash.err());
         // without its M24 the Haas's M23 chamfers each thread pass: geared too, and as clean (README)

@@ -50,8 +50,8 @@ public final class LimitCheck implements Consumer<Instruction> {
             segment(i, Math.hypot(p.first() - u, p.second() - v), p.first(), p.second(), p.speeds());
         } else if (c instanceof Command.CircularArc a) {
             long r = a.radius().unscaled();
-            report(limits.arcRadius(r), i);
-            report(limits.arc(r, a.sweep().value()), i);
+            Optional<ControllerLimits.Violation> range = limits.arcRadius(r);
+            report(range.isPresent() ? range : limits.arc(r, a.sweep().value()), i); // one finding per CR
             double from = Math.toRadians(a.start().value());
             double to = Math.toRadians(a.start().value() + a.sweep().value());
             double radius = a.radius().value();
