@@ -59,7 +59,7 @@ class StudioWorkbenchBrowserTest {
         Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
         wait = new WebDriverWait(browser, Duration.ofSeconds(45)); // a shared, busy machine
         open(studio, "bishop.nc");
-        int lines = bishopDmcLines(); // what a compile of the same program writes, line for line
+        int lines = StudioBrowserTest.bishopDmcLines(); // what a compile of the same program writes, line for line
         wait.until(d -> d.findElements(By.cssSelector("#dmc li")).size() == lines);
     }
 
@@ -298,14 +298,4 @@ class StudioWorkbenchBrowserTest {
     static final String[] MAIN = {"%", "O01001 (A PASS FROM A SUBPROGRAM IN ITS OWN FILE)", "G21 G18 G99", "T0101", "G50 S2000",
         "G97 S1000 M03", "G00 X46. Z2.", "M98 P1000", "G00 X100. Z100.", "M30", "%"};
     static final String[] O1000 = {"%", "O01000 (ONE PASS)", "G01 Z-20. F0.2", "G00 X52. Z2.", "M99", "%"};
-
-    /** The lines of the bishop's DMC on thesis-2004, as the session every front end goes through compiles it. */
-    static int bishopDmcLines() throws Exception {
-        gcnc.Session s = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine("thesis-2004"));
-        int[] n = {0};
-        try (java.io.Reader in = Files.newBufferedReader(Path.of("samples/bishop.nc"))) {
-            s.compile(in, java.util.Optional.of(s.simulation()), false, i -> n[0]++);
-        }
-        return n[0];
-    }
 }
