@@ -134,6 +134,25 @@ class ContouringTest {
         assertTrue(bgs > 0, o.dmc());
     }
 
+
+    /** G09 stops its own block's move, G61 every move until G64; the rest blends (Haas and Fanuc manuals). */
+    @Test
+    void exactStopsTheProgramAsksForEndTheSequenceWithTheirReason() throws Exception {
+        String head = "G21 G98\nG50 S2000\nT0101\nG97 S1000 M03\nG00 X40. Z2.\nG01 Z-10. F200.\n";
+        assertEquals(List.of("rapid-feed", "rapid-feed", "output"),
+                compile(head + "G01 X44. Z-12.\nG01 Z-20.\nG00 X50. Z5.\nM05\nM30\n", profile("fanuc")).stops());
+        assertEquals(List.of("rapid-feed", "exact-stop-block", "rapid-feed", "output"),
+                compile(head + "G09 G01 X44. Z-12.\nG01 Z-20.\nG00 X50. Z5.\nM05\nM30\n", profile("fanuc")).stops());
+        assertEquals(List.of("rapid-feed", "exact-stop-mode", "exact-stop-mode", "rapid-feed", "output"),
+                compile(head.replace("G01 Z-10.", "G61 G01 Z-10.") + "G01 X44. Z-12.\nG64 G01 Z-20.\nG01 X46.\n"
+                        + "G00 X50. Z5.\nM05\nM30\n", profile("fanuc")).stops());
+        // Haas: inch, feed per revolution; G61 alone on its line
+        String haas = "G20 G99\nT0101\nG97 S500 M03\nG00 X2.2 Z0.1\nG01 Z-0.2 F0.01\n";
+        assertEquals(List.of("rapid-feed", "exact-stop-block", "exact-stop-mode", "exact-stop-mode", "rapid-feed", "output"),
+                compile(haas + "G09 X2.3\nG61\nZ-0.4\nX2.4\nG64\nZ-0.5\nX2.5\nG00 X3. Z1.\nM05\nM30\n",
+                        profile("haas")).stops());
+    }
+
     /** The simulator does not trust the planner: a corner written faster than the machine takes is E332 in a replay. */
     @Test
     void aCornerTooFastInTheDmcIsFoundByTheSimulator() throws Exception {

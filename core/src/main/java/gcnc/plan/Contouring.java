@@ -3,6 +3,7 @@ package gcnc.plan;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.MCall;
 import gcnc.ir.Motion;
+import gcnc.ir.StopAt;
 import gcnc.machine.Blending;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
@@ -19,7 +20,8 @@ import java.util.function.Consumer;
  * same kind (rapid, or feed), in the same program file, and turns from the last one by less than a
  * reversal. Everything else ends the sequence, with its reason ({@link Stop}): a block that changes
  * the tool or switches outputs, a dwell, a thread pass (geared, never blended), a rapid after a feed
- * or back, a call into another file, the end of the program. A new spindle speed alone (G96 at the
+ * or back, a call into another file, the end of the program, the exact stop the program asks for
+ * (G09 after its block, G61 after every motion). A new spindle speed alone (G96 at the
  * next diameter) does not stop a feed: the emitter sets it when the tool reaches that motion.</li>
  * <li><b>The bound.</b> At most {@link #MAX_PIECES} motions are held back: each is written as at
  * most two segments (an arc and its closing move), so a sequence always fits the controller's
@@ -101,6 +103,12 @@ public final class Contouring implements Planner {
             spindles.add(onTheWay);
             onTheWay = false;
             length += p.length();
+            if (b.stopAt() == StopAt.EVERY_MOTION) {
+                flush(Stop.EXACT_STOP_MODE, out); // G61: every move ends at rest
+            }
+        }
+        if (b.stopAt() == StopAt.BLOCK_END) {
+            flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
         if (switches(b.after())) {
             flush(Stop.OUTPUT, out);
