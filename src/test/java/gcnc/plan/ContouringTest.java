@@ -33,8 +33,8 @@ import org.junit.jupiter.api.Test;
 class ContouringTest {
     private static final Tables TABLES = Tables.builtIn();
 
-    /** A compile's DMC, its source map and its result. */
-    record Out(String dmc, List<String> map, Compiler.Result result) {
+    /** A compile's DMC, its source map, its result and the instructions written. */
+    record Out(String dmc, List<String> map, Compiler.Result result, List<gcnc.dmc.Instruction> instructions) {
         List<String> lines() {
             return dmc.lines().toList();
         }
@@ -56,11 +56,15 @@ class ContouringTest {
     static Out compile(String program, MachineProfile p) throws Exception {
         StringBuilder dmc = new StringBuilder();
         List<String> map = new ArrayList<>();
+        List<gcnc.dmc.Instruction> written = new ArrayList<>();
         SourceMap mapper = new SourceMap(map::add);
         Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, p, "galil",
-                Optional.of(SimOptions.defaults().withoutBlank())), mapper.wrap(l -> dmc.append(l.text()).append('\n')));
+                Optional.of(SimOptions.defaults().withoutBlank())), mapper.wrap(l -> {
+                    dmc.append(l.text()).append('\n');
+                    written.add(l);
+                }));
         assertTrue(r.ok(), () -> r.diagnostics().sorted() + "\n" + dmc);
-        return new Out(dmc.toString(), map, r);
+        return new Out(dmc.toString(), map, r, written);
     }
 
     static String read(String name) throws Exception {
@@ -151,6 +155,70 @@ class ContouringTest {
         assertEquals(List.of("rapid-feed", "exact-stop-block", "exact-stop-mode", "exact-stop-mode", "rapid-feed", "output"),
                 compile(haas + "G09 X2.3\nG61\nZ-0.4\nX2.4\nG64\nZ-0.5\nX2.5\nG00 X3. Z1.\nM05\nM30\n",
                         profile("haas")).stops());
+    }
+
+
+    /** Coolant on and off inside a finishing pass: both switch on the way, the contour stays one sequence. */
+    private static final String COOLANT = "G21 G98\nG50 S2000\nT0101\nG97 S1000 M03\nG00 X40. Z2.\nG01 Z-10. F200.\n"
+            + "G01 X44. Z-12. M08\nG01 Z-20.\nM09\nG01 X48.\nG00 X50. Z5.\nM05\nM30\n";
+
+    @Test
+    void anM08InsideAContourDoesNotBreakItWhereTheProfileAllows() throws Exception {
+        Out o = compile(COOLANT, profile("fanuc")); // fanuc: M08 = SB3, M09 = CB3, CB7; coolant flies by default
+        assertEquals(List.of("rapid-feed", "rapid-feed", "output"), o.stops(), o.dmc());
+        List<String> l = o.lines();
+        int bgs = l.indexOf("VP -11000,2000 <1666") + 2;
+        assertEquals("BGS", l.get(bgs), o.dmc());
+        // M08 where the path reaches line 7 (12 mm of Z at 500 counts/mm); M09 where line 10 starts
+        assertEquals(List.of("AV 6000", "SB3", "AV 11414", "CB3", "CB7", "AMS"), l.subList(bgs + 1, bgs + 7));
+    }
+
+    @Test
+    void anOutputTheProfileDoesNotLetSwitchOnTheFlyEndsTheSequence() throws Exception {
+        MachineProfile none = ProfileLoader.read(ProfileFile.parse("none.machine",
+                Files.readString(Path.of("tables/machines/fanuc.machine")) + "\nplan.on_the_fly = none\n"), TABLES);
+        Out o = compile(COOLANT, none);
+        assertEquals(List.of("rapid-feed", "output", "output", "rapid-feed", "output"), o.stops(), o.dmc());
+        assertTrue(o.lines().stream().noneMatch(x -> x.startsWith("AV ")), o.dmc());
+        // M08 alone may fly, M09 may not: the sequence runs on through M08 and stops for M09
+        MachineProfile on = ProfileLoader.read(ProfileFile.parse("m8.machine",
+                Files.readString(Path.of("tables/machines/fanuc.machine")) + "\nplan.on_the_fly = M08\n"), TABLES);
+        assertEquals(List.of("rapid-feed", "output", "rapid-feed", "output"), compile(COOLANT, on).stops());
+    }
+
+    /** Only an M code whose function is output may switch while the axes move: a spindle code is E253 at the key. */
+    @Test
+    void aSpindleCodeCannotSwitchOnTheFly() throws Exception {
+        gcnc.tables.TableException e = org.junit.jupiter.api.Assertions.assertThrows(gcnc.tables.TableException.class,
+                () -> ProfileLoader.read(ProfileFile.parse("m5.machine",
+                        Files.readString(Path.of("tables/machines/fanuc.machine")) + "\nplan.on_the_fly = M08 M05\n"), TABLES));
+        assertEquals(Code.E253_ON_THE_FLY_NOT_OUTPUT, e.diagnostic().code(), e.getMessage());
+        assertTrue(e.getMessage().contains("M05") && e.getMessage().contains("spindle_stop"), e.getMessage());
+    }
+
+    /** The replay checks the trip points: one past the sequence's end (the program would wait for ever), one at another block. */
+    @Test
+    void aTripPointPastTheEndOrAtAnotherBlockIsFoundByTheSimulator() throws Exception {
+        MachineProfile fanuc = profile("fanuc");
+        Out o = compile(COOLANT, fanuc);
+        assertEquals(List.of(), replayed(o, "AV 6000", 6000, fanuc));
+        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 11414", 90000, fanuc));
+        // M08 (line 7) switched where the path is still on line 6
+        assertEquals(List.of(Code.E335_SIM_SWITCHED_ELSEWHERE), replayed(o, "AV 6000", 3000, fanuc));
+    }
+
+    /** The compile's instructions replayed with the AV of {@code text} moved to {@code counts}: the codes found. */
+    private static List<Code> replayed(Out o, String text, long counts, MachineProfile p) {
+        List<gcnc.dmc.Instruction> tampered = new ArrayList<>();
+        for (gcnc.dmc.Instruction i : o.instructions()) {
+            tampered.add(i.text().equals(text)
+                    ? new gcnc.dmc.Instruction(new gcnc.dmc.Command.AfterVector(counts), i.source()) : i);
+        }
+        Diagnostics d = new Diagnostics();
+        gcnc.sim.Simulator sim = new gcnc.sim.Simulator(p, SimOptions.defaults().withoutBlank(), d);
+        sim.replay(tampered);
+        return d.sorted().stream().map(x -> x.code()).filter(c -> c == Code.E334_SIM_TRIP_PAST_END || c == Code.E335_SIM_SWITCHED_ELSEWHERE)
+                .collect(Collectors.toList());
     }
 
     /** The simulator does not trust the planner: a corner written faster than the machine takes is E332 in a replay. */

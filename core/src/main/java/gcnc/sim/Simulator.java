@@ -369,5 +369,33 @@ public final class Simulator {
         public void report(Code code, int line, Object... args) {
             Simulator.this.report(code, line, args);
         }
+
+        /**
+         * An output or speed set on the way must be where its block stands in the program: between
+         * the lines of the segments the path is on at its trip point (the motion before it and the one
+         * after, in the same file). Judged where the sources are a compile's (counted blocks: a DMC
+         * file read back may number its own lines); a path that runs lines backwards there (a loop) is not.
+         */
+        @Override
+        public void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
+            if (around.isEmpty() || what.line() <= 0 || what.block() < 0) {
+                return;
+            }
+            int lo = Integer.MAX_VALUE;
+            int hi = Integer.MIN_VALUE;
+            for (gcnc.dmc.Source s : around) {
+                if (!java.util.Objects.equals(s.origin(), what.origin())) {
+                    return;
+                }
+                lo = Math.min(lo, s.line());
+                hi = Math.max(hi, s.line());
+            }
+            if (around.get(0).line() > around.get(around.size() - 1).line()) {
+                return;
+            }
+            if (what.line() < lo || what.line() > hi) {
+                report(Code.E335_SIM_SWITCHED_ELSEWHERE, line, text, trip, lo == hi ? String.valueOf(lo) : lo + "-" + hi);
+            }
+        }
     }
 }
