@@ -221,6 +221,35 @@ class ContouringTest {
                 .collect(Collectors.toList());
     }
 
+
+    /**
+     * A profile of 50,000 counts/mm on Z: the 298 mm rapids are 14.9 million counts, more than the
+     * 8,388,607 a VP segment may be. Each is written as equal pieces in one sequence, and the replay
+     * pairs them with their block (no conformance finding) and checks each joint on the line.
+     */
+    @Test
+    void aStraightMoveLongerThanAVpSegmentIsSplitIntoEqualPiecesOfOneSequence() throws Exception {
+        String text = Files.readString(Path.of("tables/machines/fanuc.machine"))
+                .replaceFirst("(?m)^z.counts_per_mm = 500", "z.counts_per_mm = 50000");
+        String program = "G21 G98\nG50 S2000\nT0101\nG97 S1000 M03\nG00 X40. Z300.\nG00 Z2.\nG01 Z-10. F20.\n"
+                + "G00 X50.\nG00 Z300.\nM05\nM30\n";
+        MachineProfile fine = ProfileLoader.read(ProfileFile.parse("fine.machine", text), TABLES);
+        Out o = compile(program, fine);
+        List<String> vp = o.lines().stream().filter(l -> l.startsWith("VP ")).collect(Collectors.toList());
+        // the approach rapid (8.0 M counts, whole), then Z2. in two pieces of 7,450,000: one sequence
+        assertEquals(List.of("VP -8000000,-95000 <200000 >200000", "VP -15450000,-95000 <200000 >200000",
+                "VP -22900000,-95000 <200000", "VP -600000,0", "VP 0,2500 <200000 >3126",
+                "VP 7750000,2500 <200000 >200000", "VP 15500000,2500 <200000"), vp, o.dmc());
+        assertEquals(3, o.sequences());
+        assertEquals(0, o.result().simulation().orElseThrow().findings());
+        // every motion its own sequence: the long rapid is still one, of two pieces from rest to rest
+        Out off = compile(program, ProfileLoader.read(ProfileFile.parse("off.machine", text + "\nplan.blend = off\n"), TABLES));
+        assertEquals(5, off.sequences(), off.dmc());
+        assertTrue(off.lines().contains("VP -7450000,0 <200000 >200000") && off.lines().contains("VP -14900000,0 <200000"),
+                off.dmc());
+        assertEquals(0, off.result().simulation().orElseThrow().findings());
+    }
+
     /** The simulator does not trust the planner: a corner written faster than the machine takes is E332 in a replay. */
     @Test
     void aCornerTooFastInTheDmcIsFoundByTheSimulator() throws Exception {

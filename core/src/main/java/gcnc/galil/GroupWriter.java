@@ -64,6 +64,13 @@ final class GroupWriter {
             }
             if (m instanceof Motion.Arc a) {
                 along += arc(b, a, u0, v0, speeds, out);
+            } else if (m instanceof Motion.Linear l && p.parts() > 1) {
+                // one of the equal pieces of a move longer than a VP segment: to its share of the way
+                double share = (p.part() + 1) / (double) p.parts();
+                double fu = d.frame().u(l.from());
+                double fv = d.frame().v(l.from());
+                along += straight(b, fu + (d.frame().u(l.to()) - fu) * share, fv + (d.frame().v(l.to()) - fv) * share,
+                        u0, v0, speeds, out);
             } else {
                 along += straight(b, m instanceof Motion.Linear l ? l.to() : null, u0, v0, speeds, out);
             }
@@ -115,8 +122,14 @@ final class GroupWriter {
 
     /** A VP to {@code to}; its length, counts (0 when nothing is written). */
     private double straight(CheckedBlock b, Point to, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
-        long tu = GalilNumbers.round(d.frame().u(to));
-        long tv = GalilNumbers.round(d.frame().v(to));
+        return straight(b, d.frame().u(to), d.frame().v(to), u0, v0, speeds, out);
+    }
+
+    /** A VP to the Galil point (u, v), rounded to whole counts; its length, counts (0 when nothing is written). */
+    private double straight(CheckedBlock b, double u, double v, long u0, long v0, Command.Speeds speeds,
+                            BlockWriter out) {
+        long tu = GalilNumbers.round(u);
+        long tv = GalilNumbers.round(v);
         if (!d.inRange(b, "VP", tu - u0) || !d.inRange(b, "VP", tv - v0)) {
             return 0;
         }

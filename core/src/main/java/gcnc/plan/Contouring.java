@@ -24,10 +24,11 @@ import java.util.function.Consumer;
  * or back, a call into another file, the end of the program, the exact stop the program asks for
  * (G09 after its block, G61 after every motion). A new spindle speed alone (G96 at the
  * next diameter) does not stop a feed: the emitter sets it when the tool reaches that motion.</li>
- * <li><b>The bound.</b> At most {@link #MAX_PIECES} motions are held back: each is written as at
+ * <li><b>The bound.</b> At most {@link #MAX_PIECES} pieces are held back: each is written as at
  * most two segments (an arc and its closing move), so a sequence always fits the controller's
  * 511-segment buffer; and at most {@link #MAX_LENGTH} counts of path (the controller refuses a
- * sequence longer than 2^31, TC 31).</li>
+ * sequence longer than 2^31, TC 31). A straight move longer than one VP segment may be
+ * ({@link SegmentLimit}) is held as equal pieces, all in the same sequence.</li>
  * <li><b>Speeds.</b> A motion's speed is its feed (the rapid speed for a rapid), an arc's at most
  * √(a·r) so that its centripetal acceleration stays within the machine's. A corner's speed is the
  * junction-deviation speed √(a·δ·sin(θ/2)/(1−sin(θ/2))) (θ the angle between the two directions,
@@ -60,12 +61,16 @@ public final class Contouring implements Planner {
     private final List<List<Switch>> switchesAt = new ArrayList<>();
     /** Outputs on the fly after the last held motion: they go with the next motion if it joins, else at rest. */
     private final List<Switch> pending = new ArrayList<>();
+    /** Each held piece's part of its motion and how many parts it has ({@link SegmentLimit}). */
+    private final List<int[]> parts = new ArrayList<>();
     private final Blending blending;
+    private final SegmentLimit limit;
     private double length;
 
     Contouring(MachineProfile profile, Blending blending) {
         this.profile = profile;
         this.blending = blending;
+        this.limit = SegmentLimit.of(profile);
         this.acceleration = Math.min(profile.acceleration(), profile.deceleration());
         this.deviation = blending.deviationMm() * Math.min(profile.x().countsPerMm(), profile.z().countsPerMm());
     }
@@ -112,8 +117,10 @@ public final class Contouring implements Planner {
                 }
                 p = paths.get(paths.size() - 1).standing(p.speed());
             }
+            // a straight move longer than one VP takes: equal pieces, one after the other (SegmentLimit)
+            int n = m instanceof Motion.Linear ? limit.parts(p.length()) : 1;
             if (!paths.isEmpty()) {
-                Stop stop = joins(b, p);
+                Stop stop = joins(b, p, n);
                 if (stop != null) {
                     flush(stop, out);
                 }
@@ -122,11 +129,14 @@ public final class Contouring implements Planner {
             here.addAll(own);
             pending.clear();
             own = List.of();
-            blocks.add(b);
-            motions.add(i);
-            paths.add(p);
-            spindles.add(onTheWay);
-            switchesAt.add(here);
+            for (int k = 0; k < n; k++) {
+                blocks.add(b);
+                motions.add(i);
+                parts.add(new int[] {k, n});
+                paths.add(n == 1 ? p : p.part(n));
+                spindles.add(onTheWay && k == 0);
+                switchesAt.add(k == 0 ? here : List.of());
+            }
             onTheWay = false;
             length += p.length();
             if (b.stopAt() == StopAt.EVERY_MOTION) {
@@ -137,8 +147,8 @@ public final class Contouring implements Planner {
             flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
         if (switches(b.after())) {
-            int n = paths.size();
-            boolean endsHere = n > 0 && blocks.get(n - 1) == b && motions.get(n - 1) == ms.size() - 1;
+            int held = paths.size();
+            boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions.get(held - 1) == ms.size() - 1;
             if (!stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
                 // the block's end on the fly: where the next motion starts, if it joins
                 pending.add(new Switch(b, b.after(), true));
@@ -188,7 +198,7 @@ public final class Contouring implements Planner {
         if (p.length() < 0.5) {
             return paths.get(paths.size() - 1).rapid() != p.rapid() ? Stop.RAPID_FEED : null;
         }
-        return joins(b, p);
+        return joins(b, p, m instanceof Motion.Linear ? limit.parts(p.length()) : 1);
     }
 
     /** Why the block's start stops the machine (its spindle, tool or outputs), or null when it does not. */
@@ -222,8 +232,8 @@ public final class Contouring implements Planner {
         return false;
     }
 
-    /** Why {@code p} cannot join the sequence gathered so far, or null when it can. */
-    private Stop joins(CheckedBlock b, Path p) {
+    /** Why {@code p}, written as {@code n} pieces, cannot join the sequence gathered so far, or null when it can. */
+    private Stop joins(CheckedBlock b, Path p, int n) {
         Path last = paths.get(paths.size() - 1);
         if (last.rapid() != p.rapid()) {
             return Stop.RAPID_FEED;
@@ -231,7 +241,7 @@ public final class Contouring implements Planner {
         if (!java.util.Objects.equals(blocks.get(blocks.size() - 1).origin().file(), b.origin().file())) {
             return Stop.CALL;
         }
-        if (paths.size() == MAX_PIECES) {
+        if (paths.size() + n > MAX_PIECES) {
             return Stop.BUFFER;
         }
         if (length + p.length() > MAX_LENGTH) {
@@ -274,9 +284,10 @@ public final class Contouring implements Planner {
         List<Piece> pieces = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
             pieces.add(new Piece(blocks.get(i), motions.get(i), paths.get(i).speed(), entry[i + 1],
-                    paths.get(i).length(), spindles.get(i), switchesAt.get(i)));
+                    paths.get(i).length(), spindles.get(i), switchesAt.get(i), parts.get(i)[0], parts.get(i)[1]));
         }
         spindles.clear();
+        parts.clear();
         switchesAt.clear();
         blocks.clear();
         motions.clear();
@@ -317,6 +328,11 @@ public final class Contouring implements Planner {
      */
     record Path(boolean rapid, double length, double speed, double entryX, double entryZ, double exitX,
                 double exitZ) {
+        /** One of {@code n} equal pieces of this straight move. */
+        Path part(int n) {
+            return new Path(rapid, length / n, speed, entryX, entryZ, exitX, exitZ);
+        }
+
         /** A motion of no length after this one: it goes on in this one's direction. */
         Path standing(double speed) {
             return new Path(rapid, 0, speed, exitX, exitZ, exitX, exitZ);

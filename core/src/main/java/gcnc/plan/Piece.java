@@ -11,12 +11,20 @@ import java.util.List;
  * (counts, along the path), whether its block's new spindle speed (G96 at this diameter) is set
  * as the tool reaches its start, without stopping, and the outputs switched there ({@code switches},
  * in program order: the end of the block before, blocks without motion between, then this block's
- * start).
+ * start). A straight move longer than the controller takes in one segment is split into
+ * {@code parts} equal pieces ({@link SegmentLimit}), this one number {@code part} (0 for the first);
+ * a move that fits is part 0 of 1.
  */
 public record Piece(CheckedBlock block, int motion, double speed, double exit, double length, boolean spindle,
-                    List<Switch> switches) {
+                    List<Switch> switches, int part, int parts) {
     public Piece {
         switches = List.copyOf(switches);
+    }
+
+    /** A whole motion (one part). */
+    public Piece(CheckedBlock block, int motion, double speed, double exit, double length, boolean spindle,
+                 List<Switch> switches) {
+        this(block, motion, speed, exit, length, spindle, switches, 0, 1);
     }
 
     public Motion path() {
