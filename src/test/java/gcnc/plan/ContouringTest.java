@@ -250,6 +250,34 @@ class ContouringTest {
         assertEquals(0, off.result().simulation().orElseThrow().findings());
     }
 
+
+    /**
+     * The corner report: the slowest corners, slowest first, where and why. F5000 on fanuc (41,666
+     * counts/s): N60 (X70.) turns straight back into N70 (a reversal: the machine stops); the 90-degree
+     * corners at N10 and N70 take the junction speed; N20 is 0.02 mm long, too short to get back up
+     * from N10's corner before the slight turn into N30; the R1 arc of N50 is capped at √(a·r).
+     */
+    @Test
+    void theCornerReportSaysWhereAndWhyTheMachineSlows() throws Exception {
+        Out o = compile(read("corners.fanuc.nc"), profile("fanuc"));
+        List<gcnc.sim.Corner> corners = o.result().simulation().orElseThrow().corners();
+        List<String> seen = corners.stream().map(c -> "N" + c.number() + " " + c.why().key()).collect(Collectors.toList());
+        assertEquals(List.of("N60 reversal", "N10 junction", "N70 junction", "N30 junction", "N20 acceleration",
+                "N40 arc", "N50 arc"), seen, corners.toString());
+        gcnc.sim.Corner reversal = corners.get(0);
+        assertEquals(0, reversal.speedMmMin());
+        assertEquals(180, reversal.angleDeg(), 0.01);
+        assertEquals(13, reversal.line()); // N60, in the program's own file: no file named
+        assertEquals(null, reversal.file());
+        gcnc.sim.Corner square = corners.get(1);
+        assertEquals(90, square.angleDeg(), 0.01);
+        assertEquals(0.01, square.deviationMm(), 1e-9);
+        assertEquals(0.02, corners.get(4).lengthMm(), 0.001);
+        assertEquals(1.0, corners.get(5).radiusMm(), 0.001);
+        // √(a·r) for r = 1 mm = 500 counts, as mm/min (a = the fanuc profile's 999,424 counts/s²)
+        assertEquals(Math.sqrt(999424.0 * 500) / 500 * 60, corners.get(5).speedMmMin(), 1.0);
+    }
+
     /** The simulator does not trust the planner: a corner written faster than the machine takes is E332 in a replay. */
     @Test
     void aCornerTooFastInTheDmcIsFoundByTheSimulator() throws Exception {

@@ -38,6 +38,10 @@ final class Controller {
          */
         default void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
         }
+
+        /** The sequence that ran ends here (AMS), for the reason the planner recorded (the corner report). */
+        default void stopped(gcnc.plan.Stop why, int line) {
+        }
     }
 
     private static final double INT32 = 2147483647;
@@ -268,7 +272,9 @@ final class Controller {
         }
 
         public Void awaitSequence(Command.AwaitSequence c) {
-            afterEnd();
+            if (!afterEnd() && c.why() != null) {
+                out.stopped(c.why(), line);
+            }
             avTrip = -1; // what follows is at rest
             return null;
         }

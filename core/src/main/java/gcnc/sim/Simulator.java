@@ -155,7 +155,20 @@ public final class Simulator {
     }
 
     public SimReport report() {
-        return checks.report(findings);
+        return checks.report(findings).withCorners(corners.slowest.slowest(), SlowestCorners.KEPT);
+    }
+
+    /** The N word of each segment's block (null where it has none or none is known), for the corner report. */
+    private static String[] numbers(int n, List<Expected> meant, List<int[]> runs) {
+        if (meant.isEmpty()) {
+            return null;
+        }
+        String[] numbers = new String[n];
+        for (int k = 0; k < meant.size(); k++) {
+            gcnc.ir.ProgramFrame f = meant.get(k).block().frame();
+            java.util.Arrays.fill(numbers, runs.get(k)[0], runs.get(k)[1], f == null ? null : f.number());
+        }
+        return numbers;
     }
 
     private void run(List<Instruction> lines) {
@@ -315,7 +328,7 @@ public final class Simulator {
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
             boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
                     stopped || open);
-            corners.check(segments, speed, line);
+            corners.check(segments, speed, line, numbers(segments.size(), meant, runs));
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
@@ -368,6 +381,11 @@ public final class Simulator {
         @Override
         public void report(Code code, int line, Object... args) {
             Simulator.this.report(code, line, args);
+        }
+
+        @Override
+        public void stopped(gcnc.plan.Stop why, int line) {
+            corners.stopped(why);
         }
 
         /**
