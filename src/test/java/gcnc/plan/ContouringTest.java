@@ -145,8 +145,11 @@ class ContouringTest {
         String head = "G21 G98\nG50 S2000\nT0101\nG97 S1000 M03\nG00 X40. Z2.\nG01 Z-10. F200.\n";
         assertEquals(List.of("rapid-feed", "rapid-feed", "output"),
                 compile(head + "G01 X44. Z-12.\nG01 Z-20.\nG00 X50. Z5.\nM05\nM30\n", profile("fanuc")).stops());
-        assertEquals(List.of("rapid-feed", "exact-stop-block", "rapid-feed", "output"),
-                compile(head + "G09 G01 X44. Z-12.\nG01 Z-20.\nG00 X50. Z5.\nM05\nM30\n", profile("fanuc")).stops());
+        Out g09 = compile(head + "G09 G01 X44. Z-12.\nG01 Z-20.\nG00 X50. Z5.\nM05\nM30\n", profile("fanuc"));
+        assertEquals(List.of("rapid-feed", "exact-stop-block", "rapid-feed", "output"), g09.stops());
+        // the JSON's count of stops by reason (SimReport.stops) has the same
+        assertEquals(java.util.Map.of("rapid-feed", 2, "exact-stop-block", 1, "output", 1),
+                g09.result().simulation().orElseThrow().stops());
         assertEquals(List.of("rapid-feed", "exact-stop-mode", "exact-stop-mode", "rapid-feed", "output"),
                 compile(head.replace("G01 Z-10.", "G61 G01 Z-10.") + "G01 X44. Z-12.\nG64 G01 Z-20.\nG01 X46.\n"
                         + "G00 X50. Z5.\nM05\nM30\n", profile("fanuc")).stops());

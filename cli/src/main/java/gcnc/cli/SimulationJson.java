@@ -46,7 +46,6 @@ final class SimulationJson {
                 json.name("zMax").value(round(p.zMax(), decimals));
                 json.endObject();
             }
-            corners(run, json);
             if (moved) {
                 json.name("machine").beginObject();
                 json.name("xMinMm").value(round(r.xMinMm(), 3));
@@ -55,6 +54,15 @@ final class SimulationJson {
                 json.name("zMaxMm").value(round(r.zMaxMm(), 3));
                 json.endObject();
             }
+            if (!r.stops().isEmpty()) {
+                // why the machine stops where each sequence ends: the count per reason (the source map has each place)
+                json.name("stops").beginObject();
+                for (var e : r.stops().entrySet()) {
+                    json.name(e.getKey()).value(e.getValue());
+                }
+                json.endObject();
+            }
+            corners(run, json);
             json.endObject();
         }
         json.endArray();

@@ -155,8 +155,15 @@ public final class Simulator {
     }
 
     public SimReport report() {
-        return checks.report(findings).withCorners(corners.slowest.slowest(), SlowestCorners.KEPT);
+        java.util.Map<String, Integer> byReason = new java.util.LinkedHashMap<>();
+        for (var e : stops.entrySet()) {
+            byReason.put(e.getKey().key(), e.getValue());
+        }
+        return checks.report(findings).withCorners(corners.slowest.slowest(), SlowestCorners.KEPT).withStops(byReason);
     }
+
+    /** How many sequences ended for each reason (the planner's, carried by AMS), in the reasons' order. */
+    private final java.util.Map<gcnc.plan.Stop, Integer> stops = new java.util.EnumMap<>(gcnc.plan.Stop.class);
 
     /** The N word of each segment's block (null where it has none or none is known), for the corner report. */
     private static String[] numbers(int n, List<Expected> meant, List<int[]> runs) {
@@ -386,6 +393,7 @@ public final class Simulator {
         @Override
         public void stopped(gcnc.plan.Stop why, int line) {
             corners.stopped(why);
+            stops.merge(why, 1, Integer::sum);
         }
 
         /**
