@@ -202,7 +202,8 @@ class RunOnControllerTest {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
             assertEquals(0, r.status(), r.all());
-            assertTrue(r.out().contains("downloaded 87 lines (DL), read back identical (UL)"), r.out());
+            int lines = Files.readAllLines(p.resolveSibling("part.dmc")).size();
+            assertTrue(r.out().contains("downloaded " + lines + " lines (DL), read back identical (UL)"), r.out());
             assertTrue(r.out().contains("ran to the end"), r.out());
             // the motors are off at power-up: a warning, the program's SH turns them on
             assertTrue(r.err().contains("warning[E829]"), r.err());

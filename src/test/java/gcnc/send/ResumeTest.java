@@ -71,8 +71,11 @@ class ResumeTest {
         List<String> l = r.lines();
         int vs = l.indexOf("VS 500");
         String cr = l.get(vs + 1);
-        assertTrue(cr.startsWith("CR 1000,29.99") || cr.startsWith("CR 1000,30.00"), cr);
-        assertTrue(cr.contains(",-29.99") || cr.contains(",-30.00"), cr);
+        // from the stop's angle (30 degrees, to the rounding of the axes' whole counts) to the arc's end at 0
+        String[] a = cr.substring(3).split(",");
+        assertEquals("1000", a[0], cr);
+        assertEquals(30, Double.parseDouble(a[1]), 0.05, cr);
+        assertEquals(-Double.parseDouble(a[1]), Double.parseDouble(a[2]), 1e-9, cr);
         // the arc from the stop ends where the programmed one does, or a closing VP takes it there
         assertTrue(l.get(vs + 2).equals("VE") || l.get(vs + 2).startsWith("VP "), l.toString());
         assertEquals("CB1", l.get(l.size() - 2));

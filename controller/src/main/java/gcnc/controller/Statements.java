@@ -161,6 +161,12 @@ final class Statements {
                 return c.program.upload() + "\\";
             case "DL":
                 throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
+            case "ZS":
+                // zero the subroutine stack (COMALL ZS): an error routine's EN then ends the thread
+                // instead of returning into the motion it interrupted (gcnc's #FAULT does this)
+                onlyInProgram(th);
+                th.stack.clear();
+                return "";
             case "RE":
                 if (th != null) {
                     th.back();

@@ -149,6 +149,15 @@ public final class Controller {
         return (int) client.number("_XQ0");
     }
 
+    /**
+     * {@code MG _CSS}: the number of the segment of the running vector sequence executing, from 1
+     * (0 before the sequence's first; the last one after it ended). COMALL CS; EPICS counts the
+     * segments processed from it.
+     */
+    public int segment() throws IOException {
+        return (int) client.number("_CSS");
+    }
+
     /** {@code MG _TC}: the last error's code without clearing it; 0 for none. */
     public int errorCode() throws IOException {
         return (int) client.number("_TC");

@@ -179,6 +179,24 @@ public final class ProgramForm implements Form {
                 + Resume.counts(last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
     }
 
+    /**
+     * The compiled line executing when thread 0 is at the controller's line {@code xq}: the line
+     * itself, except in a vector sequence, where the thread waits at {@code AMS} while the
+     * segments run: there the segment executing ({@code _CSS}, asked only when the sequence has
+     * several) names the line, so that a blended sequence's blocks are followed one by one; before
+     * its {@code BGS} the sequence's first segment is next.
+     */
+    static int executing(Piece piece, int xq, Controller c, DmcProgram program) throws IOException {
+        Piece.Segments segments = piece.segmentsAt(xq, program);
+        if (segments == null || segments.origins().length == 0) {
+            return piece.originOf(xq);
+        }
+        if (!segments.begun() || segments.origins().length == 1) {
+            return segments.origins()[0];
+        }
+        return segments.executing(c.segment());
+    }
+
     /** Polls until thread 0 ends, applying the operator's hold, override and stop between polls. */
     private void follow(Piece piece, Controller c, Progress progress, Operator op)
             throws RunFault, IOException, InterruptedException {
@@ -217,10 +235,10 @@ public final class ProgramForm implements Form {
                 return;
             }
             double[] at = c.position();
-            progress.at(piece.originOf(xq), at, op);
+            progress.at(executing(piece, xq, c, progress.program()), at, op);
             // a sequence that has begun and does not move (the profiler stopped taking segments): no
             // reply tells it, so the axes do; a hold, a dwell and a thread pass's wait for the spindle are not stalls
-            Sequence s = progress.program().sequenceAt(piece.originOf(xq));
+            Sequence s = progress.program().sequenceAt(progress.executingIndex());
             boolean inMotion = s != null && !s.isThreadPass() && !held && op.override() > 0;
             if (!inMotion || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
                 still = at;
