@@ -354,48 +354,111 @@ final class DmcCommands implements Command.Visitor<Void> {
         return null;
     }
 
-    // Thread passes (gearing to the spindle encoder) and independent moves are not modelled: a program
-    // with them is refused at the command, never run as if it had none (docs/virtual-controller.md).
+    // Thread passes: gearing to the spindle encoder and the settling move (Gearing; docs/virtual-controller.md)
+
+    /** An axis letter as the reader names a place (X Y Z W, E..H), TC 4 beyond the model. */
+    private int axis(char letter) {
+        int a = c.axis(letter);
+        if (a < 0) {
+            throw refuse(Tc.OPERAND);
+        }
+        return a;
+    }
 
     @Override
     public Void gearMaster(Command.GearMaster x) {
-        return notModelled();
+        int m = axis(x.master());
+        return doing(() -> {
+            c.gearing.master(axis(x.first()), m);
+            c.gearing.master(axis(x.second()), m);
+        });
     }
 
+    /** {@code gsp=(@INT[_TPC/4096]+1)*4096+2048}, as Galil evaluates it (@INT truncates). */
     @Override
     public Void syncPoint(Command.SyncPoint x) {
-        return notModelled();
+        double tp = Math.rint(c.motion.position[axis(x.encoder())]);
+        double turns = tp / x.countsPerRev();
+        turns = turns < 0 ? Math.ceil(turns) : Math.floor(turns);
+        if (!c.variables.containsKey(x.variable()) && c.variables.size() >= c.model.variables) {
+            throw refuse(Tc.TOO_MANY_VARIABLES);
+        }
+        c.variables.put(x.variable(), (turns + (x.reverse() ? -1 : 1)) * x.countsPerRev() + x.phase());
+        return null;
     }
 
+    /** {@code MF}/{@code MR}: the thread waits until the axis has passed the count forward (backward). */
     @Override
     public Void waitPast(Command.WaitPast x) {
-        return notModelled();
+        onlyInProgram();
+        int a = axis(x.axis());
+        double at = x.at() instanceof Command.Operand.Count n ? n.counts()
+                : doingValue(((Command.Operand.Variable) x.at()).name());
+        double[] position = c.motion.position;
+        th.waitingFor = x.reverse() ? () -> position[a] <= at : () -> position[a] >= at;
+        return null;
+    }
+
+    private double doingValue(String variable) {
+        try {
+            return c.variable(variable);
+        } catch (GalilException e) {
+            throw new Refused(e);
+        }
     }
 
     @Override
     public Void gearRatio(Command.GearRatio x) {
-        return notModelled();
+        int a = axis(x.first());
+        int b = axis(x.second());
+        return doing(() -> {
+            c.gearing.ratio(a, range(x.firstRatio().value(), -127.9999, 127.9999));
+            c.gearing.ratio(b, range(x.secondRatio().value(), -127.9999, 127.9999));
+        });
     }
 
     @Override
     public Void positionAbsolute(Command.PositionAbsolute x) {
-        return notModelled();
+        int a = axis(x.first());
+        int b = axis(x.second());
+        return doing(() -> {
+            c.gearing.target(a, x.firstCount());
+            c.gearing.target(b, x.secondCount());
+        });
     }
 
+    /** {@code BG XY}: independent moves of these axes to their PA targets; not while their sequence runs (TC 21). */
     @Override
     public Void begin(Command.Begin x) {
-        return notModelled();
+        return doing(() -> {
+            List<Integer> axes = c.axes(x.axes());
+            for (int a : axes) {
+                if (c.motion.running() && (a == c.motion.axis1 || a == c.motion.axis2)) {
+                    throw new GalilException(Tc.BEGIN_WHILE_RUNNING);
+                }
+            }
+            for (int a : axes) {
+                c.gearing.begin(a);
+            }
+        });
     }
 
+    /** {@code AM XY}: the thread waits until these axes' moves are complete (the vector sequence's too for its axes). */
     @Override
     public Void afterMotion(Command.AfterMotion x) {
         return doing(() -> {
-            for (int a : c.axes(x.axes())) {
-                if (a != c.motion.axis1 && a != c.motion.axis2) {
-                    throw new GalilException(Tc.UNRECOGNIZED);
+            onlyInProgram();
+            List<Integer> axes = c.axes(x.axes());
+            VectorMotion mo = c.motion;
+            Gearing g = c.gearing;
+            th.waitingFor = () -> {
+                for (int a : axes) {
+                    if (g.moving[a] || mo.running() && (a == mo.axis1 || a == mo.axis2)) {
+                        return false;
+                    }
                 }
-            }
-            waitUntilStill();
+                return true;
+            };
         });
     }
 

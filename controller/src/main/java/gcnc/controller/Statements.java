@@ -182,6 +182,7 @@ final class Statements {
                         mo.abort(0, c.time());
                     }
                 }
+                c.gearing.stop();
                 return "";
             case "CA":
                 if (!args.equals("S")) {
@@ -213,6 +214,7 @@ final class Statements {
                     }
                 }
                 mo.stop(4);
+                c.gearing.stop(); // gearing off, a settling move ends where it is (assumed: docs/virtual-controller.md)
                 return "";
             case "AB": {
                 double n = args.isEmpty() ? 0 : eval(args);
@@ -224,6 +226,7 @@ final class Statements {
                     }
                 }
                 mo.abort(7, c.time());
+                c.gearing.stop();
                 return "";
             }
             case "CS":
@@ -347,6 +350,7 @@ final class Statements {
             t.halt();
         }
         c.motion.abort(7, c.time());
+        c.gearing.stop();
         c.variables.clear();
         c.arrays.clear();
         c.outputs = 0;

@@ -1,0 +1,83 @@
+package gcnc.cli;
+
+import static gcnc.cli.RunOnControllerTest.gcnc;
+import static gcnc.cli.RunOnControllerTest.homed;
+import static gcnc.cli.RunOnControllerTest.model;
+import static gcnc.cli.RunOnControllerTest.part;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.controller.VirtualController;
+import gcnc.machine.MachineProfile;
+import gcnc.send.DmcProgram;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A threading program in a Haas shop's style (an M20×1.5 thread cut with G76 after its approach,
+ * Haas M23's chamfered pull-out, on a 20 mm blank) sent with {@code gcnc run} to the virtual Galil
+ * over loopback TCP: every pass geared to the simulated spindle encoder runs to its end, and the
+ * executed path (where each sequence and each pass ends, in order) is the simulator's, count for count.
+ */
+class RunThreadTest {
+    static final String THREAD = String.join("\n",
+            "O2001 (M20X1.5 THREAD)",
+            "(T1 OD THREAD 60 DEG)",
+            "G21 G99",
+            "G50 S2000",
+            "T0101",
+            "G97 S600 M03",
+            "G00 X22. Z5.",
+            "G00 X20.5 Z3.",
+            "M23",
+            "G76 X18.16 Z-20. K0.92 D0.35 F1.5 A60",
+            "G00 X40. Z20.",
+            "M05",
+            "M30", "");
+
+    private static final Pattern SIMULATED = Pattern.compile("^(BGS|BG XY)\\t; L\\d+ X(-?[0-9.]+) Z(-?[0-9.]+) .*");
+    private static final Pattern RAN = Pattern.compile("# (?:end|pass) \\d+ at (-?\\d+,-?\\d+) .*");
+
+    @Test
+    void aThreadingProgramRunsToTheEndOnTheSimulatorsPath() throws Exception {
+        Path p = part(THREAD);
+        Path trace = p.resolveSibling("run.trace");
+        try (VirtualController vc = VirtualController.tcp(0,
+                new VirtualController.Options(model("DMC-4040"), 20, List.of(), trace))) {
+            homed(vc);
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--stock", "20,50",
+                    "--tcp", "127.0.0.1:" + vc.port(), "--poll", "20");
+            assertEquals(0, r.status(), r.all());
+            assertTrue(r.out().contains("ran to the end"), r.out());
+        }
+        // the simulator's replay of the same DMC: where each sequence (BGS) and each pass (BG XY) leaves the axes
+        MachineProfile haas = RunOnControllerTest.haas();
+        DmcProgram.Plane plane = DmcProgram.Plane.of(haas);
+        List<String> simulated = new ArrayList<>();
+        for (String line : gcnc("", "simulate", p.resolveSibling("part.dmc").toString(), "--machine", "haas", "--trace")
+                .out().lines().toList()) {
+            Matcher m = SIMULATED.matcher(line);
+            if (m.matches()) {
+                double[] g = plane.galil(Double.parseDouble(m.group(2)) * haas.x().countsPerMm(),
+                        Double.parseDouble(m.group(3)) * haas.z().countsPerMm());
+                simulated.add(Math.round(g[0]) + "," + Math.round(g[1]));
+            }
+        }
+        List<String> ran = new ArrayList<>();
+        int passes = 0;
+        for (String line : Files.readAllLines(trace)) {
+            Matcher m = RAN.matcher(line);
+            if (m.matches()) {
+                ran.add(m.group(1));
+                passes += line.startsWith("# pass") ? 1 : 0;
+            }
+        }
+        assertEquals(simulated, ran);
+        assertTrue(passes >= 5, "G76's passes, each geared: " + passes);
+    }
+}
