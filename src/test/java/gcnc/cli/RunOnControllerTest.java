@@ -270,7 +270,7 @@ class RunOnControllerTest {
     }
 
     /** DP over the pty, as an operator's terminal would send it. */
-    private static void definePosition(Path host, long[] h) throws Exception {
+    static void definePosition(Path host, long[] h) throws Exception {
         try (var io = java.nio.channels.FileChannel.open(host, java.nio.file.StandardOpenOption.READ,
                 java.nio.file.StandardOpenOption.WRITE)) {
             io.write(java.nio.ByteBuffer.wrap(("DP " + h[0] + "," + h[1] + "\r").getBytes(StandardCharsets.ISO_8859_1)));

@@ -6,6 +6,7 @@ import static gcnc.cli.RunOnControllerTest.model;
 import static gcnc.cli.RunOnControllerTest.part;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gcnc.controller.VirtualController;
 import gcnc.machine.MachineProfile;
@@ -44,7 +45,7 @@ class RunThreadTest {
     private static final Pattern RAN = Pattern.compile("# (?:end|pass) \\d+ at (-?\\d+,-?\\d+) .*");
 
     @Test
-    void aThreadingProgramRunsToTheEndOnTheSimulatorsPath() throws Exception {
+    void aThreadingProgramRunsToTheEndOnTheSimulatorsPathOverTcp() throws Exception {
         Path p = part(THREAD);
         Path trace = p.resolveSibling("run.trace");
         try (VirtualController vc = VirtualController.tcp(0,
@@ -55,6 +56,39 @@ class RunThreadTest {
             assertEquals(0, r.status(), r.all());
             assertTrue(r.out().contains("ran to the end"), r.out());
         }
+        assertOnTheSimulatorsPath(p, trace);
+    }
+
+    @Test
+    void aThreadingProgramRunsToTheEndOnTheSimulatorsPathOverAPty() throws Exception {
+        assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")), "socat (setup.sh installs it)");
+        Path dir = Files.createTempDirectory("gcnc-pty");
+        Path a = dir.resolve("controller");
+        Path b = dir.resolve("host");
+        Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
+                .redirectErrorStream(true).redirectOutput(dir.resolve("socat.log").toFile()).start();
+        Path p = part(THREAD);
+        Path trace = p.resolveSibling("run.trace");
+        try {
+            for (int i = 0; i < 50 && !(Files.exists(a) && Files.exists(b)); i++) {
+                Thread.sleep(100);
+            }
+            try (VirtualController vc = VirtualController.pty(a,
+                    new VirtualController.Options(model("DMC-4040"), 20, List.of(), trace))) {
+                RunOnControllerTest.definePosition(b, RunOnControllerTest.home());
+                RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--stock", "20,50",
+                        "--port", b.toString(), "--poll", "20");
+                assertEquals(0, r.status(), r.all());
+            }
+        } finally {
+            socat.destroy();
+            socat.waitFor();
+        }
+        assertOnTheSimulatorsPath(p, trace);
+    }
+
+    /** Where each sequence and each pass ended on the controller, in order, against gcnc simulate --trace. */
+    private static void assertOnTheSimulatorsPath(Path p, Path trace) throws Exception {
         // the simulator's replay of the same DMC: where each sequence (BGS) and each pass (BG XY) leaves the axes
         MachineProfile haas = RunOnControllerTest.haas();
         DmcProgram.Plane plane = DmcProgram.Plane.of(haas);
