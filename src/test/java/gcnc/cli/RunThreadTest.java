@@ -18,6 +18,8 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * A threading program in a Haas shop's style (an M20×1.5 thread cut with G76 after its approach,
@@ -41,12 +43,32 @@ class RunThreadTest {
             "M05",
             "M30", "");
 
+    /** The same thread cut with G92 (one block a pass) after a spring pass, then a G32 pass of its own (Fanuc style). */
+    static final String G92_G32 = String.join("\n",
+            "O2002 (G92 AND G32 THREADS)",
+            "G21 G99",
+            "G50 S2000",
+            "T0101",
+            "G97 S500 M03",
+            "G00 X22. Z5.",
+            "G92 X19.5 Z-15. F1.5",
+            "X19.2",
+            "X19.0",
+            "X18.5",
+            "G00 X22. Z2.",
+            "G32 Z-10. F1.5",
+            "G00 X40.",
+            "Z20.",
+            "M05",
+            "M30", "");
+
     private static final Pattern SIMULATED = Pattern.compile("^(BGS|BG XY)\\t; L\\d+ X(-?[0-9.]+) Z(-?[0-9.]+) .*");
     private static final Pattern RAN = Pattern.compile("# (?:end|pass) \\d+ at (-?\\d+,-?\\d+) .*");
 
-    @Test
-    void aThreadingProgramRunsToTheEndOnTheSimulatorsPathOverTcp() throws Exception {
-        Path p = part(THREAD);
+    @ParameterizedTest
+    @ValueSource(strings = {"G76", "G92 G32"})
+    void aThreadingProgramRunsToTheEndOnTheSimulatorsPathOverTcp(String cycle) throws Exception {
+        Path p = part(cycle.equals("G76") ? THREAD : G92_G32);
         Path trace = p.resolveSibling("run.trace");
         try (VirtualController vc = VirtualController.tcp(0,
                 new VirtualController.Options(model("DMC-4040"), 20, List.of(), trace))) {
