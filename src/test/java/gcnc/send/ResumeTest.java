@@ -159,6 +159,25 @@ class ResumeTest {
         assertTrue(!r.segmentsAt(vs + 1, p).begun(), "before BGS the motion has not begun");
     }
 
+    /** A block of two segments blended (a G71-like pass and its step, one G-code line): N:K names the segment. */
+    @Test
+    void theStopNamesTheSegmentOfABlockAndTheResumeStartsFromIt() throws Exception {
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        DmcProgram p = DmcProgram.read(BLENDED, MapReader.read(new BufferedReader(new StringReader(
+                "1 0\n6 4\n7 5\n10 6\n18 8\n19 0\n"))), haas);
+        assertEquals(2, p.motionsOf(6).size());
+        Progress progress = new Progress(p, BlockTable.none(), e -> { });
+        progress.at(BLENDED.indexOf("VP 1000,1000 <800"), null, new Operator());
+        assertEquals(new ResumePoint(6, 2), progress.resumePoint(), "executing the block's second segment");
+        assertEquals(5, progress.completedLine());
+        progress.at(BLENDED.indexOf("VP 1000,0 <1000 >500"), null, new Operator());
+        assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "its first: the block's start");
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 2), plus(home(p), 1000, 300));
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 0,700 <800", "VE", "BGS", "AV 200", "OF ,,4.0000", "AMS"), l.subList(vs, vs + 7));
+    }
+
     @Test
     void resumePointsAreWrittenNOrNK() {
         assertEquals(new ResumePoint(37, 0), ResumePoint.parse("37"));

@@ -198,10 +198,10 @@ public final class DmcProgram {
     }
 
     /**
-     * One motion of a G-code block as the controller runs it: the segments {@code from}..{@code to}
-     * (indices into the sequence's pieces) of one sequence that came from the block, consecutive;
-     * a thread pass whole. Under exact stop a block's motion is a sequence of its own; in a blended
-     * sequence a block's segments are one motion among the other blocks' (docs/run.md, "Resume").
+     * One motion of a G-code block as the controller runs it: one segment ({@code VP}/{@code CR},
+     * piece {@code from} = {@code to} of its sequence) or a thread pass whole ({@code 0, 0}). A block
+     * makes one or several (an arc with its closing VP, a canned cycle's passes, G28's two legs); in
+     * a blended sequence they stand among the other blocks' segments (docs/run.md, "Resume").
      */
     public record Motion(Sequence sequence, int from, int to) {
         /** Galil coordinates where the motion starts. */
@@ -216,7 +216,7 @@ public final class DmcProgram {
         }
     }
 
-    /** The motions of G-code line {@code line}, in order. */
+    /** The motions of G-code line {@code line}, in program order. */
     public List<Motion> motionsOf(int line) {
         List<Motion> out = new ArrayList<>();
         for (Sequence s : sequences) {
@@ -226,14 +226,9 @@ public final class DmcProgram {
                 }
                 continue;
             }
-            int from = -1;
-            for (int k = 0; k <= s.pieces().size(); k++) {
-                boolean mine = k < s.pieces().size() && sourceLine(s.pieces().get(k).line()) == line;
-                if (mine && from < 0) {
-                    from = k;
-                } else if (!mine && from >= 0) {
-                    out.add(new Motion(s, from, k - 1));
-                    from = -1;
+            for (int k = 0; k < s.pieces().size(); k++) {
+                if (sourceLine(s.pieces().get(k).line()) == line) {
+                    out.add(new Motion(s, k, k));
                 }
             }
         }

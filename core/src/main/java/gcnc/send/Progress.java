@@ -80,7 +80,7 @@ public final class Progress {
         int done = 0;
         for (int i = 0; i < all.size(); i++) {
             DmcProgram.Motion m = all.get(i);
-            if (s != null && m.sequence() == s && (s.isThreadPass() || piece >= m.from() && piece <= m.to())) {
+            if (s != null && m.sequence() == s && (s.isThreadPass() || piece == m.from())) {
                 k = i;
             }
             if (m.sequence().last() < e) {
