@@ -160,13 +160,11 @@ final class SendCommand implements Callable<Integer> {
         // the instructions kept as they come, so that what is downloaded is what the compiler made
         Path dmc = DmcOutputs.defaultOutput(file);
         List<Instruction> compiled = new ArrayList<>();
+        DmcProgram program;
         try (DmcOutputs outputs = DmcOutputs.open(file, dmc, true)) {
             SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
             outputs.mapSource(file.getFileName().toString(), file);
-            Consumer<Instruction> sink = mapper.wrap(line -> {
-                outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()));
-                compiled.add(line);
-            });
+            Consumer<Instruction> sink = mapper.wrap(compiled::add);
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file)) {
                 Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
@@ -187,14 +185,16 @@ final class SendCommand implements Callable<Integer> {
                         reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
+            // printed once (DmcPrinter, in DmcProgram): FILE.dmc and the download are the same strings
+            program = DmcProgram.of(compiled, setup.profile());
+            program.lines().forEach(outputs::dmcLine);
             outputs.commit();
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         } catch (IOException e) {
             return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
-        // 2. the program as compiled (printed once, for DL), and the checker's state at each block
-        DmcProgram program = DmcProgram.of(compiled, setup.profile());
+        // 2. the checker's state at each block, for the status line
         BlockTable blocks;
         try (Reader again = SourceFiles.open(file)) {
             blocks = BlockTable.of(again, setup.tables(), profileOnBlank(setup, sim), SourceFiles.programsFolder(file));
