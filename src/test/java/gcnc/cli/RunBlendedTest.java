@@ -102,4 +102,34 @@ class RunBlendedTest {
         assertEquals(6, path(whole).size());
         assertEquals(path(whole), path(stopped));
     }
+    /**
+     * The profiler stops taking segments after the turn (the third segment run, the second of the cut):
+     * the run is stopped as stalled naming line 8; resumed there, the axes stand at the turn's end, so
+     * the new sequence starts with the corner of line 9, and the path is the uninterrupted run's.
+     */
+    @Test
+    void aStallAtACornerOfTheSequenceResumesWithTheNextSegment() throws Exception {
+        Path p = part(PART);
+        Path dir = Files.createTempDirectory("gcnc-trace");
+        Path whole = dir.resolve("whole.trace");
+        Path stopped = dir.resolve("stopped.trace");
+        try (VirtualController vc = traced(model("DMC-4040"), whole)) {
+            homed(vc);
+            assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
+        }
+        try (VirtualController vc = traced(model("DMC-4040"), stopped, "stall=3")) {
+            homed(vc);
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20",
+                    "--stall", "1");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("part.nc:8:1: error[E825]"), r.err());
+            assertTrue(r.out().contains("stopped: last block completed: line 7; executing: line 8"), r.out());
+            String resume = resumeCommand(r.out());
+            assertTrue(resume.endsWith("--resume-at 8"), resume);
+            RunOnControllerTest.Run again = gcnc("", resumeArgs(resume));
+            assertEquals(0, again.status(), again.all());
+            assertEquals(Arrays.toString(programEnd(p)), Arrays.toString(axes(vc)));
+        }
+        assertEquals(path(whole), path(stopped));
+    }
 }
