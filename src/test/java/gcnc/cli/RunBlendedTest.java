@@ -25,6 +25,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * {@code gcnc run} sends the blended program: the test part's cut (lines 7 to 10: the approach, the
@@ -76,8 +78,9 @@ class RunBlendedTest {
      * completed; resumed at 8, the rest of the turn, the corner and the face-out are a new sequence from
      * where the axes stopped, and the segments' end points are those of a run never stopped.
      */
-    @Test
-    void aStopInsideTheSequenceResumesAtItsBlockAlongTheSamePath() throws Exception {
+    @ParameterizedTest(name = "polled every {0} ms")
+    @ValueSource(ints = {20, 1500})
+    void aStopInsideTheSequenceResumesAtItsBlockAlongTheSamePath(int poll) throws Exception {
         Path p = part(PART);
         Path dir = Files.createTempDirectory("gcnc-trace");
         Path whole = dir.resolve("whole.trace");
@@ -88,7 +91,10 @@ class RunBlendedTest {
         }
         try (VirtualController vc = traced(model("DMC-4040"), stopped, "limit-at=3")) {
             homed(vc);
-            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
+            // polled every 1.5 s the last poll saw the spindle's dwell before the cut: where the axes stopped
+            // and _CSS, asked after the stop, still name the turn of line 8
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll",
+                    Integer.toString(poll));
             assertEquals(3, r.status(), r.all());
             assertTrue(r.err().contains("part.nc:8:1: error[E825]"), r.err());
             assertTrue(r.err().contains("stop code 2: a limit switch"), r.err());

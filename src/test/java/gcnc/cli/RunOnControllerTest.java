@@ -428,7 +428,7 @@ class RunOnControllerTest {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
             assertEquals(3, r.status(), r.all());
-            Matcher m = Pattern.compile("part\\.nc:(\\d+):1: error\\[E820\\]: the controller refused (MG _XQ0|MG _CSS|TP): error 1"
+            Matcher m = Pattern.compile("part\\.nc:(\\d+):1: error\\[E820\\]: the controller refused (MG _XQ0,_CSS|TP): error 1"
                     + " \\(Unrecognized command\\); motion and spindle were stopped").matcher(r.err());
             assertTrue(m.find(), r.err());
             int line = Integer.parseInt(m.group(1));

@@ -260,6 +260,11 @@ public final class Resume {
     }
 
     private boolean onPiece(Sequence.Piece p, double[] q) {
+        return onPiece(p, q, tolerance);
+    }
+
+    /** Is {@code q} on piece {@code p}, within {@code tolerance} counts (an arc: on its radius and within its sweep)? */
+    static boolean onPiece(Sequence.Piece p, double[] q, double tolerance) {
         if (p instanceof Sequence.Arc a) {
             double r = Math.hypot(q[0] - a.centre()[0], q[1] - a.centre()[1]);
             if (Math.abs(r - a.radius()) > tolerance) {
