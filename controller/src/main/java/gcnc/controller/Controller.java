@@ -10,7 +10,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
  * The state of one virtual Galil: program memory, variables and arrays, the eight program threads, the
- * vector motion, the digital outputs and the spindle's analog offsets, the last error. Every entry point is
+ * vector motion, the spindle encoder with the gearing and settling moves of a thread pass ({@link Gearing}), the digital outputs and the spindle's analog offsets, the last error. Every entry point is
  * synchronized on the controller: the connections' commands and the clock's {@link #advance} never
  * interleave, so a run is a function of the commands and of how far the clock went, and a test that
  * drives {@link #advance} itself gets the same run every time.

@@ -123,6 +123,7 @@ final class Gearing {
         speed[a] = 0;
     }
 
+    /** Is any axis geared or in a settling move (the controller is not at rest)? */
     boolean anyMoving() {
         for (int a = 0; a < master.length; a++) {
             if (moving[a] || geared[a]) {
