@@ -311,6 +311,8 @@ public final class DmcProgram {
         double speed;
         int first = -1;
         List<Sequence.Piece> pieces = new ArrayList<>();
+        /** Each piece's own speed ({@code <o}), else the sequence's VS. */
+        List<Double> speeds = new ArrayList<>();
         boolean thread;
         double seconds;
 
@@ -331,6 +333,7 @@ public final class DmcProgram {
                 begin(i);
                 double[] to = {pos[0] + v.first(), pos[1] + v.second()};
                 pieces.add(new Sequence.Line(i, cursor, to));
+                speeds.add(v.speeds().speed() > 0 ? v.speeds().speed() : speed);
                 cursor = to;
             } else if (c instanceof Command.CircularArc a) {
                 begin(i);
@@ -339,6 +342,7 @@ public final class DmcProgram {
                 double[] to = {g[2], g[3]};
                 pieces.add(new Sequence.Arc(i, cursor, to, new double[] {g[0], g[1]}, r, a.start().value(),
                         a.sweep().value()));
+                speeds.add(a.speeds().speed() > 0 ? a.speeds().speed() : speed);
                 cursor = to;
             } else if (c instanceof Command.GearMaster) {
                 begin(i);
@@ -371,6 +375,7 @@ public final class DmcProgram {
                 first = i;
                 cursor = pos.clone();
                 pieces = new ArrayList<>();
+                speeds = new ArrayList<>();
                 thread = false;
             }
         }
@@ -380,14 +385,20 @@ public final class DmcProgram {
                 return;
             }
             double length = 0;
-            for (Sequence.Piece p : pieces) {
-                length += p.length();
+            double cruise = 0;
+            double top = 0;
+            for (int k = 0; k < pieces.size(); k++) {
+                double v = speeds.get(k);
+                length += pieces.get(k).length();
+                cruise += v > 0 ? pieces.get(k).length() / v : 0;
+                top = Math.max(top, v);
             }
             double t = 0;
-            if (speed > 0 && length > 0) {
-                // a trapezoid: the time to speed up and slow down, or a triangle on a short move
-                double ramp = speed * speed / acceleration;
-                t = length >= ramp ? length / speed + speed / acceleration : 2 * Math.sqrt(length / acceleration);
+            if (top > 0 && length > 0) {
+                // a trapezoid: each piece at its own speed, plus the time to speed up and slow down; a
+                // triangle on a short move (the blended corners' slowing is not counted: an estimate)
+                double ramp = top * top / acceleration;
+                t = length >= ramp ? cruise + top / acceleration : 2 * Math.sqrt(length / acceleration);
             }
             sequences.add(new Sequence(first, i, pos.clone(), cursor.clone(), thread ? 0 : speed,
                     thread ? List.of() : List.copyOf(pieces), t));
