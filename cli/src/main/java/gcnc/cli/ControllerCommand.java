@@ -112,8 +112,8 @@ final class ControllerCommand implements Callable<Integer> {
             rate = -1;
         }
         if (sp.length != 2 || !(rate > 0)) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--spindle takes r/min per volt and counts per revolution, both positive: 410,4096, not '" + spindle + "'");
+            err.println("gcnc: " + say.get("controller.bad_spindle", spindle));
+            return ExitCode.USAGE;
         }
         VirtualController.Options options = new VirtualController.Options(m, speed, parsed, trace, rate);
         VirtualController vc;
