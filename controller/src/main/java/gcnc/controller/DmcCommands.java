@@ -6,28 +6,24 @@ import gcnc.dmc.DmcReader;
 import gcnc.machine.GalilModel;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Set;
-import java.util.regex.Pattern;
 
 /**
  * The commands gcnc writes (gcnc.dmc): read by {@link DmcReader}, the one reader of DMC, and executed
  * here as the virtual controller does them, in time. A program on the controller may give their
  * arguments as expressions ({@code WT dwms}, {@code VP p0[i],p1[i]}) and segment speeds
  * ({@code VP a,b <o >p}), which gcnc does not write: the expressions are evaluated and the speeds taken
- * off first, then the literal command is read. What the reader refuses is {@code ?}: E300 as TC 1,
+ * off first ({@link Literal}), then the literal command is read. What the reader refuses is {@code ?}: E300 as TC 1,
  * E301 as TC 4, E310 as TC 6.
  */
 final class DmcCommands implements Command.Visitor<Void> {
     /** The heads of the commands of gcnc.dmc that take arguments; {@code TOOL=} too. */
     private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
             "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV");
-    /** The commands whose arguments may be expressions here: each is evaluated to a number. */
-    private static final Set<String> NUMERIC = Set.of("VP", "CR", "VS", "VA", "VD", "WT", "SB", "CB", "OF", "AV");
-    private static final Pattern LITERAL = Pattern.compile("[+-]?[0-9]+(\\.[0-9]+)?");
 
     private final Controller c;
     private final ProgramThread th;
+    /** The segment's {@code <o} and {@code >p} speeds taken off the command ({@link Literal}), NaN when not given. */
     private double o = Double.NaN;
     private double p = Double.NaN;
 
@@ -44,7 +40,10 @@ final class DmcCommands implements Command.Visitor<Void> {
     /** Executes {@code st} (for which {@link #handles} is true) for the host (th null) or a thread. */
     static void execute(String st, Controller c, ProgramThread th) throws GalilException {
         DmcCommands run = new DmcCommands(c, th);
-        String literal = run.literal(st);
+        Literal lit = Literal.of(st, c);
+        run.o = lit.o();
+        run.p = lit.p();
+        String literal = lit.text();
         GalilException[] refused = new GalilException[1];
         Command command = DmcReader.read(literal, (code, args) -> refused[0] = new GalilException(
                 code == Code.E300_SIM_UNKNOWN_INSTRUCTION ? Tc.UNRECOGNIZED : code == Code.E310_SIM_COUNT_RANGE ? Tc.RANGE
@@ -60,67 +59,6 @@ final class DmcCommands implements Command.Visitor<Void> {
         } catch (Refused r) {
             throw r.reason;
         }
-    }
-
-    /** {@code st} with its expressions evaluated and its segment speeds taken off (into {@link #o}, {@link #p}). */
-    private String literal(String st) throws GalilException {
-        if (st.startsWith("TOOL=")) {
-            String v = st.substring(5).strip();
-            return LITERAL.matcher(v).matches() ? st : "TOOL=" + whole(Expressions.eval(v, c));
-        }
-        String head = st.substring(0, 2);
-        String args = st.substring(2).strip();
-        if (!NUMERIC.contains(head)) {
-            return st;
-        }
-        if (head.equals("VP") || head.equals("CR")) {
-            int lt = depthZero(args, '<');
-            int gt = depthZero(args, '>');
-            if (lt >= 0) {
-                o = Expressions.eval(args.substring(lt + 1, gt > lt ? gt : args.length()), c);
-            }
-            if (gt >= 0) {
-                p = Expressions.eval(args.substring(gt + 1, lt > gt ? lt : args.length()), c);
-            }
-            int cut = lt >= 0 ? (gt >= 0 ? Math.min(lt, gt) : lt) : gt;
-            args = cut >= 0 ? args.substring(0, cut).strip() : args;
-        }
-        List<String> out = new ArrayList<>();
-        for (String a : Statements.split(args)) {
-            if (a.isEmpty() || LITERAL.matcher(a).matches()) {
-                out.add(a);
-            } else {
-                double v = Expressions.eval(a, c);
-                // VP, WT, SB and CB take whole numbers: Galil truncates a fraction
-                out.add(head.equals("CR") || head.equals("OF") || head.startsWith("V") && !head.equals("VP")
-                        ? decimal(v) : whole(v));
-            }
-        }
-        return head + (out.isEmpty() || out.size() == 1 && out.get(0).isEmpty() ? "" : " " + String.join(",", out));
-    }
-
-    private static String whole(double v) {
-        return Long.toString((long) v);
-    }
-
-    private static String decimal(double v) {
-        String s = String.format(Locale.ROOT, "%.4f", v);
-        return s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
-    }
-
-    static int depthZero(String s, char want) {
-        int depth = 0;
-        for (int i = 0; i < s.length(); i++) {
-            char ch = s.charAt(i);
-            if (ch == '(' || ch == '[') {
-                depth++;
-            } else if (ch == ')' || ch == ']') {
-                depth--;
-            } else if (ch == want && depth == 0) {
-                return i;
-            }
-        }
-        return -1;
     }
 
     /** A GalilException through the visitor, whose methods cannot throw it. */
