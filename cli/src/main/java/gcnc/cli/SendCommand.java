@@ -1,6 +1,8 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
+import gcnc.Session;
+import gcnc.dmc.Instruction;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Messages;
@@ -12,7 +14,6 @@ import gcnc.send.Event;
 import gcnc.send.EventSink;
 import gcnc.send.JsonEvents;
 import gcnc.send.Link;
-import gcnc.send.MapReader;
 import gcnc.send.Operator;
 import gcnc.send.ProgramForm;
 import gcnc.send.ResumePoint;
@@ -33,6 +34,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.function.Consumer;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -154,16 +156,21 @@ final class SendCommand implements Callable<Integer> {
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        // 1. the compile, as `gcnc compile` does it: FILE.dmc and FILE.dmc.map, written only when clean
+        // 1. the compile, as `gcnc compile` does it: FILE.dmc and FILE.dmc.map, written only when clean;
+        // the instructions kept as they come, so that what is downloaded is what the compiler made
         Path dmc = DmcOutputs.defaultOutput(file);
+        List<Instruction> compiled = new ArrayList<>();
+        DmcProgram program;
         try (DmcOutputs outputs = DmcOutputs.open(file, dmc, true)) {
             SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
             outputs.mapSource(file.getFileName().toString(), file);
+            Consumer<Instruction> sink = mapper.wrap(compiled::add);
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file)) {
-                // exact stop: the sender follows the program sequence by sequence, one motion each (docs/run.md)
-                r = setup.session().withPrograms(SourceFiles.programsFolder(file)).compileExactStop(in, sim,
-                        mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
+                Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
+                // blended as the profile plans it; step mode runs one block at a time, so every motion
+                // stops at its end there (docs/run.md, "Step mode")
+                r = step ? session.compileExactStop(in, sim, sink) : session.compile(in, sim, false, sink);
             }
             if (!r.ok()) {
                 if (json) {
@@ -178,21 +185,21 @@ final class SendCommand implements Callable<Integer> {
                         reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
+            // printed once (DmcPrinter, in DmcProgram): FILE.dmc and the download are the same strings
+            program = DmcProgram.of(compiled, setup.profile());
+            program.lines().forEach(outputs::dmcLine);
             outputs.commit();
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         } catch (IOException e) {
             return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
-        // 2. the program as written, and its map read back
-        DmcProgram program;
+        // 2. the checker's state at each block, for the status line
         BlockTable blocks;
-        try (BufferedReader map = Files.newBufferedReader(DmcOutputs.mapFile(dmc), StandardCharsets.UTF_8);
-             Reader again = SourceFiles.open(file)) {
-            program = DmcProgram.read(Files.readAllLines(dmc, StandardCharsets.UTF_8), MapReader.read(map), setup.profile());
+        try (Reader again = SourceFiles.open(file)) {
             blocks = BlockTable.of(again, setup.tables(), profileOnBlank(setup, sim), SourceFiles.programsFolder(file));
         } catch (IOException e) {
-            return reporter.ioFault(dmc.toString(), gcnc.diag.Phrase.IO_CANNOT_READ, e);
+            return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
         // 3. the link
         Link link;

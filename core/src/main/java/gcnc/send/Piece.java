@@ -1,5 +1,6 @@
 package gcnc.send;
 
+import gcnc.dmc.Command;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -28,6 +29,51 @@ public record Piece(List<String> lines, int[] origin) {
     /** The compiled program's line for the controller's line {@code n} (0-based), or -1. */
     public int originOf(int n) {
         return n >= 0 && n < origin.length ? origin[n] : -1;
+    }
+
+    /**
+     * The vector sequence the controller's line {@code n} is in, as this piece gives it: the compiled
+     * lines its segments stand for, in the controller's order (segment k of the sequence, {@code _CSS}
+     * = k, is {@code origins[k - 1]}), and whether line {@code n} is at or past its {@code BGS} (the
+     * motion has begun). Null when line {@code n} is in no vector sequence.
+     */
+    public Segments segmentsAt(int n, DmcProgram program) {
+        int start = n;
+        for (; start >= 0; start--) {
+            Command c = program.command(originOf(start));
+            if (c instanceof Command.VectorSpeed) {
+                break;
+            }
+            if (start != n && (c instanceof Command.AwaitSequence || c instanceof Command.AfterMotion
+                    || c instanceof Command.End)) {
+                return null;
+            }
+        }
+        if (start < 0) {
+            return null;
+        }
+        List<Integer> origins = new ArrayList<>();
+        boolean begun = false;
+        for (int j = start + 1; j < lines.size(); j++) {
+            Command c = program.command(originOf(j));
+            if (c instanceof Command.AwaitSequence) {
+                break;
+            }
+            if (DmcProgram.isSegment(c)) {
+                origins.add(originOf(j));
+            } else if (c instanceof Command.BeginSequence && j <= n) {
+                begun = true;
+            }
+        }
+        return new Segments(origins.stream().mapToInt(Integer::intValue).toArray(), begun);
+    }
+
+    /** The segments of one vector sequence of a piece: see {@link #segmentsAt}. */
+    public record Segments(int[] origins, boolean begun) {
+        /** The compiled line of the segment executing when the controller's {@code _CSS} reads {@code css}. */
+        public int executing(int css) {
+            return origins[Math.max(0, Math.min(origins.length - 1, css - 1))];
+        }
     }
 
     /** Builds a piece line by line. */
