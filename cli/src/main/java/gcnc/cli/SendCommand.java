@@ -6,8 +6,8 @@ import gcnc.dmc.Instruction;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Messages;
-import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
+import gcnc.output.FormOutputs;
 import gcnc.send.BlockTable;
 import gcnc.send.DmcProgram;
 import gcnc.send.Event;
@@ -19,6 +19,7 @@ import gcnc.send.ProgramForm;
 import gcnc.send.ResumePoint;
 import gcnc.send.RunFault;
 import gcnc.send.Sender;
+import gcnc.send.StreamForm;
 import gcnc.send.TcpLink;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableException;
@@ -96,6 +97,11 @@ final class SendCommand implements Callable<Integer> {
             description = "Continue an interrupted run at G-code line N (K: its K-th motion), as the stop message printed.")
     String resumeAt;
 
+    @Option(names = "--form", paramLabel = "program|stream",
+            description = "program: downloaded whole; stream: a resident program, the rest fed through the command line."
+                    + " Default: program when it fits the profile's Galil model, else stream (as gcnc compile chooses).")
+    String form;
+
     @Option(names = "--dry-run", description = "Everything but motion: connect, pre-flight, download and read back.")
     boolean dryRun;
 
@@ -156,21 +162,38 @@ final class SendCommand implements Callable<Integer> {
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        // 1. the compile, as `gcnc compile` does it: FILE.dmc and FILE.dmc.map, written only when clean;
-        // the instructions kept as they come, so that what is downloaded is what the compiler made
+        // 1. the compile, as `gcnc compile` does it: FILE.dmc (and FILE.stream in the stream form) with their
+        // maps, written only when clean; the instructions kept as they come, so that what is sent is what
+        // the compiler made
+        Optional<gcnc.dmc.Form> asked = Optional.ofNullable(form).map(f -> {
+            gcnc.dmc.Form x = gcnc.dmc.Form.of(f);
+            if (x == null) {
+                throw new ParameterException(spec.commandLine(), "--form " + f + ": say program or stream");
+            }
+            return x;
+        });
         Path dmc = DmcOutputs.defaultOutput(file);
         List<Instruction> compiled = new ArrayList<>();
         DmcProgram program;
-        try (DmcOutputs outputs = DmcOutputs.open(file, dmc, true)) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+        gcnc.dmc.Form chosen;
+        try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
             outputs.mapSource(file.getFileName().toString(), file);
-            Consumer<Instruction> sink = mapper.wrap(compiled::add);
+            Consumer<Instruction> written = outputs.sink(asked, setup.profile().controllerLimits());
+            Consumer<Instruction> sink = i -> {
+                compiled.add(i);
+                written.accept(i);
+            };
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file)) {
                 Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
                 // blended as the profile plans it; step mode runs one block at a time, so every motion
                 // stops at its end there (docs/run.md, "Step mode")
                 r = step ? session.compileExactStop(in, sim, sink) : session.compile(in, sim, false, sink);
+            }
+            if (r.ok()) {
+                chosen = outputs.finish(r.diagnostics()); // a program form asked for that does not fit is E238
+            } else {
+                chosen = null;
             }
             if (!r.ok()) {
                 if (json) {
@@ -185,9 +208,7 @@ final class SendCommand implements Callable<Integer> {
                         reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
-            // printed once (DmcPrinter, in DmcProgram): FILE.dmc and the download are the same strings
             program = DmcProgram.of(compiled, setup.profile());
-            program.lines().forEach(outputs::dmcLine);
             outputs.commit();
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
@@ -213,7 +234,9 @@ final class SendCommand implements Callable<Integer> {
         // 4. the run, with the operator's keys and Ctrl-C
         Operator operator = new Operator();
         Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
-                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
+                new Sender.Options(step, dryRun, resume, pollMs), chosen == gcnc.dmc.Form.STREAM
+                        ? new StreamForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds)
+                        : new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
         Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
         try (keys) {
             return sender.run(link, timeoutMs);

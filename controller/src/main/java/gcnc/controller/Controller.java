@@ -328,6 +328,7 @@ public final class Controller implements Expressions.Scope {
         switch (name) {
             case "LMS": return motion.free();
             case "CSS": return motion.css();
+            case "AVS": return Math.floor(motion.travelled()); // the path run since the sequence began (AV's distance)
             case "BGS": return motion.running() ? 1 : 0;
             case "SCS": return motion.stopCode;
             case "VRS": return motion.vr;

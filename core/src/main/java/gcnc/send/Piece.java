@@ -9,21 +9,29 @@ import java.util.List;
  * lines with the compiled program's line it stands for ({@code origin}, 0-based), so that what the
  * controller executes always maps back to the G-code through the one source map.
  */
-public record Piece(List<String> lines, int[] origin) {
+public record Piece(List<Command> commands, int[] origin, List<String> lines) {
     public Piece {
+        commands = List.copyOf(commands);
         lines = List.copyOf(lines);
-        if (origin.length != lines.size()) {
+        if (origin.length != commands.size() || lines.size() != commands.size()) {
             throw new IllegalArgumentException("a line without its origin");
         }
+    }
+
+    /** The commands, each printed once ({@link gcnc.dmc.DmcPrinter}): the lines downloaded. */
+    public Piece(List<Command> commands, int[] origin) {
+        this(commands, origin, commands.stream().map(gcnc.dmc.DmcPrinter::print).toList());
     }
 
     /** The whole program. */
     public static Piece whole(DmcProgram p) {
         int[] o = new int[p.lines().size()];
+        List<Command> c = new ArrayList<>(o.length);
         for (int i = 0; i < o.length; i++) {
             o[i] = i;
+            c.add(p.command(i));
         }
-        return new Piece(p.lines(), o);
+        return new Piece(c, o, p.lines());
     }
 
     /** The compiled program's line for the controller's line {@code n} (0-based), or -1. */
@@ -78,21 +86,21 @@ public record Piece(List<String> lines, int[] origin) {
 
     /** Builds a piece line by line. */
     public static final class Builder {
-        private final List<String> lines = new ArrayList<>();
+        private final List<Command> commands = new ArrayList<>();
         private final List<Integer> origin = new ArrayList<>();
 
-        public Builder add(String line, int from) {
-            lines.add(line);
+        public Builder add(Command command, int from) {
+            commands.add(command);
             origin.add(from);
             return this;
         }
 
         public int size() {
-            return lines.size();
+            return commands.size();
         }
 
         public Piece build() {
-            return new Piece(lines, origin.stream().mapToInt(Integer::intValue).toArray());
+            return new Piece(commands, origin.stream().mapToInt(Integer::intValue).toArray());
         }
     }
 }

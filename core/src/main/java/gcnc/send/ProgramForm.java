@@ -36,6 +36,11 @@ public final class ProgramForm implements Form {
     }
 
     @Override
+    public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
+        return step ? steps(piece, program).stream().mapToInt(p -> p.lines().size()).max().orElse(0) : piece.lines().size();
+    }
+
+    @Override
     public void run(Piece piece, Controller c, Progress progress, Operator op, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
         if (!step) {
@@ -74,13 +79,13 @@ public final class ProgramForm implements Form {
      */
     static List<Piece> steps(Piece piece, DmcProgram program) {
         List<Piece> out = new ArrayList<>();
-        List<String> lines = piece.lines();
+        List<Command> lines = piece.commands();
         int i = 0;
         while (i < lines.size()) {
             Piece.Builder b = new Piece.Builder();
             int first = piece.originOf(i);
-            if (!lines.get(i).startsWith("#")) {
-                b.add("#GCNC", first);
+            if (!(lines.get(i) instanceof Command.Label)) {
+                b.add(new Command.Label("GCNC"), first);
             }
             int source = -1;
             int j = i;
@@ -94,9 +99,9 @@ public final class ProgramForm implements Form {
                 b.add(lines.get(j), piece.originOf(j));
             }
             // the footer (source line 0 after the last block) stays with the last block
-            if (j < lines.size() || !lines.subList(i, j).stream().anyMatch(l -> l.strip().equals("EN"))) {
-                if (!lines.get(j - 1).strip().equals("EN")) {
-                    b.add("EN", piece.originOf(j - 1));
+            if (j < lines.size() || !lines.subList(i, j).stream().anyMatch(l -> l instanceof Command.End)) {
+                if (!(lines.get(j - 1) instanceof Command.End)) {
+                    b.add(new Command.End(), piece.originOf(j - 1));
                 }
                 // the program's routines (#NOHOME, #CMDERR ...: the labels after its EN) with every step,
                 // since the header's and the blocks' jumps name them
@@ -111,9 +116,9 @@ public final class ProgramForm implements Form {
     }
 
     /** The index of the first line after the program's first {@code EN} (its routines); the size when none. */
-    private static int routines(List<String> lines) {
+    private static int routines(List<Command> lines) {
         for (int k = 0; k < lines.size(); k++) {
-            if (lines.get(k).strip().equals("EN")) {
+            if (lines.get(k) instanceof Command.End) {
                 return k + 1;
             }
         }
@@ -139,7 +144,7 @@ public final class ProgramForm implements Form {
     }
 
     /** The read-back must be the download, line for line and byte for byte (line ends aside). */
-    private static void compare(List<String> sent, List<String> back, Progress progress) throws RunFault {
+    static void compare(List<String> sent, List<String> back, Progress progress) throws RunFault {
         int n = Math.max(sent.size(), back.size());
         for (int i = 0; i < n; i++) {
             String s = i < sent.size() ? sent.get(i) : "";

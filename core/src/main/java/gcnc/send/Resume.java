@@ -2,7 +2,6 @@ package gcnc.send;
 
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
-import gcnc.dmc.DmcPrinter;
 import gcnc.dmc.Fixed;
 import java.util.ArrayList;
 import java.util.List;
@@ -119,7 +118,7 @@ public final class Resume {
         while (header < lines.size() && program.sourceLine(header) == 0 && !(program.command(header) instanceof Command.End)) {
             // not the homing check: a resumed run starts where the axes stopped, which the sender checks itself
             if (!(program.command(header) instanceof Command.Jump j && j.label().equals("NOHOME"))) {
-                b.add(lines.get(header), header);
+                b.add(program.command(header), header);
             }
             header++;
         }
@@ -147,28 +146,28 @@ public final class Resume {
             }
         }
         if (tool >= 0) {
-            b.add(lines.get(tool), tool);
+            b.add(program.command(tool), tool);
         }
         for (int v : variables.values()) {
-            b.add(lines.get(v), v);
+            b.add(program.command(v), v);
         }
         for (int bit : bits.values()) {
-            b.add(lines.get(bit), bit);
+            b.add(program.command(bit), bit);
         }
         if (of >= 0) {
-            b.add(lines.get(of), of);
+            b.add(program.command(of), of);
             if (((Command.Offset) program.command(of)).volts().value() != 0) {
-                b.add(DmcPrinter.print(new Command.Wait(2000)), of);
+                b.add(new Command.Wait(2000), of);
             }
         }
         if (replanned != null) {
             Piece r = replanned.lines().build();
             for (int i = 0; i < r.lines().size(); i++) {
-                b.add(r.lines().get(i), r.origin()[i]);
+                b.add(r.commands().get(i), r.origin()[i]);
             }
         }
         for (int i = Math.max(from, header); i < lines.size(); i++) {
-            b.add(lines.get(i), i);
+            b.add(program.command(i), i);
         }
         return b.build();
     }
@@ -183,8 +182,8 @@ public final class Resume {
         Piece.Builder b = new Piece.Builder();
         int vs = s.first();
         Command speed = program.command(vs);
-        b.add(DmcPrinter.print(speed instanceof Command.VectorSpeed ? speed
-                : new Command.VectorSpeed(Fixed.of(Math.round(s.speed())))), vs);
+        b.add(speed instanceof Command.VectorSpeed ? speed
+                : new Command.VectorSpeed(Fixed.of(Math.round(s.speed()))), vs);
         double[] cursor = axes;
         List<Sequence.Piece> pieces = s.pieces();
         for (int j = k; j < pieces.size(); j++) {
@@ -197,19 +196,19 @@ public final class Resume {
                     double delta = sweepTo(theta, a.theta() + a.delta(), a.delta());
                     cr = new Command.CircularArc(cr.radius(), Fixed.fourDecimals(theta), Fixed.fourDecimals(delta), cr.speeds());
                 }
-                b.add(DmcPrinter.print(cr), p.line());
+                b.add(cr, p.line());
                 double[] g = Command.CircularArc.geometry(cursor[0], cursor[1], cr.radius().value(), cr.start().value(),
                         cr.sweep().value());
                 cursor = new double[] {g[2], g[3]};
                 boolean closes = j == pieces.size() - 1 || pieces.get(j + 1) instanceof Sequence.Arc;
                 if (closes && Math.hypot(cursor[0] - a.to()[0], cursor[1] - a.to()[1]) >= 0.5) {
                     // the arc from the stop ends a count or so off: close on the target
-                    b.add(DmcPrinter.print(vp(a.to(), axes, cr.speeds())), p.line());
+                    b.add(vp(a.to(), axes, cr.speeds()), p.line());
                     cursor = a.to();
                 }
             } else {
                 Command.Speeds speeds = c instanceof Command.VectorPosition v ? v.speeds() : Command.Speeds.NONE;
-                b.add(DmcPrinter.print(vp(p.to(), axes, speeds)), p.line());
+                b.add(vp(p.to(), axes, speeds), p.line());
                 cursor = p.to();
             }
         }
@@ -226,7 +225,7 @@ public final class Resume {
             if (c instanceof Command.AfterVector av && begun) {
                 skip = av.counts() <= run;
                 if (!skip) {
-                    b.add(DmcPrinter.print(new Command.AfterVector(Math.round(av.counts() - run))), i);
+                    b.add(new Command.AfterVector(Math.round(av.counts() - run)), i);
                 }
                 continue;
             }
@@ -234,7 +233,7 @@ public final class Resume {
                 passed.add(i);
                 continue;
             }
-            b.add(program.lines().get(i), i);
+            b.add(program.command(i), i);
         }
         return new Replanned(b, passed);
     }
