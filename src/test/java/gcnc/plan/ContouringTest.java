@@ -90,6 +90,19 @@ class ContouringTest {
     }
 
     /** A 90-degree corner at 2000 mm/min slows to the junction speed of the machine, Grbl's formula. */
+    /**
+     * A zigzag of CAM chords whose last step before turning back moves X by a fraction of a count:
+     * written as a pure Z move, the turn is a reversal, and the planner stops there as the written
+     * path says (it once blended it from the unrounded direction, and the replay found E332).
+     */
+    @Test
+    void aTurnBackAfterAMoveOfLessThanACountInXIsAReversal() throws Exception {
+        Out o = compile("G21 G99\nG50 S2000\nT0101\nG97 S1200 M03\nG00 X38. Z2.\nG01 Z0. F0.2\n"
+                + "G01 X37.006 Z-19.98\nG01 X37.003 Z-19.99\nG01 X37.001 Z0.\nG01 X37. Z-0.01\nG00 X50. Z5.\nM05\nM30\n",
+                profile("haas"));
+        assertTrue(o.stops().contains("reversal"), o.map().toString());
+    }
+
     @Test
     void aSharpCornerSlowsToItsJunctionSpeed() throws Exception {
         MachineProfile fanuc = profile("fanuc");

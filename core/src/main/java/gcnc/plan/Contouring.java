@@ -341,8 +341,10 @@ public final class Contouring implements Planner {
         /** The path of a straight move or an arc; null for a dwell or a thread. */
         static Path of(Motion m, double rapidSpeed, double acceleration) {
             if (m instanceof Motion.Linear l) {
-                double dx = l.to().x() - l.from().x();
-                double dz = l.to().z() - l.from().z();
+                // between whole counts, as the move is written (VP to the rounded target): a short move's
+                // direction is the written one, which the replay checks the corner speeds against (E332)
+                double dx = Math.rint(l.to().x()) - Math.rint(l.from().x());
+                double dz = Math.rint(l.to().z()) - Math.rint(l.from().z());
                 double len = Math.hypot(dx, dz);
                 double ux = len == 0 ? 0 : dx / len;
                 double uz = len == 0 ? 0 : dz / len;
