@@ -1,0 +1,504 @@
+package gcnc.studio;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import com.sun.net.httpserver.HttpExchange;
+import gcnc.Session;
+import gcnc.diag.Code;
+import gcnc.diag.Messages;
+import gcnc.output.DmcOutputs;
+import gcnc.send.Event;
+import gcnc.send.EventSink;
+import gcnc.send.JsonEvents;
+import gcnc.send.Link;
+import gcnc.send.Operator;
+import gcnc.send.ProgramForm;
+import gcnc.send.ResumePoint;
+import gcnc.send.RunFault;
+import gcnc.send.Sender;
+import gcnc.send.TcpLink;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Supplier;
+
+/**
+ * The Run screen's server side: the thesis's MEMORY mode from the page, as {@code gcnc run} does it.
+ * A run has two steps, because motion needs an explicit arm: <b>arm</b> compiles the saved program as
+ * {@code gcnc run} does (a program that is not clean is refused, nothing is connected) and does
+ * {@code gcnc run --dry-run} against the chosen controller (connect, pre-flight, download, read
+ * back: everything but motion), and answers what would move; <b>start</b>, given that arm, runs it
+ * ({@link Sender} with {@link ProgramForm}, the command line's own), once. The run's events
+ * ({@link Event}, exactly the lines {@code gcnc run --format json} prints) go to every page over the
+ * event stream as {@code run} events; hold, resume, step, override and stop reach the run through its
+ * {@link Operator}. One run at a time; none while another is armed elsewhere (a new arm replaces it).
+ */
+final class Runs implements AutoCloseable {
+    /** What the studio runs with at the moment of a request: Configure may have saved another profile. */
+    record Context(Session session, Analysis analysis, String profileFile) {
+    }
+
+    /** As {@code gcnc run}'s defaults: poll every 100 ms, a reply within 2 s, a stall after 10 s. */
+    static final int POLL_MS = 100;
+    static final int TIMEOUT_MS = 2000;
+    static final double STALL_SECONDS = 10;
+    /** The events of one run kept for a page that opens (or reloads) while it goes on; status aside. */
+    static final int LOG = 1000;
+
+    /** A program armed on a controller: what start needs, and what the arm answered. */
+    private record Arm(String id, String name, String version, RunTarget target, String address, boolean step,
+                       ResumePoint resumeAt, RunProgram program, Context context, JsonObject answer) {
+    }
+
+    /** The run going on. */
+    private static final class Run {
+        final Arm arm;
+        final Operator operator = new Operator();
+        volatile boolean stepWaiting;
+
+        Run(Arm arm) {
+            this.arm = arm;
+        }
+    }
+
+    private final Workspace workspace;
+    private final Supplier<Context> context;
+    private final Messages messages;
+    private final EventHub hub;
+    private final VirtualLathe virtual;
+    private final Studio.SerialPorts serial;
+    private final ReentrantLock arming = new ReentrantLock();
+    private final SecureRandom random = new SecureRandom();
+    // guarded by this
+    private Arm arm;
+    private Run run;
+    private Thread thread;
+    private final List<JsonElement> log = new ArrayList<>();
+    private JsonElement lastStatus;
+    private Integer ended;
+
+    Runs(Workspace workspace, Supplier<Context> context, Messages messages, EventHub hub, Studio.Running settings) {
+        this.workspace = workspace;
+        this.context = context;
+        this.messages = messages;
+        this.hub = hub;
+        this.virtual = new VirtualLathe(settings.virtualSpeed());
+        this.serial = settings.serial();
+    }
+
+    /** {@code run} (GET) and {@code run/arm|start|hold|resume|step|override|stop} (POST). */
+    void handle(String endpoint, HttpExchange ex) throws IOException, Http.Fail {
+        if (endpoint.equals("run")) {
+            if (!ex.getRequestMethod().equals("GET")) {
+                throw new Http.Fail(405, "use GET for /api/run");
+            }
+            Http.json(ex, 200, snapshot());
+            return;
+        }
+        if (!ex.getRequestMethod().equals("POST")) {
+            throw new Http.Fail(405, "use POST for /api/" + endpoint);
+        }
+        JsonObject req = Http.body(ex);
+        JsonObject answer = switch (endpoint) {
+            case "run/arm" -> arm(req);
+            case "run/start" -> start(req);
+            case "run/hold" -> hold();
+            case "run/resume" -> resume();
+            case "run/step" -> step();
+            case "run/override" -> override(req);
+            case "run/stop" -> stop();
+            default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
+        };
+        Http.json(ex, 200, answer);
+    }
+
+    // ---- arm --------------------------------------------------------------------------------------------
+
+    /**
+     * POST /api/run/arm {name, target, step?, resumeAt?}: the saved program compiled as gcnc run does
+     * and tried on the controller without motion. Answers {@code armed} and, when armed, the
+     * {@code arm} to start with.
+     */
+    private JsonObject arm(JsonObject req) throws IOException, Http.Fail {
+        String name = Http.required(req, "name");
+        RunTarget target = RunTarget.of(req.get("target"));
+        boolean step = Http.flag(req, "step");
+        String at = Http.string(req, "resumeAt");
+        ResumePoint resumeAt;
+        try {
+            resumeAt = at == null || at.isBlank() ? null : ResumePoint.parse(at);
+        } catch (IllegalArgumentException e) {
+            throw new Http.Fail(400, "\"resumeAt\" is a G-code line, N or N:K (K: the block's K-th motion)");
+        }
+        if (target instanceof RunTarget.Serial && serial == null) {
+            throw new Http.Fail(400, "this studio cannot open serial ports (start it with gcnc studio, from gcnc.jar)");
+        }
+        Path file = refusing(() -> workspace.existing(name));
+        Path dmc = DmcOutputs.defaultOutput(file);
+        String dmcName = workspace.name(dmc);
+        refusing(() -> workspace.writable(dmc, dmcName, false));
+        refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
+        if (!arming.tryLock()) {
+            throw new Http.Fail(409, "another arm is under way");
+        }
+        try {
+            synchronized (this) {
+                if (run != null) {
+                    throw new Http.Fail(409, "a run is going on (" + run.arm.name() + "): stop it or let it end first");
+                }
+                arm = null; // a new arm replaces the last, whatever comes of it
+            }
+            String version = Workspace.version(Files.readAllBytes(file));
+            Context ctx = context.get();
+            RunProgram program;
+            try {
+                program = RunProgram.prepare(ctx.session(), ctx.analysis(), name, file, dmc);
+            } catch (gcnc.output.AtomicOutput.Refused e) {
+                throw new Http.Fail(403, "gcnc refuses to write " + dmcName + " (" + e.code().id() + ")");
+            }
+            JsonObject o = new JsonObject();
+            o.addProperty("name", name);
+            o.addProperty("target", target.shown());
+            o.addProperty("step", step);
+            o.addProperty("resumeAt", resumeAt == null ? null : resumeAt.toString());
+            o.add("diagnostics", program.report());
+            if (!program.clean()) {
+                // the same refusal as gcnc run's exit 1: nothing was connected, nothing sent
+                o.addProperty("armed", false);
+                o.addProperty("refused", "the program is not clean: " + program.errors() + " error(s); nothing was sent");
+                return o;
+            }
+            o.addProperty("dmc", dmcName);
+            o.addProperty("dmcLines", program.program().lines().size());
+            String address = target instanceof RunTarget.Virtual ? virtual(ctx, resumeAt == null) : null;
+            if (address != null) {
+                o.addProperty("address", address);
+            }
+            Arm tried = new Arm(newId(), name, version, target, address, step, resumeAt, program, ctx, o);
+            List<JsonElement> events = new ArrayList<>();
+            int status = dryRun(tried, e -> events.add(JsonParser.parseString(JsonEvents.json(e))));
+            JsonArray list = new JsonArray();
+            events.forEach(list::add);
+            o.add("events", list);
+            o.addProperty("armed", status == Sender.RAN);
+            if (status == Sender.RAN) {
+                o.addProperty("arm", tried.id());
+                synchronized (this) {
+                    arm = tried;
+                }
+            }
+            return o;
+        } finally {
+            arming.unlock();
+        }
+    }
+
+    /** The studio's virtual controller for this machine; homed first for a run from the start (not a resume). */
+    private String virtual(Context ctx, boolean home) throws Http.Fail {
+        try {
+            if (home) {
+                virtual.home(ctx.session().profile());
+            }
+            return virtual.address(ctx.session().profile());
+        } catch (IOException e) {
+            throw new Http.Fail(500, "could not start the virtual controller: " + e.getMessage());
+        }
+    }
+
+    /** {@code gcnc run --dry-run}: connect, pre-flight, download and read back, no motion. */
+    private int dryRun(Arm a, EventSink events) {
+        Operator operator = new Operator();
+        if (a.step()) {
+            // step mode downloads block by block, each after an Enter: all given in advance (nothing moves)
+            for (int i = 0; i <= a.program().program().lines().size(); i++) {
+                operator.enter();
+            }
+        }
+        Link link = linkOr(a, events);
+        return link == null ? Sender.CONNECTION : sender(a, operator, events, true).run(link, TIMEOUT_MS);
+    }
+
+    /** The command line's sender and program form, with gcnc run's defaults. */
+    private Sender sender(Arm a, Operator operator, EventSink events, boolean dryRun) {
+        Session s = a.context().session();
+        return new Sender(s.profile(), a.program().program(), a.program().blocks(), events, messages, operator,
+                new Sender.Options(a.step(), dryRun, a.resumeAt(), POLL_MS),
+                new ProgramForm(POLL_MS, Sender.tolerance(s.profile()), STALL_SECONDS), p -> resumeCommand(a, p));
+    }
+
+    /** The link to the arm's controller; a link that cannot be opened is told as a finding (and null). */
+    private Link linkOr(Arm a, EventSink events) {
+        try {
+            return open(a);
+        } catch (RunFault f) {
+            events.accept(new Event.Finding(f.code().id(), "error", 0, messages.render(f.code(), f.args())));
+            return null;
+        }
+    }
+
+    private Link open(Arm a) throws RunFault {
+        if (a.target() instanceof RunTarget.Serial p) {
+            return serial.open(p.device(), p.baud(), p.hardwareHandshake());
+        }
+        return tcp(a.target() instanceof RunTarget.Tcp t ? t.address() : a.address());
+    }
+
+    private static Link tcp(String address) throws RunFault {
+        try {
+            return TcpLink.open(address, TIMEOUT_MS);
+        } catch (IOException e) {
+            throw new RunFault(Code.E817_NO_CONNECTION, 0, false, address,
+                    e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
+        }
+    }
+
+    /** The command line that does the same resume: {@code gcnc run NAME --machine M <target> [--step] --resume-at N}. */
+    private String resumeCommand(Arm a, ResumePoint at) {
+        List<String> args = new ArrayList<>(List.of("gcnc", "run", a.name(), "--machine",
+                a.context().profileFile() != null ? a.context().profileFile() : a.context().session().profile().name()));
+        if (a.target() instanceof RunTarget.Serial p) {
+            args.addAll(List.of("--port", p.device(), "--baud", Integer.toString(p.baud())));
+            if (!p.hardwareHandshake()) {
+                args.addAll(List.of("--handshake", "none"));
+            }
+        } else {
+            args.addAll(List.of("--tcp", a.target() instanceof RunTarget.Tcp t ? t.address() : a.address()));
+        }
+        if (a.step()) {
+            args.add("--step");
+        }
+        args.addAll(List.of("--resume-at", at.toString()));
+        return String.join(" ", args.stream().map(Runs::quote).toList());
+    }
+
+    private static String quote(String a) {
+        return a.matches("[A-Za-z0-9_@%+=:,./-]+") ? a : "'" + a.replace("'", "'\\''") + "'";
+    }
+
+    // ---- the run ----------------------------------------------------------------------------------------
+
+    /** POST /api/run/start {arm}: runs what that arm armed, once. */
+    private JsonObject start(JsonObject req) throws IOException, Http.Fail {
+        String id = Http.required(req, "arm");
+        Run r;
+        synchronized (this) {
+            if (run != null) {
+                throw new Http.Fail(409, "a run is going on (" + run.arm.name() + "): one at a time");
+            }
+            if (arm == null || !java.security.MessageDigest.isEqual(arm.id().getBytes(), id.getBytes())) {
+                throw new Http.Fail(409, "nothing is armed with this arm: arm the program first (motion needs it)");
+            }
+            Arm a = arm;
+            arm = null; // an arm moves the machine once
+            Path file = refusing(() -> workspace.existing(a.name()));
+            if (!Workspace.version(Files.readAllBytes(file)).equals(a.version())) {
+                throw new Http.Fail(409, a.name() + " changed since it was armed: arm it again");
+            }
+            if (context.get().session() != a.context().session()) {
+                throw new Http.Fail(409, "the machine profile changed since the program was armed: arm it again");
+            }
+            r = new Run(a);
+            run = r;
+            log.clear();
+            lastStatus = null;
+            ended = null;
+        }
+        Thread t = new Thread(() -> follow(r), "gcnc-studio-run");
+        t.setDaemon(true);
+        synchronized (this) {
+            thread = t;
+        }
+        t.start();
+        JsonObject o = new JsonObject();
+        o.addProperty("started", true);
+        o.addProperty("name", r.arm.name());
+        o.addProperty("target", r.arm.target().shown());
+        o.addProperty("step", r.arm.step());
+        return o;
+    }
+
+    /** The run's thread: the sender to its end, every event to the pages, then {@code run-ended}. */
+    private void follow(Run r) {
+        EventSink events = e -> publish(r, e);
+        int status;
+        try {
+            Link link = linkOr(r.arm, events);
+            status = link == null ? Sender.CONNECTION : sender(r.arm, r.operator, events, false).run(link, TIMEOUT_MS);
+        } catch (RuntimeException e) {
+            // a fault of gcnc itself: told as such, never a silent end of the run
+            events.accept(new Event.Message("the run failed inside gcnc: " + e));
+            status = Sender.STOPPED;
+        }
+        JsonObject end = new JsonObject();
+        end.addProperty("event", "run-ended");
+        end.addProperty("status", status);
+        synchronized (this) {
+            if (log.size() < LOG) {
+                log.add(end);
+            }
+            ended = status;
+            if (run == r) {
+                run = null;
+            }
+        }
+        hub.publish("run", end.toString());
+    }
+
+    private void publish(Run r, Event e) {
+        String json = JsonEvents.json(e);
+        if (e instanceof Event.StepWait) {
+            r.stepWaiting = true;
+        }
+        synchronized (this) {
+            if (e instanceof Event.Status) {
+                lastStatus = JsonParser.parseString(json);
+            } else if (log.size() < LOG) {
+                log.add(JsonParser.parseString(json));
+            }
+        }
+        hub.publish("run", json);
+    }
+
+    private synchronized Run running() throws Http.Fail {
+        if (run == null) {
+            throw new Http.Fail(409, "no run is going on");
+        }
+        return run;
+    }
+
+    /** POST /api/run/hold: feed hold (VR 0; the spindle keeps turning), as the first Ctrl-C. */
+    private JsonObject hold() throws Http.Fail {
+        Run r = running();
+        synchronized (r) {
+            if (r.operator.held()) {
+                throw new Http.Fail(409, "the run is already held");
+            }
+            r.operator.interrupt(); // one interrupt holds; a second would stop, hence held() first
+        }
+        return state(r);
+    }
+
+    /** POST /api/run/resume: the end of a feed hold, as Enter. */
+    private JsonObject resume() throws Http.Fail {
+        Run r = running();
+        synchronized (r) {
+            if (!r.operator.held()) {
+                throw new Http.Fail(409, "the run is not held");
+            }
+            r.operator.enter();
+        }
+        return state(r);
+    }
+
+    /** POST /api/run/step: the next block in step mode, as Enter. */
+    private JsonObject step() throws Http.Fail {
+        Run r = running();
+        if (!r.arm.step()) {
+            throw new Http.Fail(409, "the run is not in step mode");
+        }
+        r.stepWaiting = false;
+        r.operator.enter();
+        return state(r);
+    }
+
+    /** POST /api/run/override {percent}: the feed override, 10 to 200 % (VR), as the keys + and -. */
+    private JsonObject override(JsonObject req) throws Http.Fail {
+        int percent = Http.integer(req, "percent", 10, 200);
+        Run r = running();
+        r.operator.override(percent / 100.0);
+        return state(r);
+    }
+
+    /** POST /api/run/stop: stop now (ST, spindle and coolant off), as q or the second Ctrl-C. */
+    private JsonObject stop() throws Http.Fail {
+        Run r = running();
+        r.operator.stop();
+        return state(r);
+    }
+
+    private static JsonObject state(Run r) {
+        JsonObject o = new JsonObject();
+        o.addProperty("running", true);
+        o.addProperty("held", r.operator.held());
+        o.addProperty("stopping", r.operator.stopped());
+        o.addProperty("override", r.operator.override());
+        return o;
+    }
+
+    /**
+     * GET /api/run: where the Run screen stands: {@code state} idle, armed or running; the arm's answer
+     * when armed; the events of the last (or current) run and its last status; its exit status when
+     * it ended.
+     */
+    private synchronized JsonObject snapshot() {
+        JsonObject o = new JsonObject();
+        o.addProperty("state", run != null ? "running" : arm != null ? "armed" : "idle");
+        if (arm != null) {
+            JsonObject a = arm.answer().deepCopy();
+            a.remove("diagnostics");
+            a.addProperty("arm", arm.id());
+            o.add("armed", a);
+        }
+        if (run != null) {
+            o.addProperty("name", run.arm.name());
+            o.addProperty("step", run.arm.step());
+            o.addProperty("held", run.operator.held());
+            o.addProperty("stepWaiting", run.stepWaiting);
+        }
+        JsonArray events = new JsonArray();
+        log.forEach(events::add);
+        o.add("events", events);
+        if (lastStatus != null) {
+            o.add("status", lastStatus);
+        }
+        if (ended != null) {
+            o.addProperty("ended", ended);
+        }
+        return o;
+    }
+
+    private String newId() {
+        byte[] b = new byte[12];
+        random.nextBytes(b);
+        return HexFormat.of().formatHex(b);
+    }
+
+    /** The studio stops: a run going on is stopped (ST, spindle off) before the virtual controller goes. */
+    @Override
+    public void close() {
+        Thread t;
+        synchronized (this) {
+            if (run != null) {
+                run.operator.stop();
+            }
+            t = thread;
+        }
+        if (t != null) {
+            try {
+                t.join(5000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        virtual.close();
+    }
+
+    private interface WorkspaceCall<T> {
+        T call() throws Workspace.Refused, IOException;
+    }
+
+    private static <T> T refusing(WorkspaceCall<T> call) throws IOException, Http.Fail {
+        try {
+            return call.call();
+        } catch (Workspace.Refused r) {
+            throw new Http.Fail(r.status(), r.getMessage());
+        }
+    }
+}
