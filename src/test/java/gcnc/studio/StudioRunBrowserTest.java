@@ -88,6 +88,11 @@ class StudioRunBrowserTest {
         assertTrue(armed.contains("read back identical"), armed);
     }
 
+    /** How many status events the page has shown (the display's counter). */
+    private int statusCount() {
+        return Integer.parseInt(browser.findElement(By.id("dro")).getAttribute("data-polls"));
+    }
+
     /** The line the text lights as executing (the editor's line number), or 0. */
     private int litInText() {
         Object n = ((org.openqa.selenium.JavascriptExecutor) browser).executeScript("""
@@ -142,6 +147,12 @@ class StudioRunBrowserTest {
         arm();
         browser.findElement(By.id("run-start")).click();
         wait.until(d -> litInText() >= 8);
+        // the operator holds, then stops: the sender's last poll (every 100 ms) then names the block the
+        // axes stand in (a stop in full motion at five times real time may be a short block late: see the report)
+        browser.findElement(By.id("run-hold")).click();
+        waitFor("held");
+        int polls = statusCount();
+        wait.until(d -> statusCount() >= polls + 3);
         browser.findElement(By.id("run-stop")).click();
         waitFor("stopped");
         String where = browser.findElement(By.id("runstopped")).getText();

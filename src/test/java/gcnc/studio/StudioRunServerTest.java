@@ -252,6 +252,10 @@ class StudioRunServerTest {
             assertEquals(409, post("run/step", "{}").status());
             assertEquals(200, post("run/override", "{\"percent\":150}").status());
             readUntil(in, seen, "\"override\":1.5");
+            // stopped during a hold: the sender's polls go on, so the block it names is the one the axes stand in
+            assertEquals(200, post("run/hold", "{}").status());
+            readUntil(in, seen, "{\"event\":\"hold\",\"held\":true,\"override\":1.5");
+            Thread.sleep(500);
             assertEquals(200, post("run/stop", "{}").status());
             readUntil(in, seen, "\"event\":\"run-ended\",\"status\":3");
         }

@@ -6,7 +6,6 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import com.sun.net.httpserver.HttpExchange;
 import gcnc.Session;
-import gcnc.diag.Code;
 import gcnc.diag.Messages;
 import gcnc.output.DmcOutputs;
 import gcnc.send.Event;
@@ -14,11 +13,8 @@ import gcnc.send.EventSink;
 import gcnc.send.JsonEvents;
 import gcnc.send.Link;
 import gcnc.send.Operator;
-import gcnc.send.ProgramForm;
 import gcnc.send.ResumePoint;
-import gcnc.send.RunFault;
 import gcnc.send.Sender;
-import gcnc.send.TcpLink;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -45,25 +41,16 @@ final class Runs implements AutoCloseable {
     record Context(Session session, Analysis analysis, String profileFile) {
     }
 
-    /** As {@code gcnc run}'s defaults: poll every 100 ms, a reply within 2 s, a stall after 10 s. */
-    static final int POLL_MS = 100;
-    static final int TIMEOUT_MS = 2000;
-    static final double STALL_SECONDS = 10;
     /** The events of one run kept for a page that opens (or reloads) while it goes on; status aside. */
     static final int LOG = 1000;
 
-    /** A program armed on a controller: what start needs, and what the arm answered. */
-    private record Arm(String id, String name, String version, RunTarget target, String address, boolean step,
-                       ResumePoint resumeAt, RunProgram program, Context context, JsonObject answer) {
-    }
-
     /** The run going on. */
     private static final class Run {
-        final Arm arm;
+        final RunArm arm;
         final Operator operator = new Operator();
         volatile boolean stepWaiting;
 
-        Run(Arm arm) {
+        Run(RunArm arm) {
             this.arm = arm;
         }
     }
@@ -72,12 +59,11 @@ final class Runs implements AutoCloseable {
     private final Supplier<Context> context;
     private final Messages messages;
     private final EventHub hub;
-    private final VirtualLathe virtual;
-    private final Studio.SerialPorts serial;
+    private final RunControllers controllers;
     private final ReentrantLock arming = new ReentrantLock();
     private final SecureRandom random = new SecureRandom();
     // guarded by this
-    private Arm arm;
+    private RunArm arm;
     private Run run;
     private Thread thread;
     private final List<JsonElement> log = new ArrayList<>();
@@ -89,8 +75,7 @@ final class Runs implements AutoCloseable {
         this.context = context;
         this.messages = messages;
         this.hub = hub;
-        this.virtual = new VirtualLathe(settings.virtualSpeed());
-        this.serial = settings.serial();
+        this.controllers = new RunControllers(settings, messages);
     }
 
     /** {@code run} (GET) and {@code run/arm|start|hold|resume|step|override|stop} (POST). */
@@ -137,7 +122,7 @@ final class Runs implements AutoCloseable {
         } catch (IllegalArgumentException e) {
             throw new Http.Fail(400, "\"resumeAt\" is a G-code line, N or N:K (K: the block's K-th motion)");
         }
-        if (target instanceof RunTarget.Serial && serial == null) {
+        if (target instanceof RunTarget.Serial && !controllers.serial()) {
             throw new Http.Fail(400, "this studio cannot open serial ports (start it with gcnc studio, from gcnc.jar)");
         }
         Path file = refusing(() -> workspace.existing(name));
@@ -177,13 +162,13 @@ final class Runs implements AutoCloseable {
             }
             o.addProperty("dmc", dmcName);
             o.addProperty("dmcLines", program.program().lines().size());
-            String address = target instanceof RunTarget.Virtual ? virtual(ctx, resumeAt == null) : null;
+            String address = target instanceof RunTarget.Virtual ? controllers.virtual(ctx.session().profile(), resumeAt == null) : null;
             if (address != null) {
                 o.addProperty("address", address);
             }
-            Arm tried = new Arm(newId(), name, version, target, address, step, resumeAt, program, ctx, o);
+            RunArm tried = new RunArm(newId(), name, version, target, address, step, resumeAt, program, ctx, o);
             List<JsonElement> events = new ArrayList<>();
-            int status = dryRun(tried, e -> events.add(JsonParser.parseString(JsonEvents.json(e))));
+            int status = controllers.dryRun(tried, e -> events.add(JsonParser.parseString(JsonEvents.json(e))));
             JsonArray list = new JsonArray();
             events.forEach(list::add);
             o.add("events", list);
@@ -200,88 +185,6 @@ final class Runs implements AutoCloseable {
         }
     }
 
-    /** The studio's virtual controller for this machine; homed first for a run from the start (not a resume). */
-    private String virtual(Context ctx, boolean home) throws Http.Fail {
-        try {
-            if (home) {
-                virtual.home(ctx.session().profile());
-            }
-            return virtual.address(ctx.session().profile());
-        } catch (IOException e) {
-            throw new Http.Fail(500, "could not start the virtual controller: " + e.getMessage());
-        }
-    }
-
-    /** {@code gcnc run --dry-run}: connect, pre-flight, download and read back, no motion. */
-    private int dryRun(Arm a, EventSink events) {
-        Operator operator = new Operator();
-        if (a.step()) {
-            // step mode downloads block by block, each after an Enter: all given in advance (nothing moves)
-            for (int i = 0; i <= a.program().program().lines().size(); i++) {
-                operator.enter();
-            }
-        }
-        Link link = linkOr(a, events);
-        return link == null ? Sender.CONNECTION : sender(a, operator, events, true).run(link, TIMEOUT_MS);
-    }
-
-    /** The command line's sender and program form, with gcnc run's defaults. */
-    private Sender sender(Arm a, Operator operator, EventSink events, boolean dryRun) {
-        Session s = a.context().session();
-        return new Sender(s.profile(), a.program().program(), a.program().blocks(), events, messages, operator,
-                new Sender.Options(a.step(), dryRun, a.resumeAt(), POLL_MS),
-                new ProgramForm(POLL_MS, Sender.tolerance(s.profile()), STALL_SECONDS), p -> resumeCommand(a, p));
-    }
-
-    /** The link to the arm's controller; a link that cannot be opened is told as a finding (and null). */
-    private Link linkOr(Arm a, EventSink events) {
-        try {
-            return open(a);
-        } catch (RunFault f) {
-            events.accept(new Event.Finding(f.code().id(), "error", 0, messages.render(f.code(), f.args())));
-            return null;
-        }
-    }
-
-    private Link open(Arm a) throws RunFault {
-        if (a.target() instanceof RunTarget.Serial p) {
-            return serial.open(p.device(), p.baud(), p.hardwareHandshake());
-        }
-        return tcp(a.target() instanceof RunTarget.Tcp t ? t.address() : a.address());
-    }
-
-    private static Link tcp(String address) throws RunFault {
-        try {
-            return TcpLink.open(address, TIMEOUT_MS);
-        } catch (IOException e) {
-            throw new RunFault(Code.E817_NO_CONNECTION, 0, false, address,
-                    e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
-        }
-    }
-
-    /** The command line that does the same resume: {@code gcnc run NAME --machine M <target> [--step] --resume-at N}. */
-    private String resumeCommand(Arm a, ResumePoint at) {
-        List<String> args = new ArrayList<>(List.of("gcnc", "run", a.name(), "--machine",
-                a.context().profileFile() != null ? a.context().profileFile() : a.context().session().profile().name()));
-        if (a.target() instanceof RunTarget.Serial p) {
-            args.addAll(List.of("--port", p.device(), "--baud", Integer.toString(p.baud())));
-            if (!p.hardwareHandshake()) {
-                args.addAll(List.of("--handshake", "none"));
-            }
-        } else {
-            args.addAll(List.of("--tcp", a.target() instanceof RunTarget.Tcp t ? t.address() : a.address()));
-        }
-        if (a.step()) {
-            args.add("--step");
-        }
-        args.addAll(List.of("--resume-at", at.toString()));
-        return String.join(" ", args.stream().map(Runs::quote).toList());
-    }
-
-    private static String quote(String a) {
-        return a.matches("[A-Za-z0-9_@%+=:,./-]+") ? a : "'" + a.replace("'", "'\\''") + "'";
-    }
-
     // ---- the run ----------------------------------------------------------------------------------------
 
     /** POST /api/run/start {arm}: runs what that arm armed, once. */
@@ -295,7 +198,7 @@ final class Runs implements AutoCloseable {
             if (arm == null || !java.security.MessageDigest.isEqual(arm.id().getBytes(), id.getBytes())) {
                 throw new Http.Fail(409, "nothing is armed with this arm: arm the program first (motion needs it)");
             }
-            Arm a = arm;
+            RunArm a = arm;
             arm = null; // an arm moves the machine once
             Path file = refusing(() -> workspace.existing(a.name()));
             if (!Workspace.version(Files.readAllBytes(file)).equals(a.version())) {
@@ -329,8 +232,8 @@ final class Runs implements AutoCloseable {
         EventSink events = e -> publish(r, e);
         int status;
         try {
-            Link link = linkOr(r.arm, events);
-            status = link == null ? Sender.CONNECTION : sender(r.arm, r.operator, events, false).run(link, TIMEOUT_MS);
+            Link link = controllers.link(r.arm, events);
+            status = link == null ? Sender.CONNECTION : controllers.sender(r.arm, r.operator, events, false).run(link, RunControllers.TIMEOUT_MS);
         } catch (RuntimeException e) {
             // a fault of gcnc itself: told as such, never a silent end of the run
             events.accept(new Event.Message("the run failed inside gcnc: " + e));
@@ -487,7 +390,7 @@ final class Runs implements AutoCloseable {
                 Thread.currentThread().interrupt();
             }
         }
-        virtual.close();
+        controllers.close();
     }
 
     private interface WorkspaceCall<T> {

@@ -162,6 +162,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     $("dro-counts").textContent = s.counts ? t.counts(s.counts.map((v) => fmt(v, 0)).join(", ")) : "";
     $("dro-block").textContent = s.line > 0 ? (s.number ? `N${s.number} · ` : "") + `${t.line} ${s.line}` + (s.file ? ` (${s.file})` : "") : "—";
     $("dro").dataset.line = s.line;
+    $("dro").dataset.polls = String(Number($("dro").dataset.polls || 0) + 1);
     $("dro-feed").textContent = s.feed === null ? "—" : `F${fmt(s.feed)} ${s.perRev ? "/rev" : "/min"}`;
     $("dro-spindle").textContent = (s.rpm === null ? "S —" : `S${fmt(s.rpm, 0)}`) + " " + (s.spindle ? t.spindleDir[s.spindle] : "");
     $("dro-progress").value = s.progress || 0;
