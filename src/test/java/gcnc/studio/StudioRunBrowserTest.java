@@ -131,6 +131,13 @@ class StudioRunBrowserTest {
         assertEquals(at, browser.findElement(By.id("dro-x")).getText() + " " + browser.findElement(By.id("dro-z")).getText(),
                 "a feed hold holds");
         assertTrue(browser.findElement(By.id("run-hold")).getAttribute("disabled") != null);
+        // a page opened (or reloaded) during the run finds it: the Run screen open, held, the block lit
+        int held = litInText();
+        browser.navigate().refresh();
+        wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
+        waitFor("held");
+        wait.until(d -> litInText() == held && litOnPath() == held);
+        assertEquals(at, browser.findElement(By.id("dro-x")).getText() + " " + browser.findElement(By.id("dro-z")).getText());
         browser.findElement(By.id("run-resume")).click();
         waitFor("running");
         wait.until(d -> !(d.findElement(By.id("dro-x")).getText() + " " + d.findElement(By.id("dro-z")).getText()).equals(at));
