@@ -31,10 +31,10 @@ import java.util.function.Supplier;
  * {@code gcnc run} does (a program that is not clean is refused, nothing is connected) and does
  * {@code gcnc run --dry-run} against the chosen controller (connect, pre-flight, download, read
  * back: everything but motion), and answers what would move; <b>start</b>, given that arm, runs it
- * ({@link Sender} with {@link ProgramForm}, the command line's own), once. The run's events
+ * ({@link Sender} with {@link gcnc.send.ProgramForm}, the command line's own, made by {@link RunControllers}), once. The run's events
  * ({@link Event}, exactly the lines {@code gcnc run --format json} prints) go to every page over the
  * event stream as {@code run} events; hold, resume, step, override and stop reach the run through its
- * {@link Operator}. One run at a time; none while another is armed elsewhere (a new arm replaces it).
+ * {@link Operator}. One run at a time, and one arm: a new arm replaces the last.
  */
 final class Runs implements AutoCloseable {
     /** What the studio runs with at the moment of a request: Configure may have saved another profile. */
@@ -57,7 +57,6 @@ final class Runs implements AutoCloseable {
 
     private final Workspace workspace;
     private final Supplier<Context> context;
-    private final Messages messages;
     private final EventHub hub;
     private final RunControllers controllers;
     private final ReentrantLock arming = new ReentrantLock();
@@ -73,7 +72,6 @@ final class Runs implements AutoCloseable {
     Runs(Workspace workspace, Supplier<Context> context, Messages messages, EventHub hub, Studio.Running settings) {
         this.workspace = workspace;
         this.context = context;
-        this.messages = messages;
         this.hub = hub;
         this.controllers = new RunControllers(settings, messages);
     }
