@@ -12,6 +12,7 @@ import gcnc.send.ProgramForm;
 import gcnc.send.ResumePoint;
 import gcnc.send.RunFault;
 import gcnc.send.Sender;
+import gcnc.send.StreamForm;
 import gcnc.send.TcpLink;
 import java.io.IOException;
 import java.util.ArrayList;
@@ -20,7 +21,8 @@ import java.util.List;
 /**
  * How a studio run reaches its controller and what sends to it: the link (the studio's virtual
  * Galil, a controller's Ethernet port, a serial port through the command line's link), the
- * command line's {@link Sender} and {@link ProgramForm} with {@code gcnc run}'s defaults, the dry
+ * command line's {@link Sender} and its {@link ProgramForm} or {@link StreamForm} (as the compile
+ * chose) with {@code gcnc run}'s defaults, the dry
  * run an arm is, and the command line that resumes a stopped run from a terminal.
  */
 final class RunControllers implements AutoCloseable {
@@ -74,7 +76,9 @@ final class RunControllers implements AutoCloseable {
         Session s = a.context().session();
         return new Sender(s.profile(), a.program().program(), a.program().blocks(), events, messages, operator,
                 new Sender.Options(a.step(), dryRun, a.resumeAt(), POLL_MS),
-                new ProgramForm(POLL_MS, Sender.tolerance(s.profile()), STALL_SECONDS), p -> resumeCommand(a, p));
+                a.program().form() == gcnc.dmc.Form.STREAM
+                        ? new StreamForm(POLL_MS, Sender.tolerance(s.profile()), STALL_SECONDS)
+                        : new ProgramForm(POLL_MS, Sender.tolerance(s.profile()), STALL_SECONDS), p -> resumeCommand(a, p));
     }
 
     /** The link to the arm's controller; a link that cannot be opened is told as a finding (and null). */

@@ -3,54 +3,69 @@ package gcnc.studio;
 import com.google.gson.JsonObject;
 import gcnc.Compiler;
 import gcnc.Session;
-import gcnc.dmc.DmcPrinter;
-import gcnc.dmc.SourceMap;
+import gcnc.dmc.Form;
+import gcnc.dmc.Instruction;
 import gcnc.machine.MachineProfile;
 import gcnc.output.DmcOutputs;
+import gcnc.output.FormOutputs;
 import gcnc.send.BlockTable;
 import gcnc.send.DmcProgram;
-import gcnc.send.MapReader;
 import gcnc.sim.SimOptions;
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.Reader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Optional;
+import java.util.function.Consumer;
 
 /**
  * A saved program made ready to run, step for step as {@code gcnc run FILE} makes it (SendCommand):
- * checked, compiled and simulated with every motion stopped at its end, {@code FILE.dmc} and its map
- * written beside it only when clean, then the DMC and the map read back from disk (so that what runs
- * is what the files say) with the checker's state at each block for the live display. A program that
- * is not clean comes back refused, with its diagnostics, and nothing else is done.
+ * checked, compiled and simulated (blended as the profile plans it; every motion stopped at its end
+ * in step mode), written beside it only when clean in the form {@code gcnc compile} chooses
+ * ({@code FILE.dmc} and its map, and {@code FILE.stream} when the program does not fit the
+ * controller), the compiled instructions kept as the program sent, with the checker's state at each
+ * block for the live display. A program that is not clean comes back refused, with its diagnostics,
+ * and nothing else is done.
  *
  * @param report  the diagnostics, as {@code gcnc check --format json} writes them
- * @param program the DMC program and its source map (null when refused)
+ * @param errors  how many errors (the refusal says it)
+ * @param program the DMC program and its source lines (null when refused)
  * @param blocks  the modal state at each G-code line (null when refused)
+ * @param form    program or stream: the form sent (null when refused)
  */
-record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable blocks) {
+record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable blocks, Form form) {
     boolean clean() {
         return program != null;
     }
 
-    /** {@code file} (named {@code name} on the page) compiled to {@code dmc} and its map, and read back. */
-    static RunProgram prepare(Session session, Analysis analysis, String name, Path file, Path dmc) throws IOException {
+    /** {@code file} (named {@code name} on the page) compiled to {@code dmc} (and its stream) beside it. */
+    static RunProgram prepare(Session session, Analysis analysis, String name, Path file, Path dmc, boolean step)
+            throws IOException {
         Optional<Path> folder = Optional.ofNullable(file.getParent());
         Optional<SimOptions> sim = Optional.of(session.simulation());
+        List<Instruction> compiled = new ArrayList<>();
         Compiler.Result r;
-        try (DmcOutputs outputs = DmcOutputs.open(file, dmc, true)) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+        DmcProgram program;
+        Form form;
+        try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
             outputs.mapSource(file.getFileName().toString(), file);
+            Consumer<Instruction> written = outputs.sink(Optional.empty(), session.profile().controllerLimits());
+            Consumer<Instruction> sink = i -> {
+                compiled.add(i);
+                written.accept(i);
+            };
             try (Reader in = Session.decode(Files.newInputStream(file))) {
-                // exact stop: the sender follows the program sequence by sequence (docs/run.md), as gcnc run
-                r = session.withPrograms(folder).compileExactStop(in, sim,
-                        mapper.wrap(i -> outputs.dmcLine(DmcPrinter.print(i.command()))));
+                Session s = session.withPrograms(folder);
+                // step mode runs one block at a time, so every motion stops at its end there (docs/run.md)
+                r = step ? s.compileExactStop(in, sim, sink) : s.compile(in, sim, false, sink);
             }
             if (!r.ok()) {
-                return new RunProgram(analysis.report(name, r), r.diagnostics().errorCount(), null, null);
+                return new RunProgram(analysis.report(name, r), r.diagnostics().errorCount(), null, null, null);
             }
+            form = outputs.finish(r.diagnostics());
+            program = DmcProgram.of(compiled, session.profile());
             outputs.commit();
         } catch (DmcOutputs.Failed e) {
             throw e.problem();
@@ -58,12 +73,9 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
         // with a blank given, the work offsets on the blank's face, as the compile placed them
         MachineProfile onBlank = sim.flatMap(SimOptions::stock).map(b -> session.profile().withStickout(b.stickout()))
                 .orElse(session.profile());
-        try (BufferedReader map = Files.newBufferedReader(DmcOutputs.mapFile(dmc), StandardCharsets.UTF_8);
-             Reader again = Session.decode(Files.newInputStream(file))) {
-            DmcProgram program = DmcProgram.read(Files.readAllLines(dmc, StandardCharsets.UTF_8), MapReader.read(map),
-                    session.profile());
+        try (Reader again = Session.decode(Files.newInputStream(file))) {
             BlockTable blocks = BlockTable.of(again, session.tables(), onBlank, folder);
-            return new RunProgram(analysis.report(name, r), 0, program, blocks);
+            return new RunProgram(analysis.report(name, r), 0, program, blocks, form);
         }
     }
 }

@@ -128,6 +128,11 @@ final class Runs implements AutoCloseable {
         String dmcName = workspace.name(dmc);
         refusing(() -> workspace.writable(dmc, dmcName, false));
         refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
+        // the stream form's files too: written when the program does not fit the controller, removed when it does
+        Path stream = gcnc.output.FormOutputs.streamFile(dmc);
+        String streamName = workspace.name(stream);
+        refusing(() -> workspace.writable(stream, streamName, false));
+        refusing(() -> workspace.writable(DmcOutputs.mapFile(stream), streamName + ".map", false));
         if (!arming.tryLock()) {
             throw new Http.Fail(409, "another arm is under way");
         }
@@ -142,7 +147,7 @@ final class Runs implements AutoCloseable {
             Context ctx = context.get();
             RunProgram program;
             try {
-                program = RunProgram.prepare(ctx.session(), ctx.analysis(), name, file, dmc);
+                program = RunProgram.prepare(ctx.session(), ctx.analysis(), name, file, dmc, step);
             } catch (gcnc.output.AtomicOutput.Refused e) {
                 throw new Http.Fail(403, "gcnc refuses to write " + dmcName + " (" + e.code().id() + ")");
             }
@@ -158,7 +163,11 @@ final class Runs implements AutoCloseable {
                 o.addProperty("refused", "the program is not clean: " + program.errors() + " error(s); nothing was sent");
                 return o;
             }
+            o.addProperty("form", program.form().name().toLowerCase(java.util.Locale.ROOT));
             o.addProperty("dmc", dmcName);
+            if (program.form() == gcnc.dmc.Form.STREAM) {
+                o.addProperty("stream", streamName);
+            }
             o.addProperty("dmcLines", program.program().lines().size());
             String address = target instanceof RunTarget.Virtual ? controllers.virtual(ctx.session().profile(), resumeAt == null) : null;
             if (address != null) {

@@ -51,8 +51,8 @@ const WORDS = {
     override: "feed", arming: "arming: compile, connect, pre-flight, download and read back (nothing moves)…",
     armed: "Armed: press Start to move the machine", notArmed: "Not armed: nothing will move",
     armRefused: (why) => `Refused: ${why}`,
-    armProgram: (n, blocks, lines, time, step, at) => `Program: ${n}, ${blocks} blocks, ${lines} DMC lines, about ${time}`
-      + (step ? ", step by step" : "") + (at ? `, from line ${at}` : ""),
+    armProgram: (n, blocks, lines, time, form, step, at) => `Program: ${n}, ${blocks} blocks, ${lines} DMC lines, about ${time}`
+      + (form === "stream" ? ", stream form (a resident program and a segment stream)" : ", program form") + (step ? ", step by step" : "") + (at ? `, from line ${at}` : ""),
     armController: (target, ctl) => `Controller: ${target} — ${ctl}`,
     connected: (link, ctl) => `connected to ${link}: ${ctl}`,
     preflight: "Pre-flight", pfLines: (n, of) => `${n} of ${of} program lines`, pfLabels: (n, left) => `${n} label(s) of ${left} left`,
@@ -118,8 +118,8 @@ const WORDS = {
     override: "avance", arming: "armando: compilar, conectar, verificación previa, descargar y releer (nada se mueve)…",
     armed: "Armado: pulse Iniciar para mover la máquina", notArmed: "Sin armar: nada se moverá",
     armRefused: (why) => `Rechazado: ${why}`,
-    armProgram: (n, blocks, lines, time, step, at) => `Programa: ${n}, ${blocks} bloques, ${lines} líneas DMC, unos ${time}`
-      + (step ? ", bloque a bloque" : "") + (at ? `, desde la línea ${at}` : ""),
+    armProgram: (n, blocks, lines, time, form, step, at) => `Programa: ${n}, ${blocks} bloques, ${lines} líneas DMC, unos ${time}`
+      + (form === "stream" ? ", forma de flujo (un programa residente y un flujo de segmentos)" : ", forma de programa") + (step ? ", bloque a bloque" : "") + (at ? `, desde la línea ${at}` : ""),
     armController: (target, ctl) => `Controlador: ${target} — ${ctl}`,
     connected: (link, ctl) => `conectado a ${link}: ${ctl}`,
     preflight: "Verificación previa", pfLines: (n, of) => `${n} de ${of} líneas de programa`, pfLabels: (n, left) => `${n} etiqueta(s) de ${left} libres`,

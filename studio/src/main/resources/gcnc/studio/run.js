@@ -89,7 +89,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     const connected = (a.events || []).find((e) => e.event === "connected");
     line(box, a.armed ? t.armed : t.notArmed, "head");
     line(box, t.armProgram(a.name, started ? started.blocks : "?", a.dmcLines, started ? clock(started.seconds) : "—",
-      a.step, a.resumeAt));
+      a.form, a.step, a.resumeAt));
     line(box, t.armController(a.target + (a.address ? ` (${a.address})` : ""), connected ? connected.controller : "—"));
     for (const e of a.events || []) {
       if (e.event === "preflight") line(box, preflight(e));
