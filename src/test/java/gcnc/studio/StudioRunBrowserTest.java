@@ -157,8 +157,8 @@ class StudioRunBrowserTest {
         arm();
         browser.findElement(By.id("run-start")).click();
         wait.until(d -> litInText() >= 8);
-        // the operator holds, then stops: the sender's last poll (every 100 ms) then names the block the
-        // axes stand in (a stop in full motion at five times real time may be a short block late: see the report)
+        // the operator holds, then stops; the resume then also starts with the feed back on (VR left at 0 by
+        // the hold would keep the resumed run standing still)
         browser.findElement(By.id("run-hold")).click();
         waitFor("held");
         int polls = statusCount();
