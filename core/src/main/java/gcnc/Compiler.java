@@ -140,10 +140,14 @@ public final class Compiler {
                 flush(lines, out);
             }
             gcnc.plan.Planner planner = planner(settings);
+            // after the first error nothing is written: the arcs are then judged as check judges them (E202,
+            // E224/E225 where the writer would have found them), so that both report the same errors
+            gcnc.sim.ArcVerdict arcs = "galil".equals(settings.dialect()) ? new gcnc.sim.ArcVerdict(settings.profile(), diags)
+                    : null;
             java.util.function.Consumer<gcnc.plan.Step> lower = step -> dialect.lower(step, collect);
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                translate(checker.check(raw), planner, lower, diags, lines, sim, out);
+                translate(checker.check(raw), planner, lower, diags, lines, sim, out, arcs);
             }
             if (!diags.hasErrors()) {
                 // the motions the planner still holds are of blocks already checked: replayed before the
@@ -188,16 +192,19 @@ public final class Compiler {
     /**
      * Translates the checked blocks of one source block and hands their lines on: to the simulator,
      * which writes them after replaying them, or else straight to {@code out}. Nothing is translated
-     * after an error. (A method of its own, so that the JIT compiles it once rather than within a
+     * after an error; the arcs of the blocks after it are judged as check judges them. (A method of its own, so that the JIT compiles it once rather than within a
      * large on-stack replacement of the loop in {@link #compile}.)
      */
     private static void translate(List<CheckedBlock> checkedBlocks, gcnc.plan.Planner planner,
                                   java.util.function.Consumer<gcnc.plan.Step> lower, Diagnostics diags,
-                                  List<Instruction> lines, SimulatorThread sim, java.util.function.Consumer<Instruction> out)
-            throws IOException {
+                                  List<Instruction> lines, SimulatorThread sim, java.util.function.Consumer<Instruction> out,
+                                  gcnc.sim.ArcVerdict arcs) throws IOException {
         for (CheckedBlock checked : checkedBlocks) {
             if (diags.hasErrors()) {
-                return;
+                if (arcs != null) {
+                    arcs.block(checked);
+                }
+                continue;
             }
             planner.accept(checked, lower); // into lines: this block's, or a sequence of the blocks before it
             if (sim != null) {
