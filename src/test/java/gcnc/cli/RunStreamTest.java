@@ -54,6 +54,38 @@ class RunStreamTest {
         assertTrue(stream.stream().filter(l -> l.startsWith("# pass")).count() >= 5, stream.toString());
     }
 
+    /**
+     * A limit switch trips inside a blended sequence of the stream: motion and spindle stop, the run
+     * names the block executing (line 8) and the one completed (7), and the printed resume command
+     * finishes the part in the stream form along the uninterrupted run's path, segment for segment.
+     */
+    @Test
+    void aStopInsideAStreamedSequenceResumesAtItsBlockAlongTheSamePath() throws Exception {
+        Path p = part(RunOnControllerTest.PART);
+        Path dir = Files.createTempDirectory("gcnc-trace");
+        Path whole = dir.resolve("whole.trace");
+        Path stopped = dir.resolve("stopped.trace");
+        try (VirtualController vc = RunOnControllerTest.traced(model("DMC-4040"), whole)) {
+            homed(vc);
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp",
+                    RunOnControllerTest.tcp(vc), "--form", "stream");
+            assertEquals(0, r.status(), r.all());
+        }
+        try (VirtualController vc = RunOnControllerTest.traced(model("DMC-4040"), stopped, "limit-at=3")) {
+            homed(vc);
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp",
+                    RunOnControllerTest.tcp(vc), "--poll", "20", "--form", "stream");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("part.nc:8:1: error[E825]"), r.err());
+            assertTrue(r.out().contains("stopped: last block completed: line 7; executing: line 8"), r.out());
+            String resume = RunOnControllerTest.resumeCommand(r.out());
+            assertTrue(resume.contains("--form stream") && resume.endsWith("--resume-at 8"), resume);
+            RunOnControllerTest.Run again = gcnc("", RunOnControllerTest.resumeArgs(resume));
+            assertEquals(0, again.status(), again.all());
+        }
+        assertEquals(RunOnControllerTest.path(whole), RunOnControllerTest.path(stopped));
+    }
+
     @Test
     void aProgramLongerThanTheControllersMemoryIsStreamedToItsEnd() throws Exception {
         StringBuilder text = new StringBuilder("O4411 (CAM CHORDS)\nG21 G99\nT0101\nG97 S1200 M03\nG00 X19. Z2.\n");

@@ -287,10 +287,13 @@ public final class StreamForm implements Form {
                 return;
             }
             double[] at = c.position();
-            progress.at(segments.get(segments.size() - 1), at, op);
             if (Math.hypot(at[0] - end[0], at[1] - end[1]) <= tolerance) {
+                progress.at(segments.get(segments.size() - 1), at, op);
                 return;
             }
+            // cut short: the segment it stopped in (_CSS keeps its number after the sequence ended) names the block
+            int css = c.segment();
+            progress.at(segments.get(Math.max(0, Math.min(segments.size() - 1, css - 1))), at, op);
             int code = c.stopCode();
             c.stopAll();
             throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the sequence ended during line "
