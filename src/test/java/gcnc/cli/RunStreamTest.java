@@ -86,6 +86,46 @@ class RunStreamTest {
         assertEquals(RunOnControllerTest.path(whole), RunOnControllerTest.path(stopped));
     }
 
+    /**
+     * The thesis's bishop on its own lathe (thesis-2004, a DMC-1700) over a real pseudo-terminal
+     * pair, in both forms: the same executed path, segment for segment.
+     */
+    @Test
+    void theBishopRunsThePathStreamedOverAPtyThatItRunsAsOneProgram() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")), "socat (setup.sh installs it)");
+        gcnc.machine.MachineProfile thesis = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine("thesis-2004")).profile();
+        double[] g = gcnc.send.DmcProgram.Plane.of(thesis).galil(thesis.home().x(), thesis.home().z());
+        long[] home = {Math.round(g[0]), Math.round(g[1])};
+        Path dir = Files.createTempDirectory("gcnc-pty");
+        Path bishop = Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
+        List<List<String>> paths = new java.util.ArrayList<>();
+        for (String form : List.of("program", "stream")) {
+            Path a = dir.resolve("controller-" + form);
+            Path b = dir.resolve("host-" + form);
+            Path trace = dir.resolve(form + ".trace");
+            Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
+                    .redirectErrorStream(true).redirectOutput(dir.resolve("socat-" + form + ".log").toFile()).start();
+            try {
+                for (int i = 0; i < 50 && !(Files.exists(a) && Files.exists(b)); i++) {
+                    Thread.sleep(100);
+                }
+                try (VirtualController vc = VirtualController.pty(a,
+                        new VirtualController.Options(model("DMC-1700"), 200, List.of(), trace))) {
+                    RunOnControllerTest.definePosition(b, home);
+                    RunOnControllerTest.Run r = gcnc("", "run", bishop.toString(), "--machine", "thesis-2004", "--port",
+                            b.toString(), "--poll", "20", "--form", form);
+                    assertEquals(0, r.status(), form + ": " + r.all());
+                }
+            } finally {
+                socat.destroy();
+                socat.waitFor();
+            }
+            paths.add(RunOnControllerTest.path(trace));
+        }
+        assertFalse(paths.get(0).isEmpty());
+        assertEquals(paths.get(0), paths.get(1));
+    }
+
     @Test
     void aProgramLongerThanTheControllersMemoryIsStreamedToItsEnd() throws Exception {
         StringBuilder text = new StringBuilder("O4411 (CAM CHORDS)\nG21 G99\nT0101\nG97 S1200 M03\nG00 X19. Z2.\n");
