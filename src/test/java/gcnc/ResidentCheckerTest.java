@@ -143,10 +143,17 @@ class ResidentCheckerTest {
         same(List.of("check", "samples"), null, Map.of());
     }
 
+    /**
+     * Random and mutated programs per run: 3 in the default run (each is three pairs of a cold JVM and
+     * a resident run, about 0.6 s a pair: the most of this class's time); a campaign sets more with
+     * {@code gradle junitPlatformTest -PresidentCount=50}.
+     */
+    private static final int PROGRAMS = Integer.getInteger("gcnc.resident.count", 3);
+
     @Test
     void randomAndMutatedProgramsPrintAndWriteTheSame() throws Exception {
         String real = Files.readString(Path.of("samples/turning.nc"));
-        for (long seed = 1; seed <= 8; seed++) {
+        for (long seed = 1; seed <= PROGRAMS; seed++) {
             Path p = WORK.resolve("fuzz-" + seed + ".nc");
             Files.writeString(p, PipelineFuzzTest.program(new Random(seed)));
             same(List.of("check", p.toString()), null, Map.of());
@@ -241,8 +248,9 @@ class ResidentCheckerTest {
         Process waiting = pb.start();
         try {
             int status = 0;
-            for (int i = 0; i < 100 && status != COLD; i++) {
-                Thread.sleep(200);
+            // polled: the waiting client's request reaches the daemon a moment after it starts
+            for (int i = 0; i < 400 && status != COLD; i++) {
+                Thread.sleep(50);
                 status = client(args, null, Map.of(), JAR, null).status();
             }
             assertEquals(COLD, status, "a second run while the first waits for its input");
