@@ -191,7 +191,9 @@ class ResidentCheckerTest {
             }
         }
         try (Socket s = new Socket(InetAddress.getLoopbackAddress(), port)) {
-            DataOutputStream out = new DataOutputStream(s.getOutputStream());
+            // one write: the daemon answers the token and closes before reading on, and a later write of
+            // ours would then meet a reset socket (a broken pipe under load)
+            DataOutputStream out = new DataOutputStream(new java.io.BufferedOutputStream(s.getOutputStream()));
             byte[] token = "0".repeat(64).getBytes(StandardCharsets.UTF_8);
             out.write('T');
             out.writeInt(token.length);
