@@ -112,9 +112,10 @@ class BoundedRunTest {
         Run r = gcnc("compile", limits("loop-many-blocks.nc"), "--machine", "fanuc", "-o", dmc.toString());
         assertEquals(0, r.status(), r.output());
         assertTrue(r.output().contains("400002 segments, 0 findings"), r.output());
-        // 2,000,021 lines do not fit the DMC-4040's 2,000: written, with the warning that says so
-        assertTrue(r.output().contains("warning[E238]: the program is "), r.output());
-        assertTrue(Files.size(dmc) > 10_000_000, "the program was written whole");
+        // 2,000,021 lines do not fit the DMC-4040's 2,000: the stream form, a small resident program and the stream
+        assertTrue(r.output().contains("resident program) and "), r.output());
+        assertTrue(Files.size(dmc) < 10_000, "the resident program is small");
+        assertTrue(Files.size(dir.resolve("loop-many-blocks.stream")) > 10_000_000, "the stream was written whole");
     }
 
     /** A program of {@code blocks} moves after {@code first} (a macro statement, or a call), then M30 and {@code after}. */

@@ -252,11 +252,15 @@ class PipelineFuzzTest {
     private static void run(String program, MachineProfile profile, String dialect, long seed) throws Exception {
         List<String> out = new ArrayList<>();
         List<String> mapLines = new ArrayList<>();
+        List<gcnc.dmc.Instruction> typed = new ArrayList<>();
         gcnc.dmc.SourceMap map = new gcnc.dmc.SourceMap(mapLines::add);
         Compiler.Result r;
         try {
             r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, profile, dialect,
-                    Optional.of(SimOptions.defaults().withPath())), map.wrap(l -> out.add(l.text())));
+                    Optional.of(SimOptions.defaults().withPath())), map.wrap(l -> {
+                        out.add(l.text());
+                        typed.add(l);
+                    }));
         } catch (RuntimeException e) {
             throw new AssertionError("seed " + seed + " (" + dialect + ") threw on:\n" + program, e);
         }
@@ -291,6 +295,43 @@ class PipelineFuzzTest {
                             new StringReader(String.join("\n", mapLines)))).lines());
             assertEquals(errors(r, true), errors(new Compiler.Result(replayed, 0, Optional.empty()), true),
                     () -> "replay differs, seed " + seed + " on " + profile.name() + ":\n" + program);
+            streamForm(typed, r, profile, seed, program);
+        }
+    }
+
+    /** The same program in the stream form (docs/galil.md), its two files replayed: the same findings as compile's. */
+    private static void streamForm(List<gcnc.dmc.Instruction> typed, Compiler.Result r, MachineProfile profile, long seed,
+                                   String program) {
+        List<String> stream = new ArrayList<>();
+        List<String> streamMap = new ArrayList<>();
+        gcnc.dmc.SourceMap sm = new gcnc.dmc.SourceMap(streamMap::add);
+        gcnc.dmc.StreamSplit split = new gcnc.dmc.StreamSplit(sm.wrap(l -> stream.add(l.text())), 4000);
+        typed.forEach(split);
+        gcnc.dmc.StreamSplit.Result s = split.finish();
+        List<String> resident = new ArrayList<>();
+        List<String> residentMap = new ArrayList<>();
+        gcnc.dmc.SourceMap rm = new gcnc.dmc.SourceMap(residentMap::add);
+        s.resident().forEach(rm.wrap(l -> resident.add(l.text())));
+        for (String l : stream) {
+            assertTrue(gcnc.dmc.StreamRole.of(gcnc.dmc.DmcReader.read(l, (c, a) -> { })) != gcnc.dmc.StreamRole.EMBED,
+                    () -> "seed " + seed + ": " + l + " in the stream");
+        }
+        gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
+        gcnc.sim.StreamReplay.replay(reader(resident), table(residentMap), reader(stream), table(streamMap), profile,
+                SimOptions.defaults(), replayed);
+        assertEquals(errors(r, true), errors(new Compiler.Result(replayed, 0, Optional.empty()), true),
+                () -> "stream form replay differs, seed " + seed + " on " + profile.name() + ":\n" + program);
+    }
+
+    private static java.io.BufferedReader reader(List<String> lines) {
+        return new java.io.BufferedReader(new StringReader(String.join("\n", lines)));
+    }
+
+    private static java.util.function.IntFunction<gcnc.dmc.Source> table(List<String> map) {
+        try {
+            return gcnc.dmc.SourceMap.read(reader(map)).lines();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
         }
     }
 

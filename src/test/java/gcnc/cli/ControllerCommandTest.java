@@ -33,6 +33,10 @@ class ControllerCommandTest {
         CliTest.Run pty = CliTest.gcnc("controller", "--virtual", "--pty", "/nonexistent/galil");
         assertEquals(2, pty.status());
         assertTrue(pty.err().contains("socat -d -d pty,raw,echo=0,link=/nonexistent/galil"), pty.err());
+        CliTest.Run spindle = CliTest.gcnc("controller", "--virtual", "--tcp", "0", "--spindle", "410");
+        assertEquals(2, spindle.status());
+        assertTrue(spindle.err().contains("--spindle 410: give the drive's r/min per volt and the encoder's counts per revolution"),
+                spindle.err());
         CliTest.Run spanish = CliTest.gcnc("controller", "--virtual", "--tcp", "0", "--speed", "0", "--lang", "es");
         assertEquals(2, spanish.status());
         assertTrue(spanish.err().contains("indique un número mayor que 0"), spanish.err());

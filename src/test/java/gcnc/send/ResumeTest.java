@@ -71,8 +71,11 @@ class ResumeTest {
         List<String> l = r.lines();
         int vs = l.indexOf("VS 500");
         String cr = l.get(vs + 1);
-        assertTrue(cr.startsWith("CR 1000,29.99") || cr.startsWith("CR 1000,30.00"), cr);
-        assertTrue(cr.contains(",-29.99") || cr.contains(",-30.00"), cr);
+        // from the stop's angle (30 degrees, to the rounding of the axes' whole counts) to the arc's end at 0
+        String[] a = cr.substring(3).split(",");
+        assertEquals("1000", a[0], cr);
+        assertEquals(30, Double.parseDouble(a[1]), 0.05, cr);
+        assertEquals(-Double.parseDouble(a[1]), Double.parseDouble(a[2]), 1e-9, cr);
         // the arc from the stop ends where the programmed one does, or a closing VP takes it there
         assertTrue(l.get(vs + 2).equals("VE") || l.get(vs + 2).startsWith("VP "), l.toString());
         assertEquals("CB1", l.get(l.size() - 2));
@@ -95,6 +98,84 @@ class ResumeTest {
         assertTrue(none.args().get(1).contains("has no block"), none.args().toString());
         RunFault k = assertThrows(RunFault.class, () -> new Resume(p, 3).plan(new ResumePoint(7, 2), home(p)));
         assertTrue(k.args().get(1).contains("makes 1 motion"), k.args().toString());
+    }
+
+    /**
+     * Lines 6 and 7 blended into one sequence (line 6's segment ends at 500 counts/s into line 7's
+     * corner), and the spindle raised on the way, 1,500 counts along the path ({@code AV}).
+     */
+    static final List<String> BLENDED = List.of("#GCNC", "SH XY", "VM XY", "VA 2000000", "VD 2000000",
+            "TOOL=1", "OF ,,3.0000", "CB2", "SB1",
+            "VS 1000", "VP 1000,0 <1000 >500", "VP 1000,1000 <800", "VE", "BGS", "AV 1500", "OF ,,4.0000", "AMS",
+            "CB1", "EN");
+    static final String BLENDED_MAP = "# source part.nc\n1 0\n6 4\n7 5\n10 6\n12 7\n18 8\n19 0\n";
+
+    static DmcProgram blended() throws Exception {
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        return DmcProgram.read(BLENDED, MapReader.read(new BufferedReader(new StringReader(BLENDED_MAP))), haas);
+    }
+
+    @Test
+    void aBlockInsideABlendedSequenceStartsANewSequenceThere() throws Exception {
+        DmcProgram p = blended();
+        assertEquals(1, p.sequences().size());
+        List<DmcProgram.Motion> seven = p.motionsOf(7);
+        assertEquals(1, seven.size());
+        assertEquals(1, seven.get(0).from(), "line 7's motion is the sequence's second segment");
+        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 1000");
+        // the VP measured from the new origin, its own speed kept; the spindle change moved back by the 1000 counts run
+        assertEquals(List.of("VS 1000", "VP 0,1000 <800", "VE", "BGS", "AV 500", "OF ,,4.0000", "AMS", "CB1", "EN"),
+                l.subList(vs, l.size()));
+        assertEquals(7, p.sourceLine(r.originOf(vs + 1)), "the segment maps to line 7 for _CSS");
+        assertEquals("OF ,,3.0000", l.get(vs - 2), "the spindle as it was when the sequence began");
+    }
+
+    @Test
+    void pastASpindleChangeOnTheWayItIsPartOfTheState() throws Exception {
+        DmcProgram p = blended();
+        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("OF ,,4.0000", "WT 2000"), l.subList(vs - 2, vs));
+        assertEquals(List.of("VS 1000", "VP 0,400 <800", "VE", "BGS", "AMS", "CB1", "EN"), l.subList(vs, l.size()));
+    }
+
+    @Test
+    void partWayAlongTheFirstBlockOfASequenceItsRestAndTheNextBlocksSegmentsFollow() throws Exception {
+        DmcProgram p = blended();
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 0));
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 600,0 <1000 >500", "VP 600,1000 <800", "VE", "BGS", "AV 1100", "OF ,,4.0000",
+                "AMS", "CB1", "EN"), l.subList(vs, l.size()));
+        assertEquals(List.of(6, 7), List.of(p.sourceLine(r.originOf(vs + 1)), p.sourceLine(r.originOf(vs + 2))));
+        // the controller's segments of the new sequence name lines 6 and 7 (_CSS 1 and 2)
+        Piece.Segments seg = r.segmentsAt(l.indexOf("AMS"), p);
+        assertEquals(6, p.sourceLine(seg.executing(1)));
+        assertEquals(7, p.sourceLine(seg.executing(2)));
+        assertTrue(seg.begun());
+        assertTrue(!r.segmentsAt(vs + 1, p).begun(), "before BGS the motion has not begun");
+    }
+
+    /** A block of two segments blended (a G71-like pass and its step, one G-code line): N:K names the segment. */
+    @Test
+    void theStopNamesTheSegmentOfABlockAndTheResumeStartsFromIt() throws Exception {
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        DmcProgram p = DmcProgram.read(BLENDED, MapReader.read(new BufferedReader(new StringReader(
+                "1 0\n6 4\n7 5\n10 6\n18 8\n19 0\n"))), haas);
+        assertEquals(2, p.motionsOf(6).size());
+        Progress progress = new Progress(p, BlockTable.none(), e -> { });
+        progress.at(BLENDED.indexOf("VP 1000,1000 <800"), null, new Operator());
+        assertEquals(new ResumePoint(6, 2), progress.resumePoint(), "executing the block's second segment");
+        assertEquals(5, progress.completedLine());
+        progress.at(BLENDED.indexOf("VP 1000,0 <1000 >500"), null, new Operator());
+        assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "its first: the block's start");
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 2), plus(home(p), 1000, 300));
+        List<String> l = r.lines();
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 0,700 <800", "VE", "BGS", "AV 200", "OF ,,4.0000", "AMS"), l.subList(vs, vs + 7));
     }
 
     @Test

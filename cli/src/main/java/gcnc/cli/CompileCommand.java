@@ -1,9 +1,10 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
-import gcnc.dmc.SourceMap;
+import gcnc.dmc.Form;
 import gcnc.machine.MachineProfile;
 import gcnc.output.DmcOutputs;
+import gcnc.output.FormOutputs;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableException;
 import java.io.IOException;
@@ -35,6 +36,12 @@ final class CompileCommand extends RunCommand {
                     + " itself; a device or named pipe is written through, not replaced.")
     Path output;
 
+    @Option(names = "--form", paramLabel = "program|stream",
+            description = "program: one program downloaded whole (it must fit the controller's memory); stream: a resident"
+                    + " program (OUT) and a segment stream (OUT with extension .stream) a sender feeds the controller."
+                    + " Default: program when it fits the profile's Galil model, else stream.")
+    String form;
+
     @Option(names = "--source-map", description = "Put a Galil comment (NO L<line>) naming the G-code line before each block's directives.")
     boolean sourceMap;
 
@@ -59,22 +66,28 @@ final class CompileCommand extends RunCommand {
         Path target = output != null ? output : DmcOutputs.defaultOutput(file);
         String name = SourceFiles.display(file);
         String targetName = toStdout ? "<stdout>" : target.toString();
-        DmcOutputs outputs;
+        Optional<Form> asked = form(toStdout);
+        FormOutputs outputs;
         try {
-            outputs = toStdout ? DmcOutputs.toStream(streams().out())
-                    : DmcOutputs.open(SourceFiles.fileOf(file), target, !sourceMap);
+            outputs = toStdout ? FormOutputs.toStream(streams().out())
+                    : FormOutputs.open(SourceFiles.fileOf(file), target, !sourceMap);
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         }
         try (outputs) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry).withStops(outputs::mapStop);
             outputs.mapSource(SourceFiles.isStdin(file) ? name : file.getFileName().toString(), SourceFiles.fileOf(file));
+            // the thesis's format is no Galil program: it has no form
+            java.util.function.Consumer<gcnc.dmc.Instruction> sink = "thesis".equals(dialect.name()) ? outputs.programSink()
+                    : outputs.sink(asked, profile.controllerLimits());
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
-                        mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
+                        sink);
             } catch (IOException e) {
                 return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
+            }
+            if (r.ok()) {
+                outputs.finish(r.diagnostics()); // the form decided; what does not fit is an error here
             }
             reporter.report(name, r.diagnostics());
             if (!r.ok()) {
@@ -89,14 +102,39 @@ final class CompileCommand extends RunCommand {
                 return reporter.ioFault(targetName, gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
             }
             Phrases say = reporter.phrases();
-            reporter.say(say.get("compile.written", name, say.count(r.blocks(), "block"), targetName,
-                    say.count(mapper.lines(), "line"), dialect.name()));
+            if (outputs.form() == Form.STREAM) {
+                reporter.say(say.get("compile.written_stream", name, say.count(r.blocks(), "block"), targetName,
+                        say.count(outputs.dmcLines(), "line"), outputs.streamPath().orElseThrow().toString(),
+                        say.count(outputs.streamLines(), "line"), dialect.name()));
+            } else {
+                reporter.say(say.get("compile.written", name, say.count(r.blocks(), "block"), targetName,
+                        say.count(outputs.dmcLines(), "line"), dialect.name()));
+            }
             r.simulation().ifPresent(s -> {
                 reporter.say(SimSummary.format(s, reporter.phrases()));
                 reporter.simulation(name, s);
             });
             return ExitCode.CLEAN;
         }
+    }
+
+    /** The form asked for with --form; none when it is left to the program's size. */
+    private Optional<Form> form(boolean toStdout) {
+        if (form == null) {
+            return Optional.empty();
+        }
+        Form f = Form.of(form);
+        if (f == null) {
+            throw new ParameterException(spec.commandLine(), "--form " + form + ": say program or stream");
+        }
+        if (f == Form.STREAM && toStdout) {
+            throw new ParameterException(spec.commandLine(),
+                    "--form stream writes two files (the resident program and the stream): name the output with -o");
+        }
+        if (f == Form.STREAM && "thesis".equals(dialect.name())) {
+            throw new ParameterException(spec.commandLine(), "--form stream is a Galil program's form: the thesis dialect has none");
+        }
+        return Optional.of(f);
     }
 
     /** Combinations that cannot work, refused before anything is read or written. */

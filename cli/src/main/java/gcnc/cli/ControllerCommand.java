@@ -62,6 +62,11 @@ final class ControllerCommand implements Callable<Integer> {
             description = "Write one line per executed segment: sequence, segment, kind, end position in counts, free slots, time.")
     Path trace;
 
+    @Option(names = "--spindle", paramLabel = "RPM_PER_VOLT,COUNTS_PER_REV", defaultValue = "410,4096",
+            description = "The lathe's spindle drive (r/min per volt of OF) and encoder (counts per revolution) wired to"
+                    + " the controller, which thread passes are geared to (default: ${DEFAULT-VALUE}, the haas profile's).")
+    String spindle;
+
     @Option(names = "--lang", paramLabel = "en|es",
             description = "Language of the messages: en or es (default: es when LANG or LC_ALL starts with es, else en).")
     ErrorMessages.Lang lang;
@@ -99,7 +104,18 @@ final class ControllerCommand implements Callable<Integer> {
             err.println("gcnc: " + say.get("controller.no_pty", link.pty));
             return ExitCode.USAGE;
         }
-        VirtualController.Options options = new VirtualController.Options(m, speed, parsed, trace);
+        String[] sp = spindle.split(",", -1);
+        double rate;
+        try {
+            rate = VirtualController.Options.spindleRate(Double.parseDouble(sp[0]), Integer.parseInt(sp[sp.length - 1]));
+        } catch (NumberFormatException e) {
+            rate = -1;
+        }
+        if (sp.length != 2 || !(rate > 0)) {
+            err.println("gcnc: " + say.get("controller.bad_spindle", spindle));
+            return ExitCode.USAGE;
+        }
+        VirtualController.Options options = new VirtualController.Options(m, speed, parsed, trace, rate);
         VirtualController vc;
         try {
             vc = link.tcp != null ? VirtualController.tcp(link.tcp, options) : VirtualController.pty(link.pty, options);

@@ -1,23 +1,25 @@
 package gcnc.cli;
 
 import gcnc.Compiler;
+import gcnc.Session;
+import gcnc.dmc.Instruction;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Messages;
-import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
+import gcnc.output.FormOutputs;
 import gcnc.send.BlockTable;
 import gcnc.send.DmcProgram;
 import gcnc.send.Event;
 import gcnc.send.EventSink;
 import gcnc.send.JsonEvents;
 import gcnc.send.Link;
-import gcnc.send.MapReader;
 import gcnc.send.Operator;
 import gcnc.send.ProgramForm;
 import gcnc.send.ResumePoint;
 import gcnc.send.RunFault;
 import gcnc.send.Sender;
+import gcnc.send.StreamForm;
 import gcnc.send.TcpLink;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableException;
@@ -33,6 +35,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.function.Consumer;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -94,6 +97,11 @@ final class SendCommand implements Callable<Integer> {
             description = "Continue an interrupted run at G-code line N (K: its K-th motion), as the stop message printed.")
     String resumeAt;
 
+    @Option(names = "--form", paramLabel = "program|stream",
+            description = "program: downloaded whole; stream: a resident program, the rest fed through the command line."
+                    + " Default: program when it fits the profile's Galil model, else stream (as gcnc compile chooses).")
+    String form;
+
     @Option(names = "--dry-run", description = "Everything but motion: connect, pre-flight, download and read back.")
     boolean dryRun;
 
@@ -154,16 +162,38 @@ final class SendCommand implements Callable<Integer> {
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        // 1. the compile, as `gcnc compile` does it: FILE.dmc and FILE.dmc.map, written only when clean
+        // 1. the compile, as `gcnc compile` does it: FILE.dmc (and FILE.stream in the stream form) with their
+        // maps, written only when clean; the instructions kept as they come, so that what is sent is what
+        // the compiler made
+        Optional<gcnc.dmc.Form> asked = Optional.ofNullable(form).map(f -> {
+            gcnc.dmc.Form x = gcnc.dmc.Form.of(f);
+            if (x == null) {
+                throw new ParameterException(spec.commandLine(), "--form " + f + ": say program or stream");
+            }
+            return x;
+        });
         Path dmc = DmcOutputs.defaultOutput(file);
-        try (DmcOutputs outputs = DmcOutputs.open(file, dmc, true)) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry);
+        List<Instruction> compiled = new ArrayList<>();
+        DmcProgram program;
+        gcnc.dmc.Form chosen;
+        try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
             outputs.mapSource(file.getFileName().toString(), file);
+            Consumer<Instruction> written = outputs.sink(asked, setup.profile().controllerLimits());
+            Consumer<Instruction> sink = i -> {
+                compiled.add(i);
+                written.accept(i);
+            };
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file)) {
-                // exact stop: the sender follows the program sequence by sequence, one motion each (docs/run.md)
-                r = setup.session().withPrograms(SourceFiles.programsFolder(file)).compileExactStop(in, sim,
-                        mapper.wrap(line -> outputs.dmcLine(gcnc.dmc.DmcPrinter.print(line.command()))));
+                Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
+                // blended as the profile plans it; step mode runs one block at a time, so every motion
+                // stops at its end there (docs/run.md, "Step mode")
+                r = step ? session.compileExactStop(in, sim, sink) : session.compile(in, sim, false, sink);
+            }
+            if (r.ok()) {
+                chosen = outputs.finish(r.diagnostics()); // a program form asked for that does not fit is E238
+            } else {
+                chosen = null;
             }
             if (!r.ok()) {
                 if (json) {
@@ -178,21 +208,19 @@ final class SendCommand implements Callable<Integer> {
                         reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
+            program = DmcProgram.of(compiled, setup.profile());
             outputs.commit();
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         } catch (IOException e) {
             return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
-        // 2. the program as written, and its map read back
-        DmcProgram program;
+        // 2. the checker's state at each block, for the status line
         BlockTable blocks;
-        try (BufferedReader map = Files.newBufferedReader(DmcOutputs.mapFile(dmc), StandardCharsets.UTF_8);
-             Reader again = SourceFiles.open(file)) {
-            program = DmcProgram.read(Files.readAllLines(dmc, StandardCharsets.UTF_8), MapReader.read(map), setup.profile());
+        try (Reader again = SourceFiles.open(file)) {
             blocks = BlockTable.of(again, setup.tables(), profileOnBlank(setup, sim), SourceFiles.programsFolder(file));
         } catch (IOException e) {
-            return reporter.ioFault(dmc.toString(), gcnc.diag.Phrase.IO_CANNOT_READ, e);
+            return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
         // 3. the link
         Link link;
@@ -206,7 +234,9 @@ final class SendCommand implements Callable<Integer> {
         // 4. the run, with the operator's keys and Ctrl-C
         Operator operator = new Operator();
         Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
-                new Sender.Options(step, dryRun, resume, pollMs), new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
+                new Sender.Options(step, dryRun, resume, pollMs), chosen == gcnc.dmc.Form.STREAM
+                        ? new StreamForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds)
+                        : new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
         Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
         try (keys) {
             return sender.run(link, timeoutMs);

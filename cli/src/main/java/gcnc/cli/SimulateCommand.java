@@ -84,7 +84,22 @@ final class SimulateCommand extends RunCommand {
         Optional<SimReport> report;
         String shown = name;
         try (Reader in = SourceFiles.open(file, streams().in())) {
-            if (file.toString().endsWith(".dmc")) {
+            if (file.toString().endsWith(".stream") && !SourceFiles.isStdin(file)) {
+                diags = new Diagnostics();
+                Path resident = residentOf(file);
+                gcnc.dmc.SourceMap.Table residentMap = sourceMap(resident, diags);
+                gcnc.dmc.SourceMap.Table streamMap = sourceMap(file, diags);
+                pairedStream(resident, residentMap, file, diags);
+                try (BufferedReader r = java.nio.file.Files.newBufferedReader(resident, java.nio.charset.StandardCharsets.UTF_8)) {
+                    report = Optional.of(gcnc.sim.StreamReplay.replay(r, residentMap == null ? null : residentMap.lines(),
+                            new BufferedReader(in), streamMap == null ? null : streamMap.lines(), profile, options, diags));
+                } catch (java.nio.file.NoSuchFileException e) {
+                    return reporter.ioFault(resident.toString(), gcnc.diag.Phrase.IO_CANNOT_READ, e);
+                }
+                if (streamMap != null) {
+                    shown = streamMap.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);
+                }
+            } else if (file.toString().endsWith(".dmc")) {
                 diags = new Diagnostics();
                 gcnc.dmc.SourceMap.Table map = sourceMap(file, diags);
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
@@ -125,9 +140,31 @@ final class SimulateCommand extends RunCommand {
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
     }
 
+    /** The resident program a stream goes with: {@code part.stream} is fed after {@code part.dmc} (docs/galil.md). */
+    private static Path residentOf(Path stream) {
+        String n = stream.getFileName().toString();
+        return stream.resolveSibling(n.substring(0, n.length() - ".stream".length()) + ".dmc");
+    }
+
+    /** Warning E245 when the resident's map names another stream than this one (by SHA-256). */
+    private static void pairedStream(Path resident, gcnc.dmc.SourceMap.Table residentMap, Path stream, Diagnostics diags) {
+        if (residentMap == null || residentMap.streamSha256().isEmpty()) {
+            return;
+        }
+        try {
+            String sha = gcnc.output.AtomicOutput.sha256(stream);
+            if (!sha.equals(residentMap.streamSha256().get())) {
+                diags.report(gcnc.diag.Diagnostic.warning(gcnc.diag.Code.E245_STREAM_NOT_THIS_RESIDENT, gcnc.diag.Span.of(1, 1),
+                        stream.toString(), resident.toString(), sha.substring(0, 12)));
+            }
+        } catch (IOException e) {
+            // read below, where a failure is reported
+        }
+    }
+
     /** The program's O number for the drawing's title block; null for standard input, a DMC or a file without one. */
     private static String number(Path file) {
-        if (SourceFiles.isStdin(file) || file.toString().endsWith(".dmc")) {
+        if (SourceFiles.isStdin(file) || file.toString().endsWith(".dmc") || file.toString().endsWith(".stream")) {
             return null;
         }
         try (Reader in = gcnc.Session.decode(java.nio.file.Files.newInputStream(file))) {

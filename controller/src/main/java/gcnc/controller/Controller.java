@@ -10,7 +10,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
  * The state of one virtual Galil: program memory, variables and arrays, the eight program threads, the
- * vector motion, the digital outputs and the spindle's analog offsets, the last error. Every entry point is
+ * vector motion, the spindle encoder with the gearing and settling moves of a thread pass ({@link Gearing}), the digital outputs and the spindle's analog offsets, the last error. Every entry point is
  * synchronized on the controller: the connections' commands and the clock's {@link #advance} never
  * interleave, so a run is a function of the commands and of how far the clock went, and a test that
  * drives {@link #advance} itself gets the same run every time.
@@ -30,6 +30,9 @@ public final class Controller implements Expressions.Scope {
     final Map<String, double[]> arrays = new HashMap<>();
     final ProgramThread[] threads = new ProgramThread[8];
     final VectorMotion motion;
+    /** The spindle encoder, gearing to it and independent moves: a thread pass. */
+    final Gearing gearing;
+    private int passes;
     final boolean[] servo;
     final double[] offsets;
     long outputs;
@@ -46,8 +49,19 @@ public final class Controller implements Expressions.Scope {
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     final Statements statements;
 
+    /** The spindle drive and encoder of the haas profile: 410 r/min a volt, 4,096 counts a revolution. */
+    public static final double SPINDLE_RATE = 410 * 4096 / 60.0;
+
     /** A controller of {@code model} with the segment faults of {@code faults} armed, tracing to {@code trace} (or null). */
     public Controller(Model model, List<Fault> faults, Writer trace) {
+        this(model, faults, trace, SPINDLE_RATE);
+    }
+
+    /**
+     * As above, wired to a spindle whose encoder turns {@code spindleRate} counts a second per volt
+     * of its channel's {@code OF} (the lathe's drive and encoder: r/min per volt × counts per rev / 60).
+     */
+    public Controller(Model model, List<Fault> faults, Writer trace, double spindleRate) {
         this.model = model;
         this.trace = trace == null ? null : new Trace(trace);
         this.servo = new boolean[model.axes];
@@ -72,6 +86,22 @@ public final class Controller implements Expressions.Scope {
             @Override
             public void limitTripped() {
                 tripLimit();
+            }
+        });
+        this.gearing = new Gearing(model.axes, motion.position, servo, offsets, spindleRate, (axes, ends, t) -> {
+            // a thread pass ends when both plane axes have settled (PA, BG, AM): one line of the trace
+            VectorMotion mo = Controller.this.motion;
+            boolean plane = false;
+            for (int a : axes) {
+                plane |= a == mo.axis1 || a == mo.axis2;
+            }
+            if (plane && mo.axis1 >= 0 && !Controller.this.gearing.moving[mo.axis1] && !Controller.this.gearing.moving[mo.axis2]) {
+                passes++;
+                if (Controller.this.trace != null) {
+                    Controller.this.trace.pass(passes, mo.position[mo.axis1], mo.position[mo.axis2], mo.free(), t);
+                }
+                event(String.format(Locale.ROOT, "pass %d at %d,%d", passes, (long) Math.rint(mo.position[mo.axis1]),
+                        (long) Math.rint(mo.position[mo.axis2])), t);
             }
         });
         for (Fault f : faults) {
@@ -158,6 +188,7 @@ public final class Controller implements Expressions.Scope {
         while (left > 1e-12) {
             double h = Math.min(left, VectorMotion.STEP);
             motion.advance(h, time);
+            gearing.advance(h, time, motion.axis1, motion.axis2);
             time += h;
             left -= h;
             // Galil decodes a command in about 0.05 ms (DMC-40x0 user manual): 20 a millisecond per thread
@@ -173,7 +204,7 @@ public final class Controller implements Expressions.Scope {
     /** Runs until no thread runs and no motion moves, or {@code limit} seconds passed; the time it took. */
     public synchronized double settle(double limit) {
         double start = time;
-        while (time - start < limit && (motion.running() || anyThread())) {
+        while (time - start < limit && (motion.running() || gearing.anyMoving() || anyThread())) {
             advance(VectorMotion.STEP);
         }
         return time - start;
@@ -297,6 +328,7 @@ public final class Controller implements Expressions.Scope {
         switch (name) {
             case "LMS": return motion.free();
             case "CSS": return motion.css();
+            case "AVS": return Math.floor(motion.travelled()); // the path run since the sequence began (AV's distance)
             case "BGS": return motion.running() ? 1 : 0;
             case "SCS": return motion.stopCode;
             case "VRS": return motion.vr;
@@ -323,7 +355,7 @@ public final class Controller implements Expressions.Scope {
                 switch (name.substring(0, 2)) {
                     case "TP", "RP": return Math.rint(motion.position[a]);
                     case "VP": return motion.corner(a);
-                    case "BG": return motion.running() && (a == motion.axis1 || a == motion.axis2) ? 1 : 0;
+                    case "BG": return motion.running() && (a == motion.axis1 || a == motion.axis2) || gearing.moving[a] ? 1 : 0;
                     case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;
                     case "MO": return servo[a] ? 0 : 1;
                     case "OF": return offsets[a];
@@ -346,7 +378,7 @@ public final class Controller implements Expressions.Scope {
     }
 
     public synchronized boolean moving() {
-        return motion.running();
+        return motion.running() || gearing.anyMoving();
     }
 
     public synchronized boolean output(int n) {

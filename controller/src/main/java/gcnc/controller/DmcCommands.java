@@ -6,28 +6,24 @@ import gcnc.dmc.DmcReader;
 import gcnc.machine.GalilModel;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Set;
-import java.util.regex.Pattern;
 
 /**
  * The commands gcnc writes (gcnc.dmc): read by {@link DmcReader}, the one reader of DMC, and executed
  * here as the virtual controller does them, in time. A program on the controller may give their
  * arguments as expressions ({@code WT dwms}, {@code VP p0[i],p1[i]}) and segment speeds
  * ({@code VP a,b <o >p}), which gcnc does not write: the expressions are evaluated and the speeds taken
- * off first, then the literal command is read. What the reader refuses is {@code ?}: E300 as TC 1,
+ * off first ({@link Literal}), then the literal command is read. What the reader refuses is {@code ?}: E300 as TC 1,
  * E301 as TC 4, E310 as TC 6.
  */
 final class DmcCommands implements Command.Visitor<Void> {
     /** The heads of the commands of gcnc.dmc that take arguments; {@code TOOL=} too. */
     private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
             "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV");
-    /** The commands whose arguments may be expressions here: each is evaluated to a number. */
-    private static final Set<String> NUMERIC = Set.of("VP", "CR", "VS", "VA", "VD", "WT", "SB", "CB", "OF", "AV");
-    private static final Pattern LITERAL = Pattern.compile("[+-]?[0-9]+(\\.[0-9]+)?");
 
     private final Controller c;
     private final ProgramThread th;
+    /** The segment's {@code <o} and {@code >p} speeds taken off the command ({@link Literal}), NaN when not given. */
     private double o = Double.NaN;
     private double p = Double.NaN;
 
@@ -44,7 +40,10 @@ final class DmcCommands implements Command.Visitor<Void> {
     /** Executes {@code st} (for which {@link #handles} is true) for the host (th null) or a thread. */
     static void execute(String st, Controller c, ProgramThread th) throws GalilException {
         DmcCommands run = new DmcCommands(c, th);
-        String literal = run.literal(st);
+        Literal lit = Literal.of(st, c);
+        run.o = lit.o();
+        run.p = lit.p();
+        String literal = lit.text();
         GalilException[] refused = new GalilException[1];
         Command command = DmcReader.read(literal, (code, args) -> refused[0] = new GalilException(
                 code == Code.E300_SIM_UNKNOWN_INSTRUCTION ? Tc.UNRECOGNIZED : code == Code.E310_SIM_COUNT_RANGE ? Tc.RANGE
@@ -60,67 +59,6 @@ final class DmcCommands implements Command.Visitor<Void> {
         } catch (Refused r) {
             throw r.reason;
         }
-    }
-
-    /** {@code st} with its expressions evaluated and its segment speeds taken off (into {@link #o}, {@link #p}). */
-    private String literal(String st) throws GalilException {
-        if (st.startsWith("TOOL=")) {
-            String v = st.substring(5).strip();
-            return LITERAL.matcher(v).matches() ? st : "TOOL=" + whole(Expressions.eval(v, c));
-        }
-        String head = st.substring(0, 2);
-        String args = st.substring(2).strip();
-        if (!NUMERIC.contains(head)) {
-            return st;
-        }
-        if (head.equals("VP") || head.equals("CR")) {
-            int lt = depthZero(args, '<');
-            int gt = depthZero(args, '>');
-            if (lt >= 0) {
-                o = Expressions.eval(args.substring(lt + 1, gt > lt ? gt : args.length()), c);
-            }
-            if (gt >= 0) {
-                p = Expressions.eval(args.substring(gt + 1, lt > gt ? lt : args.length()), c);
-            }
-            int cut = lt >= 0 ? (gt >= 0 ? Math.min(lt, gt) : lt) : gt;
-            args = cut >= 0 ? args.substring(0, cut).strip() : args;
-        }
-        List<String> out = new ArrayList<>();
-        for (String a : Statements.split(args)) {
-            if (a.isEmpty() || LITERAL.matcher(a).matches()) {
-                out.add(a);
-            } else {
-                double v = Expressions.eval(a, c);
-                // VP, WT, SB and CB take whole numbers: Galil truncates a fraction
-                out.add(head.equals("CR") || head.equals("OF") || head.startsWith("V") && !head.equals("VP")
-                        ? decimal(v) : whole(v));
-            }
-        }
-        return head + (out.isEmpty() || out.size() == 1 && out.get(0).isEmpty() ? "" : " " + String.join(",", out));
-    }
-
-    private static String whole(double v) {
-        return Long.toString((long) v);
-    }
-
-    private static String decimal(double v) {
-        String s = String.format(Locale.ROOT, "%.4f", v);
-        return s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
-    }
-
-    static int depthZero(String s, char want) {
-        int depth = 0;
-        for (int i = 0; i < s.length(); i++) {
-            char ch = s.charAt(i);
-            if (ch == '(' || ch == '[') {
-                depth++;
-            } else if (ch == ')' || ch == ']') {
-                depth--;
-            } else if (ch == want && depth == 0) {
-                return i;
-            }
-        }
-        return -1;
     }
 
     /** A GalilException through the visitor, whose methods cannot throw it. */
@@ -354,48 +292,111 @@ final class DmcCommands implements Command.Visitor<Void> {
         return null;
     }
 
-    // Thread passes (gearing to the spindle encoder) and independent moves are not modelled: a program
-    // with them is refused at the command, never run as if it had none (docs/virtual-controller.md).
+    // Thread passes: gearing to the spindle encoder and the settling move (Gearing; docs/virtual-controller.md)
+
+    /** An axis letter as the reader names a place (X Y Z W, E..H), TC 4 beyond the model. */
+    private int axis(char letter) {
+        int a = c.axis(letter);
+        if (a < 0) {
+            throw refuse(Tc.OPERAND);
+        }
+        return a;
+    }
 
     @Override
     public Void gearMaster(Command.GearMaster x) {
-        return notModelled();
+        int m = axis(x.master());
+        return doing(() -> {
+            c.gearing.master(axis(x.first()), m);
+            c.gearing.master(axis(x.second()), m);
+        });
     }
 
+    /** {@code gsp=(@INT[_TPC/4096]+1)*4096+2048}, as Galil evaluates it (@INT truncates). */
     @Override
     public Void syncPoint(Command.SyncPoint x) {
-        return notModelled();
+        double tp = Math.rint(c.motion.position[axis(x.encoder())]);
+        double turns = tp / x.countsPerRev();
+        turns = turns < 0 ? Math.ceil(turns) : Math.floor(turns);
+        if (!c.variables.containsKey(x.variable()) && c.variables.size() >= c.model.variables) {
+            throw refuse(Tc.TOO_MANY_VARIABLES);
+        }
+        c.variables.put(x.variable(), (turns + (x.reverse() ? -1 : 1)) * x.countsPerRev() + x.phase());
+        return null;
     }
 
+    /** {@code MF}/{@code MR}: the thread waits until the axis has passed the count forward (backward). */
     @Override
     public Void waitPast(Command.WaitPast x) {
-        return notModelled();
+        onlyInProgram();
+        int a = axis(x.axis());
+        double at = x.at() instanceof Command.Operand.Count n ? n.counts()
+                : doingValue(((Command.Operand.Variable) x.at()).name());
+        double[] position = c.motion.position;
+        th.waitingFor = x.reverse() ? () -> position[a] <= at : () -> position[a] >= at;
+        return null;
+    }
+
+    private double doingValue(String variable) {
+        try {
+            return c.variable(variable);
+        } catch (GalilException e) {
+            throw new Refused(e);
+        }
     }
 
     @Override
     public Void gearRatio(Command.GearRatio x) {
-        return notModelled();
+        int a = axis(x.first());
+        int b = axis(x.second());
+        return doing(() -> {
+            c.gearing.ratio(a, range(x.firstRatio().value(), -127.9999, 127.9999));
+            c.gearing.ratio(b, range(x.secondRatio().value(), -127.9999, 127.9999));
+        });
     }
 
     @Override
     public Void positionAbsolute(Command.PositionAbsolute x) {
-        return notModelled();
+        int a = axis(x.first());
+        int b = axis(x.second());
+        return doing(() -> {
+            c.gearing.target(a, x.firstCount());
+            c.gearing.target(b, x.secondCount());
+        });
     }
 
+    /** {@code BG XY}: independent moves of these axes to their PA targets; not while their sequence runs (TC 21). */
     @Override
     public Void begin(Command.Begin x) {
-        return notModelled();
+        return doing(() -> {
+            List<Integer> axes = c.axes(x.axes());
+            for (int a : axes) {
+                if (c.motion.running() && (a == c.motion.axis1 || a == c.motion.axis2)) {
+                    throw new GalilException(Tc.BEGIN_WHILE_RUNNING);
+                }
+            }
+            for (int a : axes) {
+                c.gearing.begin(a);
+            }
+        });
     }
 
+    /** {@code AM XY}: the thread waits until these axes' moves are complete (the vector sequence's too for its axes). */
     @Override
     public Void afterMotion(Command.AfterMotion x) {
         return doing(() -> {
-            for (int a : c.axes(x.axes())) {
-                if (a != c.motion.axis1 && a != c.motion.axis2) {
-                    throw new GalilException(Tc.UNRECOGNIZED);
+            onlyInProgram();
+            List<Integer> axes = c.axes(x.axes());
+            VectorMotion mo = c.motion;
+            Gearing g = c.gearing;
+            th.waitingFor = () -> {
+                for (int a : axes) {
+                    if (g.moving[a] || mo.running() && (a == mo.axis1 || a == mo.axis2)) {
+                        return false;
+                    }
                 }
-            }
-            waitUntilStill();
+                return true;
+            };
         });
     }
 

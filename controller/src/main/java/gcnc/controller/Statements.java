@@ -161,6 +161,12 @@ final class Statements {
                 return c.program.upload() + "\\";
             case "DL":
                 throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
+            case "ZS":
+                // zero the subroutine stack (COMALL ZS): an error routine's EN then ends the thread
+                // instead of returning into the motion it interrupted (gcnc's #FAULT does this)
+                onlyInProgram(th);
+                th.stack.clear();
+                return "";
             case "RE":
                 if (th != null) {
                     th.back();
@@ -176,6 +182,7 @@ final class Statements {
                         mo.abort(0, c.time());
                     }
                 }
+                c.gearing.stop();
                 return "";
             case "CA":
                 if (!args.equals("S")) {
@@ -207,6 +214,7 @@ final class Statements {
                     }
                 }
                 mo.stop(4);
+                c.gearing.stop(); // gearing off, a settling move ends where it is (assumed: docs/virtual-controller.md)
                 return "";
             case "AB": {
                 double n = args.isEmpty() ? 0 : eval(args);
@@ -218,6 +226,7 @@ final class Statements {
                     }
                 }
                 mo.abort(7, c.time());
+                c.gearing.stop();
                 return "";
             }
             case "CS":
@@ -341,6 +350,7 @@ final class Statements {
             t.halt();
         }
         c.motion.abort(7, c.time());
+        c.gearing.stop();
         c.variables.clear();
         c.arrays.clear();
         c.outputs = 0;

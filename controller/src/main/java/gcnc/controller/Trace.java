@@ -34,6 +34,12 @@ final class Trace {
                 (long) Math.rint(s.end1()), (long) Math.rint(s.end2()), free, time));
     }
 
+    /** A thread pass settled on its end: {@code PASS 1 PA END1 END2 FREE TIME}, its number counted from 1. */
+    void pass(int pass, double end1, double end2, int free, double time) {
+        line(String.format(Locale.ROOT, "%d 1 PA %d %d %d %.4f", pass, (long) Math.rint(end1), (long) Math.rint(end2),
+                free, time));
+    }
+
     void event(String text, double time) {
         line(String.format(Locale.ROOT, "# %s t=%.4f", text, time));
     }

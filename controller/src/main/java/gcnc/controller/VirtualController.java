@@ -29,7 +29,16 @@ public final class VirtualController implements Closeable {
      * {@code controller().advance(seconds)} and the run, times and buffer states too, is then a function
      * of the commands alone.
      */
-    public record Options(Model model, double speed, List<Fault> faults, Path trace) {
+    public record Options(Model model, double speed, List<Fault> faults, Path trace, double spindleRate) {
+        /** With the haas profile's spindle drive and encoder ({@link Controller#SPINDLE_RATE}). */
+        public Options(Model model, double speed, List<Fault> faults, Path trace) {
+            this(model, speed, faults, trace, Controller.SPINDLE_RATE);
+        }
+
+        /** The spindle encoder's counts a second per volt of OF: r/min per volt × counts per revolution / 60. */
+        public static double spindleRate(double rpmPerVolt, int countsPerRev) {
+            return rpmPerVolt * countsPerRev / 60.0;
+        }
     }
 
     private final Controller controller;
@@ -42,7 +51,7 @@ public final class VirtualController implements Closeable {
 
     private VirtualController(Options o) throws IOException {
         Writer trace = o.trace() == null ? null : Files.newBufferedWriter(o.trace(), StandardCharsets.UTF_8);
-        this.controller = new Controller(o.model(), o.faults(), trace);
+        this.controller = new Controller(o.model(), o.faults(), trace, o.spindleRate());
         this.faults = new Faults(o.faults());
         this.speed = o.speed();
         this.clock = new Thread(this::tick, "gcnc-controller-clock");

@@ -371,10 +371,15 @@ public enum Code {
     /** Warning: a dwell of an odd number of milliseconds; written as the even one above it (WT's resolution is 2). */
     E237_DWELL_ROUNDED(237),
     /**
-     * The compiled program has more lines (or labels) than the model's program memory: written, but
-     * it cannot be downloaded whole (E228/E229 when the program form is required).
+     * The program form was asked for ({@code --form program}) and the program has more lines than
+     * the model's program memory: DL would refuse it. The message says how large the stream form is.
      */
     E238_PROGRAM_DOES_NOT_FIT(238),
+    /**
+     * The stream form's resident program (set-up, routines, the blocks that must run inside the
+     * controller) has more lines than the model's program memory.
+     */
+    E239_RESIDENT_DOES_NOT_FIT(239),
 
     // 240-249: checker (check package) again: the chamfered pull-out of a thread pass under Haas M23
     // (docs/threading.md). Next to the backend's thread codes because E190-E199 are full.
@@ -384,6 +389,15 @@ public enum Code {
     E241_THREAD_CHAMFER_TRAVEL(241),
     /** Checker: the chamfered pull-out (M23) would move X faster than the machine's maximum feed. */
     E242_THREAD_CHAMFER_TOO_FAST(242),
+    /**
+     * Stream form: a block that must run inside the controller (a thread) writes more commands than
+     * one routine of the resident program is given ({@link gcnc.dmc.StreamSplit#RUN_LIMIT}).
+     */
+    E243_BLOCK_TOO_LONG_TO_EMBED(243),
+    /** Replay of the stream form: the resident program is longer than a replay reads of it. */
+    E244_RESIDENT_TOO_LONG_TO_REPLAY(244),
+    /** Warning, replay of the stream form: the stream is not the one the resident program's map names (another compile). */
+    E245_STREAM_NOT_THIS_RESIDENT(245),
 
     // 250-259: the machine around the motion (gcnc.galil.MachineCode; docs/galil.md).
     /** Warning: a dwell shorter than the 2 ms WT takes (G04 P1): the DMC waits 2 ms, as the clamp says. */

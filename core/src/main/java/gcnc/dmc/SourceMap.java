@@ -81,6 +81,9 @@ public final class SourceMap {
 
     /** What the map's last line starts with, before the SHA-256 of the DMC it was written with (hex). */
     public static final String DMC_HASH = "# dmc sha256 ";
+    /** A resident program's map names its stream ({@code # stream <name>}) and the stream's SHA-256 (stream form). */
+    public static final String STREAM = "# stream ";
+    public static final String STREAM_HASH = "# stream sha256 ";
     /** What the map's second line starts with, before the G-code file's SHA-256 (hex). */
     public static final String SOURCE_HASH = "# source sha256 ";
 
@@ -91,11 +94,12 @@ public final class SourceMap {
 
     /**
      * A map file read back: where each DMC line came from (null where a run came from no block,
-     * or before the first entry), the G-code file's name when the map names it, and the SHA-256 of
-     * the DMC it was written with (none in a map of gcnc before 2026-11: it cannot be trusted).
+     * or before the first entry), the G-code file's name when the map names it, the SHA-256 of
+     * the DMC it was written with (none in a map of gcnc before 2026-11: it cannot be trusted), and
+     * for a resident program the SHA-256 of its stream.
      */
     public record Table(java.util.function.IntFunction<Source> lines, java.util.Optional<String> source,
-                        java.util.Optional<String> dmcSha256) {
+                        java.util.Optional<String> dmcSha256, java.util.Optional<String> streamSha256) {
         /** The G-code line of each DMC line, whatever its file (0: from no block). */
         public java.util.function.IntUnaryOperator lineNumbers() {
             return n -> {
@@ -116,7 +120,12 @@ public final class SourceMap {
         java.util.List<String> files = new java.util.ArrayList<>();
         String source = null;
         String dmc = null;
+        String stream = null;
         for (String l = in.readLine(); l != null; l = in.readLine()) {
+            if (l.startsWith(STREAM_HASH)) {
+                stream = l.substring(STREAM_HASH.length()).strip();
+                continue;
+            }
             if (l.startsWith(DMC_HASH)) {
                 dmc = l.substring(DMC_HASH.length()).strip();
                 continue;
@@ -143,7 +152,7 @@ public final class SourceMap {
             int i = java.util.Arrays.binarySearch(start, dmcLine);
             int run = i >= 0 ? i : -i - 2;
             return run < 0 ? null : from[run];
-        }, java.util.Optional.ofNullable(source), java.util.Optional.ofNullable(dmc));
+        }, java.util.Optional.ofNullable(source), java.util.Optional.ofNullable(dmc), java.util.Optional.ofNullable(stream));
     }
 
     private static boolean number(String s) {

@@ -87,16 +87,11 @@ public final class LimitCheck implements Consumer<Instruction> {
     }
 
     /**
-     * The program's lines and labels against the model's program memory: whether it can be
-     * downloaded as one program. It is written either way, with warning E238 when it does not fit
-     * (what a larger program needs, a stream form fed segment by segment, is not built yet).
+     * The program's labels against the model's limit. Its lines are the form's to judge: a program
+     * longer than the memory is written in the stream form ({@link gcnc.dmc.FormChoice}).
      */
     public void finish() {
-        Span first = Span.of(1, 1);
-        limits.programLines((int) Math.min(lines, Integer.MAX_VALUE)).ifPresent(x -> diagnostics.report(
-                Diagnostic.warning(gcnc.diag.Code.E238_PROGRAM_DOES_NOT_FIT, first, lines, x.allowed().max(),
-                        x.model().name())));
-        limits.labels(labels).ifPresent(x -> diagnostics.report(x.diagnostic(first)));
+        limits.labels(labels).ifPresent(x -> diagnostics.report(x.diagnostic(Span.of(1, 1))));
     }
 
     /** How many lines have passed. */

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.List;
 
 /**
  * What {@code compile} writes: the DMC program and, beside a regular file, its source map
@@ -165,6 +166,43 @@ public final class DmcOutputs implements AutoCloseable {
     public void mapStop(int dmcLine, gcnc.plan.Stop why) {
         if (map != null) {
             map.line(gcnc.dmc.SourceMap.stopLine(dmcLine, why));
+        }
+    }
+
+    /** Adds a line to the map before its last; nothing when there is no map. */
+    void mapNote(String line) {
+        if (map != null) {
+            map.line(line);
+        }
+    }
+
+    /** The DMC's SHA-256, lowercase hex; ends the DMC (no line may follow). */
+    String dmcSha256() throws IOException {
+        if (sha256 == null) {
+            sha256 = dmc.sha256();
+        }
+        return sha256;
+    }
+
+    /** The DMC's SHA-256 once asked for (it can be computed once). */
+    private String sha256;
+
+    /**
+     * The files to put in place with others ({@link AtomicOutput#commitAll}): the DMC and its map,
+     * the map's last line written; a stale map beside the DMC is {@link #dropStale dropped} after.
+     */
+    List<AtomicOutput> sealed() throws IOException {
+        if (map == null) {
+            return List.of(dmc);
+        }
+        map.line(gcnc.dmc.SourceMap.DMC_HASH + dmcSha256());
+        return List.of(dmc, map);
+    }
+
+    /** Removes the map an earlier compile left beside the DMC (after a commit by {@link #sealed}). */
+    void dropStale() throws IOException {
+        if (stale != null) {
+            Files.deleteIfExists(stale);
         }
     }
 

@@ -149,6 +149,30 @@ public final class Controller {
         return (int) client.number("_XQ0");
     }
 
+    /**
+     * Where thread 0 and the vector sequence are, in one question: {@code MG _XQ0,_CSS} gives the
+     * program line thread 0 executes (-1 when it ended) and the segment of the sequence executing,
+     * read together, so that the segment is the one of the sequence at that line (two questions
+     * could straddle the start of the next sequence, whose {@code BGS} sets {@code _CSS} back).
+     */
+    public int[] executingAndSegment() throws IOException {
+        String cmd = "MG _XQ0,_CSS";
+        double[] v = client.numbers(cmd);
+        if (v.length != 2) {
+            throw new LinkFault(LinkFault.Kind.GARBAGE, cmd, v.length + " numbers where 2 belong");
+        }
+        return new int[] {(int) v[0], (int) v[1]};
+    }
+
+    /**
+     * {@code MG _CSS}: the number of the segment of the running vector sequence executing, from 1
+     * (0 before the sequence's first; the last one after it ended). COMALL CS; EPICS counts the
+     * segments processed from it.
+     */
+    public int segment() throws IOException {
+        return (int) client.number("_CSS");
+    }
+
     /** {@code MG _TC}: the last error's code without clearing it; 0 for none. */
     public int errorCode() throws IOException {
         return (int) client.number("_TC");

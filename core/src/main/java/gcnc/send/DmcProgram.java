@@ -1,22 +1,27 @@
 package gcnc.send;
 
+import gcnc.diag.Origin;
+import gcnc.dmc.Command;
+import gcnc.dmc.DmcPrinter;
+import gcnc.dmc.DmcReader;
+import gcnc.dmc.Instruction;
+import gcnc.dmc.Source;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import java.util.Locale;
 
 /**
- * The compiled program the sender downloads, read once: its lines, the G-code line each came from
- * (the source map), the motions it makes ({@link Sequence}) with their places in the plane, and how
- * long each line's work takes. Read from the DMC text the galil dialect writes
- * (docs/dmc-format.md), not from the compiler's objects, so that what is followed is exactly what
- * was downloaded and read back.
+ * The compiled program the sender downloads: its instructions (the typed commands of gcnc.dmc,
+ * each with its {@link Source}), the lines they print as ({@link DmcPrinter}, the one writer of DMC
+ * text: the same bytes as FILE.dmc), the motions it makes ({@link Sequence}) with their places in
+ * the plane and the DMC line of every segment, and how long each line's work takes. Built from the
+ * compiler's instructions as they come ({@link #of}), so that nothing reads DMC text back; a DMC
+ * file with its map is read through {@link DmcReader}, the one reader of DMC text ({@link #read}).
  */
 public final class DmcProgram {
+    private final List<Instruction> instructions;
     private final List<String> lines;
-    private final int[] sourceLines;
-    private final String[] sourceFiles;
     private final List<Sequence> sequences;
     /** For each line, the index of the sequence it belongs to, or -1. */
     private final int[] sequenceOf;
@@ -66,11 +71,10 @@ public final class DmcProgram {
         }
     }
 
-    private DmcProgram(List<String> lines, int[] sourceLines, String[] sourceFiles, List<Sequence> sequences,
+    private DmcProgram(List<Instruction> instructions, List<String> lines, List<Sequence> sequences,
                        int[] sequenceOf, double[] secondsBefore, double totalSeconds, Plane plane) {
+        this.instructions = instructions;
         this.lines = lines;
-        this.sourceLines = sourceLines;
-        this.sourceFiles = sourceFiles;
         this.sequences = sequences;
         this.sequenceOf = sequenceOf;
         this.secondsBefore = secondsBefore;
@@ -79,31 +83,62 @@ public final class DmcProgram {
     }
 
     /**
-     * Reads a program.
+     * The program as the compiler handed it on, one instruction a line (what {@code Session.compile}
+     * gives its consumer, in order).
      *
-     * @param lines        the DMC, one directive a line
-     * @param map          the source map read back ({@link MapReader})
-     * @param profile      the machine it was compiled for: the plane, home, acceleration
+     * @param profile the machine it was compiled for: the plane, home, acceleration
+     */
+    public static DmcProgram of(List<Instruction> instructions, MachineProfile profile) {
+        Plane plane = Plane.of(profile);
+        List<Instruction> all = List.copyOf(instructions);
+        List<String> printed = new ArrayList<>(all.size());
+        Walker w = new Walker(plane, plane.galil(profile.home().x(), profile.home().z()), profile.acceleration());
+        for (int i = 0; i < all.size(); i++) {
+            printed.add(DmcPrinter.print(all.get(i).command()));
+            w.line(i, all.get(i).command());
+        }
+        int n = all.size();
+        return new DmcProgram(all, Collections.unmodifiableList(printed), Collections.unmodifiableList(w.sequences),
+                w.sequenceOf(n), w.secondsBefore(n), w.seconds, plane);
+    }
+
+    /**
+     * A DMC file and its source map read back (a program compiled earlier, a test's own DMC): every
+     * line through {@link DmcReader}; a line it cannot read is an {@link IllegalArgumentException}
+     * naming it (gcnc writes none).
+     *
+     * @param lines the DMC, one directive a line
+     * @param map   the source map read back ({@link MapReader})
      */
     public static DmcProgram read(List<String> lines, MapReader.Map map, MachineProfile profile) {
-        Plane plane = Plane.of(profile);
-        int n = lines.size();
-        int[] source = new int[n];
-        String[] files = new String[n];
-        for (int i = 0; i < n; i++) {
-            source[i] = map.line(i + 1);
-            files[i] = map.file(i + 1);
+        List<Instruction> out = new ArrayList<>(lines.size());
+        for (int i = 0; i < lines.size(); i++) {
+            String text = lines.get(i);
+            int at = i + 1;
+            Command c = DmcReader.read(text, (code, args) -> {
+                throw new IllegalArgumentException("DMC line " + at + " '" + text + "': " + code.id());
+            });
+            if (c == null) {
+                throw new IllegalArgumentException("DMC line " + at + " is empty");
+            }
+            String file = map.file(at);
+            out.add(new Instruction(c, new Source(file == null ? Origin.PROGRAM : Origin.file(file), map.line(at), -1)));
         }
-        Walker w = new Walker(plane, plane.galil(profile.home().x(), profile.home().z()), profile.acceleration());
-        for (int i = 0; i < n; i++) {
-            w.line(i, lines.get(i));
-        }
-        return new DmcProgram(List.copyOf(lines), source, files, Collections.unmodifiableList(w.sequences),
-                w.sequenceOf(n), w.secondsBefore(n), w.seconds, plane);
+        return of(out, profile);
     }
 
     public List<String> lines() {
         return lines;
+    }
+
+    /** The instructions, one a line. */
+    public List<Instruction> instructions() {
+        return instructions;
+    }
+
+    /** The command on line {@code index} (0-based), or null beyond the program. */
+    public Command command(int index) {
+        return index >= 0 && index < instructions.size() ? instructions.get(index).command() : null;
     }
 
     public Plane plane() {
@@ -112,12 +147,12 @@ public final class DmcProgram {
 
     /** The G-code line a program line (0-based) came from; 0 for the header and footer. */
     public int sourceLine(int index) {
-        return index >= 0 && index < sourceLines.length ? sourceLines[index] : 0;
+        return index >= 0 && index < instructions.size() ? instructions.get(index).source().line() : 0;
     }
 
-    /** The G-code file a program line came from when the map names one (a called program), else null. */
+    /** The G-code file a program line came from when it is a called program's, else null. */
     public String sourceFile(int index) {
-        return index >= 0 && index < sourceFiles.length ? sourceFiles[index] : null;
+        return index >= 0 && index < instructions.size() ? instructions.get(index).source().file() : null;
     }
 
     public List<Sequence> sequences() {
@@ -162,7 +197,45 @@ public final class DmcProgram {
         return 0;
     }
 
-    /** The program lines (0-based) of the sequences of G-code line {@code line}, in order. */
+    /**
+     * One motion of a G-code block as the controller runs it: one segment ({@code VP}/{@code CR},
+     * piece {@code from} = {@code to} of its sequence) or a thread pass whole ({@code 0, 0}). A block
+     * makes one or several (an arc with its closing VP, a canned cycle's passes, G28's two legs); in
+     * a blended sequence they stand among the other blocks' segments (docs/run.md, "Resume").
+     */
+    public record Motion(Sequence sequence, int from, int to) {
+        /** Galil coordinates where the motion starts. */
+        public double[] start() {
+            return sequence.isThreadPass() || from == 0 ? sequence.start() : sequence.pieces().get(from).from();
+        }
+
+        /** Galil coordinates where it ends. */
+        public double[] end() {
+            return sequence.isThreadPass() || to == sequence.pieces().size() - 1 ? sequence.end()
+                    : sequence.pieces().get(to).to();
+        }
+    }
+
+    /** The motions of G-code line {@code line}, in program order. */
+    public List<Motion> motionsOf(int line) {
+        List<Motion> out = new ArrayList<>();
+        for (Sequence s : sequences) {
+            if (s.isThreadPass()) {
+                if (sourceLine(s.first()) == line) {
+                    out.add(new Motion(s, 0, 0));
+                }
+                continue;
+            }
+            for (int k = 0; k < s.pieces().size(); k++) {
+                if (sourceLine(s.pieces().get(k).line()) == line) {
+                    out.add(new Motion(s, k, k));
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The program lines (0-based) of the sequences whose first line came from G-code line {@code line}, in order. */
     public List<Sequence> sequencesOf(int line) {
         List<Sequence> out = new ArrayList<>();
         for (Sequence s : sequences) {
@@ -175,32 +248,38 @@ public final class DmcProgram {
 
     /** The first program line that came from G-code line {@code line}, or -1. */
     public int firstLineOf(int line) {
-        for (int i = 0; i < sourceLines.length; i++) {
-            if (sourceLines[i] == line) {
+        for (int i = 0; i < instructions.size(); i++) {
+            if (sourceLine(i) == line) {
                 return i;
             }
         }
         return -1;
     }
 
-    /** The labels the program declares ({@code #NAME} at a line's start). */
+    /** The labels the program declares ({@code #NAME}). */
     public int labels() {
         int n = 0;
-        for (String l : lines) {
-            if (l.startsWith("#")) {
+        for (Instruction i : instructions) {
+            if (i.command() instanceof Command.Label) {
                 n++;
             }
         }
         return n;
     }
 
-    /** The variables the program assigns ({@code NAME=...}, lower or upper case, not an axis operand). */
+    /** The variables the program assigns ({@code TOOL}, {@code gline}, {@code gsp}, a deadline's), sorted. */
     public List<String> variables() {
         java.util.Set<String> names = new java.util.TreeSet<>();
-        for (String l : lines) {
-            int eq = l.indexOf('=');
-            if (eq > 0 && l.substring(0, eq).matches("[A-Za-z][A-Za-z0-9]{0,7}") && !l.substring(0, eq).matches("[A-Z]{2}[A-H]?")) {
-                names.add(l.substring(0, eq));
+        for (Instruction i : instructions) {
+            Command c = i.command();
+            if (c instanceof Command.ToolNumber) {
+                names.add("TOOL");
+            } else if (c instanceof Command.SetVariable v) {
+                names.add(v.name());
+            } else if (c instanceof Command.SetDeadline d) {
+                names.add(d.name());
+            } else if (c instanceof Command.SyncPoint s) {
+                names.add(s.variable());
             }
         }
         return List.copyOf(names);
@@ -215,39 +294,12 @@ public final class DmcProgram {
         return m;
     }
 
-    /** The two letters of a DMC directive ({@code VP}, {@code SB}), upper case, or "" for a label or comment. */
-    static String op(String line) {
-        String t = line.strip();
-        if (t.length() < 2 || t.startsWith("#") || t.startsWith("'")) {
-            return "";
-        }
-        return t.substring(0, 2).toUpperCase(Locale.ROOT);
+    /** Is {@code c} a segment of a vector sequence ({@code VP}, {@code CR})? */
+    public static boolean isSegment(Command c) {
+        return c instanceof Command.VectorPosition || c instanceof Command.CircularArc;
     }
 
-    /** The comma-separated arguments after a directive's two letters; an empty one is NaN. */
-    static double[] args(String line) {
-        String t = line.strip().substring(2).strip();
-        int speeds = t.indexOf('<') >= 0 ? t.indexOf('<') : t.indexOf('>');
-        if (speeds >= 0) {
-            t = t.substring(0, speeds).strip(); // a segment's own speeds (VP a,b <o >p) are not its arguments
-        }
-        if (t.isEmpty()) {
-            return new double[0];
-        }
-        String[] f = t.split(",", -1);
-        double[] v = new double[f.length];
-        for (int i = 0; i < f.length; i++) {
-            String s = f[i].strip();
-            try {
-                v[i] = s.isEmpty() ? Double.NaN : Double.parseDouble(s);
-            } catch (NumberFormatException e) {
-                v[i] = Double.NaN;
-            }
-        }
-        return v;
-    }
-
-    /** Follows the program's geometry line by line, as the controller will move. */
+    /** Follows the program's geometry command by command, as the controller will move. */
     private static final class Walker {
         final Plane plane;
         final double acceleration;
@@ -259,6 +311,8 @@ public final class DmcProgram {
         double speed;
         int first = -1;
         List<Sequence.Piece> pieces = new ArrayList<>();
+        /** Each piece's own speed ({@code <o}), else the sequence's VS. */
+        List<Double> speeds = new ArrayList<>();
         boolean thread;
         double seconds;
 
@@ -269,54 +323,50 @@ public final class DmcProgram {
             this.acceleration = acceleration > 0 ? acceleration : 256000;
         }
 
-        void line(int i, String text) {
+        void line(int i, Command c) {
             before.add(seconds);
             owner.add(first >= 0 ? sequences.size() : -1);
-            String op = op(text);
-            switch (op) {
-                case "VS" -> {
-                    double[] a = args(text);
-                    speed = a.length > 0 && !Double.isNaN(a[0]) ? a[0] : speed;
-                    begin(i);
-                }
-                case "VP" -> {
-                    begin(i);
-                    double[] a = args(text);
-                    double[] to = {pos[0] + a[0], pos[1] + a[1]};
-                    pieces.add(new Sequence.Line(cursor, to));
-                    cursor = to;
-                }
-                case "CR" -> {
-                    begin(i);
-                    double[] a = args(text);
-                    double r = a[0];
-                    double th = Math.toRadians(a[1]);
-                    double d = Math.toRadians(a[2]);
-                    double[] c = {cursor[0] - r * Math.cos(th), cursor[1] - r * Math.sin(th)};
-                    double[] to = {c[0] + r * Math.cos(th + d), c[1] + r * Math.sin(th + d)};
-                    pieces.add(new Sequence.Arc(cursor, to, c, r, a[1], a[2]));
-                    cursor = to;
-                }
-                case "GA" -> {
-                    begin(i);
-                    thread = true;
-                }
-                case "PA" -> {
-                    double[] a = args(text);
-                    double p1 = plane.first() < a.length ? a[plane.first()] : Double.NaN;
-                    double p2 = plane.second() < a.length ? a[plane.second()] : Double.NaN;
-                    cursor = new double[] {Double.isNaN(p1) ? cursor[0] : p1, Double.isNaN(p2) ? cursor[1] : p2};
-                }
-                case "AM" -> end(i);
-                default -> {
-                }
-            }
-            if (op.equals("WT")) {
-                double[] a = args(text);
-                seconds += a.length > 0 && !Double.isNaN(a[0]) ? a[0] / 1000 : 0;
+            if (c instanceof Command.VectorSpeed v) {
+                speed = v.countsPerSecond().value();
+                begin(i);
+            } else if (c instanceof Command.VectorPosition v) {
+                begin(i);
+                double[] to = {pos[0] + v.first(), pos[1] + v.second()};
+                pieces.add(new Sequence.Line(i, cursor, to));
+                speeds.add(v.speeds().speed() > 0 ? v.speeds().speed() : speed);
+                cursor = to;
+            } else if (c instanceof Command.CircularArc a) {
+                begin(i);
+                double r = a.radius().value();
+                double[] g = Command.CircularArc.geometry(cursor[0], cursor[1], r, a.start().value(), a.sweep().value());
+                double[] to = {g[2], g[3]};
+                pieces.add(new Sequence.Arc(i, cursor, to, new double[] {g[0], g[1]}, r, a.start().value(),
+                        a.sweep().value()));
+                speeds.add(a.speeds().speed() > 0 ? a.speeds().speed() : speed);
+                cursor = to;
+            } else if (c instanceof Command.GearMaster) {
+                begin(i);
+                thread = true;
+            } else if (c instanceof Command.PositionAbsolute p) {
+                double[] at = cursor.clone();
+                place(at, Plane.channel(p.first()), p.firstCount());
+                place(at, Plane.channel(p.second()), p.secondCount());
+                cursor = at;
+            } else if (c instanceof Command.AwaitSequence || c instanceof Command.AfterMotion) {
+                end(i);
+            } else if (c instanceof Command.Wait w) {
+                seconds += w.milliseconds() / 1000.0;
             }
             if (first >= 0 && owner.get(i) < 0) {
                 owner.set(i, sequences.size());
+            }
+        }
+
+        private void place(double[] at, int channel, long count) {
+            if (channel == plane.first()) {
+                at[0] = count;
+            } else if (channel == plane.second()) {
+                at[1] = count;
             }
         }
 
@@ -325,6 +375,7 @@ public final class DmcProgram {
                 first = i;
                 cursor = pos.clone();
                 pieces = new ArrayList<>();
+                speeds = new ArrayList<>();
                 thread = false;
             }
         }
@@ -334,15 +385,20 @@ public final class DmcProgram {
                 return;
             }
             double length = 0;
-            for (Sequence.Piece p : pieces) {
-                length += p instanceof Sequence.Arc a ? Math.abs(a.radius() * Math.toRadians(a.delta()))
-                        : Math.hypot(p.to()[0] - p.from()[0], p.to()[1] - p.from()[1]);
+            double cruise = 0;
+            double top = 0;
+            for (int k = 0; k < pieces.size(); k++) {
+                double v = speeds.get(k);
+                length += pieces.get(k).length();
+                cruise += v > 0 ? pieces.get(k).length() / v : 0;
+                top = Math.max(top, v);
             }
             double t = 0;
-            if (speed > 0 && length > 0) {
-                // a trapezoid: the time to speed up and slow down, or a triangle on a short move
-                double ramp = speed * speed / acceleration;
-                t = length >= ramp ? length / speed + speed / acceleration : 2 * Math.sqrt(length / acceleration);
+            if (top > 0 && length > 0) {
+                // a trapezoid: each piece at its own speed, plus the time to speed up and slow down; a
+                // triangle on a short move (the blended corners' slowing is not counted: an estimate)
+                double ramp = top * top / acceleration;
+                t = length >= ramp ? cruise + top / acceleration : 2 * Math.sqrt(length / acceleration);
             }
             sequences.add(new Sequence(first, i, pos.clone(), cursor.clone(), thread ? 0 : speed,
                     thread ? List.of() : List.copyOf(pieces), t));
@@ -350,7 +406,8 @@ public final class DmcProgram {
                 owner.set(k, sequences.size() - 1);
             }
             seconds += t;
-            pos = cursor.clone();
+            // the controller ends a sequence on whole counts: the next one's origin (VP is measured from it)
+            pos = new double[] {Math.rint(cursor[0]), Math.rint(cursor[1])};
             first = -1;
         }
 

@@ -4,10 +4,10 @@ import java.io.IOException;
 
 /**
  * How a checked program reaches the controller once pre-flight passed.
- * {@link ProgramForm} downloads it whole (or block by block in step mode) and follows it; the
- * stream form (a resident program plus a segment stream fed into the vector buffer with flow
- * control, galil-controller.md §6.3-6.4) implements this too once the compiler plans blended
- * groups: it gets the same controller, progress and operator, and reports through them the same way.
+ * {@link ProgramForm} downloads it whole (or block by block in step mode) and follows it;
+ * {@link StreamForm} downloads the resident program and feeds the rest through the command line
+ * (docs/galil.md, "Two forms"). Both get the same controller, progress and operator, and report
+ * through them the same way.
  */
 public interface Form {
     /** Its name in the events ({@code "program"}, {@code "stream"}). */
@@ -19,4 +19,7 @@ public interface Form {
      */
     void run(Piece piece, Controller controller, Progress progress, Operator operator, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException;
+
+    /** The program lines {@code piece} takes on the controller at once: checked against its memory in pre-flight. */
+    int linesNeeded(Piece piece, DmcProgram program, boolean step);
 }

@@ -1,6 +1,7 @@
 package gcnc.send;
 
 import gcnc.diag.Code;
+import gcnc.dmc.Command;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -32,6 +33,11 @@ public final class ProgramForm implements Form {
     @Override
     public String name() {
         return "program";
+    }
+
+    @Override
+    public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
+        return step ? steps(piece, program).stream().mapToInt(p -> p.lines().size()).max().orElse(0) : piece.lines().size();
     }
 
     @Override
@@ -73,13 +79,13 @@ public final class ProgramForm implements Form {
      */
     static List<Piece> steps(Piece piece, DmcProgram program) {
         List<Piece> out = new ArrayList<>();
-        List<String> lines = piece.lines();
+        List<Command> lines = piece.commands();
         int i = 0;
         while (i < lines.size()) {
             Piece.Builder b = new Piece.Builder();
             int first = piece.originOf(i);
-            if (!lines.get(i).startsWith("#")) {
-                b.add("#GCNC", first);
+            if (!(lines.get(i) instanceof Command.Label)) {
+                b.add(new Command.Label("GCNC"), first);
             }
             int source = -1;
             int j = i;
@@ -93,9 +99,9 @@ public final class ProgramForm implements Form {
                 b.add(lines.get(j), piece.originOf(j));
             }
             // the footer (source line 0 after the last block) stays with the last block
-            if (j < lines.size() || !lines.subList(i, j).stream().anyMatch(l -> l.strip().equals("EN"))) {
-                if (!lines.get(j - 1).strip().equals("EN")) {
-                    b.add("EN", piece.originOf(j - 1));
+            if (j < lines.size() || !lines.subList(i, j).stream().anyMatch(l -> l instanceof Command.End)) {
+                if (!(lines.get(j - 1) instanceof Command.End)) {
+                    b.add(new Command.End(), piece.originOf(j - 1));
                 }
                 // the program's routines (#NOHOME, #CMDERR ...: the labels after its EN) with every step,
                 // since the header's and the blocks' jumps name them
@@ -110,9 +116,9 @@ public final class ProgramForm implements Form {
     }
 
     /** The index of the first line after the program's first {@code EN} (its routines); the size when none. */
-    private static int routines(List<String> lines) {
+    private static int routines(List<Command> lines) {
         for (int k = 0; k < lines.size(); k++) {
-            if (lines.get(k).strip().equals("EN")) {
+            if (lines.get(k) instanceof Command.End) {
                 return k + 1;
             }
         }
@@ -138,7 +144,7 @@ public final class ProgramForm implements Form {
     }
 
     /** The read-back must be the download, line for line and byte for byte (line ends aside). */
-    private static void compare(List<String> sent, List<String> back, Progress progress) throws RunFault {
+    static void compare(List<String> sent, List<String> back, Progress progress) throws RunFault {
         int n = Math.max(sent.size(), back.size());
         for (int i = 0; i < n; i++) {
             String s = i < sent.size() ? sent.get(i) : "";
@@ -155,7 +161,8 @@ public final class ProgramForm implements Form {
      * without a #LIMSWI routine stops the motion and the program (COMALL: "without it the controller
      * issues ST"). The axes must be where the piece's last motion ends; else the stop code says why.
      */
-    private void endedAtItsEnd(Piece piece, Controller c, Progress progress, Operator op) throws IOException, RunFault {
+    private void endedAtItsEnd(Piece piece, int lastXq, Controller c, Progress progress, Operator op)
+            throws IOException, RunFault {
         Sequence last = null;
         for (int o : piece.origin()) {
             Sequence s = progress.program().sequenceAt(o);
@@ -172,11 +179,71 @@ public final class ProgramForm implements Form {
             return;
         }
         int code = c.stopCode();
-        progress.at(progress.executingIndex(), at, op);
+        settled(piece, lastXq, c, progress, op);
         c.stopAll();
         throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "it ended during line "
                 + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at the end "
                 + Resume.counts(last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+    }
+
+    /**
+     * The compiled line executing when thread 0 is at the controller's line {@code xq} and the
+     * sequence's segment {@code css} executes: the line itself, except in a vector sequence, where
+     * the thread waits at {@code AMS} while the segments run: there the segment executing names the
+     * line, so that a blended sequence's blocks are followed one by one; before its {@code BGS} the
+     * sequence's first segment is next.
+     */
+    static int executing(Piece piece, int xq, int css, DmcProgram program) {
+        Piece.Segments segments = piece.segmentsAt(xq, program);
+        if (segments == null || segments.origins().length == 0) {
+            return piece.originOf(xq);
+        }
+        if (!segments.begun() || segments.origins().length == 1) {
+            return segments.origins()[0];
+        }
+        return segments.executing(css);
+    }
+
+    /**
+     * After a stop, where the machine came to rest: the axes ({@code TP}) on the path of the first
+     * vector sequence, from the line thread 0 was at when last polled ({@code lastXq}) on, whose
+     * segments they stand on, and in it the segment {@code _CSS} names (it keeps its number after
+     * the sequence ended). Between polls the program may have run on into the next sequence, or a
+     * blended sequence through several short segments, so the blocks completed and executing are
+     * reported from where the machine stopped, not from the last poll. Axes on no sequence's path (a
+     * thread pass, a reply that fails) leave the last poll's.
+     */
+    private void settled(Piece piece, int lastXq, Controller c, Progress progress, Operator op) {
+        try {
+            double[] at = c.position();
+            DmcProgram program = progress.program();
+            int origin = progress.executingIndex();
+            for (int j = Math.max(lastXq, 0); j < piece.lines().size(); j++) {
+                if (!(program.command(piece.originOf(j)) instanceof Command.AwaitSequence)) {
+                    continue;
+                }
+                Piece.Segments segments = piece.segmentsAt(j, program);
+                if (segments != null && onPath(segments, at, program)) {
+                    origin = segments.origins().length == 1 ? segments.origins()[0] : segments.executing(c.segment());
+                    break;
+                }
+            }
+            progress.at(origin, at, op);
+        } catch (IOException e) {
+            // the link failed as well: the report names what the last poll saw
+        }
+    }
+
+    /** Are the axes on one of the sequence's segments (as compiled: a re-planned one lies on its original)? */
+    private boolean onPath(Piece.Segments segments, double[] at, DmcProgram program) {
+        for (int o : segments.origins()) {
+            Sequence s = program.sequenceAt(o);
+            int k = s == null ? -1 : s.pieceAt(o);
+            if (k >= 0 && Resume.onPiece(s.pieces().get(k), at, tolerance)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Polls until thread 0 ends, applying the operator's hold, override and stop between polls. */
@@ -186,9 +253,11 @@ public final class ProgramForm implements Form {
         double ratio = 1;
         double[] still = null;
         long stillSince = 0;
+        int lastXq = -1;
         while (true) {
             if (op.stopped()) {
                 c.stopAll();
+                settled(piece, lastXq, c, progress, op);
                 throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true,
                         progress.executingLine());
             }
@@ -202,7 +271,8 @@ public final class ProgramForm implements Form {
                 c.ratio(ratio);
                 progress.events().accept(new Event.Hold(false, ratio));
             }
-            int xq = c.executing();
+            int[] where = c.executingAndSegment();
+            int xq = where[0];
             if (xq < 0) {
                 int tc = c.errorCode();
                 if (tc != 0) {
@@ -213,20 +283,22 @@ public final class ProgramForm implements Form {
                     c.stopAll();
                     throw f;
                 }
-                endedAtItsEnd(piece, c, progress, op);
+                endedAtItsEnd(piece, lastXq, c, progress, op);
                 return;
             }
+            lastXq = xq;
             double[] at = c.position();
-            progress.at(piece.originOf(xq), at, op);
+            progress.at(executing(piece, xq, where[1], progress.program()), at, op);
             // a sequence that has begun and does not move (the profiler stopped taking segments): no
             // reply tells it, so the axes do; a hold, a dwell and a thread pass's wait for the spindle are not stalls
-            Sequence s = progress.program().sequenceAt(piece.originOf(xq));
+            Sequence s = progress.program().sequenceAt(progress.executingIndex());
             boolean inMotion = s != null && !s.isThreadPass() && !held && op.override() > 0;
             if (!inMotion || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
                 still = at;
                 stillSince = System.nanoTime();
             } else if ((System.nanoTime() - stillSince) / 1e9 > stallSeconds) {
                 c.stopAll();
+                settled(piece, lastXq, c, progress, op);
                 throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the axes stood still for "
                         + Math.round(stallSeconds) + " s during line " + progress.executingLine()
                         + " while its motion had not ended (the controller stopped feeding the sequence)");

@@ -58,7 +58,8 @@ public final class Progress {
 
     /**
      * Where a resume continues: the block executing and, when it makes several motions, the one it
-     * was in ({@code N:K}); the block's start when no motion of it had begun.
+     * was in ({@code N:K}); the block's start when no motion of it had begun. In a blended sequence
+     * the executing line is the segment's ({@code _CSS}), so N is the block of that segment.
      */
     public ResumePoint resumePoint() {
         int e = Math.max(executing, 0);
@@ -73,17 +74,24 @@ public final class Progress {
             return null;
         }
         Sequence s = program.sequenceAt(e);
-        java.util.List<Sequence> all = program.sequencesOf(line);
-        int k = s == null ? -1 : all.indexOf(s);
-        if (s == null) {
-            // between motions (an output, a dwell): the last motion of the block already done, if any
-            for (int i = 0; i < all.size(); i++) {
-                if (all.get(i).last() < e) {
-                    k = i;
-                }
+        java.util.List<DmcProgram.Motion> all = program.motionsOf(line);
+        int piece = s == null ? -1 : s.isThreadPass() ? 0 : s.pieceAt(e);
+        int k = -1;
+        int done = 0;
+        for (int i = 0; i < all.size(); i++) {
+            DmcProgram.Motion m = all.get(i);
+            if (s != null && m.sequence() == s && (s.isThreadPass() || piece == m.from())) {
+                k = i;
+            }
+            if (m.sequence().last() < e) {
+                done = i + 1;
             }
         }
-        return new ResumePoint(line, k <= 0 ? 0 : k + 1);
+        if (k < 0) {
+            // between motions (an output, a dwell): after the last motion of the block already done, if any
+            k = done - 1;
+        }
+        return new ResumePoint(line, all.size() <= 1 || k <= 0 ? 0 : k + 1);
     }
 
     /** The line about to run (step mode, before its Enter): where a stop then says the run was. */
@@ -118,6 +126,14 @@ public final class Progress {
         Sequence s = counts == null || executing < 0 ? null : program.sequenceAt(executing);
         if (s == null || s.seconds() <= 0) {
             return 0;
+        }
+        int k = s.pieceAt(executing);
+        double total = s.lengthBefore(s.pieces().size());
+        if (k >= 0 && total > 0) {
+            // a blended sequence: the path of the segments before the executing one, and along it
+            Sequence.Piece p = s.pieces().get(k);
+            double along = Math.min(p.length(), Resume.along(p, counts));
+            return s.seconds() * Math.min(1, (s.lengthBefore(k) + along) / total);
         }
         double from = Math.hypot(counts[0] - s.start()[0], counts[1] - s.start()[1]);
         double to = Math.hypot(counts[0] - s.end()[0], counts[1] - s.end()[1]);

@@ -1,28 +1,35 @@
 package gcnc.send;
 
 import gcnc.diag.Code;
+import gcnc.dmc.Command;
+import gcnc.dmc.Fixed;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 
 /**
  * The program that continues an interrupted run at a {@link ResumePoint}, built from the compiled
- * program's own lines (docs/run.md, "Resume"):
+ * program's own instructions (docs/run.md, "Resume"):
  * <ol>
  * <li>the program's header ({@code #GCNC}, {@code SH}, {@code VM}, {@code VA}, {@code VD});
- * <li>the state the controller holds at that point as the program set it: the last spindle
- *     {@code OF}, the last {@code TOOL=}, and every output bit the program switched ({@code SB}/
- *     {@code CB}) at its last value; then {@code WT 2000} when the spindle turns, for it to reach
- *     speed (the profile gives no spin-up time). Offsets, units and feed mode (G94/G95, G96) need
- *     nothing: the compiler resolved them into the counts and speeds of every later line;
- * <li>when the axes stopped inside the motion to resume, the rest of that motion re-planned from
- *     where they are (the remaining part of the line or arc, then its other segments, as one
- *     sequence at the motion's own VS), else nothing;
- * <li>the program's lines from the resume point to its end, unchanged.
+ * <li>the state the controller holds at that point as the program set it: the last {@code TOOL=},
+ *     the last value of each variable ({@code gline}), every output bit the program switched
+ *     ({@code SB}/{@code CB}) at its last value, the last spindle {@code OF} (one a blended
+ *     sequence changed on the way counts when the stop is past it); then {@code WT 2000} when the
+ *     spindle turns, for it to reach speed (the profile gives no spin-up time). Offsets, units and
+ *     feed mode (G94/G95, G96) need nothing: the compiler resolved them into the counts and speeds
+ *     of every later line;
+ * <li>when the resume point or the axes are inside a vector sequence (a blended group of blocks, or
+ *     one motion stopped part way), the rest of that sequence re-planned as a new sequence from
+ *     where the axes are: the remaining part of the segment they are on (the line to its end, the
+ *     arc from their angle), then the sequence's later segments, each with its own speeds, VPs
+ *     measured from the new origin, the spindle changes on the way ({@code AV}) moved back by the
+ *     path already run;
+ * <li>the program's lines after that sequence (or from the resume point) to its end, unchanged.
  * </ol>
- * The axes must be at the point's start, or on the path of the motion to resume (they stopped
- * there), or at its end; anywhere else gcnc does not invent a move through the part: E827.
+ * The axes must be at the point's start, or on the path of the sequence from there (they stopped
+ * on it), or at its end; anywhere else gcnc does not invent a move through the part: E827.
  */
 public final class Resume {
     private final DmcProgram program;
@@ -40,18 +47,24 @@ public final class Resume {
             throw fault(at, "line " + at.line() + " has no block that reached the controller (a comment, an empty line"
                     + " or beyond the program): name the line of a block");
         }
-        List<Sequence> motions = program.sequencesOf(at.line());
+        List<DmcProgram.Motion> motions = program.motionsOf(at.line());
         if (at.motion() > motions.size()) {
             throw fault(at, "line " + at.line() + " makes " + motions.size() + " motion" + (motions.size() == 1 ? "" : "s"));
         }
-        Sequence s = at.motion() > 0 ? motions.get(at.motion() - 1) : motions.isEmpty() ? null : motions.get(0);
-        int from = at.motion() > 0 ? s.first() : first;
-        double[] start = s != null ? s.start() : positionAt(first);
-        if (near(axes, start)) {
-            return build(from, from, null);
-        }
-        if (s == null) {
+        DmcProgram.Motion m = at.motion() > 0 ? motions.get(at.motion() - 1) : motions.isEmpty() ? null : motions.get(0);
+        if (m == null) {
+            double[] start = positionAt(first);
+            if (near(axes, start)) {
+                return build(first, first, null);
+            }
             throw fault(at, away(axes, start));
+        }
+        Sequence s = m.sequence();
+        double[] start = m.start();
+        if (m.from() == 0 && near(axes, start)) {
+            // the motion starts its sequence: the program from the block's first line (or the motion's), unchanged
+            int from = at.motion() > 0 ? s.first() : Math.min(first, s.first());
+            return build(from, from, null);
         }
         if (near(axes, s.end())) {
             return build(s.last() + 1, s.last() + 1, null);
@@ -60,12 +73,17 @@ public final class Resume {
             throw fault(at, "a thread pass cannot be entered part way (the spindle and Z are geared at its start): bring"
                     + " the axes to " + counts(start) + " and resume at " + at.line());
         }
-        for (int k = 0; k < s.pieces().size(); k++) {
-            if (onPiece(s.pieces().get(k), axes)) {
-                return build(s.last() + 1, s.first(), replan(s, k, axes));
+        // inside the sequence: from the piece the axes stand at the start of, or on, from this motion on
+        for (int k = m.from(); k < s.pieces().size(); k++) {
+            Sequence.Piece p = s.pieces().get(k);
+            if (near(axes, p.from())) {
+                return build(s.last() + 1, s.first(), replan(s, k, false, axes));
+            }
+            if (!near(axes, p.to()) && onPiece(p, axes)) {
+                return build(s.last() + 1, s.first(), replan(s, k, true, axes));
             }
         }
-        throw fault(at, "the axes are at " + counts(axes) + ", not on the path of line " + at.line() + " (" + counts(s.start())
+        throw fault(at, "the axes are at " + counts(axes) + ", not on the path of line " + at.line() + " (" + counts(start)
                 + " to " + counts(s.end()) + "): jog them to " + counts(start) + " and resume again");
     }
 
@@ -84,101 +102,149 @@ public final class Resume {
         return p;
     }
 
+    /** The re-planned rest of a sequence, and the spindle changes on its way the axes are already past. */
+    private record Replanned(Piece.Builder lines, List<Integer> passed) {
+    }
+
     /**
      * @param from      the first of the program's lines to run unchanged
      * @param stateEnd  the state is what the lines before this one set
-     * @param replanned the rest of an interrupted motion, or null
+     * @param replanned the rest of an interrupted sequence, or null
      */
-    private Piece build(int from, int stateEnd, Piece.Builder replanned) {
+    private Piece build(int from, int stateEnd, Replanned replanned) {
         Piece.Builder b = new Piece.Builder();
         List<String> lines = program.lines();
         int header = 0;
-        while (header < lines.size() && program.sourceLine(header) == 0 && !lines.get(header).strip().equals("EN")) {
+        while (header < lines.size() && program.sourceLine(header) == 0 && !(program.command(header) instanceof Command.End)) {
             // not the homing check: a resumed run starts where the axes stopped, which the sender checks itself
-            if (!lines.get(header).strip().startsWith("JP #NOHOME")) {
-                b.add(lines.get(header), header);
+            if (!(program.command(header) instanceof Command.Jump j && j.label().equals("NOHOME"))) {
+                b.add(program.command(header), header);
             }
             header++;
         }
-        String of = null;
-        int ofAt = -1;
-        String tool = null;
-        int toolAt = -1;
-        Map<Integer, String[]> bits = new TreeMap<>();
+        int of = -1;
+        int tool = -1;
+        Map<Integer, Integer> bits = new TreeMap<>();
+        Map<String, Integer> variables = new TreeMap<>();
+        List<Integer> state = new ArrayList<>();
         for (int i = header; i < stateEnd && i < lines.size(); i++) {
-            String l = lines.get(i).strip();
-            String op = DmcProgram.op(l);
-            if (op.equals("OF")) {
-                of = l;
-                ofAt = i;
-            } else if (l.toUpperCase(Locale.ROOT).startsWith("TOOL=")) {
-                tool = l;
-                toolAt = i;
-            } else if ((op.equals("SB") || op.equals("CB")) && l.substring(2).strip().matches("\\d+")) {
-                bits.put(Integer.parseInt(l.substring(2).strip()), new String[] {l, Integer.toString(i)});
+            state.add(i);
+        }
+        if (replanned != null) {
+            state.addAll(replanned.passed());
+        }
+        for (int i : state) {
+            Command c = program.command(i);
+            if (c instanceof Command.Offset) {
+                of = i;
+            } else if (c instanceof Command.ToolNumber) {
+                tool = i;
+            } else if (c instanceof Command.Output o) {
+                bits.put(o.bit(), i);
+            } else if (c instanceof Command.SetVariable v) {
+                variables.put(v.name(), i);
             }
         }
-        if (tool != null) {
-            b.add(tool, toolAt);
+        if (tool >= 0) {
+            b.add(program.command(tool), tool);
         }
-        for (String[] bit : bits.values()) {
-            b.add(bit[0], Integer.parseInt(bit[1]));
+        for (int v : variables.values()) {
+            b.add(program.command(v), v);
         }
-        if (of != null) {
-            b.add(of, ofAt);
-            if (spins(of)) {
-                b.add("WT 2000", ofAt);
+        for (int bit : bits.values()) {
+            b.add(program.command(bit), bit);
+        }
+        if (of >= 0) {
+            b.add(program.command(of), of);
+            if (((Command.Offset) program.command(of)).volts().value() != 0) {
+                b.add(new Command.Wait(2000), of);
             }
         }
         if (replanned != null) {
-            Piece r = replanned.build();
+            Piece r = replanned.lines().build();
             for (int i = 0; i < r.lines().size(); i++) {
-                b.add(r.lines().get(i), r.origin()[i]);
+                b.add(r.commands().get(i), r.origin()[i]);
             }
         }
         for (int i = Math.max(from, header); i < lines.size(); i++) {
-            b.add(lines.get(i), i);
+            b.add(program.command(i), i);
         }
         return b.build();
     }
 
-    private static boolean spins(String of) {
-        for (String v : of.substring(2).split(",")) {
-            if (!v.isBlank() && Double.parseDouble(v.strip()) != 0) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** The rest of sequence {@code s} from {@code axes}, on its piece {@code k}: one sequence of its own. */
-    private Piece.Builder replan(Sequence s, int k, double[] axes) {
-        int at = s.first();
+    /**
+     * The rest of sequence {@code s} from {@code axes} as a sequence of its own: its piece {@code k}
+     * from where the axes are ({@code partial}) or whole, then the later pieces; each line's origin
+     * is the compiled line it continues, so the controller's segment numbers ({@code _CSS}) of the
+     * new sequence still name the G-code blocks.
+     */
+    private Replanned replan(Sequence s, int k, boolean partial, double[] axes) {
         Piece.Builder b = new Piece.Builder();
-        b.add("VS " + Math.round(s.speed()), at);
+        int vs = s.first();
+        Command speed = program.command(vs);
+        b.add(speed instanceof Command.VectorSpeed ? speed
+                : new Command.VectorSpeed(Fixed.of(Math.round(s.speed()))), vs);
         double[] cursor = axes;
-        for (int j = k; j < s.pieces().size(); j++) {
-            Sequence.Piece p = s.pieces().get(j);
+        List<Sequence.Piece> pieces = s.pieces();
+        for (int j = k; j < pieces.size(); j++) {
+            Sequence.Piece p = pieces.get(j);
+            Command c = program.command(p.line());
             if (p instanceof Sequence.Arc a) {
-                double theta = j == k ? Math.toDegrees(Math.atan2(axes[1] - a.centre()[1], axes[0] - a.centre()[0])) : a.theta();
-                double end = a.theta() + a.delta();
-                double delta = j == k ? sweepTo(theta, end, a.delta()) : a.delta();
-                b.add(String.format(Locale.ROOT, "CR %d,%.4f,%.4f", Math.round(a.radius()), theta, delta), at);
-                double[] c = {cursor[0] - a.radius() * Math.cos(Math.toRadians(theta)),
-                        cursor[1] - a.radius() * Math.sin(Math.toRadians(theta))};
-                cursor = new double[] {c[0] + a.radius() * Math.cos(Math.toRadians(theta + delta)),
-                        c[1] + a.radius() * Math.sin(Math.toRadians(theta + delta))};
-                boolean last = j == s.pieces().size() - 1;
-                if (last && Math.hypot(cursor[0] - a.to()[0], cursor[1] - a.to()[1]) >= 0.5) {
-                    b.add(vp(a.to(), axes), at); // the arc from the stop ends a count or so off: close on the target
+                Command.CircularArc cr = (Command.CircularArc) c;
+                if (j == k && partial) {
+                    double theta = Math.toDegrees(Math.atan2(axes[1] - a.centre()[1], axes[0] - a.centre()[0]));
+                    double delta = sweepTo(theta, a.theta() + a.delta(), a.delta());
+                    cr = new Command.CircularArc(cr.radius(), Fixed.fourDecimals(theta), Fixed.fourDecimals(delta), cr.speeds());
+                }
+                b.add(cr, p.line());
+                double[] g = Command.CircularArc.geometry(cursor[0], cursor[1], cr.radius().value(), cr.start().value(),
+                        cr.sweep().value());
+                cursor = new double[] {g[2], g[3]};
+                boolean closes = j == pieces.size() - 1 || pieces.get(j + 1) instanceof Sequence.Arc;
+                if (closes && Math.hypot(cursor[0] - a.to()[0], cursor[1] - a.to()[1]) >= 0.5) {
+                    // the arc from the stop ends a count or so off: close on the target
+                    b.add(vp(a.to(), axes, cr.speeds()), p.line());
+                    cursor = a.to();
                 }
             } else {
-                b.add(vp(p.to(), axes), at);
+                Command.Speeds speeds = c instanceof Command.VectorPosition v ? v.speeds() : Command.Speeds.NONE;
+                b.add(vp(p.to(), axes, speeds), p.line());
                 cursor = p.to();
             }
         }
-        b.add("VE", at).add("BGS", at).add("AMS", at);
-        return b;
+        // the path already run: the spindle changes on the way (AV n, then the change) before it have happened
+        double run = s.lengthBefore(k) + (partial ? along(pieces.get(k), axes) : 0);
+        List<Integer> passed = new ArrayList<>();
+        boolean begun = false;
+        boolean skip = false;
+        for (int i = pieces.get(pieces.size() - 1).line() + 1; i <= s.last(); i++) {
+            Command c = program.command(i);
+            if (c instanceof Command.BeginSequence) {
+                begun = true;
+            }
+            if (c instanceof Command.AfterVector av && begun) {
+                skip = av.counts() <= run;
+                if (!skip) {
+                    b.add(new Command.AfterVector(Math.round(av.counts() - run)), i);
+                }
+                continue;
+            }
+            if (skip && !(c instanceof Command.AwaitSequence)) {
+                passed.add(i);
+                continue;
+            }
+            b.add(program.command(i), i);
+        }
+        return new Replanned(b, passed);
+    }
+
+    /** How far along piece {@code p} a point on it is, counts of path. */
+    static double along(Sequence.Piece p, double[] q) {
+        if (p instanceof Sequence.Arc a) {
+            double ang = Math.toDegrees(Math.atan2(q[1] - a.centre()[1], q[0] - a.centre()[0]));
+            return Math.abs(Math.toRadians(sweepTo(a.theta(), ang, a.delta()))) * a.radius();
+        }
+        return Math.hypot(q[0] - p.from()[0], q[1] - p.from()[1]);
     }
 
     /** The sweep from {@code theta} to {@code end} in the direction of {@code sense}, degrees. */
@@ -187,12 +253,17 @@ public final class Resume {
         return sense < 0 && d > 0 ? d - 360 : d;
     }
 
-    /** {@code VP} to {@code to} from the sequence's start {@code origin}, whole counts. */
-    private static String vp(double[] to, double[] origin) {
-        return "VP " + Math.round(to[0] - origin[0]) + "," + Math.round(to[1] - origin[1]);
+    /** {@code VP} to {@code to} from the new sequence's origin {@code origin}, whole counts. */
+    private static Command vp(double[] to, double[] origin, Command.Speeds speeds) {
+        return new Command.VectorPosition(Math.round(to[0] - origin[0]), Math.round(to[1] - origin[1]), speeds);
     }
 
     private boolean onPiece(Sequence.Piece p, double[] q) {
+        return onPiece(p, q, tolerance);
+    }
+
+    /** Is {@code q} on piece {@code p}, within {@code tolerance} counts (an arc: on its radius and within its sweep)? */
+    static boolean onPiece(Sequence.Piece p, double[] q, double tolerance) {
         if (p instanceof Sequence.Arc a) {
             double r = Math.hypot(q[0] - a.centre()[0], q[1] - a.centre()[1]);
             if (Math.abs(r - a.radius()) > tolerance) {

@@ -162,8 +162,7 @@ public final class Sender {
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
         Piece piece = options.resumeAt() == null ? Piece.whole(program)
                 : new Resume(program, tolerance()).plan(options.resumeAt(), f.position());
-        int needLines = options.step() ? ProgramForm.steps(piece, program).stream().mapToInt(p -> p.lines().size()).max().orElse(0)
-                : piece.lines().size();
+        int needLines = form.linesNeeded(piece, program, options.step());
         int needLabels = program.labels();
         List<String> vars = program.variables();
         int needSlots = program.mostSegments();
@@ -172,7 +171,8 @@ public final class Sender {
                 f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
         if (needLines > programLines) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", programLines
-                    + " (" + f.revision() + ")", "split the program, or run it in the stream form when it is available");
+                    + " (" + f.revision() + ")", form.name().equals("program") ? "run it in the stream form (--form stream)"
+                    : "the resident program does not fit: fewer threads per program, or a controller with more memory");
         }
         if (needLabels > maxLabels) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, needLabels + " labels", Integer.toString(maxLabels),

@@ -18,26 +18,56 @@ import java.util.List;
  */
 public record Sequence(int first, int last, double[] start, double[] end, double speed, List<Piece> pieces,
                        double seconds) {
-    /** A segment of a vector sequence. */
+    /** A segment of a vector sequence, and the program line (0-based) that gives it. */
     public sealed interface Piece permits Line, Arc {
+        int line();
+
         double[] from();
 
         double[] to();
+
+        /** Its length along the path, counts. */
+        double length();
     }
 
     /** {@code VP}: a straight line. */
-    public record Line(double[] from, double[] to) implements Piece {
+    public record Line(int line, double[] from, double[] to) implements Piece {
+        public double length() {
+            return Math.hypot(to[0] - from[0], to[1] - from[1]);
+        }
     }
 
     /**
      * {@code CR r,theta,delta}: an arc about {@code centre}, from angle {@code theta} sweeping
      * {@code delta} degrees (counter-clockwise positive, 0 along the plane's first channel).
      */
-    public record Arc(double[] from, double[] to, double[] centre, double radius, double theta, double delta)
+    public record Arc(int line, double[] from, double[] to, double[] centre, double radius, double theta, double delta)
             implements Piece {
+        public double length() {
+            return Math.abs(radius * Math.toRadians(delta));
+        }
     }
 
     public boolean isThreadPass() {
         return pieces.isEmpty();
+    }
+
+    /** The path length of its pieces before piece {@code k}, counts. */
+    public double lengthBefore(int k) {
+        double l = 0;
+        for (int i = 0; i < k && i < pieces.size(); i++) {
+            l += pieces.get(i).length();
+        }
+        return l;
+    }
+
+    /** The index of the piece that line {@code index} gives, or -1. */
+    public int pieceAt(int index) {
+        for (int k = 0; k < pieces.size(); k++) {
+            if (pieces.get(k).line() == index) {
+                return k;
+            }
+        }
+        return -1;
     }
 }

@@ -20,13 +20,50 @@ import java.util.List;
  * {@code NO STOCK} comment in the program's first lines (what the compile was checked against)
  * when the options give none. Findings are located at the G-code line when the file carries
  * {@code NO L<line>} source-map comments or a source map is given, else at the DMC line. Streams
- * in chunks.
+ * in chunks. {@link StreamReplay} replays the stream form's two files through the same loop.
  */
 public final class DmcReplay {
     /** How many lines from the start may hold the {@code NO STOCK} comment (it follows the header). */
     private static final int HEAD = 64;
 
     private DmcReplay() {
+    }
+
+    /** One line read: its command (null for a blank or unreadable line), where it is located, what the reader could not read. */
+    record Read(Command command, String text, Source at, List<Fault> faults) {
+    }
+
+    /** The lines of a replay, one at a time; null at the end. */
+    interface Reads {
+        Read next() throws IOException;
+    }
+
+    /**
+     * A DMC file's lines, read once each: located at the map's G-code line, else at the last
+     * {@code NO L} mark's, else at the DMC line.
+     */
+    static Reads lines(BufferedReader in, java.util.function.IntFunction<Source> sourceOf) {
+        return new Reads() {
+            private int dmcLine;
+            private int source = -1;
+
+            @Override
+            public Read next() throws IOException {
+                String l = in.readLine();
+                if (l == null) {
+                    return null;
+                }
+                dmcLine++;
+                Source mapped = sourceOf == null ? null : sourceOf.apply(dmcLine);
+                List<Fault> faults = new ArrayList<>(0);
+                Command c = DmcReader.read(l, (code, args) -> faults.add(new Fault(code, args)));
+                if (c instanceof Command.SourceMark mark) {
+                    source = mark.line();
+                }
+                Source at = mapped != null ? mapped : Source.line(source > 0 ? source : dmcLine);
+                return new Read(c, l, at, faults);
+            }
+        };
     }
 
     public static SimReport replay(BufferedReader in, MachineProfile profile, SimOptions options,
@@ -40,19 +77,23 @@ public final class DmcReplay {
      */
     public static SimReport replay(BufferedReader in, MachineProfile profile, SimOptions options,
                                    Diagnostics diagnostics, java.util.function.IntFunction<Source> sourceOf) {
-        List<String> head = new ArrayList<>();
+        return replay(lines(in, sourceOf), profile, options, diagnostics);
+    }
+
+    /** Replays {@code reads}: the blank of a {@code NO STOCK} line among the first ones, then every line in chunks. */
+    static SimReport replay(Reads reads, MachineProfile profile, SimOptions options, Diagnostics diagnostics) {
+        List<Read> head = new ArrayList<>();
         IOException failure = null;
         try {
-            for (String l = head.size() < HEAD ? in.readLine() : null; l != null; l = head.size() < HEAD ? in.readLine() : null) {
-                head.add(l);
+            for (Read r = reads.next(); r != null; r = head.size() < HEAD ? reads.next() : null) {
+                head.add(r);
             }
         } catch (IOException e) {
             failure = e;
         }
         if (options.stock().isEmpty() && !options.noBlank()) {
-            for (String l : head) {
-                // read again below with its faults reported; here only the blank is looked for
-                if (DmcReader.read(l, (code, args) -> { }) instanceof Command.Stock stock) {
+            for (Read r : head) {
+                if (r.command() instanceof Command.Stock stock) {
                     if (stock.blank().isEmpty()) {
                         options = options.withoutBlank();
                     } else {
@@ -65,34 +106,28 @@ public final class DmcReplay {
         }
         Simulator sim = new Simulator(profile, options, diagnostics);
         List<Instruction> chunk = new ArrayList<>();
-        int dmcLine = 0;
-        int source = -1;
-        List<Fault> faults = new ArrayList<>(1);
+        int lines = 0;
         try {
-            java.util.Iterator<String> first = head.iterator();
-            for (String l = next(first, in, failure); l != null; l = next(first, in, failure)) {
-                dmcLine++;
-                Source mapped = sourceOf == null ? null : sourceOf.apply(dmcLine);
-                Command c = DmcReader.read(l, (code, args) -> faults.add(new Fault(code, args)));
-                if (c instanceof Command.SourceMark mark) {
-                    source = mark.line();
-                }
-                Source at = mapped != null ? mapped : Source.line(source > 0 ? source : dmcLine);
-                if (!faults.isEmpty()) {
+            java.util.Iterator<Read> first = head.iterator();
+            for (Read read = next(first, reads, failure); read != null; read = next(first, reads, failure)) {
+                Read r = read;
+                lines++;
+                if (!r.faults().isEmpty()) {
                     sim.replay(chunk); // findings in the order of the lines
                     chunk.clear();
-                    faults.forEach(f -> sim.fault(at, f.code(), f.args()));
+                    r.faults().forEach(f -> sim.fault(r.at(), f.code(), f.args()));
                 }
                 // a blank or unreadable line is still a line of the file: the lines after it keep their numbers
-                chunk.add(new Instruction(c != null ? c : new Command.Remark(faults.isEmpty() ? l.strip() : ""), at));
-                faults.clear();
+                Command c = r.command() != null ? r.command()
+                        : new Command.Remark(r.faults().isEmpty() ? r.text().strip() : "");
+                chunk.add(new Instruction(c, r.at()));
                 if (chunk.size() == 1024) {
                     sim.replay(chunk);
                     chunk.clear();
                 }
             }
         } catch (IOException e) {
-            diagnostics.error(Code.E500_IO, Span.of(Math.max(1, dmcLine), 1), gcnc.diag.Phrase.IO_CANNOT_READ.arg(),
+            diagnostics.error(Code.E500_IO, Span.of(Math.max(1, lines), 1), gcnc.diag.Phrase.IO_CANNOT_READ.arg(),
                     gcnc.diag.Phrase.reason(e));
         }
         sim.replay(chunk);
@@ -101,16 +136,16 @@ public final class DmcReplay {
     }
 
     /** The next line: from the lines read ahead, then from the reader; a read-ahead failure is thrown when they run out. */
-    private static String next(java.util.Iterator<String> first, BufferedReader in, IOException failure) throws IOException {
+    private static Read next(java.util.Iterator<Read> first, Reads reads, IOException failure) throws IOException {
         if (first.hasNext()) {
             return first.next();
         }
         if (failure != null) {
             throw failure;
         }
-        return in.readLine();
+        return reads.next();
     }
 
-    private record Fault(Code code, Object[] args) {
+    record Fault(Code code, Object[] args) {
     }
 }

@@ -86,6 +86,12 @@ public final class Explanations {
                 m.put(c, limits);
             }
         }
+        // E243-E245: the stream form's own limits and its two files (docs/galil.md, "Two forms")
+        String form = "the form gcnc writes for a long program: its resident program and its stream (docs/galil.md,"
+                + " \"Two forms\"), and the pair given to simulate";
+        for (int n : new int[] {243, 244, 245}) {
+            m.put(Code.byNumber(n), form);
+        }
         String files = "the command line's files (reading, writing, links), not the program's text";
         for (int n : new int[] {500, 501, 502, 510}) {
             m.put(Code.byNumber(n), files);

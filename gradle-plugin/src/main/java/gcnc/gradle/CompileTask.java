@@ -2,8 +2,8 @@ package gcnc.gradle;
 
 import gcnc.Compiler;
 import gcnc.Session;
-import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
+import gcnc.output.FormOutputs;
 import java.io.File;
 import java.io.IOException;
 import java.io.Reader;
@@ -15,8 +15,9 @@ import org.gradle.api.tasks.OutputDirectory;
 /**
  * {@code gcncCompile}: each program checked, translated to Galil and simulated, as {@code gcnc
  * compile} does, into build/gcnc/&lt;path under the programs&gt;.dmc with its .dmc.map beside it.
- * A program with an error gets no output; a clean one gets both files or neither, through
- * {@link DmcOutputs} as on the command line. The outputs of an earlier run are cleared first.
+ * A program longer than the profile's controller memory is written in the stream form (a resident
+ * .dmc and a .stream). A program with an error gets no output; a clean one gets all its files or
+ * none, through {@link FormOutputs} as on the command line. The outputs of an earlier run are cleared first.
  */
 public class CompileTask extends GcncTask {
     @OutputDirectory
@@ -34,17 +35,21 @@ public class CompileTask extends GcncTask {
     protected void process(Session session, Program program, Findings findings) throws IOException {
         Path dmc = getOutputDir().toPath().resolve(program.withExtension(".dmc"));
         Files.createDirectories(dmc.getParent());
-        DmcOutputs outputs;
+        FormOutputs outputs;
         try {
-            outputs = DmcOutputs.open(program.file().toPath(), dmc, true);
+            outputs = FormOutputs.open(program.file().toPath(), dmc, true);
         } catch (DmcOutputs.Failed e) {
             throw new IOException("cannot write " + e.path() + ": " + e.problem().getMessage(), e.problem());
         }
         try (outputs; Reader in = program.open()) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry).withStops(outputs::mapStop);
             outputs.mapSource(program.file().getName(), program.file().toPath());
+            // the form that fits the profile's controller: the program, or a resident program and its .stream
             Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
-                    mapper.wrap(line -> outputs.dmcLine(line.text())));
+                    "thesis".equals(session.options().dialect()) ? outputs.programSink()
+                            : outputs.sink(Optional.empty(), session.profile().controllerLimits()));
+            if (r.ok()) {
+                outputs.finish(r.diagnostics());
+            }
             findings.report(program.shown(), r.diagnostics());
             if (r.ok()) {
                 outputs.commit();

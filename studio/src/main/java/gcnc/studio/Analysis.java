@@ -10,8 +10,8 @@ import gcnc.diag.Finding;
 import gcnc.diag.JsonRenderer;
 import gcnc.diag.Messages;
 import gcnc.dmc.DmcPrinter;
-import gcnc.dmc.SourceMap;
 import gcnc.output.DmcOutputs;
+import gcnc.output.FormOutputs;
 import gcnc.sim.Drawing;
 import gcnc.sim.Shape;
 import gcnc.sim.SimReport;
@@ -100,19 +100,26 @@ final class Analysis {
     JsonObject compile(String name, Path program, Path dmc) throws IOException {
         JsonObject doc = new JsonObject();
         Compiler.Result r;
-        try (DmcOutputs outputs = DmcOutputs.open(program, dmc, true)) {
-            SourceMap mapper = SourceMap.toEntries(outputs::mapEntry).withStops(outputs::mapStop);
+        try (FormOutputs outputs = FormOutputs.open(program, dmc, true)) {
             outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
+                // the form that fits the profile's controller, as gcnc compile chooses it
                 r = session.withPrograms(Optional.ofNullable(program.getParent())).compile(in,
-                        Optional.of(session.simulation()), false, mapper.wrap(i -> outputs.dmcLine(DmcPrinter.print(i.command()))));
+                        Optional.of(session.simulation()), false, outputs.sink(Optional.empty(), session.profile().controllerLimits()));
+            }
+            if (r.ok()) {
+                outputs.finish(r.diagnostics());
             }
             doc.add("diagnostics", report(name, r));
             doc.addProperty("ok", r.ok());
             doc.addProperty("blocks", r.blocks());
             if (r.ok()) {
                 outputs.commit();
-                doc.addProperty("dmcLines", mapper.lines());
+                doc.addProperty("dmcLines", outputs.dmcLines());
+                doc.addProperty("form", outputs.form().key());
+                if (outputs.streamLines() > 0) {
+                    doc.addProperty("streamLines", outputs.streamLines());
+                }
             }
         } catch (DmcOutputs.Failed e) {
             throw e.problem();

@@ -186,6 +186,11 @@ final class Api implements AutoCloseable {
         String dmcName = workspace.name(dmc);
         refusing(() -> workspace.writable(dmc, dmcName, false));
         refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
+        // the stream form's files too: written when the program does not fit the controller, removed when it does
+        Path stream = gcnc.output.FormOutputs.streamFile(dmc);
+        String streamName = workspace.name(stream);
+        refusing(() -> workspace.writable(stream, streamName, false));
+        refusing(() -> workspace.writable(DmcOutputs.mapFile(stream), streamName + ".map", false));
         JsonObject o;
         try {
             o = engine.analysis().compile(name, program, dmc);
@@ -197,6 +202,9 @@ final class Api implements AutoCloseable {
         if (o.get("ok").getAsBoolean()) {
             o.addProperty("dmc", dmcName);
             o.addProperty("map", dmcName + ".map");
+            if (o.has("streamLines")) {
+                o.addProperty("stream", streamName);
+            }
         }
         return o;
     }

@@ -1,0 +1,106 @@
+package gcnc.dmc;
+
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
+import gcnc.diag.Diagnostics;
+import gcnc.diag.Span;
+import gcnc.machine.ControllerLimits;
+import gcnc.machine.GalilModel;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.function.Consumer;
+
+/**
+ * Puts a compiled program in the form it is downloaded in (docs/galil.md, "Two forms"): the
+ * program form when it fits the model's program memory, the stream form otherwise, or the form
+ * asked for ({@code --form}). The instructions come in the program form's order; {@code dmc}
+ * receives the program (program form) or, at {@link #finish}, the resident program (stream form);
+ * {@code stream} receives the segment stream as it comes.
+ *
+ * <p>Look-ahead, with no form asked: the first program-memory-full of instructions (2,000 or 4,000
+ * per the model) are held; one more and the program goes to the stream form.
+ */
+public final class FormChoice implements Consumer<Instruction> {
+    private final Optional<Form> asked;
+    private final ControllerLimits limits;
+    private final Consumer<Instruction> dmc;
+    private final Consumer<Instruction> stream;
+    private final long memory;
+    private final List<Instruction> held = new ArrayList<>();
+    /** The stream form being written; null while the program form is. */
+    private StreamSplit split;
+    /** With the program form asked: the stream form counted beside it, to say in E238 what would fit. */
+    private StreamSplit counted;
+    private long lines;
+
+    public FormChoice(Optional<Form> asked, ControllerLimits limits, Consumer<Instruction> dmc,
+                      Consumer<Instruction> stream) {
+        this.asked = asked;
+        this.limits = limits;
+        this.dmc = dmc;
+        this.stream = stream;
+        this.memory = limits.model().range(GalilModel.Limit.PROGRAM_LINES).max();
+        if (asked.equals(Optional.of(Form.STREAM))) {
+            split = new StreamSplit(stream, memory);
+        } else if (asked.equals(Optional.of(Form.PROGRAM))) {
+            counted = new StreamSplit(i -> { }, memory);
+        }
+    }
+
+    @Override
+    public void accept(Instruction i) {
+        if (split != null) {
+            split.accept(i);
+            return;
+        }
+        lines++;
+        if (counted != null) {
+            counted.accept(i);
+            dmc.accept(i);
+            return;
+        }
+        held.add(i);
+        if (held.size() > memory) {
+            // longer than the memory: the stream form, from the first instruction
+            split = new StreamSplit(stream, memory);
+            held.forEach(split::accept);
+            held.clear();
+        }
+    }
+
+    /**
+     * The form the program was written in, once its last instruction passed: the resident program
+     * goes to {@code dmc} now (stream form), and what does not fit is reported: the program form
+     * asked for and too long (E238, naming the stream form's size), a resident program too long
+     * (E239) or with too many labels (E229), a block that must run inside the controller and is too
+     * long for one routine (E243). Reported at line 1 of the program, or at the block.
+     */
+    public Form finish(Diagnostics diagnostics) {
+        Span first = Span.of(1, 1);
+        if (split == null) {
+            held.forEach(dmc);
+            held.clear();
+            if (counted != null && lines > memory) {
+                StreamSplit.Result s = counted.finish();
+                diagnostics.report(Diagnostic.error(Code.E238_PROGRAM_DOES_NOT_FIT, first, lines, memory,
+                        limits.model().name(), s.residentLines(), s.streamLines()));
+            }
+            return Form.PROGRAM;
+        }
+        StreamSplit.Result s = split.finish();
+        for (Source at : s.tooLong()) {
+            Diagnostic d = Diagnostic.error(Code.E243_BLOCK_TOO_LONG_TO_EMBED, Span.of(Math.max(1, at.line()), 1),
+                    StreamSplit.RUN_LIMIT);
+            diagnostics.report(at.line() > 0 ? d.in(at.origin()) : d);
+        }
+        if (s.residentLines() > memory) {
+            diagnostics.report(Diagnostic.error(Code.E239_RESIDENT_DOES_NOT_FIT, first, s.residentLines(), memory,
+                    limits.model().name(), s.moved()));
+        } else {
+            limits.labels(s.residentLabels()).ifPresent(v -> diagnostics.report(v.diagnostic(first)));
+        }
+        s.resident().forEach(dmc);
+        return Form.STREAM;
+    }
+}

@@ -1,0 +1,189 @@
+package gcnc.dmc;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+
+/**
+ * The stream form of a program (docs/galil.md, "The stream form"), made from the instructions of
+ * its program form as they come: the set-up before the first block, the error handlers and wait
+ * routines after {@code EN}, and every block that must run inside the controller (one that holds a
+ * command of role {@link StreamRole#EMBED}: a thread's encoder waits) make the <em>resident</em>
+ * program, downloaded once; everything else is the <em>segment stream</em>, handed to
+ * {@code stream} in order as it comes. A moved block becomes the routine {@code #B<n>} and the
+ * stream calls it ({@code JS #B<n>}, which the host runs as {@code XQ #B<n>,0}).
+ *
+ * <p>The resident program is the program form's header with {@code gready=0} after its label and
+ * {@code gready=1} at its end, so that a host that ran it ({@code XQ #GCNC,0}) can tell a set-up
+ * that finished from one that stopped (the homing check); then {@code EN}, the moved blocks, and the
+ * program form's routines.
+ *
+ * <p>Look-ahead: the commands of one block, at most {@link #RUN_LIMIT}; the resident program is held
+ * until the end, at most {@code residentCap} lines (beyond that only counted: it cannot be
+ * downloaded anyway).
+ */
+public final class StreamSplit implements Consumer<Instruction> {
+    /** The variable the resident set-up sets to 1 when it ran to its end. */
+    public static final String READY = "gready";
+    /** The most commands of one block held back to see whether the block must be moved. */
+    public static final int RUN_LIMIT = 4096;
+    /** The moved blocks' labels: {@code #B1}, {@code #B2} ... */
+    public static final String ROUTINE = "B";
+
+    /** What the split found once the program ended. */
+    public record Result(List<Instruction> resident, long residentLines, int residentLabels, long streamLines,
+                         int moved, List<Source> tooLong) {
+        /** Whether the resident program was held whole (not only counted). */
+        public boolean held() {
+            return resident.size() == residentLines;
+        }
+    }
+
+    private enum Phase { HEADER, BODY, FOOTER }
+
+    private final Consumer<Instruction> stream;
+    private final long residentCap;
+    private Phase phase = Phase.HEADER;
+    private final List<Instruction> header = new ArrayList<>();
+    private final List<Instruction> routines = new ArrayList<>();
+    private final List<Instruction> footer = new ArrayList<>();
+    /** The commands of the block being read, not yet handed on. */
+    private final List<Instruction> run = new ArrayList<>();
+    private Source runSource;
+    private boolean runEmbeds;
+    /** Commands of the block being read already went to the stream (it passed {@link #RUN_LIMIT}). */
+    private boolean runStreamed;
+    private long routineLines;
+    private int routineLabels;
+    private long streamLines;
+    private final List<Source> tooLong = new ArrayList<>();
+
+    /**
+     * @param stream      receives the segment stream, in order
+     * @param residentCap the most resident lines held (the model's program memory); beyond it they are counted
+     */
+    public StreamSplit(Consumer<Instruction> stream, long residentCap) {
+        this.stream = stream;
+        this.residentCap = residentCap;
+    }
+
+    @Override
+    public void accept(Instruction i) {
+        boolean end = i.command() instanceof Command.End;
+        if (phase == Phase.HEADER) {
+            if (!end && i.source().line() <= 0) {
+                header.add(i);
+                return;
+            }
+            phase = Phase.BODY;
+        }
+        if (phase == Phase.BODY) {
+            if (end) {
+                // the program's EN: the routines follow
+                flush();
+                phase = Phase.FOOTER;
+            } else {
+                body(i);
+                return;
+            }
+        }
+        footer.add(i);
+    }
+
+    private void body(Instruction i) {
+        if (!run.isEmpty() && !sameBlock(runSource, i.source())) {
+            flush();
+        }
+        if (run.isEmpty() && !sameBlock(runSource, i.source())) {
+            runSource = i.source();
+            runStreamed = false;
+        }
+        run.add(i);
+        if (StreamRole.of(i.command()) == StreamRole.EMBED) {
+            if (!runEmbeds && runStreamed) {
+                tooLong(runSource); // the block's first commands went to the stream already
+            }
+            runEmbeds = true;
+        }
+        if (run.size() >= RUN_LIMIT) {
+            if (runEmbeds) {
+                tooLong(runSource);
+                run.clear();
+                runEmbeds = false;
+            } else {
+                flush();
+            }
+            runStreamed = true;
+        }
+    }
+
+    private void tooLong(Source s) {
+        if (!tooLong.contains(s)) {
+            tooLong.add(s);
+        }
+    }
+
+    /** One block run of the G-code: the same file, line and pass. */
+    private static boolean sameBlock(Source a, Source b) {
+        return a != null && a.line() == b.line() && a.block() == b.block() && a.origin().equals(b.origin());
+    }
+
+    /** The block read so far: into a routine of the resident program if it must run there, else to the stream. */
+    private void flush() {
+        if (run.isEmpty()) {
+            return;
+        }
+        if (runEmbeds && !tooLong.contains(runSource)) {
+            String label = ROUTINE + (routineLabels + 1);
+            Source at = run.get(0).source();
+            keep(new Instruction(new Command.Label(label), at));
+            run.forEach(this::keep);
+            keep(new Instruction(new Command.End(), run.get(run.size() - 1).source()));
+            routineLabels++;
+            send(new Instruction(new Command.Call(label), at));
+        } else if (!runEmbeds) {
+            run.forEach(this::send);
+        }
+        run.clear();
+        runEmbeds = false;
+    }
+
+    private void keep(Instruction i) {
+        routineLines++;
+        if (header.size() + routines.size() + footer.size() < residentCap) {
+            routines.add(i);
+        }
+    }
+
+    private void send(Instruction i) {
+        streamLines++;
+        stream.accept(i);
+    }
+
+    /** The resident program and the counts, once the program form's last instruction has passed. */
+    public Result finish() {
+        flush();
+        List<Instruction> resident = new ArrayList<>();
+        if (!header.isEmpty()) {
+            resident.add(header.get(0)); // #GCNC
+            resident.add(new Instruction(new Command.SetVariable(READY, 0), Source.NONE));
+            resident.addAll(header.subList(1, header.size()));
+        }
+        resident.add(new Instruction(new Command.SetVariable(READY, 1), Source.NONE));
+        resident.add(new Instruction(new Command.End(), Source.NONE));
+        boolean whole = routines.size() == routineLines;
+        resident.addAll(routines);
+        // the program form's own EN is replaced by the one above
+        resident.addAll(footer.isEmpty() ? footer : footer.subList(1, footer.size()));
+        long lines = (header.isEmpty() ? 0 : 1) + header.size() + 2 + routineLines
+                + Math.max(0, footer.size() - 1);
+        int labels = routineLabels;
+        for (Instruction i : header) {
+            labels += i.command() instanceof Command.Label ? 1 : 0;
+        }
+        for (Instruction i : footer) {
+            labels += i.command() instanceof Command.Label ? 1 : 0;
+        }
+        return new Result(whole ? resident : List.of(), lines, labels, streamLines, routineLabels, List.copyOf(tooLong));
+    }
+}

@@ -1,0 +1,317 @@
+package gcnc.send;
+
+import gcnc.diag.Code;
+import gcnc.dmc.Command;
+import gcnc.dmc.Instruction;
+import gcnc.dmc.StreamRole;
+import gcnc.dmc.StreamSplit;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The stream form (docs/galil.md, "Two forms"; docs/run.md): the resident program (set-up,
+ * handlers, wait routines, the blocks that must run inside the controller) downloaded, read back
+ * and run ({@code XQ #GCNC,0}) to its {@code gready=1}, then every other command sent through the
+ * command line, one at a time, each reply checked. Segments go into the vector buffer only while it
+ * has room ({@code _LMS}, one slot kept for {@code VE}), so no more are in flight than it holds; the
+ * waits the stream holds are the host's ({@link StreamRole#HOST}): {@code AMS} polls {@code _BGS},
+ * {@code WT} waits on the host's clock, {@code AV} polls {@code _AVS}, {@code JS #L} runs the resident
+ * routine in thread 0 and polls {@code _XQ0}. While a sequence runs, the segment executing
+ * ({@code _CSS}) names the G-code block, as in the program form.
+ *
+ * <p>The split is the compile's own ({@link StreamSplit}) applied to the piece being run, so a
+ * resume (a piece that starts at the resume point) is streamed the same way.
+ */
+public final class StreamForm implements Form {
+    private final int pollMs;
+    private final double tolerance;
+    private final double stallSeconds;
+
+    public StreamForm(int pollMs, double tolerance, double stallSeconds) {
+        this.pollMs = pollMs;
+        this.tolerance = tolerance;
+        this.stallSeconds = stallSeconds;
+    }
+
+    @Override
+    public String name() {
+        return "stream";
+    }
+
+    @Override
+    public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
+        return split(piece, program).resident().size();
+    }
+
+    /** A command of the run and the compiled program's line it stands for. */
+    private record Sent(Command command, int origin) {
+    }
+
+    /** The piece as the two parts of the stream form, each command with its compiled line. */
+    record Split(List<Sent> resident, List<Sent> stream) {
+        List<String> residentLines() {
+            return resident.stream().map(s -> gcnc.dmc.DmcPrinter.print(s.command())).toList();
+        }
+    }
+
+    /** {@code piece} split as the compile splits a program ({@link StreamSplit}), each command keeping its compiled line. */
+    static Split split(Piece piece, DmcProgram program) {
+        Map<Instruction, Integer> origins = new IdentityHashMap<>();
+        List<Instruction> stream = new ArrayList<>();
+        StreamSplit split = new StreamSplit(stream::add, Long.MAX_VALUE);
+        for (int j = 0; j < piece.commands().size(); j++) {
+            int o = Math.max(0, piece.originOf(j));
+            Instruction i = new Instruction(piece.commands().get(j), program.instructions().get(o).source());
+            origins.put(i, o);
+            split.accept(i);
+        }
+        List<Instruction> resident = split.finish().resident();
+        // a command the split made (gready, a routine's label and EN, the call of a moved block) stands
+        // for the compiled line of the command beside it
+        List<Sent> r = new ArrayList<>();
+        Map<String, Integer> routineStart = new java.util.HashMap<>();
+        int last = 0;
+        String label = null;
+        for (int k = 0; k < resident.size(); k++) {
+            Instruction i = resident.get(k);
+            Integer o = origins.get(i);
+            if (i.command() instanceof Command.Label l) {
+                label = l.name();
+                Integer next = k + 1 < resident.size() ? origins.get(resident.get(k + 1)) : null;
+                if (next != null) {
+                    routineStart.put(label, next);
+                }
+            }
+            last = o != null ? o : last;
+            r.add(new Sent(i.command(), o != null ? o : last));
+        }
+        List<Sent> s = new ArrayList<>(stream.size());
+        last = 0;
+        for (Instruction i : stream) {
+            Integer o = origins.get(i);
+            if (o == null && i.command() instanceof Command.Call call) {
+                o = routineStart.get(call.label());
+            }
+            last = o != null ? o : last;
+            s.add(new Sent(i.command(), last));
+        }
+        return new Split(r, s);
+    }
+
+    @Override
+    public void run(Piece piece, Controller c, Progress progress, Operator op, boolean step, boolean dryRun)
+            throws RunFault, IOException, InterruptedException {
+        Split split = split(piece, progress.program());
+        List<String> resident = split.residentLines();
+        c.halt();
+        GalilClient.Reply dl = c.client().download(resident);
+        if (!dl.ok()) {
+            throw c.refused("DL", 0, progress.hasStarted());
+        }
+        ProgramForm.compare(resident, c.client().upload(), progress);
+        progress.events().accept(new Event.Downloaded(resident.size(), true));
+        if (dryRun) {
+            return;
+        }
+        setUp(c, progress, op);
+        Feed feed = new Feed(c, progress, op);
+        int waited = -1;
+        for (Sent s : split.stream()) {
+            int line = progress.program().sourceLine(s.origin());
+            if (step && line > 0 && line != waited) {
+                waited = line;
+                stepWait(s.origin(), progress, op);
+            }
+            feed.run(s);
+        }
+    }
+
+    /** Runs the resident set-up ({@code XQ #GCNC,0}) to its end; {@code gready} 0 means it stopped (the homing check). */
+    private void setUp(Controller c, Progress progress, Operator op) throws IOException, RunFault, InterruptedException {
+        c.execute();
+        while (c.executing() >= 0) {
+            if (op.stopped()) {
+                c.stopAll();
+                throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, 0, false, 0);
+            }
+            Thread.sleep(pollMs);
+        }
+        int tc = c.errorCode();
+        if (tc != 0) {
+            throw c.refused("the resident program's set-up", 0, false);
+        }
+        if (c.client().number(StreamSplit.READY) != 1) {
+            throw new RunFault(Code.E825_NOT_READY, 0, false, "the resident program's set-up stopped before its end"
+                    + " (" + StreamSplit.READY + " = 0): the axes are not at home (#NOHOME); home the machine, then run again");
+        }
+    }
+
+    private static void stepWait(int origin, Progress progress, Operator op) throws RunFault, InterruptedException {
+        progress.pointAt(origin);
+        int at = progress.executingLine();
+        BlockTable.Block b = progress.blocks().at(at);
+        progress.events().accept(new Event.StepWait(at, b == null ? null : b.number()));
+        while (!op.awaitEnter()) {
+            if (op.stopped()) {
+                throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, at, true, at);
+            }
+        }
+    }
+
+    /** The host's side of the stream: sends, feeds the buffer, carries out the waits, follows the machine. */
+    private final class Feed {
+        private final Controller c;
+        private final Progress progress;
+        private final Operator op;
+        /** The compiled lines of the segments of the sequence being sent, in order: segment k is {@code segments.get(k - 1)}. */
+        private final List<Integer> segments = new ArrayList<>();
+        /** The last segment's end of the sequence being sent (counts, Galil plane), from the compiled program. */
+        private double[] end;
+        private boolean held;
+        private double ratio = 1;
+        /** Vector buffer slots free as last counted; 0 = ask the controller. */
+        private int free;
+
+        Feed(Controller c, Progress progress, Operator op) {
+            this.c = c;
+            this.progress = progress;
+            this.op = op;
+        }
+
+        void run(Sent s) throws IOException, RunFault, InterruptedException {
+            Command cmd = s.command();
+            operator();
+            switch (StreamRole.of(cmd)) {
+                case SEND -> send(s);
+                case HOST -> host(s);
+                case EMBED -> throw new IllegalStateException("the split leaves no embedded command in the stream: " + cmd);
+            }
+        }
+
+        private void send(Sent s) throws IOException, RunFault, InterruptedException {
+            Command cmd = s.command();
+            if (cmd instanceof Command.VectorSpeed) {
+                segments.clear();
+            }
+            if (DmcProgram.isSegment(cmd)) {
+                // one slot stays free for VE (Galil's own vector example keeps it); _LMS is asked again only
+                // when the slots counted since the last answer run out
+                while (free < 2) {
+                    free = (int) c.client().number("_LMS");
+                    if (free < 2) {
+                        follow();
+                        Thread.sleep(pollMs);
+                    }
+                }
+                free--;
+                segments.add(s.origin());
+                Sequence q = progress.program().sequenceAt(s.origin());
+                end = q == null ? end : q.end();
+            }
+            c.require(gcnc.dmc.DmcPrinter.print(cmd));
+            if (cmd instanceof Command.BeginSequence) {
+                progress.started();
+            }
+            if (!progress.hasStarted() || !(cmd instanceof Command.BeginSequence)) {
+                progress.pointAt(s.origin());
+            }
+        }
+
+        private void host(Sent s) throws IOException, RunFault, InterruptedException {
+            Command cmd = s.command();
+            if (cmd instanceof Command.AwaitSequence) {
+                double[] still = null;
+                long since = System.nanoTime();
+                while (c.client().number("_BGS") != 0) {
+                    double[] at = follow();
+                    if (held || op.override() == 0 || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
+                        still = at;
+                        since = System.nanoTime();
+                    } else if ((System.nanoTime() - since) / 1e9 > stallSeconds) {
+                        c.stopAll();
+                        throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the axes stood still for "
+                                + Math.round(stallSeconds) + " s during line " + progress.executingLine()
+                                + " while its motion had not ended (the controller stopped feeding the sequence)");
+                    }
+                    Thread.sleep(pollMs);
+                    operator();
+                }
+                endedAtItsEnd();
+            } else if (cmd instanceof Command.Wait w) {
+                progress.pointAt(s.origin());
+                long until = System.nanoTime() + w.milliseconds() * 1_000_000L;
+                while (System.nanoTime() < until) {
+                    operator();
+                    Thread.sleep(Math.max(1, Math.min(pollMs, (until - System.nanoTime()) / 1_000_000L)));
+                }
+            } else if (cmd instanceof Command.AfterVector av) {
+                while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < av.counts()) {
+                    follow();
+                    Thread.sleep(pollMs);
+                    operator();
+                }
+            } else if (cmd instanceof Command.Call call) {
+                c.require("XQ #" + call.label() + ",0");
+                progress.started();
+                for (int xq = c.executing(); xq >= 0; xq = c.executing()) {
+                    progress.at(s.origin(), c.position(), op);
+                    Thread.sleep(pollMs);
+                    operator();
+                }
+                if (c.errorCode() != 0) {
+                    RunFault f = c.refused("JS #" + call.label(), progress.executingLine(), true);
+                    c.stopAll();
+                    throw f;
+                }
+            }
+        }
+
+        /** One poll while a sequence runs: the segment executing names the block; the axes where they are. */
+        private double[] follow() throws IOException {
+            double[] at = c.position();
+            int css = c.segment();
+            int origin = segments.isEmpty() ? progress.executingIndex()
+                    : segments.get(Math.max(0, Math.min(segments.size() - 1, css - 1)));
+            progress.at(origin, at, op);
+            return at;
+        }
+
+        /** A sequence that ended away from its last segment's end was cut short (a limit switch, ST): the stop code says why. */
+        private void endedAtItsEnd() throws IOException, RunFault {
+            if (end == null || segments.isEmpty()) {
+                return;
+            }
+            double[] at = c.position();
+            progress.at(segments.get(segments.size() - 1), at, op);
+            if (Math.hypot(at[0] - end[0], at[1] - end[1]) <= tolerance) {
+                return;
+            }
+            int code = c.stopCode();
+            c.stopAll();
+            throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the sequence ended during line "
+                    + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at its end "
+                    + Resume.counts(end) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+        }
+
+        /** The operator's stop, hold and override, between commands and polls. */
+        private void operator() throws IOException, RunFault {
+            if (op.stopped()) {
+                c.stopAll();
+                throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true, progress.executingLine());
+            }
+            if (op.held() != held) {
+                held = op.held();
+                ratio = held ? 0 : op.override();
+                c.ratio(ratio);
+                progress.events().accept(new Event.Hold(held, op.override()));
+            } else if (!held && op.override() != ratio) {
+                ratio = op.override();
+                c.ratio(ratio);
+                progress.events().accept(new Event.Hold(false, ratio));
+            }
+        }
+    }
+}
