@@ -29,8 +29,11 @@ import org.junit.jupiter.params.provider.ValueSource;
  * {@code side * X}, so that "in" is down on both sides. Seeds print on failure.
  */
 class TypeTwoPropertyTest {
-    /** Programs per side: 20 in the default run; a campaign sets more (-PtypeTwoCount=60 or beyond). */
-    private static final int PROGRAMS = Integer.getInteger("gcnc.typeTwo.count", 20);
+    /**
+     * Programs per side: 60 in the default run (20 while the contour was scanned whole for every
+     * sampled point; ContourBins made that cheap); a campaign sets more (-PtypeTwoCount=500).
+     */
+    private static final int PROGRAMS = Integer.getInteger("gcnc.typeTwo.count", 60);
     /** Inch: a micron plus the six-decimal rounding of the written words. */
     private static final double TOLERANCE = 0.001 / 25.4 + 2e-6;
 
