@@ -239,7 +239,8 @@ public final class Compiler {
         // the studio's scrub follows the stock sequence by sequence: every block its own (the path and the
         // stock a block leaves are the same whether the machine blends through it or stops)
         boolean scrub = settings.simulation().map(o -> o.scrubLine() != 0).orElse(false);
-        return "thesis".equals(settings.dialect()) || scrub || settings.exactStop() ? new gcnc.plan.ExactStop()
+        return "thesis".equals(settings.dialect()) ? new gcnc.plan.ExactStop()
+                : scrub || settings.exactStop() ? new gcnc.plan.ExactStop(settings.profile())
                 : gcnc.plan.Planner.forProfile(settings.profile());
     }
 

@@ -8,8 +8,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Codes of the Haas and Fanuc 0i-TF manuals and the Fusion turning posts that gcnc names rather
- * than calling them undefined (docs/language.md): the control's modes that change nothing in the
- * path (function mode_only: E700, E701), codes not supported yet (E110: the sub-spindle, the bar
+ * than calling them undefined (docs/language.md): the exact stops the planner follows (G09, G61/G64),
+ * the control's modes that change nothing in the path (function mode_only: E700, E701), codes not supported yet (E110: the sub-spindle, the bar
  * feeder, Series 15 drilling, polar interpolation) and the Haas M19 orientation angle (E703).
  */
 class ControlCodesTest {
@@ -30,12 +30,29 @@ class ControlCodesTest {
     }
 
     @Test
-    void exactStopAndCuttingModeAreNotesOnEveryControl() {
-        assertEquals("5:1:E700, 6:1:E700", Run.of("fanuc", FANUC + "G61\nG64\nM30\n").errors());
-        assertEquals("5:1:E700, 6:1:E700", fanucB("G61\nG64\nM30\n").errors());
-        assertEquals("5:1:E700, 6:1:E700", Run.of("haas", HAAS + "G61\nG64\nM30\n").errors());
+    void exactStopModeAndCuttingModeAreFollowedOnEveryControl() {
+        assertEquals("", Run.of("fanuc", FANUC + "G61\nG64\nM30\n").errors());
+        assertEquals("", fanucB("G61\nG64\nM30\n").errors());
+        assertEquals("", Run.of("haas", HAAS + "G61\nG64\nM30\n").errors());
         // one mode per block: they share a group
-        assertEquals("5:1:E700, 5:5:E016", Run.of("fanuc", FANUC + "G61 G64\nM30\n").errors());
+        assertEquals("5:5:E016", Run.of("fanuc", FANUC + "G61 G64\nM30\n").errors());
+    }
+
+    /** G09 stops its own block, G61 every block until G64: the checked block says where (CheckedBlock.stopAt). */
+    @Test
+    void theCheckedBlockSaysWhereTheProgramAsksForAnExactStop() {
+        Run fanuc = Run.of("fanuc", FANUC + "G01 Z-5. F0.1\nG09 X72. Z-6.\nZ-10.\nG61 Z-12.\nX74.\nG64 Z-14.\nM30\n");
+        assertEquals("BLEND BLEND BLEND BLEND BLEND BLOCK_END BLEND EVERY_MOTION EVERY_MOTION BLEND BLEND", stops(fanuc));
+        Run haas = Run.of("haas", HAAS + "G01 Z-0.2 F0.01\nG09 X2.3\nG61\nZ-0.4\nG64\nZ-0.5\nM30\n");
+        assertEquals("BLEND BLEND BLEND BLEND BLEND BLOCK_END EVERY_MOTION EVERY_MOTION BLEND BLEND BLEND", stops(haas));
+    }
+
+    private static String stops(Run r) {
+        StringBuilder s = new StringBuilder();
+        for (CheckedBlock b : r.blocks) {
+            s.append(s.length() == 0 ? "" : " ").append(b.stopAt());
+        }
+        return s.toString();
     }
 
     @Test

@@ -261,6 +261,20 @@ class NoseCompensationTest {
     }
 
     /**
+     * A G41 whose block has an error (Fanuc and Haas read "G04 1P405" as G41 P405: spaces do not part
+     * words, and P belongs to no function) still turns the compensation on; a G32 next is not offset
+     * and warns (the fuzz campaign found it reaching the offset code and throwing).
+     */
+    @Test
+    void aThreadAfterAG41WhoseBlockHadAnErrorIsNotOffset() {
+        for (String machine : List.of("fanuc", "haas")) {
+            Run r = Run.of(machine, HEAD + "G00 X22. Z5.\nG41 P405\nG32 Z-10. F1.5\nG00 X40.\nG40 Z20.\nM30\n");
+            assertEquals("E032@6:5", errs(r), machine);
+            assertTrue(codes(r, gcnc.diag.Severity.WARNING).contains("E624@7:1"), machine + ": " + r.messages());
+        }
+    }
+
+    /**
      * A thread pass is spindle-synchronised and never offset; a block that runs a modal thread
      * cycle again when it turns the compensation on warns as the cycle's own block would (the
      * pipeline fuzz campaign once found such blocks reaching the offset code and throwing).

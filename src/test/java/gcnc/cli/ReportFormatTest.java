@@ -66,6 +66,34 @@ class ReportFormatTest {
         assertTrue(r.err().contains("samples/turning.nc: 13 blocks, no errors"), "summaries move to standard error");
     }
 
+    /** {@code --corners N}: the N slowest corners after the summary, and the same list in the JSON's simulation. */
+    @Test
+    void theCornerReportListsTheSlowestCornersInTextAndJson() throws IOException {
+        String program = "src/test/resources/plan/corners.fanuc.nc";
+        CliTest.Run text = CliTest.gcnc("compile", "--machine", "fanuc", "--stock", "none", program, "--corners", "3",
+                "-o", dir.resolve("c.dmc").toString());
+        assertEquals(0, text.status(), text.err());
+        String said = text.err() + text.out();
+        assertTrue(said.contains("slowest 3 corners:\n  " + program + ":13 N60: 0.0 mm/min where the moves run at 4999.9:"
+                + " the path turns back (180.0°): the machine stops\n  " + program + ":8 N10: "), said);
+        CliTest.Run json = CliTest.gcnc("compile", "--machine", "fanuc", "--stock", "none", program, "--corners", "7",
+                "--format", "json", "-o", dir.resolve("c.dmc").toString());
+        JsonNode corners = JSON.readTree(json.out()).get("simulations").get(0).get("corners");
+        assertEquals(7, corners.size(), json.out());
+        assertEquals("reversal", corners.get(0).get("why").asText());
+        assertEquals(13, corners.get(0).get("line").asInt());
+        assertEquals("60", corners.get(0).get("number").asText());
+        assertEquals("acceleration", corners.get(4).get("why").asText());
+        assertEquals(0.02, corners.get(4).get("lengthMm").asDouble(), 1e-9);
+        assertEquals("arc", corners.get(5).get("why").asText());
+        // without the option neither is written; beyond 100 is a usage error
+        CliTest.Run plain = CliTest.gcnc("compile", "--machine", "fanuc", "--stock", "none", program, "--format", "json",
+                "-o", dir.resolve("c.dmc").toString());
+        assertFalse(JSON.readTree(plain.out()).get("simulations").get(0).has("corners"), plain.out());
+        assertEquals(2, CliTest.gcnc("compile", "--machine", "fanuc", program, "--corners", "101",
+                "-o", dir.resolve("c.dmc").toString()).status());
+    }
+
     @Test
     void jsonKeepsArgumentsAndNamesExactlyEvenWithControlCharacters() throws IOException {
         Path p = dir.resolve("tab\there.nc");

@@ -56,10 +56,20 @@ class StudioCommandTest {
     }
 
     @Test
+    void aVirtualSpeedThatIsNotAboveZeroIsStatus2() {
+        for (String speed : new String[] {"0", "-1", "20000"}) {
+            Run r = gcnc("studio", "--lang", "en", "samples", "--virtual-speed", speed);
+            assertEquals(2, r.status(), speed);
+            assertTrue(r.err().startsWith("gcnc: --virtual-speed " + Double.parseDouble(speed) + ": give a number above 0"), r.err());
+            assertEquals("", r.out());
+        }
+    }
+
+    @Test
     void theHelpNamesEveryOption() {
         Run r = gcnc("studio", "--help");
         assertEquals(0, r.status());
-        for (String option : new String[] {"DIR", "--port", "--open", "--machine", "--control", "--tables", "--lang"}) {
+        for (String option : new String[] {"DIR", "--port", "--open", "--virtual-speed", "--machine", "--control", "--tables", "--lang"}) {
             assertTrue(r.out().contains(option), option + " in\n" + r.out());
         }
     }

@@ -51,6 +51,9 @@ final class CompileCommand extends RunCommand {
     @Mixin
     StockOptions stock;
 
+    @Mixin
+    CornerOptions corners;
+
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         MachineProfile profile = setup.profile();
@@ -112,7 +115,8 @@ final class CompileCommand extends RunCommand {
             }
             r.simulation().ifPresent(s -> {
                 reporter.say(SimSummary.format(s, reporter.phrases()));
-                reporter.simulation(name, s);
+                corners.say(s, name, reporter);
+                reporter.simulation(name, corners.kept(s));
             });
             return ExitCode.CLEAN;
         }

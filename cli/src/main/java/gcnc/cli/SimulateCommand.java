@@ -34,6 +34,9 @@ final class SimulateCommand extends RunCommand {
     @Mixin
     StockOptions stock;
 
+    @Mixin
+    CornerOptions corners;
+
     @Parameters(paramLabel = "FILE", description = "A G-code program, or a .dmc program to replay by itself; - reads G-code from standard input.")
     Path file;
 
@@ -122,7 +125,8 @@ final class SimulateCommand extends RunCommand {
         reporter.report(shown, diags);
         if (report.isPresent()) {
             reporter.say(SimSummary.format(report.get(), reporter.phrases()));
-            reporter.simulation(shown, report.get());
+            corners.say(report.get(), shown, reporter);
+            reporter.simulation(shown, corners.kept(report.get()));
             if (svg != null) {
                 out.flush();
                 try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(svg)) {

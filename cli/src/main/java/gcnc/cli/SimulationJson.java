@@ -54,6 +54,51 @@ final class SimulationJson {
                 json.name("zMaxMm").value(round(r.zMaxMm(), 3));
                 json.endObject();
             }
+            if (!r.stops().isEmpty()) {
+                // why the machine stops where each sequence ends: the count per reason (the source map has each place)
+                json.name("stops").beginObject();
+                for (var e : r.stops().entrySet()) {
+                    json.name(e.getKey()).value(e.getValue());
+                }
+                json.endObject();
+            }
+            corners(run, json);
+            json.endObject();
+        }
+        json.endArray();
+    }
+
+    /**
+     * {@code "corners"}: the slowest corners asked for ({@code --corners N}), slowest first, each
+     * with where it is, its speed and the moves' (mm/min), and why ({@code junction} with the angle
+     * and deviation, {@code arc} with the radius, {@code acceleration} with the short segment's
+     * length, {@code reversal}). Written only when asked for.
+     */
+    private static void corners(Run run, JsonWriter json) throws IOException {
+        if (run.report().corners().isEmpty()) {
+            return;
+        }
+        json.name("corners").beginArray();
+        for (gcnc.sim.Corner c : run.report().corners()) {
+            json.beginObject();
+            json.name("file").value(c.file() == null ? run.file() : c.file());
+            json.name("line").value(c.line());
+            if (c.number() != null) {
+                json.name("number").value(c.number());
+            }
+            json.name("speedMmMin").value(round(c.speedMmMin(), 1));
+            json.name("feedMmMin").value(round(c.feedMmMin(), 1));
+            json.name("why").value(c.why().key());
+            json.name("angleDeg").value(round(c.angleDeg(), 1));
+            if (!Double.isNaN(c.deviationMm())) {
+                json.name("deviationMm").value(round(c.deviationMm(), 4));
+            }
+            if (!Double.isNaN(c.radiusMm())) {
+                json.name("radiusMm").value(round(c.radiusMm(), 3));
+            }
+            if (!Double.isNaN(c.lengthMm())) {
+                json.name("lengthMm").value(round(c.lengthMm(), 3));
+            }
             json.endObject();
         }
         json.endArray();

@@ -18,7 +18,7 @@ import picocli.CommandLine.Spec;
 /** {@code gcnc studio}: the local web editor (gcnc.studio, docs/studio.md); runs until stopped. */
 @Command(name = "studio", mixinStandardHelpOptions = true,
         description = {"Edit the programs in DIR in a local web page: diagnostics as you type, the tool path, the"
-                + " Galil DMC linked to each block, compile.",
+                + " Galil DMC linked to each block, compile, and run on a Galil (or the studio's virtual one).",
                 "Serves 127.0.0.1 only; prints the URL with this launch's token. Ctrl+C stops it."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:stopped", "2:usage, DIR is not a folder, the port is taken, or a broken table or profile"})
@@ -37,6 +37,10 @@ final class StudioCommand implements Callable<Integer> {
     @Option(names = "--open", description = "Open the URL in the desktop's browser (xdg-open).")
     boolean open;
 
+    @Option(names = "--virtual-speed", paramLabel = "X", defaultValue = "1",
+            description = "Run: the studio's virtual controller runs the motion X times faster than real time (default: ${DEFAULT-VALUE}).")
+    double virtualSpeed;
+
     @Spec
     CommandSpec spec;
 
@@ -49,6 +53,10 @@ final class StudioCommand implements Callable<Integer> {
             err.println("gcnc: " + say.get("studio.not_folder", dir));
             return ExitCode.USAGE;
         }
+        if (!(virtualSpeed > 0) || virtualSpeed > 10_000) {
+            err.println("gcnc: " + say.get("studio.bad_speed", virtualSpeed));
+            return ExitCode.USAGE;
+        }
         CommonOptions.Setup setup;
         try {
             setup = common.load(new Reporter(out, err, common.language()));
@@ -57,7 +65,9 @@ final class StudioCommand implements Callable<Integer> {
         }
         Studio studio;
         try {
-            studio = Studio.start(new Studio.Config(dir, port, setup.session(), common.language(), Main.version()));
+            // Run's serial ports through jSerialComm, as gcnc run --port opens them
+            studio = Studio.start(new Studio.Config(dir, port, setup.session(), common.language(), Main.version(),
+                    new Studio.Running(virtualSpeed, SerialLink::open)));
         } catch (IOException e) {
             err.println("gcnc: " + say.get("studio.cannot_start", port, SourceFiles.reason(e, common.language())));
             return ExitCode.USAGE;

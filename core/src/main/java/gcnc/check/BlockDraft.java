@@ -63,6 +63,8 @@ public final class BlockDraft {
     public int spindleBefore = NONE;
     /** The block's G96 word (its S is then a surface speed), or null. */
     public Word g96;
+    /** G09 in the block: its motion ends at rest, whatever the mode (Sa11). */
+    public boolean exactStop;
     private List<MCall> before;
     /** M words whose function needs an output that the machine profile does not give (E113). */
     private List<Word> unpowered;

@@ -52,7 +52,6 @@ record CycleOrigin(String cycle, int pass, int passes, int cycleLine, long p, lo
         }
         String name = cycle + " pass " + pass + " of " + passes;
         ProgramFrame labelled = f.inPass(name);
-        return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), b.motions(), b.after(), b.end(),
-                labelled, b.origin());
+        return b.inFrame(labelled);
     }
 }

@@ -36,12 +36,13 @@ import gcnc.machine.Units;
  * @param nose         G40/G41/G42: tool nose radius compensation in force
  * @param returnToR    Fanuc B/C G99 in force: a drilling or tapping cycle returns to the R point
  *                     (else, G98, to the initial level where it started)
+ * @param exactStopMode G61 in force (until G64): every move ends at rest
  */
 public record ModalState(int motion, Units units, boolean incremental, int workOffset, int tool, int toolOffset,
                          double feed, boolean feedPerRev, boolean css, double surfaceSpeed, double rpm,
                          double rpmClamp, int spindle, int chuck, Point position, Point shift, Point g28,
                          long lastN, boolean named, boolean ended, NoseSide nose,
-                         boolean returnToR) {
+                         boolean returnToR, boolean exactStopMode) {
 
     /**
      * The state at cycle start: at home, with the control's power-up G codes, tool and offset,
@@ -52,7 +53,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         Control c = p.control();
         Next n = new ModalState(-1, p.units(), false, 54, c.powerUpTool(), c.powerUpOffset(), Double.NaN, false,
                 false, Double.NaN, Double.NaN, Double.NaN, -1, p.chuckByProgram() ? -1 : 11, p.home(), Point.ORIGIN,
-                null, -1, false, false, NoseSide.OFF, false).next();
+                null, -1, false, false, NoseSide.OFF, false, false).next();
         for (GFunction f : c.powerUp()) {
             n.set(f.role());
         }
@@ -91,6 +92,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         public boolean ended;
         public NoseSide nose;
         public boolean returnToR;
+        public boolean exactStopMode;
 
         Next(ModalState s) {
             motion = s.motion;
@@ -115,6 +117,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
             ended = s.ended;
             nose = s.nose;
             returnToR = s.returnToR;
+            exactStopMode = s.exactStopMode;
         }
 
         /**
@@ -134,6 +137,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
                 case NOSE_COMP_LEFT -> nose = NoseSide.LEFT;
                 case NOSE_COMP_RIGHT -> nose = NoseSide.RIGHT;
                 case CYCLE_RETURN_INITIAL, CYCLE_RETURN_R -> returnToR = r == GRole.CYCLE_RETURN_R;
+                case EXACT_STOP_MODE, CUTTING_MODE -> exactStopMode = r == GRole.EXACT_STOP_MODE;
                 default -> {
                 }
             }
@@ -151,7 +155,7 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         public ModalState build() {
             return new ModalState(motion, units, incremental, workOffset, tool, toolOffset, feed, feedPerRev, css,
                     surfaceSpeed, rpm, rpmClamp, spindle, chuck, position, shift, g28, lastN, named, ended, nose,
-                    returnToR);
+                    returnToR, exactStopMode);
         }
     }
 }

@@ -12,6 +12,7 @@ import gcnc.ir.Feed;
 import gcnc.ir.Letter;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
+import gcnc.ir.StopAt;
 import gcnc.ir.Word;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
@@ -109,7 +110,8 @@ final class MotionBuilder {
                 || d.next.css && Double.compare(rpm, d.prior.rpm()) != 0;
         return new CheckedBlock(d.block.line(), speedChanged && !Double.isNaN(rpm) ? OptionalDouble.of(rpm)
                 : OptionalDouble.empty(), d.has(Letter.T) ? OptionalInt.of(d.next.tool) : OptionalInt.empty(),
-                fixed(d.before()), fixed(motions), fixed(d.after()), end, frame(d), gcnc.diag.Origin.PROGRAM);
+                fixed(d.before()), fixed(motions), fixed(d.after()), end, frame(d), gcnc.diag.Origin.PROGRAM,
+                d.next.exactStopMode ? StopAt.EVERY_MOTION : d.exactStop ? StopAt.BLOCK_END : StopAt.BLEND);
     }
 
     /**

@@ -225,7 +225,9 @@ final class NoseCompensation {
             emit.add(resumed(b));
             return;
         }
-        if (path.isEmpty()) {
+        if (path.isEmpty() || info.suspend() == Suspend.CYCLE || path.get(0) instanceof Motion.Thread) {
+            // a cycle's block or a thread is not offset (E624): the next move is the start-up. (Reached here
+            // when the block that gave G41/G42 had an error, so that this block arms the compensation.)
             emit.add(b);
             return;
         }

@@ -75,8 +75,7 @@ final class NoseMoves {
                 last = to(m);
             }
         }
-        return new CheckedBlock(b.line(), b.spindleRpm(), b.tool(), b.before(), motions, b.after(), last, b.frame(),
-                b.origin());
+        return b.withMotions(motions, last);
     }
 
     /**

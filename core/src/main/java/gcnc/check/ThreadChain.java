@@ -131,13 +131,11 @@ final class ThreadChain {
         } else {
             Motion.Thread whole = new Motion.Thread(t0.from(), last.to(), t0.lead(), t0.rpm(), t0.reverse(), t0.feed(),
                     null, joints);
-            emit.add(new CheckedBlock(first.line(), first.spindleRpm(), first.tool(), first.before(), List.of(whole),
-                    first.after(), last.to(), first.frame(), first.origin()));
+            emit.add(first.withMotions(List.of(whole), last.to()));
         }
         for (int i = 1; i < held.size(); i++) {
             CheckedBlock b = held.get(i);
-            emit.add(thread(b) == null || i > lastPass ? b : new CheckedBlock(b.line(), b.spindleRpm(), b.tool(),
-                    b.before(), List.of(), b.after(), b.end(), b.frame(), b.origin()));
+            emit.add(thread(b) == null || i > lastPass ? b : b.withMotions(List.of(), b.end()));
         }
         held.clear();
     }

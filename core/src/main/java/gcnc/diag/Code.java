@@ -407,6 +407,10 @@ public enum Code {
     /** Warning: the spindle speed needs between 9.998 V and 10 V; AO is clamped to 9.998 V. */
     E252_SPINDLE_AO_CLAMPED(252),
 
+    // 253-256: the planner's profile keys and limits (gcnc.plan, gcnc.machine.Blending; docs/galil.md).
+    /** Profile: {@code plan.on_the_fly} names an M code that is not an output M of the control (a spindle, chuck, stop or call code must happen at rest). */
+    E253_ON_THE_FLY_NOT_OUTPUT(253),
+
     // 300-399: simulator (sim package).
     /** A DMC line the simulator does not know. */
     E300_SIM_UNKNOWN_INSTRUCTION(300),
@@ -471,6 +475,12 @@ public enum Code {
     E332_SIM_CORNER_TOO_FAST(332),
     /** A blended segment is too short for the machine to change from its entry speed to its exit speed. */
     E333_SIM_SPEED_CHANGE_TOO_SHORT(333),
+
+    // 334-339: the planner's work checked by the replay (docs/galil.md, "Continuous contouring").
+    /** An AV trip point past the end of the sequence it waits on: the controller never reaches it and the program waits there. */
+    E334_SIM_TRIP_PAST_END(334),
+    /** An output or speed set on the way (after AV) at a point of the path that is not where its block stands in the program. */
+    E335_SIM_SWITCHED_ELSEWHERE(335),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -173,7 +173,8 @@ final class GalilDialect implements Dialect {
         machine.spindleSpeed(b, rpm, out);
     }
 
-    private void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
+    /** The M functions' output directives and what they do to the spindle (also on the way, GroupWriter). */
+    void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
         for (MCall m : calls) {
             for (Command directive : outputs.computeIfAbsent(m.code(), this::directives)) {
                 out.emit(directive);

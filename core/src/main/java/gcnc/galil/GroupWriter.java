@@ -10,13 +10,17 @@ import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import gcnc.plan.Piece;
 import gcnc.plan.Step;
+import gcnc.plan.Switch;
 import java.util.function.Consumer;
 
 /**
  * Writes a planned group (docs/galil.md, "Continuous contouring"): one vector sequence, every
  * segment at its own speed with its corner speed, {@code VS <first speed>}, then {@code VP a,b <o >p}
- * and {@code CR r,θ,Δθ <o >p} measured from the sequence's start, {@code VE}, {@code BGS}; the
- * spindle speeds of the motions that change it on the way ({@code AV <distance>} then the speed);
+ * and {@code CR r,θ,Δθ <o >p} measured from the sequence's start, {@code VE}, {@code BGS}; what is
+ * set on the way, one mechanism for both: the spindle speeds of the motions that change it (G96) and
+ * the outputs that switch on the fly ({@code plan.on_the_fly}), each after {@code AV <distance>},
+ * the path the written segments measure up to the start of its motion (a whole count at or before it,
+ * so that the controller always reaches it);
  * {@code AMS} with the reason the machine stops there. Speeds are even, 2 or more (Galil's
  * resolution for {@code <} and {@code >}), rounded down, never up.
  */
@@ -34,7 +38,7 @@ final class GroupWriter {
         long v0 = d.posV;
         boolean started = false;
         BlockWriter out = null;
-        double along = 0;
+        double along = 0; // the path written so far, counts, as the controller measures it for AV
         java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
         java.util.List<Double> at = new java.util.ArrayList<>();
         int n = g.pieces().size();
@@ -54,15 +58,21 @@ final class GroupWriter {
                 d.speedLine(vs, feed != null, out);
                 started = true;
             }
-            if (p.spindle()) {
+            if (p.onTheWay()) {
                 onTheWay.add(p);
                 at.add(along);
             }
-            along += p.length();
             if (m instanceof Motion.Arc a) {
-                arc(b, a, u0, v0, speeds, out);
+                along += arc(b, a, u0, v0, speeds, out);
+            } else if (m instanceof Motion.Linear l && p.parts() > 1) {
+                // one of the equal pieces of a move longer than a VP segment: to its share of the way
+                double share = (p.part() + 1) / (double) p.parts();
+                double fu = d.frame().u(l.from());
+                double fv = d.frame().v(l.from());
+                along += straight(b, fu + (d.frame().u(l.to()) - fu) * share, fv + (d.frame().v(l.to()) - fv) * share,
+                        u0, v0, speeds, out);
             } else {
-                straight(b, m instanceof Motion.Linear l ? l.to() : null, u0, v0, speeds, out);
+                along += straight(b, m instanceof Motion.Linear l ? l.to() : null, u0, v0, speeds, out);
             }
         }
         if (!started) {
@@ -70,48 +80,88 @@ final class GroupWriter {
         }
         out.emit(new Command.VectorEnd());
         out.emit(new Command.BeginSequence());
+        long tripped = -1;
         for (int i = 0; i < onTheWay.size(); i++) {
             Piece p = onTheWay.get(i);
+            long trip = (long) Math.floor(at.get(i));
             BlockWriter w = d.writer(p.block(), sink);
             w.motion(p.motion());
-            w.emit(new Command.AfterVector((long) Math.floor(at.get(i))));
-            d.spindle(p.block(), p.block().spindleRpm().getAsDouble(), w);
+            if (trip != tripped) {
+                w.emit(new Command.AfterVector(trip));
+                tripped = trip;
+            }
+            // in program order: what earlier blocks left on the way, then this block's speed and outputs
+            for (Switch s : p.switches()) {
+                if (s.block() != p.block()) {
+                    w = outputs(s, w);
+                }
+            }
+            if (p.spindle()) {
+                w = d.writer(p.block(), sink);
+                d.spindle(p.block(), p.block().spindleRpm().getAsDouble(), w);
+            }
+            for (Switch s : p.switches()) {
+                if (s.block() == p.block()) {
+                    w = outputs(s, w);
+                }
+            }
             out = w;
         }
         out.emit(new Command.AwaitSequence(g.stop()));
     }
 
-    private void straight(CheckedBlock b, Point to, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
-        long tu = GalilNumbers.round(d.frame().u(to));
-        long tv = GalilNumbers.round(d.frame().v(to));
-        if (!d.inRange(b, "VP", tu - u0) || !d.inRange(b, "VP", tv - v0)) {
-            return;
+    /** The outputs of {@code s} (after the trip point already written), in the writer of their own block. */
+    private BlockWriter outputs(Switch s, BlockWriter w) {
+        BlockWriter own = d.writer(s.block(), sink);
+        if (own != w) {
+            own.motion(-1);
         }
-        if (tu == d.posU && tv == d.posV) {
-            return; // no move: a segment of no length is TC 30
-        }
-        out.emit(new Command.VectorPosition(tu - u0, tv - v0, speeds));
-        d.posU = tu;
-        d.posV = tv;
+        d.outputs(s.block(), s.calls(), own);
+        return own;
     }
 
-    private void arc(CheckedBlock b, Motion.Arc m, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
+    /** A VP to {@code to}; its length, counts (0 when nothing is written). */
+    private double straight(CheckedBlock b, Point to, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
+        return straight(b, d.frame().u(to), d.frame().v(to), u0, v0, speeds, out);
+    }
+
+    /** A VP to the Galil point (u, v), rounded to whole counts; its length, counts (0 when nothing is written). */
+    private double straight(CheckedBlock b, double u, double v, long u0, long v0, Command.Speeds speeds,
+                            BlockWriter out) {
+        long tu = GalilNumbers.round(u);
+        long tv = GalilNumbers.round(v);
+        if (!d.inRange(b, "VP", tu - u0) || !d.inRange(b, "VP", tv - v0)) {
+            return 0;
+        }
+        if (tu == d.posU && tv == d.posV) {
+            return 0; // no move: a segment of no length is TC 30
+        }
+        out.emit(new Command.VectorPosition(tu - u0, tv - v0, speeds));
+        double written = Math.hypot(tu - d.posU, tv - d.posV);
+        d.posU = tu;
+        d.posV = tv;
+        return written;
+    }
+
+    /** A CR (and its closing VP) for the arc; its length, counts (0 when nothing is written). */
+    private double arc(CheckedBlock b, Motion.Arc m, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
         long tu = GalilNumbers.round(d.frame().u(m.to()));
         long tv = GalilNumbers.round(d.frame().v(m.to()));
         if (!d.inRange(b, "CR", tu - u0) || !d.inRange(b, "CR", tv - v0)
                 || !d.inRange(b, "CR", GalilNumbers.round(m.radius()))) {
-            return;
+            return 0;
         }
         ArcPlanner.Written written = ArcPlanner.forMotion(d.frame(), d.posU, d.posV, m);
         if (written == null) {
-            straight(b, m.to(), u0, v0, speeds, out);
-            return;
+            return straight(b, m.to(), u0, v0, speeds, out);
         }
         ArcPlanner.Cr cr = written.cr();
         if (cr == null) {
             d.error(Code.E202_ARC_NOT_REPRESENTABLE, b, GalilNumbers.round(m.radius()));
-            return;
+            return 0;
         }
+        // the controller's path length of a CR: its radius times its sweep
+        double length = cr.radius() * Math.toRadians(Math.abs(Fixed.fourDecimals(cr.sweep()).value()));
         if (!cr.closing()) {
             out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
                     Fixed.fourDecimals(cr.sweep()), speeds));
@@ -121,9 +171,16 @@ final class GroupWriter {
                     Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), speeds.end())));
             out.emit(new Command.VectorPosition(tu - u0, tv - v0,
                     new Command.Speeds(speeds.end() == 0 ? speeds.speed() : speeds.end(), speeds.end())));
+            // the closing move: from where the printed arc ends (its centre behind the start) to the target
+            double theta = Math.toRadians(Fixed.fourDecimals(cr.start()).value());
+            double end = theta + Math.toRadians(Fixed.fourDecimals(cr.sweep()).value());
+            double eu = d.posU - cr.radius() * Math.cos(theta) + cr.radius() * Math.cos(end);
+            double ev = d.posV - cr.radius() * Math.sin(theta) + cr.radius() * Math.sin(end);
+            length += Math.hypot(tu - eu, tv - ev);
         }
         d.posU = tu;
         d.posV = tv;
+        return length;
     }
 
     /** The even speed at or below {@code v}, at least 2. */

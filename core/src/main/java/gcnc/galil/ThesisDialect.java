@@ -66,7 +66,9 @@ final class ThesisDialect implements Dialect {
             out.motion(-1);
         } else if (step instanceof gcnc.plan.Step.Group g) {
             for (gcnc.plan.Piece p : g.pieces()) {
-                lower(new gcnc.plan.Step.Alone(p.block(), p.motion()), sink);
+                if (p.part() == 0) { // the thesis writes a motion once, however the planner split it
+                    lower(new gcnc.plan.Step.Alone(p.block(), p.motion()), sink);
+                }
             }
         } else if (step instanceof gcnc.plan.Step.After s) {
             BlockWriter out = writer(s.block(), sink);

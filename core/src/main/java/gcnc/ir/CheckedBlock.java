@@ -21,14 +21,33 @@ import java.util.OptionalInt;
  * @param frame       the block's program coordinates in the machine, for findings; null when unknown
  * @param origin      the file and the subprogram calls the block was run from ({@link Origin#PROGRAM}:
  *                    the main program), so that the simulator's findings are placed as the checker's
+ * @param stopAt      where the block's motion must end at rest (G09, G61), else {@link StopAt#BLEND}
  */
 public record CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
-                           List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame, Origin origin) {
+                           List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame, Origin origin,
+                           StopAt stopAt) {
     public CheckedBlock {
         before = List.copyOf(before);
         motions = List.copyOf(motions);
         after = List.copyOf(after);
         java.util.Objects.requireNonNull(origin);
+        java.util.Objects.requireNonNull(stopAt);
+    }
+
+    /** A block that asks for no exact stop. */
+    public CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool, List<MCall> before,
+                        List<Motion> motions, List<MCall> after, Point end, ProgramFrame frame, Origin origin) {
+        this(line, spindleRpm, tool, before, motions, after, end, frame, origin, StopAt.BLEND);
+    }
+
+    /** The same block with other motions ending at {@code end} (a cycle's or the compensation's), its stop kept. */
+    public CheckedBlock withMotions(List<Motion> other, Point end) {
+        return new CheckedBlock(line, spindleRpm, tool, before, other, after, end, frame, origin, stopAt);
+    }
+
+    /** The same block with another program frame (a cycle pass's name), its stop kept. */
+    public CheckedBlock inFrame(ProgramFrame other) {
+        return new CheckedBlock(line, spindleRpm, tool, before, motions, after, end, other, origin, stopAt);
     }
 
     /** A block of the main program. */
@@ -40,7 +59,7 @@ public record CheckedBlock(int line, OptionalDouble spindleRpm, OptionalInt tool
     /** The same block, run from {@code o} (its frame names the file it is written in). */
     public CheckedBlock from(Origin o) {
         return new CheckedBlock(line, spindleRpm, tool, before, motions, after, end,
-                frame == null ? null : frame.inFile(o.file()), o);
+                frame == null ? null : frame.inFile(o.file()), o, stopAt);
     }
 
     /** A block whose program frame is not known (built by hand, as the backend's tests do). */

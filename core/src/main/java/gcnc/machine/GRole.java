@@ -62,9 +62,17 @@ public enum GRole {
     WORK_1(54), WORK_2(55), WORK_3(56), WORK_4(57), WORK_5(58), WORK_6(59), CYCLE_CANCEL(80),
     ABSOLUTE(90), INCREMENTAL(91), REGISTER(92), FEED_PER_MINUTE(94), FEED_PER_REV(95), CSS(96), RPM(97),
     /**
-     * A mode of the control that changes nothing in the path gcnc checks and writes (Fanuc G61
-     * exact stop mode, G64 cutting mode, G22/G23 stored stroke check): read, with the note E700
-     * saying so (its words, such as G22's area, are its own and move nothing).
+     * G61 exact stop mode (Haas "exact stop modal", Fanuc "exact stop mode"): every move decelerates
+     * to rest and is checked in position before the next starts, until G64. The checker hands it on
+     * ({@code CheckedBlock.stopAt}) and the planner ends its vector sequence after every motion.
+     */
+    EXACT_STOP_MODE(61),
+    /** G64 cutting mode (Haas "exact stop modal cancel"): consecutive moves blend again; the power-up mode. */
+    CUTTING_MODE(64),
+    /**
+     * A mode of the control that changes nothing in the path gcnc checks and writes (Fanuc G22/G23
+     * stored stroke check): read, with the note E700 saying so (its words, such as G22's area, are
+     * its own and move nothing).
      */
     MODE_ONLY(-3),
     /** A function gcnc cannot follow yet: using it is E110, never a misreading. */

@@ -22,7 +22,7 @@ final class ProfileKeys {
             "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",
             "spindle.max_rpm", "spindle.rpm_per_volt", "spindle.axis", "spindle.encoder", "spindle.encoder_axis", "tool_post", "offsets.unit",
             "tools.table", "tools.offsets", "tools.count", "tools.file", "feed.per_f", "thread.chamfer_leads",
-            "thread.chamfer_angle", "plan.blend", "corner.deviation", "reference.2", "reference.3", "reference.4",
+            "thread.chamfer_angle", "plan.blend", "corner.deviation", "plan.on_the_fly", "reference.2", "reference.3", "reference.4",
             // the machine around the motion (MachineIo)
             "spindle.output", "spindle.at_speed", "spindle.at_speed_timeout", "turret.station_outputs",
             "turret.strobe", "turret.in_position", "turret.timeout", "homing.check", "homing.tolerance",

@@ -111,7 +111,7 @@ public final class ProfileLoader {
         };
         boolean chuckByProgram = f.choice("chuck.driven_by", c.chuckByProgram() ? "program" : "operator",
                 "program", "operator").equals("program");
-        Blending.read(f); // checked here, at the key's line; the planner reads it again (Blending.of)
+        Blending.read(f, c); // checked here, at the key's line; the planner reads it again (Blending.of)
         Axis x = axis(f, "x");
         Axis z = axis(f, "z");
         if (channel(x.galil()) == channel(z.galil())) {

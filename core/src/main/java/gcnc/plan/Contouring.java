@@ -3,6 +3,7 @@ package gcnc.plan;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.MCall;
 import gcnc.ir.Motion;
+import gcnc.ir.StopAt;
 import gcnc.machine.Blending;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
@@ -18,13 +19,16 @@ import java.util.function.Consumer;
  * <li><b>What joins.</b> A straight move or an arc joins the sequence being gathered when it is of the
  * same kind (rapid, or feed), in the same program file, and turns from the last one by less than a
  * reversal. Everything else ends the sequence, with its reason ({@link Stop}): a block that changes
- * the tool or switches outputs, a dwell, a thread pass (geared, never blended), a rapid after a feed
- * or back, a call into another file, the end of the program. A new spindle speed alone (G96 at the
+ * the tool or switches outputs (except the M codes of the profile's {@code plan.on_the_fly}, coolant
+ * by default: those switch where the path reaches their block, {@link Switch}), a dwell, a thread pass (geared, never blended), a rapid after a feed
+ * or back, a call into another file, the end of the program, the exact stop the program asks for
+ * (G09 after its block, G61 after every motion). A new spindle speed alone (G96 at the
  * next diameter) does not stop a feed: the emitter sets it when the tool reaches that motion.</li>
- * <li><b>The bound.</b> At most {@link #MAX_PIECES} motions are held back: each is written as at
+ * <li><b>The bound.</b> At most {@link #MAX_PIECES} pieces are held back: each is written as at
  * most two segments (an arc and its closing move), so a sequence always fits the controller's
  * 511-segment buffer; and at most {@link #MAX_LENGTH} counts of path (the controller refuses a
- * sequence longer than 2^31, TC 31).</li>
+ * sequence longer than 2^31, TC 31). A straight move longer than one VP segment may be
+ * ({@link SegmentLimit}) is held as equal pieces, all in the same sequence.</li>
  * <li><b>Speeds.</b> A motion's speed is its feed (the rapid speed for a rapid), an arc's at most
  * √(a·r) so that its centripetal acceleration stays within the machine's. A corner's speed is the
  * junction-deviation speed √(a·δ·sin(θ/2)/(1−sin(θ/2))) (θ the angle between the two directions,
@@ -53,10 +57,20 @@ public final class Contouring implements Planner {
     private final List<Integer> motions = new ArrayList<>();
     private final List<Path> paths = new ArrayList<>();
     private final List<Boolean> spindles = new ArrayList<>();
+    /** The outputs switched as the tool reaches each held motion's start (plan.on_the_fly). */
+    private final List<List<Switch>> switchesAt = new ArrayList<>();
+    /** Outputs on the fly after the last held motion: they go with the next motion if it joins, else at rest. */
+    private final List<Switch> pending = new ArrayList<>();
+    /** Each held piece's part of its motion and how many parts it has ({@link SegmentLimit}). */
+    private final List<int[]> parts = new ArrayList<>();
+    private final Blending blending;
+    private final SegmentLimit limit;
     private double length;
 
     Contouring(MachineProfile profile, Blending blending) {
         this.profile = profile;
+        this.blending = blending;
+        this.limit = SegmentLimit.of(profile);
         this.acceleration = Math.min(profile.acceleration(), profile.deceleration());
         this.deviation = blending.deviationMm() * Math.min(profile.x().countsPerMm(), profile.z().countsPerMm());
     }
@@ -64,11 +78,25 @@ public final class Contouring implements Planner {
     @Override
     public void accept(CheckedBlock b, Consumer<Step> out) {
         Stop before = before(b);
+        boolean joins = joinsFirst(b);
         // a new spindle speed alone (G96 following the diameter) is set on the way, not at a stop
-        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !switches(b.before()) && joinsFirst(b);
+        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !stops(b.before()) && joins
+                && !firstRapid(b);
+        List<Switch> own = List.of();
         if (before != null && !onTheWay) {
             flush(before, out);
             out.accept(new Step.Before(b));
+        } else if (switches(b.before())) {
+            // outputs that may switch on the fly (plan.on_the_fly): where the path reaches the block
+            Switch s = new Switch(b, b.before(), false);
+            if (joins) {
+                own = List.of(s);
+            } else if (b.motions().isEmpty() && holding()) {
+                pending.add(s); // between two motions: switched where the next one starts, if it joins
+            } else {
+                flush(firstStop(b), out);
+                out.accept(s.atRest());
+            }
         }
         List<Motion> ms = b.motions();
         for (int i = 0; i < ms.size(); i++) {
@@ -89,22 +117,45 @@ public final class Contouring implements Planner {
                 }
                 p = paths.get(paths.size() - 1).standing(p.speed());
             }
+            // a straight move longer than one VP takes: equal pieces, one after the other (SegmentLimit)
+            int n = m instanceof Motion.Linear ? limit.parts(p.length()) : 1;
             if (!paths.isEmpty()) {
-                Stop stop = joins(b, p);
+                Stop stop = joins(b, p, n);
                 if (stop != null) {
                     flush(stop, out);
                 }
             }
-            blocks.add(b);
-            motions.add(i);
-            paths.add(p);
-            spindles.add(onTheWay);
+            List<Switch> here = new ArrayList<>(pending);
+            here.addAll(own);
+            pending.clear();
+            own = List.of();
+            for (int k = 0; k < n; k++) {
+                blocks.add(b);
+                motions.add(i);
+                parts.add(new int[] {k, n});
+                paths.add(n == 1 ? p : p.part(n));
+                spindles.add(onTheWay && k == 0);
+                switchesAt.add(k == 0 ? here : List.of());
+            }
             onTheWay = false;
             length += p.length();
+            if (b.stopAt() == StopAt.EVERY_MOTION) {
+                flush(Stop.EXACT_STOP_MODE, out); // G61: every move ends at rest
+            }
+        }
+        if (b.stopAt() == StopAt.BLOCK_END) {
+            flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
         if (switches(b.after())) {
-            flush(Stop.OUTPUT, out);
-            out.accept(new Step.After(b));
+            int held = paths.size();
+            boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions.get(held - 1) == ms.size() - 1;
+            if (!stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
+                // the block's end on the fly: where the next motion starts, if it joins
+                pending.add(new Switch(b, b.after(), true));
+            } else {
+                flush(Stop.OUTPUT, out);
+                out.accept(new Step.After(b));
+            }
         }
     }
 
@@ -120,11 +171,34 @@ public final class Contouring implements Planner {
 
     /** Whether the block's first motion is a path that joins the sequence gathered so far. */
     private boolean joinsFirst(CheckedBlock b) {
-        if (paths.isEmpty() || b.motions().isEmpty()) {
-            return false;
+        return !paths.isEmpty() && !b.motions().isEmpty() && firstStop(b) == null;
+    }
+
+    /** Whether the block's first motion is a rapid. */
+    private static boolean firstRapid(CheckedBlock b) {
+        return !b.motions().isEmpty() && b.motions().get(0) instanceof Motion.Linear l && l.rapid();
+    }
+
+    /**
+     * Why the block's first motion cannot join the sequence gathered so far (null: it joins, or
+     * nothing is held); {@link Stop#OUTPUT} for a block without motion.
+     */
+    private Stop firstStop(CheckedBlock b) {
+        if (paths.isEmpty()) {
+            return null;
         }
-        Path p = Path.of(b.motions().get(0), profile.rapidSpeed(), acceleration);
-        return p != null && p.length() >= 0.5 && !p.rapid() && joins(b, p) == null;
+        if (b.motions().isEmpty()) {
+            return Stop.OUTPUT;
+        }
+        Motion m = b.motions().get(0);
+        Path p = Path.of(m, profile.rapidSpeed(), acceleration);
+        if (p == null) {
+            return m instanceof Motion.Thread ? Stop.THREAD : Stop.DWELL;
+        }
+        if (p.length() < 0.5) {
+            return paths.get(paths.size() - 1).rapid() != p.rapid() ? Stop.RAPID_FEED : null;
+        }
+        return joins(b, p, m instanceof Motion.Linear ? limit.parts(p.length()) : 1);
     }
 
     /** Why the block's start stops the machine (its spindle, tool or outputs), or null when it does not. */
@@ -135,7 +209,7 @@ public final class Contouring implements Planner {
         if (b.tool().isPresent()) {
             return Stop.TOOL;
         }
-        return switches(b.before()) ? Stop.OUTPUT : null;
+        return stops(b.before()) ? Stop.OUTPUT : null;
     }
 
     /** Whether any of the M functions switches an output (one without outputs writes nothing: no stop). */
@@ -148,8 +222,18 @@ public final class Contouring implements Planner {
         return false;
     }
 
-    /** Why {@code p} cannot join the sequence gathered so far, or null when it can. */
-    private Stop joins(CheckedBlock b, Path p) {
+    /** Whether any of the M functions switches an output that must not switch while the axes move. */
+    private boolean stops(List<MCall> calls) {
+        for (MCall m : calls) {
+            if (!profile.outputsFor(m.code()).isEmpty() && !blending.flies(m.code())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Why {@code p}, written as {@code n} pieces, cannot join the sequence gathered so far, or null when it can. */
+    private Stop joins(CheckedBlock b, Path p, int n) {
         Path last = paths.get(paths.size() - 1);
         if (last.rapid() != p.rapid()) {
             return Stop.RAPID_FEED;
@@ -157,7 +241,7 @@ public final class Contouring implements Planner {
         if (!java.util.Objects.equals(blocks.get(blocks.size() - 1).origin().file(), b.origin().file())) {
             return Stop.CALL;
         }
-        if (paths.size() == MAX_PIECES) {
+        if (paths.size() + n > MAX_PIECES) {
             return Stop.BUFFER;
         }
         if (length + p.length() > MAX_LENGTH) {
@@ -183,6 +267,7 @@ public final class Contouring implements Planner {
     private void flush(Stop stop, Consumer<Step> out) {
         int n = paths.size();
         if (n == 0) {
+            release(out);
             return;
         }
         // entry[i]: the speed at the start of motion i; entry[n]: at the end of the last (rest)
@@ -199,14 +284,25 @@ public final class Contouring implements Planner {
         List<Piece> pieces = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
             pieces.add(new Piece(blocks.get(i), motions.get(i), paths.get(i).speed(), entry[i + 1],
-                    paths.get(i).length(), spindles.get(i)));
+                    paths.get(i).length(), spindles.get(i), switchesAt.get(i), parts.get(i)[0], parts.get(i)[1]));
         }
         spindles.clear();
+        parts.clear();
+        switchesAt.clear();
         blocks.clear();
         motions.clear();
         paths.clear();
         length = 0;
         out.accept(new Step.Group(pieces, stop));
+        release(out);
+    }
+
+    /** The outputs waiting for a next motion that did not join: switched at rest, in program order. */
+    private void release(Consumer<Step> out) {
+        for (Switch s : pending) {
+            out.accept(s.atRest());
+        }
+        pending.clear();
     }
 
     /**
@@ -232,6 +328,11 @@ public final class Contouring implements Planner {
      */
     record Path(boolean rapid, double length, double speed, double entryX, double entryZ, double exitX,
                 double exitZ) {
+        /** One of {@code n} equal pieces of this straight move. */
+        Path part(int n) {
+            return new Path(rapid, length / n, speed, entryX, entryZ, exitX, exitZ);
+        }
+
         /** A motion of no length after this one: it goes on in this one's direction. */
         Path standing(double speed) {
             return new Path(rapid, 0, speed, exitX, exitZ, exitX, exitZ);
@@ -240,8 +341,10 @@ public final class Contouring implements Planner {
         /** The path of a straight move or an arc; null for a dwell or a thread. */
         static Path of(Motion m, double rapidSpeed, double acceleration) {
             if (m instanceof Motion.Linear l) {
-                double dx = l.to().x() - l.from().x();
-                double dz = l.to().z() - l.from().z();
+                // between whole counts, as the move is written (VP to the rounded target): a short move's
+                // direction is the written one, which the replay checks the corner speeds against (E332)
+                double dx = Math.rint(l.to().x()) - Math.rint(l.from().x());
+                double dz = Math.rint(l.to().z()) - Math.rint(l.from().z());
                 double len = Math.hypot(dx, dz);
                 double ux = len == 0 ? 0 : dx / len;
                 double uz = len == 0 ? 0 : dz / len;

@@ -21,6 +21,6 @@ public interface Planner {
     /** The planner a profile asks for: contouring ({@code plan.blend = on}, the default) or exact stop. */
     static Planner forProfile(MachineProfile profile) {
         Blending b = Blending.of(profile);
-        return b.on() ? new Contouring(profile, b) : new ExactStop();
+        return b.on() ? new Contouring(profile, b) : new ExactStop(profile);
     }
 }

@@ -13,6 +13,10 @@ public enum Stop {
     TOOL("tool"),
     /** An M code with outputs: they switch when the axes stand still. */
     OUTPUT("output"),
+    /** G09 in the block: its move ends at rest and is checked in position (one block). */
+    EXACT_STOP_BLOCK("exact-stop-block"),
+    /** G61 exact stop mode (until G64): every move ends at rest. */
+    EXACT_STOP_MODE("exact-stop-mode"),
     /** A dwell (G04). */
     DWELL("dwell"),
     /** A thread pass: geared to the spindle, never blended. */

@@ -138,6 +138,9 @@ public final class ProgramForm implements Form {
         if (dryRun) {
             return;
         }
+        // VR stays set on the controller: a run stopped during a feed hold left it at 0, and the next run
+        // (its resume) would stand still; each run starts at the operator's override
+        c.ratio(op.override());
         c.execute();
         progress.started();
         follow(piece, c, progress, op);

@@ -131,6 +131,8 @@ public final class StreamForm implements Form {
 
     /** Runs the resident set-up ({@code XQ #GCNC,0}) to its end; {@code gready} 0 means it stopped (the homing check). */
     private void setUp(Controller c, Progress progress, Operator op) throws IOException, RunFault, InterruptedException {
+        // VR stays set on the controller: a run stopped during a feed hold left it at 0 (as ProgramForm)
+        c.ratio(op.override());
         c.execute();
         while (c.executing() >= 0) {
             if (op.stopped()) {

@@ -34,6 +34,14 @@ final class Conformance {
             if (segs.size() == 1 && last.arc()) {
                 return mismatch(line, "path (an arc for a straight move)", last.length(), lin.to());
             }
+            // a move longer than one VP segment is written as pieces: each joint on the programmed line
+            for (int i = 0; i < segs.size() - 1; i++) {
+                Segment g = segs.get(i);
+                double off = g.arc() ? Double.POSITIVE_INFINITY : offLine(g.toX(), g.toZ(), lin.from(), lin.to());
+                if (off > tol) {
+                    return mismatch(line, "path (a piece of a straight move off its line)", off, lin.to());
+                }
+            }
             return endPoint(last, lin.to(), line);
         }
         if (m instanceof Motion.Thread t) {
@@ -97,6 +105,15 @@ final class Conformance {
      * A circle no wider than the tolerance: the backend may write its arc as a straight move, and
      * the simulator pairs and checks it so (one rule for {@code Simulator} and this class).
      */
+    /** How far (counts) the point (x, z) is from the straight move from {@code a} to {@code b}. */
+    private static double offLine(double x, double z, Point a, Point b) {
+        double dx = b.x() - a.x();
+        double dz = b.z() - a.z();
+        double len2 = dx * dx + dz * dz;
+        double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((x - a.x()) * dx + (z - a.z()) * dz) / len2));
+        return Geometry.length(x - (a.x() + t * dx), z - (a.z() + t * dz));
+    }
+
     static boolean pointLike(Motion.Arc arc, double tolerance) {
         return 2 * arc.radius() <= tolerance;
     }

@@ -30,6 +30,18 @@ final class Controller {
         void spindleVolts(double volts, int line);
 
         void report(Code code, int line, Object... args);
+
+        /**
+         * A command set on the way: after {@code AV trip}, while the last sequence runs. {@code around}:
+         * the sources of the segments the path is on at that point (one, or two where it is at their
+         * joint), for the check that it is where the program has it (docs/galil.md).
+         */
+        default void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
+        }
+
+        /** The sequence that ran ends here (AMS), for the reason the planner recorded (the corner report). */
+        default void stopped(gcnc.plan.Stop why, int line) {
+        }
     }
 
     private static final double INT32 = 2147483647;
@@ -43,6 +55,11 @@ final class Controller {
     private double cursor1;
     private double cursor2;
     private final List<Segment> pending = new ArrayList<>();
+    /** The last sequence started: each segment's end, counts of path from its start (what AV measures). */
+    private final List<Double> reached = new ArrayList<>();
+    private final List<gcnc.dmc.Source> reachedBy = new ArrayList<>();
+    /** The AV trip point the commands after it wait for, counts; -1 when none (at rest after AMS). */
+    private long avTrip = -1;
     private double speed;
     double acceleration;
     double deceleration;
@@ -255,18 +272,30 @@ final class Controller {
         }
 
         public Void awaitSequence(Command.AwaitSequence c) {
-            afterEnd();
+            if (!afterEnd() && c.why() != null) {
+                out.stopped(c.why(), line);
+            }
+            avTrip = -1; // what follows is at rest
             return null;
         }
 
         public Void afterVector(Command.AfterVector c) {
-            afterEnd(); // the sequence has been replayed whole at BGS: what follows acts on the state after it
+            // the sequence has been replayed whole at BGS: what follows acts on the state after it; the
+            // trip point must be on its path, or the controller waits there for ever
+            if (!afterEnd()) {
+                double total = reached.isEmpty() ? 0 : reached.get(reached.size() - 1);
+                if (c.counts() > total + 1) {
+                    out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), Math.round(total));
+                }
+                avTrip = c.counts();
+            }
             return null;
         }
 
         public Void offset(Command.Offset c) {
             if (!afterEnd() && c.channel() == spindleChannel && spindleAnalog < 0) {
                 volts = c.volts().value();
+                onTheWay();
                 out.spindleVolts(volts, line);
             }
             return null;
@@ -300,6 +329,7 @@ final class Controller {
 
         public Void output(Command.Output c) {
             if (!afterEnd()) {
+                onTheWay();
                 out.output(c.bit(), c.on(), line);
             }
             return null;
@@ -368,6 +398,7 @@ final class Controller {
         public Void analogOut(Command.AnalogOut c) {
             if (!afterEnd() && c.output() == spindleAnalog) {
                 volts = c.volts().value();
+                onTheWay();
                 out.spindleVolts(volts, line);
             }
             return null;
@@ -487,10 +518,41 @@ final class Controller {
         // leaves the axes at the nearest count, and the next sequence starts from there.
         g1 = Math.rint(cursor1);
         g2 = Math.rint(cursor2);
+        reached.clear();
+        reachedBy.clear();
+        avTrip = -1;
+        double along = 0;
+        for (Segment g : pending) {
+            along += g.arc() ? g.radius() * Math.toRadians(Math.abs(g.sweepDeg()))
+                    : Math.hypot(g.toX() - g.fromX(), g.toZ() - g.fromZ());
+            reached.add(along);
+            reachedBy.add(g.source());
+        }
         // The listener reads the segments during the call and keeps none of them.
         out.sequence(pending, speed, line);
         pending.clear();
         feedMarked = false;
+    }
+
+    /**
+     * The command being run comes after an AV trip point: the listener hears where on the path
+     * (the segments within a count of the trip point: the one it falls in, and its neighbour when it
+     * is at their joint).
+     */
+    private void onTheWay() {
+        if (avTrip < 0 || reached.isEmpty()) {
+            return;
+        }
+        List<gcnc.dmc.Source> around = new ArrayList<>(2);
+        double from = 0;
+        for (int k = 0; k < reached.size(); k++) {
+            double to = reached.get(k);
+            if (avTrip >= from - 1 && avTrip <= to + 1 && reachedBy.get(k) != null) {
+                around.add(reachedBy.get(k));
+            }
+            from = to;
+        }
+        out.onTheWay(instruction.source(), around, avTrip, text(), line);
     }
 
     /** The plane's two channels in plane order (0: the first of VP's arguments). */

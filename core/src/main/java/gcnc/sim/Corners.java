@@ -11,7 +11,9 @@ import java.util.List;
  * junction-deviation speed of the machine's acceleration and {@code corner.deviation} (E332), and
  * each segment long enough for the machine to change from its entry speed to its exit speed (E333).
  * A segment without its own speeds runs at the sequence's VS; without {@code >p} it keeps its speed
- * into the next one. Findings go to the line of the segment they are about.
+ * into the next one. Findings go to the line of the segment they are about. Every corner the machine
+ * slows for, and every reversal, goes to the corner report ({@link SlowestCorners}) with what sets
+ * its speed: the junction's angle, an arc's √(a·r), or the acceleration over a short segment.
  */
 final class Corners {
     /** A segment this short (counts) is the rounding of an arc's end, not a corner: no junction check. */
@@ -27,6 +29,14 @@ final class Corners {
     private final double deviation;
     private final double countsPerMm;
     private final Report out;
+    /** The slowest corners so far, for the report. */
+    final SlowestCorners slowest = new SlowestCorners();
+    /** The last segment of the sequence before, and whether the planner stopped there for a reversal. */
+    private Segment previous;
+    private String previousNumber;
+    private boolean reversal;
+    /** The share of the junction speed the planner takes (gcnc.plan.Contouring.MARGIN). */
+    private static final double MARGIN = 0.9;
 
     Corners(MachineProfile profile, Report out) {
         this.acceleration = Math.min(profile.acceleration(), profile.deceleration());
@@ -35,7 +45,28 @@ final class Corners {
         this.out = out;
     }
 
-    void check(List<Segment> segs, double speed, int line) {
+    /** The sequence that ran last ended for {@code why} (null: not known, a DMC read back). */
+    void stopped(gcnc.plan.Stop why) {
+        reversal = why == gcnc.plan.Stop.REVERSAL;
+    }
+
+    /**
+     * Checks a sequence's corners and notes the slow ones. {@code numbers}: the N word of each
+     * segment's block (null entries, or null, where none is known).
+     */
+    void check(List<Segment> segs, double speed, int line, String[] numbers) {
+        if (segs.isEmpty()) {
+            return;
+        }
+        if (reversal && previous != null) {
+            // the planner stopped where the path turns back: a corner taken at 0
+            Segment first = segs.get(0);
+            note(previous, previousNumber, 0, Math.max(speedOf(previous, speed), speedOf(first, speed)),
+                    Corner.Why.REVERSAL, angle(previous, first), Double.NaN, Double.NaN);
+        }
+        reversal = false;
+        previous = segs.get(segs.size() - 1);
+        previousNumber = numbers == null ? null : numbers[segs.size() - 1];
         boolean blended = false;
         for (Segment s : segs) {
             blended = blended || !Double.isNaN(s.speed()) || !Double.isNaN(s.end());
@@ -56,6 +87,9 @@ final class Corners {
                 if (exit > limit + ROUNDING) {
                     out.report(Code.E332_SIM_CORNER_TOO_FAST, at, perMinute(exit), perMinute(limit));
                 }
+                Segment next = segs.get(k + 1);
+                double nextExit = k + 1 == segs.size() - 1 ? 0 : Double.isNaN(next.end()) ? speedOf(next, speed) : next.end();
+                classify(s, next, numbers == null ? null : numbers[k], v, speedOf(next, speed), entry, exit, nextExit);
             }
             double change = Math.abs(entry * entry - exit * exit);
             double peak = Math.max(entry, exit) + ROUNDING;
@@ -65,6 +99,59 @@ final class Corners {
             }
             entry = exit;
         }
+    }
+
+    /**
+     * Notes a corner the machine slows for, with what sets its speed: the junction (its angle at
+     * the planner's share of the junction-deviation speed), an arc's √(a·r) when the arc is the
+     * slower move, else the acceleration over the segment before or after it (whichever pass
+     * brought it down). A corner at the faster move's speed is not slowed; one at a lower feed of
+     * the next move is the program's, not the machine's.
+     */
+    private void classify(Segment s, Segment next, String number, double v, double vn, double entry, double exit,
+                          double nextExit) {
+        double feed = Math.max(v, vn);
+        if (exit >= feed - ROUNDING) {
+            return;
+        }
+        double cap = Math.min(v, vn);
+        double junction = MARGIN * junction(s, next, Double.POSITIVE_INFINITY);
+        double own = Math.min(junction, cap);
+        if (exit >= own - ROUNDING - 0.02 * own) {
+            if (junction <= cap) {
+                note(s, number, exit, feed, Corner.Why.JUNCTION, angle(s, next), deviation / countsPerMm, Double.NaN);
+                return;
+            }
+            Segment slower = v <= vn ? s : next;
+            double o = Math.min(v, vn);
+            if (slower.arc() && Math.abs(o - Math.sqrt(acceleration * slower.radius())) <= ROUNDING + 0.01 * o) {
+                note(s, number, exit, feed, Corner.Why.ARC, angle(s, next), Double.NaN, slower.radius() / countsPerMm);
+            }
+            return;
+        }
+        double forward = Math.sqrt(entry * entry + 2 * acceleration * s.length());
+        double backward = Math.sqrt(nextExit * nextExit + 2 * acceleration * next.length());
+        Segment shortOne = Math.abs(forward - exit) <= Math.abs(backward - exit) ? s : next;
+        note(s, number, exit, feed, Corner.Why.ACCELERATION, angle(s, next), Double.NaN, shortOne.length() / countsPerMm);
+    }
+
+    /** A corner at the end of {@code s}, for the report (radius or length in mm as {@code why} has one). */
+    private void note(Segment s, String number, double speed, double feed, Corner.Why why, double angle, double deviationMm,
+                      double mm) {
+        gcnc.dmc.Source src = s.source();
+        String file = src == null ? null : src.file();
+        int line = src == null ? 0 : src.line();
+        slowest.add(new Corner(file, line, number, speed / countsPerMm * 60, feed / countsPerMm * 60, why, angle,
+                why == Corner.Why.JUNCTION ? deviationMm : Double.NaN, why == Corner.Why.ARC ? mm : Double.NaN,
+                why == Corner.Why.ACCELERATION ? mm : Double.NaN));
+    }
+
+    /** How far the path turns from {@code a} into {@code b}, degrees. */
+    static double angle(Segment a, Segment b) {
+        double[] out = direction(a, false);
+        double[] in = direction(b, true);
+        double dot = Math.max(-1, Math.min(1, out[0] * in[0] + out[1] * in[1]));
+        return Math.toDegrees(Math.acos(dot));
     }
 
     private static double speedOf(Segment s, double speed) {

@@ -19,8 +19,37 @@ package gcnc.sim;
  *                      work zero, the program's units): what a person reads first; null when the
  *                      program frame is not known (a DMC replayed by itself) or nothing moved
  * @param setup         the blank, the work zero, the tools used and the top speed, for a setup sheet
+ * @param corners       the slowest corners of the blended sequences, slowest first (at most 100;
+ *                      docs/galil.md, "The corner report")
+ * @param stops         how many sequences ended for each reason the planner recorded ({@code gcnc.plan.Stop}'s
+ *                      keys, in that enum's order); empty for a DMC read back, which does not carry them
  */
 public record SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
                         double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
-                        ProgramEnvelope program, SetupFacts setup) {
+                        ProgramEnvelope program, SetupFacts setup, java.util.List<Corner> corners,
+                        java.util.Map<String, Integer> stops) {
+    public SimReport {
+        corners = java.util.List.copyOf(corners);
+        stops = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(stops));
+    }
+
+    /** A report without corners. */
+    public SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
+                     double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
+                     ProgramEnvelope program, SetupFacts setup) {
+        this(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds, exactStopSeconds, drawing,
+                program, setup, java.util.List.of(), java.util.Map.of());
+    }
+
+    /** The same report with these corners (the {@code n} slowest of them, for {@code --corners n}). */
+    public SimReport withCorners(java.util.List<Corner> slowest, int n) {
+        return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
+                exactStopSeconds, drawing, program, setup, slowest.subList(0, Math.min(n, slowest.size())), stops);
+    }
+
+    /** The same report with these counts of stops by reason. */
+    public SimReport withStops(java.util.Map<String, Integer> counts) {
+        return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
+                exactStopSeconds, drawing, program, setup, corners, counts);
+    }
 }

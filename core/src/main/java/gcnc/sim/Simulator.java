@@ -155,7 +155,27 @@ public final class Simulator {
     }
 
     public SimReport report() {
-        return checks.report(findings);
+        java.util.Map<String, Integer> byReason = new java.util.LinkedHashMap<>();
+        for (var e : stops.entrySet()) {
+            byReason.put(e.getKey().key(), e.getValue());
+        }
+        return checks.report(findings).withCorners(corners.slowest.slowest(), SlowestCorners.KEPT).withStops(byReason);
+    }
+
+    /** How many sequences ended for each reason (the planner's, carried by AMS), in the reasons' order. */
+    private final java.util.Map<gcnc.plan.Stop, Integer> stops = new java.util.EnumMap<>(gcnc.plan.Stop.class);
+
+    /** The N word of each segment's block (null where it has none or none is known), for the corner report. */
+    private static String[] numbers(int n, List<Expected> meant, List<int[]> runs) {
+        if (meant.isEmpty()) {
+            return null;
+        }
+        String[] numbers = new String[n];
+        for (int k = 0; k < meant.size(); k++) {
+            gcnc.ir.ProgramFrame f = meant.get(k).block().frame();
+            java.util.Arrays.fill(numbers, runs.get(k)[0], runs.get(k)[1], f == null ? null : f.number());
+        }
+        return numbers;
     }
 
     private void run(List<Instruction> lines) {
@@ -315,7 +335,7 @@ public final class Simulator {
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
             boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
                     stopped || open);
-            corners.check(segments, speed, line);
+            corners.check(segments, speed, line, numbers(segments.size(), meant, runs));
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
@@ -368,6 +388,40 @@ public final class Simulator {
         @Override
         public void report(Code code, int line, Object... args) {
             Simulator.this.report(code, line, args);
+        }
+
+        @Override
+        public void stopped(gcnc.plan.Stop why, int line) {
+            corners.stopped(why);
+            stops.merge(why, 1, Integer::sum);
+        }
+
+        /**
+         * An output or speed set on the way must be where its block stands in the program: between
+         * the lines of the segments the path is on at its trip point (the motion before it and the one
+         * after, in the same file). Judged where the sources are a compile's (counted blocks: a DMC
+         * file read back may number its own lines); a path that runs lines backwards there (a loop) is not.
+         */
+        @Override
+        public void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
+            if (around.isEmpty() || what.line() <= 0 || what.block() < 0) {
+                return;
+            }
+            int lo = Integer.MAX_VALUE;
+            int hi = Integer.MIN_VALUE;
+            for (gcnc.dmc.Source s : around) {
+                if (!java.util.Objects.equals(s.origin(), what.origin())) {
+                    return;
+                }
+                lo = Math.min(lo, s.line());
+                hi = Math.max(hi, s.line());
+            }
+            if (around.get(0).line() > around.get(around.size() - 1).line()) {
+                return;
+            }
+            if (what.line() < lo || what.line() > hi) {
+                report(Code.E335_SIM_SWITCHED_ELSEWHERE, line, text, trip, lo == hi ? String.valueOf(lo) : lo + "-" + hi);
+            }
         }
     }
 }

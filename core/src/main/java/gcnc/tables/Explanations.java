@@ -92,12 +92,13 @@ public final class Explanations {
         for (int n : new int[] {243, 244, 245}) {
             m.put(Code.byNumber(n), form);
         }
+        m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table); // a profile's key (plan.on_the_fly), numbered with the planner's codes
         String files = "the command line's files (reading, writing, links), not the program's text";
         for (int n : new int[] {500, 501, 502, 510}) {
             m.put(Code.byNumber(n), files);
         }
         String dmc = "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)";
-        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 332, 333}) {
+        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 332, 333, 334, 335}) {
             m.put(Code.byNumber(n), dmc);
         }
         String second = "the backend's or the simulator's guard behind a check that comes first for any program"

@@ -235,7 +235,8 @@ final class Analysis {
         return a;
     }
 
-    private JsonObject report(String name, Compiler.Result r) throws IOException {
+    /** The diagnostics of a result as {@code gcnc check --format json} writes them, each finding's file being {@code name}. */
+    JsonObject report(String name, Compiler.Result r) throws IOException {
         List<Finding> findings = new ArrayList<>();
         for (Diagnostic d : r.diagnostics().sorted()) {
             findings.add(Finding.of(name, d, messages));

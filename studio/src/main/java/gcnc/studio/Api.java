@@ -38,6 +38,10 @@ final class Api implements AutoCloseable {
     private volatile Engine engine;
     /** The open event streams, closed when the studio stops. */
     private final Set<OutputStream> streams = ConcurrentHashMap.newKeySet();
+    /** What the event streams carry besides the list of files: a run's events. */
+    private final EventHub hub = new EventHub();
+    /** The Run screen: MEMORY mode on a controller. */
+    private final Runs runs;
     private volatile boolean closed;
     /** Each stream holds one of the server's threads: a few pages, and the rest keep answering. */
     static final int MAX_STREAMS = 3;
@@ -47,6 +51,10 @@ final class Api implements AutoCloseable {
         this.config = config;
         this.messages = config.session().tables().messages().in(config.lang());
         this.engine = engine(config.session(), null, null);
+        this.runs = new Runs(workspace, () -> {
+            Engine e = engine;
+            return new Runs.Context(e.session(), e.analysis(), e.profileFile());
+        }, messages, hub, config.running());
     }
 
     private Engine engine(Session session, ProfileEdit profile, String profileFile) {
@@ -76,6 +84,8 @@ final class Api implements AutoCloseable {
             case "profile" -> Http.json(ex, 200, profile(get(ex)));
             case "profile/impact" -> timed(ex, () -> impact(post(ex)));
             case "profile/save" -> Http.json(ex, 200, saveProfile(post(ex)));
+            case "run", "run/arm", "run/start", "run/hold", "run/resume", "run/step", "run/override", "run/stop" ->
+                    runs.handle(endpoint, ex);
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
         }
     }
@@ -339,8 +349,9 @@ final class Api implements AutoCloseable {
 
     /**
      * GET /api/events: server-sent events. {@code files} whenever the list of programs changes
-     * (a program made or removed outside the studio), so the page's list stays true; a comment
-     * every few seconds keeps the stream open. The page's EventSource reconnects by itself.
+     * (a program made or removed outside the studio), so the page's list stays true; {@code run} for
+     * each event of a run (docs/studio.md, "Run"); a comment every ten seconds of quiet keeps the
+     * stream open. The page's EventSource reconnects by itself.
      */
     private void events(HttpExchange ex) throws IOException, Http.Fail {
         if (streams.size() >= MAX_STREAMS) {
@@ -351,22 +362,43 @@ final class Api implements AutoCloseable {
         ex.sendResponseHeaders(200, 0);
         OutputStream out = ex.getResponseBody();
         streams.add(out);
+        java.util.concurrent.BlockingQueue<String> queue = hub.join();
         try {
             String last = null;
-            for (int beat = 0; !closed; beat++) {
-                String now = files(ex).toString();
-                if (!now.equals(last)) {
-                    out.write(("event: files\ndata: " + now + "\n\n").getBytes(StandardCharsets.UTF_8));
-                    last = now;
-                } else if (beat % 10 == 0) {
-                    out.write(": still here\n\n".getBytes(StandardCharsets.UTF_8));
+            long nextList = 0;
+            long quietSince = System.nanoTime();
+            while (!closed) {
+                long now = System.nanoTime();
+                if (now >= nextList) {
+                    // the folder is looked at once a second
+                    String files = files(ex).toString();
+                    if (!files.equals(last)) {
+                        out.write(("event: files\ndata: " + files + "\n\n").getBytes(StandardCharsets.UTF_8));
+                        last = files;
+                        quietSince = now;
+                    } else if (now - quietSince > 10_000_000_000L) {
+                        out.write(": still here\n\n".getBytes(StandardCharsets.UTF_8));
+                        quietSince = now;
+                    }
+                    out.flush();
+                    nextList = now + 1_000_000_000L;
                 }
-                out.flush();
-                Thread.sleep(1000);
+                String frame = queue.poll(Math.max(1, (nextList - System.nanoTime()) / 1_000_000), java.util.concurrent.TimeUnit.MILLISECONDS);
+                if (frame != null) {
+                    // what has come meanwhile goes in one write
+                    StringBuilder b = new StringBuilder(frame);
+                    for (String more = queue.poll(); more != null && b.length() < 1 << 16; more = queue.poll()) {
+                        b.append(more);
+                    }
+                    out.write(b.toString().getBytes(StandardCharsets.UTF_8));
+                    out.flush();
+                    quietSince = System.nanoTime();
+                }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
+            hub.leave(queue);
             streams.remove(out);
         }
     }
@@ -374,6 +406,7 @@ final class Api implements AutoCloseable {
     @Override
     public void close() {
         closed = true;
+        runs.close();
         for (OutputStream s : List.copyOf(streams)) {
             try {
                 s.close();

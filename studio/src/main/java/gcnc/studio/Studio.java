@@ -36,8 +36,37 @@ public final class Studio implements AutoCloseable {
      * @param session the tables and machine every check and compile uses
      * @param lang    the language of the page and of the messages
      * @param version gcnc's version, written in the JSON reports
+     * @param running how the Run screen reaches controllers
      */
-    public record Config(Path root, int port, Session session, ErrorMessages.Lang lang, String version) {
+    public record Config(Path root, int port, Session session, ErrorMessages.Lang lang, String version, Running running) {
+        /** A studio whose virtual controller runs in real time and which opens no serial port. */
+        public Config(Path root, int port, Session session, ErrorMessages.Lang lang, String version) {
+            this(root, port, session, lang, version, Running.DEFAULT);
+        }
+    }
+
+    /**
+     * How the Run screen reaches controllers.
+     *
+     * @param virtualSpeed how many times faster than real time the studio's virtual controller runs (1: real time)
+     * @param serial       opens a serial port for a run; null when this studio has none (the command line
+     *                     gives jSerialComm's: the studio carries no serial library of its own)
+     */
+    public record Running(double virtualSpeed, SerialPorts serial) {
+        public static final Running DEFAULT = new Running(1, null);
+
+        public Running {
+            if (!(virtualSpeed > 0)) {
+                throw new IllegalArgumentException("the virtual controller's speed must be above 0");
+            }
+        }
+    }
+
+    /** Opens a Galil's serial port as {@code gcnc run --port DEV --baud N --handshake ...} does. */
+    @FunctionalInterface
+    public interface SerialPorts {
+        /** The link; E815 (no such port) or E816 (held, no permission) as a {@link gcnc.send.RunFault}. */
+        gcnc.send.Link open(String device, int baud, boolean hardwareHandshake) throws gcnc.send.RunFault;
     }
 
     /** The page's own files: name to content type (nothing else is served from the jar but the WebJars). */
@@ -47,6 +76,7 @@ public final class Studio implements AutoCloseable {
             "profile.js", "text/javascript; charset=utf-8",
             "hover.js", "text/javascript; charset=utf-8",
             "configure.js", "text/javascript; charset=utf-8",
+            "run.js", "text/javascript; charset=utf-8",
             "i18n.js", "text/javascript; charset=utf-8",
             "studio.css", "text/css; charset=utf-8");
 

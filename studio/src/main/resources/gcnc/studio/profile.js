@@ -34,7 +34,9 @@ function bounds(d) {
  * the line is in, when not this one; `elsewhere`: in a file outside the studio's folder). Returns a function that lights the
  * moves of one G-code line (and returns how many it lit); its `scrub(answer)` draws an answer of
  * POST /api/stock over the drawing (null takes it away): the stock as it stood after the block, what the
- * block removed (between the outline before it and after it) and the insert and holder where it ended.
+ * block removed (between the outline before it and after it) and the insert and holder where it ended;
+ * its `running(line)` lights the moves of the block a run executes and `tool(x, z)` marks where the tool is
+ * (program coordinates, as the run's status gives them).
  */
 export function drawProfile(svg, drawing, onPick) {
   svg.replaceChildren();
@@ -95,6 +97,24 @@ export function drawProfile(svg, drawing, onPick) {
     lit = byLine.get(line) || [];
     lit.forEach((g) => { g.classList.add("current"); svg.appendChild(g); }); // drawn last: on top
     return lit.length;
+  };
+  // Run: the block executing, lit apart from the cursor's, and the tool where the controller says it is
+  let running = [];
+  light.running = (line) => {
+    running.forEach((g) => g.classList.remove("running"));
+    running = line === null ? [] : byLine.get(line) || [];
+    running.forEach((g) => { g.classList.add("running"); svg.appendChild(g); });
+    const t = svg.querySelector("circle.tool");
+    if (t) svg.appendChild(t);
+  };
+  light.tool = (x, z) => {
+    let t = svg.querySelector("circle.tool");
+    if (!t) t = el("circle", { r: 5, class: "tool" }, svg);
+    t.setAttribute("cx", px(z).toFixed(2));
+    t.setAttribute("cy", py(x).toFixed(2));
+    t.dataset.x = x;
+    t.dataset.z = z;
+    svg.appendChild(t);
   };
   const axis = drawing.stock ? drawing.stock.xAxis : 0;
   /** A stock outline (x for each z) closed down to the centreline. */

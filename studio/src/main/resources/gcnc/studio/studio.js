@@ -1,8 +1,8 @@
 // gcnc studio's page: the editor (CodeMirror 6), the error list, the tool path and the Galil DMC, all linked
 // by G-code line. Everything it knows comes from the studio's JSON API (docs/studio.md), which runs the same
 // gcnc.Session as the command line.
-import { EditorView, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter, drawSelection } from "@codemirror/view";
-import { EditorState, StateEffect } from "@codemirror/state";
+import { EditorView, Decoration, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter, drawSelection } from "@codemirror/view";
+import { EditorState, StateEffect, StateField } from "@codemirror/state";
 import { syntaxHighlighting, defaultHighlightStyle } from "@codemirror/language";
 import { history as undoHistory, defaultKeymap, historyKeymap } from "@codemirror/commands";
 import { searchKeymap } from "@codemirror/search";
@@ -12,6 +12,7 @@ import { drawProfile } from "/static/profile.js";
 import { t, translatePage } from "/static/i18n.js";
 import { gcodeHover } from "/static/hover.js";
 import { configure } from "/static/configure.js";
+import { runPanel } from "/static/run.js";
 
 const params = new URLSearchParams(location.search);
 const token = params.get("token") || "";
@@ -78,6 +79,33 @@ async function lint(view) {
 /** Another machine profile is in use (Configure saved one): the text is judged again as it is. */
 const profileChanged = StateEffect.define();
 
+/** The block a run executes (Run): its line lit in the text, apart from the cursor. null: none. */
+const runningLine = StateEffect.define();
+const running = StateField.define({
+  create: () => Decoration.none,
+  update(lit, tr) {
+    lit = lit.map(tr.changes);
+    for (const e of tr.effects) {
+      if (!e.is(runningLine)) continue;
+      lit = e.value >= 1 && e.value <= tr.state.doc.lines
+        ? Decoration.set([Decoration.line({ class: "cm-running" }).range(tr.state.doc.line(e.value).from)])
+        : Decoration.none;
+    }
+    return lit;
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
+let runningAt = null;
+
+/** The run's executing block lit in the text (scrolled into view) and on the path. */
+function showRunning(line) {
+  runningAt = line;
+  const ok = line >= 1 && line <= view.state.doc.lines;
+  view.dispatch({ effects: ok ? [runningLine.of(line), EditorView.scrollIntoView(view.state.doc.line(line).from, { y: "center" })]
+    : [runningLine.of(null)] });
+  lightPath.running && lightPath.running(ok ? line : null);
+}
+
 const view = new EditorView({
   parent: $("editor"),
   state: EditorState.create({ doc: "", extensions: extensions() }),
@@ -86,7 +114,7 @@ const view = new EditorView({
 function extensions() {
   return [
     lineNumbers(), highlightActiveLineGutter(), undoHistory(), drawSelection(), highlightActiveLine(),
-    syntaxHighlighting(defaultHighlightStyle, { fallback: true }), gcode,
+    syntaxHighlighting(defaultHighlightStyle, { fallback: true }), gcode, running,
     lintGutter(), linter(lint, { delay: 250, needsRefresh: (u) => u.transactions.some((tr) => tr.effects.some((e) => e.is(profileChanged))) }),
     gcodeHover((line, word) => current.name ? api("hover", { name: current.name, text: view.state.doc.toString(), line, word }) : null),
     keymap.of([...defaultKeymap, ...historyKeymap, ...searchKeymap, ...lintKeymap,
@@ -199,6 +227,7 @@ function showSimulation(r) {
   $("galil").classList.toggle("stale", !fresh && $("dmc").childElementCount > 0);
   if (fresh) {
     lightPath = drawProfile($("profile"), r.drawing, pick);
+    if (runningAt !== null && lightPath.running) lightPath.running(runningAt);
     showDmc(r.dmc);
     $("pathnote").textContent = "";
     scrubBlocks(r.drawing.moves);
@@ -461,6 +490,17 @@ configure({
   },
 });
 
+const run = runPanel({
+  api,
+  program: () => current.name,
+  saveFirst: async () => !dirty() || save(false),
+  showLine: showRunning,
+  tool: (x, z) => lightPath.tool && lightPath.tool(x, z),
+  goTo: (line) => goTo(line, 1),
+  problems: showProblems,
+  status,
+});
+
 async function showInfo() {
   const info = await api("info");
   $("where").textContent = `${info.folder} · ${info.profileFile || info.machine} · ${info.control}`;
@@ -475,7 +515,9 @@ window.addEventListener("beforeunload", (e) => {
     await listFiles();
     const events = new EventSource("/api/events?token=" + encodeURIComponent(token));
     events.addEventListener("files", (e) => listFiles(JSON.parse(e.data).files));
+    run.attach(events);
     if (params.get("file")) await open(params.get("file"));
+    await run.restore();
     document.body.dataset.ready = "true";
   } catch (e) {
     status(e.message, "bad");

@@ -6,7 +6,10 @@ import gcnc.ir.Word;
 
 /**
  * Thesis §4.2.2 action 11: G09 (exact stop). The thesis toggled a program-wide flag nobody read;
- * gcnc accepts G09 for its block only, and a Galil move already ends at rest. Emits nothing.
+ * gcnc takes G09 for its block only, as the Haas and Fanuc manuals do ("one-shot": the block's
+ * move decelerates to rest and is checked in position before the next block starts): the checked
+ * block says so ({@code CheckedBlock.stopAt}) and the planner ends its vector sequence there.
+ * Emits nothing.
  */
 public final class Sa11ExactStop implements SyntaxAction {
     @Override
@@ -16,6 +19,6 @@ public final class Sa11ExactStop implements SyntaxAction {
 
     @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
-        // Each block's motion already stops exactly (the backend waits for the move).
+        d.exactStop = true;
     }
 }

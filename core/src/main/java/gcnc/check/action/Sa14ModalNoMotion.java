@@ -14,8 +14,9 @@ import gcnc.machine.GRole;
  * G41 to G42 or back without G40 is the warning E174), G96
  * (constant surface speed: S of this and later blocks is m/min or ft/min), and, added by gcnc for
  * real safe-start lines, G80 (canned cycle cancel) and the plane: G18 (ZX, the lathe's plane) is
- * accepted, G17 and G19 are E112; a control's mode that changes nothing in the path (G61/G64,
- * G22/G23: function {@code mode_only}) is the note E700. Emits E016, E112, E174, E700. Writes next.css, next.nose, d.g96.
+ * accepted, G17 and G19 are E112; G61/G64 (exact stop mode, cutting mode) set the mode the planner
+ * follows; a control's mode that changes nothing in the path (G22/G23: function
+ * {@code mode_only}) is the note E700. Emits E016, E112, E174, E700. Writes next.css, next.nose, next.exactStopMode, d.g96.
  */
 public final class Sa14ModalNoMotion implements SyntaxAction {
     @Override
@@ -72,6 +73,10 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
         } else if (f.role() == GRole.CSS) {
             d.next.css = true;
             d.g96 = w;
+        } else if (f.role() == GRole.EXACT_STOP_MODE || f.role() == GRole.CUTTING_MODE) {
+            // G61 until G64: every move of this block and the next ends at rest (the planner ends
+            // its sequence after each); the path is the same, only the corners are not blended
+            d.next.set(f.role());
         } else if (f.role() == GRole.MODE_ONLY) {
             // G61/G64, G22/G23: the control's mode; every block gcnc writes ends at rest and the
             // travel is the profile's, so the path is the same either way (docs/language.md)

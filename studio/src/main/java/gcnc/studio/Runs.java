@@ -1,0 +1,414 @@
+package gcnc.studio;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import com.sun.net.httpserver.HttpExchange;
+import gcnc.Session;
+import gcnc.diag.Messages;
+import gcnc.output.DmcOutputs;
+import gcnc.send.Event;
+import gcnc.send.EventSink;
+import gcnc.send.JsonEvents;
+import gcnc.send.Link;
+import gcnc.send.Operator;
+import gcnc.send.ResumePoint;
+import gcnc.send.Sender;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Supplier;
+
+/**
+ * The Run screen's server side: the thesis's MEMORY mode from the page, as {@code gcnc run} does it.
+ * A run has two steps, because motion needs an explicit arm: <b>arm</b> compiles the saved program as
+ * {@code gcnc run} does (a program that is not clean is refused, nothing is connected) and does
+ * {@code gcnc run --dry-run} against the chosen controller (connect, pre-flight, download, read
+ * back: everything but motion), and answers what would move; <b>start</b>, given that arm, runs it
+ * ({@link Sender} with {@link gcnc.send.ProgramForm}, the command line's own, made by {@link RunControllers}), once. The run's events
+ * ({@link Event}, exactly the lines {@code gcnc run --format json} prints) go to every page over the
+ * event stream as {@code run} events; hold, resume, step, override and stop reach the run through its
+ * {@link Operator}. One run at a time, and one arm: a new arm replaces the last.
+ */
+final class Runs implements AutoCloseable {
+    /** What the studio runs with at the moment of a request: Configure may have saved another profile. */
+    record Context(Session session, Analysis analysis, String profileFile) {
+    }
+
+    /** The events of one run kept for a page that opens (or reloads) while it goes on; status aside. */
+    static final int LOG = 1000;
+
+    /** The run going on. */
+    private static final class Run {
+        final RunArm arm;
+        final Operator operator = new Operator();
+        volatile boolean stepWaiting;
+
+        Run(RunArm arm) {
+            this.arm = arm;
+        }
+    }
+
+    private final Workspace workspace;
+    private final Supplier<Context> context;
+    private final EventHub hub;
+    private final RunControllers controllers;
+    private final ReentrantLock arming = new ReentrantLock();
+    private final SecureRandom random = new SecureRandom();
+    // guarded by this
+    private RunArm arm;
+    private Run run;
+    private Thread thread;
+    private final List<JsonElement> log = new ArrayList<>();
+    private JsonElement lastStatus;
+    private Integer ended;
+
+    Runs(Workspace workspace, Supplier<Context> context, Messages messages, EventHub hub, Studio.Running settings) {
+        this.workspace = workspace;
+        this.context = context;
+        this.hub = hub;
+        this.controllers = new RunControllers(settings, messages);
+    }
+
+    /** {@code run} (GET) and {@code run/arm|start|hold|resume|step|override|stop} (POST). */
+    void handle(String endpoint, HttpExchange ex) throws IOException, Http.Fail {
+        if (endpoint.equals("run")) {
+            if (!ex.getRequestMethod().equals("GET")) {
+                throw new Http.Fail(405, "use GET for /api/run");
+            }
+            Http.json(ex, 200, snapshot());
+            return;
+        }
+        if (!ex.getRequestMethod().equals("POST")) {
+            throw new Http.Fail(405, "use POST for /api/" + endpoint);
+        }
+        JsonObject req = Http.body(ex);
+        JsonObject answer = switch (endpoint) {
+            case "run/arm" -> arm(req);
+            case "run/start" -> start(req);
+            case "run/hold" -> hold();
+            case "run/resume" -> resume();
+            case "run/step" -> step();
+            case "run/override" -> override(req);
+            case "run/stop" -> stop();
+            default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
+        };
+        Http.json(ex, 200, answer);
+    }
+
+    // ---- arm --------------------------------------------------------------------------------------------
+
+    /**
+     * POST /api/run/arm {name, target, step?, resumeAt?}: the saved program compiled as gcnc run does
+     * and tried on the controller without motion. Answers {@code armed} and, when armed, the
+     * {@code arm} to start with.
+     */
+    private JsonObject arm(JsonObject req) throws IOException, Http.Fail {
+        String name = Http.required(req, "name");
+        RunTarget target = RunTarget.of(req.get("target"));
+        boolean step = Http.flag(req, "step");
+        String at = Http.string(req, "resumeAt");
+        ResumePoint resumeAt;
+        try {
+            resumeAt = at == null || at.isBlank() ? null : ResumePoint.parse(at);
+        } catch (IllegalArgumentException e) {
+            throw new Http.Fail(400, "\"resumeAt\" is a G-code line, N or N:K (K: the block's K-th motion)");
+        }
+        if (target instanceof RunTarget.Serial && !controllers.serial()) {
+            throw new Http.Fail(400, "this studio cannot open serial ports (start it with gcnc studio, from gcnc.jar)");
+        }
+        Path file = refusing(() -> workspace.existing(name));
+        Path dmc = DmcOutputs.defaultOutput(file);
+        String dmcName = workspace.name(dmc);
+        refusing(() -> workspace.writable(dmc, dmcName, false));
+        refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
+        // the stream form's files too: written when the program does not fit the controller, removed when it does
+        Path stream = gcnc.output.FormOutputs.streamFile(dmc);
+        String streamName = workspace.name(stream);
+        refusing(() -> workspace.writable(stream, streamName, false));
+        refusing(() -> workspace.writable(DmcOutputs.mapFile(stream), streamName + ".map", false));
+        if (!arming.tryLock()) {
+            throw new Http.Fail(409, "another arm is under way");
+        }
+        try {
+            synchronized (this) {
+                if (run != null) {
+                    throw new Http.Fail(409, "a run is going on (" + run.arm.name() + "): stop it or let it end first");
+                }
+                arm = null; // a new arm replaces the last, whatever comes of it
+            }
+            String version = Workspace.version(Files.readAllBytes(file));
+            Context ctx = context.get();
+            RunProgram program;
+            try {
+                program = RunProgram.prepare(ctx.session(), ctx.analysis(), name, file, dmc, step);
+            } catch (gcnc.output.AtomicOutput.Refused e) {
+                throw new Http.Fail(403, "gcnc refuses to write " + dmcName + " (" + e.code().id() + ")");
+            }
+            JsonObject o = new JsonObject();
+            o.addProperty("name", name);
+            o.addProperty("target", target.shown());
+            o.addProperty("step", step);
+            o.addProperty("resumeAt", resumeAt == null ? null : resumeAt.toString());
+            o.add("diagnostics", program.report());
+            if (!program.clean()) {
+                // the same refusal as gcnc run's exit 1: nothing was connected, nothing sent
+                o.addProperty("armed", false);
+                o.addProperty("refused", "the program is not clean: " + program.errors() + " error(s); nothing was sent");
+                return o;
+            }
+            o.addProperty("form", program.form().name().toLowerCase(java.util.Locale.ROOT));
+            o.addProperty("dmc", dmcName);
+            if (program.form() == gcnc.dmc.Form.STREAM) {
+                o.addProperty("stream", streamName);
+            }
+            o.addProperty("dmcLines", program.program().lines().size());
+            String address = target instanceof RunTarget.Virtual ? controllers.virtual(ctx.session().profile(), resumeAt == null) : null;
+            if (address != null) {
+                o.addProperty("address", address);
+            }
+            RunArm tried = new RunArm(newId(), name, version, target, address, step, resumeAt, program, ctx, o);
+            List<JsonElement> events = new ArrayList<>();
+            int status = controllers.dryRun(tried, e -> events.add(JsonParser.parseString(JsonEvents.json(e))));
+            JsonArray list = new JsonArray();
+            events.forEach(list::add);
+            o.add("events", list);
+            o.addProperty("armed", status == Sender.RAN);
+            if (status == Sender.RAN) {
+                o.addProperty("arm", tried.id());
+                synchronized (this) {
+                    arm = tried;
+                }
+            }
+            return o;
+        } finally {
+            arming.unlock();
+        }
+    }
+
+    // ---- the run ----------------------------------------------------------------------------------------
+
+    /** POST /api/run/start {arm}: runs what that arm armed, once. */
+    private JsonObject start(JsonObject req) throws IOException, Http.Fail {
+        String id = Http.required(req, "arm");
+        Run r;
+        synchronized (this) {
+            if (run != null) {
+                throw new Http.Fail(409, "a run is going on (" + run.arm.name() + "): one at a time");
+            }
+            if (arm == null || !java.security.MessageDigest.isEqual(arm.id().getBytes(), id.getBytes())) {
+                throw new Http.Fail(409, "nothing is armed with this arm: arm the program first (motion needs it)");
+            }
+            RunArm a = arm;
+            arm = null; // an arm moves the machine once
+            Path file = refusing(() -> workspace.existing(a.name()));
+            if (!Workspace.version(Files.readAllBytes(file)).equals(a.version())) {
+                throw new Http.Fail(409, a.name() + " changed since it was armed: arm it again");
+            }
+            if (context.get().session() != a.context().session()) {
+                throw new Http.Fail(409, "the machine profile changed since the program was armed: arm it again");
+            }
+            r = new Run(a);
+            run = r;
+            log.clear();
+            lastStatus = null;
+            ended = null;
+        }
+        Thread t = new Thread(() -> follow(r), "gcnc-studio-run");
+        t.setDaemon(true);
+        synchronized (this) {
+            thread = t;
+        }
+        t.start();
+        JsonObject o = new JsonObject();
+        o.addProperty("started", true);
+        o.addProperty("name", r.arm.name());
+        o.addProperty("target", r.arm.target().shown());
+        o.addProperty("step", r.arm.step());
+        return o;
+    }
+
+    /** The run's thread: the sender to its end, every event to the pages, then {@code run-ended}. */
+    private void follow(Run r) {
+        EventSink events = e -> publish(r, e);
+        int status;
+        try {
+            Link link = controllers.link(r.arm, events);
+            status = link == null ? Sender.CONNECTION : controllers.sender(r.arm, r.operator, events, false).run(link, RunControllers.TIMEOUT_MS);
+        } catch (RuntimeException e) {
+            // a fault of gcnc itself: told as such, never a silent end of the run
+            events.accept(new Event.Message("the run failed inside gcnc: " + e));
+            status = Sender.STOPPED;
+        }
+        JsonObject end = new JsonObject();
+        end.addProperty("event", "run-ended");
+        end.addProperty("status", status);
+        synchronized (this) {
+            if (log.size() < LOG) {
+                log.add(end);
+            }
+            ended = status;
+            if (run == r) {
+                run = null;
+            }
+        }
+        hub.publish("run", end.toString());
+    }
+
+    private void publish(Run r, Event e) {
+        String json = JsonEvents.json(e);
+        if (e instanceof Event.StepWait) {
+            r.stepWaiting = true;
+        }
+        synchronized (this) {
+            if (e instanceof Event.Status) {
+                lastStatus = JsonParser.parseString(json);
+            } else if (log.size() < LOG) {
+                log.add(JsonParser.parseString(json));
+            }
+        }
+        hub.publish("run", json);
+    }
+
+    private synchronized Run running() throws Http.Fail {
+        if (run == null) {
+            throw new Http.Fail(409, "no run is going on");
+        }
+        return run;
+    }
+
+    /** POST /api/run/hold: feed hold (VR 0; the spindle keeps turning), as the first Ctrl-C. */
+    private JsonObject hold() throws Http.Fail {
+        Run r = running();
+        synchronized (r) {
+            if (r.operator.held()) {
+                throw new Http.Fail(409, "the run is already held");
+            }
+            r.operator.interrupt(); // one interrupt holds; a second would stop, hence held() first
+        }
+        return state(r);
+    }
+
+    /** POST /api/run/resume: the end of a feed hold, as Enter. */
+    private JsonObject resume() throws Http.Fail {
+        Run r = running();
+        synchronized (r) {
+            if (!r.operator.held()) {
+                throw new Http.Fail(409, "the run is not held");
+            }
+            r.operator.enter();
+        }
+        return state(r);
+    }
+
+    /** POST /api/run/step: the next block in step mode, as Enter. */
+    private JsonObject step() throws Http.Fail {
+        Run r = running();
+        if (!r.arm.step()) {
+            throw new Http.Fail(409, "the run is not in step mode");
+        }
+        r.stepWaiting = false;
+        r.operator.enter();
+        return state(r);
+    }
+
+    /** POST /api/run/override {percent}: the feed override, 10 to 200 % (VR), as the keys + and -. */
+    private JsonObject override(JsonObject req) throws Http.Fail {
+        int percent = Http.integer(req, "percent", 10, 200);
+        Run r = running();
+        r.operator.override(percent / 100.0);
+        return state(r);
+    }
+
+    /** POST /api/run/stop: stop now (ST, spindle and coolant off), as q or the second Ctrl-C. */
+    private JsonObject stop() throws Http.Fail {
+        Run r = running();
+        r.operator.stop();
+        return state(r);
+    }
+
+    private static JsonObject state(Run r) {
+        JsonObject o = new JsonObject();
+        o.addProperty("running", true);
+        o.addProperty("held", r.operator.held());
+        o.addProperty("stopping", r.operator.stopped());
+        o.addProperty("override", r.operator.override());
+        return o;
+    }
+
+    /**
+     * GET /api/run: where the Run screen stands: {@code state} idle, armed or running; the arm's answer
+     * when armed; the events of the last (or current) run and its last status; its exit status when
+     * it ended.
+     */
+    private synchronized JsonObject snapshot() {
+        JsonObject o = new JsonObject();
+        o.addProperty("state", run != null ? "running" : arm != null ? "armed" : "idle");
+        if (arm != null) {
+            JsonObject a = arm.answer().deepCopy();
+            a.remove("diagnostics");
+            a.addProperty("arm", arm.id());
+            o.add("armed", a);
+        }
+        if (run != null) {
+            o.addProperty("name", run.arm.name());
+            o.addProperty("step", run.arm.step());
+            o.addProperty("held", run.operator.held());
+            o.addProperty("stepWaiting", run.stepWaiting);
+        }
+        JsonArray events = new JsonArray();
+        log.forEach(events::add);
+        o.add("events", events);
+        if (lastStatus != null) {
+            o.add("status", lastStatus);
+        }
+        if (ended != null) {
+            o.addProperty("ended", ended);
+        }
+        return o;
+    }
+
+    private String newId() {
+        byte[] b = new byte[12];
+        random.nextBytes(b);
+        return HexFormat.of().formatHex(b);
+    }
+
+    /** The studio stops: a run going on is stopped (ST, spindle off) before the virtual controller goes. */
+    @Override
+    public void close() {
+        Thread t;
+        synchronized (this) {
+            if (run != null) {
+                run.operator.stop();
+            }
+            t = thread;
+        }
+        if (t != null) {
+            try {
+                t.join(5000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        controllers.close();
+    }
+
+    private interface WorkspaceCall<T> {
+        T call() throws Workspace.Refused, IOException;
+    }
+
+    private static <T> T refusing(WorkspaceCall<T> call) throws IOException, Http.Fail {
+        try {
+            return call.call();
+        } catch (Workspace.Refused r) {
+            throw new Http.Fail(r.status(), r.getMessage());
+        }
+    }
+}
