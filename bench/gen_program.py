@@ -1,18 +1,31 @@
 #!/usr/bin/env python3
 """Writes a long, valid turning program for the generic profile: roughing passes with arcs.
 
-usage: gen_program.py BLOCKS OUT.nc   (BLOCKS counts every block, header and footer included)
+usage: gen_program.py BLOCKS OUT.nc [--rs274]   (BLOCKS counts every block, header and footer included)
+
+--rs274 writes the same geometry for LinuxCNC's standalone interpreter `rs274` (bench/versus-rs274.sh):
+the same passes, diameters, feeds and arcs, block for block, with LinuxCNC's own words for the header
+(G18 G7: the XZ plane in diameter mode, G94 for the Fanuc lathe's G98, a tool change by T1 M6, M9 for
+the chuck's M11) and a comment for the program number. Both files have the same number of blocks.
 """
 import sys
 
 def main():
-    blocks, out = int(sys.argv[1]), sys.argv[2]
-    header = ["G21 G90 G98", "G50 S2500", "M11", "T0101", "S1200 M03", "G00 X52. Z2."]
-    footer = ["G00 X60. Z5.", "M05", "M30"]
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    rs274 = "--rs274" in sys.argv[1:]
+    blocks, out = int(args[0]), args[1]
+    if rs274:
+        first = "(O2000)"
+        header = ["G18 G7 G21 G90 G94", "G64", "M9", "T1 M6", "S1200 M3", "G00 X52. Z2."]
+        footer = ["G00 X60. Z5.", "M5", "M30"]
+    else:
+        first = "O2000"
+        header = ["G21 G90 G98", "G50 S2500", "M11", "T0101", "S1200 M03", "G00 X52. Z2."]
+        footer = ["G00 X60. Z5.", "M05", "M30"]
     body = blocks - len(header) - len(footer)
     n = 10
     with open(out, "w") as f:
-        f.write("O2000\n")
+        f.write(first + "\n")
         body -= 1
         for b in header:
             f.write(f"N{n} {b}\n"); n += 1

@@ -29,9 +29,13 @@ work="$(mktemp -d "${TMPDIR:-/tmp}/gcnc-shop.XXXXXX")"
 
 fail() { echo "shop-project: FAILED: $*" >&2; exit 1; }
 # gradle in a project folder, against the repository; its output to stdout and to $work/last.log.
+# Through a Gradle daemon: the six builds share one warm JVM instead of starting (and warming) one
+# each (a third of this script's time, issue 23). It may be one already idle on this machine;
+# one started here stops by itself after a minute with nothing to do (CI leaves none behind).
 run() {
     local dir="$1"; shift
-    gradle --no-daemon --console=plain -p "$dir" -Dmaven.repo.local="$repo" "$@" 2>&1 | tee "$work/last.log"
+    gradle --daemon -Dorg.gradle.daemon.idletimeout=60000 --console=plain -p "$dir" -Dmaven.repo.local="$repo" "$@" 2>&1 \
+        | tee "$work/last.log"
     return "${PIPESTATUS[0]}"
 }
 

@@ -47,9 +47,14 @@ class BoundedRunTest {
     }
 
     private static Run gcnc(String... args) throws Exception {
+        return gcncIn(HEAP, args);
+    }
+
+    /** A run in a heap of {@code heap} (a -Xmx option). */
+    private static Run gcncIn(String heap, String... args) throws Exception {
         Path out = Files.createTempFile(dir, "run", ".txt");
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                HEAP, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main"));
+                heap, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main"));
         command.addAll(List.of(args));
         Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(out.toFile()).start();
         // a guard so that a regression fails instead of hanging the build; not a measure of speed
@@ -62,7 +67,17 @@ class BoundedRunTest {
         try (var in = Files.newInputStream(out)) {
             in.readNBytes(head, 0, head.length);
         }
-        return new Run(p.exitValue(), new String(head, StandardCharsets.UTF_8), size);
+        String text = new String(head, StandardCharsets.UTF_8);
+        if (size > head.length) {
+            // and the last 4 KB, where the summary is
+            try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(out.toFile(), "r")) {
+                byte[] tail = new byte[4096];
+                f.seek(size - tail.length);
+                f.readFully(tail);
+                text += "\n[...]\n" + new String(tail, StandardCharsets.UTF_8);
+            }
+        }
+        return new Run(p.exitValue(), text, size);
     }
 
     /** The run ended with {@code status}, printed {@code expected}, no stack trace, and a short report. */
@@ -164,5 +179,78 @@ class BoundedRunTest {
         Run r = gcnc("check", "/dev/zero", "--machine", "fanuc");
         ends(r, 1, "/dev/zero:1:65537: error[E503]: line longer than 65536 characters: the rest of it is not read");
         assertTrue(r.output().contains("error[E504]: the text is longer than 1073741824 characters"), r.output());
+    }
+
+    // Issue 23's memory bounds, each in a heap far below what keeping everything would take: the
+    // exit status and the diagnostic, never the time.
+
+    /** The first 10,000 errors are kept and printed, E116 says so, the rest only counted. */
+    @Test
+    void aHundredThousandLexicalErrorsAreCappedInBoundedMemory() throws Exception {
+        StringBuilder p = new StringBuilder("G21 G18 G40 G99\n");
+        for (int i = 0; i < 100_000; i++) {
+            p.append("G01 X1. $ Z-1.\n");
+        }
+        Path program = Files.writeString(dir.resolve("many-errors.nc"), p.append("M30\n"));
+        Run r = gcncIn("-Xmx16m", "check", program.toString(), "--machine", "fanuc");
+        assertFalse(r.output().contains("Exception") || r.output().contains("\tat "), r.output());
+        assertTrue(r.output().startsWith(program + ":2:9: error[E003]: lexical error: illegal character '$'"), r.output());
+        assertTrue(r.output().contains(program + ":10001:1: error[E116]: stopped after 10000 errors"), r.output());
+        assertTrue(r.output().contains(program + ": 100002 blocks, 100001 errors"), r.output());
+        // 10,000 lines of about 110 bytes (the temporary folder's name included): the report is bounded
+        // by the cap, not by the program
+        assertTrue(r.size() < 2_000_000, "a report of " + r.size() + " bytes");
+        assertEquals(1, r.status(), r.output());
+    }
+
+    /** A line of a million characters (a transfer that lost its line ends) is cut; the next line is read. */
+    @Test
+    void aLineLongerThanTheLimitIsCutAndTheNextLineIsRead() throws Exception {
+        Path program = Files.writeString(dir.resolve("long-line.nc"),
+                "G21 G18 G40 G99\n" + "X1. ".repeat(250_000) + "\nG01 X10. Z-5. $\nM30\n");
+        Run r = gcncIn("-Xmx16m", "check", program.toString(), "--machine", "fanuc");
+        ends(r, 1, program + ":2:65537: error[E503]: line longer than 65536 characters: the rest of it is not read");
+        assertTrue(r.output().contains(program + ":3:15: error[E003]: lexical error: illegal character '$'"), r.output());
+        assertTrue(r.output().contains(program + ": 4 blocks, 3 errors"), r.output());
+    }
+
+    /** NUL bytes inside lines and a line of them (a padded transfer): located errors, bounded memory. */
+    @Test
+    void nulBytesAreLocatedErrorsInBoundedMemory() throws Exception {
+        java.io.ByteArrayOutputStream p = new java.io.ByteArrayOutputStream();
+        p.writeBytes("G21 G18 G40 G99\nT0101\nG97 S1000 M03\n".getBytes(StandardCharsets.US_ASCII));
+        for (int i = 0; i < 100_000; i++) {
+            p.writeBytes("G01 X40.\0\0\0 Z-1. F0.2\n".getBytes(StandardCharsets.US_ASCII));
+        }
+        p.writeBytes(new byte[100_000]);
+        p.writeBytes("\nM30\n".getBytes(StandardCharsets.US_ASCII));
+        Path program = Files.write(dir.resolve("nul.nc"), p.toByteArray());
+        Run r = gcncIn("-Xmx16m", "check", program.toString(), "--machine", "fanuc");
+        assertFalse(r.output().contains("Exception") || r.output().contains("\tat "), r.output());
+        assertTrue(r.output().startsWith(program + ":4:9: error[E003]: lexical error: illegal character 'U+0000'"),
+                r.output());
+        assertTrue(r.output().contains("error[E116]: stopped after 10000 errors"), r.output());
+        assertTrue(r.output().contains(program + ": 100005 blocks, 100003 errors"), r.output());
+        assertTrue(r.size() < 2_000_000, "a report of " + r.size() + " bytes");
+        assertEquals(1, r.status(), r.output());
+    }
+
+    /**
+     * A heap too small even for the 10,000 errors kept (4 MB): the run ends with E506 on one line and
+     * status 2 (what the run could not do), never the JVM's stack trace or status 1 ("the program has errors").
+     */
+    @Test
+    void runningOutOfMemoryIsOneLineAndStatusTwo() throws Exception {
+        StringBuilder p = new StringBuilder("G21 G18 G40 G99\n");
+        for (int i = 0; i < 50_000; i++) {
+            p.append("G01 X1. $ Z-1.\n");
+        }
+        Path program = Files.writeString(dir.resolve("out-of-memory.nc"), p.append("M30\n"));
+        Run r = gcncIn("-Xmx4m", "check", program.toString(), "--machine", "fanuc");
+        assertFalse(r.output().contains("Exception") || r.output().contains("OutOfMemoryError")
+                || r.output().contains("\tat "), r.output());
+        assertTrue(r.output().contains("gcnc: error[E506]: out of memory: the Java heap of "), r.output());
+        assertEquals(1, r.output().split("E506", -1).length - 1, r.output());
+        assertEquals(2, r.status(), r.output());
     }
 }

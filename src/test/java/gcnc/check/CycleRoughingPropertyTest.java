@@ -79,13 +79,14 @@ class CycleRoughingPropertyTest {
         assertTrue(passes.size() > 4 && contour.size() > 10, where);
         // the G70's first move is the approach and its last two are the return: the shape is between
         List<double[]> shape = shape(contour, u, w, facing);
+        ContourBins bins = new ContourBins(shape, 1);
         for (CheckedBlock b : passes) {
             for (Motion m : b.motions()) {
                 List<double[]> pts = new ArrayList<>();
                 sample(m, frame, pts, 60);
                 for (double[] xz : pts) {
                     double[] p = facing ? new double[] {xz[1], xz[0]} : xz;
-                    double limit = boundary(shape, p[1], s);
+                    double limit = boundary(shape, bins, p[1], s);
                     if (!Double.isNaN(limit)) {
                         assertTrue(s * (p[0] - limit) >= -TOLERANCE, () -> String.format(Locale.ROOT,
                                 "%s%s at X%.4f Z%.4f is inside the contour (%s%.4f there)", where,
@@ -202,10 +203,10 @@ class CycleRoughingPropertyTest {
      * highest within a hair of z, so that a cut ending on a shoulder face is judged by the face's
      * near end; NaN where the contour has no point there (before its start or past its end).
      */
-    private static double boundary(List<double[]> shape, double z, int s) {
+    private static double boundary(List<double[]> shape, ContourBins bins, double z, int s) {
         double best = Double.NaN;
         for (double probe : new double[] {z - 1e-3, z, z + 1e-3}) {
-            for (int i = 0; i + 1 < shape.size(); i++) {
+            for (int i : bins.near(probe, 1e-6)) {
                 double[] a = shape.get(i);
                 double[] b = shape.get(i + 1);
                 if (probe < Math.min(a[1], b[1]) || probe > Math.max(a[1], b[1])) {

@@ -29,8 +29,11 @@ import org.junit.jupiter.params.provider.ValueSource;
  * {@code side * X}, so that "in" is down on both sides. Seeds print on failure.
  */
 class TypeTwoPropertyTest {
-    /** Programs per side: 20 in the default run; a campaign sets more (-PtypeTwoCount=60 or beyond). */
-    private static final int PROGRAMS = Integer.getInteger("gcnc.typeTwo.count", 20);
+    /**
+     * Programs per side: 60 in the default run (20 while the contour was scanned whole for every
+     * sampled point; ContourBins made that cheap); a campaign sets more (-PtypeTwoCount=500).
+     */
+    private static final int PROGRAMS = Integer.getInteger("gcnc.typeTwo.count", 60);
     /** Inch: a micron plus the six-decimal rounding of the written words. */
     private static final double TOLERANCE = 0.001 / 25.4 + 2e-6;
 
@@ -63,6 +66,7 @@ class TypeTwoPropertyTest {
             for (double[] p : CycleRoughingPropertyTest.shape(g70, u, 0, false)) {
                 shape.add(new double[] {side * p[0], p[1]});
             }
+            ContourBins bins = new ContourBins(shape, 1);
             Map<Double, List<double[]>> levels = new TreeMap<>();
             for (CheckedBlock b : passes) {
                 boolean finishing = b.frame().sequence().endsWith(last);
@@ -71,7 +75,7 @@ class TypeTwoPropertyTest {
                     CycleRoughingPropertyTest.sample(m, b.frame(), pts, 60);
                     for (double[] xz : pts) {
                         xz[0] *= side;
-                        double floor = bottom(shape, xz[1]);
+                        double floor = bottom(shape, bins, xz[1]);
                         assertTrue(Double.isNaN(floor) || xz[0] >= floor - TOLERANCE, () -> String.format(Locale.ROOT,
                                 "%s%s at X%.5f Z%.5f is below the contour (X%.5f there)", where,
                                 b.frame().sequence(), xz[0], xz[1], floor));
@@ -88,7 +92,7 @@ class TypeTwoPropertyTest {
             }
             assertTrue(!levels.isEmpty(), where);
             for (Map.Entry<Double, List<double[]>> level : levels.entrySet()) {
-                covers(where, shape, level.getKey(), level.getValue());
+                covers(where, shape, bins, level.getKey(), level.getValue());
             }
             if (side > 0) {
                 assertEquals("", simulated(program), where);
@@ -100,17 +104,17 @@ class TypeTwoPropertyTest {
      * Along the contour's Z, a point is cut at this level exactly where the moved contour lies
      * below it (points within a hair of where the contour crosses the level, or of a wall, are not judged).
      */
-    private static void covers(String where, List<double[]> shape, double level, List<double[]> cuts) {
+    private static void covers(String where, List<double[]> shape, ContourBins bins, double level, List<double[]> cuts) {
         double zTop = shape.get(0)[1];
         double zEnd = shape.get(shape.size() - 1)[1];
         for (double z = zTop; z >= zEnd; z -= 0.002) {
-            double here = top(shape, z, 0);
-            double before = top(shape, z, 0.004);
-            double after = top(shape, z, -0.004);
+            double here = top(shape, bins, z, 0);
+            double before = top(shape, bins, z, 0.004);
+            double after = top(shape, bins, z, -0.004);
             double margin = 0.0005;
             boolean below = here < level - margin && before < level - margin && after < level - margin;
             boolean above = here > level + margin && before > level + margin && after > level + margin;
-            if (!below && !above || nearWall(shape, z)) {
+            if (!below && !above || nearWall(shape, bins, z)) {
                 continue;
             }
             boolean cut = false;
@@ -124,8 +128,8 @@ class TypeTwoPropertyTest {
     }
 
     /** Whether a wall (a move along X only) stands within 0.005 of z: a cut may end on it either side. */
-    private static boolean nearWall(List<double[]> shape, double z) {
-        for (int i = 0; i + 1 < shape.size(); i++) {
+    private static boolean nearWall(List<double[]> shape, ContourBins bins, double z) {
+        for (int i : bins.near(z, 0.005)) {
             double[] a = shape.get(i);
             double[] b = shape.get(i + 1);
             if (Math.abs(a[1] - b[1]) < 1e-12 && Math.abs(a[0] - b[0]) > 1e-9 && Math.abs(a[1] - z) < 0.005) {
@@ -136,19 +140,19 @@ class TypeTwoPropertyTest {
     }
 
     /** The lowest X of the contour at z (on a wall a point is on the part's face, not in it); NaN where it has none. */
-    private static double bottom(List<double[]> shape, double z) {
-        return -extreme(shape, z, -1);
+    private static double bottom(List<double[]> shape, ContourBins bins, double z) {
+        return -extreme(shape, bins, z, -1);
     }
 
     /** The highest X of the contour at z + dz (walls count by their top); NaN where it has none. */
-    private static double top(List<double[]> shape, double z, double dz) {
-        return extreme(shape, z + dz, 1);
+    private static double top(List<double[]> shape, ContourBins bins, double z, double dz) {
+        return extreme(shape, bins, z + dz, 1);
     }
 
     /** s = 1: the highest X at z; s = -1: minus the lowest. */
-    private static double extreme(List<double[]> shape, double probe, int s) {
+    private static double extreme(List<double[]> shape, ContourBins bins, double probe, int s) {
         double best = Double.NaN;
-        for (int i = 0; i + 1 < shape.size(); i++) {
+        for (int i : bins.near(probe, 1e-6)) {
             double[] a = shape.get(i);
             double[] b = shape.get(i + 1);
             if (probe < Math.min(a[1], b[1]) - 1e-9 || probe > Math.max(a[1], b[1]) + 1e-9) {

@@ -20,7 +20,8 @@ import org.junit.jupiter.api.Test;
  * The Gradle plugin end to end, as a shop meets it (docs/gradle-plugin.md): scripts/shop-project-test.sh
  * publishes the library and plugin to a throwaway Maven local repository and builds copies of
  * samples/shop-project with them. The script checks the outcomes too; this test reads Gradle's own output of each stage,
- * so that a script that stopped checking would not pass it. Takes about 20 to 40 s (four Gradle runs).
+ * so that a script that stopped checking would not pass it. Six Gradle builds through one Gradle daemon
+ * (about 30 s at load 10; 90 s when each started a JVM of its own).
  */
 class ShopProjectTest {
     private static final String FAULT = "src/main/gcode/o1299-faulty.gcode:6:1: error[E051]";

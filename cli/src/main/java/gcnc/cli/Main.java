@@ -125,8 +125,33 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
-        System.exit(execute(args, new Invocation(System.in, System.out, System.err, System.getenv(),
-                System.console() != null, SourceFiles::isStandardOutput)));
+        int status;
+        try {
+            status = execute(args, new Invocation(System.in, System.out, System.err, System.getenv(),
+                    System.console() != null, SourceFiles::isStandardOutput));
+        } catch (OutOfMemoryError e) {
+            status = outOfMemory(args);
+        }
+        System.exit(status);
+    }
+
+    /**
+     * The heap ran out (issue 23): one line, E506, and the usage/I-O status 2, not the JVM's stack trace
+     * and status 1, which would read as "the program has errors". By now the run's objects are
+     * unreachable, so the message can be made; if even that fails, it is printed in English as is.
+     */
+    static int outOfMemory(String[] args) {
+        String mib = Long.toString(Runtime.getRuntime().maxMemory() >> 20);
+        String text;
+        try {
+            text = gcnc.tables.Tables.builtIn().messages().render(gcnc.diag.Code.E506_OUT_OF_MEMORY,
+                    java.util.List.of(mib), HelpLanguage.of(args, System.getenv()));
+        } catch (OutOfMemoryError | RuntimeException again) {
+            text = "out of memory: the Java heap of " + mib + " MiB was not enough";
+        }
+        System.err.println("gcnc: error[E506]: " + text);
+        System.err.flush();
+        return ExitCode.USAGE;
     }
 
     /**

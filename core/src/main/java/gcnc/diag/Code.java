@@ -535,6 +535,11 @@ public enum Code {
     E504_TEXT_TOO_LONG(504),
     /** The file a call would read (O1000.nc) is a directory or a device, not a program file. */
     E505_CALLED_NOT_A_FILE(505),
+    /**
+     * The Java heap ran out (an input gcnc failed to bound, or a heap set too small with -Xmx): one
+     * line and exit status 2, never a stack trace or the status that means "the program has errors".
+     */
+    E506_OUT_OF_MEMORY(506),
     /** A side file gcnc writes unasked (the source map, OUT.map) is a symbolic link: gcnc does not write through it. */
     E510_SIDE_FILE_IS_LINK(510),
 

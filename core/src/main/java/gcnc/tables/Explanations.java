@@ -107,6 +107,8 @@ public final class Explanations {
             m.put(Code.byNumber(n), second);
         }
         m.put(Code.byNumber(45), "the thesis's out-of-memory error: gcnc reports E116 at its cap instead");
+        m.put(Code.byNumber(506), "the Java heap running out (an input gcnc failed to bound, or -Xmx set too small),"
+                + " not the program's text");
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         for (Code c : Code.values()) {
