@@ -32,6 +32,17 @@ public final class Operator {
         enters.offer(Boolean.TRUE);
     }
 
+    /**
+     * The end of a feed hold alone (the studio's Resume): unlike {@link #enter} it queues no Enter,
+     * so in step mode the next block still waits for its own.
+     */
+    public void resume() {
+        if (interrupts == 1 && !stop) {
+            interrupts = 0;
+            enters.offer(Boolean.FALSE); // wakes a step wait: it sees the hold ended and waits on
+        }
+    }
+
     /** Stop now (a second Ctrl-C, or {@code q}). */
     public void stop() {
         stop = true;

@@ -56,7 +56,9 @@ final class Controller {
     private double cursor2;
     private final List<Segment> pending = new ArrayList<>();
     /** The last sequence started: each segment's end, counts of path from its start (what AV measures). */
-    private final List<Double> reached = new ArrayList<>();
+    private double[] reached = new double[64];
+    /** How many of {@link #reached} (and {@link #reachedBy}) stand for the last sequence. */
+    private int reachedCount;
     private final List<gcnc.dmc.Source> reachedBy = new ArrayList<>();
     /** The AV trip point the commands after it wait for, counts; -1 when none (at rest after AMS). */
     private long avTrip = -1;
@@ -283,7 +285,7 @@ final class Controller {
             // the sequence has been replayed whole at BGS: what follows acts on the state after it; the
             // trip point must be on its path, or the controller waits there for ever
             if (!afterEnd()) {
-                double total = reached.isEmpty() ? 0 : reached.get(reached.size() - 1);
+                double total = reachedCount == 0 ? 0 : reached[reachedCount - 1];
                 if (c.counts() > total + 1) {
                     out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), Math.round(total));
                 }
@@ -518,14 +520,17 @@ final class Controller {
         // leaves the axes at the nearest count, and the next sequence starts from there.
         g1 = Math.rint(cursor1);
         g2 = Math.rint(cursor2);
-        reached.clear();
+        reachedCount = 0;
         reachedBy.clear();
         avTrip = -1;
         double along = 0;
+        if (reached.length < pending.size()) {
+            reached = new double[Math.max(pending.size(), 2 * reached.length)];
+        }
         for (Segment g : pending) {
             along += g.arc() ? g.radius() * Math.toRadians(Math.abs(g.sweepDeg()))
                     : Math.hypot(g.toX() - g.fromX(), g.toZ() - g.fromZ());
-            reached.add(along);
+            reached[reachedCount++] = along; // unboxed: one per replayed segment
             reachedBy.add(g.source());
         }
         // The listener reads the segments during the call and keeps none of them.
@@ -540,13 +545,13 @@ final class Controller {
      * is at their joint).
      */
     private void onTheWay() {
-        if (avTrip < 0 || reached.isEmpty()) {
+        if (avTrip < 0 || reachedCount == 0) {
             return;
         }
         List<gcnc.dmc.Source> around = new ArrayList<>(2);
         double from = 0;
-        for (int k = 0; k < reached.size(); k++) {
-            double to = reached.get(k);
+        for (int k = 0; k < reachedCount; k++) {
+            double to = reached[k];
             if (avTrip >= from - 1 && avTrip <= to + 1 && reachedBy.get(k) != null) {
                 around.add(reachedBy.get(k));
             }

@@ -61,8 +61,8 @@ final class Corners {
         if (reversal && previous != null) {
             // the planner stopped where the path turns back: a corner taken at 0
             Segment first = segs.get(0);
-            note(previous, previousNumber, 0, Math.max(speedOf(previous, speed), speedOf(first, speed)),
-                    Corner.Why.REVERSAL, angle(previous, first), Double.NaN, Double.NaN);
+            note(previous, first, previousNumber, 0, Math.max(speedOf(previous, speed), speedOf(first, speed)),
+                    Corner.Why.REVERSAL, Double.NaN, Double.NaN);
         }
         reversal = false;
         previous = segs.get(segs.size() - 1);
@@ -119,38 +119,44 @@ final class Corners {
         double own = Math.min(junction, cap);
         if (exit >= own - ROUNDING - 0.02 * own) {
             if (junction <= cap) {
-                note(s, number, exit, feed, Corner.Why.JUNCTION, angle(s, next), deviation / countsPerMm, Double.NaN);
+                note(s, next, number, exit, feed, Corner.Why.JUNCTION, deviation / countsPerMm, Double.NaN);
                 return;
             }
             Segment slower = v <= vn ? s : next;
             double o = Math.min(v, vn);
             if (slower.arc() && Math.abs(o - Math.sqrt(acceleration * slower.radius())) <= ROUNDING + 0.01 * o) {
-                note(s, number, exit, feed, Corner.Why.ARC, angle(s, next), Double.NaN, slower.radius() / countsPerMm);
+                note(s, next, number, exit, feed, Corner.Why.ARC, Double.NaN, slower.radius() / countsPerMm);
             }
             return;
         }
         double forward = Math.sqrt(entry * entry + 2 * acceleration * s.length());
         double backward = Math.sqrt(nextExit * nextExit + 2 * acceleration * next.length());
         Segment shortOne = Math.abs(forward - exit) <= Math.abs(backward - exit) ? s : next;
-        note(s, number, exit, feed, Corner.Why.ACCELERATION, angle(s, next), Double.NaN, shortOne.length() / countsPerMm);
+        note(s, next, number, exit, feed, Corner.Why.ACCELERATION, Double.NaN, shortOne.length() / countsPerMm);
     }
 
-    /** A corner at the end of {@code s}, for the report (radius or length in mm as {@code why} has one). */
-    private void note(Segment s, String number, double speed, double feed, Corner.Why why, double angle, double deviationMm,
-                      double mm) {
+    /**
+     * A corner at the end of {@code s} into {@code next}, for the report (radius or length in mm as
+     * {@code why} has one); nothing is made for a corner faster than the slowest kept ones.
+     */
+    private void note(Segment s, Segment next, String number, double speed, double feed, Corner.Why why,
+                      double deviationMm, double mm) {
+        double mmPerMin = speed / countsPerMm * 60;
+        if (!slowest.keeps(mmPerMin)) {
+            return;
+        }
+        double angle = angle(s, next);
         gcnc.dmc.Source src = s.source();
         String file = src == null ? null : src.file();
         int line = src == null ? 0 : src.line();
-        slowest.add(new Corner(file, line, number, speed / countsPerMm * 60, feed / countsPerMm * 60, why, angle,
+        slowest.add(new Corner(file, line, number, mmPerMin, feed / countsPerMm * 60, why, angle,
                 why == Corner.Why.JUNCTION ? deviationMm : Double.NaN, why == Corner.Why.ARC ? mm : Double.NaN,
                 why == Corner.Why.ACCELERATION ? mm : Double.NaN));
     }
 
     /** How far the path turns from {@code a} into {@code b}, degrees. */
     static double angle(Segment a, Segment b) {
-        double[] out = direction(a, false);
-        double[] in = direction(b, true);
-        double dot = Math.max(-1, Math.min(1, out[0] * in[0] + out[1] * in[1]));
+        double dot = Math.max(-1, Math.min(1, dx(a, false) * dx(b, true) + dz(a, false) * dz(b, true)));
         return Math.toDegrees(Math.acos(dot));
     }
 
@@ -160,9 +166,7 @@ final class Corners {
 
     /** The fastest the corner from {@code a} into {@code b} may be taken, at most {@code cap}. */
     double junction(Segment a, Segment b, double cap) {
-        double[] out = direction(a, false);
-        double[] in = direction(b, true);
-        double cos = -(out[0] * in[0] + out[1] * in[1]);
+        double cos = -(dx(a, false) * dx(b, true) + dz(a, false) * dz(b, true));
         if (cos < -0.999999) {
             return cap;
         }
@@ -173,18 +177,26 @@ final class Corners {
         return Math.min(cap, Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf)));
     }
 
-    /** The unit direction of travel at a segment's start or end, machine counts (x, z). */
-    static double[] direction(Segment s, boolean start) {
+    /**
+     * The unit direction of travel at a segment's start or end, machine counts: its x ({@link #dx})
+     * and z ({@link #dz}) parts, computed apart so that a corner check per junction makes no arrays.
+     * A point at angle a of an arc is (cx + r sin a, cz + r cos a); its derivative along the sweep's sign.
+     */
+    static double dx(Segment s, boolean start) {
         if (!s.arc()) {
-            double dx = s.toX() - s.fromX();
-            double dz = s.toZ() - s.fromZ();
-            double len = Math.hypot(dx, dz);
-            return len == 0 ? new double[] {0, 0} : new double[] {dx / len, dz / len};
+            double len = Math.hypot(s.toX() - s.fromX(), s.toZ() - s.fromZ());
+            return len == 0 ? 0 : (s.toX() - s.fromX()) / len;
         }
-        // a point at angle a is (cx + r sin a, cz + r cos a); its derivative along the sweep's sign
-        double a = Math.toRadians(s.startDeg() + (start ? 0 : s.sweepDeg()));
-        double sign = Math.signum(s.sweepDeg());
-        return new double[] {sign * Math.cos(a), -sign * Math.sin(a)};
+        return Math.signum(s.sweepDeg()) * Math.cos(Math.toRadians(s.startDeg() + (start ? 0 : s.sweepDeg())));
+    }
+
+    /** The z part of {@link #dx}'s direction. */
+    static double dz(Segment s, boolean start) {
+        if (!s.arc()) {
+            double len = Math.hypot(s.toX() - s.fromX(), s.toZ() - s.fromZ());
+            return len == 0 ? 0 : (s.toZ() - s.fromZ()) / len;
+        }
+        return -Math.signum(s.sweepDeg()) * Math.sin(Math.toRadians(s.startDeg() + (start ? 0 : s.sweepDeg())));
     }
 
     /** counts/s as mm/min, one decimal. */

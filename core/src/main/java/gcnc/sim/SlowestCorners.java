@@ -21,6 +21,11 @@ final class SlowestCorners {
             Comparator.comparingDouble((Entry e) -> e.corner().speedMmMin()).thenComparingLong(Entry::order).reversed());
     private long order;
 
+    /** Whether a corner taken at {@code mmPerMin} would be kept: not when as many are kept, none faster (ties: the earlier). */
+    boolean keeps(double mmPerMin) {
+        return kept.size() < KEPT || mmPerMin < kept.peek().corner().speedMmMin();
+    }
+
     void add(Corner c) {
         kept.add(new Entry(c, order++));
         if (kept.size() > KEPT) {

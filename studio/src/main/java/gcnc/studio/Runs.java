@@ -295,14 +295,14 @@ final class Runs implements AutoCloseable {
         return state(r);
     }
 
-    /** POST /api/run/resume: the end of a feed hold, as Enter. */
+    /** POST /api/run/resume: the end of a feed hold (in step mode the next block still waits for Step). */
     private JsonObject resume() throws Http.Fail {
         Run r = running();
         synchronized (r) {
             if (!r.operator.held()) {
                 throw new Http.Fail(409, "the run is not held");
             }
-            r.operator.enter();
+            r.operator.resume();
         }
         return state(r);
     }
