@@ -159,6 +159,40 @@ class RunStreamTest {
         assertTrue(simulated.get(0).contains(" 0 findings"), simulated.get(0));
     }
 
+    /**
+     * Behind {@code -PlongRun} (about 25 s): a CAM finishing program of 100,356 blocks (250 passes of
+     * 399 chords) compiled to the stream form and streamed to the virtual Galil over loopback TCP to
+     * its end; every sequence the simulator replays from the two files ran on the controller.
+     */
+    @Test
+    void aHundredThousandBlockProgramIsStreamedToItsEnd() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(Boolean.getBoolean("gcnc.longRun"), "gradle junitPlatformTest -PlongRun");
+        StringBuilder text = new StringBuilder("%\nO1234 (LONG CAM FINISH)\nG21 G18 G40 G99\nG28 U0. W0.\nT0101\n"
+                + "G97 S1200 M03\nG00 X52. Z2. M08\n");
+        for (int pass = 0, n = 0; n < 100_000; pass++, n += 403) {
+            double d = 50 - (pass % 10) * 0.5;
+            text.append(String.format(java.util.Locale.ROOT, "G00 X%.3f Z1.%nG01 Z0. F0.2%n", d));
+            for (int k = 1; k < 400; k++) {
+                text.append(String.format(java.util.Locale.ROOT, "X%.3f Z%.3f%n", d - 2 + Math.sin(k / 40.0), -k * 0.05));
+            }
+            text.append(String.format(java.util.Locale.ROOT, "G00 X%.3f%nZ1.%n", d + 2));
+        }
+        text.append("G00 X60. Z5. M09\nG28 U0. W0. M05\nM30\n%\n");
+        Path p = part(text.toString());
+        Path trace = p.resolveSibling("run-long.trace");
+        try (VirtualController vc = VirtualController.tcp(0,
+                new VirtualController.Options(model("DMC-4040"), 1000, List.of(), trace))) {
+            homed(vc);
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp",
+                    "127.0.0.1:" + vc.port(), "--poll", "20", "--quiet");
+            assertEquals(0, r.status(), r.all());
+        }
+        String simulated = gcnc("", "simulate", p.resolveSibling("part.stream").toString(), "--machine", "haas").out()
+                .lines().filter(l -> l.startsWith("simulation: ")).findFirst().orElseThrow();
+        long sequences = Long.parseLong(simulated.replaceAll("^simulation: (\\d+) sequences.*", "$1"));
+        assertEquals(sequences, Files.readAllLines(trace).stream().filter(l -> l.startsWith("# end ")).count(), simulated);
+    }
+
     @Test
     void theProgramFormAskedForAProgramThatDoesNotFitIsRefusedBeforeAnythingMoves() throws Exception {
         StringBuilder text = new StringBuilder("O4412\nG21 G99\nT0101\nG97 S1200 M03\nG00 X19. Z2.\nG01 Z0. F0.3\n");
