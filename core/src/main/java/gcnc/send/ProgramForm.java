@@ -252,8 +252,7 @@ public final class ProgramForm implements Form {
     /** Polls until thread 0 ends, applying the operator's hold, override and stop between polls. */
     private void follow(Piece piece, Controller c, Progress progress, Operator op)
             throws RunFault, IOException, InterruptedException {
-        boolean held = false;
-        double ratio = 1;
+        FeedHold hold = new FeedHold();
         double[] still = null;
         long stillSince = 0;
         int lastXq = -1;
@@ -264,16 +263,7 @@ public final class ProgramForm implements Form {
                 throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true,
                         progress.executingLine());
             }
-            if (op.held() != held) {
-                held = op.held();
-                ratio = held ? 0 : op.override();
-                c.ratio(ratio);
-                progress.events().accept(new Event.Hold(held, op.override()));
-            } else if (!held && op.override() != ratio) {
-                ratio = op.override();
-                c.ratio(ratio);
-                progress.events().accept(new Event.Hold(false, ratio));
-            }
+            hold.apply(c, progress, op);
             int[] where = c.executingAndSegment();
             int xq = where[0];
             if (xq < 0) {
@@ -295,7 +285,7 @@ public final class ProgramForm implements Form {
             // a sequence that has begun and does not move (the profiler stopped taking segments): no
             // reply tells it, so the axes do; a hold, a dwell and a thread pass's wait for the spindle are not stalls
             Sequence s = progress.program().sequenceAt(progress.executingIndex());
-            boolean inMotion = s != null && !s.isThreadPass() && !held && op.override() > 0;
+            boolean inMotion = s != null && !s.isThreadPass() && !hold.held() && op.override() > 0;
             if (!inMotion || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
                 still = at;
                 stillSince = System.nanoTime();

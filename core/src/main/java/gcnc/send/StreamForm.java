@@ -172,8 +172,7 @@ public final class StreamForm implements Form {
         private final List<Integer> segments = new ArrayList<>();
         /** The last segment's end of the sequence being sent (counts, Galil plane), from the compiled program. */
         private double[] end;
-        private boolean held;
-        private double ratio = 1;
+        private final FeedHold hold = new FeedHold();
         /** Vector buffer slots free as last counted; 0 = ask the controller. */
         private int free;
 
@@ -229,7 +228,7 @@ public final class StreamForm implements Form {
                 long since = System.nanoTime();
                 while (c.client().number("_BGS") != 0) {
                     double[] at = follow();
-                    if (held || op.override() == 0 || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
+                    if (hold.held() || op.override() == 0 || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
                         still = at;
                         since = System.nanoTime();
                     } else if ((System.nanoTime() - since) / 1e9 > stallSeconds) {
@@ -307,16 +306,7 @@ public final class StreamForm implements Form {
                 c.stopAll();
                 throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true, progress.executingLine());
             }
-            if (op.held() != held) {
-                held = op.held();
-                ratio = held ? 0 : op.override();
-                c.ratio(ratio);
-                progress.events().accept(new Event.Hold(held, op.override()));
-            } else if (!held && op.override() != ratio) {
-                ratio = op.override();
-                c.ratio(ratio);
-                progress.events().accept(new Event.Hold(false, ratio));
-            }
+            hold.apply(c, progress, op);
         }
     }
 }
