@@ -78,10 +78,10 @@ public final class Contouring implements Planner {
     @Override
     public void accept(CheckedBlock b, Consumer<Step> out) {
         Stop before = before(b);
-        boolean joins = joinsFirst(b);
         // a new spindle speed alone (G96 following the diameter) is set on the way, not at a stop
-        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !stops(b.before()) && joins
-                && !firstRapid(b);
+        // (whether the block joins is asked last: it plans the block's first motion once more)
+        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !stops(b.before()) && !firstRapid(b)
+                && joinsFirst(b);
         List<Switch> own = List.of();
         if (before != null && !onTheWay) {
             flush(before, out);
@@ -89,7 +89,7 @@ public final class Contouring implements Planner {
         } else if (switches(b.before())) {
             // outputs that may switch on the fly (plan.on_the_fly): where the path reaches the block
             Switch s = new Switch(b, b.before(), false);
-            if (joins) {
+            if (joinsFirst(b)) {
                 own = List.of(s);
             } else if (b.motions().isEmpty() && holding()) {
                 pending.add(s); // between two motions: switched where the next one starts, if it joins

@@ -476,8 +476,11 @@ final class Controller {
         startIfNeeded();
         double e1 = seqStart1 + p;
         double e2 = seqStart2 + q;
+        // made with its speeds (no copy: one per replayed segment)
         add(new Segment(plane.machineX(cursor1, cursor2), plane.machineZ(cursor1, cursor2),
-                plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, instruction), e1, e2, speeds);
+                plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, instruction,
+                speeds.speed() == 0 ? Double.NaN : speeds.speed(), speeds.end() == 0 ? Double.NaN : speeds.end()),
+                e1, e2, Command.Speeds.NONE);
     }
 
     /** CR: an arc of radius r from the start angle through the sweep, degrees. */
