@@ -82,8 +82,7 @@ public final class Compiler {
         BlockSource reader = blocks(source, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         // the arcs the galil dialect could not write within the replay's tolerance: compile's E202/E308 (one verdict)
-        gcnc.sim.ArcVerdict arcs = "galil".equals(settings.dialect()) ? new gcnc.sim.ArcVerdict(settings.profile(), diags)
-                : null;
+        gcnc.sim.ArcVerdict arcs = arcVerdict(settings, diags);
         long blocks = 0;
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
             List<CheckedBlock> checked = checker.check(raw);
@@ -142,8 +141,7 @@ public final class Compiler {
             gcnc.plan.Planner planner = planner(settings);
             // after the first error nothing is written: the arcs are then judged as check judges them (E202,
             // E224/E225 where the writer would have found them), so that both report the same errors
-            gcnc.sim.ArcVerdict arcs = "galil".equals(settings.dialect()) ? new gcnc.sim.ArcVerdict(settings.profile(), diags)
-                    : null;
+            gcnc.sim.ArcVerdict arcs = arcVerdict(settings, diags);
             java.util.function.Consumer<gcnc.plan.Step> lower = step -> dialect.lower(step, collect);
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
@@ -218,6 +216,11 @@ public final class Compiler {
                 flush(lines, out);
             }
         }
+    }
+
+    /** The judge of the arcs the galil dialect writes (E202, E224/E225, E308), or null for the thesis's format. */
+    private static gcnc.sim.ArcVerdict arcVerdict(Settings settings, Diagnostics diags) {
+        return "galil".equals(settings.dialect()) ? new gcnc.sim.ArcVerdict(settings.profile(), diags) : null;
     }
 
     /**

@@ -36,11 +36,11 @@ final class CompileCommand extends RunCommand {
                     + " itself; a device or named pipe is written through, not replaced.")
     Path output;
 
-    @Option(names = "--form", paramLabel = "program|stream",
+    @Option(names = "--form", paramLabel = "program|stream", converter = FormConverter.class,
             description = "program: one program downloaded whole (it must fit the controller's memory); stream: a resident"
                     + " program (OUT) and a segment stream (OUT with extension .stream) a sender feeds the controller."
                     + " Default: program when it fits the profile's Galil model, else stream.")
-    String form;
+    gcnc.dmc.Form form;
 
     @Option(names = "--source-map", description = "Put a Galil comment (NO L<line>) naming the G-code line before each block's directives.")
     boolean sourceMap;
@@ -127,10 +127,7 @@ final class CompileCommand extends RunCommand {
         if (form == null) {
             return Optional.empty();
         }
-        Form f = Form.of(form);
-        if (f == null) {
-            throw new ParameterException(spec.commandLine(), "--form " + form + ": say program or stream");
-        }
+        Form f = form;
         if (f == Form.STREAM && toStdout) {
             throw new ParameterException(spec.commandLine(),
                     "--form stream writes two files (the resident program and the stream): name the output with -o");

@@ -97,10 +97,10 @@ final class SendCommand implements Callable<Integer> {
             description = "Continue an interrupted run at G-code line N (K: its K-th motion), as the stop message printed.")
     String resumeAt;
 
-    @Option(names = "--form", paramLabel = "program|stream",
+    @Option(names = "--form", paramLabel = "program|stream", converter = FormConverter.class,
             description = "program: downloaded whole; stream: a resident program, the rest fed through the command line."
                     + " Default: program when it fits the profile's Galil model, else stream (as gcnc compile chooses).")
-    String form;
+    gcnc.dmc.Form form;
 
     @Option(names = "--dry-run", description = "Everything but motion: connect, pre-flight, download and read back.")
     boolean dryRun;
@@ -165,13 +165,7 @@ final class SendCommand implements Callable<Integer> {
         // 1. the compile, as `gcnc compile` does it: FILE.dmc (and FILE.stream in the stream form) with their
         // maps, written only when clean; the instructions kept as they come, so that what is sent is what
         // the compiler made
-        Optional<gcnc.dmc.Form> asked = Optional.ofNullable(form).map(f -> {
-            gcnc.dmc.Form x = gcnc.dmc.Form.of(f);
-            if (x == null) {
-                throw new ParameterException(spec.commandLine(), "--form " + f + ": say program or stream");
-            }
-            return x;
-        });
+        Optional<gcnc.dmc.Form> asked = Optional.ofNullable(form);
         Path dmc = DmcOutputs.defaultOutput(file);
         List<Instruction> compiled = new ArrayList<>();
         DmcProgram program;

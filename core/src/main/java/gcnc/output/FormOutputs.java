@@ -84,7 +84,7 @@ public final class FormOutputs implements AutoCloseable {
      * form only.
      */
     public Consumer<Instruction> sink(Optional<Form> asked, ControllerLimits limits) {
-        Consumer<Instruction> toDmc = dmcMap.wrap(i -> dmc.dmcLine(DmcPrinter.print(i.command())));
+        Consumer<Instruction> toDmc = programSink();
         if (stream == null) {
             choice = new FormChoice(Optional.of(Form.PROGRAM), limits, toDmc, i -> { });
         } else {

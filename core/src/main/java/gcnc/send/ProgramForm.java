@@ -253,8 +253,7 @@ public final class ProgramForm implements Form {
     private void follow(Piece piece, Controller c, Progress progress, Operator op)
             throws RunFault, IOException, InterruptedException {
         FeedHold hold = new FeedHold();
-        double[] still = null;
-        long stillSince = 0;
+        StallWatch stall = new StallWatch(stallSeconds);
         int lastXq = -1;
         while (true) {
             if (op.stopped()) {
@@ -282,19 +281,12 @@ public final class ProgramForm implements Form {
             lastXq = xq;
             double[] at = c.position();
             progress.at(executing(piece, xq, where[1], progress.program()), at, op);
-            // a sequence that has begun and does not move (the profiler stopped taking segments): no
-            // reply tells it, so the axes do; a hold, a dwell and a thread pass's wait for the spindle are not stalls
+            // a hold, a dwell and a thread pass's wait for the spindle are not stalls
             Sequence s = progress.program().sequenceAt(progress.executingIndex());
-            boolean inMotion = s != null && !s.isThreadPass() && !hold.held() && op.override() > 0;
-            if (!inMotion || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
-                still = at;
-                stillSince = System.nanoTime();
-            } else if ((System.nanoTime() - stillSince) / 1e9 > stallSeconds) {
+            if (stall.stalled(at, s != null && !s.isThreadPass() && !hold.held() && op.override() > 0)) {
                 c.stopAll();
                 settled(piece, lastXq, c, progress, op);
-                throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the axes stood still for "
-                        + Math.round(stallSeconds) + " s during line " + progress.executingLine()
-                        + " while its motion had not ended (the controller stopped feeding the sequence)");
+                throw stall.fault(progress.executingLine());
             }
             Thread.sleep(pollMs);
         }

@@ -224,18 +224,12 @@ public final class StreamForm implements Form {
         private void host(Sent s) throws IOException, RunFault, InterruptedException {
             Command cmd = s.command();
             if (cmd instanceof Command.AwaitSequence) {
-                double[] still = null;
-                long since = System.nanoTime();
+                StallWatch stall = new StallWatch(stallSeconds);
                 while (c.client().number("_BGS") != 0) {
                     double[] at = follow();
-                    if (hold.held() || op.override() == 0 || still == null || Math.hypot(at[0] - still[0], at[1] - still[1]) > 1) {
-                        still = at;
-                        since = System.nanoTime();
-                    } else if ((System.nanoTime() - since) / 1e9 > stallSeconds) {
+                    if (stall.stalled(at, !hold.held() && op.override() > 0)) {
                         c.stopAll();
-                        throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the axes stood still for "
-                                + Math.round(stallSeconds) + " s during line " + progress.executingLine()
-                                + " while its motion had not ended (the controller stopped feeding the sequence)");
+                        throw stall.fault(progress.executingLine());
                     }
                     Thread.sleep(pollMs);
                     operator();
