@@ -43,7 +43,7 @@ public final class StreamForm implements Form {
 
     @Override
     public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
-        return split(piece, program).resident().size();
+        return splitOnce(piece, program).resident().size();
     }
 
     /** A command of the run and the compiled program's line it stands for. */
@@ -55,6 +55,18 @@ public final class StreamForm implements Form {
         List<String> residentLines() {
             return resident.stream().map(s -> gcnc.dmc.DmcPrinter.print(s.command())).toList();
         }
+    }
+
+    /** The piece pre-flight counted and the run sends: split once for both. */
+    private Piece splitPiece;
+    private Split splitOfPiece;
+
+    private Split splitOnce(Piece piece, DmcProgram program) {
+        if (piece != splitPiece) {
+            splitOfPiece = split(piece, program);
+            splitPiece = piece;
+        }
+        return splitOfPiece;
     }
 
     /** {@code piece} split as the compile splits a program ({@link StreamSplit}), each command keeping its compiled line. */
@@ -104,7 +116,7 @@ public final class StreamForm implements Form {
     @Override
     public void run(Piece piece, Controller c, Progress progress, Operator op, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
-        Split split = split(piece, progress.program());
+        Split split = splitOnce(piece, progress.program());
         List<String> resident = split.residentLines();
         c.halt();
         GalilClient.Reply dl = c.client().download(resident);
