@@ -86,4 +86,22 @@ public record Blending(boolean on, double deviationMm, Set<Integer> onTheFly) {
             throw new IllegalStateException("checked at load: " + e.getMessage(), e);
         }
     }
+
+    /**
+     * Grbl's junction-deviation speed of a corner (counts/s): {@code cos} is the cosine of the
+     * angle between the incoming and the reversed outgoing direction (-1 straight on, +1 straight
+     * back), for a machine of this {@code acceleration} (counts/s²) and {@code deviation} (counts).
+     * Unbounded straight on, 0 straight back. The planner takes a share of it; the replay holds the
+     * written corners to it (E332): one formula for both.
+     */
+    public static double junctionSpeed(double cos, double acceleration, double deviation) {
+        if (cos < -0.999999) {
+            return Double.POSITIVE_INFINITY;
+        }
+        if (cos > 0.999999) {
+            return 0;
+        }
+        double sinHalf = Math.sqrt(0.5 * (1 - cos));
+        return Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf));
+    }
 }

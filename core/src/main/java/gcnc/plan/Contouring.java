@@ -253,16 +253,9 @@ public final class Contouring implements Planner {
     /** The junction-deviation speed of the corner from {@code a} into {@code b}, at most either's speed. */
     double corner(Path a, Path b) {
         double cos = -(a.exitX() * b.entryX() + a.exitZ() * b.entryZ()); // Grbl: -1 straight on, +1 back
-        double v = Math.min(a.speed(), b.speed());
-        if (cos < -0.999999) {
-            return v;
-        }
-        if (cos > 0.999999) {
-            return 0;
-        }
-        double sinHalf = Math.sqrt(0.5 * (1 - cos));
-        return Math.min(v, MARGIN * Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf)));
+        return Math.min(Math.min(a.speed(), b.speed()), MARGIN * Blending.junctionSpeed(cos, acceleration, deviation));
     }
+
 
     private void flush(Stop stop, Consumer<Step> out) {
         int n = paths.size();

@@ -167,14 +167,7 @@ final class Corners {
     /** The fastest the corner from {@code a} into {@code b} may be taken, at most {@code cap}. */
     double junction(Segment a, Segment b, double cap) {
         double cos = -(dx(a, false) * dx(b, true) + dz(a, false) * dz(b, true));
-        if (cos < -0.999999) {
-            return cap;
-        }
-        if (cos > 0.999999) {
-            return 0;
-        }
-        double sinHalf = Math.sqrt(0.5 * (1 - cos));
-        return Math.min(cap, Math.sqrt(acceleration * deviation * sinHalf / (1 - sinHalf)));
+        return Math.min(cap, gcnc.machine.Blending.junctionSpeed(cos, acceleration, deviation));
     }
 
     /**
