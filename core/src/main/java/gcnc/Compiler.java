@@ -206,10 +206,12 @@ public final class Compiler {
             }
             planner.accept(checked, lower); // into lines: this block's, or a sequence of the blocks before it
             if (sim != null) {
+                // (a block the planner holds back has no lines yet: no copy made for it)
+                List<Instruction> own = lines.isEmpty() ? List.of() : List.copyOf(lines);
                 if (diags.hasErrors()) {
-                    sim.outputOnly(List.copyOf(lines));
+                    sim.outputOnly(own);
                 } else {
-                    sim.block(checked, List.copyOf(lines), !planner.holding());
+                    sim.block(checked, own, !planner.holding());
                 }
                 lines.clear();
             } else {

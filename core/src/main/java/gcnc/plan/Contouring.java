@@ -53,16 +53,23 @@ public final class Contouring implements Planner {
     private final MachineProfile profile;
     private final double acceleration;
     private final double deviation;
+    /*
+     * The held pieces, one entry each in every list and array (paths.size() of them): the block,
+     * the motion's index there, its path, whether its spindle speed is set on the way, the outputs
+     * switched as the tool reaches it (plan.on_the_fly), and its part of its motion and how many
+     * parts it has (SegmentLimit). The numbers are in arrays, not lists of boxes: one piece a motion.
+     */
     private final List<CheckedBlock> blocks = new ArrayList<>();
-    private final List<Integer> motions = new ArrayList<>();
     private final List<Path> paths = new ArrayList<>();
-    private final List<Boolean> spindles = new ArrayList<>();
-    /** The outputs switched as the tool reaches each held motion's start (plan.on_the_fly). */
     private final List<List<Switch>> switchesAt = new ArrayList<>();
+    private int[] motions = new int[16];
+    private boolean[] spindles = new boolean[16];
+    private int[] parts = new int[16];
+    private int[] partCounts = new int[16];
     /** Outputs on the fly after the last held motion: they go with the next motion if it joins, else at rest. */
     private final List<Switch> pending = new ArrayList<>();
-    /** Each held piece's part of its motion and how many parts it has ({@link SegmentLimit}). */
-    private final List<int[]> parts = new ArrayList<>();
+    /** The speeds at the held pieces' starts, worked out at each flush (reused from one to the next). */
+    private double[] entry = new double[16];
     private final Blending blending;
     private final SegmentLimit limit;
     private double length;
@@ -125,17 +132,15 @@ public final class Contouring implements Planner {
                     flush(stop, out);
                 }
             }
-            List<Switch> here = new ArrayList<>(pending);
-            here.addAll(own);
+            List<Switch> here = List.of(); // (none, nearly always: no list made)
+            if (!pending.isEmpty() || !own.isEmpty()) {
+                here = new ArrayList<>(pending);
+                here.addAll(own);
+            }
             pending.clear();
             own = List.of();
             for (int k = 0; k < n; k++) {
-                blocks.add(b);
-                motions.add(i);
-                parts.add(new int[] {k, n});
-                paths.add(n == 1 ? p : p.part(n));
-                spindles.add(onTheWay && k == 0);
-                switchesAt.add(k == 0 ? here : List.of());
+                hold(b, i, n == 1 ? p : p.part(n), onTheWay && k == 0, k == 0 ? here : List.of(), k, n);
             }
             onTheWay = false;
             length += p.length();
@@ -148,7 +153,7 @@ public final class Contouring implements Planner {
         }
         if (switches(b.after())) {
             int held = paths.size();
-            boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions.get(held - 1) == ms.size() - 1;
+            boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions[held - 1] == ms.size() - 1;
             if (!stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
                 // the block's end on the fly: where the next motion starts, if it joins
                 pending.add(new Switch(b, b.after(), true));
@@ -157,6 +162,25 @@ public final class Contouring implements Planner {
                 out.accept(new Step.After(b));
             }
         }
+    }
+
+    /** Holds one more piece: part {@code part} of {@code count} of motion {@code motion} of {@code b}. */
+    private void hold(CheckedBlock b, int motion, Path p, boolean spindle, List<Switch> switches, int part, int count) {
+        int at = paths.size();
+        if (at == motions.length) {
+            int size = 2 * at;
+            motions = java.util.Arrays.copyOf(motions, size);
+            spindles = java.util.Arrays.copyOf(spindles, size);
+            parts = java.util.Arrays.copyOf(parts, size);
+            partCounts = java.util.Arrays.copyOf(partCounts, size);
+        }
+        blocks.add(b);
+        paths.add(p);
+        switchesAt.add(switches);
+        motions[at] = motion;
+        spindles[at] = spindle;
+        parts[at] = part;
+        partCounts[at] = count;
     }
 
     @Override
@@ -264,7 +288,12 @@ public final class Contouring implements Planner {
             return;
         }
         // entry[i]: the speed at the start of motion i; entry[n]: at the end of the last (rest)
-        double[] entry = new double[n + 1];
+        if (entry.length < n + 1) {
+            entry = new double[Math.max(n + 1, 2 * entry.length)];
+        }
+        double[] entry = this.entry; // reused: every entry up to n is written below
+        entry[0] = 0;
+        entry[n] = 0;
         for (int i = 1; i < n; i++) {
             entry[i] = corner(paths.get(i - 1), paths.get(i));
         }
@@ -274,19 +303,16 @@ public final class Contouring implements Planner {
         for (int i = 1; i < n; i++) { // forward pass: each corner one can reach
             entry[i] = Math.min(entry[i], Math.sqrt(entry[i - 1] * entry[i - 1] + 2 * acceleration * usable(i - 1)));
         }
-        List<Piece> pieces = new ArrayList<>(n);
+        Piece[] pieces = new Piece[n];
         for (int i = 0; i < n; i++) {
-            pieces.add(new Piece(blocks.get(i), motions.get(i), paths.get(i).speed(), entry[i + 1],
-                    paths.get(i).length(), spindles.get(i), switchesAt.get(i), parts.get(i)[0], parts.get(i)[1]));
+            pieces[i] = new Piece(blocks.get(i), motions[i], paths.get(i).speed(), entry[i + 1],
+                    paths.get(i).length(), spindles[i], switchesAt.get(i), parts[i], partCounts[i]);
         }
-        spindles.clear();
-        parts.clear();
         switchesAt.clear();
         blocks.clear();
-        motions.clear();
         paths.clear();
         length = 0;
-        out.accept(new Step.Group(pieces, stop));
+        out.accept(new Step.Group(List.of(pieces), stop)); // (one copy; the group keeps that list)
         release(out);
     }
 

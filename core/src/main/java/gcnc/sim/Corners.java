@@ -52,9 +52,9 @@ final class Corners {
 
     /**
      * Checks a sequence's corners and notes the slow ones. {@code numbers}: the N word of each
-     * segment's block (null entries, or null, where none is known).
+     * segment's block by the segment's index (null where none is known), or null; asked during the call only.
      */
-    void check(List<Segment> segs, double speed, int line, String[] numbers) {
+    void check(List<Segment> segs, double speed, int line, java.util.function.IntFunction<String> numbers) {
         if (segs.isEmpty()) {
             return;
         }
@@ -66,7 +66,7 @@ final class Corners {
         }
         reversal = false;
         previous = segs.get(segs.size() - 1);
-        previousNumber = numbers == null ? null : numbers[segs.size() - 1];
+        previousNumber = numbers == null ? null : numbers.apply(segs.size() - 1);
         boolean blended = false;
         for (Segment s : segs) {
             blended = blended || !Double.isNaN(s.speed()) || !Double.isNaN(s.end());
@@ -75,29 +75,35 @@ final class Corners {
             return; // one segment, or a sequence without speeds of its own (a geared pass, an arc and its closing move)
         }
         double entry = 0;
+        // each segment's length and the junction's cosine worked out once (a hypot each), not per use
+        double length = segs.get(0).length();
         for (int k = 0; k < segs.size(); k++) {
             Segment s = segs.get(k);
             int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
             double v = Double.isNaN(s.speed()) ? speed : s.speed();
             boolean last = k == segs.size() - 1;
             double exit = last ? 0 : Double.isNaN(s.end()) ? v : s.end();
+            double nextLength = last ? 0 : segs.get(k + 1).length();
             // a segment of a count or two (an arc's closing move) is a rounding, not a corner of the path
-            if (!last && s.length() > TINY && segs.get(k + 1).length() > TINY) {
-                double limit = junction(s, segs.get(k + 1), Math.min(v, speedOf(segs.get(k + 1), speed)));
+            if (!last && length > TINY && nextLength > TINY) {
+                Segment next = segs.get(k + 1);
+                double junction = Blending.junctionSpeed(cosine(s, next), acceleration, deviation);
+                double limit = Math.min(Math.min(v, speedOf(next, speed)), junction);
                 if (exit > limit + ROUNDING) {
                     out.report(Code.E332_SIM_CORNER_TOO_FAST, at, perMinute(exit), perMinute(limit));
                 }
-                Segment next = segs.get(k + 1);
                 double nextExit = k + 1 == segs.size() - 1 ? 0 : Double.isNaN(next.end()) ? speedOf(next, speed) : next.end();
-                classify(s, next, numbers == null ? null : numbers[k], v, speedOf(next, speed), entry, exit, nextExit);
+                classify(s, next, length, nextLength, junction, numbers, k, v,
+                        speedOf(next, speed), entry, exit, nextExit);
             }
             double change = Math.abs(entry * entry - exit * exit);
             double peak = Math.max(entry, exit) + ROUNDING;
-            if (change > 2 * acceleration * s.length() + 2 * peak * ROUNDING) {
+            if (change > 2 * acceleration * length + 2 * peak * ROUNDING) {
                 out.report(Code.E333_SIM_SPEED_CHANGE_TOO_SHORT, at, perMinute(entry), perMinute(exit),
-                        MotionChecks.mm(s.length() / countsPerMm));
+                        MotionChecks.mm(length / countsPerMm));
             }
             entry = exit;
+            length = nextLength;
         }
     }
 
@@ -108,37 +114,45 @@ final class Corners {
      * brought it down). A corner at the faster move's speed is not slowed; one at a lower feed of
      * the next move is the program's, not the machine's.
      */
-    private void classify(Segment s, Segment next, String number, double v, double vn, double entry, double exit,
-                          double nextExit) {
+    private void classify(Segment s, Segment next, double length, double nextLength, double fullJunction,
+                          java.util.function.IntFunction<String> numbers, int k, double v, double vn, double entry,
+                          double exit, double nextExit) {
         double feed = Math.max(v, vn);
         if (exit >= feed - ROUNDING) {
             return;
         }
         double cap = Math.min(v, vn);
-        double junction = MARGIN * junction(s, next, Double.POSITIVE_INFINITY);
+        double junction = MARGIN * fullJunction;
         double own = Math.min(junction, cap);
         if (exit >= own - ROUNDING - 0.02 * own) {
             if (junction <= cap) {
-                note(s, next, number, exit, feed, Corner.Why.JUNCTION, deviation / countsPerMm, Double.NaN);
+                note(s, next, numbers, k, exit, feed, Corner.Why.JUNCTION, deviation / countsPerMm, Double.NaN);
                 return;
             }
             Segment slower = v <= vn ? s : next;
             double o = Math.min(v, vn);
             if (slower.arc() && Math.abs(o - Math.sqrt(acceleration * slower.radius())) <= ROUNDING + 0.01 * o) {
-                note(s, next, number, exit, feed, Corner.Why.ARC, Double.NaN, slower.radius() / countsPerMm);
+                note(s, next, numbers, k, exit, feed, Corner.Why.ARC, Double.NaN, slower.radius() / countsPerMm);
             }
             return;
         }
-        double forward = Math.sqrt(entry * entry + 2 * acceleration * s.length());
-        double backward = Math.sqrt(nextExit * nextExit + 2 * acceleration * next.length());
-        Segment shortOne = Math.abs(forward - exit) <= Math.abs(backward - exit) ? s : next;
-        note(s, next, number, exit, feed, Corner.Why.ACCELERATION, Double.NaN, shortOne.length() / countsPerMm);
+        double forward = Math.sqrt(entry * entry + 2 * acceleration * length);
+        double backward = Math.sqrt(nextExit * nextExit + 2 * acceleration * nextLength);
+        double shortOne = Math.abs(forward - exit) <= Math.abs(backward - exit) ? length : nextLength;
+        note(s, next, numbers, k, exit, feed, Corner.Why.ACCELERATION, Double.NaN, shortOne / countsPerMm);
     }
 
     /**
      * A corner at the end of {@code s} into {@code next}, for the report (radius or length in mm as
      * {@code why} has one); nothing is made for a corner faster than the slowest kept ones.
      */
+    private void note(Segment s, Segment next, java.util.function.IntFunction<String> numbers, int k, double speed,
+                      double feed, Corner.Why why, double deviationMm, double mm) {
+        if (slowest.keeps(speed / countsPerMm * 60)) { // (the N word looked up only for a corner kept)
+            note(s, next, numbers == null ? null : numbers.apply(k), speed, feed, why, deviationMm, mm);
+        }
+    }
+
     private void note(Segment s, Segment next, String number, double speed, double feed, Corner.Why why,
                       double deviationMm, double mm) {
         double mmPerMin = speed / countsPerMm * 60;
@@ -164,10 +178,12 @@ final class Corners {
         return Double.isNaN(s.speed()) ? speed : s.speed();
     }
 
-    /** The fastest the corner from {@code a} into {@code b} may be taken, at most {@code cap}. */
-    double junction(Segment a, Segment b, double cap) {
-        double cos = -(dx(a, false) * dx(b, true) + dz(a, false) * dz(b, true));
-        return Math.min(cap, gcnc.machine.Blending.junctionSpeed(cos, acceleration, deviation));
+    /**
+     * The junction's cosine as Grbl takes it (-1 straight on, +1 straight back), from which
+     * {@link Blending#junctionSpeed} gives the fastest the corner from {@code a} into {@code b} may be taken.
+     */
+    private static double cosine(Segment a, Segment b) {
+        return -(dx(a, false) * dx(b, true) + dz(a, false) * dz(b, true));
     }
 
     /**

@@ -156,27 +156,16 @@ public final class Simulator {
 
     public SimReport report() {
         java.util.Map<String, Integer> byReason = new java.util.LinkedHashMap<>();
-        for (var e : stops.entrySet()) {
-            byReason.put(e.getKey().key(), e.getValue());
+        for (gcnc.plan.Stop why : gcnc.plan.Stop.values()) {
+            if (stops[why.ordinal()] > 0) {
+                byReason.put(why.key(), stops[why.ordinal()]);
+            }
         }
         return checks.report(findings).withCorners(corners.slowest.slowest(), SlowestCorners.KEPT).withStops(byReason);
     }
 
     /** How many sequences ended for each reason (the planner's, carried by AMS), in the reasons' order. */
-    private final java.util.Map<gcnc.plan.Stop, Integer> stops = new java.util.EnumMap<>(gcnc.plan.Stop.class);
-
-    /** The N word of each segment's block (null where it has none or none is known), for the corner report. */
-    private static String[] numbers(int n, List<Expected> meant, List<int[]> runs) {
-        if (meant.isEmpty()) {
-            return null;
-        }
-        String[] numbers = new String[n];
-        for (int k = 0; k < meant.size(); k++) {
-            gcnc.ir.ProgramFrame f = meant.get(k).block().frame();
-            java.util.Arrays.fill(numbers, runs.get(k)[0], runs.get(k)[1], f == null ? null : f.number());
-        }
-        return numbers;
-    }
+    private final int[] stops = new int[gcnc.plan.Stop.values().length];
 
     private void run(List<Instruction> lines) {
         for (Instruction i : lines) {
@@ -199,15 +188,16 @@ public final class Simulator {
      * that do not move (G28 U0 W0's intermediate point, an arc shorter than a count), which the
      * backend may leave out. A motion that moves and was left out is E311 at its block.
      */
-    private Expected match(gcnc.dmc.Source source, List<Segment> run) {
+    private Expected match(gcnc.dmc.Source source, Segment first, Segment last) {
         while (!expected.isEmpty()) {
             Expected e = expected.peek();
             // the motion the run names (a hand-made DMC line names none, -1: its block's next one); a
             // motion that does not move is the run only when the run does not move either, since the
             // backend may have left it out and the next block's motion can have the same line and index
-            boolean named = (source == null || source.motion() < 0 || e.index() == source.motion())
-                    && (!standing(e.motion()) || sameDisplacement(run, e.motion()));
-            if (source != null && e.block().line() == source.line() && named
+            // (asked in this order: the line first, the geometry only for a motion on that line)
+            if (source != null && e.block().line() == source.line()
+                    && (source.motion() < 0 || e.index() == source.motion())
+                    && (!standing(e.motion()) || sameDisplacement(first, last, e.motion()))
                     && java.util.Objects.equals(e.block().origin().file(), source.file())) {
                 expected.poll();
                 e.done()[0]++;
@@ -235,35 +225,23 @@ public final class Simulator {
      */
     private boolean standing(Motion m) {
         double tol = options.tolerance();
-        return m.accept(new Motion.Visitor<Boolean>() {
-            @Override
-            public Boolean linear(Motion.Linear l) {
-                return distance(l.from(), l.to()) <= tol;
-            }
-
-            @Override
-            public Boolean thread(Motion.Thread t) {
-                return distance(t.from(), t.to()) <= tol;
-            }
-
-            @Override
-            public Boolean dwell(Motion.Dwell d) {
-                return true;
-            }
-
-            @Override
-            public Boolean arc(Motion.Arc a) {
-                return distance(a.from(), a.to()) <= tol
-                        && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
-                                || Conformance.pointLike(a, tol));
-            }
-        });
+        // a pattern per kind, not a visitor: asked for every motion matched, it makes no object
+        if (m instanceof Motion.Linear l) {
+            return distance(l.from(), l.to()) <= tol;
+        }
+        if (m instanceof Motion.Thread t) {
+            return distance(t.from(), t.to()) <= tol;
+        }
+        if (m instanceof Motion.Arc a) {
+            return distance(a.from(), a.to()) <= tol
+                    && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
+                            || Conformance.pointLike(a, tol));
+        }
+        return true; // a dwell
     }
 
-    /** Whether the segments move as the motion moves, within the tolerance. */
-    private boolean sameDisplacement(List<Segment> run, Motion m) {
-        Segment first = run.get(0);
-        Segment last = run.get(run.size() - 1);
+    /** Whether the segments from {@code first} to {@code last} move as the motion moves, within the tolerance. */
+    private boolean sameDisplacement(Segment first, Segment last, Motion m) {
         Point from = m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Arc a ? a.from() : ((Motion.Thread) m).from();
         Point to = m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Arc a ? a.to() : ((Motion.Thread) m).to();
         return Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
@@ -296,9 +274,10 @@ public final class Simulator {
     private final class Events implements Controller.Listener {
         @Override
         public void sequence(List<Segment> segments, double speed, int line) {
-            // the runs of segments from one motion each, and the motions they carry out
-            List<Expected> meant = new ArrayList<>(1);
-            List<int[]> runs = new ArrayList<>(1);
+            // the runs of segments from one motion each, and the motions they carry out (kept in
+            // fields, reused from one sequence to the next: a sequence is a handful of segments)
+            meant.clear();
+            int runs = 0;
             if (expected != null) {
                 for (int i = 0; i < segments.size(); ) {
                     gcnc.dmc.Source from = segments.get(i).source();
@@ -306,12 +285,18 @@ public final class Simulator {
                     while (j < segments.size() && java.util.Objects.equals(segments.get(j).source(), from)) {
                         j++;
                     }
-                    Expected e = match(from, segments.subList(i, j));
+                    Expected e = match(from, segments.get(i), segments.get(j - 1));
                     if (e == null) {
                         report(Code.E311_SIM_SEQUENCE_COUNT, line, 0, 1); // a sequence no motion of the program asked for
                     } else {
                         meant.add(e);
-                        runs.add(new int[] {i, j});
+                        if (runs == runFrom.length) {
+                            runFrom = java.util.Arrays.copyOf(runFrom, 2 * runs);
+                            runTo = java.util.Arrays.copyOf(runTo, 2 * runs);
+                        }
+                        runFrom[runs] = i;
+                        runTo[runs] = j;
+                        runs++;
                     }
                     i = j;
                 }
@@ -324,7 +309,7 @@ public final class Simulator {
                     // a sequence of several blocks: each segment's findings in its own block's coordinates
                     gcnc.ir.ProgramFrame[] frames = new gcnc.ir.ProgramFrame[segments.size()];
                     for (int k = 0; k < meant.size(); k++) {
-                        java.util.Arrays.fill(frames, runs.get(k)[0], runs.get(k)[1], meant.get(k).block().frame());
+                        java.util.Arrays.fill(frames, runFrom[k], runTo[k], meant.get(k).block().frame());
                     }
                     checks.frames(frames);
                 }
@@ -335,7 +320,7 @@ public final class Simulator {
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
             boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
                     stopped || open);
-            corners.check(segments, speed, line, numbers(segments.size(), meant, runs));
+            corners.check(segments, speed, line, meant.isEmpty() ? null : numbers);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
@@ -350,13 +335,32 @@ public final class Simulator {
                 Expected e = meant.get(k);
                 origin = e.block().origin();
                 checks.frame(e.block().frame());
-                List<Segment> run = segments.subList(runs.get(k)[0], runs.get(k)[1]);
+                List<Segment> run = meant.size() == 1 && runFrom[0] == 0 && runTo[0] == segments.size() ? segments
+                        : segments.subList(runFrom[k], runTo[k]);
                 double[] resync = checks.conformance(e.motion(), run, e.block().line());
                 if (resync != null && k == meant.size() - 1) {
                     dmc.moveTo(resync[0], resync[1]);
                 }
             }
         }
+
+        /** The motions the last sequence carried out, in order, and the segments of each: runFrom[k] to runTo[k]. */
+        private final List<Expected> meant = new ArrayList<>();
+        private int[] runFrom = new int[8];
+        private int[] runTo = new int[8];
+        /**
+         * The N word of the last sequence's segment k (null where its block has none, or no motion
+         * asked for it), for the corner report, which asks only for the corners it keeps.
+         */
+        private final java.util.function.IntFunction<String> numbers = k -> {
+            for (int r = 0; r < meant.size(); r++) {
+                if (k >= runFrom[r] && k < runTo[r]) {
+                    gcnc.ir.ProgramFrame f = meant.get(r).block().frame();
+                    return f == null ? null : f.number();
+                }
+            }
+            return null;
+        };
 
         @Override
         public void dwell(double seconds, int line) {
@@ -393,7 +397,7 @@ public final class Simulator {
         @Override
         public void stopped(gcnc.plan.Stop why, int line) {
             corners.stopped(why);
-            stops.merge(why, 1, Integer::sum);
+            stops[why.ordinal()]++;
         }
 
         /**
