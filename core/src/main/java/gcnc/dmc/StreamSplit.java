@@ -142,7 +142,9 @@ public final class StreamSplit implements Consumer<Instruction> {
             routineLabels++;
             send(new Instruction(new Command.Call(label), at));
         } else if (!runEmbeds) {
-            run.forEach(this::send);
+            for (int k = 0; k < run.size(); k++) { // (a loop, not forEach: no lambda per block)
+                send(run.get(k));
+            }
         }
         run.clear();
         runEmbeds = false;

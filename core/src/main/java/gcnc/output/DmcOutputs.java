@@ -133,18 +133,36 @@ public final class DmcOutputs implements AutoCloseable {
      * file that can be read, its SHA-256 ({@code # source sha256 <hex>}); nothing when there is no map.
      */
     public void mapSource(String name, Path program) {
+        if (map != null) {
+            mapSource(name, programHash(program));
+        }
+    }
+
+    /**
+     * The map's head with the program's SHA-256 already worked out ({@link #programHash}; null: none),
+     * so that the maps of one compile (the stream form's two) hash the program once.
+     */
+    void mapSource(String name, String programHash) {
         if (map == null) {
             return;
         }
         map.line(gcnc.dmc.SourceMap.sourceLine(name));
+        if (programHash != null) {
+            map.line(gcnc.dmc.SourceMap.SOURCE_HASH + programHash);
+        }
+    }
+
+    /** The SHA-256 of the program for the map's head, or null when it has none (not a regular file, unreadable). */
+    static String programHash(Path program) {
         // a regular file only: a named pipe would be drained here and the compile would wait for it forever
         if (program != null && Files.isRegularFile(program)) {
             try {
-                map.line(gcnc.dmc.SourceMap.SOURCE_HASH + sha256(program));
+                return sha256(program);
             } catch (IOException e) {
                 // the program was read a moment ago; without its hash the map still names it
             }
         }
+        return null;
     }
 
     /**

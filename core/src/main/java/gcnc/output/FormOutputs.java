@@ -72,9 +72,13 @@ public final class FormOutputs implements AutoCloseable {
 
     /** The maps' heads: the G-code file's name and SHA-256 ({@link DmcOutputs#mapSource}). */
     public void mapSource(String name, Path program) {
-        dmc.mapSource(name, program);
+        if (!dmc.hasMap() && (stream == null || !stream.hasMap())) {
+            return;
+        }
+        String hash = DmcOutputs.programHash(program); // once for both maps (a read of the whole program)
+        dmc.mapSource(name, hash);
         if (stream != null) {
-            stream.mapSource(name, program);
+            stream.mapSource(name, hash);
         }
     }
 

@@ -180,10 +180,33 @@ final class Corners {
 
     /**
      * The junction's cosine as Grbl takes it (-1 straight on, +1 straight back), from which
-     * {@link Blending#junctionSpeed} gives the fastest the corner from {@code a} into {@code b} may be taken.
+     * {@link Blending#junctionSpeed} gives the fastest the corner from {@code a} into {@code b} may be
+     * taken: {@link #dx} and {@link #dz}'s numbers, each segment's length or angle worked out once.
      */
     private static double cosine(Segment a, Segment b) {
-        return -(dx(a, false) * dx(b, true) + dz(a, false) * dz(b, true));
+        double ax;
+        double az;
+        if (a.arc()) {
+            double t = Math.toRadians(a.startDeg() + a.sweepDeg());
+            ax = Math.signum(a.sweepDeg()) * Math.cos(t);
+            az = -Math.signum(a.sweepDeg()) * Math.sin(t);
+        } else {
+            double len = Math.hypot(a.toX() - a.fromX(), a.toZ() - a.fromZ());
+            ax = len == 0 ? 0 : (a.toX() - a.fromX()) / len;
+            az = len == 0 ? 0 : (a.toZ() - a.fromZ()) / len;
+        }
+        double bx;
+        double bz;
+        if (b.arc()) {
+            double t = Math.toRadians(b.startDeg() + 0); // (+ 0 as dx sums it: the same number to the bit)
+            bx = Math.signum(b.sweepDeg()) * Math.cos(t);
+            bz = -Math.signum(b.sweepDeg()) * Math.sin(t);
+        } else {
+            double len = Math.hypot(b.toX() - b.fromX(), b.toZ() - b.fromZ());
+            bx = len == 0 ? 0 : (b.toX() - b.fromX()) / len;
+            bz = len == 0 ? 0 : (b.toZ() - b.fromZ()) / len;
+        }
+        return -(ax * bx + az * bz);
     }
 
     /**
