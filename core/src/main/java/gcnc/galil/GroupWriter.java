@@ -27,6 +27,12 @@ import java.util.function.Consumer;
 final class GroupWriter {
     private final GalilDialect d;
     private final Consumer<Instruction> sink;
+    /**
+     * Whether the group being written sets anything on the way, so that the written path must be
+     * measured for its trip points; most groups set nothing, and their lengths (a hypot per VP, the
+     * trigonometry of an arc's closing move) are not worked out.
+     */
+    private boolean measuring;
 
     GroupWriter(GalilDialect dialect, Consumer<Instruction> sink) {
         this.d = dialect;
@@ -39,9 +45,14 @@ final class GroupWriter {
         boolean started = false;
         BlockWriter out = null;
         double along = 0; // the path written so far, counts, as the controller measures it for AV
-        java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
-        java.util.List<Double> at = new java.util.ArrayList<>();
         int n = g.pieces().size();
+        measuring = false;
+        for (int k = 0; k < n; k++) {
+            measuring |= g.pieces().get(k).onTheWay();
+        }
+        // the pieces with something on the way and the path before each (none: no lists made)
+        java.util.List<Piece> onTheWay = measuring ? new java.util.ArrayList<>() : java.util.List.of();
+        java.util.List<Double> at = measuring ? new java.util.ArrayList<>() : java.util.List.of();
         for (int k = 0; k < n; k++) {
             Piece p = g.pieces().get(k);
             CheckedBlock b = p.block();
@@ -120,7 +131,7 @@ final class GroupWriter {
         return own;
     }
 
-    /** A VP to {@code to}; its length, counts (0 when nothing is written). */
+    /** A VP to {@code to}; its length, counts (0 when nothing is written or nothing is {@link #measuring}). */
     private double straight(CheckedBlock b, Point to, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
         return straight(b, d.frame().u(to), d.frame().v(to), u0, v0, speeds, out);
     }
@@ -137,7 +148,7 @@ final class GroupWriter {
             return 0; // no move: a segment of no length is TC 30
         }
         out.emit(new Command.VectorPosition(tu - u0, tv - v0, speeds));
-        double written = Math.hypot(tu - d.posU, tv - d.posV);
+        double written = measuring ? Math.hypot(tu - d.posU, tv - d.posV) : 0;
         d.posU = tu;
         d.posV = tv;
         return written;
@@ -161,7 +172,7 @@ final class GroupWriter {
             return 0;
         }
         // the controller's path length of a CR: its radius times its sweep
-        double length = cr.radius() * Math.toRadians(Math.abs(Fixed.fourDecimals(cr.sweep()).value()));
+        double length = measuring ? cr.radius() * Math.toRadians(Math.abs(Fixed.fourDecimals(cr.sweep()).value())) : 0;
         if (!cr.closing()) {
             out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
                     Fixed.fourDecimals(cr.sweep()), speeds));
@@ -171,12 +182,14 @@ final class GroupWriter {
                     Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), speeds.end())));
             out.emit(new Command.VectorPosition(tu - u0, tv - v0,
                     new Command.Speeds(speeds.end() == 0 ? speeds.speed() : speeds.end(), speeds.end())));
-            // the closing move: from where the printed arc ends (its centre behind the start) to the target
-            double theta = Math.toRadians(Fixed.fourDecimals(cr.start()).value());
-            double end = theta + Math.toRadians(Fixed.fourDecimals(cr.sweep()).value());
-            double eu = d.posU - cr.radius() * Math.cos(theta) + cr.radius() * Math.cos(end);
-            double ev = d.posV - cr.radius() * Math.sin(theta) + cr.radius() * Math.sin(end);
-            length += Math.hypot(tu - eu, tv - ev);
+            if (measuring) {
+                // the closing move: from where the printed arc ends (its centre behind the start) to the target
+                double theta = Math.toRadians(Fixed.fourDecimals(cr.start()).value());
+                double end = theta + Math.toRadians(Fixed.fourDecimals(cr.sweep()).value());
+                double eu = d.posU - cr.radius() * Math.cos(theta) + cr.radius() * Math.cos(end);
+                double ev = d.posV - cr.radius() * Math.sin(theta) + cr.radius() * Math.sin(end);
+                length += Math.hypot(tu - eu, tv - ev);
+            }
         }
         d.posU = tu;
         d.posV = tv;
