@@ -54,7 +54,14 @@ final class Controller {
     private double seqStart2;
     private double cursor1;
     private double cursor2;
-    private final List<Segment> pending = new ArrayList<>();
+    private List<Segment> pending = new ArrayList<>();
+    /**
+     * The segments of the last sequence started (the list {@link #pending} was, swapped at BGS: no
+     * copy), kept for the trip points after it, which {@link #measure} works out only when an AV asks.
+     */
+    private List<Segment> last = new ArrayList<>();
+    /** Whether {@link #reached} stands for {@link #last} yet. */
+    private boolean measured = true;
     /** The last sequence started: each segment's end, counts of path from its start (what AV measures). */
     private double[] reached = new double[64];
     /** How many of {@link #reached} (and {@link #reachedBy}) stand for the last sequence. */
@@ -285,6 +292,7 @@ final class Controller {
             // the sequence has been replayed whole at BGS: what follows acts on the state after it; the
             // trip point must be on its path, or the controller waits there for ever
             if (!afterEnd()) {
+                measure();
                 double total = reachedCount == 0 ? 0 : reached[reachedCount - 1];
                 if (c.counts() > total + 1) {
                     out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), Math.round(total));
@@ -523,23 +531,36 @@ final class Controller {
         // leaves the axes at the nearest count, and the next sequence starts from there.
         g1 = Math.rint(cursor1);
         g2 = Math.rint(cursor2);
+        avTrip = -1;
+        // The listener reads the segments during the call and keeps none of them.
+        out.sequence(pending, speed, line);
+        // kept for the trip points after it (the path lengths only when an AV asks: most sequences have none)
+        List<Segment> free = last;
+        last = pending;
+        measured = false;
+        pending = free;
+        pending.clear();
+        feedMarked = false;
+    }
+
+    /** Each segment's end in the last sequence started, counts of path from its start (what AV measures). */
+    private void measure() {
+        if (measured) {
+            return;
+        }
+        measured = true;
         reachedCount = 0;
         reachedBy.clear();
-        avTrip = -1;
         double along = 0;
-        if (reached.length < pending.size()) {
-            reached = new double[Math.max(pending.size(), 2 * reached.length)];
+        if (reached.length < last.size()) {
+            reached = new double[Math.max(last.size(), 2 * reached.length)];
         }
-        for (Segment g : pending) {
+        for (Segment g : last) {
             along += g.arc() ? g.radius() * Math.toRadians(Math.abs(g.sweepDeg()))
                     : Math.hypot(g.toX() - g.fromX(), g.toZ() - g.fromZ());
             reached[reachedCount++] = along; // unboxed: one per replayed segment
             reachedBy.add(g.source());
         }
-        // The listener reads the segments during the call and keeps none of them.
-        out.sequence(pending, speed, line);
-        pending.clear();
-        feedMarked = false;
     }
 
     /**
@@ -548,7 +569,11 @@ final class Controller {
      * is at their joint).
      */
     private void onTheWay() {
-        if (avTrip < 0 || reachedCount == 0) {
+        if (avTrip < 0) {
+            return;
+        }
+        measure();
+        if (reachedCount == 0) {
             return;
         }
         List<gcnc.dmc.Source> around = new ArrayList<>(2);
