@@ -99,7 +99,7 @@ public final class StreamSplit implements Consumer<Instruction> {
             runStreamed = false;
         }
         run.add(i);
-        if (StreamRole.of(i.command()) == StreamRole.EMBED) {
+        if (role(i.command()) == StreamRole.EMBED) {
             if (!runEmbeds && runStreamed) {
                 tooLong(runSource); // the block's first commands went to the stream already
             }
@@ -116,6 +116,23 @@ public final class StreamSplit implements Consumer<Instruction> {
             runStreamed = true;
         }
     }
+
+    /**
+     * The command's {@link StreamRole}, remembered per kind of command: every role is its command
+     * kind's (StreamRole's visitor answers each kind with a constant), and a kind's answer looked up
+     * in a small map costs less than a visit per instruction (three million for a million blocks).
+     */
+    private StreamRole role(Command c) {
+        Class<?> kind = c.getClass();
+        StreamRole r = roles.get(kind);
+        if (r == null) {
+            r = StreamRole.of(c);
+            roles.put(kind, r);
+        }
+        return r;
+    }
+
+    private final java.util.Map<Class<?>, StreamRole> roles = new java.util.IdentityHashMap<>();
 
     private void tooLong(Source s) {
         if (!tooLong.contains(s)) {

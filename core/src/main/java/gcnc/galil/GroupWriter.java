@@ -46,13 +46,11 @@ final class GroupWriter {
         BlockWriter out = null;
         double along = 0; // the path written so far, counts, as the controller measures it for AV
         int n = g.pieces().size();
-        measuring = false;
-        for (int k = 0; k < n; k++) {
-            measuring |= g.pieces().get(k).onTheWay();
-        }
-        // the pieces with something on the way and the path before each (none: no lists made)
-        java.util.List<Piece> onTheWay = measuring ? new java.util.ArrayList<>() : java.util.List.of();
-        java.util.List<Double> at = measuring ? new java.util.ArrayList<>() : java.util.List.of();
+        measuring = g.onTheWay();
+        // the pieces with something on the way and the path before each (always array lists: a group
+        // that measures after many that do not must not meet another list type in compiled code)
+        java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
+        java.util.List<Double> at = new java.util.ArrayList<>();
         for (int k = 0; k < n; k++) {
             Piece p = g.pieces().get(k);
             CheckedBlock b = p.block();

@@ -21,9 +21,19 @@ import java.util.Optional;
  */
 public final class ControllerLimits {
     private final GalilModel model;
+    /**
+     * The model's range of each limit by its ordinal, looked up once: a compile checks several
+     * numbers per block (each a look-up in the model's maps otherwise).
+     */
+    private final Range[] ranges;
 
     public ControllerLimits(GalilModel model) {
         this.model = model;
+        Limit[] all = Limit.values();
+        this.ranges = new Range[all.length];
+        for (Limit l : all) {
+            ranges[l.ordinal()] = model.range(l);
+        }
     }
 
     public GalilModel model() {
@@ -153,7 +163,7 @@ public final class ControllerLimits {
      * the smallest step is left for {@link #acceleration} to refuse.
      */
     public Rounded roundAcceleration(long countsPerSecondSquared) {
-        Range r = model.range(Limit.ACCELERATION);
+        Range r = ranges[Limit.ACCELERATION.ordinal()];
         long taken = countsPerSecondSquared < r.step() ? countsPerSecondSquared
                 : Math.floorDiv(countsPerSecondSquared, r.step()) * r.step();
         return new Rounded(Limit.ACCELERATION, countsPerSecondSquared, taken, r.step(), model, Code.E235_ACCELERATION_ROUNDED);
@@ -165,7 +175,7 @@ public final class ControllerLimits {
      * speed is not documented). A value below the step is left for the range check.
      */
     public Rounded roundSpeed(long countsPerSecond) {
-        Range r = model.range(Limit.VECTOR_SPEED);
+        Range r = ranges[Limit.VECTOR_SPEED.ordinal()];
         long taken = countsPerSecond < r.step() ? countsPerSecond : Math.floorDiv(countsPerSecond, r.step()) * r.step();
         return new Rounded(Limit.VECTOR_SPEED, countsPerSecond, taken, r.step(), model, Code.E236_SPEED_ROUNDED);
     }
@@ -175,7 +185,7 @@ public final class ControllerLimits {
      * shorter than programmed (a dwell is a minimum: the chip breaks, the spindle reaches speed).
      */
     public Rounded roundDwell(long ms) {
-        Range r = model.range(Limit.DWELL);
+        Range r = ranges[Limit.DWELL.ordinal()];
         long taken = Math.floorDiv(ms + r.step() - 1, r.step()) * r.step();
         return new Rounded(Limit.DWELL, ms, taken, r.step(), model, Code.E237_DWELL_ROUNDED);
     }
@@ -191,7 +201,7 @@ public final class ControllerLimits {
     }
 
     private Optional<Violation> check(Limit limit, double value) {
-        Range r = model.range(limit);
+        Range r = ranges[limit.ordinal()];
         return r.holds(value, limit.below()) ? Optional.empty() : Optional.of(new Violation(limit, value, r, model));
     }
 

@@ -68,6 +68,8 @@ public final class Contouring implements Planner {
     private int[] partCounts = new int[16];
     /** Outputs on the fly after the last held motion: they go with the next motion if it joins, else at rest. */
     private final List<Switch> pending = new ArrayList<>();
+    /** Whether any held piece sets something on the way (its spindle speed, outputs). */
+    private boolean heldOnTheWay;
     /** The speeds at the held pieces' starts, worked out at each flush (reused from one to the next). */
     private double[] entry = new double[16];
     private final Blending blending;
@@ -177,6 +179,7 @@ public final class Contouring implements Planner {
         blocks.add(b);
         paths.add(p);
         switchesAt.add(switches);
+        heldOnTheWay |= spindle || !switches.isEmpty(); // (Piece#onTheWay, kept as the pieces are held)
         motions[at] = motion;
         spindles[at] = spindle;
         parts[at] = part;
@@ -312,7 +315,8 @@ public final class Contouring implements Planner {
         blocks.clear();
         paths.clear();
         length = 0;
-        out.accept(new Step.Group(List.of(pieces), stop)); // (one copy; the group keeps that list)
+        out.accept(new Step.Group(List.of(pieces), stop, heldOnTheWay)); // (one copy; the group keeps that list)
+        heldOnTheWay = false;
         release(out);
     }
 

@@ -18,10 +18,28 @@ public sealed interface Step {
     record Alone(CheckedBlock block, int motion) implements Step {
     }
 
-    /** Path motions the machine runs in one vector sequence without stopping, and why it stops after them. */
-    record Group(List<Piece> pieces, Stop stop) implements Step {
+    /**
+     * Path motions the machine runs in one vector sequence without stopping, and why it stops after
+     * them; {@code onTheWay}: whether any piece sets something as the tool reaches it
+     * ({@link Piece#onTheWay}), so that the emitter measures the written path for its trip points.
+     */
+    record Group(List<Piece> pieces, Stop stop, boolean onTheWay) implements Step {
         public Group {
             pieces = List.copyOf(pieces);
+        }
+
+        /** A group whose pieces are asked whether they set anything on the way. */
+        public Group(List<Piece> pieces, Stop stop) {
+            this(pieces, stop, anyOnTheWay(pieces));
+        }
+
+        private static boolean anyOnTheWay(List<Piece> pieces) {
+            for (Piece p : pieces) {
+                if (p.onTheWay()) {
+                    return true;
+                }
+            }
+            return false;
         }
     }
 
