@@ -18,8 +18,11 @@ import java.util.function.Consumer;
  * receives the program (program form) or, at {@link #finish}, the resident program (stream form);
  * {@code stream} receives the segment stream as it comes.
  *
- * <p>Look-ahead, with no form asked: the first program-memory-full of instructions (2,000 or 4,000
- * per the model) are held; one more and the program goes to the stream form.
+ * <p>Lines are counted packed ({@link LinePacker}), as the program form is written.
+ *
+ * <p>Look-ahead, with no form asked: the instructions of the first program-memory-full of packed
+ * lines (2,000 or 4,000 per the model, at most 40 commands a line) are held; one line more and the
+ * program goes to the stream form.
  */
 public final class FormChoice implements Consumer<Instruction> {
     private final Optional<Form> asked;
@@ -32,6 +35,9 @@ public final class FormChoice implements Consumer<Instruction> {
     private StreamSplit split;
     /** With the program form asked: the stream form counted beside it, to say in E238 what would fit. */
     private StreamSplit counted;
+    private final int width;
+    /** Counts the program form's lines, packed. */
+    private final LinePacker counter;
     private long lines;
 
     public FormChoice(Optional<Form> asked, ControllerLimits limits, Consumer<Instruction> dmc,
@@ -41,10 +47,12 @@ public final class FormChoice implements Consumer<Instruction> {
         this.dmc = dmc;
         this.stream = stream;
         this.memory = limits.model().range(GalilModel.Limit.PROGRAM_LINES).max();
+        this.width = limits.lineWidth();
+        this.counter = new LinePacker(width, l -> lines++);
         if (asked.equals(Optional.of(Form.STREAM))) {
-            split = new StreamSplit(stream, memory);
+            split = new StreamSplit(stream, memory, width);
         } else if (asked.equals(Optional.of(Form.PROGRAM))) {
-            counted = new StreamSplit(i -> { }, memory);
+            counted = new StreamSplit(i -> { }, memory, width);
         }
     }
 
@@ -54,19 +62,23 @@ public final class FormChoice implements Consumer<Instruction> {
             split.accept(i);
             return;
         }
-        lines++;
+        counter.accept(i);
         if (counted != null) {
             counted.accept(i);
             dmc.accept(i);
             return;
         }
         held.add(i);
-        if (held.size() > memory) {
-            // longer than the memory: the stream form, from the first instruction
-            split = new StreamSplit(stream, memory);
-            held.forEach(split::accept);
-            held.clear();
+        if (lines > memory) {
+            toStream();
         }
+    }
+
+    /** Longer than the memory: the stream form, from the first instruction. */
+    private void toStream() {
+        split = new StreamSplit(stream, memory, width);
+        held.forEach(split::accept);
+        held.clear();
     }
 
     /**
@@ -78,6 +90,10 @@ public final class FormChoice implements Consumer<Instruction> {
      */
     public Form finish(Diagnostics diagnostics) {
         Span first = Span.of(1, 1);
+        counter.flush();
+        if (split == null && counted == null && lines > memory) {
+            toStream(); // the last line was the one too many
+        }
         if (split == null) {
             held.forEach(dmc);
             held.clear();

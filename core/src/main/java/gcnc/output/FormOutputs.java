@@ -5,6 +5,7 @@ import gcnc.dmc.DmcPrinter;
 import gcnc.dmc.Form;
 import gcnc.dmc.FormChoice;
 import gcnc.dmc.Instruction;
+import gcnc.dmc.LinePacker;
 import gcnc.dmc.SourceMap;
 import gcnc.machine.ControllerLimits;
 import java.io.IOException;
@@ -33,6 +34,8 @@ public final class FormOutputs implements AutoCloseable {
     private final SourceMap dmcMap;
     private final SourceMap streamMap;
     private FormChoice choice;
+    /** Packs the program (or the resident program) into lines; null for the thesis's format. */
+    private LinePacker packer;
     private Form form = Form.PROGRAM;
 
     private FormOutputs(DmcOutputs dmc, DmcOutputs stream, Path streamPath) {
@@ -81,10 +84,12 @@ public final class FormOutputs implements AutoCloseable {
     /**
      * Where the compiled instructions go, in the program form's order: into the form asked for, or
      * the one that fits {@code limits}' program memory (none asked). Standard output takes the program
-     * form only.
+     * form only. The DMC (the program, or the resident program) is packed into lines of the model's
+     * width ({@link LinePacker}); the stream is one command a line, as the host sends it.
      */
     public Consumer<Instruction> sink(Optional<Form> asked, ControllerLimits limits) {
-        Consumer<Instruction> toDmc = programSink();
+        packer = new LinePacker(limits.lineWidth(), dmcMap.wrapLines(l -> dmc.dmcLine(l.text())));
+        Consumer<Instruction> toDmc = packer;
         if (stream == null) {
             choice = new FormChoice(Optional.of(Form.PROGRAM), limits, toDmc, i -> { });
         } else {
@@ -93,7 +98,7 @@ public final class FormOutputs implements AutoCloseable {
         return choice;
     }
 
-    /** The instructions as they come, into the DMC alone: no form (the thesis's format). */
+    /** The instructions as they come, one a line, into the DMC alone: no form (the thesis's format). */
     public Consumer<Instruction> programSink() {
         return dmcMap.wrap(i -> dmc.dmcLine(DmcPrinter.print(i.command())));
     }
@@ -105,6 +110,9 @@ public final class FormOutputs implements AutoCloseable {
     public Form finish(Diagnostics diagnostics) {
         if (choice != null) {
             form = choice.finish(diagnostics);
+        }
+        if (packer != null) {
+            packer.flush();
         }
         return form;
     }
