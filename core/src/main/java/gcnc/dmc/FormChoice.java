@@ -15,8 +15,8 @@ import java.util.function.Consumer;
  * Puts a compiled program in the form it is downloaded in (docs/galil.md, "Two forms"): the
  * program form when it fits the model's program memory, the stream form otherwise, or the form
  * asked for ({@code --form}). The instructions come in the program form's order; {@code dmc}
- * receives the program (program form) or, at {@link #finish}, the resident program (stream form);
- * {@code stream} receives the segment stream as it comes.
+ * receives the program's packed lines (program form) or, at {@link #finish}, the resident program's
+ * (stream form); {@code stream} receives the segment stream as it comes.
  *
  * <p>Lines are counted packed ({@link LinePacker}), as the program form is written.
  *
@@ -27,20 +27,26 @@ import java.util.function.Consumer;
 public final class FormChoice implements Consumer<Instruction> {
     private final Optional<Form> asked;
     private final ControllerLimits limits;
-    private final Consumer<Instruction> dmc;
+    private final Consumer<LinePacker.Line> dmc;
     private final Consumer<Instruction> stream;
     private final long memory;
-    private final List<Instruction> held = new ArrayList<>();
+    private final int width;
+    /** Packs the program form; each line is printed once, here. */
+    private final LinePacker packer;
+    /** The program form's lines held until it is known to fit (no form asked). */
+    private final List<LinePacker.Line> held = new ArrayList<>();
     /** The stream form being written; null while the program form is. */
     private StreamSplit split;
     /** With the program form asked: the stream form counted beside it, to say in E238 what would fit. */
     private StreamSplit counted;
-    private final int width;
-    /** Counts the program form's lines, packed. */
-    private final LinePacker counter;
     private long lines;
 
-    public FormChoice(Optional<Form> asked, ControllerLimits limits, Consumer<Instruction> dmc,
+    /**
+     * @param dmc    receives the DMC's packed lines: the program form's as they come (program asked)
+     *               or once it is known to fit, or the resident program's at {@link #finish}
+     * @param stream receives the segment stream, a command at a time
+     */
+    public FormChoice(Optional<Form> asked, ControllerLimits limits, Consumer<LinePacker.Line> dmc,
                       Consumer<Instruction> stream) {
         this.asked = asked;
         this.limits = limits;
@@ -48,7 +54,7 @@ public final class FormChoice implements Consumer<Instruction> {
         this.stream = stream;
         this.memory = limits.model().range(GalilModel.Limit.PROGRAM_LINES).max();
         this.width = limits.lineWidth();
-        this.counter = new LinePacker(width, l -> lines++);
+        this.packer = new LinePacker(width, this::line);
         if (asked.equals(Optional.of(Form.STREAM))) {
             split = new StreamSplit(stream, memory, width);
         } else if (asked.equals(Optional.of(Form.PROGRAM))) {
@@ -62,22 +68,31 @@ public final class FormChoice implements Consumer<Instruction> {
             split.accept(i);
             return;
         }
-        counter.accept(i);
+        packer.accept(i);
         if (counted != null) {
             counted.accept(i);
-            dmc.accept(i);
-            return;
-        }
-        held.add(i);
-        if (lines > memory) {
+        } else if (lines > memory) {
             toStream();
         }
     }
 
-    /** Longer than the memory: the stream form, from the first instruction. */
+    /** A line of the program form: written (program asked), or held until the program is known to fit. */
+    private void line(LinePacker.Line l) {
+        lines++;
+        if (counted != null) {
+            dmc.accept(l);
+        } else {
+            held.add(l);
+        }
+    }
+
+    /** Longer than the memory: the stream form, from the first instruction (the line being filled too). */
     private void toStream() {
+        packer.flush();
         split = new StreamSplit(stream, memory, width);
-        held.forEach(split::accept);
+        for (LinePacker.Line l : held) {
+            l.instructions().forEach(split);
+        }
         held.clear();
     }
 
@@ -90,7 +105,9 @@ public final class FormChoice implements Consumer<Instruction> {
      */
     public Form finish(Diagnostics diagnostics) {
         Span first = Span.of(1, 1);
-        counter.flush();
+        if (split == null) {
+            packer.flush();
+        }
         if (split == null && counted == null && lines > memory) {
             toStream(); // the last line was the one too many
         }
@@ -116,7 +133,7 @@ public final class FormChoice implements Consumer<Instruction> {
         } else {
             limits.labels(s.residentLabels()).ifPresent(v -> diagnostics.report(v.diagnostic(first)));
         }
-        s.resident().forEach(dmc);
+        LinePacker.pack(s.resident(), width).forEach(dmc);
         return Form.STREAM;
     }
 }

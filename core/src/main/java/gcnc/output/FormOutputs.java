@@ -34,8 +34,6 @@ public final class FormOutputs implements AutoCloseable {
     private final SourceMap dmcMap;
     private final SourceMap streamMap;
     private FormChoice choice;
-    /** Packs the program (or the resident program) into lines; null for the thesis's format. */
-    private LinePacker packer;
     private Form form = Form.PROGRAM;
 
     private FormOutputs(DmcOutputs dmc, DmcOutputs stream, Path streamPath) {
@@ -88,8 +86,7 @@ public final class FormOutputs implements AutoCloseable {
      * width ({@link LinePacker}); the stream is one command a line, as the host sends it.
      */
     public Consumer<Instruction> sink(Optional<Form> asked, ControllerLimits limits) {
-        packer = new LinePacker(limits.lineWidth(), dmcMap.wrapLines(l -> dmc.dmcLine(l.text())));
-        Consumer<Instruction> toDmc = packer;
+        Consumer<LinePacker.Line> toDmc = dmcMap.wrapLines(l -> dmc.dmcLine(l.text()));
         if (stream == null) {
             choice = new FormChoice(Optional.of(Form.PROGRAM), limits, toDmc, i -> { });
         } else {
@@ -110,9 +107,6 @@ public final class FormOutputs implements AutoCloseable {
     public Form finish(Diagnostics diagnostics) {
         if (choice != null) {
             form = choice.finish(diagnostics);
-        }
-        if (packer != null) {
-            packer.flush();
         }
         return form;
     }
