@@ -49,10 +49,16 @@ class GoldenTest {
         Compiler.Settings s = new Compiler.Settings(tables, ProfileLoader.load(c.machine(), TableSource.builtIn(), tables),
                 c.dialect(), c.dialect().equals("galil") ? Optional.of(SimOptions.defaults()) : Optional.empty());
         StringBuilder out = new StringBuilder();
+        // the galil dialect's lines packed as gcnc compile writes its program form; the thesis's one a line
+        gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(s.profile().controllerLimits().lineWidth(),
+                l -> out.append(l.text()).append('\n'));
+        java.util.function.Consumer<Instruction> sink = c.dialect().equals("galil") ? packer
+                : l -> out.append(l.text()).append('\n');
         try (Reader in = Files.newBufferedReader(Path.of("samples", c.sample() + ".nc"))) {
-            Compiler.Result r = Compiler.compile(in, s, (Instruction l) -> out.append(l.text()).append('\n'));
+            Compiler.Result r = Compiler.compile(in, s, sink);
             assertTrue(r.ok(), () -> c + " has findings: " + r.diagnostics().sorted());
         }
+        packer.flush();
         return out.toString();
     }
 

@@ -289,12 +289,16 @@ class PipelineFuzzTest {
                 dialect, Optional.empty()));
         assertEquals(errors(r, false), errors(checked, false), () -> "check and compile differ, seed " + seed + " on "
                 + profile.name() + " (" + dialect + "):\n" + program);
-        // ... and replaying the DMC compile wrote, with its source map, finds what compile's simulation found
+        // ... and replaying the DMC compile writes (its lines packed) with its source map finds what compile's simulation found
         if (r.ok() && dialect.equals("galil")) {
+            List<String> packed = new ArrayList<>();
+            List<String> packedMap = new ArrayList<>();
+            gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(profile.controllerLimits().lineWidth(),
+                    new gcnc.dmc.SourceMap(packedMap::add).wrapLines(l -> packed.add(l.text())));
+            typed.forEach(packer);
+            packer.flush();
             gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
-            gcnc.sim.DmcReplay.replay(new java.io.BufferedReader(new StringReader(String.join("\n", out))), profile,
-                    SimOptions.defaults(), replayed, gcnc.dmc.SourceMap.read(new java.io.BufferedReader(
-                            new StringReader(String.join("\n", mapLines)))).lines());
+            gcnc.sim.DmcReplay.replay(reader(packed), profile, SimOptions.defaults(), replayed, table(packedMap));
             assertEquals(errors(r, true), errors(new Compiler.Result(replayed, 0, Optional.empty()), true),
                     () -> "replay differs, seed " + seed + " on " + profile.name() + ":\n" + program);
             streamForm(typed, r, profile, seed, program);
@@ -307,13 +311,16 @@ class PipelineFuzzTest {
         List<String> stream = new ArrayList<>();
         List<String> streamMap = new ArrayList<>();
         gcnc.dmc.SourceMap sm = new gcnc.dmc.SourceMap(streamMap::add);
-        gcnc.dmc.StreamSplit split = new gcnc.dmc.StreamSplit(sm.wrap(l -> stream.add(l.text())), 4000);
+        int width = profile.controllerLimits().lineWidth();
+        gcnc.dmc.StreamSplit split = new gcnc.dmc.StreamSplit(sm.wrap(l -> stream.add(l.text())), 4000, width);
         typed.forEach(split);
         gcnc.dmc.StreamSplit.Result s = split.finish();
         List<String> resident = new ArrayList<>();
         List<String> residentMap = new ArrayList<>();
         gcnc.dmc.SourceMap rm = new gcnc.dmc.SourceMap(residentMap::add);
-        s.resident().forEach(rm.wrap(l -> resident.add(l.text())));
+        gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(width, rm.wrapLines(l -> resident.add(l.text())));
+        s.resident().forEach(packer);
+        packer.flush();
         for (String l : stream) {
             assertTrue(gcnc.dmc.StreamRole.of(gcnc.dmc.DmcReader.read(l, (c, a) -> { })) != gcnc.dmc.StreamRole.EMBED,
                     () -> "seed " + seed + ": " + l + " in the stream");
@@ -329,9 +336,9 @@ class PipelineFuzzTest {
         return new java.io.BufferedReader(new StringReader(String.join("\n", lines)));
     }
 
-    private static java.util.function.IntFunction<gcnc.dmc.Source> table(List<String> map) {
+    private static gcnc.dmc.SourceMap.Locator table(List<String> map) {
         try {
-            return gcnc.dmc.SourceMap.read(reader(map)).lines();
+            return gcnc.dmc.SourceMap.read(reader(map)).at();
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }

@@ -87,7 +87,7 @@ class CliTest {
         Path dmc = Files.createTempDirectory("gcnc-bushing").resolve("bushing.dmc");
         assertEquals(0, gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1,200,150",
                 "-o", dmc.toString()).status());
-        assertTrue(Files.readString(dmc).contains("\nGA C,C\n"), "the thread is geared to the spindle");
+        assertTrue(Files.readString(dmc).contains(";GA C,C;"), "the thread is geared to the spindle");
         Path wrong = program(Files.readString(Path.of("docs/examples/bushing.nc")).replace("G00 X1.4 Z-1.4", "G00 X1.2 Z-1.4"));
         Run crash = gcnc("simulate", wrong.toString(), "--machine", "haas", "--stock", "38.1,200,150");
         assertTrue(crash.err().contains(":40:1: error[E305]"), crash.err());
@@ -269,7 +269,7 @@ class CliTest {
         assertEquals(0, r.status(), r.err());
         Path dmc = p.resolveSibling("part.dmc");
         String text = Files.readString(dmc);
-        assertTrue(text.startsWith("#GCNC\n"), text);
+        assertTrue(text.startsWith("#GCNC;SH XY;"), "the commands are packed into lines: " + text);
         assertTrue(text.endsWith("EN\n"), text);
         // The side map is a line-number table: header from no block, then a run per emitting block.
         List<String> map = Files.readAllLines(p.resolveSibling("part.dmc.map"));
@@ -278,9 +278,15 @@ class CliTest {
         assertTrue(map.get(1).startsWith("# source sha256 "), map.get(1));
         assertTrue(map.get(map.size() - 1).startsWith("# dmc sha256 "), map.get(map.size() - 1));
         map = map.subList(2, map.size() - 1);
-        assertEquals("1 0", map.get(0), "DMC lines 1-16 are the header (vector setup, spindle output, limits, homing)");
-        assertEquals("17 4", map.get(1), "DMC line 17 (gline=4, then CB4) comes from G-code line 4 (N30 M11)");
-        assertEquals((text.lines().toList().indexOf("EN") + 1) + " 0", map.get(map.size() - 1),
+        assertEquals("1 0", map.get(0), "DMC lines 1-3 are the header (vector setup, spindle output, limits, homing)");
+        assertEquals("4 4", map.get(1), "DMC line 4 starts with G-code line 4's commands (N30 M11: gline=4, then CB4)");
+        assertEquals("4.2 5", map.get(2), "its third command (gline=5) starts G-code line 5's");
+        List<String> lines = text.lines().toList();
+        int en = 0;
+        while (!gcnc.dmc.DmcReader.statements(lines.get(en)).contains("EN")) {
+            en++;
+        }
+        assertEquals((en + 1) + "." + gcnc.dmc.DmcReader.statements(lines.get(en)).indexOf("EN") + " 0", map.get(map.size() - 1),
                 "from EN on (the routines, the handlers) is the footer");
         Run inline = gcnc("compile", "--source-map", p.toString(), "-o", p.resolveSibling("inline.dmc").toString());
         assertEquals(0, inline.status(), inline.err());

@@ -134,8 +134,9 @@ class RunStreamTest {
     @Test
     void aProgramLongerThanTheControllersMemoryIsStreamedToItsEnd() throws Exception {
         StringBuilder text = new StringBuilder("O4411 (CAM CHORDS)\nG21 G99\nT0101\nG97 S1200 M03\nG00 X19. Z2.\n");
-        for (int pass = 0; pass < 5; pass++) {
-            double d = 19 - pass * 0.5;
+        // 6,300 chords: three to a packed line, more lines than the DMC-4040's 2,000
+        for (int pass = 0; pass < 15; pass++) {
+            double d = 19 - (pass % 5) * 0.5;
             text.append(String.format(java.util.Locale.ROOT, "G00 X%.3f Z1.%nG01 Z0. F0.3%n", d));
             for (int k = 1; k <= 420; k++) {
                 text.append(String.format(java.util.Locale.ROOT, "X%.3f Z%.3f%n", d - 1 + 0.5 * Math.sin(k / 40.0), -k * 0.05));
@@ -146,7 +147,7 @@ class RunStreamTest {
         Path p = part(text.toString());
         Path trace = p.resolveSibling("run-auto.trace");
         try (VirtualController vc = VirtualController.tcp(0,
-                new VirtualController.Options(model("DMC-4040"), 200, List.of(), trace))) {
+                new VirtualController.Options(model("DMC-4040"), 1000, List.of(), trace))) {
             homed(vc);
             RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--stock", "20,50", "--tcp",
                     "127.0.0.1:" + vc.port(), "--poll", "10", "--format", "json");
@@ -201,8 +202,8 @@ class RunStreamTest {
     @Test
     void theProgramFormAskedForAProgramThatDoesNotFitIsRefusedBeforeAnythingMoves() throws Exception {
         StringBuilder text = new StringBuilder("O4412\nG21 G99\nT0101\nG97 S1200 M03\nG00 X19. Z2.\nG01 Z0. F0.3\n");
-        for (int k = 1; k <= 2100; k++) {
-            text.append(String.format(java.util.Locale.ROOT, "X%.3f Z%.3f%n", 18.5 + 0.3 * Math.sin(k / 30.0), -k * 0.01));
+        for (int k = 1; k <= 6300; k++) { // three chords to a packed line: more than 2,000 lines
+            text.append(String.format(java.util.Locale.ROOT, "X%.3f Z%.3f%n", 18.5 + 0.3 * Math.sin(k / 30.0), -k * 0.005));
         }
         text.append("G00 X40.\nZ20.\nM05\nM30\n");
         Path p = part(text.toString());

@@ -22,15 +22,15 @@ import org.junit.jupiter.api.Test;
 class StreamFormTest {
     private static final Path THREAD = Path.of("src/test/resources/stream/thread-shaft.nc");
     private static final Path GOLDEN = Path.of("src/test/resources/golden/stream");
-    /** A CAM-style finishing program of 2,400 chords: more lines than the DMC-4040's 2,000. */
+    /** A CAM-style finishing program of 6,400 chords: more lines than the DMC-4040's 2,000, even packed. */
     private static Path longProgram;
 
     @BeforeAll
     static void write() throws IOException {
-        StringBuilder p = new StringBuilder("%\nO4410 (CAM CHORDS - 2400 BLOCKS)\nG21 G18 G40 G99\nG28 U0. W0.\nT0101\n"
+        StringBuilder p = new StringBuilder("%\nO4410 (CAM CHORDS - 6400 BLOCKS)\nG21 G18 G40 G99\nG28 U0. W0.\nT0101\n"
                 + "G97 S1200 M03\nG00 X52. Z2. M08\n");
-        for (int pass = 0; pass < 6; pass++) {
-            double d = 50 - pass;
+        for (int pass = 0; pass < 16; pass++) {
+            double d = 50 - pass * 0.5;
             p.append(String.format("G00 X%.3f Z1.%nG01 Z0. F0.2%n", d));
             for (int k = 1; k <= 400; k++) {
                 p.append(String.format("X%.3f Z%.3f%n", d - 2 + Math.sin(k / 40.0), -k * 0.05));
@@ -69,7 +69,7 @@ class StreamFormTest {
         assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20,100,60", "--form", "stream",
                 "-o", out.toString()).status());
         List<String> stream = Files.readAllLines(out.resolveSibling("t.stream"));
-        List<String> resident = Files.readAllLines(out);
+        List<String> resident = Files.readAllLines(out).stream().flatMap(l -> gcnc.dmc.DmcReader.statements(l).stream()).toList();
         for (String l : stream) {
             gcnc.dmc.Command c = gcnc.dmc.DmcReader.read(l, (code, args) -> { throw new AssertionError(l); });
             assertFalse(gcnc.dmc.StreamRole.of(c) == gcnc.dmc.StreamRole.EMBED, l + " is not valid from the command line");

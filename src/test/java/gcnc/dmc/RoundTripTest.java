@@ -15,7 +15,8 @@ import org.junit.jupiter.api.Test;
 /**
  * One printer and one reader: every line of every DMC file the tests hold (the goldens, the
  * expansions of cycles, compensation and chamfers, all written by gcnc) and of the thesis's own
- * Table 5.2 reads into a command without a fault and prints back to the same characters.
+ * Table 5.2 reads into its commands without a fault and prints back to the same characters; and a
+ * packed file's commands pack again into its own lines (the sender downloads what the compile wrote).
  */
 class RoundTripTest {
     private static final Path TABLE_5_2 = Path.of("../shared/spec/bishop.expected.dmc");
@@ -29,20 +30,57 @@ class RoundTripTest {
         files.add(TABLE_5_2);
         assertTrue(files.size() > 40, "the test holds the goldens: " + files.size());
         int lines = 0;
+        int packedFiles = 0;
         for (Path f : files) {
             int n = 0;
-            for (String line : Files.readAllLines(f)) {
+            List<String> all = Files.readAllLines(f);
+            List<Instruction> commands = new ArrayList<>();
+            for (String line : all) {
                 n++;
                 String at = f + ":" + n;
-                Command c = DmcReader.read(line, (code, args) -> {
-                    throw new AssertionError(at + ": " + code + " " + java.util.Arrays.toString(args));
-                });
-                assertNotNull(c, at);
-                assertEquals(line, DmcPrinter.print(c), at);
+                List<String> printed = new ArrayList<>();
+                for (String statement : DmcReader.statements(line)) {
+                    Command c = DmcReader.read(statement, (code, args) -> {
+                        throw new AssertionError(at + ": " + code + " " + java.util.Arrays.toString(args));
+                    });
+                    assertNotNull(c, at);
+                    printed.add(DmcPrinter.print(c));
+                    commands.add(new Instruction(c, Source.NONE));
+                }
+                assertEquals(line, String.join(";", printed), at);
                 lines++;
             }
+            if (all.stream().anyMatch(l -> l.contains(";"))) {
+                packedFiles++;
+                assertEquals(all, LinePacker.pack(commands, 80).stream().map(LinePacker.Line::text).toList(), f.toString());
+            }
         }
-        assertTrue(lines > 5000, "lines read: " + lines);
+        assertTrue(lines > 2000, "lines read: " + lines);
+        assertTrue(packedFiles >= 8, "packed files (the galil goldens): " + packedFiles);
+    }
+
+    @Test
+    void aPackedLineBreaksWhereTheControllerMustStartOrStopOne() {
+        List<Instruction> in = new ArrayList<>();
+        for (Command c : List.of(new Command.Label("GCNC"), new Command.ServoHere("XY"), new Command.SetVariable("gline", 7),
+                new Command.VectorSpeed(Fixed.of(2000)), new Command.VectorPosition(10, 20), new Command.VectorEnd(),
+                new Command.BeginSequence(), new Command.AwaitSequence(), new Command.Output(1, true),
+                new Command.Remark("NO A NOTE"), new Command.Wait(2000), new Command.Output(2, false), new Command.End(),
+                new Command.Label("FAULT"), new Command.Stop(), new Command.End())) {
+            in.add(new Instruction(c, Source.NONE));
+        }
+        assertEquals(List.of("#GCNC;SH XY;gline=7;VS 2000;VP 10,20;VE;BGS;AMS", "SB1", "NO A NOTE", "WT 2000", "CB2;EN",
+                "#FAULT;ST;EN"), LinePacker.pack(in, 80).stream().map(LinePacker.Line::text).toList());
+        List<Instruction> many = new ArrayList<>();
+        for (int i = 0; i < 40; i++) {
+            many.add(new Instruction(new Command.VectorPosition(100000 + i, -200000 - i), Source.NONE));
+        }
+        List<LinePacker.Line> lines = LinePacker.pack(many, 80);
+        assertTrue(lines.stream().allMatch(l -> l.text().length() <= 80), "no line longer than the controller's 80");
+        assertTrue(lines.stream().limit(lines.size() - 1).allMatch(l -> l.text().length() > 80 - 22), "each line filled");
+        assertEquals(many, lines.stream().flatMap(l -> l.instructions().stream()).toList(), "in order, none lost");
+        assertEquals(List.of("MG \"A;B\"", "NO X;Y"), DmcReader.statements("MG \"A;B\";NO X;Y"),
+                "a ; inside quotes or a comment does not split");
     }
 
     @Test

@@ -49,11 +49,11 @@ class StreamSplitTest {
             double[] b = c[2] == null ? null : java.util.Arrays.stream(c[2].split(",")).mapToDouble(Double::parseDouble).toArray();
             List<Instruction> program = programForm(c[0], c[1], b == null ? null : new gcnc.sim.StockSize(b[0], b[1], b[2], 0));
             List<Instruction> stream = new ArrayList<>();
-            StreamSplit split = new StreamSplit(stream::add, 2000);
+            StreamSplit split = new StreamSplit(stream::add, 2000, 80);
             program.forEach(split);
             StreamSplit.Result r = split.finish();
             assertTrue(r.held());
-            assertEquals(r.residentLines(), r.resident().size(), c[0]);
+            assertEquals(r.residentLines(), LinePacker.count(r.resident(), 80), c[0]);
             assertEquals(stream.size(), r.streamLines(), c[0]);
             assertEquals(program, putBack(r.resident(), stream), c[0]);
         }
@@ -119,7 +119,9 @@ class StreamSplitTest {
         MachineProfile profile = ProfileLoader.load("haas", TableSource.builtIn(), Tables.builtIn());
         List<Instruction> in = new ArrayList<>();
         in.add(new Instruction(new Command.Label("GCNC"), Source.NONE));
-        for (int b = 1; b <= 400; b++) { // 400 thread blocks: 2,402 program lines, 3,200 resident lines
+        // 2,100 thread blocks: each wait ends a packed line, so 2,102 program lines; as routines (#Bn;MF, then
+        // the outputs and EN) 4,200 resident lines
+        for (int b = 1; b <= 2100; b++) {
             Source s = new Source(Origin.PROGRAM, b, 0, b);
             in.add(new Instruction(new Command.WaitPast(false, 'Z', new Command.Operand.Count(b)), s));
             for (int k = 0; k < 5; k++) {

@@ -45,7 +45,7 @@ class ResumeTest {
         assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 2000000", "VD 2000000",
                 "TOOL=1", "SB1", "CB2", "OF ,,3.0000", "WT 2000",
                 "VS 1000", "VP 1000,0", "VE", "BGS", "AMS", "VS 500", "CR 1000,90,-90", "VE", "BGS", "AMS", "CB1", "EN"),
-                r.lines());
+                texts(r));
         // every line maps back to the compiled program's line it stands for
         assertEquals(9, r.originOf(10));
         assertEquals(6, p.sourceLine(r.originOf(10)));
@@ -55,7 +55,7 @@ class ResumeTest {
     void halfWayAlongALineTheRestOfItIsReplanned() throws Exception {
         DmcProgram p = program();
         Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 1));
-        List<String> l = r.lines();
+        List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 600,-1", "VE", "BGS", "AMS", "VS 500"), l.subList(vs, vs + 6));
         assertEquals(6, p.sourceLine(r.originOf(vs + 1)));
@@ -68,7 +68,7 @@ class ResumeTest {
         double[] centre = plus(arcStart, 0, -1000);
         double[] at = plus(centre, Math.round(1000 * Math.cos(Math.toRadians(30))), Math.round(1000 * Math.sin(Math.toRadians(30))));
         Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), at);
-        List<String> l = r.lines();
+        List<String> l = texts(r);
         int vs = l.indexOf("VS 500");
         String cr = l.get(vs + 1);
         // from the stop's angle (30 degrees, to the rounding of the axes' whole counts) to the arc's end at 0
@@ -85,7 +85,7 @@ class ResumeTest {
     void atTheEndOfTheMotionTheProgramGoesOnAfterIt() throws Exception {
         DmcProgram p = program();
         Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 1000, 0));
-        assertEquals("VS 500", r.lines().get(r.lines().indexOf("WT 2000") + 1));
+        assertEquals("VS 500", texts(r).get(texts(r).indexOf("WT 2000") + 1));
     }
 
     @Test
@@ -123,7 +123,7 @@ class ResumeTest {
         assertEquals(1, seven.size());
         assertEquals(1, seven.get(0).from(), "line 7's motion is the sequence's second segment");
         Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
-        List<String> l = r.lines();
+        List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         // the VP measured from the new origin, its own speed kept; the spindle change moved back by the 1000 counts run
         assertEquals(List.of("VS 1000", "VP 0,1000 <800", "VE", "BGS", "AV 500", "OF ,,4.0000", "AMS", "CB1", "EN"),
@@ -136,7 +136,7 @@ class ResumeTest {
     void pastASpindleChangeOnTheWayItIsPartOfTheState() throws Exception {
         DmcProgram p = blended();
         Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
-        List<String> l = r.lines();
+        List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("OF ,,4.0000", "WT 2000"), l.subList(vs - 2, vs));
         assertEquals(List.of("VS 1000", "VP 0,400 <800", "VE", "BGS", "AMS", "CB1", "EN"), l.subList(vs, l.size()));
@@ -146,7 +146,7 @@ class ResumeTest {
     void partWayAlongTheFirstBlockOfASequenceItsRestAndTheNextBlocksSegmentsFollow() throws Exception {
         DmcProgram p = blended();
         Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 0));
-        List<String> l = r.lines();
+        List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 600,0 <1000 >500", "VP 600,1000 <800", "VE", "BGS", "AV 1100", "OF ,,4.0000",
                 "AMS", "CB1", "EN"), l.subList(vs, l.size()));
@@ -173,7 +173,7 @@ class ResumeTest {
         progress.at(BLENDED.indexOf("VP 1000,0 <1000 >500"), null, new Operator());
         assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "its first: the block's start");
         Piece r = new Resume(p, 3).plan(new ResumePoint(6, 2), plus(home(p), 1000, 300));
-        List<String> l = r.lines();
+        List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 0,700 <800", "VE", "BGS", "AV 200", "OF ,,4.0000", "AMS"), l.subList(vs, vs + 7));
     }
@@ -185,5 +185,10 @@ class ResumeTest {
         assertEquals("37:4", new ResumePoint(37, 4).toString());
         assertThrows(IllegalArgumentException.class, () -> ResumePoint.parse("x"));
         assertThrows(IllegalArgumentException.class, () -> ResumePoint.parse("0"));
+    }
+
+    /** The piece's commands as printed, one each (the download packs them into lines). */
+    private static List<String> texts(Piece r) {
+        return r.commands().stream().map(gcnc.dmc.DmcPrinter::print).toList();
     }
 }

@@ -142,7 +142,7 @@ class TrustTest {
                 new gcnc.dmc.SourceMap(l -> map.append(l).append('\n')).wrap(l -> dmc.append(l.text()).append('\n')));
         gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
         DmcReplay.replay(new java.io.BufferedReader(new StringReader(dmc.toString())), m, SimOptions.defaults(), replayed,
-                gcnc.dmc.SourceMap.read(new java.io.BufferedReader(new StringReader(map.toString()))).lines());
+                gcnc.dmc.SourceMap.read(new java.io.BufferedReader(new StringReader(map.toString()))).at());
         List<String> fromReplay = new ArrayList<>();
         replayed.sorted().forEach(d -> fromReplay.add(d.code().id() + "@" + d.span().line()));
         assertEquals(expected, fromReplay, "the replay of the DMC");

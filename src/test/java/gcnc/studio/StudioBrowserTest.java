@@ -13,7 +13,6 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.IntUnaryOperator;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
@@ -171,22 +170,27 @@ class StudioBrowserTest {
         endOfLine(6);
         wait.until(d -> !d.findElements(By.cssSelector("#dmc li.current")).isEmpty());
         List<String> lit = new ArrayList<>();
-        for (WebElement li : browser.findElements(By.cssSelector("#dmc li.current"))) {
-            assertEquals("6", li.getAttribute("data-source"));
-            lit.add(li.getText());
+        for (WebElement span : browser.findElements(By.cssSelector("#dmc li span.current"))) {
+            assertEquals("6", span.getAttribute("data-source"));
+            lit.add(span.getText());
         }
         // the same DMC lines the command line's .map gives line 6
         StudioServerTest.cli("compile", "--machine", "thesis-2004", dir.resolve("bishop.nc").toString(), "-o",
                 dir.resolve("bishop.dmc").toString());
         List<String> dmc = Files.readAllLines(dir.resolve("bishop.dmc"));
-        IntUnaryOperator map;
+        SourceMap.Locator map;
         try (var in = Files.newBufferedReader(dir.resolve("bishop.dmc.map"))) {
-            map = SourceMap.read(in).lineNumbers();
+            map = SourceMap.read(in).at();
         }
+        // the commands of the packed lines that the map gives line 6
         List<String> expected = new ArrayList<>();
         for (int i = 1; i <= dmc.size(); i++) {
-            if (map.applyAsInt(i) == 6) {
-                expected.add(dmc.get(i - 1).strip());
+            List<String> commands = gcnc.dmc.DmcReader.statements(dmc.get(i - 1));
+            for (int k = 0; k < commands.size(); k++) {
+                gcnc.dmc.Source at = map.source(i, k);
+                if (at != null && at.line() == 6) {
+                    expected.add(commands.get(k));
+                }
             }
         }
         assertFalse(expected.isEmpty());
@@ -294,7 +298,7 @@ class StudioBrowserTest {
     /** {@link #bishopDmcLines}, compiled once for the test JVM (samples/bishop.nc does not change during a run). */
     private static int bishopDmcLines;
 
-    /** The lines of the bishop's DMC on thesis-2004, as the session every front end goes through compiles it. */
+    /** The lines of the bishop's DMC on thesis-2004, as the session every front end goes through compiles and packs it. */
     static synchronized int bishopDmcLines() throws Exception {
         if (bishopDmcLines == 0) {
             bishopDmcLines = compiledBishopDmcLines();
@@ -305,9 +309,11 @@ class StudioBrowserTest {
     private static int compiledBishopDmcLines() throws Exception {
         gcnc.Session s = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine("thesis-2004"));
         int[] n = {0};
+        gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(s.profile().controllerLimits().lineWidth(), l -> n[0]++);
         try (java.io.Reader in = Files.newBufferedReader(Path.of("samples/bishop.nc"))) {
-            s.compile(in, java.util.Optional.of(s.simulation()), false, i -> n[0]++);
+            s.compile(in, java.util.Optional.of(s.simulation()), false, packer);
         }
+        packer.flush();
         return n[0];
     }
 }

@@ -430,14 +430,22 @@ class StudioServerTest {
         cli("compile", "--machine", "thesis-2004", dir.resolve("bishop.nc").toString(), "-o", out.toString());
         List<String> written = Files.readAllLines(out);
         assertEquals(written.size(), dmc.size());
-        java.util.function.IntUnaryOperator map;
+        gcnc.dmc.SourceMap.Locator map;
         try (var in = Files.newBufferedReader(dir.resolve("cli.dmc.map"))) {
-            map = gcnc.dmc.SourceMap.read(in).lineNumbers();
+            map = gcnc.dmc.SourceMap.read(in).at();
         }
         for (int i = 0; i < dmc.size(); i++) {
             JsonObject l = dmc.get(i).getAsJsonObject();
             assertEquals(written.get(i), l.get("text").getAsString());
-            assertEquals(map.applyAsInt(i + 1), l.get("line").getAsInt(), "DMC line " + (i + 1));
+            JsonArray parts = l.getAsJsonArray("parts");
+            List<String> texts = new java.util.ArrayList<>();
+            for (int k = 0; k < parts.size(); k++) { // each command of the packed line with its G-code line, as the map
+                JsonObject c = parts.get(k).getAsJsonObject();
+                texts.add(c.get("text").getAsString());
+                gcnc.dmc.Source at = map.source(i + 1, k);
+                assertEquals(at == null ? 0 : at.line(), c.get("line").getAsInt(), "DMC line " + (i + 1) + "." + k);
+            }
+            assertEquals(written.get(i), String.join(";", texts));
         }
         assertTrue(r.getAsJsonObject("summary").get("cycleSeconds").getAsDouble() > 0);
         JsonObject stock = r.getAsJsonObject("drawing").getAsJsonObject("stock");

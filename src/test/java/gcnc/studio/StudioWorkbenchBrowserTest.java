@@ -231,14 +231,17 @@ class StudioWorkbenchBrowserTest {
     @Test
     void clickingADmcLinePutsTheCursorOnItsBlock() throws Exception {
         openTheBishop();
-        WebElement n145 = browser.findElement(By.cssSelector("#dmc li[data-source='9']")); // N145 G01 Z-03550
+        WebElement n145 = browser.findElement(By.cssSelector("#dmc li span[data-source='9']")); // N145 G01 Z-03550
         js("arguments[0].scrollIntoView({block: 'center'})", n145);
         n145.click();
         wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "9"));
-        // and the cursor there lights every DMC line of the block, the clicked one among them
+        // and the cursor there lights every DMC command of the block, the clicked one among them, and their lines
         wait.until(d -> n145.getAttribute("class").contains("current"));
+        for (WebElement span : browser.findElements(By.cssSelector("#dmc li span.current"))) {
+            assertEquals("9", span.getAttribute("data-source"));
+        }
         for (WebElement li : browser.findElements(By.cssSelector("#dmc li.current"))) {
-            assertEquals("9", li.getAttribute("data-source"));
+            assertFalse(li.findElements(By.cssSelector("span[data-source='9']")).isEmpty(), li.getText());
         }
     }
 
@@ -293,7 +296,7 @@ class StudioWorkbenchBrowserTest {
             assertTrue(browser.getCurrentUrl().endsWith("&file=O1000.nc"), browser.getCurrentUrl());
             // its DMC lines too: a click on one in main.nc's DMC opens O1000.nc at the retract's line
             open(haas, "main.nc");
-            WebElement retract = wait.until(d -> d.findElement(By.cssSelector("#dmc li[data-file='O1000.nc'][data-source='4']")));
+            WebElement retract = wait.until(d -> d.findElement(By.cssSelector("#dmc li span[data-file='O1000.nc'][data-source='4']")));
             js("arguments[0].scrollIntoView({block: 'center'})", retract);
             retract.click();
             wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("name"), "O1000.nc"));

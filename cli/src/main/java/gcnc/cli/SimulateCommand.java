@@ -94,8 +94,8 @@ final class SimulateCommand extends RunCommand {
                 gcnc.dmc.SourceMap.Table streamMap = sourceMap(file, diags);
                 pairedStream(resident, residentMap, file, diags);
                 try (BufferedReader r = java.nio.file.Files.newBufferedReader(resident, java.nio.charset.StandardCharsets.UTF_8)) {
-                    report = Optional.of(gcnc.sim.StreamReplay.replay(r, residentMap == null ? null : residentMap.lines(),
-                            new BufferedReader(in), streamMap == null ? null : streamMap.lines(), profile, options, diags));
+                    report = Optional.of(gcnc.sim.StreamReplay.replay(r, residentMap == null ? null : residentMap.at(),
+                            new BufferedReader(in), streamMap == null ? null : streamMap.at(), profile, options, diags));
                 } catch (java.nio.file.NoSuchFileException e) {
                     return reporter.ioFault(resident.toString(), gcnc.diag.Phrase.IO_CANNOT_READ, e);
                 }
@@ -106,7 +106,7 @@ final class SimulateCommand extends RunCommand {
                 diags = new Diagnostics();
                 gcnc.dmc.SourceMap.Table map = sourceMap(file, diags);
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
-                        map == null ? null : map.lines()));
+                        map == null ? null : map.at()));
                 if (map != null) {
                     // the findings are at G-code lines: name the G-code file the map names
                     shown = map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);

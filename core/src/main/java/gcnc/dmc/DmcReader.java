@@ -47,6 +47,43 @@ public final class DmcReader {
     private DmcReader() {
     }
 
+    /**
+     * The statements of a program line, as the controller splits it: at each {@code ;} outside
+     * double quotes, blanks around each removed, empty ones dropped; a comment ({@code '},
+     * {@code NO}) runs to the end of the line, {@code ;} and all. A line of one command
+     * (all gcnc wrote before lines were packed) is one statement.
+     */
+    public static java.util.List<String> statements(String line) {
+        if (line.indexOf(';') < 0) {
+            String t = line.strip();
+            return t.isEmpty() ? java.util.List.of() : java.util.List.of(t);
+        }
+        java.util.List<String> out = new java.util.ArrayList<>(8);
+        boolean quoted = false;
+        int from = 0;
+        for (int i = 0; i <= line.length(); i++) {
+            char c = i < line.length() ? line.charAt(i) : ';';
+            if (c == '"' && i < line.length()) {
+                quoted = !quoted;
+            } else if (c == ';' && (!quoted || i == line.length())) {
+                String st = line.substring(from, i).strip();
+                if (isComment(st)) {
+                    out.add(line.substring(from).strip());
+                    return out;
+                }
+                if (!st.isEmpty()) {
+                    out.add(st);
+                }
+                from = i + 1;
+            }
+        }
+        return out;
+    }
+
+    private static boolean isComment(String st) {
+        return st.startsWith("'") || st.equals("NO") || st.startsWith("NO ");
+    }
+
     /** The command on {@code raw}, or null for a blank line or one reported to {@code faults}. */
     public static Command read(String raw, Faults faults) {
         String t = raw.strip();

@@ -15,36 +15,50 @@ import java.util.function.Consumer;
  * Puts a compiled program in the form it is downloaded in (docs/galil.md, "Two forms"): the
  * program form when it fits the model's program memory, the stream form otherwise, or the form
  * asked for ({@code --form}). The instructions come in the program form's order; {@code dmc}
- * receives the program (program form) or, at {@link #finish}, the resident program (stream form);
- * {@code stream} receives the segment stream as it comes.
+ * receives the program's packed lines (program form) or, at {@link #finish}, the resident program's
+ * (stream form); {@code stream} receives the segment stream as it comes.
  *
- * <p>Look-ahead, with no form asked: the first program-memory-full of instructions (2,000 or 4,000
- * per the model) are held; one more and the program goes to the stream form.
+ * <p>Lines are counted packed ({@link LinePacker}), as the program form is written.
+ *
+ * <p>Look-ahead, with no form asked: the instructions of the first program-memory-full of packed
+ * lines (2,000 or 4,000 per the model, at most 40 commands a line) are held; one line more and the
+ * program goes to the stream form.
  */
 public final class FormChoice implements Consumer<Instruction> {
     private final Optional<Form> asked;
     private final ControllerLimits limits;
-    private final Consumer<Instruction> dmc;
+    private final Consumer<LinePacker.Line> dmc;
     private final Consumer<Instruction> stream;
     private final long memory;
-    private final List<Instruction> held = new ArrayList<>();
+    private final int width;
+    /** Packs the program form; each line is printed once, here. */
+    private final LinePacker packer;
+    /** The program form's lines held until it is known to fit (no form asked). */
+    private final List<LinePacker.Line> held = new ArrayList<>();
     /** The stream form being written; null while the program form is. */
     private StreamSplit split;
     /** With the program form asked: the stream form counted beside it, to say in E238 what would fit. */
     private StreamSplit counted;
     private long lines;
 
-    public FormChoice(Optional<Form> asked, ControllerLimits limits, Consumer<Instruction> dmc,
+    /**
+     * @param dmc    receives the DMC's packed lines: the program form's as they come (program asked)
+     *               or once it is known to fit, or the resident program's at {@link #finish}
+     * @param stream receives the segment stream, a command at a time
+     */
+    public FormChoice(Optional<Form> asked, ControllerLimits limits, Consumer<LinePacker.Line> dmc,
                       Consumer<Instruction> stream) {
         this.asked = asked;
         this.limits = limits;
         this.dmc = dmc;
         this.stream = stream;
         this.memory = limits.model().range(GalilModel.Limit.PROGRAM_LINES).max();
+        this.width = limits.lineWidth();
+        this.packer = new LinePacker(width, this::line);
         if (asked.equals(Optional.of(Form.STREAM))) {
-            split = new StreamSplit(stream, memory);
+            split = new StreamSplit(stream, memory, width);
         } else if (asked.equals(Optional.of(Form.PROGRAM))) {
-            counted = new StreamSplit(i -> { }, memory);
+            counted = new StreamSplit(i -> { }, memory, width);
         }
     }
 
@@ -54,19 +68,32 @@ public final class FormChoice implements Consumer<Instruction> {
             split.accept(i);
             return;
         }
-        lines++;
+        packer.accept(i);
         if (counted != null) {
             counted.accept(i);
-            dmc.accept(i);
-            return;
+        } else if (lines > memory) {
+            toStream();
         }
-        held.add(i);
-        if (held.size() > memory) {
-            // longer than the memory: the stream form, from the first instruction
-            split = new StreamSplit(stream, memory);
-            held.forEach(split::accept);
-            held.clear();
+    }
+
+    /** A line of the program form: written (program asked), or held until the program is known to fit. */
+    private void line(LinePacker.Line l) {
+        lines++;
+        if (counted != null) {
+            dmc.accept(l);
+        } else {
+            held.add(l);
         }
+    }
+
+    /** Longer than the memory: the stream form, from the first instruction (the line being filled too). */
+    private void toStream() {
+        packer.flush();
+        split = new StreamSplit(stream, memory, width);
+        for (LinePacker.Line l : held) {
+            l.instructions().forEach(split);
+        }
+        held.clear();
     }
 
     /**
@@ -78,6 +105,12 @@ public final class FormChoice implements Consumer<Instruction> {
      */
     public Form finish(Diagnostics diagnostics) {
         Span first = Span.of(1, 1);
+        if (split == null) {
+            packer.flush();
+        }
+        if (split == null && counted == null && lines > memory) {
+            toStream(); // the last line was the one too many
+        }
         if (split == null) {
             held.forEach(dmc);
             held.clear();
@@ -100,7 +133,7 @@ public final class FormChoice implements Consumer<Instruction> {
         } else {
             limits.labels(s.residentLabels()).ifPresent(v -> diagnostics.report(v.diagnostic(first)));
         }
-        s.resident().forEach(dmc);
+        LinePacker.pack(s.resident(), width).forEach(dmc);
         return Form.STREAM;
     }
 }

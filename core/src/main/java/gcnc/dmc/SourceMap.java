@@ -5,16 +5,21 @@ import java.util.function.Consumer;
 /**
  * The side file that traces DMC output lines back to G-code lines when the map is not inline
  * (docs/dmc-format.md). Like a line-number table, it has one "{@code <dmc line> <source line>}"
- * entry where a run of output lines from one source line starts, followed by the file when the
+ * entry where a run of output commands from one source line starts, followed by the file when the
  * line is in another file than the program's (a called subprogram, {@code O2000.nc}); the run goes
- * on to the line before the next entry. Source line 0 marks lines from no block (header, footer).
- * Entries are handed on as they arise, so memory stays flat however long the program.
+ * on to the command before the next entry. On a packed line ({@link LinePacker}) a run that starts
+ * at its k-th command (counted from 0) is "{@code <dmc line>.<k> <source line>}". Source line 0
+ * marks commands from no block (header, footer). Entries are handed on as they arise, so memory
+ * stays flat however long the program.
  */
 public final class SourceMap {
     /** Where the entries go, as numbers: an output that writes them as text without making strings. */
     public interface Entries {
-        /** @param file the G-code file, or null for the program's own */
-        void entry(int dmcLine, int sourceLine, String file);
+        /**
+         * @param statement the command on the DMC line where the run starts, counted from 0
+         * @param file      the G-code file, or null for the program's own
+         */
+        void entry(int dmcLine, int statement, int sourceLine, String file);
     }
 
     private final Entries entries;
@@ -44,7 +49,8 @@ public final class SourceMap {
 
     /** @param mapLines receives each line of the map file ("{@code <dmc line> <source line>}"), in output order */
     public SourceMap(Consumer<String> mapLines) {
-        this((Entries) (dmc, source, file) -> mapLines.accept(dmc + " " + source + (file == null ? "" : " " + file)));
+        this((Entries) (dmc, statement, source, file) -> mapLines.accept(dmc + (statement == 0 ? "" : "." + statement)
+                + " " + source + (file == null ? "" : " " + file)));
         this.stops = (line, why) -> mapLines.accept(stopLine(line, why));
     }
 
@@ -61,17 +67,40 @@ public final class SourceMap {
     public Consumer<Instruction> wrap(Consumer<Instruction> out) {
         return i -> {
             dmcLines++;
-            Source s = i.source();
-            if (s.line() != lastSource || !java.util.Objects.equals(s.file(), lastFile)) {
-                lastSource = s.line();
-                lastFile = s.file();
-                entries.entry(dmcLines, lastSource, lastFile);
-            }
+            entry(i, 0);
             out.accept(i);
-            if (i.command() instanceof Command.AwaitSequence a && a.why() != null) {
-                stops.stop(dmcLines, a.why());
+            stop(i);
+        };
+    }
+
+    /** A sink that numbers packed lines passing to {@code out} and records where each run of their commands came from. */
+    public Consumer<LinePacker.Line> wrapLines(Consumer<LinePacker.Line> out) {
+        return l -> {
+            dmcLines++;
+            java.util.List<Instruction> is = l.instructions();
+            for (int k = 0; k < is.size(); k++) {
+                entry(is.get(k), k);
+            }
+            out.accept(l);
+            for (Instruction i : is) {
+                stop(i);
             }
         };
+    }
+
+    private void entry(Instruction i, int statement) {
+        Source s = i.source();
+        if (s.line() != lastSource || !java.util.Objects.equals(s.file(), lastFile)) {
+            lastSource = s.line();
+            lastFile = s.file();
+            entries.entry(dmcLines, statement, lastSource, lastFile);
+        }
+    }
+
+    private void stop(Instruction i) {
+        if (i.command() instanceof Command.AwaitSequence a && a.why() != null) {
+            stops.stop(dmcLines, a.why());
+        }
     }
 
     /** How many DMC lines have passed. */
@@ -93,17 +122,22 @@ public final class SourceMap {
     }
 
     /**
-     * A map file read back: where each DMC line came from (null where a run came from no block,
+     * A map file read back: where each DMC command came from (null where a run came from no block,
      * or before the first entry), the G-code file's name when the map names it, the SHA-256 of
      * the DMC it was written with (none in a map of gcnc before 2026-11: it cannot be trusted), and
      * for a resident program the SHA-256 of its stream.
      */
-    public record Table(java.util.function.IntFunction<Source> lines, java.util.Optional<String> source,
+    public record Table(Locator at, java.util.Optional<String> source,
                         java.util.Optional<String> dmcSha256, java.util.Optional<String> streamSha256) {
-        /** The G-code line of each DMC line, whatever its file (0: from no block). */
+        /** Where the first command of each DMC line came from. */
+        public java.util.function.IntFunction<Source> lines() {
+            return n -> at.source(n, 0);
+        }
+
+        /** The G-code line of each DMC line's first command, whatever its file (0: from no block). */
         public java.util.function.IntUnaryOperator lineNumbers() {
             return n -> {
-                Source s = lines.apply(n);
+                Source s = at.source(n, 0);
                 return s == null ? 0 : s.line();
             };
         }
@@ -114,9 +148,15 @@ public final class SourceMap {
         }
     }
 
+    /** Where a DMC command came from: its line (from 1) and its place on the line (from 0). */
+    @FunctionalInterface
+    public interface Locator {
+        Source source(int dmcLine, int statement);
+    }
+
     /** Reads a map file back; lines that are neither an entry, {@code # source} nor {@code # dmc sha256} are skipped. */
     public static Table read(java.io.BufferedReader in) throws java.io.IOException {
-        java.util.List<int[]> runs = new java.util.ArrayList<>();
+        java.util.List<long[]> runs = new java.util.ArrayList<>();
         java.util.List<String> files = new java.util.ArrayList<>();
         String source = null;
         String dmc = null;
@@ -135,24 +175,41 @@ public final class SourceMap {
                 continue;
             }
             String[] f = l.strip().split(" ", 3);
-            if (f.length >= 2 && number(f[0]) && number(f[1])) {
-                runs.add(new int[] {Integer.parseInt(f[0]), Integer.parseInt(f[1])});
+            long at = f.length >= 2 ? place(f[0]) : -1;
+            if (at >= 0 && number(f[1])) {
+                runs.add(new long[] {at, Integer.parseInt(f[1])});
                 files.add(f.length == 3 ? f[2] : null);
             }
         }
-        int[] start = new int[runs.size()];
+        long[] start = new long[runs.size()];
         Source[] from = new Source[runs.size()];
         for (int i = 0; i < start.length; i++) {
             start[i] = runs.get(i)[0];
-            int line = runs.get(i)[1];
+            int line = (int) runs.get(i)[1];
             from[i] = line == 0 ? null : files.get(i) == null ? Source.line(line)
                     : new Source(gcnc.diag.Origin.file(files.get(i)), line, -1);
         }
-        return new Table(dmcLine -> {
-            int i = java.util.Arrays.binarySearch(start, dmcLine);
+        return new Table((dmcLine, statement) -> {
+            int i = java.util.Arrays.binarySearch(start, key(dmcLine, statement));
             int run = i >= 0 ? i : -i - 2;
             return run < 0 ? null : from[run];
         }, java.util.Optional.ofNullable(source), java.util.Optional.ofNullable(dmc), java.util.Optional.ofNullable(stream));
+    }
+
+    /** A command's place as one number that sorts as the program runs: its line, then its place on the line. */
+    private static long key(int dmcLine, int statement) {
+        return ((long) dmcLine << 16) | statement;
+    }
+
+    /** An entry's place, {@code L} or {@code L.K}, as {@link #key}; -1 when it is neither. */
+    private static long place(String s) {
+        int dot = s.indexOf('.');
+        String line = dot < 0 ? s : s.substring(0, dot);
+        String statement = dot < 0 ? "0" : s.substring(dot + 1);
+        if (!number(line) || !number(statement) || statement.length() > 4) {
+            return -1;
+        }
+        return key(Integer.parseInt(line), Integer.parseInt(statement));
     }
 
     private static boolean number(String s) {

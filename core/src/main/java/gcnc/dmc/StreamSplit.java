@@ -18,8 +18,10 @@ import java.util.function.Consumer;
  * that finished from one that stopped (the homing check); then {@code EN}, the moved blocks, and the
  * program form's routines.
  *
+ * <p>The resident program's lines are counted packed ({@link LinePacker}), as it is written.
+ *
  * <p>Look-ahead: the commands of one block, at most {@link #RUN_LIMIT}; the resident program is held
- * until the end, at most {@code residentCap} lines (beyond that only counted: it cannot be
+ * until the end, at most {@code residentCap} packed lines (beyond that only counted: it cannot be
  * downloaded anyway).
  */
 public final class StreamSplit implements Consumer<Instruction> {
@@ -35,7 +37,7 @@ public final class StreamSplit implements Consumer<Instruction> {
                          int moved, List<Source> tooLong) {
         /** Whether the resident program was held whole (not only counted). */
         public boolean held() {
-            return resident.size() == residentLines;
+            return !resident.isEmpty();
         }
     }
 
@@ -53,7 +55,11 @@ public final class StreamSplit implements Consumer<Instruction> {
     private boolean runEmbeds;
     /** Commands of the block being read already went to the stream (it passed {@link #RUN_LIMIT}). */
     private boolean runStreamed;
+    private final int width;
+    /** Counts the moved blocks' routines as packed lines. */
+    private final LinePacker routineCounter;
     private long routineLines;
+    private boolean routinesWhole = true;
     private int routineLabels;
     private long streamLines;
     private final List<Source> tooLong = new ArrayList<>();
@@ -61,10 +67,13 @@ public final class StreamSplit implements Consumer<Instruction> {
     /**
      * @param stream      receives the segment stream, in order
      * @param residentCap the most resident lines held (the model's program memory); beyond it they are counted
+     * @param width       the characters of a program line (the model's), to count the resident program's lines packed
      */
-    public StreamSplit(Consumer<Instruction> stream, long residentCap) {
+    public StreamSplit(Consumer<Instruction> stream, long residentCap, int width) {
         this.stream = stream;
         this.residentCap = residentCap;
+        this.width = width;
+        this.routineCounter = new LinePacker(width, l -> routineLines++);
     }
 
     @Override
@@ -149,9 +158,11 @@ public final class StreamSplit implements Consumer<Instruction> {
     }
 
     private void keep(Instruction i) {
-        routineLines++;
-        if (header.size() + routines.size() + footer.size() < residentCap) {
+        routineCounter.accept(i);
+        if (routinesWhole && routineLines < residentCap) {
             routines.add(i);
+        } else {
+            routinesWhole = false;
         }
     }
 
@@ -171,12 +182,15 @@ public final class StreamSplit implements Consumer<Instruction> {
         }
         resident.add(new Instruction(new Command.SetVariable(READY, 1), Source.NONE));
         resident.add(new Instruction(new Command.End(), Source.NONE));
-        boolean whole = routines.size() == routineLines;
+        routineCounter.flush();
+        // the set-up ends with EN and each routine and handler starts with its label: the three parts pack apart
+        long lines = LinePacker.count(resident, width) + routineLines;
         resident.addAll(routines);
         // the program form's own EN is replaced by the one above
-        resident.addAll(footer.isEmpty() ? footer : footer.subList(1, footer.size()));
-        long lines = (header.isEmpty() ? 0 : 1) + header.size() + 2 + routineLines
-                + Math.max(0, footer.size() - 1);
+        List<Instruction> handlers = footer.isEmpty() ? footer : footer.subList(1, footer.size());
+        lines += LinePacker.count(handlers, width);
+        resident.addAll(handlers);
+        boolean whole = routinesWhole;
         int labels = routineLabels;
         for (Instruction i : header) {
             labels += i.command() instanceof Command.Label ? 1 : 0;

@@ -111,6 +111,11 @@ public final class ControllerLimits {
         return check(Limit.LINE_LENGTH, chars);
     }
 
+    /** The most characters on one program line: what a packed line is filled to. */
+    public int lineWidth() {
+        return (int) model.range(Limit.LINE_LENGTH).max();
+    }
+
     /** The lines of a downloaded program. */
     public Optional<Violation> programLines(int lines) {
         return check(Limit.PROGRAM_LINES, lines);

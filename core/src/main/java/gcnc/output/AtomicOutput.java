@@ -258,14 +258,23 @@ public final class AtomicOutput implements AutoCloseable {
      * profile of a long compile.
      */
     public void line(long a, long b) {
+        line(a, 0, b);
+    }
+
+    /** "{@code a.k b}", or "{@code a b}" when {@code k} is 0: a map entry that starts inside a packed line. */
+    public void line(long a, int k, long b) {
         if (failure != null) {
             return;
         }
         try {
-            if (buffered + 42 > buffer.length) {
+            if (buffered + 54 > buffer.length) {
                 drain();
             }
             digits(a);
+            if (k != 0) {
+                buffer[buffered++] = '.';
+                digits(k);
+            }
             buffer[buffered++] = ' ';
             digits(b);
             buffer[buffered++] = '\n';

@@ -148,17 +148,18 @@ public final class DmcOutputs implements AutoCloseable {
     }
 
     /**
-     * Adds a map entry "{@code <dmc line> <source line>}", with the file after them when the line
-     * is in another file than the program's; nothing when there is no map.
+     * Adds a map entry "{@code <dmc line> <source line>}" ({@code <dmc line>.<k>} when the run starts
+     * at the k-th command of a packed line), with the file after them when the line is in another
+     * file than the program's; nothing when there is no map.
      */
-    public void mapEntry(int dmcLine, int sourceLine, String file) {
+    public void mapEntry(int dmcLine, int statement, int sourceLine, String file) {
         if (map == null) {
             return;
         }
         if (file == null) {
-            map.line(dmcLine, sourceLine);
+            map.line(dmcLine, statement, sourceLine);
         } else {
-            map.line(dmcLine + " " + sourceLine + " " + file);
+            map.line(dmcLine + (statement == 0 ? "" : "." + statement) + " " + sourceLine + " " + file);
         }
     }
 

@@ -5,6 +5,7 @@ import gcnc.dmc.DmcPrinter;
 import gcnc.dmc.Form;
 import gcnc.dmc.FormChoice;
 import gcnc.dmc.Instruction;
+import gcnc.dmc.LinePacker;
 import gcnc.dmc.SourceMap;
 import gcnc.machine.ControllerLimits;
 import java.io.IOException;
@@ -81,10 +82,11 @@ public final class FormOutputs implements AutoCloseable {
     /**
      * Where the compiled instructions go, in the program form's order: into the form asked for, or
      * the one that fits {@code limits}' program memory (none asked). Standard output takes the program
-     * form only.
+     * form only. The DMC (the program, or the resident program) is packed into lines of the model's
+     * width ({@link LinePacker}); the stream is one command a line, as the host sends it.
      */
     public Consumer<Instruction> sink(Optional<Form> asked, ControllerLimits limits) {
-        Consumer<Instruction> toDmc = programSink();
+        Consumer<LinePacker.Line> toDmc = dmcMap.wrapLines(l -> dmc.dmcLine(l.text()));
         if (stream == null) {
             choice = new FormChoice(Optional.of(Form.PROGRAM), limits, toDmc, i -> { });
         } else {
@@ -93,7 +95,7 @@ public final class FormOutputs implements AutoCloseable {
         return choice;
     }
 
-    /** The instructions as they come, into the DMC alone: no form (the thesis's format). */
+    /** The instructions as they come, one a line, into the DMC alone: no form (the thesis's format). */
     public Consumer<Instruction> programSink() {
         return dmcMap.wrap(i -> dmc.dmcLine(DmcPrinter.print(i.command())));
     }

@@ -29,6 +29,8 @@ public final class DmcProgram {
     private final double[] secondsBefore;
     private final double totalSeconds;
     private final Plane plane;
+    /** The characters of one controller line: what the downloaded pieces are packed to. */
+    private final int lineWidth;
 
     /**
      * The vector plane: the two Galil channels in channel order (A before B, as {@code VM} lists
@@ -72,7 +74,7 @@ public final class DmcProgram {
     }
 
     private DmcProgram(List<Instruction> instructions, List<String> lines, List<Sequence> sequences,
-                       int[] sequenceOf, double[] secondsBefore, double totalSeconds, Plane plane) {
+                       int[] sequenceOf, double[] secondsBefore, double totalSeconds, Plane plane, int lineWidth) {
         this.instructions = instructions;
         this.lines = lines;
         this.sequences = sequences;
@@ -80,6 +82,7 @@ public final class DmcProgram {
         this.secondsBefore = secondsBefore;
         this.totalSeconds = totalSeconds;
         this.plane = plane;
+        this.lineWidth = lineWidth;
     }
 
     /**
@@ -99,34 +102,43 @@ public final class DmcProgram {
         }
         int n = all.size();
         return new DmcProgram(all, Collections.unmodifiableList(printed), Collections.unmodifiableList(w.sequences),
-                w.sequenceOf(n), w.secondsBefore(n), w.seconds, plane);
+                w.sequenceOf(n), w.secondsBefore(n), w.seconds, plane, profile.controllerLimits().lineWidth());
     }
 
     /**
      * A DMC file and its source map read back (a program compiled earlier, a test's own DMC): every
-     * line through {@link DmcReader}; a line it cannot read is an {@link IllegalArgumentException}
-     * naming it (gcnc writes none).
+     * line split into its commands and each read through {@link DmcReader}; a command it cannot read
+     * is an {@link IllegalArgumentException} naming it (gcnc writes none).
      *
-     * @param lines the DMC, one directive a line
+     * @param lines the DMC's lines, packed or one command each
      * @param map   the source map read back ({@link MapReader})
      */
     public static DmcProgram read(List<String> lines, MapReader.Map map, MachineProfile profile) {
         List<Instruction> out = new ArrayList<>(lines.size());
         for (int i = 0; i < lines.size(); i++) {
-            String text = lines.get(i);
             int at = i + 1;
-            Command c = DmcReader.read(text, (code, args) -> {
-                throw new IllegalArgumentException("DMC line " + at + " '" + text + "': " + code.id());
-            });
-            if (c == null) {
+            List<String> statements = DmcReader.statements(lines.get(i));
+            if (statements.isEmpty()) {
                 throw new IllegalArgumentException("DMC line " + at + " is empty");
             }
-            String file = map.file(at);
-            out.add(new Instruction(c, new Source(file == null ? Origin.PROGRAM : Origin.file(file), map.line(at), -1)));
+            for (int k = 0; k < statements.size(); k++) {
+                String text = statements.get(k);
+                Command c = DmcReader.read(text, (code, args) -> {
+                    throw new IllegalArgumentException("DMC line " + at + " '" + text + "': " + code.id());
+                });
+                String file = map.file(at, k);
+                out.add(new Instruction(c, new Source(file == null ? Origin.PROGRAM : Origin.file(file), map.line(at, k), -1)));
+            }
         }
         return of(out, profile);
     }
 
+    /** The characters of one controller line, the model's: what a downloaded piece is packed to ({@link Piece}). */
+    public int lineWidth() {
+        return lineWidth;
+    }
+
+    /** The instructions printed, one command each (a downloaded piece packs them: {@link Piece#lines}). */
     public List<String> lines() {
         return lines;
     }

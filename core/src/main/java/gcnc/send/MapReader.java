@@ -11,24 +11,37 @@ import java.util.List;
  * line whose first word is the DMC line number and whose last whole number is the G-code line;
  * a word between them that is not a number names the file the block came from (the file column
  * being added for called programs; a {@code file:line} word is read as both). Comment lines
- * ({@code #}) and anything else are skipped, so a map with more columns reads the same.
+ * ({@code #}) and anything else are skipped, so a map with more columns reads the same. A run that
+ * starts inside a packed line is written {@code <dmc line>.<k>} (its k-th command, from 0).
  */
 public final class MapReader {
-    /** The map: for a DMC line (1-based), the G-code line and file of the run it is in. */
-    public record Map(int[] starts, int[] lines, String[] files) {
+    /**
+     * The map: for a DMC line (1-based) and a command on it (0-based), the G-code line and file of
+     * the run it is in; {@code starts} are the runs' places as {@code line << 16 | command}.
+     */
+    public record Map(long[] starts, int[] lines, String[] files) {
+        /** The G-code line of the DMC line's first command. */
         public int line(int dmcLine) {
-            int r = run(dmcLine);
+            return line(dmcLine, 0);
+        }
+
+        public int line(int dmcLine, int statement) {
+            int r = run(dmcLine, statement);
             return r < 0 ? 0 : lines[r];
         }
 
         /** The file of a called program's block, or null for the program itself. */
         public String file(int dmcLine) {
-            int r = run(dmcLine);
+            return file(dmcLine, 0);
+        }
+
+        public String file(int dmcLine, int statement) {
+            int r = run(dmcLine, statement);
             return r < 0 ? null : files[r];
         }
 
-        private int run(int dmcLine) {
-            int i = Arrays.binarySearch(starts, dmcLine);
+        private int run(int dmcLine, int statement) {
+            int i = Arrays.binarySearch(starts, ((long) dmcLine << 16) | statement);
             return i >= 0 ? i : -i - 2;
         }
     }
@@ -37,7 +50,7 @@ public final class MapReader {
     }
 
     public static Map read(BufferedReader in) throws IOException {
-        List<int[]> runs = new ArrayList<>();
+        List<long[]> runs = new ArrayList<>();
         List<String> files = new ArrayList<>();
         for (String l = in.readLine(); l != null; l = in.readLine()) {
             String t = l.strip();
@@ -45,7 +58,10 @@ public final class MapReader {
                 continue;
             }
             String[] w = t.split("\\s+");
-            if (w.length < 2 || !whole(w[0])) {
+            int dot = w[0].indexOf('.');
+            String first = dot < 0 ? w[0] : w[0].substring(0, dot);
+            String statement = dot < 0 ? "0" : w[0].substring(dot + 1);
+            if (w.length < 2 || !whole(first) || !whole(statement) || statement.length() > 4) {
                 continue;
             }
             Integer source = null;
@@ -65,14 +81,14 @@ public final class MapReader {
             if (source == null) {
                 continue;
             }
-            runs.add(new int[] {Integer.parseInt(w[0]), source});
+            runs.add(new long[] {((long) Integer.parseInt(first) << 16) | Integer.parseInt(statement), source});
             files.add(file);
         }
-        int[] starts = new int[runs.size()];
+        long[] starts = new long[runs.size()];
         int[] lines = new int[runs.size()];
         for (int i = 0; i < starts.length; i++) {
             starts[i] = runs.get(i)[0];
-            lines[i] = runs.get(i)[1];
+            lines[i] = (int) runs.get(i)[1];
         }
         return new Map(starts, lines, files.toArray(new String[0]));
     }

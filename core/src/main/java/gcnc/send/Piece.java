@@ -1,49 +1,90 @@
 package gcnc.send;
 
 import gcnc.dmc.Command;
+import gcnc.dmc.Instruction;
+import gcnc.dmc.LinePacker;
+import gcnc.dmc.Source;
 import java.util.ArrayList;
 import java.util.List;
 
 /**
  * What is downloaded at once: the whole program, one step's block, or a resume program; each of its
- * lines with the compiled program's line it stands for ({@code origin}, 0-based), so that what the
- * controller executes always maps back to the G-code through the one source map.
+ * commands with the compiled program's instruction it stands for ({@code origin}, 0-based), so that
+ * what the controller executes always maps back to the G-code through the one source map. The
+ * commands are packed into lines as the compile packs them ({@link LinePacker}, the model's line
+ * width), so the whole program downloads as the bytes of FILE.dmc; {@link #lastOf} turns the line the
+ * controller reports ({@code _XQ0}) into the command it stands in.
  */
-public record Piece(List<Command> commands, int[] origin, List<String> lines) {
+public record Piece(List<Command> commands, int[] origin, List<String> lines, int[] lineStart) {
     public Piece {
         commands = List.copyOf(commands);
         lines = List.copyOf(lines);
-        if (origin.length != commands.size() || lines.size() != commands.size()) {
-            throw new IllegalArgumentException("a line without its origin");
+        if (origin.length != commands.size() || lineStart.length != lines.size()) {
+            throw new IllegalArgumentException("a command without its origin");
         }
     }
 
-    /** The commands, each printed once ({@link gcnc.dmc.DmcPrinter}): the lines downloaded. */
-    public Piece(List<Command> commands, int[] origin) {
-        this(commands, origin, commands.stream().map(gcnc.dmc.DmcPrinter::print).toList());
+    /** The commands packed into lines of {@code width} characters, each printed once ({@link gcnc.dmc.DmcPrinter}). */
+    public Piece(List<Command> commands, int[] origin, int width) {
+        this(commands, origin, packed(commands, width));
+    }
+
+    private Piece(List<Command> commands, int[] origin, List<LinePacker.Line> packed) {
+        this(commands, origin, packed.stream().map(LinePacker.Line::text).toList(), starts(packed));
+    }
+
+    private static List<LinePacker.Line> packed(List<Command> commands, int width) {
+        List<Instruction> is = new ArrayList<>(commands.size());
+        for (Command c : commands) {
+            is.add(new Instruction(c, Source.NONE));
+        }
+        return LinePacker.pack(is, width);
+    }
+
+    private static int[] starts(List<LinePacker.Line> packed) {
+        int[] at = new int[packed.size()];
+        int n = 0;
+        for (int i = 0; i < at.length; i++) {
+            at[i] = n;
+            n += packed.get(i).instructions().size();
+        }
+        return at;
     }
 
     /** The whole program. */
     public static Piece whole(DmcProgram p) {
-        int[] o = new int[p.lines().size()];
+        int[] o = new int[p.instructions().size()];
         List<Command> c = new ArrayList<>(o.length);
         for (int i = 0; i < o.length; i++) {
             o[i] = i;
             c.add(p.command(i));
         }
-        return new Piece(c, o, p.lines());
+        return new Piece(c, o, p.lineWidth());
     }
 
-    /** The compiled program's line for the controller's line {@code n} (0-based), or -1. */
-    public int originOf(int n) {
-        return n >= 0 && n < origin.length ? origin[n] : -1;
+    /** The compiled program's instruction for command {@code j} of the piece (0-based), or -1. */
+    public int originOf(int j) {
+        return j >= 0 && j < origin.length ? origin[j] : -1;
+    }
+
+    /** The first command on the controller's line {@code n} (0-based), or -1 beyond the piece. */
+    public int firstOf(int n) {
+        return n >= 0 && n < lineStart.length ? lineStart[n] : -1;
     }
 
     /**
-     * The vector sequence the controller's line {@code n} is in, as this piece gives it: the compiled
-     * lines its segments stand for, in the controller's order (segment k of the sequence, {@code _CSS}
-     * = k, is {@code origins[k - 1]}), and whether line {@code n} is at or past its {@code BGS} (the
-     * motion has begun). Null when line {@code n} is in no vector sequence.
+     * The last command on the controller's line {@code n} (0-based), or -1 beyond the piece: where
+     * thread 0 stands while {@code _XQ0} reads {@code n}, since a packed line ends at each wait.
+     */
+    public int lastOf(int n) {
+        return n < 0 || n >= lineStart.length ? -1 : n + 1 < lineStart.length ? lineStart[n + 1] - 1 : commands.size() - 1;
+    }
+
+    /**
+     * The vector sequence the piece's command {@code n} is in: the compiled instructions its segments
+     * stand for, in the controller's order (segment k of the sequence, {@code _CSS} = k, is
+     * {@code origins[k - 1]}), and whether command {@code n} is at or past its {@code BGS} (the
+     * motion has begun). Null when command {@code n} is in no vector sequence.
      */
     public Segments segmentsAt(int n, DmcProgram program) {
         int start = n;
@@ -62,7 +103,7 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines) {
         }
         List<Integer> origins = new ArrayList<>();
         boolean begun = false;
-        for (int j = start + 1; j < lines.size(); j++) {
+        for (int j = start + 1; j < commands.size(); j++) {
             Command c = program.command(originOf(j));
             if (c instanceof Command.AwaitSequence) {
                 break;
@@ -84,7 +125,7 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines) {
         }
     }
 
-    /** Builds a piece line by line. */
+    /** Builds a piece command by command. */
     public static final class Builder {
         private final List<Command> commands = new ArrayList<>();
         private final List<Integer> origin = new ArrayList<>();
@@ -99,8 +140,9 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines) {
             return commands.size();
         }
 
-        public Piece build() {
-            return new Piece(commands, origin.stream().mapToInt(Integer::intValue).toArray());
+        /** @param width the characters of a controller line ({@link DmcProgram#lineWidth}) */
+        public Piece build(int width) {
+            return new Piece(commands, origin.stream().mapToInt(Integer::intValue).toArray(), width);
         }
     }
 }

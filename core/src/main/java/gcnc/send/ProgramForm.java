@@ -109,7 +109,7 @@ public final class ProgramForm implements Form {
                     b.add(lines.get(k), piece.originOf(k));
                 }
             }
-            out.add(b.build());
+            out.add(b.build(program.lineWidth()));
             i = j;
         }
         return out;
@@ -190,16 +190,17 @@ public final class ProgramForm implements Form {
     }
 
     /**
-     * The compiled line executing when thread 0 is at the controller's line {@code xq} and the
-     * sequence's segment {@code css} executes: the line itself, except in a vector sequence, where
+     * The compiled instruction executing when thread 0 is at the controller's line {@code xq} and the
+     * sequence's segment {@code css} executes: the line's last command, except in a vector sequence, where
      * the thread waits at {@code AMS} while the segments run: there the segment executing names the
      * line, so that a blended sequence's blocks are followed one by one; before its {@code BGS} the
      * sequence's first segment is next.
      */
     static int executing(Piece piece, int xq, int css, DmcProgram program) {
-        Piece.Segments segments = piece.segmentsAt(xq, program);
+        int at = piece.lastOf(xq); // a packed line ends at its wait: that is where the thread stands
+        Piece.Segments segments = piece.segmentsAt(at, program);
         if (segments == null || segments.origins().length == 0) {
-            return piece.originOf(xq);
+            return piece.originOf(at);
         }
         if (!segments.begun() || segments.origins().length == 1) {
             return segments.origins()[0];
@@ -221,7 +222,7 @@ public final class ProgramForm implements Form {
             double[] at = c.position();
             DmcProgram program = progress.program();
             int origin = progress.executingIndex();
-            for (int j = Math.max(lastXq, 0); j < piece.lines().size(); j++) {
+            for (int j = Math.max(piece.firstOf(lastXq), 0); j < piece.commands().size(); j++) {
                 if (!(program.command(piece.originOf(j)) instanceof Command.AwaitSequence)) {
                     continue;
                 }
@@ -269,7 +270,8 @@ public final class ProgramForm implements Form {
                 int tc = c.errorCode();
                 if (tc != 0) {
                     int ed = c.errorLine();
-                    int origin = piece.originOf(ed);
+                    // which command of a packed line failed the controller does not say: the line's first
+                    int origin = piece.originOf(piece.firstOf(ed));
                     progress.at(origin, null, op);
                     RunFault f = c.refused(origin >= 0 ? "'" + piece.lines().get(ed) + "'" : "the program", progress.executingLine(), true);
                     c.stopAll();

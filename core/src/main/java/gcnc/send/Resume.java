@@ -161,15 +161,15 @@ public final class Resume {
             }
         }
         if (replanned != null) {
-            Piece r = replanned.lines().build();
-            for (int i = 0; i < r.lines().size(); i++) {
+            Piece r = replanned.lines().build(program.lineWidth());
+            for (int i = 0; i < r.commands().size(); i++) {
                 b.add(r.commands().get(i), r.origin()[i]);
             }
         }
         for (int i = Math.max(from, header); i < lines.size(); i++) {
             b.add(program.command(i), i);
         }
-        return b.build();
+        return b.build(program.lineWidth());
     }
 
     /**

@@ -43,7 +43,7 @@ public final class StreamForm implements Form {
 
     @Override
     public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
-        return splitOnce(piece, program).resident().size();
+        return splitOnce(piece, program).residentLines(program.lineWidth()).size();
     }
 
     /** A command of the run and the compiled program's line it stands for. */
@@ -52,8 +52,10 @@ public final class StreamForm implements Form {
 
     /** The piece as the two parts of the stream form, each command with its compiled line. */
     record Split(List<Sent> resident, List<Sent> stream) {
-        List<String> residentLines() {
-            return resident.stream().map(s -> gcnc.dmc.DmcPrinter.print(s.command())).toList();
+        /** The resident program as it is downloaded: packed into lines as the compile writes it. */
+        List<String> residentLines(int width) {
+            List<Instruction> is = resident.stream().map(s -> new Instruction(s.command(), gcnc.dmc.Source.NONE)).toList();
+            return gcnc.dmc.LinePacker.pack(is, width).stream().map(gcnc.dmc.LinePacker.Line::text).toList();
         }
     }
 
@@ -73,7 +75,7 @@ public final class StreamForm implements Form {
     static Split split(Piece piece, DmcProgram program) {
         Map<Instruction, Integer> origins = new IdentityHashMap<>();
         List<Instruction> stream = new ArrayList<>();
-        StreamSplit split = new StreamSplit(stream::add, Long.MAX_VALUE);
+        StreamSplit split = new StreamSplit(stream::add, Long.MAX_VALUE, program.lineWidth());
         for (int j = 0; j < piece.commands().size(); j++) {
             int o = Math.max(0, piece.originOf(j));
             Instruction i = new Instruction(piece.commands().get(j), program.instructions().get(o).source());
@@ -117,7 +119,7 @@ public final class StreamForm implements Form {
     public void run(Piece piece, Controller c, Progress progress, Operator op, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
         Split split = splitOnce(piece, progress.program());
-        List<String> resident = split.residentLines();
+        List<String> resident = split.residentLines(progress.program().lineWidth());
         c.halt();
         GalilClient.Reply dl = c.client().download(resident);
         if (!dl.ok()) {

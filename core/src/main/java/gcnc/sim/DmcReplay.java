@@ -29,8 +29,11 @@ public final class DmcReplay {
     private DmcReplay() {
     }
 
-    /** One line read: its command (null for a blank or unreadable line), where it is located, what the reader could not read. */
-    record Read(Command command, String text, Source at, List<Fault> faults) {
+    /**
+     * One command read: its command (null for a blank or unreadable statement), where it is located,
+     * what the reader could not read, and the file's line it is on.
+     */
+    record Read(Command command, String text, Source at, List<Fault> faults, int dmcLine) {
     }
 
     /** The lines of a replay, one at a time; null at the end. */
@@ -39,29 +42,40 @@ public final class DmcReplay {
     }
 
     /**
-     * A DMC file's lines, read once each: located at the map's G-code line, else at the last
-     * {@code NO L} mark's, else at the DMC line.
+     * A DMC file's commands, each line read once and split into its statements ({@code ;}, a packed
+     * line): each located at the map's G-code line, else at the last {@code NO L} mark's, else at
+     * the DMC line.
      */
-    static Reads lines(BufferedReader in, java.util.function.IntFunction<Source> sourceOf) {
+    static Reads lines(BufferedReader in, gcnc.dmc.SourceMap.Locator sourceOf) {
         return new Reads() {
             private int dmcLine;
             private int source = -1;
+            private List<String> statements = List.of();
+            private int next;
 
             @Override
             public Read next() throws IOException {
-                String l = in.readLine();
-                if (l == null) {
-                    return null;
+                String l = null;
+                if (next >= statements.size()) {
+                    l = in.readLine();
+                    if (l == null) {
+                        return null;
+                    }
+                    dmcLine++;
+                    statements = DmcReader.statements(l);
+                    next = 0;
                 }
-                dmcLine++;
-                Source mapped = sourceOf == null ? null : sourceOf.apply(dmcLine);
+                // a blank line is one read of nothing: it still counts as a line of the file
+                int k = next++;
+                String text = statements.isEmpty() ? l : statements.get(k);
+                Source mapped = sourceOf == null ? null : sourceOf.source(dmcLine, k);
                 List<Fault> faults = new ArrayList<>(0);
-                Command c = DmcReader.read(l, (code, args) -> faults.add(new Fault(code, args)));
+                Command c = DmcReader.read(text, (code, args) -> faults.add(new Fault(code, args)));
                 if (c instanceof Command.SourceMark mark) {
                     source = mark.line();
                 }
                 Source at = mapped != null ? mapped : Source.line(source > 0 ? source : dmcLine);
-                return new Read(c, l, at, faults);
+                return new Read(c, text, at, faults, dmcLine);
             }
         };
     }
@@ -72,11 +86,11 @@ public final class DmcReplay {
     }
 
     /**
-     * @param sourceOf the G-code file and line of each DMC line, from the source-map side file
+     * @param sourceOf the G-code file and line of each DMC command, from the source-map side file
      *                 ({@link gcnc.dmc.SourceMap#read}; null where it has none); null when there is no map
      */
     public static SimReport replay(BufferedReader in, MachineProfile profile, SimOptions options,
-                                   Diagnostics diagnostics, java.util.function.IntFunction<Source> sourceOf) {
+                                   Diagnostics diagnostics, gcnc.dmc.SourceMap.Locator sourceOf) {
         return replay(lines(in, sourceOf), profile, options, diagnostics);
     }
 

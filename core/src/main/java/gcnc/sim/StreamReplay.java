@@ -12,7 +12,6 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.function.IntFunction;
 
 /**
  * Replays the stream form (docs/galil.md, "The stream form") as the controller and its host run
@@ -32,14 +31,14 @@ public final class StreamReplay {
     private StreamReplay() {
     }
 
-    public static SimReport replay(BufferedReader resident, IntFunction<Source> residentMap, BufferedReader stream,
-                                   IntFunction<Source> streamMap, MachineProfile profile, SimOptions options,
+    public static SimReport replay(BufferedReader resident, gcnc.dmc.SourceMap.Locator residentMap, BufferedReader stream,
+                                   gcnc.dmc.SourceMap.Locator streamMap, MachineProfile profile, SimOptions options,
                                    Diagnostics diagnostics) {
         List<DmcReplay.Read> program = new ArrayList<>();
         DmcReplay.Reads reads = DmcReplay.lines(resident, residentMap);
         try {
             for (DmcReplay.Read r = reads.next(); r != null; r = reads.next()) {
-                if (program.size() == RESIDENT_LINES) {
+                if (r.dmcLine() > RESIDENT_LINES) {
                     diagnostics.error(Code.E244_RESIDENT_TOO_LONG_TO_REPLAY, Span.of(RESIDENT_LINES + 1, 1), RESIDENT_LINES);
                     return new Simulator(profile, options, new Diagnostics()).report();
                 }

@@ -63,21 +63,32 @@ final class Analysis {
      */
     JsonObject simulate(String name, String text, Optional<Path> folder) throws IOException {
         JsonArray dmc = new JsonArray();
-        Compiler.Result r = session.withPrograms(folder).compile(new StringReader(text),
-                Optional.of(session.simulation().withPath()), false, i -> {
-                    JsonObject l = new JsonObject();
-                    l.addProperty("text", DmcPrinter.print(i.command()));
-                    l.addProperty("line", i.source().line());
-                    if (i.source().file() != null) { // a called program's line: named as the page names files
-                        Optional<String> named = fileNames.apply(i.source().file());
-                        if (named.isPresent()) {
-                            l.addProperty("file", named.get());
-                        } else {
-                            l.addProperty("elsewhere", true);
-                        }
+        // the lines packed as gcnc compile packs its program form; each command keeps its G-code line
+        gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(session.profile().controllerLimits().lineWidth(), packed -> {
+            JsonObject l = new JsonObject();
+            l.addProperty("text", packed.text());
+            JsonArray parts = new JsonArray();
+            for (gcnc.dmc.Instruction i : packed.instructions()) {
+                JsonObject c = new JsonObject();
+                c.addProperty("text", DmcPrinter.print(i.command()));
+                c.addProperty("line", i.source().line());
+                if (i.source().file() != null) { // a called program's line: named as the page names files
+                    Optional<String> named = fileNames.apply(i.source().file());
+                    if (named.isPresent()) {
+                        c.addProperty("file", named.get());
+                    } else {
+                        c.addProperty("elsewhere", true);
                     }
-                    dmc.add(l);
-                });
+                }
+                parts.add(c);
+            }
+            l.addProperty("line", parts.get(0).getAsJsonObject().get("line").getAsInt());
+            l.add("parts", parts);
+            dmc.add(l);
+        });
+        Compiler.Result r = session.withPrograms(folder).compile(new StringReader(text),
+                Optional.of(session.simulation().withPath()), false, packer);
+        packer.flush();
         JsonObject doc = new JsonObject();
         doc.add("diagnostics", report(name, r));
         doc.addProperty("blocks", r.blocks());

@@ -34,8 +34,9 @@ import java.util.function.Consumer;
  * @param program the DMC program and its source lines (null when refused)
  * @param blocks  the modal state at each G-code line (null when refused)
  * @param form    program or stream: the form sent (null when refused)
+ * @param dmcLines the lines of {@code FILE.dmc} as written (packed): the program, or the resident program
  */
-record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable blocks, Form form) {
+record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable blocks, Form form, int dmcLines) {
     boolean clean() {
         return program != null;
     }
@@ -49,6 +50,7 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
         Compiler.Result r;
         DmcProgram program;
         Form form;
+        int dmcLines;
         try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
             outputs.mapSource(file.getFileName().toString(), file);
             Consumer<Instruction> written = outputs.sink(Optional.empty(), session.profile().controllerLimits());
@@ -62,11 +64,12 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
                 r = step ? s.compileExactStop(in, sim, sink) : s.compile(in, sim, false, sink);
             }
             if (!r.ok()) {
-                return new RunProgram(analysis.report(name, r), r.diagnostics().errorCount(), null, null, null);
+                return new RunProgram(analysis.report(name, r), r.diagnostics().errorCount(), null, null, null, 0);
             }
             form = outputs.finish(r.diagnostics());
             program = DmcProgram.of(compiled, session.profile());
             outputs.commit();
+            dmcLines = outputs.dmcLines();
         } catch (DmcOutputs.Failed e) {
             throw e.problem();
         }
@@ -75,7 +78,7 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
                 .orElse(session.profile());
         try (Reader again = Session.decode(Files.newInputStream(file))) {
             BlockTable blocks = BlockTable.of(again, session.tables(), onBlank, folder);
-            return new RunProgram(analysis.report(name, r), 0, program, blocks, form);
+            return new RunProgram(analysis.report(name, r), 0, program, blocks, form, dmcLines);
         }
     }
 }

@@ -168,7 +168,7 @@ final class Runs implements AutoCloseable {
             if (program.form() == gcnc.dmc.Form.STREAM) {
                 o.addProperty("stream", streamName);
             }
-            o.addProperty("dmcLines", program.program().lines().size());
+            o.addProperty("dmcLines", program.dmcLines());
             String address = target instanceof RunTarget.Virtual ? controllers.virtual(ctx.session().profile(), resumeAt == null) : null;
             if (address != null) {
                 o.addProperty("address", address);

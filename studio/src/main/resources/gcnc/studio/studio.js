@@ -138,10 +138,10 @@ function cursorMoved() {
   $("cursor").textContent = t.cursor(c.line, c.column);
   $("cursor").dataset.line = c.line;
   lightPath(c.line);
-  for (const li of document.querySelectorAll("#dmc li.current")) li.classList.remove("current");
-  const lines = dmcBySource.get(c.line) || [];
-  lines.forEach((li) => li.classList.add("current"));
-  if (lines.length) lines[0].scrollIntoView({ block: "nearest" });
+  for (const e of document.querySelectorAll("#dmc .current")) e.classList.remove("current");
+  const lit = dmcBySource.get(c.line) || []; // the lines that hold the block's commands, and the commands
+  lit.forEach((e) => e.classList.add("current"));
+  if (lit.length) lit[0].scrollIntoView({ block: "nearest" });
 }
 
 /** Puts the cursor at a line (and column) and shows it: from the error list, the path or the DMC. */
@@ -301,20 +301,33 @@ async function showStock(line) {
   goTo(line, 1, true);
 }
 
+/**
+ * The DMC as the file holds it, a packed line per item; each command of a line is a span with its
+ * G-code line, so the cursor on a block lights its commands (and their lines), and a click on a
+ * command goes to its block.
+ */
 function showDmc(lines) {
   const ol = $("dmc");
   ol.replaceChildren();
   dmcBySource = new Map();
   for (const l of lines) {
     const li = document.createElement("li");
-    li.textContent = l.text;
     li.dataset.source = l.line;
-    if (l.file) li.dataset.file = l.file;
-    if (l.line > 0) li.addEventListener("click", () => pick(l.line, l.file, l.elsewhere));
+    l.parts.forEach((p, k) => {
+      if (k > 0) li.append(";");
+      const span = document.createElement("span");
+      span.textContent = p.text;
+      span.dataset.source = p.line;
+      if (p.file) span.dataset.file = p.file;
+      if (p.line > 0) span.addEventListener("click", () => pick(p.line, p.file, p.elsewhere));
+      li.appendChild(span);
+      if (p.file || p.elsewhere) return; // a called program's line: not this file's cursor's
+      if (!dmcBySource.has(p.line)) dmcBySource.set(p.line, []);
+      const lit = dmcBySource.get(p.line);
+      if (!lit.includes(li)) lit.push(li);
+      lit.push(span);
+    });
     ol.appendChild(li);
-    if (l.file || l.elsewhere) continue; // a called program's line: not this file's cursor's
-    if (!dmcBySource.has(l.line)) dmcBySource.set(l.line, []);
-    dmcBySource.get(l.line).push(li);
   }
 }
 
