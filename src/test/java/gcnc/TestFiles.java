@@ -17,7 +17,9 @@ public final class TestFiles {
      * resident checker's cold runs, the shop project's Gradle builds). The test JVM runs them one
      * after another, each class's tests in order, beside all the other classes, which run one at a
      * time as before (build.gradle's junitPlatform: two threads). A class that changes what the whole
-     * JVM shares (a system property, System.out) must not go in this lane.
+     * JVM shares (a system property, System.out) must not go in this lane; a class that looks at it
+     * takes the lock alone, {@code @ResourceLock(SECOND_LANE)}, and then runs while nothing of this
+     * lane does (OutputSafetyTest: the temporary files gcnc.output.TempFiles still holds for the JVM).
      * {@code gradle junitPlatformTest -PtestSequential} runs every class one at a time.
      */
     public static final String SECOND_LANE = "gcnc.second-lane";
