@@ -14,9 +14,6 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 18, "nothing crashes, nothing stalls": each reproduction (src/test/resources/limits) run by
@@ -25,8 +22,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * status and its diagnostic, no stack trace, and a short report: the heap bounds the memory and the
  * report's size bounds what was printed. Nothing is asserted on time.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(TestFiles.SECOND_LANE)
 class BoundedRunTest {
     private static final Path LIMITS = Path.of("src/test/resources/limits");
     /** The heap every run gets: far below what the old code needed for these inputs. */

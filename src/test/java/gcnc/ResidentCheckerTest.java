@@ -24,9 +24,6 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The resident checker (gcnc daemon, issue 23) prints the same bytes on standard output and standard
@@ -37,8 +34,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * instead of passing as a cold run. A wrong token is refused; another jar, another folder and a
  * busy daemon are answered "cold", and through the launcher the user still gets a cold run's output.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(TestFiles.SECOND_LANE)
 class ResidentCheckerTest {
     private static final Path JAR = Path.of("build/libs/gcnc.jar").toAbsolutePath();
     private static final int COLD = 75;

@@ -19,12 +19,9 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.ResourceLock;
 import picocli.CommandLine;
 
 /** What the command line does with its outputs and inputs: it never loses or overwrites data. */
-// while nothing of the second lane runs: a gcnc run there has output files the JVM's shutdown hook holds
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class OutputSafetyTest {
     record Run(int status, String out, String err, byte[] stdout) {
     }

@@ -27,9 +27,6 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * {@code gcnc run} sends the blended program: the test part's cut (lines 7 to 10: the approach, the
@@ -37,8 +34,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * block by block from the controller's {@code _CSS}; a stop inside it names the block of the segment
  * and {@code --resume-at} that block finishes the part along the same path, count for count.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class RunBlendedTest {
     static DmcProgram compiled(Path part) throws Exception {
         return DmcProgram.read(Files.readAllLines(part.resolveSibling("part.dmc")), MapReader.read(

@@ -31,9 +31,6 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 import picocli.CommandLine;
 
 /**
@@ -41,8 +38,6 @@ import picocli.CommandLine;
  * loopback TCP and over a socat pty pair: a clean run, refusals, and the faults of issue 20 with
  * the exit status, the diagnostic and the blocks each names; a stopped run resumed to the end.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class RunOnControllerTest {
     /** A Haas-style part: a facing approach, a turn, a G02 corner, a face-out and a retract (6 motions). */
     static final String PART = String.join("\n",

@@ -13,9 +13,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * {@code gcnc run} in the stream form (docs/galil.md, "Two forms"; docs/run.md) on the virtual Galil
@@ -24,8 +21,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * by pass, is the program form's, count for count. A program longer than the controller's memory is
  * run in the stream form without being asked, and the run refuses no program the compile accepted.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class RunStreamTest {
     /** Where each sequence and each pass ended on the controller, in order. */
     private static List<String> ends(Path trace) throws Exception {

@@ -20,9 +20,6 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * A threading program in a Haas shop's style (an M20×1.5 thread cut with G76 after its approach,
@@ -30,8 +27,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * over loopback TCP: every pass geared to the simulated spindle encoder runs to its end, and the
  * executed path (where each sequence and each pass ends, in order) is the simulator's, count for count.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class RunThreadTest {
     static final String THREAD = String.join("\n",
             "O2001 (M20X1.5 THREAD)",

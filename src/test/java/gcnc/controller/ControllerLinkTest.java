@@ -16,17 +16,12 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The virtual controller over its two links, loopback TCP and a socat pty pair with jSerialComm on the
  * host's end: the protocol's replies, DL then UL byte for byte, and each fault of {@code --fault} doing
  * what docs/virtual-controller.md says (issue 20's fault matrix, the controller's half of it).
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class ControllerLinkTest {
     private Path tmp;
 

@@ -15,9 +15,6 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The Gradle plugin end to end, as a shop meets it (docs/gradle-plugin.md): scripts/shop-project-test.sh
@@ -26,8 +23,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * so that a script that stopped checking would not pass it. Six Gradle builds through one Gradle daemon
  * (about 30 s at load 10; 90 s when each started a JVM of its own).
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class ShopProjectTest {
     private static final String FAULT = "src/main/gcode/o1299-faulty.gcode:6:1: error[E051]";
 

@@ -12,9 +12,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The simulator's cost stays near-linear in the moves whatever they hit (issue 18): a stock made
@@ -22,8 +19,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * 0.0001 in at a time. Never timed: the polygon work is counted ({@link Stock#work}), and whole
  * runs go through the command line in a JVM of bounded heap.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class SimCostTest {
     /** A 60 degree V tip, 0.8 mm wide and 2 mm tall, relative to its tip (mm). */
     private static final double[] TZ = {-0.4, 0.4, 0};

@@ -26,9 +26,6 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.parallel.Execution;
-import org.junit.jupiter.api.parallel.ExecutionMode;
-import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The Run endpoints with a plain HTTP client: each one refused without the token, from another
@@ -37,8 +34,6 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * 400 and the studio serving on; a program that is not clean refused before any connection; and
  * a run on the studio's virtual controller followed over the event stream, held, resumed, stopped.
  */
-@Execution(ExecutionMode.CONCURRENT) // in the second lane, beside the other classes (TestFiles.SECOND_LANE)
-@ResourceLock(gcnc.TestFiles.SECOND_LANE)
 class StudioRunServerTest {
     static Studio studio;
     static Path dir;
