@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what gcnc needs on a fresh Debian 12 machine with JDK 17: Debian's Gradle (4.4.1), and
 # Chromium with its driver for the studio's browser tests (src/test/java/gcnc/studio, docs/studio.md),
-# and socat for the virtual controller's pty tests.
+# socat for the virtual controller's pty tests, and a C compiler for the resident checker's client.
 # Safe to run again; it installs nothing that is already there.
 set -eu
 need=()
@@ -12,6 +12,8 @@ command -v chromedriver >/dev/null 2>&1 || need+=(chromium-driver)
 # socat makes the pty pairs of the virtual controller's serial tests (docs/virtual-controller.md) and
 # of gcnc run's (RunOnControllerTest, docs/run.md)
 command -v socat >/dev/null 2>&1 || need+=(socat)
+# gcc compiles the resident checker's client (scripts/gcnc-client.c: install.sh, ResidentCheckerTest)
+command -v cc >/dev/null 2>&1 || need+=(gcc)
 if [ ${#need[@]} -gt 0 ]; then
     sudo=""
     if [ "$(id -u)" -ne 0 ]; then

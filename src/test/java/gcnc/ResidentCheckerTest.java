@@ -48,10 +48,15 @@ class ResidentCheckerTest {
         }
     }
 
+    /** The C client (scripts/gcnc-client.c), compiled as install.sh compiles it: every run goes through both clients. */
+    private static final Path C_CLIENT = WORK.resolve("gcnc-client");
+
     @BeforeAll
     static void start() throws Exception {
         state = Files.createTempDirectory("gcnc-daemon-state");
         Files.createDirectories(WORK);
+        Process cc = new ProcessBuilder("cc", "-O2", "-o", C_CLIENT.toString(), "scripts/gcnc-client.c").inheritIO().start();
+        assertEquals(0, cc.waitFor(), "cc scripts/gcnc-client.c (setup.sh installs gcc)");
         Run r = run(List.of("java", "-jar", JAR.toString(), "daemon", "start"), null, Map.of(), null);
         assertEquals(0, r.status(), r.text());
     }
@@ -112,6 +117,12 @@ class ResidentCheckerTest {
         return run(c, stdin, env, dir);
     }
 
+    private static Run clientC(List<String> args, Map<String, String> env, Path jar, Path dir) throws Exception {
+        List<String> c = new ArrayList<>(List.of(C_CLIENT.toAbsolutePath().toString(), jar.toAbsolutePath().toString()));
+        c.addAll(args);
+        return run(c, null, env, dir);
+    }
+
     /** The files a run may write, read and removed so that the next run writes them afresh. */
     private static List<byte[]> take(List<Path> files) throws IOException {
         List<byte[]> out = new ArrayList<>();
@@ -140,12 +151,22 @@ class ResidentCheckerTest {
             warm = client(args, stdin, env, JAR, null);
         }
         List<byte[]> warmFiles = take(List.of(written));
-        assertNotEquals(COLD, warm.status(), args + " was not served by the daemon:\n" + warm.text());
-        assertEquals(cold.text(), warm.text(), args.toString());
-        assertArrayEquals(cold.out(), warm.out(), args.toString());
-        assertArrayEquals(cold.err(), warm.err(), args.toString());
+        sameAs(cold, coldFiles, warm, warmFiles, args, written, "Python client");
+        List<String> c = new ArrayList<>(List.of(C_CLIENT.toAbsolutePath().toString(), JAR.toString()));
+        c.addAll(args);
+        Run warmC = run(c, stdin, env, null);
+        sameAs(cold, coldFiles, warmC, take(List.of(written)), args, written, "C client");
+    }
+
+    private static void sameAs(Run cold, List<byte[]> coldFiles, Run warm, List<byte[]> warmFiles, List<String> args,
+                               Path[] written, String client) {
+        String what = args + " (" + client + ")";
+        assertNotEquals(COLD, warm.status(), what + " was not served by the daemon:\n" + warm.text());
+        assertEquals(cold.text(), warm.text(), what);
+        assertArrayEquals(cold.out(), warm.out(), what);
+        assertArrayEquals(cold.err(), warm.err(), what);
         for (int i = 0; i < written.length; i++) {
-            assertArrayEquals(coldFiles.get(i), warmFiles.get(i), written[i] + " after " + args);
+            assertArrayEquals(coldFiles.get(i), warmFiles.get(i), written[i] + " after " + what);
         }
     }
 
@@ -244,11 +265,17 @@ class ResidentCheckerTest {
         try (java.net.ServerSocket free = new java.net.ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             port = free.getLocalPort(); // closed below: nothing answers there
         }
-        Files.writeString(dir.resolve("daemon.state"), "pid=" + gone.pid() + "\nport=" + port + "\ntoken=" + "0".repeat(64)
-                + "\njar=" + JAR + "\ndir=" + Path.of("").toAbsolutePath() + "\n");
+        String dead = "pid=" + gone.pid() + "\nport=" + port + "\ntoken=" + "0".repeat(64)
+                + "\njar=" + JAR + "\ndir=" + Path.of("").toAbsolutePath() + "\n";
+        Files.writeString(dir.resolve("daemon.state"), dead);
         Run r = client(List.of("check", "samples/turning.nc"), null, Map.of("GCNC_DAEMON_DIR", dir.toString()), JAR, null);
         assertEquals(COLD, r.status(), r.text());
         assertTrue(Files.notExists(dir.resolve("daemon.state")));
+        Files.writeString(dir.resolve("daemon.state"), dead);
+        Run c = clientC(List.of("check", "samples/turning.nc"), Map.of("GCNC_DAEMON_DIR", dir.toString()), JAR, null);
+        assertEquals(COLD, c.status(), "C client: " + c.text());
+        assertEquals(0, c.out().length + c.err().length, c.text());
+        assertTrue(Files.notExists(dir.resolve("daemon.state")), "C client");
     }
 
     @Test
@@ -266,6 +293,10 @@ class ResidentCheckerTest {
 
         Run elsewhere = client(args, null, Map.of(), JAR, other.getParent());
         assertEquals(COLD, elsewhere.status(), elsewhere.text());
+        for (Run c : List.of(clientC(args, Map.of(), other, null), clientC(args, Map.of(), JAR, other.getParent()))) {
+            assertEquals(COLD, c.status(), "C client: " + c.text());
+            assertEquals(0, c.out().length + c.err().length, c.text());
+        }
 
         // a run waiting for its standard input keeps the daemon busy: another client is told to go cold
         List<String> c = List.of("python3", "scripts/gcnc-client.py", JAR.toString(), "check", "-");

@@ -15,7 +15,7 @@ import picocli.CommandLine.Parameters;
 @Command(name = "check", mixinStandardHelpOptions = true,
         description = "Check programs and report every error with line and column. Writes nothing.",
         exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:no errors", "1:a program has errors", "2:usage, unreadable file, broken table or profile"})
+        exitCodeList = {"0:no errors", "1:a program has errors", "2:usage, unreadable file, broken table or profile, out of memory (E506)"})
 final class CheckCommand extends RunCommand {
     @Parameters(arity = "1..*", paramLabel = "FILE",
             description = "G-code programs to check; a folder: every program in it by its extension (--extensions;"

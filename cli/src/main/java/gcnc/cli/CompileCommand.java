@@ -23,7 +23,7 @@ import picocli.CommandLine.Parameters;
                 "Writes the output (and its .map) only when there is no error; never a half-written one."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:no errors; the output was written", "1:the program has errors; nothing was written",
-                "2:usage, unreadable input, unwritable or refused output, broken table or profile"})
+                "2:usage, unreadable input, unwritable or refused output, broken table or profile, out of memory (E506)"})
 final class CompileCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;

@@ -19,7 +19,7 @@ import picocli.CommandLine.Command;
         exitCodeList = {
             "0:no errors (warnings and notes may have been printed)",
             "1:a program has errors (each one printed with its line and column)",
-            "2:usage, a file that cannot be read or written, or a broken table or machine profile"})
+            "2:usage, a file that cannot be read or written, a broken table or machine profile, or out of memory (E506)"})
 public final class Main implements Runnable {
     static {
         // picocli registers converters for java.time and java.sql types by reflection when it builds a
@@ -141,17 +141,22 @@ public final class Main implements Runnable {
      * unreachable, so the message can be made; if even that fails, it is printed in English as is.
      */
     static int outOfMemory(String[] args) {
+        System.err.print(outOfMemoryLine(args, System.getenv()));
+        System.err.flush();
+        return ExitCode.USAGE;
+    }
+
+    /** The one line an out-of-memory prints (E506, in the run's language), with its line end: cold and resident alike. */
+    public static String outOfMemoryLine(String[] args, java.util.Map<String, String> env) {
         String mib = Long.toString(Runtime.getRuntime().maxMemory() >> 20);
         String text;
         try {
             text = gcnc.tables.Tables.builtIn().messages().render(gcnc.diag.Code.E506_OUT_OF_MEMORY,
-                    java.util.List.of(mib), HelpLanguage.of(args, System.getenv()));
+                    java.util.List.of(mib), HelpLanguage.of(args, env));
         } catch (OutOfMemoryError | RuntimeException again) {
             text = "out of memory: the Java heap of " + mib + " MiB was not enough";
         }
-        System.err.println("gcnc: error[E506]: " + text);
-        System.err.flush();
-        return ExitCode.USAGE;
+        return "gcnc: error[E506]: " + text + System.lineSeparator();
     }
 
     /**

@@ -26,7 +26,7 @@ import picocli.CommandLine.Parameters;
                 "A .dmc FILE is replayed as it is (no G-code to compare it with)."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:no errors", "1:the program has errors, or the simulation found a fault",
-                "2:usage, unreadable input, unwritable drawing, broken table or profile"})
+                "2:usage, unreadable input, unwritable drawing, broken table or profile, out of memory (E506)"})
 final class SimulateCommand extends RunCommand {
     @Mixin
     DialectOptions dialect;

@@ -117,8 +117,13 @@ public final class Control {
         if (Files.isExecutable(Path.of("/usr/bin/setsid"))) {
             command.add("/usr/bin/setsid"); // its own session: closing the terminal does not stop it
         }
-        command.addAll(List.of(java, "-XX:+UseSerialGC", "-Xmx512m", "-cp", realJar, Server.class.getName(),
-                folder.toString()));
+        // the launcher's heap (scripts/gcnc): small, growing only when a request needs it;
+        // GCNC_DAEMON_JAVA_OPTS replaces these options (as GCNC_JAVA_OPTS does for a cold run)
+        String opts = System.getenv("GCNC_DAEMON_JAVA_OPTS");
+        command.add(java);
+        command.addAll(opts == null || opts.isBlank() ? List.of("-XX:+UseSerialGC", "-Xmn48m", "-Xms64m", "-Xmx512m")
+                : List.of(opts.strip().split("\\s+")));
+        command.addAll(List.of("-cp", realJar, Server.class.getName(), folder.toString()));
         Path log = folder.resolve("daemon.log");
         Process p;
         try {

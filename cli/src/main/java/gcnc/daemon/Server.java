@@ -169,6 +169,18 @@ public final class Server {
                 if (failed[0] != null) {
                     throw failed[0];
                 }
+            } catch (OutOfMemoryError e) {
+                if (!outputs.sent() && !r.stdin()) {
+                    outputs.discard(); // nothing sent yet: run cold, whose heap and verdict are the user's own
+                    Frames.write(out, 'K', "out of memory inside gcnc");
+                    out.flush();
+                    return;
+                }
+                // part of the output is out: end as a cold run ends (Main.main), E506 and status 2;
+                // the run's objects are unreachable by now, and the daemon serves on
+                outputs.flushAll();
+                Frames.write(out, '2', Main.outOfMemoryLine(r.argv().toArray(new String[0]), r.env()));
+                status = 2;
             } catch (Throwable e) {
                 if (!outputs.sent() && !r.stdin()) {
                     outputs.discard();

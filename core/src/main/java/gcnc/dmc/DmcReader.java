@@ -21,13 +21,10 @@ public final class DmcReader {
     /** How the comment of a program verified without a blank is written. */
     public static final String STOCK_NONE = "NO STOCK NONE";
 
-    private static final double INT32 = 2147483647;
+    static final double INT32 = 2147483647;
     private static final Pattern LABEL = Pattern.compile("#[A-Za-z][A-Za-z0-9_]{0,7}");
     private static final Pattern STOCK = Pattern.compile("NO STOCK D([0-9]+(?:\\.[0-9]+)?) L([0-9]+(?:\\.[0-9]+)?)"
             + " S(-?[0-9]+(?:\\.[0-9]+)?)(?: B([0-9]+(?:\\.[0-9]+)?))?");
-    private static final Pattern SYNC = Pattern.compile(
-            "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})([+-][0-9]{1,7})?");
-    private static final Pattern VARIABLE = Pattern.compile("[a-z][a-z0-9]{0,7}");
     private static final Pattern SET = Pattern.compile("([a-z][a-z0-9]{0,7})=(-?[0-9]{1,10})");
     private static final Pattern DEADLINE = Pattern.compile("([a-z][a-z0-9]{0,7})=TIME\\+([0-9]{1,10})");
     private static final Pattern JUMP = Pattern.compile("#([A-Za-z][A-Za-z0-9_]{0,7})(?:,(.+))?");
@@ -125,7 +122,7 @@ public final class DmcReader {
             if (deadline.matches()) {
                 return new SetDeadline(deadline.group(1), Long.parseLong(deadline.group(2)));
             }
-            return syncPoint(t, faults);
+            return AxisReader.syncPoint(t, faults);
         }
         String cmd = t.substring(0, 2);
         String args = t.substring(2).strip();
@@ -180,30 +177,30 @@ public final class DmcReader {
                 return bit < 0 ? bad(faults, cmd, t) : new Output(bit, cmd.equals("SB"));
             }
             case "OF":
-                return offset(args, t, faults);
+                return AxisReader.offset(args, t, faults);
             case "AV": {
                 Fixed n = Fixed.parse(args, 0, args.length(), true);
                 return n == null || n.unscaled() < 0 ? bad(faults, cmd, t) : new AfterVector(n.unscaled());
             }
             case "GA":
-                return gearMaster(args, t, faults);
+                return AxisReader.gearMaster(args, t, faults);
             case "MF":
             case "MR":
-                return waitPast(cmd, args, t, faults);
+                return AxisReader.waitPast(cmd, args, t, faults);
             case "GR":
-                return gearRatio(args, t, faults);
+                return AxisReader.gearRatio(args, t, faults);
             case "PA":
-                return positionAbsolute(args, t, faults);
+                return AxisReader.positionAbsolute(args, t, faults);
             case "AO":
-                return analogOut(args, t, faults);
+                return AxisReader.analogOut(args, t, faults);
             case "KP":
             case "KI":
             case "KD":
             case "ER":
-                return axisSetting(Setting.valueOf(cmd), args, t, faults);
+                return AxisReader.axisSetting(Setting.valueOf(cmd), args, t, faults);
             case "BL":
             case "FL":
-                return softLimit(cmd, args, t, faults);
+                return AxisReader.softLimit(cmd, args, t, faults);
             case "JP":
             case "JS":
                 return jump(cmd, args, t, faults);
@@ -257,13 +254,13 @@ public final class DmcReader {
                 Double.parseDouble(m.group(3)), bore);
     }
 
-    private static Command bad(Faults faults, String cmd, String text) {
+    static Command bad(Faults faults, String cmd, String text) {
         faults.fault(Code.E301_SIM_BAD_ARGUMENTS, cmd, text);
         return null;
     }
 
     /** Axis letters: one to eight of A-H, X, Y, Z, W. */
-    private static boolean axes(String s) {
+    static boolean axes(String s) {
         if (s.isEmpty() || s.length() > 8) {
             return false;
         }
@@ -334,153 +331,6 @@ public final class DmcReader {
         return make.apply(v);
     }
 
-    private static Command offset(String args, String text, Faults faults) {
-        String[] a = args.split(",", -1);
-        int channel = -1;
-        Fixed volts = null;
-        for (int i = 0; i < a.length; i++) {
-            if (a[i].isBlank()) {
-                continue;
-            }
-            Fixed v = Fixed.parse(a[i], 0, a[i].length(), false);
-            if (v == null || Math.abs(v.value()) > 9.998 || channel >= 0) {
-                return bad(faults, "OF", text); // gcnc writes one channel's offset per OF
-            }
-            channel = i;
-            volts = v;
-        }
-        return channel < 0 || channel > 7 ? bad(faults, "OF", text) : new Offset(channel, volts);
-    }
-
-    /** Per-channel arguments: the value at each channel's place, "" where empty; null past eight places. */
-    private static String[] places(String args) {
-        String[] a = args.split(",", -1);
-        if (a.length > 8) {
-            return null;
-        }
-        for (int i = 0; i < a.length; i++) {
-            a[i] = a[i].strip();
-        }
-        return a;
-    }
-
-    /** The places that hold a value, in channel order; null unless exactly {@code n}. */
-    private static int[] filled(String[] slots, int n) {
-        if (slots == null) {
-            return null;
-        }
-        int[] at = new int[n];
-        int k = 0;
-        for (int i = 0; i < slots.length; i++) {
-            if (!slots[i].isEmpty()) {
-                if (k == n) {
-                    return null;
-                }
-                at[k++] = i;
-            }
-        }
-        return k == n ? at : null;
-    }
-
-    private static Command gearMaster(String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 2);
-        if (at == null || slots[at[0]].length() != 1 || !slots[at[0]].equals(slots[at[1]])
-                || Channels.index(slots[at[0]].charAt(0)) < 0) {
-            return bad(faults, "GA", text);
-        }
-        return new GearMaster(slots[at[0]].charAt(0), Channels.letter(at[0]), Channels.letter(at[1]));
-    }
-
-    private static Command syncPoint(String t, Faults faults) {
-        Matcher m = SYNC.matcher(t);
-        if (!m.matches() || !m.group(3).equals(m.group(5))) {
-            faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
-            return null;
-        }
-        long phase = m.group(6) == null ? 0 : Long.parseLong(m.group(6));
-        return new SyncPoint(m.group(1), m.group(2).charAt(0), Integer.parseInt(m.group(3)), m.group(4).equals("-1"),
-                phase);
-    }
-
-    private static Command waitPast(String cmd, String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 1);
-        if (at == null) {
-            return bad(faults, cmd, text);
-        }
-        String v = slots[at[0]];
-        Command.Operand operand;
-        if (VARIABLE.matcher(v).matches()) {
-            operand = new Operand.Variable(v);
-        } else {
-            Fixed n = Fixed.parse(v, 0, v.length(), true);
-            if (n == null) {
-                return bad(faults, cmd, text);
-            }
-            operand = new Operand.Count(n.unscaled());
-        }
-        return new WaitPast(cmd.equals("MR"), Channels.letter(at[0]), operand);
-    }
-
-    private static Command gearRatio(String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 2);
-        Fixed r1 = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), false);
-        Fixed r2 = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), false);
-        if (r1 == null || r2 == null) {
-            return bad(faults, "GR", text);
-        }
-        return new GearRatio(Channels.letter(at[0]), r1, Channels.letter(at[1]), r2);
-    }
-
-    private static Command positionAbsolute(String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 2);
-        Fixed p = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), true);
-        Fixed q = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), true);
-        if (p == null || q == null) {
-            return bad(faults, "PA", text);
-        }
-        return new PositionAbsolute(Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]), q.unscaled());
-    }
-
-    private static Command analogOut(String args, String text, Faults faults) {
-        int comma = args.indexOf(',');
-        int n = comma < 0 ? -1 : integer(args.substring(0, comma).strip(), 0, 99);
-        Fixed v = comma < 0 ? null : Fixed.parse(args, comma + 1, args.length(), false);
-        if (n < 0 || v == null || Math.abs(v.value()) > 9.9998) {
-            return bad(faults, "AO", text);
-        }
-        return new AnalogOut(n, v);
-    }
-
-    private static Command axisSetting(Setting setting, String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 1);
-        Fixed v = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), false);
-        if (v == null) {
-            return bad(faults, setting.name(), text);
-        }
-        return new AxisSetting(setting, at[0], v);
-    }
-
-    private static Command softLimit(String cmd, String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 2);
-        Fixed p = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), true);
-        Fixed q = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), true);
-        if (p == null || q == null) {
-            return bad(faults, cmd, text);
-        }
-        if (Math.abs(p.unscaled()) > INT32 || Math.abs(q.unscaled()) > INT32) {
-            faults.fault(Code.E310_SIM_COUNT_RANGE, text);
-            return null;
-        }
-        return new SoftLimit(cmd.equals("FL"), Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]),
-                q.unscaled());
-    }
-
     private static Command jump(String cmd, String args, String text, Faults faults) {
         Matcher m = JUMP.matcher(args);
         if (!m.matches() || cmd.equals("JS") && m.group(2) != null) {
@@ -519,7 +369,7 @@ public final class DmcReader {
     }
 
     /** The whole number in s within [min, max], or -1. */
-    private static int integer(String s, int min, int max) {
+    static int integer(String s, int min, int max) {
         Fixed v = Fixed.parse(s, 0, s.length(), true);
         return v == null || v.unscaled() < min || v.unscaled() > max ? -1 : (int) v.unscaled();
     }
