@@ -82,13 +82,7 @@ class RunBlendedTest {
     @ValueSource(ints = {20, 1500})
     void aStopInsideTheSequenceResumesAtItsBlockAlongTheSamePath(int poll) throws Exception {
         Path p = part(PART);
-        Path dir = Files.createTempDirectory("gcnc-trace");
-        Path whole = dir.resolve("whole.trace");
-        Path stopped = dir.resolve("stopped.trace");
-        try (VirtualController vc = traced(model("DMC-4040"), whole)) {
-            homed(vc);
-            assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
-        }
+        Path stopped = Files.createTempDirectory("gcnc-trace").resolve("stopped.trace");
         try (VirtualController vc = traced(model("DMC-4040"), stopped, "limit-at=3")) {
             homed(vc);
             // polled every 1.5 s the last poll saw the spindle's dwell before the cut: where the axes stopped
@@ -105,8 +99,8 @@ class RunBlendedTest {
             assertEquals(0, again.status(), again.all());
             assertEquals(Arrays.toString(programEnd(p)), Arrays.toString(axes(vc)));
         }
-        assertEquals(6, path(whole).size());
-        assertEquals(path(whole), path(stopped));
+        assertEquals(6, RunOnControllerTest.uninterruptedPath().size());
+        assertEquals(RunOnControllerTest.uninterruptedPath(), path(stopped));
     }
     /**
      * The profiler stops taking segments after the turn (the third segment run, the second of the cut):
@@ -116,13 +110,7 @@ class RunBlendedTest {
     @Test
     void aStallAtACornerOfTheSequenceResumesWithTheNextSegment() throws Exception {
         Path p = part(PART);
-        Path dir = Files.createTempDirectory("gcnc-trace");
-        Path whole = dir.resolve("whole.trace");
-        Path stopped = dir.resolve("stopped.trace");
-        try (VirtualController vc = traced(model("DMC-4040"), whole)) {
-            homed(vc);
-            assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
-        }
+        Path stopped = Files.createTempDirectory("gcnc-trace").resolve("stopped.trace");
         try (VirtualController vc = traced(model("DMC-4040"), stopped, "stall=3")) {
             homed(vc);
             RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20",
@@ -136,6 +124,6 @@ class RunBlendedTest {
             assertEquals(0, again.status(), again.all());
             assertEquals(Arrays.toString(programEnd(p)), Arrays.toString(axes(vc)));
         }
-        assertEquals(path(whole), path(stopped));
+        assertEquals(RunOnControllerTest.uninterruptedPath(), path(stopped));
     }
 }

@@ -94,17 +94,60 @@ class RunOnControllerTest {
         return Model.named(name).orElseThrow();
     }
 
+    /**
+     * How much faster than real time the controller of a test runs whose faults, operator keys or stall
+     * watch happen in real time: the part's motion then lasts about 2.6 s, long enough for them.
+     */
+    static final double SPEED = 5;
+    /**
+     * The speed of a run that nothing interrupts in real time (to the end, or step by step): its path,
+     * end and events do not depend on the clock, and the host still polls it some thirty times.
+     */
+    static final double FAST = 20;
+
     static VirtualController controller(Model model, String... faults) throws IOException {
         return traced(model, null, faults);
     }
 
+    /** A virtual controller at {@link #FAST} speed (no faults, no trace). */
+    static VirtualController fast(Model model) throws IOException {
+        return VirtualController.tcp(0, new VirtualController.Options(model, FAST, List.of(), null));
+    }
+
     /** A virtual controller that writes the end of every segment it executes to {@code trace}. */
     static VirtualController traced(Model model, Path trace, String... faults) throws IOException {
+        return traced(SPEED, model, trace, faults);
+    }
+
+    static VirtualController traced(double speed, Model model, Path trace, String... faults) throws IOException {
         List<Fault> f = new ArrayList<>();
         for (String s : faults) {
             f.add(Fault.parse(s));
         }
-        return VirtualController.tcp(0, new VirtualController.Options(model, 5, f, trace));
+        return VirtualController.tcp(0, new VirtualController.Options(model, speed, f, trace));
+    }
+
+    /** {@link #uninterruptedPath}, run once for the test JVM. */
+    private static List<String> uninterrupted;
+
+    /**
+     * The segment ends of {@link #PART} run to the end without a stop on the DMC-4040 (program form),
+     * homed: what a stopped and resumed run must repeat. The ends are the segments' programmed end
+     * points, whatever the clock, so the run is made once, at {@link #FAST} speed, for every test
+     * that compares with it (this class's and RunBlendedTest's).
+     */
+    static synchronized List<String> uninterruptedPath() throws Exception {
+        if (uninterrupted == null) {
+            Path p = part(PART);
+            Path trace = p.resolveSibling("whole.trace");
+            try (VirtualController vc = traced(FAST, model("DMC-4040"), trace)) {
+                homed(vc);
+                Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc));
+                assertEquals(0, r.status(), r.all());
+            }
+            uninterrupted = List.copyOf(path(trace));
+        }
+        return uninterrupted;
     }
 
     /** The end points of the segments a controller executed, in order ("END1 END2" of its trace). */
@@ -198,7 +241,7 @@ class RunOnControllerTest {
     @Test
     void runsToTheEndOverTcp() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(model("DMC-4040"))) {
+        try (VirtualController vc = fast(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
             assertEquals(0, r.status(), r.all());
@@ -220,7 +263,7 @@ class RunOnControllerTest {
     @Test
     void theJsonEventStreamIsOneObjectPerLine() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(model("DMC-4040"))) {
+        try (VirtualController vc = fast(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--format", "json", "--poll", "20");
             assertEquals(0, r.status(), r.all());
@@ -252,7 +295,7 @@ class RunOnControllerTest {
                 Thread.sleep(100);
             }
             Path p = part(PART);
-            try (VirtualController vc = VirtualController.pty(a, new VirtualController.Options(model("DMC-4040"), 5, List.of(), null))) {
+            try (VirtualController vc = VirtualController.pty(a, new VirtualController.Options(model("DMC-4040"), FAST, List.of(), null))) {
                 Run dp = gcnc("", "run", p.toString(), "--machine", "haas", "--port", b.toString(), "--dry-run");
                 // not homed yet: refused before anything moves, and the link worked (pre-flight read the axes)
                 assertEquals(2, dp.status(), dp.all());
@@ -420,13 +463,7 @@ class RunOnControllerTest {
     @Test
     void aRejectedCommandStopsMotionAndSpindleAndTheResumeFinishesThePart() throws Exception {
         Path p = part(PART);
-        Path dir = Files.createTempDirectory("gcnc-trace");
-        Path whole = dir.resolve("whole.trace");
-        Path stopped = dir.resolve("stopped.trace");
-        try (VirtualController vc = traced(model("DMC-4040"), whole)) {
-            homed(vc);
-            assertEquals(0, gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc)).status());
-        }
+        Path stopped = Files.createTempDirectory("gcnc-trace").resolve("stopped.trace");
         try (VirtualController vc = traced(model("DMC-4040"), stopped, "reject=45")) {
             homed(vc);
             Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "50");
@@ -446,8 +483,8 @@ class RunOnControllerTest {
             assertTrue(again.out().contains("from line " + line), again.out());
             assertArrayEquals(programEnd(p), axes(vc));
         }
-        assertEquals(path(whole), path(stopped));
-        assertEquals(6, path(whole).size());
+        assertEquals(uninterruptedPath(), path(stopped));
+        assertEquals(6, uninterruptedPath().size());
     }
 
     static String resumeCommand(String out) {
@@ -523,7 +560,7 @@ class RunOnControllerTest {
     @Test
     void stepModeRunsOneBlockPerEnterToTheEnd() throws Exception {
         Path p = part(PART);
-        try (VirtualController vc = controller(model("DMC-4040"))) {
+        try (VirtualController vc = fast(model("DMC-4040"))) {
             homed(vc);
             Run r = gcnc("\n".repeat(20), "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--step", "--poll", "20");
             assertEquals(0, r.status(), r.all());

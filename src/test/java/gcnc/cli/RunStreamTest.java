@@ -65,7 +65,7 @@ class RunStreamTest {
         Path dir = Files.createTempDirectory("gcnc-trace");
         Path whole = dir.resolve("whole.trace");
         Path stopped = dir.resolve("stopped.trace");
-        try (VirtualController vc = RunOnControllerTest.traced(model("DMC-4040"), whole)) {
+        try (VirtualController vc = RunOnControllerTest.traced(RunOnControllerTest.FAST, model("DMC-4040"), whole)) {
             homed(vc);
             RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp",
                     RunOnControllerTest.tcp(vc), "--form", "stream");

@@ -8,12 +8,14 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Optional;
 import java.util.stream.Stream;
+import org.openqa.selenium.Dimension;
 import org.openqa.selenium.OutputType;
 import org.openqa.selenium.TakesScreenshot;
 import org.openqa.selenium.WebDriver;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.chrome.ChromeDriverService;
 import org.openqa.selenium.chrome.ChromeOptions;
+import org.openqa.selenium.support.ui.WebDriverWait;
 
 /**
  * Debian's Chromium, headless, driven through its own chromedriver (no download: Selenium is told
@@ -21,7 +23,69 @@ import org.openqa.selenium.chrome.ChromeOptions;
  * how to get them, rather than skip and let a CI run pass without ever opening the page.
  */
 final class Browser {
+    /** How often a wait asks the page again: Selenium's default (500 ms) added half a second to most steps. */
+    static final Duration POLL = Duration.ofMillis(40);
+    private static WebDriver shared;
+    /** The window's size as --window-size made it: each class gets it back (the screenshots are this size). */
+    private static Dimension window;
+
     private Browser() {
+    }
+
+    /**
+     * The one Chromium of this test JVM, started by the first browser test class that asks and quit when
+     * the JVM exits: each class used to start (and quit) its own, a few seconds each on a busy machine.
+     * Each class gets it on a blank page with no dialog open and the window at its start size.
+     */
+    static synchronized WebDriver shared() {
+        if (shared == null) {
+            WebDriver d = start();
+            Runtime.getRuntime().addShutdownHook(new Thread(d::quit, "gcnc-test-chromium-quit"));
+            shared = d;
+            window = d.manage().window().getSize();
+        }
+        blank(shared);
+        if (!shared.manage().window().getSize().equals(window)) {
+            shared.manage().window().setSize(window); // SetupPicturesTest sizes it to its pictures
+        }
+        return shared;
+    }
+
+    /**
+     * Leaves the page for a blank one, the "leave with unsaved changes?" question answered yes: a class
+     * done with the browser calls it (a studio page left open would go on asking its closed server).
+     */
+    static void blank(WebDriver d) {
+        for (int i = 0; i < 3 && !"about:blank".equals(currentUrl(d)); i++) {
+            acceptAnyAlert(d);
+            try {
+                d.get("about:blank");
+            } catch (org.openqa.selenium.UnhandledAlertException e) {
+                // the page asked before leaving (and the driver may have said no): asked again
+            }
+            acceptAnyAlert(d);
+        }
+    }
+
+    private static String currentUrl(WebDriver d) {
+        try {
+            return d.getCurrentUrl();
+        } catch (org.openqa.selenium.UnhandledAlertException e) {
+            return null;
+        }
+    }
+
+    private static void acceptAnyAlert(WebDriver d) {
+        try {
+            d.switchTo().alert().accept();
+        } catch (org.openqa.selenium.NoAlertPresentException e) {
+            // none open
+        }
+    }
+
+    /** A wait of at most {@code timeout} that looks again every {@link #POLL}. */
+    static WebDriverWait waitUpTo(WebDriver d, Duration timeout) {
+        return new WebDriverWait(d, timeout, POLL);
     }
 
     static WebDriver start() {

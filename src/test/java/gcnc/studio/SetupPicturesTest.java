@@ -22,12 +22,12 @@ class SetupPicturesTest {
 
     @Test
     void theDrawingAndTheSetupSheetOfTheInchPin() throws Exception {
-        WebDriver browser = Browser.start();
+        WebDriver browser = Browser.shared();
         try {
             picture(browser, GOLDEN.resolve("pin-inch.haas.svg"), 1000, "pin-drawing");
             picture(browser, GOLDEN.resolve("pin-inch.haas.html"), 1100, "pin-setup-sheet");
         } finally {
-            browser.quit();
+            Browser.blank(browser); // the JVM's one Chromium (Browser.shared gives the next class its window size back)
         }
     }
 

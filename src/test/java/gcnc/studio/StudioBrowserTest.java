@@ -26,7 +26,7 @@ import org.openqa.selenium.support.ui.Select;
 import org.openqa.selenium.support.ui.WebDriverWait;
 
 /**
- * The studio in a real browser (headless Chromium, one for the class), on a copy of the bishop
+ * The studio in a real browser (headless Chromium, the test JVM's one: {@link Browser#shared}), on a copy of the bishop
  * (samples/bishop.nc, machine thesis-2004): what a user does, and what they must then see. Each
  * screen is saved as a PNG under docs/studio/ for docs/studio.md.
  */
@@ -38,7 +38,7 @@ class StudioBrowserTest {
 
     @BeforeAll
     static void start() throws Exception {
-        browser = Browser.start();
+        browser = Browser.shared();
         // a folder with a plain name: the page shows it, and the screenshots should not change with it
         dir = Files.createDirectory(Files.createTempDirectory("gcnc-studio-browser").resolve("programs"));
         Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
@@ -48,7 +48,7 @@ class StudioBrowserTest {
     @AfterAll
     static void stop() {
         if (browser != null) {
-            browser.quit();
+            Browser.blank(browser); // the JVM's one Chromium: the next class gets it, the JVM's exit quits it
         }
         if (studio != null) {
             studio.close();
@@ -62,7 +62,7 @@ class StudioBrowserTest {
         }
         Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
         Files.writeString(dir.resolve("other.nc"), "M30\n");
-        wait = new WebDriverWait(browser, Duration.ofSeconds(45)); // a shared, busy machine: a first simulation can take a while
+        wait = Browser.waitUpTo(browser, Duration.ofSeconds(45)); // a shared, busy machine: a first simulation can take a while
         browser.get("about:blank"); // leaves the last test's page (an unsaved edit there would ask first)
         dismissAnyAlert();
         browser.get(studio.url("bishop.nc").toString());
@@ -86,10 +86,8 @@ class StudioBrowserTest {
         WebElement content = browser.findElement(By.cssSelector(".cm-content"));
         content.click();
         content.sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
-        for (int i = 1; i < line; i++) {
-            content.sendKeys(Keys.ARROW_DOWN);
-        }
-        content.sendKeys(Keys.END);
+        // the same key presses one by one, in one command to the driver (one round trip, not one a key)
+        content.sendKeys(Keys.ARROW_DOWN.toString().repeat(line - 1) + Keys.END);
         wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", String.valueOf(line)));
         return content;
     }
@@ -297,8 +295,18 @@ class StudioBrowserTest {
         }
     }
 
+    /** {@link #bishopDmcLines}, compiled once for the test JVM (samples/bishop.nc does not change during a run). */
+    private static int bishopDmcLines;
+
     /** The lines of the bishop's DMC on thesis-2004, as the session every front end goes through compiles and packs it. */
-    static int bishopDmcLines() throws Exception {
+    static synchronized int bishopDmcLines() throws Exception {
+        if (bishopDmcLines == 0) {
+            bishopDmcLines = compiledBishopDmcLines();
+        }
+        return bishopDmcLines;
+    }
+
+    private static int compiledBishopDmcLines() throws Exception {
         gcnc.Session s = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine("thesis-2004"));
         int[] n = {0};
         gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(s.profile().controllerLimits().lineWidth(), l -> n[0]++);

@@ -35,7 +35,7 @@ class StudioRunBrowserTest {
 
     @BeforeAll
     static void start() throws Exception {
-        browser = Browser.start();
+        browser = Browser.shared();
         dir = Files.createDirectory(Files.createTempDirectory("gcnc-studio-run").resolve("programs"));
         Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
         studio = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.EN, "test", new Studio.Running(5, null)));
@@ -44,7 +44,7 @@ class StudioRunBrowserTest {
     @AfterAll
     static void stop() {
         if (browser != null) {
-            browser.quit();
+            Browser.blank(browser); // the JVM's one Chromium: the next class gets it, the JVM's exit quits it
         }
         if (studio != null) {
             studio.close();
@@ -55,7 +55,7 @@ class StudioRunBrowserTest {
     void openTheBishopsRunScreen() throws Exception {
         Files.deleteIfExists(dir.resolve("bishop.nc"));
         Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
-        wait = new WebDriverWait(browser, Duration.ofSeconds(60)); // a shared, busy machine
+        wait = Browser.waitUpTo(browser, Duration.ofSeconds(60)); // a shared, busy machine
         browser.get(studio.url("bishop.nc").toString());
         wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
         wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "no errors"));

@@ -45,8 +45,10 @@ class StudioRunServerTest {
     static void start() throws Exception {
         dir = Files.createTempDirectory("gcnc-studio-run-api");
         Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
-        // twice real time: a run lasts long enough to be held and stopped, and a stopped one ends at once
-        studio = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.EN, "test", new Studio.Running(2, null)));
+        // five times real time, as StudioRunBrowserTest's: the bishop's 35 s take 7 s, long enough for a run to be
+        // held, resumed and stopped (by requests that each take milliseconds), and a stopped one ends at once;
+        // the resumed run to the end then takes 6 s instead of the 15 s it took at twice real time
+        studio = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.EN, "test", new Studio.Running(5, null)));
     }
 
     @AfterAll

@@ -37,7 +37,7 @@ class StudioWorkbenchBrowserTest {
 
     @BeforeAll
     static void start() throws Exception {
-        browser = Browser.start();
+        browser = Browser.shared();
         dir = Files.createDirectory(Files.createTempDirectory("gcnc-studio-workbench").resolve("programs"));
         Session s = Session.open(Session.Options.defaults().withMachine("thesis-2004"));
         studio = Studio.start(new Studio.Config(dir, 0, s, ErrorMessages.Lang.EN, "test"));
@@ -46,7 +46,7 @@ class StudioWorkbenchBrowserTest {
     @AfterAll
     static void stop() {
         if (browser != null) {
-            browser.quit();
+            Browser.blank(browser); // the JVM's one Chromium: the next class gets it, the JVM's exit quits it
         }
         if (studio != null) {
             studio.close();
@@ -54,10 +54,14 @@ class StudioWorkbenchBrowserTest {
     }
 
     @BeforeEach
-    void openTheBishop() throws Exception {
+    void aFreshBishop() throws Exception {
         Files.deleteIfExists(dir.resolve("bishop.nc"));
         Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
-        wait = new WebDriverWait(browser, Duration.ofSeconds(45)); // a shared, busy machine
+        wait = Browser.waitUpTo(browser, Duration.ofSeconds(45)); // a shared, busy machine
+    }
+
+    /** The class's studio on the bishop, checked, simulated and compiled (the tests with a studio of their own skip it). */
+    private void openTheBishop() throws Exception {
         open(studio, "bishop.nc");
         int lines = StudioBrowserTest.bishopDmcLines(); // what a compile of the same program writes, line for line
         wait.until(d -> d.findElements(By.cssSelector("#dmc li")).size() == lines);
@@ -105,7 +109,8 @@ class StudioWorkbenchBrowserTest {
     }
 
     @Test
-    void hoverOnAWordShowsItsFunctionAndTheModalStateAfterTheBlock() throws IOException {
+    void hoverOnAWordShowsItsFunctionAndTheModalStateAfterTheBlock() throws Exception {
+        openTheBishop();
         pointAt(6, "G01"); // N135 G01 Z-04500
         WebElement tip = wait.until(ExpectedConditions.visibilityOfElementLocated(By.cssSelector(".cm-tooltip-hover .gc-hover")));
         String text = tip.getText();
@@ -124,7 +129,8 @@ class StudioWorkbenchBrowserTest {
     }
 
     @Test
-    void theScrubShowsTheStockAfterABlockWhatItRemovedAndTheTool() throws IOException {
+    void theScrubShowsTheStockAfterABlockWhatItRemovedAndTheTool() throws Exception {
+        openTheBishop();
         WebElement slider = browser.findElement(By.id("scrub"));
         assertEquals("0", slider.getAttribute("value"));
         slider.click();
@@ -223,7 +229,8 @@ class StudioWorkbenchBrowserTest {
     }
 
     @Test
-    void clickingADmcLinePutsTheCursorOnItsBlock() {
+    void clickingADmcLinePutsTheCursorOnItsBlock() throws Exception {
+        openTheBishop();
         WebElement n145 = browser.findElement(By.cssSelector("#dmc li span[data-source='9']")); // N145 G01 Z-03550
         js("arguments[0].scrollIntoView({block: 'center'})", n145);
         n145.click();

@@ -174,12 +174,15 @@ class StudioWorkbenchTest {
         }
         // G00 X46. Z2. (line 7), O1000's pass and retract (its lines 3, 4), G00 X100. Z100. (line 9)
         assertEquals(List.of("7", "O1000.nc:3", "O1000.nc:4", "9"), seen);
-        // and so do the DMC lines of those blocks
+        // and so do the DMC commands of those blocks (each command of a packed line)
         JsonArray dmc = post("simulate", body("name", "main.nc", "text", main)).json().getAsJsonArray("dmc");
         List<String> called = new ArrayList<>();
         for (JsonElement l : dmc) {
-            if (l.getAsJsonObject().has("file")) {
-                called.add(l.getAsJsonObject().get("file").getAsString() + ":" + l.getAsJsonObject().get("line").getAsInt());
+            for (JsonElement part : l.getAsJsonObject().getAsJsonArray("parts")) {
+                JsonObject c = part.getAsJsonObject();
+                if (c.has("file")) {
+                    called.add(c.get("file").getAsString() + ":" + c.get("line").getAsInt());
+                }
             }
         }
         assertTrue(called.contains("O1000.nc:3") && called.stream().allMatch(c -> c.startsWith("O1000.nc:")), called.toString());
