@@ -284,16 +284,10 @@ class RunOnControllerTest {
 
     @Test
     void runsToTheEndOverAPtyPair() throws Exception {
-        assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")), "socat (setup.sh installs it)");
-        Path dir = Files.createTempDirectory("gcnc-pty");
-        Path a = dir.resolve("controller");
-        Path b = dir.resolve("host");
-        Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
-                .redirectErrorStream(true).redirectOutput(dir.resolve("socat.log").toFile()).start();
-        try {
-            for (int i = 0; i < 50 && !(Files.exists(a) && Files.exists(b)); i++) {
-                Thread.sleep(100);
-            }
+        assumeTrue(gcnc.PtyPair.available(), "socat (setup.sh installs it)");
+        try (gcnc.PtyPair pty = gcnc.PtyPair.open(Files.createTempDirectory("gcnc-pty"), "")) {
+            Path a = pty.controller;
+            Path b = pty.host;
             Path p = part(PART);
             try (VirtualController vc = VirtualController.pty(a, new VirtualController.Options(model("DMC-4040"), FAST, List.of(), null))) {
                 Run dp = gcnc("", "run", p.toString(), "--machine", "haas", "--port", b.toString(), "--dry-run");
@@ -306,9 +300,6 @@ class RunOnControllerTest {
                 assertTrue(r.out().contains("ran to the end"), r.out());
                 assertArrayEquals(programEnd(p), axes(vc));
             }
-        } finally {
-            socat.destroy();
-            socat.waitFor();
         }
     }
 
@@ -335,16 +326,10 @@ class RunOnControllerTest {
 
     @Test
     void aPortHeldByAnotherProgramIsExit2() throws Exception {
-        assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")) && Files.isExecutable(Path.of("/usr/bin/flock")));
-        Path dir = Files.createTempDirectory("gcnc-pty");
-        Path a = dir.resolve("controller");
-        Path b = dir.resolve("host");
-        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b).start();
+        assumeTrue(gcnc.PtyPair.available() && Files.isExecutable(Path.of("/usr/bin/flock")));
         Process holder = null;
-        try {
-            for (int i = 0; i < 50 && !Files.exists(b); i++) {
-                Thread.sleep(100);
-            }
+        try (gcnc.PtyPair pty = gcnc.PtyPair.open(Files.createTempDirectory("gcnc-pty"), "")) {
+            Path b = pty.host;
             // another program holds the port as serial programs do (an exclusive lock on the device)
             holder = new ProcessBuilder("flock", "-n", b.toString(), "sleep", "30").start();
             Thread.sleep(300);
@@ -357,8 +342,6 @@ class RunOnControllerTest {
                 holder.descendants().forEach(ProcessHandle::destroy);
                 holder.destroy();
             }
-            socat.destroy();
-            socat.waitFor();
         }
     }
 

@@ -92,7 +92,7 @@ class RunStreamTest {
      */
     @Test
     void theBishopRunsThePathStreamedOverAPtyThatItRunsAsOneProgram() throws Exception {
-        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")), "socat (setup.sh installs it)");
+        org.junit.jupiter.api.Assumptions.assumeTrue(gcnc.PtyPair.available(), "socat (setup.sh installs it)");
         gcnc.machine.MachineProfile thesis = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine("thesis-2004")).profile();
         double[] g = gcnc.send.DmcProgram.Plane.of(thesis).galil(thesis.home().x(), thesis.home().z());
         long[] home = {Math.round(g[0]), Math.round(g[1])};
@@ -100,25 +100,16 @@ class RunStreamTest {
         Path bishop = Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));
         List<List<String>> paths = new java.util.ArrayList<>();
         for (String form : List.of("program", "stream")) {
-            Path a = dir.resolve("controller-" + form);
-            Path b = dir.resolve("host-" + form);
             Path trace = dir.resolve(form + ".trace");
-            Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
-                    .redirectErrorStream(true).redirectOutput(dir.resolve("socat-" + form + ".log").toFile()).start();
-            try {
-                for (int i = 0; i < 50 && !(Files.exists(a) && Files.exists(b)); i++) {
-                    Thread.sleep(100);
-                }
-                try (VirtualController vc = VirtualController.pty(a,
+            try (gcnc.PtyPair pty = gcnc.PtyPair.open(dir, "-" + form)) {
+                Path b = pty.host;
+                try (VirtualController vc = VirtualController.pty(pty.controller,
                         new VirtualController.Options(model("DMC-1700"), 200, List.of(), trace))) {
                     RunOnControllerTest.definePosition(b, home);
                     RunOnControllerTest.Run r = gcnc("", "run", bishop.toString(), "--machine", "thesis-2004", "--port",
                             b.toString(), "--poll", "20", "--form", form);
                     assertEquals(0, r.status(), form + ": " + r.all());
                 }
-            } finally {
-                socat.destroy();
-                socat.waitFor();
             }
             paths.add(RunOnControllerTest.path(trace));
         }

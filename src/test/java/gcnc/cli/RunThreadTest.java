@@ -83,28 +83,18 @@ class RunThreadTest {
 
     @Test
     void aThreadingProgramRunsToTheEndOnTheSimulatorsPathOverAPty() throws Exception {
-        assumeTrue(Files.isExecutable(Path.of("/usr/bin/socat")), "socat (setup.sh installs it)");
-        Path dir = Files.createTempDirectory("gcnc-pty");
-        Path a = dir.resolve("controller");
-        Path b = dir.resolve("host");
-        Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
-                .redirectErrorStream(true).redirectOutput(dir.resolve("socat.log").toFile()).start();
+        assumeTrue(gcnc.PtyPair.available(), "socat (setup.sh installs it)");
         Path p = part(THREAD);
         Path trace = p.resolveSibling("run.trace");
-        try {
-            for (int i = 0; i < 50 && !(Files.exists(a) && Files.exists(b)); i++) {
-                Thread.sleep(100);
-            }
-            try (VirtualController vc = VirtualController.pty(a,
+        try (gcnc.PtyPair pty = gcnc.PtyPair.open(Files.createTempDirectory("gcnc-pty"), "")) {
+            Path b = pty.host;
+            try (VirtualController vc = VirtualController.pty(pty.controller,
                     new VirtualController.Options(model("DMC-4040"), 20, List.of(), trace))) {
                 RunOnControllerTest.definePosition(b, RunOnControllerTest.home());
                 RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--stock", "20,50",
                         "--port", b.toString(), "--poll", "20");
                 assertEquals(0, r.status(), r.all());
             }
-        } finally {
-            socat.destroy();
-            socat.waitFor();
         }
         assertOnTheSimulatorsPath(p, trace);
     }

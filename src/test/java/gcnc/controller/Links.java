@@ -20,24 +20,18 @@ final class Links implements Closeable {
 
     final VirtualController controller;
     final HostLink host;
-    private final Process socat;
-    private final Path dir;
+    /** The pty pair of a PTY link; null over TCP. */
+    private final gcnc.PtyPair pty;
 
-    private Links(VirtualController controller, HostLink host, Process socat, Path dir) {
+    private Links(VirtualController controller, HostLink host, gcnc.PtyPair pty) {
         this.controller = controller;
         this.host = host;
-        this.socat = socat;
-        this.dir = dir;
+        this.pty = pty;
     }
 
     /** Is socat here (setup.sh installs it)? The pty tests need it. */
     static boolean socat() {
-        for (String d : System.getenv().getOrDefault("PATH", "/usr/bin").split(":")) {
-            if (Files.isExecutable(Path.of(d, "socat"))) {
-                return true;
-            }
-        }
-        return false;
+        return gcnc.PtyPair.available();
     }
 
     static Links open(Kind kind, Model model, double speed, List<Fault> faults, Path trace) throws IOException {
@@ -46,29 +40,36 @@ final class Links implements Closeable {
             VirtualController vc = VirtualController.tcp(0, o);
             Socket s = new Socket(InetAddress.getLoopbackAddress(), vc.port());
             s.setSoTimeout(5000);
-            return new Links(vc, new HostLink(s.getInputStream(), s.getOutputStream(), s), null, null);
+            return new Links(vc, new HostLink(s.getInputStream(), s.getOutputStream(), s), null);
         }
-        Path dir = Files.createTempDirectory("gcnc-pty");
-        Path controllerEnd = dir.resolve("galil");
-        Path hostEnd = dir.resolve("host");
-        Process socat = new ProcessBuilder("socat", "-d", "-d", "pty,raw,echo=0,link=" + controllerEnd,
-                "pty,raw,echo=0,link=" + hostEnd).redirectErrorStream(true).redirectOutput(dir.resolve("socat.log").toFile())
-                .start();
-        long until = System.nanoTime() + 5_000_000_000L;
-        while (!(Files.exists(controllerEnd) && Files.exists(hostEnd)) && System.nanoTime() < until) {
-            sleep(10);
+        gcnc.PtyPair pty;
+        try {
+            pty = gcnc.PtyPair.open(Files.createTempDirectory("gcnc-pty"), "");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while socat made the pty pair", e);
         }
+        Path controllerEnd = pty.controller;
+        Path hostEnd = pty.host;
         VirtualController vc = VirtualController.pty(controllerEnd, o);
         SerialPort port = SerialPort.getCommPort(hostEnd.toString());
         port.setBaudRate(115200);
         if (!port.openPort()) {
-            socat.destroy();
+            close(pty);
             vc.close();
             throw new IOException("jSerialComm cannot open " + hostEnd + ": error " + port.getLastErrorCode());
         }
         port.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 5000, 0);
         HostLink host = new HostLink(port.getInputStream(), port.getOutputStream(), port::closePort);
-        return new Links(vc, host, socat, dir);
+        return new Links(vc, host, pty);
+    }
+
+    private static void close(gcnc.PtyPair pty) {
+        try {
+            pty.close();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     static void sleep(long ms) {
@@ -87,13 +88,8 @@ final class Links implements Closeable {
             throw new UncheckedIOException(e);
         } finally {
             controller.close();
-            if (socat != null) {
-                socat.destroy();
-                try {
-                    socat.waitFor();
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
+            if (pty != null) {
+                close(pty);
             }
         }
     }

@@ -67,6 +67,19 @@ final class Browser {
         }
     }
 
+    /**
+     * A browser class's end: the JVM's one Chromium left on a blank page for the next class (the
+     * JVM's exit quits it), and the class's studio closed.
+     */
+    static void release(WebDriver d, Studio studio) {
+        if (d != null) {
+            blank(d);
+        }
+        if (studio != null) {
+            studio.close();
+        }
+    }
+
     private static String currentUrl(WebDriver d) {
         try {
             return d.getCurrentUrl();

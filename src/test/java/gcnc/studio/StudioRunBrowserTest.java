@@ -43,12 +43,7 @@ class StudioRunBrowserTest {
 
     @AfterAll
     static void stop() {
-        if (browser != null) {
-            Browser.blank(browser); // the JVM's one Chromium: the next class gets it, the JVM's exit quits it
-        }
-        if (studio != null) {
-            studio.close();
-        }
+        Browser.release(browser, studio);
     }
 
     @BeforeEach

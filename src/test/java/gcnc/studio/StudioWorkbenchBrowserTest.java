@@ -45,12 +45,7 @@ class StudioWorkbenchBrowserTest {
 
     @AfterAll
     static void stop() {
-        if (browser != null) {
-            Browser.blank(browser); // the JVM's one Chromium: the next class gets it, the JVM's exit quits it
-        }
-        if (studio != null) {
-            studio.close();
-        }
+        Browser.release(browser, studio);
     }
 
     @BeforeEach

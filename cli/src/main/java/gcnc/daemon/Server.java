@@ -169,28 +169,20 @@ public final class Server {
                 if (failed[0] != null) {
                     throw failed[0];
                 }
-            } catch (OutOfMemoryError e) {
-                if (!outputs.sent() && !r.stdin()) {
-                    outputs.discard(); // nothing sent yet: run cold, whose heap and verdict are the user's own
-                    Frames.write(out, 'K', "out of memory inside gcnc");
-                    out.flush();
-                    return;
-                }
-                // part of the output is out: end as a cold run ends (Main.main), E506 and status 2;
-                // the run's objects are unreachable by now, and the daemon serves on
-                outputs.flushAll();
-                Frames.write(out, '2', Main.outOfMemoryLine(r.argv().toArray(new String[0]), r.env()));
-                status = 2;
             } catch (Throwable e) {
                 if (!outputs.sent() && !r.stdin()) {
+                    // nothing sent yet: the run goes cold, with the user's own heap, verdict and stack trace
                     outputs.discard();
                     Frames.write(out, 'K', "failed inside gcnc: " + e);
                     out.flush();
                     return;
                 }
+                // part of the output is out: out of memory ends as a cold run ends (Main.main), E506 and
+                // status 2 (the run's objects are unreachable by now, and the daemon serves on); anything
+                // else says the daemon failed
                 outputs.flushAll();
-                Frames.write(out, '2', "gcnc: the resident checker failed during this run (" + e
-                        + "); run it again with GCNC_DAEMON=off\n");
+                Frames.write(out, '2', e instanceof OutOfMemoryError ? Main.outOfMemoryLine(r.argv().toArray(new String[0]), r.env())
+                        : "gcnc: the resident checker failed during this run (" + e + "); run it again with GCNC_DAEMON=off\n");
                 status = 2;
             }
             outputs.flushAll();

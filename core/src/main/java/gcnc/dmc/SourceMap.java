@@ -197,12 +197,12 @@ public final class SourceMap {
     }
 
     /** A command's place as one number that sorts as the program runs: its line, then its place on the line. */
-    private static long key(int dmcLine, int statement) {
+    public static long key(int dmcLine, int statement) {
         return ((long) dmcLine << 16) | statement;
     }
 
     /** An entry's place, {@code L} or {@code L.K}, as {@link #key}; -1 when it is neither. */
-    private static long place(String s) {
+    public static long place(String s) {
         int dot = s.indexOf('.');
         String line = dot < 0 ? s : s.substring(0, dot);
         String statement = dot < 0 ? "0" : s.substring(dot + 1);

@@ -2,7 +2,6 @@ package gcnc.send;
 
 import gcnc.diag.Origin;
 import gcnc.dmc.Command;
-import gcnc.dmc.DmcPrinter;
 import gcnc.dmc.DmcReader;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.Source;
@@ -13,15 +12,14 @@ import java.util.List;
 
 /**
  * The compiled program the sender downloads: its instructions (the typed commands of gcnc.dmc,
- * each with its {@link Source}), the lines they print as ({@link DmcPrinter}, the one writer of DMC
- * text: the same bytes as FILE.dmc), the motions it makes ({@link Sequence}) with their places in
+ * each with its {@link Source}; a downloaded {@link Piece} prints and packs them as FILE.dmc holds
+ * them), the motions it makes ({@link Sequence}) with their places in
  * the plane and the DMC line of every segment, and how long each line's work takes. Built from the
  * compiler's instructions as they come ({@link #of}), so that nothing reads DMC text back; a DMC
  * file with its map is read through {@link DmcReader}, the one reader of DMC text ({@link #read}).
  */
 public final class DmcProgram {
     private final List<Instruction> instructions;
-    private final List<String> lines;
     private final List<Sequence> sequences;
     /** For each line, the index of the sequence it belongs to, or -1. */
     private final int[] sequenceOf;
@@ -73,10 +71,9 @@ public final class DmcProgram {
         }
     }
 
-    private DmcProgram(List<Instruction> instructions, List<String> lines, List<Sequence> sequences,
+    private DmcProgram(List<Instruction> instructions, List<Sequence> sequences,
                        int[] sequenceOf, double[] secondsBefore, double totalSeconds, Plane plane, int lineWidth) {
         this.instructions = instructions;
-        this.lines = lines;
         this.sequences = sequences;
         this.sequenceOf = sequenceOf;
         this.secondsBefore = secondsBefore;
@@ -94,14 +91,12 @@ public final class DmcProgram {
     public static DmcProgram of(List<Instruction> instructions, MachineProfile profile) {
         Plane plane = Plane.of(profile);
         List<Instruction> all = List.copyOf(instructions);
-        List<String> printed = new ArrayList<>(all.size());
         Walker w = new Walker(plane, plane.galil(profile.home().x(), profile.home().z()), profile.acceleration());
         for (int i = 0; i < all.size(); i++) {
-            printed.add(DmcPrinter.print(all.get(i).command()));
             w.line(i, all.get(i).command());
         }
         int n = all.size();
-        return new DmcProgram(all, Collections.unmodifiableList(printed), Collections.unmodifiableList(w.sequences),
+        return new DmcProgram(all, Collections.unmodifiableList(w.sequences),
                 w.sequenceOf(n), w.secondsBefore(n), w.seconds, plane, profile.controllerLimits().lineWidth());
     }
 
@@ -138,14 +133,14 @@ public final class DmcProgram {
         return lineWidth;
     }
 
-    /** The instructions printed, one command each (a downloaded piece packs them: {@link Piece#lines}). */
-    public List<String> lines() {
-        return lines;
-    }
-
-    /** The instructions, one a line. */
+    /** The instructions, in order (a downloaded piece prints and packs them: {@link Piece#lines}). */
     public List<Instruction> instructions() {
         return instructions;
+    }
+
+    /** How many instructions. */
+    public int size() {
+        return instructions.size();
     }
 
     /** The command on line {@code index} (0-based), or null beyond the program. */

@@ -41,7 +41,7 @@ public final class MapReader {
         }
 
         private int run(int dmcLine, int statement) {
-            int i = Arrays.binarySearch(starts, ((long) dmcLine << 16) | statement);
+            int i = Arrays.binarySearch(starts, gcnc.dmc.SourceMap.key(dmcLine, statement));
             return i >= 0 ? i : -i - 2;
         }
     }
@@ -58,10 +58,8 @@ public final class MapReader {
                 continue;
             }
             String[] w = t.split("\\s+");
-            int dot = w[0].indexOf('.');
-            String first = dot < 0 ? w[0] : w[0].substring(0, dot);
-            String statement = dot < 0 ? "0" : w[0].substring(dot + 1);
-            if (w.length < 2 || !whole(first) || !whole(statement) || statement.length() > 4) {
+            long place = gcnc.dmc.SourceMap.place(w[0]);
+            if (w.length < 2 || place < 0) {
                 continue;
             }
             Integer source = null;
@@ -81,7 +79,7 @@ public final class MapReader {
             if (source == null) {
                 continue;
             }
-            runs.add(new long[] {((long) Integer.parseInt(first) << 16) | Integer.parseInt(statement), source});
+            runs.add(new long[] {place, source});
             files.add(file);
         }
         long[] starts = new long[runs.size()];

@@ -33,6 +33,11 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines, in
         this(commands, origin, packed.stream().map(LinePacker.Line::text).toList(), starts(packed));
     }
 
+    /** {@code commands} as they are downloaded: packed into lines of {@code width} characters, as the compile writes them. */
+    static List<String> packedLines(List<Command> commands, int width) {
+        return packed(commands, width).stream().map(LinePacker.Line::text).toList();
+    }
+
     private static List<LinePacker.Line> packed(List<Command> commands, int width) {
         List<Instruction> is = new ArrayList<>(commands.size());
         for (Command c : commands) {

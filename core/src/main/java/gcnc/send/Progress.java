@@ -66,7 +66,7 @@ public final class Progress {
         int line = program.sourceLine(e);
         if (line == 0) {
             // the header or the footer: the first block, or nothing left to do after the last
-            for (int i = e; i < program.lines().size(); i++) {
+            for (int i = e; i < program.size(); i++) {
                 if (program.sourceLine(i) > 0) {
                     return new ResumePoint(program.sourceLine(i), 0);
                 }

@@ -113,9 +113,9 @@ public final class Resume {
      */
     private Piece build(int from, int stateEnd, Replanned replanned) {
         Piece.Builder b = new Piece.Builder();
-        List<String> lines = program.lines();
+        int size = program.size();
         int header = 0;
-        while (header < lines.size() && program.sourceLine(header) == 0 && !(program.command(header) instanceof Command.End)) {
+        while (header < size && program.sourceLine(header) == 0 && !(program.command(header) instanceof Command.End)) {
             // not the homing check: a resumed run starts where the axes stopped, which the sender checks itself
             if (!(program.command(header) instanceof Command.Jump j && j.label().equals("NOHOME"))) {
                 b.add(program.command(header), header);
@@ -127,7 +127,7 @@ public final class Resume {
         Map<Integer, Integer> bits = new TreeMap<>();
         Map<String, Integer> variables = new TreeMap<>();
         List<Integer> state = new ArrayList<>();
-        for (int i = header; i < stateEnd && i < lines.size(); i++) {
+        for (int i = header; i < stateEnd && i < size; i++) {
             state.add(i);
         }
         if (replanned != null) {
@@ -166,7 +166,7 @@ public final class Resume {
                 b.add(r.commands().get(i), r.origin()[i]);
             }
         }
-        for (int i = Math.max(from, header); i < lines.size(); i++) {
+        for (int i = Math.max(from, header); i < size; i++) {
             b.add(program.command(i), i);
         }
         return b.build(program.lineWidth());

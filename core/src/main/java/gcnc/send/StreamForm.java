@@ -54,8 +54,7 @@ public final class StreamForm implements Form {
     record Split(List<Sent> resident, List<Sent> stream) {
         /** The resident program as it is downloaded: packed into lines as the compile writes it. */
         List<String> residentLines(int width) {
-            List<Instruction> is = resident.stream().map(s -> new Instruction(s.command(), gcnc.dmc.Source.NONE)).toList();
-            return gcnc.dmc.LinePacker.pack(is, width).stream().map(gcnc.dmc.LinePacker.Line::text).toList();
+            return Piece.packedLines(resident.stream().map(Sent::command).toList(), width);
         }
     }
 

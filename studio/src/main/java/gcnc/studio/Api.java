@@ -6,7 +6,6 @@ import com.sun.net.httpserver.HttpExchange;
 import gcnc.Session;
 import gcnc.diag.Messages;
 import gcnc.output.AtomicOutput;
-import gcnc.output.DmcOutputs;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
@@ -157,7 +156,7 @@ final class Api implements AutoCloseable {
 
     /** GET /api/file?name=NAME: a program's text and version. */
     private JsonObject open(HttpExchange ex) throws IOException, Http.Fail {
-        Workspace.Program p = refusing(() -> workspace.read(Guard.query(ex.getRequestURI(), "name")));
+        Workspace.Program p = Workspace.refusing(() -> workspace.read(Guard.query(ex.getRequestURI(), "name")));
         return program(p);
     }
 
@@ -168,7 +167,7 @@ final class Api implements AutoCloseable {
         String version = Http.string(req, "version");
         boolean force = Http.flag(req, "force");
         try {
-            return program(refusing(() -> workspace.save(name, text, version, force)));
+            return program(Workspace.refusing(() -> workspace.save(name, text, version, force)));
         } catch (AtomicOutput.Refused e) {
             throw new Http.Fail(403, "gcnc refuses to write " + name + " (" + e.code().id() + ")");
         } catch (IOException e) {
@@ -191,16 +190,11 @@ final class Api implements AutoCloseable {
     /** POST /api/compile {name}: the saved program compiled to NAME.dmc and NAME.dmc.map beside it. */
     private JsonObject compile(JsonObject req) throws IOException, Http.Fail {
         String name = Http.required(req, "name");
-        Path program = refusing(() -> workspace.existing(name));
-        Path dmc = DmcOutputs.defaultOutput(program);
-        String dmcName = workspace.name(dmc);
-        refusing(() -> workspace.writable(dmc, dmcName, false));
-        refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
-        // the stream form's files too: written when the program does not fit the controller, removed when it does
-        Path stream = gcnc.output.FormOutputs.streamFile(dmc);
-        String streamName = workspace.name(stream);
-        refusing(() -> workspace.writable(stream, streamName, false));
-        refusing(() -> workspace.writable(DmcOutputs.mapFile(stream), streamName + ".map", false));
+        Path program = Workspace.refusing(() -> workspace.existing(name));
+        Workspace.CompileOutputs outputs = Workspace.refusing(() -> workspace.compileOutputs(program));
+        Path dmc = outputs.dmc();
+        String dmcName = outputs.dmcName();
+        String streamName = outputs.streamName();
         JsonObject o;
         try {
             o = engine.analysis().compile(name, program, dmc);
@@ -316,7 +310,7 @@ final class Api implements AutoCloseable {
         boolean force = Http.flag(req, "force");
         ProfileEdit edit = profileEdit();
         java.util.Map<String, String> values = ProfileEdit.values(req);
-        Path target = refusing(() -> workspace.writableProfile(file));
+        Path target = Workspace.refusing(() -> workspace.writableProfile(file));
         String text = edit.edited(values);
         gcnc.machine.MachineProfile edited;
         try {
@@ -431,19 +425,6 @@ final class Api implements AutoCloseable {
         o.addProperty("text", p.text());
         o.addProperty("version", p.version());
         return o;
-    }
-
-    private interface WorkspaceCall<T> {
-        T call() throws Workspace.Refused, IOException;
-    }
-
-    /** A workspace call whose refusal becomes the answer (its status, its reason). */
-    private static <T> T refusing(WorkspaceCall<T> call) throws IOException, Http.Fail {
-        try {
-            return call.call();
-        } catch (Workspace.Refused r) {
-            throw new Http.Fail(r.status(), r.getMessage());
-        }
     }
 
     private static String reason(IOException e) {

@@ -63,7 +63,7 @@ final class RunControllers implements AutoCloseable {
         Operator operator = new Operator();
         if (a.step()) {
             // step mode downloads block by block, each after an Enter: all given in advance (nothing moves)
-            for (int i = 0; i <= a.program().program().lines().size(); i++) {
+            for (int i = 0; i <= a.program().program().size(); i++) {
                 operator.enter();
             }
         }

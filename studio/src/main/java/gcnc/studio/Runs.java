@@ -7,7 +7,6 @@ import com.google.gson.JsonParser;
 import com.sun.net.httpserver.HttpExchange;
 import gcnc.Session;
 import gcnc.diag.Messages;
-import gcnc.output.DmcOutputs;
 import gcnc.send.Event;
 import gcnc.send.EventSink;
 import gcnc.send.JsonEvents;
@@ -123,16 +122,11 @@ final class Runs implements AutoCloseable {
         if (target instanceof RunTarget.Serial && !controllers.serial()) {
             throw new Http.Fail(400, "this studio cannot open serial ports (start it with gcnc studio, from gcnc.jar)");
         }
-        Path file = refusing(() -> workspace.existing(name));
-        Path dmc = DmcOutputs.defaultOutput(file);
-        String dmcName = workspace.name(dmc);
-        refusing(() -> workspace.writable(dmc, dmcName, false));
-        refusing(() -> workspace.writable(DmcOutputs.mapFile(dmc), dmcName + ".map", false));
-        // the stream form's files too: written when the program does not fit the controller, removed when it does
-        Path stream = gcnc.output.FormOutputs.streamFile(dmc);
-        String streamName = workspace.name(stream);
-        refusing(() -> workspace.writable(stream, streamName, false));
-        refusing(() -> workspace.writable(DmcOutputs.mapFile(stream), streamName + ".map", false));
+        Path file = Workspace.refusing(() -> workspace.existing(name));
+        Workspace.CompileOutputs outputs = Workspace.refusing(() -> workspace.compileOutputs(file));
+        Path dmc = outputs.dmc();
+        String dmcName = outputs.dmcName();
+        String streamName = outputs.streamName();
         if (!arming.tryLock()) {
             throw new Http.Fail(409, "another arm is under way");
         }
@@ -207,7 +201,7 @@ final class Runs implements AutoCloseable {
             }
             RunArm a = arm;
             arm = null; // an arm moves the machine once
-            Path file = refusing(() -> workspace.existing(a.name()));
+            Path file = Workspace.refusing(() -> workspace.existing(a.name()));
             if (!Workspace.version(Files.readAllBytes(file)).equals(a.version())) {
                 throw new Http.Fail(409, a.name() + " changed since it was armed: arm it again");
             }
@@ -400,15 +394,4 @@ final class Runs implements AutoCloseable {
         controllers.close();
     }
 
-    private interface WorkspaceCall<T> {
-        T call() throws Workspace.Refused, IOException;
-    }
-
-    private static <T> T refusing(WorkspaceCall<T> call) throws IOException, Http.Fail {
-        try {
-            return call.call();
-        } catch (Workspace.Refused r) {
-            throw new Http.Fail(r.status(), r.getMessage());
-        }
-    }
 }

@@ -164,6 +164,37 @@ final class Workspace {
     }
 
     /**
+     * Where a compile of {@code program} writes, as {@code gcnc compile} names it: the DMC and the
+     * stream form's stream, each with its map, every one checked {@link #writable} (the stream's
+     * files are written when the program does not fit the controller, removed when it does).
+     */
+    record CompileOutputs(Path dmc, String dmcName, Path stream, String streamName) {
+    }
+
+    CompileOutputs compileOutputs(Path program) throws Refused, IOException {
+        Path dmc = gcnc.output.DmcOutputs.defaultOutput(program);
+        Path stream = gcnc.output.FormOutputs.streamFile(dmc);
+        for (Path p : new Path[] {dmc, gcnc.output.DmcOutputs.mapFile(dmc), stream, gcnc.output.DmcOutputs.mapFile(stream)}) {
+            writable(p, name(p), false);
+        }
+        return new CompileOutputs(dmc, name(dmc), stream, name(stream));
+    }
+
+    /** A workspace step an endpoint takes; {@link #refusing} answers its refusal. */
+    interface Call<T> {
+        T call() throws Refused, IOException;
+    }
+
+    /** Runs {@code call}, a refusal becoming the HTTP answer it names (its status and message). */
+    static <T> T refusing(Call<T> call) throws IOException, Http.Fail {
+        try {
+            return call.call();
+        } catch (Refused r) {
+            throw new Http.Fail(r.status(), r.getMessage());
+        }
+    }
+
+    /**
      * A machine profile Configure may write: a name ending in .machine, inside DIR, in a folder
      * that exists, never through a link, a device or a pipe.
      */
