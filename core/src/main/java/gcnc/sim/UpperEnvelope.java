@@ -246,7 +246,8 @@ final class UpperEnvelope {
         double b1 = bottom.at(s, t, false);
         double t0 = top.at(s, t, true);
         double t1 = top.at(s, t, false);
-        if (Math.min(b0, b1) >= Math.max(u0, u1)) { // the usual case: the sweep passes above
+        boolean known = !Double.isNaN(b0 + b1 + t0 + t1);
+        if (!known || Math.min(b0, b1) >= Math.max(u0, u1)) { // the usual case: the sweep passes above
             out.add(new Piece(s, t, u0, u1));
             return false;
         }
@@ -331,7 +332,7 @@ final class UpperEnvelope {
                     return r[i] + (r[i + 1] - r[i]) * (q - z[i]) / (z[i + 1] - z[i]);
                 }
             }
-            throw new IllegalStateException("no edge of the hull spans " + s + ".." + t);
+            return Double.NaN; // no edge spans it (a hull with a NaN corner): the caller keeps the envelope
         }
     }
 
