@@ -11,7 +11,7 @@ jar=$1; blocks=${2:-2000}
 dir=bench/out/studio
 mkdir -p "$dir"
 python3 bench/gen_program.py "$blocks" "$dir/long.nc"
-java -jar "$jar" studio "$dir" --lang en > "$dir/studio.out" 2>&1 &
+java ${STUDIO_JAVA_OPTS:-} -jar "$jar" studio "$dir" --lang en > "$dir/studio.out" 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 for _ in $(seq 50); do grep -q 'token=' "$dir/studio.out" 2>/dev/null && break; sleep 0.2; done

@@ -60,7 +60,7 @@ class UpperEnvelopeTest {
     @Test
     void aSweepLowerThanTheStockIsTopAndBottomOnlyLeavesTheEnvelope() {
         // a shank 2 mm tall cannot cut a ring of material off above it: the envelope stays
-        UpperEnvelope e = new UpperEnvelope(0, 100, 25);
+        UpperEnvelope e = new UpperEnvelope(0, 100, 0, 25);
         assertFalse(e.lower(Stock.sweep(TZ, new double[] {2, 2, 0}, 110, 20, 40, 20)));
         assertEquals(25, e.max(0, 100));
         assertEquals(1, e.size());
@@ -68,7 +68,7 @@ class UpperEnvelopeTest {
 
     @Test
     void roughingPassesKeepTheEnvelopeExactAndSmall() {
-        UpperEnvelope e = new UpperEnvelope(0, 100, 25);
+        UpperEnvelope e = new UpperEnvelope(0, 100, 0, 25);
         Geometry material = F.toGeometry(new Envelope(0, 100, 0, 25));
         for (int pass = 0; pass < 40; pass++) {
             double r = 24.75 - pass * 0.25;
@@ -87,7 +87,7 @@ class UpperEnvelopeTest {
     void randomSweepsNeverLeaveTheEnvelopeBelowTheMaterial() {
         Random rnd = new Random(23);
         for (int trial = 0; trial < 20; trial++) {
-            UpperEnvelope e = new UpperEnvelope(0, 60, 20);
+            UpperEnvelope e = new UpperEnvelope(0, 60, 0, 20);
             Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
             for (int cut = 0; cut < 60; cut++) {
                 Stock.Hull h = Stock.sweep(TZ, TR, rnd.nextDouble() * 70 - 5, rnd.nextDouble() * 24,
@@ -141,7 +141,7 @@ class UpperEnvelopeTest {
                 r.edge(c[k - 1], c[k]);
             }
         }
-        UpperEnvelope e = new UpperEnvelope(0, 60, 20);
+        UpperEnvelope e = new UpperEnvelope(0, 60, 0, 20);
         e.replace(10, 50, r.pieces());
         for (double z = 10.003; z < 50; z += 0.0917) {
             assertEquals(top(material, z), e.max(z, z), 1e-9, "at z " + z);
@@ -153,7 +153,7 @@ class UpperEnvelopeTest {
     /** A ragged outline stays bounded: past the limit the envelope becomes level steps, only higher. */
     @Test
     void aRaggedOutlineIsCoarsenedNeverLowered() {
-        UpperEnvelope e = new UpperEnvelope(0, 100, 25);
+        UpperEnvelope e = new UpperEnvelope(0, 100, 0, 25);
         int n = 40_000;
         double[] at = new double[n];
         double[] deep = new double[n];
@@ -213,5 +213,34 @@ class UpperEnvelopeTest {
                         "trial " + trial + " at z " + z + ": " + truth + " against " + a + ".." + b);
             }
         }
+    }
+
+    /**
+     * Roughing and finishing from outside keep every column of material one run up to the
+     * envelope: the drawing is the envelope, with no polygon work, and it is the material's outline.
+     * A groove under a shoulder ends that, and a cut through the bore too.
+     */
+    @Test
+    void cutsFromOutsideKeepTheEnvelopeTheOutlineAndACutUnderMaterialEndsIt() {
+        Stock s = new Stock(0, 60, 20);
+        Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
+        for (int pass = 0; pass < 30; pass++) {
+            double r = 19.5 - pass * 0.5;
+            Stock.Hull h = Stock.sweep(TZ, TR, 62, r, 20 + pass, r - pass * 0.05); // a slight taper
+            s.cut(h);
+            material = OverlayNGRobust.overlay(material, polygon(h), OverlayNG.DIFFERENCE);
+        }
+        double[][] p = s.profile();
+        assertTrue(s.envelopeSolid(), "cuts from outside");
+        assertEquals(0, s.work(), "no polygon work for the drawing");
+        for (double z = 0.0123; z < 60; z += 0.0311) {
+            assertEquals(top(material, z), StockScrubTest.at(p[0], p[1], z), 1e-9, "at z " + z);
+        }
+        // a 2 mm shank passing at r 5 under the material from z 62 to 5: material stays above it
+        s.cut(Stock.sweep(TZ, new double[] {2, 2, 0}, 62, 5, 5, 5));
+        assertFalse(s.envelopeSolid(), "a sweep under material");
+        Stock tube = new Stock(0, 60, 8, 20);
+        tube.cut(Stock.sweep(TZ, TR, 62, 6, 40, 6)); // through the bore's wall at r 8
+        assertFalse(tube.envelopeSolid(), "through the bore");
     }
 }

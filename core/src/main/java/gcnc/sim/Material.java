@@ -97,47 +97,47 @@ final class Material {
     }
 
     /**
-     * Takes the cuts away from the material, each tile with only the cuts over it (one union, one
-     * difference per tile). Returns the z range that changed, {zLo, zHi}, or null if none did.
+     * Takes the cuts away from the material: the cuts that reach into some tile are unioned once,
+     * and each tile they reach takes the difference (JTS clips the union to the tile's box first).
+     * Returns the z range that changed, {zLo, zHi}, or null if none did.
+     *
+     * <p>One union for all the tiles, not one per tile: a turning pass 40 mm long spans 20 tiles,
+     * and a union per tile redid the same union of every pass over each of them (the drawing of a
+     * 2,000-block roughing program waited 0.7 s for it).
      */
     double[] remove(List<Geometry> cuts) {
-        List<List<Geometry>> per = new ArrayList<>();
-        int first = tiles.length;
-        int last = -1;
+        boolean[] reached = new boolean[tiles.length];
+        List<Geometry> hit = new ArrayList<>(cuts.size());
         for (Geometry c : cuts) {
             int[] s = span(c.getEnvelopeInternal());
+            boolean any = false;
             for (int k = s[0]; k <= s[1]; k++) {
-                while (per.size() <= k) {
-                    per.add(null);
+                if (!tiles[k].isEmpty() && prepared(k).intersects(c)) {
+                    reached[k] = true;
+                    any = true;
                 }
-                if (per.get(k) == null) {
-                    per.set(k, new ArrayList<>());
-                }
-                per.get(k).add(c);
+            }
+            if (any) {
+                hit.add(c);
             }
         }
-        for (int k = 0; k < per.size(); k++) {
-            List<Geometry> over = per.get(k);
-            if (over == null || tiles[k].isEmpty()) {
+        if (hit.isEmpty()) {
+            return null;
+        }
+        Geometry region = hit.size() == 1 ? hit.get(0) : UnaryUnionNG.union(factory.buildGeometry(hit), PM);
+        int first = -1;
+        int last = -1;
+        for (int k = 0; k < tiles.length; k++) {
+            if (!reached[k]) {
                 continue;
             }
-            List<Geometry> hit = new ArrayList<>(over.size());
-            for (Geometry c : over) {
-                if (prepared(k).intersects(c)) {
-                    hit.add(c);
-                }
-            }
-            if (hit.isEmpty()) {
-                continue;
-            }
-            Geometry region = hit.size() == 1 ? hit.get(0) : UnaryUnionNG.union(factory.buildGeometry(hit), PM);
             work += tiles[k].getNumPoints();
             tiles[k] = straighten(OverlayNG.overlay(tiles[k], region, OverlayNG.DIFFERENCE, PM));
             prepared[k] = null;
-            first = Math.min(first, k);
-            last = Math.max(last, k);
+            first = first < 0 ? k : first;
+            last = k;
         }
-        return last < 0 ? null : new double[] {bounds[first], bounds[last + 1]};
+        return new double[] {bounds[first], bounds[last + 1]};
     }
 
     /** The material inside the region, its pieces in neighbouring tiles joined; empty if none. */

@@ -43,7 +43,7 @@ final class Stock {
         this.back = back;
         this.face = face;
         this.radius = radius;
-        this.envelope = new UpperEnvelope(back, face, radius);
+        this.envelope = new UpperEnvelope(back, face, inner, radius);
         this.material = new Material(factory, back, face, inner, radius);
     }
 
@@ -334,10 +334,19 @@ final class Stock {
     /**
      * The finished part's outline, back to face: the largest radius of material left at each z
      * (mm), as points, a face as two points at one z; at most 4096 of them (a drawing needs no more).
+     * While every cut took all above its lower edge the envelope is that outline already; else the
+     * pending cuts go into the polygons first and the envelope is rebuilt from them.
      */
     double[][] profile() {
-        settle();
+        if (!envelope.solid()) {
+            settle(); // the polygons know what a cut under material took
+        }
         return envelope.outline(4096);
+    }
+
+    /** Whether the envelope is the material's outline without the polygons ({@link UpperEnvelope#solid}). */
+    boolean envelopeSolid() {
+        return envelope.solid();
     }
 
     /** How many straight pieces the envelope holds (tests bound it). */

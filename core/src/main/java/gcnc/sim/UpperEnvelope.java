@@ -80,13 +80,32 @@ final class UpperEnvelope {
     private final double face;
     private final List<Chunk> chunks = new ArrayList<>();
     private int pieces;
+    /** The bore's radius (0 for a bar). */
+    private final double inner;
+    /**
+     * Whether each z's material is still one run from the bore (or the centreline) up to the
+     * envelope, so that the envelope is the material's outline exactly ({@link #solid}).
+     */
+    private boolean solid = true;
 
-    /** A blank of {@code radius} from {@code back} to {@code face}. */
-    UpperEnvelope(double back, double face, double radius) {
+    /** A blank of {@code radius} from {@code back} to {@code face}, bored to {@code inner} (0 for a bar). */
+    UpperEnvelope(double back, double face, double inner, double radius) {
         this.back = back;
         this.face = face;
+        this.inner = inner;
         chunks.add(new Chunk(List.of(new Piece(back, face, radius, radius))));
         pieces = 1;
+    }
+
+    /**
+     * Whether the envelope is the material's outline exactly: every cut so far took everything
+     * above its lower edge, or nothing, and left material above the bore (a cut that passes under
+     * material, such as a groove under a shoulder, leaves it above the sweep, and the envelope
+     * cannot tell that the material below is gone too; a cut through the bore leaves none). While
+     * it holds, a drawing needs no polygons. Coarsening ends it.
+     */
+    boolean solid() {
+        return solid;
     }
 
     /** How many pieces the envelope has (tests bound it). */
@@ -206,11 +225,11 @@ final class UpperEnvelope {
                 double s = s0;
                 for (double corner : corners) {
                     if (corner > s && corner < s1) {
-                        changed |= lower(piece, bottom, top, s, corner, out);
+                        changed |= lowerStretch(piece, bottom, top, s, corner, out);
                         s = corner;
                     }
                 }
-                changed |= lower(piece, bottom, top, s, s1, out);
+                changed |= lowerStretch(piece, bottom, top, s, s1, out);
             }
         }
         if (changed) {
@@ -239,7 +258,7 @@ final class UpperEnvelope {
      * top edge crosses the envelope, where the lower edge does, and where the lower edge crosses
      * the centreline; each part is lowered or kept whole. Appends the parts to {@code out}.
      */
-    private static boolean lower(Piece piece, Side bottom, Side top, double s, double t, List<Piece> out) {
+    private boolean lowerStretch(Piece piece, Side bottom, Side top, double s, double t, List<Piece> out) {
         double u0 = piece.at(s);
         double u1 = piece.at(t);
         double b0 = bottom.at(s, t, true);
@@ -264,9 +283,13 @@ final class UpperEnvelope {
             double um = lerp(s, t, u0, u1, m);
             double bm = lerp(s, t, b0, b1, m);
             if (lerp(s, t, t0, t1, m) >= um && bm < um) {
-                out.add(new Piece(x, y, Math.max(0, lerp(s, t, b0, b1, x)), Math.max(0, lerp(s, t, b0, b1, y))));
+                double bx = lerp(s, t, b0, b1, x);
+                double by = lerp(s, t, b0, b1, y);
+                out.add(new Piece(x, y, Math.max(0, bx), Math.max(0, by)));
                 changed = true;
+                solid &= inner == 0 || Math.min(bx, by) > inner; // through the bore: nothing left there
             } else {
+                solid &= bm >= um; // a sweep under material: what it cut stays hidden under what is left
                 out.add(new Piece(x, y, lerp(s, t, u0, u1, x), lerp(s, t, u0, u1, y)));
             }
         }
@@ -393,6 +416,10 @@ final class UpperEnvelope {
                         out.set(out.size() - 1, line);
                         continue;
                     }
+                    // a corner, its two sides a rounding apart: one point, the higher
+                    double m = Math.max(last.b(), p.a());
+                    out.set(out.size() - 1, new Piece(last.z0(), last.z1(), last.a(), m));
+                    p = new Piece(p.z0(), p.z1(), m, p.b());
                 }
             }
             out.add(p);
@@ -402,6 +429,7 @@ final class UpperEnvelope {
 
     /** Level steps at the largest radius of each, MAX_PIECES / 2 of them over the blank: higher, never lower. */
     private void coarsen() {
+        solid = false;
         int n = MAX_PIECES / 2;
         double w = (face - back) / n;
         List<Piece> steps = new ArrayList<>(n);
