@@ -253,7 +253,8 @@ public final class Checker {
             return cycles.repeat(b, isFirst);
         }
         cycles.note(b);
-        return one(b, isFirst, null).map(List::of).orElse(List.of());
+        CheckedBlock made = checked(b, isFirst, null, null, null, 0);
+        return made == null ? List.of() : List.of(made);
     }
 
     /**
@@ -278,16 +279,17 @@ public final class Checker {
     /** As above, the pass starting {@code startAngle} degrees past the spindle's whole revolution (Q of G92, Haas G76). */
     Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut,
                                   double startAngle) {
-        return one(b, isFirst, origin, thread, pullOut, startAngle);
+        return Optional.ofNullable(checked(b, isFirst, origin, thread, pullOut, startAngle));
     }
 
     private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
                                        PullOut pullOut) {
-        return one(b, isFirst, origin, thread, pullOut, 0);
+        return Optional.ofNullable(checked(b, isFirst, origin, thread, pullOut, 0));
     }
 
-    private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
-                                       PullOut pullOut, double startAngle) {
+    /** The block checked and committed as {@link #one} says, or null after its errors (no Optional per block). */
+    private CheckedBlock checked(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut,
+                                 double startAngle) {
         BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
         d.thread = thread;
         d.pullOut = pullOut;
@@ -298,7 +300,7 @@ public final class Checker {
         boolean sequence = origin == null || !origin.again();
         if (result == null) {
             recover(b, isFirst, sequence);
-            return Optional.empty();
+            return null;
         }
         commit(d, sequence);
         advisories.accepted(d, result, out);
@@ -316,7 +318,7 @@ public final class Checker {
                     NoseConflict.suspend(b, functions, d.prior.nose(),
                             origin == null ? null : origin.cycle(), thread != null)));
         }
-        return Optional.of(made);
+        return made;
     }
 
     /** What a block would do from {@code from}, checked but not committed, or null after its errors. */
