@@ -56,6 +56,8 @@ public final class Checker {
     private final SyntaxActions actions = new SyntaxActions();
     private final Coordinates coordinates;
     private final MotionBuilder motions;
+    /** The draft of the block being checked, started afresh for each ({@link BlockDraft}). */
+    private final BlockDraft draft;
     private final int errorCap;
     /** One block's findings before they are reported (reused: nothing allocated per block). */
     private final Diagnostics scratch = new Diagnostics();
@@ -112,6 +114,7 @@ public final class Checker {
         this.functions = new FunctionIndex(tables, profile.control());
         this.coordinates = new Coordinates(profile);
         this.motions = new MotionBuilder(profile, coordinates);
+        this.draft = new BlockDraft(tables, functions, profile, coordinates);
         this.errorCap = errorCap;
         this.skipDeleted = skipDeleted;
         this.isOther = isOther;
@@ -290,7 +293,7 @@ public final class Checker {
     /** The block checked and committed as {@link #one} says, or null after its errors (no Optional per block). */
     private CheckedBlock checked(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut,
                                  double startAngle) {
-        BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
+        BlockDraft d = draft.start(b, state, isFirst);
         d.thread = thread;
         d.pullOut = pullOut;
         d.startAngle = startAngle;
@@ -343,7 +346,7 @@ public final class Checker {
     }
 
     private Dry dry(RawBlock b, ModalState from, Diagnostics found, boolean sequence) {
-        BlockDraft d = new BlockDraft(b, from, tables, functions, profile, coordinates, false);
+        BlockDraft d = draft.start(b, from, false);
         CheckedBlock r = run(d, found, false);
         if (r == null) {
             return null;
@@ -542,7 +545,7 @@ public final class Checker {
      * reports nothing. A block with any other error keeps only its unambiguous modal words.
      */
     private void recover(RawBlock b, boolean isFirst, boolean sequence) {
-        BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
+        BlockDraft d = draft.start(b, state, isFirst);
         Diagnostics none = new Diagnostics();
         if (!words(d, none, false)) {
             state = Salvage.keep(b, state, functions, profile);

@@ -95,6 +95,15 @@ public record ModalState(int motion, Units units, boolean incremental, int workO
         public boolean exactStopMode;
 
         Next(ModalState s) {
+            load(s);
+        }
+
+        /** A state to {@link #load}: a checker's draft keeps one and loads it for each block. */
+        Next() {
+        }
+
+        /** Takes every field of {@code s}, as a new block starts from it. */
+        void load(ModalState s) {
             motion = s.motion;
             units = s.units;
             incremental = s.incremental;
