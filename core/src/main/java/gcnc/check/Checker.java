@@ -510,7 +510,9 @@ public final class Checker {
      * (E114; not for a contour block followed again by G70: {@code sequence} false).
      */
     private void commit(BlockDraft d, boolean sequence) {
-        for (Word w : d.unpowered()) {
+        java.util.List<Word> ws = d.unpowered();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             int m = (int) w.code();
             if (!warnedM.get(m)) {
                 warnedM.set(m);
