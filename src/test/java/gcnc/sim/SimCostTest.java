@@ -45,6 +45,7 @@ class SimCostTest {
         }
         assertEquals(n, deep, "every plunge reaches into material not yet cut");
         assertTrue(s.corners() > n, "the notches stay in the stock: it is ragged");
+        assertTrue(s.envelopePieces() <= 8 * n + 8, "the envelope holds a few pieces per notch: " + s.envelopePieces());
         return s.work();
     }
 

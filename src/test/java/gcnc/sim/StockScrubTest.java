@@ -58,22 +58,27 @@ class StockScrubTest {
             assertEquals(line, d.moves().get(s.first()).line());
             assertEquals(line, d.moves().get(s.last()).line());
             assertArrayEquals(plain.finalR(), d.finalR(), 1e-12, "a scrub changes nothing of the run");
-            for (int i = 0; i < s.afterR().length; i++) {
-                assertTrue(s.afterR()[i] <= s.beforeR()[i] + 1e-9, "line " + line + " slice " + i);
-                assertTrue(plain.finalR()[i] <= s.afterR()[i] + 1e-9, "line " + line + " slice " + i);
+            assertArrayEquals(plain.finalZ(), d.finalZ(), 1e-12, "a scrub changes nothing of the run");
+            for (double z : probes(plain)) {
+                double before = at(s.beforeZ(), s.beforeR(), z);
+                double after = at(s.afterZ(), s.afterR(), z);
+                assertTrue(after <= before + 1e-9, "line " + line + " at z " + z);
+                assertTrue(at(plain.finalZ(), plain.finalR(), z) <= after + 1e-9, "line " + line + " at z " + z);
             }
             assertNotNull(s.insert());
             scrubs.add(s);
         }
         for (int k = 1; k < scrubs.size(); k++) {
+            assertArrayEquals(scrubs.get(k - 1).afterZ(), scrubs.get(k).beforeZ(), 1e-9, "line " + scrubs.get(k).line());
             assertArrayEquals(scrubs.get(k - 1).afterR(), scrubs.get(k).beforeR(), 1e-9, "line " + scrubs.get(k).line());
         }
         // the first pass (N80, line 9: X41 to Z-30) took the bar from radius 22 to 20.5 along it; the rapid after it took nothing
         Drawing.Scrub n80 = scrubs.get(new ArrayList<>(lines).indexOf(9));
-        int mid = nearest(n80.afterZ(), plain.stockFace() - 15);
-        assertEquals(22, n80.beforeR()[mid], 1e-6);
-        assertEquals(20.5, n80.afterR()[mid], 0.02);
+        double mid = plain.stockFace() - 15;
+        assertEquals(22, at(n80.beforeZ(), n80.beforeR(), mid), 1e-6);
+        assertEquals(20.5, at(n80.afterZ(), n80.afterR(), mid), 1e-5);
         Drawing.Scrub n90 = scrubs.get(new ArrayList<>(lines).indexOf(10));
+        assertArrayEquals(n90.beforeZ(), n90.afterZ(), 1e-12);
         assertArrayEquals(n90.beforeR(), n90.afterR(), 1e-12);
         // the insert where N80 ended: its tip at Z-30 X41 (radius 20.5)
         double tipZ = plain.stockFace() - 30;
@@ -84,13 +89,25 @@ class StockScrubTest {
         assertTrue(best < 1.0, "the insert's nose at the pass's end: " + best);
     }
 
-    private static int nearest(double[] zs, double z) {
-        int best = 0;
-        for (int i = 1; i < zs.length; i++) {
-            if (Math.abs(zs[i] - z) < Math.abs(zs[best] - z)) {
-                best = i;
+    /** Where the outlines are compared: 2,000 points along the blank. */
+    private static double[] probes(Drawing d) {
+        double[] z = new double[2000];
+        for (int i = 0; i < z.length; i++) {
+            z[i] = d.stockBack() + (d.stockFace() - d.stockBack()) * (i + 0.5) / z.length;
+        }
+        return z;
+    }
+
+    /** An outline's radius at z: the points joined by straight lines, the highest where a face stands at z. */
+    static double at(double[] zs, double[] rs, double z) {
+        double m = Double.NaN;
+        for (int i = 0; i + 1 < zs.length; i++) {
+            if (zs[i] <= z && z <= zs[i + 1]) {
+                double r = zs[i] == zs[i + 1] ? Math.max(rs[i], rs[i + 1])
+                        : rs[i] + (rs[i + 1] - rs[i]) * (z - zs[i]) / (zs[i + 1] - zs[i]);
+                m = Double.isNaN(m) ? r : Math.max(m, r);
             }
         }
-        return best;
+        return m;
     }
 }

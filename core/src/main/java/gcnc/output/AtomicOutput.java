@@ -182,18 +182,31 @@ public final class AtomicOutput implements AutoCloseable {
 
     /** A new file is ordinary (rw-r--r--), not private like a temporary one; a replaced file keeps its mode. */
     private void keepPermissions() throws IOException {
-        if (!Files.getFileStore(temp).supportsFileAttributeView("posix")) {
+        if (!temp.getFileSystem().supportedFileAttributeViews().contains("posix")) {
             return;
         }
-        Set<PosixFilePermission> mode = PosixFilePermissions.fromString("rw-r--r--");
-        if (Files.isRegularFile(target)) {
-            mode = Files.getPosixFilePermissions(target);
-        }
         try {
+            Set<PosixFilePermission> mode = PosixFilePermissions.fromString("rw-r--r--");
+            if (Files.isRegularFile(target)) {
+                mode = Files.getPosixFilePermissions(target);
+            }
             Files.setPosixFilePermissions(temp, mode);
         } catch (IOException | RuntimeException e) {
+            // a store without modes (a FAT stick) refuses them: its files have none to keep. Asked
+            // only then: reading the mount table costs a millisecond per output, every compile.
+            if (e instanceof IOException && !storeHasModes()) {
+                return;
+            }
             TempFiles.delete(temp);
             throw e;
+        }
+    }
+
+    private boolean storeHasModes() {
+        try {
+            return Files.getFileStore(temp).supportsFileAttributeView("posix");
+        } catch (IOException e) {
+            return true; // not known: the refusal stands
         }
     }
 

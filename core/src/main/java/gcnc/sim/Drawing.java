@@ -11,8 +11,8 @@ import java.util.List;
  * @param stockBack   z where the blank starts (inside the chuck)
  * @param stockFace   z of the blank's face
  * @param stockRadius initial radius, NaN when there is no stock
- * @param finalZ      final part profile: cell centres
- * @param finalR      final part profile: radii
+ * @param finalZ      final part outline, back to face: z of each point (a face is two points at one z)
+ * @param finalR      final part outline: the largest radius of material at each point
  * @param moves       the tool path, one polyline per sequence
  * @param marks       where findings were reported
  * @param program     where the program's coordinates are, for the grid; null when not known (a bare DMC replay)
@@ -31,8 +31,8 @@ public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack
 
     /**
      * The stock around the first run of one G-code line's moves (a block, or all the passes of a
-     * cycle written on it): its outline before the run ({@code beforeZ}, {@code beforeR}: for each
-     * slice the largest radius of material, as {@code finalZ}/{@code finalR}) and after it, so that
+     * cycle written on it): its outline before the run ({@code beforeZ}, {@code beforeR}: points of
+     * the largest radius of material, as {@code finalZ}/{@code finalR}) and after it, so that
      * what the block removed lies between the two; the tool's insert and holder ({@code holder}
      * null when it has none) placed where the run ended; the run's moves, {@code first} to
      * {@code last} (indices into {@link #moves}). With no blank the outlines are empty.

@@ -14,32 +14,23 @@ import org.locationtech.jts.operation.overlayng.OverlayNGRobust;
  * into pieces within half a count of it), with JTS doing the polygon booleans.
  *
  * <p>An overlap counts only when it is real: thicker than {@link #DEPTH} (the overlap, shrunk by
- * half of it, is not empty), never because of how the stock is held. A conservative upper
- * envelope of the material (the largest radius in each slice along z, a quarter of the depth
- * wide, never below the material) lets the many moves that pass above the material skip the
- * polygon work: memory stays flat. A cut is taken from the envelope at once and from the
- * polygons only when they are next asked (a rapid or a holder that may reach into material, the
+ * half of it, is not empty), never because of how the stock is held. The exact upper envelope of
+ * the material ({@link UpperEnvelope}: the largest radius at each z, never below the material)
+ * lets the many moves that pass above the material skip the polygon work. A cut is taken from
+ * the envelope at once and from the polygons only when they are next asked (a rapid or a holder that may reach into material, the
  * drawing), many cuts in one boolean ({@link #cut}): a program whose rapids stay clear of the
  * material does almost no polygon work.
  */
 final class Stock {
     /** How deep a tool must reach into material before it counts: 0.01 mm. */
     static final double DEPTH = 0.01;
-    /** At most this many slices (2 MiB): a quarter of the depth each on a blank up to 655 mm long. */
-    private static final int MAX_SLICES = 1 << 18;
-    private static final int GROUP = 64;
 
     private final GeometryFactory factory = new GeometryFactory();
     private final double back;
     private final double face;
     private final double radius;
-    private final double step;
-    /** Largest radius of material in each slice (never below the truth). */
-    private final int slices;
-    private final double[] upper;
-    private final double[] groupMax;
-    /** Largest radius in each run of GROUP groups: a long move over cut material skips whole runs. */
-    private final double[] superMax;
+    /** The largest radius of material at each z (never below the truth). */
+    private final UpperEnvelope envelope;
     /** The exact polygons, in tiles along z ({@link Material}). */
     private final Material material;
 
@@ -52,17 +43,8 @@ final class Stock {
         this.back = back;
         this.face = face;
         this.radius = radius;
-        // slices no wider than a quarter of the depth, so that a face a move runs along shares no
-        // slice with the material beyond it (the envelope skips those moves)
-        this.slices = (int) Math.min(MAX_SLICES, GROUP * Math.ceil((face - back) / (DEPTH / 4) / GROUP));
-        this.step = (face - back) / slices;
-        this.upper = new double[slices];
-        this.groupMax = new double[slices / GROUP];
-        this.superMax = new double[(groupMax.length + GROUP - 1) / GROUP];
+        this.envelope = new UpperEnvelope(back, face, radius);
         this.material = new Material(factory, back, face, inner, radius);
-        java.util.Arrays.fill(upper, radius);
-        java.util.Arrays.fill(groupMax, radius);
-        java.util.Arrays.fill(superMax, radius);
     }
 
     double back() {
@@ -83,39 +65,7 @@ final class Stock {
      * has just cut) is not: those moves skip the polygon work.
      */
     boolean mayTouch(double zLo, double zHi, double rMin) {
-        return dips(zLo + DEPTH / 2, zHi - DEPTH / 2, null, rMin + DEPTH / 2);
-    }
-
-    /**
-     * Whether a region over z [zLo, zHi] comes below the upper envelope in some slice, looked at a
-     * run of slices at a time (per 4096, then per 64, then each): the envelope is never below the
-     * material, so a no is certain. The region is a hull, or (hull null) everything at or above
-     * {@code floor}.
-     */
-    private boolean dips(double zLo, double zHi, Hull region, double floor) {
-        if (zHi < back || zLo > face || zHi < zLo) {
-            return false;
-        }
-        int lo = slice(zLo);
-        int hi = slice(zHi);
-        int glo = lo / GROUP;
-        int ghi = hi / GROUP;
-        for (int sg = glo / GROUP; sg <= ghi / GROUP; sg++) {
-            if (lowest(region, floor, zOf(sg * GROUP * GROUP), zOf((sg + 1) * GROUP * GROUP)) >= superMax[sg]) {
-                continue;
-            }
-            for (int g = Math.max(glo, sg * GROUP); g <= Math.min(ghi, sg * GROUP + GROUP - 1); g++) {
-                if (lowest(region, floor, zOf(g * GROUP), zOf((g + 1) * GROUP)) >= groupMax[g]) {
-                    continue;
-                }
-                for (int i = Math.max(lo, g * GROUP); i <= Math.min(hi, g * GROUP + GROUP - 1); i++) {
-                    if (lowest(region, floor, zOf(i), zOf(i + 1)) < upper[i]) {
-                        return true;
-                    }
-                }
-            }
-        }
-        return false;
+        return envelope.dips(zLo + DEPTH / 2, zHi - DEPTH / 2, null, rMin + DEPTH / 2);
     }
 
     /** A convex polygon in the stock's frame (mm): its corners counterclockwise from the lowest z, the lower chain first. */
@@ -139,33 +89,6 @@ final class Stock {
 
         double zMin() {
             return z[0];
-        }
-
-        /** The lower chain, z ascending: corners 0 .. the last of the rising run. */
-        Chain bottom() {
-            int k = 0;
-            while (k + 1 < z.length && z[k + 1] > z[k]) {
-                k++;
-            }
-            return new Chain(java.util.Arrays.copyOf(z, k + 1), java.util.Arrays.copyOf(r, k + 1));
-        }
-
-        /** The upper chain, z ascending: corner 0, then the corners from the last back to the end of the lower chain. */
-        Chain top() {
-            int k = 0;
-            while (k + 1 < z.length && z[k + 1] > z[k]) {
-                k++;
-            }
-            int m = z.length - k + 1;
-            double[] tz = new double[m];
-            double[] tr = new double[m];
-            tz[0] = z[0];
-            tr[0] = r[0];
-            for (int j = 1; j < m; j++) {
-                tz[j] = z[z.length - j];
-                tr[j] = r[z.length - j];
-            }
-            return new Chain(tz, tr);
         }
 
         double zMax() {
@@ -219,7 +142,7 @@ final class Stock {
      * Whether a region may reach into material, given the region drawn a little smaller (its
      * outline moved in by up to half the {@link #DEPTH}): a move that only runs along a face it
      * has just cut never does. The upper envelope answers without a polygon boolean (where the
-     * hull's lower edge stays above the material's largest radius in every slice it spans, it
+     * hull's lower edge stays above the material's largest radius everywhere it spans, it
      * cannot touch); a yes is only a may, which {@link #deepOverlap} and {@link #cut} settle exactly.
      */
     boolean mayBite(Hull smaller) {
@@ -237,7 +160,7 @@ final class Stock {
             return;
         }
         pending.add(full);
-        lower(full);
+        envelope.lower(full);
         if (pending.size() >= PENDING_MAX) {
             settle();
         }
@@ -287,93 +210,9 @@ final class Stock {
         remove(cuts);
     }
 
-    /**
-     * Lowers the envelope under a sweep: in each slice the hull spans from side to side and covers
-     * from its lower edge to above the material, nothing is left above the lower edge's highest
-     * point (the lower edge is convex, the upper concave: both are read at the slice's ends).
-     */
-    private void lower(Hull h) {
-        double zMin = h.zMin();
-        double zMax = h.zMax();
-        int lo = slice(zMin);
-        int hi = slice(zMax);
-        Chain bottom = h.bottom();
-        Chain top = h.top();
-        boolean changed = false;
-        double lowA = Double.NaN;
-        double highA = Double.NaN;
-        for (int i = lo; i <= hi; i++) {
-            double a = zOf(i);
-            double b = zOf(i + 1);
-            if (a < zMin || b > zMax) {
-                lowA = Double.NaN;
-                continue;
-            }
-            if (Double.isNaN(lowA)) {
-                lowA = bottom.at(a);
-                highA = top.at(a);
-            }
-            double lowB = bottom.at(b);
-            double highB = top.at(b);
-            double highestLow = Math.max(lowA, lowB);
-            double lowestHigh = Math.min(highA, highB);
-            lowA = lowB;
-            highA = highB;
-            if (lowestHigh >= upper[i] && highestLow < upper[i]) {
-                upper[i] = Math.max(0, highestLow);
-                changed = true;
-            }
-        }
-        if (changed) {
-            regroup(lo, hi);
-        }
-    }
-
-    /**
-     * One chain of a hull's outline with z ascending, read at increasing z (a cursor walks it
-     * once, so a sweep over thousands of slices costs one pass): r by linear interpolation; where
-     * the chain ends on a vertical edge, its last corner.
-     */
-    static final class Chain {
-        private final double[] z;
-        private final double[] r;
-        private int at;
-        /** The slope of the edge from corner {@code at}, worked out once per edge (a sweep reads thousands of slices). */
-        private double slope;
-        private int sloped = -1;
-
-        Chain(double[] z, double[] r) {
-            this.z = z;
-            this.r = r;
-        }
-
-        double at(double q) {
-            while (at + 1 < z.length && z[at + 1] <= q) {
-                at++;
-            }
-            if (at + 1 < z.length && z[at + 1] > z[at]) {
-                if (sloped != at) {
-                    slope = (r[at + 1] - r[at]) / (z[at + 1] - z[at]);
-                    sloped = at;
-                }
-                return r[at] + slope * (q - z[at]);
-            }
-            return r[at];
-        }
-    }
-
-    private static double lowest(Hull region, double floor, double a, double b) {
-        return region == null ? floor : region.lowest(a, b);
-    }
-
-    /** Whether the hull dips below the upper envelope in some slice (the envelope is never below the material). */
+    /** Whether the hull dips below the upper envelope somewhere (the envelope is never below the material). */
     private boolean under(Hull h) {
-        return dips(h.zMin(), h.zMax(), h, 0);
-    }
-
-    /** Where slice i begins (mm). */
-    private double zOf(int i) {
-        return back + i * step;
+        return envelope.dips(h.zMin(), h.zMax(), h, 0);
     }
 
     /**
@@ -459,7 +298,7 @@ final class Stock {
         // not the envelope's answer: it was lowered under these cuts already ({@link #lower})
         double[] changed = material.remove(cuts);
         if (changed != null) {
-            refresh(slice(changed[0]), slice(changed[1]));
+            refresh(Math.max(back, changed[0]), Math.min(face, changed[1]));
         }
     }
 
@@ -471,13 +310,14 @@ final class Stock {
         return material.intersects(region);
     }
 
-    /** Recomputes the upper envelope of slices lo..hi from the material's edges (only the tiles over them). */
-    private void refresh(int lo, int hi) {
-        for (int i = lo; i <= hi; i++) {
-            upper[i] = 0;
+    /** Rebuilds the envelope over z [lo, hi] from the material's edges (only the tiles over them). */
+    private void refresh(double lo, double hi) {
+        if (!(lo < hi)) {
+            return;
         }
-        material.edges(zOf(lo), zOf(hi + 1), (a, b) -> edge(a, b, lo, hi));
-        regroup(lo, hi);
+        UpperEnvelope.Rebuild r = new UpperEnvelope.Rebuild(lo, hi);
+        material.edges(lo, hi, r::edge);
+        envelope.replace(lo, hi, r.pieces());
     }
 
     /** Corners handed to the polygon booleans so far: what a ragged stock costs, for tests to bound. */
@@ -491,68 +331,17 @@ final class Stock {
         return material.corners();
     }
 
-    /** Recomputes the group and super-group maxima over slices lo..hi. */
-    private void regroup(int lo, int hi) {
-        for (int g = lo / GROUP; g <= hi / GROUP; g++) {
-            double m = 0;
-            for (int i = g * GROUP; i < g * GROUP + GROUP; i++) {
-                m = Math.max(m, upper[i]);
-            }
-            groupMax[g] = m;
-        }
-        for (int sg = lo / GROUP / GROUP; sg <= hi / GROUP / GROUP; sg++) {
-            double m = 0;
-            for (int g = sg * GROUP; g < Math.min(groupMax.length, sg * GROUP + GROUP); g++) {
-                m = Math.max(m, groupMax[g]);
-            }
-            superMax[sg] = m;
-        }
-    }
-
-    private void edge(Coordinate a, Coordinate b, int lo, int hi) {
-        double zLo = back + lo * step;
-        double zHi = back + (hi + 1) * step;
-        double z0 = Math.max(Math.min(a.x, b.x), zLo);
-        double z1 = Math.min(Math.max(a.x, b.x), zHi);
-        if (z0 > z1) {
-            return;
-        }
-        for (int i = Math.max(lo, slice(z0)); i <= Math.min(hi, slice(z1)); i++) {
-            double s0 = Math.max(z0, back + i * step);
-            double s1 = Math.min(z1, back + (i + 1) * step);
-            upper[i] = Math.max(upper[i], Math.max(rAt(a, b, s0), rAt(a, b, s1)));
-        }
-    }
-
-    private static double rAt(Coordinate a, Coordinate b, double z) {
-        if (a.x == b.x) {
-            return Math.max(a.y, b.y);
-        }
-        double t = Math.max(0, Math.min(1, (z - a.x) / (b.x - a.x)));
-        return a.y + (b.y - a.y) * t;
-    }
-
-    private int slice(double z) {
-        return (int) Math.max(0, Math.min(slices - 1, Math.floor((z - back) / step)));
-    }
-
-    /** The finished part's outline: for each slice, the largest radius of material left (mm). */
+    /**
+     * The finished part's outline, back to face: the largest radius of material left at each z
+     * (mm), as points, a face as two points at one z; at most 4096 of them (a drawing needs no more).
+     */
     double[][] profile() {
         settle();
-        int per = (slices + 4095) / 4096; // the drawing needs no finer outline than 4096 points
-        int n = (slices + per - 1) / per;
-        double[] z = new double[n];
-        double[] r = new double[n];
-        for (int i = 0; i < n; i++) {
-            int end = Math.min(slices, (i + 1) * per);
-            z[i] = back + (i * per + end) / 2.0 * step;
-            double m = 0;
-            for (int k = i * per; k < end; k++) {
-                m = Math.max(m, upper[k]);
-            }
-            r[i] = m;
-        }
-        return new double[][] {z, r};
+        return envelope.outline(4096);
     }
 
+    /** How many straight pieces the envelope holds (tests bound it). */
+    int envelopePieces() {
+        return envelope.size();
+    }
 }

@@ -62,7 +62,7 @@ final class StockScrub {
         return new Drawing.Scrub(line, first, last, tool, before[0], before[1], after[0], after[1], insert, holder);
     }
 
-    /** For each slice the largest radius of material (mm), as the drawing's final part; empty without a blank. */
+    /** The largest radius of material as points back to face (mm), as the drawing's final part; empty without a blank. */
     private double[][] outline() {
         return stock == null ? new double[][] {new double[0], new double[0]} : stock.profile();
     }
