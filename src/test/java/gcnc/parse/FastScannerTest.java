@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 class FastScannerTest {
 
     private static boolean fast(String line) {
-        return FastScanner.scan(line.toCharArray(), line.length(), 1, new ArrayList<>());
+        return FastScanner.scan(line.toCharArray(), line.length(), 1, new ArrayList<>(), new NumberTexts());
     }
 
     @Test
@@ -50,7 +50,7 @@ class FastScannerTest {
         assertEquals(blocks, fast);
         assertEquals(d.sorted(), Parsed.of(src).diagnostics());
         List<Word> words = new ArrayList<>();
-        assertTrue(FastScanner.scan("p-.5 h1".toCharArray(), 7, 11, words));
+        assertTrue(FastScanner.scan("p-.5 h1".toCharArray(), 7, 11, words, new NumberTexts()));
         assertEquals(blocks.get(10).words().subList(0, 2).toString(), words.toString());
     }
 }

@@ -78,7 +78,9 @@ final class Advisories {
     /** After an accepted block ({@code made}: what it does), with the draft that built it. */
     void accepted(BlockDraft d, CheckedBlock made, Diagnostics out) {
         int line = d.block.line();
-        for (Word w : d.block.words()) {
+        java.util.List<Word> ws = d.block.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             if (w.letter() == Letter.M && !w.number().isEmpty()) {
                 MFunction f = functions.m(w.code());
                 if (f != null && f.role() == MRole.AXIS_OPTION) {

@@ -17,23 +17,33 @@ import java.util.List;
 
 /**
  * One block while it is being checked: the words each syntax action accepted, the block's
- * functions, and the next modal state. Thrown away when the block has an error.
+ * functions, and the next modal state. Dropped when the block has an error.
+ *
+ * <p>A checker has one draft and {@link #start starts} it afresh for each block it checks (the
+ * program's, a contour's read ahead, a re-run after an error): a block is checked from start to
+ * commit before the next one starts, and nothing keeps a draft, or its {@link #next}, beyond its
+ * block. The draft, its next state and its word arrays were the largest allocations per block
+ * (bench/HISTORY.md, issue 23). {@link #start} sets every field below the context fields.
  */
 public final class BlockDraft {
     public static final int NONE = -1;
     private static final int GROUPS = 20;
 
-    public final RawBlock block;
-    public final ModalState prior;
-    public final ModalState.Next next;
+    /** The checker's context, the same for every block. */
     public final Tables tables;
     public final FunctionIndex functions;
     public final MachineProfile profile;
     public final gcnc.check.geom.Coordinates coordinates;
+
+    /** The block (set by {@link #start}, like the fields after it; read-only to the actions and checks). */
+    public RawBlock block;
+    public ModalState prior;
+    /** The state the block leaves, from {@link #prior}; the checker builds it when it commits the block. */
+    public final ModalState.Next next = new ModalState.Next();
     /** Units of the whole block: a G20/G21 anywhere in it (thesis applied them per word, §12.12). */
-    public final Units units;
+    public Units units;
     /** No block was counted before this one (O must come first: error 34). */
-    public final boolean first;
+    public boolean first;
 
     /**
      * The accepted words and their values, in the order accepted, and which letters they are (bit =
@@ -87,19 +97,48 @@ public final class BlockDraft {
      * checker reports it before anything else in the block (at the G71, not at its later P or Q).
      * Found in the same pass over the words as the block's units.
      */
-    public final Word unsupported;
+    public Word unsupported;
     private boolean failed;
 
-    public BlockDraft(RawBlock block, ModalState prior, Tables tables, FunctionIndex functions,
-                      MachineProfile profile, gcnc.check.geom.Coordinates coordinates, boolean first) {
-        this.block = block;
-        this.prior = prior;
-        this.next = prior.next();
+    /** A checker's draft; {@link #start} gives it each block. */
+    BlockDraft(Tables tables, FunctionIndex functions, MachineProfile profile,
+               gcnc.check.geom.Coordinates coordinates) {
         this.tables = tables;
         this.functions = functions;
         this.profile = profile;
         this.coordinates = coordinates;
+    }
+
+    /** This draft, emptied and set to check {@code block} from {@code prior}. */
+    BlockDraft start(RawBlock block, ModalState prior, boolean first) {
+        this.block = block;
+        this.prior = prior;
+        next.load(prior);
         this.first = first;
+        if (words != null) {
+            java.util.Arrays.fill(words, 0, count, null); // the last block's words are not kept alive
+        }
+        if (claims != null) {
+            java.util.Arrays.fill(claims, 0, claimCount, null);
+        }
+        count = 0;
+        letters = 0;
+        claimCount = 0;
+        motionG = NONE;
+        motionWord = null;
+        oneShot = NONE;
+        oneShotWord = null;
+        function = NONE;
+        spindleBefore = NONE;
+        g96 = null;
+        exactStop = false;
+        before = null;
+        unpowered = null;
+        after = null;
+        thread = null;
+        pullOut = null;
+        startAngle = 0;
+        failed = false;
         Units u = prior.units();
         Word notYet = null;
         List<Word> ws = block.words();
@@ -124,6 +163,7 @@ public final class BlockDraft {
         this.units = u;
         this.unsupported = notYet;
         next.units = units;
+        return this;
     }
 
     /** The G function whose parameters the block's words are (Eb01), or null. */
@@ -246,7 +286,7 @@ public final class BlockDraft {
         int i = slot(w.letter());
         if (i < 0) {
             if (words == null) {
-                int n = Math.max(4, block.words().size());
+                int n = Math.max(8, block.words().size());
                 words = new Word[n];
                 values = new double[n];
             } else if (count == words.length) {

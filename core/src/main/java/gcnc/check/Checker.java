@@ -56,6 +56,8 @@ public final class Checker {
     private final SyntaxActions actions = new SyntaxActions();
     private final Coordinates coordinates;
     private final MotionBuilder motions;
+    /** The draft of the block being checked, started afresh for each ({@link BlockDraft}). */
+    private final BlockDraft draft;
     private final int errorCap;
     /** One block's findings before they are reported (reused: nothing allocated per block). */
     private final Diagnostics scratch = new Diagnostics();
@@ -112,6 +114,7 @@ public final class Checker {
         this.functions = new FunctionIndex(tables, profile.control());
         this.coordinates = new Coordinates(profile);
         this.motions = new MotionBuilder(profile, coordinates);
+        this.draft = new BlockDraft(tables, functions, profile, coordinates);
         this.errorCap = errorCap;
         this.skipDeleted = skipDeleted;
         this.isOther = isOther;
@@ -253,7 +256,8 @@ public final class Checker {
             return cycles.repeat(b, isFirst);
         }
         cycles.note(b);
-        return one(b, isFirst, null).map(List::of).orElse(List.of());
+        CheckedBlock made = checked(b, isFirst, null, null, null, 0);
+        return made == null ? List.of() : List.of(made);
     }
 
     /**
@@ -278,17 +282,18 @@ public final class Checker {
     /** As above, the pass starting {@code startAngle} degrees past the spindle's whole revolution (Q of G92, Haas G76). */
     Optional<CheckedBlock> thread(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut,
                                   double startAngle) {
-        return one(b, isFirst, origin, thread, pullOut, startAngle);
+        return Optional.ofNullable(checked(b, isFirst, origin, thread, pullOut, startAngle));
     }
 
     private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
                                        PullOut pullOut) {
-        return one(b, isFirst, origin, thread, pullOut, 0);
+        return Optional.ofNullable(checked(b, isFirst, origin, thread, pullOut, 0));
     }
 
-    private Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin, String thread,
-                                       PullOut pullOut, double startAngle) {
-        BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
+    /** The block checked and committed as {@link #one} says, or null after its errors (no Optional per block). */
+    private CheckedBlock checked(RawBlock b, boolean isFirst, CycleOrigin origin, String thread, PullOut pullOut,
+                                 double startAngle) {
+        BlockDraft d = draft.start(b, state, isFirst);
         d.thread = thread;
         d.pullOut = pullOut;
         d.startAngle = startAngle;
@@ -298,7 +303,7 @@ public final class Checker {
         boolean sequence = origin == null || !origin.again();
         if (result == null) {
             recover(b, isFirst, sequence);
-            return Optional.empty();
+            return null;
         }
         commit(d, sequence);
         advisories.accepted(d, result, out);
@@ -316,7 +321,7 @@ public final class Checker {
                     NoseConflict.suspend(b, functions, d.prior.nose(),
                             origin == null ? null : origin.cycle(), thread != null)));
         }
-        return Optional.of(made);
+        return made;
     }
 
     /** What a block would do from {@code from}, checked but not committed, or null after its errors. */
@@ -341,7 +346,7 @@ public final class Checker {
     }
 
     private Dry dry(RawBlock b, ModalState from, Diagnostics found, boolean sequence) {
-        BlockDraft d = new BlockDraft(b, from, tables, functions, profile, coordinates, false);
+        BlockDraft d = draft.start(b, from, false);
         CheckedBlock r = run(d, found, false);
         if (r == null) {
             return null;
@@ -505,7 +510,9 @@ public final class Checker {
      * (E114; not for a contour block followed again by G70: {@code sequence} false).
      */
     private void commit(BlockDraft d, boolean sequence) {
-        for (Word w : d.unpowered()) {
+        java.util.List<Word> ws = d.unpowered();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             int m = (int) w.code();
             if (!warnedM.get(m)) {
                 warnedM.set(m);
@@ -540,7 +547,7 @@ public final class Checker {
      * reports nothing. A block with any other error keeps only its unambiguous modal words.
      */
     private void recover(RawBlock b, boolean isFirst, boolean sequence) {
-        BlockDraft d = new BlockDraft(b, state, tables, functions, profile, coordinates, isFirst);
+        BlockDraft d = draft.start(b, state, isFirst);
         Diagnostics none = new Diagnostics();
         if (!words(d, none, false)) {
             state = Salvage.keep(b, state, functions, profile);

@@ -48,7 +48,9 @@ final class CornerWords {
     /** Whether the block has a word that may ask for a corner on this control (a comma word; C, R, I, K). */
     boolean mayAsk(RawBlock b) {
         Control.Corners form = host.profile().control().corners();
-        for (Word w : b.words()) {
+        java.util.List<Word> ws = b.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             Letter l = w.letter();
             if (w.comma() || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)
                     || form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)) {
@@ -68,7 +70,9 @@ final class CornerWords {
         Word second = null;
         List<Word> candidates = new ArrayList<>(2);
         boolean reported = false;
-        for (Word w : b.words()) {
+        java.util.List<Word> ws = b.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             if (w.comma()) {
                 if (w.letter() == Letter.A || form != Control.Corners.COMMA) {
                     reported |= wrongComma(w, out);

@@ -31,6 +31,11 @@ final class MotionBuilder {
     private final Arcs arcs;
     private final Feeds feeds;
     private final SpindleSpeed spindle;
+    /**
+     * The block's motions while it is built, cleared for each block: the block keeps an
+     * unmodifiable copy ({@link #fixed}), and most blocks make one motion.
+     */
+    private final List<Motion> motions = new ArrayList<>(2);
 
     MotionBuilder(MachineProfile p, Coordinates coordinates) {
         this.p = p;
@@ -42,7 +47,7 @@ final class MotionBuilder {
 
     CheckedBlock build(BlockDraft d, Diagnostics out) {
         Point from = d.prior.position();
-        List<Motion> motions = new ArrayList<>(2);
+        motions.clear();
         Point end = from;
         boolean axis = d.has(Letter.X) || d.has(Letter.Z) || d.has(Letter.U) || d.has(Letter.W);
         switch (d.function) {

@@ -37,7 +37,9 @@ final class OffsetSetting {
 
     /** The block's G10 word, or null. */
     static Word word(RawBlock b, FunctionIndex functions) {
-        for (Word w : b.words()) {
+        java.util.List<Word> ws = b.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
                 GFunction f = functions.g(w.code());
                 if (f != null && f.role() == GRole.SET_OFFSETS) {

@@ -34,7 +34,9 @@ final class ReferenceReturn {
 
     /** The block's G30 word, or null. */
     static Word word(RawBlock b, FunctionIndex functions) {
-        for (Word w : b.words()) {
+        java.util.List<Word> ws = b.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             if (w.letter() == Letter.G && !w.number().isEmpty()) {
                 GFunction f = functions.g(w.code());
                 if (f != null && f.role() == GRole.OTHER_HOME) {

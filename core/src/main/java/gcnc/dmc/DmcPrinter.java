@@ -61,7 +61,9 @@ public final class DmcPrinter {
         }
 
         public String vectorSpeed(VectorSpeed c) {
-            return "VS " + c.countsPerSecond();
+            StringBuilder sb = new StringBuilder(16).append("VS ");
+            c.countsPerSecond().appendTo(sb); // (no String of the number by itself)
+            return sb.toString();
         }
 
         public String vectorPosition(VectorPosition c) {

@@ -90,9 +90,9 @@ public record Fixed(long unscaled, int scale) {
             return;
         }
         sb.append(u / TENS[scale]).append('.');
-        String f = Long.toString(u % TENS[scale]);
-        for (int i = f.length(); i < scale; i++) {
-            sb.append('0');
+        long f = u % TENS[scale];
+        for (int d = scale - 1; d > 0 && f < TENS[d]; d--) {
+            sb.append('0'); // the fraction's leading zeros: 5 at scale 4 is .0005
         }
         sb.append(f);
     }

@@ -19,6 +19,8 @@ final class BlockWriter {
     private final Consumer<Instruction> sink;
     private final CheckedBlock block;
     private boolean commented;
+    /** The block's motion the next instructions carry out (-1: none), and their source, made when one is emitted. */
+    private int motion = -1;
     private Source source;
 
     private final long ordinal;
@@ -29,7 +31,6 @@ final class BlockWriter {
         this.block = block;
         this.commented = !inlineSourceMap;
         this.ordinal = ordinal;
-        this.source = new Source(block.origin(), block.line(), -1, ordinal);
     }
 
     CheckedBlock block() {
@@ -38,17 +39,25 @@ final class BlockWriter {
 
     /** The instructions after this carry out the block's motion {@code index} (-1: none). */
     void motion(int index) {
-        if (index != source.motion()) {
-            source = new Source(block.origin(), block.line(), index, ordinal);
+        if (index != motion) {
+            motion = index;
+            source = null; // most blocks set their motion before they emit: one source a block, not two
         }
+    }
+
+    private Source source() {
+        if (source == null) {
+            source = new Source(block.origin(), block.line(), motion, ordinal);
+        }
+        return source;
     }
 
     void emit(Command command) {
         if (!commented) {
             commented = true;
-            sink.accept(new Instruction(new Command.SourceMark(block.line()), source));
+            sink.accept(new Instruction(new Command.SourceMark(block.line()), source()));
         }
         assert DmcPrinter.print(command).length() <= MAX_LINE : "DMC line longer than " + MAX_LINE + ": " + command;
-        sink.accept(new Instruction(command, source));
+        sink.accept(new Instruction(command, source()));
     }
 }

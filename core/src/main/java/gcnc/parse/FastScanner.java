@@ -34,9 +34,10 @@ final class FastScanner {
 
     /**
      * Adds the words of {@code buf[0, end)} to {@code out} and returns true, or returns false
-     * (leaving {@code out} in any state) when the line needs the full lexer.
+     * (leaving {@code out} in any state) when the line needs the full lexer. The words' number
+     * texts come from {@code texts} (N and O numbers, which do not repeat, are made afresh).
      */
-    static boolean scan(char[] buf, int end, int line, List<Word> out) {
+    static boolean scan(char[] buf, int end, int line, List<Word> out, NumberTexts texts) {
         int i = 0;
         while (i < end) {
             char c = buf[i];
@@ -54,7 +55,10 @@ final class FastScanner {
                 if (stop < 0) {
                     return false;
                 }
-                out.add(new Word(Letter.of(c), new String(buf, i + 1, stop - i - 1), Span.of(line, i + 1, stop + 1)));
+                Letter letter = Letter.of(c);
+                String number = letter == Letter.N || letter == Letter.O ? new String(buf, i + 1, stop - i - 1)
+                        : texts.text(buf, i + 1, stop);
+                out.add(new Word(letter, number, Span.of(line, i + 1, stop + 1)));
                 i = stop;
             }
         }

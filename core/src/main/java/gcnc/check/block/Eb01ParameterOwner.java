@@ -62,7 +62,9 @@ public final class Eb01ParameterOwner implements BlockCheck {
      * code's own word, which the control runs with it and gcnc, driving nothing for it, reads no further.
      */
     private static boolean liveToolSpeed(BlockDraft d) {
-        for (gcnc.ir.Word w : d.block.words()) {
+        java.util.List<gcnc.ir.Word> ws = d.block.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            gcnc.ir.Word w = ws.get(at);
             if (w.letter() == Letter.M && !w.number().isEmpty()) {
                 gcnc.machine.MFunction f = d.functions.m(w.code());
                 if (f != null && f.role() == gcnc.machine.MRole.AXIS_OPTION) {
@@ -78,7 +80,9 @@ public final class Eb01ParameterOwner implements BlockCheck {
      * that no function of this block takes is E108, naming it (never ignored).
      */
     private static void unused(BlockDraft d, Diagnostics out) {
-        for (Word w : d.block.words()) {
+        java.util.List<Word> ws = d.block.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             if (!THESIS_LETTERS.contains(w.letter())) {
                 String owner = d.function != BlockDraft.NONE ? d.ownerName() : "parameterless";
                 d.fail(out, Code.E108_WORD_NOT_USED, w.span(), w.letter(), owner);

@@ -27,7 +27,9 @@ final class SpindleOrientAngle {
             return false;
         }
         boolean orient = false;
-        for (Word w : d.block.words()) {
+        java.util.List<Word> ws = d.block.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
             switch (w.letter()) {
                 case G, X, Z, U, W, I, K -> {
                     return false;

@@ -58,7 +58,7 @@ public final class Arcs {
             // The radius from the centre, not |R|: an R a little short of half the chord (within the
             // tolerance) puts the centre on the chord, and the arc then has half the chord as radius.
             return inTravel(d, new Motion.Arc(cw, from, to, centre.get(), from.distanceTo(centre.get()), feed,
-                    new Motion.ArcWords(r, null, null)), at, out);
+                    radiusWords(r)), at, out);
         }
         double i = d.has(Letter.I) ? d.value(Letter.I) * c.perRadius(d.units) : 0;
         double k = d.has(Letter.K) ? d.value(Letter.K) * c.perZ(d.units) : 0;
@@ -72,6 +72,16 @@ public final class Arcs {
         return inTravel(d, new Motion.Arc(cw, from, to, centre, from.distanceTo(centre), feed,
                 new Motion.ArcWords(null, i, k)), at, out);
     }
+
+    /** The words of an R arc: the last one's while R repeats (a value holding a boxed R, made once). */
+    private Motion.ArcWords radiusWords(double r) {
+        if (lastRadius == null || Double.compare(lastRadius.r(), r) != 0) {
+            lastRadius = new Motion.ArcWords(r, null, null);
+        }
+        return lastRadius;
+    }
+
+    private Motion.ArcWords lastRadius;
 
     /**
      * The arc, or null after E106 when it bulges out of the travel between its end points (which

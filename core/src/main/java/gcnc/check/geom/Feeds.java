@@ -17,6 +17,8 @@ import gcnc.machine.MachineProfile;
  */
 public final class Feeds {
     private final MachineProfile p;
+    /** The last feed made: most cutting blocks keep the feed of the one before, and it is a value. */
+    private Feed last;
 
     public Feeds(MachineProfile p) {
         this.p = p;
@@ -47,7 +49,11 @@ public final class Feeds {
             d.fail(out, Code.E103_FEED_ABOVE_MAXIMUM, at, programTerms(d, f, rpm, cps, p.maxFeed(), perUnitPerMin));
             return null;
         }
-        return new Feed(f, cps);
+        if (last == null || Double.compare(last.programmed(), f) != 0
+                || Double.compare(last.countsPerSecond(), cps) != 0) {
+            last = new Feed(f, cps);
+        }
+        return last;
     }
 
     /**
