@@ -8,6 +8,7 @@ import gcnc.galil.Dialect;
 import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
+import gcnc.ir.ShortLists;
 import gcnc.machine.MachineProfile;
 import gcnc.parse.BlockReader;
 import gcnc.parse.BlockSource;
@@ -207,7 +208,7 @@ public final class Compiler {
             planner.accept(checked, lower); // into lines: this block's, or a sequence of the blocks before it
             if (sim != null) {
                 // (a block the planner holds back has no lines yet: no copy made for it)
-                List<Instruction> own = handed(lines);
+                List<Instruction> own = ShortLists.copyOf(lines); // the simulator's thread takes it as it is
                 if (diags.hasErrors()) {
                     sim.outputOnly(own);
                 } else {
@@ -218,22 +219,6 @@ public final class Compiler {
                 flush(lines, out);
             }
         }
-    }
-
-    /**
-     * A block's lines as the unmodifiable list the simulator's thread takes (a block has a few):
-     * the fixed-arity List.of keeps one array, or none for one or two lines, where List.copyOf
-     * copies them twice (as gcnc.parse.BlockReader#fixed does for a line's words).
-     */
-    private static List<Instruction> handed(List<Instruction> lines) {
-        return switch (lines.size()) {
-            case 0 -> List.of();
-            case 1 -> List.of(lines.get(0));
-            case 2 -> List.of(lines.get(0), lines.get(1));
-            case 3 -> List.of(lines.get(0), lines.get(1), lines.get(2));
-            case 4 -> List.of(lines.get(0), lines.get(1), lines.get(2), lines.get(3));
-            default -> List.copyOf(lines);
-        };
     }
 
     /** The judge of the arcs the galil dialect writes (E202, E224/E225, E308), or null for the thesis's format. */

@@ -38,6 +38,13 @@ class UpperEnvelopeTest {
         return m;
     }
 
+    /** The V tip swept between two random points over a blank {@code length} long (and a little beyond), r up to {@code rMax}. */
+    private static Stock.Hull randomSweep(Random rnd, double length, double rMax) {
+        double over = length / 12;
+        return Stock.sweep(TZ, TR, rnd.nextDouble() * (length + 2 * over) - over, rnd.nextDouble() * rMax,
+                rnd.nextDouble() * (length + 2 * over) - over, rnd.nextDouble() * rMax);
+    }
+
     private static Geometry polygon(Stock.Hull h) {
         Coordinate[] c = new Coordinate[h.z().length + 1];
         for (int i = 0; i < h.z().length; i++) {
@@ -90,8 +97,7 @@ class UpperEnvelopeTest {
             UpperEnvelope e = new UpperEnvelope(0, 60, 0, 20);
             Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
             for (int cut = 0; cut < 60; cut++) {
-                Stock.Hull h = Stock.sweep(TZ, TR, rnd.nextDouble() * 70 - 5, rnd.nextDouble() * 24,
-                        rnd.nextDouble() * 70 - 5, rnd.nextDouble() * 24);
+                Stock.Hull h = randomSweep(rnd, 60, 24);
                 if (h == null) {
                     continue;
                 }
@@ -103,8 +109,7 @@ class UpperEnvelopeTest {
                 assertTrue(e.max(z, z) >= top(material, z) - 1e-9, "trial " + trial + " at z " + z);
             }
             for (int k = 0; k < 100; k++) {
-                Stock.Hull q = Stock.sweep(TZ, TR, rnd.nextDouble() * 70 - 5, rnd.nextDouble() * 24,
-                        rnd.nextDouble() * 70 - 5, rnd.nextDouble() * 24);
+                Stock.Hull q = randomSweep(rnd, 60, 24);
                 if (q != null && !e.dips(q.zMin(), q.zMax(), q, 0)) {
                     assertEquals(0, material.intersection(polygon(q)).getArea(), 1e-9, "trial " + trial);
                 }
@@ -191,8 +196,7 @@ class UpperEnvelopeTest {
             Stock s = new Stock(0, 30, 12);
             Geometry material = F.toGeometry(new Envelope(0, 30, 0, 12));
             for (int cut = 0; cut < 80; cut++) {
-                Stock.Hull h = Stock.sweep(TZ, TR, rnd.nextDouble() * 36 - 3, rnd.nextDouble() * 14,
-                        rnd.nextDouble() * 36 - 3, rnd.nextDouble() * 14);
+                Stock.Hull h = randomSweep(rnd, 30, 14);
                 if (h == null) {
                     continue;
                 }

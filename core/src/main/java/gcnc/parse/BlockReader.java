@@ -6,6 +6,7 @@ import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
+import gcnc.ir.ShortLists;
 import gcnc.ir.Word;
 import gcnc.parse.gen.GCodeLexer;
 import java.io.IOException;
@@ -200,7 +201,7 @@ public final class BlockReader implements BlockSource {
         errorAt = null;
         boolean open = inComment;
         if (!open && fastPath && FastScanner.scan(source.chars(), source.length(), source.number(), words, texts)) {
-            return words.isEmpty() ? null : new RawBlock(source.number(), fixed(words), lastSpan(), false, 0, 0, null);
+            return words.isEmpty() ? null : new RawBlock(source.number(), ShortLists.copyOf(words), lastSpan(), false, 0, 0, null);
         }
         if (!open && macros && MacroLines.isStatement(source.chars(), source.length())) {
             int at = MacroLines.firstNonBlank(source.chars(), source.length());
@@ -222,26 +223,7 @@ public final class BlockReader implements BlockSource {
             return null; // blank, comments, a lone '/'
         }
         Span last = words.isEmpty() ? errorAt : lastSpan();
-        return new RawBlock(source.number(), fixed(words), last, errorAt != null, blockDelete, 0, null, deleteColumn);
-    }
-
-    /**
-     * The line's words as the unmodifiable list a RawBlock keeps as it is. List.copyOf (what
-     * RawBlock does with any other list) copies the words twice, into an array and then into the
-     * list's own, which showed among the largest allocations of a check; the fixed-arity List.of
-     * keeps one array, or none for one or two words.
-     */
-    private static List<Word> fixed(List<Word> ws) {
-        return switch (ws.size()) {
-            case 0 -> List.of();
-            case 1 -> List.of(ws.get(0));
-            case 2 -> List.of(ws.get(0), ws.get(1));
-            case 3 -> List.of(ws.get(0), ws.get(1), ws.get(2));
-            case 4 -> List.of(ws.get(0), ws.get(1), ws.get(2), ws.get(3));
-            case 5 -> List.of(ws.get(0), ws.get(1), ws.get(2), ws.get(3), ws.get(4));
-            case 6 -> List.of(ws.get(0), ws.get(1), ws.get(2), ws.get(3), ws.get(4), ws.get(5));
-            default -> List.copyOf(ws);
-        };
+        return new RawBlock(source.number(), ShortLists.copyOf(words), last, errorAt != null, blockDelete, 0, null, deleteColumn);
     }
 
     private Span lastSpan() {
