@@ -40,7 +40,7 @@ public record Source(Origin origin, int line, int motion, long block) {
     @Override
     public boolean equals(Object o) {
         return o instanceof Source s && line == s.line && motion == s.motion && block == s.block
-                && origin.equals(s.origin);
+                && (origin == s.origin || origin.equals(s.origin)); // most share one Origin
     }
 
     @Override
