@@ -136,7 +136,7 @@ class UpperEnvelopeTest {
                 material = OverlayNGRobust.overlay(material, polygon(h), OverlayNG.DIFFERENCE);
             }
         }
-        UpperEnvelope.Rebuild r = new UpperEnvelope.Rebuild(10, 50);
+        EdgeEnvelope r = new EdgeEnvelope(10, 50);
         List<Coordinate[]> rings = new ArrayList<>();
         for (int n = 0; n < material.getNumGeometries(); n++) {
             rings.add(material.getGeometryN(n).getCoordinates());

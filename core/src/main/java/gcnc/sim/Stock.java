@@ -315,7 +315,7 @@ final class Stock {
         if (!(lo < hi)) {
             return;
         }
-        UpperEnvelope.Rebuild r = new UpperEnvelope.Rebuild(lo, hi);
+        EdgeEnvelope r = new EdgeEnvelope(lo, hi);
         material.edges(lo, hi, r::edge);
         envelope.replace(lo, hi, r.pieces());
     }

@@ -2,7 +2,6 @@ package gcnc.sim;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.locationtech.jts.geom.Coordinate;
 
 /**
  * The largest radius of material at each z of the blank, held exactly as a piecewise-linear
@@ -209,8 +208,8 @@ final class UpperEnvelope {
         if (!(lo < hi)) {
             return false;
         }
-        Side bottom = Side.bottom(h);
-        Side top = Side.top(h);
+        HullSide bottom = HullSide.bottom(h);
+        HullSide top = HullSide.top(h);
         double[] corners = corners(h, lo, hi);
         List<Piece> out = new ArrayList<>();
         boolean changed = false;
@@ -258,7 +257,7 @@ final class UpperEnvelope {
      * top edge crosses the envelope, where the lower edge does, and where the lower edge crosses
      * the centreline; each part is lowered or kept whole. Appends the parts to {@code out}.
      */
-    private boolean lowerStretch(Piece piece, Side bottom, Side top, double s, double t, List<Piece> out) {
+    private boolean lowerStretch(Piece piece, HullSide bottom, HullSide top, double s, double t, List<Piece> out) {
         double u0 = piece.at(s);
         double u1 = piece.at(t);
         double b0 = bottom.at(s, t, true);
@@ -312,51 +311,6 @@ final class UpperEnvelope {
             return v1;
         }
         return v0 + (v1 - v0) * (x - s) / (t - s);
-    }
-
-    /** One side of a hull, z ascending; read on a stretch no corner of it falls inside. */
-    private record Side(double[] z, double[] r) {
-        static Side bottom(Stock.Hull h) {
-            int k = 0;
-            while (k + 1 < h.z().length && h.z()[k + 1] > h.z()[k]) {
-                k++;
-            }
-            return new Side(java.util.Arrays.copyOf(h.z(), k + 1), java.util.Arrays.copyOf(h.r(), k + 1));
-        }
-
-        /** Corner 0, then from the last corner back to where the lower side ends. */
-        static Side top(Stock.Hull h) {
-            double[] z = h.z();
-            double[] r = h.r();
-            int k = 0;
-            while (k + 1 < z.length && z[k + 1] > z[k]) {
-                k++;
-            }
-            int m = z.length - k + 1;
-            double[] tz = new double[m];
-            double[] tr = new double[m];
-            tz[0] = z[0];
-            tr[0] = r[0];
-            for (int j = 1; j < m; j++) {
-                tz[j] = z[z.length - j];
-                tr[j] = r[z.length - j];
-            }
-            return new Side(tz, tr);
-        }
-
-        /**
-         * The side's radius at s (start true) or t of a stretch [s, t]: on the one slanted or
-         * level edge that spans the stretch (a vertical edge at an end of the hull is not it).
-         */
-        double at(double s, double t, boolean start) {
-            for (int i = 0; i + 1 < z.length; i++) {
-                if (z[i] <= s && z[i + 1] >= t && z[i + 1] > z[i]) {
-                    double q = start ? s : t;
-                    return r[i] + (r[i + 1] - r[i]) * (q - z[i]) / (z[i + 1] - z[i]);
-                }
-            }
-            return Double.NaN; // no edge spans it (a hull with a NaN corner): the caller keeps the envelope
-        }
     }
 
     /**
@@ -460,101 +414,6 @@ final class UpperEnvelope {
             }
         }
         return m;
-    }
-
-    /**
-     * The envelope over [lo, hi] of a set of straight edges (the material's outlines), for
-     * {@link #replace}: between two neighbouring ends of edges, a line from the largest radius
-     * at one end to the largest at the other (the edges spanning that stretch are straight, so
-     * their maximum is convex and the line lies on or above it); 0 where no edge spans. Vertical
-     * edges add nothing: each ends on an edge that is not vertical.
-     */
-    static final class Rebuild {
-        private final double lo;
-        private final double hi;
-        private double[] z0 = new double[64];
-        private double[] z1 = new double[64];
-        private double[] r0 = new double[64];
-        private double[] r1 = new double[64];
-        private int n;
-
-        Rebuild(double lo, double hi) {
-            this.lo = lo;
-            this.hi = hi;
-        }
-
-        void edge(Coordinate a, Coordinate b) {
-            if (a.x == b.x) {
-                return;
-            }
-            Coordinate l = a.x < b.x ? a : b;
-            Coordinate r = a.x < b.x ? b : a;
-            double s = Math.max(lo, l.x);
-            double t = Math.min(hi, r.x);
-            if (!(s < t)) {
-                return;
-            }
-            if (n == z0.length) {
-                z0 = java.util.Arrays.copyOf(z0, 2 * n);
-                z1 = java.util.Arrays.copyOf(z1, 2 * n);
-                r0 = java.util.Arrays.copyOf(r0, 2 * n);
-                r1 = java.util.Arrays.copyOf(r1, 2 * n);
-            }
-            double k = (r.y - l.y) / (r.x - l.x);
-            z0[n] = s;
-            z1[n] = t;
-            r0[n] = s == l.x ? l.y : l.y + k * (s - l.x);
-            r1[n] = t == r.x ? r.y : l.y + k * (t - l.x);
-            n++;
-        }
-
-        List<Piece> pieces() {
-            double[] ends = new double[2 * n + 2];
-            for (int i = 0; i < n; i++) {
-                ends[2 * i] = z0[i];
-                ends[2 * i + 1] = z1[i];
-            }
-            ends[2 * n] = lo;
-            ends[2 * n + 1] = hi;
-            java.util.Arrays.sort(ends);
-            Integer[] order = new Integer[n];
-            for (int i = 0; i < n; i++) {
-                order[i] = i;
-            }
-            java.util.Arrays.sort(order, (x, y) -> Double.compare(z0[x], z0[y]));
-            List<Integer> active = new ArrayList<>();
-            List<Piece> out = new ArrayList<>();
-            int next = 0;
-            for (int e = 0; e + 1 < ends.length; e++) {
-                double s = ends[e];
-                double t = ends[e + 1];
-                if (!(s < t)) {
-                    continue;
-                }
-                while (next < n && z0[order[next]] <= s) {
-                    active.add(order[next++]);
-                }
-                active.removeIf(i -> z1[i] <= s);
-                double a = 0;
-                double b = 0;
-                for (int i : active) {
-                    a = Math.max(a, at(i, s));
-                    b = Math.max(b, at(i, t));
-                }
-                out.add(new Piece(s, t, a, b));
-            }
-            return out;
-        }
-
-        private double at(int i, double z) {
-            if (z <= z0[i]) {
-                return r0[i];
-            }
-            if (z >= z1[i]) {
-                return r1[i];
-            }
-            return r0[i] + (r1[i] - r0[i]) * (z - z0[i]) / (z1[i] - z0[i]);
-        }
     }
 
     /**
