@@ -10,10 +10,10 @@ import java.util.List;
  * polygon work ({@link Stock}).
  *
  * <p>It is never below the material: a cut lowers it only where the sweep covers everything from
- * its lower edge up to the envelope, and then to that lower edge; the polygons, when they catch up,
- * rebuild it from their own edges ({@link #rebuild}). Because it is exact, a turning pass costs the
- * few pieces it spans, not one step per slice of its length. (Before this, the envelope was a value
- * per 0.0025 mm slice: a 40 mm pass was 16,000 steps.)
+ * its lower edge up to the envelope, and then to that lower edge; the polygons, when they catch
+ * up, rebuild it from their own edges ({@link EdgeEnvelope}, {@link #replace}). Because it is
+ * exact, a turning pass costs the few pieces it spans, not one step per slice of its length.
+ * (Before this, the envelope was a value per 0.0025 mm slice: a 40 mm pass was 16,000 steps.)
  *
  * <p>The pieces sit in chunks of at most {@link #CHUNK}, each knowing its largest radius, so a move
  * over a detailed envelope skips whole chunks it stays above, and a cut rewrites only the chunks
