@@ -402,6 +402,11 @@ final class GalilDialect implements Dialect {
         return false;
     }
 
+    /** The lesser of the machine's acceleration and deceleration, counts/s² (what a stop within a move is held to). */
+    double stopping() {
+        return Math.min(profile.acceleration(), profile.deceleration());
+    }
+
     GalilFrame frame() {
         return frame;
     }

@@ -33,6 +33,17 @@ final class GroupWriter {
      * trigonometry of an arc's closing move) are not worked out.
      */
     private boolean measuring;
+    /**
+     * Where the controller's path is within the group being written, counts: the whole count of the
+     * last VP's target, or where the last CR really ends (its printed radius and angles, from where
+     * it started), a fraction of a count off its target. A CR starts there, not at the count the
+     * arc was planned from, so a chain of arcs would carry each one's fraction into the next.
+     */
+    private double atU;
+    private double atV;
+
+    /** The share of the stopping speed a closing move at a sequence's end is given (as the planner's margin). */
+    private static final double STOP_MARGIN = 0.9;
 
     GroupWriter(GalilDialect dialect, Consumer<Instruction> sink) {
         this.d = dialect;
@@ -42,6 +53,8 @@ final class GroupWriter {
     void write(Step.Group g) {
         long u0 = d.posU;
         long v0 = d.posV;
+        atU = u0;
+        atV = v0;
         boolean started = false;
         BlockWriter out = null;
         double along = 0; // the path written so far, counts, as the controller measures it for AV
@@ -149,6 +162,8 @@ final class GroupWriter {
         double written = measuring ? Math.hypot(tu - d.posU, tv - d.posV) : 0;
         d.posU = tu;
         d.posV = tv;
+        atU = tu;
+        atV = tv;
         return written;
     }
 
@@ -169,25 +184,36 @@ final class GroupWriter {
             d.error(Code.E202_ARC_NOT_REPRESENTABLE, b, GalilNumbers.round(m.radius()));
             return 0;
         }
+        // where the printed CR ends, about the centre its start angle implies from where the path
+        // is (after another CR, a fraction of a count off the count this arc was planned from)
+        double theta = Math.toRadians(Fixed.fourDecimals(cr.start()).value());
+        double end = theta + Math.toRadians(Fixed.fourDecimals(cr.sweep()).value());
+        double eu = atU - cr.radius() * Math.cos(theta) + cr.radius() * Math.cos(end);
+        double ev = atV - cr.radius() * Math.sin(theta) + cr.radius() * Math.sin(end);
+        // a closing VP to the target when the arc ends short (the planner's), or when the fraction
+        // carried along a chain of arcs brings its end nearer another count than the target's (as
+        // the planner's own closing VPs, never shorter than a count in whole counts): the next
+        // sequence then starts on the target's count, not a count off, and no chain of arcs drifts
+        // by half a count per arc
+        boolean closing = cr.closing() || GalilNumbers.round(eu) != tu || GalilNumbers.round(ev) != tv;
         // the controller's path length of a CR: its radius times its sweep
         double length = measuring ? cr.radius() * Math.toRadians(Math.abs(Fixed.fourDecimals(cr.sweep()).value())) : 0;
-        if (!cr.closing()) {
+        if (!closing) {
             out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
                     Fixed.fourDecimals(cr.sweep()), speeds));
+            atU = eu;
+            atV = ev;
         } else {
-            // the arc ends a count or two short; the closing move keeps the corner speed
+            // the closing move keeps the corner speed; where the sequence ends, the arc slows to a
+            // speed the machine can stop from within that move (a count or two)
+            long closeAt = speeds.end() != 0 ? speeds.end()
+                    : Math.min(speeds.speed(), evenDown(STOP_MARGIN * Math.sqrt(2 * d.stopping() * Math.hypot(tu - eu, tv - ev))));
             out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
-                    Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), speeds.end())));
-            out.emit(new Command.VectorPosition(tu - u0, tv - v0,
-                    new Command.Speeds(speeds.end() == 0 ? speeds.speed() : speeds.end(), speeds.end())));
-            if (measuring) {
-                // the closing move: from where the printed arc ends (its centre behind the start) to the target
-                double theta = Math.toRadians(Fixed.fourDecimals(cr.start()).value());
-                double end = theta + Math.toRadians(Fixed.fourDecimals(cr.sweep()).value());
-                double eu = d.posU - cr.radius() * Math.cos(theta) + cr.radius() * Math.cos(end);
-                double ev = d.posV - cr.radius() * Math.sin(theta) + cr.radius() * Math.sin(end);
-                length += Math.hypot(tu - eu, tv - ev);
-            }
+                    Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), closeAt)));
+            out.emit(new Command.VectorPosition(tu - u0, tv - v0, new Command.Speeds(closeAt, speeds.end())));
+            length += measuring ? Math.hypot(tu - eu, tv - ev) : 0; // from where the printed arc ends to the target
+            atU = tu;
+            atV = tv;
         }
         d.posU = tu;
         d.posV = tv;
