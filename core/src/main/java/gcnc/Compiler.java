@@ -144,9 +144,15 @@ public final class Compiler {
             // E224/E225 where the writer would have found them), so that both report the same errors
             gcnc.sim.ArcVerdict arcs = arcVerdict(settings, diags);
             java.util.function.Consumer<gcnc.plan.Step> lower = step -> dialect.lower(step, collect);
+            boolean heldJudged = false;
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                translate(checker.check(raw), planner, lower, diags, lines, sim, out, arcs);
+                List<CheckedBlock> checked = checker.check(raw);
+                heldJudged = heldJudged || judgeHeld(planner, diags, arcs);
+                translate(checked, planner, lower, diags, lines, sim, out, arcs);
+            }
+            if (!heldJudged) {
+                judgeHeld(planner, diags, arcs);
             }
             if (!diags.hasErrors()) {
                 // the motions the planner still holds are of blocks already checked: replayed before the
@@ -219,6 +225,21 @@ public final class Compiler {
                 flush(lines, out);
             }
         }
+    }
+
+    /**
+     * Once there is an error, the blocks the planner still holds are never written: their arcs are
+     * judged as check judges them (E202, E224/E225), as those of the blocks after the error are.
+     * Returns whether it judged them (then it is not asked again).
+     */
+    private static boolean judgeHeld(gcnc.plan.Planner planner, Diagnostics diags, gcnc.sim.ArcVerdict arcs) {
+        if (!diags.hasErrors()) {
+            return false;
+        }
+        if (arcs != null) {
+            planner.held().forEach(arcs::block);
+        }
+        return true;
     }
 
     /** The judge of the arcs the galil dialect writes (E202, E224/E225, E308), or null for the thesis's format. */

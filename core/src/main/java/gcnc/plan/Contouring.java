@@ -196,6 +196,17 @@ public final class Contouring implements Planner {
         return !paths.isEmpty();
     }
 
+    @Override
+    public List<CheckedBlock> held() {
+        List<CheckedBlock> out = new ArrayList<>();
+        for (CheckedBlock b : blocks) {
+            if (out.isEmpty() || out.get(out.size() - 1) != b) {
+                out.add(b);
+            }
+        }
+        return out;
+    }
+
     /** Whether the block's first motion is a path that joins the sequence gathered so far. */
     private boolean joinsFirst(CheckedBlock b) {
         return !paths.isEmpty() && !b.motions().isEmpty() && firstStop(b) == null;

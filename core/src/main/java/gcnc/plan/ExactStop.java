@@ -73,4 +73,9 @@ public final class ExactStop implements Planner {
     public boolean holding() {
         return false;
     }
+
+    @Override
+    public java.util.List<CheckedBlock> held() {
+        return java.util.List.of();
+    }
 }

@@ -18,6 +18,9 @@ public interface Planner {
     /** Whether motions of the blocks given so far are still held back (not yet handed on). */
     boolean holding();
 
+    /** The blocks whose motions are still held back, in program order, each once (none when not {@link #holding}). */
+    java.util.List<CheckedBlock> held();
+
     /** The planner a profile asks for: contouring ({@code plan.blend = on}, the default) or exact stop. */
     static Planner forProfile(MachineProfile profile) {
         Blending b = Blending.of(profile);
