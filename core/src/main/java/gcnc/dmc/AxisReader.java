@@ -73,6 +73,11 @@ final class AxisReader {
         return k == n ? at : null;
     }
 
+    /** The k-th filled place as a number ({@code whole}: no point allowed), or null when it is not one or no places fit. */
+    private static Fixed value(String[] slots, int[] at, int k, boolean whole) {
+        return at == null ? null : Fixed.parse(slots[at[k]], 0, slots[at[k]].length(), whole);
+    }
+
     static Command gearMaster(String args, String text, Faults faults) {
         String[] slots = places(args);
         int[] at = filled(slots, 2);
@@ -117,8 +122,8 @@ final class AxisReader {
     static Command gearRatio(String args, String text, Faults faults) {
         String[] slots = places(args);
         int[] at = filled(slots, 2);
-        Fixed r1 = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), false);
-        Fixed r2 = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), false);
+        Fixed r1 = value(slots, at, 0, false);
+        Fixed r2 = value(slots, at, 1, false);
         if (r1 == null || r2 == null) {
             return bad(faults, "GR", text);
         }
@@ -128,8 +133,8 @@ final class AxisReader {
     static Command positionAbsolute(String args, String text, Faults faults) {
         String[] slots = places(args);
         int[] at = filled(slots, 2);
-        Fixed p = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), true);
-        Fixed q = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), true);
+        Fixed p = value(slots, at, 0, true);
+        Fixed q = value(slots, at, 1, true);
         if (p == null || q == null) {
             return bad(faults, "PA", text);
         }
@@ -149,7 +154,7 @@ final class AxisReader {
     static Command axisSetting(Setting setting, String args, String text, Faults faults) {
         String[] slots = places(args);
         int[] at = filled(slots, 1);
-        Fixed v = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), false);
+        Fixed v = value(slots, at, 0, false);
         if (v == null) {
             return bad(faults, setting.name(), text);
         }
@@ -159,8 +164,8 @@ final class AxisReader {
     static Command softLimit(String cmd, String args, String text, Faults faults) {
         String[] slots = places(args);
         int[] at = filled(slots, 2);
-        Fixed p = at == null ? null : Fixed.parse(slots[at[0]], 0, slots[at[0]].length(), true);
-        Fixed q = at == null ? null : Fixed.parse(slots[at[1]], 0, slots[at[1]].length(), true);
+        Fixed p = value(slots, at, 0, true);
+        Fixed q = value(slots, at, 1, true);
         if (p == null || q == null) {
             return bad(faults, cmd, text);
         }
