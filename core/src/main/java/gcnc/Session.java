@@ -98,8 +98,8 @@ public final class Session {
         private static final java.util.Map<String, MachineProfile> PROFILES = new java.util.concurrent.ConcurrentHashMap<>();
 
         static boolean covers(Options o) {
-            return o.tables().isEmpty() && !o.machine().contains("/") && !o.machine().endsWith(".machine")
-                    && o.control().map(c -> !c.contains("/")).orElse(true);
+            return o.tables().isEmpty() && !ProfileLoader.isPath(o.machine())
+                    && o.control().map(c -> !gcnc.machine.ControlLoader.isPath(c)).orElse(true);
         }
 
         static Tables tables() throws TableException {

@@ -150,7 +150,7 @@ final class MachinesCommand implements Callable<Integer> {
             try {
                 Tables tables = common.loadTables();
                 ProfileLoader.load(name, common.source(), tables, null);
-                boolean file = name.contains("/") || name.endsWith(".machine");
+                boolean file = ProfileLoader.isPath(name);
                 String text = file ? Files.readString(Path.of(name)) : common.source().read("machines/" + name + ".machine");
                 out.print(text);
                 out.flush();
@@ -204,7 +204,7 @@ final class MachinesCommand implements Callable<Integer> {
             int status = ExitCode.CLEAN;
             for (String f : files) {
                 // A file in the current folder named without ".machine" would be taken for a profile name.
-                String path = Files.isRegularFile(Path.of(f)) && !f.contains("/") && !f.endsWith(".machine") ? "./" + f : f;
+                String path = Files.isRegularFile(Path.of(f)) && !ProfileLoader.isPath(f) ? "./" + f : f;
                 try {
                     MachineProfile p = ProfileLoader.load(path, common.source(), tables, common.control);
                     reporter.say(reporter.phrases().get("machines.valid", f, p.name(), p.control().name()));

@@ -34,8 +34,13 @@ public final class ControlLoader {
     /** The controls gcnc ships (folders of tables/controls/), for the message of an unknown name. */
     public static final java.util.List<String> SHIPPED = java.util.List.of("thesis-2004", "fanuc-a", "fanuc-b", "haas");
 
+    /** Whether {@code --control} names a folder (a '/' in it) rather than a control among the tables. */
+    public static boolean isPath(String nameOrPath) {
+        return nameOrPath.contains("/");
+    }
+
     public static Control load(String nameOrPath, TableSource tables) throws TableException {
-        if (nameOrPath.contains("/")) {
+        if (isPath(nameOrPath)) {
             return read(TableSource.directory(Path.of(nameOrPath)), "");
         }
         String dir = "controls/" + nameOrPath + "/";

@@ -56,7 +56,7 @@ public final class ProfileLoader {
     public static MachineProfile load(String nameOrPath, TableSource tables, Tables data, String control)
             throws TableException {
         ProfileFile f;
-        if (nameOrPath.contains("/") || nameOrPath.endsWith(".machine")) {
+        if (isPath(nameOrPath)) {
             Path p = Path.of(nameOrPath);
             f = ProfileFile.parse(p.toString(), readFile(p));
         } else {
@@ -77,6 +77,11 @@ public final class ProfileLoader {
             f = ProfileFile.parse(tables.describe(name), text);
         }
         return read(f, data, tables, control);
+    }
+
+    /** Whether {@code --machine} names a file (a '/' in it, or ending in .machine) rather than a profile among the tables. */
+    public static boolean isPath(String nameOrPath) {
+        return nameOrPath.contains("/") || nameOrPath.endsWith(".machine");
     }
 
     /** A profile (or the tool table file it names) given as a path, decoded as the tables are ({@link Utf8}). */

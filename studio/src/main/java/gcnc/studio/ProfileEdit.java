@@ -66,7 +66,7 @@ final class ProfileEdit {
     /** The profile the session was opened with (a shipped name or a .machine file), as written. */
     static ProfileEdit of(Session session, Messages messages) throws IOException {
         String machine = session.options().machine();
-        if (machine.contains("/") || machine.endsWith(".machine")) {
+        if (gcnc.machine.ProfileLoader.isPath(machine)) {
             Path p = Path.of(machine);
             return new ProfileEdit(session, p.toString(), Files.readString(p, StandardCharsets.UTF_8), messages);
         }
