@@ -147,12 +147,8 @@ public final class Compiler {
             boolean heldJudged = false;
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                List<CheckedBlock> checked = checker.check(raw);
+                translate(checker.check(raw), planner, lower, diags, lines, sim, out, arcs);
                 heldJudged = heldJudged || judgeHeld(planner, diags, arcs);
-                translate(checked, planner, lower, diags, lines, sim, out, arcs);
-            }
-            if (!heldJudged) {
-                judgeHeld(planner, diags, arcs);
             }
             if (!diags.hasErrors()) {
                 // the motions the planner still holds are of blocks already checked: replayed before the
@@ -213,7 +209,6 @@ public final class Compiler {
             }
             planner.accept(checked, lower); // into lines: this block's, or a sequence of the blocks before it
             if (sim != null) {
-                // (a block the planner holds back has no lines yet: no copy made for it)
                 List<Instruction> own = ShortLists.copyOf(lines); // the simulator's thread takes it as it is
                 if (diags.hasErrors()) {
                     sim.outputOnly(own);

@@ -206,12 +206,13 @@ final class GroupWriter {
         } else {
             // the closing move keeps the corner speed; where the sequence ends, the arc slows to a
             // speed the machine can stop from within that move (a count or two)
+            double gap = Math.hypot(tu - eu, tv - ev); // from where the printed arc ends to the target
             long closeAt = speeds.end() != 0 ? speeds.end()
-                    : Math.min(speeds.speed(), evenDown(STOP_MARGIN * Math.sqrt(2 * d.stopping() * Math.hypot(tu - eu, tv - ev))));
+                    : Math.min(speeds.speed(), evenDown(STOP_MARGIN * Math.sqrt(2 * d.stopping() * gap)));
             out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
                     Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), closeAt)));
             out.emit(new Command.VectorPosition(tu - u0, tv - v0, new Command.Speeds(closeAt, speeds.end())));
-            length += measuring ? Math.hypot(tu - eu, tv - ev) : 0; // from where the printed arc ends to the target
+            length += measuring ? gap : 0;
             atU = tu;
             atV = tv;
         }
