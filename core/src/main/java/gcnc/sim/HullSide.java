@@ -7,10 +7,7 @@ package gcnc.sim;
  */
 record HullSide(double[] z, double[] r) {
     static HullSide bottom(Stock.Hull h) {
-        int k = 0;
-        while (k + 1 < h.z().length && h.z()[k + 1] > h.z()[k]) {
-            k++;
-        }
+        int k = h.lowerEnd();
         return new HullSide(java.util.Arrays.copyOf(h.z(), k + 1), java.util.Arrays.copyOf(h.r(), k + 1));
     }
 
@@ -18,10 +15,7 @@ record HullSide(double[] z, double[] r) {
     static HullSide top(Stock.Hull h) {
         double[] z = h.z();
         double[] r = h.r();
-        int k = 0;
-        while (k + 1 < z.length && z[k + 1] > z[k]) {
-            k++;
-        }
+        int k = h.lowerEnd();
         int m = z.length - k + 1;
         double[] tz = new double[m];
         double[] tr = new double[m];

@@ -73,7 +73,7 @@ final class Stock {
         /** The hull's lowest r over z in [a, b] (its lower chain is convex, so a corner or an end of the range). */
         double lowest(double a, double b) {
             double m = Double.POSITIVE_INFINITY;
-            for (int i = 0; i + 1 < z.length && z[i] < z[i + 1]; i++) {
+            for (int i = 0, end = lowerEnd(); i < end; i++) {
                 double lo = Math.max(a, z[i]);
                 double hi = Math.min(b, z[i + 1]);
                 if (lo <= hi) {
@@ -85,6 +85,15 @@ final class Stock {
 
         private double at(int i, double v) {
             return r[i] + (r[i + 1] - r[i]) * (v - z[i]) / (z[i + 1] - z[i]);
+        }
+
+        /** The last corner of the lower chain: corners 0 .. lowerEnd() rise in z. */
+        int lowerEnd() {
+            int k = 0;
+            while (k + 1 < z.length && z[k + 1] > z[k]) {
+                k++;
+            }
+            return k;
         }
 
         double zMin() {

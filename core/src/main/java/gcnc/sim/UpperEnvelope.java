@@ -189,7 +189,7 @@ final class UpperEnvelope {
         }
         double[] z = region.z();
         double[] r = region.r();
-        for (int i = 1; i < z.length && z[i] > z[i - 1]; i++) {
+        for (int i = 1, end = region.lowerEnd(); i <= end; i++) {
             if (z[i] > s && z[i] < t && r[i] < piece.at(z[i])) {
                 return true;
             }
