@@ -230,8 +230,18 @@ class StudioBrowserTest {
         assertTrue(browser.findElement(By.id("name")).getText().endsWith("•"), "still marked unsaved");
         Browser.screenshot(browser, "save-failed");
 
-        // opening another program with unsaved changes asks first; "no" keeps everything
-        new Select(browser.findElement(By.id("files"))).selectByValue("other.nc");
+        // opening another program with unsaved changes asks first; "no" keeps everything. The folder's
+        // change event may redraw the list while the option is chosen: chosen again from the new list,
+        // unless the question is already up (the choice was made before the redraw)
+        wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d -> {
+            try {
+                d.switchTo().alert();
+                return true;
+            } catch (org.openqa.selenium.NoAlertPresentException none) {
+                new Select(d.findElement(By.id("files"))).selectByValue("other.nc");
+                return true;
+            }
+        });
         wait.until(ExpectedConditions.alertIsPresent()).dismiss();
         assertTrue(browser.findElement(By.cssSelector(".cm-content")).getText().contains("(mine) (more)"));
         assertEquals("bishop.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
