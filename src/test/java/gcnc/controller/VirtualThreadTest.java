@@ -64,8 +64,9 @@ class VirtualThreadTest {
             double x = c.motion.position[0];
             double y = c.motion.position[1];
             if (x < -100 && x > -7900) {
-                // Z (X here) moves -0.3604 counts per encoder count from the sync point, within a sample's travel
-                assertEquals(-0.3604 * (c.motion.position[2] - gsp), x, 0.3604 * 41 + 1);
+                // Z (X here) moves -0.3604 counts per encoder count from the sync point, within the
+                // travel of the sample past it and the 2 samples the MF trip may be late (COMALL MF)
+                assertEquals(-0.3604 * (c.motion.position[2] - gsp), x, 0.3604 * 41 * 3 + 1);
                 assertEquals(0, y, "X (Y here) waits for the pull-out's corner");
                 followed = true;
             }

@@ -121,9 +121,10 @@ class ThreadReplayTest {
         // each pass: engage, wait for Z at the chamfer's start (one lead, 1476 counts, before the
         // end), the chamfer's ratios (X out as fast as Z goes on: 45 degrees), wait for the end
         assertEquals(3, count(text, "GA C,C"), text);
-        // (the ratios' last digit is the whole counts' rounding, pass by pass)
+        // (one ratio for every pass, from the lead: issue 30; the phase correction after the engagement)
         java.util.regex.Matcher pass = java.util.regex.Pattern.compile(
-                "\nGR -0\\.360\\d,0\\.0000\nMR 124508\nGR -0\\.360\\d,0\\.360\\d\nMR 123031\nGR 0,0\n").matcher(text);
+                "\nGR -0\\.3604,0\\.0000\ngpu=\\(_TPC-gsp\\)\\*_GRX-\\(_RPX-\\d+\\)\nIP gpu\nMR 124508"
+                + "\nGR -0\\.3604,0\\.3604\nMR 123031\nGR 0,0\n").matcher(text);
         int passes = 0;
         while (pass.find()) {
             passes++;
@@ -133,8 +134,8 @@ class ThreadReplayTest {
         // under M24 each pass is one geared segment again
         StringBuilder square = new StringBuilder();
         assertTrue(compile(haas, "galil", CHAMFERED.replace("M08\n", "M08 M24\n"), square).ok());
-        assertEquals(0, count(square.toString(), "GR -0.3606,0.3606"), square.toString());
-        assertEquals(3, count(square.toString(), "\nGR -0.3604,0.0000\nMR 123031\nGR 0,0\n"), square.toString());
+        assertEquals(0, count(square.toString(), "GR -0.3604,0.3604"), square.toString());
+        assertEquals(3, count(square.toString(), "\nIP gpu\nMR 123031\nGR 0,0\n"), square.toString());
     }
 
     @Test
@@ -144,7 +145,7 @@ class ThreadReplayTest {
         compile(haas, "galil", CHAMFERED, dmc);
         String good = dmc.toString();
         // the chamfer's X ratio 17% short: the pass ends 250 counts inside its settling move
-        List<String> shallow = replay(good.replaceFirst("\nGR -0\\.3606,0\\.3606\n", "\nGR -0.3606,0.3000\n"), haas);
+        List<String> shallow = replay(good.replaceFirst("\nGR -0\\.3604,0\\.3604\n", "\nGR -0.3604,0.3000\n"), haas);
         assertEquals(1, shallow.size(), shallow.toString());
         assertTrue(shallow.get(0).startsWith("E317@"), shallow.toString());
         // the ratios changed without an MF/MR saying where: E301 at that GR

@@ -48,6 +48,8 @@ public final class Controller implements Expressions.Scope {
     private final Trace trace;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     final Statements statements;
+    /** Where within 2 samples each MF/MR trip is seen (DmcCommands.waitPast); seeded, so a run repeats. */
+    final java.util.Random tripPhase;
 
     /** The spindle drive and encoder of the haas profile: 410 r/min a volt, 4,096 counts a revolution. */
     public static final double SPINDLE_RATE = 410 * 4096 / 60.0;
@@ -62,6 +64,18 @@ public final class Controller implements Expressions.Scope {
      * of its channel's {@code OF} (the lathe's drive and encoder: r/min per volt × counts per rev / 60).
      */
     public Controller(Model model, List<Fault> faults, Writer trace, double spindleRate) {
+        this(model, faults, trace, spindleRate, TRIP_SEED);
+    }
+
+    /** The seed of the trip phase ({@link #tripPhase}) unless a test gives its own. */
+    public static final long TRIP_SEED = 30;
+
+    /**
+     * As above, with MF/MR trips seen at the trip phase seeded by {@code tripSeed}: 0, 1 or 2 servo
+     * samples after the first sample past the count (COMALL MF: accurate to the counts in 2*TM).
+     */
+    public Controller(Model model, List<Fault> faults, Writer trace, double spindleRate, long tripSeed) {
+        this.tripPhase = new java.util.Random(tripSeed);
         this.model = model;
         this.trace = trace == null ? null : new Trace(trace);
         this.servo = new boolean[model.axes];
@@ -354,6 +368,7 @@ public final class Controller implements Expressions.Scope {
             if (a >= 0) {
                 switch (name.substring(0, 2)) {
                     case "TP", "RP": return Math.rint(motion.position[a]);
+                    case "GR": return gearing.ratio[a]; // as GR set it, at its resolution 1/65,536
                     case "VP": return motion.corner(a);
                     case "BG": return motion.running() && (a == motion.axis1 || a == motion.axis2) || gearing.moving[a] ? 1 : 0;
                     case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;

@@ -19,7 +19,7 @@ import java.util.Set;
 final class DmcCommands implements Command.Visitor<Void> {
     /** The heads of the commands of gcnc.dmc that take arguments; {@code TOOL=} too. */
     private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
-            "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV");
+            "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV", "IP");
 
     private final Controller c;
     private final ProgramThread th;
@@ -333,7 +333,20 @@ final class DmcCommands implements Command.Visitor<Void> {
         double at = x.at() instanceof Command.Operand.Count n ? n.counts()
                 : doingValue(((Command.Operand.Variable) x.at()).name());
         double[] position = c.motion.position;
-        th.waitingFor = x.reverse() ? () -> position[a] <= at : () -> position[a] >= at;
+        java.util.function.BooleanSupplier past = x.reverse() ? () -> position[a] <= at : () -> position[a] >= at;
+        // "The accuracy of the MF command is the number of counts that occur in 2*TM" (COMALL MF, MR):
+        // the trip is seen 0, 1 or 2 samples after the first sample past the count, at the
+        // controller's seeded trip phase (Controller.tripPhase), so passes do not start alike
+        int[] late = {-1};
+        th.waitingFor = () -> {
+            if (late[0] < 0) {
+                if (!past.getAsBoolean()) {
+                    return false;
+                }
+                late[0] = c.tripPhase.nextInt(3);
+            }
+            return late[0]-- == 0;
+        };
         return null;
     }
 
@@ -350,9 +363,41 @@ final class DmcCommands implements Command.Visitor<Void> {
         int a = axis(x.first());
         int b = axis(x.second());
         return doing(() -> {
-            c.gearing.ratio(a, range(x.firstRatio().value(), -127.9999, 127.9999));
-            c.gearing.ratio(b, range(x.secondRatio().value(), -127.9999, 127.9999));
+            // COMALL GR: "Min -127, Max 127, Resolution 1/65,536"
+            c.gearing.ratio(a, range(x.firstRatio().value(), -127, 127));
+            c.gearing.ratio(b, range(x.secondRatio().value(), -127, 127));
         });
+    }
+
+    /** Read as an assignment by {@link Statements} (its expression is evaluated there); not a command here. */
+    @Override
+    public Void phaseError(Command.PhaseError x) {
+        return notModelled();
+    }
+
+    /**
+     * {@code IP gpu,gpv}: on a geared slave, the variable's counts "superimposed on top of the
+     * existing gearing motion" at AC, DC and SP (COMALL IP); on an axis that is not geared, not
+     * modelled (gcnc writes IP only right after GR).
+     */
+    @Override
+    public Void incrementPosition(Command.IncrementPosition x) {
+        int a = axis(x.first());
+        int b = x.second() == 0 ? -1 : axis(x.second());
+        double na = doingValue(x.firstVariable());
+        double nb = b < 0 ? 0 : doingValue(x.secondVariable());
+        return doing(() -> {
+            c.gearing.increment(a, Math.rint(na));
+            if (b >= 0) {
+                c.gearing.increment(b, Math.rint(nb));
+            }
+        });
+    }
+
+    /** {@code DP} is the controller's own statement (Statements.define); not reached here. */
+    @Override
+    public Void definePosition(Command.DefinePosition x) {
+        return notModelled();
     }
 
     @Override

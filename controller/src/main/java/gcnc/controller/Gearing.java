@@ -50,6 +50,10 @@ final class Gearing {
     final double[] target;
     final boolean[] moving;
     private final double[] speed;
+    /** A geared slave's superimposed move ({@code IP}): done so far, its target, its speed now. */
+    private final double[] extra;
+    private final double[] extraTarget;
+    private final double[] extraSpeed;
 
     Gearing(int axes, double[] position, boolean[] servo, double[] offsets, double rate, Events events) {
         this.position = position;
@@ -67,6 +71,9 @@ final class Gearing {
         java.util.Arrays.fill(target, Double.NaN);
         this.moving = new boolean[axes];
         this.speed = new double[axes];
+        this.extra = new double[axes];
+        this.extraTarget = new double[axes];
+        this.extraSpeed = new double[axes];
     }
 
     /** {@code GA}: axis {@code a} follows {@code m}'s encoder. */
@@ -80,8 +87,9 @@ final class Gearing {
     /** {@code GR}: engage, change or (0) disengage axis {@code a}. */
     void ratio(int a, double r) throws GalilException {
         if (r == 0) {
-            geared[a] = false;
+            geared[a] = false; // a superimposed move left unfinished ends where it is
             ratio[a] = 0;
+            extraTarget[a] = extra[a];
             return;
         }
         if (master[a] < 0) {
@@ -90,11 +98,28 @@ final class Gearing {
         if (moving[a]) {
             throw new GalilException(Tc.WHILE_RUNNING);
         }
-        // from here on the slave moves r x the master's counts; a change takes effect where both stand
+        // from here on the slave moves r x the master's counts; a change takes effect where both
+        // stand (a superimposed IP goes on on top); the ratio as the controller holds it, 1/65,536
         masterFrom[a] = position[master[a]];
-        slaveFrom[a] = position[a];
-        ratio[a] = r;
+        slaveFrom[a] = position[a] - (geared[a] ? extra[a] : 0);
+        if (!geared[a]) {
+            extra[a] = 0;
+            extraTarget[a] = 0;
+            extraSpeed[a] = 0;
+        }
+        ratio[a] = Math.rint(r * 65_536) / 65_536;
         geared[a] = true;
+    }
+
+    /**
+     * {@code IP n} on a geared slave: n counts "superimposed on top of the existing gearing motion"
+     * with "the predefined AC,DC,SP values" (COMALL IP; Galil's defaults, gcnc sets none).
+     */
+    void increment(int a, double counts) throws GalilException {
+        if (!geared[a]) {
+            throw new GalilException(Tc.WHILE_RUNNING); // not modelled: gcnc writes IP on a geared slave only
+        }
+        extraTarget[a] += counts;
     }
 
     /** {@code PA}: the absolute target of axis {@code a}. */
@@ -146,6 +171,23 @@ final class Gearing {
         }
     }
 
+    /** The superimposed IP move of geared axis {@code a} one step on: the same trapezoid as a PA move. */
+    private void superimposed(int a, double h) {
+        double left = extraTarget[a] - extra[a];
+        if (left == 0) {
+            return;
+        }
+        double v = Math.min(Math.min(SPEED, extraSpeed[a] + ACCELERATION * h), Math.sqrt(2 * ACCELERATION * Math.abs(left)));
+        double step = v * h;
+        if (Math.abs(left) <= Math.max(step, 0.5)) {
+            extra[a] = extraTarget[a];
+            extraSpeed[a] = 0;
+        } else {
+            extra[a] += Math.signum(left) * step;
+            extraSpeed[a] = v;
+        }
+    }
+
     /** One step of {@code h} seconds: the spindle turns, the geared axes follow it, the moves go on. */
     void advance(double h, double time, int plane1, int plane2) {
         for (int a = 0; a < master.length; a++) {
@@ -155,7 +197,8 @@ final class Gearing {
         }
         for (int a = 0; a < master.length; a++) {
             if (geared[a]) {
-                position[a] = slaveFrom[a] + ratio[a] * (position[master[a]] - masterFrom[a]);
+                superimposed(a, h);
+                position[a] = slaveFrom[a] + ratio[a] * (position[master[a]] - masterFrom[a]) + extra[a];
             }
         }
         int[] done = new int[master.length];

@@ -143,6 +143,7 @@ public final class Checker {
     public List<CheckedBlock> check(RawBlock b) {
         List<CheckedBlock> made = compensated(b, checkBlock(b));
         if (threadChain.idle()) {
+            ThreadRunIn.check(made, profile, out);
             return made; // no G32 held or made: nothing to join
         }
         List<CheckedBlock> emit = new java.util.ArrayList<>(made.size() + 1);
@@ -150,6 +151,7 @@ public final class Checker {
         if (state.ended()) {
             threadChain.end(emit);
         }
+        ThreadRunIn.check(emit, profile, out); // a continuous G32 thread as one pass, once joined
         return emit;
     }
 

@@ -452,6 +452,10 @@ public enum Code {
     E318_SIM_THREAD_NO_MASTER(318),
     /** Gearing engaged without the wait for the spindle's next whole revolution: passes start at different angles. */
     E319_SIM_THREAD_UNSYNCHRONISED(319),
+    /** (warning) The passes of a thread may start a number of counts apart: GR without a phase correction. */
+    E340_SIM_THREAD_PHASE(340),
+    /** A thread pass's run-in is shorter than the axis needs to reach the geared speed. */
+    E260_THREAD_RUN_IN(260),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
     /**

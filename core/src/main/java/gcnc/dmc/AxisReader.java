@@ -21,6 +21,9 @@ final class AxisReader {
     private static final Pattern SYNC = Pattern.compile(
             "([a-z][a-z0-9]{0,7})=\\(@INT\\[_TP([A-HXYZW])/([0-9]{1,7})\\]([+-]1)\\)\\*([0-9]{1,7})([+-][0-9]{1,7})?");
     private static final Pattern VARIABLE = Pattern.compile("[a-z][a-z0-9]{0,7}");
+    /** {@code gpz=(_TPC-gsp)*_GRX-(_RPX-35480)} (or {@code +35480} for a negative start), as DmcPrinter writes it. */
+    private static final Pattern PHASE = Pattern.compile(
+            "([a-z][a-z0-9]{0,7})=\\(_TP([A-HXYZW])-([a-z][a-z0-9]{0,7})\\)\\*_GR([A-HXYZW])-\\(_RP([A-HXYZW])([+-][0-9]{1,10})\\)");
 
     private AxisReader() {
     }
@@ -89,6 +92,15 @@ final class AxisReader {
     }
 
     static Command syncPoint(String t, Faults faults) {
+        Matcher p = PHASE.matcher(t);
+        if (p.matches()) {
+            if (!p.group(4).equals(p.group(5))) {
+                faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
+                return null;
+            }
+            return new Command.PhaseError(p.group(1), p.group(2).charAt(0), p.group(3), p.group(4).charAt(0),
+                    -Long.parseLong(p.group(6)));
+        }
         Matcher m = SYNC.matcher(t);
         if (!m.matches() || !m.group(3).equals(m.group(5))) {
             faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
@@ -128,6 +140,37 @@ final class AxisReader {
             return bad(faults, "GR", text);
         }
         return new GearRatio(Channels.letter(at[0]), r1, Channels.letter(at[1]), r2);
+    }
+
+    /** {@code IP gpz,gpx} or {@code IP gpz}: one or two variables at their axes' places. */
+    static Command incrementPosition(String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 2);
+        if (at == null) {
+            at = filled(slots, 1);
+        }
+        if (at == null) {
+            return bad(faults, "IP", text);
+        }
+        for (int i : at) {
+            if (!VARIABLE.matcher(slots[i]).matches()) {
+                return bad(faults, "IP", text);
+            }
+        }
+        return at.length == 2
+                ? new Command.IncrementPosition(Channels.letter(at[0]), slots[at[0]], Channels.letter(at[1]), slots[at[1]])
+                : new Command.IncrementPosition(Channels.letter(at[0]), slots[at[0]], (char) 0, "");
+    }
+
+    /** {@code DP ,,0}: one axis's position, a whole count. */
+    static Command definePosition(String args, String text, Faults faults) {
+        String[] slots = places(args);
+        int[] at = filled(slots, 1);
+        Fixed n = value(slots, at, 0, true);
+        if (n == null) {
+            return bad(faults, "DP", text);
+        }
+        return new Command.DefinePosition(Channels.letter(at[0]), n.unscaled());
     }
 
     static Command positionAbsolute(String args, String text, Faults faults) {

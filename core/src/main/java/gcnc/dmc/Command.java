@@ -263,6 +263,36 @@ public sealed interface Command {
         }
     }
 
+    /**
+     * {@code gpz=(_TPC-gsp)*_GRX-(_RPX-35480)}: how far the geared slave {@code slave} stands behind
+     * the helix that starts at the sync point, in its counts: the master's counts past the sync
+     * variable times the slave's ratio as the controller holds it ({@code _GR}), less the slave's
+     * commanded travel since it stood at {@code slaveStart} (COMALL GR, _RP; docs/threading.md).
+     */
+    record PhaseError(String variable, char encoder, String sync, char slave, long slaveStart) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.phaseError(this);
+        }
+    }
+
+    /**
+     * {@code IP gpz,gpx}: the variables' counts added to the two geared slaves' commanded positions,
+     * "superimposed on top of the existing gearing motion" (COMALL IP); {@code second} is 0 (no
+     * letter) when only the first slave is corrected.
+     */
+    record IncrementPosition(char first, String firstVariable, char second, String secondVariable) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.incrementPosition(this);
+        }
+    }
+
+    /** {@code DP ,,0}: the axis's position (main encoder and commanded) defined as {@code counts} (COMALL DP). */
+    record DefinePosition(char axis, long counts) implements Command {
+        public <R> R accept(Visitor<R> v) {
+            return v.definePosition(this);
+        }
+    }
+
     /** {@code PA a,b}: absolute targets of two axes, counts. */
     record PositionAbsolute(char first, long firstCount, char second, long secondCount) implements Command {
         public <R> R accept(Visitor<R> v) {
@@ -458,6 +488,12 @@ public sealed interface Command {
         R waitPast(WaitPast c);
 
         R gearRatio(GearRatio c);
+
+        R phaseError(PhaseError c);
+
+        R incrementPosition(IncrementPosition c);
+
+        R definePosition(DefinePosition c);
 
         R positionAbsolute(PositionAbsolute c);
 

@@ -146,6 +146,21 @@ public final class DmcPrinter {
                     c.secondRatio().toString());
         }
 
+        public String phaseError(PhaseError c) {
+            String start = c.slaveStart() < 0 ? "+" + -c.slaveStart() : "-" + c.slaveStart();
+            return c.variable() + "=(_TP" + c.encoder() + "-" + c.sync() + ")*_GR" + c.slave() + "-(_RP" + c.slave()
+                    + start + ")";
+        }
+
+        public String incrementPosition(IncrementPosition c) {
+            return c.second() == 0 ? "IP " + places(new char[] {c.first()}, c.firstVariable())
+                    : "IP " + places(new char[] {c.first(), c.second()}, c.firstVariable(), c.secondVariable());
+        }
+
+        public String definePosition(DefinePosition c) {
+            return "DP " + places(new char[] {c.axis()}, Long.toString(c.counts()));
+        }
+
         public String positionAbsolute(PositionAbsolute c) {
             return "PA " + places(new char[] {c.first(), c.second()}, Long.toString(c.firstCount()),
                     Long.toString(c.secondCount()));

@@ -191,6 +191,10 @@ public final class DmcReader {
                 return AxisReader.gearRatio(args, t, faults);
             case "PA":
                 return AxisReader.positionAbsolute(args, t, faults);
+            case "IP":
+                return AxisReader.incrementPosition(args, t, faults);
+            case "DP":
+                return AxisReader.definePosition(args, t, faults);
             case "AO":
                 return AxisReader.analogOut(args, t, faults);
             case "KP":

@@ -203,6 +203,18 @@ public final class LinePacker implements Consumer<Instruction> {
             return Place.ANY;
         }
 
+        public Place phaseError(PhaseError c) {
+            return Place.ANY;
+        }
+
+        public Place incrementPosition(IncrementPosition c) {
+            return Place.ANY;
+        }
+
+        public Place definePosition(DefinePosition c) {
+            return Place.ANY;
+        }
+
         public Place positionAbsolute(PositionAbsolute c) {
             return Place.ANY;
         }

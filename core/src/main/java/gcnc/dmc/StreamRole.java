@@ -133,6 +133,18 @@ public enum StreamRole {
             return SEND;
         }
 
+        public StreamRole phaseError(Command.PhaseError c) {
+            return SEND;
+        }
+
+        public StreamRole incrementPosition(Command.IncrementPosition c) {
+            return SEND;
+        }
+
+        public StreamRole definePosition(Command.DefinePosition c) {
+            return SEND;
+        }
+
         public StreamRole positionAbsolute(Command.PositionAbsolute c) {
             return SEND;
         }

@@ -253,7 +253,7 @@ final class GalilDialect implements Dialect {
         posV = tv;
     }
 
-    /** Galil's GR range: a gear ratio between -127.9999 and 127.9999 (DMC-40x0 command reference, GR). */
+    /** Galil's GR range: a gear ratio between -127 and 127 (COMALL GR). */
     static final double MAX_RATIO = gcnc.machine.SpindleEncoder.MAX_RATIO;
     /** The DMC variable that holds the spindle encoder count a thread pass starts at. */
     static final String SYNC_VARIABLE = "gsp";
@@ -299,7 +299,10 @@ final class GalilDialect implements Dialect {
         double[][] ratios = new double[n - 1][];
         double largest = 0;
         for (int i = 1; i < n; i++) {
-            ratios[i - 1] = ratios(enc, t, points.get(i - 1), points.get(i), u[i] - u[i - 1], v[i] - v[i - 1]);
+            // from the geometry, not from each pass's rounded counts: every pass of a thread writes
+            // the same ratio text, so the controller holds the same ratio on every pass
+            ratios[i - 1] = ratios(enc, t, points.get(i - 1), points.get(i),
+                    frame.u(points.get(i)) - frame.u(points.get(i - 1)), frame.v(points.get(i)) - frame.v(points.get(i - 1)));
             largest = Math.max(largest, Math.max(Math.abs(ratios[i - 1][0]), Math.abs(ratios[i - 1][1])));
         }
         if (largest > MAX_RATIO) {
@@ -321,6 +324,9 @@ final class GalilDialect implements Dialect {
         boolean zBack = z[n - 1] < z[0]; // a thread's Z goes one way through all its segments
         for (int i = 1; i < n; i++) {
             out.emit(new Command.GearRatio(p1, Fixed.of(ratio(ratios[i - 1][0])), p2, Fixed.of(ratio(ratios[i - 1][1]))));
+            if (i == 1) {
+                phaseCorrection(p1, p2, ratios[0], encoder, out);
+            }
             // wait for Z to pass the segment's end: the next segment's ratios, or the pass's end
             out.emit(new Command.WaitPast(zBack, zLetter, new Command.Operand.Count(z[i])));
         }
@@ -332,13 +338,43 @@ final class GalilDialect implements Dialect {
         posV = v[n - 1];
     }
 
+    /** The DMC variables of the slaves' phase errors (first and second plane axis). */
+    static final String PHASE_FIRST = "gpu";
+    static final String PHASE_SECOND = "gpv";
+
+    /**
+     * Right after the engagement, the phase correction (docs/threading.md, "One groove"): GR took
+     * effect up to two samples after the spindle passed {@code gsp} (COMALL MF: "The accuracy of the
+     * MF command is the number of counts that occur in 2*TM"), so each geared slave stands behind
+     * the helix that starts at gsp by its ratio × the master's counts since gsp at engagement. Each
+     * slave's lag is read in one expression (the master's counts past gsp × {@code _GR}, less its
+     * commanded travel since it stood at its start, {@code _RP}) and added by {@code IP}, which on a
+     * geared slave is a move "superimposed on top of the existing gearing motion" (COMALL IP). A
+     * slave at ratio 0 (X of a straight thread) does not move and is not corrected.
+     */
+    private void phaseCorrection(char p1, char p2, double[] ratio, char encoder, BlockWriter out) {
+        boolean first = !ratio(ratio[0]).equals(ratio(0));
+        boolean second = !ratio(ratio[1]).equals(ratio(0));
+        if (first) {
+            out.emit(new Command.PhaseError(PHASE_FIRST, encoder, SYNC_VARIABLE, p1, posU));
+        }
+        if (second) {
+            out.emit(new Command.PhaseError(PHASE_SECOND, encoder, SYNC_VARIABLE, p2, posV));
+        }
+        if (first && second) {
+            out.emit(new Command.IncrementPosition(p1, PHASE_FIRST, p2, PHASE_SECOND));
+        } else if (first || second) {
+            out.emit(new Command.IncrementPosition(first ? p1 : p2, first ? PHASE_FIRST : PHASE_SECOND, (char) 0, ""));
+        }
+    }
+
     /**
      * The gear ratios of one geared segment of a pass from {@code a} to {@code b}: its displacement
-     * in counts ({@code du}, {@code dv}, Galil's plane order) over the encoder counts the spindle
-     * turns while Z goes from a to b at the lead (negative under M04).
+     * in counts ({@code du}, {@code dv}, Galil's plane order, unrounded) over the encoder counts the
+     * spindle turns while Z goes from a to b at the lead (negative under M04).
      */
-    private static double[] ratios(gcnc.machine.SpindleEncoder enc, Motion.Thread t, Point a, Point b, long du,
-                                   long dv) {
+    private static double[] ratios(gcnc.machine.SpindleEncoder enc, Motion.Thread t, Point a, Point b, double du,
+                                   double dv) {
         double master = Math.abs(b.z() - a.z()) / t.lead() * enc.countsPerRev() * (t.reverse() ? -1 : 1);
         return new double[] {du / master, dv / master};
     }

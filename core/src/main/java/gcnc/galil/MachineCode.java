@@ -96,6 +96,9 @@ final class MachineCode {
             emit.accept(new Command.ServoHere(String.valueOf(profile.spindleAxis())));
         }
         emit.accept(volts(0));
+        // the spindle encoder's count from 0 where the program starts (COMALL DP; docs/threading.md):
+        // _TPC is 32-bit, and a count never reset reaches 2^31 after ~8.7 h at 1,000 r/min × 4,096
+        profile.encoder().ifPresent(enc -> emit.accept(new Command.DefinePosition(enc.channel(), 0)));
         char p1 = frame.plane().charAt(0);
         char p2 = frame.plane().charAt(1);
         long[] low = new long[2];

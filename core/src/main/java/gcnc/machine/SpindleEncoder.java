@@ -11,7 +11,8 @@ package gcnc.machine;
 public record SpindleEncoder(int countsPerRev, char channel) {
     /**
      * The largest gear ratio (slave counts per encoder count) the Galil controller's GR takes:
-     * ±127.9999 (DMC-40x0 command reference, GR). The checker, the backend and the replay use it.
+     * COMALL GR, "Min -127, Max 127, Resolution 1/65,536" (the DMC-40x0 user manual's ±127.9999 is
+     * the older figure; gcnc takes the narrower). The checker, the backend and the replay use it.
      */
-    public static final double MAX_RATIO = 127.9999;
+    public static final double MAX_RATIO = 127;
 }

@@ -112,6 +112,23 @@ final class Controller {
     private final List<Segment> geared = new ArrayList<>(1);
     /** The encoder counts the master turned over those segments (for the pass's speed). */
     private double masterTurned;
+    /**
+     * How far, in counts, each plane axis of the pass being geared may stand off the helix that
+     * starts at the sync point: at engagement its ratio × the master's counts in 2 servo samples
+     * (COMALL MF: "The accuracy of the MF command is the number of counts that occur in 2*TM"),
+     * half a count once its measured phase error was added by IP (IP's resolution is 1 count).
+     */
+    private final double[] phaseLag = {-1, -1};
+    /** The variables a {@code gpu=(_TPC-gsp)*_GRX-(_RPX-..)} line measured each axis's phase error into. */
+    private final String[] phaseVariable = new String[2];
+    /** The largest such offset of any pass per thread line (docs/threading.md, "One groove"). */
+    private final java.util.Map<Integer, Double> phaseSpread = new java.util.TreeMap<>();
+    /** The threads already warned of (E340), by line. */
+    private final java.util.Set<Integer> phaseReported = new java.util.HashSet<>();
+    /** How far apart, in counts, the passes of one thread may start before it is E340 (issue 30: 2 counts). */
+    static final double PHASE_TOLERANCE = 2;
+    /** The servo sample (COMALL TM default 1000 µs; gcnc never sets TM), seconds. */
+    static final double SAMPLE = 0.001;
 
     Controller(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
                    Listener out) {
@@ -380,6 +397,27 @@ final class Controller {
             return null;
         }
 
+        public Void phaseError(Command.PhaseError c) {
+            if (!afterEnd()) {
+                Controller.this.phaseError(c);
+            }
+            return null;
+        }
+
+        public Void incrementPosition(Command.IncrementPosition c) {
+            if (!afterEnd()) {
+                Controller.this.phaseCorrection(c);
+            }
+            return null;
+        }
+
+        public Void definePosition(Command.DefinePosition c) {
+            if (!afterEnd() && Plane.channel(c.axis()) != encoderChannel) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "DP", text()); // gcnc defines the spindle count only
+            }
+            return null;
+        }
+
         public Void begin(Command.Begin c) {
             if (afterEnd()) {
                 return null;
@@ -634,8 +672,65 @@ final class Controller {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, cmd, text());
             return;
         }
+        if (phaseLag[0] >= 0) {
+            closePhase();
+        }
         tripAxis = axis;
         trip = n.counts();
+    }
+
+    /**
+     * {@code gpu=(_TPC-gsp)*_GRX-(_RPX-start)} right after the engagement: the phase error of a
+     * geared plane axis measured against the helix from the sync variable, from where the axis
+     * stood when GR engaged it; anything else is E301 (another start, variable or master).
+     */
+    private void phaseError(Command.PhaseError c) {
+        int ch = Plane.channel(c.slave());
+        int axis = ch == planeChannel(0) ? 0 : ch == planeChannel(1) ? 1 : -1;
+        double start = axis == 0 ? engaged1 : engaged2;
+        if (!engaged || axis < 0 || Plane.channel(c.encoder()) != encoderChannel || !c.sync().equals(syncVariable)
+                || c.slaveStart() != Math.rint(start) || phaseLag[axis] < 0) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "phase error", text());
+            return;
+        }
+        phaseVariable[axis] = c.variable();
+    }
+
+    /** {@code IP gpu,gpv}: the measured phase errors added while geared: each axis is then on the helix to half a count. */
+    private void phaseCorrection(Command.IncrementPosition c) {
+        char[] axes = c.second() == 0 ? new char[] {c.first()} : new char[] {c.first(), c.second()};
+        String[] vars = {c.firstVariable(), c.secondVariable()};
+        for (int i = 0; i < axes.length; i++) {
+            int ch = Plane.channel(axes[i]);
+            int axis = ch == planeChannel(0) ? 0 : ch == planeChannel(1) ? 1 : -1;
+            if (!engaged || axis < 0 || !vars[i].equals(phaseVariable[axis])) {
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "IP", text());
+                return;
+            }
+            phaseLag[axis] = 0.5;
+            phaseVariable[axis] = null;
+        }
+    }
+
+    /** The pass's first trip point: its phase offset is what it is now; the thread's spread keeps the largest. */
+    private void closePhase() {
+        double lag = Math.max(phaseLag[0], phaseLag[1]);
+        Double before = phaseSpread.merge(line, lag, Math::max);
+        if (lag > PHASE_TOLERANCE && (before == lag) && !phaseReported.contains(line)) {
+            phaseReported.add(line);
+            out.report(Code.E340_SIM_THREAD_PHASE, line, String.format(java.util.Locale.ROOT, "%.0f", lag));
+        }
+        phaseLag[0] = -1;
+        phaseLag[1] = -1;
+    }
+
+    /**
+     * The largest phase offset, in counts, any pass of each thread (by the line of its GA) may
+     * start with against the helix from its whole revolution: two passes of one thread are at
+     * most this far apart along the groove (docs/threading.md, "One groove").
+     */
+    java.util.Map<Integer, Double> phaseSpread() {
+        return java.util.Collections.unmodifiableMap(phaseSpread);
     }
 
     /** {@code GR}: engages the plane axes at their ratios, or ({@code GR 0,0}) disengages them at the trip point. */
@@ -669,6 +764,11 @@ final class Controller {
         ratio2 = r2;
         engaged1 = g1;
         engaged2 = g2;
+        double masterPerSample = Math.abs(volts * rpmPerVolt) / 60 * encoderCounts * SAMPLE;
+        phaseLag[0] = Math.abs(r1) * 2 * masterPerSample;
+        phaseLag[1] = Math.abs(r2) * 2 * masterPerSample;
+        phaseVariable[0] = null;
+        phaseVariable[1] = null;
         tripAxis = -1;
         gearLine = instruction;
         geared.clear();
