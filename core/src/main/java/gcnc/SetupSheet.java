@@ -22,7 +22,8 @@ import java.util.Locale;
  * (station, kind, insert, nose radius, first and last line that moved it, its share of the cycle),
  * the cycle time and the top spindle speed, every finding with its line, the envelope as the
  * program writes coordinates (and in the machine frame), and the drawing. No date: the same run
- * writes the same bytes. The Gradle plugin's {@code gcncSimulate} writes one per program.
+ * writes the same bytes. The Gradle plugin's {@code gcncSimulate} writes one per program, {@code gcnc
+ * sheet FILE} one for FILE.
  */
 public final class SetupSheet {
     private final String file;
@@ -42,6 +43,19 @@ public final class SetupSheet {
         this.profile = profile;
         this.sim = sim;
         this.findings = List.copyOf(findings);
+    }
+
+    /**
+     * The sheet of one run: every finding of {@code diagnostics} in the program's order, its
+     * message in {@code messages}' language (as the run's report prints it).
+     */
+    public static SetupSheet of(String file, String number, MachineProfile profile, SimReport sim,
+                                gcnc.diag.Diagnostics diagnostics, gcnc.diag.Messages messages) {
+        List<Finding> lines = new java.util.ArrayList<>();
+        for (gcnc.diag.Diagnostic d : diagnostics.sorted()) {
+            lines.add(Finding.of(file, d, messages));
+        }
+        return new SetupSheet(file, number, profile, sim, lines);
     }
 
     /**
