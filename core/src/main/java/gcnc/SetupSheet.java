@@ -59,11 +59,13 @@ public final class SetupSheet {
     }
 
     /**
-     * One line for a build's log: "O1201, cycle about 0:00:15; X -1.600..424.000 (diameter), Z
-     * -25.001..363.000 mm from work zero; 2 tools; no findings".
+     * One line for a build's log: "O1201, cycle about 0:00:15; part X -1.600..44.000 (diameter), Z
+     * -25.001..2.000 mm from work zero; 2 tools; no findings" (the part: the feed moves; every
+     * move's envelope, home moves too, when nothing fed).
      */
     public String summary() {
-        return (number == null ? "" : number + ", ") + "cycle about " + clock(sim.cycleSeconds()) + "; " + envelope()
+        String where = sim.feeds() == null ? envelope() : "part " + envelope(sim.feeds());
+        return (number == null ? "" : number + ", ") + "cycle about " + clock(sim.cycleSeconds()) + "; " + where
                 + "; " + plural(sim.setup().tools().stream().filter(t -> t.station() != 0).count(), "tool") + "; "
                 + (findings.isEmpty() ? "no findings" : plural(findings.size(), "finding"));
     }
@@ -77,6 +79,10 @@ public final class SetupSheet {
         if (p == null) {
             return machineEnvelope();
         }
+        return envelope(p);
+    }
+
+    private static String envelope(ProgramEnvelope p) {
         return "X " + programmed(p.xMin(), p.units()) + ".." + programmed(p.xMax(), p.units()) + " (" + p.xMode()
                 + "), Z " + programmed(p.zMin(), p.units()) + ".." + programmed(p.zMax(), p.units()) + " " + p.unit()
                 + " from work zero";
@@ -105,7 +111,8 @@ public final class SetupSheet {
         row(w, "Cycle time (estimate)", clock(sim.cycleSeconds()));
         row(w, "Cycle time stopping at every move", clock(sim.exactStopSeconds()));
         row(w, "Maximum spindle speed", Double.isNaN(s.maxRpm()) ? "not known" : Math.round(s.maxRpm()) + " rpm");
-        row(w, "Envelope (as programmed)", envelope());
+        row(w, "Part (feed moves, as programmed)", sim.feeds() == null ? "no feed move" : envelope(sim.feeds()));
+        row(w, "Envelope (every move, as programmed)", envelope());
         row(w, "Envelope (machine frame)", Double.isNaN(sim.xMinMm()) ? "no motion" : machineEnvelope());
         row(w, "Findings", findings.isEmpty() ? "none" : Integer.toString(findings.size()));
         w.write("</table>\n");

@@ -73,7 +73,8 @@ class ProgramTermsGoldenTest {
         SetupSheet sheet = new SetupSheet("pin-inch.nc", "O1301", session.profile(), r.simulation().orElseThrow(),
                 List.of());
         // each of its two tools starts the spindle: 2 s for it to reach speed before the first feed
-        assertEquals("O1301, cycle about 0:00:48; X -0.0600..16.6929 (diameter), Z -1.2000..14.2913 in from work zero;"
+        // the part (its feed moves), not the G28 home moves that reach 16.69 in out
+        assertEquals("O1301, cycle about 0:00:48; part X -0.0600..2.1000 (diameter), Z -1.2000..0.1000 in from work zero;"
                 + " 2 tools; no findings", sheet.summary());
     }
 
