@@ -8,8 +8,9 @@
 # LinuxCNC's words, the same number of blocks); both tools' standard output goes to /dev/null.
 #
 # Prints, per size and per run kind, the median (min-max) wall seconds, the median CPU seconds (user +
-# system of every thread; for a resident run the Python client's plus what the daemon's JVM spent on
-# the request, from /proc/PID/stat) and peak RSS (a resident run: the daemon's, VmHWM), then the median
+# system of every thread of that process alone, from its own rusage; for a resident run the client's
+# plus what the daemon's JVM spent on the request, its JIT and GC tail after the answer included:
+# /proc/PID/stat read once the daemon is idle again) and peak RSS (a resident run: the daemon's, VmHWM), then the median
 # of the paired ratios gcnc / rs274 of wall and CPU time, each beside issue 23's target.
 # Wall time on this 2-core machine moves with the other work on it; CPU time is the steadier figure.
 #
@@ -30,6 +31,20 @@ pid=$(sed -n 's/^pid=//p' "$GCNC_DAEMON_DIR/daemon.state")
 trap '"$gcnc" daemon stop >/dev/null 2>&1 || true' EXIT
 hz=$(getconf CLK_TCK)
 ticks() { awk '{print $14 + $15}' "/proc/$pid/stat"; }
+# wait until the daemon's CPU stands still for 0.2 s (at most 5 s): its compiler threads finish the
+# work a request left them, so that none of it lands on the next run. Before 2026-12 the daemon's
+# ticks were added to every run, rs274's and the cold runs' included: rs274 showed 0.28 s of CPU for
+# its own 0.05 s, and the ratios were off by that much.
+settle() {
+    local last now i
+    last=$(ticks)
+    for i in $(seq 25); do
+        sleep 0.2
+        now=$(ticks)
+        [ "$now" = "$last" ] && return 0
+        last=$now
+    done
+}
 log=bench/out/versus-rs274.txt
 : > "$log"
 # one measured run: KIND SIZE then the command; appends "SIZE KIND wall user sys rss daemon-ticks".
@@ -38,6 +53,7 @@ log=bench/out/versus-rs274.txt
 measure() {
     local kind=$1 size=$2; shift 2
     local before after
+    settle
     before=$(ticks)
     python3 - "$@" > bench/out/time.txt <<'PY'
 import os, subprocess, sys, time
@@ -46,7 +62,10 @@ p = subprocess.Popen(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.
 _, _, ru = os.wait4(p.pid, 0)
 print(f"{time.perf_counter() - t:.4f} {ru.ru_utime:.4f} {ru.ru_stime:.4f} {ru.ru_maxrss}")
 PY
-    after=$(ticks)
+    case "$kind" in
+        *resident) settle; after=$(ticks) ;;
+        *) after=$before ;; # not the daemon's run: none of its CPU is this run's (it was idle, settle)
+    esac
     echo "$size $kind $(cat bench/out/time.txt) $(( after - before ))" >> "$log"
 }
 rounds() {

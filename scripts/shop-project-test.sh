@@ -4,7 +4,8 @@
 #      (skipped with --repo DIR: DIR already holds them, as the root build's ShopProjectTest arranges);
 #   2. builds a copy of samples/shop-project: it must pass, write the Galil programs and run the shop's
 #      JUnit tests (gcnc's fixtures: one test per program, and the pin's own);
-#   3. builds it again: gcncCheck, gcncCompile, gcncSimulate and the shop's tests must be UP-TO-DATE;
+#   3. a copy with a warning: the log shows it once though three tasks judge the program;
+#      builds the clean copy again: gcncCheck, gcncCompile, gcncSimulate and the shop's tests must be UP-TO-DATE;
 #      then edits a program so that it stays clean but breaks the shop's staysWithin assertion: the
 #      shop's tests must run again and fail (the plugin declares the programs as their inputs);
 #   4. builds a copy with a faulty program: it must fail at that program's line and column, and the
@@ -68,6 +69,19 @@ PY
 for t in gcncCheck gcncCompile gcncSimulate; do
     grep -q '"errors": 0' "$work/clean/build/reports/gcnc/$t.json" || fail "no clean build/reports/gcnc/$t.json"
     grep -q '"version": "2.1.0"' "$work/clean/build/reports/gcnc/$t.sarif" || fail "no SARIF build/reports/gcnc/$t.sarif"
+done
+
+echo "== stage warned"
+# A program with a warning (E646: a cut with tool offset 00): gcncCheck, gcncCompile and gcncSimulate
+# each judge it, and the build's log shows the warning once, not once per task.
+mkdir "$work/warned"
+(cd "$work/clean" && tar --exclude=build --exclude=.gradle -cf - .) | tar -xf - -C "$work/warned"
+sed 's/^T101$/T100/' "$work/clean/src/main/gcode/o1201-pin.gcode" > "$work/warned/src/main/gcode/o1201-pin.gcode"
+run "$work/warned" gcncCheck gcncCompile gcncSimulate || fail "the build with a warning failed"
+n=$(grep -c "o1201-pin.gcode:10:1: warning\[E646\]" "$work/last.log")
+[ "$n" = 1 ] || fail "the warning at o1201-pin.gcode:10:1 was printed $n times (once is right)"
+for t in gcncCheck gcncCompile gcncSimulate; do
+    grep -q '"code": "E646"' "$work/warned/build/reports/gcnc/$t.json" || fail "$t.json does not list the warning"
 done
 
 echo "== stage again"

@@ -22,7 +22,8 @@ import java.util.Locale;
  * (station, kind, insert, nose radius, first and last line that moved it, its share of the cycle),
  * the cycle time and the top spindle speed, every finding with its line, the envelope as the
  * program writes coordinates (and in the machine frame), and the drawing. No date: the same run
- * writes the same bytes. The Gradle plugin's {@code gcncSimulate} writes one per program.
+ * writes the same bytes. The Gradle plugin's {@code gcncSimulate} writes one per program, {@code gcnc
+ * sheet FILE} one for FILE.
  */
 public final class SetupSheet {
     private final String file;
@@ -45,11 +46,26 @@ public final class SetupSheet {
     }
 
     /**
-     * One line for a build's log: "O1201, cycle about 0:00:15; X -1.600..424.000 (diameter), Z
-     * -25.001..363.000 mm from work zero; 2 tools; no findings".
+     * The sheet of one run: every finding of {@code diagnostics} in the program's order, its
+     * message in {@code messages}' language (as the run's report prints it).
+     */
+    public static SetupSheet of(String file, String number, MachineProfile profile, SimReport sim,
+                                gcnc.diag.Diagnostics diagnostics, gcnc.diag.Messages messages) {
+        List<Finding> lines = new java.util.ArrayList<>();
+        for (gcnc.diag.Diagnostic d : diagnostics.sorted()) {
+            lines.add(Finding.of(file, d, messages));
+        }
+        return new SetupSheet(file, number, profile, sim, lines);
+    }
+
+    /**
+     * One line for a build's log: "O1201, cycle about 0:00:15; part X -1.600..44.000 (diameter), Z
+     * -25.001..2.000 mm from work zero; 2 tools; no findings" (the part: the feed moves; every
+     * move's envelope, home moves too, when nothing fed).
      */
     public String summary() {
-        return (number == null ? "" : number + ", ") + "cycle about " + clock(sim.cycleSeconds()) + "; " + envelope()
+        String where = sim.feeds() == null ? envelope() : "part " + envelope(sim.feeds());
+        return (number == null ? "" : number + ", ") + "cycle about " + clock(sim.cycleSeconds()) + "; " + where
                 + "; " + plural(sim.setup().tools().stream().filter(t -> t.station() != 0).count(), "tool") + "; "
                 + (findings.isEmpty() ? "no findings" : plural(findings.size(), "finding"));
     }
@@ -63,6 +79,10 @@ public final class SetupSheet {
         if (p == null) {
             return machineEnvelope();
         }
+        return envelope(p);
+    }
+
+    private static String envelope(ProgramEnvelope p) {
         return "X " + programmed(p.xMin(), p.units()) + ".." + programmed(p.xMax(), p.units()) + " (" + p.xMode()
                 + "), Z " + programmed(p.zMin(), p.units()) + ".." + programmed(p.zMax(), p.units()) + " " + p.unit()
                 + " from work zero";
@@ -91,7 +111,8 @@ public final class SetupSheet {
         row(w, "Cycle time (estimate)", clock(sim.cycleSeconds()));
         row(w, "Cycle time stopping at every move", clock(sim.exactStopSeconds()));
         row(w, "Maximum spindle speed", Double.isNaN(s.maxRpm()) ? "not known" : Math.round(s.maxRpm()) + " rpm");
-        row(w, "Envelope (as programmed)", envelope());
+        row(w, "Part (feed moves, as programmed)", sim.feeds() == null ? "no feed move" : envelope(sim.feeds()));
+        row(w, "Envelope (every move, as programmed)", envelope());
         row(w, "Envelope (machine frame)", Double.isNaN(sim.xMinMm()) ? "no motion" : machineEnvelope());
         row(w, "Findings", findings.isEmpty() ? "none" : Integer.toString(findings.size()));
         w.write("</table>\n");

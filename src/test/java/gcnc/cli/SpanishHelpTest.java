@@ -189,7 +189,7 @@ class SpanishHelpTest {
         CliTest.Run command = CliTest.gcnc(SPANISH_LOCALE, "chek");
         assertEquals(2, command.status());
         assertEquals("gcnc: argumento que sobra en la posición 0: 'chek'\n"
-                + "¿Quiso decir gcnc check, gcnc help o gcnc machines?\n"
+                + "¿Quiso decir gcnc check, gcnc help o gcnc sheet?\n"
                 + "Pruebe 'gcnc --help' o 'gcnc help <comando>'.\n", command.err());
         CliTest.Run sub = CliTest.gcnc(C_LOCALE, "--lang", "es", "machines", "shwo");
         assertTrue(sub.err().contains("¿Quiso decir gcnc machines show?"), sub.err());
@@ -215,7 +215,7 @@ class SpanishHelpTest {
     void usageErrorsInEnglishAsBefore() {
         CliTest.Run command = CliTest.gcnc(C_LOCALE, "chek");
         assertEquals("gcnc: Unmatched argument at index 0: 'chek'\n"
-                + "Did you mean: gcnc check or gcnc help or gcnc machines?\n"
+                + "Did you mean: gcnc check or gcnc help or gcnc sheet?\n"
                 + "Try 'gcnc --help' or 'gcnc help <command>'.\n", command.err());
         CliTest.Run option = CliTest.gcnc(SPANISH_LOCALE, "check", "--lang", "en", "--formt", "json", "x.nc");
         assertTrue(option.err().startsWith("gcnc: Unknown option: '--formt'\nPossible solutions: --format"), option.err());

@@ -1,12 +1,17 @@
 package gcnc.cli;
 
 import gcnc.diag.Code;
+import gcnc.machine.Control;
+import gcnc.machine.ControlLoader;
+import gcnc.machine.FunctionText;
+import gcnc.machine.ProfileLoader;
 import gcnc.tables.CodeTable;
 import gcnc.tables.ErrorBasis;
 import gcnc.tables.ErrorMessages;
 import gcnc.tables.Explanations;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
+import gcnc.tables.Tables;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
@@ -23,16 +28,31 @@ import picocli.CommandLine.Spec;
  * {@code gcnc explain E305}: what a diagnostic code means: its message (errors.csv), which control
  * behaviour it stands for (error_basis.csv), and in prose why it is reported, what the control
  * does, the usual fix and an example program that brings it about (tables/explain/).
+ * {@code gcnc explain G71 --machine haas}: what a G or M code does on that machine's control (or
+ * {@code --control}'s), the studio's hover text ({@link FunctionText}); with neither, on every
+ * shipped control.
  */
 @Command(name = "explain", mixinStandardHelpOptions = true,
-        description = "Explain diagnostic codes: severity, the message in English and Spanish, which control"
+        description = {"Explain diagnostic codes: severity, the message in English and Spanish, which control"
                 + " behaviour the rule stands for (tables/error_basis.csv), why it is reported, what the control"
                 + " does, the usual fix and an example program (tables/explain/).",
+                "Explain G and M codes (G71, M00): what each does on the control of --machine or --control"
+                        + " (its row of g_codes.csv or m_codes.csv); with neither, on every shipped control."},
         exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:every code was explained", "2:no such code, or a broken errors.csv"})
+        exitCodeList = {"0:every code was explained", "2:no such code (or a G or M code no control in question knows),"
+                + " or a broken table or profile"})
 final class ExplainCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "CODE", description = "E305, e305 or 305.")
+    @Parameters(arity = "1..*", paramLabel = "CODE", description = "A diagnostic code (E305, e305 or 305) or a G or M code"
+            + " (G71, g1, M00).")
     List<String> codes;
+
+    @Option(names = "--machine", paramLabel = "NAME|PATH", description = "For a G or M code: the control of this machine"
+            + " profile (a name under tables/machines/ or a .machine file).")
+    String machine;
+
+    @Option(names = "--control", paramLabel = "NAME|PATH", description = "For a G or M code: this control (a name under"
+            + " tables/controls/ or a folder); with --machine, it replaces the profile's.")
+    String control;
 
     @Option(names = "--tables", paramLabel = "DIR", description = "Read errors.csv from DIR instead of the built-in one.")
     Path tables;
@@ -46,6 +66,12 @@ final class ExplainCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
+        if (codes.stream().anyMatch(FunctionText::isWord)) {
+            if (!codes.stream().allMatch(FunctionText::isWord)) {
+                throw new ParameterException(spec.commandLine(), "explain G and M codes or diagnostic codes, not both at once");
+            }
+            return functions(out);
+        }
         List<Code> wanted = codes.stream().map(this::code).toList();
         CodeTable table;
         ErrorBasis basis;
@@ -80,6 +106,66 @@ final class ExplainCommand implements Callable<Integer> {
         }
         out.flush();
         return ExitCode.CLEAN;
+    }
+
+    /**
+     * G and M codes: each on the control of {@code --machine} or {@code --control}, else on every
+     * shipped control (those that do not have it are named on one line).
+     */
+    private int functions(PrintWriter out) {
+        Phrases say = new Phrases(lang);
+        List<Control> controls = new java.util.ArrayList<>();
+        TableSource source = tables == null ? TableSource.builtIn() : TableSource.directory(tables);
+        try {
+            if (machine != null) {
+                controls.add(ProfileLoader.load(machine, source, Tables.load(source), control).control());
+            } else if (control != null) {
+                controls.add(ControlLoader.load(control, source));
+            } else {
+                for (String name : ControlLoader.SHIPPED) {
+                    controls.add(ControlLoader.load(name, source));
+                }
+            }
+        } catch (TableException e) {
+            return Reporter.tableFault(spec.commandLine().getErr(), e, lang);
+        }
+        int status = ExitCode.CLEAN;
+        for (String word : codes) {
+            List<String> without = new java.util.ArrayList<>();
+            boolean any = false;
+            for (Control c : controls) {
+                FunctionText f = FunctionText.of(c, word).orElseThrow();
+                if (!f.known()) {
+                    without.add(c.name());
+                    continue;
+                }
+                any = true;
+                out.println(say.get("explain.function", f.name(), c.name(), f.text(lang)));
+                out.println("  " + say.get("explain.function.other", lang == ErrorMessages.Lang.EN ? "es" : "en",
+                        f.text(lang == ErrorMessages.Lang.EN ? ErrorMessages.Lang.ES : ErrorMessages.Lang.EN)));
+                String kind = f.letter() == 'G'
+                        ? (f.modal() ? say.get("explain.function.modal", f.group()) : say.get("explain.function.once"))
+                        : say.get("explain.function.moment." + (f.moment() == 99 ? "end" : f.moment() == 1 ? "start" : "during"),
+                                f.group());
+                out.println("  " + kind + "; " + say.get("explain.function.role", f.role())
+                        + (f.letter() == 'G' ? "; " + say.get("explain.function.words", switch (f.words()) {
+                            case "*" -> say.get("explain.function.words.any");
+                            case "" -> say.get("explain.function.words.none");
+                            default -> f.words();
+                        }) : ""));
+            }
+            FunctionText first = FunctionText.of(controls.get(0), word).orElseThrow();
+            if (!without.isEmpty()) {
+                out.println(say.get(any ? "explain.function.not_on" : "explain.function.unknown", first.name(),
+                        String.join(", ", without)));
+            }
+            if (!any) {
+                status = ExitCode.USAGE;
+            }
+        }
+        out.println(say.get("explain.function.more"));
+        out.flush();
+        return status;
     }
 
     /**

@@ -227,7 +227,8 @@ final class Reporter {
         }
     }
 
-    private Messages messages() {
+    /** The messages findings are rendered in: the run's tables', in the run's language. */
+    Messages messages() {
         if (messages == null) {
             messages = Tables.builtIn().messages().in(lang);
         }

@@ -7,10 +7,12 @@ import java.math.BigDecimal;
 import java.math.RoundingMode;
 
 /**
- * The simulator's summary as printed after a run. Its envelope is in the program's terms first
- * (X as the program writes it, Z from work zero, the program's units), the machine frame second:
- * {@code envelope X 0.000..44.000 (diameter), Z -30.000..2.000 mm from work zero; machine X
- * 0.000..22.000 mm (radius), Z 120.000..152.000 mm}.
+ * The simulator's summary as printed after a run. Its envelopes are in the program's terms first
+ * (X as the program writes it, Z from work zero, the program's units), the part's (the feed moves)
+ * before every move's (rapids and home moves too), the machine frame last: {@code part X
+ * -1.600..44.000 (diameter), Z -30.000..0.000 mm from work zero (feed moves); envelope X
+ * -1.600..424.000 (diameter), Z -30.000..363.000 mm from work zero; machine X -0.800..212.000 mm
+ * (radius), Z 120.000..513.000 mm}.
  */
 final class SimSummary {
     private SimSummary() {
@@ -38,7 +40,11 @@ final class SimSummary {
         if (p == null) {
             return phrases.get("simulation.envelope_machine", machineX, machineZ);
         }
-        return phrases.get("simulation.envelope", programmed(p.xMin(), p.units()) + ".." + programmed(p.xMax(), p.units()),
+        ProgramEnvelope f = r.feeds();
+        String part = f == null ? "" : phrases.get("simulation.part", programmed(f.xMin(), f.units()) + ".."
+                + programmed(f.xMax(), f.units()), phrases.get(f.diameter() ? "simulation.diameter" : "simulation.radius"),
+                programmed(f.zMin(), f.units()) + ".." + programmed(f.zMax(), f.units()), f.unit());
+        return (part.isEmpty() ? "" : part + "; ") + phrases.get("simulation.envelope", programmed(p.xMin(), p.units()) + ".." + programmed(p.xMax(), p.units()),
                 phrases.get(p.diameter() ? "simulation.diameter" : "simulation.radius"),
                 programmed(p.zMin(), p.units()) + ".." + programmed(p.zMax(), p.units()), p.unit(), machineX, machineZ);
     }

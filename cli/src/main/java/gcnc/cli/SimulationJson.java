@@ -34,17 +34,11 @@ final class SimulationJson {
             json.name("cycleSeconds").value(round(r.cycleSeconds(), 3));
             json.name("exactStopSeconds").value(round(r.exactStopSeconds(), 3)); // every move stopped: what blending gains
             boolean moved = !Double.isNaN(r.xMinMm());
-            ProgramEnvelope p = r.program();
-            if (moved && p != null) {
-                int decimals = p.units() == gcnc.machine.Units.INCH ? 4 : 3;
-                json.name("program").beginObject();
-                json.name("units").value(p.unit());
-                json.name("x").value(p.xMode());
-                json.name("xMin").value(round(p.xMin(), decimals));
-                json.name("xMax").value(round(p.xMax(), decimals));
-                json.name("zMin").value(round(p.zMin(), decimals));
-                json.name("zMax").value(round(p.zMax(), decimals));
-                json.endObject();
+            if (moved && r.program() != null) {
+                envelope(json, "program", r.program());
+            }
+            if (moved && r.feeds() != null) {
+                envelope(json, "part", r.feeds()); // the feed moves alone: where the part is cut
             }
             if (moved) {
                 json.name("machine").beginObject();
@@ -66,6 +60,19 @@ final class SimulationJson {
             json.endObject();
         }
         json.endArray();
+    }
+
+    /** An envelope in program terms: its units, what X is, and the extremes with the units' decimals. */
+    private static void envelope(JsonWriter json, String name, ProgramEnvelope p) throws IOException {
+        int decimals = p.units() == gcnc.machine.Units.INCH ? 4 : 3;
+        json.name(name).beginObject();
+        json.name("units").value(p.unit());
+        json.name("x").value(p.xMode());
+        json.name("xMin").value(round(p.xMin(), decimals));
+        json.name("xMax").value(round(p.xMax(), decimals));
+        json.name("zMin").value(round(p.zMin(), decimals));
+        json.name("zMax").value(round(p.zMax(), decimals));
+        json.endObject();
     }
 
     /**

@@ -649,6 +649,6 @@ final class MotionChecks {
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
-                seconds, exactStopSeconds, d, terms.envelope(), terms.facts(machine, blank));
+                seconds, exactStopSeconds, d, terms.envelope(), terms.feedEnvelope(), terms.facts(machine, blank));
     }
 }

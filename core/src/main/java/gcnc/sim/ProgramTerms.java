@@ -25,6 +25,9 @@ final class ProgramTerms {
     private double xMax = Double.NEGATIVE_INFINITY;
     private double zMin = Double.POSITIVE_INFINITY;
     private double zMax = Double.NEGATIVE_INFINITY;
+    /** The same box over the feed moves alone (the part, not the rapids and home moves): {xMin, xMax, zMin, zMax}. */
+    private final double[] feeds = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+        Double.NEGATIVE_INFINITY};
     /** The work zero (machine counts {x, z}) of the first feed move, else of the first move. */
     private double[] firstCut;
     private double[] firstMove;
@@ -61,10 +64,20 @@ final class ProgramTerms {
         }
         double perX = kx * unitMm / (diameter ? 2 : 1);
         double perZ = kz * unitMm;
-        xMin = Math.min(xMin, (box[0] - frame.origin().x()) / perX);
-        xMax = Math.max(xMax, (box[1] - frame.origin().x()) / perX);
-        zMin = Math.min(zMin, (box[2] - frame.origin().z()) / perZ);
-        zMax = Math.max(zMax, (box[3] - frame.origin().z()) / perZ);
+        double x0 = (box[0] - frame.origin().x()) / perX;
+        double x1 = (box[1] - frame.origin().x()) / perX;
+        double z0 = (box[2] - frame.origin().z()) / perZ;
+        double z1 = (box[3] - frame.origin().z()) / perZ;
+        xMin = Math.min(xMin, x0);
+        xMax = Math.max(xMax, x1);
+        zMin = Math.min(zMin, z0);
+        zMax = Math.max(zMax, z1);
+        if (!rapid) {
+            feeds[0] = Math.min(feeds[0], x0);
+            feeds[1] = Math.max(feeds[1], x1);
+            feeds[2] = Math.min(feeds[2], z0);
+            feeds[3] = Math.max(feeds[3], z1);
+        }
     }
 
     /** A sequence of station {@code tool} from G-code line {@code line}, taking {@code s} seconds. */
@@ -97,6 +110,15 @@ final class ProgramTerms {
      * write it, the shortest decimal (at most 3 in mm, 4 in inches) within half a count of it.
      */
     ProgramEnvelope envelope() {
+        return envelope(xMin, xMax, zMin, zMax);
+    }
+
+    /** The envelope of the feed moves alone (where the part is cut), in program terms; null when no move fed. */
+    ProgramEnvelope feedEnvelope() {
+        return envelope(feeds[0], feeds[1], feeds[2], feeds[3]);
+    }
+
+    private ProgramEnvelope envelope(double xMin, double xMax, double zMin, double zMax) {
         if (Double.isNaN(unitMm) || xMin > xMax) {
             return null;
         }

@@ -18,6 +18,9 @@ package gcnc.sim;
  * @param program       the same envelope as the program writes coordinates (X as written, Z from
  *                      work zero, the program's units): what a person reads first; null when the
  *                      program frame is not known (a DMC replayed by itself) or nothing moved
+ * @param feeds         the envelope of the feed moves alone, in the same terms: where the part is cut,
+ *                      apart from the rapids and the home moves (G28, G53) that reach out to the
+ *                      reference point; null when no move fed
  * @param setup         the blank, the work zero, the tools used and the top speed, for a setup sheet
  * @param corners       the slowest corners of the blended sequences, slowest first (at most 100;
  *                      docs/galil.md, "The corner report")
@@ -26,7 +29,7 @@ package gcnc.sim;
  */
 public record SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
                         double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
-                        ProgramEnvelope program, SetupFacts setup, java.util.List<Corner> corners,
+                        ProgramEnvelope program, ProgramEnvelope feeds, SetupFacts setup, java.util.List<Corner> corners,
                         java.util.Map<String, Integer> stops) {
     public SimReport {
         corners = java.util.List.copyOf(corners);
@@ -36,20 +39,20 @@ public record SimReport(int sequences, int segments, int findings, double xMinMm
     /** A report without corners. */
     public SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
                      double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
-                     ProgramEnvelope program, SetupFacts setup) {
+                     ProgramEnvelope program, ProgramEnvelope feeds, SetupFacts setup) {
         this(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds, exactStopSeconds, drawing,
-                program, setup, java.util.List.of(), java.util.Map.of());
+                program, feeds, setup, java.util.List.of(), java.util.Map.of());
     }
 
     /** The same report with these corners (the {@code n} slowest of them, for {@code --corners n}). */
     public SimReport withCorners(java.util.List<Corner> slowest, int n) {
         return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
-                exactStopSeconds, drawing, program, setup, slowest.subList(0, Math.min(n, slowest.size())), stops);
+                exactStopSeconds, drawing, program, feeds, setup, slowest.subList(0, Math.min(n, slowest.size())), stops);
     }
 
     /** The same report with these counts of stops by reason. */
     public SimReport withStops(java.util.Map<String, Integer> counts) {
         return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
-                exactStopSeconds, drawing, program, setup, corners, counts);
+                exactStopSeconds, drawing, program, feeds, setup, corners, counts);
     }
 }

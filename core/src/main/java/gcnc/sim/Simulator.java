@@ -386,7 +386,9 @@ public final class Simulator {
 
         @Override
         public void spindleVolts(double volts, int line) {
-            // The run/stop state comes from the outputs; the speed does not affect any check.
+            // The run/stop state comes from the outputs; the speed affects no check, only the setup
+            // sheet's highest speed (it was never passed on before: "not known" beside a G50 S2500)
+            checks.spindle(volts * profile.rpmPerVolt());
         }
 
         @Override

@@ -37,10 +37,13 @@ final class Findings {
     private final Messages messages;
     private final List<Finding> all = new ArrayList<>();
     private final Set<String> filesWithErrors = new HashSet<>();
+    private final Set<String> printed;
 
-    Findings(Session session, Logger logger) {
+    /** @param printed the findings already printed in this build by another task: not printed again */
+    Findings(Session session, Logger logger, Set<String> printed) {
         this.session = session;
         this.logger = logger;
+        this.printed = printed;
         this.messages = session.tables().messages().in(LANG);
     }
 
@@ -55,16 +58,19 @@ final class Findings {
         // Gradle's QUIET level: shown even with -q, and on standard output, where Gradle starts a line
         // for it; at the ERROR level (standard error) it would be glued to the task's header line in a
         // log that merges the two streams, and CI's file:line:col parsers would miss it.
-        logger.quiet(render(file, d));
+        String line = render(file, d);
+        if (printed.add(line)) {
+            logger.quiet(line);
+        }
         if (d.severity() == Severity.ERROR) {
             filesWithErrors.add(file);
         }
         all.add(Finding.of(file, d, messages));
     }
 
-    /** One finding with its message in the reports' language (a setup sheet's row). */
-    Finding finding(String file, Diagnostic d) {
-        return Finding.of(file, d, messages);
+    /** The messages findings are rendered in (the build's language). */
+    Messages messages() {
+        return messages;
     }
 
     /** One finding as a GCC-style line. */

@@ -22,6 +22,13 @@ public class GcncExtension {
     private FileCollection programs;
     private boolean ignoreFailures;
     private List<String> extensions = gcnc.ProgramFiles.EXTENSIONS;
+    /**
+     * The findings already printed in this build (as GCC-style lines): gcncCheck, gcncCompile and
+     * gcncSimulate each judge every program, and a warning printed by the first is not printed again
+     * by the others (each task's JSON, SARIF and HTML reports still list all of its own). The
+     * extension lives as long as the project object, one build.
+     */
+    final java.util.Set<String> printed = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     public GcncExtension(Project project) {
         this.project = project;

@@ -116,7 +116,7 @@ public abstract class GcncTask extends DefaultTask {
     @TaskAction
     public void run() {
         Session session = open();
-        Findings findings = new Findings(session, getLogger());
+        Findings findings = new Findings(session, getLogger(), settings.printed);
         begin();
         List<Program> programs = programs();
         List<File> skipped = settings.skipped();

@@ -4,8 +4,6 @@ import gcnc.Compiler;
 import gcnc.ProgramNumber;
 import gcnc.Session;
 import gcnc.SetupSheet;
-import gcnc.diag.Diagnostic;
-import gcnc.diag.Finding;
 import gcnc.sim.SimReport;
 import gcnc.sim.SvgWriter;
 import java.io.File;
@@ -64,11 +62,8 @@ public class SimulateTask extends GcncTask {
         Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
         Files.createDirectories(svgFile.getParent());
         Files.writeString(svgFile, svg.toString(), StandardCharsets.UTF_8);
-        List<Finding> lines = new ArrayList<>();
-        for (Diagnostic d : r.diagnostics().sorted()) {
-            lines.add(findings.finding(program.shown(), d));
-        }
-        SetupSheet sheet = new SetupSheet(program.shown(), number, session.profile(), sim.get(), lines);
+        SetupSheet sheet = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
+                findings.messages());
         try (Writer w = Files.newBufferedWriter(getOutputDir().toPath().resolve(program.withExtension(".html")),
                 StandardCharsets.UTF_8)) {
             sheet.write(svg.toString(), w);

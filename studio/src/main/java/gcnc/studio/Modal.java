@@ -12,9 +12,9 @@ import gcnc.ir.Point;
 import gcnc.ir.ProgramFrame;
 import gcnc.ir.RawBlock;
 import gcnc.machine.Control;
+import gcnc.machine.FunctionText;
 import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
-import gcnc.machine.MFunction;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 import gcnc.parse.BlockReader;
@@ -28,8 +28,6 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * The hover: what a G or M word does on this control (its row of g_codes.csv or m_codes.csv, in
@@ -47,8 +45,6 @@ final class Modal {
     /** The state after one line's block (first run), and what the checker made of it. */
     record Snapshot(ModalState state, CheckedBlock block, boolean accepted, int runs) {
     }
-
-    private static final Pattern WORD = Pattern.compile("([GgMm])\\s*0*([0-9]{1,3})");
 
     private final Session session;
     private final ErrorMessages.Lang lang;
@@ -78,42 +74,27 @@ final class Modal {
         return o;
     }
 
-    /** The function a G or M word names on this control, or null (another letter, or a number it does not know). */
+    /** The function a G or M word names on this control ({@link FunctionText}), or null (another letter). */
     JsonObject function(String word) {
-        Matcher m = WORD.matcher(word.strip());
-        if (!m.matches()) {
+        Optional<FunctionText> found = FunctionText.of(session.profile().control(), word);
+        if (found.isEmpty()) {
             return null;
         }
-        Control c = session.profile().control();
-        int code = Integer.parseInt(m.group(2));
+        FunctionText f = found.get();
         JsonObject o = new JsonObject();
-        if (m.group(1).equalsIgnoreCase("G")) {
-            GFunction g = c.g().get(code);
-            if (g == null) {
-                return unknown(o, "G", code, c);
-            }
-            o.addProperty("code", g.name());
-            o.addProperty("text", lang == ErrorMessages.Lang.ES ? g.spanish() : g.english());
-            o.addProperty("group", g.group());
-            o.addProperty("modal", g.modal());
+        o.addProperty("code", f.name());
+        if (!f.known()) {
+            o.addProperty("unknown", true);
         } else {
-            MFunction f = c.m().get(code);
-            if (f == null) {
-                return unknown(o, "M", code, c);
-            }
-            o.addProperty("code", f.name());
             o.addProperty("text", lang == ErrorMessages.Lang.ES ? f.spanish() : f.english());
             o.addProperty("group", f.group());
-            o.addProperty("moment", f.moment());
+            if (f.letter() == 'G') {
+                o.addProperty("modal", f.modal());
+            } else {
+                o.addProperty("moment", f.moment());
+            }
         }
-        o.addProperty("control", c.name());
-        return o;
-    }
-
-    private static JsonObject unknown(JsonObject o, String letter, int code, Control c) {
-        o.addProperty("code", letter + (code < 10 ? "0" : "") + code);
-        o.addProperty("unknown", true);
-        o.addProperty("control", c.name());
+        o.addProperty("control", f.control());
         return o;
     }
 
