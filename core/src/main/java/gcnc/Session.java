@@ -170,7 +170,12 @@ public final class Session {
     /** Parse and every check: no output, no simulation. */
     public Compiler.Result check(Reader program) throws IOException {
         // the blank, if one was given, places the work zero (work.G54 = face); nothing is simulated
-        return Compiler.check(program, settings(options.stock().map(b -> simulation()), false));
+        return Compiler.check(program, checkSettings());
+    }
+
+    /** What {@link #check} runs with (also {@link ModalStates}, which reads the blocks as a check does). */
+    Compiler.Settings checkSettings() {
+        return settings(options.stock().map(b -> simulation()), false);
     }
 
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); the DMC instructions go to {@code out}. */
