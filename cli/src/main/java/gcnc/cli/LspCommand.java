@@ -33,6 +33,14 @@ final class LspCommand implements Callable<Integer> {
     @Option(names = "--stdio", description = "Talk over standard input and output (the only transport; editors' clients pass it).")
     boolean stdio;
 
+    /** Hidden: the longest message read, in bytes (tests; the default is Lsp.Options.INPUT_LIMIT). */
+    @Option(names = "--input-limit", hidden = true, paramLabel = "BYTES")
+    long inputLimit = gcnc.lsp.Lsp.Options.INPUT_LIMIT;
+
+    /** Hidden: the most output kept for a client that does not read, in bytes (tests; default Lsp.Options.OUTPUT_LIMIT). */
+    @Option(names = "--output-limit", hidden = true, paramLabel = "BYTES")
+    long outputLimit = gcnc.lsp.Lsp.Options.OUTPUT_LIMIT;
+
     @Spec
     CommandSpec spec;
 
@@ -48,7 +56,7 @@ final class LspCommand implements Callable<Integer> {
             gcnc.lsp.Lsp.Options o = new gcnc.lsp.Lsp.Options(Optional.ofNullable(
                     common.machine == null || common.machine.equals(gcnc.machine.ProfileLoader.DEFAULT) ? null : common.machine),
                     Optional.ofNullable(common.control), Optional.ofNullable(common.tables), lang, Main.version(),
-                    LspCommand::explain, gcnc.lsp.Lsp.Options.INPUT_LIMIT, gcnc.lsp.Lsp.Options.OUTPUT_LIMIT);
+                    LspCommand::explain, inputLimit, outputLimit);
             return gcnc.lsp.Lsp.run(main.streams().in(), main.streams().out(), err, o);
         } finally {
             System.setOut(stdout);

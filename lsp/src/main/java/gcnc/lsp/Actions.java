@@ -16,8 +16,8 @@ import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 
 /**
- * The code actions on gcnc's diagnostics: "Explain E107" for every one (the command
- * {@value #EXPLAIN} with the code; it opens {@code gcnc explain E107}'s text), and the fix a
+ * The code actions on gcnc's diagnostics: "Explain E107" for every one (a command, {@value #EXPLAIN}
+ * with the code; it opens {@code gcnc explain E107}'s text), and the fix a
  * finding's own message suggests, with the suggested text from the finding's arguments:
  * E107 "X50 has no decimal point (write X50. ...)" writes the point, E120 "TO303: the letter O in a
  * number (did you mean T0303?)" and E121 "X10,5: a decimal comma (write X10.5)" write the suggestion.
@@ -41,11 +41,9 @@ final class Actions {
             String code = shown.getCode().getLeft();
             if (!explained.contains(code)) {
                 explained.add(code);
-                CodeAction a = new CodeAction("Explain " + code);
-                a.setKind(CodeActionKind.Empty);
-                a.setCommand(new Command("Explain " + code, EXPLAIN, List.of(code)));
-                a.setDiagnostics(List.of(shown));
-                out.add(Either.forRight(a));
+                // a bare Command (as the protocol allows): a CodeAction that only holds a command is
+                // read as a Command by some clients' libraries (lsprotocol's), which then lose it
+                out.add(Either.forLeft(new Command("Explain " + code, EXPLAIN, List.of(code))));
             }
             if (last != null) {
                 finding(last, shown).flatMap(d -> fix(d, lines)).ifPresent(edit -> {

@@ -93,15 +93,13 @@ final class Framing {
             if (length > limit) {
                 log.error("a message of " + length + " bytes is more than the " + limit
                         + " this server reads: skipped (a buffer that large is not checked here; use gcnc check)");
+                byte[] skip = new byte[1 << 16];
                 for (long left = length; left > 0; ) {
-                    long skipped = in.skip(left);
-                    if (skipped <= 0) {
-                        if (in.read() < 0) {
-                            return false;
-                        }
-                        skipped = 1;
+                    int n = in.read(skip, 0, (int) Math.min(skip.length, left)); // read, not skip(): a pipe cannot seek
+                    if (n < 0) {
+                        return false;
                     }
-                    left -= skipped;
+                    left -= n;
                 }
                 header = new byte[0];
                 headerAt = 0;

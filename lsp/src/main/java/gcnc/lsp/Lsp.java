@@ -16,6 +16,7 @@ import java.util.logging.Logger;
 import org.eclipse.lsp4j.MessageParams;
 import org.eclipse.lsp4j.MessageType;
 import org.eclipse.lsp4j.jsonrpc.Launcher;
+import org.eclipse.lsp4j.jsonrpc.ResponseErrorException;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseError;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseErrorCode;
 import org.eclipse.lsp4j.launch.LSPLauncher;
@@ -72,8 +73,12 @@ public final class Lsp {
                 .setInput(new Framing.GuardedInput(in, o.inputLimit(), log))
                 .setOutput(queued)
                 .setExceptionHandler(t -> {
-                    log.error("a request failed: " + t);
-                    return new ResponseError(ResponseErrorCode.InternalError, "gcnc: " + t, null);
+                    Throwable cause = t instanceof java.util.concurrent.CompletionException && t.getCause() != null ? t.getCause() : t;
+                    if (cause instanceof ResponseErrorException r) { // the protocol's own answer (an unknown method)
+                        return r.getResponseError();
+                    }
+                    log.error("a request failed: " + cause);
+                    return new ResponseError(ResponseErrorCode.InternalError, "gcnc: " + cause, null);
                 })
                 .create();
         LanguageClient client = launcher.getRemoteProxy();
