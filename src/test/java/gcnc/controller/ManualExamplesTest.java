@@ -171,6 +171,8 @@ class ManualExamplesTest {
     @Test
     void terminalAndProgramOnlyCommandsAreRefusedWhereTheReferenceSays() throws GalilException {
         assertEquals(Tc.ONLY_IN_PROGRAM, rejected("EN"));
+        assertEquals(Tc.ONLY_IN_PROGRAM, rejected("RE"));
+        assertEquals(Tc.ONLY_IN_PROGRAM, rejected("JP #A"));
         assertEquals(Tc.ONLY_IN_PROGRAM, rejected("AI 1"));
         assertEquals(Tc.ONLY_IN_PROGRAM, rejected("MC"));
         assertEquals(Tc.ONLY_IN_PROGRAM, rejected("WT 10"));

@@ -177,9 +177,8 @@ final class Statements {
                 th.stack.clear();
                 return "";
             case "RE":
-                if (th != null) {
-                    th.back();
-                }
+                onlyInProgram(th); // COMALL RE: "Not Valid in terminal"
+                th.back();
                 return "";
             case "JP":
             case "JS":
