@@ -447,9 +447,10 @@ final class DmcCommands implements Command.Visitor<Void> {
 
     @Override
     public Void end(Command.End x) {
-        if (th != null) {
-            th.back();
+        if (th == null) {
+            throw refuse(Tc.ONLY_IN_PROGRAM); // COMALL EN: "Not Valid in terminal"
         }
+        th.back();
         return null;
     }
 

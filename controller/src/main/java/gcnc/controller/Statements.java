@@ -123,9 +123,18 @@ final class Statements {
         return "";
     }
 
-    /** Galil's number format for MG and interrogations: a sign or a space, then 4 decimals. */
+    /**
+     * Galil's number format for MG and interrogations: a sign or a space, then 4 decimals. The sign is
+     * the rounded number's: COMALL's {@code MG @SIN[360]} prints {@code 0.0000}, not {@code -0.0000}.
+     */
     static String number(double v) {
-        return (v < 0 ? "-" : " ") + String.format(Locale.ROOT, "%.4f", Math.abs(v));
+        return signed(String.format(Locale.ROOT, "%.4f", Math.abs(v)), v);
+    }
+
+    /** {@code digits} (the magnitude as printed) after a minus, or after a space when it prints as zero or more. */
+    static String signed(String digits, double v) {
+        boolean zero = digits.chars().noneMatch(ch -> ch >= '1' && ch <= '9');
+        return (v < 0 && !zero ? "-" : " ") + digits;
     }
 
     private String command(String cmd, String args, ProgramThread th) throws GalilException {
@@ -168,9 +177,8 @@ final class Statements {
                 th.stack.clear();
                 return "";
             case "RE":
-                if (th != null) {
-                    th.back();
-                }
+                onlyInProgram(th); // COMALL RE: "Not Valid in terminal"
+                th.back();
                 return "";
             case "JP":
             case "JS":
@@ -258,6 +266,9 @@ final class Statements {
             case "DM":
                 return dimension(args);
             case "RS":
+                if (th != null) {
+                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL RS: "Not Valid in program"
+                }
                 return reset();
             default:
                 if (NO_EFFECT.contains(cmd)) {
