@@ -191,6 +191,7 @@ class ControllerLinkTest {
             HostLink h = l.host;
             assertEquals("::", h.download("#LIMSWI\r\nlim=_LFX\r\nMG \"LIMIT\",_CSS{F1.0}\r\nRE\r\n"));
             assertEquals(":", h.send("CW 1"));
+            assertEquals(":", h.send("CF I"), "unsolicited messages to this port (COMALL CF: the serial port unless told)");
             fiveSegments(h);
             long until = System.nanoTime() + 5_000_000_000L;
             while (h.number("MG _BGS") != 0 && System.nanoTime() < until) {

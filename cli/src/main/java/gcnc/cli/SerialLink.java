@@ -50,6 +50,11 @@ final class SerialLink implements Link {
     }
 
     @Override
+    public boolean serial() {
+        return true;
+    }
+
+    @Override
     public void write(byte[] bytes) throws IOException {
         int done = 0;
         while (done < bytes.length) {

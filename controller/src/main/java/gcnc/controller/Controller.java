@@ -22,6 +22,11 @@ public final class Controller implements Expressions.Scope {
     /** Where the controller's unsolicited output (a program's MG, a program error) goes. */
     public interface Listener {
         void unsolicited(byte[] bytes);
+
+        /** The port the link is: 'S' the main serial port (the pty, and a test's own listener), 'A'..'H' an Ethernet handle. */
+        default char port() {
+            return 'S';
+        }
     }
 
     final Model model;
@@ -43,6 +48,16 @@ public final class Controller implements Expressions.Scope {
     int errorThread = -1;
     /** CW: 1 marks unsolicited characters with their high bit set, 2 does not (the power-up value). */
     int cw = 2;
+    /** CF: the port unsolicited messages go to, 'S' (the main serial port) at power-up (COMALL CF, default S). */
+    char cf = 'S';
+    /** EO: whether the serial port echoes what it receives; the model's power-up value (galil_models.csv serial_echo). */
+    volatile boolean echo;
+    /** The port the host command being executed came in on (for CF I, EO, WH); 0 inside a thread. */
+    char port;
+    /** IT of each axis: 1 = no smoothing, the power-up value (COMALL IT); stored, not simulated. */
+    final double[] smoothing;
+    /** The Ethernet handles in use (COMALL TH: A-H). */
+    private final boolean[] handles = new boolean[8];
     boolean limitTripped;
     private double time;
     private final Trace trace;
@@ -80,6 +95,9 @@ public final class Controller implements Expressions.Scope {
         this.trace = trace == null ? null : new Trace(trace);
         this.servo = new boolean[model.axes];
         this.offsets = new double[model.axes];
+        this.smoothing = new double[model.axes];
+        java.util.Arrays.fill(smoothing, 1);
+        this.echo = model.galil.serialEcho();
         for (int i = 0; i < threads.length; i++) {
             threads[i] = new ProgramThread(i);
         }
@@ -155,13 +173,43 @@ public final class Controller implements Expressions.Scope {
      * controller sends before its {@code :} ("" for a command without data, "data\r\n" for an
      * interrogation); a rejected command throws, sets the error {@code TC1} reports, and changes nothing.
      */
-    synchronized String command(String statement) throws GalilException {
+    synchronized String command(String statement, char from) throws GalilException {
+        port = from;
         try {
             return statements.execute(statement, null);
         } catch (GalilException e) {
             lastError = e.tc;
             throw e;
+        } finally {
+            port = 0;
         }
+    }
+
+    /** A command from the main serial port (a test driving the controller without a link). */
+    synchronized String command(String statement) throws GalilException {
+        return command(statement, 'S');
+    }
+
+    /** A free Ethernet handle for a new TCP connection, 'A'..'H', or 0 when all eight are taken. */
+    synchronized char openHandle() {
+        for (int i = 0; i < handles.length; i++) {
+            if (!handles[i]) {
+                handles[i] = true;
+                return (char) ('A' + i);
+            }
+        }
+        return 0;
+    }
+
+    synchronized void closeHandle(char h) {
+        if (h >= 'A' && h <= 'H') {
+            handles[h - 'A'] = false;
+        }
+    }
+
+    /** Whether the serial port echoes now (EO). */
+    boolean echoes() {
+        return echo;
     }
 
     /** A {@code reject} fault answered {@code ?}: TC1 says the command was not recognized. */
@@ -243,7 +291,12 @@ public final class Controller implements Expressions.Scope {
         }
     }
 
-    /** Sends unsolicited text (a program's MG): every character's high bit set after {@code CW 1}. */
+    /**
+     * Sends unsolicited text (a program's MG, a program's error) to the CF port only (COMALL MG: "The CF
+     * command sets the default communication port for routing unsolicited messages"): every character's
+     * high bit set after {@code CW 1}. With CF at a port no link holds, the text is lost, as on a Galil
+     * whose serial port has nothing connected.
+     */
     void unsolicited(String text) {
         byte[] b = text.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
         if (cw == 1) {
@@ -252,7 +305,9 @@ public final class Controller implements Expressions.Scope {
             }
         }
         for (Listener l : listeners) {
-            l.unsolicited(b);
+            if (l.port() == cf) {
+                l.unsolicited(b);
+            }
         }
     }
 
@@ -354,6 +409,8 @@ public final class Controller implements Expressions.Scope {
             case "UL": return model.variables - variables.size();
             case "DA": return Model.ARRAYS - arrays.size();
             case "DM": return model.arrayElements - elements;
+            case "CF": return cf; // "the decimal value of the ASCII letter" (COMALL CF)
+            case "EO": return echo ? 1 : 0;
             default: break;
         }
         if (name.length() == 3 && name.startsWith("XQ") && Character.isDigit(name.charAt(2))) {
@@ -374,6 +431,7 @@ public final class Controller implements Expressions.Scope {
                     case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;
                     case "MO": return servo[a] ? 0 : 1;
                     case "OF": return offsets[a];
+                    case "IT": return smoothing[a];
                     // limit inputs are active low: 0 while the switch is tripped
                     case "LF": return limitTripped && a == motion.axis1 ? 0 : 1;
                     case "LR": return 1;

@@ -32,20 +32,23 @@ final class Statements {
 
     /** Accepted and stored nowhere: servo tuning, soft limits, smoothing (not modelled; docs say so). */
     private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
-            "IT", "OE", "EO", "NO");
+            "OE", "NO");
 
     String execute(String st, ProgramThread th) throws GalilException {
         if (st.isEmpty()) {
             return "";
         }
+        Matcher m = ASSIGNMENT.matcher(st);
+        boolean tool = st.startsWith("TOOL=") && st.length() > 5;
+        if (!(m.matches() && !tool)) {
+            // "Not Valid in terminal" / "Not Valid in program" (tables/galil_terminal.csv)
+            CommandRules.check(st, th);
+        }
         if (st.equals("\u0012\u0016")) {
             return c.model.revision + "\r\n";
         }
         if (st.charAt(0) == '#') {
-            if (th == null) {
-                throw new GalilException(Tc.UNRECOGNIZED);
-            }
-            return "";
+            return ""; // a label line in a program (CommandRules refused it from the host)
         }
         if (word(st, "IF") || st.equals("ELSE") || st.equals("ENDIF")) {
             if (th == null) {
@@ -54,8 +57,6 @@ final class Statements {
             flow.flow(st, th);
             return "";
         }
-        Matcher m = ASSIGNMENT.matcher(st);
-        boolean tool = st.startsWith("TOOL=") && st.length() > 5;
         if (m.matches() && !tool) {
             return assign(m.group(1), m.group(2), m.group(3).strip(), th);
         }
@@ -94,6 +95,8 @@ final class Statements {
                     throw new GalilException(Tc.RANGE);
                 }
                 c.offsets[a] = v;
+            } else if (name.startsWith("IT")) {
+                c.smoothing[a] = range(v, 0.004, 1);
             }
             return "";
         }
@@ -158,7 +161,26 @@ final class Statements {
                 return "";
             }
             case "CF":
+                return configureUnsolicited(args, th);
+            case "EO":
+                return echo(args, th);
+            case "WH":
+                if (th != null) {
+                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL WH: Not Valid in program
+                }
+                return (c.port == 'S' ? "SERIAL" : "IH" + c.port) + "\r\n";
+            case "IT": {
+                List<String> a = split(args);
+                if (a.size() > c.model.axes) {
+                    throw new GalilException(Tc.OPERAND);
+                }
+                for (int i = 0; i < a.size(); i++) {
+                    if (!a.get(i).isEmpty()) {
+                        c.smoothing[i] = range(eval(a.get(i)), 0.004, 1);
+                    }
+                }
                 return "";
+            }
             case "XQ":
                 return flow.execute(args);
             case "HX":
@@ -278,6 +300,44 @@ final class Statements {
         }
     }
 
+    /**
+     * CF: where unsolicited messages go (COMALL CF): {@code CF S} the main serial port (the power-up
+     * value), {@code CF A}..{@code CF H} an Ethernet handle, {@code CF I} the port the command came in on
+     * ("Not valid in program"). The reference offers {@code T} for an aux serial port the virtual
+     * controller does not have.
+     */
+    private String configureUnsolicited(String args, ProgramThread th) throws GalilException {
+        String a = args.strip();
+        if (a.equals("I")) {
+            if (th != null) {
+                throw new GalilException(Tc.NOT_IN_PROGRAM);
+            }
+            c.cf = c.port;
+        } else if (a.equals("S") || a.length() == 1 && a.charAt(0) >= 'A' && a.charAt(0) <= 'H') {
+            c.cf = a.charAt(0);
+        } else {
+            throw new GalilException(Tc.OPERAND);
+        }
+        return "";
+    }
+
+    /**
+     * EO: the serial port's echo (COMALL EO: "defaulted to EO1", "accepted over the serial port only";
+     * "The ethernet port will not echo commands"). From an Ethernet handle it is refused: the reference
+     * does not say with which code, TC 1 is assumed (docs/virtual-controller.md).
+     */
+    private String echo(String args, ProgramThread th) throws GalilException {
+        if (th == null && c.port != 'S') {
+            throw new GalilException(Tc.UNRECOGNIZED);
+        }
+        double n = eval(args.isEmpty() ? "1" : args);
+        if (n != 0 && n != 1) {
+            throw new GalilException(Tc.RANGE);
+        }
+        c.echo = n == 1;
+        return "";
+    }
+
     static void onlyInProgram(ProgramThread th) throws GalilException {
         if (th == null) {
             throw new GalilException(Tc.ONLY_IN_PROGRAM);
@@ -369,6 +429,9 @@ final class Statements {
         java.util.Arrays.fill(c.servo, false);
         c.lastError = Tc.NONE;
         c.cw = 2;
+        c.cf = 'S';
+        c.echo = c.model.galil.serialEcho();
+        java.util.Arrays.fill(c.smoothing, 1);
         int auto = c.program.label("AUTO");
         if (auto >= 0) {
             c.threads[0].start(auto);

@@ -732,7 +732,21 @@ public enum Code {
     /** Sender (warning): the operator stopped the run. */
     E828_STOPPED_BY_OPERATOR(828),
     /** Sender (warning): motors are off on the program's axes; its SH turns them on. */
-    E829_MOTORS_OFF(829);
+    E829_MOTORS_OFF(829),
+    /** Sender: the profile's Galil model is a bus card (ISA/PCI) that a serial or TCP sender cannot reach. */
+    E830_BUS_ONLY_MODEL(830),
+    /** Sender: the vector buffer is not empty after CS S (_LMS below the model's whole buffer). */
+    E831_BUFFER_NOT_EMPTY(831),
+    /** Sender: the saved probe report says the controller contradicts a reference fact the run relies on. */
+    E832_PROBE_CONTRADICTS(832),
+    /** Sender and probe: a probe report that cannot be read or written. */
+    E833_PROBE_REPORT(833),
+    /** Probe: the motion test was asked for without the operator's typed confirmation. */
+    E834_PROBE_NOT_CONFIRMED(834),
+    /** Probe: the motion test cannot start (a program runs, a sequence moves, a limit is active). */
+    E835_PROBE_NOT_READY(835),
+    /** Probe (warning): the controller answered against a reference fact (a row of the report). */
+    E836_PROBE_CONTRADICTION(836);
 
     private final int number;
 

@@ -196,6 +196,8 @@ public enum Phrase {
     GALIL_MODEL_TWICE,
     /** galil_models.csv: a whole number outside what the column can hold ({0} column, {1} value, {2}..{3}). */
     GALIL_MODEL_RANGE,
+    /** galil_models.csv: a cell outside its column's words ({0} column, {1} value, {2} the words it takes). */
+    GALIL_MODEL_CHOICE,
     /** galil_models.csv: a firmware-1.2a figure smaller than the older one ({0} column, {1} the older column). */
     GALIL_FIRMWARE_SMALLER,
     /** The last line of a GCC-style report (as rustc's): where to read more about an error ({0}: its code). */

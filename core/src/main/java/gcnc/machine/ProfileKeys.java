@@ -16,7 +16,7 @@ import java.util.regex.Pattern;
 final class ProfileKeys {
     /** Keys read by name: ProfileLoader (docs/profiles.md), then MachineModel (docs/simulator.md). */
     static final List<String> NAMED = List.of(
-            "name", "control", "units", "machine_zero", "chuck.driven_by", "galil.model", "galil.firmware",
+            "name", "control", "units", "machine_zero", "chuck.driven_by", "galil.model", "galil.firmware", "galil.deviations",
             "x.galil", "z.galil", "x.sign", "z.sign", "x.counts_per_mm", "z.counts_per_mm",
             "x.counts_per_inch", "z.counts_per_inch", "x.travel", "z.travel", "x.programming",
             "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",

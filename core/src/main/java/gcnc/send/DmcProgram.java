@@ -143,6 +143,16 @@ public final class DmcProgram {
         return instructions.size();
     }
 
+    /** Whether the program waits with AV (a probe row the run then relies on: AV's distance, ProbeRow.AV_RELATIVE). */
+    public boolean usesAfterVector() {
+        for (Instruction i : instructions) {
+            if (i.command() instanceof gcnc.dmc.Command.AfterVector) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** The command on line {@code index} (0-based), or null beyond the program. */
     public Command command(int index) {
         return index >= 0 && index < instructions.size() ? instructions.get(index).command() : null;

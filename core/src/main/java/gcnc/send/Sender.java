@@ -155,8 +155,7 @@ public final class Sender {
         // the model's memory (tables/galil_models.csv, the lead's GalilModel) with the firmware the controller reported
         if (model.newFirmware() && !f.firmware12a()) {
             // the profile counted on firmware 1.2a's memory; this controller runs older firmware
-            model = new gcnc.machine.GalilModel(model.name(), model.family(), model.axes(), model.digitalOutputs(),
-                    model.analogOutputs(), model.sampleMicros(), model.limits(), model.firmware12a(), false, model.row());
+            model = model.withOlderFirmware();
         }
         int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
@@ -182,10 +181,6 @@ public final class Sender {
             throw new RunFault(Code.E819_CAPACITY, 0, false, vars.size() + " variables " + vars,
                     f.variablesLeft() + " free", "clear the controller's variables (reset) and run again");
         }
-        if (f.vectorSlots() >= 0 && needSlots > f.vectorSlots()) {
-            throw new RunFault(Code.E819_CAPACITY, 0, false, needSlots + " vector buffer slots", f.vectorSlots()
-                    + " free (_LMS)", "clear the sequence (CS S) or reset the controller");
-        }
         if (!f.pendingError().isEmpty()) {
             events.accept(new Event.Message("the controller had an error pending, read and cleared with TC1: "
                     + f.pendingError()));
@@ -197,6 +192,17 @@ public final class Sender {
         }
         if (f.moving()) {
             throw new RunFault(Code.E825_NOT_READY, 0, false, "a vector sequence is moving (_BGS = 1): stop it first");
+        }
+        // nothing moves: segments an interrupted sequence left in the buffer would run first, from the new
+        // origin (COMALL CS); CS S removes them, and the buffer must then read empty (_LMS = the model's buffer)
+        int free = c.clearSequence();
+        int whole = (int) model.range(gcnc.machine.GalilModel.Limit.BUFFER_SEGMENTS).max();
+        if (free != whole) {
+            throw new RunFault(Code.E831_BUFFER_NOT_EMPTY, 0, false, Integer.toString(free), Integer.toString(whole));
+        }
+        if (needSlots > free) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needSlots + " vector buffer slots", free
+                    + " free (_LMS)", "a controller with a larger buffer");
         }
         if (!f.limits().isEmpty()) {
             throw new RunFault(Code.E825_NOT_READY, 0, false, f.limits() + " is active: move the axis off the switch");

@@ -112,7 +112,7 @@ public final class Explanations {
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         for (Code c : Code.values()) {
-            if (c.number() >= 815 && c.number() < 830) {
+            if (c.number() >= 815 && c.number() < 850) { // E830-E849: the probe and the controller the profile names
                 m.put(c, link);
             }
         }
