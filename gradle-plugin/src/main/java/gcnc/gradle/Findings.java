@@ -56,7 +56,7 @@ final class Findings {
         // for it; at the ERROR level (standard error) it would be glued to the task's header line in a
         // log that merges the two streams, and CI's file:line:col parsers would miss it.
         logger.quiet(render(file, d));
-        if (d.severity() == Severity.ERROR) {
+        if (d.severity() == Severity.ERROR && !d.waived()) {
             filesWithErrors.add(file);
         }
         all.add(Finding.of(file, d, messages));
@@ -76,8 +76,14 @@ final class Findings {
         return count(Severity.ERROR);
     }
 
+    /** Warnings and notes (not waived). */
     long warnings() {
-        return all.size() - errors();
+        return all.size() - errors() - waived();
+    }
+
+    /** Findings the programs' waivers accept ({@code (GCNC ALLOW E642: reason)}): reported, counted apart. */
+    long waived() {
+        return all.stream().filter(f -> f.diagnostic().waived()).count();
     }
 
     int filesWithErrors() {
@@ -85,7 +91,7 @@ final class Findings {
     }
 
     private long count(Severity s) {
-        return all.stream().filter(f -> f.diagnostic().severity() == s).count();
+        return all.stream().filter(f -> f.diagnostic().severity() == s && !f.diagnostic().waived()).count();
     }
 
     /** Both reports, findings sorted by file and place. */
