@@ -173,6 +173,14 @@ public final class Session {
         return waived(Compiler.check(program, settings(options.stock().map(b -> simulation()), false)), false);
     }
 
+    /**
+     * Check, and hand each checked block on as the control runs it (gcnc path: every move after the
+     * cycles, corners, nose compensation, calls and macros); no output, no simulation.
+     */
+    public Compiler.Result path(Reader program, java.util.function.Consumer<gcnc.ir.CheckedBlock> each) throws IOException {
+        return waived(Compiler.check(program, settings(options.stock().map(b -> simulation()), false), each), false);
+    }
+
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); the DMC instructions go to {@code out}. */
     public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
                                    java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
