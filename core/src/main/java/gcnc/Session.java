@@ -170,13 +170,21 @@ public final class Session {
     /** Parse and every check: no output, no simulation. */
     public Compiler.Result check(Reader program) throws IOException {
         // the blank, if one was given, places the work zero (work.G54 = face); nothing is simulated
-        return Compiler.check(program, settings(options.stock().map(b -> simulation()), false));
+        return waived(Compiler.check(program, settings(options.stock().map(b -> simulation()), false)), false);
+    }
+
+    /**
+     * Check, and hand each checked block on as the control runs it (gcnc path: every move after the
+     * cycles, corners, nose compensation, calls and macros); no output, no simulation.
+     */
+    public Compiler.Result path(Reader program, java.util.function.Consumer<gcnc.ir.CheckedBlock> each) throws IOException {
+        return waived(Compiler.check(program, settings(options.stock().map(b -> simulation()), false), each), false);
     }
 
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); the DMC instructions go to {@code out}. */
     public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
                                    java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
-        return Compiler.compile(program, settings(simulation, inlineSourceMap), out);
+        return waived(Compiler.compile(program, settings(simulation, inlineSourceMap), out), true);
     }
 
     /** Check, translate and simulate a program file as the command line's {@code compile} does, output discarded. */
@@ -204,7 +212,17 @@ public final class Session {
      */
     public Compiler.Result compileExactStop(Reader program, Optional<SimOptions> simulation,
                                             java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
-        return Compiler.compile(program, settings(simulation, false).withExactStop(), out);
+        return waived(Compiler.compile(program, settings(simulation, false).withExactStop(), out), true);
+    }
+
+    /**
+     * The program's waivers ({@code (GCNC ALLOW E642: reason)}, gcnc.diag.Waivers) applied once its
+     * findings are final: here, so that every front end reports them the same ({@code translated}:
+     * the run translated the program, so a waiver of a backend or simulator code is judged too).
+     */
+    private static Compiler.Result waived(Compiler.Result r, boolean translated) {
+        r.diagnostics().waive(translated);
+        return r;
     }
 
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {

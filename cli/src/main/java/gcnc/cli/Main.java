@@ -88,6 +88,7 @@ public final class Main implements Runnable {
         m.put("compile", CompileCommand.class);
         m.put("simulate", SimulateCommand.class);
         m.put("sheet", SheetCommand.class);
+        m.put("path", PathCommand.class);
         m.put("run", SendCommand.class);
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);

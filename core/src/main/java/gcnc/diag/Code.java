@@ -656,6 +656,23 @@ public enum Code {
      * the program's Z0 is not the face it was written for.
      */
     E663_WORK_ZERO_PINNED(663),
+    // 670-679: waivers, (GCNC ALLOW E642: reason) (issue 31; gcnc.diag.Waivers, docs/language.md "Waivers")
+    /** Parser (warning): a waiver without a reason after its ':': it waives nothing until it says why. */
+    E670_WAIVER_NO_REASON(670),
+    /** Parser (warning): a waiver names a code gcnc does not have: it waives nothing. */
+    E671_WAIVER_UNKNOWN_CODE(671),
+    /** Warning: a waiver on a block where its code is not found: it waives nothing. */
+    E672_WAIVER_UNUSED(672),
+    /** Warning: a FILE waiver whose code is not found in the rest of the file: it waives nothing. */
+    E673_WAIVER_FILE_UNUSED(673),
+    /** Warning: a waiver names a simulator error (a collision, a limit, the replay): it cannot be waived. */
+    E674_WAIVER_NOT_ALLOWED(674),
+    /** Compile error: an error is waived, but the block it was found in was never translated. */
+    E675_WAIVED_ERROR_NOT_TRANSLATED(675),
+    /** Parser (warning): a comment that starts GCNC ALLOW but is not a waiver's form. */
+    E676_WAIVER_FORM(676),
+    /** Warning: a waiver names one of the waivers' own codes (E670-E679), which cannot be waived. */
+    E677_WAIVER_OF_WAIVER(677),
     /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
     E680_FOLDED(680),
     /** Note: the cap on warnings and notes was reached; later ones are not kept. */
@@ -761,6 +778,16 @@ public enum Code {
     /** The form users see and search for: {@code E037}. */
     public String id() {
         return String.format("E%03d", number);
+    }
+
+    /** The code with number {@code n}, if gcnc has one. */
+    public static java.util.Optional<Code> find(int n) {
+        for (Code c : values()) {
+            if (c.number == n) {
+                return java.util.Optional.of(c);
+            }
+        }
+        return java.util.Optional.empty();
     }
 
     public static Code byNumber(int n) {

@@ -203,7 +203,9 @@ public enum Phrase {
     /** The last line of a GCC-style report (as rustc's): where to read more about an error ({0}: its code). */
     EXPLAIN_HINT_ERROR,
     /** The same for a run whose findings are warnings only ({0}: the first warning's code). */
-    EXPLAIN_HINT_WARNING;
+    EXPLAIN_HINT_WARNING,
+    /** A waived finding's GCC-style text ({0}: the waiver's reason, {1}: the finding's message). */
+    WAIVED;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

@@ -62,7 +62,7 @@ final class Findings {
         if (printed.add(line)) {
             logger.quiet(line);
         }
-        if (d.severity() == Severity.ERROR) {
+        if (d.severity() == Severity.ERROR && !d.waived()) {
             filesWithErrors.add(file);
         }
         all.add(Finding.of(file, d, messages));
@@ -82,8 +82,14 @@ final class Findings {
         return count(Severity.ERROR);
     }
 
+    /** Warnings and notes (not waived). */
     long warnings() {
-        return all.size() - errors();
+        return all.size() - errors() - waived();
+    }
+
+    /** Findings the programs' waivers accept ({@code (GCNC ALLOW E642: reason)}): reported, counted apart. */
+    long waived() {
+        return all.stream().filter(f -> f.diagnostic().waived()).count();
     }
 
     int filesWithErrors() {
@@ -91,7 +97,7 @@ final class Findings {
     }
 
     private long count(Severity s) {
-        return all.stream().filter(f -> f.diagnostic().severity() == s).count();
+        return all.stream().filter(f -> f.diagnostic().severity() == s && !f.diagnostic().waived()).count();
     }
 
     /** Both reports, findings sorted by file and place. */

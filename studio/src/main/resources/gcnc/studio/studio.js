@@ -71,8 +71,9 @@ async function lint(view) {
     const from = Math.min(line.from + Math.max(d.column, 1) - 1, line.to);
     let to = d.endColumn ? Math.min(line.from + d.endColumn - 1, line.to) : from;
     if (to <= from) to = Math.min(line.to, from + 1);
-    return { from, to: Math.max(to, from), severity: d.severity === "error" ? "error" : "warning",
-      message: `${d.code} ${d.message}`, source: "gcnc" };
+    // a finding the program's waiver accepts (GCNC ALLOW) is shown as information, with the waiver's reason
+    return { from, to: Math.max(to, from), severity: d.waived ? "info" : d.severity === "error" ? "error" : "warning",
+      message: `${d.code} ${shownMessage(d)}`, source: "gcnc" };
   });
 }
 
@@ -164,15 +165,20 @@ function dirtyChanged() {
 
 // ---- the error list -----------------------------------------------------------------------------------
 
+/** A finding's message; a waived one's with the waiver's reason before it ("waived: reason: ..."). */
+function shownMessage(d) {
+  return d.waived ? `${t.waived}: ${d.waived}: ${d.message}` : d.message;
+}
+
 function showProblems(report) {
   const body = $("errors").querySelector("tbody");
   body.replaceChildren();
   for (const d of report.diagnostics) {
     const tr = document.createElement("tr");
-    tr.className = d.severity;
+    tr.className = d.waived ? "waived" : d.severity;
     tr.dataset.line = d.line;
     tr.dataset.column = d.column;
-    for (const v of [d.code, d.message, d.line, d.column]) {
+    for (const v of [d.code, shownMessage(d), d.line, d.column]) {
       const td = document.createElement("td");
       td.textContent = v;
       tr.appendChild(td);
@@ -182,8 +188,8 @@ function showProblems(report) {
     tr.addEventListener("keydown", (e) => { if (e.key === "Enter") goTo(d.line, d.column); });
     body.appendChild(tr);
   }
-  $("counts").textContent = report.errors + report.warnings === 0 ? "— " + t.noErrors
-    : "— " + t.nErrors(report.errors, report.warnings);
+  $("counts").textContent = (report.errors + report.warnings === 0 ? "— " + t.noErrors
+    : "— " + t.nErrors(report.errors, report.warnings)) + (report.waived ? ", " + t.nWaived(report.waived) : "");
 }
 
 // ---- tool path and DMC --------------------------------------------------------------------------------
