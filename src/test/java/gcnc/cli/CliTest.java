@@ -59,13 +59,32 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
-    /** The README shows the simulation of docs/examples/back-turn.nc (E320 on N100); it must be what gcnc prints. */
+    /**
+     * The README's command 1 (the bushing, from a 1.5 in bar) prints what the README shows under it: the
+     * first numbers a newcomer reads are in the program's terms (issue 34).
+     */
     @Test
-    void theReadmeBackTurnIsWhatGcncPrints() throws IOException {
+    void theReadmeCommandOneIsWhatGcncPrints() throws IOException {
         String readme = Files.readString(Path.of("README.md"));
+        String command = "java -jar build/libs/gcnc.jar compile docs/examples/bushing.nc --machine haas"
+                + " --stock 1.5in,200mm,150mm -o bushing.dmc\n";
+        assertTrue(readme.indexOf(command) >= 0 && readme.indexOf(command) < 1000, "README's command 1 is not the bushing");
+        int from = readme.indexOf("```\n", readme.indexOf("Command 1 prints")) + 4;
+        String shown = readme.substring(from, readme.indexOf("```", from));
+        Path out = Files.createTempDirectory("gcnc-readme").resolve("bushing.dmc");
+        Run r = gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "1.5in,200mm,150mm",
+                "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertEquals(shown, (r.err() + r.out()).replace(out.toString(), "bushing.dmc"));
+    }
+
+    /** docs/guide.md shows the simulation of docs/examples/back-turn.nc (E320 on N100); it must be what gcnc prints. */
+    @Test
+    void theGuidesBackTurnIsWhatGcncPrints() throws IOException {
+        String readme = Files.readString(Path.of("docs/guide.md"));
         String command = "$ java -jar build/libs/gcnc.jar simulate docs/examples/back-turn.nc\n";
         int from = readme.indexOf(command);
-        assertTrue(from >= 0, "README lost its example");
+        assertTrue(from >= 0, "docs/guide.md lost its example");
         from += command.length();
         String shown = readme.substring(from, readme.indexOf("```", from));
         Run r = gcnc("simulate", "docs/examples/back-turn.nc");
