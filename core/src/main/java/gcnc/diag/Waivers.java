@@ -41,7 +41,8 @@ public final class Waivers {
 
     /** The simulator's codes that are not errors (a note, warnings): they can be waived as any other. */
     private static final Set<Code> SIMULATOR_NOT_ERRORS = Set.of(Code.E316_SIM_NO_STOCK, Code.E321_SIM_STATION_ASSUMED,
-            Code.E322_SIM_STATION_TIP_ONLY, Code.E330_CYCLE_MANY_PECKS, Code.E331_MAP_NOT_THIS_DMC);
+            Code.E322_SIM_STATION_TIP_ONLY, Code.E330_CYCLE_MANY_PECKS, Code.E331_MAP_NOT_THIS_DMC,
+            Code.E340_SIM_THREAD_PHASE);
 
     private final List<Waiver> all = new ArrayList<>();
 
