@@ -67,7 +67,7 @@ class GoldenTest {
     @TestFactory
     Stream<DynamicTest> everySampleMatchesItsGoldenFile() {
         boolean update = Boolean.getBoolean("gcnc.updateGolden");
-        return CASES.stream().map(c -> dynamicTest(c.sample() + " on " + c.machine() + ", " + c.dialect() + " dialect", () -> {
+        return CASES.stream().map(c -> dynamicTest(c.sample() + ".nc: " + c.golden().getFileName(), () -> {
             String actual = compile(c);
             if (update) {
                 Files.createDirectories(c.golden().getParent());
@@ -79,7 +79,7 @@ class GoldenTest {
 
     @TestFactory
     Stream<DynamicTest> compilingTwiceGivesTheSameBytes() {
-        return CASES.stream().map(c -> dynamicTest(c.sample() + " is deterministic", () -> assertEquals(compile(c), compile(c))));
+        return CASES.stream().map(c -> dynamicTest(c.golden().getFileName() + " twice", () -> assertEquals(compile(c), compile(c))));
     }
 
     /**
