@@ -29,6 +29,11 @@ class CliTest {
         return run(Main.commandLine(new Main.Streams(System.in, System.out), HelpLanguage.of(args, env)), args);
     }
 
+    /** gcnc with its standard output (where {@code -o -} writes the DMC) into {@code stdout}, not the test JVM's. */
+    static Run gcnc(java.io.OutputStream stdout, String... args) {
+        return run(Main.commandLine(new Main.Streams(System.in, stdout), HelpLanguage.of(args, System.getenv()), args), args);
+    }
+
     private static Run run(CommandLine cl, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();

@@ -91,6 +91,26 @@ class StudioBrowserTest {
         return browser.findElements(By.cssSelector("#errors tbody tr"));
     }
 
+    /**
+     * The cells of the error list's one row, once it is {@code code}'s: read in one go inside a wait,
+     * since every check (each key typed, the simulation after it) redraws the list and a row found a
+     * moment ago may be gone or another's.
+     */
+    private List<String> onlyError(String code) {
+        return wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d -> {
+            List<WebElement> rows = errorRows();
+            List<String> cells = rows.size() != 1 ? List.of()
+                    : rows.get(0).findElements(By.tagName("td")).stream().map(WebElement::getText).toList();
+            return !cells.isEmpty() && cells.get(0).equals(code) ? cells : null;
+        });
+    }
+
+    /** Waits until the program list, as drawn now, has {@code name} chosen (a folder's change event redraws it). */
+    private void waitChosen(String name) {
+        wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d ->
+                name.equals(new Select(d.findElement(By.id("files"))).getFirstSelectedOption().getText()));
+    }
+
     private int cursorLine() {
         return Integer.parseInt(browser.findElement(By.id("cursor")).getAttribute("data-line"));
     }
@@ -99,12 +119,11 @@ class StudioBrowserTest {
     void aBrokenLineGetsItsDiagnosticUnderItAndLosesItWhenFixed() throws IOException {
         WebElement content = endOfLine(6); // N135 G01 Z-04500
         content.sendKeys(" Q");
-        wait.until(d -> errorRows().size() == 1);
-        List<WebElement> cells = errorRows().get(0).findElements(By.tagName("td"));
-        assertEquals("E006", cells.get(0).getText());
-        assertEquals("expecting a number for parameter Q", cells.get(1).getText());
-        assertEquals("6", cells.get(2).getText());
-        assertEquals("18", cells.get(3).getText());
+        List<String> cells = onlyError("E006");
+        assertEquals("E006", cells.get(0));
+        assertEquals("expecting a number for parameter Q", cells.get(1));
+        assertEquals("6", cells.get(2));
+        assertEquals("18", cells.get(3));
         // underlined on its own line, and marked in the gutter
         WebElement sixth = browser.findElements(By.cssSelector(".cm-content .cm-line")).get(5);
         wait.until(d -> !sixth.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
@@ -130,7 +149,10 @@ class StudioBrowserTest {
         wait.until(d -> errorRows().size() == 1);
         browser.findElement(By.cssSelector(".cm-content")).sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
         wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "1"));
-        errorRows().get(0).click();
+        wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d -> {
+            errorRows().get(0).click();
+            return true;
+        });
         wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "46"));
         assertEquals("Line 46, column 25", browser.findElement(By.id("cursor")).getText());
     }
@@ -244,7 +266,7 @@ class StudioBrowserTest {
         });
         wait.until(ExpectedConditions.alertIsPresent()).dismiss();
         assertTrue(browser.findElement(By.cssSelector(".cm-content")).getText().contains("(mine) (more)"));
-        assertEquals("bishop.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
+        waitChosen("bishop.nc");
     }
 
     @Test
@@ -258,7 +280,7 @@ class StudioBrowserTest {
         assertTrue(Files.readString(dir.resolve("copy.nc")).contains("Z-04500 (copy)\n"));
         assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")));
         assertTrue(browser.getCurrentUrl().endsWith("&file=copy.nc"), browser.getCurrentUrl());
-        assertEquals("copy.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
+        waitChosen("copy.nc"); // the list redrawn by the save, and again by the folder's change event
     }
 
     @Test
@@ -271,8 +293,7 @@ class StudioBrowserTest {
         WebElement content = browser.findElement(By.cssSelector(".cm-content"));
         content.click();
         content.sendKeys("G00 X+2234 Z+00100");
-        wait.until(d -> errorRows().size() == 1); // the thesis's programs end with M30
-        assertEquals("E052", errorRows().get(0).findElement(By.tagName("td")).getText());
+        assertEquals("E052", onlyError("E052").get(0)); // the thesis's programs end with M30
         content.sendKeys(Keys.ENTER, "M30");
         wait.until(d -> errorRows().isEmpty());
         assertFalse(Files.exists(dir.resolve("fresh.nc")), "nothing is written before Save");
@@ -290,8 +311,7 @@ class StudioBrowserTest {
             wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
             wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "sin errores"));
             endOfLine(6).sendKeys(" Q");
-            wait.until(d -> errorRows().size() == 1);
-            String message = errorRows().get(0).findElements(By.tagName("td")).get(1).getText();
+            String message = onlyError("E006").get(1);
             assertFalse(message.equals("expecting a number for parameter Q"), message);
             assertTrue(message.contains("Q"), message);
             assertEquals("Errores", browser.findElement(By.cssSelector("#problems h2 span")).getText());

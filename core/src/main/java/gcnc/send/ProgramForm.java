@@ -194,10 +194,15 @@ public final class ProgramForm implements Form {
      * sequence's segment {@code css} executes: the line's last command, except in a vector sequence, where
      * the thread waits at {@code AMS} while the segments run: there the segment executing names the
      * line, so that a blended sequence's blocks are followed one by one; before its {@code BGS} the
-     * sequence's first segment is next.
+     * sequence's first segment is next. -1 when the line is one of the program's routines (after its
+     * {@code EN}: #LIMSWI, #FAULT ...), where a fault sent the thread while the axes come to rest: no
+     * block executes there, and the last poll's block stands.
      */
     static int executing(Piece piece, int xq, int css, DmcProgram program) {
         int at = piece.lastOf(xq); // a packed line ends at its wait: that is where the thread stands
+        if (at >= routines(piece.commands())) {
+            return -1;
+        }
         Piece.Segments segments = piece.segmentsAt(at, program);
         if (segments == null || segments.origins().length == 0) {
             return piece.originOf(at);
@@ -210,7 +215,7 @@ public final class ProgramForm implements Form {
 
     /**
      * After a stop, where the machine came to rest: the axes ({@code TP}) on the path of the first
-     * vector sequence, from the line thread 0 was at when last polled ({@code lastXq}) on, whose
+     * vector sequence, from the line of a block thread 0 was at when last polled ({@code lastXq}) on, whose
      * segments they stand on, and in it the segment {@code _CSS} names (it keeps its number after
      * the sequence ended). Between polls the program may have run on into the next sequence, or a
      * blended sequence through several short segments, so the blocks completed and executing are
@@ -280,9 +285,13 @@ public final class ProgramForm implements Form {
                 endedAtItsEnd(piece, lastXq, c, progress, op);
                 return;
             }
-            lastXq = xq;
             double[] at = c.position();
-            progress.at(executing(piece, xq, where[1], progress.program()), at, op);
+            int executing = executing(piece, xq, where[1], progress.program());
+            if (executing >= 0) {
+                // a poll in a fault's routine leaves the line to search for the stop from (settled) at the block's
+                lastXq = xq;
+            }
+            progress.at(executing, at, op);
             // a hold, a dwell and a thread pass's wait for the spindle are not stalls
             Sequence s = progress.program().sequenceAt(progress.executingIndex());
             if (stall.stalled(at, s != null && !s.isThreadPass() && !hold.held() && op.override() > 0)) {
