@@ -88,4 +88,47 @@ class StudioAttackTest {
         assertEquals(413, r.status(), r.body().substring(0, Math.min(200, r.body().length())));
         assertTrue(Files.notExists(dir.resolve("big.nc")));
     }
+
+    /** A request written as it is, and the status of the answer (the socket waits at most 20 s). */
+    static int raw(String head) throws IOException {
+        try (java.net.Socket s = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), studio.port())) {
+            s.setSoTimeout(20000);
+            s.getOutputStream().write(head.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+            String answer = new String(s.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.ISO_8859_1);
+            return Integer.parseInt(answer.substring(9, 12));
+        }
+    }
+
+    @Test
+    void connectionsThatSendHalfAHeadLeaveTheStudioAnsweringStopIncluded() throws IOException {
+        List<java.net.Socket> half = new ArrayList<>();
+        try {
+            for (int i = 0; i < 12; i++) {
+                java.net.Socket s = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), studio.port());
+                s.getOutputStream().write("GET /api/info HTTP/1.1\r\nHost: 127.0".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+                s.getOutputStream().flush();
+                half.add(s);
+            }
+            // each within the client's 20 s (they waited minutes: six threads, each held by half a head)
+            assertEquals(200, request(studio, "GET", "/api/info", good(studio), null).status());
+            assertRefused(409, post("run/stop", new JsonObject())); // Stop answers: there is no run to stop
+            assertEquals(200, request(studio, "GET", "/api/files", good(studio), null).status());
+        } finally {
+            for (java.net.Socket s : half) {
+                s.close();
+            }
+        }
+    }
+
+    @Test
+    void aSecondHostOrAnAbsoluteTargetIsRefused() throws IOException {
+        String host = "Host: 127.0.0.1:" + studio.port() + "\r\n";
+        String token = Guard.TOKEN_HEADER + ": " + studio.token() + "\r\n";
+        assertEquals(200, raw("GET /api/info HTTP/1.1\r\n" + host + token + "Connection: close\r\n\r\n"));
+        assertEquals(400, raw("GET /api/info HTTP/1.1\r\n" + host + "Host: evil.example\r\n" + token
+                + "Connection: close\r\n\r\n"));
+        assertEquals(400, raw("GET http://evil.example/api/info HTTP/1.1\r\n" + host + token + "Connection: close\r\n\r\n"));
+        assertEquals(400, raw("GET http://127.0.0.1:" + studio.port() + "/api/info HTTP/1.1\r\n" + host + token
+                + "Connection: close\r\n\r\n"));
+    }
 }
