@@ -82,7 +82,7 @@ final class PathCommand implements Callable<Integer> {
         String name = SourceFiles.display(file);
         String targetName = toStdout ? "<stdout>" : output.toString();
         Main.Streams streams = ((Main) spec.root().userObject()).streams();
-        try (AtomicOutput o = toStdout ? AtomicOutput.toStream(streams.out()) : new AtomicOutput(output)) {
+        try (AtomicOutput o = toStdout ? AtomicOutput.toStream(streams.out()) : AtomicOutput.open(output, AtomicOutput.Name.GIVEN)) {
             if (!toStdout && !SourceFiles.isStdin(file)) {
                 AtomicOutput.refuseInput(SourceFiles.fileOf(file), output);
             }

@@ -182,7 +182,7 @@ final class SendCommand implements Callable<Integer> {
         List<Instruction> compiled = new ArrayList<>();
         DmcProgram program;
         gcnc.dmc.Form chosen;
-        try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
+        try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(file.getFileName().toString(), file);
             Consumer<Instruction> written = outputs.sink(asked, setup.profile().controllerLimits());
             Consumer<Instruction> sink = i -> {

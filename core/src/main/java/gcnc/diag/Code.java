@@ -546,6 +546,12 @@ public enum Code {
     E506_OUT_OF_MEMORY(506),
     /** A side file gcnc writes unasked (the source map, OUT.map) is a symbolic link: gcnc does not write through it. */
     E510_SIDE_FILE_IS_LINK(510),
+    /** Simulation: the blank's diameter (a stock header, NO STOCK, the profile's) is more than twice the X travel's reach. */
+    E511_BLANK_TOO_WIDE(511),
+    /** Simulation: the blank sticks out of the jaws further than the Z travel is long. */
+    E512_BLANK_STICKS_OUT_TOO_FAR(512),
+    /** Simulation: the blank is longer than gcnc models (ten times the Z travel's length). */
+    E513_BLANK_TOO_LONG(513),
 
     // 600-619: the parser's leniency and G01 chamfering and corner rounding (issue 17).
     /** Parser: a space inside a number (X10 5 reads as X105; not warned in a T word, T1 01). */
@@ -711,6 +717,11 @@ public enum Code {
      * at it): not read by gcnc either, said once as a note at its first character.
      */
     E705_AFTER_TAPE_END(705),
+    /**
+     * Program flow: the run went through more blocks than its budget (ProgramFlow.budget: a constant
+     * and so many per line of the program), inside a loop still running: taken for endless.
+     */
+    E710_MACRO_BUDGET(710),
 
     // --- drilling and tapping as the Fusion fanuc post writes them (issue 17, drill): E720-E729
     /**
@@ -763,7 +774,11 @@ public enum Code {
     /** Probe: the motion test cannot start (a program runs, a sequence moves, a limit is active). */
     E835_PROBE_NOT_READY(835),
     /** Probe (warning): the controller answered against a reference fact (a row of the report). */
-    E836_PROBE_CONTRADICTION(836);
+    E836_PROBE_CONTRADICTION(836),
+    /** Simulate (note): the DMC is a stream form's resident program: its motion is in the stream beside it. */
+    E864_RESIDENT_WITHOUT_STREAM(864),
+    /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */
+    E865_PORT_NOT_A_DEVICE(865);
 
     private final int number;
 

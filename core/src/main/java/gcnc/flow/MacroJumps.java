@@ -23,6 +23,18 @@ final class MacroJumps {
         this.diags = diags;
     }
 
+    /** A loop as it last came round: its statement, where it is, and how many times it has run from its entry. */
+    record Pass(String text, gcnc.diag.Span at, int passes) {
+    }
+
+    /** The loop that last came round (the innermost running), or null before any did. */
+    private Pass last;
+
+    /** The loop that last came round, for the run's budget (ProgramFlow, E710); null when none has. */
+    Pass last() {
+        return last;
+    }
+
     /** GOTO n: the block labelled N n, searched from the GOTO to the end, then from the start. */
     void goTo(Frame f, MacroLine.Jump j, int at) throws IOException {
         int target = find(f.blocks, j.label(), at);
@@ -33,6 +45,7 @@ final class MacroJumps {
         if (target <= at) {
             String key = System.identityHashCode(f.blocks) + ":" + at;
             int n = jumpsBack.merge(key, 1, Integer::sum);
+            last = new Pass(j.text(), j.at(), n + 1);
             if (n > ProgramFlow.LOOP_LIMIT) {
                 diags.error(Code.E149_MACRO_ENDLESS_LOOP, j.at(), j.text(), j.at().line(), ProgramFlow.LOOP_LIMIT);
                 return;
@@ -48,6 +61,9 @@ final class MacroJumps {
         f.cameBack = false;
         f.whileAt[id] = at;
         f.turns[id] = again ? f.turns[id] + 1 : 1;
+        if (again) {
+            last = new Pass(l.text(), l.at(), f.turns[id]);
+        }
         boolean holds = l.holds();
         if (holds && f.turns[id] > ProgramFlow.LOOP_LIMIT) {
             diags.error(Code.E149_MACRO_ENDLESS_LOOP, l.at(), l.text(), l.at().line(), ProgramFlow.LOOP_LIMIT);

@@ -69,6 +69,13 @@ final class MotionChecks {
         this.kx = profile.x().countsPerMm();
         this.kz = profile.z().countsPerMm();
         StockSize s = options.noBlank() ? null : options.stock().orElse(machine.stock().orElse(null));
+        java.util.Optional<StockSize.Beyond> beyond = s == null ? java.util.Optional.empty() : s.beyond(profile);
+        if (beyond.isPresent()) {
+            // a stock header's or NO STOCK's size the machine cannot hold: said at the program's first
+            // line (where the header is), and the run goes on without a blank rather than model it
+            out.report(beyond.get().code(), 1, StockSize.shown(beyond.get().value()), mm(beyond.get().limit()), profile.name());
+            s = null;
+        }
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
             stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);

@@ -98,7 +98,7 @@ public final class Explanations {
             m.put(Code.byNumber(n), files);
         }
         String dmc = "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)";
-        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335}) {
+        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335, 864}) {
             m.put(Code.byNumber(n), dmc);
         }
         String second = "the backend's or the simulator's guard behind a check that comes first for any program"
@@ -112,7 +112,7 @@ public final class Explanations {
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         for (Code c : Code.values()) {
-            if (c.number() >= 815 && c.number() < 850) { // E830-E849: the probe and the controller the profile names
+            if (c.number() >= 815 && c.number() < 850 || c == Code.E865_PORT_NOT_A_DEVICE) { // E830-E849: the probe and the controller the profile names
                 m.put(c, link);
             }
         }

@@ -3,8 +3,6 @@ package gcnc.gradle;
 import gcnc.diag.Finding;
 import gcnc.diag.Severity;
 import java.io.IOException;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -31,7 +29,8 @@ final class HtmlReport {
         long errors = sorted.stream().filter(f -> f.diagnostic().severity() == Severity.ERROR && !f.diagnostic().waived()).count();
         long waived = sorted.stream().filter(f -> f.diagnostic().waived()).count();
         Files.createDirectories(out.getParent());
-        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+        // a name the plugin chose in the build folder: never written through a link planted there (E510)
+        gcnc.output.AtomicOutput.write(out, gcnc.output.AtomicOutput.Name.DERIVED, w -> {
             w.write("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>gcnc " + esc(task)
                     + "</title>\n<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
                     + "td,th{border:1px solid #ccc;padding:2px 8px;text-align:left;vertical-align:top}"
@@ -68,7 +67,7 @@ final class HtmlReport {
                 w.write("</ul>\n");
             }
             w.write("</body></html>\n");
-        }
+        });
     }
 
     /** The program's lines as gcnc reads them; none when it cannot be read (its finding says why). */

@@ -111,7 +111,7 @@ final class Analysis {
     JsonObject compile(String name, Path program, Path dmc) throws IOException {
         JsonObject doc = new JsonObject();
         Compiler.Result r;
-        try (FormOutputs outputs = FormOutputs.open(program, dmc, true)) {
+        try (FormOutputs outputs = FormOutputs.open(program, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
                 // the form that fits the profile's controller, as gcnc compile chooses it

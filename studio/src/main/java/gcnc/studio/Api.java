@@ -44,6 +44,12 @@ final class Api implements AutoCloseable {
     private volatile boolean closed;
     /** Each stream holds one of the server's threads: a few pages, and the rest keep answering. */
     static final int MAX_STREAMS = 3;
+    /**
+     * The checks, simulations and compiles that run at once (each may hold a program of 8 MB and its
+     * path): the rest wait their turn, while the light endpoints (the file list, save, Run's hold and
+     * stop) never wait for them.
+     */
+    private static final java.util.concurrent.Semaphore HEAVY = new java.util.concurrent.Semaphore(4);
 
     Api(Workspace workspace, Studio.Config config) {
         this.workspace = workspace;
@@ -100,7 +106,13 @@ final class Api implements AutoCloseable {
      */
     private static void timed(HttpExchange ex, Work work) throws IOException, Http.Fail {
         long start = System.nanoTime();
-        JsonObject answer = work.run();
+        JsonObject answer;
+        HEAVY.acquireUninterruptibly();
+        try {
+            answer = work.run();
+        } finally {
+            HEAVY.release();
+        }
         ex.getResponseHeaders().set("Server-Timing", String.format(Locale.ROOT, "gcnc;dur=%.1f", (System.nanoTime() - start) / 1e6));
         Http.json(ex, 200, answer);
     }
