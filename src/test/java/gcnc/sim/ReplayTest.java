@@ -92,6 +92,21 @@ class ReplayTest {
     }
 
     /**
+     * The command reference's AV replayed by the simulator: "measured from the start of a coordinated move
+     * sequence or from the last AV command", so in a 3,000-count sequence AV 1000 then AV 1500 trips at
+     * 2,500 counts (on the path), and AV 1000 then AV 2500 at 3,500: past its end (E334), though 2,500
+     * alone would be on it.
+     */
+    @Test
+    void anAvMeasuresFromTheLastAvAndTheirSumMustBeOnThePath() throws Exception {
+        String head = "#GCNC\nSH XY\nVM XY\nVS 10000\nVP 1000,0\nVP 2000,0\nVP 3000,0\nVE\nBGS\nAV 1000\n";
+        assertEquals(List.of(), replay(head + "AV 1500\nAMS\nEN\n", "generic"));
+        assertEquals(List.of("E334@11"), replay(head + "AV 2500\nAMS\nEN\n", "generic"));
+        assertEquals(List.of(), replay(head + "AMS\nVS 10000\nVP 3000,0\nVE\nBGS\nAV 2500\nAMS\nEN\n", "generic"),
+                "a new sequence measures from its own start");
+    }
+
+    /**
      * On thesis-2004 a feed of F1000 has the VS of a rapid: the DMC marks it (NO G01), so that a
      * replay of the DMC by itself cuts with it instead of reporting a rapid into the blank.
      */

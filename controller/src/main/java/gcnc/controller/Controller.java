@@ -71,9 +71,9 @@ public final class Controller implements Expressions.Scope {
         }
         this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
             @Override
-            public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
+            public void segmentDone(int sequence, int number, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {
-                    Controller.this.trace.segment(sequence, css, s, free, t);
+                    Controller.this.trace.segment(sequence, number, s, free, t);
                 }
             }
 
@@ -121,6 +121,11 @@ public final class Controller implements Expressions.Scope {
         if (trace != null) {
             trace.event(text, t);
         }
+    }
+
+    /** An event of the trace at the controller's time now (an AV's trip: docs/virtual-controller.md, "Trace"). */
+    void traceEvent(String text) {
+        event(text, time);
     }
 
     public void addListener(Listener l) {

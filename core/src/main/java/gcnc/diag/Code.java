@@ -477,7 +477,10 @@ public enum Code {
     E333_SIM_SPEED_CHANGE_TOO_SHORT(333),
 
     // 334-339: the planner's work checked by the replay (docs/galil.md, "Continuous contouring").
-    /** An AV trip point past the end of the sequence it waits on: the controller never reaches it and the program waits there. */
+    /**
+     * An AV trip point (the sum of the sequence's AV distances: AV is relative) past the end of the
+     * sequence it waits on: the controller never reaches it; what it does then its reference does not say.
+     */
     E334_SIM_TRIP_PAST_END(334),
     /** An output or speed set on the way (after AV) at a point of the path that is not where its block stands in the program. */
     E335_SIM_SWITCHED_ELSEWHERE(335),

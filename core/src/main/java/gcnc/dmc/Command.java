@@ -181,8 +181,12 @@ public sealed interface Command {
     }
 
     /**
-     * {@code AV n}: wait until the sequence has run n counts along its path (from its start; a
-     * trippoint of a program thread, the motion goes on): what follows happens there.
+     * {@code AV n}: wait until the sequence has run n more counts along its path, measured from its
+     * start for its first AV and from the last AV's trip point after that (Galil's command reference
+     * AV: "from the start of a coordinated move sequence or from the last AV command"; DMC-40x0 User
+     * Manual p.86, "After Relative Vector distance"); a trippoint of a program thread, the motion goes
+     * on: what follows happens there. The trip point from the sequence's start is the sum of the
+     * sequence's AVs so far, what {@code _AVS} reads there.
      */
     record AfterVector(long counts) implements Command {
         public <R> R accept(Visitor<R> v) {
