@@ -526,6 +526,10 @@ public enum Code {
     E433_TURRET_STATIONS(433),
     /** Profile: homing.check is neither position, IN n, nor none. */
     E434_HOMING_CHECK(434),
+    /** Profile: an input (IN n, turret.in_position) that is no digital input @IN reads on the model (command reference @IN). */
+    E436_INPUT_RANGE(436),
+    /** Profile: spindle.output = AO n with n outside 1,000-8,999, the only I/O numbers AO takes (command reference AO). */
+    E437_ANALOG_OUTPUT_RANGE(437),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
