@@ -212,6 +212,21 @@ class VirtualGalilTest {
         assertEquals(" 511.0000\r\n", ok("MG _LMS"), "a stopped sequence leaves the buffer empty");
     }
 
+    /** IT is recorded and read back; below 1 it is not modelled, and the trace says so (command reference IT). */
+    @Test
+    void smoothingIsRecordedAndAValueBelowOneIsReported() throws GalilException {
+        assertEquals(" 1.0000\r\n", ok("MG _ITX"), "1 at power-up: no filtering");
+        ok("IT 1,1");
+        assertFalse(trace.toString().contains("smoothing"), trace.toString());
+        ok("IT ,0.5");
+        assertEquals(" 1.0000 0.5000\r\n", ok("MG _ITX,_ITY"));
+        assertTrue(trace.toString().contains("IT B 0.5000: smoothing not modelled"), trace.toString());
+        ok("ITX=0.25");
+        assertEquals(" 0.2500\r\n", ok("MG _ITX"));
+        assertEquals(Tc.RANGE, rejected("IT 0"), "0.004 to 1");
+        assertEquals(Tc.RANGE, rejected("IT 2"));
+    }
+
     @Test
     void theBufferHoldsFiveHundredElevenSegments() throws GalilException {
         ok("SH XY");

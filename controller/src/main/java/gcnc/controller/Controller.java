@@ -35,6 +35,11 @@ public final class Controller implements Expressions.Scope {
     private int passes;
     final boolean[] servo;
     final double[] offsets;
+    /**
+     * IT of each axis, 1 at power-up ("1 means no filtering", command reference IT). Recorded and read back
+     * ({@code _ITa}); a value below 1 is not modelled (the motion runs unfiltered) and the trace says so.
+     */
+    final double[] smoothing;
     long outputs;
     /** Inputs read 1 when nothing pulls them low (Galil's inputs are pulled up). */
     long inputs = -1L;
@@ -66,6 +71,8 @@ public final class Controller implements Expressions.Scope {
         this.trace = trace == null ? null : new Trace(trace);
         this.servo = new boolean[model.axes];
         this.offsets = new double[model.axes];
+        this.smoothing = new double[model.axes];
+        java.util.Arrays.fill(smoothing, 1);
         for (int i = 0; i < threads.length; i++) {
             threads[i] = new ProgramThread(i);
         }
@@ -120,6 +127,25 @@ public final class Controller implements Expressions.Scope {
     private void event(String text, double t) {
         if (trace != null) {
             trace.event(text, t);
+        }
+    }
+
+    /**
+     * {@code IT} of axis {@code a}: 0.004 to 1, resolution 1/256 (command reference IT). Below 1 the real
+     * controller filters the axis in VM and the motion takes longer; the virtual one does not smooth, so it
+     * says so in the trace (docs/virtual-controller.md).
+     */
+    void smooth(int a, double v) throws GalilException {
+        if (a < 0 || a >= model.axes) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        if (v < 0.004 || v > 1) {
+            throw new GalilException(Tc.RANGE);
+        }
+        smoothing[a] = v;
+        if (v != 1) {
+            event(String.format(Locale.ROOT, "IT %c %.4f: smoothing not modelled, the motion runs unfiltered (IT 1)",
+                    (char) ('A' + a), v), time);
         }
     }
 
@@ -364,6 +390,7 @@ public final class Controller implements Expressions.Scope {
                     case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;
                     case "MO": return servo[a] ? 0 : 1;
                     case "OF": return offsets[a];
+                    case "IT": return smoothing[a];
                     // limit inputs are active low: 0 while the switch is tripped
                     case "LF": return limitTripped && a == motion.axis1 ? 0 : 1;
                     case "LR": return 1;

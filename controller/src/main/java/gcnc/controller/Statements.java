@@ -30,9 +30,9 @@ final class Statements {
     private static final java.util.Set<String> AXIS_ASSIGNABLE = java.util.Set.of("KP", "KI", "KD", "ER", "OF", "BL",
             "FL", "TL", "AC", "DC", "SP", "IT", "OE");
 
-    /** Accepted and stored nowhere: servo tuning, soft limits, smoothing (not modelled; docs say so). */
+    /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link Controller#smooth}. */
     private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
-            "IT", "OE", "EO", "NO");
+            "OE", "EO", "NO");
 
     String execute(String st, ProgramThread th) throws GalilException {
         if (st.isEmpty()) {
@@ -94,6 +94,8 @@ final class Statements {
                     throw new GalilException(Tc.RANGE);
                 }
                 c.offsets[a] = v;
+            } else if (name.startsWith("IT")) {
+                c.smooth(a, v);
             }
             return "";
         }
@@ -131,6 +133,16 @@ final class Statements {
     private String command(String cmd, String args, ProgramThread th) throws GalilException {
         VectorMotion mo = c.motion;
         switch (cmd) {
+            case "IT": {
+                // IT n,n,...: one value per axis in order, an empty place leaves that axis as it is
+                String[] places = args.split(",", -1);
+                for (int i = 0; i < places.length; i++) {
+                    if (!places[i].isBlank()) {
+                        c.smooth(i, eval(places[i].strip()));
+                    }
+                }
+                return "";
+            }
             case "TC": {
                 double n = args.isEmpty() ? 0 : eval(args);
                 Tc e = c.lastError;

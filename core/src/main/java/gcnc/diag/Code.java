@@ -484,6 +484,8 @@ public enum Code {
     E334_SIM_TRIP_PAST_END(334),
     /** An output or speed set on the way (after AV) at a point of the path that is not where its block stands in the program. */
     E335_SIM_SWITCHED_ELSEWHERE(335),
+    /** IT below 1 (smoothing): the replay runs vector motion unfiltered, as IT 1; not simulated yet. */
+    E336_SIM_SMOOTHING(336),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */

@@ -304,13 +304,17 @@ public sealed interface Command {
         }
     }
 
-    /** The servo settings gcnc writes for one channel: the gains and the position error limit. */
-    enum Setting { KP, KI, KD, ER }
+    /**
+     * The settings gcnc writes for one channel: the gains and the position error limit (the spindle's), and
+     * IT, the smoothing filter, at 1 ("1 means no filtering", command reference IT) on the plane axes.
+     */
+    enum Setting { KP, KI, KD, ER, IT }
 
     /**
-     * {@code KP ,,0}: a servo setting of the channel at {@code channel} (0 = A/X). gcnc writes
+     * {@code KP ,,0}: a setting of the channel at {@code channel} (0 = A/X). gcnc writes
      * {@code KP/KI/KD 0} and {@code ER -1} on the spindle's channel only, so that {@code OF} there is
-     * an open-loop voltage and the turning spindle is no position error.
+     * an open-loop voltage and the turning spindle is no position error, and {@code IT 1} on each plane
+     * axis in the header, so that no smoothing burned into the unit filters the vector motion.
      */
     record AxisSetting(Setting setting, int channel, Fixed value) implements Command {
         public <R> R accept(Visitor<R> v) {

@@ -421,9 +421,23 @@ final class Controller {
             return null;
         }
 
-        /** Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel takes them. */
+        /**
+         * Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel
+         * takes them. IT 1 is no filtering, what the replay models; a smaller value (smoothing, which "also
+         * filters the individual axes during Vector Mode" and "results in longer motion time", command
+         * reference IT) is not simulated yet: E336.
+         */
         public Void axisSetting(Command.AxisSetting c) {
-            if (!afterEnd() && c.channel() != spindleChannel) {
+            if (afterEnd()) {
+                return null;
+            }
+            if (c.setting() == Command.Setting.IT) {
+                if (c.value().value() != 1) {
+                    out.report(Code.E336_SIM_SMOOTHING, line, text());
+                }
+                return null;
+            }
+            if (c.channel() != spindleChannel) {
                 out.report(Code.E301_SIM_BAD_ARGUMENTS, line, c.setting().name(), text());
             }
             return null;
