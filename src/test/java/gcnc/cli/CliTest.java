@@ -302,9 +302,9 @@ class CliTest {
         assertTrue(map.get(1).startsWith("# source sha256 "), map.get(1));
         assertTrue(map.get(map.size() - 1).startsWith("# dmc sha256 "), map.get(map.size() - 1));
         map = map.subList(2, map.size() - 1);
-        assertEquals("1 0", map.get(0), "DMC lines 1-3 are the header (vector setup, spindle output, limits, homing)");
-        assertEquals("4 4", map.get(1), "DMC line 4 starts with G-code line 4's commands (N30 M11: gline=4, then CB4)");
-        assertEquals("4.2 5", map.get(2), "its third command (gline=5) starts G-code line 5's");
+        assertEquals("1 0", map.get(0), "DMC lines 1-4 are the header (vector setup, IT 1, spindle output, limits, homing)");
+        assertEquals("5 4", map.get(1), "DMC line 5 starts with G-code line 4's commands (N30 M11: gline=4, then CB4)");
+        assertEquals("5.2 5", map.get(2), "its third command (gline=5) starts G-code line 5's");
         List<String> lines = text.lines().toList();
         int en = 0;
         while (!gcnc.dmc.DmcReader.statements(lines.get(en)).contains("EN")) {

@@ -97,7 +97,7 @@ class RoundTripTest {
     @Test
     void theMachineCommandsPrintAndReadBack() {
         Command[] all = {
-            new Command.AnalogOut(1, Fixed.exactly(3, 4)),
+            new Command.AnalogOut(3001, Fixed.exactly(3, 4)),
             new Command.AxisSetting(Command.Setting.KP, 2, Fixed.of(0)),
             new Command.AxisSetting(Command.Setting.ER, 3, Fixed.of(-1)),
             new Command.SoftLimit(false, 'X', -5000, 'Y', -2500),
@@ -125,7 +125,7 @@ class RoundTripTest {
     @Test
     void whatItCannotReadIsReportedNotGuessed() {
         for (String bad : new String[] {"VP 1.5,2", "CR -5,0,90", "OF ,,12", "WT -1", "SB", "GA C", "VS 0", "#9X",
-            "AO 1,12", "KP 1,2", "BL 5", "JP #A,x>1", "JS #A,@IN[1]=1", "MG text", "AB", "ST X", "ZS 1"}) {
+            "AO 1,12", "AO 5,1.5", "AO 9000,1", "KP 1,2", "BL 5", "JP #A,x>1", "JS #A,@IN[1]=1", "MG text", "AB", "ST X", "ZS 1"}) {
             List<String> faults = new ArrayList<>();
             assertEquals(null, DmcReader.read(bad, (code, args) -> faults.add(code.name())), bad);
             assertEquals(List.of("E301_SIM_BAD_ARGUMENTS"), faults, bad);

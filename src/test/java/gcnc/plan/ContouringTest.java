@@ -185,8 +185,10 @@ class ContouringTest {
         List<String> l = o.lines();
         int bgs = l.indexOf("VP -11000,2000 <1666") + 2;
         assertEquals("BGS", l.get(bgs), o.dmc());
-        // M08 where the path reaches line 7 (12 mm of Z at 500 counts/mm); M09 where line 10 starts
-        assertEquals(List.of("AV 6000", "SB3", "AV 11414", "CB3", "CB7", "AMS"), l.subList(bgs + 1, bgs + 7));
+        // M08 where the path reaches line 7 (12 mm of Z at 500 counts/mm); M09 where line 10 starts, at
+        // 11,414 counts: 5,414 after the first trip point, since AV measures from the last AV (command
+        // reference AV; DMC-40x0 User Manual p.86, "After Relative Vector distance")
+        assertEquals(List.of("AV 6000", "SB3", "AV 5414", "CB3", "CB7", "AMS"), l.subList(bgs + 1, bgs + 7));
     }
 
     @Test
@@ -218,9 +220,15 @@ class ContouringTest {
         MachineProfile fanuc = profile("fanuc");
         Out o = compile(COOLANT, fanuc);
         assertEquals(List.of(), replayed(o, "AV 6000", 6000, fanuc));
-        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 11414", 90000, fanuc));
-        // M08 (line 7) switched where the path is still on line 6
-        assertEquals(List.of(Code.E335_SIM_SWITCHED_ELSEWHERE), replayed(o, "AV 6000", 3000, fanuc));
+        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 5414", 90000, fanuc));
+        // AV is relative: 6,500 counts is shorter than the 12,414 of the path, but after the first trip
+        // point (6,000) it lies past the end
+        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 5414", 6500, fanuc));
+        assertEquals(List.of(), replayed(o, "AV 5414", 6414, fanuc).stream()
+                .filter(c -> c == Code.E334_SIM_TRIP_PAST_END).toList(), "the end of the path itself is reached");
+        // M08 (line 7) switched where the path is still on line 6, and M09 with it (3,000 + 5,414: on line 8)
+        assertEquals(List.of(Code.E335_SIM_SWITCHED_ELSEWHERE, Code.E335_SIM_SWITCHED_ELSEWHERE),
+                replayed(o, "AV 6000", 3000, fanuc));
     }
 
     /** The compile's instructions replayed with the AV of {@code text} moved to {@code counts}: the codes found. */

@@ -9,6 +9,7 @@ import gcnc.diag.Code;
 import gcnc.machine.MachineProfile;
 import java.io.BufferedReader;
 import java.io.StringReader;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -151,12 +152,39 @@ class ResumeTest {
         assertEquals(List.of("VS 1000", "VP 600,0 <1000 >500", "VP 600,1000 <800", "VE", "BGS", "AV 1100", "OF ,,4.0000",
                 "AMS", "CB1", "EN"), l.subList(vs, l.size()));
         assertEquals(List.of(6, 7), List.of(p.sourceLine(r.originOf(vs + 1)), p.sourceLine(r.originOf(vs + 2))));
-        // the controller's segments of the new sequence name lines 6 and 7 (_CSS 1 and 2)
+        // the controller's segments of the new sequence name lines 6 and 7 (_CSS 0 and 1: the segment
+        // counter starts at zero, DMC-40x0 User Manual p.86); after the end, either reading names line 7
         Piece.Segments seg = r.segmentsAt(l.indexOf("AMS"), p);
-        assertEquals(6, p.sourceLine(seg.executing(1)));
+        assertEquals(6, p.sourceLine(seg.executing(0)));
+        assertEquals(7, p.sourceLine(seg.executing(1)));
         assertEquals(7, p.sourceLine(seg.executing(2)));
         assertTrue(seg.begun());
         assertTrue(!r.segmentsAt(vs + 1, p).begun(), "before BGS the motion has not begun");
+    }
+
+    /**
+     * Two changes on the way: AV is relative (command reference AV, "from the start of a coordinated move
+     * sequence or from the last AV command"), so the second trips at 1,500 + 300 = 1,800 counts. Resumed
+     * 1,000 counts along, the first is written from the new sequence's start and the second as it was.
+     */
+    @Test
+    void aSecondAvOnTheWayMeasuresFromTheFirstAfterAResumeToo() throws Exception {
+        List<String> two = new ArrayList<>(BLENDED);
+        two.addAll(two.indexOf("AMS"), List.of("AV 300", "OF ,,5.0000"));
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        DmcProgram p = DmcProgram.read(two, MapReader.read(new BufferedReader(new StringReader(
+                "# source part.nc\n1 0\n6 4\n7 5\n10 6\n12 7\n18 8\n19 0\n"))), haas);
+        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
+        List<String> l = texts(r);
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 0,1000 <800", "VE", "BGS", "AV 500", "OF ,,4.0000", "AV 300", "OF ,,5.0000",
+                "AMS", "CB1", "EN"), l.subList(vs, l.size()));
+        // resumed 1,600 counts along: the first change has happened, the second is 200 counts ahead
+        Piece past = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
+        List<String> q = texts(past);
+        int at = q.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 0,400 <800", "VE", "BGS", "AV 200", "OF ,,5.0000", "AMS", "CB1", "EN"),
+                q.subList(at, q.size()));
     }
 
     /** A block of two segments blended (a G71-like pass and its step, one G-code line): N:K names the segment. */

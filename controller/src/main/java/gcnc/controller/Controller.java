@@ -40,6 +40,11 @@ public final class Controller implements Expressions.Scope {
     private int passes;
     final boolean[] servo;
     final double[] offsets;
+    /**
+     * IT of each axis, 1 at power-up ("1 means no filtering", command reference IT). Recorded and read back
+     * ({@code _ITa}); a value below 1 is not modelled (the motion runs unfiltered) and the trace says so.
+     */
+    final double[] smoothing;
     long outputs;
     /** Inputs read 1 when nothing pulls them low (Galil's inputs are pulled up). */
     long inputs = -1L;
@@ -54,8 +59,6 @@ public final class Controller implements Expressions.Scope {
     volatile boolean echo;
     /** The port the host command being executed came in on (for CF I, EO, WH); 0 inside a thread. */
     char port;
-    /** IT of each axis: 1 = no smoothing, the power-up value (COMALL IT); stored, not simulated. */
-    final double[] smoothing;
     /** The Ethernet handles in use (COMALL TH: A-H). */
     private final boolean[] handles = new boolean[8];
     boolean limitTripped;
@@ -103,9 +106,9 @@ public final class Controller implements Expressions.Scope {
         }
         this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
             @Override
-            public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
+            public void segmentDone(int sequence, int number, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {
-                    Controller.this.trace.segment(sequence, css, s, free, t);
+                    Controller.this.trace.segment(sequence, number, s, free, t);
                 }
             }
 
@@ -153,6 +156,30 @@ public final class Controller implements Expressions.Scope {
         if (trace != null) {
             trace.event(text, t);
         }
+    }
+
+    /**
+     * {@code IT} of axis {@code a}: 0.004 to 1, resolution 1/256 (command reference IT). Below 1 the real
+     * controller filters the axis in VM and the motion takes longer; the virtual one does not smooth, so it
+     * says so in the trace (docs/virtual-controller.md).
+     */
+    void smooth(int a, double v) throws GalilException {
+        if (a < 0 || a >= model.axes) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        if (v < 0.004 || v > 1) {
+            throw new GalilException(Tc.RANGE);
+        }
+        smoothing[a] = v;
+        if (v != 1) {
+            event(String.format(Locale.ROOT, "IT %c %.4f: smoothing not modelled, the motion runs unfiltered (IT 1)",
+                    (char) ('A' + a), v), time);
+        }
+    }
+
+    /** An event of the trace at the controller's time now (an AV's trip: docs/virtual-controller.md, "Trace"). */
+    void traceEvent(String text) {
+        event(text, time);
     }
 
     public void addListener(Listener l) {

@@ -30,7 +30,7 @@ final class Statements {
     private static final java.util.Set<String> AXIS_ASSIGNABLE = java.util.Set.of("KP", "KI", "KD", "ER", "OF", "BL",
             "FL", "TL", "AC", "DC", "SP", "IT", "OE");
 
-    /** Accepted and stored nowhere: servo tuning, soft limits, smoothing (not modelled; docs say so). */
+    /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link Controller#smooth}. */
     private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
             "OE", "NO");
 
@@ -96,7 +96,7 @@ final class Statements {
                 }
                 c.offsets[a] = v;
             } else if (name.startsWith("IT")) {
-                c.smoothing[a] = range(v, 0.004, 1);
+                c.smooth(a, v);
             }
             return "";
         }
@@ -143,6 +143,16 @@ final class Statements {
     private String command(String cmd, String args, ProgramThread th) throws GalilException {
         VectorMotion mo = c.motion;
         switch (cmd) {
+            case "IT": {
+                // IT n,n,...: one value per axis in order, an empty place leaves that axis as it is
+                String[] places = args.split(",", -1);
+                for (int i = 0; i < places.length; i++) {
+                    if (!places[i].isBlank()) {
+                        c.smooth(i, eval(places[i].strip()));
+                    }
+                }
+                return "";
+            }
             case "TC": {
                 double n = args.isEmpty() ? 0 : eval(args);
                 Tc e = c.lastError;
@@ -169,18 +179,6 @@ final class Statements {
                     throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL WH: Not Valid in program
                 }
                 return (c.port == 'S' ? "SERIAL" : "IH" + c.port) + "\r\n";
-            case "IT": {
-                List<String> a = split(args);
-                if (a.size() > c.model.axes) {
-                    throw new GalilException(Tc.OPERAND);
-                }
-                for (int i = 0; i < a.size(); i++) {
-                    if (!a.get(i).isEmpty()) {
-                        c.smoothing[i] = range(eval(a.get(i)), 0.004, 1);
-                    }
-                }
-                return "";
-            }
             case "XQ":
                 return flow.execute(args);
             case "HX":

@@ -481,10 +481,15 @@ public enum Code {
     E333_SIM_SPEED_CHANGE_TOO_SHORT(333),
 
     // 334-339: the planner's work checked by the replay (docs/galil.md, "Continuous contouring").
-    /** An AV trip point past the end of the sequence it waits on: the controller never reaches it and the program waits there. */
+    /**
+     * An AV trip point (the sum of the sequence's AV distances: AV is relative) past the end of the
+     * sequence it waits on: the controller never reaches it; what it does then its reference does not say.
+     */
     E334_SIM_TRIP_PAST_END(334),
     /** An output or speed set on the way (after AV) at a point of the path that is not where its block stands in the program. */
     E335_SIM_SWITCHED_ELSEWHERE(335),
+    /** IT below 1 (smoothing): the replay runs vector motion unfiltered, as IT 1; not simulated yet. */
+    E336_SIM_SMOOTHING(336),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
@@ -527,6 +532,10 @@ public enum Code {
     E433_TURRET_STATIONS(433),
     /** Profile: homing.check is neither position, IN n, nor none. */
     E434_HOMING_CHECK(434),
+    /** Profile: an input (IN n, turret.in_position) that is no digital input @IN reads on the model (command reference @IN). */
+    E436_INPUT_RANGE(436),
+    /** Profile: spindle.output = AO n with n outside 1,000-8,999, the only I/O numbers AO takes (command reference AO). */
+    E437_ANALOG_OUTPUT_RANGE(437),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */

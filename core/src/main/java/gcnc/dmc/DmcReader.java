@@ -201,6 +201,7 @@ public final class DmcReader {
             case "KI":
             case "KD":
             case "ER":
+            case "IT":
                 return AxisReader.axisSetting(Setting.valueOf(cmd), args, t, faults);
             case "BL":
             case "FL":

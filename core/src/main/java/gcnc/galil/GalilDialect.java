@@ -57,6 +57,13 @@ final class GalilDialect implements Dialect {
         out.accept(new Instruction(new Command.Label("GCNC"), Source.NONE));
         out.accept(new Instruction(new Command.ServoHere(plane), Source.NONE));
         out.accept(new Instruction(new Command.VectorMode(plane), Source.NONE));
+        // IT 1 on both plane axes: no smoothing. IT is burnable and "also filters the individual axes during
+        // Vector Mode (VM)", which "results in longer motion time" (command reference IT): a unit with a
+        // smaller value burned in would round the corners and stretch the times the simulator verified
+        for (int i = 0; i < 2; i++) {
+            out.accept(new Instruction(new Command.AxisSetting(Command.Setting.IT,
+                    gcnc.dmc.Channels.index(plane.charAt(i)), Fixed.of(1)), Source.NONE));
+        }
         out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(acceleration(profile.acceleration()))),
                 Source.NONE));
         out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(acceleration(profile.deceleration()))),

@@ -18,9 +18,13 @@ import java.util.function.Consumer;
  * segment at its own speed with its corner speed, {@code VS <first speed>}, then {@code VP a,b <o >p}
  * and {@code CR r,θ,Δθ <o >p} measured from the sequence's start, {@code VE}, {@code BGS}; what is
  * set on the way, one mechanism for both: the spindle speeds of the motions that change it (G96) and
- * the outputs that switch on the fly ({@code plan.on_the_fly}), each after {@code AV <distance>},
- * the path the written segments measure up to the start of its motion (a whole count at or before it,
- * so that the controller always reaches it);
+ * the outputs that switch on the fly ({@code plan.on_the_fly}), each after {@code AV <distance>}:
+ * the trip point is the path the written segments measure up to the start of its motion (a whole count
+ * at or before it, so that the controller always reaches it), and {@code AV} is written as the distance
+ * from the previous trip point of the sequence (from its start for the first), since Galil measures it
+ * "from the start of a coordinated move sequence or from the last AV command" (command reference AV;
+ * DMC-40x0 User Manual p.86, "After Relative Vector distance"); the distances of a sequence add up to
+ * its last trip point, never past the path's end (docs/galil.md, "Set on the way");
  * {@code AMS} with the reason the machine stops there. Speeds are even, 2 or more (Galil's
  * resolution for {@code <} and {@code >}), rounded down, never up.
  */
@@ -102,14 +106,14 @@ final class GroupWriter {
         }
         out.emit(new Command.VectorEnd());
         out.emit(new Command.BeginSequence());
-        long tripped = -1;
+        long tripped = -1; // the last trip point written, counts from the sequence's start; -1 before the first
         for (int i = 0; i < onTheWay.size(); i++) {
             Piece p = onTheWay.get(i);
             long trip = (long) Math.floor(at.get(i));
             BlockWriter w = d.writer(p.block(), sink);
             w.motion(p.motion());
             if (trip != tripped) {
-                w.emit(new Command.AfterVector(trip));
+                w.emit(new Command.AfterVector(trip - Math.max(0, tripped))); // relative to the last AV
                 tripped = trip;
             }
             // in program order: what earlier blocks left on the way, then this block's speed and outputs

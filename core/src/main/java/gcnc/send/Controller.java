@@ -185,9 +185,12 @@ public final class Controller {
     }
 
     /**
-     * {@code MG _CSS}: the number of the segment of the running vector sequence executing, from 1
-     * (0 before the sequence's first; the last one after it ended). COMALL CS; EPICS counts the
-     * segments processed from it.
+     * {@code MG _CSS}: the segment counter of the running vector sequence, from zero: 0 during its first
+     * segment, 1 during the second (DMC-40x0 User Manual p.86, "Segment counter - returns number of the
+     * segment in the sequence, starting at zero", with its worked example; the same in the DMC-2x00 and
+     * DMC-13X8 manuals; COMALL CS only says "the segment number in the sequence"). After the sequence
+     * ended the manuals do not say what it reads; {@link Piece.Segments#segment} names the last segment
+     * for either reading. EPICS counts the segments processed from it.
      */
     public int segment() throws IOException {
         return (int) client.number("_CSS");

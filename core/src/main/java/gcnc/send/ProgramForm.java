@@ -191,7 +191,7 @@ public final class ProgramForm implements Form {
 
     /**
      * The compiled instruction executing when thread 0 is at the controller's line {@code xq} and the
-     * sequence's segment {@code css} executes: the line's last command, except in a vector sequence, where
+     * sequence's segment counter {@code _CSS} reads {@code css} (from zero): the line's last command, except in a vector sequence, where
      * the thread waits at {@code AMS} while the segments run: there the segment executing names the
      * line, so that a blended sequence's blocks are followed one by one; before its {@code BGS} the
      * sequence's first segment is next. -1 when the line is one of the program's routines (after its

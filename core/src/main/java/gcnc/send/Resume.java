@@ -212,20 +212,28 @@ public final class Resume {
                 cursor = p.to();
             }
         }
-        // the path already run: the spindle changes on the way (AV n, then the change) before it have happened
+        // the path already run: the spindle changes on the way (AV n, then the change) before it have
+        // happened. AV is relative ("from the start of a coordinated move sequence or from the last AV
+        // command", command reference AV): each trip point is the sum of the AVs so far; the first one
+        // kept is written from the new sequence's start, the later ones as they were
         double run = s.lengthBefore(k) + (partial ? along(pieces.get(k), axes) : 0);
         List<Integer> passed = new ArrayList<>();
         boolean begun = false;
         boolean skip = false;
+        long trip = 0; // the trip point of the AV, counts from the original sequence's start
+        double from = run; // where the next AV kept measures from, in the original's counts
         for (int i = pieces.get(pieces.size() - 1).line() + 1; i <= s.last(); i++) {
             Command c = program.command(i);
             if (c instanceof Command.BeginSequence) {
                 begun = true;
             }
             if (c instanceof Command.AfterVector av && begun) {
-                skip = av.counts() <= run;
+                trip += av.counts();
+                skip = trip <= run;
                 if (!skip) {
-                    b.add(new Command.AfterVector(Math.round(av.counts() - run)), i);
+                    long n = Math.round(trip - from);
+                    b.add(new Command.AfterVector(n), i);
+                    from += n; // the controller's trip point, a fraction of a count off the original's at most
                 }
                 continue;
             }

@@ -18,7 +18,8 @@ import java.util.Map;
  * command line, one at a time, each reply checked. Segments go into the vector buffer only while it
  * has room ({@code _LMS}, one slot kept for {@code VE}), so no more are in flight than it holds; the
  * waits the stream holds are the host's ({@link StreamRole#HOST}): {@code AMS} polls {@code _BGS},
- * {@code WT} waits on the host's clock, {@code AV} polls {@code _AVS}, {@code JS #L} runs the resident
+ * {@code WT} waits on the host's clock, {@code AV} polls {@code _AVS} (from the sequence's start, where
+ * {@code AV} is from the last {@code AV}: the host adds them up), {@code JS #L} runs the resident
  * routine in thread 0 and polls {@code _XQ0}. While a sequence runs, the segment executing
  * ({@code _CSS}) names the G-code block, as in the program form.
  *
@@ -181,13 +182,20 @@ public final class StreamForm implements Form {
         private final Controller c;
         private final Progress progress;
         private final Operator op;
-        /** The compiled lines of the segments of the sequence being sent, in order: segment k is {@code segments.get(k - 1)}. */
+        /** The compiled lines of the segments of the sequence being sent, in order: {@code _CSS} = k is {@code segments.get(k)}. */
         private final List<Integer> segments = new ArrayList<>();
         /** The last segment's end of the sequence being sent (counts, Galil plane), from the compiled program. */
         private double[] end;
         private final FeedHold hold = new FeedHold();
         /** Vector buffer slots free as last counted; 0 = ask the controller. */
         private int free;
+        /**
+         * The trip point of the last AV of the sequence running, counts of path from its start: AV is
+         * relative (command reference AV, "from the start of a coordinated move sequence or from the
+         * last AV command") while {@code _AVS}, which the host polls, is "the vector distance from the
+         * start of the sequence", so the host waits for the sum of the sequence's AVs so far.
+         */
+        private long tripped;
 
         Feed(Controller c, Progress progress, Operator op) {
             this.c = c;
@@ -228,6 +236,7 @@ public final class StreamForm implements Form {
             c.require(gcnc.dmc.DmcPrinter.print(cmd));
             if (cmd instanceof Command.BeginSequence) {
                 progress.started();
+                tripped = 0;
             }
             if (!progress.hasStarted() || !(cmd instanceof Command.BeginSequence)) {
                 progress.pointAt(s.origin());
@@ -256,7 +265,8 @@ public final class StreamForm implements Form {
                     Thread.sleep(Math.max(1, Math.min(pollMs, (until - System.nanoTime()) / 1_000_000L)));
                 }
             } else if (cmd instanceof Command.AfterVector av) {
-                while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < av.counts()) {
+                tripped += av.counts();
+                while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < tripped) {
                     follow();
                     Thread.sleep(pollMs);
                     operator();
@@ -282,7 +292,7 @@ public final class StreamForm implements Form {
             double[] at = c.position();
             int css = c.segment();
             int origin = segments.isEmpty() ? progress.executingIndex()
-                    : segments.get(Math.max(0, Math.min(segments.size() - 1, css - 1)));
+                    : segments.get(Piece.Segments.segment(css, segments.size()));
             progress.at(origin, at, op);
             return at;
         }
@@ -297,9 +307,9 @@ public final class StreamForm implements Form {
                 progress.at(segments.get(segments.size() - 1), at, op);
                 return;
             }
-            // cut short: the segment it stopped in (_CSS keeps its number after the sequence ended) names the block
+            // cut short: the segment it stopped in (_CSS keeps its count after the sequence ended) names the block
             int css = c.segment();
-            progress.at(segments.get(Math.max(0, Math.min(segments.size() - 1, css - 1))), at, op);
+            progress.at(segments.get(Piece.Segments.segment(css, segments.size())), at, op);
             int code = c.stopCode();
             c.stopAll();
             throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the sequence ended during line "

@@ -67,7 +67,10 @@ final class Controller {
     /** How many of {@link #reached} (and {@link #reachedBy}) stand for the last sequence. */
     private int reachedCount;
     private final List<gcnc.dmc.Source> reachedBy = new ArrayList<>();
-    /** The AV trip point the commands after it wait for, counts; -1 when none (at rest after AMS). */
+    /**
+     * The AV trip point the commands after it wait for, counts of path from the sequence's start (the
+     * sum of its AVs so far); -1 when none (after BGS, before the first AV; at rest after AMS).
+     */
     private long avTrip = -1;
     private double speed;
     double acceleration;
@@ -306,15 +309,19 @@ final class Controller {
         }
 
         public Void afterVector(Command.AfterVector c) {
-            // the sequence has been replayed whole at BGS: what follows acts on the state after it; the
-            // trip point must be on its path, or the controller waits there for ever
+            // the sequence has been replayed whole at BGS: what follows acts on the state after it. AV is
+            // relative (command reference AV: "from the start of a coordinated move sequence or from the
+            // last AV command"), so its trip point is the last one's plus n; it must be on the path: what
+            // the controller does at an AV it never reaches the reference does not say, so the safe
+            // reading is that it waits there for ever (docs/simulator.md)
             if (!afterEnd()) {
                 measure();
                 double total = reachedCount == 0 ? 0 : reached[reachedCount - 1];
-                if (c.counts() > total + 1) {
-                    out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), Math.round(total));
+                long trip = Math.max(0, avTrip) + c.counts();
+                if (trip > total + 1) {
+                    out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), trip, Math.round(total));
                 }
-                avTrip = c.counts();
+                avTrip = trip;
             }
             return null;
         }
@@ -452,9 +459,23 @@ final class Controller {
             return null;
         }
 
-        /** Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel takes them. */
+        /**
+         * Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel
+         * takes them. IT 1 is no filtering, what the replay models; a smaller value (smoothing, which "also
+         * filters the individual axes during Vector Mode" and "results in longer motion time", command
+         * reference IT) is not simulated yet: E336.
+         */
         public Void axisSetting(Command.AxisSetting c) {
-            if (!afterEnd() && c.channel() != spindleChannel) {
+            if (afterEnd()) {
+                return null;
+            }
+            if (c.setting() == Command.Setting.IT) {
+                if (c.value().value() != 1) {
+                    out.report(Code.E336_SIM_SMOOTHING, line, text());
+                }
+                return null;
+            }
+            if (c.channel() != spindleChannel) {
                 out.report(Code.E301_SIM_BAD_ARGUMENTS, line, c.setting().name(), text());
             }
             return null;

@@ -98,7 +98,7 @@ public final class Explanations {
             m.put(Code.byNumber(n), files);
         }
         String dmc = "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)";
-        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335, 864}) {
+        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335, 336, 864}) {
             m.put(Code.byNumber(n), dmc);
         }
         String second = "the backend's or the simulator's guard behind a check that comes first for any program"
