@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
  * User Manual lists it as "Trippoint for After Relative Vector distance"), while {@code _AVS} is "the
  * vector distance from the start of the sequence".
  */
-class ManualExampleTest {
+class SegmentCounterAndTripTest {
     private final StringWriter trace = new StringWriter();
     private final Controller c = new Controller(Model.standard(), List.of(), trace);
 
