@@ -48,21 +48,18 @@ public final class ProgramFlow implements BlockSource {
     /** How many times a WHILE loop may run from one entry, and a GOTO jump back, before it is taken for endless (E149). */
     public static final int LOOP_LIMIT = 100_000;
     /**
-     * How many blocks of called programs and macro statements a run may go through in all (loops
-     * inside loops, repeats inside repeats: L9999 four deep would never end); past it E149, and
-     * calls and jumps are no longer followed.
+     * The run's budget: how many blocks it may go through again in all (a loop's passes after its
+     * first, blocks of called programs, macro statements; loops inside loops, repeats inside repeats:
+     * L9999 four deep would never end). A loop still running past it is taken for endless (E710; E149
+     * when no loop runs), and calls and jumps are no longer followed. A loop that comes round with
+     * every variable unchanged is endless at once (E149, {@link MacroJumps}): the GOTO loop of a
+     * 70-line program that changes nothing ran 100,000 passes, 7 million blocks, 21 s and 493 MB
+     * before E149; now two passes. The budget ends a loop that does change something and never ends
+     * (a counter past its bound): five million blocks, a few seconds of checking; the longest
+     * legitimate macro runs gcnc is tested with go through 2 million (BoundedRunTest: 400,000 moves
+     * from two nested WHILEs).
      */
     public static final int STEP_LIMIT = 5_000_000;
-    /**
-     * The budget of a run in blocks gone through again (a loop's passes after its first, called
-     * programs, macro statements): this many, and {@link #BUDGET_PER_LINE} more for each line of the
-     * program and of the files it calls, at most {@link #STEP_LIMIT}. A loop still running past it
-     * is taken for endless (E710): a GOTO loop of a 70-line program stops after some 57,000 blocks,
-     * a few tenths of a second (it ran 100,000 passes, 7 million blocks, 21 s and 493 MB, before E149).
-     */
-    public static final int BUDGET_BASE = 50_000;
-    /** Blocks of budget per line of the program ({@link #BUDGET_BASE}). */
-    public static final int BUDGET_PER_LINE = 100;
     /** The largest repeat count (L, or the leading digits of a Fanuc P): four digits. */
     private static final int MAX_REPEAT = 9999;
 
@@ -114,7 +111,7 @@ public final class ProgramFlow implements BlockSource {
         this.control = control;
         this.diags = diags;
         this.library = new Library(folder, diags, holdLimit, control.macros(), control.lineComments());
-        this.jumps = new MacroJumps(diags);
+        this.jumps = new MacroJumps(diags, vars);
         stack.push(Frame.main(mainBlocks));
     }
 
@@ -210,8 +207,7 @@ public final class ProgramFlow implements BlockSource {
         spent = true;
         MacroJumps.Pass loop = jumps.last();
         if (loop != null) {
-            diags.error(Code.E710_MACRO_BUDGET, loop.at(), loop.text(), loop.at().line(), loop.passes(), steps - 1,
-                    lines(), BUDGET_BASE, BUDGET_PER_LINE);
+            diags.error(Code.E710_MACRO_BUDGET, loop.at(), loop.text(), loop.at().line(), loop.passes(), steps - 1);
         } else {
             diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), steps - 1);
         }
@@ -220,10 +216,9 @@ public final class ProgramFlow implements BlockSource {
         }
     }
 
-    /** The run's budget now: {@link #BUDGET_BASE} and {@link #BUDGET_PER_LINE} per line read and per block of the files called. */
+    /** The run's budget ({@link #STEP_LIMIT}). */
     private long budget() {
-        long held = library.limit() - library.room();
-        return Math.min(STEP_LIMIT, BUDGET_BASE + BUDGET_PER_LINE * ((long) main.lines() + held));
+        return STEP_LIMIT;
     }
 
     /** Blocks gone through again so far ({@link #budget}): what a test bounds instead of the time. */
