@@ -728,7 +728,9 @@ public enum Code {
     /** Sender (warning): the operator stopped the run. */
     E828_STOPPED_BY_OPERATOR(828),
     /** Sender (warning): motors are off on the program's axes; its SH turns them on. */
-    E829_MOTORS_OFF(829);
+    E829_MOTORS_OFF(829),
+    /** Profile: stop.cycle_start is not IN n. */
+    E850_CYCLE_START_INPUT(850);
 
     private final int number;
 
