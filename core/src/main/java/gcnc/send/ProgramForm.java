@@ -256,6 +256,7 @@ public final class ProgramForm implements Form {
         FeedHold hold = new FeedHold();
         StallWatch stall = new StallWatch(stallSeconds);
         int lastXq = -1;
+        int announced = -1; // the program stop announced last (its call's line): once each
         while (true) {
             if (op.stopped()) {
                 c.stopAll();
@@ -282,7 +283,20 @@ public final class ProgramForm implements Form {
             }
             lastXq = xq;
             double[] at = c.position();
-            progress.at(executing(piece, xq, where[1], progress.program()), at, op);
+            int origin = executing(piece, xq, where[1], progress.program());
+            if (progress.program().inProgramStop(origin)) {
+                // a program stop (M00; M01 with the switch on): the block of its call, at rest, waits for the operator
+                int call = progress.program().programStopFrom(progress.executingIndex());
+                if (call >= 0 && call != announced) {
+                    announced = call;
+                    progress.at(call, at, op);
+                    ProgramStopWait.await(c, progress, op, call, pollMs,
+                            () -> progress.program().inProgramStop(executing(piece, c.executing(), 0, progress.program())));
+                }
+                Thread.sleep(pollMs);
+                continue;
+            }
+            progress.at(origin, at, op);
             // a hold, a dwell and a thread pass's wait for the spindle are not stalls
             Sequence s = progress.program().sequenceAt(progress.executingIndex());
             if (stall.stalled(at, s != null && !s.isThreadPass() && !hold.held() && op.override() > 0)) {
