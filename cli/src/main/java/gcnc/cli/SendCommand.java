@@ -102,6 +102,14 @@ final class SendCommand implements Callable<Integer> {
                     + " Default: program when it fits the profile's Galil model, else stream (as gcnc compile chooses).")
     gcnc.dmc.Form form;
 
+    @Option(names = "--optional-stop", paramLabel = "on|off",
+            description = "The optional stop switch: on, M01 stops as M00 (waits for Enter or cycle start); off, it runs"
+                    + " through. Default: the control's stop.optional (off for the shipped controls).")
+    OnOff optionalStop;
+
+    /** A switch's two positions, as the command line writes them. */
+    enum OnOff { on, off }
+
     @Option(names = "--dry-run", description = "Everything but motion: connect, pre-flight, download and read back.")
     boolean dryRun;
 
@@ -147,7 +155,12 @@ final class SendCommand implements Callable<Integer> {
         Reporter reporter = new Reporter(Reporter.Format.GNU, quiet, json ? err : out, err, common.language());
         int status;
         try {
-            status = send(common.load(reporter), reporter, resume, json, out, err);
+            CommonOptions.Setup setup = common.load(reporter);
+            if (optionalStop != null) {
+                setup = new CommonOptions.Setup(setup.session().withProfile(
+                        setup.profile().withOptionalStop(optionalStop == OnOff.on)), setup.reporter());
+            }
+            status = send(setup, reporter, resume, json, out, err);
         } catch (TableException e) {
             status = reporter.tableFault(e);
         }

@@ -107,6 +107,14 @@ final class StatusText implements EventSink {
         if (e instanceof Event.StepWait w) {
             return say.get("run.step_wait", w.line(), w.number() != null ? " (N" + w.number() + ")" : "");
         }
+        if (e instanceof Event.ProgramStop p) {
+            return say.get("run.program_stop", p.line(), p.number() != null ? " (N" + p.number() + ")" : "",
+                    p.comment().isEmpty() ? "" : ": " + p.comment());
+        }
+        if (e instanceof Event.ProgramStopContinued p) {
+            return say.get(p.by().equals("operator") ? "run.program_stop_continued" : "run.program_stop_cycle_start",
+                    p.line());
+        }
         if (e instanceof Event.Hold h) {
             return h.held() ? say.get("run.hold")
                     : say.get("run.feed", Math.round(h.override() * 100), String.format(Locale.ROOT, "%.2f", h.override()));

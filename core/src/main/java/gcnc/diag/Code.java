@@ -784,6 +784,8 @@ public enum Code {
     E835_PROBE_NOT_READY(835),
     /** Probe (warning): the controller answered against a reference fact (a row of the report). */
     E836_PROBE_CONTRADICTION(836),
+    /** Profile: stop.cycle_start is not IN n. */
+    E850_CYCLE_START_INPUT(850),
     /** Simulate (note): the DMC is a stream form's resident program: its motion is in the stream beside it. */
     E864_RESIDENT_WITHOUT_STREAM(864),
     /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */

@@ -161,6 +161,8 @@ public enum Phrase {
     POWER_UP,
     LENGTH_MM,
     CALL_DEPTH,
+    /** A control's stop.off names an M code that is neither a spindle stop nor an output of its M table ({0}). */
+    STOP_OFF,
     UNKNOWN_FUNCTION,
     MOMENT,
     OUTPUT_YES_NO,

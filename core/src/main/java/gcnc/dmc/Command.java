@@ -432,6 +432,10 @@ public sealed interface Command {
         /** {@code @ABS[_TPX-340000]>10}: the axis stands further than the tolerance from a count. */
         record PositionOff(char axis, long counts, long tolerance) implements Condition {
         }
+
+        /** {@code gstop=1}: a DMC variable holds a whole number (the host's continue clears gcnc's {@code gstop}). */
+        record VariableIs(String name, long value) implements Condition {
+        }
     }
 
     /** What {@code MF}/{@code MR} waits for: a count, or a variable's value. */

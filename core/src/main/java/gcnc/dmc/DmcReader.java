@@ -361,6 +361,10 @@ public final class DmcReader {
         if (m.matches()) {
             return new Condition.Before(m.group(1));
         }
+        m = SET.matcher(c);
+        if (m.matches()) {
+            return new Condition.VariableIs(m.group(1), Long.parseLong(m.group(2)));
+        }
         m = POSITION_OFF.matcher(c);
         if (m.matches()) {
             long n = Long.parseLong(m.group(3));

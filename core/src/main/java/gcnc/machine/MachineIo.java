@@ -19,8 +19,11 @@ import java.util.regex.Pattern;
  * @param atSpeed  what the program waits for after M03/M04 or a speed change, before it feeds
  * @param turret   the turret's outputs and in-position input; empty: only {@code TOOL=n} is written
  * @param homing   what proves the machine is at home before the first move
+ * @param cycleStart the input of the machine's cycle start button ({@code stop.cycle_start = IN n}),
+ *                 which ends a program stop as the host's continue does; empty: the host's only
  */
-public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> turret, Homing homing) {
+public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> turret, Homing homing,
+                        java.util.OptionalInt cycleStart) {
     /** Where the spindle drive's speed reference comes from. */
     public sealed interface SpindleDrive {
         /**
@@ -121,12 +124,25 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
 
     static MachineIo defaults(char spindleAxis) {
         return new MachineIo(new SpindleDrive.Offset(spindleAxis), new AtSpeed.Dwell(DEFAULT_DWELL), Optional.empty(),
-                new Homing.Position(DEFAULT_TOLERANCE_MM));
+                new Homing.Position(DEFAULT_TOLERANCE_MM), java.util.OptionalInt.empty());
     }
 
     /** The keys of {@code f}, checked against the turret's station count and the model's digital outputs (E424). */
     static MachineIo read(ProfileFile f, char spindleAxis, int tools, GalilModel model) throws TableException {
-        return new MachineIo(drive(f, spindleAxis), atSpeed(f, model), turret(f, tools, model), homing(f, model));
+        return new MachineIo(drive(f, spindleAxis), atSpeed(f, model), turret(f, tools, model), homing(f, model), cycleStart(f, model));
+    }
+
+    /** {@code stop.cycle_start = IN n}: the cycle start button's input (on = pressed, read {@code @IN[n]=1}). */
+    private static java.util.OptionalInt cycleStart(ProfileFile f, GalilModel model) throws TableException {
+        Optional<ProfileFile.Entry> e = f.entry("stop.cycle_start");
+        if (e.isEmpty()) {
+            return java.util.OptionalInt.empty();
+        }
+        Matcher m = INPUT.matcher(e.get().value().strip());
+        if (m.matches()) {
+            return java.util.OptionalInt.of(input(f, e.get(), m.group(1), model)); // an input the model reads, else E436
+        }
+        throw f.fault(e.get(), Code.E850_CYCLE_START_INPUT, e.get().value().strip());
     }
 
     private static SpindleDrive drive(ProfileFile f, char spindleAxis) throws TableException {

@@ -124,6 +124,20 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
                 model.withStickout(mm), spindleEncoder, noses, threadChamfer);
     }
 
+    /**
+     * The same machine with the optional stop switch {@code on} or off (M01 stops as M00 when on):
+     * {@code gcnc run --optional-stop}, the studio's toggle, over the control's {@code stop.optional}.
+     */
+    public MachineProfile withOptionalStop(boolean on) {
+        if (on == control.stop().optional()) {
+            return this;
+        }
+        return new MachineProfile(name, galilModel, x, z, diameterX, noPointMm, noPointInch, home, rapidSpeed,
+                maxFeed, acceleration, deceleration, maxRpm, rpmPerVolt, spindleAxis, rearToolPost, workOffsets,
+                toolOffsets, tools, outputs, feedPerF, file, control.withOptionalStop(on), units, machineZero,
+                chuckByProgram, model, spindleEncoder, noses, threadChamfer);
+    }
+
     public List<String> outputsFor(int m) {
         return outputs.getOrDefault(m, List.of());
     }

@@ -26,6 +26,7 @@ final class ProfileKeys {
             // the machine around the motion (MachineIo)
             "spindle.output", "spindle.at_speed", "spindle.at_speed_timeout", "turret.station_outputs",
             "turret.strobe", "turret.in_position", "turret.timeout", "homing.check", "homing.tolerance",
+            "stop.cycle_start",
             // the simulator's machine model
             "sim.centre_x", "chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter",
             "stock.diameter", "stock.length", "stock.stickout", "stock.header",

@@ -153,7 +153,11 @@ public final class Contouring implements Planner {
         if (b.stopAt() == StopAt.BLOCK_END) {
             flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
-        if (switches(b.after())) {
+        if (programStop(b.after())) {
+            // M00 (M01 with the switch on): the axes at rest before the stop's outputs and the wait
+            flush(Stop.PROGRAM_STOP, out);
+            out.accept(new Step.After(b));
+        } else if (switches(b.after())) {
             int held = paths.size();
             boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions[held - 1] == ms.size() - 1;
             if (!stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
@@ -248,6 +252,16 @@ public final class Contouring implements Planner {
             return Stop.TOOL;
         }
         return stops(b.before()) ? Stop.OUTPUT : null;
+    }
+
+    /** Whether one of the M functions stops the program (M00; M01 when the optional stop switch is on). */
+    private boolean programStop(List<MCall> calls) {
+        for (MCall m : calls) {
+            if (profile.control().stopsProgram(m.code())) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Whether any of the M functions switches an output (one without outputs writes nothing: no stop). */

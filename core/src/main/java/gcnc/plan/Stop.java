@@ -29,6 +29,8 @@ public enum Stop {
     BUFFER("buffer"),
     /** The sequence's total length reached the controller's limit. */
     LENGTH("length"),
+    /** A program stop (M00; M01 with the optional stop switch on): the machine waits for the operator at rest. */
+    PROGRAM_STOP("program-stop"),
     /** The next motion is in another program file (a call or a return). */
     CALL("call"),
     /** The program ends. */

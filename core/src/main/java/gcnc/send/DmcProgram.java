@@ -312,6 +312,40 @@ public final class DmcProgram {
     }
 
     /** Is {@code c} a segment of a vector sequence ({@code VP}, {@code CR})? */
+    /**
+     * Whether compiled line {@code index} belongs to the program stop's wait routine ({@code #PSTOP}
+     * to its {@code EN}): thread 0 standing there waits for the operator.
+     */
+    public boolean inProgramStop(int index) {
+        if (stopRoutine == null) {
+            int from = -1;
+            int to = -1;
+            for (int i = 0; i < size(); i++) {
+                Command c = command(i);
+                if (from < 0 && c instanceof Command.Label l && l.name().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                    from = i;
+                } else if (from >= 0 && c instanceof Command.End) {
+                    to = i;
+                    break;
+                }
+            }
+            stopRoutine = new int[] {from, to};
+        }
+        return index >= 0 && stopRoutine[0] >= 0 && index >= stopRoutine[0] && index <= stopRoutine[1];
+    }
+
+    /** The first program stop's call ({@code JS #PSTOP}) at or after compiled line {@code from}, or -1. */
+    public int programStopFrom(int from) {
+        for (int i = Math.max(0, from); i < size(); i++) {
+            if (command(i) instanceof Command.Call c && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private int[] stopRoutine;
+
     public static boolean isSegment(Command c) {
         return c instanceof Command.VectorPosition || c instanceof Command.CircularArc;
     }

@@ -49,6 +49,19 @@ public sealed interface Event {
     record StepWait(int line, String number) implements Event {
     }
 
+    /**
+     * The program stopped at line {@code line} (M00, or M01 with the optional stop switch on) and
+     * waits for the operator, the axes at rest: the block's comment ({@code (CHECK PART)}'s text,
+     * "" for none). Enter ({@code gcnc run}), the studio's Start or the machine's cycle start button
+     * goes on ({@link ProgramStopContinued}).
+     */
+    record ProgramStop(int line, String number, String comment) implements Event {
+    }
+
+    /** The program stop at {@code line} ended: the program goes on with the next block ({@code by}: "operator" or "cycle-start"). */
+    record ProgramStopContinued(int line, String by) implements Event {
+    }
+
     /** Feed hold on ({@code held}) or off; the override in force. */
     record Hold(boolean held, double override) implements Event {
     }

@@ -261,6 +261,7 @@ public final class ProgramForm implements Form {
         FeedHold hold = new FeedHold();
         StallWatch stall = new StallWatch(stallSeconds);
         int lastXq = -1;
+        int announced = -1; // the program stop announced last (its call's line): once each
         while (true) {
             if (op.stopped()) {
                 c.stopAll();
@@ -286,12 +287,24 @@ public final class ProgramForm implements Form {
                 return;
             }
             double[] at = c.position();
-            int executing = executing(piece, xq, where[1], progress.program());
-            if (executing >= 0) {
+            int origin = executing(piece, xq, where[1], progress.program());
+            if (progress.program().inProgramStop(origin)) {
+                // a program stop (M00; M01 with the switch on): the block of its call, at rest, waits for the operator
+                int call = progress.program().programStopFrom(progress.executingIndex());
+                if (call >= 0 && call != announced) {
+                    announced = call;
+                    progress.at(call, at, op);
+                    ProgramStopWait.await(c, progress, op, call, pollMs,
+                            () -> progress.program().inProgramStop(executing(piece, c.executing(), 0, progress.program())));
+                }
+                Thread.sleep(pollMs);
+                continue;
+            }
+            if (origin >= 0) {
                 // a poll in a fault's routine leaves the line to search for the stop from (settled) at the block's
                 lastXq = xq;
             }
-            progress.at(executing, at, op);
+            progress.at(origin, at, op);
             // a hold, a dwell and a thread pass's wait for the spindle are not stalls
             Sequence s = progress.program().sequenceAt(progress.executingIndex());
             if (stall.stalled(at, s != null && !s.isThreadPass() && !hold.held() && op.override() > 0)) {

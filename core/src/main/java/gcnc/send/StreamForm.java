@@ -274,6 +274,12 @@ public final class StreamForm implements Form {
             } else if (cmd instanceof Command.Call call) {
                 c.require("XQ #" + call.label() + ",0");
                 progress.started();
+                if (call.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                    // a program stop: the resident routine waits for gstop=0 or the cycle start input
+                    progress.at(s.origin(), c.position(), op);
+                    ProgramStopWait.await(c, progress, op, s.origin(), pollMs, () -> c.executing() >= 0);
+                    operator();
+                }
                 for (int xq = c.executing(); xq >= 0; xq = c.executing()) {
                     progress.at(s.origin(), c.position(), op);
                     Thread.sleep(pollMs);

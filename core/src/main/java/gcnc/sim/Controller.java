@@ -39,6 +39,13 @@ final class Controller {
         default void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
         }
 
+        /**
+         * A program stop ({@code JS #PSTOP}: M00, M01 with the switch on): the machine waits for the
+         * operator, at rest; the cycle time counts none of it.
+         */
+        default void programStop(int line) {
+        }
+
         /** The sequence that ran ends here (AMS), for the reason the planner recorded (the corner report). */
         default void stopped(gcnc.plan.Stop why, int line) {
         }
@@ -503,7 +510,9 @@ final class Controller {
 
         /** A call of a wait routine (spindle at speed, turret in position): the replay's machine answers at once. */
         public Void call(Command.Call c) {
-            afterEnd();
+            if (!afterEnd() && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                out.programStop(line);
+            }
             return null;
         }
 

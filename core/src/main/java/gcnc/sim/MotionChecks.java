@@ -217,6 +217,13 @@ final class MotionChecks {
         outlines();
     }
 
+    /** A program stop: counted, no time (the operator's wait is not the machine's). */
+    void programStop() {
+        programStops++;
+    }
+
+    private int programStops;
+
     void dwell(double s) {
         seconds += s;
         terms.time(tool, s);
@@ -656,6 +663,6 @@ final class MotionChecks {
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
-                seconds, exactStopSeconds, d, terms.envelope(), terms.feedEnvelope(), terms.facts(machine, blank));
+                seconds, exactStopSeconds, d, terms.envelope(), terms.feedEnvelope(), terms.facts(machine, blank)).withProgramStops(programStops);
     }
 }

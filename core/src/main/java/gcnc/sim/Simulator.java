@@ -368,6 +368,11 @@ public final class Simulator {
         }
 
         @Override
+        public void programStop(int line) {
+            checks.programStop();
+        }
+
+        @Override
         public void tool(int n, int line) {
             checks.selectTool(n);
             if (n != 0 && !machine.described(n) && undescribed.add(n)) {

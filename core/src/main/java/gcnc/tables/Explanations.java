@@ -92,7 +92,8 @@ public final class Explanations {
         for (int n : new int[] {243, 244, 245}) {
             m.put(Code.byNumber(n), form);
         }
-        m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table); // a profile's key (plan.on_the_fly), numbered with the planner's codes
+        m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table);
+        m.put(Code.E850_CYCLE_START_INPUT, table); // a profile's key (stop.cycle_start), numbered with the program stop's codes // a profile's key (plan.on_the_fly), numbered with the planner's codes
         String files = "the command line's files (reading, writing, links), not the program's text";
         for (int n : new int[] {500, 501, 502, 510}) {
             m.put(Code.byNumber(n), files);

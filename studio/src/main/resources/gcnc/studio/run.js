@@ -26,6 +26,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   let armed = null; // the arm answer that Start may start
   let running = false;
   let step = false;
+  let stopWaiting = false; // at a program stop (M00; M01 with the switch on): Start goes on
   let held = false;
 
   function setState(state, text) {
@@ -39,6 +40,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     $("run-hold").disabled = !running || held;
     $("run-resume").disabled = !running || !held;
     $("run-step").disabled = !running || !step;
+    $("run-continue").disabled = !running || !stopWaiting;
     $("run-stop").disabled = !running;
     $("run-override").disabled = !running;
     for (const i of panel.querySelectorAll("#runform input, #runform select")) i.disabled = running;
@@ -108,7 +110,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     $("runstopped").replaceChildren();
     setState("arming", t.arming);
     try {
-      const body = { name, target: target(), step: $("runstep").checked };
+      const body = { name, target: target(), step: $("runstep").checked, optionalStop: $("runoptional").checked };
       const at = $("runresume").value.trim();
       if (at) body.resumeAt = at;
       const a = await api("run/arm", body);
@@ -186,6 +188,18 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
         $("dro").dataset.line = e.line;
         setState("step", t.stepWait((e.number ? `N${e.number} · ` : "") + `${t.line} ${e.line}`));
         break;
+      case "program-stop":
+        showLine(e.line);
+        stopWaiting = true;
+        line(log, t.programStop(e.line, e.comment), "message");
+        setState("stop", t.programStopState((e.number ? `N${e.number} · ` : "") + `${t.line} ${e.line}`, e.comment));
+        buttons();
+        break;
+      case "program-stop-continued":
+        stopWaiting = false;
+        setState("running", t.runningState);
+        buttons();
+        break;
       case "status": display(e); break;
       case "hold": held = e.held; setState(held ? "held" : "running", held ? t.heldState : t.runningState); buttons(); break;
       case "finding": finding(log, e); break;
@@ -245,6 +259,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   $("run-hold").addEventListener("click", () => command("hold"));
   $("run-resume").addEventListener("click", () => command("resume"));
   $("run-step").addEventListener("click", () => { setState("running", t.runningState); command("step"); });
+  $("run-continue").addEventListener("click", () => command("continue"));
   $("run-stop").addEventListener("click", () => command("stop"));
   $("run-override").addEventListener("change", (e) => command("override", { percent: Number(e.target.value) }));
   $("run-override").addEventListener("input", (e) => { $("run-overridevalue").textContent = `${e.target.value}%`; });
@@ -264,6 +279,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
         running = true;
         step = !!s.step;
         held = !!s.held;
+        stopWaiting = !!s.stopWaiting;
         for (const e of s.events) onEvent(e);
         if (s.status) display(s.status);
       }
