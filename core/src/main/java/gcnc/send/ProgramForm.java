@@ -198,6 +198,14 @@ public final class ProgramForm implements Form {
      * {@code EN}: #LIMSWI, #FAULT ...), where a fault sent the thread while the axes come to rest: no
      * block executes there, and the last poll's block stands.
      */
+    /**
+     * The compiled command thread 0 stands at on the controller's line {@code xq}, in a routine after
+     * the program's EN too ({@code #PSTOP}: a program stop's wait), or -1 beyond the piece.
+     */
+    static int standing(Piece piece, int xq) {
+        return piece.originOf(piece.lastOf(xq));
+    }
+
     static int executing(Piece piece, int xq, int css, DmcProgram program) {
         int at = piece.lastOf(xq); // a packed line ends at its wait: that is where the thread stands
         if (at >= routines(piece.commands())) {
@@ -288,14 +296,14 @@ public final class ProgramForm implements Form {
             }
             double[] at = c.position();
             int origin = executing(piece, xq, where[1], progress.program());
-            if (progress.program().inProgramStop(origin)) {
+            if (progress.program().inProgramStop(standing(piece, xq))) {
                 // a program stop (M00; M01 with the switch on): the block of its call, at rest, waits for the operator
                 int call = progress.program().programStopFrom(progress.executingIndex());
                 if (call >= 0 && call != announced) {
                     announced = call;
                     progress.at(call, at, op);
                     ProgramStopWait.await(c, progress, op, call, pollMs,
-                            () -> progress.program().inProgramStop(executing(piece, c.executing(), 0, progress.program())));
+                            () -> progress.program().inProgramStop(standing(piece, c.executing())));
                 }
                 Thread.sleep(pollMs);
                 continue;
