@@ -424,6 +424,13 @@ public sealed interface Command {
         /** {@code @ABS[_TPX-340000]>10}: the axis stands further than the tolerance from a count. */
         record PositionOff(char axis, long counts, long tolerance) implements Condition {
         }
+
+        /**
+         * {@code _LMS<n}: fewer than n slots of the vector buffer are free (COMALL LM: "_LMm contains
+         * the number of spaces available in the sequence buffer"), the wait for room of a fed sequence.
+         */
+        record BufferBelow(int slots) implements Condition {
+        }
     }
 
     /** What {@code MF}/{@code MR} waits for: a count, or a variable's value. */

@@ -46,6 +46,8 @@ final class MachineCode {
     static final String SPINDLE_WAIT = "SPWAIT";
     static final String TURRET = "TURRET";
     static final String FAULT = "FAULT";
+    /** The wait for room in the vector buffer of a sequence fed while it runs (GroupWriter). */
+    public static final String BUFFER_WAIT = "LMWAIT";
     /** The automatic subroutines gcnc installs, with what each says: DMC-40x0 command reference, pp. 12-21. */
     static final List<String> HANDLERS = List.of("CMDERR", "LIMSWI", "POSERR", "AMPERR");
 
@@ -217,6 +219,15 @@ final class MachineCode {
         }
     }
 
+    /** The free slots {@code #LMWAIT} waits for; 0 while no sequence has needed feeding. */
+    private int bufferWait;
+
+    /** {@code JS #LMWAIT}: the program waits until {@code slots} slots of the vector buffer are free. */
+    void awaitBuffer(int slots, BlockWriter out) {
+        bufferWait = slots;
+        out.emit(new Command.Call(BUFFER_WAIT));
+    }
+
     /** Before a motion (an alone one, or a group's first): the wait for speed, when it is pending and the motion feeds. */
     void beforeMotion(Motion m, BlockWriter out) {
         if (!waitForSpeed || !feeds(m)) {
@@ -294,6 +305,12 @@ final class MachineCode {
         }
         if (spindleWaitUsed && io.atSpeed() instanceof MachineIo.AtSpeed.Input in) {
             waitFor(c, SPINDLE_WAIT, "SPW", in.input(), in.timeoutSeconds(), List.of(), "SPINDLE NOT AT SPEED");
+        }
+        if (bufferWait > 0) {
+            // #LMWAIT: back to itself while fewer slots are free than the next batch needs (COMALL VM, LM)
+            c.add(new Command.Label(BUFFER_WAIT));
+            c.add(new Command.Jump(BUFFER_WAIT, Optional.of(new Command.Condition.BufferBelow(bufferWait))));
+            c.add(new Command.End());
         }
         if (turretUsed) {
             MachineIo.Turret t = io.turret().get();
