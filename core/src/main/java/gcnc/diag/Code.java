@@ -763,7 +763,9 @@ public enum Code {
     /** Probe: the motion test cannot start (a program runs, a sequence moves, a limit is active). */
     E835_PROBE_NOT_READY(835),
     /** Probe (warning): the controller answered against a reference fact (a row of the report). */
-    E836_PROBE_CONTRADICTION(836);
+    E836_PROBE_CONTRADICTION(836),
+    /** Sender: the vector buffer ran dry before VE (the host did not keep a fed sequence fed): the axes stopped mid-sequence. */
+    E890_BUFFER_STARVED(890);
 
     private final int number;
 

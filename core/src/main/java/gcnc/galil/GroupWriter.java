@@ -54,7 +54,7 @@ final class GroupWriter {
      * The segments written after each wait for room: the wait ({@code JS #LMWAIT}, MachineCode) lets
      * them through once {@code _LMS} counts this many free slots and one more for VE.
      */
-    static final int BATCH = 100;
+    static final int BATCH = gcnc.dmc.StreamSplit.BUFFER_BATCH;
 
     /*
      * The sequence being written, kept from one group to the next while it goes on (Step.Group#goesOn):

@@ -47,7 +47,7 @@ final class MachineCode {
     static final String TURRET = "TURRET";
     static final String FAULT = "FAULT";
     /** The wait for room in the vector buffer of a sequence fed while it runs (GroupWriter). */
-    public static final String BUFFER_WAIT = "LMWAIT";
+    static final String BUFFER_WAIT = gcnc.dmc.StreamSplit.BUFFER_WAIT;
     /** The automatic subroutines gcnc installs, with what each says: DMC-40x0 command reference, pp. 12-21. */
     static final List<String> HANDLERS = List.of("CMDERR", "LIMSWI", "POSERR", "AMPERR");
 
