@@ -163,6 +163,16 @@ final class Controller {
         return !pending.isEmpty();
     }
 
+    /**
+     * Replays a sequence started by BGS whose VE has not come, as it stands: where the program
+     * gives no more (a hand-written BGS without VE; gcnc writes VE with a fed sequence's last segment).
+     */
+    void startBegun() {
+        if (begun) {
+            startSequence();
+        }
+    }
+
     void dropPending() {
         pending.clear();
     }

@@ -257,6 +257,7 @@ public final class Simulator {
     }
 
     private void closeSequences(int line) {
+        dmc.startBegun(); // a BGS whose VE never came (a hand-written program): it runs as it stands
         if (dmc.hasPending()) {
             report(Code.E314_SIM_SEQUENCE_NOT_STARTED, line);
             dmc.dropPending();
