@@ -789,7 +789,9 @@ public enum Code {
     /** Simulate (note): the DMC is a stream form's resident program: its motion is in the stream beside it. */
     E864_RESIDENT_WITHOUT_STREAM(864),
     /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */
-    E865_PORT_NOT_A_DEVICE(865);
+    E865_PORT_NOT_A_DEVICE(865),
+    /** Sender: the vector buffer ran dry before VE (the host did not keep a fed sequence fed): the axes stopped mid-sequence. */
+    E890_BUFFER_STARVED(890);
 
     private final int number;
 

@@ -436,6 +436,13 @@ public sealed interface Command {
         /** {@code gstop=1}: a DMC variable holds a whole number (the host's continue clears gcnc's {@code gstop}). */
         record VariableIs(String name, long value) implements Condition {
         }
+
+        /**
+         * {@code _LMS<n}: fewer than n slots of the vector buffer are free (COMALL LM: "_LMm contains
+         * the number of spaces available in the sequence buffer"), the wait for room of a fed sequence.
+         */
+        record BufferBelow(int slots) implements Condition {
+        }
     }
 
     /** What {@code MF}/{@code MR} waits for: a count, or a variable's value. */

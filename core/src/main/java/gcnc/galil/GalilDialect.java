@@ -108,7 +108,14 @@ final class GalilDialect implements Dialect {
             motion(s.block(), s.block().motions().get(s.motion()), out);
             out.motion(-1);
         } else if (step instanceof Step.Group g) {
-            if (g.pieces().size() == 1) {
+            if (g.continues()) {
+                grouping = true; // the next window of the sequence being written (Contouring#WINDOW)
+                try {
+                    sequence.write(g);
+                } finally {
+                    grouping = false;
+                }
+            } else if (g.pieces().size() == 1 && !g.goesOn()) {
                 // one motion: what the exact-stop planner writes, no segment speeds
                 gcnc.plan.Piece p = g.pieces().get(0);
                 stop = g.stop();
@@ -121,7 +128,8 @@ final class GalilDialect implements Dialect {
                 // runs when it is read, not when the path gets there (docs/galil.md)
                 grouping = true;
                 try {
-                    new GroupWriter(this, sink).write(g);
+                    sequence = new GroupWriter(this, sink);
+                    sequence.write(g);
                 } finally {
                     grouping = false;
                 }
@@ -142,6 +150,8 @@ final class GalilDialect implements Dialect {
     }
 
     private BlockWriter writer;
+    /** The writer of the last sequence begun: a sequence that goes on is written on by it. */
+    private GroupWriter sequence;
     /** A multi-motion group is being written: its blocks after the first get no gline=<line> (MachineCode). */
     private boolean grouping;
     /** The blocks written so far: each new one's number in the run (Source#block). */
@@ -173,6 +183,16 @@ final class GalilDialect implements Dialect {
                 return null;
             }
         });
+    }
+
+    /** The model's vector buffer, segments (tables/galil_models.csv {@code buffer_segments}). */
+    int bufferSegments() {
+        return (int) limits.model().range(gcnc.machine.GalilModel.Limit.BUFFER_SEGMENTS).max();
+    }
+
+    /** The wait for {@code slots} free slots of the vector buffer (MachineCode's {@code #LMWAIT}). */
+    void awaitBuffer(int slots, BlockWriter out) {
+        machine.awaitBuffer(slots, out);
     }
 
     /** The spindle's speed reference (also for G96 inside a group, GroupWriter): MachineCode's. */

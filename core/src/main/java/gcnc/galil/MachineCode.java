@@ -50,6 +50,8 @@ final class MachineCode {
     static final String PROGRAM_STOP = gcnc.dmc.ProgramStop.LABEL;
     /** The DMC variable a program stop waits on: 1 while it waits; the host's continue sets it to 0. */
     static final String STOP_FLAG = gcnc.dmc.ProgramStop.FLAG;
+    /** The wait for room in the vector buffer of a sequence fed while it runs (GroupWriter). */
+    static final String BUFFER_WAIT = gcnc.dmc.StreamSplit.BUFFER_WAIT;
     /** The automatic subroutines gcnc installs, with what each says: DMC-40x0 command reference, pp. 12-21. */
     static final List<String> HANDLERS = List.of("CMDERR", "LIMSWI", "POSERR", "AMPERR");
 
@@ -222,6 +224,15 @@ final class MachineCode {
         }
     }
 
+    /** The free slots {@code #LMWAIT} waits for; 0 while no sequence has needed feeding. */
+    private int bufferWait;
+
+    /** {@code JS #LMWAIT}: the program waits until {@code slots} slots of the vector buffer are free. */
+    void awaitBuffer(int slots, BlockWriter out) {
+        bufferWait = slots;
+        out.emit(new Command.Call(BUFFER_WAIT));
+    }
+
     /** Before a motion (an alone one, or a group's first): the wait for speed, when it is pending and the motion feeds. */
     void beforeMotion(Motion m, BlockWriter out) {
         if (!waitForSpeed || !feeds(m)) {
@@ -310,6 +321,12 @@ final class MachineCode {
         }
         if (spindleWaitUsed && io.atSpeed() instanceof MachineIo.AtSpeed.Input in) {
             waitFor(c, SPINDLE_WAIT, "SPW", in.input(), in.timeoutSeconds(), List.of(), "SPINDLE NOT AT SPEED");
+        }
+        if (bufferWait > 0) {
+            // #LMWAIT: back to itself while fewer slots are free than the next batch needs (COMALL VM, LM)
+            c.add(new Command.Label(BUFFER_WAIT));
+            c.add(new Command.Jump(BUFFER_WAIT, Optional.of(new Command.Condition.BufferBelow(bufferWait))));
+            c.add(new Command.End());
         }
         if (turretUsed) {
             MachineIo.Turret t = io.turret().get();

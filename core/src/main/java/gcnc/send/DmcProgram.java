@@ -302,11 +302,25 @@ public final class DmcProgram {
         return List.copyOf(names);
     }
 
-    /** The longest run of segments one sequence puts in the vector buffer. */
+    /**
+     * The most segments one sequence puts in the vector buffer before its {@code BGS}: all of it, or
+     * the first fill of one fed while it runs (BGS before VE, docs/galil.md "Continuous contouring").
+     */
     public int mostSegments() {
         int m = 0;
         for (Sequence s : sequences) {
-            m = Math.max(m, s.pieces().size());
+            int bgs = s.last();
+            for (int i = s.first(); i <= s.last(); i++) {
+                if (instructions.get(i).command() instanceof Command.BeginSequence) {
+                    bgs = i;
+                    break;
+                }
+            }
+            int before = 0;
+            for (Sequence.Piece p : s.pieces()) {
+                before += p.line() < bgs ? 1 : 0;
+            }
+            m = Math.max(m, before);
         }
         return m;
     }

@@ -196,6 +196,12 @@ public final class StreamForm implements Form {
          * start of the sequence", so the host waits for the sum of the sequence's AVs so far.
          */
         private long tripped;
+        /**
+         * Whether the sequence being sent was started ({@code BGS}) before its {@code VE}: it is fed while
+         * it runs, and must not end before VE is sent (an empty buffer then is a starvation, E890).
+         */
+        private boolean feeding;
+        private boolean vectorEnded;
 
         Feed(Controller c, Progress progress, Operator op) {
             this.c = c;
@@ -223,6 +229,7 @@ public final class StreamForm implements Form {
                 // when the slots counted since the last answer run out
                 while (free < 2) {
                     free = (int) c.client().number("_LMS");
+                    starved(s);
                     if (free < 2) {
                         follow();
                         Thread.sleep(pollMs);
@@ -233,10 +240,16 @@ public final class StreamForm implements Form {
                 Sequence q = progress.program().sequenceAt(s.origin());
                 end = q == null ? end : q.end();
             }
+            if (cmd instanceof Command.VectorEnd) {
+                starved(s); // a fed sequence must still run when its VE comes
+                vectorEnded = true;
+            }
             c.require(gcnc.dmc.DmcPrinter.print(cmd));
             if (cmd instanceof Command.BeginSequence) {
                 progress.started();
                 tripped = 0;
+                feeding = !vectorEnded;
+                vectorEnded = false;
             }
             if (!progress.hasStarted() || !(cmd instanceof Command.BeginSequence)) {
                 progress.pointAt(s.origin());
@@ -271,6 +284,17 @@ public final class StreamForm implements Form {
                     Thread.sleep(pollMs);
                     operator();
                 }
+            } else if (cmd instanceof Command.Call call && call.label().equals(StreamSplit.BUFFER_WAIT)) {
+                // the program form's wait for room (JS #LMWAIT): the host polls _LMS itself, every pollMs,
+                // until the next batch and VE fit (gclib's vector example reads _LMS every 100 ms)
+                for (free = (int) c.client().number("_LMS"); free < StreamSplit.BUFFER_BATCH + 1;
+                     free = (int) c.client().number("_LMS")) {
+                    starved(s);
+                    follow();
+                    Thread.sleep(pollMs);
+                    operator();
+                }
+                starved(s);
             } else if (cmd instanceof Command.Call call) {
                 c.require("XQ #" + call.label() + ",0");
                 progress.started();
@@ -291,6 +315,26 @@ public final class StreamForm implements Form {
                     throw f;
                 }
             }
+        }
+
+        /**
+         * A sequence fed while it runs that has ended before its VE was sent: the buffer ran dry, and
+         * the controller stopped the axes at the last segment's end (M13X8-74: "the controller will stop
+         * motion instantly at the last vector"). Never taken for a normal end: E890 at its segment.
+         */
+        private void starved(Sent s) throws IOException, RunFault {
+            if (!feeding || vectorEnded || c.client().number("_BGS") != 0) {
+                return;
+            }
+            double[] at = c.position();
+            int css = c.segment(); // the last segment executed (SegmentCount: one place for _CSS's base)
+            int k = Math.max(1, Math.min(segments.size(), css));
+            progress.at(segments.get(k - 1), at, op);
+            int code = c.stopCode();
+            feeding = false;
+            c.stopAll();
+            throw new RunFault(Code.E890_BUFFER_STARVED, progress.executingLine(), true, k, progress.executingLine(),
+                    code == 101 ? "" : " (stop code " + code + ": " + Controller.stopReason(code) + ")");
         }
 
         /** One poll while a sequence runs: the segment executing names the block; the axes where they are. */

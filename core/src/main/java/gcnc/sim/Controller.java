@@ -62,6 +62,10 @@ final class Controller {
     private double cursor1;
     private double cursor2;
     private List<Segment> pending = new ArrayList<>();
+    /** VE came for the segments pending (the whole sequence in the buffer before BGS). */
+    private boolean vectorEnded;
+    /** BGS came before VE: the segments after it join the running sequence until VE (COMALL VM). */
+    private boolean begun;
     /**
      * The segments of the last sequence started (the list {@link #pending} was, swapped at BGS: no
      * copy), kept for the trip points after it, which {@link #measure} works out only when an AV asks.
@@ -167,6 +171,16 @@ final class Controller {
 
     boolean hasPending() {
         return !pending.isEmpty();
+    }
+
+    /**
+     * Replays a sequence started by BGS whose VE has not come, as it stands: where the program
+     * gives no more (a hand-written BGS without VE; gcnc writes VE with a fed sequence's last segment).
+     */
+    void startBegun() {
+        if (begun) {
+            startSequence();
+        }
     }
 
     void dropPending() {
@@ -296,18 +310,33 @@ final class Controller {
         }
 
         public Void vectorEnd(Command.VectorEnd c) {
-            afterEnd();
+            if (!afterEnd()) {
+                if (begun) {
+                    startSequence(); // a sequence fed while it ran: its last segment came before this VE
+                } else {
+                    vectorEnded = true;
+                }
+            }
             return null;
         }
 
         public Void beginSequence(Command.BeginSequence c) {
             if (!afterEnd()) {
-                Controller.this.startSequence();
+                if (vectorEnded || pending.isEmpty()) {
+                    Controller.this.startSequence();
+                } else {
+                    // BGS after the first fill, VE after the last segment (a sequence longer than the
+                    // buffer, fed while it runs: COMALL VM): replayed whole at its VE
+                    begun = true;
+                }
             }
             return null;
         }
 
         public Void awaitSequence(Command.AwaitSequence c) {
+            if (begun) {
+                startSequence(); // (a hand-written BGS without VE: replayed as it stands)
+            }
             if (!afterEnd() && c.why() != null) {
                 out.stopped(c.why(), line);
             }
@@ -592,6 +621,8 @@ final class Controller {
     }
 
     private void startSequence() {
+        begun = false;
+        vectorEnded = false;
         if (pending.isEmpty()) {
             return;
         }

@@ -113,7 +113,8 @@ public final class Explanations {
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         for (Code c : Code.values()) {
-            if (c.number() >= 815 && c.number() < 850 || c == Code.E865_PORT_NOT_A_DEVICE) { // E830-E849: the probe and the controller the profile names
+            // E830-E849: the probe and the controller the profile names; E890-E899: feeding a running sequence
+            if (c.number() >= 815 && c.number() < 850 || c.number() >= 890 && c.number() < 900 || c == Code.E865_PORT_NOT_A_DEVICE) {
                 m.put(c, link);
             }
         }
