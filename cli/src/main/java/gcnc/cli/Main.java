@@ -89,6 +89,7 @@ public final class Main implements Runnable {
         m.put("simulate", SimulateCommand.class);
         m.put("sheet", SheetCommand.class);
         m.put("run", SendCommand.class);
+        m.put("offsets", OffsetsCommand.class);
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
