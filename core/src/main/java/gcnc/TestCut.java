@@ -210,15 +210,9 @@ public final class TestCut {
         return new Saved(n, changes, next, target, now, units);
     }
 
-    /**
-     * A wear as the pre-flight and the test cut show it: {@code T01 X+0.030 Z0.000 (diameter, mm)}
-     * (X as the program writes it: a diameter or a radius).
-     */
+    /** A wear as the pre-flight and the test cut show it ({@link ToolWear#describe}). */
     public static String describe(ToolWear wear, int n, MachineProfile p) {
-        Optional<ToolWear.Wear> w = wear.of(n);
-        return "T" + two(n) + " X" + signed(w.map(ToolWear.Wear::x).orElse(0.0)) + " Z"
-                + signed(w.map(ToolWear.Wear::z).orElse(0.0)) + " (" + (p.diameterX() ? "diameter" : "radius")
-                + ", " + wear.unit() + ")";
+        return wear.describe(n, p.diameterX());
     }
 
     /** The change in the offsets unit: mm (inch programs times 25.4), or counts on that axis. */
@@ -235,13 +229,9 @@ public final class TestCut {
         return BigDecimal.valueOf(v).setScale(6, RoundingMode.HALF_EVEN).doubleValue();
     }
 
-    /** "+0.030", "-0.0762", "0.000": at least 3 decimals, a sign unless zero. */
+    /** "+0.030", "-0.0762", "0.000" ({@link ToolWear#signed}). */
     public static String signed(double v) {
-        BigDecimal d = BigDecimal.valueOf(round(v)).stripTrailingZeros();
-        if (d.scale() < 3) {
-            d = d.setScale(3);
-        }
-        return (d.signum() > 0 ? "+" : "") + d.toPlainString();
+        return ToolWear.signed(v);
     }
 
     private static String two(int n) {

@@ -57,6 +57,31 @@ public record ToolWear(Map<Integer, Wear> byOffset, boolean counts, double maxSt
         return new ToolWear(m, counts, maxStep, maxTotal, offsetsFile);
     }
 
+    /**
+     * Offset {@code n}'s wear as the pre-flight and the test cut show it: {@code T01 X+0.030 Z0.000
+     * (diameter, mm)} (X as the program writes it: a diameter or a radius).
+     */
+    public String describe(int n, boolean diameterX) {
+        Wear w = byOffset.get(n);
+        return describe(n, w == null ? 0 : w.x(), w == null ? 0 : w.z(), diameterX, unit());
+    }
+
+    /** {@link #describe(int, boolean)} of offset {@code n}'s wear {@code x, z} in {@code unit}. */
+    public static String describe(int n, double x, double z, boolean diameterX, String unit) {
+        return "T" + (n < 10 ? "0" + n : Integer.toString(n)) + " X" + signed(x) + " Z" + signed(z) + " ("
+                + (diameterX ? "diameter" : "radius") + ", " + unit + ")";
+    }
+
+    /** A wear value with its sign: "+0.030", "-0.0762", "0.000" (at least 3 decimals, at most 6). */
+    public static String signed(double v) {
+        java.math.BigDecimal d = java.math.BigDecimal.valueOf(v).setScale(6, java.math.RoundingMode.HALF_EVEN)
+                .stripTrailingZeros();
+        if (d.scale() < 3) {
+            d = d.setScale(3);
+        }
+        return (d.signum() > 0 ? "+" : "") + d.toPlainString();
+    }
+
     /** The unit of the values as a person reads it: "mm" or "counts". */
     public String unit() {
         return counts ? "counts" : "mm";
