@@ -243,6 +243,46 @@ class WearOffsetsTest {
                 .of(1).orElseThrow().x(), 1e-12);
     }
 
+    /**
+     * A profile's own wear.N, its limits and its offsets.file (relative to the profile): the file's
+     * wear.N replaces the profile's, --offsets replaces the file, and a test cut writes into it.
+     */
+    @Test
+    void theProfileNamesItsOffsetsFileAndItsLimits() throws Exception {
+        Path dir = folder();
+        Path part = write(dir, "part.nc", METRIC);
+        String shipped = new String(WearOffsetsTest.class.getResourceAsStream("/tables/machines/fanuc.machine")
+                .readAllBytes(), StandardCharsets.UTF_8);
+        Files.createDirectories(dir.resolve("shop"));
+        Path profile = write(dir, "shop/lathe.machine", shipped + "wear.1 = 0.2, 0\nwear.3 = 0.1, 0.1\n"
+                + "offsets.file = lathe.offsets\nwear.max_step = 0.05\nwear.max_total = 0.3\n");
+        Path offsets = write(dir, "shop/lathe.offsets", "wear.1 = 0.01, 0\n");
+        MachineProfile p = Session.open(Session.Options.defaults().withMachine(profile.toString())).profile();
+        assertEquals(0.01, p.wear().of(1).orElseThrow().x(), 1e-12, "the file's wear.1 replaces the profile's");
+        assertEquals(0.1, p.wear().of(3).orElseThrow().z(), 1e-12, "the profile's wear.3 stays");
+        assertEquals(0.05, p.wear().maxStep(), 1e-12);
+        // 0.06 is more than this profile's step of 0.05
+        RunOnControllerTest.Run r = gcnc("", "offsets", "wear", "T0101", "--measured", "X39.94", "--programmed", "X40.",
+                part.toString(), "--machine", profile.toString());
+        assertEquals(1, r.status(), r.all());
+        assertTrue(r.err().contains(offsets + ":1:1: error[E872]") && r.err().contains("wear.max_step = 0.05 mm"),
+                r.err());
+        r = gcnc("", "offsets", "wear", "T0101", "--measured", "X39.96", "--programmed", "X40.", part.toString(),
+                "--machine", profile.toString());
+        assertEquals(0, r.status(), r.all());
+        assertEquals("wear.1 = 0.05, 0\n", Files.readString(offsets));
+        assertTrue(Files.readString(profile).endsWith("wear.max_total = 0.3\n"), "the profile is not written");
+        // --offsets replaces offsets.file
+        Path other = write(dir, "other.offsets", "wear.1 = -0.02, 0\n");
+        p = Session.open(Session.Options.defaults().withMachine(profile.toString()).withOffsets(other)).profile();
+        assertEquals(-0.02, p.wear().of(1).orElseThrow().x(), 1e-12);
+        // a step above the total could never be taken
+        Path bad = write(dir, "bad.machine", shipped + "wear.max_step = 2\n");
+        r = gcnc("", "check", part.toString(), "--machine", bad.toString());
+        assertEquals(2, r.status(), r.all());
+        assertTrue(r.err().contains("error[E454]: wear.max_step = 2 is more than wear.max_total = 1"), r.err());
+    }
+
     @Test
     void theOffsetsFilesFaultsAreLocated() throws Exception {
         Path dir = folder();
