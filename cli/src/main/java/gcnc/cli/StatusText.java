@@ -96,6 +96,10 @@ final class StatusText implements EventSink {
                     p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
                     Math.round(p.position()[0]) + "," + Math.round(p.position()[1]));
         }
+        if (e instanceof Event.Wear w) {
+            return say.get("run.wear", w.file(),
+                    gcnc.machine.ToolWear.describe(w.offset(), w.x(), w.z(), w.diameter(), w.unit()));
+        }
         if (e instanceof Event.Downloaded d) {
             return say.get("run.downloaded", d.lines());
         }

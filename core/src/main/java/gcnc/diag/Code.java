@@ -536,6 +536,19 @@ public enum Code {
     E436_INPUT_RANGE(436),
     /** Profile: spindle.output = AO n with n outside 1,000-8,999, the only I/O numbers AO takes (command reference AO). */
     E437_ANALOG_OUTPUT_RANGE(437),
+    // 450-459: wear offsets in a profile or its offsets file (docs/profiles.md, "Wear offsets").
+    /** Offsets file: a key other than wear.N (N = 1 to 99). */
+    E450_OFFSETS_FILE_KEY(450),
+    /** Profile or offsets file: wear.N with a third value, the nose radius's wear, which gcnc does not support yet. */
+    E451_WEAR_NOSE_NOT_SUPPORTED_YET(451),
+    /** Profile or offsets file: wear.N for a tool offset the profile does not have. */
+    E452_WEAR_NO_TOOL_OFFSET(452),
+    /** Profile or offsets file: a wear larger in size than wear.max_total. */
+    E453_WEAR_BEYOND_TOTAL(453),
+    /** Profile: wear.max_step larger than wear.max_total. */
+    E454_WEAR_STEP_ABOVE_TOTAL(454),
+    /** The offsets file named (--offsets, offsets.file) does not exist. */
+    E455_OFFSETS_FILE_MISSING(455),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
@@ -790,6 +803,24 @@ public enum Code {
     E864_RESIDENT_WITHOUT_STREAM(864),
     /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */
     E865_PORT_NOT_A_DEVICE(865),
+
+    // --- gcnc offsets wear, the test cut (issue 34; docs/command-line.md): E870-E879
+    /** Test cut: the offset named is not T01, T0101 or a number 1 to 99. */
+    E870_WEAR_OFFSET_NAME(870),
+    /** Test cut: --measured and --programmed are not an axis letter and a number each, on the same axis. */
+    E871_WEAR_MEASUREMENT(871),
+    /** Test cut: the change is larger than wear.max_step (a slip of the keyboard). */
+    E872_WEAR_STEP(872),
+    /** Test cut: the wear after the change would be larger than wear.max_total. */
+    E873_WEAR_TOTAL(873),
+    /** Test cut: the program re-verified with the new wear has an error it did not have. */
+    E874_WEAR_NEW_FINDING(874),
+    /** Test cut: the program has errors before the wear changes, so it cannot be re-verified. */
+    E875_WEAR_PROGRAM_NOT_CLEAN(875),
+    /** Test cut: a shipped profile and no offsets file named: nowhere to keep the wear. */
+    E876_WEAR_NOWHERE_TO_SAVE(876),
+    /** Test cut: the program does not use the offset named (its DMC is the same with the new wear). */
+    E877_WEAR_OFFSET_UNUSED(877),
     /** Sender: the vector buffer ran dry before VE (the host did not keep a fed sequence fed): the axes stopped mid-sequence. */
     E890_BUFFER_STARVED(890);
 

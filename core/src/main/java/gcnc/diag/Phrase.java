@@ -146,6 +146,9 @@ public enum Phrase {
     UNKNOWN_KEY_WORK,
     UNKNOWN_KEY_TOOL,
     UNKNOWN_KEY_NOSE,
+    UNKNOWN_KEY_WEAR,
+    /** wear.0: wear offsets are numbered from 1 ({0}: the key). */
+    WEAR_FROM_ONE,
     UNKNOWN_KEY_M,
     UNKNOWN_KEY_SIM_TOOL,
     UNKNOWN_KEY_DOCS,

@@ -21,6 +21,7 @@ final class ProfileKeys {
             "x.counts_per_inch", "z.counts_per_inch", "x.travel", "z.travel", "x.programming",
             "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",
             "spindle.max_rpm", "spindle.rpm_per_volt", "spindle.axis", "spindle.encoder", "spindle.encoder_axis", "tool_post", "offsets.unit",
+            "offsets.file", "wear.max_step", "wear.max_total",
             "tools.table", "tools.offsets", "tools.count", "tools.file", "feed.per_f", "thread.chamfer_leads",
             "thread.chamfer_angle", "plan.blend", "corner.deviation", "plan.on_the_fly", "reference.2", "reference.3", "reference.4",
             // the machine around the motion (MachineIo)
@@ -48,6 +49,8 @@ final class ProfileKeys {
             // T's last two digits pick the offset: 1 to 99 (tool.0 is refused by ProfileLoader, with its reason)
             new Family("tool.", "tool\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_TOOL),
             new Family("nose.", "nose\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_NOSE),
+            // wear of tool offset N, apart from its geometry tool.N (ToolWear; also the only key of an offsets file)
+            new Family("wear.", "wear\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_WEAR),
             new Family("m.", "m\\.[0-9]{1,3}", Phrase.UNKNOWN_KEY_M),
             new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
                     Phrase.UNKNOWN_KEY_SIM_TOOL),

@@ -126,6 +126,17 @@ public final class BlockTable {
         return new BlockTable(out, comments(text));
     }
 
+    /** The tool offsets (1..99) in force at some line of the main program, in order. */
+    public java.util.SortedSet<Integer> toolOffsets() {
+        java.util.SortedSet<Integer> used = new java.util.TreeSet<>();
+        for (Block b : blocks.values()) {
+            if (b.toolOffset() != 0) {
+                used.add(b.toolOffset());
+            }
+        }
+        return used;
+    }
+
     /** The state at G-code line {@code line}, or null for a line with no block. */
     public Block at(int line) {
         return blocks.get(line);

@@ -20,6 +20,14 @@ public sealed interface Event {
                      String pendingError, String limitSwitches, String motorsOff, double[] position) implements Event {
     }
 
+    /**
+     * Pre-flight: a wear offset the program's DMC was compiled with (one event per tool offset the
+     * program uses that has a {@code wear.N}): where it was read, the offset, its X (as the program
+     * writes X: a diameter when {@code diameter}) and Z wear in {@code unit} (mm or counts).
+     */
+    record Wear(String file, int offset, double x, double z, String unit, boolean diameter) implements Event {
+    }
+
     /** The program (or one step of it) is on the controller and was read back identical. */
     record Downloaded(int lines, boolean verified) implements Event {
     }

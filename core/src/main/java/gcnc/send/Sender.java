@@ -168,6 +168,11 @@ public final class Sender {
         events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), needLabels,
                 f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
                 f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
+        // the wear the DMC was compiled with: the operator sees which file's wear moves the tools (docs/run.md)
+        for (int n : blocks.toolOffsets()) {
+            profile.wear().of(n).ifPresent(w -> events.accept(new Event.Wear(w.file(), n, w.x(), w.z(),
+                    profile.wear().unit(), profile.diameterX())));
+        }
         if (needLines > programLines) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", programLines
                     + " (" + f.revision() + ")", form.name().equals("program") ? "run it in the stream form (--form stream)"

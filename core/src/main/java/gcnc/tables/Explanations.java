@@ -118,6 +118,13 @@ public final class Explanations {
                 m.put(c, link);
             }
         }
+        String testCut = "the test cut (gcnc offsets wear): its arguments, the wear limits and the offsets file,"
+                + " not the program's text (docs/command-line.md)";
+        for (Code c : Code.values()) {
+            if (c.number() >= 870 && c.number() < 880) {
+                m.put(c, testCut);
+            }
+        }
         return java.util.Collections.unmodifiableMap(m);
     }
 
