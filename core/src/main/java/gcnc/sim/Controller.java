@@ -66,6 +66,8 @@ final class Controller {
     private boolean vectorEnded;
     /** BGS came before VE: the segments after it join the running sequence until VE (COMALL VM). */
     private boolean begun;
+    /** The begun sequence is fed while it runs: gcnc's wait for room (JS #LMWAIT) followed its BGS. */
+    private boolean fed;
     /**
      * The segments of the last sequence started (the list {@link #pending} was, swapped at BGS: no
      * copy), kept for the trip points after it, which {@link #measure} works out only when an AV asks.
@@ -204,6 +206,9 @@ final class Controller {
     void run(Instruction i) {
         this.instruction = i;
         this.line = i.source().line();
+        if (begun && !fed && !(i.command() instanceof Command.Call c && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT))) {
+            handWrittenBegin(); // any command but the wait for room after a BGS before VE: it started there
+        }
         i.command().accept(step);
     }
 
@@ -326,8 +331,10 @@ final class Controller {
                     Controller.this.startSequence();
                 } else {
                     // BGS after the first fill, VE after the last segment (a sequence longer than the
-                    // buffer, fed while it runs: COMALL VM): replayed whole at its VE
+                    // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
+                    // room that gcnc writes right after such a BGS (JS #LMWAIT) says it is one
                     begun = true;
+                    fed = false;
                 }
             }
             return null;
@@ -539,6 +546,9 @@ final class Controller {
 
         /** A call of a wait routine (spindle at speed, turret in position): the replay's machine answers at once. */
         public Void call(Command.Call c) {
+            if (begun && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT)) {
+                fed = true;
+            }
             if (!afterEnd() && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
                 out.programStop(line);
             }
@@ -618,6 +628,17 @@ final class Controller {
         pending.add(s);
         cursor1 = e1;
         cursor2 = e2;
+    }
+
+    /**
+     * A BGS before VE that no wait for room followed (a hand-written program, the thesis's object
+     * program: BGS after each segment and no VE) starts its sequence as it stood at the BGS, before
+     * the next command runs, as the replay always ran it.
+     */
+    private void handWrittenBegin() {
+        if (begun && !fed) {
+            startSequence();
+        }
     }
 
     private void startSequence() {
