@@ -133,14 +133,61 @@ class StudioBrowserTest {
         // no DMC and no path for a program with an error: the last ones stay, greyed and said to be old
         wait.until(ExpectedConditions.attributeContains(By.id("path"), "class", "stale"));
         assertTrue(browser.findElement(By.id("pathnote")).getText().contains("last version without errors"));
+        // the DMC pane says why it has no DMC of this text, and the summary does not say "DMC lines: 0"
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("dmcnote"),
+                "no DMC: the program has 1 error (the first at line 6); nothing is translated after it"));
+        assertTrue(browser.findElement(By.id("galil")).getAttribute("class").contains("stale"));
+        assertTrue(browser.findElement(By.id("summary")).getText().contains("DMC lines: no DMC: the program has 1 error"),
+                browser.findElement(By.id("summary")).getText());
         Browser.screenshot(browser, "diagnostics");
 
         content.sendKeys(Keys.BACK_SPACE, Keys.BACK_SPACE);
         wait.until(d -> errorRows().isEmpty() && d.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
         assertTrue(browser.findElement(By.id("counts")).getText().contains("no errors"));
         wait.until(d -> !d.findElement(By.id("path")).getAttribute("class").contains("stale"));
+        wait.until(ExpectedConditions.textToBe(By.id("dmcnote"), ""));
         assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")),
                 "typing saves nothing");
+    }
+
+    /**
+     * N145's cut made a rapid (line 9: G01 to G00): the check finds nothing, the simulator an E305 on
+     * the bar. The error list has it as soon as the text is simulated, no Compile pressed, with its
+     * code, line and message, counted in the heading and underlined; a click selects its line and
+     * marks its place on the path; the DMC pane says why it has none.
+     */
+    @Test
+    void aSimulatorFindingIsInTheErrorListWithoutCompileAndAClickShowsItsPlace() throws IOException {
+        WebElement content = endOfLine(9); // N145 G01 Z-03550
+        content.sendKeys(Keys.HOME, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT,
+                Keys.ARROW_RIGHT, Keys.DELETE, Keys.DELETE, "00");
+        wait.until(d -> d.findElement(By.cssSelector(".cm-content")).getText().contains("N145 G00 Z-03550"));
+        wait.until(d -> errorRows().size() == 1 && !errorRows().get(0).getAttribute("class").contains("pending"));
+        WebElement row = errorRows().get(0);
+        List<WebElement> cells = row.findElements(By.tagName("td"));
+        assertEquals("E305", cells.get(0).getText());
+        assertTrue(cells.get(1).getText().startsWith("rapid move enters the blank at X1984. Z-1775. (N145;"), cells.get(1).getText());
+        assertEquals("9", cells.get(2).getText());
+        assertTrue(row.getAttribute("class").contains("error") && row.getAttribute("class").contains("simulator"));
+        assertEquals("— 1 error, 0 warnings", browser.findElement(By.id("counts")).getText());
+        // underlined in the text too, as the check's findings are
+        WebElement ninth = browser.findElements(By.cssSelector(".cm-content .cm-line")).get(8);
+        wait.until(d -> !ninth.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
+        // no DMC for a program with an error, and the pane says why
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("dmcnote"),
+                "no DMC: the simulation found 1 error (the first at line 9)"));
+        assertTrue(browser.findElement(By.id("summary")).getText().contains("DMC lines: no DMC: the simulation found 1 error"));
+        assertFalse(Files.exists(dir.resolve("bishop.dmc")), "nothing compiled");
+        // a click: the cursor on line 9, its moves lit on the path, and the finding's place marked
+        browser.findElement(By.cssSelector(".cm-content")).sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "1"));
+        assertTrue(browser.findElements(By.cssSelector("#profile circle.mark.picked")).isEmpty());
+        errorRows().get(0).click();
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "9"));
+        WebElement mark = browser.findElement(By.cssSelector("#profile circle.mark.picked"));
+        assertEquals("E305", mark.getAttribute("data-code"));
+        assertEquals("9", mark.getAttribute("data-line"));
+        assertFalse(browser.findElements(By.cssSelector("#profile g.move.current[data-line='9']")).isEmpty());
     }
 
     @Test
@@ -311,6 +358,8 @@ class StudioBrowserTest {
             wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
             wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "sin errores"));
             endOfLine(6).sendKeys(" Q");
+            wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("dmcnote"),
+                    "sin DMC: el programa tiene 1 error (el primero en la línea 6)"));
             String message = onlyError("E006").get(1);
             assertFalse(message.equals("expecting a number for parameter Q"), message);
             assertTrue(message.contains("Q"), message);

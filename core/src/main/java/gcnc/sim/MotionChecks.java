@@ -592,7 +592,7 @@ final class MotionChecks {
         out.report(code, line, args);
         if (path != null) {
             String block = frame != null && !frame.sequence().isEmpty() ? frame.sequence() : "line " + line;
-            path.mark(code.id(), block, p[0], p[1], toolShape, side, tip);
+            path.mark(code.id(), block, line, p[0], p[1], toolShape, side, tip);
         }
     }
 

@@ -28,6 +28,14 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   let step = false;
   let stopWaiting = false; // at a program stop (M00; M01 with the switch on): Start goes on
   let held = false;
+  /**
+   * Whether the run has ended: its "finished" or "stopped" event came. The run's events and the answer
+   * to POST /api/run/start travel apart (the event stream and the request), so a short run can end
+   * before its start is answered: nothing after the end may say it is running.
+   */
+  let over = false;
+  /** Whether the run's thread has ended ("run-ended"): nothing of it is going on any more. */
+  let ended = false;
 
   function setState(state, text) {
     $("run-state").dataset.state = state;
@@ -134,15 +142,19 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     if (!armed) return;
     const a = armed;
     armed = null; // an arm moves the machine once
+    // cleared before the request: the run's first events may arrive before its answer
+    $("runlog").replaceChildren();
+    $("runstopped").replaceChildren();
+    over = false;
+    ended = false;
     try {
       await api("run/start", { arm: a.arm });
-      running = true;
-      step = a.step;
-      held = false;
-      $("runlog").replaceChildren();
-      $("runstopped").replaceChildren();
-      setState("running", t.runningState);
-      status(t.runStarted(a.name), "ok");
+      if (!over) status(t.runStarted(a.name), "ok");
+      if (!ended) { // still going (its end, when it came first, has said how it ended)
+        running = true;
+        step = a.step;
+        if (!over) { held = false; setState("running", t.runningState); }
+      }
     } catch (e) {
       status(e.message, "bad");
     }
@@ -172,7 +184,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
       + (s.override !== 1 && s.override !== null ? ` · ${t.override} ${Math.round(100 * s.override)}%` : "");
     if (s.program && !s.file) tool(s.program[0], s.program[1]);
     if (s.held !== held) { held = s.held; buttons(); }
-    if (running) setState(held ? "held" : "running", held ? t.heldState : t.runningState);
+    if (running && !over) setState(held ? "held" : "running", held ? t.heldState : t.runningState);
   }
 
   function onEvent(e) {
@@ -180,7 +192,10 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     switch (e.event) {
       case "connected": line(log, t.connected(e.link, e.controller)); break;
       case "preflight": line(log, preflight(e)); break;
-      case "started": line(log, t.startedLine(e.blocks, e.lines, clock(e.seconds), e.resumeAt)); running = true; step = e.step; break;
+      case "started":
+        line(log, t.startedLine(e.blocks, e.lines, clock(e.seconds), e.resumeAt));
+        running = true; step = e.step; over = false; ended = false;
+        break;
       case "downloaded": if (!step) line(log, t.downloaded(e.lines)); break;
       case "block": showLine(e.line); break;
       case "step-wait":
@@ -201,17 +216,23 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
         buttons();
         break;
       case "status": display(e); break;
-      case "hold": held = e.held; setState(held ? "held" : "running", held ? t.heldState : t.runningState); buttons(); break;
+      case "hold":
+        held = e.held;
+        if (!over) setState(held ? "held" : "running", held ? t.heldState : t.runningState);
+        buttons();
+        break;
       case "finding": finding(log, e); break;
       case "message": line(log, e.text, "message"); break;
       case "stopped": stopped(e); break;
       case "finished":
+        over = true;
         setState("finished", t.finished(clock(e.seconds)));
         $("dro-progress").value = 1;
         break;
       case "run-ended":
         running = false;
         held = false;
+        ended = true;
         if (e.status === 2 && $("run-state").dataset.state !== "stopped") setState("idle", t.notStarted);
         buttons();
         break;
@@ -221,6 +242,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
 
   /** A stop: where exactly, and the resume (a button that arms it, and the command line that does the same). */
   function stopped(e) {
+    over = true;
     setState("stopped", t.stoppedState(e.reason));
     const box = $("runstopped");
     box.replaceChildren();
@@ -258,7 +280,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   $("run-start").addEventListener("click", start);
   $("run-hold").addEventListener("click", () => command("hold"));
   $("run-resume").addEventListener("click", () => command("resume"));
-  $("run-step").addEventListener("click", () => { setState("running", t.runningState); command("step"); });
+  $("run-step").addEventListener("click", () => { if (!over) setState("running", t.runningState); command("step"); });
   $("run-continue").addEventListener("click", () => command("continue"));
   $("run-stop").addEventListener("click", () => command("stop"));
   $("run-override").addEventListener("change", (e) => command("override", { percent: Number(e.target.value) }));
