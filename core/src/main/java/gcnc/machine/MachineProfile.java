@@ -158,7 +158,7 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
         return new MachineProfile(name, galilModel, x, z, diameterX, noPointMm, noPointInch, home, rapidSpeed,
                 maxFeed, acceleration, deceleration, maxRpm, rpmPerVolt, spindleAxis, rearToolPost, workOffsets,
                 toolOffsets, tools, outputs, feedPerF, file, control.withOptionalStop(on), units, machineZero,
-                chuckByProgram, model, spindleEncoder, noses, threadChamfer);
+                chuckByProgram, model, spindleEncoder, noses, threadChamfer, wear);
     }
 
     public List<String> outputsFor(int m) {
