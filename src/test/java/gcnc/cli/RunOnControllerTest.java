@@ -412,8 +412,10 @@ class RunOnControllerTest {
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
             assertEquals(2, r.status(), r.all());
             long[] h = home();
-            assertTrue(r.err().contains("error[E826]: the axes are at 0,0 (Galil counts) but the program was verified from home at "
-                    + h[0] + "," + h[1]), r.err());
+            // in program terms first (the first motion's frame), the counts after
+            assertTrue(java.util.regex.Pattern.compile("error\\[E826\\]: the axes are at X-?\\d+\\.\\d{3} Z-?\\d+\\.\\d{3} "
+                    + "\\(Galil counts 0,0\\) but the program was verified from home at X-?\\d+\\.\\d{3} Z-?\\d+\\.\\d{3} "
+                    + "\\(Galil counts " + h[0] + "," + h[1] + "\\)").matcher(r.err()).find(), r.err());
         }
     }
 
@@ -541,6 +543,11 @@ class RunOnControllerTest {
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--resume-at", "9");
             assertEquals(2, r.status(), r.all());
             assertTrue(r.err().contains("part.nc:9:1: error[E827]: cannot resume at 9: the axes are at "), r.err());
+            // the way there in program terms: X clear first, then Z, then in to line 9's start at X40 Z-30
+            assertTrue(r.err().contains("(Galil counts " + home()[0] + "," + home()[1] + "), not on the path of line 9 (X40.000 Z-30.000 (Galil counts "),
+                    r.err());
+            assertTrue(r.err().contains("then X, to X40.000 Z-30.000 (Galil counts "), r.err());
+            assertTrue(!r.err().contains("jog them to"), r.err());
             assertArrayEquals(home(), axes(vc));
         }
     }

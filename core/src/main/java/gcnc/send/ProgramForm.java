@@ -184,9 +184,10 @@ public final class ProgramForm implements Form {
         int code = c.stopCode();
         settled(piece, lastXq, c, progress, op);
         c.stopAll();
+        PositionText where = new PositionText(progress.program(), progress.blocks());
         throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "it ended during line "
-                + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at the end "
-                + Resume.counts(last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                + progress.executingLine() + " with the axes at " + where.at(progress.executingLine(), at) + ", not at the end "
+                + where.at(progress.executingLine(), last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
     }
 
     /**

@@ -160,7 +160,7 @@ public final class Sender {
         int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
         Piece piece = options.resumeAt() == null ? Piece.whole(program)
-                : new Resume(program, tolerance()).plan(options.resumeAt(), f.position());
+                : new Resume(program, blocks, tolerance()).plan(options.resumeAt(), f.position());
         int needLines = form.linesNeeded(piece, program, options.step());
         int needLabels = program.labels();
         List<String> vars = program.variables();
@@ -220,7 +220,10 @@ public final class Sender {
         if (options.resumeAt() == null) {
             double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();
             if (Math.hypot(f.position()[0] - home[0], f.position()[1] - home[1]) > tolerance()) {
-                throw new RunFault(Code.E826_NOT_AT_START, 0, false, Resume.counts(f.position()), Resume.counts(home));
+                // in the terms of the first motion's block (the frame the home was verified in), then the counts
+                int line = program.sequences().isEmpty() ? 0 : program.sourceLine(program.sequences().get(0).first());
+                PositionText where = new PositionText(program, blocks);
+                throw new RunFault(Code.E826_NOT_AT_START, 0, false, where.at(line, f.position()), where.at(line, home));
             }
         }
         return piece;

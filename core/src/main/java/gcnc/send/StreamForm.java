@@ -362,9 +362,10 @@ public final class StreamForm implements Form {
             progress.at(segments.get(Piece.Segments.segment(css, segments.size())), at, op);
             int code = c.stopCode();
             c.stopAll();
+            PositionText where = new PositionText(progress.program(), progress.blocks());
             throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the sequence ended during line "
-                    + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at its end "
-                    + Resume.counts(end) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                    + progress.executingLine() + " with the axes at " + where.at(progress.executingLine(), at) + ", not at its end "
+                    + where.at(progress.executingLine(), end) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
         }
 
         /** The operator's stop, hold and override, between commands and polls. */
