@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The corpus table of the README: gcnc over the real programs of ../shared/corpus (read where they
+# The corpus table of docs/guide.md: gcnc over the real programs of ../shared/corpus (read where they
 # are, never copied), each on the machine it was written for and simulated from a blank that fits it.
 #   haas:  every file but the three written for a Fanuc (0100.nc, O1000_with_G02.nc, t24.gcode)
 #   blank: the profile's 2 in bar, except

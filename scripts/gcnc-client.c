@@ -234,11 +234,15 @@ int main(int argc, char **argv) {
     if (stdin_program && pthread_create(&pump, NULL, pump_stdin, NULL) == 0) pthread_detach(pump);
 
     static char buf[CHUNK];
+    int printed = 0;
     for (;;) {
         if (read_exactly(sock_fd, head, 5)) break;
         memcpy(&len, head + 1, 4);
         len = ntohl(len);
         char kind = (char) head[0];
+        /* K before any output: the run failed inside gcnc, a cold JVM runs it again */
+        if (kind == 'K' && !printed) return COLD;
+        if (kind == '1' || kind == '2') printed = 1;
         if (kind == 'X') {
             char status[16] = {0};
             if (len >= sizeof status || read_exactly(sock_fd, status, len)) break;

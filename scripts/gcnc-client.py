@@ -137,15 +137,20 @@ def main():
     if stdin:
         threading.Thread(target=pump_stdin, args=(sock,), daemon=True).start()
     out, err = sys.stdout.buffer, sys.stderr.buffer
+    printed = False
     try:
         while True:
             kind, data = read_frame(sock)
             if kind == "1":
                 out.write(data)
                 out.flush()
+                printed = True
             elif kind == "2":
                 err.write(data)
                 err.flush()
+                printed = True
+            elif kind == "K" and not printed:
+                return COLD  # the run failed inside gcnc before any output: a cold JVM runs it again
             elif kind == "X":
                 return int(data)
     except (OSError, EOFError, ValueError) as e:

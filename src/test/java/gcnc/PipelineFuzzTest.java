@@ -115,7 +115,7 @@ class PipelineFuzzTest {
         for (String base : new String[] {"haas-bushing", "haas-box-local", "fanuc-thread-shaft", "fanuc-macro-grooves"}) {
             String program = java.nio.file.Files.readString(java.nio.file.Path.of("src/test/resources/fuzz", base + ".nc"));
             MachineProfile machine = base.startsWith("haas") ? haas : fanuc;
-            tests.add(dynamicTest(base + " as written", () -> {
+            tests.add(dynamicTest("fuzz/" + base + ".nc as written", () -> {
                 Compiler.Result clean = Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, machine,
                         "galil", Optional.empty()));
                 assertEquals(List.of(), errors(clean, false), base + " is a clean base program");
@@ -123,7 +123,7 @@ class PipelineFuzzTest {
             }));
             for (long seed = first; seed < first + count; seed++) {
                 long s = seed;
-                tests.add(dynamicTest(base + " seed " + s, () -> run(mutated(program, new Random(s)), machine, "galil", s)));
+                tests.add(dynamicTest("fuzz/" + base + ".nc seed " + s, () -> run(mutated(program, new Random(s)), machine, "galil", s)));
             }
         }
         return tests.stream();

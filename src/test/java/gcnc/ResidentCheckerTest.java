@@ -318,4 +318,55 @@ class ResidentCheckerTest {
             assertTrue(waiting.waitFor(60, TimeUnit.SECONDS));
         }
     }
+
+    /**
+     * A run that fails inside gcnc before any output (an exception, out of memory) is answered {@code Y}
+     * then {@code K} (Server.run: standard input may already flow after {@code Y}): both clients go cold
+     * with nothing printed, and through the launcher the user gets the cold run's output (issue 35: they
+     * printed "the resident checker stopped during this run" and exited 2). A daemon that answers so,
+     * played here on a socket of the test's own, since gcnc has no input left that fails inside it.
+     */
+    @Test
+    void aRunThatFailsInsideGcncBeforeAnyOutputGoesCold() throws Exception {
+        Path dir = Files.createTempDirectory("gcnc-failing-daemon");
+        try (java.net.ServerSocket fake = new java.net.ServerSocket(0, 8, InetAddress.getLoopbackAddress())) {
+            Thread daemon = new Thread(() -> {
+                while (!fake.isClosed()) {
+                    try (Socket c = fake.accept()) {
+                        DataInputStream in = new DataInputStream(c.getInputStream());
+                        for (int type = in.read(); type != 'G'; type = in.read()) {
+                            if (type < 0) {
+                                throw new java.io.EOFException();
+                            }
+                            in.readFully(new byte[in.readInt()]);
+                        }
+                        in.readInt();
+                        DataOutputStream out = new DataOutputStream(c.getOutputStream());
+                        out.write('Y');
+                        out.writeInt(0);
+                        byte[] why = "failed inside gcnc: java.lang.OutOfMemoryError: Java heap space".getBytes(StandardCharsets.UTF_8);
+                        out.write('K');
+                        out.writeInt(why.length);
+                        out.write(why);
+                        out.flush();
+                    } catch (IOException e) {
+                        // closed: the test is over, or a client went away
+                    }
+                }
+            });
+            daemon.setDaemon(true);
+            daemon.start();
+            Files.writeString(dir.resolve("daemon.state"), "pid=" + ProcessHandle.current().pid() + "\nport=" + fake.getLocalPort()
+                    + "\ntoken=" + "0".repeat(64) + "\njar=" + JAR + "\ndir=" + Path.of("").toAbsolutePath() + "\n");
+            Map<String, String> env = Map.of("GCNC_DAEMON_DIR", dir.toString());
+            Run py = client(List.of("check", "samples/turning.nc"), null, env, JAR, null);
+            assertEquals(COLD, py.status(), py.text());
+            assertEquals(0, py.out().length + py.err().length, py.text());
+            Run c = clientC(List.of("check", "samples/turning.nc"), env, JAR, null);
+            assertEquals(COLD, c.status(), "C client: " + c.text());
+            assertEquals(0, c.out().length + c.err().length, c.text());
+            Run launcher = run(List.of("sh", "scripts/gcnc", "check", "samples/turning.nc"), null, env, null);
+            assertEquals(cold(List.of("check", "samples/turning.nc"), null, Map.of()).text(), launcher.text());
+        }
+    }
 }

@@ -76,6 +76,16 @@ public final class Compiler {
 
     /** Checks a program: parse and every thesis check and semantic rule, no output. */
     public static Result check(Reader source, Settings settings) throws IOException {
+        return check(source, settings, null);
+    }
+
+    /**
+     * Checks a program and hands each checked block to {@code each} (null: none), in the order the
+     * control runs them: cycles expanded, corners inserted, the nose compensation applied, calls and
+     * macros followed (gcnc path). After an error the blocks that follow are still handed on.
+     */
+    public static Result check(Reader source, Settings settings, java.util.function.Consumer<CheckedBlock> each)
+            throws IOException {
         Diagnostics diags = new Diagnostics();
         // check does not simulate; a blank in its settings only places the work zero (work.G54 = face)
         settings = onTheBlank(settings);
@@ -87,6 +97,11 @@ public final class Compiler {
         long blocks = 0;
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
             List<CheckedBlock> checked = checker.check(raw);
+            if (each != null) {
+                for (int i = 0; i < checked.size(); i++) {
+                    each.accept(checked.get(i));
+                }
+            }
             if (arcs != null) {
                 // a plain loop: checked.forEach(arcs::block) made a bound method reference per block
                 for (int i = 0; i < checked.size(); i++) {

@@ -29,32 +29,47 @@ public final class Session {
      * @param control a control name or folder that replaces the one the profile names, or empty
      * @param dialect "galil" or "thesis"
      * @param stock   the blank (else the program's stock header, else the profile's blank)
+     * @param offsets the offsets file with the tools' wear ({@code --offsets FILE}; else the profile's
+     *                {@code offsets.file}, if any)
+     * @param newOffsets the offsets file may not exist yet and is then read as empty (the test cut,
+     *                {@code gcnc offsets wear}, creates it); otherwise a missing one is E455
      */
     public record Options(Optional<Path> tables, String machine, Optional<String> control, String dialect,
-                          Optional<StockSize> stock) {
+                          Optional<StockSize> stock, Optional<Path> offsets, boolean newOffsets) {
         /** The built-in tables, the default machine, its own control, the galil dialect, no blank given. */
         public static Options defaults() {
-            return new Options(Optional.empty(), ProfileLoader.DEFAULT, Optional.empty(), "galil", Optional.empty());
+            return new Options(Optional.empty(), ProfileLoader.DEFAULT, Optional.empty(), "galil", Optional.empty(),
+                    Optional.empty(), false);
         }
 
         public Options withTables(Path folder) {
-            return new Options(Optional.of(folder), machine, control, dialect, stock);
+            return new Options(Optional.of(folder), machine, control, dialect, stock, offsets, newOffsets);
         }
 
         public Options withMachine(String nameOrPath) {
-            return new Options(tables, nameOrPath, control, dialect, stock);
+            return new Options(tables, nameOrPath, control, dialect, stock, offsets, newOffsets);
         }
 
         public Options withControl(String nameOrPath) {
-            return new Options(tables, machine, Optional.of(nameOrPath), dialect, stock);
+            return new Options(tables, machine, Optional.of(nameOrPath), dialect, stock, offsets, newOffsets);
         }
 
         public Options withDialect(String name) {
-            return new Options(tables, machine, control, name, stock);
+            return new Options(tables, machine, control, name, stock, offsets, newOffsets);
         }
 
         public Options withStock(StockSize blank) {
-            return new Options(tables, machine, control, dialect, Optional.of(blank));
+            return new Options(tables, machine, control, dialect, Optional.of(blank), offsets, newOffsets);
+        }
+
+        /** These options with the wear offsets of {@code file} ({@code --offsets FILE}). */
+        public Options withOffsets(Path file) {
+            return new Options(tables, machine, control, dialect, stock, Optional.of(file), false);
+        }
+
+        /** Reading an offsets file that may not exist yet as empty: the test cut creates it (else E455). */
+        public Options withNewOffsets() {
+            return new Options(tables, machine, control, dialect, stock, offsets, true);
         }
 
         TableSource source() {
@@ -82,7 +97,8 @@ public final class Session {
             return new Session(options, t, Shipped.profile(options, t), Optional.empty());
         }
         Tables t = Tables.load(options.source());
-        MachineProfile p = ProfileLoader.load(options.machine(), options.source(), t, options.control().orElse(null));
+        MachineProfile p = ProfileLoader.load(options.machine(), options.source(), t, options.control().orElse(null),
+                options.offsets(), options.newOffsets());
         return new Session(options, t, p, Optional.empty());
     }
 
@@ -90,7 +106,7 @@ public final class Session {
      * The tables and the profiles gcnc ships, read and checked once per JVM: they are inside the
      * jar and cannot change while it runs, and a resident checker would otherwise read them again
      * for every request (about 4 ms of a 30 ms compile of 2,000 blocks). A {@code --tables}
-     * folder, or a profile or control given as a path, is read every time: its user may be editing
+     * folder, a profile or control given as a path, or an offsets file, is read every time: its user may be editing
      * it. Both are immutable values, so sharing them between requests changes no output.
      */
     private static final class Shipped {
@@ -98,7 +114,7 @@ public final class Session {
         private static final java.util.Map<String, MachineProfile> PROFILES = new java.util.concurrent.ConcurrentHashMap<>();
 
         static boolean covers(Options o) {
-            return o.tables().isEmpty() && !ProfileLoader.isPath(o.machine())
+            return o.tables().isEmpty() && !ProfileLoader.isPath(o.machine()) && o.offsets().isEmpty() && !o.newOffsets()
                     && o.control().map(c -> !gcnc.machine.ControlLoader.isPath(c)).orElse(true);
         }
 
@@ -170,7 +186,7 @@ public final class Session {
     /** Parse and every check: no output, no simulation. */
     public Compiler.Result check(Reader program) throws IOException {
         // the blank, if one was given, places the work zero (work.G54 = face); nothing is simulated
-        return Compiler.check(program, checkSettings());
+        return waived(Compiler.check(program, checkSettings()), false);
     }
 
     /** What {@link #check} runs with (also {@link ModalStates}, which reads the blocks as a check does). */
@@ -178,10 +194,18 @@ public final class Session {
         return settings(options.stock().map(b -> simulation()), false);
     }
 
+    /**
+     * Check, and hand each checked block on as the control runs it (gcnc path: every move after the
+     * cycles, corners, nose compensation, calls and macros); no output, no simulation.
+     */
+    public Compiler.Result path(Reader program, java.util.function.Consumer<gcnc.ir.CheckedBlock> each) throws IOException {
+        return waived(Compiler.check(program, checkSettings(), each), false);
+    }
+
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); the DMC instructions go to {@code out}. */
     public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
                                    java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
-        return Compiler.compile(program, settings(simulation, inlineSourceMap), out);
+        return waived(Compiler.compile(program, settings(simulation, inlineSourceMap), out), true);
     }
 
     /** Check, translate and simulate a program file as the command line's {@code compile} does, output discarded. */
@@ -209,7 +233,17 @@ public final class Session {
      */
     public Compiler.Result compileExactStop(Reader program, Optional<SimOptions> simulation,
                                             java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
-        return Compiler.compile(program, settings(simulation, false).withExactStop(), out);
+        return waived(Compiler.compile(program, settings(simulation, false).withExactStop(), out), true);
+    }
+
+    /**
+     * The program's waivers ({@code (GCNC ALLOW E642: reason)}, gcnc.diag.Waivers) applied once its
+     * findings are final: here, so that every front end reports them the same ({@code translated}:
+     * the run translated the program, so a waiver of a backend or simulator code is judged too).
+     */
+    private static Compiler.Result waived(Compiler.Result r, boolean translated) {
+        r.diagnostics().waive(translated);
+        return r;
     }
 
     private Compiler.Settings settings(Optional<SimOptions> simulation, boolean inlineSourceMap) {

@@ -19,7 +19,8 @@ import java.util.Locale;
  * A program's setup sheet, one self-contained HTML page (no script, no external style) in the
  * order a setup person works: the program (O number, file), the machine and its control, the
  * units, the blank and its stick-out from the jaws, where the work zero stands, the tool table
- * (station, kind, insert, nose radius, first and last line that moved it, its share of the cycle),
+ * (station, kind, insert, nose radius, geometry and wear offsets, first and last line that moved it,
+ * its share of the cycle),
  * the cycle time and the top spindle speed, every finding with its line, the envelope as the
  * program writes coordinates (and in the machine frame), and the drawing. No date: the same run
  * writes the same bytes. The Gradle plugin's {@code gcncSimulate} writes one per program, {@code gcnc
@@ -171,16 +172,39 @@ public final class SetupSheet {
             return;
         }
         w.write("<table class=\"grid\">\n<tr><th>station</th><th>kind</th><th>insert</th><th>nose radius</th>"
+                + "<th>geometry (offset N)</th><th>wear (offset N)</th>"
                 + "<th>first line</th><th>last line</th><th>time</th></tr>\n");
         for (ToolUse t : s.tools()) {
             String nose = t.station() == 0 ? "" : length(profile.nose(t.station()).radius() / profile.x().countsPerMm());
             String insert = t.described() ? t.insert() : t.insert() + " (assumed: not described in the profile)";
             w.write("<tr><td>" + (t.station() == 0 ? "none selected" : "T" + t.station()) + "</td><td>"
                     + t.kind().name().toLowerCase(Locale.ROOT).replace('_', ' ') + "</td><td>" + escape(insert)
-                    + "</td><td>" + nose + "</td><td>" + t.firstLine() + "</td><td>" + t.lastLine() + "</td><td>"
+                    + "</td><td>" + nose + "</td><td>" + escape(geometry(t.station())) + "</td><td>"
+                    + escape(wear(t.station())) + "</td><td>" + t.firstLine() + "</td><td>" + t.lastLine() + "</td><td>"
                     + clock(t.seconds()) + "</td></tr>\n");
         }
         w.write("</table>\n");
+    }
+
+    /**
+     * Tool offset {@code n}'s geometry as the profile writes it (mm, X a radius in the machine
+     * frame): the offset of the same number as the station, as T0N0N selects it.
+     */
+    private String geometry(int n) {
+        if (n == 0) {
+            return "";
+        }
+        return profile.toolOffset(n).map(g -> "X " + mm(g.x() / profile.x().countsPerMm()) + " Z "
+                + mm(g.z() / profile.z().countsPerMm()) + " mm (tool." + n + ", X a radius)").orElse("none");
+    }
+
+    /** Tool offset {@code n}'s wear ({@code wear.N}: X as the program writes it) and the file it is in, or "none". */
+    private String wear(int n) {
+        if (n == 0) {
+            return "";
+        }
+        return profile.wear().of(n).map(w -> profile.wear().describe(n, profile.diameterX()).substring(4) + " from "
+                + w.file()).orElse("none");
     }
 
     private void findings(Writer w) throws IOException {

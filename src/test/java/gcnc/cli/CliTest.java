@@ -29,6 +29,11 @@ class CliTest {
         return run(Main.commandLine(new Main.Streams(System.in, System.out), HelpLanguage.of(args, env)), args);
     }
 
+    /** gcnc with its standard output (where {@code -o -} writes the DMC) into {@code stdout}, not the test JVM's. */
+    static Run gcnc(java.io.OutputStream stdout, String... args) {
+        return run(Main.commandLine(new Main.Streams(System.in, stdout), HelpLanguage.of(args, System.getenv()), args), args);
+    }
+
     private static Run run(CommandLine cl, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
@@ -59,13 +64,32 @@ class CliTest {
         assertEquals(shown, r.err() + r.out());
     }
 
-    /** The README shows the simulation of docs/examples/back-turn.nc (E320 on N100); it must be what gcnc prints. */
+    /**
+     * The README's command 1 (the bushing, from a 1.5 in bar) prints what the README shows under it: the
+     * first numbers a newcomer reads are in the program's terms (issue 34).
+     */
     @Test
-    void theReadmeBackTurnIsWhatGcncPrints() throws IOException {
+    void theReadmeCommandOneIsWhatGcncPrints() throws IOException {
         String readme = Files.readString(Path.of("README.md"));
+        String command = "java -jar build/libs/gcnc.jar compile docs/examples/bushing.nc --machine haas"
+                + " --stock 1.5in,200mm,150mm -o bushing.dmc\n";
+        assertTrue(readme.indexOf(command) >= 0 && readme.indexOf(command) < 1000, "README's command 1 is not the bushing");
+        int from = readme.indexOf("```\n", readme.indexOf("Command 1 prints")) + 4;
+        String shown = readme.substring(from, readme.indexOf("```", from));
+        Path out = Files.createTempDirectory("gcnc-readme").resolve("bushing.dmc");
+        Run r = gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "1.5in,200mm,150mm",
+                "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertEquals(shown, (r.err() + r.out()).replace(out.toString(), "bushing.dmc"));
+    }
+
+    /** docs/guide.md shows the simulation of docs/examples/back-turn.nc (E320 on N100); it must be what gcnc prints. */
+    @Test
+    void theGuidesBackTurnIsWhatGcncPrints() throws IOException {
+        String readme = Files.readString(Path.of("docs/guide.md"));
         String command = "$ java -jar build/libs/gcnc.jar simulate docs/examples/back-turn.nc\n";
         int from = readme.indexOf(command);
-        assertTrue(from >= 0, "README lost its example");
+        assertTrue(from >= 0, "docs/guide.md lost its example");
         from += command.length();
         String shown = readme.substring(from, readme.indexOf("```", from));
         Run r = gcnc("simulate", "docs/examples/back-turn.nc");
@@ -278,9 +302,9 @@ class CliTest {
         assertTrue(map.get(1).startsWith("# source sha256 "), map.get(1));
         assertTrue(map.get(map.size() - 1).startsWith("# dmc sha256 "), map.get(map.size() - 1));
         map = map.subList(2, map.size() - 1);
-        assertEquals("1 0", map.get(0), "DMC lines 1-3 are the header (vector setup, spindle output, limits, homing)");
-        assertEquals("4 4", map.get(1), "DMC line 4 starts with G-code line 4's commands (N30 M11: gline=4, then CB4)");
-        assertEquals("4.2 5", map.get(2), "its third command (gline=5) starts G-code line 5's");
+        assertEquals("1 0", map.get(0), "DMC lines 1-4 are the header (vector setup, IT 1, spindle output, limits, homing)");
+        assertEquals("5 4", map.get(1), "DMC line 5 starts with G-code line 4's commands (N30 M11: gline=4, then CB4)");
+        assertEquals("5.2 5", map.get(2), "its third command (gline=5) starts G-code line 5's");
         List<String> lines = text.lines().toList();
         int en = 0;
         while (!gcnc.dmc.DmcReader.statements(lines.get(en)).contains("EN")) {

@@ -260,9 +260,9 @@ class OutputSafetyTest {
         Process p = new ProcessBuilder(javaCommand, "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main",
                 "compile", "--quiet", program.toString(), "-o", "/dev/stdout")
                 .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()))
-                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+                .redirectError(dir.resolve("stderr").toFile()).start();
         assertTrue(p.waitFor(120, TimeUnit.SECONDS));
-        assertEquals(0, p.exitValue());
+        assertEquals(0, p.exitValue(), Files.readString(dir.resolve("stderr")));
         Path expected = dir.resolve("expected.dmc");
         assertEquals(0, gcnc("compile", program.toString(), "-o", expected.toString()).status());
         assertEquals("earlier entries\n" + Files.readString(expected), Files.readString(log));

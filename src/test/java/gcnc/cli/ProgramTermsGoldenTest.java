@@ -33,10 +33,10 @@ class ProgramTermsGoldenTest {
     @TestFactory
     Stream<DynamicTest> summaryJsonDrawingAndSheetMatchTheirGoldenFiles() {
         return PROGRAMS.stream().flatMap(name -> Stream.of(
-                dynamicTest(name + " summary", () -> golden(name + ".haas.summary.txt", summary(name))),
-                dynamicTest(name + " JSON", () -> golden(name + ".haas.json", json(name))),
-                dynamicTest(name + " drawing", () -> golden(name + ".haas.svg", svg(name))),
-                dynamicTest(name + " setup sheet", () -> golden(name + ".haas.html", sheet(name)))));
+                dynamicTest(name + ".nc summary: " + name + ".haas.summary.txt", () -> golden(name + ".haas.summary.txt", summary(name))),
+                dynamicTest(name + ".nc JSON: " + name + ".haas.json", () -> golden(name + ".haas.json", json(name))),
+                dynamicTest(name + ".nc drawing: " + name + ".haas.svg", () -> golden(name + ".haas.svg", svg(name))),
+                dynamicTest(name + ".nc setup sheet: " + name + ".haas.html", () -> golden(name + ".haas.html", sheet(name)))));
     }
 
     /** The summary lines of {@code gcnc simulate}, the findings on standard error left out. */

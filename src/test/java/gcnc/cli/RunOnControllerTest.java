@@ -303,17 +303,22 @@ class RunOnControllerTest {
         }
     }
 
-    /** DP over the pty, as an operator's terminal would send it. */
+    /**
+     * DP over the pty, as an operator's terminal would send it; the virtual controller echoes it, as a
+     * factory unit does until a host sends EO 0 (COMALL EO); after a gcnc run has sent it, no echo.
+     */
     static void definePosition(Path host, long[] h) throws Exception {
         try (var io = java.nio.channels.FileChannel.open(host, java.nio.file.StandardOpenOption.READ,
                 java.nio.file.StandardOpenOption.WRITE)) {
-            io.write(java.nio.ByteBuffer.wrap(("DP " + h[0] + "," + h[1] + "\r").getBytes(StandardCharsets.ISO_8859_1)));
-            java.nio.ByteBuffer reply = java.nio.ByteBuffer.allocate(16);
+            String dp = "DP " + h[0] + "," + h[1] + "\r";
+            io.write(java.nio.ByteBuffer.wrap(dp.getBytes(StandardCharsets.ISO_8859_1)));
+            java.nio.ByteBuffer reply = java.nio.ByteBuffer.allocate(64);
             long until = System.currentTimeMillis() + 3000;
-            while (reply.position() == 0 && System.currentTimeMillis() < until) {
+            while ((reply.position() == 0 || reply.get(reply.position() - 1) != ':') && System.currentTimeMillis() < until) {
                 io.read(reply);
             }
-            assertEquals(":", new String(reply.array(), 0, reply.position(), StandardCharsets.ISO_8859_1));
+            String got = new String(reply.array(), 0, reply.position(), StandardCharsets.ISO_8859_1);
+            assertTrue(got.equals(dp + ":") || got.equals(":"), "the echo (until EO 0), then the colon: " + got);
         }
     }
 
@@ -407,8 +412,10 @@ class RunOnControllerTest {
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc));
             assertEquals(2, r.status(), r.all());
             long[] h = home();
-            assertTrue(r.err().contains("error[E826]: the axes are at 0,0 (Galil counts) but the program was verified from home at "
-                    + h[0] + "," + h[1]), r.err());
+            // in program terms first (the first motion's frame), the counts after
+            assertTrue(java.util.regex.Pattern.compile("error\\[E826\\]: the axes are at X-?\\d+\\.\\d{3} Z-?\\d+\\.\\d{3} "
+                    + "\\(Galil counts 0,0\\) but the program was verified from home at X-?\\d+\\.\\d{3} Z-?\\d+\\.\\d{3} "
+                    + "\\(Galil counts " + h[0] + "," + h[1] + "\\)").matcher(r.err()).find(), r.err());
         }
     }
 
@@ -536,6 +543,11 @@ class RunOnControllerTest {
             Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", tcp(vc), "--resume-at", "9");
             assertEquals(2, r.status(), r.all());
             assertTrue(r.err().contains("part.nc:9:1: error[E827]: cannot resume at 9: the axes are at "), r.err());
+            // the way there in program terms: X clear first, then Z, then in to line 9's start at X40 Z-30
+            assertTrue(r.err().contains("(Galil counts " + home()[0] + "," + home()[1] + "), not on the path of line 9 (X40.000 Z-30.000 (Galil counts "),
+                    r.err());
+            assertTrue(r.err().contains("then X, to X40.000 Z-30.000 (Galil counts "), r.err());
+            assertTrue(!r.err().contains("jog them to"), r.err());
             assertArrayEquals(home(), axes(vc));
         }
     }
@@ -605,6 +617,54 @@ class RunOnControllerTest {
         }
     }
 
+    /** A controller whose buffer still holds segments after CS S is refused before anything is sent (E831). */
+    @Test
+    void aBufferThatCsSDoesNotEmptyIsRefused() throws Exception {
+        long[] h = home();
+        try (ServerSocket server = new ServerSocket(0)) {
+            List<String> downloaded = new ArrayList<>();
+            Thread t = new Thread(() -> script(server, h, "DMC4040 Rev 1.2d", downloaded, 509));
+            t.setDaemon(true);
+            t.start();
+            Run r = gcnc("", "run", part(PART).toString(), "--machine", "haas", "--tcp", "127.0.0.1:" + server.getLocalPort());
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E831]: the controller's vector buffer is not empty after CS S: _LMS reads 509"
+                    + " where the model's empty buffer reads 511"), r.err());
+            assertTrue(downloaded.isEmpty(), downloaded.toString());
+        }
+    }
+
+    /** Segments a stopped sequence left in the buffer are cleared (CS S) at pre-flight, never run first. */
+    @Test
+    void segmentsLeftInTheBufferAreClearedBeforeTheRun() throws Exception {
+        Path p = part(PART);
+        Path trace = p.resolveSibling("left.trace");
+        try (VirtualController vc = traced(FAST, model("DMC-4040"), trace)) {
+            homed(vc);
+            assertEquals(":", tell(vc, "VM XY"));
+            assertEquals(":", tell(vc, "VP 30000,30000"));
+            Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--poll", "20");
+            assertEquals(0, r.status(), r.all());
+            assertEquals(uninterruptedPath(), path(trace), "the left segment never ran");
+        }
+    }
+
+    /** A bus card (DMC-1700, ISA: the thesis-2004 profile's) is refused by gcnc run; gcnc compile still takes it. */
+    @Test
+    void aBusOnlyModelIsRefusedBeforeAnythingIsOpened() throws Exception {
+        Path p = part("G21\nG00 X10. Z5.\nM30\n");
+        try (ServerSocket server = new ServerSocket(0)) {
+            server.setSoTimeout(300);
+            Run r = gcnc("", "run", p.toString(), "--machine", "thesis-2004", "--tcp", "127.0.0.1:" + server.getLocalPort());
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains("error[E830]: the profile thesis-2004 names galil.model = DMC-1700; a bus card (ISA;"),
+                    r.err());
+            assertThrowsTimeout(server);
+        }
+        Run c = gcnc("", "compile", p.toString(), "--machine", "thesis-2004", "-o", p.resolveSibling("t.dmc").toString());
+        assertEquals(0, c.status(), c.all());
+    }
+
     /** A tiny scripted controller for one reply sequence: the program it reads back is not the one sent. */
     @Test
     void aReadBackThatDiffersIsNotRun() throws Exception {
@@ -624,6 +684,11 @@ class RunOnControllerTest {
 
     /** Answers a pre-flight, takes a download and uploads it with one digit changed; XQ would be an error. */
     private static void script(ServerSocket server, long[] home, String revision, List<String> program) {
+        script(server, home, revision, program, 511);
+    }
+
+    /** As above, with {@code _LMS} answering {@code lms} (511: the DMC-4040's empty buffer). */
+    private static void script(ServerSocket server, long[] home, String revision, List<String> program, int lms) {
         try (Socket s = server.accept()) {
             InputStream in = s.getInputStream();
             OutputStream out = s.getOutputStream();
@@ -654,7 +719,8 @@ class RunOnControllerTest {
                     case "MG _XQ0" -> "-1.0000\r\n:";
                     case "MG _LFX", "MG _LRX", "MG _LFY", "MG _LRY" -> " 1.0000\r\n:";
                     case "MG _MOX", "MG _MOY", "MG _BGS" -> " 0.0000\r\n:";
-                    case "MG _DL", "MG _UL", "MG _LMS" -> " 510.0000\r\n:";
+                    case "MG _DL", "MG _UL" -> " 510.0000\r\n:";
+                    case "MG _LMS" -> " " + lms + ".0000\r\n:";
                     case "MG 20261127" -> " 20261127.0000\r\n:";
                     case "DL" -> "";
                     case "UL" -> String.join("\r\n", program).replaceFirst("(OF ,,[0-9.]+)", "$11") + "\r\n\\:";

@@ -39,6 +39,19 @@ class SheetCommandTest {
     }
 
     @Test
+    void aLinkPlantedAtTheSheetsDefaultNameIsRefused() throws Exception {
+        // the name gcnc chose (FILE.html): a link there was planted by nobody the user named (issue 35)
+        Path dir = Files.createTempDirectory("gcnc-sheet");
+        Path nc = Files.writeString(dir.resolve("o1201.nc"), PIN);
+        Path victim = Files.writeString(dir.resolve("victim.txt"), "keep me");
+        Files.createSymbolicLink(dir.resolve("o1201.html"), victim);
+        CliTest.Run r = CliTest.gcnc("sheet", nc.toString(), "--machine", "haas", "--stock", "40,200,150");
+        assertEquals(2, r.status(), r.out());
+        assertTrue(r.err().contains("error[E510]"), r.err());
+        assertEquals("keep me", Files.readString(victim));
+    }
+
+    @Test
     void aProgramThatStopsTheSimulationWritesNoSheet() throws Exception {
         Path dir = Files.createTempDirectory("gcnc-sheet");
         // a feed before the spindle turns: a check error, nothing simulated

@@ -104,7 +104,8 @@ class ControllerLinkTest {
                 Thread.sleep(5);
             }
             assertEquals("5000, 0, 0, 0\r\n:", h.send("TP"));
-            assertEquals(" 5.0000 101.0000 511.0000\r\n:", h.send("MG _CSS,_SCS,_LMS"));
+            assertEquals(" 5.0000 101.0000 511.0000\r\n:", h.send("MG _CSS,_SCS,_LMS"),
+                    "after the end the counter reads the five segments finished (the manuals do not say: our reading)");
             List<String> segments = trace().stream().filter(t -> !t.startsWith("#"))
                     .map(t -> String.join(" ", Arrays.asList(t.split(" ")).subList(0, 5))).toList();
             assertEquals(List.of("1 1 VP 1000 0", "1 2 VP 2000 0", "1 3 VP 3000 0", "1 4 VP 4000 0", "1 5 VP 5000 0"),
@@ -174,8 +175,8 @@ class ControllerLinkTest {
             HostLink h = l.host;
             fiveSegments(h);
             Thread.sleep(400); // 2 s of controller time at 20x: far longer than the five segments take
-            assertEquals(" 1.0000 2.0000 507.0000\r\n:", h.send("MG _BGS,_CSS,_LMS"),
-                    "still in the sequence, at segment 2, three segments and VE in the buffer");
+            assertEquals(" 1.0000 1.0000 507.0000\r\n:", h.send("MG _BGS,_CSS,_LMS"),
+                    "still in the sequence, at segment 2 (_CSS 1: from zero), three segments and VE in the buffer");
             assertEquals("2000, 0, 0, 0\r\n:", h.send("TP"));
             assertEquals(":", h.send("ST S"));
             Thread.sleep(50);
@@ -191,6 +192,7 @@ class ControllerLinkTest {
             HostLink h = l.host;
             assertEquals("::", h.download("#LIMSWI\r\nlim=_LFX\r\nMG \"LIMIT\",_CSS{F1.0}\r\nRE\r\n"));
             assertEquals(":", h.send("CW 1"));
+            assertEquals(":", h.send("CF I"), "unsolicited messages to this port (COMALL CF: the serial port unless told)");
             fiveSegments(h);
             long until = System.nanoTime() + 5_000_000_000L;
             while (h.number("MG _BGS") != 0 && System.nanoTime() < until) {
@@ -200,7 +202,8 @@ class ControllerLinkTest {
                     "the forward limit input read active (0) in #LIMSWI; stopped by the limit");
             double x = l.controller.controller().position(0);
             assertTrue(x > 2500 && x < 4000, "decelerated to a stop past the middle of segment 3: " + x);
-            assertEquals("LIMIT3\r\n", h.unsolicited.toString(), "#LIMSWI's MG, marked as unsolicited (CW 1)");
+            assertEquals("LIMIT2\r\n", h.unsolicited.toString(),
+                    "#LIMSWI's MG during segment 3 (_CSS 2: from zero), marked as unsolicited (CW 1)");
             List<String> t = trace();
             // 20000 counts/s comes down at VD 256000 in 781 counts: the stop that began half way through
             // segment 3 ends in segment 4
@@ -263,7 +266,7 @@ class ControllerLinkTest {
             fiveSegments(h);
             assertEquals(" 1.0000 0.0000\r\n:", h.send("MG _BGS,_CSS"), "begun; no time has passed");
             l.controller.controller().advance(0.15);
-            assertEquals(" 3.0000\r\n:", h.send("MG _CSS"));
+            assertEquals(" 2.0000\r\n:", h.send("MG _CSS"), "in the third segment: the counter starts at zero");
             l.controller.controller().settle(5);
             List<String[]> lines = trace().stream().filter(t -> !t.startsWith("#")).map(t -> t.split(" ")).toList();
             // VS 20000 at the default VA = VD = 256000: 0.078125 s and 781.25 counts to reach speed and to stop

@@ -52,6 +52,9 @@ final class Links implements Closeable {
         Path controllerEnd = pty.controller;
         Path hostEnd = pty.host;
         VirtualController vc = VirtualController.pty(controllerEnd, o);
+        // a factory unit echoes on its serial port until EO 0 (ControllerLinkTest tests that); these tests
+        // are about the replies, so they start where a host's EO 0 leaves the port
+        vc.controller().echo = false;
         SerialPort port = SerialPort.getCommPort(hostEnd.toString());
         port.setBaudRate(115200);
         if (!port.openPort()) {

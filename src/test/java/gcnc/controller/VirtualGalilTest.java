@@ -133,7 +133,7 @@ class VirtualGalilTest {
         assertEquals(Tc.BEGIN_WHILE_RUNNING, rejected("BGS"));
         assertEquals(Tc.WHILE_RUNNING, rejected("VD 204800"));
         c.advance(0.2);
-        assertEquals(" 1.0000 1.0000\r\n", ok("MG _BGS,_CSS"));
+        assertEquals(" 1.0000 0.0000\r\n", ok("MG _BGS,_CSS"), "in the first segment: the counter starts at zero");
         double t = c.settle(10);
         assertFalse(c.moving());
         assertEquals(List.of("1 1 VP 6000 -500 508", "1 2 CR 8000 1500 509", "1 3 VP 8000 5500 510"), segments());
@@ -176,7 +176,7 @@ class VirtualGalilTest {
             c.advance(0.001);
             double v = c.motion.speed();
             fast |= v > 19_000;
-            if (c.motion.css() == 2 && atCorner < 0) {
+            if (c.motion.css() == 1 && atCorner < 0) { // the second segment (the counter starts at zero)
                 atCorner = v;
             }
         }
@@ -212,6 +212,21 @@ class VirtualGalilTest {
         assertEquals(" 511.0000\r\n", ok("MG _LMS"), "a stopped sequence leaves the buffer empty");
     }
 
+    /** IT is recorded and read back; below 1 it is not modelled, and the trace says so (command reference IT). */
+    @Test
+    void smoothingIsRecordedAndAValueBelowOneIsReported() throws GalilException {
+        assertEquals(" 1.0000\r\n", ok("MG _ITX"), "1 at power-up: no filtering");
+        ok("IT 1,1");
+        assertFalse(trace.toString().contains("smoothing"), trace.toString());
+        ok("IT ,0.5");
+        assertEquals(" 1.0000 0.5000\r\n", ok("MG _ITX,_ITY"));
+        assertTrue(trace.toString().contains("IT B 0.5000: smoothing not modelled"), trace.toString());
+        ok("ITX=0.25");
+        assertEquals(" 0.2500\r\n", ok("MG _ITX"));
+        assertEquals(Tc.RANGE, rejected("IT 0"), "0.004 to 1");
+        assertEquals(Tc.RANGE, rejected("IT 2"));
+    }
+
     @Test
     void theBufferHoldsFiveHundredElevenSegments() throws GalilException {
         ok("SH XY");
@@ -223,7 +238,7 @@ class VirtualGalilTest {
         assertEquals(Tc.BUFFER_FULL, rejected("VP 600,0"));
         ok("BGS");
         c.advance(0.001);
-        assertEquals(" 1.0000 1.0000\r\n", ok("MG _LMS,_CSS"), "the executing segment gave its slot back");
+        assertEquals(" 1.0000 0.0000\r\n", ok("MG _LMS,_CSS"), "the executing segment gave its slot back; the first is 0");
     }
 
     /** The ranges are the model's row of tables/galil_models.csv, the compiler's own (COMALL VS, VP, CR). */

@@ -40,7 +40,7 @@ final class Fixtures {
                 base.acceleration(), base.deceleration(), base.maxRpm(), base.rpmPerVolt(), base.spindleAxis(),
                 base.rearToolPost(), base.workOffsets(), base.toolOffsets(), base.tools(), base.outputs(),
                 base.feedPerF(), base.file(), base.control(), base.units(), base.machineZero(), base.chuckByProgram(),
-                base.model(), base.spindleEncoder(), base.noses(), base.threadChamfer());
+                base.model(), base.spindleEncoder(), base.noses(), base.threadChamfer(), base.wear());
     }
 
     static CheckedBlock motions(int line, Point end, Motion... ms) {

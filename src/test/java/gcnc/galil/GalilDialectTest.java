@@ -42,7 +42,8 @@ class GalilDialectTest {
         // feed of 1666.7 counts/s is written at VS's resolution, even and not faster: 1666.
         // The spindle's channel C is an open-loop output (zero gains, no error limit), zeroed; the
         // soft limits are the travel in counts; the program refuses to start away from home.
-        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 999424", "VD 999424",
+        // IT 1 on both plane axes: no smoothing (command reference IT: it filters VM motion, and is burnable)
+        assertEquals(List.of("#GCNC", "SH XY", "VM XY", "IT 1", "IT ,1", "VA 999424", "VD 999424",
                 "gline=0", "KP ,,0", "KI ,,0", "KD ,,0", "ER ,,-1", "SH C", "OF ,,0.0000",
                 "BL 0,-2000", "FL 350000,110000", "JP #NOHOME,@ABS[_TPX-0]>10", "JP #NOHOME,@ABS[_TPY-0]>10",
                 "gline=3", "VS 100000", "VP 2000,1000", "VE", "BGS", "AMS",
@@ -52,7 +53,7 @@ class GalilDialectTest {
     }
 
     /** The generic profile's header: the vector setup, the spindle's output, the soft limits, the homing check. */
-    static final int HEADER = 16;
+    static final int HEADER = 18;
 
     /** The lines the blocks wrote (and the zero volts of the end): between the header and EN. */
     static List<String> body(List<String> out) {
@@ -179,9 +180,9 @@ class GalilDialectTest {
         g.begin(sink);
         g.block(motions(4, a, rapid(Point.ORIGIN, a)), sink);
         g.end(sink);
-        // Lines 1-16 are the header, 17-22 gline and the sequence of line 4, 23 EN and the routines.
-        assertEquals(List.of("1 0", "17 4", "23 0"), mapLines);
-        assertEquals("EN", out.get(22).text());
+        // Lines 1-18 are the header, 19-24 gline and the sequence of line 4, 25 EN and the routines.
+        assertEquals(List.of("1 0", "19 4", "25 0"), mapLines);
+        assertEquals("EN", out.get(24).text());
         assertEquals(out.size(), map.lines());
     }
 

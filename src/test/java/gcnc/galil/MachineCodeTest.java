@@ -45,7 +45,7 @@ class MachineCodeTest {
      * The generic lathe on an eight-axis DMC-4080 (16 outputs: room for the turret's five) with a
      * Modbus analog output for the spindle, an at-speed input and an indexed turret.
      */
-    private static final String WIRED = "spindle.output = AO 1\nspindle.at_speed = IN3\nspindle.at_speed_timeout = 8\n"
+    private static final String WIRED = "spindle.output = AO 3001\nspindle.at_speed = IN3\nspindle.at_speed_timeout = 8\n"
             + "turret.station_outputs = 9, 10, 11, 12\nturret.strobe = 13\nturret.in_position = 4\nturret.timeout = 5\n";
 
     private static String generic() throws Exception {
@@ -127,9 +127,9 @@ class MachineCodeTest {
         int w = out.indexOf("#SPWAIT");
         assertEquals(List.of("#SPWAIT", "twt=TIME+8000", "#SPW", "JP #SPOK,@IN[3]=1", "JP #SPW,TIME<twt",
                 "MG \"SPINDLE NOT AT SPEED AT G-CODE LINE\",gline", "JP #FAULT", "#SPOK", "EN"), out.subList(w, w + 9));
-        // the drive's reference is AO 1: set, zeroed at M05, and the OF of channel C is left alone
-        assertTrue(out.contains("AO 1,2.9268"), out.toString()); // 1200 r/min at 410 per volt
-        assertEquals("AO 1,0.0000", out.get(out.indexOf("gline=10") + 2));
+        // the drive's reference is AO 3001 (handle C's first point): set, zeroed at M05, the OF of C left alone
+        assertTrue(out.contains("AO 3001,2.9268"), out.toString()); // 1200 r/min at 410 per volt
+        assertEquals("AO 3001,0.0000", out.get(out.indexOf("gline=10") + 2));
         assertTrue(out.stream().noneMatch(l -> l.startsWith("OF") || l.startsWith("KP")), out.toString());
     }
 
@@ -155,11 +155,11 @@ class MachineCodeTest {
         List<String> out = compile(css, profile(wired()));
         assertEquals(List.of("JS #SPWAIT"), out.stream().filter(l -> l.startsWith("JS #SP")).toList());
         int feed = out.indexOf("gline=8");
-        assertEquals(List.of("gline=8", "AO 1,2.9114", "JS #SPWAIT", "VS 2000"), out.subList(feed, feed + 4),
+        assertEquals(List.of("gline=8", "AO 3001,2.9114", "JS #SPWAIT", "VS 2000"), out.subList(feed, feed + 4),
                 "the block's speed (1194 r/min at 410 per volt), then the wait, then the first feed");
         // a speed per block (M03's at home, X42, X40, X39, X60): the retract's -33% is waited for
         // only before a next feed, and there is none
-        assertEquals(5, out.stream().filter(l -> l.startsWith("AO 1,") && !l.equals("AO 1,0.0000")).count(),
+        assertEquals(5, out.stream().filter(l -> l.startsWith("AO 3001,") && !l.equals("AO 3001,0.0000")).count(),
                 out.toString());
     }
 
@@ -266,7 +266,7 @@ class MachineCodeTest {
         List<String> out = Fixtures.run("galil", p, d,
                 new CheckedBlock(5, OptionalDouble.of(4400), OptionalInt.empty(), List.of(), List.of(), List.of(), Point.ORIGIN),
                 new CheckedBlock(6, OptionalDouble.of(4100), OptionalInt.empty(), List.of(), List.of(), List.of(), Point.ORIGIN));
-        assertTrue(out.contains("AO 1,9.9980"), out.toString());
+        assertTrue(out.contains("AO 3001,9.9980"), out.toString());
         List<Diagnostic> all = d.sorted();
         assertEquals(Code.E251_SPINDLE_AO_VOLTS, all.get(0).code());
         assertEquals(Code.E252_SPINDLE_AO_CLAMPED, all.get(1).code());

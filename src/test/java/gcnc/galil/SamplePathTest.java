@@ -40,7 +40,7 @@ class SamplePathTest {
 
     @TestFactory
     Stream<DynamicTest> everySequenceEndsWhereItsBlockEnds() {
-        return SAMPLES.stream().map(s -> dynamicTest(s[0] + " on " + s[1], () -> check(s[0], s[1])));
+        return SAMPLES.stream().map(s -> dynamicTest("samples/" + s[0] + ".nc on " + s[1], () -> check(s[0], s[1])));
     }
 
     private static void check(String sample, String machine) throws Exception {

@@ -111,8 +111,11 @@ class FixtureAgreesWithCliTest {
         Files.writeString(dir.resolve("b.ngc"), HEADER);
         Files.writeString(dir.resolve("c.tap"), HEADER);
         Files.writeString(dir.resolve("notes.txt"), "not a program");
-        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(dir, "generic").collect(Collectors.toList());
+        SystemOut.Printed<List<DynamicTest>> scan = SystemOut.capture(
+                () -> GcodeAssertions.everyProgramIn(dir, "generic").collect(Collectors.toList()));
+        List<DynamicTest> tests = scan.value();
         assertEquals(List.of("A.NC", "b.ngc", "c.tap"), tests.stream().map(DynamicTest::getDisplayName).toList());
+        assertTrue(scan.text().contains("gcnc: " + dir + ": skipped 1 file {txt=1}: not a program's extension"), scan.text());
         Path empty = Files.createTempDirectory("gcnc-empty");
         List<DynamicTest> none = GcodeAssertions.everyProgramIn(empty, "generic").collect(Collectors.toList());
         assertEquals(1, none.size());
@@ -125,9 +128,12 @@ class FixtureAgreesWithCliTest {
         Files.writeString(dir.resolve("o1201.GCODE"), HEADER);
         Files.writeString(dir.resolve("o1202.nc"), HEADER);
         Files.writeString(dir.resolve("o1203.tap"), HEADER);
-        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(dir, GcodeAssertions.session("generic"),
-                List.of(".gcode", "NC")).collect(Collectors.toList());
+        SystemOut.Printed<List<DynamicTest>> scan = SystemOut.capture(() -> GcodeAssertions.everyProgramIn(dir,
+                GcodeAssertions.session("generic"), List.of(".gcode", "NC")).collect(Collectors.toList()));
+        List<DynamicTest> tests = scan.value();
         assertEquals(List.of("o1201.GCODE", "o1202.nc"), tests.stream().map(DynamicTest::getDisplayName).toList());
+        assertTrue(scan.text().contains("gcnc: " + dir + ": skipped 1 file {tap=1}: not a program's extension (.gcode, .nc)"),
+                scan.text());
         assertThrows(IllegalArgumentException.class,
                 () -> GcodeAssertions.everyProgramIn(dir, GcodeAssertions.session("generic"), List.of()));
     }

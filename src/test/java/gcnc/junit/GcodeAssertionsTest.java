@@ -31,13 +31,16 @@ class GcodeAssertionsTest {
     @Test
     void oneDynamicTestPerProgramInAFolder() throws Throwable {
         // .nc only: samples/shop-project/ holds the sample shop's .gcode programs, for its own machine
-        List<DynamicTest> tests = GcodeAssertions.everyProgramIn(Path.of("samples"), GcodeAssertions.session("generic"),
-                List.of("nc")).collect(Collectors.toList());
+        SystemOut.Printed<List<DynamicTest>> scan = SystemOut.capture(() -> GcodeAssertions.everyProgramIn(Path.of("samples"),
+                GcodeAssertions.session("generic"), List.of("nc")).collect(Collectors.toList()));
+        List<DynamicTest> tests = scan.value();
+        assertTrue(scan.text().startsWith("gcnc: samples: skipped ") && scan.text().contains("not a program's extension (.nc)"),
+                scan.text());
         assertEquals(List.of("arcs.nc", "bishop.nc", "dwell-css.nc", "home.nc", "offsets.nc", "turning.nc", "units.nc"),
                 tests.stream().map(DynamicTest::getDisplayName).collect(Collectors.toList()));
         // the default list (gcnc.ProgramFiles.EXTENSIONS, as the command line's) takes them too
-        List<String> all = GcodeAssertions.everyProgramIn(Path.of("samples"), "generic").map(DynamicTest::getDisplayName)
-                .collect(Collectors.toList());
+        List<String> all = SystemOut.capture(() -> GcodeAssertions.everyProgramIn(Path.of("samples"), "generic")
+                .map(DynamicTest::getDisplayName).collect(Collectors.toList())).value();
         assertTrue(all.contains("shop-project/src/main/gcode/o1201-pin.gcode"), all.toString());
         for (DynamicTest t : tests) {
             t.getExecutable().execute();

@@ -36,10 +36,10 @@ class MachineIoTest {
 
     @Test
     void eachFormReadsAsWhatItSays() throws Exception {
-        MachineIo io = MachineIo.of(load(generic().replace("DMC-4030", "DMC-4080") + "spindle.output = AO 2\nspindle.at_speed = 1.5s\n"
+        MachineIo io = MachineIo.of(load(generic().replace("DMC-4030", "DMC-4080") + "spindle.output = AO 3005\nspindle.at_speed = 1.5s\n"
                 + "turret.station_outputs = 9, 10, 11, 12\nturret.strobe = 13\nturret.in_position = 4\n"
                 + "homing.check = IN 6\n"));
-        assertEquals(new MachineIo.SpindleDrive.Analog(2), io.drive());
+        assertEquals(new MachineIo.SpindleDrive.Analog(3005), io.drive());
         assertEquals(new MachineIo.AtSpeed.Dwell(1.5), io.atSpeed());
         assertEquals(new MachineIo.Turret(List.of(9, 10, 11, 12), 13, 4, 10), io.turret().orElseThrow());
         assertEquals(new MachineIo.Homing.Input(6), io.homing());
@@ -53,7 +53,15 @@ class MachineIoTest {
     void aBadValueIsAFaultAtItsLine() throws Exception {
         String g = generic();
         assertFault(g + "spindle.output = OF D\n", "spindle.output", Code.E430_SPINDLE_OUTPUT, "write OF");
-        assertFault(g + "spindle.output = AO 9000\n", "spindle.output", Code.E430_SPINDLE_OUTPUT, "0 to 8999");
+        assertFault(g + "spindle.output = AO 9000\n", "spindle.output", Code.E437_ANALOG_OUTPUT_RANGE, "1000 to 8999");
+        // AO takes a Modbus device's analog output only, n0 1,000 to 8,999 (command reference AO)
+        assertFault(g + "spindle.output = AO 1\n", "spindle.output", Code.E437_ANALOG_OUTPUT_RANGE, "1000 to 8999");
+        assertFault(g + "spindle.output = AO 999\n", "spindle.output", Code.E437_ANALOG_OUTPUT_RANGE, "1000 to 8999");
+        // @IN reads 1-8 on a 4-axis model (9-16 on 5-8 axes), 81-96 and 1,000-8,999 (command reference @IN)
+        assertFault(g + "spindle.at_speed = IN 200\n", "spindle.at_speed", Code.E436_INPUT_RANGE, "1 to 8 on the DMC-4030");
+        assertFault(g + "homing.check = IN 9\n", "homing.check", Code.E436_INPUT_RANGE, "1 to 8 on the DMC-4030");
+        assertFault(g + "turret.station_outputs = 5, 6, 7, 8\nturret.strobe = 4\nturret.in_position = 97\n",
+                "turret.in_position", Code.E436_INPUT_RANGE, "81 to 96");
         assertFault(g + "turret.station_outputs = 5, 6, 7, 8\nturret.strobe = 9\nturret.in_position = 4\n",
                 "turret.strobe", Code.E424_OUTPUT_BEYOND_MODEL, "output 9 is not one of the 8 digital outputs of the DMC-4030");
         assertFault(g + "spindle.at_speed = soon\n", "spindle.at_speed", Code.E431_SPINDLE_AT_SPEED, "IN n");
@@ -67,6 +75,9 @@ class MachineIoTest {
     private static void assertFault(String text, String key, Code code, String message) {
         TableException e = assertThrows(TableException.class, () -> load(text));
         assertEquals(code, e.diagnostic().code(), e.getMessage());
+        if (code == Code.E436_INPUT_RANGE || code == Code.E437_ANALOG_OUTPUT_RANGE) {
+            assertTrue(e.getMessage().contains(message), e.getMessage());
+        }
         assertEquals(text.substring(0, text.lastIndexOf(key + " =")).split("\n", -1).length, e.diagnostic().span().line());
         assertTrue(e.english().contains(message), e.english());
     }

@@ -2,6 +2,7 @@ package gcnc.plan;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 
 import gcnc.Compiler;
 import gcnc.diag.Code;
@@ -69,6 +70,52 @@ class ContouringTest {
 
     static String read(String name) throws Exception {
         return Files.readString(Path.of("src/test/resources/plan", name), StandardCharsets.UTF_8);
+    }
+
+    /** A CAM finishing pass of 1,000 chords, as a post writes it (issue 33). */
+    static String camFinish(int chords) {
+        StringBuilder b = new StringBuilder("G21 G18 G40 G99\nT0101\nG97 S1200 M03\nG00 X48. Z1.\nG01 Z0. F0.2\n");
+        for (int k = 1; k <= chords; k++) {
+            b.append(String.format(java.util.Locale.ROOT, "X%.3f Z%.3f%n", 46 + Math.sin(k / 40.0), -k * 0.05));
+        }
+        return b.append("G00 X60.\nZ5.\nM05\nM30\n").toString();
+    }
+
+    @Test
+    void aThousandChordFinishIsOneSequenceFedWhileItRuns() throws Exception {
+        Out o = compile(camFinish(1000), profile("haas"));
+        // no stop for its length: rapid in, the pass, rapid out (before issue 33: "buffer" every 255 chords)
+        assertEquals(List.of("rapid-feed", "rapid-feed", "output"), o.stops());
+        List<gcnc.dmc.Command> cs = o.instructions().stream().map(gcnc.dmc.Instruction::command).toList();
+        int bgs = -1;
+        int segments = 0;
+        int before = 0;
+        int waits = 0;
+        for (int i = 0; i < cs.size(); i++) {
+            gcnc.dmc.Command c = cs.get(i);
+            if (c instanceof gcnc.dmc.Command.VectorSpeed) {
+                segments = 0;
+            } else if (c instanceof gcnc.dmc.Command.VectorPosition || c instanceof gcnc.dmc.Command.CircularArc) {
+                segments++;
+            } else if (c instanceof gcnc.dmc.Command.BeginSequence && segments > 511) {
+                fail("BGS after " + segments + " segments: more than the buffer holds");
+            } else if (c instanceof gcnc.dmc.Command.BeginSequence && cs.get(i - 1) instanceof gcnc.dmc.Command.VectorEnd) {
+                continue;
+            } else if (c instanceof gcnc.dmc.Command.BeginSequence) {
+                bgs = i;
+                before = segments;
+            } else if (c instanceof gcnc.dmc.Command.Call call && call.label().equals("LMWAIT")) {
+                waits++;
+            }
+        }
+        assertEquals(510, before, "the first fill: every slot but VE's");
+        assertEquals(5, waits, "a wait for room before each 100 segments after it");
+        assertTrue(o.lines().contains("JP #LMWAIT,_LMS<101"), o.dmc());
+        // the joins between the planner's windows keep the feed: no segment of the pass ends below it
+        long slowJoins = o.lines().stream().flatMap(l -> java.util.Arrays.stream(l.split(";")))
+                .filter(st -> st.startsWith("VP") && st.contains(">") && !st.contains(">3936")).count();
+        assertTrue(slowJoins <= 2, "joins below the feed: " + slowJoins);
+        assertTrue(bgs > 0);
     }
 
     /** The issue's finishing contour: eight feed blocks with a chamfer, a fillet and a round run as one sequence at F. */
@@ -185,8 +232,10 @@ class ContouringTest {
         List<String> l = o.lines();
         int bgs = l.indexOf("VP -11000,2000 <1666") + 2;
         assertEquals("BGS", l.get(bgs), o.dmc());
-        // M08 where the path reaches line 7 (12 mm of Z at 500 counts/mm); M09 where line 10 starts
-        assertEquals(List.of("AV 6000", "SB3", "AV 11414", "CB3", "CB7", "AMS"), l.subList(bgs + 1, bgs + 7));
+        // M08 where the path reaches line 7 (12 mm of Z at 500 counts/mm); M09 where line 10 starts, at
+        // 11,414 counts: 5,414 after the first trip point, since AV measures from the last AV (command
+        // reference AV; DMC-40x0 User Manual p.86, "After Relative Vector distance")
+        assertEquals(List.of("AV 6000", "SB3", "AV 5414", "CB3", "CB7", "AMS"), l.subList(bgs + 1, bgs + 7));
     }
 
     @Test
@@ -218,9 +267,15 @@ class ContouringTest {
         MachineProfile fanuc = profile("fanuc");
         Out o = compile(COOLANT, fanuc);
         assertEquals(List.of(), replayed(o, "AV 6000", 6000, fanuc));
-        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 11414", 90000, fanuc));
-        // M08 (line 7) switched where the path is still on line 6
-        assertEquals(List.of(Code.E335_SIM_SWITCHED_ELSEWHERE), replayed(o, "AV 6000", 3000, fanuc));
+        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 5414", 90000, fanuc));
+        // AV is relative: 6,500 counts is shorter than the 12,414 of the path, but after the first trip
+        // point (6,000) it lies past the end
+        assertEquals(List.of(Code.E334_SIM_TRIP_PAST_END), replayed(o, "AV 5414", 6500, fanuc));
+        assertEquals(List.of(), replayed(o, "AV 5414", 6414, fanuc).stream()
+                .filter(c -> c == Code.E334_SIM_TRIP_PAST_END).toList(), "the end of the path itself is reached");
+        // M08 (line 7) switched where the path is still on line 6, and M09 with it (3,000 + 5,414: on line 8)
+        assertEquals(List.of(Code.E335_SIM_SWITCHED_ELSEWHERE, Code.E335_SIM_SWITCHED_ELSEWHERE),
+                replayed(o, "AV 6000", 3000, fanuc));
     }
 
     /** The compile's instructions replayed with the AV of {@code text} moved to {@code counts}: the codes found. */

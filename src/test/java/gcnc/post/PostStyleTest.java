@@ -125,7 +125,7 @@ class PostStyleTest {
 
     /**
      * Each pending or not-supported construct, written into an otherwise clean program, still has
-     * an error on this branch (what it is is printed). When a merge makes one check clean, this
+     * an error on this branch. When a merge makes one check clean, this
      * fails so that it is taken out of {@link PostStyleGenerator#PENDING} (or NOT_SUPPORTED) and
      * the campaign writes it.
      */
@@ -146,7 +146,6 @@ class PostStyleTest {
                     Program p = PostStyleGenerator.generate(post, SEED, settled, forced);
                     assertTrue(p.used().contains(c), "the generator wrote " + c);
                     List<String> found = unexpected(check(post, p.text()), p.text());
-                    System.out.println("pending " + c + " on " + post + ": " + found);
                     assertFalse(found.isEmpty(), c + " checks clean on " + post
                             + " now: take it out of PostStyleGenerator.PENDING\n" + show(p));
                 }));

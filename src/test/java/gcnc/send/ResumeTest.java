@@ -9,6 +9,7 @@ import gcnc.diag.Code;
 import gcnc.machine.MachineProfile;
 import java.io.BufferedReader;
 import java.io.StringReader;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -151,12 +152,39 @@ class ResumeTest {
         assertEquals(List.of("VS 1000", "VP 600,0 <1000 >500", "VP 600,1000 <800", "VE", "BGS", "AV 1100", "OF ,,4.0000",
                 "AMS", "CB1", "EN"), l.subList(vs, l.size()));
         assertEquals(List.of(6, 7), List.of(p.sourceLine(r.originOf(vs + 1)), p.sourceLine(r.originOf(vs + 2))));
-        // the controller's segments of the new sequence name lines 6 and 7 (_CSS 1 and 2)
+        // the controller's segments of the new sequence name lines 6 and 7 (_CSS 0 and 1: the segment
+        // counter starts at zero, DMC-40x0 User Manual p.86); after the end, either reading names line 7
         Piece.Segments seg = r.segmentsAt(l.indexOf("AMS"), p);
-        assertEquals(6, p.sourceLine(seg.executing(1)));
+        assertEquals(6, p.sourceLine(seg.executing(0)));
+        assertEquals(7, p.sourceLine(seg.executing(1)));
         assertEquals(7, p.sourceLine(seg.executing(2)));
         assertTrue(seg.begun());
         assertTrue(!r.segmentsAt(vs + 1, p).begun(), "before BGS the motion has not begun");
+    }
+
+    /**
+     * Two changes on the way: AV is relative (command reference AV, "from the start of a coordinated move
+     * sequence or from the last AV command"), so the second trips at 1,500 + 300 = 1,800 counts. Resumed
+     * 1,000 counts along, the first is written from the new sequence's start and the second as it was.
+     */
+    @Test
+    void aSecondAvOnTheWayMeasuresFromTheFirstAfterAResumeToo() throws Exception {
+        List<String> two = new ArrayList<>(BLENDED);
+        two.addAll(two.indexOf("AMS"), List.of("AV 300", "OF ,,5.0000"));
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        DmcProgram p = DmcProgram.read(two, MapReader.read(new BufferedReader(new StringReader(
+                "# source part.nc\n1 0\n6 4\n7 5\n10 6\n12 7\n18 8\n19 0\n"))), haas);
+        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
+        List<String> l = texts(r);
+        int vs = l.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 0,1000 <800", "VE", "BGS", "AV 500", "OF ,,4.0000", "AV 300", "OF ,,5.0000",
+                "AMS", "CB1", "EN"), l.subList(vs, l.size()));
+        // resumed 1,600 counts along: the first change has happened, the second is 200 counts ahead
+        Piece past = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
+        List<String> q = texts(past);
+        int at = q.indexOf("VS 1000");
+        assertEquals(List.of("VS 1000", "VP 0,400 <800", "VE", "BGS", "AV 200", "OF ,,5.0000", "AMS", "CB1", "EN"),
+                q.subList(at, q.size()));
     }
 
     /** A block of two segments blended (a G71-like pass and its step, one G-code line): N:K names the segment. */
@@ -185,6 +213,90 @@ class ResumeTest {
         assertEquals("37:4", new ResumePoint(37, 4).toString());
         assertThrows(IllegalArgumentException.class, () -> ResumePoint.parse("x"));
         assertThrows(IllegalArgumentException.class, () -> ResumePoint.parse("0"));
+    }
+
+    /** A turning tool: approach at X42 Z2 (line 6), in to X40, along to Z-30 (line 8), a corner (line 9), out. */
+    static final String TURN = String.join("\n", "O1002", "G21 G99", "G50 S2500", "T0101", "G97 S1200 M03",
+            "G00 X42. Z2.", "G01 X40. F0.2", "G01 Z-30.", "G02 X46. Z-33. R3.", "G01 X50.", "G00 X60. Z5.", "M05", "M30", "");
+    /** A boring bar: approach at X20 Z2 (line 6), into the bore to Z-20, out to X24 (line 8), back to Z2 (line 9). */
+    static final String BORE = String.join("\n", "O1003", "G21 G99", "G50 S2500", "T0101", "G97 S1200 M03",
+            "G00 X20. Z2.", "G01 Z-20. F0.1", "G01 X24.", "G01 Z2.", "G00 X60. Z5.", "M05", "M30", "");
+
+    /** A G-code program compiled for the haas profile, with the checker's frames of its lines. */
+    record Compiled(DmcProgram program, BlockTable blocks) {
+        /** Galil counts of program X (diameter), Z in the frame of line {@code line}. */
+        double[] galil(int line, double x, double z) {
+            gcnc.ir.ProgramFrame f = blocks.at(line).frame();
+            return program.plane().galil(f.origin().x() + x * f.perX(), f.origin().z() + z * f.perZ());
+        }
+
+        RunFault refusal(int line, double[] axes) {
+            return assertThrows(RunFault.class, () -> new Resume(program, blocks, 3).plan(new ResumePoint(line, 0), axes));
+        }
+    }
+
+    static Compiled compiled(String text) throws Exception {
+        Session session = Session.open(Session.Options.defaults().withMachine("haas"));
+        List<gcnc.dmc.Instruction> out = new ArrayList<>();
+        session.compile(new StringReader(text), java.util.Optional.empty(), false, out::add);
+        return new Compiled(DmcProgram.of(out, session.profile()),
+                BlockTable.of(new StringReader(text), session.tables(), session.profile(), java.util.Optional.empty()));
+    }
+
+    @Test
+    void offThePathTheAdviceIsInProgramTermsAndRetractsXOutwardFirst() throws Exception {
+        Compiled c = compiled(TURN);
+        // jogged into the stock: X30 Z-15, while line 9's corner starts at X40 Z-30
+        RunFault f = c.refusal(9, c.galil(9, 30, -15));
+        String why = f.args().get(1);
+        assertEquals(Code.E827_CANNOT_RESUME, f.code());
+        assertTrue(why.startsWith("the axes are at X30.000 Z-15.000 (Galil counts " + PositionText.counts(c.galil(9, 30, -15))
+                + "), not on the path of line 9 (X40.000 Z-30.000 (Galil counts "), why);
+        // out to the approach's X42 (line 6) at the axes' Z, then along Z, then in: never straight through the part
+        assertTrue(why.contains(": move X away from the part first, to X42.000 Z-15.000 (Galil counts "
+                + PositionText.counts(c.galil(9, 42, -15)) + "), then Z, to X42.000 Z-30.000 (Galil counts "
+                + PositionText.counts(c.galil(9, 42, -30)) + "), then X, to X40.000 Z-30.000 (Galil counts "
+                + PositionText.counts(c.galil(9, 40, -30)) + ") and resume again"), why);
+        assertTrue(!why.contains("jog them to"), why);
+        // axes already farther out than the approach stay out
+        String out = c.refusal(9, c.galil(9, 80, -15)).args().get(1);
+        assertTrue(out.contains("first, to X80.000 Z-15.000 (Galil counts " + PositionText.counts(c.galil(9, 80, -15))
+                + "), then Z, to X80.000 Z-30.000"), out);
+    }
+
+    @Test
+    void inABoreTheRetractIsTowardTheCentreLine() throws Exception {
+        Compiled c = compiled(BORE);
+        // line 9 starts at X24 Z-20 in the bore; the bar went in at X20, so away from the wall is toward X20
+        String why = c.refusal(9, c.galil(9, 26, -10)).args().get(1);
+        // (X20 to the approach's whole counts)
+        assertEquals(20, retractX(why, "move X away from the part first, to X", " Z-10.000 (Galil counts "), 0.005, why);
+        assertEquals(20, retractX(why, "), then Z, to X", " Z-20.000 (Galil counts "), 0.005, why);
+        // at the bottom of the bore (line 8 starts at X20 Z-20, the approach's X): still toward the centre line,
+        // the side opposite to where the bar went from its approach
+        String at8 = c.refusal(8, c.galil(8, 22, -10)).args().get(1);
+        assertEquals(20, retractX(at8, "first, to X", " Z-10.000"), 0.005, at8);
+        // axes nearer the centre line than the approach stay there
+        String inner = c.refusal(9, c.galil(9, 10, -10)).args().get(1);
+        assertTrue(inner.contains("first, to X10.000 Z-10.000"), inner);
+    }
+
+    @Test
+    void theApproachItselfRetractsToWhereTheToolCameFrom() throws Exception {
+        Compiled c = compiled(TURN);
+        double[] from = c.program().sequences().get(0).start();
+        double[] p = c.blocks().at(6).program(c.program().plane().machine(from));
+        // line 6 is the tool's first motion: the clear X is its start's, where the tool came from
+        String why = c.refusal(6, c.galil(6, 50, -10)).args().get(1);
+        assertTrue(why.contains(String.format(java.util.Locale.ROOT, "first, to X%.3f Z-10.000", p[0])), why);
+        assertTrue(why.contains(String.format(java.util.Locale.ROOT, "then X, to X%.3f Z%.3f", p[0], p[1])), why);
+    }
+
+    /** The X of an advice's step written {@code before}X...{@code after}, or NaN when there is none. */
+    static double retractX(String advice, String before, String after) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile(java.util.regex.Pattern.quote(before) + "(-?[0-9.]+)"
+                + java.util.regex.Pattern.quote(after)).matcher(advice);
+        return m.find() ? Double.parseDouble(m.group(1)) : Double.NaN;
     }
 
     /** The piece's commands as printed, one each (the download packs them into lines). */

@@ -92,6 +92,36 @@ class ReplayTest {
     }
 
     /**
+     * The header sets IT 1 on both plane axes (no smoothing: a unit with IT below 1 burned in would round
+     * the corners the replay verified); the replay models IT 1 only and refuses a smaller value (E336).
+     */
+    @Test
+    void theHeaderTurnsSmoothingOffAndTheReplayRefusesAnyOther() throws Exception {
+        String dmc = compile("G21 G98\nG00 X40. Z2.\nM30\n", "generic");
+        List<String> header = dmc.lines().flatMap(l -> gcnc.dmc.DmcReader.statements(l).stream()).toList();
+        assertTrue(header.containsAll(List.of("IT 1", "IT ,1")), header.toString());
+        assertTrue(header.indexOf("IT 1") > header.indexOf("VM XY"), header.toString());
+        String head = "#GCNC\nSH XY\nVM XY\n";
+        assertEquals(List.of(), replay(head + "IT 1\nIT ,1\nEN\n", "generic"));
+        assertEquals(List.of("E336@4"), replay(head + "IT 0.5\nEN\n", "generic"));
+    }
+
+    /**
+     * The command reference's AV replayed by the simulator: "measured from the start of a coordinated move
+     * sequence or from the last AV command", so in a 3,000-count sequence AV 1000 then AV 1500 trips at
+     * 2,500 counts (on the path), and AV 1000 then AV 2500 at 3,500: past its end (E334), though 2,500
+     * alone would be on it.
+     */
+    @Test
+    void anAvMeasuresFromTheLastAvAndTheirSumMustBeOnThePath() throws Exception {
+        String head = "#GCNC\nSH XY\nVM XY\nVS 10000\nVP 1000,0\nVP 2000,0\nVP 3000,0\nVE\nBGS\nAV 1000\n";
+        assertEquals(List.of(), replay(head + "AV 1500\nAMS\nEN\n", "generic"));
+        assertEquals(List.of("E334@11"), replay(head + "AV 2500\nAMS\nEN\n", "generic"));
+        assertEquals(List.of(), replay(head + "AMS\nVS 10000\nVP 3000,0\nVE\nBGS\nAV 2500\nAMS\nEN\n", "generic"),
+                "a new sequence measures from its own start");
+    }
+
+    /**
      * On thesis-2004 a feed of F1000 has the VS of a rapid: the DMC marks it (NO G01), so that a
      * replay of the DMC by itself cuts with it instead of reporting a rapid into the blank.
      */

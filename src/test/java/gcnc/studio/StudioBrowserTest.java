@@ -91,6 +91,26 @@ class StudioBrowserTest {
         return browser.findElements(By.cssSelector("#errors tbody tr"));
     }
 
+    /**
+     * The cells of the error list's one row, once it is {@code code}'s: read in one go inside a wait,
+     * since every check (each key typed, the simulation after it) redraws the list and a row found a
+     * moment ago may be gone or another's.
+     */
+    private List<String> onlyError(String code) {
+        return wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d -> {
+            List<WebElement> rows = errorRows();
+            List<String> cells = rows.size() != 1 ? List.of()
+                    : rows.get(0).findElements(By.tagName("td")).stream().map(WebElement::getText).toList();
+            return !cells.isEmpty() && cells.get(0).equals(code) ? cells : null;
+        });
+    }
+
+    /** Waits until the program list, as drawn now, has {@code name} chosen (a folder's change event redraws it). */
+    private void waitChosen(String name) {
+        wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d ->
+                name.equals(new Select(d.findElement(By.id("files"))).getFirstSelectedOption().getText()));
+    }
+
     private int cursorLine() {
         return Integer.parseInt(browser.findElement(By.id("cursor")).getAttribute("data-line"));
     }
@@ -99,12 +119,11 @@ class StudioBrowserTest {
     void aBrokenLineGetsItsDiagnosticUnderItAndLosesItWhenFixed() throws IOException {
         WebElement content = endOfLine(6); // N135 G01 Z-04500
         content.sendKeys(" Q");
-        wait.until(d -> errorRows().size() == 1);
-        List<WebElement> cells = errorRows().get(0).findElements(By.tagName("td"));
-        assertEquals("E006", cells.get(0).getText());
-        assertEquals("expecting a number for parameter Q", cells.get(1).getText());
-        assertEquals("6", cells.get(2).getText());
-        assertEquals("18", cells.get(3).getText());
+        List<String> cells = onlyError("E006");
+        assertEquals("E006", cells.get(0));
+        assertEquals("expecting a number for parameter Q", cells.get(1));
+        assertEquals("6", cells.get(2));
+        assertEquals("18", cells.get(3));
         // underlined on its own line, and marked in the gutter
         WebElement sixth = browser.findElements(By.cssSelector(".cm-content .cm-line")).get(5);
         wait.until(d -> !sixth.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
@@ -114,14 +133,61 @@ class StudioBrowserTest {
         // no DMC and no path for a program with an error: the last ones stay, greyed and said to be old
         wait.until(ExpectedConditions.attributeContains(By.id("path"), "class", "stale"));
         assertTrue(browser.findElement(By.id("pathnote")).getText().contains("last version without errors"));
+        // the DMC pane says why it has no DMC of this text, and the summary does not say "DMC lines: 0"
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("dmcnote"),
+                "no DMC: the program has 1 error (the first at line 6); nothing is translated after it"));
+        assertTrue(browser.findElement(By.id("galil")).getAttribute("class").contains("stale"));
+        assertTrue(browser.findElement(By.id("summary")).getText().contains("DMC lines: no DMC: the program has 1 error"),
+                browser.findElement(By.id("summary")).getText());
         Browser.screenshot(browser, "diagnostics");
 
         content.sendKeys(Keys.BACK_SPACE, Keys.BACK_SPACE);
         wait.until(d -> errorRows().isEmpty() && d.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
         assertTrue(browser.findElement(By.id("counts")).getText().contains("no errors"));
         wait.until(d -> !d.findElement(By.id("path")).getAttribute("class").contains("stale"));
+        wait.until(ExpectedConditions.textToBe(By.id("dmcnote"), ""));
         assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")),
                 "typing saves nothing");
+    }
+
+    /**
+     * N145's cut made a rapid (line 9: G01 to G00): the check finds nothing, the simulator an E305 on
+     * the bar. The error list has it as soon as the text is simulated, no Compile pressed, with its
+     * code, line and message, counted in the heading and underlined; a click selects its line and
+     * marks its place on the path; the DMC pane says why it has none.
+     */
+    @Test
+    void aSimulatorFindingIsInTheErrorListWithoutCompileAndAClickShowsItsPlace() throws IOException {
+        WebElement content = endOfLine(9); // N145 G01 Z-03550
+        content.sendKeys(Keys.HOME, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT, Keys.ARROW_RIGHT,
+                Keys.ARROW_RIGHT, Keys.DELETE, Keys.DELETE, "00");
+        wait.until(d -> d.findElement(By.cssSelector(".cm-content")).getText().contains("N145 G00 Z-03550"));
+        wait.until(d -> errorRows().size() == 1 && !errorRows().get(0).getAttribute("class").contains("pending"));
+        WebElement row = errorRows().get(0);
+        List<WebElement> cells = row.findElements(By.tagName("td"));
+        assertEquals("E305", cells.get(0).getText());
+        assertTrue(cells.get(1).getText().startsWith("rapid move enters the blank at X1984. Z-1775. (N145;"), cells.get(1).getText());
+        assertEquals("9", cells.get(2).getText());
+        assertTrue(row.getAttribute("class").contains("error") && row.getAttribute("class").contains("simulator"));
+        assertEquals("— 1 error, 0 warnings", browser.findElement(By.id("counts")).getText());
+        // underlined in the text too, as the check's findings are
+        WebElement ninth = browser.findElements(By.cssSelector(".cm-content .cm-line")).get(8);
+        wait.until(d -> !ninth.findElements(By.cssSelector(".cm-lintRange-error")).isEmpty());
+        // no DMC for a program with an error, and the pane says why
+        wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("dmcnote"),
+                "no DMC: the simulation found 1 error (the first at line 9)"));
+        assertTrue(browser.findElement(By.id("summary")).getText().contains("DMC lines: no DMC: the simulation found 1 error"));
+        assertFalse(Files.exists(dir.resolve("bishop.dmc")), "nothing compiled");
+        // a click: the cursor on line 9, its moves lit on the path, and the finding's place marked
+        browser.findElement(By.cssSelector(".cm-content")).sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "1"));
+        assertTrue(browser.findElements(By.cssSelector("#profile circle.mark.picked")).isEmpty());
+        errorRows().get(0).click();
+        wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "9"));
+        WebElement mark = browser.findElement(By.cssSelector("#profile circle.mark.picked"));
+        assertEquals("E305", mark.getAttribute("data-code"));
+        assertEquals("9", mark.getAttribute("data-line"));
+        assertFalse(browser.findElements(By.cssSelector("#profile g.move.current[data-line='9']")).isEmpty());
     }
 
     @Test
@@ -130,7 +196,10 @@ class StudioBrowserTest {
         wait.until(d -> errorRows().size() == 1);
         browser.findElement(By.cssSelector(".cm-content")).sendKeys(Keys.chord(Keys.CONTROL, Keys.HOME));
         wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "1"));
-        errorRows().get(0).click();
+        wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class).until(d -> {
+            errorRows().get(0).click();
+            return true;
+        });
         wait.until(ExpectedConditions.attributeToBe(By.id("cursor"), "data-line", "46"));
         assertEquals("Line 46, column 25", browser.findElement(By.id("cursor")).getText());
     }
@@ -244,7 +313,7 @@ class StudioBrowserTest {
         });
         wait.until(ExpectedConditions.alertIsPresent()).dismiss();
         assertTrue(browser.findElement(By.cssSelector(".cm-content")).getText().contains("(mine) (more)"));
-        assertEquals("bishop.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
+        waitChosen("bishop.nc");
     }
 
     @Test
@@ -258,7 +327,7 @@ class StudioBrowserTest {
         assertTrue(Files.readString(dir.resolve("copy.nc")).contains("Z-04500 (copy)\n"));
         assertEquals(Files.readString(Path.of("samples/bishop.nc")), Files.readString(dir.resolve("bishop.nc")));
         assertTrue(browser.getCurrentUrl().endsWith("&file=copy.nc"), browser.getCurrentUrl());
-        assertEquals("copy.nc", new Select(browser.findElement(By.id("files"))).getFirstSelectedOption().getText());
+        waitChosen("copy.nc"); // the list redrawn by the save, and again by the folder's change event
     }
 
     @Test
@@ -271,8 +340,7 @@ class StudioBrowserTest {
         WebElement content = browser.findElement(By.cssSelector(".cm-content"));
         content.click();
         content.sendKeys("G00 X+2234 Z+00100");
-        wait.until(d -> errorRows().size() == 1); // the thesis's programs end with M30
-        assertEquals("E052", errorRows().get(0).findElement(By.tagName("td")).getText());
+        assertEquals("E052", onlyError("E052").get(0)); // the thesis's programs end with M30
         content.sendKeys(Keys.ENTER, "M30");
         wait.until(d -> errorRows().isEmpty());
         assertFalse(Files.exists(dir.resolve("fresh.nc")), "nothing is written before Save");
@@ -290,8 +358,9 @@ class StudioBrowserTest {
             wait.until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-ready", "true"));
             wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("counts"), "sin errores"));
             endOfLine(6).sendKeys(" Q");
-            wait.until(d -> errorRows().size() == 1);
-            String message = errorRows().get(0).findElements(By.tagName("td")).get(1).getText();
+            wait.until(ExpectedConditions.textToBePresentInElementLocated(By.id("dmcnote"),
+                    "sin DMC: el programa tiene 1 error (el primero en la línea 6)"));
+            String message = onlyError("E006").get(1);
             assertFalse(message.equals("expecting a number for parameter Q"), message);
             assertTrue(message.contains("Q"), message);
             assertEquals("Errores", browser.findElement(By.cssSelector("#problems h2 span")).getText());

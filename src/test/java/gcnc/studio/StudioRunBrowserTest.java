@@ -147,6 +147,44 @@ class StudioRunBrowserTest {
         assertTrue(browser.findElement(By.id("run-start")).getAttribute("disabled") != null, "a run needs a new arm");
     }
 
+    /**
+     * The run's events come over the event stream, the answer to Start over its own request: a run
+     * can end before its start is answered (a short program, a busy machine). Here the page's answer
+     * to POST /api/run/start is held until the page has shown FINISHED; the page must then still say
+     * FINISHED, not RUNNING, and be ready for a new arm.
+     */
+    @Test
+    void aRunThatEndsBeforeItsStartIsAnsweredStaysFinished() {
+        arm();
+        js("""
+                window.startAnswered = false;
+                const real = window.fetch;
+                window.fetch = async (url, init) => {
+                  const answer = await real(url, init);
+                  if (!String(url).endsWith('/api/run/start')) return answer;
+                  const box = document.getElementById('run-state');
+                  await new Promise((resolve) => {
+                    if (box.dataset.state === 'finished') return resolve();
+                    new MutationObserver((_, o) => { if (box.dataset.state === 'finished') { o.disconnect(); resolve(); } })
+                      .observe(box, { attributes: true });
+                  });
+                  window.startAnswered = true;
+                  return answer;
+                };""");
+        browser.findElement(By.id("run-start")).click();
+        wait.until(d -> Boolean.TRUE.equals(js("return window.startAnswered;")));
+        wait.until(d -> d.findElement(By.id("run-arm")).isEnabled()); // the run's thread ended (run-ended)
+        assertEquals("finished", browser.findElement(By.id("run-state")).getAttribute("data-state"));
+        assertTrue(browser.findElement(By.id("run-state")).getText().startsWith("FINISHED: ran to the end in"),
+                browser.findElement(By.id("run-state")).getText());
+        assertTrue(browser.findElement(By.id("run-stop")).getAttribute("disabled") != null, "nothing to stop");
+        assertFalse(browser.findElement(By.id("status")).getText().startsWith("running"), browser.findElement(By.id("status")).getText());
+    }
+
+    private Object js(String script) {
+        return ((org.openqa.selenium.JavascriptExecutor) browser).executeScript(script);
+    }
+
     @Test
     void aStopSaysWhereAndTheResumeArmsAtThatBlock() {
         arm();

@@ -64,14 +64,18 @@ final class CheckCommand extends RunCommand {
         long blocks = 0;
         int read = 0;
         long errorsInAll = 0;
+        long waivedInAll = 0;
         for (Path file : programs) {
             String name = SourceFiles.display(file);
             try (Reader in = SourceFiles.open(file, streams().in())) {
                 Compiler.Result r = setup.session().withPrograms(SourceFiles.programsFolder(file)).check(in);
                 int errors = reporter.report(name, r.diagnostics());
                 Phrases say = reporter.phrases();
+                int waived = r.diagnostics().waivedCount();
                 reporter.say(say.get("check.summary", name, say.count(r.blocks(), "block"),
-                        errors == 0 ? say.get("no_errors") : say.count(errors, "error")));
+                        (errors == 0 ? say.get("no_errors") : say.count(errors, "error"))
+                                + (waived == 0 ? "" : ", " + say.count(waived, "waived"))));
+                waivedInAll += waived;
                 blocks += r.blocks();
                 errorsInAll += errors;
                 read++;
@@ -88,7 +92,8 @@ final class CheckCommand extends RunCommand {
             long errors = errorsInAll + faults;
             Phrases say = reporter.phrases();
             reporter.say(say.get("check.total", say.count(read, "program"), say.count(blocks, "block"),
-                    errors == 0 ? say.get("no_errors") : say.count(errors, "error")));
+                    (errors == 0 ? say.get("no_errors") : say.count(errors, "error"))
+                            + (waivedInAll == 0 ? "" : ", " + say.count(waivedInAll, "waived"))));
         }
         return status;
     }

@@ -26,6 +26,10 @@ final class CommonOptions {
                     + " (default: the one the machine profile names).")
     String control;
 
+    @Option(names = "--offsets", paramLabel = "FILE",
+            description = "The tools' wear offsets: a file of wear.N = X, Z lines (default: the profile's offsets.file, if any).")
+    Path offsets;
+
     @Option(names = "--lang", paramLabel = "en|es",
             description = "Language of the messages and summaries: en or es (default: es when LANG or LC_ALL"
                     + " starts with es, else en).")
@@ -52,12 +56,23 @@ final class CommonOptions {
      * {@link Reporter#tableFault}.
      */
     Setup load(Reporter reporter) throws TableException {
+        return load(reporter, false);
+    }
+
+    /** {@link #load(Reporter)}; with {@code newOffsets} an offsets file that does not exist yet reads as empty (the test cut makes it). */
+    Setup load(Reporter reporter, boolean newOffsets) throws TableException {
         gcnc.Session.Options o = gcnc.Session.Options.defaults().withMachine(machine);
         if (tables != null) {
             o = o.withTables(tables);
         }
         if (control != null) {
             o = o.withControl(control);
+        }
+        if (offsets != null) {
+            o = o.withOffsets(offsets);
+        }
+        if (newOffsets) {
+            o = o.withNewOffsets();
         }
         gcnc.Session s = gcnc.Session.open(o);
         reporter.use(s.tables(), source());
@@ -73,7 +88,7 @@ final class CommonOptions {
     }
 
     MachineProfile loadProfile(Tables t) throws TableException {
-        return ProfileLoader.load(machine, source(), t, control);
+        return ProfileLoader.load(machine, source(), t, control, java.util.Optional.ofNullable(offsets), false);
     }
 
     /** This command's {@code --lang}, else one before the command ({@code gcnc --lang es check}), else the locale's. */

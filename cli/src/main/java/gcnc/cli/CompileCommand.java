@@ -3,6 +3,7 @@ package gcnc.cli;
 import gcnc.Compiler;
 import gcnc.dmc.Form;
 import gcnc.machine.MachineProfile;
+import gcnc.output.AtomicOutput;
 import gcnc.output.DmcOutputs;
 import gcnc.output.FormOutputs;
 import gcnc.sim.SimOptions;
@@ -73,7 +74,8 @@ final class CompileCommand extends RunCommand {
         FormOutputs outputs;
         try {
             outputs = toStdout ? FormOutputs.toStream(streams().out())
-                    : FormOutputs.open(SourceFiles.fileOf(file), target, !sourceMap);
+                    : FormOutputs.open(SourceFiles.fileOf(file), target, !sourceMap,
+                            output != null ? AtomicOutput.Name.GIVEN : AtomicOutput.Name.DERIVED);
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         }

@@ -21,18 +21,18 @@ import picocli.CommandLine.Spec;
  * {@code gcnc controller --virtual}: a virtual Galil on loopback TCP or a pty (gcnc.controller,
  * docs/virtual-controller.md); runs until stopped.
  */
-@Command(name = "controller", mixinStandardHelpOptions = true,
+@Command(name = "controller", mixinStandardHelpOptions = true, subcommands = ProbeCommand.class,
         description = {"Run a virtual Galil controller: it answers Galil's command protocol and runs the vector"
                 + " motion in time, for gcnc run, tests and demos.",
                 "TCP listens on 127.0.0.1 only; a pty is one end of a pair made with socat. Ctrl+C stops it."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:stopped", "2:usage, a bad --fault or --model, the port is taken or the pty cannot be opened"})
 final class ControllerCommand implements Callable<Integer> {
-    @Option(names = "--virtual", required = true,
-            description = "The virtual controller (the only kind so far).")
+    @Option(names = "--virtual",
+            description = "The virtual controller (gcnc controller probe asks a real one).")
     boolean virtual;
 
-    @ArgGroup(exclusive = true, multiplicity = "1")
+    @ArgGroup(exclusive = true, multiplicity = "0..1")
     Link link;
 
     static final class Link {
@@ -82,9 +82,18 @@ final class ControllerCommand implements Callable<Integer> {
                 : spec.root().userObject() instanceof Main m && m.lang != null ? m.lang
                 : CommonOptions.fromEnvironment(System.getenv());
         Phrases say = new Phrases(language);
+        if (!virtual || link == null) {
+            err.println("gcnc: " + say.get("controller.what"));
+            return ExitCode.USAGE;
+        }
         Model m = Model.named(model).orElse(null);
         if (m == null) {
             err.println("gcnc: " + say.get("controller.bad_model", model, Model.names()));
+            return ExitCode.USAGE;
+        }
+        if (m.galil.busOnly()) {
+            // an ISA/PCI card answers on the computer's bus, never on a serial port or Ethernet (galil_models.csv host_link)
+            err.println("gcnc: " + say.get("controller.bus_model", m.galil.name()));
             return ExitCode.USAGE;
         }
         if (!(speed > 0) || speed > 10_000) {

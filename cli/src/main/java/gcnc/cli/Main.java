@@ -88,7 +88,9 @@ public final class Main implements Runnable {
         m.put("compile", CompileCommand.class);
         m.put("simulate", SimulateCommand.class);
         m.put("sheet", SheetCommand.class);
+        m.put("path", PathCommand.class);
         m.put("run", SendCommand.class);
+        m.put("offsets", OffsetsCommand.class);
         m.put("tables", TablesCommand.class);
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);

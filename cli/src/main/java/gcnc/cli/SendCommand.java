@@ -102,6 +102,14 @@ final class SendCommand implements Callable<Integer> {
                     + " Default: program when it fits the profile's Galil model, else stream (as gcnc compile chooses).")
     gcnc.dmc.Form form;
 
+    @Option(names = "--optional-stop", paramLabel = "on|off",
+            description = "The optional stop switch: on, M01 stops as M00 (waits for Enter or cycle start); off, it runs"
+                    + " through. Default: the control's stop.optional (off for the shipped controls).")
+    OnOff optionalStop;
+
+    /** A switch's two positions, as the command line writes them. */
+    enum OnOff { on, off }
+
     @Option(names = "--dry-run", description = "Everything but motion: connect, pre-flight, download and read back.")
     boolean dryRun;
 
@@ -117,6 +125,11 @@ final class SendCommand implements Callable<Integer> {
 
     @Option(names = "--poll", paramLabel = "MS", defaultValue = "100", description = "How often to ask where the program is (default: ${DEFAULT-VALUE} ms).")
     int pollMs;
+
+    @Option(names = "--probe-report", paramLabel = "FILE",
+            description = "The report gcnc controller probe wrote for this controller: refuse the run when the unit"
+                    + " contradicts a fact the run relies on, unless the profile's galil.deviations names it.")
+    Path probeReport;
 
     @Option(names = "--stall", paramLabel = "SECONDS", defaultValue = "10",
             description = "Stop the run when the axes stand still this long inside a motion that has not ended (default: ${DEFAULT-VALUE}).")
@@ -142,7 +155,12 @@ final class SendCommand implements Callable<Integer> {
         Reporter reporter = new Reporter(Reporter.Format.GNU, quiet, json ? err : out, err, common.language());
         int status;
         try {
-            status = send(common.load(reporter), reporter, resume, json, out, err);
+            CommonOptions.Setup setup = common.load(reporter);
+            if (optionalStop != null) {
+                setup = new CommonOptions.Setup(setup.session().withProfile(
+                        setup.profile().withOptionalStop(optionalStop == OnOff.on)), setup.reporter());
+            }
+            status = send(setup, reporter, resume, json, out, err);
         } catch (TableException e) {
             status = reporter.tableFault(e);
         }
@@ -162,6 +180,13 @@ final class SendCommand implements Callable<Integer> {
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
+        // 0. a bus card (ISA, PCI) answers on the computer's bus only: refused before anything is compiled
+        // or opened (the profile still compiles for it with gcnc compile)
+        gcnc.machine.GalilModel busModel = setup.profile().galilModel();
+        if (busModel.busOnly()) {
+            return refuse(events, messages, Code.E830_BUS_ONLY_MODEL, setup.profile().name(), busModel.name(),
+                    busModel.family().startsWith("DMC-17") ? "ISA" : "PCI");
+        }
         // 1. the compile, as `gcnc compile` does it: FILE.dmc (and FILE.stream in the stream form) with their
         // maps, written only when clean; the instructions kept as they come, so that what is sent is what
         // the compiler made
@@ -170,7 +195,7 @@ final class SendCommand implements Callable<Integer> {
         List<Instruction> compiled = new ArrayList<>();
         DmcProgram program;
         gcnc.dmc.Form chosen;
-        try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
+        try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(file.getFileName().toString(), file);
             Consumer<Instruction> written = outputs.sink(asked, setup.profile().controllerLimits());
             Consumer<Instruction> sink = i -> {
@@ -216,7 +241,16 @@ final class SendCommand implements Callable<Integer> {
         } catch (IOException e) {
             return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
-        // 3. the link
+        // 3. the controller the profile names: reachable (a serial port or Ethernet, not a bus card) and,
+        // with a probe report, not known to contradict what the run relies on
+        gcnc.machine.GalilModel model = setup.profile().galilModel();
+        if (probeReport != null) {
+            java.util.Optional<RunFault> bad = probed(model, program, target.port != null);
+            if (bad.isPresent()) {
+                return refuse(events, messages, bad.get().code(), bad.get().args().toArray(new Object[0]));
+            }
+        }
+        // 4. the link
         Link link;
         try {
             link = target.port != null ? SerialLink.open(target.port, baud, !handshake.equals("none"))
@@ -225,7 +259,7 @@ final class SendCommand implements Callable<Integer> {
             events.accept(new Event.Finding(f.code().id(), "error", 0, messages.render(f.code(), f.args())));
             return Sender.CONNECTION;
         }
-        // 4. the run, with the operator's keys and Ctrl-C
+        // 5. the run, with the operator's keys and Ctrl-C
         Operator operator = new Operator();
         Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
                 new Sender.Options(step, dryRun, resume, pollMs), chosen == gcnc.dmc.Form.STREAM
@@ -235,6 +269,46 @@ final class SendCommand implements Callable<Integer> {
         try (keys) {
             return sender.run(link, timeoutMs);
         }
+    }
+
+    private static int refuse(EventSink events, Messages messages, Code code, Object... args) {
+        List<String> a = new ArrayList<>();
+        for (Object o : args) {
+            a.add(String.valueOf(o));
+        }
+        events.accept(new Event.Finding(code.id(), "error", 0, messages.render(code, a)));
+        return Sender.CONNECTION;
+    }
+
+    /**
+     * The probe report held against the run: E833 when it cannot be read or the profile's
+     * galil.deviations names no probe row, E832 when the unit contradicts a row the run relies on
+     * (over this link, with or without AV in the program) that the profile does not state.
+     */
+    private java.util.Optional<RunFault> probed(gcnc.machine.GalilModel model, DmcProgram program, boolean serial) {
+        gcnc.send.ProbeReport report;
+        try {
+            report = gcnc.send.ProbeReport.read(probeReport);
+        } catch (IOException e) {
+            return java.util.Optional.of(new RunFault(Code.E833_PROBE_REPORT, 0, false, probeReport.toString(),
+                    e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()));
+        }
+        for (String d : model.deviations()) {
+            if (gcnc.machine.ProbeRow.byId(d).isEmpty()) {
+                return java.util.Optional.of(new RunFault(Code.E833_PROBE_REPORT, 0, false, probeReport.toString(),
+                        "the profile's galil.deviations names '" + d + "', no probe row"));
+            }
+        }
+        boolean usesAv = program.usesAfterVector();
+        List<String> bad = new ArrayList<>();
+        for (gcnc.send.ProbeReport.Result r : report.rows()) {
+            if (r.status() == gcnc.send.ProbeReport.Status.CONTRADICTED && r.row().reliedOn(serial, usesAv)
+                    && !model.deviations().contains(r.row().id())) {
+                bad.add(r.row().id() + " (expected " + r.expected() + "; the unit answered " + r.observed() + ")");
+            }
+        }
+        return bad.isEmpty() ? java.util.Optional.empty() : java.util.Optional.of(new RunFault(Code.E832_PROBE_CONTRADICTS,
+                0, false, probeReport.toString(), String.join("; ", bad)));
     }
 
     /** The profile the compile used: with a blank given, the work offsets on the blank's face (as Compiler does). */

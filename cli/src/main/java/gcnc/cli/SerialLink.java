@@ -28,6 +28,10 @@ final class SerialLink implements Link {
         if (!Files.exists(p)) {
             throw new RunFault(Code.E815_PORT_MISSING, 0, false, device);
         }
+        if (!characterDevice(p)) {
+            // jSerialComm opened a plain file as a port, and the run wrote its program into it
+            throw new RunFault(Code.E865_PORT_NOT_A_DEVICE, 0, false, device);
+        }
         if (!Files.isReadable(p) || !Files.isWritable(p)) {
             throw new RunFault(Code.E816_PORT_HELD, 0, false, device, "no permission to read and write it");
         }
@@ -44,9 +48,24 @@ final class SerialLink implements Link {
         return new SerialLink(device, port);
     }
 
+    /** Whether {@code p} is a character device (a tty), by its mode; without one, anything but a file or a folder. */
+    static boolean characterDevice(Path p) {
+        try {
+            int mode = (Integer) Files.getAttribute(p, "unix:mode");
+            return (mode & 0170000) == 0020000; // S_IFMT, S_IFCHR
+        } catch (IOException | UnsupportedOperationException | IllegalArgumentException e) {
+            return !Files.isRegularFile(p) && !Files.isDirectory(p);
+        }
+    }
+
     @Override
     public String name() {
         return name;
+    }
+
+    @Override
+    public boolean serial() {
+        return true;
     }
 
     @Override

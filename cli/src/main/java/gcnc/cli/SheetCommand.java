@@ -107,7 +107,7 @@ final class SheetCommand extends RunCommand {
         SetupSheet sheet = SetupSheet.of(name, number, setup.profile(), sim.get(), r.diagnostics(),
                 reporter.messages());
         out.flush();
-        try (AtomicOutput o = toStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(target)) {
+        try (AtomicOutput o = toStdout ? AtomicOutput.toStream(streams().out()) : AtomicOutput.open(target, output == null ? AtomicOutput.Name.DERIVED : AtomicOutput.Name.GIVEN)) {
             sheet.write(svg.toString(), o.writer());
             o.commit();
         } catch (IOException e) {

@@ -24,6 +24,10 @@ final class SimSummary {
         long exact = Math.round(r.exactStopSeconds());
         // what blending gains: the same program with every move stopped at its end, when it differs
         String stops = exact > s ? phrases.get("simulation.exact_stop", clock(exact)) : "";
+        // the operator's waits at M00/M01 are not the machine's time: said, not counted
+        if (r.programStops() > 0) {
+            stops += phrases.get("simulation.program_stops", phrases.count(r.programStops(), "program_stop"));
+        }
         return phrases.get("simulation.summary", phrases.count(r.sequences(), "sequence"),
                 phrases.count(r.segments(), "segment"), phrases.count(r.findings(), "finding"), envelope,
                 clock(s)) + stops;

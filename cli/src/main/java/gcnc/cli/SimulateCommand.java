@@ -13,6 +13,7 @@ import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Reader;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 import picocli.CommandLine.Command;
@@ -107,6 +108,13 @@ final class SimulateCommand extends RunCommand {
                 gcnc.dmc.SourceMap.Table map = sourceMap(file, diags);
                 report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
                         map == null ? null : map.at()));
+                Path stream = gcnc.output.FormOutputs.streamFile(file);
+                if (report.get().sequences() == 0 && (map != null && map.streamSha256().isPresent() || Files.isRegularFile(stream))) {
+                    // a resident program moves nothing itself: "0 sequences, 0 findings" said nothing of where its motion is
+                    diags.report(new gcnc.diag.Diagnostic(gcnc.diag.Code.E864_RESIDENT_WITHOUT_STREAM, gcnc.diag.Severity.NOTE,
+                            gcnc.diag.Span.of(1, 1), java.util.List.of(file.toString(), stream.toString()),
+                            gcnc.diag.Origin.file(file.toString())));
+                }
                 if (map != null) {
                     // the findings are at G-code lines: name the G-code file the map names
                     shown = map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);
@@ -129,7 +137,7 @@ final class SimulateCommand extends RunCommand {
             reporter.simulation(shown, corners.kept(report.get()));
             if (svg != null) {
                 out.flush();
-                try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : new AtomicOutput(svg)) {
+                try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : AtomicOutput.open(svg, AtomicOutput.Name.GIVEN)) {
                     String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
                     SvgWriter.write(report.get(), title, number(file), o.writer(), !hideRapids);
                     o.commit();

@@ -33,6 +33,9 @@ final class SimulationJson {
             json.name("findings").value(r.findings());
             json.name("cycleSeconds").value(round(r.cycleSeconds(), 3));
             json.name("exactStopSeconds").value(round(r.exactStopSeconds(), 3)); // every move stopped: what blending gains
+            if (r.programStops() > 0) {
+                json.name("programStops").value(r.programStops()); // M00/M01 waits, not in cycleSeconds
+            }
             boolean moved = !Double.isNaN(r.xMinMm());
             if (moved && r.program() != null) {
                 envelope(json, "program", r.program());

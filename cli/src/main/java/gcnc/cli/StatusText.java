@@ -96,6 +96,10 @@ final class StatusText implements EventSink {
                     p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
                     Math.round(p.position()[0]) + "," + Math.round(p.position()[1]));
         }
+        if (e instanceof Event.Wear w) {
+            return say.get("run.wear", w.file(),
+                    gcnc.machine.ToolWear.describe(w.offset(), w.x(), w.z(), w.diameter(), w.unit()));
+        }
         if (e instanceof Event.Downloaded d) {
             return say.get("run.downloaded", d.lines());
         }
@@ -106,6 +110,14 @@ final class StatusText implements EventSink {
         }
         if (e instanceof Event.StepWait w) {
             return say.get("run.step_wait", w.line(), w.number() != null ? " (N" + w.number() + ")" : "");
+        }
+        if (e instanceof Event.ProgramStop p) {
+            return say.get("run.program_stop", p.line(), p.number() != null ? " (N" + p.number() + ")" : "",
+                    p.comment().isEmpty() ? "" : ": " + p.comment());
+        }
+        if (e instanceof Event.ProgramStopContinued p) {
+            return say.get(p.by().equals("operator") ? "run.program_stop_continued" : "run.program_stop_cycle_start",
+                    p.line());
         }
         if (e instanceof Event.Hold h) {
             return h.held() ? say.get("run.hold")

@@ -34,9 +34,28 @@ SimOptions options(MachineProfile profile) throws BadStock {
             return o.withoutBlank();
         }
         if (stock != null) {
-            return o.withStock(parse(stock, stickout));
+            StockSize s = parse(stock, stickout);
+            Optional<StockSize.Beyond> beyond = s.beyond(profile);
+            if (beyond.isPresent()) {
+                throw new BadStock(beyondMessage(beyond.get(), profile));
+            }
+            return o.withStock(s);
         }
         return o;
+    }
+
+    /** What --stock says of a size the machine cannot hold (the simulation's E511-E513, as a usage error). */
+    static String beyondMessage(StockSize.Beyond b, MachineProfile profile) {
+        String what = switch (b.code()) {
+            case E511_BLANK_TOO_WIDE -> "the diameter " + StockSize.shown(b.value()) + " mm is more than twice the X travel's"
+                    + " reach from the centre line";
+            case E512_BLANK_STICKS_OUT_TOO_FAR -> "the stick-out " + StockSize.shown(b.value()) + " mm is more than the Z travel's"
+                    + " length";
+            default -> "the length " + StockSize.shown(b.value()) + " mm is more than " + (int) StockSize.LENGTH_PER_Z_TRAVEL
+                    + " times the Z travel's length";
+        };
+        return "--stock: " + what + " on machine " + profile.name() + ": at most " + StockSize.shown(b.limit()) + " mm ("
+                + b.code().id() + ")";
     }
 
     /**

@@ -13,7 +13,13 @@ import java.nio.charset.StandardCharsets;
  * {@code :}; a rejected one answers {@code ?} (TC1 then says why); an empty line answers {@code :}.
  * After {@code DL} every byte up to the end marker ({@code \}, or ^Z, ^D, ^Q) is program text; a good
  * download answers {@code ::} (one for the end marker, one for DL), a refused one {@code ?}.
- * Unsolicited output (a program's MG) is written between replies, never inside one.
+ * Unsolicited output (a program's MG) is written between replies, never inside one, and only on the
+ * link that is the CF port (COMALL CF: the main serial port unless told).
+ *
+ * <p>The link is a port: 'S', the main serial port (the pty), which echoes every byte it receives while
+ * EO is 1, as a factory unit does from power-up (COMALL EO: "This command is defaulted to EO1"); or an
+ * Ethernet handle 'A'..'H', which never echoes ("The ethernet port will not echo commands"; an
+ * {@code echo-ethernet} fault makes it echo, as a unit that contradicted the reference would).
  */
 final class Connection implements Controller.Listener {
     private final Controller controller;
@@ -21,9 +27,11 @@ final class Connection implements Controller.Listener {
     private final OutputStream out;
     private final Faults faults;
     private final Closeable link;
+    private final char port;
 
-    Connection(Controller controller, InputStream in, OutputStream out, Faults faults, Closeable link) {
+    Connection(Controller controller, InputStream in, OutputStream out, Faults faults, Closeable link, char port) {
         this.controller = controller;
+        this.port = port;
         // bytes are taken one at a time: buffered, so that each is not a system call of its own
         this.in = new java.io.BufferedInputStream(in);
         this.out = out;
@@ -43,6 +51,7 @@ final class Connection implements Controller.Listener {
             return false; // the host went away: nothing to answer
         } finally {
             controller.removeListener(this);
+            controller.closeHandle(port);
             try {
                 link.close();
             } catch (IOException e) {
@@ -65,6 +74,9 @@ final class Connection implements Controller.Listener {
                 return true;
             }
             char ch = (char) (b & 0xFF);
+            if (port == 'S' ? controller.echoes() : faults.echoEthernet) {
+                echo(b); // the echo comes as the byte arrives, before any reply to it
+            }
             if (download != null) {
                 if (ch == '\\' || ch == 0x1A || ch == 0x04 || ch == 0x11) {
                     reply(downloaded(download.toString(), append) ? "::" : "?");
@@ -135,7 +147,7 @@ final class Connection implements Controller.Listener {
         }
         String reply;
         try {
-            reply = controller.command(st) + ":";
+            reply = controller.command(st, port) + ":";
         } catch (GalilException e) {
             reply = "?";
         }
@@ -159,12 +171,23 @@ final class Connection implements Controller.Listener {
     }
 
     @Override
+    public char port() {
+        return port;
+    }
+
+    @Override
     public void unsolicited(byte[] bytes) {
         try {
             send(bytes);
         } catch (IOException e) {
             // the reader sees the broken link and ends the connection
         }
+    }
+
+    /** One echoed byte: not a reply, so the byte-counting faults do not count it. */
+    private synchronized void echo(int b) throws IOException {
+        out.write(b);
+        out.flush();
     }
 
     private synchronized void send(byte[] bytes) throws IOException {

@@ -22,6 +22,11 @@ public final class Controller implements Expressions.Scope {
     /** Where the controller's unsolicited output (a program's MG, a program error) goes. */
     public interface Listener {
         void unsolicited(byte[] bytes);
+
+        /** The port the link is: 'S' the main serial port (the pty, and a test's own listener), 'A'..'H' an Ethernet handle. */
+        default char port() {
+            return 'S';
+        }
     }
 
     final Model model;
@@ -35,6 +40,11 @@ public final class Controller implements Expressions.Scope {
     private int passes;
     final boolean[] servo;
     final double[] offsets;
+    /**
+     * IT of each axis, 1 at power-up ("1 means no filtering", command reference IT). Recorded and read back
+     * ({@code _ITa}); a value below 1 is not modelled (the motion runs unfiltered) and the trace says so.
+     */
+    final double[] smoothing;
     long outputs;
     /** Inputs read 1 when nothing pulls them low (Galil's inputs are pulled up). */
     long inputs = -1L;
@@ -43,6 +53,14 @@ public final class Controller implements Expressions.Scope {
     int errorThread = -1;
     /** CW: 1 marks unsolicited characters with their high bit set, 2 does not (the power-up value). */
     int cw = 2;
+    /** CF: the port unsolicited messages go to, 'S' (the main serial port) at power-up (COMALL CF, default S). */
+    char cf = 'S';
+    /** EO: whether the serial port echoes what it receives; the model's power-up value (galil_models.csv serial_echo). */
+    volatile boolean echo;
+    /** The port the host command being executed came in on (for CF I, EO, WH); 0 inside a thread. */
+    char port;
+    /** The Ethernet handles in use (COMALL TH: A-H). */
+    private final boolean[] handles = new boolean[8];
     boolean limitTripped;
     private double time;
     private final Trace trace;
@@ -80,14 +98,17 @@ public final class Controller implements Expressions.Scope {
         this.trace = trace == null ? null : new Trace(trace);
         this.servo = new boolean[model.axes];
         this.offsets = new double[model.axes];
+        this.smoothing = new double[model.axes];
+        java.util.Arrays.fill(smoothing, 1);
+        this.echo = model.galil.serialEcho();
         for (int i = 0; i < threads.length; i++) {
             threads[i] = new ProgramThread(i);
         }
         this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
             @Override
-            public void segmentDone(int sequence, int css, VectorSegment s, int free, double t) {
+            public void segmentDone(int sequence, int number, VectorSegment s, int free, double t) {
                 if (Controller.this.trace != null) {
-                    Controller.this.trace.segment(sequence, css, s, free, t);
+                    Controller.this.trace.segment(sequence, number, s, free, t);
                 }
             }
 
@@ -137,6 +158,30 @@ public final class Controller implements Expressions.Scope {
         }
     }
 
+    /**
+     * {@code IT} of axis {@code a}: 0.004 to 1, resolution 1/256 (command reference IT). Below 1 the real
+     * controller filters the axis in VM and the motion takes longer; the virtual one does not smooth, so it
+     * says so in the trace (docs/virtual-controller.md).
+     */
+    void smooth(int a, double v) throws GalilException {
+        if (a < 0 || a >= model.axes) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        if (v < 0.004 || v > 1) {
+            throw new GalilException(Tc.RANGE);
+        }
+        smoothing[a] = v;
+        if (v != 1) {
+            event(String.format(Locale.ROOT, "IT %c %.4f: smoothing not modelled, the motion runs unfiltered (IT 1)",
+                    (char) ('A' + a), v), time);
+        }
+    }
+
+    /** An event of the trace at the controller's time now (an AV's trip: docs/virtual-controller.md, "Trace"). */
+    void traceEvent(String text) {
+        event(text, time);
+    }
+
     public void addListener(Listener l) {
         listeners.add(l);
     }
@@ -155,13 +200,43 @@ public final class Controller implements Expressions.Scope {
      * controller sends before its {@code :} ("" for a command without data, "data\r\n" for an
      * interrogation); a rejected command throws, sets the error {@code TC1} reports, and changes nothing.
      */
-    synchronized String command(String statement) throws GalilException {
+    synchronized String command(String statement, char from) throws GalilException {
+        port = from;
         try {
             return statements.execute(statement, null);
         } catch (GalilException e) {
             lastError = e.tc;
             throw e;
+        } finally {
+            port = 0;
         }
+    }
+
+    /** A command from the main serial port (a test driving the controller without a link). */
+    synchronized String command(String statement) throws GalilException {
+        return command(statement, 'S');
+    }
+
+    /** A free Ethernet handle for a new TCP connection, 'A'..'H', or 0 when all eight are taken. */
+    synchronized char openHandle() {
+        for (int i = 0; i < handles.length; i++) {
+            if (!handles[i]) {
+                handles[i] = true;
+                return (char) ('A' + i);
+            }
+        }
+        return 0;
+    }
+
+    synchronized void closeHandle(char h) {
+        if (h >= 'A' && h <= 'H') {
+            handles[h - 'A'] = false;
+        }
+    }
+
+    /** Whether the serial port echoes now (EO). */
+    boolean echoes() {
+        return echo;
     }
 
     /** A {@code reject} fault answered {@code ?}: TC1 says the command was not recognized. */
@@ -243,7 +318,12 @@ public final class Controller implements Expressions.Scope {
         }
     }
 
-    /** Sends unsolicited text (a program's MG): every character's high bit set after {@code CW 1}. */
+    /**
+     * Sends unsolicited text (a program's MG, a program's error) to the CF port only (COMALL MG: "The CF
+     * command sets the default communication port for routing unsolicited messages"): every character's
+     * high bit set after {@code CW 1}. With CF at a port no link holds, the text is lost, as on a Galil
+     * whose serial port has nothing connected.
+     */
     void unsolicited(String text) {
         byte[] b = text.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
         if (cw == 1) {
@@ -252,7 +332,9 @@ public final class Controller implements Expressions.Scope {
             }
         }
         for (Listener l : listeners) {
-            l.unsolicited(b);
+            if (l.port() == cf) {
+                l.unsolicited(b);
+            }
         }
     }
 
@@ -354,6 +436,8 @@ public final class Controller implements Expressions.Scope {
             case "UL": return model.variables - variables.size();
             case "DA": return Model.ARRAYS - arrays.size();
             case "DM": return model.arrayElements - elements;
+            case "CF": return cf; // "the decimal value of the ASCII letter" (COMALL CF)
+            case "EO": return echo ? 1 : 0;
             default: break;
         }
         if (name.length() == 3 && name.startsWith("XQ") && Character.isDigit(name.charAt(2))) {
@@ -374,6 +458,7 @@ public final class Controller implements Expressions.Scope {
                     case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;
                     case "MO": return servo[a] ? 0 : 1;
                     case "OF": return offsets[a];
+                    case "IT": return smoothing[a];
                     // limit inputs are active low: 0 while the switch is tripped
                     case "LF": return limitTripped && a == motion.axis1 ? 0 : 1;
                     case "LR": return 1;

@@ -238,13 +238,33 @@ final class DmcCommands implements Command.Visitor<Void> {
         return null;
     }
 
-    /** {@code AV n}: the program thread waits until the sequence has run n counts along its path (or stopped). */
+    /**
+     * {@code AV n}: the program thread waits until the sequence has run n counts past the last AV's trip
+     * point (past its start for the first: command reference AV, "measured from the start of a
+     * coordinated move sequence or from the last AV command"), or was cut short (a stop, an abort). A
+     * sequence that ran to its end short of the trip point never trips it: the thread waits there (the
+     * reference is silent; docs/virtual-controller.md), and the trace says so once.
+     */
     @Override
     public Void afterVector(Command.AfterVector x) {
         onlyInProgram();
         VectorMotion mo = c.motion;
         long n = x.counts();
-        th.waitingFor = () -> !mo.running() || mo.travelled() >= n;
+        double trip = mo.afterVector(n);
+        boolean[] told = new boolean[1];
+        th.waitingFor = () -> {
+            if (mo.travelled() >= trip) {
+                c.traceEvent(String.format(java.util.Locale.ROOT, "av %d tripped at %.0f of path (trip point %.0f)",
+                        n, Math.floor(mo.travelled()), trip));
+                return true;
+            }
+            if (mo.endedShortOf(trip) && !told[0]) {
+                told[0] = true;
+                c.traceEvent(String.format(java.util.Locale.ROOT, "av %d never reached: trip point %.0f past the path's"
+                        + " end %.0f, the thread waits", n, trip, Math.floor(mo.travelled())));
+            }
+            return mo.cutShort();
+        };
         return null;
     }
 
@@ -447,9 +467,10 @@ final class DmcCommands implements Command.Visitor<Void> {
 
     @Override
     public Void end(Command.End x) {
-        if (th != null) {
-            th.back();
+        if (th == null) {
+            throw refuse(Tc.ONLY_IN_PROGRAM); // COMALL EN: "Not Valid in terminal"
         }
+        th.back();
         return null;
     }
 

@@ -181,13 +181,8 @@ final class Expressions {
             case "ABS" -> Math.abs(x);
             case "INT" -> x < 0 ? Math.ceil(x) : Math.floor(x);
             case "FRAC" -> x - (x < 0 ? Math.ceil(x) : Math.floor(x));
-            case "RND" -> Math.rint(x);
-            case "SQR" -> {
-                if (x < 0) {
-                    throw new GalilException(Tc.RANGE);
-                }
-                yield Math.sqrt(x);
-            }
+            case "RND" -> Math.floor(x + 0.5); // COMALL @RND: 5.5 -> 6, -5.5 -> -5 (halves up)
+            case "SQR" -> Math.sqrt(Math.abs(x)); // COMALL @SQR: "If n < 0, the absolute value is taken first"
             case "SIN" -> Math.sin(Math.toRadians(x));
             case "COS" -> Math.cos(Math.toRadians(x));
             case "IN", "OUT" -> scope.io(fn, (int) x);

@@ -21,7 +21,12 @@ public record Fault(Kind kind, long n) {
         /** The profiler stops taking segments from the buffer after segment N: the motion halts there. */
         STALL,
         /** A limit switch trips half way through segment N: decelerating stop, #LIMSWI if the program has it. */
-        LIMIT_AT;
+        LIMIT_AT,
+        /**
+         * With N = 1, the Ethernet handles echo every byte they receive, as a unit that contradicts the
+         * reference ("The ethernet port will not echo commands", COMALL EO) would: for the probe's tests.
+         */
+        ECHO_ETHERNET;
 
         String spelling() {
             return name().toLowerCase(Locale.ROOT).replace('_', '-');
@@ -44,9 +49,10 @@ public record Fault(Kind kind, long n) {
         } catch (NumberFormatException e) {
             n = -1;
         }
-        if (kind == null || n < (kind == Kind.GARBAGE_AFTER || kind == Kind.DISCONNECT_AFTER || kind == Kind.SLOW ? 0 : 1)) {
+        if (kind == null || n < (kind == Kind.GARBAGE_AFTER || kind == Kind.DISCONNECT_AFTER || kind == Kind.SLOW ? 0 : 1)
+                || kind == Kind.ECHO_ETHERNET && n != 1) {
             throw new IllegalArgumentException("'" + spec + "' is not a fault: give one of garbage-after=BYTES,"
-                    + " reject=COMMAND, disconnect-after=BYTES, slow=MS, stall=SEGMENT, limit-at=SEGMENT"
+                    + " reject=COMMAND, disconnect-after=BYTES, slow=MS, stall=SEGMENT, limit-at=SEGMENT, echo-ethernet=1"
                     + " (commands and segments counted from 1)");
         }
         return new Fault(kind, n);

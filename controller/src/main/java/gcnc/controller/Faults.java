@@ -15,23 +15,28 @@ final class Faults {
     private long reject = -1;
     private long disconnectAfter = -1;
     final long slowMillis;
+    /** An {@code echo-ethernet} fault: the Ethernet handles echo what they receive, against the reference. */
+    final boolean echoEthernet;
     private long sent;
     private long received;
     private long commands;
 
     Faults(List<Fault> faults) {
         long slow = 0;
+        boolean echo = false;
         for (Fault f : faults) {
             switch (f.kind()) {
                 case GARBAGE_AFTER -> garbageAfter = f.n();
                 case REJECT -> reject = f.n();
                 case DISCONNECT_AFTER -> disconnectAfter = f.n();
                 case SLOW -> slow = f.n();
+                case ECHO_ETHERNET -> echo = f.n() != 0;
                 default -> {
                 }
             }
         }
         slowMillis = slow;
+        echoEthernet = echo;
     }
 
     /**

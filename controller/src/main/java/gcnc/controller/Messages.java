@@ -20,7 +20,7 @@ final class Messages {
     /** A number as MG writes it: Galil's default (sign or space, 4 decimals), or {@code {Fn.m}} (n digits, m decimals). */
     private static String formatted(double v, int digits, int decimals) {
         if (digits < 0) {
-            return (v < 0 ? "-" : " ") + String.format(Locale.ROOT, "%." + decimals + "f", Math.abs(v));
+            return Statements.signed(String.format(Locale.ROOT, "%." + decimals + "f", Math.abs(v)), v);
         }
         String body = String.format(Locale.ROOT, "%0" + (digits + (decimals > 0 ? decimals + 1 : 0)) + "." + decimals + "f",
                 Math.abs(v));

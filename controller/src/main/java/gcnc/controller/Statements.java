@@ -30,22 +30,25 @@ final class Statements {
     private static final java.util.Set<String> AXIS_ASSIGNABLE = java.util.Set.of("KP", "KI", "KD", "ER", "OF", "BL",
             "FL", "TL", "AC", "DC", "SP", "IT", "OE");
 
-    /** Accepted and stored nowhere: servo tuning, soft limits, smoothing (not modelled; docs say so). */
+    /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link Controller#smooth}. */
     private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
-            "IT", "OE", "EO", "NO");
+            "OE", "NO");
 
     String execute(String st, ProgramThread th) throws GalilException {
         if (st.isEmpty()) {
             return "";
         }
+        Matcher m = ASSIGNMENT.matcher(st);
+        boolean tool = st.startsWith("TOOL=") && st.length() > 5;
+        if (!(m.matches() && !tool)) {
+            // "Not Valid in terminal" / "Not Valid in program" (tables/galil_terminal.csv)
+            CommandRules.check(st, th);
+        }
         if (st.equals("\u0012\u0016")) {
             return c.model.revision + "\r\n";
         }
         if (st.charAt(0) == '#') {
-            if (th == null) {
-                throw new GalilException(Tc.UNRECOGNIZED);
-            }
-            return "";
+            return ""; // a label line in a program (CommandRules refused it from the host)
         }
         if (word(st, "IF") || st.equals("ELSE") || st.equals("ENDIF")) {
             if (th == null) {
@@ -54,8 +57,6 @@ final class Statements {
             flow.flow(st, th);
             return "";
         }
-        Matcher m = ASSIGNMENT.matcher(st);
-        boolean tool = st.startsWith("TOOL=") && st.length() > 5;
         if (m.matches() && !tool) {
             return assign(m.group(1), m.group(2), m.group(3).strip(), th);
         }
@@ -94,6 +95,8 @@ final class Statements {
                     throw new GalilException(Tc.RANGE);
                 }
                 c.offsets[a] = v;
+            } else if (name.startsWith("IT")) {
+                c.smooth(a, v);
             }
             return "";
         }
@@ -123,14 +126,33 @@ final class Statements {
         return "";
     }
 
-    /** Galil's number format for MG and interrogations: a sign or a space, then 4 decimals. */
+    /**
+     * Galil's number format for MG and interrogations: a sign or a space, then 4 decimals. The sign is
+     * the rounded number's: COMALL's {@code MG @SIN[360]} prints {@code 0.0000}, not {@code -0.0000}.
+     */
     static String number(double v) {
-        return (v < 0 ? "-" : " ") + String.format(Locale.ROOT, "%.4f", Math.abs(v));
+        return signed(String.format(Locale.ROOT, "%.4f", Math.abs(v)), v);
+    }
+
+    /** {@code digits} (the magnitude as printed) after a minus, or after a space when it prints as zero or more. */
+    static String signed(String digits, double v) {
+        boolean zero = digits.chars().noneMatch(ch -> ch >= '1' && ch <= '9');
+        return (v < 0 && !zero ? "-" : " ") + digits;
     }
 
     private String command(String cmd, String args, ProgramThread th) throws GalilException {
         VectorMotion mo = c.motion;
         switch (cmd) {
+            case "IT": {
+                // IT n,n,...: one value per axis in order, an empty place leaves that axis as it is
+                String[] places = args.split(",", -1);
+                for (int i = 0; i < places.length; i++) {
+                    if (!places[i].isBlank()) {
+                        c.smooth(i, eval(places[i].strip()));
+                    }
+                }
+                return "";
+            }
             case "TC": {
                 double n = args.isEmpty() ? 0 : eval(args);
                 Tc e = c.lastError;
@@ -149,7 +171,14 @@ final class Statements {
                 return "";
             }
             case "CF":
-                return "";
+                return configureUnsolicited(args, th);
+            case "EO":
+                return echo(args, th);
+            case "WH":
+                if (th != null) {
+                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL WH: Not Valid in program
+                }
+                return (c.port == 'S' ? "SERIAL" : "IH" + c.port) + "\r\n";
             case "XQ":
                 return flow.execute(args);
             case "HX":
@@ -168,9 +197,8 @@ final class Statements {
                 th.stack.clear();
                 return "";
             case "RE":
-                if (th != null) {
-                    th.back();
-                }
+                onlyInProgram(th); // COMALL RE: "Not Valid in terminal"
+                th.back();
                 return "";
             case "JP":
             case "JS":
@@ -258,6 +286,9 @@ final class Statements {
             case "DM":
                 return dimension(args);
             case "RS":
+                if (th != null) {
+                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL RS: "Not Valid in program"
+                }
                 return reset();
             default:
                 if (NO_EFFECT.contains(cmd)) {
@@ -265,6 +296,44 @@ final class Statements {
                 }
                 throw new GalilException(Tc.UNRECOGNIZED);
         }
+    }
+
+    /**
+     * CF: where unsolicited messages go (COMALL CF): {@code CF S} the main serial port (the power-up
+     * value), {@code CF A}..{@code CF H} an Ethernet handle, {@code CF I} the port the command came in on
+     * ("Not valid in program"). The reference offers {@code T} for an aux serial port the virtual
+     * controller does not have.
+     */
+    private String configureUnsolicited(String args, ProgramThread th) throws GalilException {
+        String a = args.strip();
+        if (a.equals("I")) {
+            if (th != null) {
+                throw new GalilException(Tc.NOT_IN_PROGRAM);
+            }
+            c.cf = c.port;
+        } else if (a.equals("S") || a.length() == 1 && a.charAt(0) >= 'A' && a.charAt(0) <= 'H') {
+            c.cf = a.charAt(0);
+        } else {
+            throw new GalilException(Tc.OPERAND);
+        }
+        return "";
+    }
+
+    /**
+     * EO: the serial port's echo (COMALL EO: "defaulted to EO1", "accepted over the serial port only";
+     * "The ethernet port will not echo commands"). From an Ethernet handle it is refused: the reference
+     * does not say with which code, TC 1 is assumed (docs/virtual-controller.md).
+     */
+    private String echo(String args, ProgramThread th) throws GalilException {
+        if (th == null && c.port != 'S') {
+            throw new GalilException(Tc.UNRECOGNIZED);
+        }
+        double n = eval(args.isEmpty() ? "1" : args);
+        if (n != 0 && n != 1) {
+            throw new GalilException(Tc.RANGE);
+        }
+        c.echo = n == 1;
+        return "";
     }
 
     static void onlyInProgram(ProgramThread th) throws GalilException {
@@ -358,6 +427,9 @@ final class Statements {
         java.util.Arrays.fill(c.servo, false);
         c.lastError = Tc.NONE;
         c.cw = 2;
+        c.cf = 'S';
+        c.echo = c.model.galil.serialEcho();
+        java.util.Arrays.fill(c.smoothing, 1);
         int auto = c.program.label("AUTO");
         if (auto >= 0) {
             c.threads[0].start(auto);

@@ -12,11 +12,14 @@ import java.util.Locale;
  * <pre>
  * SEQUENCE SEGMENT VP|CR END1 END2 FREE TIME
  * </pre>
- * the sequence number (from 1, one per BGS), the segment's number in it ({@code _CSS}), its kind, the
+ * the sequence number (from 1, one per BGS), the segment's number in it (from 1; {@code _CSS} reads one
+ * less while it executes: the segment counter starts at zero), its kind, the
  * absolute end position of the two plane axes in whole counts (first VM axis first), the free buffer slots
  * when it ended ({@code _LMS}) and the controller time in seconds. Lines that start with {@code #} are
  * events, not segments: the header, a sequence's end and why ({@code end}, {@code underrun}, {@code stop},
- * {@code abort}), a limit trip, a stall. Each line is flushed as it is written.
+ * {@code abort}), a limit trip, a stall, an {@code AV}'s trip ({@code # av n tripped at P of path (trip point
+ * T)}: P the path run when the thread went on, T the sum of the sequence's AV distances) or an AV the
+ * sequence ended short of. Each line is flushed as it is written.
  */
 final class Trace {
     private final Writer out;
@@ -29,8 +32,8 @@ final class Trace {
         line("# gcnc virtual controller " + revision + ": sequence segment kind end1 end2 free time");
     }
 
-    void segment(int sequence, int css, VectorSegment s, int free, double time) {
-        line(String.format(Locale.ROOT, "%d %d %s %d %d %d %.4f", sequence, css, s.arc() ? "CR" : "VP",
+    void segment(int sequence, int number, VectorSegment s, int free, double time) {
+        line(String.format(Locale.ROOT, "%d %d %s %d %d %d %.4f", sequence, number, s.arc() ? "CR" : "VP",
                 (long) Math.rint(s.end1()), (long) Math.rint(s.end2()), free, time));
     }
 

@@ -25,7 +25,7 @@ import java.util.Iterator;
 final class VectorMotion {
     /** What becomes of a segment and a sequence; the trace and the program threads listen. */
     interface Events {
-        void segmentDone(int sequence, int css, VectorSegment s, int free, double time);
+        void segmentDone(int sequence, int number, VectorSegment s, int free, double time);
 
         void sequenceEnded(int sequence, String why, double p1, double p2, double time);
 
@@ -62,6 +62,14 @@ final class VectorMotion {
     private boolean running;
     private int given;
     private int css;
+    /**
+     * The trip point of the last {@code AV} of the running sequence, counts of path from its start (0
+     * at BGS): AV measures "from the start of a coordinated move sequence or from the last AV command"
+     * (command reference AV), so the next one trips n counts past this.
+     */
+    private double avFrom;
+    /** Whether the last sequence ran to its end (VE reached), not stopped, aborted or run dry. */
+    private boolean ranToEnd;
     private double pathTotal;
     private double origin1;
     private double origin2;
@@ -102,7 +110,17 @@ final class VectorMotion {
         return slots - waiting.size() - (ve ? 1 : 0);
     }
 
-    /** {@code _CSS}: the number of the segment executing (the last one after the sequence ended). */
+    /**
+     * {@code _CSS}: the segment counter of the sequence, from zero: the segments it has finished, so
+     * that it reads 0 during the first segment and 1 during the second (the DMC-40x0 User Manual's
+     * example, p.86: "during the first segment ... _CS ... will be zero ... at the second segment ...
+     * _CS equals 1"; the same in the DMC-2x00 and DMC-13X8 manuals). After the sequence ran to its end
+     * it reads the number of its segments (every one finished); after a stop, the number of the
+     * segment it stopped in, counted from zero. What it reads after the end the manuals do not say:
+     * this is the reading of a counter of the segments processed (EPICS's {@code segprocessed}), and a
+     * sender that clamps to the sequence's last segment reads either answer the same
+     * (docs/virtual-controller.md).
+     */
     int css() {
         return css;
     }
@@ -235,6 +253,32 @@ final class VectorMotion {
         v = 0;
         current = null;
         doneLength = 0;
+        avFrom = 0;
+        ranToEnd = false;
+    }
+
+    /**
+     * {@code AV n}: the trip point it waits for, counts of path from the sequence's start: the last AV's
+     * trip point (the start for the first) plus n.
+     */
+    double afterVector(long n) {
+        avFrom += n;
+        return avFrom;
+    }
+
+    /**
+     * Whether the last sequence ran to its end short of {@code trip}: an AV that will never trip. The
+     * command reference does not say what the controller does then (AD and AR clear when "the motion
+     * profiling on the axis is complete"; AV's entry has no such condition); the virtual controller
+     * takes the reading a wrong program cannot pass: the thread waits there for ever.
+     */
+    boolean endedShortOf(double trip) {
+        return !running && ranToEnd && doneLength < trip;
+    }
+
+    /** Whether an AV thread waits in vain and the sequence is over without reaching its end (a stop, an abort). */
+    boolean cutShort() {
+        return !running && !ranToEnd;
     }
 
     /** The path run so far in the sequence, counts: for {@code AV} (after vector distance). */
@@ -345,7 +389,7 @@ final class VectorMotion {
         current = new VectorSegment(seg.number(), seg.arc(), seg.from1(), seg.from2(), seg.end1(), seg.end2(),
                 seg.centre1(), seg.centre2(), seg.radius(), seg.startRad(), seg.sweepRad(), seg.length(), seg.o(),
                 seg.p(), executed);
-        css = seg.number();
+        css = seg.number() - 1; // from zero: the segments finished before this one
         s = 0;
         dirty = true;
         return true;
@@ -377,12 +421,16 @@ final class VectorMotion {
             v = 0;
         }
         if (waiting.isEmpty()) {
+            if (stopping == 0) {
+                css = done.number(); // every segment finished: the counter reads how many
+            }
             end(stopping != 0 ? stopping : 101, stopping != 0 ? "stop" : ve ? "end" : "underrun", time);
         }
     }
 
     private void end(int code, String why, double time) {
         running = false;
+        ranToEnd = why.equals("end");
         stopping = 0;
         stalled = false;
         stopCode = code;

@@ -1,11 +1,11 @@
 package gcnc.controller;
 
 /**
- * One VP or CR in the vector buffer: its number in its sequence ({@code _CSS}), where it starts and ends
- * (absolute positions of the two plane axes, counts), an arc's centre, radius, start angle and signed
- * sweep (radians), its length, its {@code <o} and {@code >p} speeds (NaN when not given), and
- * ({@code global}) its number among all segments executed since power-up, 0 while it waits: what the
- * stall and limit faults count.
+ * One VP or CR in the vector buffer: its number in its sequence (from 1; {@code _CSS} reads one less
+ * while it executes), where it starts and ends (absolute positions of the two plane axes, counts), an
+ * arc's centre, radius, start angle and signed sweep (radians), its length, its {@code <o} and
+ * {@code >p} speeds (NaN when not given), and ({@code global}) its number among all segments executed
+ * since power-up, 0 while it waits: what the stall and limit faults count.
  */
 record VectorSegment(int number, boolean arc, double from1, double from2, double end1, double end2,
                      double centre1, double centre2, double radius, double startRad, double sweepRad, double length,

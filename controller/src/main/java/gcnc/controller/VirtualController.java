@@ -101,7 +101,12 @@ public final class VirtualController implements Closeable {
             try {
                 Socket s = server.accept();
                 s.setTcpNoDelay(true);
-                Connection c = new Connection(controller, s.getInputStream(), s.getOutputStream(), faults, s);
+                char handle = controller.openHandle();
+                if (handle == 0) {
+                    s.close(); // all eight Ethernet handles are taken (COMALL TH lists IHA-IHH)
+                    continue;
+                }
+                Connection c = new Connection(controller, s.getInputStream(), s.getOutputStream(), faults, s, handle);
                 Thread t = new Thread(c::serve, "gcnc-controller-tcp");
                 t.setDaemon(true);
                 t.start();
@@ -126,7 +131,7 @@ public final class VirtualController implements Closeable {
                     out.close();
                 };
                 ptyLink = link;
-                if (new Connection(controller, in, out, faults, link).serve()) {
+                if (new Connection(controller, in, out, faults, link, 'S').serve()) {
                     // a serial line whose cable is pulled: the host hears nothing more, ever; the motion goes on
                     return;
                 }

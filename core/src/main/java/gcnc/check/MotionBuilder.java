@@ -222,7 +222,7 @@ final class MotionBuilder {
         }
         double path = Math.hypot(dx, dz);
         int spindle = d.spindleBefore != BlockDraft.NONE ? d.spindleBefore : d.prior.spindle();
-        Feed feed = new Feed(lead, zSpeed * path / dz);
+        Feed feed = new Feed(lead, zSpeed * path / dz, true); // the lead is per revolution
         if (d.pullOut == null) {
             return new Motion.Thread(from, end, leadCounts, rpm, spindle == 4, feed, null, d.startAngle);
         }

@@ -481,10 +481,15 @@ public enum Code {
     E333_SIM_SPEED_CHANGE_TOO_SHORT(333),
 
     // 334-339: the planner's work checked by the replay (docs/galil.md, "Continuous contouring").
-    /** An AV trip point past the end of the sequence it waits on: the controller never reaches it and the program waits there. */
+    /**
+     * An AV trip point (the sum of the sequence's AV distances: AV is relative) past the end of the
+     * sequence it waits on: the controller never reaches it; what it does then its reference does not say.
+     */
     E334_SIM_TRIP_PAST_END(334),
     /** An output or speed set on the way (after AV) at a point of the path that is not where its block stands in the program. */
     E335_SIM_SWITCHED_ELSEWHERE(335),
+    /** IT below 1 (smoothing): the replay runs vector motion unfiltered, as IT 1; not simulated yet. */
+    E336_SIM_SMOOTHING(336),
 
     // 400-499: tables and machine profiles.
     /** A table file or machine profile is malformed; the message says what and where. */
@@ -527,6 +532,23 @@ public enum Code {
     E433_TURRET_STATIONS(433),
     /** Profile: homing.check is neither position, IN n, nor none. */
     E434_HOMING_CHECK(434),
+    /** Profile: an input (IN n, turret.in_position) that is no digital input @IN reads on the model (command reference @IN). */
+    E436_INPUT_RANGE(436),
+    /** Profile: spindle.output = AO n with n outside 1,000-8,999, the only I/O numbers AO takes (command reference AO). */
+    E437_ANALOG_OUTPUT_RANGE(437),
+    // 450-459: wear offsets in a profile or its offsets file (docs/profiles.md, "Wear offsets").
+    /** Offsets file: a key other than wear.N (N = 1 to 99). */
+    E450_OFFSETS_FILE_KEY(450),
+    /** Profile or offsets file: wear.N with a third value, the nose radius's wear, which gcnc does not support yet. */
+    E451_WEAR_NOSE_NOT_SUPPORTED_YET(451),
+    /** Profile or offsets file: wear.N for a tool offset the profile does not have. */
+    E452_WEAR_NO_TOOL_OFFSET(452),
+    /** Profile or offsets file: a wear larger in size than wear.max_total. */
+    E453_WEAR_BEYOND_TOTAL(453),
+    /** Profile: wear.max_step larger than wear.max_total. */
+    E454_WEAR_STEP_ABOVE_TOTAL(454),
+    /** The offsets file named (--offsets, offsets.file) does not exist. */
+    E455_OFFSETS_FILE_MISSING(455),
     /** An input file could not be read or an output file written. */
     E500_IO(500),
     /** The output named (-o, --svg) is the program being read, under this or another name. */
@@ -546,6 +568,12 @@ public enum Code {
     E506_OUT_OF_MEMORY(506),
     /** A side file gcnc writes unasked (the source map, OUT.map) is a symbolic link: gcnc does not write through it. */
     E510_SIDE_FILE_IS_LINK(510),
+    /** Simulation: the blank's diameter (a stock header, NO STOCK, the profile's) is more than twice the X travel's reach. */
+    E511_BLANK_TOO_WIDE(511),
+    /** Simulation: the blank sticks out of the jaws further than the Z travel is long. */
+    E512_BLANK_STICKS_OUT_TOO_FAR(512),
+    /** Simulation: the blank is longer than gcnc models (ten times the Z travel's length). */
+    E513_BLANK_TOO_LONG(513),
 
     // 600-619: the parser's leniency and G01 chamfering and corner rounding (issue 17).
     /** Parser: a space inside a number (X10 5 reads as X105; not warned in a T word, T1 01). */
@@ -656,6 +684,23 @@ public enum Code {
      * the program's Z0 is not the face it was written for.
      */
     E663_WORK_ZERO_PINNED(663),
+    // 670-679: waivers, (GCNC ALLOW E642: reason) (issue 31; gcnc.diag.Waivers, docs/language.md "Waivers")
+    /** Parser (warning): a waiver without a reason after its ':': it waives nothing until it says why. */
+    E670_WAIVER_NO_REASON(670),
+    /** Parser (warning): a waiver names a code gcnc does not have: it waives nothing. */
+    E671_WAIVER_UNKNOWN_CODE(671),
+    /** Warning: a waiver on a block where its code is not found: it waives nothing. */
+    E672_WAIVER_UNUSED(672),
+    /** Warning: a FILE waiver whose code is not found in the rest of the file: it waives nothing. */
+    E673_WAIVER_FILE_UNUSED(673),
+    /** Warning: a waiver names a simulator error (a collision, a limit, the replay): it cannot be waived. */
+    E674_WAIVER_NOT_ALLOWED(674),
+    /** Compile error: an error is waived, but the block it was found in was never translated. */
+    E675_WAIVED_ERROR_NOT_TRANSLATED(675),
+    /** Parser (warning): a comment that starts GCNC ALLOW but is not a waiver's form. */
+    E676_WAIVER_FORM(676),
+    /** Warning: a waiver names one of the waivers' own codes (E670-E679), which cannot be waived. */
+    E677_WAIVER_OF_WAIVER(677),
     /** Note: the finding before it was found this many times at its place (a loop's passes); kept once. */
     E680_FOLDED(680),
     /** Note: the cap on warnings and notes was reached; later ones are not kept. */
@@ -694,6 +739,11 @@ public enum Code {
      * at it): not read by gcnc either, said once as a note at its first character.
      */
     E705_AFTER_TAPE_END(705),
+    /**
+     * Program flow: the run went through more blocks than its budget (ProgramFlow.budget: a constant
+     * and so many per line of the program), inside a loop still running: taken for endless.
+     */
+    E710_MACRO_BUDGET(710),
 
     // --- drilling and tapping as the Fusion fanuc post writes them (issue 17, drill): E720-E729
     /**
@@ -732,7 +782,47 @@ public enum Code {
     /** Sender (warning): the operator stopped the run. */
     E828_STOPPED_BY_OPERATOR(828),
     /** Sender (warning): motors are off on the program's axes; its SH turns them on. */
-    E829_MOTORS_OFF(829);
+    E829_MOTORS_OFF(829),
+    /** Sender: the profile's Galil model is a bus card (ISA/PCI) that a serial or TCP sender cannot reach. */
+    E830_BUS_ONLY_MODEL(830),
+    /** Sender: the vector buffer is not empty after CS S (_LMS below the model's whole buffer). */
+    E831_BUFFER_NOT_EMPTY(831),
+    /** Sender: the saved probe report says the controller contradicts a reference fact the run relies on. */
+    E832_PROBE_CONTRADICTS(832),
+    /** Sender and probe: a probe report that cannot be read or written. */
+    E833_PROBE_REPORT(833),
+    /** Probe: the motion test was asked for without the operator's typed confirmation. */
+    E834_PROBE_NOT_CONFIRMED(834),
+    /** Probe: the motion test cannot start (a program runs, a sequence moves, a limit is active). */
+    E835_PROBE_NOT_READY(835),
+    /** Probe (warning): the controller answered against a reference fact (a row of the report). */
+    E836_PROBE_CONTRADICTION(836),
+    /** Profile: stop.cycle_start is not IN n. */
+    E850_CYCLE_START_INPUT(850),
+    /** Simulate (note): the DMC is a stream form's resident program: its motion is in the stream beside it. */
+    E864_RESIDENT_WITHOUT_STREAM(864),
+    /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */
+    E865_PORT_NOT_A_DEVICE(865),
+
+    // --- gcnc offsets wear, the test cut (issue 34; docs/command-line.md): E870-E879
+    /** Test cut: the offset named is not T01, T0101 or a number 1 to 99. */
+    E870_WEAR_OFFSET_NAME(870),
+    /** Test cut: --measured and --programmed are not an axis letter and a number each, on the same axis. */
+    E871_WEAR_MEASUREMENT(871),
+    /** Test cut: the change is larger than wear.max_step (a slip of the keyboard). */
+    E872_WEAR_STEP(872),
+    /** Test cut: the wear after the change would be larger than wear.max_total. */
+    E873_WEAR_TOTAL(873),
+    /** Test cut: the program re-verified with the new wear has an error it did not have. */
+    E874_WEAR_NEW_FINDING(874),
+    /** Test cut: the program has errors before the wear changes, so it cannot be re-verified. */
+    E875_WEAR_PROGRAM_NOT_CLEAN(875),
+    /** Test cut: a shipped profile and no offsets file named: nowhere to keep the wear. */
+    E876_WEAR_NOWHERE_TO_SAVE(876),
+    /** Test cut: the program does not use the offset named (its DMC is the same with the new wear). */
+    E877_WEAR_OFFSET_UNUSED(877),
+    /** Sender: the vector buffer ran dry before VE (the host did not keep a fed sequence fed): the axes stopped mid-sequence. */
+    E890_BUFFER_STARVED(890);
 
     private final int number;
 
@@ -747,6 +837,16 @@ public enum Code {
     /** The form users see and search for: {@code E037}. */
     public String id() {
         return String.format("E%03d", number);
+    }
+
+    /** The code with number {@code n}, if gcnc has one. */
+    public static java.util.Optional<Code> find(int n) {
+        for (Code c : values()) {
+            if (c.number == n) {
+                return java.util.Optional.of(c);
+            }
+        }
+        return java.util.Optional.empty();
     }
 
     public static Code byNumber(int n) {

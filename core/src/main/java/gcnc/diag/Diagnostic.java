@@ -6,13 +6,30 @@ import java.util.List;
  * One finding: a stable code, where it is, and the values its message template needs.
  * The text is never built here; {@link Messages} renders it in the user's language.
  * {@code origin} says which file and which subprogram calls the span belongs to when that is not
- * the program file as written ({@link Origin#PROGRAM}).
+ * the program file as written ({@link Origin#PROGRAM}). {@code waiver} is the reason of the shop's
+ * waiver that accepts it ({@code (GCNC ALLOW E642: reason)}, {@link Waivers}), or null: a waived
+ * finding is still reported, as waived, and counts as neither an error nor a warning.
  */
-public record Diagnostic(Code code, Severity severity, Span span, List<String> args, Origin origin)
+public record Diagnostic(Code code, Severity severity, Span span, List<String> args, Origin origin, String waiver)
         implements Comparable<Diagnostic> {
     public Diagnostic {
         args = List.copyOf(args);
         java.util.Objects.requireNonNull(origin);
+    }
+
+    /** A finding no waiver accepts. */
+    public Diagnostic(Code code, Severity severity, Span span, List<String> args, Origin origin) {
+        this(code, severity, span, args, origin, null);
+    }
+
+    /** Whether a waiver accepts it (then {@link #waiver} is its reason). */
+    public boolean waived() {
+        return waiver != null;
+    }
+
+    /** The same finding accepted by a waiver that gives {@code reason}. */
+    public Diagnostic waivedFor(String reason) {
+        return new Diagnostic(code, severity, span, args, origin, java.util.Objects.requireNonNull(reason));
     }
 
     /** A finding not yet placed: the collection it is reported to says where it is ({@link Diagnostics#report}). */
@@ -30,7 +47,7 @@ public record Diagnostic(Code code, Severity severity, Span span, List<String> a
 
     /** The same finding placed in {@code o}. */
     public Diagnostic in(Origin o) {
-        return new Diagnostic(code, severity, span, args, o);
+        return new Diagnostic(code, severity, span, args, o, waiver);
     }
 
     private static List<String> strings(Object... args) {

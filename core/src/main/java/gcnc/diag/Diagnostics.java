@@ -73,6 +73,11 @@ public final class Diagnostics {
     private int others;
     private boolean errorCapReached;
     private boolean otherCapReached;
+    /** The program's waivers, as the parser reads them ({@link #waive}); null until the first. */
+    private Waivers waivers;
+    /** Findings a waiver accepts (kept: they are reported as waived), and how many of them were errors. */
+    private int waived;
+    private int waivedErrors;
     /** Shared with {@link #sibling()}s: where the blocks being checked now come from. */
     private final Place place;
 
@@ -326,6 +331,80 @@ public final class Diagnostics {
         last = last >= 0 && last < moved.length ? moved[last] : -1;
     }
 
+    /** The program's waivers: the parser adds each it reads ({@code (GCNC ALLOW E642: reason)}). */
+    public Waivers waivers() {
+        if (waivers == null) {
+            waivers = new Waivers();
+        }
+        return waivers;
+    }
+
+    /**
+     * Applies the program's waivers, once, when the run's findings are final (gcnc.Session): a
+     * finding a waiver covers is kept as waived and no longer counts as an error or a warning; the
+     * simulator's errors are never waived. Then each waiver that could not waive is a warning at
+     * it: one that names a code no waiver may take (E674, E677), or one whose code is not found
+     * where it applies (E672, E673; in a run that did not translate ({@code translated} false), a
+     * waiver of a code only translating finds is not judged). A waived error in a run that
+     * translates is an error of its own, E675: gcnc never translated the block it was found in.
+     */
+    public void waive(boolean translated) {
+        if (waivers == null || waivers.isEmpty()) {
+            return;
+        }
+        List<Waivers.Waiver> list = waivers.all();
+        boolean[] used = new boolean[list.size()];
+        Diagnostic firstError = null;
+        for (int k = 0; k < all.size(); k++) {
+            Diagnostic d = all.get(k);
+            if (d.waived() || Waivers.unwaivable(d.code())) {
+                continue;
+            }
+            for (int w = 0; w < list.size(); w++) {
+                if (list.get(w).covers(d)) {
+                    used[w] = true;
+                    all.set(k, d.waivedFor(list.get(w).reason()));
+                    waived++;
+                    if (d.severity() == Severity.ERROR) {
+                        errors--;
+                        keptErrors--;
+                        waivedErrors++;
+                        firstError = firstError == null ? d : firstError;
+                    } else {
+                        others--;
+                    }
+                    break;
+                }
+            }
+        }
+        for (int w = 0; w < list.size(); w++) {
+            Waivers.Waiver v = list.get(w);
+            Origin where = v.file() == null ? Origin.PROGRAM : Origin.file(v.file());
+            Code code = null;
+            if (Waivers.waiverCode(v.code())) {
+                code = Code.E677_WAIVER_OF_WAIVER;
+            } else if (Waivers.unwaivable(v.code())) {
+                code = Code.E674_WAIVER_NOT_ALLOWED;
+            } else if (!used[w] && (translated || !Waivers.compileOnly(v.code()))) {
+                code = v.wholeFile() ? Code.E673_WAIVER_FILE_UNUSED : Code.E672_WAIVER_UNUSED;
+            }
+            if (code != null) {
+                List<String> args = code == Code.E672_WAIVER_UNUSED
+                        ? List.of(v.code().id(), Integer.toString(v.line())) : List.of(v.code().id());
+                add(new Diagnostic(code, Severity.WARNING, v.at(), args, where));
+            }
+        }
+        if (translated && firstError != null && errors == 0) { // with other errors nothing is written anyway
+            add(new Diagnostic(Code.E675_WAIVED_ERROR_NOT_TRANSLATED, Severity.ERROR, firstError.span(),
+                    List.of(firstError.code().id(), Integer.toString(waivedErrors)), firstError.origin().withoutCalls()));
+        }
+    }
+
+    /** How many findings a waiver accepts (reported as waived, counted neither as errors nor as warnings). */
+    public int waivedCount() {
+        return waived;
+    }
+
     /** Forgets every finding (a scratch collection reused block after block). */
     public void clear() {
         if (all.isEmpty() && errors == 0) {
@@ -344,6 +423,8 @@ public final class Diagnostics {
         others = 0;
         errorCapReached = false;
         otherCapReached = false;
+        waived = 0;
+        waivedErrors = 0;
     }
 
     public boolean hasErrors() {

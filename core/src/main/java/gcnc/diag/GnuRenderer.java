@@ -49,11 +49,18 @@ public final class GnuRenderer {
         }
     };
 
+    /**
+     * A waived finding is a note that says so and gives the waiver's reason before its message:
+     * {@code part.nc:12:7: note[E642] waived: the shop's G70 carries U: G70: U0.5 does nothing in a G70: ...}.
+     */
     public String render(String path, Diagnostic d, Paint paint) {
         String file = d.origin().file() != null ? d.origin().file() : path;
+        String message = messages.render(d.code(), d.args());
+        Severity shown = d.waived() ? Severity.NOTE : d.severity();
+        String text = d.waived() ? messages.arguments(List.of(Phrase.WAIVED.with(d.waiver(), message))).get(0) : message;
         return paint.place(file + ":" + d.span().line() + ":" + d.span().column() + ":") + " "
-                + paint.severity(d.severity(), d.severity().label())
-                + paint.text("[" + d.code().id() + "]: " + messages.render(d.code(), d.args()));
+                + paint.severity(shown, shown.label())
+                + paint.text("[" + d.code().id() + "]" + (d.waived() ? " " : ": ") + text);
     }
 
     /**
@@ -74,7 +81,7 @@ public final class GnuRenderer {
 
         /** Takes note of a finding as it is reported. */
         public void saw(Diagnostic d) {
-            if (d.severity() == Severity.NOTE) {
+            if (d.severity() == Severity.NOTE || d.waived()) {
                 return;
             }
             if (chosen == null || chosen.severity() != Severity.ERROR && d.severity() == Severity.ERROR) {

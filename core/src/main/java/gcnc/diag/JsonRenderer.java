@@ -7,7 +7,8 @@ import java.util.List;
 
 /**
  * gcnc's own JSON report: one document for a run, every finding with its file, line, column,
- * severity, code, rendered message and the arguments of the message as it shows them. The schema is
+ * severity, code, rendered message and the arguments of the message as it shows them (and, for a
+ * finding a shop's waiver accepts, {@code "waived"}: the waiver's reason). The schema is
  * documented in docs/command-line.md ("JSON report") and versioned by {@link #VERSION}: a field
  * is only ever added, and removing or changing one raises the version.
  */
@@ -40,6 +41,7 @@ public final class JsonRenderer {
         json.name("tool").beginObject().name("name").value("gcnc").name("version").value(toolVersion).endObject();
         json.name("errors").value(count(findings, Severity.ERROR));
         json.name("warnings").value(count(findings, Severity.WARNING));
+        json.name("waived").value(findings.stream().filter(f -> f.diagnostic().waived()).count());
         json.name("diagnostics").beginArray();
         for (Finding f : findings) {
             Diagnostic d = f.diagnostic();
@@ -53,6 +55,9 @@ public final class JsonRenderer {
             json.name("severity").value(d.severity().label());
             json.name("code").value(d.code().id());
             json.name("message").value(f.message());
+            if (d.waived()) {
+                json.name("waived").value(d.waiver());
+            }
             json.name("arguments").beginArray();
             for (String a : f.arguments()) {
                 json.value(a);
@@ -68,7 +73,8 @@ public final class JsonRenderer {
         out.flush();
     }
 
+    /** Findings of severity {@code s} that no waiver accepts (a waived one is counted apart, "waived"). */
     static long count(List<Finding> findings, Severity s) {
-        return findings.stream().filter(f -> f.diagnostic().severity() == s).count();
+        return findings.stream().filter(f -> f.diagnostic().severity() == s && !f.diagnostic().waived()).count();
     }
 }

@@ -146,6 +146,9 @@ public enum Phrase {
     UNKNOWN_KEY_WORK,
     UNKNOWN_KEY_TOOL,
     UNKNOWN_KEY_NOSE,
+    UNKNOWN_KEY_WEAR,
+    /** wear.0: wear offsets are numbered from 1 ({0}: the key). */
+    WEAR_FROM_ONE,
     UNKNOWN_KEY_M,
     UNKNOWN_KEY_SIM_TOOL,
     UNKNOWN_KEY_DOCS,
@@ -161,6 +164,8 @@ public enum Phrase {
     POWER_UP,
     LENGTH_MM,
     CALL_DEPTH,
+    /** A control's stop.off names an M code that is neither a spindle stop nor an output of its M table ({0}). */
+    STOP_OFF,
     UNKNOWN_FUNCTION,
     MOMENT,
     OUTPUT_YES_NO,
@@ -196,12 +201,16 @@ public enum Phrase {
     GALIL_MODEL_TWICE,
     /** galil_models.csv: a whole number outside what the column can hold ({0} column, {1} value, {2}..{3}). */
     GALIL_MODEL_RANGE,
+    /** galil_models.csv: a cell outside its column's words ({0} column, {1} value, {2} the words it takes). */
+    GALIL_MODEL_CHOICE,
     /** galil_models.csv: a firmware-1.2a figure smaller than the older one ({0} column, {1} the older column). */
     GALIL_FIRMWARE_SMALLER,
     /** The last line of a GCC-style report (as rustc's): where to read more about an error ({0}: its code). */
     EXPLAIN_HINT_ERROR,
     /** The same for a run whose findings are warnings only ({0}: the first warning's code). */
-    EXPLAIN_HINT_WARNING;
+    EXPLAIN_HINT_WARNING,
+    /** A waived finding's GCC-style text ({0}: the waiver's reason, {1}: the finding's message). */
+    WAIVED;
 
     private static final char MARK = '\u001E';
     private static final char SEPARATOR = '\u001F';

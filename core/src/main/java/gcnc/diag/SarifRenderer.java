@@ -12,7 +12,9 @@ import java.util.Map;
 /**
  * A run's findings as SARIF 2.1.0, the format GitHub code scanning and GitLab read to annotate a
  * pull request: one run, gcnc as {@code tool.driver} with one rule per diagnostic code, and one
- * result per finding with its rule, level, message and place (file and 1-based line and column).
+ * result per finding with its rule, level, message and place (file and 1-based line and column);
+ * a finding a shop's waiver accepts keeps its level and has a {@code suppressions} entry of kind
+ * {@code inSource} with the waiver's reason as its justification.
  * Columns count UTF-16 code units, as gcnc's do (SARIF's default column kind).
  */
 public final class SarifRenderer {
@@ -115,6 +117,14 @@ public final class SarifRenderer {
         }
         json.endObject();
         json.endObject().endObject().endArray();
+        if (d.waived()) {
+            // a shop's waiver in the program's own text: SARIF 2.1.0 §3.35, a suppression of kind inSource
+            json.name("suppressions").beginArray().beginObject()
+                    .name("kind").value("inSource")
+                    .name("status").value("accepted")
+                    .name("justification").value(d.waiver())
+                    .endObject().endArray();
+        }
         json.endObject();
     }
 

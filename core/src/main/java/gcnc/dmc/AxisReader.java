@@ -186,7 +186,8 @@ final class AxisReader {
 
     static Command analogOut(String args, String text, Faults faults) {
         int comma = args.indexOf(',');
-        int n = comma < 0 ? -1 : integer(args.substring(0, comma).strip(), 0, 99);
+        // a Modbus device's analog output, 1,000 to 8,999: AO's only range (command reference AO)
+        int n = comma < 0 ? -1 : integer(args.substring(0, comma).strip(), 1000, 8999);
         Fixed v = comma < 0 ? null : Fixed.parse(args, comma + 1, args.length(), false);
         if (n < 0 || v == null || Math.abs(v.value()) > 9.9998) {
             return bad(faults, "AO", text);

@@ -181,8 +181,12 @@ public sealed interface Command {
     }
 
     /**
-     * {@code AV n}: wait until the sequence has run n counts along its path (from its start; a
-     * trippoint of a program thread, the motion goes on): what follows happens there.
+     * {@code AV n}: wait until the sequence has run n more counts along its path, measured from its
+     * start for its first AV and from the last AV's trip point after that (Galil's command reference
+     * AV: "from the start of a coordinated move sequence or from the last AV command"; DMC-40x0 User
+     * Manual p.86, "After Relative Vector distance"); a trippoint of a program thread, the motion goes
+     * on: what follows happens there. The trip point from the sequence's start is the sum of the
+     * sequence's AVs so far, what {@code _AVS} reads there.
      */
     record AfterVector(long counts) implements Command {
         public <R> R accept(Visitor<R> v) {
@@ -330,13 +334,17 @@ public sealed interface Command {
         }
     }
 
-    /** The servo settings gcnc writes for one channel: the gains and the position error limit. */
-    enum Setting { KP, KI, KD, ER }
+    /**
+     * The settings gcnc writes for one channel: the gains and the position error limit (the spindle's), and
+     * IT, the smoothing filter, at 1 ("1 means no filtering", command reference IT) on the plane axes.
+     */
+    enum Setting { KP, KI, KD, ER, IT }
 
     /**
-     * {@code KP ,,0}: a servo setting of the channel at {@code channel} (0 = A/X). gcnc writes
+     * {@code KP ,,0}: a setting of the channel at {@code channel} (0 = A/X). gcnc writes
      * {@code KP/KI/KD 0} and {@code ER -1} on the spindle's channel only, so that {@code OF} there is
-     * an open-loop voltage and the turning spindle is no position error.
+     * an open-loop voltage and the turning spindle is no position error, and {@code IT 1} on each plane
+     * axis in the header, so that no smoothing burned into the unit filters the vector motion.
      */
     record AxisSetting(Setting setting, int channel, Fixed value) implements Command {
         public <R> R accept(Visitor<R> v) {
@@ -423,6 +431,17 @@ public sealed interface Command {
 
         /** {@code @ABS[_TPX-340000]>10}: the axis stands further than the tolerance from a count. */
         record PositionOff(char axis, long counts, long tolerance) implements Condition {
+        }
+
+        /** {@code gstop=1}: a DMC variable holds a whole number (the host's continue clears gcnc's {@code gstop}). */
+        record VariableIs(String name, long value) implements Condition {
+        }
+
+        /**
+         * {@code _LMS<n}: fewer than n slots of the vector buffer are free (COMALL LM: "_LMm contains
+         * the number of spaces available in the sequence buffer"), the wait for room of a fed sequence.
+         */
+        record BufferBelow(int slots) implements Condition {
         }
     }
 

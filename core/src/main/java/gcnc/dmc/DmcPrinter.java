@@ -243,6 +243,12 @@ public final class DmcPrinter {
         if (w instanceof Condition.Before b) {
             return "TIME<" + b.deadline();
         }
+        if (w instanceof Condition.VariableIs v) {
+            return v.name() + "=" + v.value();
+        }
+        if (w instanceof Condition.BufferBelow b) {
+            return "_LMS<" + b.slots();
+        }
         Condition.PositionOff p = (Condition.PositionOff) w;
         String at = p.counts() < 0 ? "+" + (-p.counts()) : "-" + p.counts();
         return "@ABS[_TP" + p.axis() + at + "]>" + p.tolerance();

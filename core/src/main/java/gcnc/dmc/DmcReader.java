@@ -30,6 +30,7 @@ public final class DmcReader {
     private static final Pattern JUMP = Pattern.compile("#([A-Za-z][A-Za-z0-9_]{0,7})(?:,(.+))?");
     private static final Pattern INPUT_IS = Pattern.compile("@IN\\[([0-9]{1,3})\\]=([01])");
     private static final Pattern BEFORE = Pattern.compile("TIME<([a-z][a-z0-9]{0,7})");
+    private static final Pattern BUFFER_BELOW = Pattern.compile("_LMS<([0-9]{1,3})");
     private static final Pattern POSITION_OFF = Pattern.compile(
             "@ABS\\[_TP([A-HXYZW])([+-])([0-9]{1,10})\\]>([0-9]{1,10})");
     /** {@code MG "text"} then operands: variables or underscore operands such as {@code _TC}. */
@@ -201,6 +202,7 @@ public final class DmcReader {
             case "KI":
             case "KD":
             case "ER":
+            case "IT":
                 return AxisReader.axisSetting(Setting.valueOf(cmd), args, t, faults);
             case "BL":
             case "FL":
@@ -359,6 +361,14 @@ public final class DmcReader {
         m = BEFORE.matcher(c);
         if (m.matches()) {
             return new Condition.Before(m.group(1));
+        }
+        m = SET.matcher(c);
+        if (m.matches()) {
+            return new Condition.VariableIs(m.group(1), Long.parseLong(m.group(2)));
+        }
+        m = BUFFER_BELOW.matcher(c);
+        if (m.matches()) {
+            return new Condition.BufferBelow(Integer.parseInt(m.group(1)));
         }
         m = POSITION_OFF.matcher(c);
         if (m.matches()) {

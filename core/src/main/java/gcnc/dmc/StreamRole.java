@@ -12,7 +12,7 @@ public enum StreamRole {
     /**
      * A wait the host carries out itself, by polling: {@code AMS} (until {@code _BGS} is 0),
      * {@code WT n} (n ms after the previous command was taken), {@code AV n} (until {@code _AVS}
-     * reaches n) and {@code JS #L} (the resident routine run with {@code XQ #L,0}, until {@code _XQ0}
+     * reaches the sum of the sequence's AVs so far: AV is relative, _AVS from the sequence's start) and {@code JS #L} (the resident routine run with {@code XQ #L,0}, until {@code _XQ0}
      * is -1).
      */
     HOST,

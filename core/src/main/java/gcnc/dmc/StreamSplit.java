@@ -27,6 +27,14 @@ import java.util.function.Consumer;
 public final class StreamSplit implements Consumer<Instruction> {
     /** The variable the resident set-up sets to 1 when it ran to its end. */
     public static final String READY = "gready";
+    /**
+     * The routine a sequence longer than the buffer waits in for room ({@code JS #LMWAIT}: back to
+     * itself while {@code _LMS} is below the next batch and VE); in the stream the host polls
+     * {@code _LMS} instead (docs/galil.md, "Continuous contouring").
+     */
+    public static final String BUFFER_WAIT = "LMWAIT";
+    /** The segments given after each wait for room. */
+    public static final int BUFFER_BATCH = 100;
     /** The most commands of one block held back to see whether the block must be moved. */
     public static final int RUN_LIMIT = 4096;
     /** The moved blocks' labels: {@code #B1}, {@code #B2} ... */

@@ -128,7 +128,9 @@ public final class Library {
                     diags.error(Code.E137_TOO_LONG_TO_HOLD, call, limit);
                     return null;
                 }
-                boolean header = blocks.isEmpty() && !b.malformed() && b.words().get(0).letter() == gcnc.ir.Letter.O;
+                // a macro line ("#1=5", "IF [..] GOTO 5") has no words: it is no header, whatever comes first
+                boolean header = blocks.isEmpty() && !b.malformed() && !b.words().isEmpty()
+                        && b.words().get(0).letter() == gcnc.ir.Letter.O;
                 if (header) {
                     start = b.words().get(0).span();
                     if (b.words().size() > 1) {

@@ -12,15 +12,40 @@ import java.util.Map;
  * block labelled N n (from the GOTO to the end, then from the start of what is held), into a loop
  * while its condition holds, after its END when it does not, back to its WHILE from its END. A
  * WHILE that turns more than {@link ProgramFlow#LOOP_LIMIT} times from one entry, or a GOTO that
- * jumps back that often, is an endless loop (E149); nowhere to go is E141.
+ * jumps back that often, is an endless loop (E149); nowhere to go is E141. So is, at once, a loop
+ * that comes round with every variable as it was the pass before: the flow of a macro program
+ * depends on its variables alone (a value only the machine knows is E147, never read), so that pass
+ * would run again for ever, as on the control.
  */
 final class MacroJumps {
     private final Diagnostics diags;
+    private final Variables vars;
     /** How many times each GOTO (program and index) has jumped back. */
     private final Map<String, Integer> jumpsBack = new HashMap<>();
+    /** Each loop's variables when it last came round (or, for a WHILE, was entered): the same again is endless. */
+    private final Map<String, Object> lastState = new HashMap<>();
 
-    MacroJumps(Diagnostics diags) {
+    MacroJumps(Diagnostics diags, Variables vars) {
         this.diags = diags;
+        this.vars = vars;
+    }
+
+    /** Whether the loop {@code key} comes round with every variable as it last did (and remembers them now). */
+    private boolean unchanged(String key) {
+        Object now = vars.state();
+        return now.equals(lastState.put(key, now));
+    }
+
+    /** A loop as it last came round: its statement, where it is, and how many times it has run from its entry. */
+    record Pass(String text, gcnc.diag.Span at, int passes) {
+    }
+
+    /** The loop that last came round (the innermost running), or null before any did. */
+    private Pass last;
+
+    /** The loop that last came round, for the run's budget (ProgramFlow, E710); null when none has. */
+    Pass last() {
+        return last;
     }
 
     /** GOTO n: the block labelled N n, searched from the GOTO to the end, then from the start. */
@@ -33,8 +58,9 @@ final class MacroJumps {
         if (target <= at) {
             String key = System.identityHashCode(f.blocks) + ":" + at;
             int n = jumpsBack.merge(key, 1, Integer::sum);
-            if (n > ProgramFlow.LOOP_LIMIT) {
-                diags.error(Code.E149_MACRO_ENDLESS_LOOP, j.at(), j.text(), j.at().line(), ProgramFlow.LOOP_LIMIT);
+            last = new Pass(j.text(), j.at(), n + 1);
+            if (n > ProgramFlow.LOOP_LIMIT || unchanged(key)) {
+                diags.error(Code.E149_MACRO_ENDLESS_LOOP, j.at(), j.text(), j.at().line(), Math.min(n, ProgramFlow.LOOP_LIMIT));
                 return;
             }
         }
@@ -48,9 +74,19 @@ final class MacroJumps {
         f.cameBack = false;
         f.whileAt[id] = at;
         f.turns[id] = again ? f.turns[id] + 1 : 1;
+        if (again) {
+            last = new Pass(l.text(), l.at(), f.turns[id]);
+        }
         boolean holds = l.holds();
-        if (holds && f.turns[id] > ProgramFlow.LOOP_LIMIT) {
-            diags.error(Code.E149_MACRO_ENDLESS_LOOP, l.at(), l.text(), l.at().line(), ProgramFlow.LOOP_LIMIT);
+        String key = System.identityHashCode(f.blocks) + ":" + at;
+        boolean same = false;
+        if (holds && again) {
+            same = unchanged(key);
+        } else if (holds) {
+            lastState.put(key, vars.state()); // entered: what its first pass starts from
+        }
+        if (holds && (f.turns[id] > ProgramFlow.LOOP_LIMIT || same)) {
+            diags.error(Code.E149_MACRO_ENDLESS_LOOP, l.at(), l.text(), l.at().line(), Math.min(f.turns[id] - 1, ProgramFlow.LOOP_LIMIT));
             holds = false;
         }
         if (holds && again) {

@@ -26,6 +26,15 @@ final class Variables {
         }
     }
 
+    /**
+     * Every variable's value now, as a value that equals another taken when they were all the same:
+     * a loop that comes round to them unchanged will run the same pass again, and again
+     * ({@link MacroJumps}, E149 at once instead of at the run's budget).
+     */
+    Object state() {
+        return java.util.List.of(java.util.Arrays.asList(local.clone()), new HashMap<>(set));
+    }
+
     /** The value of #n, null when vacant. */
     Double read(long n) throws Refused {
         if (n == 0) {

@@ -57,6 +57,13 @@ final class GalilDialect implements Dialect {
         out.accept(new Instruction(new Command.Label("GCNC"), Source.NONE));
         out.accept(new Instruction(new Command.ServoHere(plane), Source.NONE));
         out.accept(new Instruction(new Command.VectorMode(plane), Source.NONE));
+        // IT 1 on both plane axes: no smoothing. IT is burnable and "also filters the individual axes during
+        // Vector Mode (VM)", which "results in longer motion time" (command reference IT): a unit with a
+        // smaller value burned in would round the corners and stretch the times the simulator verified
+        for (int i = 0; i < 2; i++) {
+            out.accept(new Instruction(new Command.AxisSetting(Command.Setting.IT,
+                    gcnc.dmc.Channels.index(plane.charAt(i)), Fixed.of(1)), Source.NONE));
+        }
         out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(acceleration(profile.acceleration()))),
                 Source.NONE));
         out.accept(new Instruction(new Command.VectorDeceleration(Fixed.of(acceleration(profile.deceleration()))),
@@ -101,7 +108,14 @@ final class GalilDialect implements Dialect {
             motion(s.block(), s.block().motions().get(s.motion()), out);
             out.motion(-1);
         } else if (step instanceof Step.Group g) {
-            if (g.pieces().size() == 1) {
+            if (g.continues()) {
+                grouping = true; // the next window of the sequence being written (Contouring#WINDOW)
+                try {
+                    sequence.write(g);
+                } finally {
+                    grouping = false;
+                }
+            } else if (g.pieces().size() == 1 && !g.goesOn()) {
                 // one motion: what the exact-stop planner writes, no segment speeds
                 gcnc.plan.Piece p = g.pieces().get(0);
                 stop = g.stop();
@@ -114,7 +128,8 @@ final class GalilDialect implements Dialect {
                 // runs when it is read, not when the path gets there (docs/galil.md)
                 grouping = true;
                 try {
-                    new GroupWriter(this, sink).write(g);
+                    sequence = new GroupWriter(this, sink);
+                    sequence.write(g);
                 } finally {
                     grouping = false;
                 }
@@ -135,6 +150,8 @@ final class GalilDialect implements Dialect {
     }
 
     private BlockWriter writer;
+    /** The writer of the last sequence begun: a sequence that goes on is written on by it. */
+    private GroupWriter sequence;
     /** A multi-motion group is being written: its blocks after the first get no gline=<line> (MachineCode). */
     private boolean grouping;
     /** The blocks written so far: each new one's number in the run (Source#block). */
@@ -168,19 +185,86 @@ final class GalilDialect implements Dialect {
         });
     }
 
+    /** The model's vector buffer, segments (tables/galil_models.csv {@code buffer_segments}). */
+    int bufferSegments() {
+        return (int) limits.model().range(gcnc.machine.GalilModel.Limit.BUFFER_SEGMENTS).max();
+    }
+
+    /** The wait for {@code slots} free slots of the vector buffer (MachineCode's {@code #LMWAIT}). */
+    void awaitBuffer(int slots, BlockWriter out) {
+        machine.awaitBuffer(slots, out);
+    }
+
     /** The spindle's speed reference (also for G96 inside a group, GroupWriter): MachineCode's. */
     void spindle(CheckedBlock b, double rpm, BlockWriter out) {
         machine.spindleSpeed(b, rpm, out);
     }
 
-    /** The M functions' output directives and what they do to the spindle (also on the way, GroupWriter). */
+    /**
+     * The M functions' output directives and what they do to the spindle (also on the way,
+     * GroupWriter); a program stop among them (M00, M01 with the switch on) comes after the others.
+     */
     void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
+        boolean stop = false;
         for (MCall m : calls) {
-            for (Command directive : outputs.computeIfAbsent(m.code(), this::directives)) {
-                out.emit(directive);
+            if (profile.control().stopsProgram(m.code())) {
+                stop = true;
+            } else {
+                apply(b, m.code(), out);
             }
-            machine.afterM(b, m, out);
         }
+        if (stop) {
+            programStop(b, out);
+        }
+    }
+
+    /** The last M code applied in each of the control's M groups: what a program stop puts back. */
+    private final Map<Integer, Integer> lastInGroup = new java.util.HashMap<>();
+
+    /** One M code's output directives and what it does to the spindle. */
+    private void apply(CheckedBlock b, int code, BlockWriter out) {
+        for (Command directive : outputs.computeIfAbsent(code, this::directives)) {
+            out.emit(directive);
+        }
+        machine.afterM(b, new MCall(code), out);
+        gcnc.machine.MFunction f = profile.control().m().get(code);
+        if (f != null && f.group() > 0) {
+            lastInGroup.put(f.group(), code);
+        }
+    }
+
+    /**
+     * A program stop (docs/galil.md, "Program stops"), the axes at rest (the planner ended the
+     * sequence): the control's {@code stop.off} codes that change something (Haas: M05 when the
+     * spindle turns, M09 when the coolant is on), the wait for the operator ({@code gstop=1},
+     * {@code JS #PSTOP}), then what they changed put back as the program had it (M03 with its
+     * speed, and the wait for speed before the next feed, as after any M03; M08).
+     */
+    private void programStop(CheckedBlock b, BlockWriter out) {
+        List<Integer> restore = new java.util.ArrayList<>();
+        for (int off : profile.control().stop().off()) {
+            gcnc.machine.MFunction f = profile.control().m().get(off);
+            Integer last = f.group() > 0 ? lastInGroup.get(f.group()) : null;
+            if (f.group() > 0 && (last == null || last == off || !restorable(last))) {
+                continue; // nothing of that group is on: the stop changes nothing there
+            }
+            apply(b, off, out);
+            if (last != null) {
+                restore.add(last);
+            }
+        }
+        machine.programStop(out);
+        for (int code : restore) {
+            apply(b, code, out);
+        }
+    }
+
+    /** Whether M code {@code code} is a state a stop can put back: a spindle start or an output (not M19's orientation). */
+    private boolean restorable(int code) {
+        gcnc.machine.MFunction f = profile.control().m().get(code);
+        gcnc.machine.MRole r = f == null ? null : f.role();
+        return r == gcnc.machine.MRole.SPINDLE_CW || r == gcnc.machine.MRole.SPINDLE_CCW
+                || r == gcnc.machine.MRole.OUTPUT;
     }
 
     /** The profile's output directives of M code {@code m} as commands (the loader has checked their form). */

@@ -18,9 +18,13 @@ import java.util.function.Consumer;
  * segment at its own speed with its corner speed, {@code VS <first speed>}, then {@code VP a,b <o >p}
  * and {@code CR r,θ,Δθ <o >p} measured from the sequence's start, {@code VE}, {@code BGS}; what is
  * set on the way, one mechanism for both: the spindle speeds of the motions that change it (G96) and
- * the outputs that switch on the fly ({@code plan.on_the_fly}), each after {@code AV <distance>},
- * the path the written segments measure up to the start of its motion (a whole count at or before it,
- * so that the controller always reaches it);
+ * the outputs that switch on the fly ({@code plan.on_the_fly}), each after {@code AV <distance>}:
+ * the trip point is the path the written segments measure up to the start of its motion (a whole count
+ * at or before it, so that the controller always reaches it), and {@code AV} is written as the distance
+ * from the previous trip point of the sequence (from its start for the first), since Galil measures it
+ * "from the start of a coordinated move sequence or from the last AV command" (command reference AV;
+ * DMC-40x0 User Manual p.86, "After Relative Vector distance"); the distances of a sequence add up to
+ * its last trip point, never past the path's end (docs/galil.md, "Set on the way");
  * {@code AMS} with the reason the machine stops there. Speeds are even, 2 or more (Galil's
  * resolution for {@code <} and {@code >}), rounded down, never up.
  */
@@ -45,25 +49,57 @@ final class GroupWriter {
     /** The share of the stopping speed a closing move at a sequence's end is given (as the planner's margin). */
     private static final double STOP_MARGIN = 0.9;
 
+    /**
+     * The segments given before {@code BGS} when a sequence is longer than the buffer: all slots but
+     * the one VE takes (COMALL VM: "Up to 511 segments may be given before the Begin Sequence").
+     */
+    private final int fill;
+    /**
+     * The segments written after each wait for room: the wait ({@code JS #LMWAIT}, MachineCode) lets
+     * them through once {@code _LMS} counts this many free slots and one more for VE.
+     */
+    static final int BATCH = gcnc.dmc.StreamSplit.BUFFER_BATCH;
+
+    /*
+     * The sequence being written, kept from one group to the next while it goes on (Step.Group#goesOn):
+     * where it started, the writer of the last block, the path written so far, its segments, and
+     * whether BGS has started it (after the first fill), with its trip points.
+     */
+    private long u0;
+    private long v0;
+    private boolean started;
+    private BlockWriter out;
+    private double along;
+    private int segments;
+    private boolean begun;
+    private java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
+    private java.util.List<Double> at = new java.util.ArrayList<>();
+
     GroupWriter(GalilDialect dialect, Consumer<Instruction> sink) {
         this.d = dialect;
         this.sink = sink;
+        this.fill = d.bufferSegments() - 1;
     }
 
+    /** Writes a group: a whole sequence, or one window of it (the next group goes on from where this one ends). */
     void write(Step.Group g) {
-        long u0 = d.posU;
-        long v0 = d.posV;
-        atU = u0;
-        atV = v0;
-        boolean started = false;
-        BlockWriter out = null;
-        double along = 0; // the path written so far, counts, as the controller measures it for AV
+        if (!g.continues()) {
+            u0 = d.posU;
+            v0 = d.posV;
+            atU = u0;
+            atV = v0;
+            started = false;
+            out = null;
+            along = 0; // the path written so far, counts, as the controller measures it for AV
+            segments = 0;
+            begun = false;
+            // the pieces with something on the way and the path before each (always array lists: a group
+            // that measures after many that do not must not meet another list type in compiled code)
+            onTheWay = new java.util.ArrayList<>();
+            at = new java.util.ArrayList<>();
+        }
         int n = g.pieces().size();
         measuring = g.onTheWay();
-        // the pieces with something on the way and the path before each (always array lists: a group
-        // that measures after many that do not must not meet another list type in compiled code)
-        java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
-        java.util.List<Double> at = new java.util.ArrayList<>();
         for (int k = 0; k < n; k++) {
             Piece p = g.pieces().get(k);
             CheckedBlock b = p.block();
@@ -75,7 +111,8 @@ final class GroupWriter {
             if (vs < 0) {
                 continue; // reported (E207, E201): the output is void
             }
-            Command.Speeds speeds = new Command.Speeds(Math.min(vs, evenDown(p.speed())), k == n - 1 ? 0 : evenDown(p.exit()));
+            boolean last = k == n - 1 && !g.goesOn();
+            Command.Speeds speeds = new Command.Speeds(Math.min(vs, evenDown(p.speed())), last ? 0 : evenDown(p.exit()));
             if (!started) {
                 d.speedLine(vs, feed != null, out);
                 started = true;
@@ -97,19 +134,22 @@ final class GroupWriter {
                 along += straight(b, m instanceof Motion.Linear l ? l.to() : null, u0, v0, speeds, out);
             }
         }
-        if (!started) {
+        if (!started || g.goesOn()) {
             return;
         }
         out.emit(new Command.VectorEnd());
-        out.emit(new Command.BeginSequence());
-        long tripped = -1;
+        if (!begun) {
+            out.emit(new Command.BeginSequence()); // the whole sequence fitted the buffer: started after VE
+        }
+        BlockWriter out = this.out;
+        long tripped = -1; // the last trip point written, counts from the sequence's start; -1 before the first
         for (int i = 0; i < onTheWay.size(); i++) {
             Piece p = onTheWay.get(i);
             long trip = (long) Math.floor(at.get(i));
             BlockWriter w = d.writer(p.block(), sink);
             w.motion(p.motion());
             if (trip != tripped) {
-                w.emit(new Command.AfterVector(trip));
+                w.emit(new Command.AfterVector(trip - Math.max(0, tripped))); // relative to the last AV
                 tripped = trip;
             }
             // in program order: what earlier blocks left on the way, then this block's speed and outputs
@@ -130,6 +170,25 @@ final class GroupWriter {
             out = w;
         }
         out.emit(new Command.AwaitSequence(g.stop()));
+    }
+
+    /**
+     * Gives the controller one segment of the sequence. A sequence longer than the buffer is started
+     * ({@code BGS}) once the first {@link #fill} segments are in it, and fed while it runs: before
+     * each further {@link #BATCH} segments the program waits for that many free slots and one for VE
+     * ({@code JS #LMWAIT}: COMALL VM, "Additional segments may be given during the motion when the
+     * buffer frees additional spaces"; _LMS, "the number of spaces available in the sequence buffer").
+     */
+    private void segment(Command c, BlockWriter out) {
+        if (segments >= fill && (segments - fill) % BATCH == 0) {
+            if (!begun) {
+                out.emit(new Command.BeginSequence());
+                begun = true;
+            }
+            d.awaitBuffer(BATCH + 1, out);
+        }
+        out.emit(c);
+        segments++;
     }
 
     /** The outputs of {@code s} (after the trip point already written), in the writer of their own block. */
@@ -158,7 +217,7 @@ final class GroupWriter {
         if (tu == d.posU && tv == d.posV) {
             return 0; // no move: a segment of no length is TC 30
         }
-        out.emit(new Command.VectorPosition(tu - u0, tv - v0, speeds));
+        segment(new Command.VectorPosition(tu - u0, tv - v0, speeds), out);
         double written = measuring ? Math.hypot(tu - d.posU, tv - d.posV) : 0;
         d.posU = tu;
         d.posV = tv;
@@ -199,8 +258,8 @@ final class GroupWriter {
         // the controller's path length of a CR: its radius times its sweep
         double length = measuring ? cr.radius() * Math.toRadians(Math.abs(Fixed.fourDecimals(cr.sweep()).value())) : 0;
         if (!closing) {
-            out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
-                    Fixed.fourDecimals(cr.sweep()), speeds));
+            segment(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
+                    Fixed.fourDecimals(cr.sweep()), speeds), out);
             atU = eu;
             atV = ev;
         } else {
@@ -209,9 +268,9 @@ final class GroupWriter {
             double gap = Math.hypot(tu - eu, tv - ev); // from where the printed arc ends to the target
             long closeAt = speeds.end() != 0 ? speeds.end()
                     : Math.min(speeds.speed(), evenDown(STOP_MARGIN * Math.sqrt(2 * d.stopping() * gap)));
-            out.emit(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
-                    Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), closeAt)));
-            out.emit(new Command.VectorPosition(tu - u0, tv - v0, new Command.Speeds(closeAt, speeds.end())));
+            segment(new Command.CircularArc(Fixed.of(cr.radius()), Fixed.fourDecimals(cr.start()),
+                    Fixed.fourDecimals(cr.sweep()), new Command.Speeds(speeds.speed(), closeAt)), out);
+            segment(new Command.VectorPosition(tu - u0, tv - v0, new Command.Speeds(closeAt, speeds.end())), out);
             length += measuring ? gap : 0;
             atU = tu;
             atV = tv;

@@ -28,6 +28,9 @@ public final class LimitCheck implements Consumer<Instruction> {
     private double length;
     private double u;
     private double v;
+    /** VE given before BGS (the whole sequence in the buffer); BGS given before VE (a sequence fed while it runs). */
+    private boolean ended;
+    private boolean begun;
 
     public LimitCheck(ControllerLimits limits, Diagnostics diagnostics, Consumer<Instruction> next) {
         this.limits = limits;
@@ -58,12 +61,19 @@ public final class LimitCheck implements Consumer<Instruction> {
             segment(i, Math.abs(Math.toRadians(a.sweep().value())) * radius,
                     u + radius * (Math.cos(to) - Math.cos(from)), v + radius * (Math.sin(to) - Math.sin(from)), a.speeds());
         } else if (c instanceof Command.BeginSequence) {
-            report(limits.bufferSegments(segments), i);
-            report(limits.sequenceLength(length), i);
-            segments = 0;
-            length = 0;
-            u = 0;
-            v = 0;
+            report(limits.bufferSegments(segments), i); // the segments given before BGS (COMALL VM)
+            if (ended) {
+                sequenceEnd(i);
+            } else {
+                begun = true; // a sequence fed while it runs: its VE comes later, its segments count from here
+                segments = 0;
+            }
+        } else if (c instanceof Command.VectorEnd) {
+            if (begun) {
+                sequenceEnd(i);
+            } else {
+                ended = true;
+            }
         } else if (c instanceof Command.Wait w) {
             report(limits.dwell(w.milliseconds()), i);
         } else if (c instanceof Command.Label l) {
@@ -71,6 +81,17 @@ public final class LimitCheck implements Consumer<Instruction> {
             report(limits.labelLength(l.name().length()), i);
         }
         next.accept(i);
+    }
+
+    /** The sequence's whole length against the model's, and the next one starts from its origin. */
+    private void sequenceEnd(Instruction i) {
+        report(limits.sequenceLength(length), i);
+        segments = 0;
+        length = 0;
+        u = 0;
+        v = 0;
+        begun = false;
+        ended = false;
     }
 
     private void segment(Instruction i, double len, double toU, double toV, Command.Speeds speeds) {

@@ -46,6 +46,12 @@ final class MachineCode {
     static final String SPINDLE_WAIT = "SPWAIT";
     static final String TURRET = "TURRET";
     static final String FAULT = "FAULT";
+    /** The program stop's wait routine (M00; M01 with the optional stop switch on). */
+    static final String PROGRAM_STOP = gcnc.dmc.ProgramStop.LABEL;
+    /** The DMC variable a program stop waits on: 1 while it waits; the host's continue sets it to 0. */
+    static final String STOP_FLAG = gcnc.dmc.ProgramStop.FLAG;
+    /** The wait for room in the vector buffer of a sequence fed while it runs (GroupWriter). */
+    static final String BUFFER_WAIT = gcnc.dmc.StreamSplit.BUFFER_WAIT;
     /** The automatic subroutines gcnc installs, with what each says: DMC-40x0 command reference, pp. 12-21. */
     static final List<String> HANDLERS = List.of("CMDERR", "LIMSWI", "POSERR", "AMPERR");
 
@@ -73,6 +79,7 @@ final class MachineCode {
     private boolean waitForSpeed;
     private boolean spindleWaitUsed;
     private boolean turretUsed;
+    private boolean stopUsed;
 
     MachineCode(MachineProfile profile, GalilFrame frame, Diagnostics diagnostics) {
         this.profile = profile;
@@ -217,6 +224,15 @@ final class MachineCode {
         }
     }
 
+    /** The free slots {@code #LMWAIT} waits for; 0 while no sequence has needed feeding. */
+    private int bufferWait;
+
+    /** {@code JS #LMWAIT}: the program waits until {@code slots} slots of the vector buffer are free. */
+    void awaitBuffer(int slots, BlockWriter out) {
+        bufferWait = slots;
+        out.emit(new Command.Call(BUFFER_WAIT));
+    }
+
     /** Before a motion (an alone one, or a group's first): the wait for speed, when it is pending and the motion feeds. */
     void beforeMotion(Motion m, BlockWriter out) {
         if (!waitForSpeed || !feeds(m)) {
@@ -280,6 +296,17 @@ final class MachineCode {
         out.emit(new Command.Wait(even.taken()));
     }
 
+    /**
+     * The wait of a program stop: {@code gstop=1}, then {@code JS #PSTOP}, which says the line
+     * ({@code MG}) and loops until the host sets {@code gstop=0} or the cycle start input is pressed
+     * (docs/galil.md, "Program stops").
+     */
+    void programStop(BlockWriter out) {
+        out.emit(new Command.SetVariable(STOP_FLAG, 1));
+        out.emit(new Command.Call(PROGRAM_STOP));
+        stopUsed = true;
+    }
+
     /** The spindle zeroed, EN, the routines the program jumps to, and the error handlers. */
     void finish(Consumer<Instruction> sink) {
         List<Command> c = new ArrayList<>();
@@ -295,10 +322,19 @@ final class MachineCode {
         if (spindleWaitUsed && io.atSpeed() instanceof MachineIo.AtSpeed.Input in) {
             waitFor(c, SPINDLE_WAIT, "SPW", in.input(), in.timeoutSeconds(), List.of(), "SPINDLE NOT AT SPEED");
         }
+        if (bufferWait > 0) {
+            // #LMWAIT: back to itself while fewer slots are free than the next batch needs (COMALL VM, LM)
+            c.add(new Command.Label(BUFFER_WAIT));
+            c.add(new Command.Jump(BUFFER_WAIT, Optional.of(new Command.Condition.BufferBelow(bufferWait))));
+            c.add(new Command.End());
+        }
         if (turretUsed) {
             MachineIo.Turret t = io.turret().get();
             waitFor(c, TURRET, "TUW", t.inPosition(), t.timeoutSeconds(), List.of(new Command.Output(t.strobe(), false)),
                     "TURRET NOT IN POSITION");
+        }
+        if (stopUsed) {
+            stopRoutine(c, io.cycleStart());
         }
         handler(c, "CMDERR", false, "COMMAND ERROR", LINE, "_TC");
         handler(c, "LIMSWI", false, "LIMIT SWITCH", LINE);
@@ -334,6 +370,33 @@ final class MachineCode {
         c.add(new Command.Jump(FAULT, Optional.empty()));
         c.add(new Command.Label(ok));
         c.addAll(then);
+        c.add(new Command.End());
+    }
+
+    /**
+     * {@code #PSTOP}: the message, then the wait. With a cycle start input the button must first be
+     * seen released ({@code #PSR}: a button held, or an input that reads on unwired, does not end
+     * the stop at once), then pressed ({@code #PSW}); the host's {@code gstop=0} ends either loop.
+     * The routine leaves {@code gstop} at 0.
+     */
+    private static void stopRoutine(List<Command> c, java.util.OptionalInt cycleStart) {
+        Command.Condition waiting = new Command.Condition.VariableIs(STOP_FLAG, 1);
+        c.add(new Command.Label(PROGRAM_STOP));
+        c.add(new Command.Message("PROGRAM STOP AT G-CODE LINE", List.of(LINE)));
+        if (cycleStart.isPresent()) {
+            Command.Condition pressed = new Command.Condition.InputIs(cycleStart.getAsInt(), true);
+            c.add(new Command.Label("PSR"));
+            c.add(new Command.Jump("PSOK", Optional.of(new Command.Condition.VariableIs(STOP_FLAG, 0))));
+            c.add(new Command.Jump("PSR", Optional.of(pressed)));
+            c.add(new Command.Label("PSW"));
+            c.add(new Command.Jump("PSOK", Optional.of(pressed)));
+            c.add(new Command.Jump("PSW", Optional.of(waiting)));
+            c.add(new Command.Label("PSOK"));
+            c.add(new Command.SetVariable(STOP_FLAG, 0));
+        } else {
+            c.add(new Command.Label("PSW"));
+            c.add(new Command.Jump("PSW", Optional.of(waiting)));
+        }
         c.add(new Command.End());
     }
 

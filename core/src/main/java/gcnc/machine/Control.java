@@ -55,6 +55,9 @@ import java.util.TreeMap;
  *                          Fusion fanuc post writes it (parameter 5102#6 RAB, systems B and C);
  *                          else R is the distance from the initial level (the 0i-TF manual's
  *                          default, and always in incremental mode)
+ * @param stop              what the control does at a program stop (M00, and M01 with the optional
+ *                          stop switch on): the M codes it applies when the stop begins (keys
+ *                          {@code stop.off}, {@code stop.optional}; docs/galil.md, "Program stops")
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
@@ -62,7 +65,44 @@ public record Control(String name, String description, Set<Letter> letters, Map<
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, BareG28 bareG28,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
                       double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners,
-                      boolean fanucDrilling, boolean drillRAbsolute) {
+                      boolean fanucDrilling, boolean drillRAbsolute, ProgramStop stop) {
+    /**
+     * A program stop (M00; M01 when the optional stop switch is on) as the control makes it: the
+     * axes at rest, then {@code off} applied (Haas: M05 and M09, the spindle stopped and the coolant
+     * off), then the wait for cycle start; at cycle start the control puts back what {@code off}
+     * changed (the spindle, run up again before the next feed, and the coolant). Fanuc's CNC stops
+     * only the program: what the spindle and coolant do is the machine builder's ladder.
+     *
+     * @param off      the M codes applied at the stop, in order (key {@code stop.off})
+     * @param optional the optional stop switch's position as the program is compiled (key
+     *                 {@code stop.optional}; {@code gcnc run --optional-stop}): on, M01 stops as M00
+     */
+    public record ProgramStop(List<Integer> off, boolean optional) {
+        public ProgramStop {
+            off = List.copyOf(off);
+        }
+
+        /** A control that says nothing: the program stops, nothing else changes. */
+        public static final ProgramStop PROGRAM_ONLY = new ProgramStop(List.of(), false);
+    }
+
+    /** The same control with the optional stop switch {@code on} or off. */
+    public Control withOptionalStop(boolean on) {
+        if (on == stop.optional()) {
+            return this;
+        }
+        return new Control(name, description, letters, g, m, powerUp, powerUpUnits, powerUpTool, powerUpOffset,
+                clampFromG50, chuckByProgram, increasingN, noPointLiteral, dwellPSeconds, bareG28, blockDelete,
+                builderM, cycleRetractMm, calls, macros, peckRetractMm, pocketWalls, lineComments, corners,
+                fanucDrilling, drillRAbsolute, new ProgramStop(stop.off(), on));
+    }
+
+    /** Whether M code {@code code} stops the program here: M00 always, M01 when the optional stop switch is on. */
+    public boolean stopsProgram(int code) {
+        MFunction f = m.get(code);
+        return f != null && (f.role() == MRole.STOP || f.role() == MRole.OPTIONAL_STOP && stop.optional());
+    }
+
     /**
      * G01 chamfering and corner rounding (key {@code g01.corner}, docs/chamfer.md): none; Haas's
      * {@code ,C} and {@code ,R} at any angle, and I or K for a 90-degree chamfer; Fanuc T's

@@ -26,7 +26,7 @@ public final class ControlLoader {
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
             "cycle.peck_retract_mm", "cycle.pocket_allowance", "comments", "g01.corner",
-            "cycle.drill_words", "cycle.drill_r");
+            "cycle.drill_words", "cycle.drill_r", "stop.off", "stop.optional");
 
     private ControlLoader() {
     }
@@ -106,7 +106,31 @@ public final class ControlLoader {
                 f.choice("comments", "spanning", "spanning", "line").equals("line"),
                 Control.Corners.valueOf(f.choice("g01.corner", "none", "none", "comma", "letters").toUpperCase()),
                 f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"),
-                f.choice("cycle.drill_r", "incremental", "incremental", "absolute").equals("absolute"));
+                f.choice("cycle.drill_r", "incremental", "incremental", "absolute").equals("absolute"),
+                new Control.ProgramStop(stopOff(f, m), f.choice("stop.optional", "off", "off", "on").equals("on")));
+    }
+
+    /**
+     * {@code stop.off}: the M codes (M05 M09 ...) a program stop applies, each a spindle stop or an
+     * output of the control's M table; none when the key is absent.
+     */
+    private static List<Integer> stopOff(ProfileFile f, Map<Integer, MFunction> m) throws TableException {
+        List<Integer> codes = new ArrayList<>();
+        Optional<ProfileFile.Entry> e = f.entry("stop.off");
+        if (e.isEmpty()) {
+            return codes;
+        }
+        for (String s : e.get().value().strip().split("\\s+")) {
+            MFunction fn = s.matches("[Mm][0-9]{1,3}") ? m.get(Integer.parseInt(s.substring(1))) : null;
+            if (s.isEmpty()) {
+                continue;
+            }
+            if (fn == null || fn.role() != MRole.SPINDLE_STOP && fn.role() != MRole.OUTPUT) {
+                throw f.fault(e.get(), Phrase.STOP_OFF.with(s));
+            }
+            codes.add(fn.code());
+        }
+        return codes;
     }
 
     /** cycle.retract_mm: zero or more, NaN when the control does not say. */

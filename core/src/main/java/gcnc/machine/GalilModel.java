@@ -20,14 +20,51 @@ import java.util.OptionalInt;
  * @param firmware12a    the limits firmware 1.2a and later raises (program lines, array elements); empty
  *                       where the reference's 1.2a figures are not known to apply to the model
  * @param newFirmware    whether this copy holds the 1.2a figures ({@link #withFirmware12a})
+ * @param hostLink       how a host reaches it: a serial and an Ethernet port, or only a computer's bus
+ * @param serialEcho     whether its serial port echoes every character at power-up (COMALL EO: "defaulted
+ *                       to EO1"; false where a model's manual says echo is off until EO 1)
+ * @param deviations     the probe rows ({@link ProbeRow} ids) the profile states its unit contradicts
+ *                       ({@code galil.deviations}): gcnc run accepts a probe report that contradicts them
  * @param row            the model's line in tables/galil_models.csv
  */
 public record GalilModel(String name, String family, int axes, int digitalOutputs, int analogOutputs,
                          int sampleMicros, Map<Limit, Range> limits, Map<Limit, Range> firmware12a,
-                         boolean newFirmware, int row) {
+                         boolean newFirmware, HostLink hostLink, boolean serialEcho, java.util.List<String> deviations,
+                         int row) {
+    /**
+     * How a host talks to the controller (tables/galil_models.csv, column host_link). gcnc run speaks
+     * serial and Ethernet; a bus card (ISA DMC-1700, PCI DMC-18x6: DMC-1700/1800 User Manual ch.4,
+     * "Hardware Level Communications for ISA and PCI") needs Galil's bus driver.
+     */
+    public enum HostLink {
+        SERIAL_ETHERNET("serial-ethernet"), BUS("bus");
+
+        private final String spelling;
+
+        HostLink(String spelling) {
+            this.spelling = spelling;
+        }
+
+        public String spelling() {
+            return spelling;
+        }
+    }
+
+    /** Whether gcnc run (serial or TCP) cannot reach the model: a bus card. */
+    public boolean busOnly() {
+        return hostLink == HostLink.BUS;
+    }
+
     public GalilModel {
         limits = Map.copyOf(limits);
         firmware12a = Map.copyOf(firmware12a);
+        deviations = java.util.List.copyOf(deviations);
+    }
+
+    /** The same model with the deviations a profile states ({@code galil.deviations}). */
+    public GalilModel withDeviations(java.util.List<String> ids) {
+        return new GalilModel(name, family, axes, digitalOutputs, analogOutputs, sampleMicros, limits, firmware12a,
+                newFirmware, hostLink, serialEcho, ids, row);
     }
 
     /**
@@ -140,10 +177,16 @@ public record GalilModel(String name, String family, int axes, int digitalOutput
         return !firmware12a.isEmpty();
     }
 
+    /** The same model at firmware before 1.2a (a controller that reported an older revision). */
+    public GalilModel withOlderFirmware() {
+        return new GalilModel(name, family, axes, digitalOutputs, analogOutputs, sampleMicros, limits, firmware12a,
+                false, hostLink, serialEcho, deviations, row);
+    }
+
     /** The same model running firmware 1.2a or later: its larger program memory where the reference gives one. */
     public GalilModel withFirmware12a() {
         return new GalilModel(name, family, axes, digitalOutputs, analogOutputs, sampleMicros, limits, firmware12a,
-                true, row);
+                true, hostLink, serialEcho, deviations, row);
     }
 
     /** A channel letter's number from 0 (X, Y, Z, W are A, B, C, D); whether the model has it. */

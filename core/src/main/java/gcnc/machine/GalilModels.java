@@ -59,11 +59,28 @@ public final class GalilModels {
             newer(r, limits, Limit.PROGRAM_LINES, "program_lines_12a", newer);
             newer(r, limits, Limit.ARRAY_ELEMENTS, "array_elements_12a", newer);
             String analog = r.get("analog_outputs");
+            GalilModel.HostLink link = hostLink(r);
+            String echo = r.get("serial_echo");
+            if (!(echo.equals("1") || echo.equals("0") || echo.isEmpty() && link == GalilModel.HostLink.BUS)) {
+                throw r.faultAt("serial_echo", Phrase.GALIL_MODEL_CHOICE.with("serial_echo", echo,
+                        "1 or 0 (blank for a bus card)"));
+            }
             models.put(name, new GalilModel(name, r.get("family"), axes, whole(r, "digital_outputs", 0, 64),
                     analog.isEmpty() ? -1 : whole(r, "analog_outputs", 0, 64), whole(r, "sample_us", 1, 100_000),
-                    limits, newer, false, r.line()));
+                    limits, newer, false, link, echo.equals("1"), List.of(), r.line()));
         }
         return new GalilModels(models);
+    }
+
+    /** The host_link cell: serial-ethernet or bus. */
+    private static GalilModel.HostLink hostLink(Csv.Row r) throws TableException {
+        String v = r.get("host_link");
+        for (GalilModel.HostLink l : GalilModel.HostLink.values()) {
+            if (l.spelling().equals(v)) {
+                return l;
+            }
+        }
+        throw r.faultAt("host_link", Phrase.GALIL_MODEL_CHOICE.with("host_link", v, "serial-ethernet or bus"));
     }
 
     /** The built-in table; a broken one is a bug in gcnc.jar, not a user's fault. */
@@ -110,7 +127,15 @@ public final class GalilModels {
                     .map(Phrase.DID_YOU_MEAN::with).orElse("");
             throw f.fault(e.orElseThrow(), Code.E420_UNKNOWN_GALIL_MODEL, name, near, families());
         }
-        return firmware(f) ? m.get().withFirmware12a() : m.get();
+        GalilModel model = firmware(f) ? m.get().withFirmware12a() : m.get();
+        // galil.deviations: probe rows the shop's unit contradicts, checked against ProbeRow by gcnc run
+        List<String> deviations = new ArrayList<>();
+        for (String d : f.entry("galil.deviations").map(ProfileFile.Entry::value).orElse("").split(",")) {
+            if (!d.isBlank()) {
+                deviations.add(d.strip());
+            }
+        }
+        return model.withDeviations(deviations);
     }
 
     private static String squeeze(String s) {

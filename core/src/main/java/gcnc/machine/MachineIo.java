@@ -19,8 +19,11 @@ import java.util.regex.Pattern;
  * @param atSpeed  what the program waits for after M03/M04 or a speed change, before it feeds
  * @param turret   the turret's outputs and in-position input; empty: only {@code TOOL=n} is written
  * @param homing   what proves the machine is at home before the first move
+ * @param cycleStart the input of the machine's cycle start button ({@code stop.cycle_start = IN n}),
+ *                 which ends a program stop as the host's continue does; empty: the host's only
  */
-public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> turret, Homing homing) {
+public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> turret, Homing homing,
+                        java.util.OptionalInt cycleStart) {
     /** Where the spindle drive's speed reference comes from. */
     public sealed interface SpindleDrive {
         /**
@@ -88,10 +91,23 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
     static final double DEFAULT_TOLERANCE_MM = 0.01;
 
     private static final Pattern OFFSET = Pattern.compile("OF(?:\\s*([A-HXYZW]))?", Pattern.CASE_INSENSITIVE);
-    private static final Pattern ANALOG = Pattern.compile("AO\\s*([0-9]{1,4})", Pattern.CASE_INSENSITIVE);
-    /** The highest I/O number AO takes: a Modbus device's, on handles A-H (DMC-40x0 Command Reference, AO p.28). */
+    private static final Pattern ANALOG = Pattern.compile("AO\\s*([0-9]{1,5})", Pattern.CASE_INSENSITIVE);
+    /**
+     * The I/O numbers AO takes: a Modbus device's analog output, 1,000 to 8,999 ("n0 = (HandleNum*1000) +
+     * ((Module-1)*4) + (Bitnum-1)", command reference AO; its only range for n0): a number below 1,000
+     * is refused by the controller, so the profile is refused here (E437).
+     */
+    static final int MIN_ANALOG = 1000;
     static final int MAX_ANALOG = 8999;
-    private static final Pattern INPUT = Pattern.compile("IN\\s*([0-9]{1,3})", Pattern.CASE_INSENSITIVE);
+    private static final Pattern INPUT = Pattern.compile("IN\\s*([0-9]{1,5})", Pattern.CASE_INSENSITIVE);
+    /**
+     * The digital inputs {@code @IN[n]} reads (command reference @IN): the general inputs 1 to 16 ("Inputs
+     * 9-16 only valid for 5-8 axis controller", the split @OUT makes for outputs, so the model's
+     * digital_outputs column bounds them), the auxiliary encoder inputs 81 to 96 ("Used when repurposing
+     * aux encoder inputs as digital inputs") and a Modbus device's bits, 1,000 to 8,999.
+     */
+    static final int MIN_AUX_INPUT = 81;
+    static final int MAX_AUX_INPUT = 96;
     private static final Pattern SECONDS = Pattern.compile("([0-9]{1,3}(?:\\.[0-9]{1,3})?)\\s*s", Pattern.CASE_INSENSITIVE);
     /** Galil's digital inputs and outputs are numbered from 1; 999 is far above any model's extended I/O. */
     private static final int MAX_BIT = 999;
@@ -108,12 +124,25 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
 
     static MachineIo defaults(char spindleAxis) {
         return new MachineIo(new SpindleDrive.Offset(spindleAxis), new AtSpeed.Dwell(DEFAULT_DWELL), Optional.empty(),
-                new Homing.Position(DEFAULT_TOLERANCE_MM));
+                new Homing.Position(DEFAULT_TOLERANCE_MM), java.util.OptionalInt.empty());
     }
 
     /** The keys of {@code f}, checked against the turret's station count and the model's digital outputs (E424). */
     static MachineIo read(ProfileFile f, char spindleAxis, int tools, GalilModel model) throws TableException {
-        return new MachineIo(drive(f, spindleAxis), atSpeed(f), turret(f, tools, model), homing(f));
+        return new MachineIo(drive(f, spindleAxis), atSpeed(f, model), turret(f, tools, model), homing(f, model), cycleStart(f, model));
+    }
+
+    /** {@code stop.cycle_start = IN n}: the cycle start button's input (on = pressed, read {@code @IN[n]=1}). */
+    private static java.util.OptionalInt cycleStart(ProfileFile f, GalilModel model) throws TableException {
+        Optional<ProfileFile.Entry> e = f.entry("stop.cycle_start");
+        if (e.isEmpty()) {
+            return java.util.OptionalInt.empty();
+        }
+        Matcher m = INPUT.matcher(e.get().value().strip());
+        if (m.matches()) {
+            return java.util.OptionalInt.of(input(f, e.get(), m.group(1), model)); // an input the model reads, else E436
+        }
+        throw f.fault(e.get(), Code.E850_CYCLE_START_INPUT, e.get().value().strip());
     }
 
     private static SpindleDrive drive(ProfileFile f, char spindleAxis) throws TableException {
@@ -128,13 +157,17 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
             return new SpindleDrive.Offset(spindleAxis);
         }
         m = ANALOG.matcher(v);
-        if (m.matches() && Integer.parseInt(m.group(1)) <= MAX_ANALOG) {
-            return new SpindleDrive.Analog(Integer.parseInt(m.group(1)));
+        if (m.matches()) {
+            int n = Integer.parseInt(m.group(1));
+            if (n < MIN_ANALOG || n > MAX_ANALOG) {
+                throw f.fault(e.get(), Code.E437_ANALOG_OUTPUT_RANGE, String.valueOf(n), String.valueOf(spindleAxis));
+            }
+            return new SpindleDrive.Analog(n);
         }
         throw f.fault(e.get(), Code.E430_SPINDLE_OUTPUT, v, String.valueOf(spindleAxis));
     }
 
-    private static AtSpeed atSpeed(ProfileFile f) throws TableException {
+    private static AtSpeed atSpeed(ProfileFile f, GalilModel model) throws TableException {
         Optional<ProfileFile.Entry> e = f.entry("spindle.at_speed");
         double timeout = f.entry("spindle.at_speed_timeout").isPresent()
                 ? f.within("spindle.at_speed_timeout", 0.1, 600) : DEFAULT_TIMEOUT;
@@ -143,8 +176,8 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
         }
         String v = e.get().value().strip();
         Matcher m = INPUT.matcher(v);
-        if (m.matches() && bit(m.group(1))) {
-            return new AtSpeed.Input(Integer.parseInt(m.group(1)), timeout);
+        if (m.matches()) {
+            return new AtSpeed.Input(input(f, e.get(), m.group(1), model), timeout);
         }
         m = SECONDS.matcher(v);
         if (m.matches() && Double.parseDouble(m.group(1)) >= 0.002 && Double.parseDouble(m.group(1)) <= 600) {
@@ -189,12 +222,13 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
         }
         int strobe = bit(f, f.required("turret.strobe"), f.required("turret.strobe").value().strip());
         output(f, f.required("turret.strobe"), strobe, model);
-        int input = bit(f, f.required("turret.in_position"), f.required("turret.in_position").value().strip());
+        ProfileFile.Entry in = f.required("turret.in_position");
+        int input = input(f, in, in.value().strip(), model);
         double timeout = f.entry("turret.timeout").isPresent() ? f.within("turret.timeout", 0.1, 600) : DEFAULT_TIMEOUT;
         return Optional.of(new Turret(bits, strobe, input, timeout));
     }
 
-    private static Homing homing(ProfileFile f) throws TableException {
+    private static Homing homing(ProfileFile f, GalilModel model) throws TableException {
         double tolerance = f.entry("homing.tolerance").isPresent() ? f.within("homing.tolerance", 0.001, 10)
                 : DEFAULT_TOLERANCE_MM;
         Optional<ProfileFile.Entry> e = f.entry("homing.check");
@@ -203,8 +237,8 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
         }
         String v = e.get().value().strip();
         Matcher m = INPUT.matcher(v);
-        if (m.matches() && bit(m.group(1))) {
-            return new Homing.Input(Integer.parseInt(m.group(1)));
+        if (m.matches()) {
+            return new Homing.Input(input(f, e.get(), m.group(1), model));
         }
         if (v.equalsIgnoreCase("position")) {
             return new Homing.Position(tolerance);
@@ -227,6 +261,19 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
             throw f.fault(e, Code.E424_OUTPUT_BEYOND_MODEL, e.key(), String.valueOf(bit), model.name(),
                     model.digitalOutputs());
         }
+    }
+
+    /** A digital input {@code @IN[n]} reads on {@code model} (see {@link #MIN_AUX_INPUT}), else E436 at the key. */
+    private static int input(ProfileFile f, ProfileFile.Entry e, String digits, GalilModel model) throws TableException {
+        int n = digits.matches("[0-9]{1,5}") ? Integer.parseInt(digits) : -1;
+        boolean general = n >= 1 && n <= model.digitalOutputs();
+        boolean aux = n >= MIN_AUX_INPUT && n <= MAX_AUX_INPUT;
+        boolean modbus = n >= MIN_ANALOG && n <= MAX_ANALOG;
+        if (!general && !aux && !modbus) {
+            throw f.fault(e, Code.E436_INPUT_RANGE, e.key(), e.value().strip(), String.valueOf(model.digitalOutputs()),
+                    model.name());
+        }
+        return n;
     }
 
     private static boolean bit(String digits) {

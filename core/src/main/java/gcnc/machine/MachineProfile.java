@@ -45,6 +45,8 @@ import java.util.Optional;
  *                        {@code nose.N}); an offset without one has radius 0
  * @param threadChamfer   the chamfered pull-out of a G76/G92 pass under Haas M23 (keys
  *                        {@code thread.chamfer_leads}, {@code thread.chamfer_angle})
+ * @param wear            the wear offsets, apart from the geometry in {@code toolOffsets} (keys
+ *                        {@code wear.N}, the offsets file); the tool moves by both ({@link #appliedOffset})
  */
 public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z, boolean diameterX,
                              double noPointMm, double noPointInch, Point home, double rapidSpeed,
@@ -54,8 +56,9 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
                              Map<Integer, List<String>> outputs, double feedPerF, ProfileFile file,
                              Control control, Units units, Point machineZero, boolean chuckByProgram,
                              MachineModel model, SpindleEncoder spindleEncoder,
-                             Map<Integer, Nose> noses, ThreadChamfer threadChamfer) {
+                             Map<Integer, Nose> noses, ThreadChamfer threadChamfer, ToolWear wear) {
     public MachineProfile {
+        java.util.Objects.requireNonNull(wear);
         noses = Map.copyOf(noses);
         workOffsets = Map.copyOf(workOffsets);
         toolOffsets = Map.copyOf(toolOffsets);
@@ -99,8 +102,28 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
         return Optional.ofNullable(workOffsets.get(g));
     }
 
+    /** Tool offset {@code n}'s geometry ({@code tool.N}), machine counts; empty when the profile has no offset n. */
     public Optional<Point> toolOffset(int n) {
         return Optional.ofNullable(toolOffsets.get(n));
+    }
+
+    /**
+     * Where tool offset {@code n} puts the tool, as a Fanuc or Haas control applies it: its geometry
+     * plus its wear ({@link ToolWear#inCounts}), machine counts; empty when the profile has no offset n.
+     */
+    public Optional<Point> appliedOffset(int n) {
+        return toolOffset(n).map(g -> {
+            Point w = wear.inCounts(n, x, z, diameterX);
+            return new Point(g.x() + w.x(), g.z() + w.z());
+        });
+    }
+
+    /** The same machine with another wear table (a test cut's, {@code gcnc.TestCut}). */
+    public MachineProfile withWear(ToolWear w) {
+        return new MachineProfile(name, galilModel, x, z, diameterX, noPointMm, noPointInch, home, rapidSpeed,
+                maxFeed, acceleration, deceleration, maxRpm, rpmPerVolt, spindleAxis, rearToolPost, workOffsets,
+                toolOffsets, tools, outputs, feedPerF, file, control, units, machineZero, chuckByProgram,
+                model, spindleEncoder, noses, threadChamfer, w);
     }
 
     /**
@@ -121,7 +144,21 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
         return new MachineProfile(name, galilModel, x, z, diameterX, noPointMm, noPointInch, home, rapidSpeed,
                 maxFeed, acceleration, deceleration, maxRpm, rpmPerVolt, spindleAxis, rearToolPost, work,
                 toolOffsets, tools, outputs, feedPerF, file, control, units, machineZero, chuckByProgram,
-                model.withStickout(mm), spindleEncoder, noses, threadChamfer);
+                model.withStickout(mm), spindleEncoder, noses, threadChamfer, wear);
+    }
+
+    /**
+     * The same machine with the optional stop switch {@code on} or off (M01 stops as M00 when on):
+     * {@code gcnc run --optional-stop}, the studio's toggle, over the control's {@code stop.optional}.
+     */
+    public MachineProfile withOptionalStop(boolean on) {
+        if (on == control.stop().optional()) {
+            return this;
+        }
+        return new MachineProfile(name, galilModel, x, z, diameterX, noPointMm, noPointInch, home, rapidSpeed,
+                maxFeed, acceleration, deceleration, maxRpm, rpmPerVolt, spindleAxis, rearToolPost, workOffsets,
+                toolOffsets, tools, outputs, feedPerF, file, control.withOptionalStop(on), units, machineZero,
+                chuckByProgram, model, spindleEncoder, noses, threadChamfer, wear);
     }
 
     public List<String> outputsFor(int m) {

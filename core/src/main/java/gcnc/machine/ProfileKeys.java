@@ -16,16 +16,18 @@ import java.util.regex.Pattern;
 final class ProfileKeys {
     /** Keys read by name: ProfileLoader (docs/profiles.md), then MachineModel (docs/simulator.md). */
     static final List<String> NAMED = List.of(
-            "name", "control", "units", "machine_zero", "chuck.driven_by", "galil.model", "galil.firmware",
+            "name", "control", "units", "machine_zero", "chuck.driven_by", "galil.model", "galil.firmware", "galil.deviations",
             "x.galil", "z.galil", "x.sign", "z.sign", "x.counts_per_mm", "z.counts_per_mm",
             "x.counts_per_inch", "z.counts_per_inch", "x.travel", "z.travel", "x.programming",
             "input.no_point", "home", "rapid.speed", "feed.max", "vector.acceleration", "vector.deceleration",
             "spindle.max_rpm", "spindle.rpm_per_volt", "spindle.axis", "spindle.encoder", "spindle.encoder_axis", "tool_post", "offsets.unit",
+            "offsets.file", "wear.max_step", "wear.max_total",
             "tools.table", "tools.offsets", "tools.count", "tools.file", "feed.per_f", "thread.chamfer_leads",
             "thread.chamfer_angle", "plan.blend", "corner.deviation", "plan.on_the_fly", "reference.2", "reference.3", "reference.4",
             // the machine around the motion (MachineIo)
             "spindle.output", "spindle.at_speed", "spindle.at_speed_timeout", "turret.station_outputs",
             "turret.strobe", "turret.in_position", "turret.timeout", "homing.check", "homing.tolerance",
+            "stop.cycle_start",
             // the simulator's machine model
             "sim.centre_x", "chuck.face_z", "chuck.jaw_diameter", "chuck.jaw_length", "chuck.diameter",
             "stock.diameter", "stock.length", "stock.stickout", "stock.header",
@@ -47,6 +49,8 @@ final class ProfileKeys {
             // T's last two digits pick the offset: 1 to 99 (tool.0 is refused by ProfileLoader, with its reason)
             new Family("tool.", "tool\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_TOOL),
             new Family("nose.", "nose\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_NOSE),
+            // wear of tool offset N, apart from its geometry tool.N (ToolWear; also the only key of an offsets file)
+            new Family("wear.", "wear\\.[0-9]{1,2}", Phrase.UNKNOWN_KEY_WEAR),
             new Family("m.", "m\\.[0-9]{1,3}", Phrase.UNKNOWN_KEY_M),
             new Family("sim.tool.", "sim\\.tool\\.(default|[0-9]{1,2})(\\.(insert|holder))?",
                     Phrase.UNKNOWN_KEY_SIM_TOOL),

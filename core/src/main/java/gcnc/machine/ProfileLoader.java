@@ -55,6 +55,16 @@ public final class ProfileLoader {
     /** Loads a profile; {@code control}, when not null, replaces the control the profile names. */
     public static MachineProfile load(String nameOrPath, TableSource tables, Tables data, String control)
             throws TableException {
+        return load(nameOrPath, tables, data, control, java.util.Optional.empty(), false);
+    }
+
+    /**
+     * Loads a profile with its wear offsets from {@code offsets} ({@code --offsets FILE}) when given,
+     * else from the offsets file the profile names ({@code offsets.file}), if any ({@link WearReader});
+     * with {@code newOffsets} an offsets file that does not exist yet reads as empty (else E455).
+     */
+    public static MachineProfile load(String nameOrPath, TableSource tables, Tables data, String control,
+                                      java.util.Optional<Path> offsets, boolean newOffsets) throws TableException {
         ProfileFile f;
         if (isPath(nameOrPath)) {
             Path p = Path.of(nameOrPath);
@@ -76,7 +86,7 @@ public final class ProfileLoader {
             }
             f = ProfileFile.parse(tables.describe(name), text);
         }
-        return read(f, data, tables, control);
+        return read(f, data, tables, control, offsets, newOffsets);
     }
 
     /** Whether {@code --machine} names a file (a '/' in it, or ending in .machine) rather than a profile among the tables. */
@@ -105,6 +115,12 @@ public final class ProfileLoader {
      */
     public static MachineProfile read(ProfileFile f, Tables data, TableSource tables, String control)
             throws TableException {
+        return read(f, data, tables, control, java.util.Optional.empty(), false);
+    }
+
+    /** {@link #read(ProfileFile, Tables, TableSource, String)} with the offsets file {@code offsets} (else offsets.file). */
+    public static MachineProfile read(ProfileFile f, Tables data, TableSource tables, String control,
+                                      java.util.Optional<Path> offsets, boolean newOffsets) throws TableException {
         ProfileKeys.check(f);
         Control c = control(f, tables, control);
         String noPoint = f.choice("input.no_point", c.noPointLiteral() ? "literal" : "increment", "literal", "increment");
@@ -132,6 +148,8 @@ public final class ProfileLoader {
             }
         }
         Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
+        boolean diameterX = f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter");
+        ToolWear wear = WearReader.read(f, f.text("name"), tools, counts, x, offsets, newOffsets);
         lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
         MachineModel model = MachineModel.read(f);
         if (!c.name().equals("thesis-2004")) {
@@ -140,8 +158,7 @@ public final class ProfileLoader {
             spindleReachesTopSpeed(f);
         }
         GalilModel galil = GalilModels.load(tables).forProfile(f);
-        MachineProfile p = new MachineProfile(f.text("name"), galil, x, z,
-                f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter"),
+        MachineProfile p = new MachineProfile(f.text("name"), galil, x, z, diameterX,
                 literal ? 1 : 0.001, literal ? 1 : 0.0001, home,
                 register(f, "rapid.speed", Phrase.REGISTER_SPEED),
                 register(f, "feed.max", Phrase.REGISTER_SPEED),
@@ -151,7 +168,7 @@ public final class ProfileLoader {
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
                 workOffsets(f, counts, x, z, model), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
                 machineZero, chuckByProgram, model, encoder(f, x, z),
-                noses(f, counts, x), threadChamfer(f));
+                noses(f, counts, x), threadChamfer(f), wear);
         GalilModels.holds(p, f); // channels, speeds, accelerations and outputs the model has (E421-E424)
         MachineIo.read(f, spindleAxis, p.tools(), p.galilModel()); // the spindle drive, turret, homing (E424, E430-E434)
         return p;

@@ -71,6 +71,53 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
+    /**
+     * Who chose an output's name, which decides whether it may be written through a symbolic link.
+     * Every output of gcnc is opened with one ({@link #open}): the DMC, its map, the stream and its
+     * map, the drawing, the Gradle plugin's sheets and reports.
+     */
+    public enum Name {
+        /** The user named it ({@code -o OUT}, {@code --svg OUT}): a link there is followed, its file replaced. */
+        GIVEN,
+        /**
+         * gcnc chose it (a map or a stream beside the DMC, {@code FILE.dmc} for a compile without
+         * {@code -o}, a report in a build folder): a symbolic link there is refused (E510), since
+         * whoever planted it would choose the file a compile, perhaps as root, replaces.
+         */
+        DERIVED
+    }
+
+    /** An output at {@code target}, named as {@code name} says: a link at a {@link Name#DERIVED} name is refused (E510). */
+    public static AtomicOutput open(Path target, Name name) throws IOException {
+        if (name == Name.DERIVED) {
+            refuseLink(target);
+        }
+        return new AtomicOutput(target);
+    }
+
+    /** Writes text into a writer (a report, a sheet); what {@link #write} runs. */
+    @FunctionalInterface
+    public interface Text {
+        void to(Writer w) throws IOException;
+    }
+
+    /** A whole text file at {@code target} ({@link #open} with {@code name}): in place once written, or not at all. */
+    public static void write(Path target, Name name, Text text) throws IOException {
+        try (AtomicOutput out = open(target, name)) {
+            Writer w = out.writer();
+            text.to(w);
+            w.flush();
+            out.commit();
+        }
+    }
+
+    /** E510 when {@code target} is a symbolic link (dangling or not). */
+    public static void refuseLink(Path target) throws Refused {
+        if (Files.isSymbolicLink(target)) {
+            throw new Refused(Code.E510_SIDE_FILE_IS_LINK, target.toString());
+        }
+    }
+
     /** Opens the temporary file's stream (a seam for tests that need a failing disk). */
     public interface Opener {
         OutputStream open(Path temp) throws IOException;

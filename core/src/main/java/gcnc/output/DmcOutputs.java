@@ -22,7 +22,8 @@ import java.util.List;
  *       DMC is put in place and back if that fails;</li>
  *   <li>the map is a file the user never named: when its name is a symbolic link, gcnc does not
  *       write through it (E510), since whoever planted the link would choose the file a compile
- *       replaces. The DMC itself, named with -o, is written through a link as named.</li>
+ *       replaces ({@link AtomicOutput.Name#DERIVED}). The DMC itself is written through a link
+ *       only when the user named it (-o).</li>
  * </ul>
  */
 public final class DmcOutputs implements AutoCloseable {
@@ -70,10 +71,11 @@ public final class DmcOutputs implements AutoCloseable {
 
     /**
      * The DMC at {@code target} and, when {@code withMap} and the target is a regular file, its map
-     * beside it; refuses the program itself as either file (E501) before anything is opened.
+     * beside it; refuses the program itself as either file (E501) before anything is opened, and a
+     * link at the map's name, or at the DMC's when gcnc chose it ({@code name}), E510.
      * {@code input} is the program's file, or null when it comes from a stream.
      */
-    public static DmcOutputs open(Path input, Path target, boolean withMap) throws Failed {
+    public static DmcOutputs open(Path input, Path target, boolean withMap, AtomicOutput.Name name) throws Failed {
         Path mapPath = mapFile(target);
         AtomicOutput dmc;
         try {
@@ -81,7 +83,7 @@ public final class DmcOutputs implements AutoCloseable {
             if (withMap) {
                 AtomicOutput.refuseInput(input, mapPath);
             }
-            dmc = new AtomicOutput(target);
+            dmc = AtomicOutput.open(target, name);
         } catch (IOException e) {
             throw new Failed(target, e);
         }
@@ -91,12 +93,8 @@ public final class DmcOutputs implements AutoCloseable {
             Path stale = beside && Files.exists(mapPath, LinkOption.NOFOLLOW_LINKS) ? mapPath : null;
             return new DmcOutputs(dmc, null, stale);
         }
-        if (Files.isSymbolicLink(mapPath)) {
-            discard(dmc);
-            throw new Failed(mapPath, new AtomicOutput.Refused(gcnc.diag.Code.E510_SIDE_FILE_IS_LINK, mapPath.toString()));
-        }
         try {
-            AtomicOutput map = new AtomicOutput(mapPath);
+            AtomicOutput map = AtomicOutput.open(mapPath, AtomicOutput.Name.DERIVED);
             dmc.hashed(); // the map's last line records it
             return new DmcOutputs(dmc, map, null);
         } catch (IOException e) {

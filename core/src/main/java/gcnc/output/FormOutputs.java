@@ -51,13 +51,15 @@ public final class FormOutputs implements AutoCloseable {
 
     /**
      * The DMC at {@code target}, and the stream beside it ({@link #streamFile}), each with its map
-     * when {@code withMap}; refuses the program itself as any of them (E501) before anything is opened.
+     * when {@code withMap}; refuses the program itself as any of them (E501) before anything is
+     * opened, and a symbolic link at any name gcnc chose (E510): the maps, the stream, and the DMC
+     * when {@code name} is {@link AtomicOutput.Name#DERIVED}. The stream is never named by the user.
      */
-    public static FormOutputs open(Path input, Path target, boolean withMap) throws DmcOutputs.Failed {
+    public static FormOutputs open(Path input, Path target, boolean withMap, AtomicOutput.Name name) throws DmcOutputs.Failed {
         Path streamPath = streamFile(target);
-        DmcOutputs dmc = DmcOutputs.open(input, target, withMap);
+        DmcOutputs dmc = DmcOutputs.open(input, target, withMap, name);
         try {
-            return new FormOutputs(dmc, DmcOutputs.open(input, streamPath, withMap), streamPath);
+            return new FormOutputs(dmc, DmcOutputs.open(input, streamPath, withMap, AtomicOutput.Name.DERIVED), streamPath);
         } catch (DmcOutputs.Failed e) {
             dmc.close();
             throw e;

@@ -106,7 +106,11 @@ public final class BlockReader implements BlockSource {
         this.fastPath = fastPath;
         this.macros = macros;
         this.lineComments = lineComments;
+        this.waivers = new WaiverComments(diagnostics, lineComments);
     }
+
+    /** The shop's waivers in the comments, {@code (GCNC ALLOW E642: reason)}, handed to the run's {@link gcnc.diag.Waivers}. */
+    private final WaiverComments waivers;
 
     /** The next block, or null at the end of the input (or of the tape: {@link #tapeEnd}). */
     @Override
@@ -119,8 +123,10 @@ public final class BlockReader implements BlockSource {
             if (tape && !inComment && betweenTapes()) {
                 continue;
             }
+            waivers.line(source.chars(), source.length(), source.number());
             RawBlock block = readLine();
             if (block != null) {
+                waivers.block(block.line());
                 if (eofMark != null && eofMark.line() < block.line()) {
                     diagnostics.report(Diagnostic.warning(Code.E602_TEXT_AFTER_END_OF_FILE_MARK, eofMark));
                     eofMark = null;
@@ -129,6 +135,7 @@ public final class BlockReader implements BlockSource {
                 return block;
             }
         }
+        waivers.end();
         if (inComment) {
             inComment = false;
             diagnostics.error(Code.E005_COMMENT_NOT_CLOSED, commentStart);

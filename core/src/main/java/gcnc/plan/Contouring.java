@@ -24,17 +24,25 @@ import java.util.function.Consumer;
  * or back, a call into another file, the end of the program, the exact stop the program asks for
  * (G09 after its block, G61 after every motion). A new spindle speed alone (G96 at the
  * next diameter) does not stop a feed: the emitter sets it when the tool reaches that motion.</li>
- * <li><b>The bound.</b> At most {@link #MAX_PIECES} pieces are held back: each is written as at
- * most two segments (an arc and its closing move), so a sequence always fits the controller's
- * 511-segment buffer; and at most {@link #MAX_LENGTH} counts of path (the controller refuses a
- * sequence longer than 2^31, TC 31). A straight move longer than one VP segment may be
- * ({@link SegmentLimit}) is held as equal pieces, all in the same sequence.</li>
+ * <li><b>The bound.</b> A sequence is as long as its path: the controller takes more segments while it
+ * runs (COMALL VM: "Additional segments may be given during the motion when the buffer frees
+ * additional spaces"), and the emitter keeps its buffer fed. The planner holds at most
+ * 2 × {@link #WINDOW} pieces: when that many are held, it plans them all with the last one ending
+ * at rest and hands on the first {@link #WINDOW} (a group that goes on, {@link Step.Group#goesOn});
+ * their last exit speed is one the machine can still stop from over the pieces still held, so the
+ * next window, whatever joins it, can always stop (Grbl's planner: a look-ahead of N blocks, the
+ * newest planned to rest). Also at most {@link #MAX_LENGTH} counts of path in a sequence (the
+ * controller refuses one longer than 2^31, TC 31). A sequence that sets something on the way keeps
+ * within one buffer fill ({@link #ON_THE_WAY_PIECES}, reason {@link Stop#ON_THE_WAY}): its trip points
+ * wait after {@code VE}. A straight move longer than one VP segment may be ({@link SegmentLimit}) is
+ * held as equal pieces, all in the same sequence.</li>
  * <li><b>Speeds.</b> A motion's speed is its feed (the rapid speed for a rapid), an arc's at most
  * √(a·r) so that its centripetal acceleration stays within the machine's. A corner's speed is the
  * junction-deviation speed √(a·δ·sin(θ/2)/(1−sin(θ/2))) (θ the angle between the two directions,
  * δ the profile's {@code corner.deviation}), never above either motion's speed: tangent joints keep
  * the feed, sharp corners slow, a reversal stops.</li>
- * <li><b>Passes.</b> The sequence starts and ends at rest. A reverse pass from the end lowers each
+ * <li><b>Passes.</b> The sequence starts and ends at rest (a window after the first starts at the
+ * speed the one before it handed on). A reverse pass from the end lowers each
  * corner to what the machine can still stop from over the motions after it; a forward pass from the
  * start lowers each to what it can reach over the motions before it; so |v_in² − v_out²| ≤ 2·a·L for
  * every motion, a = the smaller of the profile's acceleration and deceleration.</li>
@@ -43,8 +51,16 @@ import java.util.function.Consumer;
  * every corner again (E332) from the segments it replayed, not from these numbers.
  */
 public final class Contouring implements Planner {
-    /** The most motions a sequence holds (each at most two segments: 510 of the 511 buffer slots). */
-    public static final int MAX_PIECES = 255;
+    /**
+     * The planner's window, pieces: it holds at most twice as many, and hands on this many at a time
+     * (a piece is at most two segments: a window is at most 512 segments, about one buffer).
+     */
+    public static final int WINDOW = 256;
+    /**
+     * The most pieces of a sequence that sets something on the way (each at most two segments: 510
+     * of the 511 buffer slots, all given before {@code BGS}, VE in the last).
+     */
+    public static final int ON_THE_WAY_PIECES = 255;
     /** The longest sequence, counts (TC 31 is past 2^31; half of it leaves room for rounding). */
     public static final double MAX_LENGTH = 1L << 30;
     /** A corner slower than this (counts/s) is a reversal: Galil's slowest segment speed is 2. */
@@ -75,6 +91,14 @@ public final class Contouring implements Planner {
     private final Blending blending;
     private final SegmentLimit limit;
     private double length;
+    /**
+     * Whether the held pieces continue a sequence of which windows were handed on already, and the
+     * speed the last of those ends with (where the first held piece starts); 0 when none was.
+     */
+    private boolean continuing;
+    private double carried;
+    /** Whether the piece {@link #joins} is asked about sets something on the way (its caller says). */
+    private boolean onTheWayNext;
 
     Contouring(MachineProfile profile, Blending blending) {
         this.profile = profile;
@@ -129,6 +153,7 @@ public final class Contouring implements Planner {
             // a straight move longer than one VP takes: equal pieces, one after the other (SegmentLimit)
             int n = m instanceof Motion.Linear ? limit.parts(p.length()) : 1;
             if (!paths.isEmpty()) {
+                onTheWayNext = onTheWay || !pending.isEmpty() || !own.isEmpty();
                 Stop stop = joins(b, p, n);
                 if (stop != null) {
                     flush(stop, out);
@@ -143,6 +168,9 @@ public final class Contouring implements Planner {
             own = List.of();
             for (int k = 0; k < n; k++) {
                 hold(b, i, n == 1 ? p : p.part(n), onTheWay && k == 0, k == 0 ? here : List.of(), k, n);
+                if (paths.size() >= 2 * WINDOW && !heldOnTheWay) {
+                    handOn(out);
+                }
             }
             onTheWay = false;
             length += p.length();
@@ -153,7 +181,11 @@ public final class Contouring implements Planner {
         if (b.stopAt() == StopAt.BLOCK_END) {
             flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
-        if (switches(b.after())) {
+        if (programStop(b.after())) {
+            // M00 (M01 with the switch on): the axes at rest before the stop's outputs and the wait
+            flush(Stop.PROGRAM_STOP, out);
+            out.accept(new Step.After(b));
+        } else if (switches(b.after())) {
             int held = paths.size();
             boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions[held - 1] == ms.size() - 1;
             if (!stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
@@ -236,6 +268,7 @@ public final class Contouring implements Planner {
         if (p.length() < 0.5) {
             return paths.get(paths.size() - 1).rapid() != p.rapid() ? Stop.RAPID_FEED : null;
         }
+        onTheWayNext = true; // asked for a block that would set something as the tool reaches it
         return joins(b, p, m instanceof Motion.Linear ? limit.parts(p.length()) : 1);
     }
 
@@ -248,6 +281,16 @@ public final class Contouring implements Planner {
             return Stop.TOOL;
         }
         return stops(b.before()) ? Stop.OUTPUT : null;
+    }
+
+    /** Whether one of the M functions stops the program (M00; M01 when the optional stop switch is on). */
+    private boolean programStop(List<MCall> calls) {
+        for (MCall m : calls) {
+            if (profile.control().stopsProgram(m.code())) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Whether any of the M functions switches an output (one without outputs writes nothing: no stop). */
@@ -279,8 +322,9 @@ public final class Contouring implements Planner {
         if (!java.util.Objects.equals(blocks.get(blocks.size() - 1).origin().file(), b.origin().file())) {
             return Stop.CALL;
         }
-        if (paths.size() + n > MAX_PIECES) {
-            return Stop.BUFFER;
+        // (a piece on the way is the one about to be held with spindle or switches: asked by the caller)
+        if ((heldOnTheWay || onTheWayNext) && (continuing || paths.size() + n > ON_THE_WAY_PIECES)) {
+            return Stop.ON_THE_WAY;
         }
         if (length + p.length() > MAX_LENGTH) {
             return Stop.LENGTH;
@@ -301,12 +345,35 @@ public final class Contouring implements Planner {
             release(out);
             return;
         }
+        plan(n);
+        out.accept(group(n, stop)); // (one copy; the group keeps that list)
+        continuing = false;
+        carried = 0;
+        heldOnTheWay = false;
+        release(out);
+    }
+
+    /**
+     * Hands on the first {@link #WINDOW} held pieces as a group that goes on: all held pieces are
+     * planned to rest at the last, so the join's speed is one the pieces still held can stop from.
+     */
+    private void handOn(Consumer<Step> out) {
+        int n = paths.size();
+        plan(n);
+        double join = entry[WINDOW];
+        out.accept(group(WINDOW, null));
+        continuing = true;
+        carried = join; // (length stays the whole sequence's: MAX_LENGTH bounds the sequence, not a window)
+    }
+
+    /** The speeds at the starts of the n held pieces ({@link #entry}): from the carried speed, to rest after the last. */
+    private void plan(int n) {
         // entry[i]: the speed at the start of motion i; entry[n]: at the end of the last (rest)
         if (entry.length < n + 1) {
             entry = new double[Math.max(n + 1, 2 * entry.length)];
         }
         double[] entry = this.entry; // reused: every entry up to n is written below
-        entry[0] = 0;
+        entry[0] = carried;
         entry[n] = 0;
         for (int i = 1; i < n; i++) {
             entry[i] = corner(paths.get(i - 1), paths.get(i));
@@ -317,18 +384,38 @@ public final class Contouring implements Planner {
         for (int i = 1; i < n; i++) { // forward pass: each corner one can reach
             entry[i] = Math.min(entry[i], Math.sqrt(entry[i - 1] * entry[i - 1] + 2 * acceleration * usable(i - 1)));
         }
-        Piece[] pieces = new Piece[n];
-        for (int i = 0; i < n; i++) {
+    }
+
+    /**
+     * The first {@code k} held pieces with their planned speeds, as a group ending for {@code stop}
+     * (null: the sequence goes on), taken off the held ones.
+     */
+    private Step.Group group(int k, Stop stop) {
+        Piece[] pieces = new Piece[k];
+        boolean onTheWay = false;
+        for (int i = 0; i < k; i++) {
             pieces[i] = new Piece(blocks.get(i), motions[i], paths.get(i).speed(), entry[i + 1],
                     paths.get(i).length(), spindles[i], switchesAt.get(i), parts[i], partCounts[i]);
+            onTheWay |= pieces[i].onTheWay();
         }
-        switchesAt.clear();
-        blocks.clear();
-        paths.clear();
-        length = 0;
-        out.accept(new Step.Group(List.of(pieces), stop, heldOnTheWay)); // (one copy; the group keeps that list)
-        heldOnTheWay = false;
-        release(out);
+        Step.Group g = new Step.Group(List.of(pieces), stop, stop == null ? onTheWay : heldOnTheWay, continuing,
+                stop == null);
+        int left = paths.size() - k;
+        if (left == 0) {
+            switchesAt.clear();
+            blocks.clear();
+            paths.clear();
+            length = 0;
+        } else {
+            switchesAt.subList(0, k).clear();
+            blocks.subList(0, k).clear();
+            paths.subList(0, k).clear();
+            System.arraycopy(motions, k, motions, 0, left);
+            System.arraycopy(spindles, k, spindles, 0, left);
+            System.arraycopy(parts, k, parts, 0, left);
+            System.arraycopy(partCounts, k, partCounts, 0, left);
+        }
+        return g;
     }
 
     /** The outputs waiting for a next motion that did not join: switched at rest, in program order. */

@@ -22,10 +22,23 @@ public sealed interface Step {
      * Path motions the machine runs in one vector sequence without stopping, and why it stops after
      * them; {@code onTheWay}: whether any piece sets something as the tool reaches it
      * ({@link Piece#onTheWay}), so that the emitter measures the written path for its trip points.
+     * A sequence longer than the planner's window comes as several groups, one window each
+     * ({@link Contouring#WINDOW}): {@code continues} when earlier pieces of the same sequence came in
+     * the groups before, {@code goesOn} when later ones follow in the next group (its {@code stop} is
+     * then null: the machine does not stop after it, and its last piece's exit is the join's speed).
      */
-    record Group(List<Piece> pieces, Stop stop, boolean onTheWay) implements Step {
+    record Group(List<Piece> pieces, Stop stop, boolean onTheWay, boolean continues, boolean goesOn)
+            implements Step {
         public Group {
             pieces = List.copyOf(pieces);
+            if (goesOn != (stop == null)) {
+                throw new IllegalArgumentException("a group that goes on has no stop, and only it");
+            }
+        }
+
+        /** A whole sequence in one group. */
+        public Group(List<Piece> pieces, Stop stop, boolean onTheWay) {
+            this(pieces, stop, onTheWay, false, false);
         }
 
         /** A group whose pieces are asked whether they set anything on the way. */

@@ -54,19 +54,53 @@ public final class BlockTable {
     }
 
     private final Map<Integer, Block> blocks;
+    /** The text of the first comment of each main-program line that has one (a program stop shows it). */
+    private final Map<Integer, String> comments;
 
-    private BlockTable(Map<Integer, Block> blocks) {
+    private BlockTable(Map<Integer, Block> blocks, Map<Integer, String> comments) {
         this.blocks = blocks;
+        this.comments = comments;
     }
 
     /** An empty table (the program could not be read again): the status line then shows machine counts. */
     public static BlockTable none() {
-        return new BlockTable(Map.of());
+        return new BlockTable(Map.of(), Map.of());
+    }
+
+    /** The first comment on G-code line {@code line}, without its parentheses ("" when it has none). */
+    public String comment(int line) {
+        return comments.getOrDefault(line, "");
+    }
+
+    /** The first {@code ( )} comment of each line of {@code text} that has one, by line number from 1. */
+    private static Map<Integer, String> comments(String text) {
+        Map<Integer, String> out = new HashMap<>();
+        int line = 1;
+        int from = 0;
+        while (from <= text.length()) {
+            int end = text.indexOf('\n', from);
+            String l = text.substring(from, end < 0 ? text.length() : end);
+            int open = l.indexOf('(');
+            if (open >= 0) {
+                int close = l.indexOf(')', open);
+                out.put(line, l.substring(open + 1, close < 0 ? l.length() : close).strip());
+            }
+            if (end < 0) {
+                break;
+            }
+            from = end + 1;
+            line++;
+        }
+        return out;
     }
 
     /** Checks {@code source} again as the compiler did, keeping each main-program line's state. */
     public static BlockTable of(Reader source, Tables tables, MachineProfile profile, Optional<Path> programs)
             throws IOException {
+        java.io.StringWriter all = new java.io.StringWriter();
+        source.transferTo(all);
+        String text = all.toString();
+        source = new java.io.StringReader(text);
         Diagnostics ignored = new Diagnostics();
         gcnc.machine.Control control = profile.control();
         BlockSource reader = control.hasProgramFlow()
@@ -89,7 +123,18 @@ public final class BlockTable {
             out.put(raw.line(), new Block(frame, frame == null ? null : frame.number(), s.feed(), s.feedPerRev(),
                     s.units() == Units.INCH, s.rpm(), s.css(), s.spindle(), s.tool(), s.toolOffset(), s.workOffset()));
         }
-        return new BlockTable(out);
+        return new BlockTable(out, comments(text));
+    }
+
+    /** The tool offsets (1..99) in force at some line of the main program, in order. */
+    public java.util.SortedSet<Integer> toolOffsets() {
+        java.util.SortedSet<Integer> used = new java.util.TreeSet<>();
+        for (Block b : blocks.values()) {
+            if (b.toolOffset() != 0) {
+                used.add(b.toolOffset());
+            }
+        }
+        return used;
     }
 
     /** The state at G-code line {@code line}, or null for a line with no block. */

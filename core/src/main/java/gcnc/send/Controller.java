@@ -30,7 +30,7 @@ public final class Controller {
     /** What pre-flight found. */
     public record Facts(String revision, String model, boolean firmware12a, int labelsLeft, int variablesLeft,
                         int arraySpace, int vectorSlots, String pendingError, String limits, List<Character> motorsOff,
-                        double[] position, boolean programRunning, boolean moving) {
+                        double[] position, boolean programRunning, boolean moving, boolean echoed) {
     }
 
     /** {@code ^R^V}: the revision report, "DMC4040 Rev 1.2c" (gclib's address list shows the same). */
@@ -41,14 +41,22 @@ public final class Controller {
 
     /**
      * The pre-flight: model and firmware, memory, the vector buffer, a pending error, limit switches,
-     * motors, where the axes are, whether a program or a sequence runs. Asks, changes nothing
-     * (except {@code CW 1}, which marks unsolicited output, and TC1, which reads and clears the
-     * last error).
+     * motors, where the axes are, whether a program or a sequence runs. Asks, and changes only how the
+     * controller talks to this host: {@code EO 0} first on a serial link (a factory unit echoes until
+     * then), {@code CW 1}, which marks unsolicited output, {@code CF I}, which sends it to this port,
+     * and TC1, which reads and clears the last error. ({@code CS S}, which empties the vector buffer,
+     * is {@link #clearSequence}, once the sender knows nothing moves.)
      */
     public Facts preflight() throws IOException {
+        boolean echoed = client.link().serial() && client.disableEcho();
         String rev = revision();
         // unsolicited output with the high bit set, to tell it from replies (COMALL CW; gclib sets it too)
         client.command("CW 1");
+        // unsolicited messages (the handlers' MG) to the port this command came in on: the power-up
+        // port is the main serial port (COMALL CF, default S), so over Ethernet they would never arrive.
+        // COMALL recommends a second Ethernet handle for them; gcnc uses one handle with CW 1 to tell
+        // them apart (docs/galil.md, "Unsolicited messages")
+        require("CF I");
         GalilClient.Reply tc = client.query("TC1");
         String pending = tc.ok() ? tc.data().strip() : "";
         int labels = (int) optional("_DL", -1);
@@ -74,7 +82,19 @@ public final class Controller {
         boolean running = optional("_XQ0", -1) >= 0;
         boolean moving = optional("_BGS", 0) != 0;
         return new Facts(rev, model(rev), firmware12a(rev), labels, variables, arrays, slots,
-                pending.isEmpty() || pending.startsWith("0") ? "" : pending, limits.toString(), off, pos, running, moving);
+                pending.isEmpty() || pending.startsWith("0") ? "" : pending, limits.toString(), off, pos, running, moving,
+                echoed);
+    }
+
+    /**
+     * {@code CS S}, then {@code MG _LMS}: empties the vector buffer of segments an interrupted sequence
+     * left (COMALL CS: "will remove VP, CR or LI commands stored in a motion sequence"; "Not Valid while in
+     * motion", so only when nothing moves) and returns the free slots it reports, the model's whole
+     * buffer when it is empty (COMALL LI: "511 returned means the buffer is empty").
+     */
+    public int clearSequence() throws IOException {
+        require("CS S");
+        return (int) client.number("_LMS");
     }
 
     /** The model in a revision report, "DMC4040" of "DMC4040 Rev 1.2c", upper case, or "" when there is none. */
@@ -165,9 +185,12 @@ public final class Controller {
     }
 
     /**
-     * {@code MG _CSS}: the number of the segment of the running vector sequence executing, from 1
-     * (0 before the sequence's first; the last one after it ended). COMALL CS; EPICS counts the
-     * segments processed from it.
+     * {@code MG _CSS}: the segment counter of the running vector sequence, from zero: 0 during its first
+     * segment, 1 during the second (DMC-40x0 User Manual p.86, "Segment counter - returns number of the
+     * segment in the sequence, starting at zero", with its worked example; the same in the DMC-2x00 and
+     * DMC-13X8 manuals; COMALL CS only says "the segment number in the sequence"). After the sequence
+     * ended the manuals do not say what it reads; {@link Piece.Segments#segment} names the last segment
+     * for either reading. EPICS counts the segments processed from it.
      */
     public int segment() throws IOException {
         return (int) client.number("_CSS");

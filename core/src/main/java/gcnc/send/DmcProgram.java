@@ -143,6 +143,16 @@ public final class DmcProgram {
         return instructions.size();
     }
 
+    /** Whether the program waits with AV (a probe row the run then relies on: AV's distance, ProbeRow.AV_RELATIVE). */
+    public boolean usesAfterVector() {
+        for (Instruction i : instructions) {
+            if (i.command() instanceof gcnc.dmc.Command.AfterVector) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** The command on line {@code index} (0-based), or null beyond the program. */
     public Command command(int index) {
         return index >= 0 && index < instructions.size() ? instructions.get(index).command() : null;
@@ -292,16 +302,64 @@ public final class DmcProgram {
         return List.copyOf(names);
     }
 
-    /** The longest run of segments one sequence puts in the vector buffer. */
+    /**
+     * The most segments one sequence puts in the vector buffer before its {@code BGS}: all of it, or
+     * the first fill of one fed while it runs (BGS before VE, docs/galil.md "Continuous contouring").
+     */
     public int mostSegments() {
         int m = 0;
         for (Sequence s : sequences) {
-            m = Math.max(m, s.pieces().size());
+            int bgs = s.last();
+            for (int i = s.first(); i <= s.last(); i++) {
+                if (instructions.get(i).command() instanceof Command.BeginSequence) {
+                    bgs = i;
+                    break;
+                }
+            }
+            int before = 0;
+            for (Sequence.Piece p : s.pieces()) {
+                before += p.line() < bgs ? 1 : 0;
+            }
+            m = Math.max(m, before);
         }
         return m;
     }
 
     /** Is {@code c} a segment of a vector sequence ({@code VP}, {@code CR})? */
+    /**
+     * Whether compiled line {@code index} belongs to the program stop's wait routine ({@code #PSTOP}
+     * to its {@code EN}): thread 0 standing there waits for the operator.
+     */
+    public boolean inProgramStop(int index) {
+        if (stopRoutine == null) {
+            int from = -1;
+            int to = -1;
+            for (int i = 0; i < size(); i++) {
+                Command c = command(i);
+                if (from < 0 && c instanceof Command.Label l && l.name().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                    from = i;
+                } else if (from >= 0 && c instanceof Command.End) {
+                    to = i;
+                    break;
+                }
+            }
+            stopRoutine = new int[] {from, to};
+        }
+        return index >= 0 && stopRoutine[0] >= 0 && index >= stopRoutine[0] && index <= stopRoutine[1];
+    }
+
+    /** The first program stop's call ({@code JS #PSTOP}) at or after compiled line {@code from}, or -1. */
+    public int programStopFrom(int from) {
+        for (int i = Math.max(0, from); i < size(); i++) {
+            if (command(i) instanceof Command.Call c && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private int[] stopRoutine;
+
     public static boolean isSegment(Command c) {
         return c instanceof Command.VectorPosition || c instanceof Command.CircularArc;
     }

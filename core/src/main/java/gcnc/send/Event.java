@@ -20,6 +20,14 @@ public sealed interface Event {
                      String pendingError, String limitSwitches, String motorsOff, double[] position) implements Event {
     }
 
+    /**
+     * Pre-flight: a wear offset the program's DMC was compiled with (one event per tool offset the
+     * program uses that has a {@code wear.N}): where it was read, the offset, its X (as the program
+     * writes X: a diameter when {@code diameter}) and Z wear in {@code unit} (mm or counts).
+     */
+    record Wear(String file, int offset, double x, double z, String unit, boolean diameter) implements Event {
+    }
+
     /** The program (or one step of it) is on the controller and was read back identical. */
     record Downloaded(int lines, boolean verified) implements Event {
     }
@@ -47,6 +55,19 @@ public sealed interface Event {
 
     /** Step mode waits for Enter before running {@code line}. */
     record StepWait(int line, String number) implements Event {
+    }
+
+    /**
+     * The program stopped at line {@code line} (M00, or M01 with the optional stop switch on) and
+     * waits for the operator, the axes at rest: the block's comment ({@code (CHECK PART)}'s text,
+     * "" for none). Enter ({@code gcnc run}), the studio's Start or the machine's cycle start button
+     * goes on ({@link ProgramStopContinued}).
+     */
+    record ProgramStop(int line, String number, String comment) implements Event {
+    }
+
+    /** The program stop at {@code line} ended: the program goes on with the next block ({@code by}: "operator" or "cycle-start"). */
+    record ProgramStopContinued(int line, String by) implements Event {
     }
 
     /** Feed hold on ({@code held}) or off; the override in force. */

@@ -70,6 +70,49 @@ public final class GalilClient implements AutoCloseable {
         return commands;
     }
 
+    /**
+     * {@code EO 0} on a serial link: turns the port's echo off (COMALL EO: "This command is defaulted to
+     * EO1. Galil software upon connection will set EO0. The EO command is accepted over the serial port
+     * only"). Sent first, before any other command, so that it is the only command whose reply may carry
+     * the echo: the echo of {@code EO 0} and its CR (and an LF, should a unit add one) is taken off before
+     * the reply is read. Returns whether the controller echoed it; a {@code ?} is {@link Rejected}.
+     */
+    public boolean disableEcho() throws IOException {
+        String cmd = "EO 0";
+        String sent = cmd + "\r";
+        write(cmd, sent);
+        long deadline = System.currentTimeMillis() + timeoutMs;
+        int matched = 0;
+        while (matched < sent.length()) {
+            if (pending.length() == 0) {
+                fill(cmd, deadline);
+                continue;
+            }
+            if (pending.charAt(0) != sent.charAt(matched)) {
+                if (matched == 0) {
+                    break; // no echo: what came is the reply
+                }
+                throw new LinkFault(LinkFault.Kind.GARBAGE, cmd, "'" + printable(sent.substring(0, matched))
+                        + printable(pending.toString()) + "' where the echo of EO 0 or its reply belongs");
+            }
+            pending.deleteCharAt(0);
+            matched++;
+        }
+        if (matched == sent.length()) {
+            while (pending.length() == 0) {
+                fill(cmd, deadline);
+            }
+            if (pending.charAt(0) == '\n') {
+                pending.deleteCharAt(0);
+            }
+        }
+        Reply r = readReply(cmd, false, deadline);
+        if (!r.ok()) {
+            throw new Rejected(cmd);
+        }
+        return matched == sent.length();
+    }
+
     /** Sends a command that returns no data; its reply must be {@code :} or {@code ?} alone. */
     public Reply command(String command) throws IOException {
         return exchange(command, false);

@@ -10,6 +10,14 @@ public interface Link extends AutoCloseable {
     /** What the user named: {@code /dev/ttyUSB0}, {@code 10.0.0.5:23}. */
     String name();
 
+    /**
+     * Whether the link is a serial port (RS-232 or USB), which echoes until {@code EO 0} (COMALL EO);
+     * an Ethernet handle never echoes and takes {@code CF I} for its unsolicited messages.
+     */
+    default boolean serial() {
+        return false;
+    }
+
     void write(byte[] bytes) throws IOException;
 
     /**

@@ -66,6 +66,23 @@ public final class Operator {
         return stop;
     }
 
+    /** Forgets the Enters pressed before now: a program stop waits for one pressed after it began. */
+    public void forgetEnters() {
+        enters.clear();
+    }
+
+    /**
+     * Waits up to {@code ms} for Enter (a program stop's continue, which polls the controller between
+     * waits); false when none came, or for a stop.
+     */
+    public boolean enterWithin(long ms) throws InterruptedException {
+        if (stop) {
+            return false;
+        }
+        Boolean e = enters.poll(ms, TimeUnit.MILLISECONDS);
+        return e != null && e && !stop;
+    }
+
     /** Waits for Enter; false when the wait ended for a hold or a stop instead. */
     public boolean awaitEnter() throws InterruptedException {
         while (true) {

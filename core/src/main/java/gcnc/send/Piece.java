@@ -87,8 +87,8 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines, in
 
     /**
      * The vector sequence the piece's command {@code n} is in: the compiled instructions its segments
-     * stand for, in the controller's order (segment k of the sequence, {@code _CSS} = k, is
-     * {@code origins[k - 1]}), and whether command {@code n} is at or past its {@code BGS} (the
+     * stand for, in the controller's order (the segment executing while {@code _CSS} reads k is
+     * {@code origins[k]}: the counter starts at zero), and whether command {@code n} is at or past its {@code BGS} (the
      * motion has begun). Null when command {@code n} is in no vector sequence.
      */
     public Segments segmentsAt(int n, DmcProgram program) {
@@ -124,9 +124,20 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines, in
 
     /** The segments of one vector sequence of a piece: see {@link #segmentsAt}. */
     public record Segments(int[] origins, boolean begun) {
-        /** The compiled line of the segment executing when the controller's {@code _CSS} reads {@code css}. */
+        /**
+         * The compiled line of the segment executing when the controller's {@code _CSS} reads {@code css}:
+         * the segment counter starts at zero ("during the first segment ... _CS ... will be zero ... at
+         * the second segment ... _CS equals 1", DMC-40x0 User Manual p.86). After the sequence has ended
+         * the manuals do not say what it reads (the number of segments, or the last one's); either names
+         * the last segment here.
+         */
         public int executing(int css) {
-            return origins[Math.max(0, Math.min(origins.length - 1, css - 1))];
+            return origins[segment(css, origins.length)];
+        }
+
+        /** The index, from zero, of the segment of a sequence of {@code n} executing when {@code _CSS} reads {@code css}. */
+        public static int segment(int css, int n) {
+            return Math.max(0, Math.min(n - 1, css));
         }
     }
 

@@ -184,20 +184,34 @@ public final class ProgramForm implements Form {
         int code = c.stopCode();
         settled(piece, lastXq, c, progress, op);
         c.stopAll();
+        PositionText where = new PositionText(progress.program(), progress.blocks());
         throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "it ended during line "
-                + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at the end "
-                + Resume.counts(last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                + progress.executingLine() + " with the axes at " + where.at(progress.executingLine(), at) + ", not at the end "
+                + where.at(progress.executingLine(), last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
     }
 
     /**
      * The compiled instruction executing when thread 0 is at the controller's line {@code xq} and the
-     * sequence's segment {@code css} executes: the line's last command, except in a vector sequence, where
+     * sequence's segment counter {@code _CSS} reads {@code css} (from zero): the line's last command, except in a vector sequence, where
      * the thread waits at {@code AMS} while the segments run: there the segment executing names the
      * line, so that a blended sequence's blocks are followed one by one; before its {@code BGS} the
-     * sequence's first segment is next.
+     * sequence's first segment is next. -1 when the line is one of the program's routines (after its
+     * {@code EN}: #LIMSWI, #FAULT ...), where a fault sent the thread while the axes come to rest: no
+     * block executes there, and the last poll's block stands.
      */
+    /**
+     * The compiled command thread 0 stands at on the controller's line {@code xq}, in a routine after
+     * the program's EN too ({@code #PSTOP}: a program stop's wait), or -1 beyond the piece.
+     */
+    static int standing(Piece piece, int xq) {
+        return piece.originOf(piece.lastOf(xq));
+    }
+
     static int executing(Piece piece, int xq, int css, DmcProgram program) {
         int at = piece.lastOf(xq); // a packed line ends at its wait: that is where the thread stands
+        if (at >= routines(piece.commands())) {
+            return -1;
+        }
         Piece.Segments segments = piece.segmentsAt(at, program);
         if (segments == null || segments.origins().length == 0) {
             return piece.originOf(at);
@@ -210,7 +224,7 @@ public final class ProgramForm implements Form {
 
     /**
      * After a stop, where the machine came to rest: the axes ({@code TP}) on the path of the first
-     * vector sequence, from the line thread 0 was at when last polled ({@code lastXq}) on, whose
+     * vector sequence, from the line of a block thread 0 was at when last polled ({@code lastXq}) on, whose
      * segments they stand on, and in it the segment {@code _CSS} names (it keeps its number after
      * the sequence ended). Between polls the program may have run on into the next sequence, or a
      * blended sequence through several short segments, so the blocks completed and executing are
@@ -256,6 +270,7 @@ public final class ProgramForm implements Form {
         FeedHold hold = new FeedHold();
         StallWatch stall = new StallWatch(stallSeconds);
         int lastXq = -1;
+        int announced = -1; // the program stop announced last (its call's line): once each
         while (true) {
             if (op.stopped()) {
                 c.stopAll();
@@ -280,9 +295,25 @@ public final class ProgramForm implements Form {
                 endedAtItsEnd(piece, lastXq, c, progress, op);
                 return;
             }
-            lastXq = xq;
             double[] at = c.position();
-            progress.at(executing(piece, xq, where[1], progress.program()), at, op);
+            int origin = executing(piece, xq, where[1], progress.program());
+            if (progress.program().inProgramStop(standing(piece, xq))) {
+                // a program stop (M00; M01 with the switch on): the block of its call, at rest, waits for the operator
+                int call = progress.program().programStopFrom(progress.executingIndex());
+                if (call >= 0 && call != announced) {
+                    announced = call;
+                    progress.at(call, at, op);
+                    ProgramStopWait.await(c, progress, op, call, pollMs,
+                            () -> progress.program().inProgramStop(standing(piece, c.executing())));
+                }
+                Thread.sleep(pollMs);
+                continue;
+            }
+            if (origin >= 0) {
+                // a poll in a fault's routine leaves the line to search for the stop from (settled) at the block's
+                lastXq = xq;
+            }
+            progress.at(origin, at, op);
             // a hold, a dwell and a thread pass's wait for the spindle are not stalls
             Sequence s = progress.program().sequenceAt(progress.executingIndex());
             if (stall.stalled(at, s != null && !s.isThreadPass() && !hold.held() && op.override() > 0)) {

@@ -29,15 +29,26 @@ import java.util.TreeMap;
  * <li>the program's lines after that sequence (or from the resume point) to its end, unchanged.
  * </ol>
  * The axes must be at the point's start, or on the path of the sequence from there (they stopped
- * on it), or at its end; anywhere else gcnc does not invent a move through the part: E827.
+ * on it), or at its end; anywhere else gcnc does not invent a move through the part: E827, whose
+ * advice, in program terms, retracts X clear of the part before any Z move.
  */
 public final class Resume {
     private final DmcProgram program;
+    private final PositionText where;
     private final double tolerance;
 
-    /** @param tolerance how far (counts) the axes may be from the path and still be on it */
+    /** A resume whose refusals give positions in Galil counts alone (no program frames). */
     public Resume(DmcProgram program, double tolerance) {
+        this(program, BlockTable.none(), tolerance);
+    }
+
+    /**
+     * @param blocks    the checker's frame at each line: refusals give positions in program terms
+     * @param tolerance how far (counts) the axes may be from the path and still be on it
+     */
+    public Resume(DmcProgram program, BlockTable blocks, double tolerance) {
         this.program = program;
+        this.where = new PositionText(program, blocks);
         this.tolerance = tolerance;
     }
 
@@ -57,7 +68,8 @@ public final class Resume {
             if (near(axes, start)) {
                 return build(first, first, null);
             }
-            throw fault(at, away(axes, start));
+            throw fault(at, "the axes are at " + where.at(at.line(), axes) + " and the block starts at "
+                    + where.at(at.line(), start) + ": " + wayTo(at.line(), first, axes, start) + " and resume again");
         }
         Sequence s = m.sequence();
         double[] start = m.start();
@@ -70,8 +82,8 @@ public final class Resume {
             return build(s.last() + 1, s.last() + 1, null);
         }
         if (s.isThreadPass()) {
-            throw fault(at, "a thread pass cannot be entered part way (the spindle and Z are geared at its start): bring"
-                    + " the axes to " + counts(start) + " and resume at " + at.line());
+            throw fault(at, "a thread pass cannot be entered part way (the spindle and Z are geared at its start): "
+                    + wayTo(at.line(), s.first(), axes, start) + " and resume at " + at.line());
         }
         // inside the sequence: from the piece the axes stand at the start of, or on, from this motion on
         for (int k = m.from(); k < s.pieces().size(); k++) {
@@ -83,8 +95,78 @@ public final class Resume {
                 return build(s.last() + 1, s.first(), replan(s, k, true, axes));
             }
         }
-        throw fault(at, "the axes are at " + counts(axes) + ", not on the path of line " + at.line() + " (" + counts(start)
-                + " to " + counts(s.end()) + "): jog them to " + counts(start) + " and resume again");
+        throw fault(at, "the axes are at " + where.at(at.line(), axes) + ", not on the path of line " + at.line() + " ("
+                + where.at(at.line(), start) + " to " + where.at(at.line(), s.end()) + "): "
+                + wayTo(at.line(), s.isThreadPass() ? s.first() : s.pieces().get(m.from()).line(), axes, start)
+                + " and resume again");
+    }
+
+    /**
+     * The safe way from {@code axes} to {@code start}, the start of G-code line {@code line} whose
+     * motion is compiled line {@code index}: never straight, as that can cut through the part; X
+     * away from the part first, then Z, then X (docs/run.md, "Resume"). The clear X is where the
+     * tool came in: the end of its first motion after its {@code TOOL=} (the approach the simulator
+     * checked), or, for the block that makes that motion, its own start (where the tool came from).
+     * The part is on the side the tool went to next from there: toward the centre line for a turning
+     * tool, so away is outward; outward for a boring bar, so away is toward the centre line. Axes
+     * already farther away than the clear X stay where they are.
+     */
+    private String wayTo(int line, int index, double[] axes, double[] start) {
+        int tool = -1; // the TOOL= before the block, and the next one after it
+        int next = program.size();
+        for (int i = 0; i < program.size(); i++) {
+            if (program.command(i) instanceof Command.ToolNumber) {
+                if (i < index) {
+                    tool = i;
+                } else {
+                    next = i;
+                    break;
+                }
+            }
+        }
+        // where the tool went from its TOOL= to the next (the end of each motion, and its compiled line)
+        List<double[]> ends = new ArrayList<>();
+        List<Integer> lines = new ArrayList<>();
+        for (Sequence q : program.sequences()) {
+            if (q.first() <= tool) {
+                continue;
+            }
+            if (q.first() > next) {
+                break;
+            }
+            for (Sequence.Piece p : q.pieces()) {
+                ends.add(p.to());
+                lines.add(p.line());
+            }
+            if (q.isThreadPass()) {
+                ends.add(q.end());
+                lines.add(q.first());
+            }
+        }
+        boolean approaching = ends.isEmpty() || lines.get(0) >= index; // the block makes the tool's first motion
+        double[] clear = approaching ? start : ends.get(0);
+        double cx = Math.abs(x(line, clear));
+        boolean outward = true;
+        for (int k = approaching ? 0 : 1; k < ends.size(); k++) {
+            double[] e = program.plane().machine(ends.get(k));
+            if (Math.abs(e[0] - program.plane().machine(clear)[0]) > tolerance) {
+                outward = Math.abs(x(line, ends.get(k))) < cx; // the tool went in toward the centre line: the part is inside
+                break;
+            }
+        }
+        double[] a = program.plane().machine(axes);
+        double ax = Math.abs(x(line, axes));
+        double retract = outward == ax > cx ? a[0] : program.plane().machine(clear)[0];
+        double[] out = program.plane().galil(retract, a[1]);
+        double[] over = program.plane().galil(retract, program.plane().machine(start)[1]);
+        return "move X away from the part first, to " + where.at(line, out) + ", then Z, to " + where.at(line, over)
+                + ", then X, to " + where.at(line, start);
+    }
+
+    /** The X of {@code galil} as line {@code line} writes it, or its machine counts without a frame. */
+    private double x(int line, double[] galil) {
+        double[] p = where.program(line, galil);
+        return p == null ? program.plane().machine(galil)[0] : p[0];
     }
 
     /** Where the axes are when program line {@code index} starts. */
@@ -212,20 +294,28 @@ public final class Resume {
                 cursor = p.to();
             }
         }
-        // the path already run: the spindle changes on the way (AV n, then the change) before it have happened
+        // the path already run: the spindle changes on the way (AV n, then the change) before it have
+        // happened. AV is relative ("from the start of a coordinated move sequence or from the last AV
+        // command", command reference AV): each trip point is the sum of the AVs so far; the first one
+        // kept is written from the new sequence's start, the later ones as they were
         double run = s.lengthBefore(k) + (partial ? along(pieces.get(k), axes) : 0);
         List<Integer> passed = new ArrayList<>();
         boolean begun = false;
         boolean skip = false;
+        long trip = 0; // the trip point of the AV, counts from the original sequence's start
+        double from = run; // where the next AV kept measures from, in the original's counts
         for (int i = pieces.get(pieces.size() - 1).line() + 1; i <= s.last(); i++) {
             Command c = program.command(i);
             if (c instanceof Command.BeginSequence) {
                 begun = true;
             }
             if (c instanceof Command.AfterVector av && begun) {
-                skip = av.counts() <= run;
+                trip += av.counts();
+                skip = trip <= run;
                 if (!skip) {
-                    b.add(new Command.AfterVector(Math.round(av.counts() - run)), i);
+                    long n = Math.round(trip - from);
+                    b.add(new Command.AfterVector(n), i);
+                    from += n; // the controller's trip point, a fraction of a count off the original's at most
                 }
                 continue;
             }
@@ -287,15 +377,6 @@ public final class Resume {
 
     private boolean near(double[] a, double[] b) {
         return Math.hypot(a[0] - b[0], a[1] - b[1]) <= tolerance;
-    }
-
-    private static String away(double[] axes, double[] start) {
-        return "the axes are at " + counts(axes) + " and the block starts at " + counts(start)
-                + ": jog them there and resume again";
-    }
-
-    static String counts(double[] p) {
-        return Math.round(p[0]) + "," + Math.round(p[1]);
     }
 
     private static RunFault fault(ResumePoint at, String why) {

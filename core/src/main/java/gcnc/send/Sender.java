@@ -155,13 +155,12 @@ public final class Sender {
         // the model's memory (tables/galil_models.csv, the lead's GalilModel) with the firmware the controller reported
         if (model.newFirmware() && !f.firmware12a()) {
             // the profile counted on firmware 1.2a's memory; this controller runs older firmware
-            model = new gcnc.machine.GalilModel(model.name(), model.family(), model.axes(), model.digitalOutputs(),
-                    model.analogOutputs(), model.sampleMicros(), model.limits(), model.firmware12a(), false, model.row());
+            model = model.withOlderFirmware();
         }
         int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
         Piece piece = options.resumeAt() == null ? Piece.whole(program)
-                : new Resume(program, tolerance()).plan(options.resumeAt(), f.position());
+                : new Resume(program, blocks, tolerance()).plan(options.resumeAt(), f.position());
         int needLines = form.linesNeeded(piece, program, options.step());
         int needLabels = program.labels();
         List<String> vars = program.variables();
@@ -169,6 +168,11 @@ public final class Sender {
         events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), needLabels,
                 f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
                 f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
+        // the wear the DMC was compiled with: the operator sees which file's wear moves the tools (docs/run.md)
+        for (int n : blocks.toolOffsets()) {
+            profile.wear().of(n).ifPresent(w -> events.accept(new Event.Wear(w.file(), n, w.x(), w.z(),
+                    profile.wear().unit(), profile.diameterX())));
+        }
         if (needLines > programLines) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", programLines
                     + " (" + f.revision() + ")", form.name().equals("program") ? "run it in the stream form (--form stream)"
@@ -182,10 +186,6 @@ public final class Sender {
             throw new RunFault(Code.E819_CAPACITY, 0, false, vars.size() + " variables " + vars,
                     f.variablesLeft() + " free", "clear the controller's variables (reset) and run again");
         }
-        if (f.vectorSlots() >= 0 && needSlots > f.vectorSlots()) {
-            throw new RunFault(Code.E819_CAPACITY, 0, false, needSlots + " vector buffer slots", f.vectorSlots()
-                    + " free (_LMS)", "clear the sequence (CS S) or reset the controller");
-        }
         if (!f.pendingError().isEmpty()) {
             events.accept(new Event.Message("the controller had an error pending, read and cleared with TC1: "
                     + f.pendingError()));
@@ -198,6 +198,17 @@ public final class Sender {
         if (f.moving()) {
             throw new RunFault(Code.E825_NOT_READY, 0, false, "a vector sequence is moving (_BGS = 1): stop it first");
         }
+        // nothing moves: segments an interrupted sequence left in the buffer would run first, from the new
+        // origin (COMALL CS); CS S removes them, and the buffer must then read empty (_LMS = the model's buffer)
+        int free = c.clearSequence();
+        int whole = (int) model.range(gcnc.machine.GalilModel.Limit.BUFFER_SEGMENTS).max();
+        if (free != whole) {
+            throw new RunFault(Code.E831_BUFFER_NOT_EMPTY, 0, false, Integer.toString(free), Integer.toString(whole));
+        }
+        if (needSlots > free) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, needSlots + " vector buffer slots", free
+                    + " free (_LMS)", "a controller with a larger buffer");
+        }
         if (!f.limits().isEmpty()) {
             throw new RunFault(Code.E825_NOT_READY, 0, false, f.limits() + " is active: move the axis off the switch");
         }
@@ -209,7 +220,10 @@ public final class Sender {
         if (options.resumeAt() == null) {
             double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();
             if (Math.hypot(f.position()[0] - home[0], f.position()[1] - home[1]) > tolerance()) {
-                throw new RunFault(Code.E826_NOT_AT_START, 0, false, Resume.counts(f.position()), Resume.counts(home));
+                // in the terms of the first motion's block (the frame the home was verified in), then the counts
+                int line = program.sequences().isEmpty() ? 0 : program.sourceLine(program.sequences().get(0).first());
+                PositionText where = new PositionText(program, blocks);
+                throw new RunFault(Code.E826_NOT_AT_START, 0, false, where.at(line, f.position()), where.at(line, home));
             }
         }
         return piece;

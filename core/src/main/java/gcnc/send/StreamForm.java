@@ -18,7 +18,8 @@ import java.util.Map;
  * command line, one at a time, each reply checked. Segments go into the vector buffer only while it
  * has room ({@code _LMS}, one slot kept for {@code VE}), so no more are in flight than it holds; the
  * waits the stream holds are the host's ({@link StreamRole#HOST}): {@code AMS} polls {@code _BGS},
- * {@code WT} waits on the host's clock, {@code AV} polls {@code _AVS}, {@code JS #L} runs the resident
+ * {@code WT} waits on the host's clock, {@code AV} polls {@code _AVS} (from the sequence's start, where
+ * {@code AV} is from the last {@code AV}: the host adds them up), {@code JS #L} runs the resident
  * routine in thread 0 and polls {@code _XQ0}. While a sequence runs, the segment executing
  * ({@code _CSS}) names the G-code block, as in the program form.
  *
@@ -181,13 +182,26 @@ public final class StreamForm implements Form {
         private final Controller c;
         private final Progress progress;
         private final Operator op;
-        /** The compiled lines of the segments of the sequence being sent, in order: segment k is {@code segments.get(k - 1)}. */
+        /** The compiled lines of the segments of the sequence being sent, in order: {@code _CSS} = k is {@code segments.get(k)}. */
         private final List<Integer> segments = new ArrayList<>();
         /** The last segment's end of the sequence being sent (counts, Galil plane), from the compiled program. */
         private double[] end;
         private final FeedHold hold = new FeedHold();
         /** Vector buffer slots free as last counted; 0 = ask the controller. */
         private int free;
+        /**
+         * The trip point of the last AV of the sequence running, counts of path from its start: AV is
+         * relative (command reference AV, "from the start of a coordinated move sequence or from the
+         * last AV command") while {@code _AVS}, which the host polls, is "the vector distance from the
+         * start of the sequence", so the host waits for the sum of the sequence's AVs so far.
+         */
+        private long tripped;
+        /**
+         * Whether the sequence being sent was started ({@code BGS}) before its {@code VE}: it is fed while
+         * it runs, and must not end before VE is sent (an empty buffer then is a starvation, E890).
+         */
+        private boolean feeding;
+        private boolean vectorEnded;
 
         Feed(Controller c, Progress progress, Operator op) {
             this.c = c;
@@ -215,6 +229,7 @@ public final class StreamForm implements Form {
                 // when the slots counted since the last answer run out
                 while (free < 2) {
                     free = (int) c.client().number("_LMS");
+                    starved(s);
                     if (free < 2) {
                         follow();
                         Thread.sleep(pollMs);
@@ -225,9 +240,16 @@ public final class StreamForm implements Form {
                 Sequence q = progress.program().sequenceAt(s.origin());
                 end = q == null ? end : q.end();
             }
+            if (cmd instanceof Command.VectorEnd) {
+                starved(s); // a fed sequence must still run when its VE comes
+                vectorEnded = true;
+            }
             c.require(gcnc.dmc.DmcPrinter.print(cmd));
             if (cmd instanceof Command.BeginSequence) {
                 progress.started();
+                tripped = 0;
+                feeding = !vectorEnded;
+                vectorEnded = false;
             }
             if (!progress.hasStarted() || !(cmd instanceof Command.BeginSequence)) {
                 progress.pointAt(s.origin());
@@ -256,14 +278,32 @@ public final class StreamForm implements Form {
                     Thread.sleep(Math.max(1, Math.min(pollMs, (until - System.nanoTime()) / 1_000_000L)));
                 }
             } else if (cmd instanceof Command.AfterVector av) {
-                while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < av.counts()) {
+                tripped += av.counts();
+                while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < tripped) {
                     follow();
                     Thread.sleep(pollMs);
                     operator();
                 }
+            } else if (cmd instanceof Command.Call call && call.label().equals(StreamSplit.BUFFER_WAIT)) {
+                // the program form's wait for room (JS #LMWAIT): the host polls _LMS itself, every pollMs,
+                // until the next batch and VE fit (gclib's vector example reads _LMS every 100 ms)
+                for (free = (int) c.client().number("_LMS"); free < StreamSplit.BUFFER_BATCH + 1;
+                     free = (int) c.client().number("_LMS")) {
+                    starved(s);
+                    follow();
+                    Thread.sleep(pollMs);
+                    operator();
+                }
+                starved(s);
             } else if (cmd instanceof Command.Call call) {
                 c.require("XQ #" + call.label() + ",0");
                 progress.started();
+                if (call.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                    // a program stop: the resident routine waits for gstop=0 or the cycle start input
+                    progress.at(s.origin(), c.position(), op);
+                    ProgramStopWait.await(c, progress, op, s.origin(), pollMs, () -> c.executing() >= 0);
+                    operator();
+                }
                 for (int xq = c.executing(); xq >= 0; xq = c.executing()) {
                     progress.at(s.origin(), c.position(), op);
                     Thread.sleep(pollMs);
@@ -277,12 +317,32 @@ public final class StreamForm implements Form {
             }
         }
 
+        /**
+         * A sequence fed while it runs that has ended before its VE was sent: the buffer ran dry, and
+         * the controller stopped the axes at the last segment's end (M13X8-74: "the controller will stop
+         * motion instantly at the last vector"). Never taken for a normal end: E890 at its segment.
+         */
+        private void starved(Sent s) throws IOException, RunFault {
+            if (!feeding || vectorEnded || c.client().number("_BGS") != 0) {
+                return;
+            }
+            double[] at = c.position();
+            int css = c.segment(); // the last segment executed (SegmentCount: one place for _CSS's base)
+            int k = Math.max(1, Math.min(segments.size(), css));
+            progress.at(segments.get(k - 1), at, op);
+            int code = c.stopCode();
+            feeding = false;
+            c.stopAll();
+            throw new RunFault(Code.E890_BUFFER_STARVED, progress.executingLine(), true, k, progress.executingLine(),
+                    code == 101 ? "" : " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+        }
+
         /** One poll while a sequence runs: the segment executing names the block; the axes where they are. */
         private double[] follow() throws IOException {
             double[] at = c.position();
             int css = c.segment();
             int origin = segments.isEmpty() ? progress.executingIndex()
-                    : segments.get(Math.max(0, Math.min(segments.size() - 1, css - 1)));
+                    : segments.get(Piece.Segments.segment(css, segments.size()));
             progress.at(origin, at, op);
             return at;
         }
@@ -297,14 +357,15 @@ public final class StreamForm implements Form {
                 progress.at(segments.get(segments.size() - 1), at, op);
                 return;
             }
-            // cut short: the segment it stopped in (_CSS keeps its number after the sequence ended) names the block
+            // cut short: the segment it stopped in (_CSS keeps its count after the sequence ended) names the block
             int css = c.segment();
-            progress.at(segments.get(Math.max(0, Math.min(segments.size() - 1, css - 1))), at, op);
+            progress.at(segments.get(Piece.Segments.segment(css, segments.size())), at, op);
             int code = c.stopCode();
             c.stopAll();
+            PositionText where = new PositionText(progress.program(), progress.blocks());
             throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the sequence ended during line "
-                    + progress.executingLine() + " with the axes at " + Resume.counts(at) + ", not at its end "
-                    + Resume.counts(end) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                    + progress.executingLine() + " with the axes at " + where.at(progress.executingLine(), at) + ", not at its end "
+                    + where.at(progress.executingLine(), end) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
         }
 
         /** The operator's stop, hold and override, between commands and polls. */

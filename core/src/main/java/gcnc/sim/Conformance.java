@@ -139,7 +139,7 @@ final class Conformance {
 
     private void mark(String code, int line, Point p) {
         if (path != null) {
-            path.mark(code, "line " + line, p.x(), p.z());
+            path.mark(code, "line " + line, line, p.x(), p.z());
         }
     }
 }

@@ -39,6 +39,13 @@ final class Controller {
         default void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
         }
 
+        /**
+         * A program stop ({@code JS #PSTOP}: M00, M01 with the switch on): the machine waits for the
+         * operator, at rest; the cycle time counts none of it.
+         */
+        default void programStop(int line) {
+        }
+
         /** The sequence that ran ends here (AMS), for the reason the planner recorded (the corner report). */
         default void stopped(gcnc.plan.Stop why, int line) {
         }
@@ -55,6 +62,12 @@ final class Controller {
     private double cursor1;
     private double cursor2;
     private List<Segment> pending = new ArrayList<>();
+    /** VE came for the segments pending (the whole sequence in the buffer before BGS). */
+    private boolean vectorEnded;
+    /** BGS came before VE: the segments after it join the running sequence until VE (COMALL VM). */
+    private boolean begun;
+    /** The begun sequence is fed while it runs: gcnc's wait for room (JS #LMWAIT) followed its BGS. */
+    private boolean fed;
     /**
      * The segments of the last sequence started (the list {@link #pending} was, swapped at BGS: no
      * copy), kept for the trip points after it, which {@link #measure} works out only when an AV asks.
@@ -67,7 +80,10 @@ final class Controller {
     /** How many of {@link #reached} (and {@link #reachedBy}) stand for the last sequence. */
     private int reachedCount;
     private final List<gcnc.dmc.Source> reachedBy = new ArrayList<>();
-    /** The AV trip point the commands after it wait for, counts; -1 when none (at rest after AMS). */
+    /**
+     * The AV trip point the commands after it wait for, counts of path from the sequence's start (the
+     * sum of its AVs so far); -1 when none (after BGS, before the first AV; at rest after AMS).
+     */
     private long avTrip = -1;
     private double speed;
     double acceleration;
@@ -159,6 +175,16 @@ final class Controller {
         return !pending.isEmpty();
     }
 
+    /**
+     * Replays a sequence started by BGS whose VE has not come, as it stands: where the program
+     * gives no more (a hand-written BGS without VE; gcnc writes VE with a fed sequence's last segment).
+     */
+    void startBegun() {
+        if (begun) {
+            startSequence();
+        }
+    }
+
     void dropPending() {
         pending.clear();
     }
@@ -180,6 +206,9 @@ final class Controller {
     void run(Instruction i) {
         this.instruction = i;
         this.line = i.source().line();
+        if (begun && !fed && !(i.command() instanceof Command.Call c && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT))) {
+            handWrittenBegin(); // any command but the wait for room after a BGS before VE: it started there
+        }
         i.command().accept(step);
     }
 
@@ -286,18 +315,35 @@ final class Controller {
         }
 
         public Void vectorEnd(Command.VectorEnd c) {
-            afterEnd();
+            if (!afterEnd()) {
+                if (begun) {
+                    startSequence(); // a sequence fed while it ran: its last segment came before this VE
+                } else {
+                    vectorEnded = true;
+                }
+            }
             return null;
         }
 
         public Void beginSequence(Command.BeginSequence c) {
             if (!afterEnd()) {
-                Controller.this.startSequence();
+                if (vectorEnded || pending.isEmpty()) {
+                    Controller.this.startSequence();
+                } else {
+                    // BGS after the first fill, VE after the last segment (a sequence longer than the
+                    // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
+                    // room that gcnc writes right after such a BGS (JS #LMWAIT) says it is one
+                    begun = true;
+                    fed = false;
+                }
             }
             return null;
         }
 
         public Void awaitSequence(Command.AwaitSequence c) {
+            if (begun) {
+                startSequence(); // (a hand-written BGS without VE: replayed as it stands)
+            }
             if (!afterEnd() && c.why() != null) {
                 out.stopped(c.why(), line);
             }
@@ -306,15 +352,19 @@ final class Controller {
         }
 
         public Void afterVector(Command.AfterVector c) {
-            // the sequence has been replayed whole at BGS: what follows acts on the state after it; the
-            // trip point must be on its path, or the controller waits there for ever
+            // the sequence has been replayed whole at BGS: what follows acts on the state after it. AV is
+            // relative (command reference AV: "from the start of a coordinated move sequence or from the
+            // last AV command"), so its trip point is the last one's plus n; it must be on the path: what
+            // the controller does at an AV it never reaches the reference does not say, so the safe
+            // reading is that it waits there for ever (docs/simulator.md)
             if (!afterEnd()) {
                 measure();
                 double total = reachedCount == 0 ? 0 : reached[reachedCount - 1];
-                if (c.counts() > total + 1) {
-                    out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), Math.round(total));
+                long trip = Math.max(0, avTrip) + c.counts();
+                if (trip > total + 1) {
+                    out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), trip, Math.round(total));
                 }
-                avTrip = c.counts();
+                avTrip = trip;
             }
             return null;
         }
@@ -452,9 +502,23 @@ final class Controller {
             return null;
         }
 
-        /** Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel takes them. */
+        /**
+         * Gains of zero on an axis that moves the tool would leave it uncontrolled: only the spindle's channel
+         * takes them. IT 1 is no filtering, what the replay models; a smaller value (smoothing, which "also
+         * filters the individual axes during Vector Mode" and "results in longer motion time", command
+         * reference IT) is not simulated yet: E336.
+         */
         public Void axisSetting(Command.AxisSetting c) {
-            if (!afterEnd() && c.channel() != spindleChannel) {
+            if (afterEnd()) {
+                return null;
+            }
+            if (c.setting() == Command.Setting.IT) {
+                if (c.value().value() != 1) {
+                    out.report(Code.E336_SIM_SMOOTHING, line, text());
+                }
+                return null;
+            }
+            if (c.channel() != spindleChannel) {
                 out.report(Code.E301_SIM_BAD_ARGUMENTS, line, c.setting().name(), text());
             }
             return null;
@@ -482,7 +546,12 @@ final class Controller {
 
         /** A call of a wait routine (spindle at speed, turret in position): the replay's machine answers at once. */
         public Void call(Command.Call c) {
-            afterEnd();
+            if (begun && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT)) {
+                fed = true;
+            }
+            if (!afterEnd() && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+                out.programStop(line);
+            }
             return null;
         }
 
@@ -561,7 +630,20 @@ final class Controller {
         cursor2 = e2;
     }
 
+    /**
+     * A BGS before VE that no wait for room followed (a hand-written program, the thesis's object
+     * program: BGS after each segment and no VE) starts its sequence as it stood at the BGS, before
+     * the next command runs, as the replay always ran it.
+     */
+    private void handWrittenBegin() {
+        if (begun && !fed) {
+            startSequence();
+        }
+    }
+
     private void startSequence() {
+        begun = false;
+        vectorEnded = false;
         if (pending.isEmpty()) {
             return;
         }

@@ -93,11 +93,11 @@ public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack
     }
 
     /**
-     * A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12"), the point,
-     * and the tool's outline (insert, holder; mm, absolute) where its tip was then: empty for a
-     * tool without an outline.
+     * A finding at a place: its code (E305 ...), the block it is on ("N110", "line 12"), the G-code
+     * line its diagnostic is reported at (0: none known), the point, and the tool's outline
+     * (insert, holder; mm, absolute) where its tip was then: empty for a tool without an outline.
      */
-    public record Mark(String code, String block, double z, double r, List<Shape> tool) {
+    public record Mark(String code, String block, int line, double z, double r, List<Shape> tool) {
         public Mark {
             tool = List.copyOf(tool);
         }

@@ -69,6 +69,13 @@ final class MotionChecks {
         this.kx = profile.x().countsPerMm();
         this.kz = profile.z().countsPerMm();
         StockSize s = options.noBlank() ? null : options.stock().orElse(machine.stock().orElse(null));
+        java.util.Optional<StockSize.Beyond> beyond = s == null ? java.util.Optional.empty() : s.beyond(profile);
+        if (beyond.isPresent()) {
+            // a stock header's or NO STOCK's size the machine cannot hold: said at the program's first
+            // line (where the header is), and the run goes on without a blank rather than model it
+            out.report(beyond.get().code(), 1, StockSize.shown(beyond.get().value()), mm(beyond.get().limit()), profile.name());
+            s = null;
+        }
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
             stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);
@@ -209,6 +216,13 @@ final class MotionChecks {
         reach = reach(toolShape);
         outlines();
     }
+
+    /** A program stop: counted, no time (the operator's wait is not the machine's). */
+    void programStop() {
+        programStops++;
+    }
+
+    private int programStops;
 
     void dwell(double s) {
         seconds += s;
@@ -578,7 +592,7 @@ final class MotionChecks {
         out.report(code, line, args);
         if (path != null) {
             String block = frame != null && !frame.sequence().isEmpty() ? frame.sequence() : "line " + line;
-            path.mark(code.id(), block, p[0], p[1], toolShape, side, tip);
+            path.mark(code.id(), block, line, p[0], p[1], toolShape, side, tip);
         }
     }
 
@@ -649,6 +663,6 @@ final class MotionChecks {
         return new SimReport(sequences, segments, findings,
                 moved ? xMin / profile.x().countsPerMm() : Double.NaN, moved ? xMax / profile.x().countsPerMm() : Double.NaN,
                 moved ? zMin / profile.z().countsPerMm() : Double.NaN, moved ? zMax / profile.z().countsPerMm() : Double.NaN,
-                seconds, exactStopSeconds, d, terms.envelope(), terms.feedEnvelope(), terms.facts(machine, blank));
+                seconds, exactStopSeconds, d, terms.envelope(), terms.feedEnvelope(), terms.facts(machine, blank)).withProgramStops(programStops);
     }
 }

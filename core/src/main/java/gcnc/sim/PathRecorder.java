@@ -37,17 +37,17 @@ final class PathRecorder {
         moves.add(new Drawing.Move(rapid, z, r, line, file));
     }
 
-    /** A finding on a block ("N110", "line 12") at machine counts (x, z), drawn without the tool. */
-    void mark(String code, String block, double x, double z) {
-        mark(code, block, x, z, null, 1, null);
+    /** A finding on a block ("N110", "line 12"; reported at G-code {@code line}) at machine counts (x, z), drawn without the tool. */
+    void mark(String code, String block, int line, double x, double z) {
+        mark(code, block, line, x, z, null, 1, null);
     }
 
     /**
-     * A finding on a block ("N110", "line 12") at machine counts (x, z), with the tool's outline
+     * A finding on a block ("N110", "line 12"; reported at G-code {@code line}) at machine counts (x, z), with the tool's outline
      * (insert and holder, relative to its tip; mirrored for a tool on the -X side) placed at
      * {@code tip} (machine counts {x, z}; null: no outline).
      */
-    void mark(String code, String block, double x, double z, SimMachine.ToolShape tool, int side, double[] tip) {
+    void mark(String code, String block, int line, double x, double z, SimMachine.ToolShape tool, int side, double[] tip) {
         List<Shape> outline = new ArrayList<>();
         if (tool != null && tip != null) {
             double tz = tip[1] / kz;
@@ -62,7 +62,7 @@ final class PathRecorder {
                 outline.add(new Shape(oz, or));
             }
         }
-        marks.add(new Drawing.Mark(code, block, z / kz, (x - centre) / kx, outline));
+        marks.add(new Drawing.Mark(code, block, line, z / kz, (x - centre) / kx, outline));
     }
 
     /** The program frame of the first feed move (else of the first move): the grid of the drawing is in its coordinates. */

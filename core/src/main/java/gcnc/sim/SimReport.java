@@ -26,11 +26,13 @@ package gcnc.sim;
  *                      docs/galil.md, "The corner report")
  * @param stops         how many sequences ended for each reason the planner recorded ({@code gcnc.plan.Stop}'s
  *                      keys, in that enum's order); empty for a DMC read back, which does not carry them
+ * @param programStops  the program stops replayed (M00, M01 with the optional stop switch on): each
+ *                      waits for the operator, a wait {@link #cycleSeconds} does not count
  */
 public record SimReport(int sequences, int segments, int findings, double xMinMm, double xMaxMm, double zMinMm,
                         double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
                         ProgramEnvelope program, ProgramEnvelope feeds, SetupFacts setup, java.util.List<Corner> corners,
-                        java.util.Map<String, Integer> stops) {
+                        java.util.Map<String, Integer> stops, int programStops) {
     public SimReport {
         corners = java.util.List.copyOf(corners);
         stops = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(stops));
@@ -41,18 +43,25 @@ public record SimReport(int sequences, int segments, int findings, double xMinMm
                      double zMaxMm, double cycleSeconds, double exactStopSeconds, Drawing drawing,
                      ProgramEnvelope program, ProgramEnvelope feeds, SetupFacts setup) {
         this(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds, exactStopSeconds, drawing,
-                program, feeds, setup, java.util.List.of(), java.util.Map.of());
+                program, feeds, setup, java.util.List.of(), java.util.Map.of(), 0);
     }
 
     /** The same report with these corners (the {@code n} slowest of them, for {@code --corners n}). */
     public SimReport withCorners(java.util.List<Corner> slowest, int n) {
         return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
-                exactStopSeconds, drawing, program, feeds, setup, slowest.subList(0, Math.min(n, slowest.size())), stops);
+                exactStopSeconds, drawing, program, feeds, setup, slowest.subList(0, Math.min(n, slowest.size())), stops,
+                programStops);
     }
 
     /** The same report with these counts of stops by reason. */
     public SimReport withStops(java.util.Map<String, Integer> counts) {
         return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
-                exactStopSeconds, drawing, program, feeds, setup, corners, counts);
+                exactStopSeconds, drawing, program, feeds, setup, corners, counts, programStops);
+    }
+
+    /** The same report with this count of program stops. */
+    public SimReport withProgramStops(int n) {
+        return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
+                exactStopSeconds, drawing, program, feeds, setup, corners, stops, n);
     }
 }

@@ -124,7 +124,11 @@ public final class Simulator {
         dmc.checkedByCaller = true;
         run(emitted);
         dmc.checkedByCaller = false;
-        closeSequences(intended.line());
+        if (settled) {
+            // (while the planner holds pieces, a sequence longer than its window may be open here: its
+            // VE comes with a later block)
+            closeSequences(intended.line());
+        }
         while (settled && !expected.isEmpty()) {
             skip(expected.poll());
         }
@@ -253,6 +257,7 @@ public final class Simulator {
     }
 
     private void closeSequences(int line) {
+        dmc.startBegun(); // a BGS whose VE never came (a hand-written program): it runs as it stands
         if (dmc.hasPending()) {
             report(Code.E314_SIM_SEQUENCE_NOT_STARTED, line);
             dmc.dropPending();
@@ -365,6 +370,11 @@ public final class Simulator {
         @Override
         public void dwell(double seconds, int line) {
             checks.dwell(seconds);
+        }
+
+        @Override
+        public void programStop(int line) {
+            checks.programStop();
         }
 
         @Override

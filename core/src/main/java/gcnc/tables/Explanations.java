@@ -92,13 +92,14 @@ public final class Explanations {
         for (int n : new int[] {243, 244, 245}) {
             m.put(Code.byNumber(n), form);
         }
-        m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table); // a profile's key (plan.on_the_fly), numbered with the planner's codes
+        m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table);
+        m.put(Code.E850_CYCLE_START_INPUT, table); // a profile's key (stop.cycle_start), numbered with the program stop's codes // a profile's key (plan.on_the_fly), numbered with the planner's codes
         String files = "the command line's files (reading, writing, links), not the program's text";
         for (int n : new int[] {500, 501, 502, 510}) {
             m.put(Code.byNumber(n), files);
         }
         String dmc = "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)";
-        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335}) {
+        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335, 336, 864}) {
             m.put(Code.byNumber(n), dmc);
         }
         String second = "the backend's or the simulator's guard behind a check that comes first for any program"
@@ -112,8 +113,16 @@ public final class Explanations {
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         for (Code c : Code.values()) {
-            if (c.number() >= 815 && c.number() < 830) {
+            // E830-E849: the probe and the controller the profile names; E890-E899: feeding a running sequence
+            if (c.number() >= 815 && c.number() < 850 || c.number() >= 890 && c.number() < 900 || c == Code.E865_PORT_NOT_A_DEVICE) {
                 m.put(c, link);
+            }
+        }
+        String testCut = "the test cut (gcnc offsets wear): its arguments, the wear limits and the offsets file,"
+                + " not the program's text (docs/command-line.md)";
+        for (Code c : Code.values()) {
+            if (c.number() >= 870 && c.number() < 880) {
+                m.put(c, testCut);
             }
         }
         return java.util.Collections.unmodifiableMap(m);

@@ -37,7 +37,7 @@ public class CompileTask extends GcncTask {
         Files.createDirectories(dmc.getParent());
         FormOutputs outputs;
         try {
-            outputs = FormOutputs.open(program.file().toPath(), dmc, true);
+            outputs = FormOutputs.open(program.file().toPath(), dmc, true, gcnc.output.AtomicOutput.Name.DERIVED);
         } catch (DmcOutputs.Failed e) {
             throw new IOException("cannot write " + e.path() + ": " + e.problem().getMessage(), e.problem());
         }

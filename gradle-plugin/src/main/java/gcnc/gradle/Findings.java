@@ -13,8 +13,6 @@ import gcnc.tables.ErrorMessages;
 import gcnc.tables.TableException;
 import java.io.File;
 import java.io.IOException;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -62,7 +60,7 @@ final class Findings {
         if (printed.add(line)) {
             logger.quiet(line);
         }
-        if (d.severity() == Severity.ERROR) {
+        if (d.severity() == Severity.ERROR && !d.waived()) {
             filesWithErrors.add(file);
         }
         all.add(Finding.of(file, d, messages));
@@ -82,8 +80,14 @@ final class Findings {
         return count(Severity.ERROR);
     }
 
+    /** Warnings and notes (not waived). */
     long warnings() {
-        return all.size() - errors();
+        return all.size() - errors() - waived();
+    }
+
+    /** Findings the programs' waivers accept ({@code (GCNC ALLOW E642: reason)}): reported, counted apart. */
+    long waived() {
+        return all.stream().filter(f -> f.diagnostic().waived()).count();
     }
 
     int filesWithErrors() {
@@ -91,7 +95,7 @@ final class Findings {
     }
 
     private long count(Severity s) {
-        return all.stream().filter(f -> f.diagnostic().severity() == s).count();
+        return all.stream().filter(f -> f.diagnostic().severity() == s && !f.diagnostic().waived()).count();
     }
 
     /** Both reports, findings sorted by file and place. */
@@ -99,12 +103,11 @@ final class Findings {
         List<Finding> sorted = new ArrayList<>(all);
         sorted.sort(Comparator.comparing(Finding::file).thenComparing(Finding::diagnostic));
         Files.createDirectories(json.getParentFile().toPath());
-        try (Writer w = Files.newBufferedWriter(json.toPath(), StandardCharsets.UTF_8)) {
-            JsonRenderer.write(sorted, version(), w);
-        }
-        try (Writer w = Files.newBufferedWriter(sarif.toPath(), StandardCharsets.UTF_8)) {
-            SarifRenderer.write(sorted, rules(), version(), w);
-        }
+        // names the plugin chose in the build folder: never written through a link planted there (E510)
+        gcnc.output.AtomicOutput.write(json.toPath(), gcnc.output.AtomicOutput.Name.DERIVED,
+                w -> JsonRenderer.write(sorted, version(), w));
+        gcnc.output.AtomicOutput.write(sarif.toPath(), gcnc.output.AtomicOutput.Name.DERIVED,
+                w -> SarifRenderer.write(sorted, rules(), version(), w));
     }
 
     /** The HTML report a person reads (what a failure links to), findings sorted by file and place. */

@@ -151,8 +151,9 @@ public abstract class GcncTask extends DefaultTask {
             getLogger().warn("{} (ignoreFailures = true: the build goes on)", failed);
             return;
         }
-        getLogger().lifecycle("{}: {} checked, {}; reports in {}", getName(), plural(programs.size(), "program"),
-                findings.warnings() == 0 ? "no findings" : plural(findings.warnings(), "warning"), getReportsDir());
+        getLogger().lifecycle("{}: {} checked, {}{}; reports in {}", getName(), plural(programs.size(), "program"),
+                findings.warnings() == 0 ? "no findings" : plural(findings.warnings(), "warning"),
+                findings.waived() == 0 ? "" : ", " + findings.waived() + " waived", getReportsDir());
     }
 
     /** Before the first program: e.g. clear the outputs of an earlier run. */

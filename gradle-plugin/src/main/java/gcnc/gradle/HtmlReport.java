@@ -3,8 +3,6 @@ package gcnc.gradle;
 import gcnc.diag.Finding;
 import gcnc.diag.Severity;
 import java.io.IOException;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -28,16 +26,18 @@ final class HtmlReport {
         for (Finding f : sorted) {
             byFile.computeIfAbsent(f.file(), k -> new ArrayList<>()).add(f);
         }
-        long errors = sorted.stream().filter(f -> f.diagnostic().severity() == Severity.ERROR).count();
+        long errors = sorted.stream().filter(f -> f.diagnostic().severity() == Severity.ERROR && !f.diagnostic().waived()).count();
+        long waived = sorted.stream().filter(f -> f.diagnostic().waived()).count();
         Files.createDirectories(out.getParent());
-        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+        // a name the plugin chose in the build folder: never written through a link planted there (E510)
+        gcnc.output.AtomicOutput.write(out, gcnc.output.AtomicOutput.Name.DERIVED, w -> {
             w.write("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>gcnc " + esc(task)
                     + "</title>\n<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
                     + "td,th{border:1px solid #ccc;padding:2px 8px;text-align:left;vertical-align:top}"
-                    + "code{font-family:monospace;white-space:pre}.error{color:#b00}.warning{color:#a60}</style></head>\n<body>\n");
+                    + "code{font-family:monospace;white-space:pre}.error{color:#b00}.warning{color:#a60}.waived{color:#666}</style></head>\n<body>\n");
             w.write("<h1>gcnc " + esc(task) + "</h1>\n<p>" + GcncTask.plural(programs.size(), "program") + ", "
-                    + GcncTask.plural(errors, "error") + ", " + GcncTask.plural(sorted.size() - errors, "warning")
-                    + " (gcnc " + esc(version) + ")</p>\n");
+                    + GcncTask.plural(errors, "error") + ", " + GcncTask.plural(sorted.size() - errors - waived, "warning")
+                    + (waived == 0 ? "" : ", " + waived + " waived") + " (gcnc " + esc(version) + ")</p>\n");
             for (GcncTask.Program p : programs) {
                 List<Finding> found = byFile.get(p.shown());
                 if (found == null) {
@@ -48,10 +48,12 @@ final class HtmlReport {
                         + "<tr><th>line:col</th><th>severity</th><th>code</th><th>message</th><th>the program's line</th></tr>\n");
                 for (Finding f : found) {
                     int line = f.diagnostic().span().line();
-                    String sev = f.diagnostic().severity() == Severity.ERROR ? "error" : "warning";
+                    String sev = f.diagnostic().waived() ? "waived"
+                            : f.diagnostic().severity() == Severity.ERROR ? "error" : "warning";
                     String text = line >= 1 && line <= lines.size() ? lines.get(line - 1) : "";
                     w.write("<tr><td>" + line + ":" + f.diagnostic().span().column() + "</td><td class=\"" + sev + "\">"
-                            + sev + "</td><td>" + esc(f.diagnostic().code().id()) + "</td><td>" + esc(f.message())
+                            + sev + "</td><td>" + esc(f.diagnostic().code().id()) + "</td><td>"
+                            + (f.diagnostic().waived() ? "waived: " + esc(f.diagnostic().waiver()) + ": " : "") + esc(f.message())
                             + "</td><td><code>" + esc(text) + "</code></td></tr>\n");
                 }
                 w.write("</table>\n");
@@ -65,7 +67,7 @@ final class HtmlReport {
                 w.write("</ul>\n");
             }
             w.write("</body></html>\n");
-        }
+        });
     }
 
     /** The program's lines as gcnc reads them; none when it cannot be read (its finding says why). */

@@ -10,8 +10,6 @@ import java.io.File;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.StringWriter;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -61,19 +59,22 @@ public class SimulateTask extends GcncTask {
         SvgWriter.write(sim.get(), program.shown(), number, svg, true);
         Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
         Files.createDirectories(svgFile.getParent());
-        Files.writeString(svgFile, svg.toString(), StandardCharsets.UTF_8);
+        gcnc.output.AtomicOutput.write(svgFile, gcnc.output.AtomicOutput.Name.DERIVED, w -> w.write(svg.toString()));
         SetupSheet sheet = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
                 findings.messages());
-        try (Writer w = Files.newBufferedWriter(getOutputDir().toPath().resolve(program.withExtension(".html")),
-                StandardCharsets.UTF_8)) {
-            sheet.write(svg.toString(), w);
-        }
+        gcnc.output.AtomicOutput.write(getOutputDir().toPath().resolve(program.withExtension(".html")),
+                gcnc.output.AtomicOutput.Name.DERIVED, w -> sheet.write(svg.toString(), w));
         summary.add(program.shown() + ": " + sheet.summary());
     }
 
     @Override
     protected void finish(List<Program> programs) throws IOException {
-        Files.write(getOutputDir().toPath().resolve("summary.txt"), summary, StandardCharsets.UTF_8);
+        gcnc.output.AtomicOutput.write(getOutputDir().toPath().resolve("summary.txt"), gcnc.output.AtomicOutput.Name.DERIVED, w -> {
+            for (String line : summary) {
+                w.write(line);
+                w.write('\n');
+            }
+        });
         summary.forEach(getLogger()::lifecycle);
     }
 }

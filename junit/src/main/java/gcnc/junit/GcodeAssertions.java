@@ -49,6 +49,20 @@ public final class GcodeAssertions {
             throw new AssertionError(program + " is not clean on " + session.profile().name() + ":\n"
                     + String.join("\n", findings));
         }
+        sayWaived(program, session, findings);
+    }
+
+    /**
+     * A clean program with waived findings ({@code (GCNC ALLOW E642: reason)}) passes, and says so on
+     * standard output (the test's report shows it): which findings the shop's waivers accept, and why.
+     */
+    static void sayWaived(Path program, Session session, List<String> findings) {
+        List<String> waived = findings.stream().filter(f -> f.contains("] waived: ")).toList();
+        if (!waived.isEmpty()) {
+            System.out.println("gcnc: " + program + " is clean on " + session.profile().name() + " with "
+                    + waived.size() + " waived finding" + (waived.size() == 1 ? "" : "s") + ":\n"
+                    + String.join("\n", waived));
+        }
     }
 
     /** Fails unless the program has exactly these diagnostic codes, in order (e.g. "E037", "E101"). */

@@ -58,13 +58,23 @@ public final class ProgramAssert {
         return new ProgramAssert(program, machine);
     }
 
-    /** No error (warnings and notes, like the command line's exit status 0, do not fail it). */
+    /**
+     * No error (warnings and notes, like the command line's exit status 0, do not fail it; nor does
+     * a finding the program's waivers accept, which it names on standard output).
+     */
     public ProgramAssert compilesClean() {
         if (result().diagnostics().hasErrors()) {
             throw new AssertionError(program + " is not clean on " + session().profile().name() + ":\n" + findings());
         }
+        if (!said && result().diagnostics().waivedCount() > 0) {
+            said = true;
+            GcodeAssertions.sayWaived(program, session(), List.of(findings().split("\n")));
+        }
         return this;
     }
+
+    /** Whether the waived findings were named already (once per program, however many assertions). */
+    private boolean said;
 
     /** Exactly these diagnostic codes, in order ("E305", "E113", ...). */
     public ProgramAssert hasFindings(String... codes) {

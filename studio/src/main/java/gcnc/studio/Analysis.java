@@ -13,7 +13,6 @@ import gcnc.dmc.DmcPrinter;
 import gcnc.output.DmcOutputs;
 import gcnc.output.FormOutputs;
 import gcnc.sim.Drawing;
-import gcnc.sim.Shape;
 import gcnc.sim.SimReport;
 import java.io.IOException;
 import java.io.Reader;
@@ -97,7 +96,7 @@ final class Analysis {
         r.simulation().ifPresent(s -> {
             doc.add("summary", summary(s));
             if (s.drawing() != null) {
-                doc.add("drawing", drawing(s.drawing(), fileNames));
+                doc.add("drawing", DrawingJson.drawing(s.drawing(), fileNames));
             }
         });
         return doc;
@@ -111,7 +110,7 @@ final class Analysis {
     JsonObject compile(String name, Path program, Path dmc) throws IOException {
         JsonObject doc = new JsonObject();
         Compiler.Result r;
-        try (FormOutputs outputs = FormOutputs.open(program, dmc, true)) {
+        try (FormOutputs outputs = FormOutputs.open(program, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
                 // the form that fits the profile's controller, as gcnc compile chooses it
@@ -156,46 +155,19 @@ final class Analysis {
             o.addProperty("errors", r.diagnostics().sorted().stream().filter(x -> x.severity() == gcnc.diag.Severity.ERROR).count());
             return o;
         }
-        Frame f = new Frame(d.program());
+        DrawingJson.Frame f = new DrawingJson.Frame(d.program());
         o.addProperty("tool", s.tool());
         o.addProperty("first", s.first());
         o.addProperty("last", s.last());
-        o.add("before", outline(s.beforeZ(), s.beforeR(), f));
-        o.add("after", outline(s.afterZ(), s.afterR(), f));
+        o.add("before", DrawingJson.outline(s.beforeZ(), s.beforeR(), f));
+        o.add("after", DrawingJson.outline(s.afterZ(), s.afterR(), f));
         if (s.insert() != null) {
-            o.add("insert", shape(s.insert(), f));
+            o.add("insert", DrawingJson.shape(s.insert(), f));
         }
         if (s.holder() != null) {
-            o.add("holder", shape(s.holder(), f));
+            o.add("holder", DrawingJson.shape(s.holder(), f));
         }
         o.addProperty("programFrame", d.program() != null);
-        return o;
-    }
-
-    /** A stock outline with the points of each flat stretch but its ends left out: the same steps, a much shorter answer. */
-    private static JsonObject outline(double[] z, double[] r, Frame f) {
-        List<Integer> keep = new ArrayList<>();
-        for (int i = 0; i < z.length; i++) {
-            if (i == 0 || i == z.length - 1 || r[i] != r[i - 1] || r[i] != r[i + 1]) {
-                keep.add(i);
-            }
-        }
-        double[] zs = new double[keep.size()];
-        double[] rs = new double[keep.size()];
-        for (int k = 0; k < zs.length; k++) {
-            zs[k] = z[keep.get(k)];
-            rs[k] = r[keep.get(k)];
-        }
-        JsonObject o = new JsonObject();
-        o.add("z", f.zs(zs));
-        o.add("x", f.xs(rs));
-        return o;
-    }
-
-    private static JsonObject shape(Shape s, Frame f) {
-        JsonObject o = new JsonObject();
-        o.add("z", f.zs(java.util.Arrays.copyOf(s.z(), s.size())));
-        o.add("x", f.xs(java.util.Arrays.copyOf(s.r(), s.size())));
         return o;
     }
 
@@ -220,7 +192,7 @@ final class Analysis {
                 false, l -> { });
         Map<String, Finding> out = new java.util.LinkedHashMap<>();
         for (Diagnostic d : r.diagnostics().sorted()) {
-            if (d.severity() == gcnc.diag.Severity.ERROR || d.code().name().contains("_SIM_")) {
+            if (d.severity() == gcnc.diag.Severity.ERROR || simulator(d)) {
                 Finding f = Finding.of(name, d, messages);
                 out.putIfAbsent(f.file() + ':' + d.span().line() + ':' + d.code().id(), f);
             }
@@ -246,7 +218,30 @@ final class Analysis {
         return a;
     }
 
-    /** The diagnostics of a result as {@code gcnc check --format json} writes them, each finding's file being {@code name}. */
+    /**
+     * The simulator's findings among a report's diagnostics marked {@code "simulator": true}: the
+     * page keeps them in its error list while the next simulation of an edited text runs (the check
+     * that comes first does not make them). The report lists the diagnostics in the result's order.
+     */
+    private static void markSimulator(Compiler.Result r, JsonObject report) {
+        JsonArray listed = report.getAsJsonArray("diagnostics");
+        List<Diagnostic> all = r.diagnostics().sorted();
+        for (int i = 0; i < listed.size() && i < all.size(); i++) {
+            if (simulator(all.get(i))) {
+                listed.get(i).getAsJsonObject().addProperty("simulator", true);
+            }
+        }
+    }
+
+    /** A finding of the simulator (gcnc.sim: travel, collisions, cuts into the stock ...), not of the check. */
+    static boolean simulator(Diagnostic d) {
+        return d.code().name().contains("_SIM_");
+    }
+
+    /**
+     * The diagnostics of a result as {@code gcnc check --format json} writes them, each finding's file
+     * being {@code name}; the simulator's marked (a check has none).
+     */
     JsonObject report(String name, Compiler.Result r) throws IOException {
         List<Finding> findings = new ArrayList<>();
         for (Diagnostic d : r.diagnostics().sorted()) {
@@ -254,7 +249,9 @@ final class Analysis {
         }
         StringWriter w = new StringWriter();
         JsonRenderer.write(findings, toolVersion, w);
-        return JsonParser.parseString(w.toString()).getAsJsonObject();
+        JsonObject report = JsonParser.parseString(w.toString()).getAsJsonObject();
+        markSimulator(r, report);
+        return report;
     }
 
     private static JsonObject summary(SimReport s) {
@@ -270,6 +267,26 @@ final class Analysis {
         extents.addProperty("zMinMm", finite(s.zMinMm()));
         extents.addProperty("zMaxMm", finite(s.zMaxMm()));
         o.add("machineExtents", extents);
+        // the envelopes in the program's terms, as gcnc simulate prints them first: the part's (the feed
+        // moves) apart from every move's (the rapids and home moves too)
+        if (s.feeds() != null) {
+            o.add("part", envelope(s.feeds()));
+        }
+        if (s.program() != null) {
+            o.add("program", envelope(s.program()));
+        }
+        return o;
+    }
+
+    /** An envelope as the program writes coordinates: its unit, whether X is a diameter, the limits. */
+    private static JsonObject envelope(gcnc.sim.ProgramEnvelope e) {
+        JsonObject o = new JsonObject();
+        o.addProperty("unit", e.unit());
+        o.addProperty("diameter", e.diameter());
+        o.addProperty("xMin", finite(e.xMin()));
+        o.addProperty("xMax", finite(e.xMax()));
+        o.addProperty("zMin", finite(e.zMin()));
+        o.addProperty("zMax", finite(e.zMax()));
         return o;
     }
 
@@ -278,103 +295,4 @@ final class Analysis {
         return Double.isFinite(v) ? v : null;
     }
 
-    /**
-     * The drawing in the program's coordinates: z along the spindle as the program writes Z, x as the
-     * program writes X (a diameter on a lathe whose control reads one). Without a program frame (no
-     * move), machine millimetres with x as twice the radius.
-     */
-    private static JsonObject drawing(Drawing d, java.util.function.Function<String, Optional<String>> fileNames) {
-        Frame f = new Frame(d.program());
-        JsonObject o = new JsonObject();
-        JsonArray moves = new JsonArray();
-        for (Drawing.Move m : d.moves()) {
-            JsonObject mv = new JsonObject();
-            mv.addProperty("line", m.line());
-            if (m.file() != null) { // a called program's line: the page opens that file to show it
-                Optional<String> named = fileNames.apply(m.file());
-                if (named.isPresent()) {
-                    mv.addProperty("file", named.get());
-                } else {
-                    mv.addProperty("elsewhere", true);
-                }
-            }
-            mv.addProperty("rapid", m.rapid());
-            mv.add("z", f.zs(m.z()));
-            mv.add("x", f.xs(m.r()));
-            moves.add(mv);
-        }
-        o.add("moves", moves);
-        o.add("chuck", shapes(d.chuck(), f));
-        o.add("tailstock", shapes(d.tailstock(), f));
-        if (!Double.isNaN(d.stockRadius())) {
-            JsonObject stock = new JsonObject();
-            stock.addProperty("zBack", f.z(d.stockBack()));
-            stock.addProperty("zFace", f.z(d.stockFace()));
-            stock.addProperty("x", f.x(d.stockRadius()));
-            stock.addProperty("xAxis", f.x(0));
-            JsonObject part = new JsonObject();
-            part.add("z", f.zs(d.finalZ()));
-            part.add("x", f.xs(d.finalR()));
-            stock.add("final", part);
-            o.add("stock", stock);
-        }
-        JsonArray marks = new JsonArray();
-        for (Drawing.Mark m : d.marks()) {
-            JsonObject mk = new JsonObject();
-            mk.addProperty("code", m.code());
-            mk.addProperty("block", m.block());
-            mk.addProperty("z", f.z(m.z()));
-            mk.addProperty("x", f.x(m.r()));
-            marks.add(mk);
-        }
-        o.add("marks", marks);
-        o.addProperty("programFrame", d.program() != null);
-        return o;
-    }
-
-    private static JsonArray shapes(List<Shape> shapes, Frame f) {
-        JsonArray a = new JsonArray();
-        for (Shape s : shapes) {
-            JsonObject o = new JsonObject();
-            o.add("z", f.zs(s.z()));
-            o.add("x", f.xs(s.r()));
-            a.add(o);
-        }
-        return a;
-    }
-
-    /** From the drawing's (z, r) millimetres to the program's (Z, X). */
-    private record Frame(Drawing.ProgramAxes axes) {
-        double z(double z) {
-            return round(axes == null ? z : (z - axes.z0()) / axes.zPer());
-        }
-
-        double x(double r) {
-            return round(axes == null ? 2 * r : (r - axes.r0()) / axes.xPer());
-        }
-
-        JsonArray zs(double[] v) {
-            JsonArray a = new JsonArray();
-            for (double d : v) {
-                a.add(z(d));
-            }
-            return a;
-        }
-
-        JsonArray xs(double[] v) {
-            JsonArray a = new JsonArray();
-            for (double d : v) {
-                a.add(x(d));
-            }
-            return a;
-        }
-
-        /** Micrometres are plenty for a drawing, and keep the JSON short. */
-        private static double round(double v) {
-            if (!Double.isFinite(v)) {
-                return v > 0 ? 1e9 : -1e9;
-            }
-            return Math.round(v * 1000) / 1000.0;
-        }
-    }
 }

@@ -44,6 +44,12 @@ final class Api implements AutoCloseable {
     private volatile boolean closed;
     /** Each stream holds one of the server's threads: a few pages, and the rest keep answering. */
     static final int MAX_STREAMS = 3;
+    /**
+     * The checks, simulations and compiles that run at once (each may hold a program of 8 MB and its
+     * path): the rest wait their turn, while the light endpoints (the file list, save, Run's hold and
+     * stop) never wait for them.
+     */
+    private static final java.util.concurrent.Semaphore HEAVY = new java.util.concurrent.Semaphore(4);
 
     Api(Workspace workspace, Studio.Config config) {
         this.workspace = workspace;
@@ -100,7 +106,13 @@ final class Api implements AutoCloseable {
      */
     private static void timed(HttpExchange ex, Work work) throws IOException, Http.Fail {
         long start = System.nanoTime();
-        JsonObject answer = work.run();
+        JsonObject answer;
+        HEAVY.acquireUninterruptibly();
+        try {
+            answer = work.run();
+        } finally {
+            HEAVY.release();
+        }
         ex.getResponseHeaders().set("Server-Timing", String.format(Locale.ROOT, "gcnc;dur=%.1f", (System.nanoTime() - start) / 1e6));
         Http.json(ex, 200, answer);
     }
@@ -233,6 +245,15 @@ final class Api implements AutoCloseable {
         return engine.analysis().scrub(name, text, line, folder(name));
     }
 
+    /** A request's edits in the file's terms ({@link ProfileEdit#edits}); a profile that cannot be read is the studio's fault. */
+    private static java.util.Map<String, String> edits(ProfileEdit edit, JsonObject req) throws Http.Fail {
+        try {
+            return edit.edits(req);
+        } catch (ProfileEdit.Invalid i) {
+            throw new Http.Fail(500, "the machine profile cannot be read: " + i.getMessage());
+        }
+    }
+
     /** The profile being configured: the one the studio was started with, or the one last saved. */
     private ProfileEdit profileEdit() throws IOException, Http.Fail {
         Engine e = engine;
@@ -253,10 +274,14 @@ final class Api implements AutoCloseable {
         return p;
     }
 
-    /** GET /api/profile: Configure's fields (travel, work and tool offsets, tool geometry) as written and as in force. */
+    /**
+     * GET /api/profile[?units=in|mm]: Configure's fields (travel, work and tool offsets, tool geometry) as
+     * written and as in force, and in the terms of a program in those units (default: the profile's).
+     */
     private JsonObject profile(HttpExchange ex) throws IOException, Http.Fail {
         try {
-            JsonObject o = profileEdit().form();
+            ProfileEdit edit = profileEdit();
+            JsonObject o = edit.form(edit.units(Guard.query(ex.getRequestURI(), "units")));
             if (engine.profileFile() != null) {
                 o.addProperty("profileFile", engine.profileFile());
             }
@@ -267,13 +292,14 @@ final class Api implements AutoCloseable {
     }
 
     /**
-     * POST /api/profile/impact {values, name?, text?}: the edited profile read as the loader reads
-     * it ({"valid": false, "key", "error"} when refused); with a program, which of its lines become
-     * errors or collisions with it and which stop being.
+     * POST /api/profile/impact {values, program?, units?, name?, text?}: the edited profile read as the
+     * loader reads it ({"valid": false, "key", "error"} when refused; else {@code written}: each edited
+     * key's value in the file's terms); with a program, which of its lines become errors or
+     * collisions with it and which stop being.
      */
     private JsonObject impact(JsonObject req) throws IOException, Http.Fail {
         ProfileEdit edit = profileEdit();
-        java.util.Map<String, String> values = ProfileEdit.values(req);
+        java.util.Map<String, String> values = edits(edit, req);
         String name = Http.string(req, "name");
         String text = Http.string(req, "text");
         if ((name == null) != (text == null)) {
@@ -290,6 +316,9 @@ final class Api implements AutoCloseable {
             return o;
         }
         o.addProperty("valid", true);
+        JsonObject written = new JsonObject(); // what would be written for each key, in the file's own terms
+        values.forEach(written::addProperty);
+        o.add("written", written);
         if (name != null) {
             Engine e = engine;
             Analysis then = analysis(e.session().withProfile(edited));
@@ -301,7 +330,7 @@ final class Api implements AutoCloseable {
     }
 
     /**
-     * POST /api/profile/save {file, values, force?}: the edited profile written under DIR as one step
+     * POST /api/profile/save {file, values, program?, units?, force?}: the edited profile written under DIR as one step
      * (a NAME.machine file; an existing one only with force), and used from then on by every check,
      * simulation and compile of this studio.
      */
@@ -309,7 +338,7 @@ final class Api implements AutoCloseable {
         String file = Http.required(req, "file");
         boolean force = Http.flag(req, "force");
         ProfileEdit edit = profileEdit();
-        java.util.Map<String, String> values = ProfileEdit.values(req);
+        java.util.Map<String, String> values = edits(edit, req);
         Path target = Workspace.refusing(() -> workspace.writableProfile(file));
         String text = edit.edited(values);
         gcnc.machine.MachineProfile edited;

@@ -28,6 +28,17 @@ final class Guard {
 
     /** Why the request is refused (status and message), or empty when it may go on. */
     Optional<Http.Failure> refuse(HttpExchange ex, boolean needsToken) {
+        java.util.List<String> hosts = ex.getRequestHeaders().get("Host");
+        if (hosts != null && hosts.size() > 1) {
+            // which one a proxy or a cache would believe is anyone's guess (RFC 9112 section 3.2: 400)
+            return Optional.of(new Http.Failure(400, "a request names one Host, not " + hosts.size()));
+        }
+        URI target = ex.getRequestURI();
+        if (target.isAbsolute() || target.getRawAuthority() != null) {
+            // a browser sends the path alone; an absolute target names a host besides Host
+            return Optional.of(new Http.Failure(400, "the request's target is a path (/api/...), not "
+                    + Workspace.shown(target.toString())));
+        }
         String host = ex.getRequestHeaders().getFirst("Host");
         if (host == null || !isSelf(host)) {
             return Optional.of(new Http.Failure(403, "the Host header must be 127.0.0.1:" + port + " or localhost:" + port));

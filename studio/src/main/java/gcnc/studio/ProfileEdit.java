@@ -9,6 +9,7 @@ import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileFile;
 import gcnc.machine.ProfileLoader;
+import gcnc.machine.Units;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import java.io.IOException;
@@ -94,45 +95,92 @@ final class ProfileEdit {
 
     /**
      * {@code GET /api/profile}: the form. Each field is a key with its values as written (empty
-     * when the file does not give it) and, as the placeholder, what is in force without it.
+     * when the file does not give it) and, as the placeholder, what is in force without it; beside
+     * them, both in the terms of a program in {@code units} ({@link ProfileTerms}: {@code program},
+     * {@code programPlaceholder}), which is what the page shows and edits.
      */
-    JsonObject form() throws Invalid {
+    JsonObject form(Units units) throws Invalid {
         MachineProfile p = session.profile();
         ProfileFile f = parse(text);
         boolean counts = f.entry("offsets.unit").map(e -> e.value().equals("counts")).orElse(false);
+        ProfileTerms terms = ProfileTerms.of(p, f, units);
         JsonObject o = new JsonObject();
         o.addProperty("machine", p.name());
         o.addProperty("source", source);
         o.addProperty("offsetsUnit", counts ? "counts" : "mm");
+        o.addProperty("units", terms.unit());
+        o.addProperty("diameter", terms.diameter());
         o.addProperty("tools", p.tools());
         JsonArray travel = new JsonArray();
-        travel.add(field(f, "x.travel", mm(p.x().min() / p.x().countsPerMm(), p.x().max() / p.x().countsPerMm())));
-        travel.add(field(f, "z.travel", mm(p.z().min() / p.z().countsPerMm(), p.z().max() / p.z().countsPerMm())));
+        travel.add(field(f, terms, "x.travel", mm(p.x().min() / p.x().countsPerMm(), p.x().max() / p.x().countsPerMm())));
+        travel.add(field(f, terms, "z.travel", mm(p.z().min() / p.z().countsPerMm(), p.z().max() / p.z().countsPerMm())));
         o.add("travel", travel);
         JsonArray work = new JsonArray();
         for (int g = 54; g <= 59; g++) {
-            work.add(field(f, "work.G" + g, offset(p.workOffset(g), counts, p)));
+            work.add(field(f, terms, "work.G" + g, offset(p.workOffset(g), counts, p)));
         }
         o.add("work", work);
         JsonArray tools = new JsonArray();
         JsonArray geometry = new JsonArray();
-        geometry.add(field(f, "sim.tool.default", ""));
+        geometry.add(field(f, terms, "sim.tool.default", ""));
         for (int n = 1; n <= p.tools(); n++) {
-            tools.add(field(f, "tool." + n, offset(p.toolOffset(n), counts, p)));
-            geometry.add(field(f, "nose." + n, ""));
-            geometry.add(field(f, "sim.tool." + n, ""));
+            tools.add(field(f, terms, "tool." + n, offset(p.toolOffset(n), counts, p)));
+            geometry.add(field(f, terms, "nose." + n, ""));
+            geometry.add(field(f, terms, "sim.tool." + n, ""));
         }
         o.add("toolOffsets", tools);
         o.add("geometry", geometry);
         return o;
     }
 
-    private static JsonObject field(ProfileFile f, String key, String inForce) {
+    private static JsonObject field(ProfileFile f, ProfileTerms terms, String key, String inForce) {
         JsonObject o = new JsonObject();
+        String value = f.entry(key).map(ProfileFile.Entry::value).orElse("");
         o.addProperty("key", key);
-        o.addProperty("value", f.entry(key).map(ProfileFile.Entry::value).orElse(""));
+        o.addProperty("value", value);
         o.addProperty("placeholder", inForce);
+        if (ProfileTerms.converted(key)) {
+            o.addProperty("program", terms.shown(key, value));
+            o.addProperty("programPlaceholder", terms.shown(key, inForce));
+        }
         return o;
+    }
+
+    /** The units a request names ({@code "units": "in"|"mm"}), else those the profile powers up in. */
+    Units units(String named) throws Http.Fail {
+        if (named == null) {
+            return session.profile().units();
+        }
+        return switch (named) {
+            case "in" -> Units.INCH;
+            case "mm" -> Units.MM;
+            default -> throw new Http.Fail(400, "\"units\" is in or mm");
+        };
+    }
+
+    /**
+     * The edits of a request in the file's terms: its {@code values} as they are, and its
+     * {@code program} values (the form's fields in the terms of a program in {@code units})
+     * converted by {@link ProfileTerms}, each part shown unchanged keeping the file's text.
+     */
+    Map<String, String> edits(JsonObject req) throws Http.Fail, Invalid {
+        Map<String, String> out = values(req);
+        JsonElement program = req.get("program");
+        if (program == null) {
+            return out;
+        }
+        if (!program.isJsonObject()) {
+            throw new Http.Fail(400, "\"program\" is an object of profile keys and their values in the program's terms");
+        }
+        JsonObject wrapped = new JsonObject();
+        wrapped.add("values", program);
+        Map<String, String> typed = values(wrapped);
+        ProfileFile f = parse(text);
+        ProfileTerms terms = ProfileTerms.of(session.profile(), f, units(Http.string(req, "units")));
+        for (Map.Entry<String, String> e : typed.entrySet()) {
+            out.put(e.getKey(), terms.toFile(e.getKey(), e.getValue(), f.entry(e.getKey()).map(ProfileFile.Entry::value).orElse("")));
+        }
+        return out;
     }
 
     private static String offset(Optional<Point> counts, boolean inCounts, MachineProfile p) {

@@ -51,7 +51,7 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
         DmcProgram program;
         Form form;
         int dmcLines;
-        try (FormOutputs outputs = FormOutputs.open(file, dmc, true)) {
+        try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(file.getFileName().toString(), file);
             Consumer<Instruction> written = outputs.sink(Optional.empty(), session.profile().controllerLimits());
             Consumer<Instruction> sink = i -> {

@@ -48,6 +48,8 @@ final class Runs implements AutoCloseable {
         final RunArm arm;
         final Operator operator = new Operator();
         volatile boolean stepWaiting;
+        /** The program waits at a program stop (M00; M01 with the switch on) for Start. */
+        volatile boolean stopWaiting;
 
         Run(RunArm arm) {
             this.arm = arm;
@@ -94,6 +96,7 @@ final class Runs implements AutoCloseable {
             case "run/hold" -> hold();
             case "run/resume" -> resume();
             case "run/step" -> step();
+            case "run/continue" -> continueStop();
             case "run/override" -> override(req);
             case "run/stop" -> stop();
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
@@ -112,6 +115,9 @@ final class Runs implements AutoCloseable {
         String name = Http.required(req, "name");
         RunTarget target = RunTarget.of(req.get("target"));
         boolean step = Http.flag(req, "step");
+        // the optional stop switch (M01 stops as M00 when on): the page's toggle; absent, the control's default
+        Boolean optionalStop = req.has("optionalStop") && !req.get("optionalStop").isJsonNull()
+                ? Http.flag(req, "optionalStop") : null;
         String at = Http.string(req, "resumeAt");
         ResumePoint resumeAt;
         try {
@@ -141,7 +147,9 @@ final class Runs implements AutoCloseable {
             Context ctx = context.get();
             RunProgram program;
             try {
-                program = RunProgram.prepare(ctx.session(), ctx.analysis(), name, file, dmc, step);
+                gcnc.Session session = optionalStop == null ? ctx.session()
+                        : ctx.session().withProfile(ctx.session().profile().withOptionalStop(optionalStop));
+                program = RunProgram.prepare(session, ctx.analysis(), name, file, dmc, step);
             } catch (gcnc.output.AtomicOutput.Refused e) {
                 throw new Http.Fail(403, "gcnc refuses to write " + dmcName + " (" + e.code().id() + ")");
             }
@@ -149,6 +157,8 @@ final class Runs implements AutoCloseable {
             o.addProperty("name", name);
             o.addProperty("target", target.shown());
             o.addProperty("step", step);
+            o.addProperty("optionalStop", optionalStop != null ? optionalStop
+                    : ctx.session().profile().control().stop().optional());
             o.addProperty("resumeAt", resumeAt == null ? null : resumeAt.toString());
             o.add("diagnostics", program.report());
             if (!program.clean()) {
@@ -260,6 +270,11 @@ final class Runs implements AutoCloseable {
         if (e instanceof Event.StepWait) {
             r.stepWaiting = true;
         }
+        if (e instanceof Event.ProgramStop) {
+            r.stopWaiting = true;
+        } else if (e instanceof Event.ProgramStopContinued) {
+            r.stopWaiting = false;
+        }
         synchronized (this) {
             if (e instanceof Event.Status) {
                 lastStatus = JsonParser.parseString(json);
@@ -312,6 +327,16 @@ final class Runs implements AutoCloseable {
         return state(r);
     }
 
+    /** POST /api/run/continue: Start at a program stop (M00; M01 with the switch on), as Enter. */
+    private JsonObject continueStop() throws Http.Fail {
+        Run r = running();
+        if (!r.stopWaiting) {
+            throw new Http.Fail(409, "the program is not at a program stop");
+        }
+        r.operator.enter();
+        return state(r);
+    }
+
     /** POST /api/run/override {percent}: the feed override, 10 to 200 % (VR), as the keys + and -. */
     private JsonObject override(JsonObject req) throws Http.Fail {
         int percent = Http.integer(req, "percent", 10, 200);
@@ -355,6 +380,7 @@ final class Runs implements AutoCloseable {
             o.addProperty("step", run.arm.step());
             o.addProperty("held", run.operator.held());
             o.addProperty("stepWaiting", run.stepWaiting);
+            o.addProperty("stopWaiting", run.stopWaiting);
         }
         JsonArray events = new JsonArray();
         log.forEach(events::add);

@@ -17,7 +17,6 @@ import java.util.HexFormat;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -108,16 +107,44 @@ public final class Studio implements AutoCloseable {
         this.api = new Api(workspace, config);
     }
 
+    /**
+     * The most connections the studio holds at once (the JDK server's {@code jdk.httpserver.maxConnections}:
+     * one more is closed as soon as it is accepted). Every client is on the loopback address, so the
+     * bound is for all of them together: a browser opens six per host, the event streams three more.
+     */
+    static final int MAX_CONNECTIONS = 32;
+    /**
+     * Seconds a request's head and body may take to arrive ({@code sun.net.httpserver.maxReqTime}):
+     * a connection that sends half a head is closed then, and its thread freed.
+     */
+    static final int HEAD_SECONDS = 10;
+
+    /**
+     * The JDK server's limits, as system properties, which it reads once, when the first server of
+     * the JVM is made: set here before it unless the user set them (java -D...). Without them a
+     * local process that opened 8 connections and sent half a request head on each held all six
+     * threads for minutes, and the page (Stop included) got no answer.
+     */
+    private static void serverLimits() {
+        System.getProperties().putIfAbsent("jdk.httpserver.maxConnections", Integer.toString(MAX_CONNECTIONS));
+        System.getProperties().putIfAbsent("sun.net.httpserver.maxReqTime", Integer.toString(HEAD_SECONDS));
+    }
+
     /** Binds the loopback address (never another interface) and starts serving. */
     public static Studio start(Config config) throws IOException {
         Workspace workspace = new Workspace(config.root());
+        serverLimits();
         HttpServer server = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), config.port()), 16);
         AtomicInteger n = new AtomicInteger();
-        ExecutorService threads = Executors.newFixedThreadPool(6, r -> {
-            Thread t = new Thread(r, "gcnc-studio-" + n.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
+        // a thread for every connection the server admits: the JDK reads a request's head on the
+        // executor's thread, so a fixed few were all taken by connections that never finished theirs.
+        // The heavy work (check, simulate, compile) is bounded apart (Api.HEAVY), so Stop always has a thread.
+        ExecutorService threads = new java.util.concurrent.ThreadPoolExecutor(0, MAX_CONNECTIONS + 8, 30,
+                java.util.concurrent.TimeUnit.SECONDS, new java.util.concurrent.SynchronousQueue<>(), r -> {
+                    Thread t = new Thread(r, "gcnc-studio-" + n.incrementAndGet());
+                    t.setDaemon(true);
+                    return t;
+                });
         server.setExecutor(threads);
         Studio studio;
         try {

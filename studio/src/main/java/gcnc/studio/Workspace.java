@@ -94,30 +94,47 @@ final class Workspace {
      * Writes a program as one step (a temporary file renamed over it): a failure leaves the old file
      * as it was. {@code expected} is the version the page opened (null for a new file): when the file
      * changed on disk since, or a new file's name is taken, nothing is written (409), unless {@code force}.
+     * The version is compared and the file written under one lock ({@link #saving}): of two pages
+     * that save on the same version at the same moment one is written and the other gets 409, its
+     * text still in its editor (both once got 200 and one edit was lost). A text longer than
+     * {@link #MAX_BYTES} is refused (413), as opening it would be.
      */
     Program save(String name, String text, String expected, boolean force) throws Refused, IOException {
         Path p = writable(name, true);
-        boolean exists = Files.exists(p, LinkOption.NOFOLLOW_LINKS);
-        if (!force) {
-            if (expected == null && exists) {
-                throw new Refused(409, name + " already exists");
-            }
-            if (expected != null && exists && !expected.equals(version(Files.readAllBytes(p)))) {
-                throw new Refused(409, name + " changed on disk since it was opened");
-            }
-            if (expected != null && !exists) {
-                throw new Refused(409, name + " was removed since it was opened");
-            }
-        }
         byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
-        try (AtomicOutput out = new AtomicOutput(p)) {
-            Writer w = out.writer();
-            w.write(text);
-            w.flush();
-            out.commit();
+        if (bytes.length > MAX_BYTES) {
+            throw new Refused(413, name + " is larger than " + (MAX_BYTES >> 20) + " MB (" + bytes.length
+                    + " bytes): the studio neither opens nor saves such a program");
+        }
+        synchronized (saving) {
+            boolean exists = Files.exists(p, LinkOption.NOFOLLOW_LINKS);
+            if (!force) {
+                if (expected == null && exists) {
+                    throw new Refused(409, name + " already exists");
+                }
+                if (expected != null && exists && !expected.equals(version(Files.readAllBytes(p)))) {
+                    throw new Refused(409, name + " changed on disk since it was opened");
+                }
+                if (expected != null && !exists) {
+                    throw new Refused(409, name + " was removed since it was opened");
+                }
+            }
+            try (AtomicOutput out = new AtomicOutput(p)) {
+                Writer w = out.writer();
+                w.write(text);
+                w.flush();
+                out.commit();
+            }
         }
         return new Program(name(p), text, version(bytes));
     }
+
+    /**
+     * Held from a save's version check to its rename: the check and the write are one step for every
+     * page of this studio. (An editor outside the studio takes no lock; its change between the two is
+     * the one a save can still overwrite, a few milliseconds wide.)
+     */
+    private final Object saving = new Object();
 
     /** A program that exists, for reading. */
     Path existing(String name) throws Refused, IOException {

@@ -1,4 +1,5 @@
-// Configure: the machine profile's travel, work offsets, tool offsets and tool geometry as a form (GET /api/profile).
+// Configure: the machine profile's travel, work offsets, tool offsets and tool geometry as a form (GET /api/profile),
+// in the open program's terms (its units, X as it writes X), the profile's own key and value beside each field.
 // Each change is sent to POST /api/profile/impact with the open program: the server reads the edited profile as
 // gcnc's loader does (a refusal is shown at its field) and says which lines become errors or collisions with it and
 // which stop being, before anything is saved. Save as writes NAME.machine in the studio's folder (POST /api/profile/save)
@@ -10,10 +11,18 @@ const $ = (id) => document.getElementById(id);
 /** How many inputs a key's value is written with: a pair (min, max or x, z or radius, tip), or one text. */
 const parts = (key) => (key.startsWith("sim.tool.") ? 1 : 2);
 
+/** Whether a field is shown in the program's terms (the server converts it both ways), else as the file writes it. */
+const inProgramTerms = (field) => field.program !== undefined;
+
+/** The text a field shows: the program's terms when the server gives them. */
+const shownValue = (field) => (inProgramTerms(field) ? field.program : field.value);
+
 function inputsFor(field) {
   const n = parts(field.key);
-  const values = field.value === "" ? [] : n === 1 ? [field.value] : field.value.split(",").map((v) => v.trim());
-  const holders = field.placeholder === "" ? [] : n === 1 ? [field.placeholder] : field.placeholder.split(",").map((v) => v.trim());
+  const shown = shownValue(field);
+  const placeholder = inProgramTerms(field) ? field.programPlaceholder : field.placeholder;
+  const values = shown === "" ? [] : n === 1 ? [shown] : shown.split(",").map((v) => v.trim());
+  const holders = placeholder === "" ? [] : n === 1 ? [placeholder] : placeholder.split(",").map((v) => v.trim());
   if (values.length > n) values.splice(n - 1, values.length, values.slice(n - 1).join(", "));
   const cell = document.createElement("td");
   const inputs = [];
@@ -24,6 +33,7 @@ function inputsFor(field) {
     input.placeholder = holders[i] || "";
     input.dataset.key = field.key;
     input.dataset.part = i;
+    input.dataset.terms = inProgramTerms(field) ? "program" : "file";
     input.size = n === 1 ? 14 : 11;
     input.setAttribute("aria-label", `${field.key} ${i + 1}`);
     cell.appendChild(input);
@@ -36,11 +46,12 @@ function inputsFor(field) {
  * The Configure panel. `program()` gives {name, text} of the open program (or null); `goTo(line)` moves the
  * cursor; `saved(answer)` is called after a save.
  */
-export function configure({ api, program, goTo, saved, status }) {
+export function configure({ api, program, units, goTo, saved, status }) {
   const panel = $("configure");
-  const fields = new Map(); // key -> {inputs, initial}
+  const fields = new Map(); // key -> {inputs, initial, program, file}
   let timer = null;
   let seq = 0;
+  let formUnits = null; // the units the form is in ("in", "mm"), as the server gave them
 
   function value(key) {
     const f = fields.get(key);
@@ -48,15 +59,20 @@ export function configure({ api, program, goTo, saved, status }) {
     return vs.every((v) => v === "") ? "" : vs.join(", ");
   }
 
-  /** The keys changed since the form was filled, with their new values. */
+  /**
+   * The keys changed since the form was filled, with their new values: `program` those typed in the
+   * program's terms (the server converts them to the file's), `values` those in the file's own.
+   */
   function changes() {
-    const out = {};
+    const out = { values: {}, program: {}, units: formUnits };
     for (const [key, f] of fields) {
       const v = value(key);
-      if (v !== f.initial) out[key] = v;
+      if (v !== f.initial) (f.program ? out.program : out.values)[key] = v;
     }
     return out;
   }
+
+  const changed = (c) => Object.keys(c.values).length + Object.keys(c.program).length > 0;
 
   function table(caption, rows, labels) {
     const section = document.createElement("section");
@@ -65,7 +81,7 @@ export function configure({ api, program, goTo, saved, status }) {
     section.appendChild(h);
     const tbl = document.createElement("table");
     const head = document.createElement("tr");
-    for (const l of ["", ...labels]) {
+    for (const l of ["", ...labels, t.profileFileValue]) {
       const th = document.createElement("th");
       th.textContent = l;
       head.appendChild(th);
@@ -79,12 +95,18 @@ export function configure({ api, program, goTo, saved, status }) {
       tr.appendChild(name);
       const { cell, inputs } = inputsFor(field);
       tr.appendChild(cell);
+      // the profile's own key and value as its file holds them, and what an edit would write there
+      const file = document.createElement("td");
+      file.className = "filevalue";
+      file.textContent = field.value === "" ? `(${field.key} ${t.notInFile})` : `${field.key} = ${field.value}`;
+      tr.appendChild(file);
       const err = document.createElement("td");
       err.className = "fielderror";
       tr.appendChild(err);
       tbl.appendChild(tr);
-      const initial = field.value === "" ? "" : (parts(field.key) === 1 ? field.value : field.value.split(",").map((v) => v.trim()).join(", "));
-      fields.set(field.key, { inputs, initial, error: err, row: tr });
+      const shown = shownValue(field);
+      const initial = shown === "" ? "" : (parts(field.key) === 1 ? shown : shown.split(",").map((v) => v.trim()).join(", "));
+      fields.set(field.key, { inputs, initial, error: err, row: tr, program: inProgramTerms(field), file, fileText: file.textContent });
       inputs.forEach((i) => i.addEventListener("input", schedule));
     }
     section.appendChild(tbl);
@@ -94,7 +116,8 @@ export function configure({ api, program, goTo, saved, status }) {
   async function open() {
     let form;
     try {
-      form = await api("profile");
+      const u = units();
+      form = await api("profile" + (u ? "?units=" + encodeURIComponent(u) : ""));
     } catch (e) {
       status(e.message, "bad");
       return;
@@ -104,7 +127,9 @@ export function configure({ api, program, goTo, saved, status }) {
     body.replaceChildren();
     $("configtitle").textContent = t.configureTitle(form.machine, form.profileFile || form.source);
     panel.dataset.machine = form.machine;
-    $("confignote").textContent = t.configureNote(form.offsetsUnit);
+    formUnits = form.units;
+    panel.dataset.units = form.units;
+    $("confignote").textContent = t.configureNote(form.units, form.diameter, form.offsetsUnit);
     body.appendChild(table(t.travel, form.travel, [t.minMax]));
     body.appendChild(table(t.workOffsets, form.work, [t.xz]));
     body.appendChild(table(t.toolOffsets, form.toolOffsets, [t.xz]));
@@ -140,6 +165,14 @@ export function configure({ api, program, goTo, saved, status }) {
     }
   }
 
+  /** Beside each edited field, the value its key would have in the file. */
+  function showWritten(written) {
+    for (const [key, f] of fields) {
+      f.file.textContent = key in written ? `${f.fileText} → ${key} = ${written[key] === "" ? t.leftOut : written[key]}` : f.fileText;
+      f.file.classList.toggle("edited", key in written);
+    }
+  }
+
   function impactList(title, list, kind) {
     const box = $("impact");
     const h = document.createElement("h4");
@@ -161,10 +194,10 @@ export function configure({ api, program, goTo, saved, status }) {
 
   /** The edited profile judged by the server; the answer shown if it is still the latest. */
   async function judge() {
-    const values = changes();
+    const edits = changes();
     const my = ++seq;
     const p = program();
-    const req = { values };
+    const req = { ...edits };
     if (p) Object.assign(req, p);
     $("impactnote").textContent = t.impactRunning;
     let r;
@@ -183,7 +216,8 @@ export function configure({ api, program, goTo, saved, status }) {
       return;
     }
     showError(null, null);
-    if (Object.keys(values).length === 0) {
+    showWritten(r.written || {});
+    if (!changed(edits)) {
       $("impactnote").textContent = t.impactNone;
       return;
     }
@@ -199,7 +233,7 @@ export function configure({ api, program, goTo, saved, status }) {
   async function saveAs() {
     const file = prompt(t.askProfile, (panel.dataset.machine || "machine") + ".machine");
     if (!file) return;
-    const body = { file, values: changes() };
+    const body = { file, ...changes() };
     try {
       let r;
       try {

@@ -36,7 +36,8 @@ function bounds(d) {
  * POST /api/stock over the drawing (null takes it away): the stock as it stood after the block, what the
  * block removed (between the outline before it and after it) and the insert and holder where it ended;
  * its `running(line)` lights the moves of the block a run executes and `tool(x, z)` marks where the tool is
- * (program coordinates, as the run's status gives them).
+ * (program coordinates, as the run's status gives them); its `finding(code, line)` marks the place of a
+ * simulator's finding (the error list's row) and says whether the drawing has it.
  */
 export function drawProfile(svg, drawing, onPick) {
   svg.replaceChildren();
@@ -78,7 +79,7 @@ export function drawProfile(svg, drawing, onPick) {
     byLine.get(m.line).push(g);
   });
   for (const k of drawing.marks) {
-    const c = el("circle", { cx: px(k.z), cy: py(k.x), r: 5, class: "mark" }, svg);
+    const c = el("circle", { cx: px(k.z), cy: py(k.x), r: 5, class: "mark", "data-code": k.code, "data-line": k.line }, svg);
     el("title", {}, c).textContent = `${k.code} ${k.block}`;
   }
   // the scale: the program's Z at the left and right edges, its X (diameter) at the top and the centreline
@@ -97,6 +98,18 @@ export function drawProfile(svg, drawing, onPick) {
     lit = byLine.get(line) || [];
     lit.forEach((g) => { g.classList.add("current"); svg.appendChild(g); }); // drawn last: on top
     return lit.length;
+  };
+  // a finding of the simulator picked in the error list: its place marked (larger, on top); none: none
+  light.finding = (code, line) => {
+    let picked = null;
+    for (const c of svg.querySelectorAll("circle.mark")) {
+      const it = c.dataset.code === code && Number(c.dataset.line) === line;
+      c.classList.toggle("picked", it && picked === null);
+      if (it && picked === null) picked = c;
+    }
+    if (picked) { picked.setAttribute("r", 9); svg.appendChild(picked); }
+    for (const c of svg.querySelectorAll("circle.mark:not(.picked)")) c.setAttribute("r", 5);
+    return picked !== null;
   };
   // Run: the block executing, lit apart from the cursor's, and the tool where the controller says it is
   let running = [];

@@ -26,7 +26,16 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   let armed = null; // the arm answer that Start may start
   let running = false;
   let step = false;
+  let stopWaiting = false; // at a program stop (M00; M01 with the switch on): Start goes on
   let held = false;
+  /**
+   * Whether the run has ended: its "finished" or "stopped" event came. The run's events and the answer
+   * to POST /api/run/start travel apart (the event stream and the request), so a short run can end
+   * before its start is answered: nothing after the end may say it is running.
+   */
+  let over = false;
+  /** Whether the run's thread has ended ("run-ended"): nothing of it is going on any more. */
+  let ended = false;
 
   function setState(state, text) {
     $("run-state").dataset.state = state;
@@ -39,6 +48,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     $("run-hold").disabled = !running || held;
     $("run-resume").disabled = !running || !held;
     $("run-step").disabled = !running || !step;
+    $("run-continue").disabled = !running || !stopWaiting;
     $("run-stop").disabled = !running;
     $("run-override").disabled = !running;
     for (const i of panel.querySelectorAll("#runform input, #runform select")) i.disabled = running;
@@ -108,7 +118,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     $("runstopped").replaceChildren();
     setState("arming", t.arming);
     try {
-      const body = { name, target: target(), step: $("runstep").checked };
+      const body = { name, target: target(), step: $("runstep").checked, optionalStop: $("runoptional").checked };
       const at = $("runresume").value.trim();
       if (at) body.resumeAt = at;
       const a = await api("run/arm", body);
@@ -132,15 +142,19 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     if (!armed) return;
     const a = armed;
     armed = null; // an arm moves the machine once
+    // cleared before the request: the run's first events may arrive before its answer
+    $("runlog").replaceChildren();
+    $("runstopped").replaceChildren();
+    over = false;
+    ended = false;
     try {
       await api("run/start", { arm: a.arm });
-      running = true;
-      step = a.step;
-      held = false;
-      $("runlog").replaceChildren();
-      $("runstopped").replaceChildren();
-      setState("running", t.runningState);
-      status(t.runStarted(a.name), "ok");
+      if (!over) status(t.runStarted(a.name), "ok");
+      if (!ended) { // still going (its end, when it came first, has said how it ended)
+        running = true;
+        step = a.step;
+        if (!over) { held = false; setState("running", t.runningState); }
+      }
     } catch (e) {
       status(e.message, "bad");
     }
@@ -170,7 +184,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
       + (s.override !== 1 && s.override !== null ? ` · ${t.override} ${Math.round(100 * s.override)}%` : "");
     if (s.program && !s.file) tool(s.program[0], s.program[1]);
     if (s.held !== held) { held = s.held; buttons(); }
-    if (running) setState(held ? "held" : "running", held ? t.heldState : t.runningState);
+    if (running && !over) setState(held ? "held" : "running", held ? t.heldState : t.runningState);
   }
 
   function onEvent(e) {
@@ -178,7 +192,10 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     switch (e.event) {
       case "connected": line(log, t.connected(e.link, e.controller)); break;
       case "preflight": line(log, preflight(e)); break;
-      case "started": line(log, t.startedLine(e.blocks, e.lines, clock(e.seconds), e.resumeAt)); running = true; step = e.step; break;
+      case "started":
+        line(log, t.startedLine(e.blocks, e.lines, clock(e.seconds), e.resumeAt));
+        running = true; step = e.step; over = false; ended = false;
+        break;
       case "downloaded": if (!step) line(log, t.downloaded(e.lines)); break;
       case "block": showLine(e.line); break;
       case "step-wait":
@@ -186,18 +203,36 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
         $("dro").dataset.line = e.line;
         setState("step", t.stepWait((e.number ? `N${e.number} · ` : "") + `${t.line} ${e.line}`));
         break;
+      case "program-stop":
+        showLine(e.line);
+        stopWaiting = true;
+        line(log, t.programStop(e.line, e.comment), "message");
+        setState("stop", t.programStopState((e.number ? `N${e.number} · ` : "") + `${t.line} ${e.line}`, e.comment));
+        buttons();
+        break;
+      case "program-stop-continued":
+        stopWaiting = false;
+        setState("running", t.runningState);
+        buttons();
+        break;
       case "status": display(e); break;
-      case "hold": held = e.held; setState(held ? "held" : "running", held ? t.heldState : t.runningState); buttons(); break;
+      case "hold":
+        held = e.held;
+        if (!over) setState(held ? "held" : "running", held ? t.heldState : t.runningState);
+        buttons();
+        break;
       case "finding": finding(log, e); break;
       case "message": line(log, e.text, "message"); break;
       case "stopped": stopped(e); break;
       case "finished":
+        over = true;
         setState("finished", t.finished(clock(e.seconds)));
         $("dro-progress").value = 1;
         break;
       case "run-ended":
         running = false;
         held = false;
+        ended = true;
         if (e.status === 2 && $("run-state").dataset.state !== "stopped") setState("idle", t.notStarted);
         buttons();
         break;
@@ -207,6 +242,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
 
   /** A stop: where exactly, and the resume (a button that arms it, and the command line that does the same). */
   function stopped(e) {
+    over = true;
     setState("stopped", t.stoppedState(e.reason));
     const box = $("runstopped");
     box.replaceChildren();
@@ -244,7 +280,8 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   $("run-start").addEventListener("click", start);
   $("run-hold").addEventListener("click", () => command("hold"));
   $("run-resume").addEventListener("click", () => command("resume"));
-  $("run-step").addEventListener("click", () => { setState("running", t.runningState); command("step"); });
+  $("run-step").addEventListener("click", () => { if (!over) setState("running", t.runningState); command("step"); });
+  $("run-continue").addEventListener("click", () => command("continue"));
   $("run-stop").addEventListener("click", () => command("stop"));
   $("run-override").addEventListener("change", (e) => command("override", { percent: Number(e.target.value) }));
   $("run-override").addEventListener("input", (e) => { $("run-overridevalue").textContent = `${e.target.value}%`; });
@@ -264,6 +301,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
         running = true;
         step = !!s.step;
         held = !!s.held;
+        stopWaiting = !!s.stopWaiting;
         for (const e of s.events) onEvent(e);
         if (s.status) display(s.status);
       }

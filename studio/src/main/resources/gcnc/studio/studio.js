@@ -6,7 +6,7 @@ import { EditorState, StateEffect, StateField } from "@codemirror/state";
 import { syntaxHighlighting, defaultHighlightStyle } from "@codemirror/language";
 import { history as undoHistory, defaultKeymap, historyKeymap } from "@codemirror/commands";
 import { searchKeymap } from "@codemirror/search";
-import { linter, lintGutter, lintKeymap } from "@codemirror/lint";
+import { linter, lintGutter, lintKeymap, setDiagnostics } from "@codemirror/lint";
 import { gcode } from "/static/gcode-mode.js";
 import { drawProfile } from "/static/profile.js";
 import { t, translatePage } from "/static/i18n.js";
@@ -24,6 +24,10 @@ let lightPath = () => 0;
 let dmcBySource = new Map();
 let simulateTimer = null;
 let simulateSeq = 0;
+/** The simulator's findings of the last simulation: kept in the error list while the next one runs. */
+let simFindings = [];
+/** The open program's units ("in", "mm") as its last simulation found them (its first move's), else null. */
+let programUnits = null;
 
 /** One API call; an answer that is not 2xx throws its {"error"} message. */
 async function api(endpoint, body) {
@@ -64,15 +68,21 @@ async function lint(view) {
     return [];
   }
   if (view.state.doc.toString() !== text) return []; // typed on meanwhile: the next check will come
-  showProblems(report);
+  showProblems(report, simFindings);
   scheduleSimulate();
-  return report.diagnostics.map((d) => {
+  return cmDiagnostics(view, report.diagnostics);
+}
+
+/** gcnc's diagnostics as CodeMirror's: each underlined at its span on its line. */
+function cmDiagnostics(view, diagnostics) {
+  return diagnostics.map((d) => {
     const line = view.state.doc.line(Math.min(Math.max(d.line, 1), view.state.doc.lines));
     const from = Math.min(line.from + Math.max(d.column, 1) - 1, line.to);
     let to = d.endColumn ? Math.min(line.from + d.endColumn - 1, line.to) : from;
     if (to <= from) to = Math.min(line.to, from + 1);
-    return { from, to: Math.max(to, from), severity: d.severity === "error" ? "error" : "warning",
-      message: `${d.code} ${d.message}`, source: "gcnc" };
+    // a finding the program's waiver accepts (GCNC ALLOW) is shown as information, with the waiver's reason
+    return { from, to: Math.max(to, from), severity: d.waived ? "info" : d.severity === "error" ? "error" : "warning",
+      message: `${d.code} ${shownMessage(d)}`, source: d.simulator ? "gcnc simulator" : "gcnc" };
   });
 }
 
@@ -164,26 +174,53 @@ function dirtyChanged() {
 
 // ---- the error list -----------------------------------------------------------------------------------
 
-function showProblems(report) {
+/** A finding's message; a waived one's with the waiver's reason before it ("waived: reason: ..."). */
+function shownMessage(d) {
+  return d.waived ? `${t.waived}: ${d.waived}: ${d.message}` : d.message;
+}
+
+/**
+ * The error list: the check's findings and the simulator's alike (a simulation's answer holds both), each a
+ * click to its line and, for a simulator's finding, to its place on the path. `pending`: the simulator's
+ * findings of the last simulation, listed greyed beside a check's answer until the simulation of the new
+ * text answers (a check does not simulate).
+ */
+let shownProblems = null;
+
+function showProblems(report, pending = []) {
   const body = $("errors").querySelector("tbody");
+  const rows = [...report.diagnostics, ...pending.map((d) => ({ ...d, pending: true }))]
+    .sort((a, b) => a.line - b.line || a.column - b.column);
+  // the same list again (a simulation that found what the check found): the rows stay as they are
+  const key = JSON.stringify(rows);
+  if (key === shownProblems && body.childElementCount === rows.length) return;
+  shownProblems = key;
   body.replaceChildren();
-  for (const d of report.diagnostics) {
+  for (const d of rows) {
     const tr = document.createElement("tr");
-    tr.className = d.severity;
+    tr.className = (d.waived ? "waived" : d.severity) + (d.simulator ? " simulator" : "") + (d.pending ? " pending" : "");
     tr.dataset.line = d.line;
     tr.dataset.column = d.column;
-    for (const v of [d.code, d.message, d.line, d.column]) {
+    tr.dataset.code = d.code;
+    for (const v of [d.code, shownMessage(d), d.line, d.column]) {
       const td = document.createElement("td");
       td.textContent = v;
       tr.appendChild(td);
     }
+    if (d.pending) tr.title = t.pendingFinding;
+    const jump = () => {
+      goTo(d.line, d.column);
+      if (d.simulator && lightPath.finding) lightPath.finding(d.code, d.line);
+    };
     tr.tabIndex = 0; // reachable with Tab; Enter jumps as a click does
-    tr.addEventListener("click", () => goTo(d.line, d.column));
-    tr.addEventListener("keydown", (e) => { if (e.key === "Enter") goTo(d.line, d.column); });
+    tr.addEventListener("click", jump);
+    tr.addEventListener("keydown", (e) => { if (e.key === "Enter") jump(); });
     body.appendChild(tr);
   }
-  $("counts").textContent = report.errors + report.warnings === 0 ? "— " + t.noErrors
-    : "— " + t.nErrors(report.errors, report.warnings);
+  const errors = report.errors + pending.filter((d) => d.severity === "error").length;
+  const warnings = report.warnings + pending.filter((d) => d.severity !== "error").length;
+  $("counts").textContent = (errors + warnings === 0 ? "— " + t.noErrors : "— " + t.nErrors(errors, warnings))
+    + (report.waived ? ", " + t.nWaived(report.waived) : "") + (pending.length ? " " + t.simulating : "");
 }
 
 // ---- tool path and DMC --------------------------------------------------------------------------------
@@ -208,7 +245,7 @@ async function simulate() {
   const text = view.state.doc.toString();
   try {
     const r = await api("simulate", { name: current.name, text });
-    if (seq === simulateSeq) showSimulation(r);
+    if (seq === simulateSeq) showSimulation(r, text);
   } catch (e) {
     status(e.message, "bad");
   } finally {
@@ -221,21 +258,38 @@ async function simulate() {
  * The path, the DMC and the summary of a simulation. When the program has an error there is no DMC
  * and no path: the last ones stay, greyed and marked as the last program without errors.
  */
-function showSimulation(r) {
+function showSimulation(r, text) {
   const fresh = r.drawing && r.drawing.moves.length > 0;
+  const compiled = r.dmc.length > 0; // no error: the DMC of this text
   $("path").classList.toggle("stale", !fresh && $("profile").childElementCount > 0);
-  $("galil").classList.toggle("stale", !fresh && $("dmc").childElementCount > 0);
+  $("galil").classList.toggle("stale", !compiled && $("dmc").childElementCount > 0);
   if (fresh) {
     lightPath = drawProfile($("profile"), r.drawing, pick);
     if (runningAt !== null && lightPath.running) lightPath.running(runningAt);
-    showDmc(r.dmc);
     $("pathnote").textContent = "";
     scrubBlocks(r.drawing.moves);
   } else {
     $("pathnote").textContent = $("profile").childElementCount > 0 ? t.stalePath : t.noPath;
   }
-  showSummary(r);
+  if (compiled) showDmc(r.dmc);
+  const why = compiled ? "" : noDmc(r.diagnostics);
+  $("dmcnote").textContent = why && $("dmc").childElementCount > 0 ? `${why}. ${t.staleDmc}` : why;
+  // the whole truth: the check's findings and the simulator's, in the list, the count and the text
+  simFindings = r.diagnostics.diagnostics.filter((d) => d.simulator);
+  const terms = r.summary && (r.summary.program || r.summary.part);
+  if (terms) programUnits = terms.unit;
+  showProblems(r.diagnostics);
+  if (view.state.doc.toString() === text) view.dispatch(setDiagnostics(view.state, cmDiagnostics(view, r.diagnostics.diagnostics)));
+  showSummary(r, null, why);
   cursorMoved();
+}
+
+/** Why a simulation's answer has no DMC: its errors (and where the first is); the check's stop the translation there. */
+function noDmc(report) {
+  const errors = report.diagnostics.filter((d) => d.severity === "error");
+  if (errors.length === 0) return t.noDmcYet;
+  const first = errors[0].line;
+  return errors.every((d) => d.simulator) ? t.noDmcSimulator(errors.length, first) : t.noDmcErrors(errors.length, first);
 }
 
 /** A click on a move: its line, in this program or in the called program it is written in. */
@@ -331,7 +385,7 @@ function showDmc(lines) {
   }
 }
 
-function showSummary(r, compiled) {
+function showSummary(r, compiled, noDmcWhy) {
   const s = r.summary;
   const box = $("summary");
   box.replaceChildren();
@@ -344,13 +398,23 @@ function showSummary(r, compiled) {
   };
   if (compiled) row(t.compile, compiled);
   row(t.blocks, String(r.blocks));
-  if (r.dmc) row(t.dmcLines, String(r.dmc.length));
+  if (r.dmc) row(t.dmcLines, noDmcWhy || String(r.dmc.length));
   else if (r.dmcLines !== undefined) row(t.dmcLines, String(r.dmcLines));
   if (s) {
     if (s.cycleSeconds !== null) row(t.cycle, formatSeconds(s.cycleSeconds));
+    // in the program's terms first, as gcnc simulate prints them: the part (feed moves), every move, the machine
+    if (s.part) row(t.partEnvelope, programEnvelope(s.part) + " " + t.feedMoves);
+    if (s.program) row(t.programEnvelope, programEnvelope(s.program));
     const e = s.machineExtents;
     if (e.xMinMm !== null) row(t.extents, `X ${e.xMinMm.toFixed(2)} … ${e.xMaxMm.toFixed(2)}, Z ${e.zMinMm.toFixed(2)} … ${e.zMaxMm.toFixed(2)}`);
   }
+}
+
+/** An envelope as the program writes coordinates: X (diameter or radius), Z from work zero, in its unit. */
+function programEnvelope(p) {
+  const d = p.unit === "in" ? 4 : 3;
+  return `X ${p.xMin.toFixed(d)} … ${p.xMax.toFixed(d)} (${p.diameter ? t.diameter : t.radius}), `
+    + `Z ${p.zMin.toFixed(d)} … ${p.zMax.toFixed(d)} ${p.unit} ${t.fromWorkZero}`;
 }
 
 function formatSeconds(sec) {
@@ -388,6 +452,9 @@ function load(name, text, version) {
   view.setState(EditorState.create({ doc: text, extensions: extensions() }));
   $("profile").replaceChildren(); // another program: nothing of the last one's path or DMC stays
   $("dmc").replaceChildren();
+  $("dmcnote").textContent = t.noDmcYet;
+  simFindings = [];
+  programUnits = null;
   lightPath = () => 0;
   scrubLines = [];
   $("scrub").max = "0";
@@ -493,6 +560,7 @@ $("scrub").addEventListener("input", scrubbed);
 configure({
   api,
   program: () => (current.name ? { name: current.name, text: view.state.doc.toString() } : null),
+  units: () => programUnits,
   goTo: (line) => goTo(line, 1),
   status,
   saved: async () => {

@@ -14,7 +14,7 @@ import gcnc.machine.Units;
 /**
  * Programmed coordinates to machine counts: units of the whole block, X/U as diameters when the
  * profile says so, G90/G91 (X/Z absolute or incremental, U/W always incremental), and the work
- * coordinate origin = work offset (G54-G59) + tool offset (T) + the G50/G92 shift, all taken
+ * coordinate origin = work offset (G54-G59) + tool offset (T: geometry + wear) + the G50/G92 shift, all taken
  * from the block's own new state, so they apply to the block they appear in.
  */
 public final class Coordinates {
@@ -27,7 +27,7 @@ public final class Coordinates {
         this.p = p;
         for (int i = 0; i < 100; i++) {
             work[i] = p.workOffset(i).orElse(Point.ORIGIN);
-            tool[i] = i == 0 ? Point.ORIGIN : p.toolOffset(i).orElse(Point.ORIGIN);
+            tool[i] = i == 0 ? Point.ORIGIN : p.appliedOffset(i).orElse(Point.ORIGIN); // geometry + wear
         }
     }
 

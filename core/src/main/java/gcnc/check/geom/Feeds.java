@@ -50,8 +50,8 @@ public final class Feeds {
             return null;
         }
         if (last == null || Double.compare(last.programmed(), f) != 0
-                || Double.compare(last.countsPerSecond(), cps) != 0) {
-            last = new Feed(f, cps);
+                || Double.compare(last.countsPerSecond(), cps) != 0 || last.perRevolution() != d.next.feedPerRev) {
+            last = new Feed(f, cps, d.next.feedPerRev);
         }
         return last;
     }
