@@ -261,9 +261,10 @@ public final class Compiler {
      * The blocks of a program as the control would run them: the one place where the stages
      * between the parser and the checker are put together, for check and compile alike. The
      * parser's blocks go through the program flow (subprogram calls, macro statements), which
-     * keeps a program without calls or macro statements streaming.
+     * keeps a program without calls or macro statements streaming. ({@link ModalStates} reads a
+     * program's blocks through it too, for the front ends' hover.)
      */
-    private static BlockSource blocks(Reader text, Settings settings, Diagnostics diags) {
+    static BlockSource blocks(Reader text, Settings settings, Diagnostics diags) {
         // no line and no text past the input limits (E503, E504): bounded memory and time whatever is read
         Reader source = new gcnc.parse.BoundedReader(text, diags, gcnc.diag.Origin.PROGRAM);
         gcnc.machine.Control control = settings.profile().control();

@@ -186,7 +186,12 @@ public final class Session {
     /** Parse and every check: no output, no simulation. */
     public Compiler.Result check(Reader program) throws IOException {
         // the blank, if one was given, places the work zero (work.G54 = face); nothing is simulated
-        return waived(Compiler.check(program, settings(options.stock().map(b -> simulation()), false)), false);
+        return waived(Compiler.check(program, checkSettings()), false);
+    }
+
+    /** What {@link #check} runs with (also {@link ModalStates}, which reads the blocks as a check does). */
+    Compiler.Settings checkSettings() {
+        return settings(options.stock().map(b -> simulation()), false);
     }
 
     /**
@@ -194,7 +199,7 @@ public final class Session {
      * cycles, corners, nose compensation, calls and macros); no output, no simulation.
      */
     public Compiler.Result path(Reader program, java.util.function.Consumer<gcnc.ir.CheckedBlock> each) throws IOException {
-        return waived(Compiler.check(program, settings(options.stock().map(b -> simulation()), false), each), false);
+        return waived(Compiler.check(program, checkSettings(), each), false);
     }
 
     /** Check, translate and simulate (with {@code simulation}, or not at all when empty); the DMC instructions go to {@code out}. */

@@ -95,6 +95,7 @@ public final class Main implements Runnable {
         m.put("explain", ExplainCommand.class);
         m.put("machines", MachinesCommand.class);
         m.put("studio", StudioCommand.class);
+        m.put("lsp", LspCommand.class);
         m.put("daemon", DaemonCommand.class);
         m.put("controller", ControllerCommand.class);
         m.put("completion", CompletionCommand.class);

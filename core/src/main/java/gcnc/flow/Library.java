@@ -28,7 +28,7 @@ import java.util.Set;
  * {@code 1000.nc}; P100 also {@code O0100.nc}, {@code 0100.nc}), read when first called. Every
  * block held counts towards one limit, {@link ProgramFlow#HOLD_LIMIT}.
  */
-final class Library {
+public final class Library {
     private final Map<Integer, Program> programs = new LinkedHashMap<>();
     private final Set<Integer> called = new LinkedHashSet<>();
     /** Numbers looked for beside the file and not found (looked for once). */
@@ -98,11 +98,9 @@ final class Library {
     /** The file beside the program named after {@code number}, read whole; null if there is none (or after E137, E500). */
     private Program beside(int number, Span call) throws IOException {
         Path dir = folder.get();
-        for (String name : names(number)) {
-            Path file = dir.resolve(name);
-            if (Files.isRegularFile(file)) {
-                return read(number, file, call);
-            }
+        java.util.Optional<Path> found = fileFor(dir, number);
+        if (found.isPresent()) {
+            return read(number, found.get(), call);
         }
         for (String name : names(number)) {
             Path file = dir.resolve(name);
@@ -161,6 +159,21 @@ final class Library {
         return new java.io.BufferedReader(new java.io.InputStreamReader(Files.newInputStream(file),
                 StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPLACE)
                         .onUnmappableCharacter(CodingErrorAction.REPLACE)), 1 << 16);
+    }
+
+    /**
+     * The file in {@code folder} that a call of {@code number} reads, as the check looks for it (the
+     * first of {@link #names} that is a regular file); empty if none is. For a front end's "go to
+     * definition" (the language server).
+     */
+    public static java.util.Optional<Path> fileFor(Path folder, long number) {
+        for (String name : names(number)) {
+            Path file = folder.resolve(name);
+            if (Files.isRegularFile(file)) {
+                return java.util.Optional.of(file);
+            }
+        }
+        return java.util.Optional.empty();
     }
 
     /** The file names a call of {@code number} looks for, in order: O1000.nc, 1000.nc (P100: O0100.nc, 0100.nc, O100.nc, 100.nc). */

@@ -1,31 +1,15 @@
 package gcnc.studio;
 
 import com.google.gson.JsonObject;
+import gcnc.ModalStates;
+import gcnc.ModalStates.Snapshot;
 import gcnc.Session;
-import gcnc.check.Checker;
-import gcnc.check.ModalState;
-import gcnc.diag.Diagnostics;
-import gcnc.diag.Origin;
-import gcnc.flow.ProgramFlow;
-import gcnc.ir.CheckedBlock;
-import gcnc.ir.Point;
-import gcnc.ir.ProgramFrame;
-import gcnc.ir.RawBlock;
-import gcnc.machine.Control;
 import gcnc.machine.FunctionText;
-import gcnc.machine.GFunction;
-import gcnc.machine.GRole;
 import gcnc.machine.MachineProfile;
-import gcnc.machine.Units;
-import gcnc.parse.BlockReader;
-import gcnc.parse.BlockSource;
-import gcnc.parse.BoundedReader;
 import gcnc.tables.ErrorMessages;
 import java.io.IOException;
-import java.io.Reader;
 import java.io.StringReader;
 import java.nio.file.Path;
-import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;
 
@@ -33,19 +17,11 @@ import java.util.Optional;
  * The hover: what a G or M word does on this control (its row of g_codes.csv or m_codes.csv, in
  * the page's language) and the modal state the control is in after the block of that line
  * (units, feed mode and feed, G96 surface speed and the rpm it gives at the block's X, work
- * offset, tool and offset, where the tool is). The state is the checker's own
- * ({@link Checker#state()} after each block), so it is what the diagnostics were judged by.
- *
- * <p>The blocks are read as {@code gcnc.Compiler} reads them for a check (the parser, then the
- * program flow where the control has calls or macros); a block that runs more than once (a
- * subprogram in the same file, a loop) shows its state at its first run. The last text's states
- * are kept, so hovering along one version of the program checks it once.
+ * offset, tool and offset, where the tool is), as {@link ModalStates} computes it for every front
+ * end's hover (the language server's too). The last text's states are kept, so hovering along one
+ * version of the program checks it once.
  */
 final class Modal {
-    /** The state after one line's block (first run), and what the checker made of it. */
-    record Snapshot(ModalState state, CheckedBlock block, boolean accepted, int runs) {
-    }
-
     private final Session session;
     private final ErrorMessages.Lang lang;
     private String lastKey;
@@ -102,110 +78,52 @@ final class Modal {
     synchronized Map<Integer, Snapshot> states(String name, String text, Optional<Path> folder) throws IOException {
         String key = name + '\u0000' + folder.map(Path::toString).orElse("") + '\u0000' + text;
         if (!key.equals(lastKey)) {
-            last = run(text, folder);
+            last = ModalStates.of(session.withPrograms(folder), new StringReader(text));
             lastKey = key;
         }
         return last;
     }
 
-    private Map<Integer, Snapshot> run(String text, Optional<Path> folder) throws IOException {
-        Diagnostics diags = new Diagnostics();
-        MachineProfile profile = session.profile();
-        BlockSource blocks = blocks(new StringReader(text), profile, diags, folder);
-        Checker checker = new Checker(session.tables(), profile, diags);
-        Map<Integer, Snapshot> states = new HashMap<>();
-        for (RawBlock raw = blocks.next(); raw != null; raw = blocks.next()) {
-            boolean own = diags.place().file() == null; // a block of this text, not of a called file
-            var checked = checker.check(raw);
-            if (!own) {
-                continue;
-            }
-            Snapshot before = states.get(raw.line());
-            if (before != null) {
-                states.put(raw.line(), new Snapshot(before.state(), before.block(), before.accepted(), before.runs() + 1));
-            } else {
-                states.put(raw.line(), new Snapshot(checker.state(), checked.isEmpty() ? null : checked.get(checked.size() - 1),
-                        !checked.isEmpty(), 1));
-            }
-        }
-        return states;
-    }
-
-    /**
-     * The blocks as the control runs them, as {@code gcnc.Compiler} puts the stages together for a
-     * check (its {@code blocks}, which is private: keep the two alike).
-     */
-    private static BlockSource blocks(Reader text, MachineProfile profile, Diagnostics diags, Optional<Path> folder) {
-        Reader source = new BoundedReader(text, diags, Origin.PROGRAM);
-        Control control = profile.control();
-        if (!control.hasProgramFlow()) {
-            return BlockReader.forControl(source, diags, false, control.lineComments());
-        }
-        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), control, diags,
-                folder);
-    }
-
-    /** The state as the page shows it: G names as this control writes them, offsets in machine mm. */
+    /** The state as the page shows it ({@link ModalStates#summary}): G names as this control writes them, offsets in machine mm. */
     private JsonObject state(Snapshot s) {
         MachineProfile p = session.profile();
-        Control c = p.control();
-        ModalState m = s.state();
+        ModalStates.Summary m = ModalStates.summary(s, p);
         JsonObject o = new JsonObject();
-        o.addProperty("accepted", s.accepted());
-        o.addProperty("runs", s.runs());
-        o.addProperty("units", m.units() == Units.INCH ? "inch" : "mm");
-        o.addProperty("unitsG", g(c, m.units() == Units.INCH ? GRole.INCH : GRole.METRIC));
-        o.addProperty("motion", m.motion() < 0 ? null : "G0" + m.motion());
+        o.addProperty("accepted", m.accepted());
+        o.addProperty("runs", m.runs());
+        o.addProperty("units", m.units());
+        o.addProperty("unitsG", m.unitsG());
+        o.addProperty("motion", m.motion());
         o.addProperty("incremental", m.incremental());
         o.addProperty("feedPerRev", m.feedPerRev());
-        o.addProperty("feedG", g(c, m.feedPerRev() ? GRole.FEED_PER_REV : GRole.FEED_PER_MINUTE));
-        o.addProperty("feed", finite(m.feed()));
+        o.addProperty("feedG", m.feedG());
+        o.addProperty("feed", m.feed());
         o.addProperty("css", m.css());
-        o.addProperty("spindleG", g(c, m.css() ? GRole.CSS : GRole.RPM));
-        o.addProperty("surfaceSpeed", finite(m.surfaceSpeed()));
-        o.addProperty("rpm", finite(m.rpm()));
-        o.addProperty("rpmClamp", finite(m.rpmClamp()));
-        if (s.block() != null && s.block().spindleRpm().isPresent()) {
-            o.addProperty("blockRpm", round(s.block().spindleRpm().getAsDouble()));
-        }
-        o.addProperty("workOffset", "G" + m.workOffset());
-        p.workOffset(m.workOffset()).ifPresent(w -> o.add("workOffsetMm", mm(w, p)));
+        o.addProperty("spindleG", m.spindleG());
+        o.addProperty("surfaceSpeed", m.surfaceSpeed());
+        o.addProperty("rpm", m.rpm());
+        o.addProperty("rpmClamp", m.rpmClamp());
+        m.blockRpm().ifPresent(r -> o.addProperty("blockRpm", r));
+        o.addProperty("workOffset", m.workOffset());
+        m.workOffsetMm().ifPresent(w -> o.add("workOffsetMm", mm(w)));
         o.addProperty("tool", m.tool());
         o.addProperty("toolOffset", m.toolOffset());
-        p.toolOffset(m.toolOffset()).ifPresent(t -> o.add("toolOffsetMm", mm(t, p)));
-        o.addProperty("nose", g(c, switch (m.nose()) {
-            case LEFT -> GRole.NOSE_COMP_LEFT;
-            case RIGHT -> GRole.NOSE_COMP_RIGHT;
-            case OFF -> GRole.NOSE_COMP_CANCEL;
-        }));
-        CheckedBlock b = s.block();
-        if (b != null && b.frame() != null) {
-            ProgramFrame f = b.frame();
+        m.toolOffsetMm().ifPresent(t -> o.add("toolOffsetMm", mm(t)));
+        o.addProperty("nose", m.nose());
+        m.at().ifPresent(a -> {
             JsonObject at = new JsonObject();
-            at.addProperty("x", round((b.end().x() - f.origin().x()) / f.perX()));
-            at.addProperty("z", round((b.end().z() - f.origin().z()) / f.perZ()));
-            at.addProperty("diameter", p.diameterX());
+            at.addProperty("x", a.x());
+            at.addProperty("z", a.z());
+            at.addProperty("diameter", a.diameter());
             o.add("at", at);
-        }
+        });
         return o;
     }
 
-    private static String g(Control c, GRole role) {
-        return c.gFor(role).map(GFunction::name).orElse(null);
-    }
-
-    private static JsonObject mm(Point counts, MachineProfile p) {
+    private static JsonObject mm(ModalStates.Mm v) {
         JsonObject o = new JsonObject();
-        o.addProperty("x", round(counts.x() / p.x().countsPerMm()));
-        o.addProperty("z", round(counts.z() / p.z().countsPerMm()));
+        o.addProperty("x", v.x());
+        o.addProperty("z", v.z());
         return o;
-    }
-
-    private static Double finite(double v) {
-        return Double.isFinite(v) ? round(v) : null;
-    }
-
-    private static double round(double v) {
-        return Math.round(v * 1000) / 1000.0;
     }
 }
