@@ -38,7 +38,7 @@ class StudioRunServerTest {
     static Studio studio;
     static Path dir;
 
-    static final List<String> POSTS = List.of("run/arm", "run/start", "run/hold", "run/resume", "run/step",
+    static final List<String> POSTS = List.of("run/arm", "run/start", "run/hold", "run/resume", "run/step", "run/continue",
             "run/override", "run/stop");
 
     @BeforeAll
@@ -305,6 +305,26 @@ class StudioRunServerTest {
         assertEquals(200, post("run/stop", "{}").status());
         waitUntil(() -> get("run").json().has("ended") ? true : null);
         assertEquals(3, get("run").json().get("ended").getAsInt());
+    }
+
+    @Test
+    void aProgramStopWaitsForCycleStartAndTheRunGoesOnAfterIt() throws Exception {
+        // the bishop with an M00 after its tenth line: the run stops there, moves nothing, and goes on after continue
+        List<String> lines = Files.readAllLines(Path.of("samples/bishop.nc"));
+        lines.add(10, "M00 (CHECK THE PART)");
+        Files.write(dir.resolve("stop.nc"), lines);
+        assertEquals(409, post("run/continue", "{}").status(), "no run, no stop to go on from");
+        JsonObject a = arm("{\"name\":\"stop.nc\",\"target\":{\"kind\":\"virtual\"}}");
+        assertTrue(a.get("armed").getAsBoolean(), a.toString());
+        assertEquals(200, post("run/start", "{\"arm\":\"" + a.get("arm").getAsString() + "\"}").status());
+        JsonObject stop = waitUntil(() -> events("program-stop").isEmpty() ? null : events("program-stop").get(0));
+        assertEquals(11, stop.get("line").getAsInt(), stop.toString());
+        assertTrue(stop.toString().contains("CHECK THE PART"), stop.toString());
+        assertTrue(events("program-stop-continued").isEmpty(), "it waits for the operator");
+        assertEquals(200, post("run/continue", "{}").status());
+        waitUntil(() -> events("program-stop-continued").isEmpty() ? null : true);
+        waitUntil(() -> get("run").json().has("ended") ? true : null);
+        assertEquals(0, get("run").json().get("ended").getAsInt(), get("run").body());
     }
 
     private static void readUntil(InputStream in, StringBuilder seen, String wanted) throws IOException {

@@ -89,7 +89,7 @@ final class Api implements AutoCloseable {
             case "profile" -> Http.json(ex, 200, profile(get(ex)));
             case "profile/impact" -> timed(ex, () -> impact(post(ex)));
             case "profile/save" -> Http.json(ex, 200, saveProfile(post(ex)));
-            case "run", "run/arm", "run/start", "run/hold", "run/resume", "run/step", "run/override", "run/stop" ->
+            case "run", "run/arm", "run/start", "run/hold", "run/resume", "run/step", "run/continue", "run/override", "run/stop" ->
                     runs.handle(endpoint, ex);
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
         }
