@@ -85,16 +85,7 @@ final class OffsetsCommand implements Callable<Integer> {
             PrintWriter out = spec.commandLine().getOut();
             PrintWriter err = spec.commandLine().getErr();
             Reporter reporter = new Reporter(Reporter.Format.GNU, quiet, out, err, common.language());
-            int status;
-            try {
-                status = run(common.load(reporter, true), reporter);
-            } catch (TableException e) {
-                status = reporter.tableFault(e);
-            }
-            reporter.finish();
-            out.flush();
-            err.flush();
-            return status;
+            return RunCommand.loaded(reporter, out, err, common, true, setup -> run(setup, reporter));
         }
 
         private int run(CommonOptions.Setup setup, Reporter reporter) throws TableException {

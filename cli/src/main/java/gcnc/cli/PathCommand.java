@@ -4,7 +4,6 @@ import gcnc.Compiler;
 import gcnc.output.AtomicOutput;
 import gcnc.path.InterpretedPath;
 import gcnc.path.PathFormat;
-import gcnc.tables.TableException;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Reader;
@@ -65,16 +64,7 @@ final class PathCommand implements Callable<Integer> {
         Reporter reporter = new Reporter(Reporter.Format.GNU, quiet, out, err, common.language());
         boolean toStdout = output == null || SourceFiles.isStdin(output);
         reporter.stdoutTaken();
-        int status;
-        try {
-            status = run(common.load(reporter), chosen, toStdout);
-        } catch (TableException e) {
-            status = reporter.tableFault(e);
-        }
-        reporter.finish();
-        out.flush();
-        err.flush();
-        return status;
+        return RunCommand.loaded(reporter, out, err, common, false, setup -> run(setup, chosen, toStdout));
     }
 
     private int run(CommonOptions.Setup setup, PathFormat chosen, boolean toStdout) {

@@ -33,9 +33,27 @@ abstract class RunCommand implements Callable<Integer> {
         if (report.format == Reporter.Format.GNU) {
             reporter.colour(report.colour());
         }
+        return loaded(reporter, out, err, common, false, setup -> run(setup, out, err));
+    }
+
+    /** A command's work once the tables and the machine are loaded; returns the exit status. */
+    @FunctionalInterface
+    interface Loaded {
+        int run(CommonOptions.Setup setup) throws TableException;
+    }
+
+    /**
+     * Loads the tables and the machine through {@code common} ({@code newOffsets}: an offsets file
+     * that may not exist yet, for the test cut that creates it), runs {@code body}, reports a broken
+     * table or profile (status 2), then finishes the report and flushes both streams: the frame of
+     * every command that works on programs for one machine (this class's, {@code gcnc path}'s,
+     * {@code gcnc offsets wear}'s).
+     */
+    static int loaded(Reporter reporter, PrintWriter out, PrintWriter err, CommonOptions common, boolean newOffsets,
+                      Loaded body) {
         int status;
         try {
-            status = run(common.load(reporter), out, err);
+            status = body.run(common.load(reporter, newOffsets));
         } catch (TableException e) {
             status = reporter.tableFault(e);
         }
