@@ -91,6 +91,14 @@ class LongContourRunTest {
         }
         // both outputs tripped on the way: in the program form, two AV trips while the sequence ran (the
         // stream form's host waits for them itself, polling _AVS: the controller sees no AV)
+        for (String l : lines) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("^# av \\d+ tripped at (\\d+) of path \\(trip point (\\d+)\\)")
+                    .matcher(l);
+            if (m.find()) { // the thread went on where the trip point is, within a chord (50 counts), not late
+                long late = Long.parseLong(m.group(1)) - Long.parseLong(m.group(2));
+                assertTrue(late >= 0 && late < 50, l);
+            }
+        }
         assertEquals(form.equals("program") ? 2 : 0, lines.stream().filter(l -> l.startsWith("# av ") && l.contains(" tripped at ")).count(),
                 lines.stream().filter(l -> l.startsWith("# av")).toList().toString());
     }
