@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import gcnc.controller.Fault;
+import gcnc.controller.InjectedFault;
 import gcnc.controller.Model;
 import gcnc.controller.VirtualController;
 import gcnc.send.ProbeReport;
@@ -29,9 +29,9 @@ class ProbeCommandTest {
     }
 
     private static VirtualController vc(double speed, String... faults) throws Exception {
-        List<Fault> f = new java.util.ArrayList<>();
+        List<InjectedFault> f = new java.util.ArrayList<>();
         for (String s : faults) {
-            f.add(Fault.parse(s));
+            f.add(InjectedFault.parse(s));
         }
         return VirtualController.tcp(0, new VirtualController.Options(Model.standard(), speed, f, null));
     }

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gcnc.Session;
-import gcnc.controller.Fault;
+import gcnc.controller.InjectedFault;
 import gcnc.controller.Model;
 import gcnc.controller.VirtualController;
 import gcnc.machine.MachineProfile;
@@ -120,9 +120,9 @@ class RunOnControllerTest {
     }
 
     static VirtualController traced(double speed, Model model, Path trace, String... faults) throws IOException {
-        List<Fault> f = new ArrayList<>();
+        List<InjectedFault> f = new ArrayList<>();
         for (String s : faults) {
-            f.add(Fault.parse(s));
+            f.add(InjectedFault.parse(s));
         }
         return VirtualController.tcp(0, new VirtualController.Options(model, speed, f, trace));
     }

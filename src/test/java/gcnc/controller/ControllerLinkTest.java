@@ -37,11 +37,11 @@ class ControllerLinkTest {
         }
     }
 
-    private Links open(Links.Kind kind, Fault... faults) throws IOException {
+    private Links open(Links.Kind kind, InjectedFault... faults) throws IOException {
         return open(kind, 20, faults);
     }
 
-    private Links open(Links.Kind kind, double speed, Fault... faults) throws IOException {
+    private Links open(Links.Kind kind, double speed, InjectedFault... faults) throws IOException {
         assumeTrue(kind == Links.Kind.TCP || Links.socat(), "socat is not installed (setup.sh installs it): no pty pair");
         return Links.open(kind, Model.standard(), speed, List.of(faults), tmp.resolve("trace.txt"));
     }
@@ -116,7 +116,7 @@ class ControllerLinkTest {
     @ParameterizedTest
     @EnumSource(Links.Kind.class)
     void rejectAnswersQuestionMarkToThatCommandOnly(Links.Kind kind) throws IOException {
-        try (Links l = open(kind, Fault.parse("reject=3"))) {
+        try (Links l = open(kind, InjectedFault.parse("reject=3"))) {
             HostLink h = l.host;
             assertEquals(":", h.send("a=1"));
             assertEquals(":", h.send("b=2"));
@@ -130,7 +130,7 @@ class ControllerLinkTest {
     @ParameterizedTest
     @EnumSource(Links.Kind.class)
     void garbageComesAfterThatManyBytes(Links.Kind kind) throws IOException {
-        try (Links l = open(kind, Fault.parse("garbage-after=12"))) {
+        try (Links l = open(kind, InjectedFault.parse("garbage-after=12"))) {
             HostLink h = l.host;
             assertEquals(" 511.0000\r\n:", h.send("MG _LMS"), "12 bytes, then the garbage");
             String next = h.send("MG _LMS");
@@ -144,11 +144,11 @@ class ControllerLinkTest {
     @ParameterizedTest
     @EnumSource(Links.Kind.class)
     void disconnectEndsTheLinkAndTheMotionGoesOn(Links.Kind kind) throws IOException, InterruptedException {
-        try (Links l = open(kind, 2, Fault.parse("disconnect-after=80"))) {
+        try (Links l = open(kind, 2, InjectedFault.parse("disconnect-after=80"))) {
             HostLink h = l.host;
             fiveSegments(h); // 77 bytes
             assertThrows(IOException.class, () -> h.send("MG _LMS"), "the link is gone after byte 80");
-            Controller c = l.controller.controller();
+            VirtualGalil c = l.controller.controller();
             long until = System.nanoTime() + 5_000_000_000L;
             while (c.moving() && System.nanoTime() < until) {
                 Thread.sleep(10);
@@ -160,7 +160,7 @@ class ControllerLinkTest {
     @ParameterizedTest
     @EnumSource(Links.Kind.class)
     void slowDelaysEveryReply(Links.Kind kind) throws IOException {
-        try (Links l = open(kind, Fault.parse("slow=150"))) {
+        try (Links l = open(kind, InjectedFault.parse("slow=150"))) {
             long start = System.nanoTime();
             assertEquals(":", l.host.send("a=1"));
             assertEquals(":", l.host.send("b=1"));
@@ -171,7 +171,7 @@ class ControllerLinkTest {
     @ParameterizedTest
     @EnumSource(Links.Kind.class)
     void stallStopsDrainingTheBufferAfterThatSegment(Links.Kind kind) throws IOException, InterruptedException {
-        try (Links l = open(kind, Fault.parse("stall=2"))) {
+        try (Links l = open(kind, InjectedFault.parse("stall=2"))) {
             HostLink h = l.host;
             fiveSegments(h);
             Thread.sleep(400); // 2 s of controller time at 20x: far longer than the five segments take
@@ -188,7 +188,7 @@ class ControllerLinkTest {
     @ParameterizedTest
     @EnumSource(Links.Kind.class)
     void aLimitTripsDuringThatSegmentAndRunsLimswi(Links.Kind kind) throws IOException, InterruptedException {
-        try (Links l = open(kind, Fault.parse("limit-at=3"))) {
+        try (Links l = open(kind, InjectedFault.parse("limit-at=3"))) {
             HostLink h = l.host;
             assertEquals("::", h.download("#LIMSWI\r\nlim=_LFX\r\nMG \"LIMIT\",_CSS{F1.0}\r\nRE\r\n"));
             assertEquals(":", h.send("CW 1"));

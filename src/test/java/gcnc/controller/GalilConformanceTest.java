@@ -133,7 +133,7 @@ class GalilConformanceTest {
                         break;
                     }
                 }
-                Controller c = new Controller(Model.standard(), List.of(), null);
+                VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null);
                 try {
                     c.command(cmd + "X=1");
                     if (!c.variables.containsKey(cmd + "X")) {
@@ -167,7 +167,7 @@ class GalilConformanceTest {
         if (accepts("tool=1")) {
             accepted.add("=");
         }
-        Controller c = new Controller(Model.standard(), List.of(), null);
+        VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null);
         c.variable("TIME");
         accepted.add("TIME");
         StringBuilder name = new StringBuilder();
@@ -203,7 +203,7 @@ class GalilConformanceTest {
 
     /** Does a fresh controller take {@code statement} from the host (any answer but TC 1)? */
     private static boolean accepts(String statement) {
-        Controller c = new Controller(Model.standard(), List.of(), null);
+        VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null);
         try {
             c.command(statement);
             return true;

@@ -34,7 +34,7 @@ final class Links implements Closeable {
         return gcnc.PtyPair.available();
     }
 
-    static Links open(Kind kind, Model model, double speed, List<Fault> faults, Path trace) throws IOException {
+    static Links open(Kind kind, Model model, double speed, List<InjectedFault> faults, Path trace) throws IOException {
         VirtualController.Options o = new VirtualController.Options(model, speed, faults, trace);
         if (kind == Kind.TCP) {
             VirtualController vc = VirtualController.tcp(0, o);

@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
  */
 class ManualExamplesTest {
     private final StringWriter trace = new StringWriter();
-    private final Controller c = new Controller(Model.standard(), List.of(), trace);
+    private final VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), trace);
 
     private String ok(String command) throws GalilException {
         return c.command(command);

@@ -21,9 +21,9 @@ import org.junit.jupiter.api.Test;
  */
 class ProtocolPortsTest {
     private static VirtualController.Options options(String... faults) {
-        List<Fault> f = new java.util.ArrayList<>();
+        List<InjectedFault> f = new java.util.ArrayList<>();
         for (String s : faults) {
-            f.add(Fault.parse(s));
+            f.add(InjectedFault.parse(s));
         }
         return new VirtualController.Options(Model.standard(), 20, f, null);
     }
@@ -112,7 +112,7 @@ class ProtocolPortsTest {
 
     @Test
     void commandsNotValidInTheTerminalAreRefusedWithTc2() throws GalilException {
-        Controller c = new Controller(Model.standard(), List.of(), null);
+        VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null);
         for (String cmd : List.of("EN", "WT 10", "AM", "AV 100", "MF ,,100", "JP #a", "JS #a", "ZS", "RE", "MC",
                 "AI 1", "#LABEL", "IF (1)", "ENDIF", "ELSE")) {
             GalilException e = assertThrows(GalilException.class, () -> c.command(cmd), cmd);
@@ -125,7 +125,7 @@ class ProtocolPortsTest {
 
     @Test
     void aProgramLineThatIsNotValidInAProgramIsTc3() throws Exception {
-        Controller c = new Controller(Model.standard(), List.of(), null);
+        VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null);
         c.download("#a\r\nRS\r\nEN\r\n", false);
         c.command("XQ #a,0");
         c.advance(0.01);

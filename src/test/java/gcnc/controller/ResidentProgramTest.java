@@ -24,7 +24,7 @@ class ResidentProgramTest {
             "#LIMSWI", "MG \"LIM\",_SCX,_SCY", "ST S", "OFC=0;CB 1", "RE",
             "#POSERR", "MG \"POSERR\"", "ST S;OFC=0;CB 1", "RE");
 
-    private final Controller c = new Controller(Model.standard(), List.of(), null);
+    private final VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null);
     private final StringBuilder unsolicited = new StringBuilder();
 
     ResidentProgramTest() throws GalilException {

@@ -10,12 +10,12 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /**
- * The virtual Galil without a link, on a clock the test turns ({@link Controller#advance}): the replies
+ * The virtual Galil without a link, on a clock the test turns ({@link VirtualGalil#advance}): the replies
  * of the command protocol, the program threads, and the vector motion in time (docs/virtual-controller.md).
  */
 class VirtualGalilTest {
     private final StringWriter trace = new StringWriter();
-    private final Controller c = new Controller(Model.standard(), List.of(), trace);
+    private final VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), trace);
 
     private String ok(String command) throws GalilException {
         return c.command(command);
@@ -81,7 +81,7 @@ class VirtualGalilTest {
         assertEquals(program, c.programText(), "a refused download leaves the program as it was");
         assertEquals(Tc.BAD_LABEL, assertThrows(GalilException.class, () -> c.download("#A\r#A\r", false)).tc);
         assertEquals(Tc.BAD_LABEL, assertThrows(GalilException.class, () -> c.download("#TOOLONG8\r", false)).tc);
-        Controller small = new Controller(Model.named("DMC-2143").orElseThrow(), List.of(), null);
+        VirtualGalil small = new VirtualGalil(Model.named("DMC-2143").orElseThrow(), List.of(), null);
         assertEquals(Tc.DOWNLOAD, assertThrows(GalilException.class, () -> small.download("EN\r".repeat(2001), false)).tc);
         small.download("EN\r".repeat(2000), false);
     }

@@ -29,7 +29,7 @@ class VirtualThreadPhaseTest {
 
     /** Where Z (X here) stands against the helix from each pass's sync point, counts, once past 6,000 counts of the pass. */
     private static List<Double> phases(List<String> program, long seed) throws GalilException {
-        Controller c = new Controller(Model.standard(), List.of(), null, Controller.SPINDLE_RATE, seed);
+        VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), null, VirtualGalil.SPINDLE_RATE, seed);
         c.command("SH XYC");
         c.command("VM XY");
         c.command(String.format(java.util.Locale.ROOT, "OF ,,%.4f", VOLTS));
@@ -62,7 +62,7 @@ class VirtualThreadPhaseTest {
 
     @Test
     void eightCorrectedPassesStartWithinTwoCountsOfEachOther() throws GalilException {
-        for (long seed : new long[] {Controller.TRIP_SEED, 1, 2, 3}) {
+        for (long seed : new long[] {VirtualGalil.TRIP_SEED, 1, 2, 3}) {
             List<Double> phases = phases(CORRECTED, seed);
             assertTrue(spread(phases) <= 2, "seed " + seed + ": " + phases);
             assertTrue(Math.abs(phases.get(0)) <= 2, "on the helix from the whole revolution: " + phases);
@@ -71,7 +71,7 @@ class VirtualThreadPhaseTest {
 
     @Test
     void withoutTheCorrectionThePassesStartWhereverTheTripFell() throws GalilException {
-        List<Double> phases = phases(UNCORRECTED, Controller.TRIP_SEED);
+        List<Double> phases = phases(UNCORRECTED, VirtualGalil.TRIP_SEED);
         // up to 2 samples of 41 encoder counts × 0.3604 late, at random: far more than 2 counts apart
         assertTrue(spread(phases) > 5, phases.toString());
     }

@@ -20,7 +20,7 @@ class VirtualThreadTest {
     static final double VOLTS = 600 / 410.0;
 
     private final StringWriter trace = new StringWriter();
-    private final Controller c = new Controller(Model.standard(), List.of(), trace);
+    private final VirtualGalil c = new VirtualGalil(Model.standard(), List.of(), trace);
 
     private String ok(String command) throws GalilException {
         return c.command(command);

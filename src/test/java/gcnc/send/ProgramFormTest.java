@@ -32,7 +32,7 @@ class ProgramFormTest {
     void aPollInsideAFaultsRoutineNamesNoBlockAndTheLastOneStands() throws Exception {
         MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
         DmcProgram p = DmcProgram.read(DMC, MapReader.read(new BufferedReader(new StringReader(MAP))), haas);
-        Piece whole = Piece.whole(p);
+        Download whole = Download.whole(p);
         int feed = lineHolding(whole, "VP 1000,0");
         int limswi = lineHolding(whole, "#LIMSWI");
         int fault = lineHolding(whole, "AM XY");
@@ -49,7 +49,7 @@ class ProgramFormTest {
     }
 
     /** The controller's line (0-based) of the piece that holds {@code text}: where {@code _XQ0} would stand. */
-    private static int lineHolding(Piece piece, String text) {
+    private static int lineHolding(Download piece, String text) {
         for (int i = 0; i < piece.lines().size(); i++) {
             if (piece.lines().get(i).contains(text)) {
                 return i;

@@ -42,7 +42,7 @@ class ResumeTest {
     @Test
     void atTheBlocksStartTheStateComesFirstThenTheProgramFromThere() throws Exception {
         DmcProgram p = program();
-        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
+        Download r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
         assertEquals(List.of("#GCNC", "SH XY", "VM XY", "VA 2000000", "VD 2000000",
                 "TOOL=1", "SB1", "CB2", "OF ,,3.0000", "WT 2000",
                 "VS 1000", "VP 1000,0", "VE", "BGS", "AMS", "VS 500", "CR 1000,90,-90", "VE", "BGS", "AMS", "CB1", "EN"),
@@ -55,7 +55,7 @@ class ResumeTest {
     @Test
     void halfWayAlongALineTheRestOfItIsReplanned() throws Exception {
         DmcProgram p = program();
-        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 1));
+        Download r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 1));
         List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 600,-1", "VE", "BGS", "AMS", "VS 500"), l.subList(vs, vs + 6));
@@ -68,7 +68,7 @@ class ResumeTest {
         double[] arcStart = plus(home(p), 1000, 0);
         double[] centre = plus(arcStart, 0, -1000);
         double[] at = plus(centre, Math.round(1000 * Math.cos(Math.toRadians(30))), Math.round(1000 * Math.sin(Math.toRadians(30))));
-        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), at);
+        Download r = new Resume(p, 3).plan(new ResumePoint(7, 0), at);
         List<String> l = texts(r);
         int vs = l.indexOf("VS 500");
         String cr = l.get(vs + 1);
@@ -85,7 +85,7 @@ class ResumeTest {
     @Test
     void atTheEndOfTheMotionTheProgramGoesOnAfterIt() throws Exception {
         DmcProgram p = program();
-        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 1000, 0));
+        Download r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 1000, 0));
         assertEquals("VS 500", texts(r).get(texts(r).indexOf("WT 2000") + 1));
     }
 
@@ -123,7 +123,7 @@ class ResumeTest {
         List<DmcProgram.Motion> seven = p.motionsOf(7);
         assertEquals(1, seven.size());
         assertEquals(1, seven.get(0).from(), "line 7's motion is the sequence's second segment");
-        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
+        Download r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
         List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         // the VP measured from the new origin, its own speed kept; the spindle change moved back by the 1000 counts run
@@ -136,7 +136,7 @@ class ResumeTest {
     @Test
     void pastASpindleChangeOnTheWayItIsPartOfTheState() throws Exception {
         DmcProgram p = blended();
-        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
+        Download r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
         List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("OF ,,4.0000", "WT 2000"), l.subList(vs - 2, vs));
@@ -146,7 +146,7 @@ class ResumeTest {
     @Test
     void partWayAlongTheFirstBlockOfASequenceItsRestAndTheNextBlocksSegmentsFollow() throws Exception {
         DmcProgram p = blended();
-        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 0));
+        Download r = new Resume(p, 3).plan(new ResumePoint(6, 0), plus(home(p), 400, 0));
         List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 600,0 <1000 >500", "VP 600,1000 <800", "VE", "BGS", "AV 1100", "OF ,,4.0000",
@@ -154,7 +154,7 @@ class ResumeTest {
         assertEquals(List.of(6, 7), List.of(p.sourceLine(r.originOf(vs + 1)), p.sourceLine(r.originOf(vs + 2))));
         // the controller's segments of the new sequence name lines 6 and 7 (_CSS 0 and 1: the segment
         // counter starts at zero, DMC-40x0 User Manual p.86); after the end, either reading names line 7
-        Piece.Segments seg = r.segmentsAt(l.indexOf("AMS"), p);
+        Download.Segments seg = r.segmentsAt(l.indexOf("AMS"), p);
         assertEquals(6, p.sourceLine(seg.executing(0)));
         assertEquals(7, p.sourceLine(seg.executing(1)));
         assertEquals(7, p.sourceLine(seg.executing(2)));
@@ -174,13 +174,13 @@ class ResumeTest {
         MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
         DmcProgram p = DmcProgram.read(two, MapReader.read(new BufferedReader(new StringReader(
                 "# source part.nc\n1 0\n6 4\n7 5\n10 6\n12 7\n18 8\n19 0\n"))), haas);
-        Piece r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
+        Download r = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 0));
         List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 0,1000 <800", "VE", "BGS", "AV 500", "OF ,,4.0000", "AV 300", "OF ,,5.0000",
                 "AMS", "CB1", "EN"), l.subList(vs, l.size()));
         // resumed 1,600 counts along: the first change has happened, the second is 200 counts ahead
-        Piece past = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
+        Download past = new Resume(p, 3).plan(new ResumePoint(7, 0), plus(home(p), 1000, 600));
         List<String> q = texts(past);
         int at = q.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 0,400 <800", "VE", "BGS", "AV 200", "OF ,,5.0000", "AMS", "CB1", "EN"),
@@ -200,7 +200,7 @@ class ResumeTest {
         assertEquals(5, progress.completedLine());
         progress.at(BLENDED.indexOf("VP 1000,0 <1000 >500"), null, new Operator());
         assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "its first: the block's start");
-        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 2), plus(home(p), 1000, 300));
+        Download r = new Resume(p, 3).plan(new ResumePoint(6, 2), plus(home(p), 1000, 300));
         List<String> l = texts(r);
         int vs = l.indexOf("VS 1000");
         assertEquals(List.of("VS 1000", "VP 0,700 <800", "VE", "BGS", "AV 200", "OF ,,4.0000", "AMS"), l.subList(vs, vs + 7));
@@ -300,7 +300,7 @@ class ResumeTest {
     }
 
     /** The piece's commands as printed, one each (the download packs them into lines). */
-    private static List<String> texts(Piece r) {
+    private static List<String> texts(Download r) {
         return r.commands().stream().map(gcnc.dmc.DmcPrinter::print).toList();
     }
 }

@@ -1,6 +1,6 @@
 package gcnc.cli;
 
-import gcnc.controller.Fault;
+import gcnc.controller.InjectedFault;
 import gcnc.controller.Model;
 import gcnc.controller.VirtualController;
 import gcnc.tables.ErrorMessages;
@@ -100,10 +100,10 @@ final class ControllerCommand implements Callable<Integer> {
             err.println("gcnc: " + say.get("controller.bad_speed", speed));
             return ExitCode.USAGE;
         }
-        List<Fault> parsed = new ArrayList<>();
+        List<InjectedFault> parsed = new ArrayList<>();
         for (String f : faults) {
             try {
-                parsed.add(Fault.parse(f));
+                parsed.add(InjectedFault.parse(f));
             } catch (IllegalArgumentException e) {
                 err.println("gcnc: " + say.get("controller.bad_fault", f));
                 return ExitCode.USAGE;

@@ -1,6 +1,6 @@
 package gcnc.cli;
 
-import gcnc.daemon.Control;
+import gcnc.daemon.DaemonControl;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -9,7 +9,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code gcnc daemon start|stop|status}: the resident checker (gcnc.daemon.Server), a warm JVM that
+ * {@code gcnc daemon start|stop|status}: the resident checker (gcnc.daemon.DaemonServer), a warm JVM that
  * the launcher scripts/gcnc hands check, compile and simulate to (docs/command-line.md, "Resident
  * checker").
  */
@@ -34,15 +34,15 @@ final class DaemonCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        Control control = new Control(((Main) spec.root().userObject()).streams().env());
-        Control.Outcome o = switch (action) {
+        DaemonControl control = new DaemonControl(((Main) spec.root().userObject()).streams().env());
+        DaemonControl.Outcome o = switch (action) {
             case START -> control.start(ProcessHandle.current().info().command().orElse("java"),
                     Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI()),
                     Path.of("").toAbsolutePath());
             case STOP -> control.stop();
             case STATUS -> control.status();
         };
-        (o.status() == 0 || o.status() == Control.NOT_RUNNING ? spec.commandLine().getOut() : spec.commandLine().getErr())
+        (o.status() == 0 || o.status() == DaemonControl.NOT_RUNNING ? spec.commandLine().getOut() : spec.commandLine().getErr())
                 .println(o.line());
         return o.status();
     }

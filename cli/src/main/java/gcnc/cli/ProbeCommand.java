@@ -106,8 +106,8 @@ final class ProbeCommand implements Callable<Integer> {
 
     private int probe(MachineProfile profile, GalilModel model, Messages messages, PrintWriter out, PrintWriter err) {
         gcnc.send.DmcProgram.Plane plane = gcnc.send.DmcProgram.Plane.of(profile);
-        char first = gcnc.send.Controller.letter(plane.first());
-        char second = gcnc.send.Controller.letter(plane.second());
+        char first = gcnc.send.MachineLink.letter(plane.first());
+        char second = gcnc.send.MachineLink.letter(plane.second());
         Probe.Motion motion = null;
         if (allowMotion) {
             String why = confirmed();

@@ -24,7 +24,7 @@ final class JarIdentity {
 
     static JarIdentity ofRunningJar() throws IOException {
         try {
-            Path p = Path.of(Server.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            Path p = Path.of(DaemonServer.class.getProtectionDomain().getCodeSource().getLocation().toURI());
             return of(p);
         } catch (URISyntaxException e) {
             throw new IOException(e);

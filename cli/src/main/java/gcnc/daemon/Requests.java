@@ -69,7 +69,7 @@ final class Requests {
                 default -> throw new IOException("unknown frame " + f.type());
             }
         }
-        return new Request(jar, cwd, Server.env(env), List.copyOf(argv), console, stdoutId, stdin);
+        return new Request(jar, cwd, DaemonServer.env(env), List.copyOf(argv), console, stdoutId, stdin);
     }
 
     /** Stands for a name that is not UTF-8: a cold JVM decodes it its own way, so such a request runs cold. */

@@ -21,15 +21,15 @@ import java.nio.charset.StandardCharsets;
  * Ethernet handle 'A'..'H', which never echoes ("The ethernet port will not echo commands"; an
  * {@code echo-ethernet} fault makes it echo, as a unit that contradicted the reference would).
  */
-final class Connection implements Controller.Listener {
-    private final Controller controller;
+final class Connection implements VirtualGalil.Listener {
+    private final VirtualGalil controller;
     private final InputStream in;
     private final OutputStream out;
     private final Faults faults;
     private final Closeable link;
     private final char port;
 
-    Connection(Controller controller, InputStream in, OutputStream out, Faults faults, Closeable link, char port) {
+    Connection(VirtualGalil controller, InputStream in, OutputStream out, Faults faults, Closeable link, char port) {
         this.controller = controller;
         this.port = port;
         // bytes are taken one at a time: buffered, so that each is not a system call of its own

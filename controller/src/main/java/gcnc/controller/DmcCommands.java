@@ -21,13 +21,13 @@ final class DmcCommands implements Command.Visitor<Void> {
     private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
             "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV", "IP");
 
-    private final Controller c;
+    private final VirtualGalil c;
     private final ProgramThread th;
     /** The segment's {@code <o} and {@code >p} speeds taken off the command ({@link Literal}), NaN when not given. */
     private double o = Double.NaN;
     private double p = Double.NaN;
 
-    private DmcCommands(Controller c, ProgramThread th) {
+    private DmcCommands(VirtualGalil c, ProgramThread th) {
         this.c = c;
         this.th = th;
     }
@@ -38,7 +38,7 @@ final class DmcCommands implements Command.Visitor<Void> {
     }
 
     /** Executes {@code st} (for which {@link #handles} is true) for the host (th null) or a thread. */
-    static void execute(String st, Controller c, ProgramThread th) throws GalilException {
+    static void execute(String st, VirtualGalil c, ProgramThread th) throws GalilException {
         DmcCommands run = new DmcCommands(c, th);
         Literal lit = Literal.of(st, c);
         run.o = lit.o();
@@ -356,7 +356,7 @@ final class DmcCommands implements Command.Visitor<Void> {
         java.util.function.BooleanSupplier past = x.reverse() ? () -> position[a] <= at : () -> position[a] >= at;
         // "The accuracy of the MF command is the number of counts that occur in 2*TM" (COMALL MF, MR):
         // the trip is seen 0, 1 or 2 samples after the first sample past the count, at the
-        // controller's seeded trip phase (Controller.tripPhase), so passes do not start alike
+        // controller's seeded trip phase (VirtualGalil.tripPhase), so passes do not start alike
         int[] late = {-1};
         th.waitingFor = () -> {
             if (late[0] < 0) {

@@ -5,7 +5,7 @@ import java.util.List;
 /**
  * The link faults of a run ({@code --fault}), with the counters they fire on: bytes sent and received and
  * commands answered over the controller's whole life, across connections. Each fires once. The segment
- * faults (stall, limit) are the motion's: {@link Controller} arms them.
+ * faults (stall, limit) are the motion's: {@link VirtualGalil} arms them.
  */
 final class Faults {
     /** The bytes a {@code garbage-after} fault sends: no {@code :}, {@code ?}, CR or LF, no high bit. */
@@ -21,10 +21,10 @@ final class Faults {
     private long received;
     private long commands;
 
-    Faults(List<Fault> faults) {
+    Faults(List<InjectedFault> faults) {
         long slow = 0;
         boolean echo = false;
-        for (Fault f : faults) {
+        for (InjectedFault f : faults) {
             switch (f.kind()) {
                 case GARBAGE_AFTER -> garbageAfter = f.n();
                 case REJECT -> reject = f.n();

@@ -8,19 +8,19 @@ import java.util.regex.Pattern;
 
 /**
  * Executes one Galil statement for the host (thread null) or for a program thread: the commands gcnc
- * writes go to {@link DmcCommands} (read by gcnc.dmc), program flow to {@link ProgramFlow}, MG to
- * {@link Messages}; the protocol's own commands, variables and arrays are here. The command set is what a
+ * writes go to {@link DmcCommands} (read by gcnc.dmc), program flow to {@link ThreadFlow}, MG to
+ * {@link MgFormat}; the protocol's own commands, variables and arrays are here. The command set is what a
  * gcnc program (downloaded, or streamed with its resident program) and its sender use, listed in
  * docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
  */
 final class Statements {
-    private final Controller c;
+    private final VirtualGalil c;
 
-    final ProgramFlow flow;
+    final ThreadFlow flow;
 
-    Statements(Controller c) {
+    Statements(VirtualGalil c) {
         this.c = c;
-        this.flow = new ProgramFlow(c, this);
+        this.flow = new ThreadFlow(c, this);
     }
 
     /** {@code name=expr}, {@code name[i]=expr}, {@code KPC=0}; group 1 the target, 2 the index, 3 the value. */
@@ -30,7 +30,7 @@ final class Statements {
     private static final java.util.Set<String> AXIS_ASSIGNABLE = java.util.Set.of("KP", "KI", "KD", "ER", "OF", "BL",
             "FL", "TL", "AC", "DC", "SP", "IT", "OE");
 
-    /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link Controller#smooth}. */
+    /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link VirtualGalil#smooth}. */
     private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
             "OE", "NO");
 
@@ -160,7 +160,7 @@ final class Statements {
                 return (n == 1 && e != Tc.NONE ? e.code + " " + e.text : String.valueOf(e.code)) + "\r\n";
             }
             case "MG":
-                return Messages.message(c, args, th);
+                return MgFormat.message(c, args, th);
             case "CW": {
                 List<String> a = split(args);
                 double n = eval(a.get(0));

@@ -14,7 +14,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 /**
- * {@code gcnc controller --virtual}: a {@link Controller} behind a transport, with a clock that runs it in
+ * {@code gcnc controller --virtual}: a {@link VirtualGalil} behind a transport, with a clock that runs it in
  * real time times {@code speed}. TCP binds 127.0.0.1 only and takes any number of connections (Galil's
  * Ethernet handles); the pty transport opens one end of a pty pair (socat's) and, when the far side goes
  * away, waits for the path to come back and opens it again. A disconnect fault closes a TCP connection
@@ -29,10 +29,10 @@ public final class VirtualController implements Closeable {
      * {@code controller().advance(seconds)} and the run, times and buffer states too, is then a function
      * of the commands alone.
      */
-    public record Options(Model model, double speed, List<Fault> faults, Path trace, double spindleRate) {
-        /** With the haas profile's spindle drive and encoder ({@link Controller#SPINDLE_RATE}). */
-        public Options(Model model, double speed, List<Fault> faults, Path trace) {
-            this(model, speed, faults, trace, Controller.SPINDLE_RATE);
+    public record Options(Model model, double speed, List<InjectedFault> faults, Path trace, double spindleRate) {
+        /** With the haas profile's spindle drive and encoder ({@link VirtualGalil#SPINDLE_RATE}). */
+        public Options(Model model, double speed, List<InjectedFault> faults, Path trace) {
+            this(model, speed, faults, trace, VirtualGalil.SPINDLE_RATE);
         }
 
         /** The spindle encoder's counts a second per volt of OF: r/min per volt × counts per revolution / 60. */
@@ -41,7 +41,7 @@ public final class VirtualController implements Closeable {
         }
     }
 
-    private final Controller controller;
+    private final VirtualGalil controller;
     private final Faults faults;
     private final double speed;
     private final Thread clock;
@@ -51,7 +51,7 @@ public final class VirtualController implements Closeable {
 
     private VirtualController(Options o) throws IOException {
         Writer trace = o.trace() == null ? null : Files.newBufferedWriter(o.trace(), StandardCharsets.UTF_8);
-        this.controller = new Controller(o.model(), o.faults(), trace, o.spindleRate());
+        this.controller = new VirtualGalil(o.model(), o.faults(), trace, o.spindleRate());
         this.faults = new Faults(o.faults());
         this.speed = o.speed();
         this.clock = new Thread(this::tick, "gcnc-controller-clock");
@@ -92,7 +92,7 @@ public final class VirtualController implements Closeable {
         return server == null ? -1 : server.getLocalPort();
     }
 
-    public Controller controller() {
+    public VirtualGalil controller() {
         return controller;
     }
 

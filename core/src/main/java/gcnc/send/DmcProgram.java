@@ -12,7 +12,7 @@ import java.util.List;
 
 /**
  * The compiled program the sender downloads: its instructions (the typed commands of gcnc.dmc,
- * each with its {@link Source}; a downloaded {@link Piece} prints and packs them as FILE.dmc holds
+ * each with its {@link Source}; a downloaded {@link Download} prints and packs them as FILE.dmc holds
  * them), the motions it makes ({@link Sequence}) with their places in
  * the plane and the DMC line of every segment, and how long each line's work takes. Built from the
  * compiler's instructions as they come ({@link #of}), so that nothing reads DMC text back; a DMC
@@ -128,12 +128,12 @@ public final class DmcProgram {
         return of(out, profile);
     }
 
-    /** The characters of one controller line, the model's: what a downloaded piece is packed to ({@link Piece}). */
+    /** The characters of one controller line, the model's: what a downloaded piece is packed to ({@link Download}). */
     public int lineWidth() {
         return lineWidth;
     }
 
-    /** The instructions, in order (a downloaded piece prints and packs them: {@link Piece#lines}). */
+    /** The instructions, in order (a downloaded piece prints and packs them: {@link Download#lines}). */
     public List<Instruction> instructions() {
         return instructions;
     }

@@ -12,7 +12,7 @@ final class FeedHold {
     private double ratio = 1;
 
     /** Brings the controller's {@code VR} to what the operator asks now. */
-    void apply(Controller c, Progress progress, Operator op) throws IOException {
+    void apply(MachineLink c, Progress progress, Operator op) throws IOException {
         if (op.held() != held) {
             held = op.held();
             ratio = held ? 0 : op.override();

@@ -76,7 +76,7 @@ public final class Probe {
                     eo.ok() ? ":" : "?");
             revision = revisionOrGarbage();
         }
-        String found = Controller.model(revision);
+        String found = MachineLink.model(revision);
         set(ProbeRow.REVISION, found.isEmpty() ? Status.CONTRADICTED : Status.CONFIRMED, "DMCnnnn Rev x.yz",
                 "'" + GalilClient.printable(revision) + "'");
         client.command("CW 1");
@@ -105,8 +105,8 @@ public final class Probe {
         facts.put("labels free (_DL)", num("_DL"));
         facts.put("variables free (_UL)", num("_UL"));
         facts.put("array elements free (DM ?)", text("DM ?"));
-        facts.put("program lines (firmware " + (Controller.firmware12a(revision) ? "1.2a or later" : "before 1.2a") + ")",
-                Controller.firmware12a(revision) ? "4000" : "2000");
+        facts.put("program lines (firmware " + (MachineLink.firmware12a(revision) ? "1.2a or later" : "before 1.2a") + ")",
+                MachineLink.firmware12a(revision) ? "4000" : "2000");
         boolean running = number("_XQ0") >= 0;
         boolean moving = number("_BGS") != 0;
         facts.put("program running (_XQ0)", running ? "yes" : "no");

@@ -14,7 +14,7 @@ import java.util.List;
  * mode (the thesis's Trace) each G-code block's lines are downloaded and run as a program of their
  * own, after Enter. The program must fit the controller's program memory (checked in pre-flight).
  */
-public final class ProgramForm implements Form {
+public final class ProgramForm implements Delivery {
     private final int pollMs;
     private final double tolerance;
     private final double stallSeconds;
@@ -36,18 +36,18 @@ public final class ProgramForm implements Form {
     }
 
     @Override
-    public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
+    public int linesNeeded(Download piece, DmcProgram program, boolean step) {
         return step ? steps(piece, program).stream().mapToInt(p -> p.lines().size()).max().orElse(0) : piece.lines().size();
     }
 
     @Override
-    public void run(Piece piece, Controller c, Progress progress, Operator op, boolean step, boolean dryRun)
+    public void run(Download piece, MachineLink c, Progress progress, Operator op, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
         if (!step) {
             send(piece, c, progress, op, dryRun);
             return;
         }
-        for (Piece block : steps(piece, progress.program())) {
+        for (Download block : steps(piece, progress.program())) {
             progress.pointAt(firstBlockLine(block, progress.program()));
             int at = progress.executingLine();
             BlockTable.Block b = progress.blocks().at(at);
@@ -64,7 +64,7 @@ public final class ProgramForm implements Form {
     }
 
     /** The first of the piece's lines that came from a G-code block (the header's come from none). */
-    private static int firstBlockLine(Piece p, DmcProgram program) {
+    private static int firstBlockLine(Download p, DmcProgram program) {
         for (int o : p.origin()) {
             if (program.sourceLine(o) > 0) {
                 return o;
@@ -77,12 +77,12 @@ public final class ProgramForm implements Form {
      * The piece cut into G-code blocks, each a program of its own: {@code #GCNC}, the block's lines,
      * {@code EN}. The header goes with the first block, the footer with the last.
      */
-    static List<Piece> steps(Piece piece, DmcProgram program) {
-        List<Piece> out = new ArrayList<>();
+    static List<Download> steps(Download piece, DmcProgram program) {
+        List<Download> out = new ArrayList<>();
         List<Command> lines = piece.commands();
         int i = 0;
         while (i < lines.size()) {
-            Piece.Builder b = new Piece.Builder();
+            Download.Builder b = new Download.Builder();
             int first = piece.originOf(i);
             if (!(lines.get(i) instanceof Command.Label)) {
                 b.add(new Command.Label("GCNC"), first);
@@ -125,7 +125,7 @@ public final class ProgramForm implements Form {
         return lines.size();
     }
 
-    private void send(Piece piece, Controller c, Progress progress, Operator op, boolean dryRun)
+    private void send(Download piece, MachineLink c, Progress progress, Operator op, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
         c.halt();
         GalilClient.Reply dl = c.client().download(piece.lines());
@@ -164,7 +164,7 @@ public final class ProgramForm implements Form {
      * without a #LIMSWI routine stops the motion and the program (COMALL: "without it the controller
      * issues ST"). The axes must be where the piece's last motion ends; else the stop code says why.
      */
-    private void endedAtItsEnd(Piece piece, int lastXq, Controller c, Progress progress, Operator op)
+    private void endedAtItsEnd(Download piece, int lastXq, MachineLink c, Progress progress, Operator op)
             throws IOException, RunFault {
         Sequence last = null;
         for (int o : piece.origin()) {
@@ -187,7 +187,7 @@ public final class ProgramForm implements Form {
         PositionText where = new PositionText(progress.program(), progress.blocks());
         throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "it ended during line "
                 + progress.executingLine() + " with the axes at " + where.at(progress.executingLine(), at) + ", not at the end "
-                + where.at(progress.executingLine(), last.end()) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                + where.at(progress.executingLine(), last.end()) + " (stop code " + code + ": " + MachineLink.stopReason(code) + ")");
     }
 
     /**
@@ -203,16 +203,16 @@ public final class ProgramForm implements Form {
      * The compiled command thread 0 stands at on the controller's line {@code xq}, in a routine after
      * the program's EN too ({@code #PSTOP}: a program stop's wait), or -1 beyond the piece.
      */
-    static int standing(Piece piece, int xq) {
+    static int standing(Download piece, int xq) {
         return piece.originOf(piece.lastOf(xq));
     }
 
-    static int executing(Piece piece, int xq, int css, DmcProgram program) {
+    static int executing(Download piece, int xq, int css, DmcProgram program) {
         int at = piece.lastOf(xq); // a packed line ends at its wait: that is where the thread stands
         if (at >= routines(piece.commands())) {
             return -1;
         }
-        Piece.Segments segments = piece.segmentsAt(at, program);
+        Download.Segments segments = piece.segmentsAt(at, program);
         if (segments == null || segments.origins().length == 0) {
             return piece.originOf(at);
         }
@@ -231,7 +231,7 @@ public final class ProgramForm implements Form {
      * reported from where the machine stopped, not from the last poll. Axes on no sequence's path (a
      * thread pass, a reply that fails) leave the last poll's.
      */
-    private void settled(Piece piece, int lastXq, Controller c, Progress progress, Operator op) {
+    private void settled(Download piece, int lastXq, MachineLink c, Progress progress, Operator op) {
         try {
             double[] at = c.position();
             DmcProgram program = progress.program();
@@ -240,7 +240,7 @@ public final class ProgramForm implements Form {
                 if (!(program.command(piece.originOf(j)) instanceof Command.AwaitSequence)) {
                     continue;
                 }
-                Piece.Segments segments = piece.segmentsAt(j, program);
+                Download.Segments segments = piece.segmentsAt(j, program);
                 if (segments != null && onPath(segments, at, program)) {
                     origin = segments.origins().length == 1 ? segments.origins()[0] : segments.executing(c.segment());
                     break;
@@ -253,7 +253,7 @@ public final class ProgramForm implements Form {
     }
 
     /** Are the axes on one of the sequence's segments (as compiled: a re-planned one lies on its original)? */
-    private boolean onPath(Piece.Segments segments, double[] at, DmcProgram program) {
+    private boolean onPath(Download.Segments segments, double[] at, DmcProgram program) {
         for (int o : segments.origins()) {
             Sequence s = program.sequenceAt(o);
             int k = s == null ? -1 : s.pieceAt(o);
@@ -265,7 +265,7 @@ public final class ProgramForm implements Form {
     }
 
     /** Polls until thread 0 ends, applying the operator's hold, override and stop between polls. */
-    private void follow(Piece piece, Controller c, Progress progress, Operator op)
+    private void follow(Download piece, MachineLink c, Progress progress, Operator op)
             throws RunFault, IOException, InterruptedException {
         FeedHold hold = new FeedHold();
         StallWatch stall = new StallWatch(stallSeconds);

@@ -24,7 +24,7 @@ final class ProgramStopWait {
      * The stop whose call is compiled line {@code call}: announced, then waited out. Enters pressed
      * before it began do not count.
      */
-    static void await(Controller c, Progress progress, Operator op, int call, int pollMs, Waiting waiting)
+    static void await(MachineLink c, Progress progress, Operator op, int call, int pollMs, Waiting waiting)
             throws IOException, InterruptedException {
         int line = progress.program().sourceLine(call);
         BlockTable.Block b = progress.blocks().at(line);

@@ -26,7 +26,7 @@ import java.util.Map;
  * <p>The split is the compile's own ({@link StreamSplit}) applied to the piece being run, so a
  * resume (a piece that starts at the resume point) is streamed the same way.
  */
-public final class StreamForm implements Form {
+public final class StreamForm implements Delivery {
     private final int pollMs;
     private final double tolerance;
     private final double stallSeconds;
@@ -43,7 +43,7 @@ public final class StreamForm implements Form {
     }
 
     @Override
-    public int linesNeeded(Piece piece, DmcProgram program, boolean step) {
+    public int linesNeeded(Download piece, DmcProgram program, boolean step) {
         return splitOnce(piece, program).residentLines(program.lineWidth()).size();
     }
 
@@ -55,15 +55,15 @@ public final class StreamForm implements Form {
     record Split(List<Sent> resident, List<Sent> stream) {
         /** The resident program as it is downloaded: packed into lines as the compile writes it. */
         List<String> residentLines(int width) {
-            return Piece.packedLines(resident.stream().map(Sent::command).toList(), width);
+            return Download.packedLines(resident.stream().map(Sent::command).toList(), width);
         }
     }
 
     /** The piece pre-flight counted and the run sends: split once for both. */
-    private Piece splitPiece;
+    private Download splitPiece;
     private Split splitOfPiece;
 
-    private Split splitOnce(Piece piece, DmcProgram program) {
+    private Split splitOnce(Download piece, DmcProgram program) {
         if (piece != splitPiece) {
             splitOfPiece = split(piece, program);
             splitPiece = piece;
@@ -72,7 +72,7 @@ public final class StreamForm implements Form {
     }
 
     /** {@code piece} split as the compile splits a program ({@link StreamSplit}), each command keeping its compiled line. */
-    static Split split(Piece piece, DmcProgram program) {
+    static Split split(Download piece, DmcProgram program) {
         Map<Instruction, Integer> origins = new IdentityHashMap<>();
         List<Instruction> stream = new ArrayList<>();
         StreamSplit split = new StreamSplit(stream::add, Long.MAX_VALUE, program.lineWidth());
@@ -116,7 +116,7 @@ public final class StreamForm implements Form {
     }
 
     @Override
-    public void run(Piece piece, Controller c, Progress progress, Operator op, boolean step, boolean dryRun)
+    public void run(Download piece, MachineLink c, Progress progress, Operator op, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
         Split split = splitOnce(piece, progress.program());
         List<String> resident = split.residentLines(progress.program().lineWidth());
@@ -144,7 +144,7 @@ public final class StreamForm implements Form {
     }
 
     /** Runs the resident set-up ({@code XQ #GCNC,0}) to its end; {@code gready} 0 means it stopped (the homing check). */
-    private void setUp(Controller c, Progress progress, Operator op) throws IOException, RunFault, InterruptedException {
+    private void setUp(MachineLink c, Progress progress, Operator op) throws IOException, RunFault, InterruptedException {
         // VR stays set on the controller: a run stopped during a feed hold left it at 0 (as ProgramForm)
         c.ratio(op.override());
         c.execute();
@@ -179,7 +179,7 @@ public final class StreamForm implements Form {
 
     /** The host's side of the stream: sends, feeds the buffer, carries out the waits, follows the machine. */
     private final class Feed {
-        private final Controller c;
+        private final MachineLink c;
         private final Progress progress;
         private final Operator op;
         /** The compiled lines of the segments of the sequence being sent, in order: {@code _CSS} = k is {@code segments.get(k)}. */
@@ -203,7 +203,7 @@ public final class StreamForm implements Form {
         private boolean feeding;
         private boolean vectorEnded;
 
-        Feed(Controller c, Progress progress, Operator op) {
+        Feed(MachineLink c, Progress progress, Operator op) {
             this.c = c;
             this.progress = progress;
             this.op = op;
@@ -335,7 +335,7 @@ public final class StreamForm implements Form {
             feeding = false;
             c.stopAll();
             throw new RunFault(Code.E890_BUFFER_STARVED, progress.executingLine(), true, k, progress.executingLine(),
-                    code == 101 ? "" : " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                    code == 101 ? "" : " (stop code " + code + ": " + MachineLink.stopReason(code) + ")");
         }
 
         /** One poll while a sequence runs: the segment executing names the block; the axes where they are. */
@@ -343,7 +343,7 @@ public final class StreamForm implements Form {
             double[] at = c.position();
             int css = c.segment();
             int origin = segments.isEmpty() ? progress.executingIndex()
-                    : segments.get(Piece.Segments.segment(css, segments.size()));
+                    : segments.get(Download.Segments.segment(css, segments.size()));
             progress.at(origin, at, op);
             return at;
         }
@@ -360,13 +360,13 @@ public final class StreamForm implements Form {
             }
             // cut short: the segment it stopped in (_CSS keeps its count after the sequence ended) names the block
             int css = c.segment();
-            progress.at(segments.get(Piece.Segments.segment(css, segments.size())), at, op);
+            progress.at(segments.get(Download.Segments.segment(css, segments.size())), at, op);
             int code = c.stopCode();
             c.stopAll();
             PositionText where = new PositionText(progress.program(), progress.blocks());
             throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "the sequence ended during line "
                     + progress.executingLine() + " with the axes at " + where.at(progress.executingLine(), at) + ", not at its end "
-                    + where.at(progress.executingLine(), end) + " (stop code " + code + ": " + Controller.stopReason(code) + ")");
+                    + where.at(progress.executingLine(), end) + " (stop code " + code + ": " + MachineLink.stopReason(code) + ")");
         }
 
         /** The operator's stop, hold and override, between commands and polls. */

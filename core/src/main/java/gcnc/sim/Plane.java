@@ -69,7 +69,7 @@ final class Plane {
     /**
      * The arc a Galil {@code CR r,start,sweep} draws from the Galil-plane position (p1, p2), as the
      * controller derives it: the centre from the start angle, the end from start + sweep. One
-     * place for the replay ({@code Controller}) and for check's prediction of it
+     * place for the replay ({@code ReplayController}) and for check's prediction of it
      * ({@code ArcVerdict}), so that the two cannot differ. {@code end} receives the end in the
      * Galil plane (first, second channel).
      */

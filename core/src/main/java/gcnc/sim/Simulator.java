@@ -23,7 +23,7 @@ public final class Simulator {
     private final SimOptions options;
     private final Diagnostics diagnostics;
     private final Plane plane;
-    private final Controller dmc;
+    private final ReplayController dmc;
     private final OutputState outputs;
     private final MotionChecks checks;
     private final SimMachine machine;
@@ -61,7 +61,7 @@ public final class Simulator {
             // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
             diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
         }
-        this.dmc = new Controller(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
+        this.dmc = new ReplayController(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
                 profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
         profile.encoder().ifPresent(e -> {
             dmc.encoderChannel = Plane.channel(e.channel());
@@ -276,7 +276,7 @@ public final class Simulator {
     }
 
     /** The interpreter's events, turned into machine state and checks. */
-    private final class Events implements Controller.Listener {
+    private final class Events implements ReplayController.Listener {
         @Override
         public void sequence(List<Segment> segments, double speed, int line) {
             // the runs of segments from one motion each, and the motions they carry out (kept in

@@ -32,7 +32,7 @@ public class CompileTask extends GcncTask {
     }
 
     @Override
-    protected void process(Session session, Program program, Findings findings) throws IOException {
+    protected void process(Session session, Program program, TaskFindings findings) throws IOException {
         Path dmc = getOutputDir().toPath().resolve(program.withExtension(".dmc"));
         Files.createDirectories(dmc.getParent());
         FormOutputs outputs;

@@ -116,7 +116,7 @@ public abstract class GcncTask extends DefaultTask {
     @TaskAction
     public void run() {
         Session session = open();
-        Findings findings = new Findings(session, getLogger(), settings.printed);
+        TaskFindings findings = new TaskFindings(session, getLogger(), settings.printed);
         begin();
         List<Program> programs = programs();
         List<File> skipped = settings.skipped();
@@ -161,7 +161,7 @@ public abstract class GcncTask extends DefaultTask {
     }
 
     /** What the task does with one program; findings go to {@code findings}. */
-    protected abstract void process(Session session, Program program, Findings findings) throws IOException;
+    protected abstract void process(Session session, Program program, TaskFindings findings) throws IOException;
 
     /** After the last program: e.g. a summary of them all. */
     protected void finish(List<Program> programs) throws IOException {
@@ -182,7 +182,7 @@ public abstract class GcncTask extends DefaultTask {
             return Session.open(o);
         } catch (TableException e) {
             // A broken table or profile is shown with the built-in messages: the user's may be the broken ones.
-            String line = new gcnc.diag.GnuRenderer(gcnc.tables.Tables.builtIn().messages().in(Findings.LANG))
+            String line = new gcnc.diag.GnuRenderer(gcnc.tables.Tables.builtIn().messages().in(TaskFindings.LANG))
                     .render(tableShown(e.path()), e.diagnostic());
             getLogger().quiet(line);
             throw new GradleException(getName() + ": the machine, control or tables cannot be used: " + line);

@@ -40,7 +40,7 @@ public class SimulateTask extends GcncTask {
     }
 
     @Override
-    protected void process(Session session, Program program, Findings findings) throws IOException {
+    protected void process(Session session, Program program, TaskFindings findings) throws IOException {
         Compiler.Result r;
         try (Reader in = program.open()) {
             r = session.compile(in, Optional.of(session.simulation().withPath()), false, line -> { });

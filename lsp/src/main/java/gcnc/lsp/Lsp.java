@@ -59,7 +59,7 @@ public final class Lsp {
         ClientLog log = new ClientLog(err);
         Log stderrOnly = log.stderrOnly();
         FolderSettings base = new FolderSettings(o.machine(), o.control(), o.tables(), Optional.empty(), java.util.List.of());
-        Server server = new Server(base, o.lang(), o.version(),
+        LspServer server = new LspServer(base, o.lang(), o.version(),
                 (lang, folder, l) -> new ExplainFiles(code -> o.explain().apply(code, lang),
                         folder.orElse(ExplainFiles.defaultFolder(o.version(), lang.name().toLowerCase(java.util.Locale.ROOT))), l),
                 log);

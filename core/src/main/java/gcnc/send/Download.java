@@ -15,8 +15,8 @@ import java.util.List;
  * width), so the whole program downloads as the bytes of FILE.dmc; {@link #lastOf} turns the line the
  * controller reports ({@code _XQ0}) into the command it stands in.
  */
-public record Piece(List<Command> commands, int[] origin, List<String> lines, int[] lineStart) {
-    public Piece {
+public record Download(List<Command> commands, int[] origin, List<String> lines, int[] lineStart) {
+    public Download {
         commands = List.copyOf(commands);
         lines = List.copyOf(lines);
         if (origin.length != commands.size() || lineStart.length != lines.size()) {
@@ -25,11 +25,11 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines, in
     }
 
     /** The commands packed into lines of {@code width} characters, each printed once ({@link gcnc.dmc.DmcPrinter}). */
-    public Piece(List<Command> commands, int[] origin, int width) {
+    public Download(List<Command> commands, int[] origin, int width) {
         this(commands, origin, packed(commands, width));
     }
 
-    private Piece(List<Command> commands, int[] origin, List<LinePacker.Line> packed) {
+    private Download(List<Command> commands, int[] origin, List<LinePacker.Line> packed) {
         this(commands, origin, packed.stream().map(LinePacker.Line::text).toList(), starts(packed));
     }
 
@@ -57,14 +57,14 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines, in
     }
 
     /** The whole program. */
-    public static Piece whole(DmcProgram p) {
+    public static Download whole(DmcProgram p) {
         int[] o = new int[p.instructions().size()];
         List<Command> c = new ArrayList<>(o.length);
         for (int i = 0; i < o.length; i++) {
             o[i] = i;
             c.add(p.command(i));
         }
-        return new Piece(c, o, p.lineWidth());
+        return new Download(c, o, p.lineWidth());
     }
 
     /** The compiled program's instruction for command {@code j} of the piece (0-based), or -1. */
@@ -157,8 +157,8 @@ public record Piece(List<Command> commands, int[] origin, List<String> lines, in
         }
 
         /** @param width the characters of a controller line ({@link DmcProgram#lineWidth}) */
-        public Piece build(int width) {
-            return new Piece(commands, origin.stream().mapToInt(Integer::intValue).toArray(), width);
+        public Download build(int width) {
+            return new Download(commands, origin.stream().mapToInt(Integer::intValue).toArray(), width);
         }
     }
 }

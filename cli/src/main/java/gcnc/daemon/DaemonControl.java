@@ -19,7 +19,7 @@ import java.util.Optional;
  * {@code gcnc daemon start|stop|status} as the command line runs them: find the server through its
  * state file, ask it, start one. Every answer is one line for the user.
  */
-public final class Control {
+public final class DaemonControl {
     /** What an action ends with: the line to print and the exit status. */
     public record Outcome(String line, int status) {
     }
@@ -30,7 +30,7 @@ public final class Control {
 
     private final Path folder;
 
-    public Control(Map<String, String> env) {
+    public DaemonControl(Map<String, String> env) {
         this.folder = StateFile.folder(env);
     }
 
@@ -123,7 +123,7 @@ public final class Control {
         command.add(java);
         command.addAll(opts == null || opts.isBlank() ? List.of("-XX:+UseSerialGC", "-Xmn48m", "-Xms64m", "-Xmx512m")
                 : List.of(opts.strip().split("\\s+")));
-        command.addAll(List.of("-cp", realJar, Server.class.getName(), folder.toString()));
+        command.addAll(List.of("-cp", realJar, DaemonServer.class.getName(), folder.toString()));
         Path log = folder.resolve("daemon.log");
         Process p;
         try {

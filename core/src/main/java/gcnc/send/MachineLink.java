@@ -12,12 +12,12 @@ import java.util.Locale;
  * execution, polling, and the ways to stop. Each method is one or a few commands of the Galil
  * command reference (COMALL; docs/run.md gives the page of each).
  */
-public final class Controller {
+public final class MachineLink {
     private final GalilClient client;
     private final MachineProfile profile;
     private final DmcProgram.Plane plane;
 
-    public Controller(GalilClient client, MachineProfile profile, DmcProgram.Plane plane) {
+    public MachineLink(GalilClient client, MachineProfile profile, DmcProgram.Plane plane) {
         this.client = client;
         this.profile = profile;
         this.plane = plane;
@@ -189,7 +189,7 @@ public final class Controller {
      * segment, 1 during the second (DMC-40x0 User Manual p.86, "Segment counter - returns number of the
      * segment in the sequence, starting at zero", with its worked example; the same in the DMC-2x00 and
      * DMC-13X8 manuals; COMALL CS only says "the segment number in the sequence"). After the sequence
-     * ended the manuals do not say what it reads; {@link Piece.Segments#segment} names the last segment
+     * ended the manuals do not say what it reads; {@link Download.Segments#segment} names the last segment
      * for either reading. EPICS counts the segments processed from it.
      */
     public int segment() throws IOException {

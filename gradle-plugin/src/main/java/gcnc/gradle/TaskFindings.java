@@ -26,7 +26,7 @@ import org.gradle.api.logging.Logger;
  * written at the end as gcnc's JSON report and as SARIF 2.1.0, with the renderers the command line
  * uses.
  */
-final class Findings {
+final class TaskFindings {
     /** Reports are in English, the language CI annotations are read in. */
     static final ErrorMessages.Lang LANG = ErrorMessages.Lang.EN;
 
@@ -38,7 +38,7 @@ final class Findings {
     private final Set<String> printed;
 
     /** @param printed the findings already printed in this build by another task: not printed again */
-    Findings(Session session, Logger logger, Set<String> printed) {
+    TaskFindings(Session session, Logger logger, Set<String> printed) {
         this.session = session;
         this.logger = logger;
         this.printed = printed;

@@ -11,7 +11,7 @@ import java.util.Map;
  * limit of the model (a line over 80 characters, more lines than the model holds, a bad or duplicate
  * label, more than 510 labels) is refused whole and leaves the memory as it was.
  */
-final class Program {
+final class ProgramMemory {
     /** One program line: its text and its statements ({@code ;}-separated, quotes respected). */
     record Line(String text, List<String> statements) {
     }

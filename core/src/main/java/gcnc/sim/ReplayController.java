@@ -16,7 +16,7 @@ import java.util.List;
  * with no master, anything after EN) is reported, never skipped silently. Positions are Galil
  * coordinates in the vector plane; {@link Plane} turns them into machine counts.
  */
-final class Controller {
+final class ReplayController {
     /** What the replayed program makes the machine do. */
     interface Listener {
         void sequence(List<Segment> segments, double speed, int line);
@@ -146,7 +146,7 @@ final class Controller {
     /** The servo sample (COMALL TM default 1000 µs; gcnc never sets TM), seconds. */
     static final double SAMPLE = 0.001;
 
-    Controller(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
+    ReplayController(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
                    Listener out) {
         this.plane = plane;
         this.out = out;
@@ -343,14 +343,14 @@ final class Controller {
 
         public Void vectorPosition(Command.VectorPosition c) {
             if (!afterEnd()) {
-                Controller.this.vp(c.first(), c.second(), c.speeds());
+                ReplayController.this.vp(c.first(), c.second(), c.speeds());
             }
             return null;
         }
 
         public Void circularArc(Command.CircularArc c) {
             if (!afterEnd()) {
-                Controller.this.cr(c.radius().value(), c.start().value(), c.sweep().value(), c.speeds());
+                ReplayController.this.cr(c.radius().value(), c.start().value(), c.sweep().value(), c.speeds());
             }
             return null;
         }
@@ -370,7 +370,7 @@ final class Controller {
         public Void beginSequence(Command.BeginSequence c) {
             if (!afterEnd()) {
                 if (vectorEnded || pending.isEmpty()) {
-                    Controller.this.startSequence();
+                    ReplayController.this.startSequence();
                 } else {
                     // BGS after the first fill, VE after the last segment (a sequence longer than the
                     // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
@@ -457,49 +457,49 @@ final class Controller {
 
         public Void gearMaster(Command.GearMaster c) {
             if (!afterEnd()) {
-                Controller.this.gearAxes(c);
+                ReplayController.this.gearAxes(c);
             }
             return null;
         }
 
         public Void syncPoint(Command.SyncPoint c) {
             if (!afterEnd()) {
-                Controller.this.assignment(c);
+                ReplayController.this.assignment(c);
             }
             return null;
         }
 
         public Void waitPast(Command.WaitPast c) {
             if (!afterEnd()) {
-                Controller.this.tripPoint(c);
+                ReplayController.this.tripPoint(c);
             }
             return null;
         }
 
         public Void gearRatio(Command.GearRatio c) {
             if (!afterEnd()) {
-                Controller.this.gearRatio(c);
+                ReplayController.this.gearRatio(c);
             }
             return null;
         }
 
         public Void positionAbsolute(Command.PositionAbsolute c) {
             if (!afterEnd()) {
-                Controller.this.settle(c);
+                ReplayController.this.settle(c);
             }
             return null;
         }
 
         public Void phaseError(Command.PhaseError c) {
             if (!afterEnd()) {
-                Controller.this.phaseError(c);
+                ReplayController.this.phaseError(c);
             }
             return null;
         }
 
         public Void incrementPosition(Command.IncrementPosition c) {
             if (!afterEnd()) {
-                Controller.this.phaseCorrection(c);
+                ReplayController.this.phaseCorrection(c);
             }
             return null;
         }
@@ -516,7 +516,7 @@ final class Controller {
                 return null;
             }
             if (plane.sameChannels(c.axes()) && !Double.isNaN(target1)) {
-                Controller.this.threadPass();
+                ReplayController.this.threadPass();
             } else {
                 out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "BG", text());
             }

@@ -9,7 +9,7 @@ import java.io.IOException;
  * (docs/galil.md, "Two forms"). Both get the same controller, progress and operator, and report
  * through them the same way.
  */
-public interface Form {
+public interface Delivery {
     /** Its name in the events ({@code "program"}, {@code "stream"}). */
     String name();
 
@@ -17,9 +17,9 @@ public interface Form {
      * Runs {@code piece} to its end; a stop (fault or operator) is a {@link RunFault} after the
      * machine was stopped; a failed link is a {@link LinkFault} (the caller stops what it still can).
      */
-    void run(Piece piece, Controller controller, Progress progress, Operator operator, boolean step, boolean dryRun)
+    void run(Download piece, MachineLink controller, Progress progress, Operator operator, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException;
 
     /** The program lines {@code piece} takes on the controller at once: checked against its memory in pre-flight. */
-    int linesNeeded(Piece piece, DmcProgram program, boolean step);
+    int linesNeeded(Download piece, DmcProgram program, boolean step);
 }

@@ -18,7 +18,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * <p>{@link Statements} executes a command, from the host or from a thread; this class holds what the
  * commands act on and reads the operands ({@code _LMS}, {@code _CSS}, ...) for them.
  */
-public final class Controller implements Expressions.Scope {
+public final class VirtualGalil implements Expressions.Scope {
     /** Where the controller's unsolicited output (a program's MG, a program error) goes. */
     public interface Listener {
         void unsolicited(byte[] bytes);
@@ -30,7 +30,7 @@ public final class Controller implements Expressions.Scope {
     }
 
     final Model model;
-    final Program program = new Program();
+    final ProgramMemory program = new ProgramMemory();
     final Map<String, Double> variables = new HashMap<>();
     final Map<String, double[]> arrays = new HashMap<>();
     final ProgramThread[] threads = new ProgramThread[8];
@@ -63,7 +63,7 @@ public final class Controller implements Expressions.Scope {
     private final boolean[] handles = new boolean[8];
     boolean limitTripped;
     private double time;
-    private final Trace trace;
+    private final SegmentTrace trace;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     final Statements statements;
     /** Where within 2 samples each MF/MR trip is seen (DmcCommands.waitPast); seeded, so a run repeats. */
@@ -73,7 +73,7 @@ public final class Controller implements Expressions.Scope {
     public static final double SPINDLE_RATE = 410 * 4096 / 60.0;
 
     /** A controller of {@code model} with the segment faults of {@code faults} armed, tracing to {@code trace} (or null). */
-    public Controller(Model model, List<Fault> faults, Writer trace) {
+    public VirtualGalil(Model model, List<InjectedFault> faults, Writer trace) {
         this(model, faults, trace, SPINDLE_RATE);
     }
 
@@ -81,7 +81,7 @@ public final class Controller implements Expressions.Scope {
      * As above, wired to a spindle whose encoder turns {@code spindleRate} counts a second per volt
      * of its channel's {@code OF} (the lathe's drive and encoder: r/min per volt × counts per rev / 60).
      */
-    public Controller(Model model, List<Fault> faults, Writer trace, double spindleRate) {
+    public VirtualGalil(Model model, List<InjectedFault> faults, Writer trace, double spindleRate) {
         this(model, faults, trace, spindleRate, TRIP_SEED);
     }
 
@@ -92,10 +92,10 @@ public final class Controller implements Expressions.Scope {
      * As above, with MF/MR trips seen at the trip phase seeded by {@code tripSeed}: 0, 1 or 2 servo
      * samples after the first sample past the count (COMALL MF: accurate to the counts in 2*TM).
      */
-    public Controller(Model model, List<Fault> faults, Writer trace, double spindleRate, long tripSeed) {
+    public VirtualGalil(Model model, List<InjectedFault> faults, Writer trace, double spindleRate, long tripSeed) {
         this.tripPhase = new java.util.Random(tripSeed);
         this.model = model;
-        this.trace = trace == null ? null : new Trace(trace);
+        this.trace = trace == null ? null : new SegmentTrace(trace);
         this.servo = new boolean[model.axes];
         this.offsets = new double[model.axes];
         this.smoothing = new double[model.axes];
@@ -107,8 +107,8 @@ public final class Controller implements Expressions.Scope {
         this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
             @Override
             public void segmentDone(int sequence, int number, VectorSegment s, int free, double t) {
-                if (Controller.this.trace != null) {
-                    Controller.this.trace.segment(sequence, number, s, free, t);
+                if (VirtualGalil.this.trace != null) {
+                    VirtualGalil.this.trace.segment(sequence, number, s, free, t);
                 }
             }
 
@@ -125,24 +125,24 @@ public final class Controller implements Expressions.Scope {
         });
         this.gearing = new Gearing(model.axes, motion.position, servo, offsets, spindleRate, (axes, ends, t) -> {
             // a thread pass ends when both plane axes have settled (PA, BG, AM): one line of the trace
-            VectorMotion mo = Controller.this.motion;
+            VectorMotion mo = VirtualGalil.this.motion;
             boolean plane = false;
             for (int a : axes) {
                 plane |= a == mo.axis1 || a == mo.axis2;
             }
-            if (plane && mo.axis1 >= 0 && !Controller.this.gearing.moving[mo.axis1] && !Controller.this.gearing.moving[mo.axis2]) {
+            if (plane && mo.axis1 >= 0 && !VirtualGalil.this.gearing.moving[mo.axis1] && !VirtualGalil.this.gearing.moving[mo.axis2]) {
                 passes++;
-                if (Controller.this.trace != null) {
-                    Controller.this.trace.pass(passes, mo.position[mo.axis1], mo.position[mo.axis2], mo.free(), t);
+                if (VirtualGalil.this.trace != null) {
+                    VirtualGalil.this.trace.pass(passes, mo.position[mo.axis1], mo.position[mo.axis2], mo.free(), t);
                 }
                 event(String.format(Locale.ROOT, "pass %d at %d,%d", passes, (long) Math.rint(mo.position[mo.axis1]),
                         (long) Math.rint(mo.position[mo.axis2])), t);
             }
         });
-        for (Fault f : faults) {
-            if (f.kind() == Fault.Kind.STALL) {
+        for (InjectedFault f : faults) {
+            if (f.kind() == InjectedFault.Kind.STALL) {
                 motion.stallAfter = f.n();
-            } else if (f.kind() == Fault.Kind.LIMIT_AT) {
+            } else if (f.kind() == InjectedFault.Kind.LIMIT_AT) {
                 motion.limitAt = f.n();
             }
         }

@@ -35,10 +35,10 @@ import java.util.concurrent.atomic.AtomicLong;
  * second JVM on a 2-core machine is as fast as waiting). Every connection first sends the token of
  * the state file ({@link StateFile}); any other is refused and closed.
  *
- * <p>Started by {@code gcnc daemon start} as {@code java -cp gcnc.jar gcnc.daemon.Server STATE-DIR},
+ * <p>Started by {@code gcnc daemon start} as {@code java -cp gcnc.jar gcnc.daemon.DaemonServer STATE-DIR},
  * in the folder it serves.
  */
-public final class Server {
+public final class DaemonServer {
     /** How long a client may take to send its request (not its standard input). */
     private static final int HEADER_TIMEOUT_MS = 10_000;
     /**
@@ -57,7 +57,7 @@ public final class Server {
     private ServerSocket socket;
     private StateFile state;
 
-    Server(Path stateDir, JarIdentity jar, String dir, String token) {
+    DaemonServer(Path stateDir, JarIdentity jar, String dir, String token) {
         this.stateDir = stateDir;
         this.jar = jar;
         this.dir = dir;
@@ -68,7 +68,7 @@ public final class Server {
         Path stateDir = Path.of(args[0]);
         byte[] secret = new byte[32];
         new SecureRandom().nextBytes(secret);
-        Server s = new Server(stateDir, JarIdentity.ofRunningJar(), Path.of("").toAbsolutePath().toString(),
+        DaemonServer s = new DaemonServer(stateDir, JarIdentity.ofRunningJar(), Path.of("").toAbsolutePath().toString(),
                 HexFormat.of().formatHex(secret));
         s.serve();
     }

@@ -10,8 +10,8 @@ import java.util.regex.Pattern;
  * {@code {N}} for no CR LF at the end; the items follow each other with nothing between. From the host it
  * is the reply; from a program it is unsolicited output.
  */
-final class Messages {
-    private Messages() {
+final class MgFormat {
+    private MgFormat() {
     }
 
     private static final Pattern FORMAT = Pattern.compile("\\{F(\\d+)\\.(\\d+)\\}");
@@ -27,7 +27,7 @@ final class Messages {
         return (v < 0 ? "-" : "") + body;
     }
 
-    static String message(Controller c, String args, ProgramThread th) throws GalilException {
+    static String message(VirtualGalil c, String args, ProgramThread th) throws GalilException {
         StringBuilder b = new StringBuilder();
         boolean newline = true;
         int digits = -1;

@@ -7,11 +7,11 @@ import java.util.List;
  * loop that runs a thread's statements until it waits on a trippoint (AM, WT, AI) or its budget of
  * statements for this millisecond is spent.
  */
-final class ProgramFlow {
-    private final Controller c;
+final class ThreadFlow {
+    private final VirtualGalil c;
     private final Statements statements;
 
-    ProgramFlow(Controller c, Statements statements) {
+    ThreadFlow(VirtualGalil c, Statements statements) {
         this.c = c;
         this.statements = statements;
     }

@@ -46,7 +46,7 @@ import org.eclipse.lsp4j.services.WorkspaceService;
  * the watched files (a {@code .gcnc}, a profile or a table changed: every open buffer is checked
  * again) and the explain command. docs/editors.md describes each setting.
  */
-public final class Server implements LanguageServer, LanguageClientAware {
+public final class LspServer implements LanguageServer, LanguageClientAware {
     private final Map<String, Doc> docs = new ConcurrentHashMap<>();
     private final Config config = new Config();
     private final FolderSettings base;
@@ -68,7 +68,7 @@ public final class Server implements LanguageServer, LanguageClientAware {
         ExplainFiles make(ErrorMessages.Lang lang, Optional<Path> folder, Log log);
     }
 
-    Server(FolderSettings base, ErrorMessages.Lang lang, String version, ExplainFilesFactory explainFiles, Log log) {
+    LspServer(FolderSettings base, ErrorMessages.Lang lang, String version, ExplainFilesFactory explainFiles, Log log) {
         this.base = base;
         this.version = version;
         this.explainFiles = explainFiles;

@@ -7,7 +7,7 @@ import java.util.Locale;
  * counts run over the controller's whole life, across connections; commands and segments are counted
  * from 1 (docs/virtual-controller.md, "Faults").
  */
-public record Fault(Kind kind, long n) {
+public record InjectedFault(Kind kind, long n) {
     /** The kinds, by their name on the command line. */
     public enum Kind {
         /** After N bytes sent to the host, a burst of bytes that are no Galil reply. */
@@ -34,7 +34,7 @@ public record Fault(Kind kind, long n) {
     }
 
     /** {@code kind=N} as on the command line; IllegalArgumentException naming the accepted forms. */
-    public static Fault parse(String spec) {
+    public static InjectedFault parse(String spec) {
         int eq = spec.indexOf('=');
         String name = eq < 0 ? spec : spec.substring(0, eq);
         Kind kind = null;
@@ -55,7 +55,7 @@ public record Fault(Kind kind, long n) {
                     + " reject=COMMAND, disconnect-after=BYTES, slow=MS, stall=SEGMENT, limit-at=SEGMENT, echo-ethernet=1"
                     + " (commands and segments counted from 1)");
         }
-        return new Fault(kind, n);
+        return new InjectedFault(kind, n);
     }
 
     @Override

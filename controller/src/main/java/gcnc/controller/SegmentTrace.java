@@ -21,10 +21,10 @@ import java.util.Locale;
  * T)}: P the path run when the thread went on, T the sum of the sequence's AV distances) or an AV the
  * sequence ended short of. Each line is flushed as it is written.
  */
-final class Trace {
+final class SegmentTrace {
     private final Writer out;
 
-    Trace(Writer out) {
+    SegmentTrace(Writer out) {
         this.out = new BufferedWriter(out);
     }
 
