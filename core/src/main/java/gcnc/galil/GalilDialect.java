@@ -91,54 +91,66 @@ final class GalilDialect implements Dialect {
 
     @Override
     public void lower(Step step, Consumer<Instruction> sink) {
-        if (step instanceof Step.Before s) {
-            CheckedBlock b = s.block();
-            BlockWriter out = writer(b, sink);
-            if (b.spindleRpm().isPresent()) {
-                spindle(b, b.spindleRpm().getAsDouble(), out);
-            }
-            if (b.tool().isPresent()) {
-                machine.toolChange(b, b.tool().getAsInt(), out);
-            }
-            outputs(b, b.before(), out);
-        } else if (step instanceof Step.Alone s) {
-            BlockWriter out = writer(s.block(), sink);
-            out.motion(s.motion());
-            machine.beforeMotion(s.block().motions().get(s.motion()), out); // the wait for spindle speed
-            motion(s.block(), s.block().motions().get(s.motion()), out);
-            out.motion(-1);
-        } else if (step instanceof Step.Group g) {
-            if (g.continues()) {
-                grouping = true; // the next window of the sequence being written (Contouring#WINDOW)
-                try {
-                    sequence.write(g);
-                } finally {
-                    grouping = false;
+        step.accept(new Step.Visitor() {
+            @Override
+            public void before(Step.Before s) {
+                CheckedBlock b = s.block();
+                BlockWriter out = writer(b, sink);
+                if (b.spindleRpm().isPresent()) {
+                    spindle(b, b.spindleRpm().getAsDouble(), out);
                 }
-            } else if (g.pieces().size() == 1 && !g.goesOn()) {
-                // one motion: what the exact-stop planner writes, no segment speeds
-                gcnc.plan.Piece p = g.pieces().get(0);
-                stop = g.stop();
-                lower(new Step.Alone(p.block(), p.motion()), sink);
-                stop = null;
-            } else {
-                gcnc.plan.Piece first = g.pieces().get(0);
-                machine.beforeMotion(first.block().motions().get(first.motion()), writer(first.block(), sink));
-                // gline=<line> where the group starts only: an assignment between buffered segments
-                // runs when it is read, not when the path gets there (docs/galil.md)
-                grouping = true;
-                try {
-                    sequence = new GroupWriter(this, sink);
-                    sequence.write(g);
-                } finally {
-                    grouping = false;
+                if (b.tool().isPresent()) {
+                    machine.toolChange(b, b.tool().getAsInt(), out);
+                }
+                outputs(b, b.before(), out);
+            }
+
+            @Override
+            public void alone(Step.Alone s) {
+                BlockWriter out = writer(s.block(), sink);
+                out.motion(s.motion());
+                machine.beforeMotion(s.block().motions().get(s.motion()), out); // the wait for spindle speed
+                motion(s.block(), s.block().motions().get(s.motion()), out);
+                out.motion(-1);
+            }
+
+            @Override
+            public void group(Step.Group g) {
+                if (g.continues()) {
+                    grouping = true; // the next window of the sequence being written (Contouring#WINDOW)
+                    try {
+                        sequence.write(g);
+                    } finally {
+                        grouping = false;
+                    }
+                } else if (g.pieces().size() == 1 && !g.goesOn()) {
+                    // one motion: what the exact-stop planner writes, no segment speeds
+                    gcnc.plan.Piece p = g.pieces().get(0);
+                    stop = g.stop();
+                    lower(new Step.Alone(p.block(), p.motion()), sink);
+                    stop = null;
+                } else {
+                    gcnc.plan.Piece first = g.pieces().get(0);
+                    machine.beforeMotion(first.block().motions().get(first.motion()), writer(first.block(), sink));
+                    // gline=<line> where the group starts only: an assignment between buffered segments
+                    // runs when it is read, not when the path gets there (docs/galil.md)
+                    grouping = true;
+                    try {
+                        sequence = new GroupWriter(GalilDialect.this, sink);
+                        sequence.write(g);
+                    } finally {
+                        grouping = false;
+                    }
                 }
             }
-        } else if (step instanceof Step.After s) {
-            BlockWriter out = writer(s.block(), sink);
-            out.motion(-1);
-            outputs(s.block(), s.block().after(), out);
-        }
+
+            @Override
+            public void after(Step.After s) {
+                BlockWriter out = writer(s.block(), sink);
+                out.motion(-1);
+                outputs(s.block(), s.block().after(), out);
+            }
+        });
     }
 
     /** The writer of block {@code b}'s instructions: one per block, so that its inline map comment comes once. */

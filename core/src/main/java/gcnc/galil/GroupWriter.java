@@ -97,6 +97,29 @@ final class GroupWriter {
         this.fill = d.bufferSegments() - 1;
     }
 
+    /** A joined motion's programmed feed: null for a rapid; only straight moves and arcs are joined. */
+    private static final Motion.Visitor<Feed> FEED = new Motion.Visitor<>() {
+        @Override
+        public Feed linear(Motion.Linear l) {
+            return l.rapid() ? null : l.feed();
+        }
+
+        @Override
+        public Feed arc(Motion.Arc a) {
+            return a.feed();
+        }
+
+        @Override
+        public Feed dwell(Motion.Dwell w) {
+            throw new IllegalStateException("a dwell is never joined into a sequence");
+        }
+
+        @Override
+        public Feed thread(Motion.Thread t) {
+            throw new IllegalStateException("a thread pass is never joined into a sequence");
+        }
+    };
+
     /** Writes a group: a whole sequence, or one window of it (the next group goes on from where this one ends). */
     void write(Step.Group g) {
         if (!g.continues()) {
@@ -126,7 +149,7 @@ final class GroupWriter {
             out = d.writer(b, sink);
             out.motion(p.motion());
             Motion m = p.path();
-            Feed feed = m instanceof Motion.Linear l ? (l.rapid() ? null : l.feed()) : ((Motion.Arc) m).feed();
+            Feed feed = m.accept(FEED);
             long vs = d.speed(b, feed);
             if (vs < 0) {
                 continue; // reported (E207, E201): the output is void
@@ -142,18 +165,35 @@ final class GroupWriter {
                 at.add(along);
                 atSegment.add(segments);
             }
-            if (m instanceof Motion.Arc a) {
-                along += arc(b, a, u0, v0, speeds, out);
-            } else if (m instanceof Motion.Linear l && p.parts() > 1) {
-                // one of the equal pieces of a move longer than a VP segment: to its share of the way
-                double share = (p.part() + 1) / (double) p.parts();
-                double fu = d.frame().u(l.from());
-                double fv = d.frame().v(l.from());
-                along += straight(b, fu + (d.frame().u(l.to()) - fu) * share, fv + (d.frame().v(l.to()) - fv) * share,
-                        u0, v0, speeds, out);
-            } else {
-                along += straight(b, m instanceof Motion.Linear l ? l.to() : null, u0, v0, speeds, out);
-            }
+            along += m.accept(new Motion.Visitor<Double>() {
+                @Override
+                public Double arc(Motion.Arc a) {
+                    return GroupWriter.this.arc(b, a, u0, v0, speeds, out);
+                }
+
+                @Override
+                public Double linear(Motion.Linear l) {
+                    if (p.parts() == 1) {
+                        return straight(b, l.to(), u0, v0, speeds, out);
+                    }
+                    // one of the equal pieces of a move longer than a VP segment: to its share of the way
+                    double share = (p.part() + 1) / (double) p.parts();
+                    double fu = d.frame().u(l.from());
+                    double fv = d.frame().v(l.from());
+                    return straight(b, fu + (d.frame().u(l.to()) - fu) * share, fv + (d.frame().v(l.to()) - fv) * share,
+                            u0, v0, speeds, out);
+                }
+
+                @Override
+                public Double dwell(Motion.Dwell w) {
+                    return straight(b, null, u0, v0, speeds, out);
+                }
+
+                @Override
+                public Double thread(Motion.Thread t) {
+                    return straight(b, null, u0, v0, speeds, out);
+                }
+            });
         }
         if (!started || g.goesOn()) {
             return;

@@ -47,34 +47,46 @@ final class ThesisDialect implements Dialect {
     /** The thesis's format stops at every motion: a group is written motion by motion. */
     @Override
     public void lower(gcnc.plan.Step step, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
-        if (step instanceof gcnc.plan.Step.Before s) {
-            CheckedBlock b = s.block();
-            BlockWriter out = writer(b, sink);
-            if (b.spindleRpm().isPresent()) {
-                // The thesis divides the integer S by 300 as integers (L4236).
-                long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
-                out.emit(new Command.Offset(frame.spindleIndex(), Fixed.of(volts)));
+        step.accept(new gcnc.plan.Step.Visitor() {
+            @Override
+            public void before(gcnc.plan.Step.Before s) {
+                CheckedBlock b = s.block();
+                BlockWriter out = writer(b, sink);
+                if (b.spindleRpm().isPresent()) {
+                    // The thesis divides the integer S by 300 as integers (L4236).
+                    long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
+                    out.emit(new Command.Offset(frame.spindleIndex(), Fixed.of(volts)));
+                }
+                if (b.tool().isPresent()) {
+                    out.emit(new Command.Revolver(b.tool().getAsInt()));
+                }
+                outputs(b.before(), out);
             }
-            if (b.tool().isPresent()) {
-                out.emit(new Command.Revolver(b.tool().getAsInt()));
+
+            @Override
+            public void alone(gcnc.plan.Step.Alone s) {
+                BlockWriter out = writer(s.block(), sink);
+                out.motion(s.motion());
+                motion(s.block(), s.block().motions().get(s.motion()), out);
+                out.motion(-1);
             }
-            outputs(b.before(), out);
-        } else if (step instanceof gcnc.plan.Step.Alone s) {
-            BlockWriter out = writer(s.block(), sink);
-            out.motion(s.motion());
-            motion(s.block(), s.block().motions().get(s.motion()), out);
-            out.motion(-1);
-        } else if (step instanceof gcnc.plan.Step.Group g) {
-            for (gcnc.plan.Piece p : g.pieces()) {
-                if (p.part() == 0) { // the thesis writes a motion once, however the planner split it
-                    lower(new gcnc.plan.Step.Alone(p.block(), p.motion()), sink);
+
+            @Override
+            public void group(gcnc.plan.Step.Group g) {
+                for (gcnc.plan.Piece p : g.pieces()) {
+                    if (p.part() == 0) { // the thesis writes a motion once, however the planner split it
+                        lower(new gcnc.plan.Step.Alone(p.block(), p.motion()), sink);
+                    }
                 }
             }
-        } else if (step instanceof gcnc.plan.Step.After s) {
-            BlockWriter out = writer(s.block(), sink);
-            out.motion(-1);
-            outputs(s.block().after(), out);
-        }
+
+            @Override
+            public void after(gcnc.plan.Step.After s) {
+                BlockWriter out = writer(s.block(), sink);
+                out.motion(-1);
+                outputs(s.block().after(), out);
+            }
+        });
     }
 
     private BlockWriter writer;

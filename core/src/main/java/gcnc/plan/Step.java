@@ -10,12 +10,36 @@ import java.util.List;
  * still.
  */
 public sealed interface Step {
+    /**
+     * The dispatch the compiler checks: every consumer of steps (the dialects) implements all of it,
+     * so a new kind of step does not compile until each handles it (Java 17 has no pattern switch).
+     */
+    interface Visitor {
+        void before(Before s);
+
+        void alone(Alone s);
+
+        void group(Group g);
+
+        void after(After s);
+    }
+
+    void accept(Visitor v);
+
     /** The spindle speed, tool change and M functions applied at the block's start. */
     record Before(CheckedBlock block) implements Step {
+        @Override
+        public void accept(Visitor v) {
+            v.before(this);
+        }
     }
 
     /** One motion written by itself: a dwell, a thread pass, or a path motion the planner did not join. */
     record Alone(CheckedBlock block, int motion) implements Step {
+        @Override
+        public void accept(Visitor v) {
+            v.alone(this);
+        }
     }
 
     /**
@@ -54,9 +78,18 @@ public sealed interface Step {
             }
             return false;
         }
+
+        @Override
+        public void accept(Visitor v) {
+            v.group(this);
+        }
     }
 
     /** The M functions applied at the block's end. */
     record After(CheckedBlock block) implements Step {
+        @Override
+        public void accept(Visitor v) {
+            v.after(this);
+        }
     }
 }

@@ -228,26 +228,63 @@ public final class Simulator {
      * or a diameter within the tolerance (a circle that small).
      */
     private boolean standing(Motion m) {
-        double tol = options.tolerance();
-        // a pattern per kind, not a visitor: asked for every motion matched, it makes no object
-        if (m instanceof Motion.Linear l) {
-            return distance(l.from(), l.to()) <= tol;
+        return m.accept(endsStanding); // one visitor for the simulator: asked for every motion matched, it makes no object
+    }
+
+    private final Motion.Visitor<Boolean> endsStanding = new Motion.Visitor<>() {
+        @Override
+        public Boolean linear(Motion.Linear l) {
+            return distance(l.from(), l.to()) <= options.tolerance();
         }
-        if (m instanceof Motion.Thread t) {
-            return distance(t.from(), t.to()) <= tol;
+
+        @Override
+        public Boolean thread(Motion.Thread t) {
+            return distance(t.from(), t.to()) <= options.tolerance();
         }
-        if (m instanceof Motion.Arc a) {
+
+        @Override
+        public Boolean arc(Motion.Arc a) {
+            double tol = options.tolerance();
             return distance(a.from(), a.to()) <= tol
                     && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
                             || Conformance.pointLike(a, tol));
         }
-        return true; // a dwell
+
+        @Override
+        public Boolean dwell(Motion.Dwell d) {
+            return true;
+        }
+    };
+
+    /** Where a motion that moves starts ({@code end} false) or ends. */
+    private static Point end(Motion m, boolean end) {
+        return m.accept(new Motion.Visitor<Point>() {
+            @Override
+            public Point linear(Motion.Linear l) {
+                return end ? l.to() : l.from();
+            }
+
+            @Override
+            public Point arc(Motion.Arc a) {
+                return end ? a.to() : a.from();
+            }
+
+            @Override
+            public Point thread(Motion.Thread t) {
+                return end ? t.to() : t.from();
+            }
+
+            @Override
+            public Point dwell(Motion.Dwell d) {
+                throw new IllegalArgumentException("a dwell does not move");
+            }
+        });
     }
 
     /** Whether the segments from {@code first} to {@code last} move as the motion moves, within the tolerance. */
     private boolean sameDisplacement(Segment first, Segment last, Motion m) {
-        Point from = m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Arc a ? a.from() : ((Motion.Thread) m).from();
-        Point to = m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Arc a ? a.to() : ((Motion.Thread) m).to();
+        Point from = end(m, false);
+        Point to = end(m, true);
         return Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
                 last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
     }
