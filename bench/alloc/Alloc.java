@@ -17,7 +17,7 @@ public class Alloc {
         for (int run = 1; run <= 2; run++) {
             long before = threads.getThreadAllocatedBytes(id);
             try (Reader in = new BufferedReader(new FileReader(args[0]))) {
-                Compiler.check(in, new Compiler.Settings(tables, profile, "galil", Optional.empty()));
+                Compiler.check(in, new Compiler.Settings(tables, profile, gcnc.galil.Dialect.Kind.GALIL, Optional.empty()));
             }
             System.out.printf("run %d: %d MB allocated%n", run, (threads.getThreadAllocatedBytes(id) - before) / 1_000_000);
         }

@@ -22,7 +22,7 @@ public class Warm {
         for (int run = 1; run <= runs; run++) {
             long before = threads.getCurrentThreadCpuTime();
             try (Reader in = new BufferedReader(new FileReader(args[0]))) {
-                Compiler.check(in, new Compiler.Settings(tables, profile, "galil", Optional.empty()));
+                Compiler.check(in, new Compiler.Settings(tables, profile, gcnc.galil.Dialect.Kind.GALIL, Optional.empty()));
             }
             line.append(run == 1 ? "" : " ").append((threads.getCurrentThreadCpuTime() - before) / 1_000_000);
         }

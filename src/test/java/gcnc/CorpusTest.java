@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Severity;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
@@ -90,7 +91,7 @@ class CorpusTest {
                 MachineProfile m = ProfileLoader.load(machineFor(name), TableSource.builtIn(), TABLES);
                 Compiler.Result r;
                 try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
-                    r = Compiler.check(in, new Compiler.Settings(TABLES, m, "galil", Optional.empty()));
+                    r = Compiler.check(in, new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL, Optional.empty()));
                 }
                 assertEquals(MISTAKES.getOrDefault(name, List.of()), errors(r), name + ": check");
                 if (WARNED.containsKey(name)) {
@@ -101,7 +102,7 @@ class CorpusTest {
                 }
                 Compiler.Result sim;
                 try (Reader in = Files.newBufferedReader(p, StandardCharsets.UTF_8)) {
-                    sim = Compiler.compile(in, new Compiler.Settings(TABLES, m, "galil",
+                    sim = Compiler.compile(in, new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL,
                             Optional.of(BLANKS.getOrDefault(name, SimOptions.defaults()))), line -> { });
                 }
                 assertEquals(SIMULATED.getOrDefault(name, List.of()), errors(sim), name + ": compile and simulate");

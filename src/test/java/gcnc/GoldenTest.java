@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
 import gcnc.dmc.Instruction;
+import gcnc.galil.Dialect;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableSource;
@@ -49,7 +50,7 @@ class GoldenTest {
     static String compile(Case c) throws Exception {
         Tables tables = Tables.builtIn();
         Compiler.Settings s = new Compiler.Settings(tables, ProfileLoader.load(c.machine(), TableSource.builtIn(), tables),
-                c.dialect(), c.dialect().equals("galil") ? Optional.of(SimOptions.defaults()) : Optional.empty());
+                Dialect.Kind.of(c.dialect()), c.dialect().equals("galil") ? Optional.of(SimOptions.defaults()) : Optional.empty());
         StringBuilder out = new StringBuilder();
         // the galil dialect's lines packed as gcnc compile writes its program form; the thesis's one a line
         gcnc.dmc.LinePacker packer = new gcnc.dmc.LinePacker(s.profile().controllerLimits().lineWidth(),

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Severity;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
@@ -117,7 +118,7 @@ class PipelineFuzzTest {
             MachineProfile machine = base.startsWith("haas") ? haas : fanuc;
             tests.add(dynamicTest("fuzz/" + base + ".nc as written", () -> {
                 Compiler.Result clean = Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, machine,
-                        "galil", Optional.empty()));
+                        Dialect.Kind.GALIL, Optional.empty()));
                 assertEquals(List.of(), errors(clean, false), base + " is a clean base program");
                 run(program, machine, "galil", 0);
             }));
@@ -260,7 +261,7 @@ class PipelineFuzzTest {
         gcnc.dmc.SourceMap map = new gcnc.dmc.SourceMap(mapLines::add);
         Compiler.Result r;
         try {
-            r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, profile, dialect,
+            r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, profile, Dialect.Kind.of(dialect),
                     Optional.of(SimOptions.defaults().withPath())), map.wrap(l -> {
                         out.add(l.text());
                         typed.add(l);
@@ -288,7 +289,7 @@ class PipelineFuzzTest {
         }
         // One verdict: check reports every error compile reports, but the simulator's (E3xx)
         Compiler.Result checked = Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, profile,
-                dialect, Optional.empty()));
+                Dialect.Kind.of(dialect), Optional.empty()));
         assertEquals(errors(r, false), errors(checked, false), () -> "check and compile differ, seed " + seed + " on "
                 + profile.name() + " (" + dialect + "):\n" + program);
         // ... and replaying the DMC compile writes (its lines packed) with its source map finds what compile's simulation found

@@ -36,10 +36,10 @@ public final class Compiler {
      * are looked for, as {@code O1000.nc} or {@code 1000.nc} (the source file's folder); empty =
      * only the source itself.
      */
-    public record Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
+    public record Settings(Tables tables, MachineProfile profile, gcnc.galil.Dialect.Kind dialect, Optional<SimOptions> simulation,
                            boolean inlineSourceMap, Optional<Path> programs, boolean exactStop) {
         /** Blending as the profile says ({@code plan.blend}). */
-        public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
+        public Settings(Tables tables, MachineProfile profile, gcnc.galil.Dialect.Kind dialect, Optional<SimOptions> simulation,
                         boolean inlineSourceMap, Optional<Path> programs) {
             this(tables, profile, dialect, simulation, inlineSourceMap, programs, false);
         }
@@ -49,11 +49,11 @@ public final class Compiler {
             return new Settings(tables, profile, dialect, simulation, inlineSourceMap, programs, true);
         }
 
-        public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation) {
+        public Settings(Tables tables, MachineProfile profile, gcnc.galil.Dialect.Kind dialect, Optional<SimOptions> simulation) {
             this(tables, profile, dialect, simulation, false);
         }
 
-        public Settings(Tables tables, MachineProfile profile, String dialect, Optional<SimOptions> simulation,
+        public Settings(Tables tables, MachineProfile profile, gcnc.galil.Dialect.Kind dialect, Optional<SimOptions> simulation,
                         boolean inlineSourceMap) {
             this(tables, profile, dialect, simulation, inlineSourceMap, Optional.empty());
         }
@@ -134,7 +134,7 @@ public final class Compiler {
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
         List<Instruction> lines = new ArrayList<>();
         // every number the galil dialect writes is held against the controller's limits on its way out
-        gcnc.galil.LimitCheck limits = "galil".equals(settings.dialect())
+        gcnc.galil.LimitCheck limits = settings.dialect() == gcnc.galil.Dialect.Kind.GALIL
                 ? new gcnc.galil.LimitCheck(settings.profile().controllerLimits(), diags, lines::add) : null;
         java.util.function.Consumer<Instruction> collect = limits != null ? limits : lines::add;
         long blocks = 0;
@@ -254,7 +254,7 @@ public final class Compiler {
 
     /** The judge of the arcs the galil dialect writes (E202, E224/E225, E308), or null for the thesis's format. */
     private static gcnc.sim.ArcVerdict arcVerdict(Settings settings, Diagnostics diags) {
-        return "galil".equals(settings.dialect()) ? new gcnc.sim.ArcVerdict(settings.profile(), diags) : null;
+        return settings.dialect() == gcnc.galil.Dialect.Kind.GALIL ? new gcnc.sim.ArcVerdict(settings.profile(), diags) : null;
     }
 
     /**
@@ -284,7 +284,7 @@ public final class Compiler {
         // the studio's scrub follows the stock sequence by sequence: every block its own (the path and the
         // stock a block leaves are the same whether the machine blends through it or stops)
         boolean scrub = settings.simulation().map(o -> o.scrubLine() != 0).orElse(false);
-        return "thesis".equals(settings.dialect()) ? new gcnc.plan.ExactStop()
+        return settings.dialect() == gcnc.galil.Dialect.Kind.THESIS ? new gcnc.plan.ExactStop()
                 : scrub || settings.exactStop() ? new gcnc.plan.ExactStop(settings.profile())
                 : gcnc.plan.Planner.forProfile(settings.profile());
     }

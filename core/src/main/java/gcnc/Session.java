@@ -27,18 +27,18 @@ public final class Session {
      * @param tables  a folder with an edited copy of tables/, or empty for the built-in tables
      * @param machine a profile name under tables/machines/ or a path to a .machine file
      * @param control a control name or folder that replaces the one the profile names, or empty
-     * @param dialect "galil" or "thesis"
+     * @param dialect the DMC dialect to write
      * @param stock   the blank (else the program's stock header, else the profile's blank)
      * @param offsets the offsets file with the tools' wear ({@code --offsets FILE}; else the profile's
      *                {@code offsets.file}, if any)
      * @param newOffsets the offsets file may not exist yet and is then read as empty (the test cut,
      *                {@code gcnc offsets wear}, creates it); otherwise a missing one is E455
      */
-    public record Options(Optional<Path> tables, String machine, Optional<String> control, String dialect,
+    public record Options(Optional<Path> tables, String machine, Optional<String> control, gcnc.galil.Dialect.Kind dialect,
                           Optional<StockSize> stock, Optional<Path> offsets, boolean newOffsets) {
         /** The built-in tables, the default machine, its own control, the galil dialect, no blank given. */
         public static Options defaults() {
-            return new Options(Optional.empty(), ProfileLoader.DEFAULT, Optional.empty(), "galil", Optional.empty(),
+            return new Options(Optional.empty(), ProfileLoader.DEFAULT, Optional.empty(), gcnc.galil.Dialect.Kind.GALIL, Optional.empty(),
                     Optional.empty(), false);
         }
 
@@ -54,8 +54,8 @@ public final class Session {
             return new Options(tables, machine, Optional.of(nameOrPath), dialect, stock, offsets, newOffsets);
         }
 
-        public Options withDialect(String name) {
-            return new Options(tables, machine, control, name, stock, offsets, newOffsets);
+        public Options withDialect(gcnc.galil.Dialect.Kind kind) {
+            return new Options(tables, machine, control, kind, stock, offsets, newOffsets);
         }
 
         public Options withStock(StockSize blank) {
@@ -143,7 +143,7 @@ public final class Session {
     }
 
     /** The same tables and machine in another dialect. */
-    public Session withDialect(String dialect) {
+    public Session withDialect(gcnc.galil.Dialect.Kind dialect) {
         return new Session(options.withDialect(dialect), tables, profile, programs);
     }
 

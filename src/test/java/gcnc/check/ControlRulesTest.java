@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.GnuRenderer;
+import gcnc.galil.Dialect;
 import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
@@ -43,7 +44,7 @@ class ControlRulesTest {
 
     static Compiler.Result run(MachineProfile p, String program) {
         try {
-            return Compiler.check(new StringReader(program), new Compiler.Settings(Run.TABLES, p, "galil", Optional.empty()));
+            return Compiler.check(new StringReader(program), new Compiler.Settings(Run.TABLES, p, Dialect.Kind.GALIL, Optional.empty()));
         } catch (IOException e) {
             throw new AssertionError(e);
         }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.galil.Dialect;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
@@ -222,7 +223,7 @@ class CycleExpansionTest {
             String machine = name.split("\\.")[1];
             boolean simulate = machine.equals("fanuc") && !name.startsWith("pattern") && !name.startsWith("face-peck")
                     || name.startsWith("thread-");
-            gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile(machine), "galil",
+            gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile(machine), Dialect.Kind.GALIL,
                     simulate ? java.util.Optional.of(gcnc.sim.SimOptions.defaults()) : java.util.Optional.empty(), true);
             StringBuilder dmc = new StringBuilder();
             gcnc.Compiler.Result r;

@@ -2,6 +2,7 @@ package gcnc.check;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import gcnc.galil.Dialect;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -121,7 +122,7 @@ class PeckCycleErrorsTest {
 
     /** Compiles and simulates on the fanuc machine (its 65 mm bar); the simulator's findings by code. */
     private static String simulated(String program) throws Exception {
-        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile("fanuc"), "galil",
+        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile("fanuc"), Dialect.Kind.GALIL,
                 java.util.Optional.of(gcnc.sim.SimOptions.defaults()), true);
         gcnc.Compiler.Result r = gcnc.Compiler.compile(new java.io.StringReader(program), settings, l -> { });
         java.util.Set<String> codes = new java.util.TreeSet<>();

@@ -3,6 +3,7 @@ package gcnc.check;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
+import gcnc.galil.Dialect;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
@@ -68,7 +69,7 @@ final class Run {
      */
     static void compilesCleanAsGolden(java.nio.file.Path program, MachineProfile profile) throws java.io.IOException {
         String name = program.getFileName().toString();
-        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(TABLES, profile, "galil",
+        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(TABLES, profile, Dialect.Kind.GALIL,
                 java.util.Optional.of(gcnc.sim.SimOptions.defaults().withoutBlank()), true);
         gcnc.Compiler.Result r;
         StringBuilder dmc = new StringBuilder();

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.check.cycle.ThreadPasses;
+import gcnc.galil.Dialect;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.ir.ProgramFrame;
@@ -140,7 +141,7 @@ class ThreadPassesPropertyTest {
             assertTrue(chamfered >= 2, why);
             StringBuilder dmc = new StringBuilder();
             gcnc.Compiler.Result compiled = gcnc.Compiler.compile(new java.io.StringReader(program.toString()),
-                    new gcnc.Compiler.Settings(Run.TABLES, haas, "galil",
+                    new gcnc.Compiler.Settings(Run.TABLES, haas, Dialect.Kind.GALIL,
                             java.util.Optional.of(gcnc.sim.SimOptions.defaults()), false),
                     l -> dmc.append(l.text()).append('\n'));
             assertTrue(compiled.ok(), why + compiled.diagnostics().sorted());

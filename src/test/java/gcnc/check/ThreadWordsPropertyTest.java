@@ -3,6 +3,7 @@ package gcnc.check;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import gcnc.galil.Dialect;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
@@ -30,7 +31,7 @@ class ThreadWordsPropertyTest {
         gcnc.Compiler.Result compiled;
         try {
             compiled = gcnc.Compiler.compile(new java.io.StringReader(program),
-                    new gcnc.Compiler.Settings(Run.TABLES, p, "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults()),
+                    new gcnc.Compiler.Settings(Run.TABLES, p, Dialect.Kind.GALIL, java.util.Optional.of(gcnc.sim.SimOptions.defaults()),
                             false), l -> { });
         } catch (java.io.IOException e) {
             throw new AssertionError(e);

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.diag.Severity;
+import gcnc.galil.Dialect;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.ir.ProgramFrame;
@@ -208,7 +209,7 @@ class TypeTwoPropertyTest {
 
     /** Compiles and simulates on the haas machine (its 2 in bar); the findings by code. */
     private static String simulated(String program) throws Exception {
-        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile("haas"), "galil",
+        gcnc.Compiler.Settings settings = new gcnc.Compiler.Settings(Run.TABLES, Run.profile("haas"), Dialect.Kind.GALIL,
                 java.util.Optional.of(gcnc.sim.SimOptions.defaults()), true);
         gcnc.Compiler.Result r = gcnc.Compiler.compile(new StringReader(program), settings, l -> { });
         java.util.Set<String> codes = new java.util.TreeSet<>();

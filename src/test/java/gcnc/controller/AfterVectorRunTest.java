@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.galil.AfterVectorSumTest;
+import gcnc.galil.Dialect;
 import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -28,7 +29,7 @@ class AfterVectorRunTest {
         List<String> dmc = new ArrayList<>();
         gcnc.Compiler.Result r = gcnc.Compiler.compile(new StringReader(AfterVectorSumTest.FACING), new gcnc.Compiler.Settings(
                 gcnc.tables.Tables.builtIn(), gcnc.machine.ProfileLoader.load("fanuc", gcnc.tables.TableSource.builtIn(),
-                gcnc.tables.Tables.builtIn()), "galil", java.util.Optional.of(gcnc.sim.SimOptions.defaults())),
+                gcnc.tables.Tables.builtIn()), Dialect.Kind.GALIL, java.util.Optional.of(gcnc.sim.SimOptions.defaults())),
                 l -> dmc.add(l.text()));
         assertEquals(List.of(), r.diagnostics().sorted());
         String program = String.join("\r\n", dmc) + "\r\n";

@@ -7,6 +7,7 @@ import gcnc.Compiler;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Origin;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
@@ -31,7 +32,7 @@ class StreamSplitTest {
         Tables tables = Tables.builtIn();
         MachineProfile profile = ProfileLoader.load(machine, TableSource.builtIn(), tables);
         SimOptions o = stock == null ? SimOptions.defaults() : SimOptions.defaults().withStock(stock);
-        Compiler.Settings s = new Compiler.Settings(tables, profile, "galil", Optional.of(o));
+        Compiler.Settings s = new Compiler.Settings(tables, profile, Dialect.Kind.GALIL, Optional.of(o));
         List<Instruction> out = new ArrayList<>();
         try (Reader in = Files.newBufferedReader(Path.of(file))) {
             Compiler.Result r = Compiler.compile(in, s, out::add);

@@ -3,6 +3,7 @@ package gcnc.flow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import gcnc.Compiler;
+import gcnc.galil.Dialect;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
@@ -26,7 +27,7 @@ class CalledMacroFileTest {
         Tables t = Tables.builtIn();
         for (String control : new String[] {"fanuc-a", "haas"}) {
             Compiler.Settings s = new Compiler.Settings(t, ProfileLoader.load("generic", TableSource.builtIn(), t, control),
-                    "galil", Optional.empty()).withPrograms(dir);
+                    Dialect.Kind.GALIL, Optional.empty()).withPrograms(dir);
             Compiler.Result r = Compiler.check(new StringReader(main), s);
             assertEquals("", ProgramFlowTest.messages(r), control);
         }

@@ -7,6 +7,7 @@ import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.GnuRenderer;
+import gcnc.galil.Dialect;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.MachineProfile;
@@ -74,7 +75,7 @@ class MacroTest {
     private static Compiler.Result check(String control, String program) {
         try {
             return Compiler.check(new StringReader(program),
-                    new Compiler.Settings(TABLES, machine(control), "galil", Optional.empty()));
+                    new Compiler.Settings(TABLES, machine(control), Dialect.Kind.GALIL, Optional.empty()));
         } catch (IOException e) {
             throw new AssertionError(e);
         }
@@ -358,7 +359,7 @@ class MacroTest {
     private static String dmc(String program) throws IOException {
         StringBuilder out = new StringBuilder();
         Compiler.Result r = Compiler.compile(new StringReader(program),
-                new Compiler.Settings(TABLES, machine("haas"), "galil", Optional.empty()), l -> {
+                new Compiler.Settings(TABLES, machine("haas"), Dialect.Kind.GALIL, Optional.empty()), l -> {
                     if (!(l.command() instanceof gcnc.dmc.Command.SetVariable)) {
                         out.append(l.text()).append('\n'); // gline=<line>: the source lines differ, as said
                     }

@@ -8,6 +8,7 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.GnuRenderer;
+import gcnc.galil.Dialect;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
@@ -80,7 +81,7 @@ class ProgramFlowTest {
     }
 
     private static Compiler.Result check(String control, String program, Optional<Path> folder) {
-        Compiler.Settings s = new Compiler.Settings(TABLES, machine(control), "galil", Optional.empty());
+        Compiler.Settings s = new Compiler.Settings(TABLES, machine(control), Dialect.Kind.GALIL, Optional.empty());
         if (folder.isPresent()) {
             s = s.withPrograms(folder.get());
         }

@@ -95,7 +95,7 @@ public class AfterVectorSumTest {
         List<String> dmc = new ArrayList<>();
         gcnc.Compiler.Result r = gcnc.Compiler.compile(new StringReader(FACING), new gcnc.Compiler.Settings(
                 gcnc.tables.Tables.builtIn(), gcnc.machine.ProfileLoader.load("fanuc",
-                gcnc.tables.TableSource.builtIn(), gcnc.tables.Tables.builtIn()), "galil",
+                gcnc.tables.TableSource.builtIn(), gcnc.tables.Tables.builtIn()), Dialect.Kind.GALIL,
                 java.util.Optional.of(gcnc.sim.SimOptions.defaults())), l -> dmc.add(l.text()));
         assertEquals(List.of(), r.diagnostics().sorted(), String.join("\n", dmc));
         List<Sequence> cut = sequences(dmc).stream().filter(q -> q.avs().size() > 1).toList();

@@ -31,7 +31,7 @@ class ArcChainTest {
 
     private static Compiler.Result compile(String program, String machine, List<Instruction> out) throws Exception {
         return Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES,
-                ProfileLoader.load(machine, TableSource.builtIn(), TABLES), "galil", Optional.of(SimOptions.defaults().withoutBlank())),
+                ProfileLoader.load(machine, TableSource.builtIn(), TABLES), Dialect.Kind.GALIL, Optional.of(SimOptions.defaults().withoutBlank())),
                 out::add);
     }
 

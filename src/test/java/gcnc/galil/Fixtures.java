@@ -64,7 +64,7 @@ final class Fixtures {
     static List<String> run(String dialect, MachineProfile p, Diagnostics d, CheckedBlock... blocks) {
         List<String> out = new ArrayList<>();
         java.util.function.Consumer<Instruction> sink = l -> out.add(l.text());
-        Dialect g = Dialect.create(dialect, p, d);
+        Dialect g = Dialect.create(Dialect.Kind.of(dialect), p, d);
         g.begin(sink);
         for (CheckedBlock b : blocks) {
             g.block(b, sink);

@@ -152,7 +152,7 @@ class GalilDialectTest {
     @Test
     void inlineSourceMapNamesEachBlocksLine() {
         List<Instruction> out = new ArrayList<>();
-        Dialect g = Dialect.create("galil", AT_ORIGIN, new Diagnostics(), true);
+        Dialect g = Dialect.create(Dialect.Kind.GALIL, AT_ORIGIN, new Diagnostics(), true);
         Point a = new Point(10, 10);
         g.begin(out::add);
         g.block(motions(17, a, rapid(Point.ORIGIN, a)), out::add);
@@ -175,7 +175,7 @@ class GalilDialectTest {
         SourceMap map = new SourceMap(mapLines::add);
         List<Instruction> out = new ArrayList<>();
         java.util.function.Consumer<Instruction> sink = map.wrap(out::add);
-        Dialect g = Dialect.create("galil", AT_ORIGIN, new Diagnostics());
+        Dialect g = Dialect.create(Dialect.Kind.GALIL, AT_ORIGIN, new Diagnostics());
         Point a = new Point(10, 10);
         g.begin(sink);
         g.block(motions(4, a, rapid(Point.ORIGIN, a)), sink);
@@ -188,7 +188,7 @@ class GalilDialectTest {
 
     @Test
     void unknownDialectIsRefused() {
-        assertThrows(IllegalArgumentException.class, () -> Dialect.create("fanuc", GENERIC, new Diagnostics()));
+        assertThrows(IllegalArgumentException.class, () -> Dialect.Kind.of("fanuc"));
     }
 
     @Test

@@ -64,7 +64,7 @@ class MachineCodeTest {
     private static List<String> compile(String program, MachineProfile p, Diagnostics[] seen) throws Exception {
         List<String> out = new ArrayList<>();
         Compiler.Result r = Compiler.compile(new StringReader(program),
-                new Compiler.Settings(TABLES, p, "galil", Optional.of(SimOptions.defaults().withoutBlank())),
+                new Compiler.Settings(TABLES, p, Dialect.Kind.GALIL, Optional.of(SimOptions.defaults().withoutBlank())),
                 (Instruction l) -> out.add(l.text()));
         assertTrue(r.ok(), () -> r.diagnostics().sorted().toString());
         assertEquals(0, r.simulation().orElseThrow().findings(), () -> r.diagnostics().sorted().toString());

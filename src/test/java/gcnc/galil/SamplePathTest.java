@@ -48,7 +48,7 @@ class SamplePathTest {
         MachineProfile p = ProfileLoader.load(machine, TableSource.builtIn(), tables);
         Diagnostics d = new Diagnostics();
         Checker checker = new Checker(tables, p, d);
-        Dialect galil = Dialect.create("galil", p, d);
+        Dialect galil = Dialect.create(Dialect.Kind.GALIL, p, d);
         long[] at = galil(p, p.home());
         PathReader reader = new PathReader(at[0], at[1]);
         int sequences = 0;

@@ -8,6 +8,7 @@ import gcnc.Compiler;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.dmc.SourceMap;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileFile;
 import gcnc.machine.ProfileLoader;
@@ -59,7 +60,7 @@ class ContouringTest {
         List<String> map = new ArrayList<>();
         List<gcnc.dmc.Instruction> written = new ArrayList<>();
         SourceMap mapper = new SourceMap(map::add);
-        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, p, "galil",
+        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, p, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withoutBlank())), mapper.wrap(l -> {
                     dmc.append(l.text()).append('\n');
                     written.add(l);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import gcnc.Compiler;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
@@ -45,11 +46,11 @@ class ArcVerdictTest {
     }
 
     private static List<String> check(String program) throws Exception {
-        return codes(Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, haas(), "galil", Optional.empty())));
+        return codes(Compiler.check(new StringReader(program), new Compiler.Settings(TABLES, haas(), Dialect.Kind.GALIL, Optional.empty())));
     }
 
     private static List<String> compile(String program) throws Exception {
-        return codes(Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, haas(), "galil",
+        return codes(Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, haas(), Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withoutBlank())), l -> { }));
     }
 

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Compiler;
+import gcnc.galil.Dialect;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
@@ -25,7 +26,7 @@ class DrawingTest {
 
     static SimReport simulate(String program) throws Exception {
         Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES,
-                ProfileLoader.load("generic", TableSource.builtIn(), TABLES), "galil",
+                ProfileLoader.load("generic", TableSource.builtIn(), TABLES), Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withPath())), l -> { });
         return r.simulation().orElseThrow();
     }

@@ -33,7 +33,7 @@ class PipelineTest {
         Diagnostics d = new Diagnostics();
         String first = Files.readAllLines(Path.of("samples", sample)).get(0);
         Simulator sim = new Simulator(profile, gcnc.Compiler.withStockHeader(first, profile, options), d);
-        Dialect out = Dialect.create(dialect, profile, d);
+        Dialect out = Dialect.create(Dialect.Kind.of(dialect), profile, d);
         Checker checker = new Checker(tables, profile, d);
         List<Instruction> buf = new ArrayList<>();
         out.begin(buf::add);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Compiler;
+import gcnc.galil.Dialect;
 import gcnc.machine.ProfileLoader;
 import gcnc.machine.Units;
 import gcnc.tables.TableSource;
@@ -37,7 +38,7 @@ class ProgramTermsTest {
 
     static SimReport simulate(String program, String machine, SimOptions options) throws Exception {
         Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES,
-                ProfileLoader.load(machine, TableSource.builtIn(), TABLES), "galil", Optional.of(options)), l -> { });
+                ProfileLoader.load(machine, TableSource.builtIn(), TABLES), Dialect.Kind.GALIL, Optional.of(options)), l -> { });
         return r.simulation().orElseThrow();
     }
 
@@ -103,7 +104,7 @@ class ProgramTermsTest {
     void aDmcReplayedByItselfHasNoProgramTerms() throws Exception {
         StringBuilder dmc = new StringBuilder();
         Compiler.compile(new StringReader(MM), new Compiler.Settings(TABLES,
-                ProfileLoader.load("generic", TableSource.builtIn(), TABLES), "galil", Optional.empty()),
+                ProfileLoader.load("generic", TableSource.builtIn(), TABLES), Dialect.Kind.GALIL, Optional.empty()),
                 l -> dmc.append(l.text()).append('\n'));
         SimReport r = DmcReplay.replay(new BufferedReader(new StringReader(dmc.toString())),
                 ProfileLoader.load("generic", TableSource.builtIn(), TABLES), SimOptions.defaults(),

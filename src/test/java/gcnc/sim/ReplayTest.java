@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.dmc.Instruction;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
@@ -79,7 +80,7 @@ class ReplayTest {
     static String compile(String program, String machine) throws Exception {
         StringBuilder dmc = new StringBuilder();
         gcnc.Compiler.Result r = gcnc.Compiler.compile(new StringReader(program), new gcnc.Compiler.Settings(
-                Tables.builtIn(), profile(machine), "galil", java.util.Optional.of(SimOptions.defaults())),
+                Tables.builtIn(), profile(machine), Dialect.Kind.GALIL, java.util.Optional.of(SimOptions.defaults())),
                 l -> dmc.append(l.text()).append('\n'));
         assertEquals(List.of(), codes(r.diagnostics()), program);
         return dmc.toString();

@@ -80,12 +80,12 @@ class SimulatorThreadTest {
         Tables tables = Tables.builtIn();
         MachineProfile profile = profile(machine);
         Compiler.Result threaded = Compiler.compile(new StringReader(program),
-                new Compiler.Settings(tables, profile, "galil", Optional.of(SimOptions.defaults())), l -> { });
+                new Compiler.Settings(tables, profile, Dialect.Kind.GALIL, Optional.of(SimOptions.defaults())), l -> { });
 
         Diagnostics d = new Diagnostics();
         Simulator sim = new Simulator(profile, Compiler.withStockHeader(program.lines().findFirst().orElse(""), profile,
                 SimOptions.defaults()), d);
-        Dialect out = Dialect.create("galil", profile, d);
+        Dialect out = Dialect.create(Dialect.Kind.GALIL, profile, d);
         gcnc.plan.Planner planner = gcnc.plan.Planner.forProfile(profile);
         Checker checker = new Checker(tables, profile, d);
         List<Instruction> buf = new ArrayList<>();
@@ -137,10 +137,10 @@ class SimulatorThreadTest {
             List<String> without = new ArrayList<>();
             List<String> mapWithout = new ArrayList<>();
             Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(Tables.builtIn(),
-                    profile("generic"), "galil", Optional.of(SimOptions.defaults())),
+                    profile("generic"), Dialect.Kind.GALIL, Optional.of(SimOptions.defaults())),
                     new gcnc.dmc.SourceMap(mapWithSim::add).wrap(l -> withSim.add(l.text())));
             Compiler.compile(new StringReader(program), new Compiler.Settings(Tables.builtIn(), profile("generic"),
-                    "galil", Optional.empty()), new gcnc.dmc.SourceMap(mapWithout::add).wrap(l -> without.add(l.text())));
+                    Dialect.Kind.GALIL, Optional.empty()), new gcnc.dmc.SourceMap(mapWithout::add).wrap(l -> without.add(l.text())));
             assertTrue(withSim.size() > 3000, "lines: " + withSim.size());
             assertEquals(without, withSim);
             assertEquals(mapWithout, mapWithSim);

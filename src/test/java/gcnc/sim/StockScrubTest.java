@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Compiler;
+import gcnc.galil.Dialect;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
@@ -33,7 +34,7 @@ class StockScrubTest {
 
     static Drawing simulate(SimOptions options) throws Exception {
         Compiler.Result r = Compiler.compile(new StringReader(PROGRAM), new Compiler.Settings(TABLES,
-                ProfileLoader.load("generic", TableSource.builtIn(), TABLES), "galil", Optional.of(options)), l -> { });
+                ProfileLoader.load("generic", TableSource.builtIn(), TABLES), Dialect.Kind.GALIL, Optional.of(options)), l -> { });
         assertTrue(r.ok(), r.diagnostics().sorted().toString());
         return r.simulation().orElseThrow().drawing();
     }

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.tables.Tables;
 import java.io.BufferedReader;
@@ -26,7 +27,7 @@ class ThreadContinuousTest {
 
     private static Compiler.Result compile(String program, StringBuilder dmc) throws Exception {
         MachineProfile p = ReplayTest.profile("fanuc");
-        Compiler.Settings s = new Compiler.Settings(Tables.builtIn(), p, "galil", Optional.of(SimOptions.defaults()),
+        Compiler.Settings s = new Compiler.Settings(Tables.builtIn(), p, Dialect.Kind.GALIL, Optional.of(SimOptions.defaults()),
                 false);
         return Compiler.compile(new StringReader(program), s, l -> dmc.append(l.text()).append('\n'));
     }

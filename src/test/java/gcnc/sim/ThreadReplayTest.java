@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Compiler;
 import gcnc.diag.Diagnostics;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileFile;
 import gcnc.machine.ProfileLoader;
@@ -32,7 +33,7 @@ class ThreadReplayTest {
 
     private static Compiler.Result compile(MachineProfile p, String dialect, String program, StringBuilder dmc)
             throws java.io.IOException {
-        Compiler.Settings s = new Compiler.Settings(Tables.builtIn(), p, dialect, Optional.of(SimOptions.defaults()),
+        Compiler.Settings s = new Compiler.Settings(Tables.builtIn(), p, Dialect.Kind.of(dialect), Optional.of(SimOptions.defaults()),
                 false);
         return Compiler.compile(new StringReader(program), s, l -> dmc.append(l.text()).append('\n'));
     }
@@ -98,7 +99,7 @@ class ThreadReplayTest {
         // the checker already (check and compile give one verdict)
         assertEquals("E208@6", ReplayTest.codes(r.diagnostics()).get(0));
         Compiler.Result checked = Compiler.check(new StringReader(PROGRAM), new Compiler.Settings(Tables.builtIn(),
-                coarse, "galil", Optional.empty()));
+                coarse, Dialect.Kind.GALIL, Optional.empty()));
         assertEquals("E208@6", ReplayTest.codes(checked.diagnostics()).get(0));
     }
 

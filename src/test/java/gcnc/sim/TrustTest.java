@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
@@ -28,7 +29,7 @@ class TrustTest {
 
     static List<String> compile(MachineProfile p, String program) throws Exception {
         Compiler.Result r = Compiler.compile(new StringReader(program),
-                new Compiler.Settings(TABLES, p, "galil", Optional.of(SimOptions.defaults())), l -> { });
+                new Compiler.Settings(TABLES, p, Dialect.Kind.GALIL, Optional.of(SimOptions.defaults())), l -> { });
         List<String> out = new ArrayList<>();
         for (Diagnostic d : r.diagnostics().sorted()) {
             out.add(d.code().id() + "@" + d.span().line());
@@ -107,7 +108,7 @@ class TrustTest {
         String p = HEAD + "N60 G00 X46. Z2.\nN70 G00 X40.\nN110 G00 Z-40.\nN120 G00 X46.\nM05\nM30\n";
         MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
         Compiler.Result r = Compiler.compile(new StringReader(p),
-                new Compiler.Settings(TABLES, m, "galil", Optional.of(SimOptions.defaults())), l -> { });
+                new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL, Optional.of(SimOptions.defaults())), l -> { });
         Diagnostic d = r.diagnostics().sorted().get(0);
         assertEquals(gcnc.diag.Code.E305_SIM_RAPID_INTO_STOCK, d.code());
         String text = TABLES.messages().render(d.code(), d.args(), gcnc.tables.ErrorMessages.Lang.EN);
@@ -138,7 +139,7 @@ class TrustTest {
         assertEquals(expected, compile(m, p));
         StringBuilder dmc = new StringBuilder();
         StringBuilder map = new StringBuilder();
-        Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil", Optional.empty()),
+        Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL, Optional.empty()),
                 new gcnc.dmc.SourceMap(l -> map.append(l).append('\n')).wrap(l -> dmc.append(l.text()).append('\n')));
         gcnc.diag.Diagnostics replayed = new gcnc.diag.Diagnostics();
         DmcReplay.replay(new java.io.BufferedReader(new StringReader(dmc.toString())), m, SimOptions.defaults(), replayed,
@@ -161,7 +162,7 @@ class TrustTest {
         MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
         List<String> plain = compile(m, p);
         List<String> drawn = new ArrayList<>();
-        Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil",
+        Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withPath())), l -> { }).diagnostics().sorted()
                 .forEach(d -> drawn.add(d.code().id() + "@" + d.span().line()));
         assertEquals(List.of("E320@11"), plain);
@@ -181,9 +182,9 @@ class TrustTest {
         MachineProfile fanuc = ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES);
         SimOptions tube = SimOptions.defaults().withStock(new StockSize(65, 150, 100, 30));
         assertEquals(List.of("E320@9"), codes(Compiler.compile(new StringReader(back),
-                new Compiler.Settings(TABLES, fanuc, "galil", Optional.of(tube)), l -> { })));
+                new Compiler.Settings(TABLES, fanuc, Dialect.Kind.GALIL, Optional.of(tube)), l -> { })));
         assertEquals(List.of(), codes(Compiler.compile(new StringReader(forward),
-                new Compiler.Settings(TABLES, fanuc, "galil", Optional.of(tube)), l -> { })));
+                new Compiler.Settings(TABLES, fanuc, Dialect.Kind.GALIL, Optional.of(tube)), l -> { })));
     }
 
     @Test
@@ -204,7 +205,7 @@ class TrustTest {
         String p = HEAD + "G00 X46. Z2.\nG00 X40.\nG00 Z-10.\nG00 X46.\nM05\nM30\n";
         MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
         StringBuilder dmc = new StringBuilder();
-        Compiler.Result r = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, "galil",
+        Compiler.Result r = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withoutBlank())), l -> dmc.append(l.text()).append('\n'));
         List<String> codes = new ArrayList<>();
         r.diagnostics().sorted().forEach(d -> codes.add(d.code().id() + "@" + d.span().line()));
@@ -224,12 +225,12 @@ class TrustTest {
                 + "G00 Z5.\nG00 X70. Z50.\nM30\n";
         MachineProfile fanuc = ProfileLoader.load("fanuc", TableSource.builtIn(), TABLES);
         StringBuilder dmc = new StringBuilder();
-        Compiler.Result tube = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, "galil",
+        Compiler.Result tube = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withStock(new gcnc.sim.StockSize(65, 150, 100, 30)))),
                 l -> dmc.append(l.text()).append('\n'));
         assertEquals(List.of(), codes(tube));
         assertEquals(true, dmc.toString().contains("\nNO STOCK D65 L150 S100 B30\n"), dmc.toString());
-        Compiler.Result bar = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, "galil",
+        Compiler.Result bar = Compiler.compile(new StringReader(p), new Compiler.Settings(TABLES, fanuc, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withStock(new gcnc.sim.StockSize(65, 150, 100)))), l -> { });
         assertEquals(List.of("E315@7"), codes(bar));
         assertEquals(new gcnc.dmc.Command.Stock(Optional.of(new gcnc.machine.MachineModel.Blank(65, 150, 100, 30))),
@@ -254,7 +255,7 @@ class TrustTest {
         String program = HEAD + "G00 X46. Z2.\n" + p[0] + "\nM05\nM30\n";
         MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), TABLES);
         Compiler.Result checked = Compiler.check(new StringReader(program),
-                new Compiler.Settings(TABLES, m, "galil", Optional.empty()));
+                new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL, Optional.empty()));
         List<String> fromCheck = new ArrayList<>();
         for (Diagnostic d : checked.diagnostics().sorted()) {
             fromCheck.add(d.code().id() + "@" + d.span().line());

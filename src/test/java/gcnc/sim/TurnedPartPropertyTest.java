@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileFile;
 import gcnc.machine.ProfileLoader;
@@ -189,7 +190,7 @@ class TurnedPartPropertyTest {
     /** The findings of a compile from the part's blank (120 mm long), given in the profile's units ({@code perMm} of them a mm). */
     static List<String> run(MachineProfile m, Part p, String program, double perMm) throws Exception {
         double stickout = m.model().stock().orElseThrow().stickout();
-        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, m, "galil",
+        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults().withStock(new StockSize(p.blank() * perMm, 120 * perMm, stickout)))),
                 l -> { });
         List<String> out = new ArrayList<>();

@@ -60,7 +60,7 @@ class ExplainTest {
                 continue; // everyExampleIsShort... holds the few to their reason
             }
             Session s = sessions.computeIfAbsent(e.machine() + "/" + e.control(), ExplainTest::open)
-                    .withDialect(e.dialect());
+                    .withDialect(gcnc.galil.Dialect.Kind.of(e.dialect()));
             // check's findings and compile's: check warns where compile's simulation judges (E660 / E306)
             List<Diagnostic> found = new ArrayList<>(s.check(new StringReader(e.program())).diagnostics().sorted());
             found.addAll(s.compile(new StringReader(e.program()), Optional.of(s.simulation()), false,

@@ -82,11 +82,11 @@ final class CompileCommand extends RunCommand {
         try (outputs) {
             outputs.mapSource(SourceFiles.isStdin(file) ? name : file.getFileName().toString(), SourceFiles.fileOf(file));
             // the thesis's format is no Galil program: it has no form
-            java.util.function.Consumer<gcnc.dmc.Instruction> sink = "thesis".equals(dialect.name()) ? outputs.programSink()
+            java.util.function.Consumer<gcnc.dmc.Instruction> sink = dialect.kind() == gcnc.galil.Dialect.Kind.THESIS ? outputs.programSink()
                     : outputs.sink(asked, profile.controllerLimits());
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
-                r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
+                r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
                         sink);
             } catch (IOException e) {
                 return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
@@ -134,7 +134,7 @@ final class CompileCommand extends RunCommand {
             throw new ParameterException(spec.commandLine(),
                     "--form stream writes two files (the resident program and the stream): name the output with -o");
         }
-        if (f == Form.STREAM && "thesis".equals(dialect.name())) {
+        if (f == Form.STREAM && dialect.kind() == gcnc.galil.Dialect.Kind.THESIS) {
             throw new ParameterException(spec.commandLine(), "--form stream is a Galil program's form: the thesis dialect has none");
         }
         return Optional.of(f);

@@ -1,26 +1,25 @@
 package gcnc.cli;
 
+import gcnc.galil.Dialect;
 import picocli.CommandLine.Option;
 
-/** {@code --dialect}: which Galil program to write. */
+/** {@code --dialect}: which Galil program to write, parsed here once into a {@link Dialect.Kind}. */
 final class DialectOptions {
-    enum Name {
-        /** A standalone DMC program a controller can run (default). */
-        GALIL,
-        /** The thesis's directives, reproducing its Table 5.2 byte for byte. */
-        THESIS
-    }
-
     @Option(names = "--dialect", paramLabel = "galil|thesis", defaultValue = "galil",
             description = "galil (default): a standalone DMC program; thesis: the thesis's Table 5.2 directives.")
-    Name dialect;
+    Dialect.Kind dialect;
 
+    Dialect.Kind kind() {
+        return dialect;
+    }
+
+    /** The name as the user writes it, for messages. */
     String name() {
-        return dialect.name().toLowerCase(java.util.Locale.ROOT);
+        return dialect.label();
     }
 
     /** The thesis dialect is a historical record, not a runnable program; compile does not simulate it. */
     boolean simulatedByDefault() {
-        return dialect == Name.GALIL;
+        return dialect == Dialect.Kind.GALIL;
     }
 }

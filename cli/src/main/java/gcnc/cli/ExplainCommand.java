@@ -191,7 +191,7 @@ final class ExplainCommand implements Callable<Integer> {
         out.println("  " + say.get("explain.fix", p.get().fix()));
         prose.example(c).filter(x -> !x.lines().isEmpty()).ifPresent(x -> {
             String machine = x.machine() + (x.control().isEmpty() ? "" : ", control " + x.control())
-                    + (x.dialect().equals("galil") ? "" : ", --dialect " + x.dialect());
+                    + (gcnc.galil.Dialect.Kind.of(x.dialect()) == gcnc.galil.Dialect.Kind.GALIL ? "" : ", --dialect " + x.dialect());
             out.println("  " + (x.prelude().isEmpty() ? say.get("explain.example", machine)
                     : say.get("explain.example_after", machine, String.join(" / ", x.prelude()))));
             for (String line : x.lines()) {

@@ -80,7 +80,7 @@ final class SheetCommand extends RunCommand {
         Compiler.Result r;
         String number;
         try (Reader in = SourceFiles.open(file, streams().in())) {
-            r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file))
+            r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file))
                     .compile(in, Optional.of(options), false, line -> { });
         } catch (IOException e) {
             return reporter.ioFault(name, Phrase.IO_CANNOT_READ, e);

@@ -121,7 +121,7 @@ final class SimulateCommand extends RunCommand {
                 }
             } else {
                 java.util.function.Consumer<gcnc.dmc.Instruction> discard = line -> { };
-                Compiler.Result r = setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)).compile(in, Optional.of(options), false,
+                Compiler.Result r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)).compile(in, Optional.of(options), false,
                         discard);
                 diags = r.diagnostics();
                 report = r.simulation();

@@ -33,24 +33,50 @@ public interface Dialect {
     /** Writes what comes after the last block. */
     void end(java.util.function.Consumer<gcnc.dmc.Instruction> out);
 
-    /** The dialect called {@code name} ("galil" or "thesis"), without inline source-map comments. */
-    static Dialect create(String name, MachineProfile profile, Diagnostics diagnostics) {
-        return create(name, profile, diagnostics, false);
+    /** The dialects gcnc writes, parsed once where the user names them ({@code --dialect galil|thesis}). */
+    enum Kind {
+        /** A standalone DMC program a controller can run (the default). */
+        GALIL,
+        /** The thesis's directives, reproducing its Table 5.2 byte for byte. */
+        THESIS;
+
+        /** The name the user writes: {@code galil} or {@code thesis}. */
+        public String label() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+
+        /**
+         * The dialect called {@code name} ({@code galil} or {@code thesis}).
+         *
+         * @throws IllegalArgumentException for an unknown dialect name
+         */
+        public static Kind of(String name) {
+            for (Kind k : values()) {
+                if (k.label().equals(name)) {
+                    return k;
+                }
+            }
+            throw new IllegalArgumentException("unknown dialect '" + name + "' (galil or thesis)");
+        }
+    }
+
+    /** The dialect {@code kind}, without inline source-map comments. */
+    static Dialect create(Kind kind, MachineProfile profile, Diagnostics diagnostics) {
+        return create(kind, profile, diagnostics, false);
     }
 
     /**
      * @param inlineSourceMap put a {@code NO L<line>} comment before each block's lines
      *                        ({@code --source-map}); otherwise use a {@link SourceMap} side file
-     * @throws IllegalArgumentException for an unknown dialect name
      */
-    static Dialect create(String name, MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
-        switch (name) {
-            case "galil":
+    static Dialect create(Kind kind, MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
+        switch (kind) {
+            case GALIL:
                 return new GalilDialect(profile, diagnostics, inlineSourceMap);
-            case "thesis":
+            case THESIS:
                 return new ThesisDialect(profile, diagnostics, inlineSourceMap);
             default:
-                throw new IllegalArgumentException("unknown dialect '" + name + "' (galil or thesis)");
+                throw new IllegalStateException("a dialect with no code generator: " + kind);
         }
     }
 }

@@ -142,7 +142,7 @@ final class Api implements AutoCloseable {
         if (e.profileFile() != null) {
             o.addProperty("profileFile", e.profileFile());
         }
-        o.addProperty("dialect", config.session().options().dialect());
+        o.addProperty("dialect", config.session().options().dialect().label());
         o.addProperty("lang", config.lang().name().toLowerCase(Locale.ROOT));
         o.addProperty("version", config.version());
         JsonArray ext = new JsonArray();
