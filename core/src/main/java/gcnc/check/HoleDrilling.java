@@ -24,7 +24,9 @@ import java.util.Set;
 /**
  * The drilling cycles on the spindle axis of the Haas lathe (docs/cycles.md): G81 drill, G82 spot
  * drill (a dwell P at the bottom, read as G04's P), G83 peck drill (Q the peck, or I the first
- * peck, J how much less each next one, K the smallest), each {@code X(U) Z(W) R F}: X where the
+ * peck, J how much less each next one, K the smallest), G84/G184 tapping, G85/G86/G89 boring
+ * ({@link HoleBoring}); on the Fanuc 0i-TF G83 face drilling, G84 face tapping, G85 face boring
+ * and the Series 15 format G81/G82 (G83 without pecks; G82 with its dwell), each {@code X(U) Z(W) R F}: X where the
  * hole is (the spindle centre, X0, unless the drill is made to cut off centre: E186), Z the bottom,
  * R the Z of the R plane. The moves are {@link Drilling}'s. The cycle is modal in its group: a
  * later block with X, U, Z or W and no G of its group, of the motion group or one-shot drills
@@ -36,9 +38,12 @@ final class HoleDrilling {
     private static final double EPS_MM = 0.001;
     private static final Set<Letter> OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.I, Letter.J, Letter.K,
             Letter.L);
-    /** Fanuc's words (control key cycle.drill_words = fanuc): R, P the dwell, Q the peck, K the repeats. */
-    private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.C,
-            Letter.H);
+    /**
+     * Fanuc's words (control key cycle.drill_words = fanuc): R, P the dwell, Q the peck, K the
+     * repeats (L in the Series 15 format of G81/G82).
+     */
+    private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.L,
+            Letter.C, Letter.H);
 
     private final Checker host;
     /** The cycle in force, or null; its name, group and what later blocks keep. */
@@ -182,6 +187,11 @@ final class HoleDrilling {
             done.addAll(tap(b, at, start, end.x(), returnZ, label));
             return done;
         }
+        if (modal.kind().boreCycle()) {
+            done.addAll(HoleBoring.bore(host, modal.kind(), modal.name(), b, at, start, end.x(), rPlane, bottom,
+                    returnZ, dwell));
+            return done;
+        }
         double clearance = p.control().peckRetractMm();
         if (modal.kind() == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, at.span(), label,
@@ -260,9 +270,7 @@ final class HoleDrilling {
 
     /** A block of the spindle M code of {@code role} on this control, at the cycle's line. */
     private RawBlock spindle(RawBlock b, gcnc.machine.MRole role, Word at) {
-        int code = host.profile().control().mFor(role).orElseThrow().code();
-        return new RawBlock(b.line(), List.of(new Word(Letter.M, String.format("%02d", code), at.span())), at.span(),
-                false);
+        return HoleBoring.spindle(host, b, role, at);
     }
 
     /**
@@ -287,10 +295,12 @@ final class HoleDrilling {
                 return false;
             }
         }
-        if (words.has(Letter.K) && words.value(Letter.K) != 1) {
-            host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.K).span(), label,
-                    words.word(Letter.K), Phrase.DRILL_REPEATS.arg());
-            return false;
+        for (Letter l : List.of(Letter.K, Letter.L)) {
+            if (words.has(l) && words.value(l) != 1) {
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(l).span(), label, words.word(l),
+                        Phrase.DRILL_REPEATS.arg());
+                return false;
+            }
         }
         if (words.has(Letter.Q) && role.tapCycle()) {
             host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.Q).span(), label,
@@ -326,7 +336,8 @@ final class HoleDrilling {
                 return false;
             }
             if (peckWord && role != GRole.PECK_DRILL_CYCLE
-                    || !peckWord && role != GRole.SPOT_DRILL_CYCLE && !role.tapCycle()) {
+                    || !peckWord && role != GRole.SPOT_DRILL_CYCLE && role != GRole.BORE_DWELL_CYCLE
+                    && !role.tapCycle()) {
                 host.out().error(Code.E161_CYCLE_WORD, w.span(), label, w);
                 return false;
             }
@@ -357,7 +368,7 @@ final class HoleDrilling {
                     Phrase.DRILL_PECK_J.arg());
             return false;
         }
-        if (g != null && role == GRole.SPOT_DRILL_CYCLE && !words.has(Letter.P)) {
+        if (g != null && (role == GRole.SPOT_DRILL_CYCLE || role == GRole.BORE_DWELL_CYCLE) && !words.has(Letter.P)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_DWELL.arg());
             return false;
         }
