@@ -80,6 +80,33 @@ class BoringCyclesTest {
         assertEquals("6:5:E186", Run.of("haas", HAAS + "G85 X0.5 Z-0.6 R0.1 F0.004\nG80\nM30\n").errors());
     }
 
+    /**
+     * Property, over random holes: every boring cycle feeds to the bottom exactly once, never past
+     * it nor behind the start, stays on the centre line, and ends at the start's Z.
+     */
+    @Test
+    void boringNeverPassesTheBottomAndEndsWhereItStarted() {
+        java.util.Random random = new java.util.Random(31);
+        for (int n = 0; n < 60; n++) {
+            String g = new String[] {"G85", "G86", "G89"}[n % 3];
+            double r = random.nextInt(40) / 100.0;                 // R plane Z0 to Z0.39, below the start Z0.5
+            double bottom = -(1 + random.nextInt(200)) / 100.0;    // Z-0.01 to Z-2.00
+            String words = g + " X0. Z" + String.format(java.util.Locale.ROOT, "%.2f", bottom) + " R"
+                    + String.format(java.util.Locale.ROOT, "%.2f", r) + (g.equals("G89") ? " P0.2" : "") + " F0.004";
+            Run run = Run.of("haas", HAAS + words + "\nG80\nM30\n");
+            assertEquals("", run.errors(), words);
+            List<String> moves = zMoves(run, "haas", 6);
+            assertEquals("G00 0.5", moves.get(moves.size() - 1), words + ": back at the start");
+            long atBottom = moves.stream().filter(m -> m.equals("G01 " + gcnc.check.geom.NumberText.plain(bottom, 3)))
+                    .count();
+            assertEquals(1, atBottom, words + ": " + moves);
+            for (String m : moves) {
+                double z = Double.parseDouble(m.substring(4));
+                org.junit.jupiter.api.Assertions.assertTrue(z >= bottom - 1e-9 && z <= 0.5 + 1e-9, words + ": " + m);
+            }
+        }
+    }
+
     @Test
     void fanucSeries15DrillingAsTheFusionPostWritesIt() {
         // system A: R from the initial level Z5 (cycle.drill_r = incremental): R-3. is the R point Z2
