@@ -122,8 +122,34 @@ class BoringCyclesTest {
         // G99: back to the R point only
         Run r = fanucB(FANUC.replace("G99", "G95") + "G90 G99 G81 X0. Z-12. R2. F0.1\nG80\nM30\n");
         assertEquals(List.of("G00 2", "G01 -12", "G00 2"), zMoves(r, "fanuc", 6));
-        // repeats other than one are not followed yet (K, or L in the Series 15 format)
-        assertEquals("6:20:E188", Run.of("fanuc", FANUC + "G81 X0. Z-12. R-3. L2 F0.1\nG80\nM30\n").errors());
+    }
+
+    @Test
+    void repeatsDrillTheSameHoleAgainAndKZeroDrillsNothing() {
+        // K2 (L2 in the Series 15 format): the hole twice, the second from the initial level
+        Run twice = Run.of("fanuc", FANUC + "G81 X0. Z-12. R-3. K2 F0.1\nG80\nM30\n");
+        assertEquals("", twice.errors());
+        assertEquals(List.of("G00 2", "G01 -12", "G00 5", "G00 2", "G01 -12", "G00 5"), zMoves(twice, "fanuc", 6));
+        assertEquals(zMoves(twice, "fanuc", 6),
+                zMoves(Run.of("fanuc", FANUC + "G81 X0. Z-12. R-3. L2 F0.1\nG80\nM30\n"), "fanuc", 6));
+        // K0 keeps the cycle's data and drills nothing; the next block drills with it
+        Run stored = Run.of("fanuc", FANUC + "G81 X0. Z-12. R-3. K0 F0.1\nZ-10.\nG80\nM30\n");
+        assertEquals("", stored.errors());
+        assertEquals(List.of(), zMoves(stored, "fanuc", 6));
+        assertEquals(List.of("G00 2", "G01 -10", "G00 5"), zMoves(stored, "fanuc", 7));
+        // G99 (system B): the repeat starts at the R point
+        Run r = fanucB(FANUC.replace("G99", "G95") + "G90 G99 G83 X0. Z-12. R2. Q7. K2 F0.1\nG80\nM30\n");
+        assertEquals("", r.errors());
+        assertEquals(List.of("G00 2", "G01 -5", "G00 2", "G00 -4", "G01 -12", "G00 2",
+                "G01 -5", "G00 2", "G00 -4", "G01 -12", "G00 2"), zMoves(r, "fanuc", 6));
+        // Haas L: a tap twice, the spindle reversed in each
+        Run tap = Run.of("haas", HAAS + "G84 X0. Z-0.6 R0.1 L2 F15.\nG80\nM30\n");
+        assertEquals("", tap.errors());
+        assertEquals("M4 M3 M4 M3", extras(tap, 6));
+        // stepped by U, or not a whole number: not followed (holes off the centre line need live tools)
+        assertEquals("6:21:E188", Run.of("fanuc", FANUC + "G81 U10. Z-12. R-3. K2 F0.1\nG80\nM30\n").errors());
+        assertEquals("6:20:E188", Run.of("fanuc", FANUC + "G81 X0. Z-12. R-3. K2.5 F0.1\nG80\nM30\n").errors());
+        assertEquals("6:20:E188", Run.of("haas", HAAS + "G81 X0. Z-0.6 R0.1 L-1 F0.004\nG80\nM30\n").errors());
     }
 
     @Test
