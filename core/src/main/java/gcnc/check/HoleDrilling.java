@@ -247,10 +247,10 @@ final class HoleDrilling {
         return true;
     }
 
-
     /**
      * Fanuc's words (G83, G84 on the spindle axis): C/H (C-axis positioning of live tooling), W or
-     * G91 Z (the bottom from the R point) and K other than 1 are not supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
+     * G91 Z (the bottom from the R point) and repeats K/L stepped along X or not a whole number are not
+     * supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
      * feed); P the dwell at the bottom, zero or more. False after the first error.
      */
     private boolean checkFanuc(CycleWords words, GRole role, String label) {
