@@ -456,6 +456,13 @@ public enum Code {
     E340_SIM_THREAD_PHASE(340),
     /** A thread pass's run-in is shorter than the axis needs to reach the geared speed. */
     E260_THREAD_RUN_IN(260),
+    /**
+     * (warning) A Denford / MIRAC set-up line ({@code [BILLET X.. Z..}, {@code [TOOLDEF ..}): the
+     * training control's own word for its simulation, read as a comment; not a block of the control.
+     */
+    E261_DENFORD_SETUP_LINE(261),
+    /** G43 / G44 / G49 (tool length compensation, machining-centre codes) on a lathe control that has none. */
+    E262_MILL_TOOL_LENGTH_G(262),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
     /**
