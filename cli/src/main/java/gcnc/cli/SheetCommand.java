@@ -52,10 +52,12 @@ final class SheetCommand extends RunCommand {
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         SimOptions options;
         try {
-            options = stock.options(setup.profile()).withPath();
+            options = stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, setup.reporter().phrases())
+                    .withPath();
         } catch (StockOptions.BadStock e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
+        stock.unitsNote().ifPresent(err::println);
         Reporter reporter = setup.reporter();
         if (SourceFiles.isStdin(file)) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "sheet reads a program file, not standard input");
