@@ -60,8 +60,12 @@ public class SimulateTask extends GcncTask {
         Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
         Files.createDirectories(svgFile.getParent());
         gcnc.output.AtomicOutput.write(svgFile, gcnc.output.AtomicOutput.Name.DERIVED, w -> w.write(svg.toString()));
-        SetupSheet sheet = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
+        SetupSheet of = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
                 findings.messages());
+        SetupSheet sheet;
+        try (Reader in = program.open()) {
+            sheet = of.withClamps(session, in);
+        }
         gcnc.output.AtomicOutput.write(getOutputDir().toPath().resolve(program.withExtension(".html")),
                 gcnc.output.AtomicOutput.Name.DERIVED, w -> sheet.write(svg.toString(), w));
         summary.add(program.shown() + ": " + sheet.summary());
