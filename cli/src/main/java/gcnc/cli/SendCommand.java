@@ -176,10 +176,11 @@ final class SendCommand implements Callable<Integer> {
         EventSink events = json ? new JsonEvents(out) : new StatusText(out, err, name, quiet, System.console() != null, reporter.phrases());
         Optional<SimOptions> sim;
         try {
-            sim = Optional.of(stock.options(setup.profile()));
+            sim = Optional.of(stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, reporter.phrases()));
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
+        stock.unitsNote().ifPresent(err::println);
         // 0. a bus card (ISA, PCI) answers on the computer's bus only: refused before anything is compiled
         // or opened (the profile still compiles for it with gcnc compile)
         gcnc.machine.GalilModel busModel = setup.profile().galilModel();
