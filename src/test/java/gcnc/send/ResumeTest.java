@@ -237,10 +237,9 @@ class ResumeTest {
 
     static Compiled compiled(String text) throws Exception {
         Session session = Session.open(Session.Options.defaults().withMachine("haas"));
-        List<gcnc.dmc.Instruction> out = new ArrayList<>();
-        session.compile(new StringReader(text), java.util.Optional.empty(), false, out::add);
-        return new Compiled(DmcProgram.of(out, session.profile()),
-                BlockTable.of(new StringReader(text), session.tables(), session.profile(), java.util.Optional.empty()));
+        CompiledRun seen = new CompiledRun();
+        session.compile(new StringReader(text), java.util.Optional.of(session.simulation()), false, line -> { }, seen);
+        return new Compiled(seen.program(session.profile()), seen.blocks(text));
     }
 
     @Test

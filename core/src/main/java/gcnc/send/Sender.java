@@ -74,7 +74,7 @@ public final class Sender {
         try {
             Piece piece = preflight(c, link.name());
             events.accept(new Event.Started(form.name(), piece.lines().size(), countBlocks(piece),
-                    program.totalSeconds() - program.secondsBefore(firstMotion(piece)), options.dryRun(),
+                    program.totalSeconds() - program.secondsBefore(firstMotion()), options.dryRun(),
                     options.step(), options.resumeAt() == null ? null : options.resumeAt().toString()));
             form.run(piece, c, progress, operator, options.step(), options.dryRun());
             events.accept(new Event.Finished(progress.seconds(), options.dryRun()));
@@ -130,16 +130,10 @@ public final class Sender {
         return lines.size();
     }
 
-    private int firstMotion(Piece piece) {
-        if (options.resumeAt() != null) {
-            return Math.max(0, program.firstLineOf(options.resumeAt().line()));
-        }
-        for (int o : piece.origin()) {
-            if (program.sourceLine(o) > 0) {
-                return o;
-            }
-        }
-        return 0;
+    private int firstMotion() {
+        // a whole run: all of the program's time, header and all (its total is the compile's cycle time);
+        // a resume: from the block it resumes at
+        return options.resumeAt() == null ? 0 : Math.max(0, program.firstLineOf(options.resumeAt().line()));
     }
 
     /** Pre-flight; returns what to download (the program, or the resume program built from where the axes are). */
