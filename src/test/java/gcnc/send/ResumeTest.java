@@ -206,6 +206,52 @@ class ResumeTest {
         assertEquals(List.of("VS 1000", "VP 0,700 <800", "VE", "BGS", "AV 200", "OF ,,4.0000", "AMS"), l.subList(vs, vs + 7));
     }
 
+    /**
+     * Line 7's segment refused while the sequence was still being queued (issue 33): nothing of the
+     * sequence moved, the axes stand at its start, so the resume point is its first block (line 6), not
+     * the segment the host had reached; once the axes have moved along it, the executing segment's block.
+     */
+    @Test
+    void aSequenceOfWhichNothingMovedResumesAtItsFirstBlock() throws Exception {
+        DmcProgram p = blended();
+        Progress progress = new Progress(p, BlockTable.none(), e -> { });
+        progress.at(BLENDED.indexOf("VP 1000,1000 <800"), home(p), new Operator());
+        assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "the axes at the sequence's start");
+        progress.axes(plus(home(p), 1000, 200));
+        assertEquals(new ResumePoint(7, 0), progress.resumePoint(), "the axes on line 7's segment");
+        // and that point resumes from where the axes are: the sequence whole
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
+        List<String> l = texts(r);
+        assertEquals(List.of("VS 1000", "VP 1000,0 <1000 >500", "VP 1000,1000 <800", "VE", "BGS"),
+                l.subList(l.indexOf("VS 1000"), l.indexOf("VS 1000") + 5));
+    }
+
+    /**
+     * A controller that ran on after the link dropped (a downloaded program goes on without its host)
+     * is resumed from where its axes are read again: at the end of the sequence it finished, and the
+     * report says what it did without the host.
+     */
+    @Test
+    void aControllerThatRanOnIsResumedWhereItStandsAndTheReportSaysWhatItDid() throws Exception {
+        Compiled c = compiled(TURN);
+        // the host last saw line 7; the controller went on and finished the corner of line 9 (its end: X46 Z-33)
+        Resume resume = new Resume(c.program(), c.blocks(), 3);
+        Piece r = resume.plan(new ResumePoint(7, 0), c.galil(9, 46, -33));
+        assertEquals("the controller finished the sequence's blocks: line 7 to 9", resume.ranOn().orElse(null));
+        // what is resumed starts after line 9: line 10's move out, never the contour again
+        int first = -1;
+        for (int i = 0; i < r.commands().size() && first < 0; i++) {
+            if (gcnc.send.DmcProgram.isSegment(r.commands().get(i))) {
+                first = c.program().sourceLine(r.originOf(i));
+            }
+        }
+        assertEquals(10, first, texts(r).toString());
+        // at the point itself nothing is said
+        Resume still = new Resume(c.program(), c.blocks(), 3);
+        still.plan(new ResumePoint(7, 0), c.program().motionsOf(7).get(0).start());
+        assertTrue(still.ranOn().isEmpty());
+    }
+
     @Test
     void resumePointsAreWrittenNOrNK() {
         assertEquals(new ResumePoint(37, 0), ResumePoint.parse("37"));

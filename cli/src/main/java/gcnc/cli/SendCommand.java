@@ -211,6 +211,8 @@ final class SendCommand implements Callable<Integer> {
             // stops at its end there (docs/run.md, "Step mode")
             Compiler.Result r = step ? session.compileExactStop(new StringReader(text), sim, written, seen)
                     : session.compile(new StringReader(text), sim, false, written, seen);
+            // a program form asked for that does not fit is E238, a finding of the compile's
+            chosen = r.ok() ? outputs.finish(r.diagnostics()) : null;
             if (!r.ok()) {
                 if (json) {
                     for (Diagnostic d : r.diagnostics().sorted()) {
@@ -224,7 +226,6 @@ final class SendCommand implements Callable<Integer> {
                         reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
-            chosen = outputs.finish(r.diagnostics()); // a program form asked for that does not fit is E238
             program = seen.program(setup.profile());
             // 2. the checker's state at each block, for the status line
             blocks = seen.blocks(text);

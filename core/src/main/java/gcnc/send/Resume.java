@@ -52,7 +52,27 @@ public final class Resume {
         this.tolerance = tolerance;
     }
 
+    /** What the controller did without the host, as the axes show it (null: nothing to say). */
+    private String ranOn;
+
+    /**
+     * What the last {@link #plan} found the controller did without the host, for the run's report: "the
+     * controller finished the sequence: line 300 to 448" (a link that dropped while it ran on); empty when
+     * the axes were where the resume point is.
+     */
+    public java.util.Optional<String> ranOn() {
+        return java.util.Optional.ofNullable(ranOn);
+    }
+
+    /** "line A to B" (or "line A") of a sequence's blocks. */
+    private String lines(Sequence q) {
+        int a = program.sourceLine(q.isThreadPass() ? q.first() : q.pieces().get(0).line());
+        int b = program.sourceLine(q.isThreadPass() ? q.first() : q.pieces().get(q.pieces().size() - 1).line());
+        return a == b ? "line " + a : "line " + a + " to " + b;
+    }
+
     public Piece plan(ResumePoint at, double[] axes) throws RunFault {
+        ranOn = null;
         int first = program.firstLineOf(at.line());
         if (first < 0) {
             throw fault(at, "line " + at.line() + " has no block that reached the controller (a comment, an empty line"
@@ -79,6 +99,7 @@ public final class Resume {
             return build(from, from, null);
         }
         if (near(axes, s.end())) {
+            ranOn = "the controller finished the sequence: " + lines(s);
             return build(s.last() + 1, s.last() + 1, null);
         }
         if (s.isThreadPass()) {
@@ -89,10 +110,30 @@ public final class Resume {
         for (int k = m.from(); k < s.pieces().size(); k++) {
             Sequence.Piece p = s.pieces().get(k);
             if (near(axes, p.from())) {
+                if (k > m.from()) {
+                    ranOn = "the controller finished the sequence's blocks: line " + at.line() + " to "
+                            + program.sourceLine(s.pieces().get(k - 1).line());
+                }
                 return build(s.last() + 1, s.first(), replan(s, k, false, axes));
             }
             if (!near(axes, p.to()) && onPiece(p, axes)) {
+                if (k > m.from()) {
+                    ranOn = "the controller ran on along the sequence into line " + program.sourceLine(p.line());
+                }
                 return build(s.last() + 1, s.first(), replan(s, k, true, axes));
+            }
+        }
+        // a controller that ran on without the host (a dropped link) stands at the end of a later sequence:
+        // the first such end after the point (were it a later one with the same end, the passes between
+        // are run again over material already cut: the program's own path, never a move through the part)
+        List<Sequence> all = program.sequences();
+        for (int q = all.indexOf(s) + 1; q < all.size(); q++) {
+            Sequence later = all.get(q);
+            if (near(axes, later.end())) {
+                int last = program.sourceLine(later.isThreadPass() ? later.first()
+                        : later.pieces().get(later.pieces().size() - 1).line());
+                ranOn = "the controller ran on without the host and finished the sequences: line " + at.line() + " to " + last;
+                return build(later.last() + 1, later.last() + 1, null);
             }
         }
         throw fault(at, "the axes are at " + where.at(at.line(), axes) + ", not on the path of line " + at.line() + " ("

@@ -67,7 +67,7 @@ public final class Sender {
 
     /** Runs the program over {@code link} (which it closes); returns the exit status. */
     public int run(Link link, int timeoutMs) {
-        Progress progress = new Progress(program, blocks, events);
+        Progress progress = new Progress(program, blocks, events, tolerance());
         GalilClient client = new GalilClient(link, timeoutMs, m -> events.accept(new Event.Message(m)));
         Controller c = new Controller(client, profile, program.plane());
         // closed in finally, not by try-with-resources: the catches below still talk to the controller
@@ -80,11 +80,15 @@ public final class Sender {
             events.accept(new Event.Finished(progress.seconds(), options.dryRun()));
             return RAN;
         } catch (RunFault f) {
+            if (f.moved()) {
+                readAxes(c, progress); // where the stop left them: the resume point is where they are
+            }
             return stopped(f, progress);
         } catch (GalilClient.Rejected r) {
             RunFault f = c.refused(r.command(), progress.executingLine(), progress.hasStarted());
             if (progress.hasStarted()) {
                 c.stopAll();
+                readAxes(c, progress);
             }
             return stopped(f, progress);
         } catch (LinkFault lf) {
@@ -95,8 +99,7 @@ public final class Sender {
             String done = block(progress.completedLine());
             String now = block(progress.executingLine());
             RunFault f = switch (lf.kind()) {
-                case DROPPED -> new RunFault(Code.E821_CONNECTION_DROPPED, progress.executingLine(), progress.hasStarted(),
-                        lf.detail(), done, now);
+                case DROPPED -> dropped(progress, lf.detail());
                 case TIMEOUT -> new RunFault(Code.E822_NO_REPLY, progress.executingLine(), progress.hasStarted(),
                         "'" + GalilClient.printable(lf.command()) + "'", lf.detail(), done, now);
                 case GARBAGE -> new RunFault(Code.E823_GARBAGE, progress.executingLine(), progress.hasStarted(),
@@ -104,8 +107,7 @@ public final class Sender {
             };
             return stopped(f, progress);
         } catch (IOException e) {
-            return stopped(new RunFault(Code.E821_CONNECTION_DROPPED, progress.executingLine(), progress.hasStarted(),
-                    String.valueOf(e.getMessage()), block(progress.completedLine()), block(progress.executingLine())), progress);
+            return stopped(dropped(progress, String.valueOf(e.getMessage())), progress);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             c.stopAll();
@@ -113,6 +115,25 @@ public final class Sender {
                     progress.executingLine()), progress);
         } finally {
             client.close();
+        }
+    }
+
+    /**
+     * A link that dropped: before the program started nothing moved (E821); after, the controller may run
+     * on without its host, so the fault says so and never that it stopped (E851).
+     */
+    private static RunFault dropped(Progress progress, String detail) {
+        return new RunFault(progress.hasStarted() ? Code.E851_LINK_DROPPED_RUNNING : Code.E821_CONNECTION_DROPPED,
+                progress.executingLine(), progress.hasStarted(), detail, block(progress.completedLine()),
+                block(progress.executingLine()));
+    }
+
+    /** The axes read after a stop, for the resume point; a link that no longer answers leaves the last poll's. */
+    private static void readAxes(Controller c, Progress progress) {
+        try {
+            progress.axes(c.position());
+        } catch (IOException | RuntimeException e) {
+            // the last poll's position stands
         }
     }
 
@@ -153,8 +174,16 @@ public final class Sender {
         }
         int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
-        Piece piece = options.resumeAt() == null ? Piece.whole(program)
-                : new Resume(program, blocks, tolerance()).plan(options.resumeAt(), f.position());
+        Piece piece;
+        if (options.resumeAt() == null) {
+            piece = Piece.whole(program);
+        } else {
+            // the position read again on this connection (the preflight's TP, after _XQ0 and _BGS said it is
+            // at rest): a controller that ran on after a dropped link is resumed from where it really is
+            Resume resume = new Resume(program, blocks, tolerance());
+            piece = resume.plan(options.resumeAt(), f.position());
+            resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
+        }
         int needLines = form.linesNeeded(piece, program, options.step());
         int needLabels = program.labels();
         List<String> vars = program.variables();
