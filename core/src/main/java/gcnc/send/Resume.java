@@ -52,6 +52,18 @@ public final class Resume {
         this.tolerance = tolerance;
     }
 
+    /** The state the last {@link #plan} sets before it moves: the tool, the output bits, the spindle's speed. */
+    private List<Command> restored = List.of();
+
+    /**
+     * The state the last {@link #plan} restores before its first motion, as the program had set it at
+     * the resume point ({@code TOOL=}, each output bit the program switched, the spindle's {@code OF} or
+     * {@code AO}): what {@link ResumeState} holds against the controller.
+     */
+    public List<Command> restored() {
+        return List.copyOf(restored);
+    }
+
     /** What the controller did without the host, as the axes show it (null: nothing to say). */
     private String ranOn;
 
@@ -258,8 +270,8 @@ public final class Resume {
         }
         for (int i : state) {
             Command c = program.command(i);
-            if (c instanceof Command.Offset) {
-                of = i;
+            if (c instanceof Command.Offset || c instanceof Command.AnalogOut) {
+                of = i; // the spindle's speed: OF of its channel, or AO of an analog drive
             } else if (c instanceof Command.ToolNumber) {
                 tool = i;
             } else if (c instanceof Command.Output o) {
@@ -268,18 +280,24 @@ public final class Resume {
                 variables.put(v.name(), i);
             }
         }
+        restored = new ArrayList<>();
         if (tool >= 0) {
             b.add(program.command(tool), tool);
+            restored.add(program.command(tool));
         }
         for (int v : variables.values()) {
             b.add(program.command(v), v);
         }
         for (int bit : bits.values()) {
             b.add(program.command(bit), bit);
+            restored.add(program.command(bit));
         }
         if (of >= 0) {
-            b.add(program.command(of), of);
-            if (((Command.Offset) program.command(of)).volts().value() != 0) {
+            Command speed = program.command(of);
+            b.add(speed, of);
+            restored.add(speed);
+            double volts = speed instanceof Command.Offset o ? o.volts().value() : ((Command.AnalogOut) speed).volts().value();
+            if (volts != 0) {
                 b.add(new Command.Wait(2000), of);
             }
         }

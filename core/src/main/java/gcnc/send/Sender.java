@@ -183,6 +183,11 @@ public final class Sender {
             Resume resume = new Resume(program, blocks, tolerance());
             piece = resume.plan(options.resumeAt(), f.position());
             resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
+            // what the controller holds against what the program needs there, and what the resume changes
+            int line = options.resumeAt().line();
+            for (String said : ResumeState.changes(c, profile, resume.restored(), line, blocks.at(line))) {
+                events.accept(new Event.Message(said));
+            }
         }
         int needLines = form.linesNeeded(piece, program, options.step());
         int needLabels = program.labels();
