@@ -47,26 +47,45 @@ class ResumeProofTest {
         return String.join("\n", l);
     }
 
+    /** The bytes of each form's DMC and stream: what the host sends before the contour moves. */
+    static final java.util.Map<String, Long> SENT = new java.util.HashMap<>();
+    /** Each form's uninterrupted path, run once for the class. */
+    static final java.util.Map<String, List<String>> WHOLE = new java.util.HashMap<>();
+
     /** {@link #contour} run to its end without a stop in {@code form}: the segment ends a resumed run must repeat. */
-    static List<String> uninterrupted(String form) throws Exception {
+    static synchronized List<String> uninterrupted(String form) throws Exception {
+        if (WHOLE.containsKey(form)) {
+            return WHOLE.get(form);
+        }
         Path p = part(contour());
+        long sent = 0;
         Path trace = p.resolveSibling("whole.trace");
         try (VirtualController vc = traced(RunOnControllerTest.FAST, model("DMC-4040"), trace)) {
             homed(vc);
             RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--form", form);
             assertEquals(0, r.status(), r.all());
         }
-        return path(trace);
+        for (String f : List.of("part.dmc", "part.stream")) {
+            if (Files.exists(p.resolveSibling(f))) {
+                sent += Files.size(p.resolveSibling(f));
+            }
+        }
+        SENT.put(form, sent);
+        WHOLE.put(form, List.copyOf(path(trace)));
+        return WHOLE.get(form);
     }
 
     @ParameterizedTest(name = "{0} in the {1} form")
-    @CsvSource({"limit-at=100, program", "stall=100, program", "reject=60, stream", "disconnect-after=4000, stream"})
+    @CsvSource({"limit-at=100, program", "stall=100, program", "reject=150, stream", "disconnect-after=4000, stream",
+            "disconnect-after-begun, stream"})
     void aFaultInTheMiddleOfALongContourResumesOnTheUninterruptedPath(String fault, String form) throws Exception {
         List<String> whole = uninterrupted(form);
         assertTrue(whole.size() > CHORDS, "the contour's chords are executed: " + whole.size());
         Path p = part(contour());
         Path stopped = Files.createTempDirectory("gcnc-trace").resolve("stopped.trace");
-        try (VirtualController vc = traced(RunOnControllerTest.FAST, model("DMC-4040"), stopped, fault)) {
+        // after its BGS: the resident program and every segment sent, and some polls while it moves
+        String given = fault.equals("disconnect-after-begun") ? "disconnect-after=" + (SENT.get(form) + 500) : fault;
+        try (VirtualController vc = traced(RunOnControllerTest.FAST, model("DMC-4040"), stopped, given)) {
             homed(vc);
             RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc), "--form", form,
                     "--poll", "20", "--stall", "1");
@@ -78,9 +97,17 @@ class ResumeProofTest {
                 vc.controller().settle(600);
             }
             String resume = resumeCommand(r.out());
+            // in the contour, lines 7 (its first block, where a sequence of which nothing moved resumes) to 207
+            int at = Integer.parseInt(resume.replaceAll(".*--resume-at (\\d+).*", "$1"));
+            assertTrue(at >= 7 && at <= 7 + CHORDS, resume);
             RunOnControllerTest.Run again = gcnc("", resumeArgs(resume));
             assertEquals(0, again.status(), again.all());
             assertFalse(again.all().contains("E827"), again.all());
+            if (fault.equals("disconnect-after-begun")) {
+                // the controller ran out its buffer without the host: the resume says what it did
+                assertTrue(again.out().contains("the controller finished the sequence") || again.out().contains(
+                        "the controller ran on"), again.out());
+            }
         }
         assertEquals(whole, path(stopped));
     }
