@@ -252,6 +252,38 @@ class ResumeTest {
         assertTrue(still.ranOn().isEmpty());
     }
 
+    /**
+     * Under G96 the spindle is restored as the surface speed, not as the r/min last set: resumed part
+     * way out along line 9's face at X46, S200 m/min gives 1000 x 200 / (pi x 46) = 1383.9 r/min, on
+     * haas's drive (OF of C) 1383.9 / 410 = 3.3755 V (the program's last speed was set for X40).
+     */
+    @Test
+    void underG96TheSpindleIsRestoredAsTheSurfaceSpeedWhereTheAxesAre() throws Exception {
+        String css = String.join("\n", "O1005", "G21 G99", "G50 S2500", "T0101", "G96 S200 M03", "G00 X42. Z2.",
+                "G01 X40. F0.2", "G01 Z-30.", "G01 X50.", "G00 X60. Z5.", "M05", "M30", "");
+        Compiled c = compiled(css);
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        Resume resume = new Resume(c.program(), c.blocks(), 3).spindle(haas);
+        resume.plan(new ResumePoint(9, 0), c.galil(9, 46, -30));
+        double volts = Double.NaN;
+        for (gcnc.dmc.Command r : resume.restored()) {
+            if (r instanceof gcnc.dmc.Command.Offset o) {
+                volts = o.volts().value();
+            }
+        }
+        assertEquals(1000 * 200 / (Math.PI * 46) / 410, volts, 0.0001, resume.restored().toString());
+        // without the machine's spindle the resume restores the r/min last set (not the surface speed's here)
+        Resume plain = new Resume(c.program(), c.blocks(), 3);
+        plain.plan(new ResumePoint(9, 0), c.galil(9, 46, -30));
+        double last = Double.NaN;
+        for (gcnc.dmc.Command r : plain.restored()) {
+            if (r instanceof gcnc.dmc.Command.Offset o) {
+                last = o.volts().value();
+            }
+        }
+        assertTrue(Math.abs(last - volts) > 0.1, last + " against " + volts);
+    }
+
     @Test
     void resumePointsAreWrittenNOrNK() {
         assertEquals(new ResumePoint(37, 0), ResumePoint.parse("37"));

@@ -25,13 +25,16 @@ public final class BlockTable {
      * @param inch       G20 in force
      * @param rpm        spindle speed in force (r/min), NaN before any
      * @param css        G96 constant surface speed in force
+     * @param surfaceSpeed G96 S (m/min, ft/min under G20), NaN before any
+     * @param rpmClamp   G50 S, the highest speed G96 may ask, NaN when none
      * @param spindle    3, 4 or 5 (M03, M04, M05), -1 before any
      * @param tool       tool number in force
      * @param toolOffset tool offset number in force
      * @param workOffset 54..59
      */
     public record Block(ProgramFrame frame, String number, double feed, boolean perRev, boolean inch, double rpm,
-                        boolean css, int spindle, int tool, int toolOffset, int workOffset) {
+                        boolean css, double surfaceSpeed, double rpmClamp, int spindle, int tool, int toolOffset,
+                        int workOffset) {
         /** Machine counts (lathe X radius, Z) in the block's program coordinates (X as written: a diameter where the machine takes one). */
         public double[] program(double[] machine) {
             if (frame == null || frame.perX() == 0 || frame.perZ() == 0) {
@@ -103,7 +106,7 @@ public final class BlockTable {
                 return; // a called program's line: its own file's numbering
             }
             out.put(raw.line(), new Block(frame, frame == null ? null : frame.number(), s.feed(), s.feedPerRev(),
-                    s.units() == Units.INCH, s.rpm(), s.css(), s.spindle(), s.tool(), s.toolOffset(), s.workOffset()));
+                    s.units() == Units.INCH, s.rpm(), s.css(), s.surfaceSpeed(), s.rpmClamp(), s.spindle(), s.tool(), s.toolOffset(), s.workOffset()));
         }
 
         /** The table of the blocks seen, with the comments of {@code text} (the program as the compile read it). */

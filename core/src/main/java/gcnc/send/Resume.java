@@ -34,6 +34,7 @@ import java.util.TreeMap;
  */
 public final class Resume {
     private final DmcProgram program;
+    private final BlockTable blocks;
     private final PositionText where;
     private final double tolerance;
 
@@ -48,6 +49,7 @@ public final class Resume {
      */
     public Resume(DmcProgram program, BlockTable blocks, double tolerance) {
         this.program = program;
+        this.blocks = blocks;
         this.where = new PositionText(program, blocks);
         this.tolerance = tolerance;
     }
@@ -83,8 +85,14 @@ public final class Resume {
         return a == b ? "line " + a : "line " + a + " to " + b;
     }
 
+    /** The resume point and the axes of the last {@link #plan}: G96's speed is the surface speed's there. */
+    private ResumePoint point;
+    private double[] axes;
+
     public Piece plan(ResumePoint at, double[] axes) throws RunFault {
         ranOn = null;
+        point = at;
+        this.axes = axes.clone();
         int first = program.firstLineOf(at.line());
         if (first < 0) {
             throw fault(at, "line " + at.line() + " has no block that reached the controller (a comment, an empty line"
@@ -293,7 +301,7 @@ public final class Resume {
             restored.add(program.command(bit));
         }
         if (of >= 0) {
-            Command speed = program.command(of);
+            Command speed = surfaceSpeed(program.command(of));
             b.add(speed, of);
             restored.add(speed);
             double volts = speed instanceof Command.Offset o ? o.volts().value() : ((Command.AnalogOut) speed).volts().value();
@@ -311,6 +319,42 @@ public final class Resume {
             b.add(program.command(i), i);
         }
         return b.build(program.lineWidth());
+    }
+
+    /**
+     * The spindle's speed command to restore: under G96 at the resume point, the surface speed's r/min
+     * where the axes are (rpm = 1000 V / (pi D), V in m/min and D in mm; 304.8 V under G20; clamped by
+     * G50 S and the machine's top speed, as the checker's SpindleSpeed), in the direction of the
+     * program's last one; else the program's last one as it was (G97's r/min).
+     */
+    private Command surfaceSpeed(Command last) {
+        BlockTable.Block b = point == null ? null : blocks.at(point.line());
+        double[] p = b == null || !b.css() || Double.isNaN(b.surfaceSpeed()) ? null
+                : b.program(program.plane().machine(axes));
+        double volts = last instanceof Command.Offset o ? o.volts().value() : ((Command.AnalogOut) last).volts().value();
+        if (p == null || volts == 0 || rpmPerVolt <= 0) {
+            return last;
+        }
+        double diameterMm = Math.abs(p[0]) * (diameterX ? 1 : 2) * (b.inch() ? 25.4 : 1);
+        double rpm = diameterMm > 0 ? (b.inch() ? 304.8 : 1000) * b.surfaceSpeed() / (Math.PI * diameterMm)
+                : Double.POSITIVE_INFINITY;
+        rpm = Math.min(rpm, Double.isNaN(b.rpmClamp()) ? maxRpm : Math.min(b.rpmClamp(), maxRpm));
+        gcnc.dmc.Fixed v = gcnc.dmc.Fixed.fourDecimals(Math.signum(volts) * rpm / rpmPerVolt);
+        return last instanceof Command.Offset o ? new Command.Offset(o.channel(), v)
+                : new Command.AnalogOut(((Command.AnalogOut) last).output(), v);
+    }
+
+    /** The machine's spindle: r/min per volt, top speed, and whether X is programmed as a diameter (G96's speed). */
+    private double rpmPerVolt;
+    private double maxRpm = Double.POSITIVE_INFINITY;
+    private boolean diameterX = true;
+
+    /** This resume with {@code profile}'s spindle, so that G96 is restored as its surface speed (without it: as the r/min last set). */
+    public Resume spindle(gcnc.machine.MachineProfile profile) {
+        rpmPerVolt = profile.rpmPerVolt();
+        maxRpm = profile.maxRpm();
+        diameterX = profile.diameterX();
+        return this;
     }
 
     /**

@@ -15,7 +15,8 @@ import java.util.TreeMap;
  * direction, the coolant, the chuck —, the spindle's speed), read from the controller ({@code MG TOOL},
  * {@code MG @OUT[n]}, {@code MG _OFc}) and said line by line: what the resume changes, and what it
  * finds as the program left it. A value the controller cannot say (a variable it does not hold, an
- * analog output it gives no operand for) is said as set, not compared. The work offset and the feed
+ * analog output it gives no operand for) is said as set, not compared. Under G96 the speed restored is
+ * the surface speed's r/min where the axes are ({@link Resume#spindle}), not the r/min last set. The work offset and the feed
  * mode need nothing on the controller: the compile resolved them into every later line's counts
  * and speeds (docs/run.md, "Resume").
  */
@@ -75,10 +76,15 @@ final class ResumeState {
     /** The spindle's speed as the program writes it: r/min (and G96's surface speed when it is in force). */
     private static String spindle(MachineProfile profile, double volts, BlockTable.Block at, int line) {
         String rpm = String.format(Locale.ROOT, "spindle %.0f r/min (%.4f V)", Math.abs(volts) * profile.rpmPerVolt(), volts);
-        if (at != null && at.css()) {
-            rpm += "; G96 is in force at line " + line + ": the surface speed's r/min where the program last set it";
+        if (at != null && at.css() && !Double.isNaN(at.surfaceSpeed())) {
+            rpm += String.format(Locale.ROOT, "; G96 S%s %s at line %d: the surface speed's r/min where the axes are",
+                    trim(at.surfaceSpeed()), at.inch() ? "ft/min" : "m/min", line);
         }
         return rpm;
+    }
+
+    private static String trim(double v) {
+        return java.math.BigDecimal.valueOf(Math.rint(v * 1000) / 1000).stripTrailingZeros().toPlainString();
     }
 
     /** " (M08/M09)": the M codes of the profile that switch bit {@code bit}, "" when none names it. */

@@ -180,7 +180,7 @@ public final class Sender {
         } else {
             // the position read again on this connection (the preflight's TP, after _XQ0 and _BGS said it is
             // at rest): a controller that ran on after a dropped link is resumed from where it really is
-            Resume resume = new Resume(program, blocks, tolerance());
+            Resume resume = new Resume(program, blocks, tolerance()).spindle(profile);
             piece = resume.plan(options.resumeAt(), f.position());
             resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
             // what the controller holds against what the program needs there, and what the resume changes
