@@ -806,6 +806,11 @@ public enum Code {
     E836_PROBE_CONTRADICTION(836),
     /** Profile: stop.cycle_start is not IN n. */
     E850_CYCLE_START_INPUT(850),
+    /**
+     * Sender: the link dropped after the program started: the controller may run on without the host
+     * (docs/run.md, "Resume"); E821 is a link that dropped before anything moved.
+     */
+    E851_LINK_DROPPED_RUNNING(851),
     /** Simulate (note): the DMC is a stream form's resident program: its motion is in the stream beside it. */
     E864_RESIDENT_WITHOUT_STREAM(864),
     /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */
