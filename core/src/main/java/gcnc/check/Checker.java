@@ -359,9 +359,9 @@ public final class Checker {
         return new Dry(r, d.next.build());
     }
 
-    /** The chamfer or corner word of a contour block read ahead ({@link CornerInsertion#inContour}), or null. */
-    Word cornerInContour(RawBlock b, ModalState from) {
-        return corners.inContour(b, from);
+    /** A cycle's contour with its chamfers and corners made, followed from {@code from} ({@link CornerInsertion#inContour}). */
+    List<RawBlock> cornersInContour(List<RawBlock> blocks, ModalState from) {
+        return corners.inContour(blocks, from);
     }
 
     /** Reports findings of a block checked outside the flow (a contour read ahead), remembering them. */

@@ -44,11 +44,13 @@ final class CornerInsertion {
 
     private final Checker host;
     private final CornerWords words;
+    private final AngleLine angles;
     private Held held;
 
     CornerInsertion(Checker host) {
         this.host = host;
         this.words = new CornerWords(host);
+        this.angles = new AngleLine(host);
     }
 
     /** The same insertion for the other position of the block delete switch (Checker.fork). */
@@ -60,15 +62,107 @@ final class CornerInsertion {
     }
 
     /**
-     * The chamfer or corner word of a contour block read ahead by a cycle (G71, G72, G73), or
-     * null: such a corner is not followed yet (E614, reported by the caller).
+     * The contour of a cycle (G71, G72, G73) with its corners made, followed from {@code start}
+     * as the control follows it: each ,A line given its end, each chamfer or corner block
+     * shortened, the chamfer line or arc after it, and the next move from the corner's end
+     * (written with the G01 in force again, so that the arc's G02/G03 does not carry on when G70
+     * runs the blocks). A corner that cannot be made is reported as in the program's flow (E607,
+     * E609-E613, E210, E615) and its block goes into the contour without it. The blocks gcnc
+     * cannot follow are passed on as they are: the contour reader reports them.
      */
-    Word inContour(RawBlock b, ModalState from) {
-        if (b.malformed() || b.macro() != null || !words.mayAsk(b)) {
+    List<RawBlock> inContour(List<RawBlock> blocks, ModalState start) {
+        List<RawBlock> in = new ArrayList<>(blocks);
+        List<RawBlock> made = new ArrayList<>(blocks.size() + 4);
+        ModalState s = start;
+        for (int i = 0; i < in.size(); i++) {
+            RawBlock b = in.get(i);
+            if (b.malformed() || b.macro() != null) {
+                made.add(b);
+                continue;
+            }
+            if (angles.asks(b)) {
+                b = angles.resolve(b, s, host.out());
+            }
+            List<Word> rest = new ArrayList<>(b.words().size());
+            Request r = words.mayAsk(b) ? words.read(b, s, rest, host.out()) : null;
+            RawBlock stripped = r == null ? b : b.called(rest, b.last(), b.depth());
+            Checker.Dry dry = host.peek(stripped, s, new Diagnostics());
+            Made m = r == null || r.word() == null || dry == null ? null : contourCorner(stripped, r, dry, in, i);
+            if (m == null) {
+                made.add(stripped);
+                s = dry == null ? s : dry.next();
+                continue;
+            }
+            made.add(m.shortened);
+            made.add(m.insert);
+            in.set(i + 1, m.next);
+            Checker.Dry cut = host.peek(m.shortened, s, new Diagnostics());
+            Checker.Dry round = cut == null ? null : host.peek(m.insert, cut.next(), new Diagnostics());
+            s = round == null ? dry.next() : round.next();
+        }
+        return made;
+    }
+
+    /** The corner of contour block {@code at} (run as {@code dry}) with the block after it, or null after its error. */
+    private Made contourCorner(RawBlock b, Request r, Checker.Dry dry, List<RawBlock> in, int at) {
+        Motion.Linear line = feedLine(dry.block());
+        if (line == null || host.startsCycle(b)) {
+            host.out().error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return null;
         }
-        Request r = words.read(b, from, new ArrayList<>(b.words().size()), new Diagnostics());
-        return r == null ? null : r.word();
+        if (at + 1 >= in.size()) {
+            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), b.line());
+            return null;
+        }
+        RawBlock next = in.get(at + 1);
+        if (next.malformed() || next.macro() != null) {
+            return null;
+        }
+        if (angles.asks(next)) {
+            next = angles.resolve(next, dry.next(), host.out());
+            in.set(at + 1, next);
+        }
+        List<Word> rest = new ArrayList<>(next.words().size());
+        RawBlock plain = !words.mayAsk(next) || words.read(next, dry.next(), rest, new Diagnostics()) == null ? next
+                : next.called(rest, next.last(), next.depth());
+        Checker.Dry after = host.peek(plain, dry.next(), new Diagnostics());
+        if (after == null) {
+            return null; // its own errors are reported when the contour is followed
+        }
+        if (!moves(after.block())) {
+            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), next.line());
+            return null;
+        }
+        Motion.Linear to = feedLine(after.block());
+        if (to == null) {
+            host.out().error(Code.E610_CORNER_NEXT_NOT_G01, r.word().span(), r.name(), next.line());
+            return null;
+        }
+        Made m = make(b, r, line.from(), line.to(), dry.next(), next, to.to(), after.next());
+        if (m == null) {
+            return null;
+        }
+        return new Made(m.shortened, m.insert, withFeed(m.next));
+    }
+
+    /** {@code b} with a G01 first when it has no motion G of its own (after an inserted arc). */
+    private RawBlock withFeed(RawBlock b) {
+        for (Word w : b.words()) {
+            gcnc.machine.GFunction f = w.letter() == Letter.G && !w.number().isEmpty() ? host.functions().g(w.code()) : null;
+            if (f != null && f.role().motion()) {
+                return b;
+            }
+        }
+        String code = String.format("%02d", host.functions().g(gcnc.machine.GRole.LINEAR).code());
+        Word g01 = new Word(Letter.G, code, b.words().isEmpty() ? b.last() : b.words().get(0).span());
+        List<Word> ws = new ArrayList<>(b.words().size() + 1);
+        int at = 0;
+        while (at < b.words().size() && b.words().get(at).letter() == Letter.N) {
+            ws.add(b.words().get(at++));
+        }
+        ws.add(g01);
+        ws.addAll(b.words().subList(at, b.words().size()));
+        return b.called(ws, b.last(), b.depth());
     }
 
     /** The next block of the program's flow: held, released with the corner, or passed on. */
@@ -76,8 +170,12 @@ final class CornerInsertion {
         if (held != null) {
             return next(b);
         }
-        if (b.malformed() || b.macro() != null) {
+        if (b.malformed() || b.macro() != null || host.readingContour() != null) {
+            // a contour block keeps its corner words: the cycle makes its corners ({@link #inContour})
             return host.flowOn(b, isFirst);
+        }
+        if (angles.asks(b)) {
+            b = angles.resolve(b, host.state(), host.out());
         }
         if (!words.mayAsk(b)) {
             return host.flowOn(b, isFirst); // nearly every block: nothing allocated, nothing run twice
@@ -91,10 +189,6 @@ final class CornerInsertion {
         RawBlock stripped = b.called(rest, b.last(), b.depth());
         if (r.word() == null) {
             return host.flowOn(stripped, isFirst); // an error was reported; the block runs without it
-        }
-        if (host.readingContour() != null) {
-            out.error(Code.E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET, r.word().span(), r.name(), host.readingContour());
-            return host.flowOn(stripped, isFirst);
         }
         if (host.startsCycle(stripped)) {
             out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
@@ -124,6 +218,9 @@ final class CornerInsertion {
     /** A block after a held corner block. */
     private List<CheckedBlock> next(RawBlock b) {
         Held h = held;
+        if (!b.malformed() && b.macro() == null && angles.asks(b)) {
+            b = angles.resolve(b, h.afterStill, host.out());
+        }
         if (b.malformed() || b.macro() != null || host.startsCycle(b)) {
             // a block gcnc cannot follow (reported on its own) or a cycle: no G01 to make the corner with
             if (!b.malformed() && b.macro() == null) {
@@ -160,17 +257,43 @@ final class CornerInsertion {
 
     /** Makes the corner between the held move and the next one ending at {@code end}, or reports why not. */
     private List<CheckedBlock> corner(Held h, RawBlock next, Point end, ModalState nextState) {
-        Units u = h.after.units();
+        Made m = make(h.block, h.request, h.from, h.corner, h.after, next, end, nextState);
+        if (m == null) {
+            return release(next);
+        }
+        held = null;
+        List<CheckedBlock> done = new ArrayList<>();
+        done.addAll(host.flowOn(m.shortened, h.isFirst));
+        done.addAll(host.flowOn(m.insert, false));
+        host.keepMotion(h.after.motion());
+        for (RawBlock s : h.still) {
+            done.addAll(host.flowOn(s, false));
+        }
+        done.addAll(flow(m.next, false));
+        return done;
+    }
+
+    /** A corner made: the corner block shortened, the chamfer line or arc, and the next move from its end. */
+    private record Made(RawBlock shortened, RawBlock insert, RawBlock next) {
+    }
+
+    /**
+     * The blocks of the corner {@code r} of {@code block} (from {@code from} to {@code corner}, the
+     * state {@code after} it) with the next move {@code next} ending at {@code end}; null after the
+     * error that says why there is none.
+     */
+    private Made make(RawBlock block, Request r, Point from, Point corner, ModalState after, RawBlock next,
+                      Point end, ModalState nextState) {
+        Units u = after.units();
         double px = host.coordinates().perRadius(u);
         double pz = host.coordinates().perZ(u);
-        Point p0 = new Point(h.from.x() / px, h.from.z() / pz);
-        Point p1 = new Point(h.corner.x() / px, h.corner.z() / pz);
+        Point p0 = new Point(from.x() / px, from.z() / pz);
+        Point p1 = new Point(corner.x() / px, corner.z() / pz);
         Point p2 = new Point(end.x() / px, end.z() / pz);
-        Request r = h.request;
         CornerGeometry.Corner c = r.round() ? CornerGeometry.round(p0, p1, p2, r.size())
                 : CornerGeometry.chamfer(p0, p1, p2, r.size());
         if (c.ok() && r.square() && !squareFits(r, p0, p1, p2, next)) {
-            return release(next);
+            return null;
         }
         if (!c.ok()) {
             if (c.failure() == CornerGeometry.Failure.IN_LINE) {
@@ -178,45 +301,43 @@ final class CornerInsertion {
             } else {
                 host.out().error(Code.E611_CORNER_TOO_LARGE, r.word().span(), r.name(), length(c.taken(), u),
                         length(c.length(), u), c.failure() == CornerGeometry.Failure.FIRST_TOO_SHORT
-                                ? h.block.line() : next.line());
+                                ? block.line() : next.line());
             }
-            return release(next);
+            return null;
         }
-        held = null;
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, h.after), h.block.line(), r.word().span());
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, after), block.line(), r.word().span());
         Point start = counts(c.start(), px, pz);
         Point stop = counts(c.end(), px, pz);
-        List<CheckedBlock> done = new ArrayList<>();
-        done.addAll(host.flowOn(moveTo(h.block, writer, start, h.from), h.isFirst));
         Move.Kind kind = c.centre() == null ? Move.Kind.FEED
                 : c.clockwise() ? Move.Kind.ARC_CW : Move.Kind.ARC_CCW;
         Point centre = c.centre() == null ? null : counts(c.centre(), px, pz);
-        done.addAll(host.flowOn(writer.block(new Move(kind, stop, centre, 0), start), false));
-        host.keepMotion(h.after.motion());
-        for (RawBlock s : h.still) {
-            done.addAll(host.flowOn(s, false));
-        }
+        RawBlock insert = writer.block(new Move(kind, stop, centre, 0), start);
         // the next move now starts where the corner ends: written as increments it is rewritten
         // from there, so that it still ends where the program put it
         RawBlock moved = incremental(next, nextState)
                 ? moveTo(next, new MoveWriter(CycleExpansion.frame(host, nextState), next.line(),
                         next.words().get(0).span()), end, stop)
                 : next;
-        done.addAll(flow(moved, false));
-        return done;
+        return new Made(moveTo(block, writer, start, from), insert, moved);
     }
 
     /** The 90-degree forms: the moves along the two axes, and I for a first move along Z, K along X. */
     private boolean squareFits(Request r, Point p0, Point p1, Point p2, RawBlock next) {
         Letter l = r.word().letter();
         boolean alongZ = CornerGeometry.firstAlongZ(p0, p1);
+        boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
+        if (letters && (l == Letter.C || l == Letter.R) && !CornerGeometry.square(p0, p1, p2)) {
+            // Fanuc's C and R are for a corner between the two axes (PS0054); at another angle the
+            // control wants the direct drawing form with its comma, which gcnc reads
+            host.out().error(Code.E210_CORNER_WANTS_COMMA, r.word().span(), r.name(), next.line(), "," + l.name());
+            return false;
+        }
         if (!CornerGeometry.square(p0, p1, p2) || l == Letter.I && !alongZ || l == Letter.K && alongZ) {
             host.out().error(Code.E612_CORNER_NOT_SQUARE, r.word().span(), r.name(), next.line());
             return false;
         }
         // Fanuc: the sign says which way the next move goes (C-1. into a -Z move); a corner the
         // other way is not a path gcnc can follow, and not what the program meant
-        boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
         double along = alongZ ? p2.x() - p1.x() : p2.z() - p1.z();
         if (letters && Math.signum(along) != r.sign()) {
             host.out().error(Code.E615_CORNER_SIGN, r.word().span(), r.name(), next.line());
@@ -238,7 +359,7 @@ final class CornerInsertion {
     }
 
     /** {@code b} with its X, Z, U and W replaced by a move from {@code from} to {@code to}. */
-    private static RawBlock moveTo(RawBlock b, MoveWriter writer, Point to, Point from) {
+    static RawBlock moveTo(RawBlock b, MoveWriter writer, Point to, Point from) {
         List<Word> words = new ArrayList<>(b.words().size() + 1);
         for (Word w : b.words()) {
             Letter l = w.letter();

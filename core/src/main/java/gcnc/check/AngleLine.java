@@ -1,0 +1,129 @@
+package gcnc.check;
+
+import gcnc.check.cycle.MoveWriter;
+import gcnc.check.geom.NumberText;
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
+import gcnc.ir.Letter;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import gcnc.ir.RawBlock;
+import gcnc.ir.Word;
+import gcnc.machine.Control;
+import gcnc.machine.Units;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A G01 line given by its angle {@code ,A} and one end coordinate (docs/chamfer.md, "Angles"):
+ * Fanuc's direct drawing dimension programming ({@code X2_ ,A_} or {@code Z2_ ,A_}; 0i-TF
+ * operator's manual, "Direct drawing dimension programming", T series) and the Haas lathe's
+ * {@code ,A} "angle of movement, used with only one of X, Z, U, W" (G01 in the Haas lathe
+ * operator's manual). The angle is in degrees from the +Z axis, counterclockwise positive in the
+ * Z-right, X-up drawing (toward +X); the other coordinate is where the line through the start at
+ * that angle meets the one given. The block is then an ordinary G01 to that point, its other
+ * words (a ,C or ,R after it) kept, so every check and the corner insertion see the line as the
+ * control cuts it.
+ *
+ * <p>What is left: the two-block form ({@code ,A1_} on a block with no end point, the corner found
+ * where its line meets the next block's {@code X3_ Z3_ ,A2_}), and an angle with both end
+ * coordinates, are E606 (not supported yet); an angle that never reaches the coordinate given
+ * (along the other axis) is E632, Fanuc PS0057 "no solution of block end" as gcnc's authors read
+ * the alarm list; an angle on a block that is not a G01 move is E633.
+ */
+final class AngleLine {
+    private final Checker host;
+
+    AngleLine(Checker host) {
+        this.host = host;
+    }
+
+    /** Whether the block has a ,A this control reads (Haas and Fanuc; the thesis's has no comma words: E604). */
+    boolean asks(RawBlock b) {
+        if (host.profile().control().corners() == Control.Corners.NONE) {
+            return false;
+        }
+        for (Word w : b.words()) {
+            if (w.comma() && w.letter() == Letter.A) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The block run from {@code from} with its ,A made into the end coordinate it stands for; after
+     * an error reported to {@code out}, the block without the ,A (it runs to the point it names).
+     */
+    RawBlock resolve(RawBlock b, ModalState from, Diagnostics out) {
+        Word angle = null;
+        List<Word> without = new ArrayList<>(b.words().size());
+        boolean x = false;
+        boolean z = false;
+        for (Word w : b.words()) {
+            if (angle == null && w.comma() && w.letter() == Letter.A) {
+                angle = w;
+                continue;
+            }
+            x |= !w.comma() && (w.letter() == Letter.X || w.letter() == Letter.U);
+            z |= !w.comma() && (w.letter() == Letter.Z || w.letter() == Letter.W);
+            without.add(w);
+        }
+        RawBlock plain = b.called(without, b.last(), b.depth());
+        if (x == z) {
+            out.error(Code.E606_ANGLE_NOT_SUPPORTED_YET, angle.span(), angle, x ? "both X and Z" : "no end point");
+            return plain;
+        }
+        if (host.startsCycle(plain)) {
+            out.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle);
+            return plain;
+        }
+        Checker.Dry dry = host.peek(bare(plain), from, new Diagnostics());
+        if (dry == null) {
+            return plain; // its own errors are reported when it runs
+        }
+        Motion.Linear line = CornerWords.feedLine(dry.block().motions());
+        if (line == null) {
+            out.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle);
+            return plain;
+        }
+        Units u = dry.next().units();
+        double px = host.coordinates().perRadius(u);
+        double pz = host.coordinates().perZ(u);
+        double a = Math.toRadians(NumberText.decimal(angle.number()));
+        double sin = Math.sin(a);
+        double cos = Math.cos(a);
+        Point p0 = line.from();
+        Point p1 = line.to();
+        Point end;
+        if (x) {
+            if (Math.abs(sin) < 1e-9) {
+                out.error(Code.E632_ANGLE_NO_SOLUTION, angle.span(), angle, "X");
+                return plain;
+            }
+            double dz = (p1.x() - p0.x()) / px * cos / sin;
+            end = new Point(p1.x(), p0.z() + dz * pz);
+        } else {
+            if (Math.abs(cos) < 1e-9) {
+                out.error(Code.E632_ANGLE_NO_SOLUTION, angle.span(), angle, "Z");
+                return plain;
+            }
+            double dx = (p1.z() - p0.z()) / pz * sin / cos;
+            end = new Point(p0.x() + dx * px, p1.z());
+        }
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, dry.next()), b.line(), angle.span());
+        return CornerInsertion.moveTo(plain, writer, end, p0);
+    }
+
+    /** The block without its corner words (comma words; C, R, I, K): the line alone, for a dry run. */
+    private static RawBlock bare(RawBlock b) {
+        List<Word> ws = new ArrayList<>(b.words().size());
+        for (Word w : b.words()) {
+            Letter l = w.letter();
+            if (!w.comma() && l != Letter.C && l != Letter.R && l != Letter.I && l != Letter.K) {
+                ws.add(w);
+            }
+        }
+        return b.called(ws, b.last(), b.depth());
+    }
+}
