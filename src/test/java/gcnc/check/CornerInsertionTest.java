@@ -174,6 +174,13 @@ class CornerInsertionTest {
     }
 
     @Test
+    void withTheCAxisEngagedACIsTheAxisNotAChamfer() {
+        // M154 engages the C axis (a note); its C is then E650 (not supported), not a chamfer
+        String found = errs(run("haas", "G01 Z0. F0.1\nM154\nX30. C90.\nZ-10.\nM30\n"));
+        assertEquals("E650@7:6", found);
+    }
+
+    @Test
     void theThesisControlHasNoCornersButTheBlockStillRunsSoNoArcAfterItEchoes() {
         // E025 (its Table 5) on the R; the block runs to Z-10. without it, so the G03 from there is fine
         String p = "N5 G01 Z-10. R2. F100.\nN6 X30.\nN7 G03 X40. Z-15. R5.\nN8 M30\n";

@@ -377,6 +377,11 @@ public final class Checker {
         return out;
     }
 
+    /** Whether the C axis is engaged (after a C-axis option code): C is then an axis word, not a chamfer. */
+    boolean cAxisOn() {
+        return advisories.cAxisOn();
+    }
+
     /** The cycle whose contour is being read ("G71"), or null. */
     String readingContour() {
         return cycles.reading() ? cycles.readingName() : null;

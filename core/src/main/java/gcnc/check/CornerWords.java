@@ -55,7 +55,7 @@ final class CornerWords {
             Word w = ws.get(at);
             Letter l = w.letter();
             if (w.comma() || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)
-                    || l == Letter.C || l == Letter.R) {
+                    || l == Letter.C && !host.cAxisOn() || l == Letter.R) {
                 return true;
             }
         }
@@ -86,7 +86,7 @@ final class CornerWords {
                 continue;
             }
             Letter l = w.letter();
-            if (l == Letter.C || l == Letter.R
+            if (l == Letter.C && !host.cAxisOn() || l == Letter.R
                     || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)) {
                 candidates.add(w);
             }
