@@ -230,9 +230,27 @@ class CornerInsertionTest {
     }
 
     @Test
-    void theTwoBlockAngleFormIsNotSupportedYetE606AndTheLineStillRuns() {
-        assertEquals("E606@5:10", errs(run("haas", "G01 F0.1 ,A150.\nX40. Z-10. ,A180.\nM30\n")).substring(0, 9));
+    void theTwoBlockAngleFormEndsTheFirstLineWhereTheTwoLinesMeet() {
+        // from X20 Z2 along -Z (180 degrees), then up (90 degrees) to X40 Z-20: the corner is X20 Z-20
+        for (String c : List.of("haas", "fanuc-a", "fanuc-b")) {
+            CycleExpansionTest.Expanded e = run(c, "G01 F0.1 ,A180.\nX40. Z-20. ,A90.\nM30\n");
+            assertEquals("", errs(e), c);
+            assertEquals(List.of("5 G01 X20.0000 Z-20.0000", "6 G01 X40.0000 Z-20.0000"), moves(e, 5), c);
+        }
+        // with a corner R between the two lines (the form ,A1_ ,R1_ ; X3_ Z3_ ,A2_)
+        CycleExpansionTest.Expanded r = run("fanuc-a", "G01 F0.1 ,A180. ,R2.\nX40. Z-20. ,A90.\nM30\n");
+        assertEquals("", errs(r));
+        assertEquals(List.of("5 G01 X20.0000 Z-18.0000", "5 G02 X24.0000 Z-20.0000 about X24.0000 Z-18.0000",
+                "6 G01 X40.0000 Z-20.0000"), moves(r, 5));
+    }
+
+    @Test
+    void anAngleFormGcncDoesNotReadIsNotSupportedYetE606AndTheLinesStillRun() {
+        // an angle alone whose next block does not complete the form; an angle with both X and Z
+        assertEquals("E606@5:10", errs(run("haas", "G01 F0.1 ,A150.\nZ-10.\nM30\n")));
         assertEquals("E606@5:21", errs(run("fanuc-a", "G01 X40. Z-10. F0.1 ,A30.\nM30\n")));
+        // two parallel angles meet nowhere
+        assertEquals("E634@5:10", errs(run("fanuc-a", "G01 F0.1 ,A180.\nX40. Z-20. ,A180.\nM30\n")));
     }
 
     @Test

@@ -46,6 +46,9 @@ final class CornerInsertion {
     private final CornerWords words;
     private final AngleLine angles;
     private Held held;
+    /** A G01 with ,A alone, waiting for the block that completes the two-block form ({@link AngleLine#pair}). */
+    private RawBlock angleAlone;
+    private boolean angleAloneFirst;
 
     CornerInsertion(Checker host) {
         this.host = host;
@@ -58,6 +61,8 @@ final class CornerInsertion {
         CornerInsertion c = new CornerInsertion(other);
         c.held = held == null ? null : new Held(held.block, held.request, held.isFirst, held.from, held.corner,
                 held.after, new ArrayList<>(held.still), held.afterStill);
+        c.angleAlone = angleAlone;
+        c.angleAloneFirst = angleAloneFirst;
         return c;
     }
 
@@ -79,6 +84,13 @@ final class CornerInsertion {
             if (b.malformed() || b.macro() != null) {
                 made.add(b);
                 continue;
+            }
+            if (angles.alone(b) && i + 1 < in.size()) {
+                RawBlock[] pair = angles.pair(b, in.get(i + 1), s, host.out());
+                if (pair != null) {
+                    b = pair[0];
+                    in.set(i + 1, pair[1]);
+                }
             }
             if (angles.asks(b)) {
                 b = angles.resolve(b, s, host.out());
@@ -167,12 +179,20 @@ final class CornerInsertion {
 
     /** The next block of the program's flow: held, released with the corner, or passed on. */
     List<CheckedBlock> flow(RawBlock b, boolean isFirst) {
+        if (angleAlone != null) {
+            return completeAngle(b);
+        }
         if (held != null) {
             return next(b);
         }
         if (b.malformed() || b.macro() != null || host.readingContour() != null) {
             // a contour block keeps its corner words: the cycle makes its corners ({@link #inContour})
             return host.flowOn(b, isFirst);
+        }
+        if (angles.alone(b)) {
+            angleAlone = b;
+            angleAloneFirst = isFirst;
+            return List.of();
         }
         if (angles.asks(b)) {
             b = angles.resolve(b, host.state(), host.out());
@@ -207,8 +227,30 @@ final class CornerInsertion {
         return List.of();
     }
 
+    /** The block after a G01 with ,A alone: the two-block form made, or E606 and both run as written. */
+    private List<CheckedBlock> completeAngle(RawBlock b) {
+        RawBlock first = angleAlone;
+        boolean isFirst = angleAloneFirst;
+        angleAlone = null;
+        RawBlock[] pair = angles.pair(first, b, host.state(), host.out());
+        List<CheckedBlock> done = new ArrayList<>();
+        if (pair == null) {
+            done.addAll(flow(angles.resolve(first, host.state(), host.out()), isFirst));
+            done.addAll(flow(b, false));
+        } else {
+            done.addAll(flow(pair[0], isFirst));
+            done.addAll(flow(pair[1], false));
+        }
+        return done;
+    }
+
     /** The program ended with a corner block held (it has no M30 either): E609. */
     void finish(int lastLine) {
+        if (angleAlone != null) {
+            RawBlock first = angleAlone;
+            angleAlone = null;
+            host.flowOn(angles.resolve(first, host.state(), host.out()), angleAloneFirst);
+        }
         if (held != null) {
             host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word().span(), held.request.name(), lastLine);
             held = null;

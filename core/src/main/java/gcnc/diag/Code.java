@@ -586,7 +586,7 @@ public enum Code {
     E602_TEXT_AFTER_END_OF_FILE_MARK(602),
     /** Checker: G01 chamfering or corner rounding on a control that has none (the thesis's). */
     E604_NO_CORNER_FUNCTION(604),
-    /** Checker: ,A with no end point or with both (the two-block direct drawing form) is not supported yet. */
+    /** Checker: ,A with both end coordinates or alone, not as the two-block direct drawing form gcnc reads (not supported yet). */
     E606_ANGLE_NOT_SUPPORTED_YET(606),
     /** Checker: a chamfer or corner radius on a block that is not a G01 (Fanuc PS0050). */
     E607_CORNER_NOT_ON_G01(607),
@@ -641,6 +641,8 @@ public enum Code {
     E632_ANGLE_NO_SOLUTION(632),
     /** Checker: ,A on a block that is not a G01 move (not supported yet). */
     E633_ANGLE_NOT_ON_G01(633),
+    /** Checker: the two angles of the two-block ,A form are parallel: no corner (Fanuc PS0057). */
+    E634_ANGLES_PARALLEL(634),
     // 640-659: checker again: what the control runs though the result may not be what was meant
     // (issue 17; tables/error_basis.csv says which control behaviour each rule stands for).
     /** Checker: a thread height above a standard thread's 0.65 x lead but within the sharp V (0.866 x lead): cut as written. */
