@@ -353,34 +353,18 @@ class CornerInsertionTest {
             // the cycle's passes are at its line; the G70 runs the contour's blocks at their own lines
             int roughLine = c.equals("haas") ? 6 : 7;
             int g70 = roughLine + 8;
-            List<double[]> finished = new ArrayList<>();
+            List<String> finish = new ArrayList<>();
             List<double[]> rough = new ArrayList<>();
             for (String m : moves(e, 5)) {
                 int line = Integer.parseInt(m.substring(0, m.indexOf(' ')));
                 String[] w = m.split(" ");
-                double[] xz = {Double.parseDouble(w[2].substring(1)), Double.parseDouble(w[3].substring(1))};
                 if (line > roughLine && line < g70) {
-                    // the finished path, arcs sampled between their ends on the circle
-                    if (w[1].equals("G01") || w[1].equals("G00")) {
-                        finished.add(xz);
-                    } else {
-                        double[] from = finished.get(finished.size() - 1);
-                        double cx = Double.parseDouble(w[5].substring(1)) / 2;
-                        double cz = Double.parseDouble(w[6].substring(1));
-                        double r = Math.hypot(from[0] / 2 - cx, from[1] - cz);
-                        double a0 = Math.atan2(from[0] / 2 - cx, from[1] - cz);
-                        double sweep = Math.atan2(xz[0] / 2 - cx, xz[1] - cz) - a0;
-                        sweep -= 2 * Math.PI * Math.round(sweep / (2 * Math.PI)); // a corner's arc: the short way
-                        for (int k = 1; k < 20; k++) {
-                            double a = a0 + sweep * k / 20;
-                            finished.add(new double[] {2 * (cx + r * Math.sin(a)), cz + r * Math.cos(a)});
-                        }
-                        finished.add(xz);
-                    }
+                    finish.add(m);
                 } else if (line == roughLine && w[1].equals("G01")) {
-                    rough.add(xz);
+                    rough.add(new double[] {Double.parseDouble(w[2].substring(1)), Double.parseDouble(w[3].substring(1))});
                 }
             }
+            List<double[]> finished = path(finish);
             assertTrue(rough.size() > 10, rough::toString);
             for (double[] p : rough) {
                 double floor = lowest(finished, p[1]);
@@ -389,8 +373,34 @@ class CornerInsertionTest {
         }
     }
 
+    /** The points of a path of {@link #moves} (X a diameter), its arcs sampled on their circle. */
+    static List<double[]> path(List<String> moves) {
+        List<double[]> finished = new ArrayList<>();
+        for (String m : moves) {
+            String[] w = m.split(" ");
+            double[] xz = {Double.parseDouble(w[2].substring(1)), Double.parseDouble(w[3].substring(1))};
+            if (w[1].equals("G01") || w[1].equals("G00") || finished.isEmpty()) {
+                finished.add(xz);
+                continue;
+            }
+            double[] from = finished.get(finished.size() - 1);
+            double cx = Double.parseDouble(w[5].substring(1)) / 2;
+            double cz = Double.parseDouble(w[6].substring(1));
+            double r = Math.hypot(from[0] / 2 - cx, from[1] - cz);
+            double a0 = Math.atan2(from[0] / 2 - cx, from[1] - cz);
+            double sweep = Math.atan2(xz[0] / 2 - cx, xz[1] - cz) - a0;
+            sweep -= 2 * Math.PI * Math.round(sweep / (2 * Math.PI)); // a corner's arc: the short way
+            for (int k = 1; k < 40; k++) {
+                double a = a0 + sweep * k / 40;
+                finished.add(new double[] {2 * (cx + r * Math.sin(a)), cz + r * Math.cos(a)});
+            }
+            finished.add(xz);
+        }
+        return finished;
+    }
+
     /** The greatest diameter the finished path has at {@code z} (its pieces interpolated), or -infinity. */
-    private static double lowest(List<double[]> path, double z) {
+    static double lowest(List<double[]> path, double z) {
         double best = Double.NEGATIVE_INFINITY;
         for (int i = 1; i < path.size(); i++) {
             double[] a = path.get(i - 1);
