@@ -342,6 +342,24 @@ class CornerInsertionTest {
         assertEquals("E609@10:10", errs(run("fanuc-a", f.replace("N20 X50.", "N20 X50. C1."))));
     }
 
+    @Test
+    void g72AndG73ContoursTakeTheirCornersToo() {
+        String p = "G00 X52. Z2.\nG72 P10 Q20 U0.4 W0.2 D1. F0.2\nN10 G00 Z-10.\nG01 X40. ,C1.\nZ-5. ,R1.\nX20. ,C0.5\n"
+                + "N20 Z2.\nG70 P10 Q20\nG00 X52. Z2.\nG73 P30 Q40 U0.4 W0.2 I3. K1. D3 F0.2\nN30 G00 X20. Z1.\n"
+                + "G01 Z-10. R1.\nX30. C0.5\nN40 Z-20.\nG70 P30 Q40\nM30\n";
+        CycleExpansionTest.Expanded e = run("haas", p);
+        assertEquals("", errs(e));
+        // each G70 runs each corner block as two moves (the block shortened, then the chamfer or arc)
+        List<String> all = moves(e, 5);
+        for (int line : new int[] {8, 9, 10, 16, 17}) {
+            String at = line + " ";
+            assertEquals(2, all.stream().filter(m -> m.startsWith(at)).count(), line + ": " + all);
+        }
+        // Fanuc: C without the comma is for 90 degrees with the sign of the next move (-Z after line 17: C-0.5)
+        assertEquals("E615@17:6", errs(run("fanuc-a", p)));
+        assertEquals("", errs(run("fanuc-a", p.replace("X30. C0.5", "X30. C-0.5"))));
+    }
+
     /** The rough passes of a G71 over a chamfered and rounded contour never go below the finished contour. */
     @Test
     void roughPassesOverAChamferedContourNeverCutBelowIt() {
