@@ -182,14 +182,11 @@ class CornerInsertionTest {
 
     @Test
     void theThesisControlHasNoCornersButTheBlockStillRunsSoNoArcAfterItEchoes() {
-        // E025 (its Table 5) on the R; the block runs to Z-10. without it, so the G03 from there is fine
-        String p = "N5 G01 Z-10. R2. F100.\nN6 X30.\nN7 G03 X40. Z-15. R5.\nN8 M30\n";
-        String found = errs(run("thesis-2004", p));
-        assertTrue(found.contains("E025@5:14"), found);
-        assertTrue(!found.contains("@6:") && !found.contains("@7:"), found);
-        // as the block without the R does
-        assertEquals(found.replace(", E025@5:14", "").replace("E025@5:14", ""),
-                errs(run("thesis-2004", p.replace(" R2.", ""))));
+        // E025 (its Table 5) on the R: the block is refused, and the tool taken to Z-10. as if the R
+        // were struck out, so the G03 from there is judged from there (no E101, no E049 on line 9)
+        String p = "N5 G50 S2000\nN6 S500 M03\nN7 G01 Z-10. R2. F100.\nN8 X30.\nN9 G03 X40. Z-15. R5.\nN10 M30\n";
+        assertEquals("E025@7:14", errs(run("thesis-2004", p)));
+        assertEquals("", errs(run("thesis-2004", p.replace(" R2.", ""))));
     }
 
     @Test

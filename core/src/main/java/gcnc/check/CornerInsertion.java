@@ -100,6 +100,9 @@ final class CornerInsertion {
         if (r == null) {
             return host.flowOn(b, isFirst);
         }
+        if (r == Request.REFUSED) {
+            return List.of(); // the thesis's R on a G01 (E025): refused, the state taken past it
+        }
         RawBlock stripped = b.called(rest, b.last(), b.depth());
         if (r.word() == null) {
             return host.flowOn(stripped, isFirst); // an error was reported; the block runs without it

@@ -29,6 +29,8 @@ final class CornerWords {
      */
     record Request(Word word, boolean round, double size, boolean square) {
         static final Request FAILED = new Request(null, false, 0, false);
+        /** The block was refused for its corner word, the error reported and the state taken past it: nothing runs. */
+        static final Request REFUSED = new Request(null, true, 0, false);
 
         String name() {
             return word.toString();
@@ -65,6 +67,9 @@ final class CornerWords {
     /**
      * The corner the block asks for, run from {@code from}, its other words put in {@code rest};
      * null when it asks for none, {@link Request#FAILED} after an error reported to {@code out}.
+     * On the thesis's control (no corners) an R on a sound G01 is {@link Request#REFUSED}: E025
+     * reported and the checker's state taken past the block ({@link Checker#takeFixed}), so this
+     * is called for such a control only for the block the flow is at.
      */
     Request read(RawBlock b, ModalState from, List<Word> rest, Diagnostics out) {
         Control.Corners form = host.profile().control().corners();
@@ -98,19 +103,24 @@ final class CornerWords {
         if (!candidates.isEmpty() && isG01(b, candidates, from)) {
             rest.removeAll(candidates);
             if (form == Control.Corners.NONE) {
-                // the thesis's language has no corner function: R on a G01 is its error 25 (C is
-                // E004, reported by the block); the block still runs to its end point without the
-                // word, so that the blocks after it are not judged from the wrong place
+                // the thesis's language has no corner function: R on a G01 is its error 25 (a C
+                // is E004, the block's own error). The block is refused, but when it is sound
+                // without the R the tool is taken to its end point, as if the R were struck out,
+                // so that the blocks after it are not judged from the wrong place (no E101/E049
+                // on the next arc)
+                Word r = null;
                 for (Word w : candidates) {
-                    if (w.letter() == Letter.R) {
-                        out.error(Code.E025_R_NOT_ALLOWED, w.span(), "G01");
-                    } else if (!host.profile().control().letters().contains(w.letter())) {
-                        out.error(Code.E004_UNDEFINED_FUNCTION, w.span(), w.letter());
+                    if (w.letter() == Letter.R && r == null) {
+                        r = w;
                     } else {
                         rest.add(w);
                     }
                 }
-                return Request.FAILED;
+                if (r != null && candidates.size() == 1 && host.takeFixed(b.called(rest, b.last(), b.depth()))) {
+                    out.error(Code.E025_R_NOT_ALLOWED, r.span(), "G01");
+                    return Request.REFUSED;
+                }
+                return null; // the block's own checks report it
             }
             for (Word w : candidates) {
                 if (found == null) {
