@@ -20,7 +20,9 @@ import java.util.List;
  * operator's manual, "Direct drawing dimension programming", T series) and the Haas lathe's
  * {@code ,A} "angle of movement, used with only one of X, Z, U, W" (G01 in the Haas lathe
  * operator's manual). The angle is in degrees from the +Z axis, counterclockwise positive in the
- * Z-right, X-up drawing (toward +X); the other coordinate is where the line through the start at
+ * Z-right, X-up drawing (toward +X): the Fanuc manual's figures as gcnc's authors read them (its
+ * text was not at hand to quote; the Haas entry has no figure and gcnc takes the same convention
+ * there); the other coordinate is where the line through the start at
  * that angle meets the one given. The block is then an ordinary G01 to that point, its other
  * words (a ,C or ,R after it) kept, so every check and the corner insertion see the line as the
  * control cuts it.
