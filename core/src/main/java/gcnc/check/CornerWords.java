@@ -91,6 +91,12 @@ final class CornerWords {
                 continue;
             }
             Letter l = w.letter();
+            // C and R without the comma: Fanuc's 90-degree chamfering and corner R (0i-TF operator's
+            // manual, "Chamfering and corner R", CCR = 1); on a Haas the same as ,C and ,R (the
+            // classic control's lathe G-code list, "G01 chamfering and corner rounding (X, Z, U, W,
+            // B, I, K, R, A, F)", writes them without the comma and Haas school programs use them;
+            // the NGC manual writes the comma and names no alarm for the letters alone:
+            // docs/chamfer.md, "Without the comma"); a C with the C axis engaged is the axis
             if (l == Letter.C && !host.cAxisOn() || l == Letter.R
                     || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)) {
                 candidates.add(w);
