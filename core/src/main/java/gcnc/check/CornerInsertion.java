@@ -146,7 +146,7 @@ final class CornerInsertion {
         if (angleAlone != null) {
             RawBlock first = angleAlone;
             angleAlone = null;
-            host.flowOn(angles.resolve(first, host.state(), host.out()), angleAloneFirst);
+            flow(angles.resolve(first, host.state(), host.out()), angleAloneFirst); // a corner on it is E609 below
         }
         if (held != null) {
             host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word().span(), held.request.name(), lastLine);
