@@ -330,6 +330,8 @@ public enum Code {
     E208_GEAR_RATIO_RANGE(208),
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
+    /** Checker (Fanuc): C or R without a comma at a corner not between the two axes: the control wants ,C or ,R (PS0054). */
+    E210_CORNER_WANTS_COMMA(210),
 
     // 220-239: the controller's limits (gcnc.machine.ControllerLimits; tables/galil_models.csv,
     // docs/galil.md "The controller's limits"): a value the controller refuses (an error, TC 6 or
@@ -591,9 +593,7 @@ public enum Code {
     E602_TEXT_AFTER_END_OF_FILE_MARK(602),
     /** Checker: G01 chamfering or corner rounding on a control that has none (the thesis's). */
     E604_NO_CORNER_FUNCTION(604),
-    /** Checker (Fanuc): ,C or ,R is direct drawing dimension input, not supported yet; the control's chamfer is C/R. */
-    E605_DIRECT_DRAWING_NOT_SUPPORTED_YET(605),
-    /** Checker: ,A (a line's angle, direct drawing dimension input) is not supported yet. */
+    /** Checker: ,A with both end coordinates or alone, not as the two-block direct drawing form gcnc reads (not supported yet). */
     E606_ANGLE_NOT_SUPPORTED_YET(606),
     /** Checker: a chamfer or corner radius on a block that is not a G01 (Fanuc PS0050). */
     E607_CORNER_NOT_ON_G01(607),
@@ -609,8 +609,6 @@ public enum Code {
     E612_CORNER_NOT_SQUARE(612),
     /** Checker: the two moves of a chamfer or corner radius are in line: no corner. */
     E613_CORNER_IN_LINE(613),
-    /** Checker: a chamfer or corner radius in a G71/G72/G73 contour (not supported yet). */
-    E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET(614),
     /** Checker (Fanuc): the sign of a 90-degree chamfer or corner R points away from the next move. */
     E615_CORNER_SIGN(615),
 
@@ -646,6 +644,12 @@ public enum Code {
     E630_G30_REFERENCE_NUMBER(630),
     /** G30 to a reference point the machine profile does not give (reference.N). */
     E631_G30_NO_REFERENCE(631),
+    /** Checker: a ,A line that never meets the end coordinate given (along the other axis; Fanuc PS0057). */
+    E632_ANGLE_NO_SOLUTION(632),
+    /** Checker: ,A on a block that is not a G01 move (not supported yet). */
+    E633_ANGLE_NOT_ON_G01(633),
+    /** Checker: the two angles of the two-block ,A form are parallel: no corner (Fanuc PS0057). */
+    E634_ANGLES_PARALLEL(634),
     // 640-659: checker again: what the control runs though the result may not be what was meant
     // (issue 17; tables/error_basis.csv says which control behaviour each rule stands for).
     /** Checker: a thread height above a standard thread's 0.65 x lead but within the sharp V (0.866 x lead): cut as written. */
