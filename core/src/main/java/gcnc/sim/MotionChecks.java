@@ -78,7 +78,7 @@ final class MotionChecks {
         }
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
-            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);
+            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2, options.referenceStock());
             blank = s;
         } else {
             stock = null;

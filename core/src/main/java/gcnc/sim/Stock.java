@@ -40,12 +40,25 @@ final class Stock {
 
     /** A blank from {@code back} to {@code face}, its material from radius {@code inner} (a bore; 0 for a bar) to {@code radius}. */
     Stock(double back, double face, double inner, double radius) {
+        this(back, face, inner, radius, false);
+    }
+
+    /**
+     * The same; {@code reference} true: the full model, without the shortcuts the envelopes give
+     * beyond the blank's own bore (the bore is not raised by cuts from inside, and the drawing's
+     * outline always comes from the polygons), for tests to hold the fast path against.
+     */
+    Stock(double back, double face, double inner, double radius, boolean reference) {
         this.back = back;
         this.face = face;
         this.radius = radius;
-        this.envelope = new UpperEnvelope(back, face, inner, radius);
+        this.reference = reference;
+        this.envelope = new UpperEnvelope(back, face, inner, radius, !reference);
         this.material = new Material(factory, back, face, inner, radius);
     }
+
+    /** The full model ({@link #Stock(double, double, double, double, boolean)}). */
+    private final boolean reference;
 
     double back() {
         return back;
@@ -219,9 +232,12 @@ final class Stock {
         remove(cuts);
     }
 
-    /** Whether the hull dips below the upper envelope somewhere (the envelope is never below the material). */
+    /**
+     * Whether the hull dips below the upper envelope somewhere and is not in the bore (the
+     * envelope is never below the material, the bore never above it: a no is certain).
+     */
     private boolean under(Hull h) {
-        return envelope.dips(h.zMin(), h.zMax(), h, 0);
+        return envelope.dips(h.zMin(), h.zMax(), h, 0) && (reference || !envelope.inBore(h));
     }
 
     /**
@@ -347,7 +363,7 @@ final class Stock {
      * pending cuts go into the polygons first and the envelope is rebuilt from them.
      */
     double[][] profile() {
-        if (!envelope.solid()) {
+        if (reference || !envelope.solid()) {
             settle(); // the polygons know what a cut under material took
         }
         return envelope.outline(4096);
