@@ -27,6 +27,7 @@ final class LowerEnvelope {
      */
     static final double ON = 1e-7;
     private static final double STRAIGHT = 1e-9;
+    private static final double SLIVER = UpperEnvelope.SLIVER;
 
     private final double back;
     private final double face;
@@ -175,6 +176,11 @@ final class LowerEnvelope {
         List<UpperEnvelope.Piece> out = new ArrayList<>(in.size());
         for (UpperEnvelope.Piece p : in) {
             if (!(p.z0() < p.z1())) {
+                continue;
+            }
+            if (p.z1() - p.z0() < SLIVER && !out.isEmpty()) { // a rounding's width: its neighbour goes on over it
+                UpperEnvelope.Piece last = out.get(out.size() - 1);
+                out.set(out.size() - 1, new UpperEnvelope.Piece(last.z0(), p.z1(), last.a(), last.b()));
                 continue;
             }
             if (!out.isEmpty()) {

@@ -183,6 +183,8 @@ final class Stock {
         }
         pending.add(full);
         envelope.lower(full);
+        recent[recentNext] = full;
+        recentNext = (recentNext + 1) % recent.length;
         if (pending.size() >= PENDING_MAX) {
             settle();
         }
@@ -237,7 +239,44 @@ final class Stock {
      * envelope is never below the material, the bore never above it: a no is certain).
      */
     private boolean under(Hull h) {
-        return envelope.dips(h.zMin(), h.zMax(), h, 0) && (reference || !envelope.inBore(h));
+        return envelope.dips(h.zMin(), h.zMax(), h, 0) && (reference || !envelope.inBore(h) && !cutAlready(h));
+    }
+
+    /**
+     * The last few cuts: a sweep inside one of them meets no material (material is never added),
+     * such as a drill's retract along the hole it has just drilled, whose hull is the feed's.
+     */
+    private final Hull[] recent = new Hull[4];
+    private int recentNext;
+
+    private boolean cutAlready(Hull h) {
+        for (Hull c : recent) {
+            if (c != null && inside(h, c)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether every corner of {@code h} is in the convex {@code c} (its corners counterclockwise), within 1e-9 mm. */
+    static boolean inside(Hull h, Hull c) {
+        double[] cz = c.z();
+        double[] cr = c.r();
+        int n = cz.length;
+        for (int k = 0; k < h.z().length; k++) {
+            double pz = h.z()[k];
+            double pr = h.r()[k];
+            for (int i = 0; i < n; i++) {
+                int j = (i + 1) % n;
+                double ez = cz[j] - cz[i];
+                double er = cr[j] - cr[i];
+                double len = Math.hypot(ez, er);
+                if (len > 0 && (ez * (pr - cr[i]) - er * (pz - cz[i])) / len < -1e-9) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     /**

@@ -74,6 +74,12 @@ final class UpperEnvelope {
      * own rounding (their corners sit on a 0.00001 mm grid) is ten thousand times coarser.
      */
     private static final double STRAIGHT = 1e-9;
+    /**
+     * A piece narrower than this is a rounding between two cuts' ends (a face at z 149.5 and one
+     * at 149.50000000000003), not material: its neighbour goes on over it. The polygons' grid is
+     * ten thousand times coarser, and no overlap of {@link Stock#DEPTH} fits in it.
+     */
+    static final double SLIVER = 1e-9;
 
     private final double back;
     private final double face;
@@ -337,6 +343,11 @@ final class UpperEnvelope {
         List<Piece> out = new ArrayList<>(in.size());
         for (Piece p : in) {
             if (!(p.z0() < p.z1())) {
+                continue;
+            }
+            if (p.z1() - p.z0() < SLIVER && !out.isEmpty()) { // a rounding's width: its neighbour goes on over it
+                Piece last = out.get(out.size() - 1);
+                out.set(out.size() - 1, new Piece(last.z0(), p.z1(), last.a(), last.b()));
                 continue;
             }
             if (!out.isEmpty()) {
