@@ -413,6 +413,11 @@ final class Stock {
         return envelope.solid();
     }
 
+    /** The bore's radius at z ({@link LowerEnvelope}; tests read it). */
+    double boreAt(double z) {
+        return envelope.bore().at(z);
+    }
+
     /** How many straight pieces the envelope holds (tests bound it). */
     int envelopePieces() {
         return envelope.size();
