@@ -8,7 +8,9 @@ import java.util.List;
  * over [back, face] (pieces end to end, a step of the bore a jump between two), never above the
  * material. It starts at the blank's bore (0 for a bar) and is raised by the cuts from inside: where
  * a sweep's lower side is at or below it and its upper side above it, nothing is left below the
- * upper side (a centre drill, a drill, a boring bar). It never comes down.
+ * upper side (a centre drill, a drill, a boring bar; {@link EnvelopeCut#stretch}, called by
+ * {@link UpperEnvelope#lower}). It never comes down. The same kind of function holds the top run's
+ * floor (from it up to the upper envelope the material is one run).
  *
  * <p>With it the stock knows two things without the polygons: a sweep whose upper side stays at
  * or below the bore everywhere it spans is in the hole and touches nothing (a drill's retract, a
@@ -26,8 +28,6 @@ final class LowerEnvelope {
      * finer than {@link Stock#DEPTH}, a hundred times finer than the polygons' grid.
      */
     static final double ON = 1e-7;
-    private static final double STRAIGHT = 1e-9;
-    private static final double SLIVER = UpperEnvelope.SLIVER;
 
     private final double back;
     private final double face;
@@ -165,40 +165,10 @@ final class LowerEnvelope {
         all.addAll(fresh);
         all.addAll(after);
         pieces.subList(first, last + 1).clear();
-        pieces.addAll(first, join(all));
+        pieces.addAll(first, Pieces.join(all, false));
         if (pieces.size() > MAX_PIECES) {
             coarsen();
         }
-    }
-
-    /** Drops empty pieces and joints on the line through their neighbours; a joint a rounding apart becomes its lower side. */
-    private static List<UpperEnvelope.Piece> join(List<UpperEnvelope.Piece> in) {
-        List<UpperEnvelope.Piece> out = new ArrayList<>(in.size());
-        for (UpperEnvelope.Piece p : in) {
-            if (!(p.z0() < p.z1())) {
-                continue;
-            }
-            if (p.z1() - p.z0() < SLIVER && !out.isEmpty()) { // a rounding's width: its neighbour goes on over it
-                UpperEnvelope.Piece last = out.get(out.size() - 1);
-                out.set(out.size() - 1, new UpperEnvelope.Piece(last.z0(), p.z1(), last.a(), last.b()));
-                continue;
-            }
-            if (!out.isEmpty()) {
-                UpperEnvelope.Piece last = out.get(out.size() - 1);
-                if (Math.abs(last.b() - p.a()) <= STRAIGHT) {
-                    UpperEnvelope.Piece line = new UpperEnvelope.Piece(last.z0(), p.z1(), last.a(), p.b());
-                    if (Math.abs(line.at(p.z0()) - Math.min(p.a(), last.b())) <= STRAIGHT) {
-                        out.set(out.size() - 1, line);
-                        continue;
-                    }
-                    double m = Math.min(last.b(), p.a());
-                    out.set(out.size() - 1, new UpperEnvelope.Piece(last.z0(), last.z1(), last.a(), m));
-                    p = new UpperEnvelope.Piece(p.z0(), p.z1(), m, p.b());
-                }
-            }
-            out.add(p);
-        }
-        return out;
     }
 
     /** Level steps at the smallest radius of each, MAX_PIECES / 2 of them: lower, never higher. */
@@ -222,6 +192,6 @@ final class LowerEnvelope {
             steps.add(new UpperEnvelope.Piece(s, t, Math.max(0, m), Math.max(0, m)));
         }
         pieces.clear();
-        pieces.addAll(join(steps));
+        pieces.addAll(Pieces.join(steps, false));
     }
 }

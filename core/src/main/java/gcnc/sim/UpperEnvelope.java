@@ -69,17 +69,6 @@ final class UpperEnvelope {
     static final int CHUNK = 32;
     /** Pieces kept at most (about 3 MiB); past it the envelope is coarsened ({@link #coarsen}). */
     static final int MAX_PIECES = 1 << 16;
-    /**
-     * A joint this close to the line through its neighbours' ends is dropped, mm: the polygons'
-     * own rounding (their corners sit on a 0.00001 mm grid) is ten thousand times coarser.
-     */
-    private static final double STRAIGHT = 1e-9;
-    /**
-     * A piece narrower than this is a rounding between two cuts' ends (a face at z 149.5 and one
-     * at 149.50000000000003), not material: its neighbour goes on over it. The polygons' grid is
-     * ten thousand times coarser, and no overlap of {@link Stock#DEPTH} fits in it.
-     */
-    static final double SLIVER = 1e-9;
 
     private final double back;
     private final double face;
@@ -325,7 +314,7 @@ final class UpperEnvelope {
         }
         all.addAll(fresh);
         all.addAll(after);
-        List<Piece> joined = join(all);
+        List<Piece> joined = Pieces.join(all, true);
         List<Chunk> made = new ArrayList<>();
         for (int i = 0; i < joined.size(); i += CHUNK) {
             made.add(new Chunk(new ArrayList<>(joined.subList(i, Math.min(joined.size(), i + CHUNK)))));
@@ -336,37 +325,6 @@ final class UpperEnvelope {
         if (pieces > MAX_PIECES) {
             coarsen();
         }
-    }
-
-    /** Drops empty pieces and the joints that lie on the line through their neighbours (within {@link #STRAIGHT}). */
-    private static List<Piece> join(List<Piece> in) {
-        List<Piece> out = new ArrayList<>(in.size());
-        for (Piece p : in) {
-            if (!(p.z0() < p.z1())) {
-                continue;
-            }
-            if (p.z1() - p.z0() < SLIVER && !out.isEmpty()) { // a rounding's width: its neighbour goes on over it
-                Piece last = out.get(out.size() - 1);
-                out.set(out.size() - 1, new Piece(last.z0(), p.z1(), last.a(), last.b()));
-                continue;
-            }
-            if (!out.isEmpty()) {
-                Piece last = out.get(out.size() - 1);
-                if (Math.abs(last.b() - p.a()) <= STRAIGHT) {
-                    Piece line = new Piece(last.z0(), p.z1(), last.a(), p.b());
-                    if (Math.abs(line.at(p.z0()) - Math.max(p.a(), last.b())) <= STRAIGHT) {
-                        out.set(out.size() - 1, line);
-                        continue;
-                    }
-                    // a corner, its two sides a rounding apart: one point, the higher
-                    double m = Math.max(last.b(), p.a());
-                    out.set(out.size() - 1, new Piece(last.z0(), last.z1(), last.a(), m));
-                    p = new Piece(p.z0(), p.z1(), m, p.b());
-                }
-            }
-            out.add(p);
-        }
-        return out;
     }
 
     /** Level steps at the largest radius of each, MAX_PIECES / 2 of them over the blank: higher, never lower. */
@@ -381,7 +339,7 @@ final class UpperEnvelope {
             double m = max(s, t);
             steps.add(new Piece(s, t, m, m));
         }
-        List<Piece> joined = join(steps);
+        List<Piece> joined = Pieces.join(steps, true);
         chunks.clear();
         for (int i = 0; i < joined.size(); i += CHUNK) {
             chunks.add(new Chunk(new ArrayList<>(joined.subList(i, Math.min(joined.size(), i + CHUNK)))));
