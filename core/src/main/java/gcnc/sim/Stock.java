@@ -16,7 +16,8 @@ import org.locationtech.jts.operation.overlayng.OverlayNGRobust;
  * <p>An overlap counts only when it is real: thicker than {@link #DEPTH} (the overlap, shrunk by
  * half of it, is not empty), never because of how the stock is held. The exact upper envelope of
  * the material ({@link UpperEnvelope}: the largest radius at each z, never below the material)
- * lets the many moves that pass above the material skip the polygon work. A cut is taken from
+ * lets the many moves that pass above the material skip the polygon work, and the bore
+ * ({@link LowerEnvelope}: the smallest, never above it) those that pass in a drilled or bored hole. A cut is taken from
  * the envelope at once and from the polygons only when they are next asked (a rapid or a holder that may reach into material, the
  * drawing), many cuts in one boolean ({@link #cut}): a program whose rapids stay clear of the
  * material does almost no polygon work.
