@@ -81,6 +81,7 @@ class DrawingMemoryTest {
         assertEquals(0, p.exitValue(), said);
         assertTrue(said.contains("drawing: " + svg), said);
         String text = Files.readString(svg);
+        assertTrue(text.contains("; path drawn to "), "the drawing says its path was compacted");
         int polylines = text.split("<polyline ", -1).length - 1;
         int points = 0;
         for (String part : text.split("points=\"")) {

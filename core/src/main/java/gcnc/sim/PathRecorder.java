@@ -257,11 +257,12 @@ final class PathRecorder {
                 new double[] {profile.z().min() / kz, profile.z().max() / kz, (profile.x().min() - centre) / kx,
                     (profile.x().max() - centre) / kx});
         if (stock == null) {
-            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes(), m, scrub);
+            return new Drawing(chuck, tail, 0, 0, Double.NaN, new double[0], new double[0], moves, marks, axes(), m, scrub,
+                    tolerance);
         }
         double[][] part = stock.profile();
         return new Drawing(chuck, tail, stock.back(), stock.face(), stock.initialRadius(), part[0], part[1],
-                moves, marks, axes(), m, scrub);
+                moves, marks, axes(), m, scrub, tolerance);
     }
 
     private Drawing.ProgramAxes axes() {
