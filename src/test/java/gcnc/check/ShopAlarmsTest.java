@@ -80,6 +80,55 @@ class ShopAlarmsTest {
         assertFalse(NoseGeometry.forward(line, new Point(1, -3), new Point(1, -1)));
     }
 
+    /**
+     * A school program in the Haas style (written for this test): a one-block G71 whose P block
+     * has Z alone (N1 G01 Z0. then X down to the first diameter), its G70, a G76 and, after M30,
+     * a G28 and set-up notes left in the file. The control runs all of it but the blocks after M30,
+     * which never run: one warning, nothing else (issue 31).
+     */
+    @Test
+    void aHaasSchoolProgramRunsCleanButForTheBlocksAfterM30() {
+        String program =
+            "%\n"
+            + "O02468 (BUSHING - OP1)\n"
+            + "(STOCK 1.5 DIA 6061)\n"
+            + "(T1 CNMG ROUGH/FINISH  T3 THREAD 16 TPI)\n"
+            + "G20 G18 G40 G99\n"
+            + "G28 U0.\n"
+            + "G28 W0.\n"
+            + "T101\n"
+            + "G50 S3000\n"
+            + "G96 S450 M03\n"
+            + "G00 X1.6 Z0.1 M08\n"
+            + "G71 P1 Q2 U0.02 W0.005 D0.05 F0.008\n"
+            + "N1 G01 Z0.\n"
+            + "X0.625\n"
+            + "X0.75 Z-0.0625\n"
+            + "Z-0.875\n"
+            + "X1.125\n"
+            + "X1.25 Z-0.9375\n"
+            + "Z-1.75\n"
+            + "N2 X1.6\n"
+            + "G70 P1 Q2 F0.004\n"
+            + "G00 X3. Z3. M09\n"
+            + "T303\n"
+            + "G97 S800 M03\n"
+            + "G00 X0.85 Z0.2\n"
+            + "G76 X0.6733 Z-0.7 K0.0406 D0.012 F0.0625\n"
+            + "G00 X3. Z3.\n"
+            + "M05\n"
+            + "M30\n"
+            + "G28 U0. W0.\n"
+            + "(EXTRA SETUP NOTES BELOW)\n"
+            + "T0100\n"
+            + "%\n";
+        Run h = Run.of("haas", program);
+        assertEquals("30:1:warning E053", found(h));
+        assertTrue(threads(h) > 1, "the thread is cut");
+        // on a Fanuc the same P block is alarm PS0065, and the rest still runs
+        assertEquals("13:1:error E155, 30:1:warning E053", found(Run.of("fanuc", program)));
+    }
+
     /** The point at {@code degrees} on the circle of {@code radius} about X0 Z0 (the angle from +Z toward +X). */
     private static Point at(double radius, double degrees) {
         double a = Math.toRadians(degrees);

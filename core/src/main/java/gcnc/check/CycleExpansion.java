@@ -426,13 +426,31 @@ final class CycleExpansion {
                     call.kind() == GRole.PATTERN_CYCLE ? "X or Z" : axes.cutName());
             return List.of();
         }
-        Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
+        Contour.Piece lead = positioning(call, axes, pieces) ? pieces.get(0) : null;
+        Contour contour = lead == null ? new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()))
+                : new Contour(lead.to(), pieces.get(1), pieces.subList(2, pieces.size()));
         stored.put(key(call), new Stored(rejected.blocks(), axes, signs(axes, contour), call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
             return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
         }
-        return new StockRemoval(host, call, p.line).expand(contour, p.blocks, start, firstBlock);
+        return new StockRemoval(host, call, p.line).expand(contour, p.blocks, start, firstBlock, lead);
+    }
+
+    /**
+     * Whether the contour's first move is a positioning move at the start's level (Haas,
+     * {@code cycle.type1_first_move = positions}): a G71 (G72) whose first move goes along Z (X)
+     * alone, and a second move to rough type I from. Fanuc's alarm PS0065 (E155) otherwise.
+     */
+    private boolean positioning(CycleCall call, Axes axes, List<Contour.Piece> pieces) {
+        if (!host.profile().control().cutFirstMovePositions() || call.kind() == GRole.PATTERN_CYCLE
+                || call.typeTwo() || pieces.size() < 3) {
+            return false;
+        }
+        Contour.Piece first = pieces.get(0);
+        return first.motion() instanceof gcnc.ir.Motion.Linear
+                && Math.abs(axes.depth(first.to()) - axes.depth(first.from())) <= 1e-9
+                && Math.abs(axes.cut(first.to()) - axes.cut(first.from())) > 1e-9;
     }
 
     private static String key(CycleCall call) {

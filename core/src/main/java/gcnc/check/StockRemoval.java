@@ -5,6 +5,7 @@ import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Fault;
+import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.cycle.PocketRoughing;
 import gcnc.check.cycle.Roughing;
@@ -50,9 +51,11 @@ final class StockRemoval {
 
     /**
      * The cycle's checked blocks for the contour followed from {@code start}; none after a
-     * finding. {@code firstBlock}: what a Fanuc first block left in force.
+     * finding. {@code firstBlock}: what a Fanuc first block left in force. {@code lead}: a first
+     * contour move the control takes as positioning (Haas, Z alone in a G71's P block), or null.
      */
-    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock) {
+    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock,
+                              Contour.Piece lead) {
         Roughing.Settings settings = settings(start, firstBlock);
         if (settings == null) {
             return List.of();
@@ -64,7 +67,16 @@ final class StockRemoval {
             return List.of();
         }
         Roughing.Plan plan = (Roughing.Plan) o;
-        return CycleExpansion.write(host, call, line, plan.moves(), plan.passes(), start);
+        List<Move> moves = plan.moves();
+        if (lead != null) {
+            // Haas: the first move along the cutting axis alone positions the tool at the start's
+            // level; the passes start where it ends and the cycle ends back at its start point
+            moves = new ArrayList<>(moves.size() + 2);
+            moves.add(Move.line(((gcnc.ir.Motion.Linear) lead.motion()).rapid(), contour.start(), 1));
+            moves.addAll(plan.moves());
+            moves.add(Move.line(true, start.position(), Math.max(1, plan.passes())));
+        }
+        return CycleExpansion.write(host, call, line, moves, plan.passes(), start);
     }
 
     /**
