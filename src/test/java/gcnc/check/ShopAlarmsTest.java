@@ -89,8 +89,7 @@ class ShopAlarmsTest {
     @Test
     void aHaasSchoolProgramRunsCleanButForTheBlocksAfterM30() {
         String program =
-            "%\n"
-            + "O02468 (BUSHING - OP1)\n"
+            "O02468 (BUSHING - OP1)\n"
             + "(STOCK 1.5 DIA 6061)\n"
             + "(T1 CNMG ROUGH/FINISH  T3 THREAD 16 TPI)\n"
             + "G20 G18 G40 G99\n"
@@ -120,13 +119,12 @@ class ShopAlarmsTest {
             + "M30\n"
             + "G28 U0. W0.\n"
             + "(EXTRA SETUP NOTES BELOW)\n"
-            + "T0100\n"
-            + "%\n";
+            + "T0100\n";
         Run h = Run.of("haas", program);
-        assertEquals("30:1:warning E053", found(h));
+        assertEquals("29:1:warning E053", found(h));
         assertTrue(threads(h) > 1, "the thread is cut");
         // on a Fanuc the same P block is alarm PS0065, and the rest still runs
-        assertEquals("13:1:error E155, 30:1:warning E053", found(Run.of("fanuc", program)));
+        assertEquals("12:1:error E155, 29:1:warning E053", found(Run.of("fanuc", program)));
     }
 
     /** The point at {@code degrees} on the circle of {@code radius} about X0 Z0 (the angle from +Z toward +X). */
