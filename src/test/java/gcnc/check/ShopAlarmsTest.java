@@ -127,6 +127,59 @@ class ShopAlarmsTest {
         assertEquals("12:1:error E155, 29:1:warning E053", found(Run.of("fanuc", program)));
     }
 
+    /** A G71 roughing and its G70, metric, on the fanuc machine from X52 Z2 (lines 1-14). */
+    private static final String ROUGH_AND_FINISH = "G21 G99\nT0101\nG96 S180 M03\nG50 S2000\nG00 X52. Z2.\n"
+            + "G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20.\nX30.\nZ-35.\nN20 X52.\n"
+            + "G00 X100. Z50.\n";
+
+    @Test
+    void aG70AfterAG41OrG42BlockFinishesTheContourOfTheG71BeforeIt() {
+        // the G70's P and Q are the earlier G71's contour, whatever compensation block comes
+        // between them: the control finishes it (E166 is only for blocks that are not there)
+        assertEquals("", Run.of("fanuc", ROUGH_AND_FINISH + "G42\nG00 X52. Z2.\nG70 P10 Q20 F0.1\n"
+                + "G40 G00 X100. Z50.\nM30\n").errors());
+        assertEquals("", Run.of("fanuc", ROUGH_AND_FINISH + "G42 G00 X52. Z2.\nG70 P10 Q20 F0.1\n"
+                + "G40 G00 X100. Z50.\nM30\n").errors());
+        assertEquals("", Run.of("fanuc", ROUGH_AND_FINISH + "G00 X52. Z2.\nG42 G70 P10 Q20 F0.1\n"
+                + "G40 G00 X100. Z50.\nM30\n").errors());
+        assertEquals("", Run.of("haas", "G20 G99\nT101\nG97 S800 M03\nG00 X2.1 Z0.1\n"
+                + "G71 P1 Q2 U0.02 W0.005 D0.08 F0.01\nN1 G00 X0.8\nG01 Z-0.8\nX1.2\nN2 X2.1\nG00 X4. Z2.\n"
+                + "G42 G00 X2.1 Z0.1\nG70 P1 Q2 F0.005\nG40 G00 X4. Z2.\nM30\n").errors());
+    }
+
+    @Test
+    void aToolOnTheMinusXSideRoughsAsItsMirrorDoes() throws Exception {
+        // a gang lathe's tool on the -X side of the centreline: the program is the +X program with
+        // X negated (and the finishing allowance U toward -X); both rough and finish clean
+        java.nio.file.Path dir = java.nio.file.Files.createTempDirectory("gcnc-gang");
+        java.nio.file.Path gang = dir.resolve("gang.machine");
+        java.nio.file.Files.writeString(gang, java.nio.file.Files.readString(
+                java.nio.file.Path.of("tables/machines/fanuc.machine")).replaceAll("(?m)^x\\.travel = .*$",
+                "x.travel = -215, 215"));
+        gcnc.machine.MachineProfile p = gcnc.machine.ProfileLoader.load(gang.toString(),
+                gcnc.tables.TableSource.builtIn(), Run.TABLES);
+        String plus = "G21 G99\nT0101\nG96 S180 M03\nG50 S2000\nG00 X52. Z2.\n"
+                + "G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 X24. Z-2.\nZ-20.\n"
+                + "G02 X32. Z-24. R4.\nG01 X48.\nN20 Z-40.\nG70 P10 Q20 F0.1\nG00 X100. Z50.\n"
+                + "G72 W2. R0.5\nG72 P30 Q40 U0.4 W0.1 F0.25\nN30 G00 Z-15.\nG01 X60.\nZ-10.\nX30. Z-5.\nX0.\n"
+                + "N40 Z2.\nG00 X100. Z50.\nM30\n";
+        String minus = plus.replaceAll("X([0-9])", "X-$1").replace("U0.4", "U-0.4").replace("G02", "G03");
+        Run pr = Run.of(p, plus.replace("G00 X100. Z50.\nG72", "G00 X82. Z2.\nG72"), Checker.ERROR_CAP);
+        Run mr = Run.of(p, minus.replace("G00 X-100. Z50.\nG72", "G00 X-82. Z2.\nG72"), Checker.ERROR_CAP);
+        assertEquals("", pr.errors());
+        assertEquals("", mr.errors());
+        assertEquals(cutCount(pr), cutCount(mr), "the same passes, mirrored");
+        assertTrue(cutCount(pr) > 10);
+    }
+
+    private static int cutCount(Run r) {
+        int n = 0;
+        for (CheckedBlock b : r.blocks) {
+            n += b.motions().size();
+        }
+        return n;
+    }
+
     /** The point at {@code degrees} on the circle of {@code radius} about X0 Z0 (the angle from +Z toward +X). */
     private static Point at(double radius, double degrees) {
         double a = Math.toRadians(degrees);
