@@ -155,6 +155,21 @@ class ShopAlarmsTest {
     }
 
     @Test
+    void aG70WhosePNamesTheG42BlockBeforeTheContourRunsFromThere() {
+        // N5 G42 sits between the G71 and its contour N10..N20: the G71 passes over it (E644) but
+        // G70 P5 Q20 finds N5 in the program and finishes N5..N20, compensated (was E166)
+        Run r = Run.of("fanuc", "G21 G99\nT0101\nG96 S180 M03\nG50 S2000\nG00 X52. Z2.\n"
+                + "G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN5 G42 G00 X20. Z2.\nN10 G00 X20.\nG01 Z-20.\n"
+                + "X30.\nZ-35.\nN20 X52.\nG70 P5 Q20 F0.1\nG40 G00 X100. Z50.\nM30\n");
+        assertEquals("8:1:warning E644", found(r));
+        assertTrue(r.blocks.stream().anyMatch(b -> b.line() == 8 && !b.motions().isEmpty()), "G70 runs N5");
+        // a P that is nowhere in the program stays the control's alarm (PS0063)
+        assertEquals("14:1:E166", Run.of("fanuc", "G21 G99\nT0101\nG96 S180 M03\nG50 S2000\nG00 X52. Z2.\n"
+                + "G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN5 G42 G00 X20. Z2.\nN10 G00 X20.\nG01 Z-20.\n"
+                + "X30.\nZ-35.\nN20 X52.\nG70 P4 Q20 F0.1\nG40 G00 X100. Z50.\nM30\n").errors().replace("8:1:E644, ", ""));
+    }
+
+    @Test
     void aToolOnTheMinusXSideRoughsAsItsMirrorDoes() throws Exception {
         // a gang lathe's tool on the -X side of the centreline: the program is the +X program with
         // X negated (and the finishing allowance U toward -X); both rough and finish clean
