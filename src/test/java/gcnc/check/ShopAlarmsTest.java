@@ -192,6 +192,12 @@ class ShopAlarmsTest {
         assertEquals("", mr.errors());
         assertEquals(cutCount(pr), cutCount(mr), "the same passes, mirrored");
         assertTrue(cutCount(pr) > 10);
+        // the +X program's U0.4 copied to the -X tool: the control roughs into the part as written
+        // (a wrong sign gouges it): warning E159 on the U, and the cycle is expanded, not refused
+        Run copied = Run.of(p, minus.replace("G00 X-100. Z50.\nG72", "G00 X-82. Z2.\nG72").replace("U-0.4 W0.1 F0.25\nN10",
+                "U0.4 W0.1 F0.25\nN10"), Checker.ERROR_CAP);
+        assertEquals("7:13:warning E159", found(copied));
+        assertTrue(cutCount(copied) > cutCount(mr), "expanded, the passes going the allowance deeper");
     }
 
     private static int cutCount(Run r) {

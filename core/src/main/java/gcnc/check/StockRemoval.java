@@ -60,10 +60,17 @@ final class StockRemoval {
         if (settings == null) {
             return List.of();
         }
-        Roughing.Outcome o = typeTwo(contour, blocks) ? new PocketRoughing(axes, settings).plan(contour)
-                : new Roughing(axes, settings).plan(contour);
+        boolean two = typeTwo(contour, blocks);
+        Roughing.Outcome o = two ? new PocketRoughing(axes, settings).plan(contour) : new Roughing(axes, settings).plan(contour);
+        if (o instanceof Fault f && f.code() == Code.E159_CYCLE_ALLOWANCE_SIGN) {
+            // the control takes U and W with their signs and roughs into the finished shape (the
+            // YASNAC LX3 manual: a wrong sign gouges the workpiece): a warning, and the cycle as written
+            report(f, blocks, false);
+            Roughing.Settings any = settings.withAnySign();
+            o = two ? new PocketRoughing(axes, any).plan(contour) : new Roughing(axes, any).plan(contour);
+        }
         if (o instanceof Fault f) {
-            report(f, blocks);
+            report(f, blocks, true);
             return List.of();
         }
         Roughing.Plan plan = (Roughing.Plan) o;
@@ -134,11 +141,11 @@ final class StockRemoval {
         double perMmDepth = axes == Axes.TURNING ? p.x().countsPerMm() : p.z().countsPerMm();
         double perMmCut = axes == Axes.TURNING ? p.z().countsPerMm() : p.x().countsPerMm();
         return new Roughing.Settings(dx, dz, depthCounts, retractMm * perMmDepth, retractMm * perMmCut,
-                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES, p.control().pocketWalls());
+                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES, p.control().pocketWalls(), false);
     }
 
     /** Reports why a cycle cannot be expanded, where its fault says. */
-    private void report(Fault f, List<RawBlock> blocks) {
+    private void report(Fault f, List<RawBlock> blocks, boolean error) {
         List<Object> args = new ArrayList<>();
         args.add(call.name());
         Span at = call.g().span();
@@ -158,6 +165,10 @@ final class StockRemoval {
             args.add(w != null ? w : f.word());
         }
         args.addAll(f.args());
-        host.out().error(f.code(), at, args.toArray());
+        if (error) {
+            host.out().error(f.code(), at, args.toArray());
+        } else {
+            host.out().report(gcnc.diag.Diagnostic.warning(f.code(), at, args.toArray()));
+        }
     }
 }
