@@ -59,13 +59,6 @@ class ShopAlarmsTest {
     }
 
     @Test
-    void anSAboveTheG50ClampRunsAtTheClamp() {
-        // G50 S2000 then S2500: the control turns the spindle at 2000 r/min, it does not stop
-        assertEquals("6:1:warning E048", found(Run.of("fanuc", FANUC + "G50 S2000\nS2500\nG01 X20. F0.2\nM30\n")));
-        assertEquals("6:1:warning E048", found(Run.of("haas", HAAS + "G50 S2000\nS2500\nG01 X0.5 F0.01\nM30\n")));
-    }
-
-    @Test
     void blocksAfterM30AreOneWarningAndAreNotChecked() {
         // line 7 would be E039 (no F) if it were checked as running: it never runs
         Run r = Run.of("fanuc", FANUC + "M30\nG00 X100. Z50.\nG01 Z-5.\n(a note after the end)\nG00 X0\n");

@@ -11,8 +11,7 @@ import gcnc.ir.Word;
  * Thesis end-of-block operation 7: an S outside a G50 block needs a G50 clamp first (50) on a
  * control whose rule that is (thesis-2004; elsewhere the machine's maximum is the clamp until the
  * program sets one). Under G96 it is the surface speed; otherwise an rpm that may not exceed the
- * G50 clamp (48, which the thesis never raised: it compared volts with rpm, §12.9; a warning, as
- * the control runs the spindle at the clamp, issue 31) nor the
+ * G50 clamp (48, which the thesis never raised: it compared volts with rpm, §12.9) nor the
  * machine's maximum (E119, which names it and the machine; the thesis used 15). Every one of them
  * is the S word's fault, so it is reported at the S word.
  * Emits E048, E050, E119. Writes nothing: the S takes effect in {@code MotionBuilder}, so a block
@@ -45,10 +44,7 @@ public final class Eb07SpindleSpeed implements BlockCheck {
             return;
         }
         if (clamped && s > d.next.rpmClamp) {
-            // the control runs the spindle at the G50 limit (MotionBuilder clamps it too): a
-            // warning (issue 31), not a stop
-            out.report(gcnc.diag.Diagnostic.warning(Code.E048_S_ABOVE_G50, w.span(), w.number(),
-                    NumberText.plain(d.next.rpmClamp)));
+            d.fail(out, Code.E048_S_ABOVE_G50, w.span(), w.number(), NumberText.plain(d.next.rpmClamp));
             return;
         }
         if (s > d.profile.maxRpm()) {
