@@ -25,6 +25,7 @@ import org.junit.jupiter.api.Test;
  */
 class ShopProjectTest {
     private static final String FAULT = "src/main/gcode/o1299-faulty.gcode:6:1: error[E051]";
+    private static final String WARNED = java.util.regex.Pattern.quote("o1201-pin.gcode:10:1: warning[E646]");
 
     @Test
     void theSampleBuildsIsUpToDateTheSecondTimeAndAFaultyProgramFailsAtItsLine() throws Exception {
@@ -46,6 +47,9 @@ class ShopProjectTest {
                     () -> assertTrue(stage.getOrDefault("again", "").contains(":gcncSimulate UP-TO-DATE"), "gcncSimulate up to date"),
                     () -> assertTrue(stage.getOrDefault("faulty", "").contains("BUILD FAILED"), "the faulty build fails"),
                     () -> assertTrue(stage.getOrDefault("faulty", "").contains(FAULT), "at " + FAULT),
+                    // three tasks judge the warned program; Gradle's log shows its warning once (issue 34)
+                    () -> assertEquals(1, stage.getOrDefault("warned", "").split(WARNED, -1).length - 1,
+                            "the warning " + WARNED + " printed once"),
                     () -> assertEquals(0, p.exitValue(), "the script's own verdict"));
         } finally {
             Files.deleteIfExists(log);

@@ -368,9 +368,9 @@ public final class Checker {
         return new Dry(r, d.next.build());
     }
 
-    /** The chamfer or corner word of a contour block read ahead ({@link CornerInsertion#inContour}), or null. */
-    Word cornerInContour(RawBlock b, ModalState from) {
-        return corners.inContour(b, from);
+    /** A cycle's contour with its chamfers and corners made, followed from {@code from} ({@link CornerInsertion#inContour}). */
+    List<RawBlock> cornersInContour(List<RawBlock> blocks, ModalState from) {
+        return corners.inContour(blocks, from);
     }
 
     /** Reports findings of a block checked outside the flow (a contour read ahead), remembering them. */
@@ -384,6 +384,28 @@ public final class Checker {
 
     Diagnostics out() {
         return out;
+    }
+
+    /**
+     * A block refused for one word that is not part of its move (the thesis's R on a G01): when
+     * the block without it ({@code fixed}) is sound, the state it would leave is taken, as if the
+     * programmer had fixed what was reported, and true (the caller reports the error; the block
+     * itself is not run). False, nothing changed, when {@code fixed} has errors of its own.
+     */
+    boolean takeFixed(RawBlock fixed) {
+        BlockDraft d = draft.start(fixed, state, false);
+        Diagnostics none = new Diagnostics();
+        if (!words(d, none, false) || motions.build(d, none) == null) {
+            return false;
+        }
+        // as a block whose move failed (recover): its motion G and its end point, nothing else of it
+        state = Salvage.moved(fixed, state, d, functions, profile);
+        return true;
+    }
+
+    /** Whether the C axis is engaged (after a C-axis option code): C is then an axis word, not a chamfer. */
+    boolean cAxisOn() {
+        return advisories.cAxisOn();
     }
 
     /** The cycle whose contour is being read ("G71"), or null. */

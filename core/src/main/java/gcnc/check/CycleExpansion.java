@@ -432,12 +432,14 @@ final class CycleExpansion {
         CycleCall call = p.call;
         ModalState start = host.state();
         stored.remove(key(call));
-        Stored rejected = new Stored(List.copyOf(p.blocks), List.copyOf(p.before), null, 0, call.name(), p.line);
+        // the contour as the control follows it: its chamfers and corners made (G70 runs these blocks too)
+        List<RawBlock> blocks = p.rejected ? p.blocks : host.cornersInContour(p.blocks, start);
+        Stored rejected = new Stored(List.copyOf(blocks), List.copyOf(p.before), null, 0, call.name(), p.line);
         stored.put(key(call), rejected); // until the contour is known good: a G70 over it does nothing
         if (p.rejected) {
             return List.of();
         }
-        List<Contour.Piece> pieces = contours.follow(call, p.line, p.blocks, start);
+        List<Contour.Piece> pieces = contours.follow(call, p.line, blocks, start);
         if (pieces == null || p.broken) {
             return List.of();
         }
@@ -456,7 +458,7 @@ final class CycleExpansion {
         if (call.kind() == GRole.PATTERN_CYCLE) {
             return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
         }
-        return new StockRemoval(host, call, p.line).expand(contour, p.blocks, start, firstBlock, lead);
+        return new StockRemoval(host, call, p.line).expand(contour, blocks, start, firstBlock, lead);
     }
 
     /**

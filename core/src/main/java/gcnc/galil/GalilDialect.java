@@ -150,6 +150,12 @@ final class GalilDialect implements Dialect {
     }
 
     private BlockWriter writer;
+
+    /** Goes on writing with {@code w} (its block's writer), after trip points written for earlier blocks in between. */
+    void resume(BlockWriter w) {
+        writer = w;
+    }
+
     /** The writer of the last sequence begun: a sequence that goes on is written on by it. */
     private GroupWriter sequence;
     /** A multi-motion group is being written: its blocks after the first get no gline=<line> (MachineCode). */

@@ -24,7 +24,10 @@ import java.util.function.Consumer;
  * from the previous trip point of the sequence (from its start for the first), since Galil measures it
  * "from the start of a coordinated move sequence or from the last AV command" (command reference AV;
  * DMC-40x0 User Manual p.86, "After Relative Vector distance"); the distances of a sequence add up to
- * its last trip point, never past the path's end (docs/galil.md, "Set on the way");
+ * its last trip point, never past the path's end (docs/galil.md, "Set on the way"); after {@code VE}
+ * and {@code BGS} for a sequence that fits the buffer, and in one fed while it runs also before each
+ * wait for room, for the trip points {@link #TRIP_LEAD} segments inside the buffer by then (the VM
+ * reference lets segments be given during the motion; AV waits on the path while they run);
  * {@code AMS} with the reason the machine stops there. Speeds are even, 2 or more (Galil's
  * resolution for {@code <} and {@code >}), rounded down, never up.
  */
@@ -74,6 +77,19 @@ final class GroupWriter {
     private boolean begun;
     private java.util.List<Piece> onTheWay = new java.util.ArrayList<>();
     private java.util.List<Double> at = new java.util.ArrayList<>();
+    /** The segment each trip point's motion starts with (0 for the sequence's first), and how many trip points are written. */
+    private java.util.List<Integer> atSegment = new java.util.ArrayList<>();
+    private int tripsWritten;
+    /** The last trip point written, counts from the sequence's start; -1 before the first. */
+    private long tripped;
+    /**
+     * How far inside the buffer a trip point's segment must be before its {@code AV} is written in a
+     * sequence fed while it runs: the program waits there until the path reaches it, and does not feed
+     * meanwhile, so the buffer then still holds at least this many segments after it; written before
+     * the next wait for room, the trip point is still ahead of the path (at most 510 segments are in the
+     * buffer, so the path is at least 210 behind it when the program runs as fast as the motion needs).
+     */
+    static final int TRIP_LEAD = BATCH;
 
     GroupWriter(GalilDialect dialect, Consumer<Instruction> sink) {
         this.d = dialect;
@@ -97,9 +113,13 @@ final class GroupWriter {
             // that measures after many that do not must not meet another list type in compiled code)
             onTheWay = new java.util.ArrayList<>();
             at = new java.util.ArrayList<>();
+            atSegment = new java.util.ArrayList<>();
+            tripsWritten = 0;
+            tripped = -1;
         }
         int n = g.pieces().size();
-        measuring = g.onTheWay();
+        // a sequence in windows is measured throughout: a trip point in a later window counts the path before it
+        measuring = g.onTheWay() || g.continues() || g.goesOn();
         for (int k = 0; k < n; k++) {
             Piece p = g.pieces().get(k);
             CheckedBlock b = p.block();
@@ -120,6 +140,7 @@ final class GroupWriter {
             if (p.onTheWay()) {
                 onTheWay.add(p);
                 at.add(along);
+                atSegment.add(segments);
             }
             if (m instanceof Motion.Arc a) {
                 along += arc(b, a, u0, v0, speeds, out);
@@ -141,9 +162,18 @@ final class GroupWriter {
         if (!begun) {
             out.emit(new Command.BeginSequence()); // the whole sequence fitted the buffer: started after VE
         }
-        BlockWriter out = this.out;
-        long tripped = -1; // the last trip point written, counts from the sequence's start; -1 before the first
-        for (int i = 0; i < onTheWay.size(); i++) {
+        BlockWriter out = trips(Integer.MAX_VALUE, this.out);
+        out.emit(new Command.AwaitSequence(g.stop()));
+    }
+
+    /**
+     * Writes the trip points not yet written whose motions start at segment {@code upTo} or before,
+     * each {@code AV} relative to the last; returns the writer the last command went to ({@code out}
+     * when none is written).
+     */
+    private BlockWriter trips(int upTo, BlockWriter out) {
+        for (; tripsWritten < onTheWay.size() && atSegment.get(tripsWritten) <= upTo; tripsWritten++) {
+            int i = tripsWritten;
             Piece p = onTheWay.get(i);
             long trip = (long) Math.floor(at.get(i));
             BlockWriter w = d.writer(p.block(), sink);
@@ -169,7 +199,7 @@ final class GroupWriter {
             }
             out = w;
         }
-        out.emit(new Command.AwaitSequence(g.stop()));
+        return out;
     }
 
     /**
@@ -184,6 +214,11 @@ final class GroupWriter {
             if (!begun) {
                 out.emit(new Command.BeginSequence());
                 begun = true;
+            }
+            // the trip points well inside the buffer, while it runs: the path reaches them before the
+            // buffer could run dry (TRIP_LEAD), and the outputs switch where the path is
+            if (trips(segments - TRIP_LEAD, out) != out) {
+                d.resume(out); // the segments go on in their own block's writer
             }
             d.awaitBuffer(BATCH + 1, out);
         }

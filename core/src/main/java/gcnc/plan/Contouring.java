@@ -32,10 +32,10 @@ import java.util.function.Consumer;
  * their last exit speed is one the machine can still stop from over the pieces still held, so the
  * next window, whatever joins it, can always stop (Grbl's planner: a look-ahead of N blocks, the
  * newest planned to rest). Also at most {@link #MAX_LENGTH} counts of path in a sequence (the
- * controller refuses one longer than 2^31, TC 31). A sequence that sets something on the way keeps
- * within one buffer fill ({@link #ON_THE_WAY_PIECES}, reason {@link Stop#ON_THE_WAY}): its trip points
- * wait after {@code VE}. A straight move longer than one VP segment may be ({@link SegmentLimit}) is
- * held as equal pieces, all in the same sequence.</li>
+ * controller refuses one longer than 2^31, TC 31). A sequence that sets something on the way is as long
+ * as any other: the emitter writes each trip point ({@code AV}) while the buffer is fed, once its segment
+ * is well inside the buffer (GroupWriter). A straight move longer than one VP segment may be
+ * ({@link SegmentLimit}) is held as equal pieces, all in the same sequence.</li>
  * <li><b>Speeds.</b> A motion's speed is its feed (the rapid speed for a rapid), an arc's at most
  * √(a·r) so that its centripetal acceleration stays within the machine's. A corner's speed is the
  * junction-deviation speed √(a·δ·sin(θ/2)/(1−sin(θ/2))) (θ the angle between the two directions,
@@ -56,11 +56,6 @@ public final class Contouring implements Planner {
      * (a piece is at most two segments: a window is at most 512 segments, about one buffer).
      */
     public static final int WINDOW = 256;
-    /**
-     * The most pieces of a sequence that sets something on the way (each at most two segments: 510
-     * of the 511 buffer slots, all given before {@code BGS}, VE in the last).
-     */
-    public static final int ON_THE_WAY_PIECES = 255;
     /** The longest sequence, counts (TC 31 is past 2^31; half of it leaves room for rounding). */
     public static final double MAX_LENGTH = 1L << 30;
     /** A corner slower than this (counts/s) is a reversal: Galil's slowest segment speed is 2. */
@@ -97,8 +92,6 @@ public final class Contouring implements Planner {
      */
     private boolean continuing;
     private double carried;
-    /** Whether the piece {@link #joins} is asked about sets something on the way (its caller says). */
-    private boolean onTheWayNext;
 
     Contouring(MachineProfile profile, Blending blending) {
         this.profile = profile;
@@ -153,7 +146,6 @@ public final class Contouring implements Planner {
             // a straight move longer than one VP takes: equal pieces, one after the other (SegmentLimit)
             int n = m instanceof Motion.Linear ? limit.parts(p.length()) : 1;
             if (!paths.isEmpty()) {
-                onTheWayNext = onTheWay || !pending.isEmpty() || !own.isEmpty();
                 Stop stop = joins(b, p, n);
                 if (stop != null) {
                     flush(stop, out);
@@ -168,7 +160,7 @@ public final class Contouring implements Planner {
             own = List.of();
             for (int k = 0; k < n; k++) {
                 hold(b, i, n == 1 ? p : p.part(n), onTheWay && k == 0, k == 0 ? here : List.of(), k, n);
-                if (paths.size() >= 2 * WINDOW && !heldOnTheWay) {
+                if (paths.size() >= 2 * WINDOW) {
                     handOn(out);
                 }
             }
@@ -268,7 +260,6 @@ public final class Contouring implements Planner {
         if (p.length() < 0.5) {
             return paths.get(paths.size() - 1).rapid() != p.rapid() ? Stop.RAPID_FEED : null;
         }
-        onTheWayNext = true; // asked for a block that would set something as the tool reaches it
         return joins(b, p, m instanceof Motion.Linear ? limit.parts(p.length()) : 1);
     }
 
@@ -321,10 +312,6 @@ public final class Contouring implements Planner {
         }
         if (!java.util.Objects.equals(blocks.get(blocks.size() - 1).origin().file(), b.origin().file())) {
             return Stop.CALL;
-        }
-        // (a piece on the way is the one about to be held with spindle or switches: asked by the caller)
-        if ((heldOnTheWay || onTheWayNext) && (continuing || paths.size() + n > ON_THE_WAY_PIECES)) {
-            return Stop.ON_THE_WAY;
         }
         if (length + p.length() > MAX_LENGTH) {
             return Stop.LENGTH;
@@ -414,6 +401,10 @@ public final class Contouring implements Planner {
             System.arraycopy(spindles, k, spindles, 0, left);
             System.arraycopy(parts, k, parts, 0, left);
             System.arraycopy(partCounts, k, partCounts, 0, left);
+            heldOnTheWay = false; // of the pieces still held (a window handed on took its own)
+            for (int i = 0; i < left; i++) {
+                heldOnTheWay |= spindles[i] || !switchesAt.get(i).isEmpty();
+            }
         }
         return g;
     }

@@ -25,12 +25,6 @@ public enum Stop {
     RAPID_FEED("rapid-feed"),
     /** The path turns back on itself: a corner no speed above zero can take. */
     REVERSAL("reversal"),
-    /**
-     * The sequence sets something on the way ({@code AV} trip points, written after {@code VE}) and
-     * holds as many motions as the buffer takes before {@code BGS} ({@link Contouring#ON_THE_WAY_PIECES}):
-     * such a sequence is not fed while it runs (docs/galil.md, "Continuous contouring").
-     */
-    ON_THE_WAY("on-the-way"),
     /** The sequence's total length reached the controller's limit. */
     LENGTH("length"),
     /** A program stop (M00; M01 with the optional stop switch on): the machine waits for the operator at rest. */

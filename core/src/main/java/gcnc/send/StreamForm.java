@@ -284,6 +284,7 @@ public final class StreamForm implements Form {
                     Thread.sleep(pollMs);
                     operator();
                 }
+                starved(s); // a fed sequence that ran dry while the host waited: no output switches after it
             } else if (cmd instanceof Command.Call call && call.label().equals(StreamSplit.BUFFER_WAIT)) {
                 // the program form's wait for room (JS #LMWAIT): the host polls _LMS itself, every pollMs,
                 // until the next batch and VE fit (gclib's vector example reads _LMS every 100 ms)

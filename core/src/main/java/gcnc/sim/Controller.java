@@ -182,6 +182,7 @@ final class Controller {
     void startBegun() {
         if (begun) {
             startSequence();
+            runDeferred();
         }
     }
 
@@ -206,10 +207,50 @@ final class Controller {
     void run(Instruction i) {
         this.instruction = i;
         this.line = i.source().line();
-        if (begun && !fed && !(i.command() instanceof Command.Call c && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT))) {
+        Command cmd = i.command();
+        boolean wait = cmd instanceof Command.Call c && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT);
+        if (begun && (cmd instanceof Command.AfterVector || deferring && !wait && !joinsRunning(cmd))) {
+            // a trip point of the sequence running and what it sets (GroupWriter writes them while it is
+            // fed): run after the sequence, which the replay runs whole at its VE
+            deferred.add(i);
+            deferring = true;
+            return;
+        }
+        deferring = false;
+        if (begun && !fed && !wait) {
             handWrittenBegin(); // any command but the wait for room after a BGS before VE: it started there
         }
-        i.command().accept(step);
+        cmd.accept(step);
+    }
+
+    /** A command that goes on with the sequence begun: a segment, its VE, the end of the wait. */
+    private static boolean joinsRunning(Command c) {
+        return c instanceof Command.VectorPosition || c instanceof Command.CircularArc || c instanceof Command.VectorEnd
+                || c instanceof Command.AwaitSequence;
+    }
+
+    /**
+     * The trip points (AV) given while a sequence begun before its VE is fed, with the commands after
+     * each (the outputs it switches): run once the sequence is replayed, in order, as those after VE.
+     */
+    private final List<Instruction> deferred = new ArrayList<>();
+    private boolean deferring;
+
+    /** Runs the trip points deferred while the sequence was fed, after the replay of the sequence. */
+    private void runDeferred() {
+        if (deferred.isEmpty()) {
+            return;
+        }
+        List<Instruction> now = new ArrayList<>(deferred);
+        deferred.clear();
+        Instruction was = instruction;
+        for (Instruction d : now) {
+            this.instruction = d;
+            this.line = d.source().line();
+            d.command().accept(step);
+        }
+        this.instruction = was;
+        this.line = was.source().line();
     }
 
     /** The instruction being run and its G-code line, for the findings about it. */
@@ -318,6 +359,7 @@ final class Controller {
             if (!afterEnd()) {
                 if (begun) {
                     startSequence(); // a sequence fed while it ran: its last segment came before this VE
+                    runDeferred();
                 } else {
                     vectorEnded = true;
                 }
@@ -343,6 +385,7 @@ final class Controller {
         public Void awaitSequence(Command.AwaitSequence c) {
             if (begun) {
                 startSequence(); // (a hand-written BGS without VE: replayed as it stands)
+                runDeferred();
             }
             if (!afterEnd() && c.why() != null) {
                 out.stopped(c.why(), line);
@@ -638,6 +681,7 @@ final class Controller {
     private void handWrittenBegin() {
         if (begun && !fed) {
             startSequence();
+            runDeferred(); // (AV after a hand-written BGS measures the sequence as it stood)
         }
     }
 

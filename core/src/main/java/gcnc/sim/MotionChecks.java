@@ -224,6 +224,11 @@ final class MotionChecks {
 
     private int programStops;
 
+    /** The cycle clock so far: what {@link SimReport#cycleSeconds} will say of the lines replayed up to now. */
+    double seconds() {
+        return seconds;
+    }
+
     void dwell(double s) {
         seconds += s;
         terms.time(tool, s);
