@@ -1,9 +1,7 @@
 package gcnc.gradle;
 
+import gcnc.Compiler;
 import gcnc.Session;
-import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
-import gcnc.diag.Span;
 import gcnc.tables.TableException;
 import java.io.File;
 import java.io.IOException;
@@ -18,6 +16,7 @@ import org.gradle.api.tasks.Input;
 import org.gradle.api.tasks.InputFiles;
 import org.gradle.api.tasks.Internal;
 import org.gradle.api.tasks.Optional;
+import org.gradle.api.tasks.OutputDirectory;
 import org.gradle.api.tasks.OutputFile;
 import org.gradle.api.tasks.PathSensitive;
 import org.gradle.api.tasks.PathSensitivity;
@@ -36,9 +35,7 @@ public abstract class GcncTask extends DefaultTask {
     public record Program(File file, String relativePath, String shown) {
         /** The relative path with {@code extension} in place of the program's own. */
         String withExtension(String extension) {
-            int slash = relativePath.lastIndexOf('/');
-            int dot = relativePath.lastIndexOf('.');
-            return (dot > slash ? relativePath.substring(0, dot) : relativePath) + extension;
+            return GcncTask.withExtension(relativePath, extension);
         }
 
         /** The program's text, decoded as every gcnc front end decodes it. */
@@ -113,11 +110,25 @@ public abstract class GcncTask extends DefaultTask {
         return new File(getReportsDir(), getName() + extension);
     }
 
+    /**
+     * The task's results kept between runs: one file per program and the call graph
+     * ({@link ResultStore}). An output, so the build cache restores it with the reports.
+     */
+    @OutputDirectory
+    public File getResultsDir() {
+        return new File(getProject().getBuildDir(), "gcnc-results/" + getName());
+    }
+
+    /** gcnc's version: a result of another gcnc is not taken from the build cache. */
+    @Input
+    public String getGcncVersion() {
+        return Findings.version();
+    }
+
     @TaskAction
     public void run() {
         Session session = open();
         Findings findings = new Findings(session, getLogger(), settings.printed);
-        begin();
         List<Program> programs = programs();
         List<File> skipped = settings.skipped();
         if (!skipped.isEmpty()) {
@@ -126,20 +137,19 @@ public abstract class GcncTask extends DefaultTask {
                     getName(), plural(skipped.size(), "file"), String.join(", .", settings.getExtensions()),
                     skipped.stream().map(f -> shown(getProject().getRootDir(), f)).toList());
         }
-        for (Program p : programs) {
-            try {
-                process(session, p, findings);
-            } catch (IOException e) {
-                findings.report(p.shown(), Diagnostic.error(Code.E500_IO, Span.of(1, 1),
-                        gcnc.diag.Phrase.IO_CANNOT_READ_OR_WRITE.arg(), gcnc.diag.Phrase.reason(e)));
-            }
-        }
+        LibraryRun library;
         try {
-            finish(programs);
+            library = LibraryRun.judge(this, session, programs, findings);
+            finish(programs, library.outcomes());
             findings.write(getJsonReport(), getSarifReport());
             findings.writeHtml(getHtmlReport(), getName(), programs);
+            library.keep();
         } catch (IOException e) {
             throw new GradleException(getName() + ": cannot write the reports under " + getReportsDir() + ": " + reason(e));
+        }
+        if (library.kept() > 0) {
+            getLogger().lifecycle("{}: {} judged again (changed, new, or calling a file that changed), {} kept from the last run",
+                    getName(), plural(library.judged(), "program"), library.kept());
         }
         if (findings.errors() > 0) {
             String failed = String.format(Locale.ROOT, "%s: %s in %s of %s; see the report at %s",
@@ -156,15 +166,34 @@ public abstract class GcncTask extends DefaultTask {
                 findings.waived() == 0 ? "" : ", " + findings.waived() + " waived", getReportsDir());
     }
 
-    /** Before the first program: e.g. clear the outputs of an earlier run. */
-    protected void begin() {
+    /** Every output of an earlier run, before all programs are judged afresh. */
+    protected void clearOutputs() {
     }
 
-    /** What the task does with one program; findings go to {@code findings}. */
-    protected abstract void process(Session session, Program program, Findings findings) throws IOException;
+    /** The outputs of one program of an earlier run, before it is judged again or after it was removed. */
+    protected void clearOutputs(String relativePath) throws IOException {
+    }
 
-    /** After the last program: e.g. a summary of them all. */
-    protected void finish(List<Program> programs) throws IOException {
+    /**
+     * What the task does with one program: its findings and the task's own lines about it
+     * ({@link #outcome}). Called on several threads at once, one program each.
+     */
+    protected abstract Outcome process(Session session, Program program) throws IOException;
+
+    /** After the last program, with every program's outcome in the programs' order: e.g. a summary of them all. */
+    protected void finish(List<Program> programs, List<Outcome> outcomes) throws IOException {
+    }
+
+    /** The outcome of a gcnc run over a program, every file named relative to the root project. */
+    protected Outcome outcome(Compiler.Result r, List<String> extra) {
+        File root = getProject().getRootDir();
+        return new Outcome(Outcome.relocated(r.diagnostics().sorted(), f -> shown(root, new File(f))),
+                r.calledFiles().stream().map(f -> shown(root, f.toFile())).toList(), extra);
+    }
+
+    /** The settings, for {@link LibraryRun}'s fingerprint. */
+    GcncExtension settings() {
+        return settings;
     }
 
     private Session open() {
@@ -203,7 +232,7 @@ public abstract class GcncTask extends DefaultTask {
         return GcncExtension.isPath(nameOrPath) ? getProject().file(nameOrPath).getAbsolutePath() : nameOrPath;
     }
 
-    private List<Program> programs() {
+    List<Program> programs() {
         List<Program> list = new ArrayList<>();
         File root = getProject().getRootDir();
         getPrograms().visit(d -> {
@@ -216,10 +245,17 @@ public abstract class GcncTask extends DefaultTask {
     }
 
     /** A program's path relative to the root project (where CI runs and SARIF's %SRCROOT% is), else absolute. */
-    private static String shown(File root, File f) {
+    static String shown(File root, File f) {
         java.nio.file.Path r = root.toPath().toAbsolutePath().normalize();
         java.nio.file.Path p = f.toPath().toAbsolutePath().normalize();
         return p.startsWith(r) ? r.relativize(p).toString().replace(File.separatorChar, '/') : p.toString();
+    }
+
+    /** {@code relativePath} with {@code extension} in place of the program's own. */
+    static String withExtension(String relativePath, String extension) {
+        int slash = relativePath.lastIndexOf('/');
+        int dot = relativePath.lastIndexOf('.');
+        return (dot > slash ? relativePath.substring(0, dot) : relativePath) + extension;
     }
 
     static String reason(IOException e) {
