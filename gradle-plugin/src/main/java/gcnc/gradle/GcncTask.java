@@ -57,6 +57,32 @@ public abstract class GcncTask extends DefaultTask {
         return settings.getPrograms().getAsFileTree();
     }
 
+    /**
+     * The files a call can read beside a program ({@code O1000.nc}, {@code 1000.nc}: gcnc.flow.Library's
+     * names) that are not among the programs: editing one judges its callers again, as editing a program does.
+     */
+    @InputFiles
+    @PathSensitive(PathSensitivity.RELATIVE)
+    public FileCollection getCalledFiles() {
+        java.util.Set<File> programs = new java.util.HashSet<>(getPrograms().getFiles());
+        java.util.Set<File> folders = new java.util.TreeSet<>();
+        programs.forEach(f -> folders.add(f.getAbsoluteFile().getParentFile()));
+        List<File> called = new ArrayList<>();
+        for (File folder : folders) {
+            File[] files = folder.listFiles((dir, name) -> CALLED_NAME.matcher(name).matches());
+            for (File f : files == null ? new File[0] : files) {
+                if (f.isFile() && !programs.contains(f)) {
+                    called.add(f);
+                }
+            }
+        }
+        called.sort(null);
+        return getProject().files(called.toArray());
+    }
+
+    /** The names a call looks for beside its program (gcnc.flow.Library: O1000.nc, 1000.nc, O0100.nc). */
+    static final java.util.regex.Pattern CALLED_NAME = java.util.regex.Pattern.compile("O?[0-9]+\\.nc");
+
     /** How the reports name the programs (relative to the root project): moving the tree runs the task again. */
     @Input
     public List<String> getProgramNames() {
@@ -149,7 +175,8 @@ public abstract class GcncTask extends DefaultTask {
         }
         if (library.kept() > 0) {
             getLogger().lifecycle("{}: {} judged again (changed, new, or calling a file that changed), {} kept from the last run",
-                    getName(), plural(library.judged(), "program"), library.kept());
+                    getName(), plural(library.judged().size(), "program"), library.kept());
+            getLogger().info("{}: judged again: {}", getName(), String.join(", ", library.judged()));
         }
         if (findings.errors() > 0) {
             String failed = String.format(Locale.ROOT, "%s: %s in %s of %s; see the report at %s",

@@ -41,10 +41,10 @@ final class LibraryRun {
     private final String fingerprint;
     private final List<ResultStore.Entry> entries;
     private final List<Outcome> outcomes;
-    private final int judged;
+    private final List<String> judged;
 
     private LibraryRun(ResultStore store, String fingerprint, List<ResultStore.Entry> entries, List<Outcome> outcomes,
-                       int judged) {
+                       List<String> judged) {
         this.store = store;
         this.fingerprint = fingerprint;
         this.entries = entries;
@@ -80,6 +80,8 @@ final class LibraryRun {
             }
             List<ResultStore.Entry> entries = new ArrayList<>(programs.size());
             List<Outcome> outcomes = new ArrayList<>(programs.size());
+            List<String> judged = new ArrayList<>();
+            todo.forEach(p -> judged.add(p.shown()));
             int next = 0;
             for (int k = 0; k < programs.size(); k++) {
                 GcncTask.Program p = programs.get(k);
@@ -88,13 +90,21 @@ final class LibraryRun {
                     o = done(running.get(next++));
                     store.write(p.shown(), o);
                 } else {
-                    o = store.read(p.shown());
+                    try {
+                        o = store.read(p.shown());
+                    } catch (IOException broken) {
+                        // a result file that cannot be read (edited, cut short): the program is judged again
+                        o = judgeOne(task, session, p);
+                        store.write(p.shown(), o);
+                        judged.add(p.shown());
+                    }
                 }
                 findings.report(p.shown(), o.diagnostics());
                 outcomes.add(o);
                 entries.add(new ResultStore.Entry(p.shown(), p.relativePath(), hashes.get(k), o.calls()));
             }
-            return new LibraryRun(store, fingerprint, entries, outcomes, todo.size());
+            calledFiles(task, entries);
+            return new LibraryRun(store, fingerprint, entries, outcomes, judged);
         } finally {
             pool.shutdownNow();
         }
@@ -119,7 +129,15 @@ final class LibraryRun {
                 touched.add(programs.get(k).shown());
             }
         }
+        File root = task.getProject().getRootDir();
         for (ResultStore.Entry e : last.get().values()) {
+            if (e.relativePath() == null) {
+                // a called file that is not a program: touched when its content changed, it appeared or went
+                if (!e.hash().equals(ResultStore.hash(root.toPath().resolve(e.shown())))) {
+                    touched.add(e.shown());
+                }
+                continue;
+            }
             if (!all.contains(e.shown())) {
                 touched.add(e.shown());
                 store.remove(e.shown());
@@ -134,6 +152,23 @@ final class LibraryRun {
             }
         }
         return again;
+    }
+
+    /**
+     * Index entries (without a path under the program tree) for the files the calls looked for that
+     * are not programs, with their content's hash ("none": not there), so that the next run sees them change.
+     */
+    private static void calledFiles(GcncTask task, List<ResultStore.Entry> entries) throws IOException {
+        Set<String> programs = new HashSet<>();
+        entries.forEach(e -> programs.add(e.shown()));
+        Set<String> called = new java.util.TreeSet<>();
+        entries.forEach(e -> called.addAll(e.calls()));
+        Path root = task.getProject().getRootDir().toPath();
+        for (String c : called) {
+            if (!programs.contains(c)) {
+                entries.add(new ResultStore.Entry(c, null, ResultStore.hash(root.resolve(c)), List.of()));
+            }
+        }
     }
 
     /** One program, judged with its calls looked for beside it (as the command line does); an unreadable one is E500 at 1:1. */
@@ -214,14 +249,14 @@ final class LibraryRun {
         return outcomes;
     }
 
-    /** How many programs this run judged. */
-    int judged() {
+    /** The programs this run judged, in their order. */
+    List<String> judged() {
         return judged;
     }
 
     /** How many programs' results were kept from the last run. */
     int kept() {
-        return outcomes.size() - judged;
+        return outcomes.size() - judged.size();
     }
 
     /** Writes the call graph and hashes for the next run: after the reports, so a run that failed writing them leaves none. */

@@ -79,7 +79,7 @@ final class ResultStore {
     void writeIndex(String fingerprint, List<Entry> entries) throws IOException {
         StringBuilder s = new StringBuilder(INDEX_HEAD).append('\n').append("fingerprint\t").append(fingerprint).append('\n');
         for (Entry e : entries) {
-            List<String> f = new ArrayList<>(List.of("program", e.shown(), e.relativePath(), e.hash()));
+            List<String> f = new ArrayList<>(java.util.Arrays.asList("program", e.shown(), e.relativePath(), e.hash()));
             f.addAll(e.calls());
             s.append(line(f)).append('\n');
         }
@@ -149,20 +149,24 @@ final class ResultStore {
         return folder.resolve("programs").resolve(relative + ".result");
     }
 
+    /** finding, code, severity, line, column, end column, waiver, origin file, how many arguments, the arguments, then 4 fields a call. */
     private static Diagnostic diagnostic(List<String> f) {
-        int args = Integer.parseInt(f.get(9));
+        int args = Integer.parseInt(f.get(8));
         List<Origin.Call> calls = new ArrayList<>();
-        for (int k = 10 + args; k + 3 < f.size(); k += 4) {
+        for (int k = 9 + args; k + 3 < f.size(); k += 4) {
             calls.add(new Origin.Call(f.get(k), Integer.parseInt(f.get(k + 1)), f.get(k + 2), f.get(k + 3)));
         }
-        Origin origin = f.get(8) == null && calls.isEmpty() ? Origin.PROGRAM : new Origin(f.get(8), calls);
+        Origin origin = f.get(7) == null && calls.isEmpty() ? Origin.PROGRAM : new Origin(f.get(7), calls);
         return new Diagnostic(Code.valueOf(f.get(1)), Severity.valueOf(f.get(2)),
                 new Span(Integer.parseInt(f.get(3)), Integer.parseInt(f.get(4)), Integer.parseInt(f.get(5))),
-                f.subList(10, 10 + args), origin, f.get(7));
+                f.subList(9, 9 + args), origin, f.get(6));
     }
 
     /** The SHA-256 of a file's bytes, in hex. */
     static String hash(Path file) throws IOException {
+        if (!Files.isRegularFile(file)) {
+            return Files.exists(file) ? "not a file" : "none";
+        }
         MessageDigest sha = sha256();
         byte[] buffer = new byte[1 << 14];
         try (InputStream in = Files.newInputStream(file)) {
