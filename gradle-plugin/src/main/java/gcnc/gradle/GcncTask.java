@@ -24,11 +24,15 @@ import org.gradle.api.tasks.SkipWhenEmpty;
 import org.gradle.api.tasks.TaskAction;
 
 /**
- * What the three gcnc tasks share: their inputs (the programs, the machine, the control, the
- * tables and any file among them), one gcnc session for the run, every program in turn, and the
- * run's findings, printed GCC-style as they come and written at the end as one JSON and one SARIF
- * report under build/reports/gcnc/. Any error fails the task, after every program was looked at.
- * Since inputs and outputs are declared, a second run with nothing changed is UP-TO-DATE.
+ * What the three gcnc tasks share: their inputs (the programs, the files their calls can read beside
+ * them, the machine, the control, the tables and any file among them, gcnc's version), one gcnc
+ * session for the run, the programs judged on a pool of threads and only those that changed or call
+ * a file that changed ({@link LibraryRun}; the others' results kept in {@link #getResultsDir}), and
+ * the run's findings, printed GCC-style in the programs' order and written at the end as one JSON and
+ * one SARIF report under build/reports/gcnc/. Any error fails the task, after every program was looked
+ * at. Since inputs and outputs are declared, a second run with nothing changed is UP-TO-DATE, and the
+ * subclasses are {@code @CacheableTask}: every input is named relative to the project, so another
+ * clone with the same build cache takes the outputs FROM-CACHE.
  */
 public abstract class GcncTask extends DefaultTask {
     /** One part program: the file, its path under the program tree (for outputs), and how findings name it. */
@@ -166,10 +170,12 @@ public abstract class GcncTask extends DefaultTask {
         LibraryRun library;
         try {
             library = LibraryRun.judge(this, session, programs, findings);
+            long t = System.nanoTime();
             finish(programs, library.outcomes());
             findings.write(getJsonReport(), getSarifReport());
             findings.writeHtml(getHtmlReport(), getName(), programs);
             library.keep();
+            getLogger().info("{}: reports and index {} s", getName(), LibraryRun.seconds(System.nanoTime() - t));
         } catch (IOException e) {
             throw new GradleException(getName() + ": cannot write the reports under " + getReportsDir() + ": " + reason(e));
         }

@@ -55,6 +55,7 @@ final class LibraryRun {
     /** Every program's outcome, reported to {@code findings} in the programs' order. */
     static LibraryRun judge(GcncTask task, Session session, List<GcncTask.Program> programs, Findings findings)
             throws IOException {
+        long t0 = System.nanoTime();
         ResultStore store = new ResultStore(task.getResultsDir().toPath());
         String fingerprint = fingerprint(task);
         Optional<Map<String, ResultStore.Entry>> last = store.index(fingerprint);
@@ -63,6 +64,7 @@ final class LibraryRun {
             hashes.add(ResultStore.hash(p.file().toPath()));
         }
         Set<String> again = again(task, store, programs, hashes, last);
+        long t1 = System.nanoTime();
         store.forgetIndex();
         List<GcncTask.Program> todo = new ArrayList<>();
         for (GcncTask.Program p : programs) {
@@ -104,6 +106,10 @@ final class LibraryRun {
                 entries.add(new ResultStore.Entry(p.shown(), p.relativePath(), hashes.get(k), o.calls()));
             }
             calledFiles(task, entries);
+            // where the time of a run over a large library goes (docs/gradle-plugin.md, the benchmark)
+            task.getLogger().info("{}: hashes and call graph {} s; {} judged and {} kept results read {} s",
+                    task.getName(), seconds(t1 - t0), judged.size(), programs.size() - judged.size(),
+                    seconds(System.nanoTime() - t1));
             return new LibraryRun(store, fingerprint, entries, outcomes, judged);
         } finally {
             pool.shutdownNow();
@@ -234,6 +240,10 @@ final class LibraryRun {
         } catch (java.net.URISyntaxException | RuntimeException e) {
             return "unknown";
         }
+    }
+
+    static String seconds(long nanos) {
+        return String.format(java.util.Locale.ROOT, "%.2f", nanos / 1e9);
     }
 
     private static java.util.concurrent.ThreadFactory daemons(String task) {
