@@ -60,7 +60,7 @@ echo "== stage clean"
 run "$work/clean" check gcncCompile gcncSimulate || fail "the clean sample did not build"
 for p in o1201-pin o1202-spacer ops/o1203-groove; do
     [ -s "$work/clean/build/gcnc/$p.dmc" ] && [ -s "$work/clean/build/gcnc/$p.dmc.map" ] || fail "no build/gcnc/$p.dmc(.map)"
-    for x in svg html; do
+    for x in svg html png; do
         [ -s "$work/clean/build/reports/gcnc/gcncSimulate/$p.$x" ] || fail "no build/reports/gcnc/gcncSimulate/$p.$x"
     done
 done

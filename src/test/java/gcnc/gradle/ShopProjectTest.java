@@ -26,6 +26,7 @@ import org.junit.jupiter.api.Test;
  */
 class ShopProjectTest {
     private static final String FAULT = "src/main/gcode/o1299-faulty.gcode:6:1: error[E051]";
+    private static final String WARNED = java.util.regex.Pattern.quote("o1201-pin.gcode:10:1: warning[E646]");
 
     @Test
     void theSampleBuildsIsUpToDateTheSecondTimeAFaultyProgramFailsAtItsLineAndALibraryIsJudgedIncrementally() throws Exception {
@@ -47,6 +48,9 @@ class ShopProjectTest {
                     () -> assertTrue(stage.getOrDefault("again", "").contains(":gcncSimulate UP-TO-DATE"), "gcncSimulate up to date"),
                     () -> assertTrue(stage.getOrDefault("faulty", "").contains("BUILD FAILED"), "the faulty build fails"),
                     () -> assertTrue(stage.getOrDefault("faulty", "").contains(FAULT), "at " + FAULT),
+                    // three tasks judge the warned program; Gradle's log shows its warning once (issue 34)
+                    () -> assertEquals(1, stage.getOrDefault("warned", "").split(WARNED, -1).length - 1,
+                            "the warning " + WARNED + " printed once"),
                     () -> assertTrue(stage.getOrDefault("library", "").contains(
                             "gcncCheck: judged again: src/main/gcode/ops/O9010.nc, src/main/gcode/ops/o1204-bushing.gcode\n"),
                             "an edit of a called file judges it and its caller again, no other program"),

@@ -93,7 +93,7 @@ final class Reporter {
     /** The user's tables are loaded: their messages (and, for SARIF, their codes) are used from now on. */
     void use(Tables loaded, TableSource from) {
         this.source = from;
-        this.messages = loaded.messages().in(lang);
+        this.messages = loaded.messagesIn(lang); // read when the first finding is printed
     }
 
     Format format() {

@@ -18,8 +18,18 @@ public interface TableSource {
     /** A name to print in diagnostics for the named file. */
     String describe(String name);
 
+    /** The copy inside the jar: its tables are checked when gcnc is built (Tables reads some lazily). */
+    default boolean isBuiltIn() {
+        return false;
+    }
+
     static TableSource builtIn() {
         return new TableSource() {
+            @Override
+            public boolean isBuiltIn() {
+                return true;
+            }
+
             @Override
             public String read(String name) throws TableException {
                 try (InputStream in = TableSource.class.getResourceAsStream("/tables/" + name)) {

@@ -21,14 +21,18 @@ public final class Tables {
     private final Map<Character, ParameterLimit> limits;
     private final List<Offset> toolOffsets;
     private final List<Offset> workOffsets;
-    private final ErrorMessages messages;
+    /** The messages; for the built-in tables null until first needed (see {@link #messages()}). */
+    private volatile ErrorMessages messages;
+    /** Where the messages are read from when first needed: the built-in source, else null (read already). */
+    private final TableSource later;
 
     private Tables(Map<Character, ParameterLimit> limits, List<Offset> toolOffsets, List<Offset> workOffsets,
-                   ErrorMessages messages) {
+                   ErrorMessages messages, TableSource later) {
         this.limits = Collections.unmodifiableMap(limits);
         this.toolOffsets = List.copyOf(toolOffsets);
         this.workOffsets = List.copyOf(workOffsets);
         this.messages = messages;
+        this.later = later;
     }
 
     /** The tables shipped inside gcnc.jar. */
@@ -40,9 +44,21 @@ public final class Tables {
         }
     }
 
+    /**
+     * Reads the tables of {@code src}. Those of a directory ({@code --tables DIR}) are read and checked
+     * whole, here, so that a broken one stops the run before it starts. The built-in messages
+     * (errors.csv and phrases.csv, 97 KB, checked by the build's tests) are read only when a message
+     * is first rendered (issue 35: a clean check never renders one, and reading them was a sixth of
+     * a cold 2,000-block check's main thread).
+     */
     public static Tables load(TableSource src) throws TableException {
         return new Tables(limits(csv(src, "parameter_limits.csv")), offsets(src, "tool_offsets.csv"),
-                offsets(src, "work_offsets.csv"), ErrorMessages.load(csv(src, "errors.csv"), csv(src, "phrases.csv")));
+                offsets(src, "work_offsets.csv"), src.isBuiltIn() ? null : messages(src),
+                src.isBuiltIn() ? src : null);
+    }
+
+    private static ErrorMessages messages(TableSource src) throws TableException {
+        return ErrorMessages.load(csv(src, "errors.csv"), csv(src, "phrases.csv"));
     }
 
     /** Table 6: one row per word; a second row for a word would silently replace the first. */
@@ -107,6 +123,33 @@ public final class Tables {
     }
 
     public ErrorMessages messages() {
-        return messages;
+        ErrorMessages m = messages;
+        if (m == null) {
+            try {
+                m = messages(later);
+            } catch (TableException e) {
+                throw new IllegalStateException("the tables built into gcnc.jar are broken: " + e.getMessage(), e);
+            }
+            messages = m;
+        }
+        return m;
+    }
+
+    /**
+     * The messages in one language, read when the first one is rendered: what a reporter holds from
+     * the start of a run that may never print a finding.
+     */
+    public gcnc.diag.Messages messagesIn(ErrorMessages.Lang lang) {
+        return new gcnc.diag.Messages() {
+            @Override
+            public String render(gcnc.diag.Code code, List<String> args) {
+                return messages().render(code, args, lang);
+            }
+
+            @Override
+            public List<String> arguments(List<String> args) {
+                return messages().arguments(args, lang);
+            }
+        };
     }
 }

@@ -22,7 +22,7 @@ import org.gradle.api.tasks.OutputDirectory;
  * {@code gcncSimulate}: each program checked, translated and replayed on the machine model with
  * its tool path kept, as {@code gcnc simulate} does. Under build/reports/gcnc/gcncSimulate/: per
  * program a drawing (.svg) and a setup sheet ({@link SetupSheet}: program, machine, units, blank,
- * work zero, tools, cycle time, findings, envelope and the drawing), and
+ * work zero, tools, cycle time, the program's spindle limit, findings, envelope and the drawing) as HTML and as a PNG, and
  * for all of them summary.txt, one line a program.
  */
 @CacheableTask
@@ -38,10 +38,10 @@ public class SimulateTask extends GcncTask {
         getOutputDir().mkdirs();
     }
 
-    /** A program's drawing and setup sheet. */
+    /** A program's drawing and setup sheet (HTML and PNG). */
     @Override
     protected void clearOutputs(String relativePath) throws IOException {
-        for (String x : List.of(".svg", ".html")) {
+        for (String x : List.of(".svg", ".html", ".png")) {
             Files.deleteIfExists(getOutputDir().toPath().resolve(GcncTask.withExtension(relativePath, x)));
         }
     }
@@ -67,10 +67,22 @@ public class SimulateTask extends GcncTask {
         Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
         Files.createDirectories(svgFile.getParent());
         gcnc.output.AtomicOutput.write(svgFile, gcnc.output.AtomicOutput.Name.DERIVED, w -> w.write(svg.toString()));
-        SetupSheet sheet = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
+        SetupSheet of = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
                 session.tables().messages().in(Findings.LANG));
+        SetupSheet sheet;
+        try (Reader in = program.open()) {
+            sheet = of.withClamps(session, in);
+        }
         gcnc.output.AtomicOutput.write(getOutputDir().toPath().resolve(program.withExtension(".html")),
                 gcnc.output.AtomicOutput.Name.DERIVED, w -> sheet.write(svg.toString(), w));
+        // the same sheet as one PNG image, to print or pin beside the machine (gcnc sheet -o FILE.png)
+        java.io.ByteArrayOutputStream png = new java.io.ByteArrayOutputStream();
+        gcnc.SheetImage.write(sheet, true, png);
+        try (gcnc.output.AtomicOutput o = gcnc.output.AtomicOutput.open(getOutputDir().toPath()
+                .resolve(program.withExtension(".png")), gcnc.output.AtomicOutput.Name.DERIVED)) {
+            o.bytes(png.toByteArray());
+            o.commit();
+        }
         return outcome(r, List.of(program.shown() + ": " + sheet.summary()));
     }
 
