@@ -18,6 +18,9 @@ command -v cc >/dev/null 2>&1 || need+=(gcc)
 # the language server's real clients (LspClientTest, docs/editors.md): Neovim's own, and Python's venv for pytest-lsp
 command -v nvim >/dev/null 2>&1 || need+=(neovim)
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || need+=(python3-venv)
+# a font for the setup sheet's PNG (gcnc sheet -o sheet.png: Java 2D draws its text with the system's fonts)
+[ -e /usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf ] || need+=(fonts-dejavu-core)
+command -v fc-list >/dev/null 2>&1 || need+=(fontconfig)
 if [ ${#need[@]} -gt 0 ]; then
     sudo=""
     if [ "$(id -u)" -ne 0 ]; then

@@ -64,8 +64,21 @@ public final class Compiler {
         }
     }
 
-    /** What a run found: every diagnostic, how many blocks, and the simulator's summary if it ran to the end. */
-    public record Result(Diagnostics diagnostics, long blocks, Optional<SimReport> simulation) {
+    /**
+     * What a run found: every diagnostic, how many blocks, the simulator's summary if it ran to the
+     * end, and every file beside the program that its calls looked for, found or not ({@code
+     * O1000.nc}, {@code 1000.nc}; with the folder of {@link Settings#programs}): the verdict can
+     * change when one of them changes.
+     */
+    public record Result(Diagnostics diagnostics, long blocks, Optional<SimReport> simulation, List<Path> calledFiles) {
+        public Result {
+            calledFiles = List.copyOf(calledFiles);
+        }
+
+        public Result(Diagnostics diagnostics, long blocks, Optional<SimReport> simulation) {
+            this(diagnostics, blocks, simulation, List.of());
+        }
+
         public boolean ok() {
             return !diagnostics.hasErrors();
         }
@@ -86,17 +99,29 @@ public final class Compiler {
      */
     public static Result check(Reader source, Settings settings, java.util.function.Consumer<CheckedBlock> each)
             throws IOException {
+        return check(source, settings, each, CompileObserver.NONE);
+    }
+
+    /** {@link #check(Reader, Settings, java.util.function.Consumer)}, publishing what it saw to {@code observer}. */
+    public static Result check(Reader source, Settings settings, java.util.function.Consumer<CheckedBlock> each,
+                               CompileObserver observer) throws IOException {
         Diagnostics diags = new Diagnostics();
         // check does not simulate; a blank in its settings only places the work zero (work.G54 = face)
         settings = onTheBlank(settings);
+        observer.placed(settings.profile());
         WorkZeroNotes.report(settings.profile(), settings.simulation().flatMap(SimOptions::stock), diags);
         BlockSource reader = blocks(source, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         // the arcs the galil dialect could not write within the replay's tolerance: compile's E202/E308 (one verdict)
         gcnc.sim.ArcVerdict arcs = arcVerdict(settings, diags);
         long blocks = 0;
+        boolean observed = observer != CompileObserver.NONE;
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
+            gcnc.diag.Origin from = observed ? diags.place() : null; // where the flow read it (before the check moves on)
             List<CheckedBlock> checked = checker.check(raw);
+            if (observed) {
+                observer.block(raw, from, checked, checker.state());
+            }
             if (each != null) {
                 for (int i = 0; i < checked.size(); i++) {
                     each.accept(checked.get(i));
@@ -111,7 +136,7 @@ public final class Compiler {
             blocks++;
         }
         checker.finish(reader.lines());
-        return new Result(diags, blocks, Optional.empty());
+        return new Result(diags, blocks, Optional.empty(), calledFiles(reader));
     }
 
     /**
@@ -121,6 +146,16 @@ public final class Compiler {
      * simulator runs on a thread of its own, a few blocks behind.
      */
     public static Result compile(Reader source, Settings settings, java.util.function.Consumer<Instruction> out) throws IOException {
+        return compile(source, settings, out, CompileObserver.NONE);
+    }
+
+    /**
+     * {@link #compile(Reader, Settings, java.util.function.Consumer)}, publishing what it saw to
+     * {@code observer}: the machine on the blank, each block with its checked blocks and modal state,
+     * each DMC line replayed with the cycle clock around it, the simulator's summary.
+     */
+    public static Result compile(Reader source, Settings settings, java.util.function.Consumer<Instruction> out,
+                                 CompileObserver observer) throws IOException {
         Diagnostics diags = new Diagnostics();
         java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
         // the blank given for the run sets the work zero; a header's blank does not (the program's
@@ -129,6 +164,8 @@ public final class Compiler {
         Optional<gcnc.sim.StockSize> given = settings.simulation().flatMap(SimOptions::stock);
         settings = withStockHeader(buffered, settings);
         WorkZeroNotes.report(settings.profile(), given, diags);
+        observer.placed(settings.profile());
+        boolean observed = observer != CompileObserver.NONE;
         BlockSource reader = blocks(buffered, settings, diags);
         Checker checker = new Checker(settings.tables(), settings.profile(), diags);
         Dialect dialect = Dialect.create(settings.dialect(), settings.profile(), diags, settings.inlineSourceMap());
@@ -140,8 +177,8 @@ public final class Compiler {
         long blocks = 0;
         Optional<SimOptions> simulate = settings.simulation();
         // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
-        try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get(), out)
-                : null) {
+        try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get(), out,
+                observed ? observer::replayed : null) : null) {
             dialect.begin(collect);
             if (simulate.isPresent() && simulate.get().noBlank()) {
                 dialect.blank(Optional.empty(), collect);
@@ -162,7 +199,12 @@ public final class Compiler {
             boolean heldJudged = false;
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                translate(checker.check(raw), planner, lower, diags, lines, sim, out, arcs);
+                gcnc.diag.Origin from = observed ? diags.place() : null;
+                List<CheckedBlock> checked = checker.check(raw);
+                if (observed) {
+                    observer.block(raw, from, checked, checker.state());
+                }
+                translate(checked, planner, lower, diags, lines, sim, out, arcs);
                 heldJudged = heldJudged || judgeHeld(planner, diags, arcs);
             }
             if (!diags.hasErrors()) {
@@ -201,7 +243,8 @@ public final class Compiler {
                             || d.code() == Code.E661_PULL_NOT_JUDGED);
                 }
             }
-            return new Result(diags, blocks, report);
+            report.ifPresent(observer::simulated);
+            return new Result(diags, blocks, report, calledFiles(reader));
         }
     }
 
@@ -274,6 +317,11 @@ public final class Compiler {
         }
         return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), control, diags,
                 settings.programs());
+    }
+
+    /** The files beside the program its calls looked for (none without program flow). */
+    private static List<Path> calledFiles(BlockSource reader) {
+        return reader instanceof ProgramFlow flow ? flow.calledFiles() : List.of();
     }
 
     /**

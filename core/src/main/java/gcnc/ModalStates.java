@@ -1,8 +1,6 @@
 package gcnc;
 
-import gcnc.check.Checker;
 import gcnc.check.ModalState;
-import gcnc.diag.Diagnostics;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Point;
 import gcnc.ir.ProgramFrame;
@@ -12,7 +10,6 @@ import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
-import gcnc.parse.BlockSource;
 import java.io.IOException;
 import java.io.Reader;
 import java.util.HashMap;
@@ -23,7 +20,7 @@ import java.util.Optional;
  * The modal state the control is in after each line's block, for a front end's hover (the studio's,
  * the language server's): units, feed mode and feed, G96 surface speed and the rpm it gives at the
  * block's X, work offset, tool and offset, nose compensation, where the tool is. The state is the
- * checker's own ({@link Checker#state()} after each block), so it is what the diagnostics were judged by.
+ * checker's own (the checker's state after each block), so it is what the diagnostics were judged by.
  *
  * <p>The blocks are read as {@link Compiler} reads them for a check (the parser, then the program flow
  * where the control has calls or macros, the called programs looked for where the session says); a
@@ -56,28 +53,35 @@ public final class ModalStates {
     private ModalStates() {
     }
 
-    /** The state after each line of {@code text}'s own blocks (not those of a called file), by line. */
+    /**
+     * The state after each line of {@code text}'s own blocks (not those of a called file), by line: a
+     * view of {@link Session#check(Reader, CompileObserver)}'s blocks, so the state is the one the
+     * program's diagnostics were judged by.
+     */
     public static Map<Integer, Snapshot> of(Session session, Reader text) throws IOException {
-        Diagnostics diags = new Diagnostics();
-        MachineProfile profile = session.profile();
-        BlockSource blocks = Compiler.blocks(text, session.checkSettings(), diags);
-        Checker checker = new Checker(session.tables(), profile, diags);
         Map<Integer, Snapshot> states = new HashMap<>();
-        for (RawBlock raw = blocks.next(); raw != null; raw = blocks.next()) {
-            boolean own = diags.place().file() == null; // a block of this text, not of a called file
-            var checked = checker.check(raw);
-            if (!own) {
-                continue;
-            }
-            Snapshot before = states.get(raw.line());
-            if (before != null) {
-                states.put(raw.line(), new Snapshot(before.state(), before.block(), before.accepted(), before.runs() + 1));
-            } else {
-                states.put(raw.line(), new Snapshot(checker.state(), checked.isEmpty() ? null : checked.get(checked.size() - 1),
-                        !checked.isEmpty(), 1));
-            }
-        }
+        session.check(text, view(states));
         return states;
+    }
+
+    /** The observer that fills {@code states} with each own line's snapshot (its first run, and how often it ran). */
+    public static CompileObserver view(Map<Integer, Snapshot> states) {
+        return new CompileObserver() {
+            @Override
+            public void block(RawBlock raw, gcnc.diag.Origin from, java.util.List<CheckedBlock> checked,
+                              ModalState after) {
+                if (from.file() != null) {
+                    return; // a block of a called file, not of this text
+                }
+                Snapshot before = states.get(raw.line());
+                if (before != null) {
+                    states.put(raw.line(), new Snapshot(before.state(), before.block(), before.accepted(), before.runs() + 1));
+                } else {
+                    states.put(raw.line(), new Snapshot(after, checked.isEmpty() ? null : checked.get(checked.size() - 1),
+                            !checked.isEmpty(), 1));
+                }
+            }
+        };
     }
 
     /** {@code s} as a person reads it on {@code p}'s control. */

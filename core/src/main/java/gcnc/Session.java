@@ -189,6 +189,11 @@ public final class Session {
         return waived(Compiler.check(program, checkSettings()), false);
     }
 
+    /** {@link #check(Reader)}, publishing what it saw to {@code observer} (the hover's modal states). */
+    public Compiler.Result check(Reader program, CompileObserver observer) throws IOException {
+        return waived(Compiler.check(program, checkSettings(), null, observer), false);
+    }
+
     /** What {@link #check} runs with (also {@link ModalStates}, which reads the blocks as a check does). */
     Compiler.Settings checkSettings() {
         return settings(options.stock().map(b -> simulation()), false);
@@ -206,6 +211,16 @@ public final class Session {
     public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
                                    java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
         return waived(Compiler.compile(program, settings(simulation, inlineSourceMap), out), true);
+    }
+
+    /**
+     * {@link #compile(Reader, Optional, boolean, java.util.function.Consumer)}, publishing what it saw to
+     * {@code observer} (gcnc run's and the studio's views of the program they send: CompileObserver).
+     */
+    public Compiler.Result compile(Reader program, Optional<SimOptions> simulation, boolean inlineSourceMap,
+                                   java.util.function.Consumer<gcnc.dmc.Instruction> out, CompileObserver observer)
+            throws IOException {
+        return waived(Compiler.compile(program, settings(simulation, inlineSourceMap), out, observer), true);
     }
 
     /** Check, translate and simulate a program file as the command line's {@code compile} does, output discarded. */
@@ -233,7 +248,14 @@ public final class Session {
      */
     public Compiler.Result compileExactStop(Reader program, Optional<SimOptions> simulation,
                                             java.util.function.Consumer<gcnc.dmc.Instruction> out) throws IOException {
-        return waived(Compiler.compile(program, settings(simulation, false).withExactStop(), out), true);
+        return compileExactStop(program, simulation, out, CompileObserver.NONE);
+    }
+
+    /** {@link #compileExactStop(Reader, Optional, java.util.function.Consumer)}, publishing what it saw to {@code observer}. */
+    public Compiler.Result compileExactStop(Reader program, Optional<SimOptions> simulation,
+                                            java.util.function.Consumer<gcnc.dmc.Instruction> out, CompileObserver observer)
+            throws IOException {
+        return waived(Compiler.compile(program, settings(simulation, false).withExactStop(), out, observer), true);
     }
 
     /**

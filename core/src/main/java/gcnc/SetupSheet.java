@@ -32,6 +32,12 @@ public final class SetupSheet {
     private final MachineProfile profile;
     private final SimReport sim;
     private final List<Finding> findings;
+    /** The program's spindle clamps (G50 S, G92 S on Fanuc system B) with their lines, in the program's order. */
+    private final List<Clamp> clamps;
+
+    /** One spindle clamp of the program: {@code G50 S3500} at line 3. */
+    public record Clamp(String word, double rpm, int line) {
+    }
 
     /**
      * @param file     the program as the reader knows it (a path relative to the project)
@@ -39,11 +45,37 @@ public final class SetupSheet {
      * @param findings every finding of the run, in the program's order
      */
     public SetupSheet(String file, String number, MachineProfile profile, SimReport sim, List<Finding> findings) {
+        this(file, number, profile, sim, findings, List.of());
+    }
+
+    private SetupSheet(String file, String number, MachineProfile profile, SimReport sim, List<Finding> findings,
+                       List<Clamp> clamps) {
         this.file = file;
         this.number = number;
         this.profile = profile;
         this.sim = sim;
         this.findings = List.copyOf(findings);
+        this.clamps = List.copyOf(clamps);
+    }
+
+    /**
+     * This sheet with the spindle clamps {@code program} sets (read again with {@code session}, as the
+     * checker judged its blocks: {@link ModalStates}), shown beside the top spindle speed.
+     */
+    public SetupSheet withClamps(Session session, java.io.Reader program) throws IOException {
+        gcnc.machine.GFunction f = profile.control().gFor(gcnc.machine.GRole.REGISTER_AND_CLAMP).orElse(null);
+        String g = f == null ? "G50" : "G" + f.code();
+        java.util.Map<Integer, ModalStates.Snapshot> states = new java.util.TreeMap<>(ModalStates.of(session, program));
+        List<Clamp> found = new java.util.ArrayList<>();
+        double last = Double.NaN;
+        for (java.util.Map.Entry<Integer, ModalStates.Snapshot> e : states.entrySet()) {
+            double c = e.getValue().state().rpmClamp();
+            if (!Double.isNaN(c) && !(c == last)) {
+                found.add(new Clamp(g + " S" + BigDecimal.valueOf(c).stripTrailingZeros().toPlainString(), c, e.getKey()));
+            }
+            last = c;
+        }
+        return new SetupSheet(file, number, profile, sim, findings, found);
     }
 
     /**
@@ -103,19 +135,9 @@ public final class SetupSheet {
                 + "vertical-align:top}table.grid td,table.grid th{border:1px solid #ccc;padding:2px 8px}"
                 + ".error{color:#b00}.warning{color:#a60}svg{max-width:100%;height:auto}</style></head><body>\n");
         w.write("<h1>Setup sheet: " + escape(title()) + "</h1>\n<table>\n");
-        row(w, "Program", number == null ? "(no O number)" : number);
-        row(w, "File", file);
-        row(w, "Machine / control", profile.name() + " / " + profile.control().name());
-        row(w, "Units", units());
-        row(w, "Blank", blank(s));
-        row(w, "Work zero", workZero(s));
-        row(w, "Cycle time (estimate)", clock(sim.cycleSeconds()));
-        row(w, "Cycle time stopping at every move", clock(sim.exactStopSeconds()));
-        row(w, "Maximum spindle speed", Double.isNaN(s.maxRpm()) ? "not known" : Math.round(s.maxRpm()) + " rpm");
-        row(w, "Part (feed moves, as programmed)", sim.feeds() == null ? "no feed move" : envelope(sim.feeds()));
-        row(w, "Envelope (every move, as programmed)", envelope());
-        row(w, "Envelope (machine frame)", Double.isNaN(sim.xMinMm()) ? "no motion" : machineEnvelope());
-        row(w, "Findings", findings.isEmpty() ? "none" : Integer.toString(findings.size()));
+        for (String[] r : rows()) {
+            row(w, r[0], r[1]);
+        }
         w.write("</table>\n");
         tools(w, s);
         findings(w);
@@ -123,6 +145,73 @@ public final class SetupSheet {
         // The drawing is gcnc's own SVG; its XML declaration-free markup embeds as it is.
         w.write(svg);
         w.write("\n</body></html>\n");
+    }
+
+    /** The sheet's head, each row {name, value}, as the HTML page and the PNG show it. */
+    public List<String[]> rows() {
+        SetupFacts s = sim.setup();
+        List<String[]> r = new java.util.ArrayList<>();
+        r.add(new String[] {"Program", number == null ? "(no O number)" : number});
+        r.add(new String[] {"File", file});
+        r.add(new String[] {"Machine / control", profile.name() + " / " + profile.control().name()});
+        r.add(new String[] {"Units", units()});
+        r.add(new String[] {"Blank", blank(s)});
+        r.add(new String[] {"Work zero", workZero(s)});
+        r.add(new String[] {"Cycle time (estimate)", clock(sim.cycleSeconds())});
+        r.add(new String[] {"Cycle time stopping at every move", clock(sim.exactStopSeconds())});
+        r.add(new String[] {"Maximum spindle speed", (Double.isNaN(s.maxRpm()) ? "not known" : Math.round(s.maxRpm()) + " rpm")
+                + clampText()});
+        r.add(new String[] {"Part (feed moves, as programmed)", sim.feeds() == null ? "no feed move" : envelope(sim.feeds())});
+        r.add(new String[] {"Envelope (every move, as programmed)", envelope()});
+        r.add(new String[] {"Envelope (machine frame)", Double.isNaN(sim.xMinMm()) ? "no motion" : machineEnvelope()});
+        r.add(new String[] {"Findings", findings.isEmpty() ? "none" : Integer.toString(findings.size())});
+        return r;
+    }
+
+    /** "; the program's limit G50 S3500 (line 3)" (each clamp it sets), or nothing. */
+    private String clampText() {
+        if (clamps.isEmpty()) {
+            return "";
+        }
+        StringBuilder b = new StringBuilder("; the program's limit ");
+        for (int i = 0; i < clamps.size(); i++) {
+            b.append(i == 0 ? "" : ", ").append(clamps.get(i).word()).append(" (line ").append(clamps.get(i).line()).append(')');
+        }
+        return b.toString();
+    }
+
+    /** The tool table's rows as text, for the PNG: "T1 turn CNMG 432, nose 0.8 mm, ..." . */
+    public List<String> toolLines() {
+        List<String> out = new java.util.ArrayList<>();
+        for (ToolUse t : sim.setup().tools()) {
+            String nose = t.station() == 0 ? "" : length(profile.nose(t.station()).radius() / profile.x().countsPerMm());
+            String insert = t.described() ? t.insert() : t.insert() + " (assumed: not described in the profile)";
+            out.add((t.station() == 0 ? "none selected" : "T" + t.station()) + "  "
+                    + t.kind().name().toLowerCase(Locale.ROOT).replace('_', ' ') + "  " + insert
+                    + (nose.isEmpty() ? "" : "  nose " + nose) + (t.station() == 0 ? "" : "  geometry " + geometry(t.station())
+                    + "  wear " + wear(t.station())) + "  lines " + t.firstLine() + "-" + t.lastLine() + "  " + clock(t.seconds()));
+        }
+        return out;
+    }
+
+    /** Each finding as one line, "12:5 error E305 message", in the program's order. */
+    public List<String> findingLines() {
+        List<String> out = new java.util.ArrayList<>();
+        for (Finding f : findings) {
+            out.add(f.diagnostic().span().line() + ":" + f.diagnostic().span().column() + " "
+                    + f.diagnostic().severity().label() + " " + f.diagnostic().code().id() + " " + f.message());
+        }
+        return out;
+    }
+
+    /** The sheet's title: "O1201 (part.nc)". */
+    public String heading() {
+        return "Setup sheet: " + title();
+    }
+
+    /** The run the sheet is of. */
+    public SimReport report() {
+        return sim;
     }
 
     private String title() {

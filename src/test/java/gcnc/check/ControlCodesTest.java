@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
  * Codes of the Haas and Fanuc 0i-TF manuals and the Fusion turning posts that gcnc names rather
  * than calling them undefined (docs/language.md): the exact stops the planner follows (G09, G61/G64),
  * the control's modes that change nothing in the path (function mode_only: E700, E701), codes not supported yet (E110: the sub-spindle, the bar
- * feeder, Series 15 drilling, polar interpolation) and the Haas M19 orientation angle (E703).
+ * feeder, side drilling with live tools, polar interpolation) and the Haas M19 orientation angle (E703).
  */
 class ControlCodesTest {
     private static final String FANUC = "G21 G99\nT0101\nG97 S500 M03\nG00 X70. Z2.\n";
@@ -68,8 +68,9 @@ class ControlCodesTest {
 
     @Test
     void codesOfOtherOptionsAreNotSupportedYet() {
-        assertEquals("6:1:E110", Run.of("fanuc", FANUC + "G00 X0.\nG81 Z-10. R2. F0.1\nM30\n").errors());
-        assertEquals("6:1:E110", fanucB("G00 X0.\nG82 Z-10. R2. P500 F0.1\nM30\n").errors());
+        // side drilling and tapping along X: live tooling (the Series 15 format G81/G82 are followed: BoringCyclesTest)
+        assertEquals("6:1:E110", Run.of("fanuc", FANUC + "G00 X50. Z-10.\nG87 X40. R2. F0.1\nM30\n").errors());
+        assertEquals("6:1:E110", fanucB("G00 X50. Z-10.\nG88 X40. R2. P500 F1.\nM30\n").errors());
         assertEquals("5:1:E110, 6:1:E110", fanucB("G112\nG113\nM30\n").errors());
         assertEquals("5:1:E110, 6:1:E110, 7:1:E110", Run.of("haas", HAAS + "G14\nG15\nG105\nM30\n").errors());
         for (int m : new int[] {114, 115, 119, 143, 144, 145}) {

@@ -259,10 +259,12 @@ class ControlRulesTest {
 
     @Test
     void cyclesCompensationAndSubprogramsAreNamedAtTheirWord() {
-        // Fanuc's G83 on the centre line is followed (TappingTest); C-axis positioning (live tooling) is
-        // not supported yet, and neither is its face boring cycle G85
+        // Fanuc's G83 on the centre line is followed (TappingTest), G85 face boring too (BoringCyclesTest);
+        // C-axis positioning (live tooling) is not supported yet, nor side drilling along X
         assertEquals("1:9:E188", check("generic", "fanuc-a", "N40 G83 C90. Z-1. Q1000 F0.01\nM30\n"));
-        assertTrue(messages("generic", "fanuc-a", "G85 Z-1. R0.5\nM30\n").contains("p.nc:1:1: error[E110]: G85 "));
+        assertTrue(messages("generic", "fanuc-a", "G87 X10. R0.5\nM30\n").contains(
+                "p.nc:1:1: error[E110]: G87 side drilling cycle (live tooling along X) is not supported yet"),
+                messages("generic", "fanuc-a", "G87 X10. R0.5\nM30\n"));
         // G41/G42 are followed (NoseCompensationTest), no longer E110; generic's offsets have no nose radius (E177, a note)
         assertEquals("3:1:E177", check("generic", "haas", "S500 M03\nG00 X40. Z2.\nG42 G01 X30. F0.1\nZ-10.\nG40 G00 X40.\nM30\n"));
         // the thesis's control has no subprograms; Fanuc's follows the call (ProgramFlowTest): no O1000 here

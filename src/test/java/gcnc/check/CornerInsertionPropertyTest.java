@@ -54,6 +54,67 @@ class CornerInsertionPropertyTest {
         assertTrue(clean >= 150, "too few clean contours to judge: " + clean);
     }
 
+    /**
+     * The same random contours as a G71's contour (haas): the G70 follows exactly the path the
+     * contour makes in the program's flow, and no rough pass ends below it.
+     */
+    @Test
+    void inAG71ContourTheCornersAreTheFlowsAndNoRoughPassCutsBelowThem() {
+        int clean = 0;
+        for (long seed = 1; seed <= 120; seed++) {
+            List<Step> steps = contour(new Random(seed));
+            StringBuilder shape = new StringBuilder();
+            double top = 20;
+            for (Step s : steps) {
+                shape.append(String.format(Locale.ROOT, "X%.3f Z%.3f", s.x, s.z));
+                if (s.corner != null) {
+                    shape.append(String.format(Locale.ROOT, " %s%.3f", s.corner, s.size));
+                }
+                shape.append('\n');
+                top = Math.max(top, s.x);
+            }
+            String out = String.format(Locale.ROOT, "X%.3f", top + 4);
+            // lines 5-7 the cycle, 8 N10, 9 G01 Z0., then the shape; the flow version has the same lines
+            String cycle = "G00 " + out + " Z2.\nG71 P10 Q20 U0.5 W0.1 D1. F0.2\nG00 X20. Z2.\nN10 G00 X20.\nG01 Z0.\n"
+                    + shape + "N20 " + out + "\nG70 P10 Q20\nM30\n";
+            String flow = "G00 " + out + " Z2.\nG00 X20. Z2.\nG00 X20. Z2.\nN10 G00 X20.\nG01 Z0. F0.2\n"
+                    + shape + "N20 " + out + "\nM30\n";
+            CycleExpansionTest.Expanded c = CornerInsertionTest.run("haas", cycle);
+            CycleExpansionTest.Expanded f = CornerInsertionTest.run("haas", flow);
+            String errs = CornerInsertionTest.errs(c);
+            assertEquals(CornerInsertionTest.errs(f), errs, "seed " + seed + ": the same corners refused\n" + cycle);
+            if (!errs.isEmpty()) {
+                assertTrue(errs.matches("(E61[13]@[0-9:]+)(, E61[13]@[0-9:]+)*"), "seed " + seed + ": " + errs + "\n" + cycle);
+            }
+            clean += errs.isEmpty() ? 1 : 0;
+            int g70 = 11 + steps.size();
+            List<String> finish = new ArrayList<>();
+            List<String> rough = new ArrayList<>();
+            for (String m : CornerInsertionTest.moves(c, 5)) {
+                int line = Integer.parseInt(m.substring(0, m.indexOf(' ')));
+                if (line == 6 && m.contains(" G01 ")) {
+                    rough.add(m);
+                } else if (line > 7 && line < g70) {
+                    finish.add(m);
+                }
+            }
+            List<String> same = new ArrayList<>();
+            for (String m : CornerInsertionTest.moves(f, 8)) {
+                same.add(m);
+            }
+            assertEquals(same, finish, "seed " + seed + ": the G70 follows the contour as the flow makes it\n" + cycle);
+            List<double[]> path = CornerInsertionTest.path(finish);
+            for (String m : rough) {
+                String[] w = m.split(" ");
+                double x = Double.parseDouble(w[2].substring(1));
+                double z = Double.parseDouble(w[3].substring(1));
+                double floor = CornerInsertionTest.lowest(path, z);
+                assertTrue(x >= floor - 1e-3, "seed " + seed + ": a rough cut at X" + x + " Z" + z + " is below X" + floor + "\n" + cycle);
+            }
+        }
+        assertTrue(clean >= 60, "too few clean contours to judge: " + clean);
+    }
+
     /** Three to six moves from X20 Z0, each along X or Z or a taper, going left and out (a turned profile). */
     private static List<Step> contour(Random rnd) {
         List<Step> steps = new ArrayList<>();

@@ -84,8 +84,11 @@ class PeckCycleErrorsTest {
     }
 
     @Test
-    void e188RepeatsAreNotFollowed() {
-        assertEquals("5:16:E188", haas("G81 Z-0.3 R0.1 L2 F0.005\nM30\n"));
+    void e188RepeatsAreFollowedOnlyAsAWholeNumberOfTheSameHole() {
+        assertEquals("", haas("G81 Z-0.3 R0.1 L2 F0.005\nM30\n"));
+        assertEquals("5:16:E188", haas("G81 Z-0.3 R0.1 L2.5 F0.005\nM30\n"));
+        // stepped along X by U: a row of holes off the centre line
+        assertEquals("5:21:E188", haas("G81 U0.2 Z-0.3 R0.1 L2 F0.005\nM30\n"));
     }
 
     @Test

@@ -105,20 +105,20 @@ class CliTest {
      */
     @Test
     void theReadmeBushingSimulatesCleanAndAMistakeInItIsFound() throws IOException {
-        Run r = gcnc("simulate", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1,200,150");
+        Run r = gcnc("simulate", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1mm,200mm,150mm");
         assertEquals(0, r.status(), r.err());
         assertTrue(r.out().contains(", 0 findings;"), r.out());
         Path dmc = Files.createTempDirectory("gcnc-bushing").resolve("bushing.dmc");
-        assertEquals(0, gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1,200,150",
+        assertEquals(0, gcnc("compile", "docs/examples/bushing.nc", "--machine", "haas", "--stock", "38.1mm,200mm,150mm",
                 "-o", dmc.toString()).status());
         assertTrue(Files.readString(dmc).contains(";GA C,C;"), "the thread is geared to the spindle");
         Path wrong = program(Files.readString(Path.of("docs/examples/bushing.nc")).replace("G00 X1.4 Z-1.4", "G00 X1.2 Z-1.4"));
-        Run crash = gcnc("simulate", wrong.toString(), "--machine", "haas", "--stock", "38.1,200,150");
+        Run crash = gcnc("simulate", wrong.toString(), "--machine", "haas", "--stock", "38.1mm,200mm,150mm");
         assertTrue(crash.err().contains(":40:1: error[E305]"), crash.err());
         // without its M24 the Haas's M23 chamfers each thread pass: geared too, and as clean (README)
         String text = Files.readString(Path.of("docs/examples/bushing.nc"));
         Path chamfered = program(text.replaceFirst("M24 \\([^)]*\\)", "M23"));
-        Run m23 = gcnc("simulate", chamfered.toString(), "--machine", "haas", "--stock", "38.1,200,150");
+        Run m23 = gcnc("simulate", chamfered.toString(), "--machine", "haas", "--stock", "38.1mm,200mm,150mm");
         assertEquals(0, m23.status(), m23.err());
         assertTrue(m23.out().contains(", 0 findings;"), m23.out());
         assertTrue(!Files.readString(chamfered).contains("M24"));
@@ -199,10 +199,12 @@ class CliTest {
 
     @Test
     void spanishMessagesOnRequest() throws IOException {
-        Path p = program("G21\nM30\nG00 X1. Z1.\n");
+        Path p = program("G21\nM93\nM30\nG00 X1. Z1.\n");
         Run r = gcnc("check", "--lang", "es", p.toString());
         assertEquals(1, r.status());
-        assertTrue(r.err().contains("error[E053]: La función M30 solo puede estar al final del programa"), r.err());
+        assertTrue(r.err().contains("error[E012]: Función miscelánea no definida M93"), r.err());
+        // a block after M30 never runs: a warning (issue 31), in Spanish the thesis's words
+        assertTrue(r.err().contains("warning[E053]: La función M30 solo puede estar al final del programa"), r.err());
     }
 
     @Test

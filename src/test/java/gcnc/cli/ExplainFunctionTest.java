@@ -62,6 +62,15 @@ class ExplainFunctionTest {
         assertTrue(r.out().startsWith("M00 en el control haas: Paro del programa\n  en: Stop program\n"), r.out());
     }
 
+    /** --control alone names the control (issue 34 item 6): M00 as Fanuc system A runs it. */
+    @Test
+    void aControlAloneIsEnough() {
+        CliTest.Run r = CliTest.gcnc("explain", "M00", "--control", "fanuc-a");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().startsWith("M00 on control fanuc-a: Program stop\n  es: Paro programado\n"), r.out());
+        assertTrue(r.out().contains("gcnc reads it as stop"), r.out());
+    }
+
     @Test
     void codesOfBothKindsAtOnceAreAUsageError() {
         CliTest.Run r = CliTest.gcnc("explain", "G71", "E642");

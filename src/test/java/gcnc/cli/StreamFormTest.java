@@ -48,7 +48,7 @@ class StreamFormTest {
     @Test
     void theThreadProgramsStreamFormIsItsGoldenFiles() throws IOException {
         Path out = dir().resolve("thread-shaft.dmc");
-        CliTest.Run r = gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20,100,60", "--form", "stream",
+        CliTest.Run r = gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20mm,100mm,60mm", "--form", "stream",
                 "-o", out.toString());
         assertEquals(0, r.status(), r.err());
         for (String ext : List.of("dmc", "stream")) {
@@ -66,7 +66,7 @@ class StreamFormTest {
     @Test
     void theStreamHoldsOnlyWhatAHostCanSendAndTheThreadsAreResidentRoutines() throws IOException {
         Path out = dir().resolve("t.dmc");
-        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20,100,60", "--form", "stream",
+        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20mm,100mm,60mm", "--form", "stream",
                 "-o", out.toString()).status());
         List<String> stream = Files.readAllLines(out.resolveSibling("t.stream"));
         List<String> resident = Files.readAllLines(out).stream().flatMap(l -> gcnc.dmc.DmcReader.statements(l).stream()).toList();
@@ -85,8 +85,8 @@ class StreamFormTest {
 
     @Test
     void theStreamFormReplaysToWhatTheProgramFormReplaysTo() throws IOException {
-        for (String[] c : List.of(new String[] {THREAD.toString(), "haas", "20,100,60"},
-                new String[] {"docs/examples/bushing.nc", "haas", "38.1,200,150"},
+        for (String[] c : List.of(new String[] {THREAD.toString(), "haas", "20mm,100mm,60mm"},
+                new String[] {"docs/examples/bushing.nc", "haas", "38.1mm,200mm,150mm"},
                 new String[] {"samples/bishop.nc", "thesis-2004", null})) {
             Path d = dir();
             String[] stock = c[2] == null ? new String[0] : new String[] {"--stock", c[2]};
@@ -149,10 +149,10 @@ class StreamFormTest {
     void aProgramFormCompileRemovesTheStreamAnEarlierCompileLeft() throws IOException {
         Path d = dir();
         Path out = d.resolve("t.dmc");
-        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20,100,60", "--form", "stream", "-o",
+        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20mm,100mm,60mm", "--form", "stream", "-o",
                 out.toString()).status());
         assertTrue(Files.exists(d.resolve("t.stream")));
-        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20,100,60", "-o", out.toString()).status());
+        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20mm,100mm,60mm", "-o", out.toString()).status());
         assertFalse(Files.exists(d.resolve("t.stream")), "a sender must not pair the new program with the old stream");
         assertFalse(Files.exists(d.resolve("t.stream.map")));
     }
@@ -161,10 +161,10 @@ class StreamFormTest {
     void aStreamFromAnotherCompileIsToldApart() throws IOException {
         Path d = dir();
         Path out = d.resolve("t.dmc");
-        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20,100,60", "--form", "stream", "-o",
+        assertEquals(0, gcnc("compile", THREAD.toString(), "--machine", "haas", "--stock", "20mm,100mm,60mm", "--form", "stream", "-o",
                 out.toString()).status());
         Files.writeString(d.resolve("t.stream"), Files.readString(d.resolve("t.stream")).replace("WT 2000", "WT 2002"));
-        CliTest.Run r = gcnc("simulate", d.resolve("t.stream").toString(), "--machine", "haas", "--stock", "20,100,60");
+        CliTest.Run r = gcnc("simulate", d.resolve("t.stream").toString(), "--machine", "haas", "--stock", "20mm,100mm,60mm");
         assertTrue(r.err().contains("warning[E245]: "), r.err());
     }
 

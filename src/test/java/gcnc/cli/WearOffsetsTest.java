@@ -25,9 +25,9 @@ import org.junit.jupiter.api.Test;
  * a typo, a wear that makes a collision, an offset the program does not use, and a shipped profile
  * with nowhere to save; the offsets file's own faults are located.
  */
-class WearOffsetsTest {
+public class WearOffsetsTest {
     /** A metric Fanuc part: T0101 turns X40. from Z2. to Z-30., faces out to X50. */
-    static final String METRIC = String.join("\n",
+    public static final String METRIC = String.join("\n",
             "O1002 (WEAR TEST PART)",
             "G21 G99",
             "G50 S2500",
@@ -43,7 +43,7 @@ class WearOffsetsTest {
             "M30", "");
 
     /** An inch Haas part: T0101 turns X1.5 from Z0.1 to Z-1. */
-    static final String INCH = String.join("\n",
+    public static final String INCH = String.join("\n",
             "O2001 (INCH TEST PART)",
             "G20 G99",
             "G50 S2500",
@@ -58,7 +58,7 @@ class WearOffsetsTest {
             "M30", "");
 
     /** A rapid along the fanuc profile's 65 mm blank 0.2 mm (on the radius) above it. */
-    static final String CLOSE = String.join("\n",
+    public static final String CLOSE = String.join("\n",
             "O1003 (RAPID CLOSE TO THE BAR)",
             "G21 G99",
             "G50 S2500",

@@ -206,6 +206,84 @@ class ResumeTest {
         assertEquals(List.of("VS 1000", "VP 0,700 <800", "VE", "BGS", "AV 200", "OF ,,4.0000", "AMS"), l.subList(vs, vs + 7));
     }
 
+    /**
+     * Line 7's segment refused while the sequence was still being queued (issue 33): nothing of the
+     * sequence moved, the axes stand at its start, so the resume point is its first block (line 6), not
+     * the segment the host had reached; once the axes have moved along it, the executing segment's block.
+     */
+    @Test
+    void aSequenceOfWhichNothingMovedResumesAtItsFirstBlock() throws Exception {
+        DmcProgram p = blended();
+        Progress progress = new Progress(p, BlockTable.none(), e -> { });
+        progress.at(BLENDED.indexOf("VP 1000,1000 <800"), home(p), new Operator());
+        assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "the axes at the sequence's start");
+        progress.axes(plus(home(p), 1000, 200));
+        assertEquals(new ResumePoint(7, 0), progress.resumePoint(), "the axes on line 7's segment");
+        // and that point resumes from where the axes are: the sequence whole
+        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
+        List<String> l = texts(r);
+        assertEquals(List.of("VS 1000", "VP 1000,0 <1000 >500", "VP 1000,1000 <800", "VE", "BGS"),
+                l.subList(l.indexOf("VS 1000"), l.indexOf("VS 1000") + 5));
+    }
+
+    /**
+     * A controller that ran on after the link dropped (a downloaded program goes on without its host)
+     * is resumed from where its axes are read again: at the end of the sequence it finished, and the
+     * report says what it did without the host.
+     */
+    @Test
+    void aControllerThatRanOnIsResumedWhereItStandsAndTheReportSaysWhatItDid() throws Exception {
+        Compiled c = compiled(TURN);
+        // the host last saw line 7; the controller went on and finished the corner of line 9 (its end: X46 Z-33)
+        Resume resume = new Resume(c.program(), c.blocks(), 3);
+        Piece r = resume.plan(new ResumePoint(7, 0), c.galil(9, 46, -33));
+        assertEquals("the controller finished the sequence's blocks: line 7 to 9", resume.ranOn().orElse(null));
+        // what is resumed starts after line 9: line 10's move out, never the contour again
+        int first = -1;
+        for (int i = 0; i < r.commands().size() && first < 0; i++) {
+            if (gcnc.send.DmcProgram.isSegment(r.commands().get(i))) {
+                first = c.program().sourceLine(r.originOf(i));
+            }
+        }
+        assertEquals(10, first, texts(r).toString());
+        // at the point itself nothing is said
+        Resume still = new Resume(c.program(), c.blocks(), 3);
+        still.plan(new ResumePoint(7, 0), c.program().motionsOf(7).get(0).start());
+        assertTrue(still.ranOn().isEmpty());
+    }
+
+    /**
+     * Under G96 the spindle is restored as the surface speed, not as the r/min last set: resumed part
+     * way out along line 9's face at X46, S200 m/min gives 1000 x 200 / (pi x 46) = 1383.9 r/min, on
+     * haas's drive (OF of C) 1383.9 / 410 = 3.3755 V (the program's last speed was set for X40).
+     */
+    @Test
+    void underG96TheSpindleIsRestoredAsTheSurfaceSpeedWhereTheAxesAre() throws Exception {
+        String css = String.join("\n", "O1005", "G21 G99", "G50 S2500", "T0101", "G96 S200 M03", "G00 X42. Z2.",
+                "G01 X40. F0.2", "G01 Z-30.", "G01 X50.", "G00 X60. Z5.", "M05", "M30", "");
+        Compiled c = compiled(css);
+        MachineProfile haas = Session.open(Session.Options.defaults().withMachine("haas")).profile();
+        Resume resume = new Resume(c.program(), c.blocks(), 3).spindle(haas);
+        resume.plan(new ResumePoint(9, 0), c.galil(9, 46, -30));
+        double volts = Double.NaN;
+        for (gcnc.dmc.Command r : resume.restored()) {
+            if (r instanceof gcnc.dmc.Command.Offset o) {
+                volts = o.volts().value();
+            }
+        }
+        assertEquals(1000 * 200 / (Math.PI * 46) / 410, volts, 0.0001, resume.restored().toString());
+        // without the machine's spindle the resume restores the r/min last set (not the surface speed's here)
+        Resume plain = new Resume(c.program(), c.blocks(), 3);
+        plain.plan(new ResumePoint(9, 0), c.galil(9, 46, -30));
+        double last = Double.NaN;
+        for (gcnc.dmc.Command r : plain.restored()) {
+            if (r instanceof gcnc.dmc.Command.Offset o) {
+                last = o.volts().value();
+            }
+        }
+        assertTrue(Math.abs(last - volts) > 0.1, last + " against " + volts);
+    }
+
     @Test
     void resumePointsAreWrittenNOrNK() {
         assertEquals(new ResumePoint(37, 0), ResumePoint.parse("37"));
@@ -237,10 +315,9 @@ class ResumeTest {
 
     static Compiled compiled(String text) throws Exception {
         Session session = Session.open(Session.Options.defaults().withMachine("haas"));
-        List<gcnc.dmc.Instruction> out = new ArrayList<>();
-        session.compile(new StringReader(text), java.util.Optional.empty(), false, out::add);
-        return new Compiled(DmcProgram.of(out, session.profile()),
-                BlockTable.of(new StringReader(text), session.tables(), session.profile(), java.util.Optional.empty()));
+        CompiledRun seen = new CompiledRun();
+        session.compile(new StringReader(text), java.util.Optional.of(session.simulation()), false, line -> { }, seen);
+        return new Compiled(seen.program(session.profile()), seen.blocks(text));
     }
 
     @Test

@@ -65,6 +65,11 @@ class ModelTest {
         assertEquals(Optional.of(new StockSize(22, 120, 120)), StockHeader.parse("(120.00 22.00 5.00 5.00)", 150));
         assertEquals(Optional.empty(), StockHeader.parse("(ROUGH FACE)", 150));
         assertEquals(Optional.empty(), StockHeader.parse("N10 G00 X1", 150));
+        // a Denford / MIRAC first line: X the diameter, Z the length (E261 says it is read as a comment)
+        assertEquals(Optional.of(new StockSize(50, 100, 100)), StockHeader.parse("[BILLET X50 Z100", 150));
+        assertEquals(Optional.of(new StockSize(30, 65, 40)), StockHeader.parse("[billet x30 z65", 40));
+        assertEquals(Optional.empty(), StockHeader.parse("[BILLET X50", 150));
+        assertEquals(Optional.empty(), StockHeader.parse("[EDGEMOVE X0 Z-2", 150));
         assertEquals(Optional.empty(), StockHeader.parse("(120)", 150));
     }
 

@@ -157,10 +157,11 @@ final class CompileCommand extends RunCommand {
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
         Optional<SimOptions> sim;
         try {
-            sim = simulate ? Optional.of(stock.options(profile)) : Optional.empty();
+            sim = simulate ? Optional.of(stock.options(profile, SourceFiles.isStdin(file) ? null : file, phrases)) : Optional.empty();
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
+        stock.unitsNote().ifPresent(err::println);
         if (noSimulate) {
             err.println(phrases.get("compile.no_simulate"));
         } else if (!simulate) {

@@ -112,7 +112,8 @@ final class OffsetsCommand implements Callable<Integer> {
             }
             SimOptions sim;
             try {
-                sim = stock.options(setup.profile());
+                sim = stock.options(setup.profile(), file, reporter.phrases());
+                stock.unitsNote().ifPresent(reporter::say);
             } catch (StockOptions.BadStock e) {
                 throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
             }

@@ -9,6 +9,7 @@ import gcnc.diag.Messages;
 import gcnc.output.DmcOutputs;
 import gcnc.output.FormOutputs;
 import gcnc.send.BlockTable;
+import gcnc.send.CompiledRun;
 import gcnc.send.DmcProgram;
 import gcnc.send.Event;
 import gcnc.send.EventSink;
@@ -28,6 +29,7 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.io.Reader;
+import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -176,10 +178,11 @@ final class SendCommand implements Callable<Integer> {
         EventSink events = json ? new JsonEvents(out) : new StatusText(out, err, name, quiet, System.console() != null, reporter.phrases());
         Optional<SimOptions> sim;
         try {
-            sim = Optional.of(stock.options(setup.profile()));
+            sim = Optional.of(stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, reporter.phrases()));
         } catch (StockOptions.BadStock e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
+        stock.unitsNote().ifPresent(err::println);
         // 0. a bus card (ISA, PCI) answers on the computer's bus only: refused before anything is compiled
         // or opened (the profile still compiles for it with gcnc compile)
         gcnc.machine.GalilModel busModel = setup.profile().galilModel();
@@ -188,32 +191,29 @@ final class SendCommand implements Callable<Integer> {
                     busModel.family().startsWith("DMC-17") ? "ISA" : "PCI");
         }
         // 1. the compile, as `gcnc compile` does it: FILE.dmc (and FILE.stream in the stream form) with their
-        // maps, written only when clean; the instructions kept as they come, so that what is sent is what
-        // the compiler made
+        // maps, written only when clean; what the run needs of it (the lines as the simulator replayed them,
+        // with its clock; the checker's state at each block) taken as the compile publishes it
+        // (CompiledRun), so that what is sent is what the compiler made and the time left is its cycle time
         Optional<gcnc.dmc.Form> asked = Optional.ofNullable(form);
         Path dmc = DmcOutputs.defaultOutput(file);
-        List<Instruction> compiled = new ArrayList<>();
+        CompiledRun seen = new CompiledRun();
         DmcProgram program;
+        BlockTable blocks;
         gcnc.dmc.Form chosen;
         try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(file.getFileName().toString(), file);
             Consumer<Instruction> written = outputs.sink(asked, setup.profile().controllerLimits());
-            Consumer<Instruction> sink = i -> {
-                compiled.add(i);
-                written.accept(i);
-            };
-            Compiler.Result r;
+            String text;
             try (Reader in = SourceFiles.open(file)) {
-                Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
-                // blended as the profile plans it; step mode runs one block at a time, so every motion
-                // stops at its end there (docs/run.md, "Step mode")
-                r = step ? session.compileExactStop(in, sim, sink) : session.compile(in, sim, false, sink);
+                text = CompiledRun.text(in); // read once: the compile's input and the comments a stop shows
             }
-            if (r.ok()) {
-                chosen = outputs.finish(r.diagnostics()); // a program form asked for that does not fit is E238
-            } else {
-                chosen = null;
-            }
+            Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
+            // blended as the profile plans it; step mode runs one block at a time, so every motion
+            // stops at its end there (docs/run.md, "Step mode")
+            Compiler.Result r = step ? session.compileExactStop(new StringReader(text), sim, written, seen)
+                    : session.compile(new StringReader(text), sim, false, written, seen);
+            // a program form asked for that does not fit is E238, a finding of the compile's
+            chosen = r.ok() ? outputs.finish(r.diagnostics()) : null;
             if (!r.ok()) {
                 if (json) {
                     for (Diagnostic d : r.diagnostics().sorted()) {
@@ -227,17 +227,12 @@ final class SendCommand implements Callable<Integer> {
                         reporter.phrases().count(r.diagnostics().errorCount(), "error")));
                 return Sender.REFUSED;
             }
-            program = DmcProgram.of(compiled, setup.profile());
+            program = seen.program(setup.profile());
+            // 2. the checker's state at each block, for the status line
+            blocks = seen.blocks(text);
             outputs.commit();
         } catch (DmcOutputs.Failed e) {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
-        } catch (IOException e) {
-            return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
-        }
-        // 2. the checker's state at each block, for the status line
-        BlockTable blocks;
-        try (Reader again = SourceFiles.open(file)) {
-            blocks = BlockTable.of(again, setup.tables(), profileOnBlank(setup, sim), SourceFiles.programsFolder(file));
         } catch (IOException e) {
             return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
@@ -309,11 +304,6 @@ final class SendCommand implements Callable<Integer> {
         }
         return bad.isEmpty() ? java.util.Optional.empty() : java.util.Optional.of(new RunFault(Code.E832_PROBE_CONTRADICTS,
                 0, false, probeReport.toString(), String.join("; ", bad)));
-    }
-
-    /** The profile the compile used: with a blank given, the work offsets on the blank's face (as Compiler does). */
-    private static gcnc.machine.MachineProfile profileOnBlank(CommonOptions.Setup setup, Optional<SimOptions> sim) {
-        return sim.flatMap(SimOptions::stock).map(b -> setup.profile().withStickout(b.stickout())).orElse(setup.profile());
     }
 
     private Link openTcp(String hostPort) throws RunFault {

@@ -2,6 +2,7 @@ package gcnc.cli;
 
 import gcnc.Compiler;
 import gcnc.SetupSheet;
+import gcnc.SheetImage;
 import gcnc.diag.Phrase;
 import gcnc.output.AtomicOutput;
 import gcnc.sim.SimOptions;
@@ -28,8 +29,9 @@ import picocli.CommandLine.Parameters;
  * simulation ran.
  */
 @Command(name = "sheet", mixinStandardHelpOptions = true,
-        description = {"Write a program's setup sheet: one self-contained HTML page with the program, machine, units,"
-                + " blank, work zero, tools, cycle time, top spindle speed, every finding, the envelope and the drawing."},
+        description = {"Write a program's setup sheet: one self-contained HTML page (or a PNG image: -o sheet.png) with the"
+                + " program, machine, units, blank, work zero, tools, cycle time, top spindle speed and the program's G50/G92"
+                + " limit, every finding, the envelope and the drawing."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:no errors; the sheet was written", "1:the program has errors (the sheet lists them when"
                 + " the simulation ran, else nothing was written)",
@@ -45,17 +47,20 @@ final class SheetCommand extends RunCommand {
     Path file;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT",
-            description = "The sheet (default: FILE with extension .html); - writes standard output. Never the program itself.")
+            description = "The sheet (default: FILE with extension .html); a name ending in .png writes it as one PNG image;"
+                    + " - writes the HTML to standard output. Never the program itself.")
     Path output;
 
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         SimOptions options;
         try {
-            options = stock.options(setup.profile()).withPath();
+            options = stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, setup.reporter().phrases())
+                    .withPath();
         } catch (StockOptions.BadStock e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
+        stock.unitsNote().ifPresent(err::println);
         Reporter reporter = setup.reporter();
         if (SourceFiles.isStdin(file)) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "sheet reads a program file, not standard input");
@@ -106,9 +111,21 @@ final class SheetCommand extends RunCommand {
         }
         SetupSheet sheet = SetupSheet.of(name, number, setup.profile(), sim.get(), r.diagnostics(),
                 reporter.messages());
+        try (Reader in = gcnc.Session.decode(java.nio.file.Files.newInputStream(file))) {
+            sheet = sheet.withClamps(setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)), in);
+        } catch (IOException e) {
+            return reporter.ioFault(name, Phrase.IO_CANNOT_READ, e);
+        }
+        boolean png = !toStdout && target.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png");
         out.flush();
         try (AtomicOutput o = toStdout ? AtomicOutput.toStream(streams().out()) : AtomicOutput.open(target, output == null ? AtomicOutput.Name.DERIVED : AtomicOutput.Name.GIVEN)) {
-            sheet.write(svg.toString(), o.writer());
+            if (png) {
+                java.io.ByteArrayOutputStream image = new java.io.ByteArrayOutputStream();
+                SheetImage.write(sheet, true, image);
+                o.bytes(image.toByteArray());
+            } else {
+                sheet.write(svg.toString(), o.writer());
+            }
             o.commit();
         } catch (IOException e) {
             return reporter.ioFault(toStdout ? "<stdout>" : target.toString(), Phrase.IO_CANNOT_WRITE, e);

@@ -56,10 +56,11 @@ final class SimulateCommand extends RunCommand {
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
         SimOptions options;
         try {
-            options = stock.options(setup.profile());
+            options = stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, setup.reporter().phrases());
         } catch (StockOptions.BadStock e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
+        stock.unitsNote().ifPresent(err::println);
         Reporter reporter = setup.reporter();
         boolean svgToStdout = svg != null && SourceFiles.isStdin(svg);
         if (svgToStdout && reporter.format() != Reporter.Format.GNU) {

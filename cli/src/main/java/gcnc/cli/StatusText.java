@@ -56,7 +56,9 @@ final class StatusText implements EventSink {
             blockChanged = true;
         } else if (e instanceof Event.Stopped s) {
             endLine();
-            out.println(say.get("run.stopped", block(s.completed()), block(s.executing())));
+            // a dropped link did not stop the controller: it may run on without the host (E851)
+            out.println(say.get("E851".equals(s.reason()) ? "run.link_dropped" : "run.stopped", block(s.completed()),
+                    block(s.executing())));
             if (s.resume() != null) {
                 out.println(say.get("run.resume", s.resume()));
             }

@@ -62,6 +62,11 @@ final class Advisories {
      * A C word in a program that has used a C-axis or live-tool M code: E650 at it (the block is
      * rejected by the caller). False when the block has no C word or no such code came before.
      */
+    /** Whether a C-axis option code (M154, Fanuc's builder code) is in force: a C is then the axis, not a chamfer. */
+    boolean cAxisOn() {
+        return axisOption != null;
+    }
+
     boolean cAxis(RawBlock b, Diagnostics out) {
         if (axisOption == null) {
             return false;

@@ -77,6 +77,8 @@ public final class Checker {
     private final Set<String> aside = new HashSet<>();
     private long blocks;
     private boolean stopped;
+    /** Warning E053 given for the blocks after the end in force (once, not per block). */
+    private boolean warnedAfterEnd;
     /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
     private NoseCompensation nose;
     /** What the control runs but may not be meant: offset 00 cuts, a feed mode without F, C-axis codes. */
@@ -207,9 +209,16 @@ public final class Checker {
         }
         boolean isFirst = blocks++ == 0;
         if (state.ended()) {
-            out.error(Code.E053_M30_NOT_LAST, first);
+            // the control never runs a block after M30/M02 (issue 31: a warning, where the thesis
+            // made it an error; docs/thesis.md), once for the blocks after an end, none of them
+            // checked as running
+            if (!warnedAfterEnd) {
+                out.report(Diagnostic.warning(Code.E053_M30_NOT_LAST, first));
+                warnedAfterEnd = true;
+            }
             return List.of();
         }
+        warnedAfterEnd = false;
         return flow(b, isFirst);
     }
 
@@ -359,9 +368,9 @@ public final class Checker {
         return new Dry(r, d.next.build());
     }
 
-    /** The chamfer or corner word of a contour block read ahead ({@link CornerInsertion#inContour}), or null. */
-    Word cornerInContour(RawBlock b, ModalState from) {
-        return corners.inContour(b, from);
+    /** A cycle's contour with its chamfers and corners made, followed from {@code from} ({@link CornerInsertion#inContour}). */
+    List<RawBlock> cornersInContour(List<RawBlock> blocks, ModalState from) {
+        return corners.inContour(blocks, from);
     }
 
     /** Reports findings of a block checked outside the flow (a contour read ahead), remembering them. */
@@ -375,6 +384,28 @@ public final class Checker {
 
     Diagnostics out() {
         return out;
+    }
+
+    /**
+     * A block refused for one word that is not part of its move (the thesis's R on a G01): when
+     * the block without it ({@code fixed}) is sound, the state it would leave is taken, as if the
+     * programmer had fixed what was reported, and true (the caller reports the error; the block
+     * itself is not run). False, nothing changed, when {@code fixed} has errors of its own.
+     */
+    boolean takeFixed(RawBlock fixed) {
+        BlockDraft d = draft.start(fixed, state, false);
+        Diagnostics none = new Diagnostics();
+        if (!words(d, none, false) || motions.build(d, none) == null) {
+            return false;
+        }
+        // as a block whose move failed (recover): its motion G and its end point, nothing else of it
+        state = Salvage.moved(fixed, state, d, functions, profile);
+        return true;
+    }
+
+    /** Whether the C axis is engaged (after a C-axis option code): C is then an axis word, not a chamfer. */
+    boolean cAxisOn() {
+        return advisories.cAxisOn();
     }
 
     /** The cycle whose contour is being read ("G71"), or null. */

@@ -17,7 +17,7 @@ import java.util.function.IntFunction;
  * The contour N(P)..N(Q) of a cycle, followed from the cycle's start without changing the
  * program's state (shared by G71 and G72; G70 follows the same blocks again as ordinary blocks).
  * Each block is checked aside: its own errors are reported on its own line, once; what a contour
- * cannot hold is E162.
+ * cannot hold is E162. Its chamfers and corners were made before ({@link CornerInsertion#inContour}).
  */
 final class ContourReader {
     private final Checker host;
@@ -44,14 +44,6 @@ final class ContourReader {
             Word foreign = foreign(b);
             if (foreign != null) {
                 host.out().error(Code.E162_CONTOUR_WORD, foreign.span(), call.name(), line, foreign);
-                ok = false;
-                continue;
-            }
-            Word corner = host.cornerInContour(b, s);
-            if (corner != null) {
-                // a Haas ,C/,R or a Fanuc C/R in a contour: the cycle's passes would need the corner too
-                host.out().error(Code.E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET, corner.span(), corner.toString(),
-                        call.name());
                 ok = false;
                 continue;
             }

@@ -44,11 +44,16 @@ final class CornerInsertion {
 
     private final Checker host;
     private final CornerWords words;
+    private final AngleLine angles;
     private Held held;
+    /** A G01 with ,A alone, waiting for the block that completes the two-block form ({@link AngleLine#pair}). */
+    private RawBlock angleAlone;
+    private boolean angleAloneFirst;
 
     CornerInsertion(Checker host) {
         this.host = host;
         this.words = new CornerWords(host);
+        this.angles = new AngleLine(host);
     }
 
     /** The same insertion for the other position of the block delete switch (Checker.fork). */
@@ -56,28 +61,35 @@ final class CornerInsertion {
         CornerInsertion c = new CornerInsertion(other);
         c.held = held == null ? null : new Held(held.block, held.request, held.isFirst, held.from, held.corner,
                 held.after, new ArrayList<>(held.still), held.afterStill);
+        c.angleAlone = angleAlone;
+        c.angleAloneFirst = angleAloneFirst;
         return c;
     }
 
-    /**
-     * The chamfer or corner word of a contour block read ahead by a cycle (G71, G72, G73), or
-     * null: such a corner is not followed yet (E614, reported by the caller).
-     */
-    Word inContour(RawBlock b, ModalState from) {
-        if (b.malformed() || b.macro() != null || !words.mayAsk(b)) {
-            return null;
-        }
-        Request r = words.read(b, from, new ArrayList<>(b.words().size()), new Diagnostics());
-        return r == null ? null : r.word();
+    /** A cycle's contour with its corners made ({@link ContourCorners#made}). */
+    List<RawBlock> inContour(List<RawBlock> blocks, ModalState start) {
+        return new ContourCorners(this, host, words, angles).made(blocks, start);
     }
 
     /** The next block of the program's flow: held, released with the corner, or passed on. */
     List<CheckedBlock> flow(RawBlock b, boolean isFirst) {
+        if (angleAlone != null) {
+            return completeAngle(b);
+        }
         if (held != null) {
             return next(b);
         }
-        if (b.malformed() || b.macro() != null) {
+        if (b.malformed() || b.macro() != null || host.readingContour() != null) {
+            // a contour block keeps its corner words: the cycle makes its corners ({@link #inContour})
             return host.flowOn(b, isFirst);
+        }
+        if (angles.alone(b)) {
+            angleAlone = b;
+            angleAloneFirst = isFirst;
+            return List.of();
+        }
+        if (angles.asks(b)) {
+            b = angles.resolve(b, host.state(), host.out());
         }
         if (!words.mayAsk(b)) {
             return host.flowOn(b, isFirst); // nearly every block: nothing allocated, nothing run twice
@@ -88,13 +100,12 @@ final class CornerInsertion {
         if (r == null) {
             return host.flowOn(b, isFirst);
         }
+        if (r == Request.REFUSED) {
+            return List.of(); // the thesis's R on a G01 (E025): refused, the state taken past it
+        }
         RawBlock stripped = b.called(rest, b.last(), b.depth());
         if (r.word() == null) {
             return host.flowOn(stripped, isFirst); // an error was reported; the block runs without it
-        }
-        if (host.readingContour() != null) {
-            out.error(Code.E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET, r.word().span(), r.name(), host.readingContour());
-            return host.flowOn(stripped, isFirst);
         }
         if (host.startsCycle(stripped)) {
             out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
@@ -113,8 +124,30 @@ final class CornerInsertion {
         return List.of();
     }
 
+    /** The block after a G01 with ,A alone: the two-block form made, or E606 and both run as written. */
+    private List<CheckedBlock> completeAngle(RawBlock b) {
+        RawBlock first = angleAlone;
+        boolean isFirst = angleAloneFirst;
+        angleAlone = null;
+        RawBlock[] pair = angles.pair(first, b, host.state(), host.out());
+        List<CheckedBlock> done = new ArrayList<>();
+        if (pair == null) {
+            done.addAll(flow(angles.resolve(first, host.state(), host.out()), isFirst));
+            done.addAll(flow(b, false));
+        } else {
+            done.addAll(flow(pair[0], isFirst));
+            done.addAll(flow(pair[1], false));
+        }
+        return done;
+    }
+
     /** The program ended with a corner block held (it has no M30 either): E609. */
     void finish(int lastLine) {
+        if (angleAlone != null) {
+            RawBlock first = angleAlone;
+            angleAlone = null;
+            flow(angles.resolve(first, host.state(), host.out()), angleAloneFirst); // a corner on it is E609 below
+        }
         if (held != null) {
             host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word().span(), held.request.name(), lastLine);
             held = null;
@@ -124,6 +157,9 @@ final class CornerInsertion {
     /** A block after a held corner block. */
     private List<CheckedBlock> next(RawBlock b) {
         Held h = held;
+        if (!b.malformed() && b.macro() == null && angles.asks(b)) {
+            b = angles.resolve(b, h.afterStill, host.out());
+        }
         if (b.malformed() || b.macro() != null || host.startsCycle(b)) {
             // a block gcnc cannot follow (reported on its own) or a cycle: no G01 to make the corner with
             if (!b.malformed() && b.macro() == null) {
@@ -160,17 +196,43 @@ final class CornerInsertion {
 
     /** Makes the corner between the held move and the next one ending at {@code end}, or reports why not. */
     private List<CheckedBlock> corner(Held h, RawBlock next, Point end, ModalState nextState) {
-        Units u = h.after.units();
+        Made m = make(h.block, h.request, h.from, h.corner, h.after, next, end, nextState);
+        if (m == null) {
+            return release(next);
+        }
+        held = null;
+        List<CheckedBlock> done = new ArrayList<>();
+        done.addAll(host.flowOn(m.shortened, h.isFirst));
+        done.addAll(host.flowOn(m.insert, false));
+        host.keepMotion(h.after.motion());
+        for (RawBlock s : h.still) {
+            done.addAll(host.flowOn(s, false));
+        }
+        done.addAll(flow(m.next, false));
+        return done;
+    }
+
+    /** A corner made: the corner block shortened, the chamfer line or arc, and the next move from its end. */
+    record Made(RawBlock shortened, RawBlock insert, RawBlock next) {
+    }
+
+    /**
+     * The blocks of the corner {@code r} of {@code block} (from {@code from} to {@code corner}, the
+     * state {@code after} it) with the next move {@code next} ending at {@code end}; null after the
+     * error that says why there is none.
+     */
+    Made make(RawBlock block, Request r, Point from, Point corner, ModalState after, RawBlock next,
+                      Point end, ModalState nextState) {
+        Units u = after.units();
         double px = host.coordinates().perRadius(u);
         double pz = host.coordinates().perZ(u);
-        Point p0 = new Point(h.from.x() / px, h.from.z() / pz);
-        Point p1 = new Point(h.corner.x() / px, h.corner.z() / pz);
+        Point p0 = new Point(from.x() / px, from.z() / pz);
+        Point p1 = new Point(corner.x() / px, corner.z() / pz);
         Point p2 = new Point(end.x() / px, end.z() / pz);
-        Request r = h.request;
         CornerGeometry.Corner c = r.round() ? CornerGeometry.round(p0, p1, p2, r.size())
                 : CornerGeometry.chamfer(p0, p1, p2, r.size());
         if (c.ok() && r.square() && !squareFits(r, p0, p1, p2, next)) {
-            return release(next);
+            return null;
         }
         if (!c.ok()) {
             if (c.failure() == CornerGeometry.Failure.IN_LINE) {
@@ -178,45 +240,43 @@ final class CornerInsertion {
             } else {
                 host.out().error(Code.E611_CORNER_TOO_LARGE, r.word().span(), r.name(), length(c.taken(), u),
                         length(c.length(), u), c.failure() == CornerGeometry.Failure.FIRST_TOO_SHORT
-                                ? h.block.line() : next.line());
+                                ? block.line() : next.line());
             }
-            return release(next);
+            return null;
         }
-        held = null;
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, h.after), h.block.line(), r.word().span());
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, after), block.line(), r.word().span());
         Point start = counts(c.start(), px, pz);
         Point stop = counts(c.end(), px, pz);
-        List<CheckedBlock> done = new ArrayList<>();
-        done.addAll(host.flowOn(moveTo(h.block, writer, start, h.from), h.isFirst));
         Move.Kind kind = c.centre() == null ? Move.Kind.FEED
                 : c.clockwise() ? Move.Kind.ARC_CW : Move.Kind.ARC_CCW;
         Point centre = c.centre() == null ? null : counts(c.centre(), px, pz);
-        done.addAll(host.flowOn(writer.block(new Move(kind, stop, centre, 0), start), false));
-        host.keepMotion(h.after.motion());
-        for (RawBlock s : h.still) {
-            done.addAll(host.flowOn(s, false));
-        }
+        RawBlock insert = writer.block(new Move(kind, stop, centre, 0), start);
         // the next move now starts where the corner ends: written as increments it is rewritten
         // from there, so that it still ends where the program put it
         RawBlock moved = incremental(next, nextState)
                 ? moveTo(next, new MoveWriter(CycleExpansion.frame(host, nextState), next.line(),
                         next.words().get(0).span()), end, stop)
                 : next;
-        done.addAll(flow(moved, false));
-        return done;
+        return new Made(moveTo(block, writer, start, from), insert, moved);
     }
 
     /** The 90-degree forms: the moves along the two axes, and I for a first move along Z, K along X. */
     private boolean squareFits(Request r, Point p0, Point p1, Point p2, RawBlock next) {
         Letter l = r.word().letter();
         boolean alongZ = CornerGeometry.firstAlongZ(p0, p1);
+        boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
+        if (letters && (l == Letter.C || l == Letter.R) && !CornerGeometry.square(p0, p1, p2)) {
+            // Fanuc's C and R are for a corner between the two axes (PS0054); at another angle the
+            // control wants the direct drawing form with its comma, which gcnc reads
+            host.out().error(Code.E210_CORNER_WANTS_COMMA, r.word().span(), r.name(), next.line(), "," + l.name());
+            return false;
+        }
         if (!CornerGeometry.square(p0, p1, p2) || l == Letter.I && !alongZ || l == Letter.K && alongZ) {
             host.out().error(Code.E612_CORNER_NOT_SQUARE, r.word().span(), r.name(), next.line());
             return false;
         }
         // Fanuc: the sign says which way the next move goes (C-1. into a -Z move); a corner the
         // other way is not a path gcnc can follow, and not what the program meant
-        boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
         double along = alongZ ? p2.x() - p1.x() : p2.z() - p1.z();
         if (letters && Math.signum(along) != r.sign()) {
             host.out().error(Code.E615_CORNER_SIGN, r.word().span(), r.name(), next.line());
@@ -238,7 +298,7 @@ final class CornerInsertion {
     }
 
     /** {@code b} with its X, Z, U and W replaced by a move from {@code from} to {@code to}. */
-    private static RawBlock moveTo(RawBlock b, MoveWriter writer, Point to, Point from) {
+    static RawBlock moveTo(RawBlock b, MoveWriter writer, Point to, Point from) {
         List<Word> words = new ArrayList<>(b.words().size() + 1);
         for (Word w : b.words()) {
             Letter l = w.letter();
@@ -265,12 +325,12 @@ final class CornerInsertion {
     }
 
     /** The block's one feed move (a G01), or null. */
-    private static Motion.Linear feedLine(CheckedBlock c) {
+    static Motion.Linear feedLine(CheckedBlock c) {
         return CornerWords.feedLine(c.motions());
     }
 
     /** Whether the block moves the tool (a dwell does not). */
-    private static boolean moves(CheckedBlock c) {
+    static boolean moves(CheckedBlock c) {
         for (Motion m : c.motions()) {
             if (m.accept(MOVES)) {
                 return true;

@@ -14,10 +14,12 @@ import java.util.List;
 
 /**
  * Which words of a block ask for a G01 chamfer or corner rounding, on the control's form
- * ({@code g01.corner}, docs/chamfer.md): Haas {@code ,C} {@code ,R} and I/K, Fanuc T C, R and
- * I/K. C, R, I and K are corner words only on a G01 (on G02/G03 they are the arc's); comma words
- * a control does not read, and {@code ,A}, are errors here (E604-E606), as are two corners in one
- * block (E608). For {@link CornerInsertion}.
+ * ({@code g01.corner}, docs/chamfer.md): Haas {@code ,C} {@code ,R} at any angle, C and R without
+ * the comma the same, and I/K for 90 degrees; Fanuc T C, R and I/K for 90 degrees and the direct
+ * drawing {@code ,C} {@code ,R} at any angle. C, R, I and K are corner words only on a G01 (on
+ * G02/G03 they are the arc's); a comma word on a control without corners is E604, an R on its
+ * G01 E025 (the block runs without it), two corners in one block E608. {@code ,A} is
+ * {@link AngleLine}'s. For {@link CornerInsertion}.
  */
 final class CornerWords {
     /**
@@ -27,6 +29,8 @@ final class CornerWords {
      */
     record Request(Word word, boolean round, double size, boolean square) {
         static final Request FAILED = new Request(null, false, 0, false);
+        /** The block was refused for its corner word, the error reported and the state taken past it: nothing runs. */
+        static final Request REFUSED = new Request(null, true, 0, false);
 
         String name() {
             return word.toString();
@@ -53,7 +57,7 @@ final class CornerWords {
             Word w = ws.get(at);
             Letter l = w.letter();
             if (w.comma() || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)
-                    || form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)) {
+                    || l == Letter.C && !host.cAxisOn() || l == Letter.R) {
                 return true;
             }
         }
@@ -63,6 +67,9 @@ final class CornerWords {
     /**
      * The corner the block asks for, run from {@code from}, its other words put in {@code rest};
      * null when it asks for none, {@link Request#FAILED} after an error reported to {@code out}.
+     * On the thesis's control (no corners) an R on a sound G01 is {@link Request#REFUSED}: E025
+     * reported and the checker's state taken past the block ({@link Checker#takeFixed}), so this
+     * is called for such a control only for the block the flow is at.
      */
     Request read(RawBlock b, ModalState from, List<Word> rest, Diagnostics out) {
         Control.Corners form = host.profile().control().corners();
@@ -74,7 +81,7 @@ final class CornerWords {
         for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
             Word w = ws.get(at);
             if (w.comma()) {
-                if (w.letter() == Letter.A || form != Control.Corners.COMMA) {
+                if (w.letter() == Letter.A || form == Control.Corners.NONE) {
                     reported |= wrongComma(w, out);
                 } else if (found == null) {
                     found = w;
@@ -84,7 +91,13 @@ final class CornerWords {
                 continue;
             }
             Letter l = w.letter();
-            if (form == Control.Corners.LETTERS && (l == Letter.C || l == Letter.R)
+            // C and R without the comma: Fanuc's 90-degree chamfering and corner R (0i-TF operator's
+            // manual, "Chamfering and corner R", CCR = 1); on a Haas the same as ,C and ,R (the
+            // classic control's lathe G-code list, "G01 chamfering and corner rounding (X, Z, U, W,
+            // B, I, K, R, A, F)", writes them without the comma and Haas school programs use them;
+            // the NGC manual writes the comma and names no alarm for the letters alone:
+            // docs/chamfer.md, "Without the comma"); a C with the C axis engaged is the axis
+            if (l == Letter.C && !host.cAxisOn() || l == Letter.R
                     || form != Control.Corners.NONE && (l == Letter.I || l == Letter.K)) {
                 candidates.add(w);
             }
@@ -95,6 +108,26 @@ final class CornerWords {
         }
         if (!candidates.isEmpty() && isG01(b, candidates, from)) {
             rest.removeAll(candidates);
+            if (form == Control.Corners.NONE) {
+                // the thesis's language has no corner function: R on a G01 is its error 25 (a C
+                // is E004, the block's own error). The block is refused, but when it is sound
+                // without the R the tool is taken to its end point, as if the R were struck out,
+                // so that the blocks after it are not judged from the wrong place (no E101/E049
+                // on the next arc)
+                Word r = null;
+                for (Word w : candidates) {
+                    if (w.letter() == Letter.R && r == null) {
+                        r = w;
+                    } else {
+                        rest.add(w);
+                    }
+                }
+                if (r != null && candidates.size() == 1 && host.takeFixed(b.called(rest, b.last(), b.depth()))) {
+                    out.error(Code.E025_R_NOT_ALLOWED, r.span(), "G01");
+                    return Request.REFUSED;
+                }
+                return null; // the block's own checks report it
+            }
             for (Word w : candidates) {
                 if (found == null) {
                     found = w;
@@ -110,18 +143,28 @@ final class CornerWords {
             out.error(Code.E608_TWO_CORNERS, second.span(), found, second);
             return Request.FAILED;
         }
-        return new Request(found, found.letter() == Letter.R, size(found, from.units()), !found.comma());
+        return new Request(found, found.letter() == Letter.R, size(found, from.units()), square(found, form));
     }
 
-    /** A comma word this control does not read: E606 for ,A; E604 without corners; E605 on Fanuc. */
+    /**
+     * Whether the word asks for a 90-degree corner: I and K on both forms, and Fanuc's C and R
+     * without a comma (its "chamfering and corner R"). A comma word is any angle (Haas ,C ,R;
+     * Fanuc's direct drawing dimension programming ,C ,R), and so are Haas's C and R written
+     * without the comma (docs/chamfer.md, "Without the comma").
+     */
+    private static boolean square(Word w, Control.Corners form) {
+        Letter l = w.letter();
+        return !w.comma() && (l == Letter.I || l == Letter.K || form == Control.Corners.LETTERS);
+    }
+
+    /**
+     * A comma word this control does not read: E604 without corners. (A ,A that reaches here was
+     * left by {@link AngleLine}, which reported it.)
+     */
     private boolean wrongComma(Word w, Diagnostics out) {
         Control c = host.profile().control();
-        if (w.letter() == Letter.A) {
-            out.error(Code.E606_ANGLE_NOT_SUPPORTED_YET, w.span(), w);
-        } else if (c.corners() == Control.Corners.NONE) {
+        if (c.corners() == Control.Corners.NONE) {
             out.error(Code.E604_NO_CORNER_FUNCTION, w.span(), w, c.name());
-        } else {
-            out.error(Code.E605_DIRECT_DRAWING_NOT_SUPPORTED_YET, w.span(), w, c.name(), w.letter().name());
         }
         return true;
     }

@@ -24,7 +24,9 @@ import java.util.Set;
 /**
  * The drilling cycles on the spindle axis of the Haas lathe (docs/cycles.md): G81 drill, G82 spot
  * drill (a dwell P at the bottom, read as G04's P), G83 peck drill (Q the peck, or I the first
- * peck, J how much less each next one, K the smallest), each {@code X(U) Z(W) R F}: X where the
+ * peck, J how much less each next one, K the smallest), G84/G184 tapping, G85/G86/G89 boring
+ * ({@link HoleBoring}); on the Fanuc 0i-TF G83 face drilling, G84 face tapping, G85 face boring
+ * and the Series 15 format G81/G82 (G83 without pecks; G82 with its dwell), each {@code X(U) Z(W) R F}: X where the
  * hole is (the spindle centre, X0, unless the drill is made to cut off centre: E186), Z the bottom,
  * R the Z of the R plane. The moves are {@link Drilling}'s. The cycle is modal in its group: a
  * later block with X, U, Z or W and no G of its group, of the motion group or one-shot drills
@@ -33,12 +35,17 @@ import java.util.Set;
 final class HoleDrilling {
     /** The most pecks one hole is expanded into. */
     static final int MAX_PECKS = 10_000;
+    /** The most repeats (K, L) of one hole gcnc expands. */
+    static final int MAX_REPEATS = 99;
     private static final double EPS_MM = 0.001;
     private static final Set<Letter> OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.I, Letter.J, Letter.K,
             Letter.L);
-    /** Fanuc's words (control key cycle.drill_words = fanuc): R, P the dwell, Q the peck, K the repeats. */
-    private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.C,
-            Letter.H);
+    /**
+     * Fanuc's words (control key cycle.drill_words = fanuc): R, P the dwell, Q the peck, K the
+     * repeats (L in the Series 15 format of G81/G82).
+     */
+    private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.L,
+            Letter.C, Letter.H);
 
     private final Checker host;
     /** The cycle in force, or null; its name, group and what later blocks keep. */
@@ -178,23 +185,47 @@ final class HoleDrilling {
         }
         // Fanuc B/C G99: back to the R point after the hole; G98 (and Haas, Fanuc A): to the initial level
         double returnZ = start.returnToR() ? rPlane : initial;
+        // K (Fanuc) or L (Haas, Fanuc Series 15): the same hole that many times, each from the
+        // return level; K0 keeps the cycle's data and drills nothing (checked: check, checkFanuc)
+        Word rep = words.has(Letter.L) ? words.word(Letter.L) : fanuc ? words.word(Letter.K) : null;
+        int repeats = rep == null ? 1 : (int) NumberText.decimal(rep.number());
+        int errors = host.out().errorCount();
+        for (int k = 0; k < repeats && host.out().errorCount() == errors; k++) {
+            if (!hole(b, at, k == 0 ? start : host.state(), end.x(), returnZ, label, words, done)) {
+                break;
+            }
+        }
+        return done;
+    }
+
+    /** One hole from {@code start}'s position, its blocks added to {@code done}; false after an error. */
+    private boolean hole(RawBlock b, Word at, ModalState start, double x, double returnZ, String label,
+                         CycleWords words, List<CheckedBlock> done) {
+        MachineProfile p = host.profile();
+        Point a = start.position();
         if (modal.kind().tapCycle()) {
-            done.addAll(tap(b, at, start, end.x(), returnZ, label));
-            return done;
+            done.addAll(HoleTapping.tap(host, modal.kind(), modal.name(), b, at, start, x, rPlane, bottom, returnZ,
+                    dwell, label));
+            return true;
+        }
+        if (modal.kind().boreCycle()) {
+            done.addAll(HoleBoring.bore(host, modal.kind(), modal.name(), b, at, start, x, rPlane, bottom,
+                    returnZ, dwell));
+            return true;
         }
         double clearance = p.control().peckRetractMm();
         if (modal.kind() == GRole.PECK_DRILL_CYCLE && Double.isNaN(clearance)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, at.span(), label,
                     Phrase.DRILL_CLEARANCE.arg());
-            return done;
+            return false;
         }
-        Drilling drill = new Drilling(a, end.x(), rPlane, bottom, modal.kind() == GRole.PECK_DRILL_CYCLE ? first : Double.NaN,
+        Drilling drill = new Drilling(a, x, rPlane, bottom, modal.kind() == GRole.PECK_DRILL_CYCLE ? first : Double.NaN,
                 reduce, least, Double.isNaN(clearance) ? 0 : clearance * p.z().countsPerMm());
         int pecks = drill.pecks(MAX_PECKS).size();
         if (pecks > MAX_PECKS) {
             host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, at.span(), label,
                     words.has(Letter.Q) ? words.word(Letter.Q) : at, "more than " + MAX_PECKS, MAX_PECKS);
-            return done;
+            return false;
         }
         Expansion.warnIfMany(host, label, words.has(Letter.Q) ? words.word(Letter.Q) : at, pecks);
         List<Move> moves = drill.plan(MAX_PECKS, returnZ);
@@ -213,61 +244,13 @@ final class HoleDrilling {
                     new Word(Letter.P, dwell.number(), at.span())), at.span(), false);
         }
         done.addAll(CycleBlocks.write(host, modal.name(), b.line(), at.span(), moves, 1, start, bottomFeed, pause));
-        return done;
-    }
-
-    /**
-     * G84/G184 (Haas): a rapid to the hole's X, a rapid to the R plane, the tap fed to the bottom
-     * (then the dwell P, if any), the spindle reversed (M04 after M03, M03 after M04), the tap fed
-     * back out to the R plane, the spindle turned back, a rapid to {@code returnZ}, the initial level
-     * (not under Fanuc B/C G99: the tap stays at the R plane). The feed is the F
-     * in force (G99: the lead; G98: lead x r/min): gcnc does not gear the tap to the spindle, so the
-     * tap must sit in a floating holder (docs/cycles.md). E629 when the spindle turns against the
-     * tap (M04 for G84, M03 for G184).
-     */
-    private List<CheckedBlock> tap(RawBlock b, Word at, ModalState start, double x, double returnZ, String label) {
-        Point a = start.position();
-        List<Move> moves = new ArrayList<>(5);
-        if (Math.abs(x - a.x()) > EPS_MM * host.profile().x().countsPerMm()) {
-            moves.add(Move.line(true, new Point(x, a.z()), 1));
-        }
-        moves.add(Move.line(true, new Point(x, rPlane), 1));
-        int in = moves.size();
-        moves.add(Move.line(false, new Point(x, bottom), 1));
-        moves.add(Move.line(false, new Point(x, rPlane), 1));
-        if (Math.abs(returnZ - rPlane) > EPS_MM * host.profile().z().countsPerMm()) {
-            moves.add(Move.line(true, new Point(x, returnZ), 1)); // G98 (Haas, Fanuc A): the initial level
-        }
-        int turning = start.spindle();
-        boolean rightHand = modal.kind() == GRole.TAP_CYCLE;
-        if (turning == (rightHand ? 4 : 3)) {
-            host.out().report(gcnc.diag.Diagnostic.warning(Code.E629_TAP_AGAINST_SPINDLE, at.span(), label,
-                    rightHand ? "M04" : "M03", rightHand ? "M03" : "M04"));
-        }
-        gcnc.machine.MRole forward = turning == 4 ? gcnc.machine.MRole.SPINDLE_CCW : gcnc.machine.MRole.SPINDLE_CW;
-        gcnc.machine.MRole back = forward == gcnc.machine.MRole.SPINDLE_CW ? gcnc.machine.MRole.SPINDLE_CCW
-                : gcnc.machine.MRole.SPINDLE_CW;
-        List<RawBlock> bottomBlocks = new ArrayList<>(2);
-        if (dwell != null && NumberText.decimal(dwell.number()) > 0) {
-            String g04 = host.profile().control().gFor(GRole.DWELL).map(f -> f.name().substring(1)).orElseThrow();
-            bottomBlocks.add(new RawBlock(b.line(), List.of(new Word(Letter.G, g04, at.span()),
-                    new Word(Letter.P, dwell.number(), at.span())), at.span(), false));
-        }
-        bottomBlocks.add(spindle(b, back, at));
-        return CycleBlocks.write(host, modal.name(), b.line(), at.span(), moves, 1, start,
-                java.util.Map.of(in, bottomBlocks, in + 1, List.of(spindle(b, forward, at))));
-    }
-
-    /** A block of the spindle M code of {@code role} on this control, at the cycle's line. */
-    private RawBlock spindle(RawBlock b, gcnc.machine.MRole role, Word at) {
-        int code = host.profile().control().mFor(role).orElseThrow().code();
-        return new RawBlock(b.line(), List.of(new Word(Letter.M, String.format("%02d", code), at.span())), at.span(),
-                false);
+        return true;
     }
 
     /**
      * Fanuc's words (G83, G84 on the spindle axis): C/H (C-axis positioning of live tooling), W or
-     * G91 Z (the bottom from the R point) and K other than 1 are not supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
+     * G91 Z (the bottom from the R point) and repeats K/L stepped along X or not a whole number are not
+     * supported yet (E188); Q only on G83, more than 0 (E180; without it G83 drills in one
      * feed); P the dwell at the bottom, zero or more. False after the first error.
      */
     private boolean checkFanuc(CycleWords words, GRole role, String label) {
@@ -287,10 +270,12 @@ final class HoleDrilling {
                 return false;
             }
         }
-        if (words.has(Letter.K) && words.value(Letter.K) != 1) {
-            host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.K).span(), label,
-                    words.word(Letter.K), Phrase.DRILL_REPEATS.arg());
-            return false;
+        for (Letter l : List.of(Letter.K, Letter.L)) {
+            if (words.has(l) && !repeatsFollowed(words, words.word(l))) {
+                host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(l).span(), label, words.word(l),
+                        Phrase.DRILL_REPEATS.arg());
+                return false;
+            }
         }
         if (words.has(Letter.Q) && role.tapCycle()) {
             host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.Q).span(), label,
@@ -309,7 +294,7 @@ final class HoleDrilling {
 
     /** The words this cycle takes, with the right signs; false after the first error. */
     private boolean check(CycleWords words, GRole role, String label, Word g) {
-        if (words.has(Letter.L)) {
+        if (words.has(Letter.L) && !repeatsFollowed(words, words.word(Letter.L))) {
             host.out().error(Code.E188_PECK_OPTION_NOT_SUPPORTED, words.word(Letter.L).span(), label,
                     words.word(Letter.L), Phrase.DRILL_REPEATS.arg());
             return false;
@@ -326,7 +311,8 @@ final class HoleDrilling {
                 return false;
             }
             if (peckWord && role != GRole.PECK_DRILL_CYCLE
-                    || !peckWord && role != GRole.SPOT_DRILL_CYCLE && !role.tapCycle()) {
+                    || !peckWord && role != GRole.SPOT_DRILL_CYCLE && role != GRole.BORE_DWELL_CYCLE
+                    && !role.tapCycle()) {
                 host.out().error(Code.E161_CYCLE_WORD, w.span(), label, w);
                 return false;
             }
@@ -357,11 +343,27 @@ final class HoleDrilling {
                     Phrase.DRILL_PECK_J.arg());
             return false;
         }
-        if (g != null && role == GRole.SPOT_DRILL_CYCLE && !words.has(Letter.P)) {
+        if (g != null && (role == GRole.SPOT_DRILL_CYCLE || role == GRole.BORE_DWELL_CYCLE) && !words.has(Letter.P)) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_DWELL.arg());
             return false;
         }
         return true;
+    }
+
+    /**
+     * Whether gcnc follows the repeats {@code rep} (Fanuc K, Haas and Fanuc Series 15 L): a whole
+     * number from 0 to {@link #MAX_REPEATS} without a decimal point, and more than one only for a
+     * hole at an absolute X (each repeat drills the same hole again); repeats stepped by U or by
+     * X in G91 make a row of holes off the centre line, which needs live tooling (E188).
+     */
+    private boolean repeatsFollowed(CycleWords words, Word rep) {
+        if (NumberText.hasPoint(rep.number()) || rep.number().startsWith("-")) {
+            return false;
+        }
+        double n = NumberText.decimal(rep.number());
+        boolean stepped = words.axes().stream().anyMatch(w -> w.letter() == Letter.U
+                || w.letter() == Letter.X && host.state().incremental());
+        return n <= MAX_REPEATS && (n <= 1 || !stepped);
     }
 
     private boolean isCycle(Word w) {

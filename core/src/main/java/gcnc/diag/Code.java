@@ -330,6 +330,8 @@ public enum Code {
     E208_GEAR_RATIO_RANGE(208),
     /** The thesis dialect has no electronic gearing: a thread cannot be written in it. */
     E209_THESIS_NO_GEARING(209),
+    /** Checker (Fanuc): C or R without a comma at a corner not between the two axes: the control wants ,C or ,R (PS0054). */
+    E210_CORNER_WANTS_COMMA(210),
 
     // 220-239: the controller's limits (gcnc.machine.ControllerLimits; tables/galil_models.csv,
     // docs/galil.md "The controller's limits"): a value the controller refuses (an error, TC 6 or
@@ -456,6 +458,13 @@ public enum Code {
     E340_SIM_THREAD_PHASE(340),
     /** A thread pass's run-in is shorter than the axis needs to reach the geared speed. */
     E260_THREAD_RUN_IN(260),
+    /**
+     * (warning) A Denford / MIRAC set-up line ({@code [BILLET X.. Z..}, {@code [TOOLDEF ..}): the
+     * training control's own word for its simulation, read as a comment; not a block of the control.
+     */
+    E261_DENFORD_SETUP_LINE(261),
+    /** G43 / G44 / G49 (tool length compensation, machining-centre codes) on a lathe control that has none. */
+    E262_MILL_TOOL_LENGTH_G(262),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
     /**
@@ -584,9 +593,7 @@ public enum Code {
     E602_TEXT_AFTER_END_OF_FILE_MARK(602),
     /** Checker: G01 chamfering or corner rounding on a control that has none (the thesis's). */
     E604_NO_CORNER_FUNCTION(604),
-    /** Checker (Fanuc): ,C or ,R is direct drawing dimension input, not supported yet; the control's chamfer is C/R. */
-    E605_DIRECT_DRAWING_NOT_SUPPORTED_YET(605),
-    /** Checker: ,A (a line's angle, direct drawing dimension input) is not supported yet. */
+    /** Checker: ,A with both end coordinates or alone, not as the two-block direct drawing form gcnc reads (not supported yet). */
     E606_ANGLE_NOT_SUPPORTED_YET(606),
     /** Checker: a chamfer or corner radius on a block that is not a G01 (Fanuc PS0050). */
     E607_CORNER_NOT_ON_G01(607),
@@ -602,8 +609,6 @@ public enum Code {
     E612_CORNER_NOT_SQUARE(612),
     /** Checker: the two moves of a chamfer or corner radius are in line: no corner. */
     E613_CORNER_IN_LINE(613),
-    /** Checker: a chamfer or corner radius in a G71/G72/G73 contour (not supported yet). */
-    E614_CORNER_IN_CONTOUR_NOT_SUPPORTED_YET(614),
     /** Checker (Fanuc): the sign of a 90-degree chamfer or corner R points away from the next move. */
     E615_CORNER_SIGN(615),
 
@@ -639,6 +644,12 @@ public enum Code {
     E630_G30_REFERENCE_NUMBER(630),
     /** G30 to a reference point the machine profile does not give (reference.N). */
     E631_G30_NO_REFERENCE(631),
+    /** Checker: a ,A line that never meets the end coordinate given (along the other axis; Fanuc PS0057). */
+    E632_ANGLE_NO_SOLUTION(632),
+    /** Checker: ,A on a block that is not a G01 move (not supported yet). */
+    E633_ANGLE_NOT_ON_G01(633),
+    /** Checker: the two angles of the two-block ,A form are parallel: no corner (Fanuc PS0057). */
+    E634_ANGLES_PARALLEL(634),
     // 640-659: checker again: what the control runs though the result may not be what was meant
     // (issue 17; tables/error_basis.csv says which control behaviour each rule stands for).
     /** Checker: a thread height above a standard thread's 0.65 x lead but within the sharp V (0.866 x lead): cut as written. */
@@ -799,6 +810,11 @@ public enum Code {
     E836_PROBE_CONTRADICTION(836),
     /** Profile: stop.cycle_start is not IN n. */
     E850_CYCLE_START_INPUT(850),
+    /**
+     * Sender: the link dropped after the program started: the controller may run on without the host
+     * (docs/run.md, "Resume"); E821 is a link that dropped before anything moved.
+     */
+    E851_LINK_DROPPED_RUNNING(851),
     /** Simulate (note): the DMC is a stream form's resident program: its motion is in the stream beside it. */
     E864_RESIDENT_WITHOUT_STREAM(864),
     /** Sender: the serial port named is not a character device (a plain file, a folder, a pipe). */

@@ -46,6 +46,12 @@ public enum GRole {
      */
     TAP_CYCLE(84), REVERSE_TAP_CYCLE(184),
     /**
+     * Boring on the spindle axis, modal as the drilling cycles (docs/cycles.md): Haas G85 bore in
+     * and out at the feed (Fanuc G85 face boring, with its dwell P), G86 bore and stop (the spindle
+     * stopped at the bottom, a rapid out, the spindle started again), G89 bore, dwell, bore out.
+     */
+    BORE_CYCLE(85), BORE_STOP_CYCLE(86), BORE_DWELL_CYCLE(89),
+    /**
      * The return level of the drilling and tapping cycles (Fanuc system B/C G98, G99: a modal
      * group of their own): after the hole the tool returns to the initial level (where the cycle
      * started) or to the R point. The numbers are gcnc's own (G98/G99 are the feed modes of
@@ -114,9 +120,15 @@ public enum GRole {
         return this == FACE_PECK_CYCLE || this == GROOVE_PECK_CYCLE;
     }
 
-    /** G81, G82 or G83: a drilling cycle on the spindle axis, modal until G80. */
+    /** G81-G86, G89 (G184): a drilling, tapping or boring cycle on the spindle axis, modal until G80. */
     public boolean drillCycle() {
-        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE || tapCycle();
+        return this == DRILL_CYCLE || this == SPOT_DRILL_CYCLE || this == PECK_DRILL_CYCLE || tapCycle()
+                || boreCycle();
+    }
+
+    /** G85, G86, G89: a boring cycle, the tool fed out of the hole (or, G86, the spindle stopped first). */
+    public boolean boreCycle() {
+        return this == BORE_CYCLE || this == BORE_STOP_CYCLE || this == BORE_DWELL_CYCLE;
     }
 
     /** G84/G184: a drilling cycle whose spindle reverses at the bottom. */

@@ -257,6 +257,11 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
+    /** For a binary file (a setup sheet's PNG), written whole: a file takes this, {@link #writer} or {@link #line}. */
+    public void bytes(byte[] content) throws IOException {
+        out.write(content);
+    }
+
     /** For text written in pieces (the SVG); a file takes either this or {@link #line}, not both. */
     public Writer writer() {
         if (writer == null) {

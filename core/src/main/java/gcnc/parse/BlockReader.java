@@ -210,6 +210,12 @@ public final class BlockReader implements BlockSource {
         if (!open && fastPath && FastScanner.scan(source.chars(), source.length(), source.number(), words, texts)) {
             return words.isEmpty() ? null : new RawBlock(source.number(), ShortLists.copyOf(words), lastSpan(), false, 0, 0, null);
         }
+        if (!open && DenfordLines.isSetUp(source.chars(), source.length())) {
+            int at = MacroLines.firstNonBlank(source.chars(), source.length());
+            diagnostics.report(Diagnostic.warning(Code.E261_DENFORD_SETUP_LINE, Span.of(source.number(), at + 1),
+                    DenfordLines.text(source.chars(), source.length())));
+            return null;
+        }
         if (!open && macros && MacroLines.isStatement(source.chars(), source.length())) {
             int at = MacroLines.firstNonBlank(source.chars(), source.length());
             return RawBlock.macro(source.number(), new String(source.chars(), 0, source.length()),

@@ -1,29 +1,18 @@
 package gcnc.send;
 
-import gcnc.check.Checker;
 import gcnc.check.ModalState;
-import gcnc.diag.Diagnostics;
-import gcnc.flow.ProgramFlow;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.ProgramFrame;
 import gcnc.ir.RawBlock;
-import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
-import gcnc.parse.BlockReader;
-import gcnc.parse.BlockSource;
-import gcnc.tables.Tables;
-import java.io.IOException;
-import java.io.Reader;
-import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
-import java.util.Optional;
 
 /**
  * What the checker knows at each G-code line of the main program, for the status line and the
  * resume report: the block's program frame (to show the tool in program coordinates), its N
- * number, and the modal state after it (tool, work offset, feed and its mode, spindle). A second,
- * check-only pass over a program that {@code compile} already found clean (so it reports nothing).
+ * number, and the modal state after it (tool, work offset, feed and its mode, spindle): a view of the
+ * compile that judged the program ({@link View}), not a check of its own.
  */
 public final class BlockTable {
     /**
@@ -36,13 +25,16 @@ public final class BlockTable {
      * @param inch       G20 in force
      * @param rpm        spindle speed in force (r/min), NaN before any
      * @param css        G96 constant surface speed in force
+     * @param surfaceSpeed G96 S (m/min, ft/min under G20), NaN before any
+     * @param rpmClamp   G50 S, the highest speed G96 may ask, NaN when none
      * @param spindle    3, 4 or 5 (M03, M04, M05), -1 before any
      * @param tool       tool number in force
      * @param toolOffset tool offset number in force
      * @param workOffset 54..59
      */
     public record Block(ProgramFrame frame, String number, double feed, boolean perRev, boolean inch, double rpm,
-                        boolean css, int spindle, int tool, int toolOffset, int workOffset) {
+                        boolean css, double surfaceSpeed, double rpmClamp, int spindle, int tool, int toolOffset,
+                        int workOffset) {
         /** Machine counts (lathe X radius, Z) in the block's program coordinates (X as written: a diameter where the machine takes one). */
         public double[] program(double[] machine) {
             if (frame == null || frame.perX() == 0 || frame.perZ() == 0) {
@@ -94,36 +86,33 @@ public final class BlockTable {
         return out;
     }
 
-    /** Checks {@code source} again as the compiler did, keeping each main-program line's state. */
-    public static BlockTable of(Reader source, Tables tables, MachineProfile profile, Optional<Path> programs)
-            throws IOException {
-        java.io.StringWriter all = new java.io.StringWriter();
-        source.transferTo(all);
-        String text = all.toString();
-        source = new java.io.StringReader(text);
-        Diagnostics ignored = new Diagnostics();
-        gcnc.machine.Control control = profile.control();
-        BlockSource reader = control.hasProgramFlow()
-                ? new ProgramFlow(BlockReader.forControl(source, ignored, control.macros(), control.lineComments()),
-                        control, ignored, programs)
-                : BlockReader.forControl(source, ignored, false, control.lineComments());
-        Checker checker = new Checker(tables, profile, ignored);
-        Map<Integer, Block> out = new HashMap<>();
-        for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
+    /**
+     * The table as the compile fills it ({@link gcnc.CompileObserver#block}): each main-program line's
+     * state after its block, from the one check that judged the program; the comments from the
+     * program's text as the compile read it.
+     */
+    public static final class View implements gcnc.CompileObserver {
+        private final Map<Integer, Block> out = new HashMap<>();
+
+        @Override
+        public void block(RawBlock raw, gcnc.diag.Origin from, java.util.List<CheckedBlock> checked, ModalState s) {
             ProgramFrame frame = null;
-            for (CheckedBlock b : checker.check(raw)) {
+            for (CheckedBlock b : checked) {
                 if (b.frame() != null && b.origin().file() == null) {
                     frame = b.frame();
                 }
             }
             if (raw.depth() > 0) {
-                continue; // a called program's line: its own file's numbering
+                return; // a called program's line: its own file's numbering
             }
-            ModalState s = checker.state();
             out.put(raw.line(), new Block(frame, frame == null ? null : frame.number(), s.feed(), s.feedPerRev(),
-                    s.units() == Units.INCH, s.rpm(), s.css(), s.spindle(), s.tool(), s.toolOffset(), s.workOffset()));
+                    s.units() == Units.INCH, s.rpm(), s.css(), s.surfaceSpeed(), s.rpmClamp(), s.spindle(), s.tool(), s.toolOffset(), s.workOffset()));
         }
-        return new BlockTable(out, comments(text));
+
+        /** The table of the blocks seen, with the comments of {@code text} (the program as the compile read it). */
+        public BlockTable table(String text) {
+            return new BlockTable(Map.copyOf(out), comments(text));
+        }
     }
 
     /** The tool offsets (1..99) in force at some line of the main program, in order. */

@@ -83,21 +83,52 @@ public final class DmcProgram {
     }
 
     /**
-     * The program as the compiler handed it on, one instruction a line (what {@code Session.compile}
-     * gives its consumer, in order).
-     *
-     * @param profile the machine it was compiled for: the plane, home, acceleration
+     * The simulator's cycle clock over a program's lines, as the compile replayed them
+     * ({@link gcnc.CompileObserver#replayed}): the seconds before and after each line, and the cycle
+     * time the simulation ended on ({@link gcnc.sim.SimReport#cycleSeconds}), which the run's time
+     * left counts down to zero.
      */
-    public static DmcProgram of(List<Instruction> instructions, MachineProfile profile) {
+    public record Clock(double[] beforeLine, double[] afterLine, double total) {
+        double before(int i) {
+            return i < beforeLine.length ? beforeLine[i] : total;
+        }
+
+        double after(int i) {
+            return i < afterLine.length ? afterLine[i] : total;
+        }
+
+        /** The clock of {@code lines} replayed by themselves on {@code profile}'s machine (a DMC read back: no compile ran). */
+        static Clock replay(List<Instruction> lines, MachineProfile profile) {
+            double[] before = new double[lines.size()];
+            double[] after = new double[lines.size()];
+            int[] at = {0};
+            gcnc.sim.Simulator sim = new gcnc.sim.Simulator(profile, gcnc.sim.SimOptions.defaults(),
+                    new gcnc.diag.Diagnostics());
+            sim.onReplayed((line, b, a) -> {
+                before[at[0]] = b;
+                after[at[0]++] = a;
+            });
+            sim.replay(lines);
+            return new Clock(before, after, sim.report().cycleSeconds());
+        }
+    }
+
+    /**
+     * The program as the compiler handed it on, one instruction a line (what {@code Session.compile}
+     * gives its consumer, in order), with the simulator's clock over those lines.
+     *
+     * @param profile the machine it was compiled for: the plane and home
+     */
+    public static DmcProgram of(List<Instruction> instructions, Clock clock, MachineProfile profile) {
         Plane plane = Plane.of(profile);
         List<Instruction> all = List.copyOf(instructions);
-        Walker w = new Walker(plane, plane.galil(profile.home().x(), profile.home().z()), profile.acceleration());
+        Sequences w = new Sequences(plane, plane.galil(profile.home().x(), profile.home().z()), clock);
         for (int i = 0; i < all.size(); i++) {
             w.line(i, all.get(i).command());
         }
         int n = all.size();
         return new DmcProgram(all, Collections.unmodifiableList(w.sequences),
-                w.sequenceOf(n), w.secondsBefore(n), w.seconds, plane, profile.controllerLimits().lineWidth());
+                w.sequenceOf(n), w.secondsBefore(n), clock.total(), plane, profile.controllerLimits().lineWidth());
     }
 
     /**
@@ -125,7 +156,7 @@ public final class DmcProgram {
                 out.add(new Instruction(c, new Source(file == null ? Origin.PROGRAM : Origin.file(file), map.line(at, k), -1)));
             }
         }
-        return of(out, profile);
+        return of(out, Clock.replay(out, profile), profile);
     }
 
     /** The characters of one controller line, the model's: what a downloaded piece is packed to ({@link Download}). */

@@ -12,9 +12,20 @@ public final class Progress {
     private int executing = -1;
     private int lastBlock = -1;
     private boolean started;
+    /** Where the axes were last seen (Galil plane counts), null before any poll. */
+    private double[] axes;
     private final long began = System.nanoTime();
 
+    /** How far (counts) the axes may be from a sequence's start and still stand at it. */
+    private final double tolerance;
+
     public Progress(DmcProgram program, BlockTable blocks, EventSink events) {
+        this(program, blocks, events, 3);
+    }
+
+    /** @param tolerance how far (counts) the axes may be from a point and still be at it ({@link Sender#tolerance()}) */
+    public Progress(DmcProgram program, BlockTable blocks, EventSink events, double tolerance) {
+        this.tolerance = tolerance;
         this.program = program;
         this.blocks = blocks;
         this.events = events;
@@ -63,6 +74,13 @@ public final class Progress {
      */
     public ResumePoint resumePoint() {
         int e = Math.max(executing, 0);
+        Sequence run = program.sequenceAt(e);
+        if (run != null && !run.isThreadPass() && !run.pieces().isEmpty() && axes != null
+                && Math.hypot(axes[0] - run.start()[0], axes[1] - run.start()[1]) <= tolerance) {
+            // nothing of the sequence moved (a segment refused while it was queued, a stop before its BGS):
+            // it resumes at its first block, where the axes stand, not at the segment the host had reached
+            e = run.pieces().get(0).line();
+        }
         int line = program.sourceLine(e);
         if (line == 0) {
             // the header or the footer: the first block, or nothing left to do after the last
@@ -99,11 +117,19 @@ public final class Progress {
         executing = index;
     }
 
+    /** Where the axes are, read after a stop (Galil plane counts): what {@link #resumePoint} judges by. */
+    public void axes(double[] counts) {
+        if (counts != null) {
+            axes = counts.clone();
+        }
+    }
+
     /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */
     public void at(int index, double[] counts, Operator operator) {
         if (index >= 0) {
             executing = index;
         }
+        axes(counts);
         int line = executingLine();
         BlockTable.Block b = blocks.at(line);
         if (line != lastBlock && line > 0) {

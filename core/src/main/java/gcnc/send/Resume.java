@@ -34,6 +34,7 @@ import java.util.TreeMap;
  */
 public final class Resume {
     private final DmcProgram program;
+    private final BlockTable blocks;
     private final PositionText where;
     private final double tolerance;
 
@@ -48,11 +49,50 @@ public final class Resume {
      */
     public Resume(DmcProgram program, BlockTable blocks, double tolerance) {
         this.program = program;
+        this.blocks = blocks;
         this.where = new PositionText(program, blocks);
         this.tolerance = tolerance;
     }
 
-    public Download plan(ResumePoint at, double[] axes) throws RunFault {
+    /** The state the last {@link #plan} sets before it moves: the tool, the output bits, the spindle's speed. */
+    private List<Command> restored = List.of();
+
+    /**
+     * The state the last {@link #plan} restores before its first motion, as the program had set it at
+     * the resume point ({@code TOOL=}, each output bit the program switched, the spindle's {@code OF} or
+     * {@code AO}): what {@link ResumeState} holds against the controller.
+     */
+    public List<Command> restored() {
+        return List.copyOf(restored);
+    }
+
+    /** What the controller did without the host, as the axes show it (null: nothing to say). */
+    private String ranOn;
+
+    /**
+     * What the last {@link #plan} found the controller did without the host, for the run's report: "the
+     * controller finished the sequence: line 300 to 448" (a link that dropped while it ran on); empty when
+     * the axes were where the resume point is.
+     */
+    public java.util.Optional<String> ranOn() {
+        return java.util.Optional.ofNullable(ranOn);
+    }
+
+    /** "line A to B" (or "line A") of a sequence's blocks. */
+    private String lines(Sequence q) {
+        int a = program.sourceLine(q.isThreadPass() ? q.first() : q.pieces().get(0).line());
+        int b = program.sourceLine(q.isThreadPass() ? q.first() : q.pieces().get(q.pieces().size() - 1).line());
+        return a == b ? "line " + a : "line " + a + " to " + b;
+    }
+
+    /** The resume point and the axes of the last {@link #plan}: G96's speed is the surface speed's there. */
+    private ResumePoint point;
+    private double[] axes;
+
+    public Piece plan(ResumePoint at, double[] axes) throws RunFault {
+        ranOn = null;
+        point = at;
+        this.axes = axes.clone();
         int first = program.firstLineOf(at.line());
         if (first < 0) {
             throw fault(at, "line " + at.line() + " has no block that reached the controller (a comment, an empty line"
@@ -79,6 +119,7 @@ public final class Resume {
             return build(from, from, null);
         }
         if (near(axes, s.end())) {
+            ranOn = "the controller finished the sequence: " + lines(s);
             return build(s.last() + 1, s.last() + 1, null);
         }
         if (s.isThreadPass()) {
@@ -89,10 +130,30 @@ public final class Resume {
         for (int k = m.from(); k < s.pieces().size(); k++) {
             Sequence.Piece p = s.pieces().get(k);
             if (near(axes, p.from())) {
+                if (k > m.from()) {
+                    ranOn = "the controller finished the sequence's blocks: line " + at.line() + " to "
+                            + program.sourceLine(s.pieces().get(k - 1).line());
+                }
                 return build(s.last() + 1, s.first(), replan(s, k, false, axes));
             }
             if (!near(axes, p.to()) && onPiece(p, axes)) {
+                if (k > m.from()) {
+                    ranOn = "the controller ran on along the sequence into line " + program.sourceLine(p.line());
+                }
                 return build(s.last() + 1, s.first(), replan(s, k, true, axes));
+            }
+        }
+        // a controller that ran on without the host (a dropped link) stands at the end of a later sequence:
+        // the first such end after the point (were it a later one with the same end, the passes between
+        // are run again over material already cut: the program's own path, never a move through the part)
+        List<Sequence> all = program.sequences();
+        for (int q = all.indexOf(s) + 1; q < all.size(); q++) {
+            Sequence later = all.get(q);
+            if (near(axes, later.end())) {
+                int last = program.sourceLine(later.isThreadPass() ? later.first()
+                        : later.pieces().get(later.pieces().size() - 1).line());
+                ranOn = "the controller ran on without the host and finished the sequences: line " + at.line() + " to " + last;
+                return build(later.last() + 1, later.last() + 1, null);
             }
         }
         throw fault(at, "the axes are at " + where.at(at.line(), axes) + ", not on the path of line " + at.line() + " ("
@@ -185,7 +246,7 @@ public final class Resume {
     }
 
     /** The re-planned rest of a sequence, and the spindle changes on its way the axes are already past. */
-    private record Replanned(Download.Builder lines, List<Integer> passed) {
+    private record Replanned(Piece.Builder lines, List<Integer> passed) {
     }
 
     /**
@@ -193,8 +254,8 @@ public final class Resume {
      * @param stateEnd  the state is what the lines before this one set
      * @param replanned the rest of an interrupted sequence, or null
      */
-    private Download build(int from, int stateEnd, Replanned replanned) {
-        Download.Builder b = new Download.Builder();
+    private Piece build(int from, int stateEnd, Replanned replanned) {
+        Piece.Builder b = new Piece.Builder();
         int size = program.size();
         int header = 0;
         while (header < size && program.sourceLine(header) == 0 && !(program.command(header) instanceof Command.End)) {
@@ -217,8 +278,8 @@ public final class Resume {
         }
         for (int i : state) {
             Command c = program.command(i);
-            if (c instanceof Command.Offset) {
-                of = i;
+            if (c instanceof Command.Offset || c instanceof Command.AnalogOut) {
+                of = i; // the spindle's speed: OF of its channel, or AO of an analog drive
             } else if (c instanceof Command.ToolNumber) {
                 tool = i;
             } else if (c instanceof Command.Output o) {
@@ -227,23 +288,29 @@ public final class Resume {
                 variables.put(v.name(), i);
             }
         }
+        restored = new ArrayList<>();
         if (tool >= 0) {
             b.add(program.command(tool), tool);
+            restored.add(program.command(tool));
         }
         for (int v : variables.values()) {
             b.add(program.command(v), v);
         }
         for (int bit : bits.values()) {
             b.add(program.command(bit), bit);
+            restored.add(program.command(bit));
         }
         if (of >= 0) {
-            b.add(program.command(of), of);
-            if (((Command.Offset) program.command(of)).volts().value() != 0) {
+            Command speed = surfaceSpeed(program.command(of));
+            b.add(speed, of);
+            restored.add(speed);
+            double volts = speed instanceof Command.Offset o ? o.volts().value() : ((Command.AnalogOut) speed).volts().value();
+            if (volts != 0) {
                 b.add(new Command.Wait(2000), of);
             }
         }
         if (replanned != null) {
-            Download r = replanned.lines().build(program.lineWidth());
+            Piece r = replanned.lines().build(program.lineWidth());
             for (int i = 0; i < r.commands().size(); i++) {
                 b.add(r.commands().get(i), r.origin()[i]);
             }
@@ -255,13 +322,49 @@ public final class Resume {
     }
 
     /**
+     * The spindle's speed command to restore: under G96 at the resume point, the surface speed's r/min
+     * where the axes are (rpm = 1000 V / (pi D), V in m/min and D in mm; 304.8 V under G20; clamped by
+     * G50 S and the machine's top speed, as the checker's SpindleSpeed), in the direction of the
+     * program's last one; else the program's last one as it was (G97's r/min).
+     */
+    private Command surfaceSpeed(Command last) {
+        BlockTable.Block b = point == null ? null : blocks.at(point.line());
+        double[] p = b == null || !b.css() || Double.isNaN(b.surfaceSpeed()) ? null
+                : b.program(program.plane().machine(axes));
+        double volts = last instanceof Command.Offset o ? o.volts().value() : ((Command.AnalogOut) last).volts().value();
+        if (p == null || volts == 0 || rpmPerVolt <= 0) {
+            return last;
+        }
+        double diameterMm = Math.abs(p[0]) * (diameterX ? 1 : 2) * (b.inch() ? 25.4 : 1);
+        double rpm = diameterMm > 0 ? (b.inch() ? 304.8 : 1000) * b.surfaceSpeed() / (Math.PI * diameterMm)
+                : Double.POSITIVE_INFINITY;
+        rpm = Math.min(rpm, Double.isNaN(b.rpmClamp()) ? maxRpm : Math.min(b.rpmClamp(), maxRpm));
+        gcnc.dmc.Fixed v = gcnc.dmc.Fixed.fourDecimals(Math.signum(volts) * rpm / rpmPerVolt);
+        return last instanceof Command.Offset o ? new Command.Offset(o.channel(), v)
+                : new Command.AnalogOut(((Command.AnalogOut) last).output(), v);
+    }
+
+    /** The machine's spindle: r/min per volt, top speed, and whether X is programmed as a diameter (G96's speed). */
+    private double rpmPerVolt;
+    private double maxRpm = Double.POSITIVE_INFINITY;
+    private boolean diameterX = true;
+
+    /** This resume with {@code profile}'s spindle, so that G96 is restored as its surface speed (without it: as the r/min last set). */
+    public Resume spindle(gcnc.machine.MachineProfile profile) {
+        rpmPerVolt = profile.rpmPerVolt();
+        maxRpm = profile.maxRpm();
+        diameterX = profile.diameterX();
+        return this;
+    }
+
+    /**
      * The rest of sequence {@code s} from {@code axes} as a sequence of its own: its piece {@code k}
      * from where the axes are ({@code partial}) or whole, then the later pieces; each line's origin
      * is the compiled line it continues, so the controller's segment numbers ({@code _CSS}) of the
      * new sequence still name the G-code blocks.
      */
     private Replanned replan(Sequence s, int k, boolean partial, double[] axes) {
-        Download.Builder b = new Download.Builder();
+        Piece.Builder b = new Piece.Builder();
         int vs = s.first();
         Command speed = program.command(vs);
         b.add(speed instanceof Command.VectorSpeed ? speed

@@ -9,7 +9,7 @@ import java.util.function.Function;
 
 /**
  * {@code gcnc run} after the compile: pre-flight against the controller, the program's capacity
- * checked against what the controller has, then the {@link Delivery} that sends and follows it, and
+ * checked against what the controller has, then the {@link Form} that sends and follows it, and
  * one outcome: 0 ran to the end, 2 a connection or controller problem before anything moved, 3
  * stopped by a fault or the operator once it had started (with the command that resumes it).
  * Every fault is a diagnostic (E815-E829) at the G-code line it concerns.
@@ -39,11 +39,11 @@ public final class Sender {
     private final Messages messages;
     private final Operator operator;
     private final Options options;
-    private final Delivery form;
+    private final Form form;
     private final Function<ResumePoint, String> resumeCommand;
 
     public Sender(MachineProfile profile, DmcProgram program, BlockTable blocks, EventSink events, Messages messages,
-                  Operator operator, Options options, Delivery form, Function<ResumePoint, String> resumeCommand) {
+                  Operator operator, Options options, Form form, Function<ResumePoint, String> resumeCommand) {
         this.profile = profile;
         this.program = program;
         this.blocks = blocks;
@@ -67,24 +67,28 @@ public final class Sender {
 
     /** Runs the program over {@code link} (which it closes); returns the exit status. */
     public int run(Link link, int timeoutMs) {
-        Progress progress = new Progress(program, blocks, events);
+        Progress progress = new Progress(program, blocks, events, tolerance());
         GalilClient client = new GalilClient(link, timeoutMs, m -> events.accept(new Event.Message(m)));
-        MachineLink c = new MachineLink(client, profile, program.plane());
+        Controller c = new Controller(client, profile, program.plane());
         // closed in finally, not by try-with-resources: the catches below still talk to the controller
         try {
-            Download piece = preflight(c, link.name());
+            Piece piece = preflight(c, link.name());
             events.accept(new Event.Started(form.name(), piece.lines().size(), countBlocks(piece),
-                    program.totalSeconds() - program.secondsBefore(firstMotion(piece)), options.dryRun(),
+                    program.totalSeconds() - program.secondsBefore(firstMotion()), options.dryRun(),
                     options.step(), options.resumeAt() == null ? null : options.resumeAt().toString()));
             form.run(piece, c, progress, operator, options.step(), options.dryRun());
             events.accept(new Event.Finished(progress.seconds(), options.dryRun()));
             return RAN;
         } catch (RunFault f) {
+            if (f.moved()) {
+                readAxes(c, progress); // where the stop left them: the resume point is where they are
+            }
             return stopped(f, progress);
         } catch (GalilClient.Rejected r) {
             RunFault f = c.refused(r.command(), progress.executingLine(), progress.hasStarted());
             if (progress.hasStarted()) {
                 c.stopAll();
+                readAxes(c, progress);
             }
             return stopped(f, progress);
         } catch (LinkFault lf) {
@@ -95,8 +99,7 @@ public final class Sender {
             String done = block(progress.completedLine());
             String now = block(progress.executingLine());
             RunFault f = switch (lf.kind()) {
-                case DROPPED -> new RunFault(Code.E821_CONNECTION_DROPPED, progress.executingLine(), progress.hasStarted(),
-                        lf.detail(), done, now);
+                case DROPPED -> dropped(progress, lf.detail());
                 case TIMEOUT -> new RunFault(Code.E822_NO_REPLY, progress.executingLine(), progress.hasStarted(),
                         "'" + GalilClient.printable(lf.command()) + "'", lf.detail(), done, now);
                 case GARBAGE -> new RunFault(Code.E823_GARBAGE, progress.executingLine(), progress.hasStarted(),
@@ -104,8 +107,7 @@ public final class Sender {
             };
             return stopped(f, progress);
         } catch (IOException e) {
-            return stopped(new RunFault(Code.E821_CONNECTION_DROPPED, progress.executingLine(), progress.hasStarted(),
-                    String.valueOf(e.getMessage()), block(progress.completedLine()), block(progress.executingLine())), progress);
+            return stopped(dropped(progress, String.valueOf(e.getMessage())), progress);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             c.stopAll();
@@ -116,11 +118,30 @@ public final class Sender {
         }
     }
 
+    /**
+     * A link that dropped: before the program started nothing moved (E821); after, the controller may run
+     * on without its host, so the fault says so and never that it stopped (E851).
+     */
+    private static RunFault dropped(Progress progress, String detail) {
+        return new RunFault(progress.hasStarted() ? Code.E851_LINK_DROPPED_RUNNING : Code.E821_CONNECTION_DROPPED,
+                progress.executingLine(), progress.hasStarted(), detail, block(progress.completedLine()),
+                block(progress.executingLine()));
+    }
+
+    /** The axes read after a stop, for the resume point; a link that no longer answers leaves the last poll's. */
+    private static void readAxes(Controller c, Progress progress) {
+        try {
+            progress.axes(c.position());
+        } catch (IOException | RuntimeException e) {
+            // the last poll's position stands
+        }
+    }
+
     private static String block(int line) {
         return line == 0 ? "none" : "line " + line;
     }
 
-    private int countBlocks(Download piece) {
+    private int countBlocks(Piece piece) {
         java.util.Set<Integer> lines = new java.util.HashSet<>();
         for (int o : piece.origin()) {
             if (program.sourceLine(o) > 0) {
@@ -130,24 +151,18 @@ public final class Sender {
         return lines.size();
     }
 
-    private int firstMotion(Download piece) {
-        if (options.resumeAt() != null) {
-            return Math.max(0, program.firstLineOf(options.resumeAt().line()));
-        }
-        for (int o : piece.origin()) {
-            if (program.sourceLine(o) > 0) {
-                return o;
-            }
-        }
-        return 0;
+    private int firstMotion() {
+        // a whole run: all of the program's time, header and all (its total is the compile's cycle time);
+        // a resume: from the block it resumes at
+        return options.resumeAt() == null ? 0 : Math.max(0, program.firstLineOf(options.resumeAt().line()));
     }
 
     /** Pre-flight; returns what to download (the program, or the resume program built from where the axes are). */
-    private Download preflight(MachineLink c, String link) throws IOException, RunFault {
-        MachineLink.Facts f = c.preflight();
+    private Piece preflight(Controller c, String link) throws IOException, RunFault {
+        Controller.Facts f = c.preflight();
         events.accept(new Event.Connected(link, f.revision()));
         gcnc.machine.GalilModel model = profile.galilModel();
-        if (f.model().isEmpty() || !MachineLink.sameModel(f.model(), model.name())) {
+        if (f.model().isEmpty() || !Controller.sameModel(f.model(), model.name())) {
             String what = f.model().isEmpty() ? "the controller did not name a Galil model ('"
                     + GalilClient.printable(f.revision()) + "' to ^R^V)" : "the controller is a " + f.revision();
             throw new RunFault(Code.E818_WRONG_CONTROLLER, 0, false, what, profile.name(), model.name());
@@ -159,8 +174,21 @@ public final class Sender {
         }
         int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
-        Download piece = options.resumeAt() == null ? Download.whole(program)
-                : new Resume(program, blocks, tolerance()).plan(options.resumeAt(), f.position());
+        Piece piece;
+        if (options.resumeAt() == null) {
+            piece = Piece.whole(program);
+        } else {
+            // the position read again on this connection (the preflight's TP, after _XQ0 and _BGS said it is
+            // at rest): a controller that ran on after a dropped link is resumed from where it really is
+            Resume resume = new Resume(program, blocks, tolerance()).spindle(profile);
+            piece = resume.plan(options.resumeAt(), f.position());
+            resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
+            // what the controller holds against what the program needs there, and what the resume changes
+            int line = options.resumeAt().line();
+            for (String said : ResumeState.changes(c, profile, resume.restored(), line, blocks.at(line))) {
+                events.accept(new Event.Message(said));
+            }
+        }
         int needLines = form.linesNeeded(piece, program, options.step());
         int needLabels = program.labels();
         List<String> vars = program.variables();

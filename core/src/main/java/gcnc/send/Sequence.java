@@ -14,7 +14,8 @@ import java.util.List;
  * @param end      Galil coordinates where it ends
  * @param speed    its VS, counts/s (0 for a thread pass)
  * @param pieces   its segments, in order; empty for a thread pass (it cannot be entered mid-way)
- * @param seconds  how long it takes, estimated from length, speed and acceleration
+ * @param seconds  how long it takes: the simulator's cycle clock over its lines (corner speeds, ramps, a
+ *                 thread pass at the spindle's speed), as the compile replayed them
  */
 public record Sequence(int first, int last, double[] start, double[] end, double speed, List<Piece> pieces,
                        double seconds) {

@@ -78,14 +78,14 @@ final class MotionChecks {
         }
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
-            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);
+            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2, options.referenceStock());
             blank = s;
         } else {
             stock = null;
             blank = null;
         }
         terms = new ProgramTerms(profile);
-        path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
+        path = options.keepPath() ? new PathRecorder(profile, machine.centreX(), options.scrubLine() == 0) : null;
         scrub = path == null || options.scrubLine() == 0 ? null : new StockScrub(options.scrubLine(), stock);
         conformance = new Conformance(out, path, tol, Simulator.threadTolerance(profile, options));
         toolShape = machine.defaultTool();
@@ -224,6 +224,11 @@ final class MotionChecks {
 
     private int programStops;
 
+    /** The cycle clock so far: what {@link SimReport#cycleSeconds} will say of the lines replayed up to now. */
+    double seconds() {
+        return seconds;
+    }
+
     void dwell(double s) {
         seconds += s;
         terms.time(tool, s);
@@ -284,7 +289,7 @@ final class MotionChecks {
                 terms.frame(frame);
             }
             if (poly != null && at != polyLine && !poly.isEmpty()) {
-                path.move(rapid, poly, polyLine, frame == null ? null : frame.file());
+                path.move(rapid, poly, polyLine, frame == null ? null : frame.file(), tool);
                 poly = new ArrayList<>();
             }
             polyLine = at;
@@ -325,7 +330,7 @@ final class MotionChecks {
         }
         terms.move(tool, line, seconds - secondsBefore);
         if (poly != null) {
-            path.move(rapid, poly, polyLine, frame == null ? null : frame.file());
+            path.move(rapid, poly, polyLine, frame == null ? null : frame.file(), tool);
             path.frame(frame, rapid);
         }
         if (scrub != null && scrub.inRun() && !segs.isEmpty()) {

@@ -89,6 +89,19 @@ public final class Simulator {
     /** How many DMC lines have been replayed. */
     private int dmcLines;
 
+    /** Told of every DMC line replayed, with the cycle clock before and after it (gcnc.CompileObserver#replayed). */
+    @FunctionalInterface
+    public interface Replayed {
+        void line(Instruction line, double secondsBefore, double secondsAfter);
+    }
+
+    private Replayed replayed;
+
+    /** Tells {@code r} of every line replayed from now on (null: nobody). */
+    public void onReplayed(Replayed r) {
+        replayed = r;
+    }
+
     public void begin(List<Instruction> header) {
         run(header);
     }
@@ -179,7 +192,11 @@ public final class Simulator {
             if (line > 0) {
                 origin = i.source().origin(); // a called program's file: its findings go there
             }
+            double before = replayed == null ? 0 : checks.seconds();
             dmc.run(i);
+            if (replayed != null) {
+                replayed.line(i, before, checks.seconds());
+            }
             lastLine = Math.max(1, line);
             if (trace != null) {
                 trace.line(i, dmc.x(), dmc.z(), checks.tool(), outputs.describe());

@@ -53,7 +53,18 @@ public final class SimulatorThread implements AutoCloseable {
 
     /** A simulator that hands every line it replayed on to {@code output}, in order. */
     public SimulatorThread(MachineProfile profile, SimOptions options, java.util.function.Consumer<Instruction> output) {
+        this(profile, options, output, null);
+    }
+
+    /**
+     * A simulator that hands every line it replayed on to {@code output}, in order, and tells
+     * {@code replayed} (null: nobody) of each line with the cycle clock around it, on this thread, just
+     * before the line goes to the output.
+     */
+    public SimulatorThread(MachineProfile profile, SimOptions options, java.util.function.Consumer<Instruction> output,
+                           Simulator.Replayed replayed) {
         this.simulator = new Simulator(profile, options, diagnostics);
+        simulator.onReplayed(replayed);
         this.output = output;
         this.thread = new Thread(this::work, "gcnc-simulator");
         thread.setDaemon(true);

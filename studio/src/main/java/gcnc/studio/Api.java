@@ -41,6 +41,8 @@ final class Api implements AutoCloseable {
     private final EventHub hub = new EventHub();
     /** The Run screen: MEMORY mode on a controller. */
     private final Runs runs;
+    /** The test-cut form after a run. */
+    private final TestCuts testCuts;
     private volatile boolean closed;
     /** Each stream holds one of the server's threads: a few pages, and the rest keep answering. */
     static final int MAX_STREAMS = 3;
@@ -60,6 +62,7 @@ final class Api implements AutoCloseable {
             Engine e = engine;
             return new Runs.Context(e.session(), e.analysis(), e.profileFile());
         }, messages, hub, config.running());
+        this.testCuts = new TestCuts(workspace, messages);
     }
 
     private Engine engine(Session session, ProfileEdit profile, String profileFile) {
@@ -89,10 +92,31 @@ final class Api implements AutoCloseable {
             case "profile" -> Http.json(ex, 200, profile(get(ex)));
             case "profile/impact" -> timed(ex, () -> impact(post(ex)));
             case "profile/save" -> Http.json(ex, 200, saveProfile(post(ex)));
+            case "wear" -> timed(ex, () -> testCuts.form(engine.session(), post(ex)));
+            case "wear/cut" -> timed(ex, () -> testCut(post(ex)));
             case "run", "run/arm", "run/start", "run/hold", "run/resume", "run/step", "run/continue", "run/override", "run/stop" ->
                     runs.handle(endpoint, ex);
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
         }
+    }
+
+    /**
+     * POST /api/wear/cut: the test cut ({@link TestCuts#cut}); a saved wear is in force from then on for
+     * every check, simulation, compile and run of this studio.
+     */
+    private JsonObject testCut(JsonObject req) throws IOException, Http.Fail {
+        TestCuts.Cut cut;
+        synchronized (testCuts) { // one test cut at a time: each reads the wear the last one saved
+            Engine e = engine;
+            cut = testCuts.cut(e.session(), req);
+            if (cut.profile().isPresent()) {
+                Session session = e.session().withProfile(cut.profile().get());
+                synchronized (this) {
+                    engine = engine(session, e.profile(), e.profileFile());
+                }
+            }
+        }
+        return cut.answer();
     }
 
     private interface Work {

@@ -5,18 +5,17 @@ import gcnc.Compiler;
 import gcnc.Session;
 import gcnc.dmc.Form;
 import gcnc.dmc.Instruction;
-import gcnc.machine.MachineProfile;
 import gcnc.output.DmcOutputs;
 import gcnc.output.FormOutputs;
 import gcnc.send.BlockTable;
+import gcnc.send.CompiledRun;
 import gcnc.send.DmcProgram;
 import gcnc.sim.SimOptions;
 import java.io.IOException;
 import java.io.Reader;
+import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Optional;
 import java.util.function.Consumer;
 
@@ -25,8 +24,8 @@ import java.util.function.Consumer;
  * checked, compiled and simulated (blended as the profile plans it; every motion stopped at its end
  * in step mode), written beside it only when clean in the form {@code gcnc compile} chooses
  * ({@code FILE.dmc} and its map, and {@code FILE.stream} when the program does not fit the
- * controller), the compiled instructions kept as the program sent, with the checker's state at each
- * block for the live display. A program that is not clean comes back refused, with its diagnostics,
+ * controller); the program sent, its time and the checker's state at each block (for the live display)
+ * are what the compile published of itself ({@code CompiledRun}), not a second reading. A program that is not clean comes back refused, with its diagnostics,
  * and nothing else is done.
  *
  * @param report  the diagnostics, as {@code gcnc check --format json} writes them
@@ -46,39 +45,29 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
             throws IOException {
         Optional<Path> folder = Optional.ofNullable(file.getParent());
         Optional<SimOptions> sim = Optional.of(session.simulation());
-        List<Instruction> compiled = new ArrayList<>();
-        Compiler.Result r;
-        DmcProgram program;
-        Form form;
-        int dmcLines;
+        // what the run needs of the compile, as it publishes it (CompiledRun): the lines replayed with the
+        // simulator's clock, the checker's state at each block; the file is read once
+        CompiledRun seen = new CompiledRun();
         try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
             outputs.mapSource(file.getFileName().toString(), file);
             Consumer<Instruction> written = outputs.sink(Optional.empty(), session.profile().controllerLimits());
-            Consumer<Instruction> sink = i -> {
-                compiled.add(i);
-                written.accept(i);
-            };
+            String text;
             try (Reader in = Session.decode(Files.newInputStream(file))) {
-                Session s = session.withPrograms(folder);
-                // step mode runs one block at a time, so every motion stops at its end there (docs/run.md)
-                r = step ? s.compileExactStop(in, sim, sink) : s.compile(in, sim, false, sink);
+                text = CompiledRun.text(in);
             }
+            Session s = session.withPrograms(folder);
+            // step mode runs one block at a time, so every motion stops at its end there (docs/run.md)
+            Compiler.Result r = step ? s.compileExactStop(new StringReader(text), sim, written, seen)
+                    : s.compile(new StringReader(text), sim, false, written, seen);
             if (!r.ok()) {
                 return new RunProgram(analysis.report(name, r), r.diagnostics().errorCount(), null, null, null, 0);
             }
-            form = outputs.finish(r.diagnostics());
-            program = DmcProgram.of(compiled, session.profile());
+            Form form = outputs.finish(r.diagnostics());
+            DmcProgram program = seen.program(session.profile());
             outputs.commit();
-            dmcLines = outputs.dmcLines();
+            return new RunProgram(analysis.report(name, r), 0, program, seen.blocks(text), form, outputs.dmcLines());
         } catch (DmcOutputs.Failed e) {
             throw e.problem();
-        }
-        // with a blank given, the work offsets on the blank's face, as the compile placed them
-        MachineProfile onBlank = sim.flatMap(SimOptions::stock).map(b -> session.profile().withStickout(b.stickout()))
-                .orElse(session.profile());
-        try (Reader again = Session.decode(Files.newInputStream(file))) {
-            BlockTable blocks = BlockTable.of(again, session.tables(), onBlank, folder);
-            return new RunProgram(analysis.report(name, r), 0, program, blocks, form, dmcLines);
         }
     }
 }

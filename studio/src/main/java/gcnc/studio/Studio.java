@@ -76,6 +76,7 @@ public final class Studio implements AutoCloseable {
             "hover.js", "text/javascript; charset=utf-8",
             "configure.js", "text/javascript; charset=utf-8",
             "run.js", "text/javascript; charset=utf-8",
+            "testcut.js", "text/javascript; charset=utf-8",
             "i18n.js", "text/javascript; charset=utf-8",
             "studio.css", "text/css; charset=utf-8");
 

@@ -79,6 +79,18 @@ const WORDS = {
     resumeAtButton: (at) => `Resume at ${at} (arm)`, left: (time) => `${time} left`,
     counts: (c) => `Galil counts ${c}`, spindleDir: { cw: "CW", ccw: "CCW", stop: "stopped" },
     runNoProgram: "open a program to run it", runStarted: (n) => `running ${n}`,
+    testCutTitle: "Test cut: wear offsets", testCutButton: "Test cut",
+    testCutHelp: (u, d) => `Measure the part; enter what you measured beside what the program cuts there, in ${u === "in" ? "inches" : "mm"}`
+      + ` as the program writes them (X ${d ? "a diameter" : "a radius"}). The wear changes by programmed − measured; the program`
+      + " is simulated again with it before anything is saved.",
+    testCutFile: (f) => `saved to ${f} (wear.N = X, Z)`, testCutNoTools: "The program selects no tool offset.",
+    wearTool: (n, w) => `${n}: wear ${w}`, xDiameter: "X (diameter)", xRadius: "X (radius)", measured: "measured",
+    programmed: "programmed", wearSave: "Save wear", wearVerifying: "re-verifying the program with the new wear…",
+    wearChange: (c, u) => `${c.axis} wear ${c.before} → ${c.after} (${c.step} ${u} = programmed ${c.programmed} − measured ${c.measured})`,
+    wearSaved: (w, f, e, n) => `saved ${w} to ${f}; the program re-verified with it: ${e === 0 ? "no errors" : e + " error(s)"},`
+      + ` ${n} finding(s); the next Arm uses it`,
+    wearRefused: (f, l, m) => `Refused, nothing saved: ${f}:${l}: ${m}`, wearNotSaved: "test cut refused: nothing saved",
+    wearInForce: (f, w) => `wear in force (${f}): ${w}`,
   },
   es: {
     program: "Programa", new: "Nuevo", save: "Guardar", saveas: "Guardar como…", compile: "Compilar",
@@ -158,6 +170,18 @@ const WORDS = {
     resumeAtButton: (at) => `Reanudar en ${at} (armar)`, left: (time) => `faltan ${time}`,
     counts: (c) => `cuentas Galil ${c}`, spindleDir: { cw: "horario", ccw: "antihorario", stop: "parado" },
     runNoProgram: "abra un programa para ejecutarlo", runStarted: (n) => `ejecutando ${n}`,
+    testCutTitle: "Corte de prueba: desgaste de herramienta", testCutButton: "Corte de prueba",
+    testCutHelp: (u, d) => `Mida la pieza; escriba lo medido junto a lo que el programa corta ahí, en ${u === "in" ? "pulgadas" : "mm"}`
+      + ` como los escribe el programa (X ${d ? "un diámetro" : "un radio"}). El desgaste cambia en programado − medido; el programa`
+      + " se simula otra vez con él antes de guardar nada.",
+    testCutFile: (f) => `se guarda en ${f} (wear.N = X, Z)`, testCutNoTools: "El programa no selecciona ningún corrector de herramienta.",
+    wearTool: (n, w) => `${n}: desgaste ${w}`, xDiameter: "X (diámetro)", xRadius: "X (radio)", measured: "medido",
+    programmed: "programado", wearSave: "Guardar desgaste", wearVerifying: "verificando otra vez el programa con el nuevo desgaste…",
+    wearChange: (c, u) => `desgaste ${c.axis} ${c.before} → ${c.after} (${c.step} ${u} = programado ${c.programmed} − medido ${c.measured})`,
+    wearSaved: (w, f, e, n) => `guardado ${w} en ${f}; el programa verificado con él: ${e === 0 ? "sin errores" : e + " error(es)"},`
+      + ` ${n} hallazgo(s); el próximo Armar lo usa`,
+    wearRefused: (f, l, m) => `Rechazado, nada guardado: ${f}:${l}: ${m}`, wearNotSaved: "corte de prueba rechazado: nada guardado",
+    wearInForce: (f, w) => `desgaste en vigor (${f}): ${w}`,
   },
 };
 

@@ -4,6 +4,7 @@
 // `gcnc run --format json` prints, arrive over the page's event stream as "run" events and drive the live display:
 // position in program coordinates, the block executing lit in the text and on the path, feed, spindle, progress.
 import { t } from "/static/i18n.js";
+import { testCutForm } from "/static/testcut.js";
 
 const $ = (id) => document.getElementById(id);
 
@@ -36,6 +37,8 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   let over = false;
   /** Whether the run's thread has ended ("run-ended"): nothing of it is going on any more. */
   let ended = false;
+  /** The test cut after a run (testcut.js): opened by its button, and by itself when a run ends finished. */
+  const testCut = testCutForm({ api, program, status });
 
   function setState(state, text) {
     $("run-state").dataset.state = state;
@@ -85,6 +88,12 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     return t.preflight + ": " + parts.join(", ");
   }
 
+  /** A wear event as `gcnc run` prints it: T01 X+0.040 Z0.000 (diameter, mm). */
+  function wear(e) {
+    const signed = (v) => (v > 0 ? "+" : "") + Number(v).toFixed(Math.max(3, (String(v).split(".")[1] || "").length));
+    return `T${e.offset < 10 ? "0" + e.offset : e.offset} X${signed(e.x)} Z${signed(e.z)} (${e.diameter ? "diameter" : "radius"}, ${e.unit})`;
+  }
+
   /** The arm's answer: what will move, on what, and what pre-flight found; or why nothing is armed. */
   function showArm(a) {
     const box = $("runarmed");
@@ -104,6 +113,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     for (const e of a.events || []) {
       if (e.event === "preflight") line(box, preflight(e));
       if (e.event === "downloaded") line(box, t.downloaded(e.lines));
+      if (e.event === "wear") line(box, t.wearInForce(e.file, wear(e)), "wear");
       if (e.event === "finding") finding(box, e);
       if (e.event === "message") line(box, e.text, "message");
     }
@@ -192,6 +202,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     switch (e.event) {
       case "connected": line(log, t.connected(e.link, e.controller)); break;
       case "preflight": line(log, preflight(e)); break;
+      case "wear": line(log, t.wearInForce(e.file, wear(e)), "wear"); break;
       case "started":
         line(log, t.startedLine(e.blocks, e.lines, clock(e.seconds), e.resumeAt));
         running = true; step = e.step; over = false; ended = false;
@@ -228,6 +239,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
         over = true;
         setState("finished", t.finished(clock(e.seconds)));
         $("dro-progress").value = 1;
+        testCut.open();
         break;
       case "run-ended":
         running = false;
@@ -283,6 +295,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   $("run-step").addEventListener("click", () => { if (!over) setState("running", t.runningState); command("step"); });
   $("run-continue").addEventListener("click", () => command("continue"));
   $("run-stop").addEventListener("click", () => command("stop"));
+  $("run-testcut").addEventListener("click", () => testCut.open());
   $("run-override").addEventListener("change", (e) => command("override", { percent: Number(e.target.value) }));
   $("run-override").addEventListener("input", (e) => { $("run-overridevalue").textContent = `${e.target.value}%`; });
   setState("idle", t.idleState);

@@ -50,11 +50,11 @@ public final class SyntaxActions {
             // block the expansion hands on, where it cannot be followed
             case FINISHING_CYCLE, TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE,
                  FACE_PECK_CYCLE, GROOVE_PECK_CYCLE, DRILL_CYCLE, SPOT_DRILL_CYCLE, PECK_DRILL_CYCLE,
-                 TAP_CYCLE, REVERSE_TAP_CYCLE, THREAD, THREAD_SINGLE_CYCLE, THREAD_CYCLE, SET_OFFSETS, OTHER_HOME -> 17;
+                 TAP_CYCLE, REVERSE_TAP_CYCLE, BORE_CYCLE, BORE_STOP_CYCLE, BORE_DWELL_CYCLE, THREAD, THREAD_SINGLE_CYCLE, THREAD_CYCLE, SET_OFFSETS, OTHER_HOME -> 17;
         };
     }
 
-    /** The action for a word, or null after reporting why there is none (E001, E002, E004, E011, E012). */
+    /** The action for a word, or null after reporting why there is none (E001, E002, E004, E011, E262, E012). */
     public SyntaxAction lookUp(Word w, BlockDraft d, Diagnostics out) {
         if (!d.functions.reads(w.letter())) {
             d.fail(out, Code.E004_UNDEFINED_FUNCTION, w.span(), w.letter());
@@ -72,7 +72,10 @@ public final class SyntaxActions {
                 }
                 GFunction f = d.functions.g(w.code());
                 if (f == null) {
-                    d.fail(out, Code.E011_UNDEFINED_G, w.span(), w);
+                    // G43/G44/G49: a mill's tool length compensation, written in mill-style safe-start lines
+                    long c = w.code();
+                    d.fail(out, c == 43 || c == 44 || c == 49 ? Code.E262_MILL_TOOL_LENGTH_G : Code.E011_UNDEFINED_G,
+                            w.span(), w);
                     return null;
                 }
                 return byNumber[forG(f.role())];

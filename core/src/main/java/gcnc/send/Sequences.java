@@ -5,35 +5,32 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Follows a compiled program's geometry command by command, as the controller will move: the vector
- * sequences with their pieces in the plane, which sequence each command belongs to, and the estimated
- * seconds of work before each command (a trapezoid per sequence, the dwells). For {@link DmcProgram}.
+ * Where a compiled program's motions lie in the vector plane, command by command: the vector
+ * sequences with their pieces (Galil plane coordinates: what the controller's {@code _CSS} and
+ * positions are compared with on a resume) and which sequence each command belongs to. No time: the
+ * seconds of every line are the simulator's cycle clock, as the compile replayed it
+ * ({@link DmcProgram.Clock}), so the run's time left ends on the compile's cycle time. For {@link DmcProgram}.
  */
-final class Walker {
+final class Sequences {
     final DmcProgram.Plane plane;
-    final double acceleration;
     final List<Sequence> sequences = new ArrayList<>();
     final List<Integer> owner = new ArrayList<>();
-    final List<Double> before = new ArrayList<>();
+    private final DmcProgram.Clock clock;
     double[] pos;
     double[] cursor;
     double speed;
     int first = -1;
     List<Sequence.Piece> pieces = new ArrayList<>();
-    /** Each piece's own speed ({@code <o}), else the sequence's VS. */
-    List<Double> speeds = new ArrayList<>();
     boolean thread;
-    double seconds;
 
-    Walker(DmcProgram.Plane plane, double[] home, double acceleration) {
+    Sequences(DmcProgram.Plane plane, double[] home, DmcProgram.Clock clock) {
         this.plane = plane;
         this.pos = home.clone();
         this.cursor = home.clone();
-        this.acceleration = acceleration > 0 ? acceleration : 256000;
+        this.clock = clock;
     }
 
     void line(int i, Command c) {
-        before.add(seconds);
         owner.add(first >= 0 ? sequences.size() : -1);
         if (c instanceof Command.VectorSpeed v) {
             speed = v.countsPerSecond().value();
@@ -42,7 +39,6 @@ final class Walker {
             begin(i);
             double[] to = {pos[0] + v.first(), pos[1] + v.second()};
             pieces.add(new Sequence.Line(i, cursor, to));
-            speeds.add(v.speeds().speed() > 0 ? v.speeds().speed() : speed);
             cursor = to;
         } else if (c instanceof Command.CircularArc a) {
             begin(i);
@@ -51,7 +47,6 @@ final class Walker {
             double[] to = {g[2], g[3]};
             pieces.add(new Sequence.Arc(i, cursor, to, new double[] {g[0], g[1]}, r, a.start().value(),
                     a.sweep().value()));
-            speeds.add(a.speeds().speed() > 0 ? a.speeds().speed() : speed);
             cursor = to;
         } else if (c instanceof Command.GearMaster) {
             begin(i);
@@ -63,8 +58,6 @@ final class Walker {
             cursor = at;
         } else if (c instanceof Command.AwaitSequence || c instanceof Command.AfterMotion) {
             end(i);
-        } else if (c instanceof Command.Wait w) {
-            seconds += w.milliseconds() / 1000.0;
         }
         if (first >= 0 && owner.get(i) < 0) {
             owner.set(i, sequences.size());
@@ -84,7 +77,6 @@ final class Walker {
             first = i;
             cursor = pos.clone();
             pieces = new ArrayList<>();
-            speeds = new ArrayList<>();
             thread = false;
         }
     }
@@ -93,28 +85,14 @@ final class Walker {
         if (first < 0) {
             return;
         }
-        double length = 0;
-        double cruise = 0;
-        double top = 0;
-        for (int k = 0; k < pieces.size(); k++) {
-            double v = speeds.get(k);
-            length += pieces.get(k).length();
-            cruise += v > 0 ? pieces.get(k).length() / v : 0;
-            top = Math.max(top, v);
-        }
-        double t = 0;
-        if (top > 0 && length > 0) {
-            // a trapezoid: each piece at its own speed, plus the time to speed up and slow down; a
-            // triangle on a short move (the blended corners' slowing is not counted: an estimate)
-            double ramp = top * top / acceleration;
-            t = length >= ramp ? cruise + top / acceleration : 2 * Math.sqrt(length / acceleration);
-        }
+        // its time as the simulator's clock ran over its lines (the compile's replay: corners, ramps, a
+        // thread pass's spindle-bound speed)
+        double t = clock.after(i) - clock.before(first);
         sequences.add(new Sequence(first, i, pos.clone(), cursor.clone(), thread ? 0 : speed,
                 thread ? List.of() : List.copyOf(pieces), t));
         for (int k = first; k <= i; k++) {
             owner.set(k, sequences.size() - 1);
         }
-        seconds += t;
         // the controller ends a sequence on whole counts: the next one's origin (VP is measured from it)
         pos = new double[] {Math.rint(cursor[0]), Math.rint(cursor[1])};
         first = -1;
@@ -128,10 +106,16 @@ final class Walker {
         return a;
     }
 
+    /**
+     * Seconds of work done when each of the first {@code n} lines starts: the clock before it, and for
+     * a line of a sequence the clock where its sequence starts (the progress adds how far along it the
+     * axes are).
+     */
     double[] secondsBefore(int n) {
         double[] a = new double[n];
         for (int i = 0; i < n; i++) {
-            a[i] = before.get(i);
+            int s = owner.get(i);
+            a[i] = s < 0 ? clock.before(i) : clock.before(sequences.get(s).first());
         }
         return a;
     }

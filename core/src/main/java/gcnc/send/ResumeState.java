@@ -1,0 +1,116 @@
+package gcnc.send;
+
+import gcnc.dmc.Command;
+import gcnc.machine.MachineProfile;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * Before a resume runs: what the controller holds against what the program needs at the resume
+ * point ({@link Resume#restored}: the tool, each output bit the program switched — the spindle's
+ * direction, the coolant, the chuck —, the spindle's speed), read from the controller ({@code MG TOOL},
+ * {@code MG @OUT[n]}, {@code MG _OFc}) and said line by line: what the resume changes, and what it
+ * finds as the program left it. A value the controller cannot say (a variable it does not hold, an
+ * analog output it gives no operand for) is said as set, not compared. Under G96 the speed restored is
+ * the surface speed's r/min where the axes are ({@link Resume#spindle}), not the r/min last set. The work offset and the feed
+ * mode need nothing on the controller: the compile resolved them into every later line's counts
+ * and speeds (docs/run.md, "Resume").
+ */
+final class ResumeState {
+    private ResumeState() {
+    }
+
+    /** The lines that say what the resume at {@code line} changes on {@code c} (none when it holds all of it). */
+    static List<String> changes(Controller c, MachineProfile profile, List<Command> restored, int line, BlockTable.Block at)
+            throws IOException {
+        List<String> out = new ArrayList<>();
+        List<String> kept = new ArrayList<>();
+        for (Command r : restored) {
+            if (r instanceof Command.ToolNumber t) {
+                Double held = read(c, "TOOL");
+                String need = "tool " + t.station();
+                if (held != null && Math.round(held) == t.station()) {
+                    kept.add(need);
+                } else {
+                    out.add(need + " (the controller held " + (held == null ? "no TOOL" : "TOOL=" + Math.round(held))
+                            + "): TOOL=" + t.station() + "; the turret must hold station " + t.station());
+                }
+            } else if (r instanceof Command.Output o) {
+                Double held = read(c, "@OUT[" + o.bit() + "]");
+                String need = "output " + o.bit() + names(profile, o.bit()) + (o.on() ? " on" : " off");
+                if (held != null && (held != 0) == o.on()) {
+                    kept.add(need);
+                } else {
+                    out.add(need + " (the controller held it " + (held == null ? "unknown" : held != 0 ? "on" : "off")
+                            + "): " + (o.on() ? "SB" : "CB") + o.bit());
+                }
+            } else if (r instanceof Command.Offset of) {
+                Double held = read(c, "_OF" + Controller.letter(of.channel()));
+                double v = of.volts().value();
+                String need = spindle(profile, v, at, line);
+                if (held != null && Math.abs(held - v) < 0.001) {
+                    kept.add(need);
+                } else {
+                    out.add(need + " (the controller held " + (held == null ? "an unknown speed"
+                            : String.format(Locale.ROOT, "%.4f V", held)) + ")");
+                }
+            } else if (r instanceof Command.AnalogOut ao) {
+                out.add(spindle(profile, ao.volts().value(), at, line) + " (AO" + ao.output() + " set; the controller"
+                        + " gives no operand to read it back)");
+            }
+        }
+        List<String> said = new ArrayList<>();
+        for (String o : out) {
+            said.add("before the resume at line " + line + " the controller is set as the program needs it: " + o);
+        }
+        if (!kept.isEmpty()) {
+            said.add("the controller already holds what line " + line + " needs: " + String.join(", ", kept));
+        }
+        return said;
+    }
+
+    /** The spindle's speed as the program writes it: r/min (and G96's surface speed when it is in force). */
+    private static String spindle(MachineProfile profile, double volts, BlockTable.Block at, int line) {
+        String rpm = String.format(Locale.ROOT, "spindle %.0f r/min (%.4f V)", Math.abs(volts) * profile.rpmPerVolt(), volts);
+        if (at != null && at.css() && !Double.isNaN(at.surfaceSpeed())) {
+            rpm += String.format(Locale.ROOT, "; G96 S%s %s at line %d: the surface speed's r/min where the axes are",
+                    trim(at.surfaceSpeed()), at.inch() ? "ft/min" : "m/min", line);
+        }
+        return rpm;
+    }
+
+    private static String trim(double v) {
+        return java.math.BigDecimal.valueOf(Math.rint(v * 1000) / 1000).stripTrailingZeros().toPlainString();
+    }
+
+    /** " (M08/M09)": the M codes of the profile that switch bit {@code bit}, "" when none names it. */
+    private static String names(MachineProfile profile, int bit) {
+        Map<Integer, Boolean> ms = new TreeMap<>();
+        for (int m = 0; m < 100; m++) {
+            for (String o : profile.outputsFor(m)) {
+                if (o.strip().equals("SB" + bit) || o.strip().equals("CB" + bit)) {
+                    ms.put(m, o.strip().startsWith("SB"));
+                }
+            }
+        }
+        if (ms.isEmpty()) {
+            return "";
+        }
+        List<String> n = new ArrayList<>();
+        ms.forEach((m, on) -> n.add(String.format(Locale.ROOT, "M%02d", m)));
+        return " (" + String.join("/", n) + ")";
+    }
+
+    /** {@code MG operand}, or null when the controller cannot say (an undefined variable: it refuses the command). */
+    private static Double read(Controller c, String operand) throws IOException {
+        try {
+            return c.client().number(operand);
+        } catch (GalilClient.Rejected r) {
+            return null;
+        }
+    }
+}
