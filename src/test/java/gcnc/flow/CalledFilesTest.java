@@ -3,6 +3,7 @@ package gcnc.flow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import gcnc.Compiler;
+import gcnc.galil.Dialect;
 import gcnc.machine.ProfileLoader;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
@@ -22,7 +23,7 @@ class CalledFilesTest {
     private static final Tables T = Tables.builtIn();
 
     private static Compiler.Settings haas(Path dir) throws Exception {
-        return new Compiler.Settings(T, ProfileLoader.load("generic", TableSource.builtIn(), T, "haas"), "galil",
+        return new Compiler.Settings(T, ProfileLoader.load("generic", TableSource.builtIn(), T, "haas"), Dialect.Kind.GALIL,
                 Optional.empty()).withPrograms(dir);
     }
 

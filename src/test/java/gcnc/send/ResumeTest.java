@@ -220,7 +220,7 @@ class ResumeTest {
         progress.axes(plus(home(p), 1000, 200));
         assertEquals(new ResumePoint(7, 0), progress.resumePoint(), "the axes on line 7's segment");
         // and that point resumes from where the axes are: the sequence whole
-        Piece r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
+        Download r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));
         List<String> l = texts(r);
         assertEquals(List.of("VS 1000", "VP 1000,0 <1000 >500", "VP 1000,1000 <800", "VE", "BGS"),
                 l.subList(l.indexOf("VS 1000"), l.indexOf("VS 1000") + 5));
@@ -236,7 +236,7 @@ class ResumeTest {
         Compiled c = compiled(TURN);
         // the host last saw line 7; the controller went on and finished the corner of line 9 (its end: X46 Z-33)
         Resume resume = new Resume(c.program(), c.blocks(), 3);
-        Piece r = resume.plan(new ResumePoint(7, 0), c.galil(9, 46, -33));
+        Download r = resume.plan(new ResumePoint(7, 0), c.galil(9, 46, -33));
         assertEquals("the controller finished the sequence's blocks: line 7 to 9", resume.ranOn().orElse(null));
         // what is resumed starts after line 9: line 10's move out, never the contour again
         int first = -1;

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.DynamicTest.dynamicTest;
 
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileFile;
 import gcnc.machine.ProfileLoader;
@@ -102,7 +103,7 @@ class BoredPartPropertyTest {
     private static Outcome run(MachineProfile m, String program, double blank, boolean reference) throws Exception {
         double stickout = m.model().stock().orElseThrow().stickout();
         SimOptions o = SimOptions.defaults().withStock(new StockSize(blank, 120, stickout)).withPath();
-        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, m, "galil",
+        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, m, Dialect.Kind.GALIL,
                 Optional.of(reference ? o.withReferenceStock() : o)), l -> { });
         List<String> found = new ArrayList<>();
         for (Diagnostic d : r.diagnostics().sorted()) {

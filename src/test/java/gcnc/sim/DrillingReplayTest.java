@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileFile;
 import gcnc.machine.ProfileLoader;
@@ -35,7 +36,7 @@ class DrillingReplayTest {
 
     /** The findings of compiling and replaying {@code program}, "line:code" each. */
     private static String findings(MachineProfile p, String program) throws Exception {
-        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, p, "galil",
+        Compiler.Result r = Compiler.compile(new StringReader(program), new Compiler.Settings(TABLES, p, Dialect.Kind.GALIL,
                 Optional.of(SimOptions.defaults())), l -> { });
         assertTrue(r.simulation().isPresent(), r.diagnostics().sorted().toString());
         return r.diagnostics().sorted().stream().map(d -> d.span().line() + ":" + d.code().id())

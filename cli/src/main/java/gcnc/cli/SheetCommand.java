@@ -112,7 +112,7 @@ final class SheetCommand extends RunCommand {
         SetupSheet sheet = SetupSheet.of(name, number, setup.profile(), sim.get(), r.diagnostics(),
                 reporter.messages());
         try (Reader in = gcnc.Session.decode(java.nio.file.Files.newInputStream(file))) {
-            sheet = sheet.withClamps(setup.session().withDialect(dialect.name()).withPrograms(SourceFiles.programsFolder(file)), in);
+            sheet = sheet.withClamps(setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)), in);
         } catch (IOException e) {
             return reporter.ioFault(name, Phrase.IO_CANNOT_READ, e);
         }

@@ -89,7 +89,7 @@ public final class Resume {
     private ResumePoint point;
     private double[] axes;
 
-    public Piece plan(ResumePoint at, double[] axes) throws RunFault {
+    public Download plan(ResumePoint at, double[] axes) throws RunFault {
         ranOn = null;
         point = at;
         this.axes = axes.clone();
@@ -246,7 +246,7 @@ public final class Resume {
     }
 
     /** The re-planned rest of a sequence, and the spindle changes on its way the axes are already past. */
-    private record Replanned(Piece.Builder lines, List<Integer> passed) {
+    private record Replanned(Download.Builder lines, List<Integer> passed) {
     }
 
     /**
@@ -254,8 +254,8 @@ public final class Resume {
      * @param stateEnd  the state is what the lines before this one set
      * @param replanned the rest of an interrupted sequence, or null
      */
-    private Piece build(int from, int stateEnd, Replanned replanned) {
-        Piece.Builder b = new Piece.Builder();
+    private Download build(int from, int stateEnd, Replanned replanned) {
+        Download.Builder b = new Download.Builder();
         int size = program.size();
         int header = 0;
         while (header < size && program.sourceLine(header) == 0 && !(program.command(header) instanceof Command.End)) {
@@ -310,7 +310,7 @@ public final class Resume {
             }
         }
         if (replanned != null) {
-            Piece r = replanned.lines().build(program.lineWidth());
+            Download r = replanned.lines().build(program.lineWidth());
             for (int i = 0; i < r.commands().size(); i++) {
                 b.add(r.commands().get(i), r.origin()[i]);
             }
@@ -364,7 +364,7 @@ public final class Resume {
      * new sequence still name the G-code blocks.
      */
     private Replanned replan(Sequence s, int k, boolean partial, double[] axes) {
-        Piece.Builder b = new Piece.Builder();
+        Download.Builder b = new Download.Builder();
         int vs = s.first();
         Command speed = program.command(vs);
         b.add(speed instanceof Command.VectorSpeed ? speed

@@ -25,7 +25,7 @@ final class ResumeState {
     }
 
     /** The lines that say what the resume at {@code line} changes on {@code c} (none when it holds all of it). */
-    static List<String> changes(Controller c, MachineProfile profile, List<Command> restored, int line, BlockTable.Block at)
+    static List<String> changes(MachineLink c, MachineProfile profile, List<Command> restored, int line, BlockTable.Block at)
             throws IOException {
         List<String> out = new ArrayList<>();
         List<String> kept = new ArrayList<>();
@@ -49,7 +49,7 @@ final class ResumeState {
                             + "): " + (o.on() ? "SB" : "CB") + o.bit());
                 }
             } else if (r instanceof Command.Offset of) {
-                Double held = read(c, "_OF" + Controller.letter(of.channel()));
+                Double held = read(c, "_OF" + MachineLink.letter(of.channel()));
                 double v = of.volts().value();
                 String need = spindle(profile, v, at, line);
                 if (held != null && Math.abs(held - v) < 0.001) {
@@ -106,7 +106,7 @@ final class ResumeState {
     }
 
     /** {@code MG operand}, or null when the controller cannot say (an undefined variable: it refuses the command). */
-    private static Double read(Controller c, String operand) throws IOException {
+    private static Double read(MachineLink c, String operand) throws IOException {
         try {
             return c.client().number(operand);
         } catch (GalilClient.Rejected r) {

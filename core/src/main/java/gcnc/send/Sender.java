@@ -9,7 +9,7 @@ import java.util.function.Function;
 
 /**
  * {@code gcnc run} after the compile: pre-flight against the controller, the program's capacity
- * checked against what the controller has, then the {@link Form} that sends and follows it, and
+ * checked against what the controller has, then the {@link Delivery} that sends and follows it, and
  * one outcome: 0 ran to the end, 2 a connection or controller problem before anything moved, 3
  * stopped by a fault or the operator once it had started (with the command that resumes it).
  * Every fault is a diagnostic (E815-E829) at the G-code line it concerns.
@@ -39,11 +39,11 @@ public final class Sender {
     private final Messages messages;
     private final Operator operator;
     private final Options options;
-    private final Form form;
+    private final Delivery form;
     private final Function<ResumePoint, String> resumeCommand;
 
     public Sender(MachineProfile profile, DmcProgram program, BlockTable blocks, EventSink events, Messages messages,
-                  Operator operator, Options options, Form form, Function<ResumePoint, String> resumeCommand) {
+                  Operator operator, Options options, Delivery form, Function<ResumePoint, String> resumeCommand) {
         this.profile = profile;
         this.program = program;
         this.blocks = blocks;
@@ -69,10 +69,10 @@ public final class Sender {
     public int run(Link link, int timeoutMs) {
         Progress progress = new Progress(program, blocks, events, tolerance());
         GalilClient client = new GalilClient(link, timeoutMs, m -> events.accept(new Event.Message(m)));
-        Controller c = new Controller(client, profile, program.plane());
+        MachineLink c = new MachineLink(client, profile, program.plane());
         // closed in finally, not by try-with-resources: the catches below still talk to the controller
         try {
-            Piece piece = preflight(c, link.name());
+            Download piece = preflight(c, link.name());
             events.accept(new Event.Started(form.name(), piece.lines().size(), countBlocks(piece),
                     program.totalSeconds() - program.secondsBefore(firstMotion()), options.dryRun(),
                     options.step(), options.resumeAt() == null ? null : options.resumeAt().toString()));
@@ -129,7 +129,7 @@ public final class Sender {
     }
 
     /** The axes read after a stop, for the resume point; a link that no longer answers leaves the last poll's. */
-    private static void readAxes(Controller c, Progress progress) {
+    private static void readAxes(MachineLink c, Progress progress) {
         try {
             progress.axes(c.position());
         } catch (IOException | RuntimeException e) {
@@ -141,7 +141,7 @@ public final class Sender {
         return line == 0 ? "none" : "line " + line;
     }
 
-    private int countBlocks(Piece piece) {
+    private int countBlocks(Download piece) {
         java.util.Set<Integer> lines = new java.util.HashSet<>();
         for (int o : piece.origin()) {
             if (program.sourceLine(o) > 0) {
@@ -158,11 +158,11 @@ public final class Sender {
     }
 
     /** Pre-flight; returns what to download (the program, or the resume program built from where the axes are). */
-    private Piece preflight(Controller c, String link) throws IOException, RunFault {
-        Controller.Facts f = c.preflight();
+    private Download preflight(MachineLink c, String link) throws IOException, RunFault {
+        MachineLink.Facts f = c.preflight();
         events.accept(new Event.Connected(link, f.revision()));
         gcnc.machine.GalilModel model = profile.galilModel();
-        if (f.model().isEmpty() || !Controller.sameModel(f.model(), model.name())) {
+        if (f.model().isEmpty() || !MachineLink.sameModel(f.model(), model.name())) {
             String what = f.model().isEmpty() ? "the controller did not name a Galil model ('"
                     + GalilClient.printable(f.revision()) + "' to ^R^V)" : "the controller is a " + f.revision();
             throw new RunFault(Code.E818_WRONG_CONTROLLER, 0, false, what, profile.name(), model.name());
@@ -174,9 +174,9 @@ public final class Sender {
         }
         int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
-        Piece piece;
+        Download piece;
         if (options.resumeAt() == null) {
-            piece = Piece.whole(program);
+            piece = Download.whole(program);
         } else {
             // the position read again on this connection (the preflight's TP, after _XQ0 and _BGS said it is
             // at rest): a controller that ran on after a dropped link is resumed from where it really is

@@ -60,7 +60,7 @@ public class CompileTask extends GcncTask {
             outputs.mapSource(program.file().getName(), program.file().toPath());
             // the form that fits the profile's controller: the program, or a resident program and its .stream
             Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
-                    "thesis".equals(session.options().dialect()) ? outputs.programSink()
+                    session.options().dialect() == gcnc.galil.Dialect.Kind.THESIS ? outputs.programSink()
                             : outputs.sink(Optional.empty(), session.profile().controllerLimits()));
             if (r.ok()) {
                 outputs.finish(r.diagnostics());
