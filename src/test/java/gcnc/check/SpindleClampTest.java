@@ -86,6 +86,14 @@ class SpindleClampTest {
         assertEquals(List.of(2000.0), rpm);
     }
 
+    @Test
+    void aBlockRecoveredFromAnotherErrorKeepsTheLimitsSpeed() {
+        // two motion Gs (E016): the block is refused, its S is kept as the control would run it
+        Run r = Run.of(machine("haas"), "G50 S2000\nG00 G01 S2500 M03\nM30\n", Checker.ERROR_CAP);
+        assertEquals("2:5:E016", r.errors());
+        assertEquals(2000, r.checker.state().rpm(), 1e-9);
+    }
+
     /** The DMC and cycle time of {@code program} on the haas control; any finding but E280 and notes (no blank: E316) fails. */
     private static String dmc(String program, double[] seconds) throws IOException {
         StringBuilder out = new StringBuilder();
