@@ -13,7 +13,7 @@ import java.util.List;
  * One thread pass geared to the spindle encoder, as the galil dialect writes it (docs/threading.md,
  * docs/dmc-format.md): GA, the synchronisation on a whole revolution, GR per geared segment with the
  * phase correction after the engagement, and the settle on the exact end counts. The controller's
- * position is the dialect's ({@link GalilDialect#dialect.posU}, {@link GalilDialect#dialect.posV}).
+ * position is the dialect's ({@link GalilDialect#posU}, {@link GalilDialect#posV}).
  */
 final class ThreadPass {
     private final GalilDialect dialect;
