@@ -4,7 +4,6 @@ import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.dmc.Command;
-import gcnc.dmc.DmcReader;
 import gcnc.dmc.Fixed;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.Source;
@@ -15,7 +14,6 @@ import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import gcnc.plan.Step;
 import java.util.List;
-import java.util.Map;
 import java.util.function.Consumer;
 
 /**
@@ -34,10 +32,10 @@ final class GalilDialect implements Dialect {
     private final gcnc.machine.ControllerLimits limits;
     long posU;
     long posV;
-    /** The profile's output directives of each M code, read once. */
-    private final Map<Integer, List<Command>> outputs = new java.util.HashMap<>();
     /** The spindle, the turret, the dwell, the soft limits, the homing check and the handlers. */
     private final MachineCode machine;
+    /** The M functions' output directives and program stops. */
+    private final MFunctions mFunctions;
     /** The thread passes, geared to the spindle encoder. */
     private final ThreadPass threads;
 
@@ -51,6 +49,7 @@ final class GalilDialect implements Dialect {
         this.posU = GalilNumbers.round(frame.u(profile.home()));
         this.posV = GalilNumbers.round(frame.v(profile.home()));
         this.threads = new ThreadPass(this, profile);
+        this.mFunctions = new MFunctions(profile, machine);
     }
 
     @Override
@@ -193,6 +192,14 @@ final class GalilDialect implements Dialect {
         });
     }
 
+    /**
+     * The M functions' output directives and what they do to the spindle (also on the way,
+     * GroupWriter); a program stop among them (M00, M01 with the switch on) comes after the others.
+     */
+    void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
+        mFunctions.outputs(b, calls, out);
+    }
+
     /** The model's vector buffer, segments (tables/galil_models.csv {@code buffer_segments}). */
     int bufferSegments() {
         return (int) limits.model().range(gcnc.machine.GalilModel.Limit.BUFFER_SEGMENTS).max();
@@ -206,88 +213,6 @@ final class GalilDialect implements Dialect {
     /** The spindle's speed reference (also for G96 inside a group, GroupWriter): MachineCode's. */
     void spindle(CheckedBlock b, double rpm, BlockWriter out) {
         machine.spindleSpeed(b, rpm, out);
-    }
-
-    /**
-     * The M functions' output directives and what they do to the spindle (also on the way,
-     * GroupWriter); a program stop among them (M00, M01 with the switch on) comes after the others.
-     */
-    void outputs(CheckedBlock b, List<MCall> calls, BlockWriter out) {
-        boolean stop = false;
-        for (MCall m : calls) {
-            if (profile.control().stopsProgram(m.code())) {
-                stop = true;
-            } else {
-                apply(b, m.code(), out);
-            }
-        }
-        if (stop) {
-            programStop(b, out);
-        }
-    }
-
-    /** The last M code applied in each of the control's M groups: what a program stop puts back. */
-    private final Map<Integer, Integer> lastInGroup = new java.util.HashMap<>();
-
-    /** One M code's output directives and what it does to the spindle. */
-    private void apply(CheckedBlock b, int code, BlockWriter out) {
-        for (Command directive : outputs.computeIfAbsent(code, this::directives)) {
-            out.emit(directive);
-        }
-        machine.afterM(b, new MCall(code), out);
-        gcnc.machine.MFunction f = profile.control().m().get(code);
-        if (f != null && f.group() > 0) {
-            lastInGroup.put(f.group(), code);
-        }
-    }
-
-    /**
-     * A program stop (docs/galil.md, "Program stops"), the axes at rest (the planner ended the
-     * sequence): the control's {@code stop.off} codes that change something (Haas: M05 when the
-     * spindle turns, M09 when the coolant is on), the wait for the operator ({@code gstop=1},
-     * {@code JS #PSTOP}), then what they changed put back as the program had it (M03 with its
-     * speed, and the wait for speed before the next feed, as after any M03; M08).
-     */
-    private void programStop(CheckedBlock b, BlockWriter out) {
-        List<Integer> restore = new java.util.ArrayList<>();
-        for (int off : profile.control().stop().off()) {
-            gcnc.machine.MFunction f = profile.control().m().get(off);
-            Integer last = f.group() > 0 ? lastInGroup.get(f.group()) : null;
-            if (f.group() > 0 && (last == null || last == off || !restorable(last))) {
-                continue; // nothing of that group is on: the stop changes nothing there
-            }
-            apply(b, off, out);
-            if (last != null) {
-                restore.add(last);
-            }
-        }
-        machine.programStop(out);
-        for (int code : restore) {
-            apply(b, code, out);
-        }
-    }
-
-    /** Whether M code {@code code} is a state a stop can put back: a spindle start or an output (not M19's orientation). */
-    private boolean restorable(int code) {
-        gcnc.machine.MFunction f = profile.control().m().get(code);
-        gcnc.machine.MRole r = f == null ? null : f.role();
-        return r == gcnc.machine.MRole.SPINDLE_CW || r == gcnc.machine.MRole.SPINDLE_CCW
-                || r == gcnc.machine.MRole.OUTPUT;
-    }
-
-    /** The profile's output directives of M code {@code m} as commands (the loader has checked their form). */
-    private List<Command> directives(int m) {
-        return directives(profile, m);
-    }
-
-    static List<Command> directives(MachineProfile profile, int m) {
-        List<Command> commands = new java.util.ArrayList<>();
-        for (String d : profile.outputsFor(m)) {
-            commands.add(java.util.Objects.requireNonNull(DmcReader.read(d, (code, args) -> {
-                throw new IllegalStateException("profile output directive " + d + " is not SB/CB n");
-            })));
-        }
-        return List.copyOf(commands);
     }
 
     private void linear(CheckedBlock b, Motion.Linear m, BlockWriter out) {

@@ -345,7 +345,7 @@ final class MachineCode {
         c.add(new Command.AfterMotion(frame.plane()));
         c.add(volts(0));
         MRole stop = MRole.SPINDLE_STOP;
-        profile.control().mFor(stop).ifPresent(f -> c.addAll(GalilDialect.directives(profile, f.code())));
+        profile.control().mFor(stop).ifPresent(f -> c.addAll(MFunctions.directives(profile, f.code())));
         c.add(new Command.ClearStack()); // EN then ends the program, not the interrupted routine
         c.add(new Command.End());
         for (Command x : c) {
