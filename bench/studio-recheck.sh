@@ -4,14 +4,22 @@
 # the program re-checked RUNS times; prints the median, 90th percentile and worst round trip (HTTP and JSON
 # included, as the page waits for it), and the same for POST /api/simulate (path + DMC), each also as the studio's own time (its Server-Timing
 # header). Target: check < 50 ms. Also prints the machine's load: on a shared machine the figures are its.
+# DRILL=1: the program drills and bores the part first (bench/gen_program.py --drill: a centre drill, a drill
+# and a boring bar, on the tools of bench/drill.machine), as most real parts are.
 # usage: bench/studio-recheck.sh JAR [BLOCKS]    (WARM=40, RUNS=60 by default)
 set -eu
 cd "$(dirname "$0")/.."
 jar=$1; blocks=${2:-2000}
 dir=bench/out/studio
 mkdir -p "$dir"
-python3 bench/gen_program.py "$blocks" "$dir/long.nc"
-java ${STUDIO_JAVA_OPTS:-} -jar "$jar" studio "$dir" --lang en > "$dir/studio.out" 2>&1 &
+if [ -n "${DRILL:-}" ]; then
+    python3 bench/gen_program.py "$blocks" "$dir/long.nc" --drill
+    machine=(--machine bench/drill.machine)
+else
+    python3 bench/gen_program.py "$blocks" "$dir/long.nc"
+    machine=()
+fi
+java ${STUDIO_JAVA_OPTS:-} -jar "$jar" studio "$dir" --lang en "${machine[@]}" > "$dir/studio.out" 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 for _ in $(seq 50); do grep -q 'token=' "$dir/studio.out" 2>/dev/null && break; sleep 0.2; done

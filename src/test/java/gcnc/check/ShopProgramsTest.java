@@ -66,7 +66,7 @@ class ShopProgramsTest {
                 Checker.ERROR_CAP)));
         assertEquals("5:20:warning E640", found(haas("G76 X0.4056 Z-0.75 K0.06 D0.012 F0.07692\nM30\n")));
         // deeper than the sharp V: no 60-degree thread is, so gcnc keeps the error
-        assertEquals("5:18:error E193", found(fanuc("G76 X22.16 Z-25. P1100 Q350 F1.2\nM30\n")));
+        assertEquals("5:18:warning E193", found(fanuc("G76 X22.16 Z-25. P1100 Q350 F1.2\nM30\n")));
         assertEquals("", found(fanuc("G76 X22.16 Z-25. P780 Q350 F1.2\nM30\n")));
     }
 
@@ -141,14 +141,18 @@ class ShopProgramsTest {
     }
 
     @Test
-    void aType1ContourStartingAlongZStaysAnErrorOnBothControls() {
-        // Fanuc alarm PS0065 (Z in the P block of a type I G71); the Haas manual describes X alone
-        // (type 1) and X with Z (type 2), not Z alone: gcnc keeps the error there too
-        // and the G70 over that contour does not echo it (E166): the contour is kept, not expanded
+    void aContourStartingAlongZIsFanucsAlarmAndAHaasType2() {
+        // Fanuc alarm PS0065 (Z in the P block of a type I G71), and the G70 over that contour does
+        // not echo it (E166): the contour is kept, not expanded
         assertEquals("6:1:error E155", found(Run.of("fanuc", ROUGH + "G71 P10 Q20 U0.4 W0.1 D2. F0.25\n"
                 + "N10 G01 Z0.\nN11 X20.\nN12 Z-15.\nN20 X48.\nG70 P10 Q20\nM30\n")));
-        assertEquals("6:1:error E155", found(Run.of("haas", "G20 G99\nT101\nG97 S800 M03\nG00 X2.1 Z0.1\n"
-                + "G71 P10 Q20 U0.02 W0.005 D0.05 F0.01\nN10 G01 Z0.\nX1.\nZ-1.\nN20 X2.1\nM30\n")));
+        // Haas selects type 1 by "only an X-Axis position" in the P block and lists no alarm for Z
+        // alone: the control runs it; gcnc takes the move as positioning at the start's level and
+        // roughs type 1 from its end (issue 31; haas cycle.type1_first_move = positions), and its G70
+        Run h = Run.of("haas", "G20 G99\nT101\nG97 S800 M03\nG00 X2.1 Z0.1\n"
+                + "G71 P10 Q20 U0.02 W0.005 D0.05 F0.01\nN10 G01 Z0.\nX1.\nZ-1.\nN20 X2.1\nG70 P10 Q20\nM30\n");
+        assertEquals("", found(h));
+        assertTrue(cuts(h) > 4, "roughed and finished");
     }
 
     @Test

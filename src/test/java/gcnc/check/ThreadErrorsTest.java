@@ -73,8 +73,9 @@ class ThreadErrorsTest {
 
     @Test
     void e193AHeightThatDoesNotFitThePitch() {
-        // above the sharp V (0.866 x 1.2 = 1.039 mm): no 60-degree thread is that deep. Between 0.65
-        // and 0.866 x the lead the control cuts it: warning E640 (issue 17; ShopProgramsTest)
+        // above the sharp V (0.866 x 1.2 = 1.039 mm): no 60-degree thread is that deep, but the
+        // control cuts it: warning E193 (issue 31; ShopAlarmsTest). Between 0.65 and 0.866 x the
+        // lead: warning E640 (issue 17; ShopProgramsTest)
         assertEquals("5:18:E193", fanuc("G76 X22.16 Z-25. P1100 Q350 F1.2\nM30\n"));
         assertEquals("5:20:E193", Run.of("haas", "G20 G99\nT303\nG97 S700 M03\nG00 X0.6 Z0.2 M24\n"
                 + "G76 X0.4056 Z-0.75 K0.07 D0.012 F0.07692\nM30\n").errors());

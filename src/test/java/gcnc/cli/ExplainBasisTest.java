@@ -17,20 +17,23 @@ class ExplainBasisTest {
         assertEquals(0, w.status(), w.err());
         assertTrue(w.out().contains("  the control runs the block (the manual's rule): G70 takes P and Q"), w.out());
         CliTest.Run e = CliTest.gcnc("explain", "E193");
-        assertTrue(e.out().contains("  the control stops (alarm) (gcnc's rule beyond the manuals): no 60-degree"), e.out());
+        assertTrue(e.out().contains("  the control runs the block (gcnc's rule beyond the manuals): the control cuts any height"),
+                e.out());
+        CliTest.Run a = CliTest.gcnc("explain", "E049");
+        assertTrue(a.out().contains("  the control stops (alarm) (the manual's rule): Fanuc PS0022"), a.out());
         CliTest.Run es = CliTest.gcnc("explain", "--lang", "es", "E650");
-        assertTrue(es.out().contains("  aún no soportado por gcnc (regla de gcnc más allá de los manuales): gcnc sigue"),
+        assertTrue(es.out().contains("  gcnc no lo genera (regla de gcnc más allá de los manuales): gcnc sigue"),
                 es.out());
     }
 
     @Test
     void aCodeWithoutARowPrintsNoBasisButWhatTheControlDoesFromItsProse() {
         // no basis row: the prose (tables/explain/) says what the control does, else the severity does
-        CliTest.Run r = CliTest.gcnc("explain", "E305");
+        CliTest.Run r = CliTest.gcnc("explain", "E107");
         assertFalse(r.out().contains("the control stops (alarm)"), r.out());
-        assertTrue(r.out().contains("  What the control does: The control runs the rapid as written"), r.out());
-        CliTest.Run e = CliTest.gcnc("explain", "E049");
-        assertTrue(e.out().contains("  What the control does: it stops with an alarm at this block"), e.out());
+        assertTrue(r.out().contains("  What the control does: it runs the block"), r.out());
+        CliTest.Run e = CliTest.gcnc("explain", "E305");
+        assertTrue(e.out().contains("  What the control does: The control runs the rapid as written"), e.out());
     }
 
     @Test

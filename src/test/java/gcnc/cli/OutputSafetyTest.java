@@ -171,9 +171,9 @@ class OutputSafetyTest {
         assertArrayEquals(Files.readAllBytes(file), r.stdout(), "-o - writes exactly the DMC program");
         assertEquals("", r.out(), "the summary must not mix with the program on standard output");
         assertTrue(r.err().startsWith("<stdin>: 13 blocks -> <stdout>"), r.err());
-        Run check = gcnc(new ByteArrayInputStream("G21\nM30\nG00 X1. Z1.\n".getBytes(StandardCharsets.UTF_8)), "check", "-");
+        Run check = gcnc(new ByteArrayInputStream("G21\nM93\nM30\n".getBytes(StandardCharsets.UTF_8)), "check", "-");
         assertEquals(1, check.status());
-        assertTrue(check.err().startsWith("<stdin>:") && check.err().contains(": error[E053]"), check.err());
+        assertTrue(check.err().startsWith("<stdin>:") && check.err().contains(": error[E012]"), check.err());
     }
 
     @Test

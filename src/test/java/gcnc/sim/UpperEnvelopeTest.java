@@ -222,10 +222,12 @@ class UpperEnvelopeTest {
     /**
      * Roughing and finishing from outside keep every column of material one run up to the
      * envelope: the drawing is the envelope, with no polygon work, and it is the material's outline.
-     * A groove under a shoulder ends that, and a cut through the bore too.
+     * A sweep under material leaves it so; a cut from above that ends under such a sweep's top
+     * (what is left below it is not known) ends it, and so does a cut that leaves a cavity in the
+     * wall of a bore.
      */
     @Test
-    void cutsFromOutsideKeepTheEnvelopeTheOutlineAndACutUnderMaterialEndsIt() {
+    void cutsFromOutsideKeepTheEnvelopeTheOutlineAndACutFromAboveUnderTheFloorEndsIt() {
         Stock s = new Stock(0, 60, 20);
         Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
         for (int pass = 0; pass < 30; pass++) {
@@ -240,11 +242,24 @@ class UpperEnvelopeTest {
         for (double z = 0.0123; z < 60; z += 0.0311) {
             assertEquals(top(material, z), StockScrubTest.at(p[0], p[1], z), 1e-9, "at z " + z);
         }
-        // a 2 mm shank passing at r 5 under the material from z 62 to 5: material stays above it
+        // a 2 mm shank passing at r 5 under the material from z 62 to 5: material stays above it, and
+        // the outline is still the envelope (the top run's floor comes up to the shank's top, issue 35)
         s.cut(Stock.sweep(TZ, new double[] {2, 2, 0}, 62, 5, 5, 5));
-        assertFalse(s.envelopeSolid(), "a sweep under material");
+        assertTrue(s.envelopeSolid(), "a sweep under material leaves the top run");
+        // a cut from above whose lower edge ends under that floor cannot tell what is left below it
+        s.cut(Stock.sweep(TZ, TR, 62, 6, 30, 6));
+        assertFalse(s.envelopeSolid(), "a cut from above ending under the floor");
+        // through a tube's wall at r 8: nothing is left where the tip passed, a ring of the wall under
+        // the V's flank; the outline is still the envelope, 0 where the wall is gone
         Stock tube = new Stock(0, 60, 8, 20);
-        tube.cut(Stock.sweep(TZ, TR, 62, 6, 40, 6)); // through the bore's wall at r 8
-        assertFalse(tube.envelopeSolid(), "through the bore");
+        Stock.Hull through = Stock.sweep(TZ, TR, 62, 6, 40, 6);
+        tube.cut(through);
+        Geometry wall = OverlayNGRobust.overlay(F.toGeometry(new Envelope(0, 60, 8, 20)), polygon(through),
+                OverlayNG.DIFFERENCE);
+        assertTrue(tube.envelopeSolid(), "through the bore");
+        double[][] t = tube.profile();
+        for (double z = 0.0123; z < 60; z += 0.0311) {
+            assertEquals(top(wall, z), StockScrubTest.at(t[0], t[1], z), 1e-9, "the tube at z " + z);
+        }
     }
 }

@@ -37,8 +37,49 @@ class ErrorBasisTest {
         for (int n = 640; n <= 650; n++) {
             assertTrue(basis.find(Code.byNumber(n)).isPresent(), "E" + n + " has no row in error_basis.csv");
         }
-        assertEquals(ErrorBasis.Behaviour.ALARM, basis.find(Code.E193_THREAD_TOO_DEEP).orElseThrow().behaviour());
+        // issue 31: the control cuts a thread deeper than the sharp V: a warning with the reason
+        assertEquals(ErrorBasis.Behaviour.RUNS, basis.find(Code.E193_THREAD_TOO_DEEP).orElseThrow().behaviour());
         assertEquals(ErrorBasis.Source.GCNC, basis.find(Code.E193_THREAD_TOO_DEEP).orElseThrow().source());
+    }
+
+    /**
+     * Issue 31: every error of errors.csv has a row, an alarm of the control or what gcnc cannot
+     * generate, and the row cites its source: a manual row names the Fanuc or Haas alarm, a Galil
+     * row the controller's answer or its reference, a thesis row the thesis; a gcnc or setup row
+     * says why in words.
+     */
+    @Test
+    void everyErrorHasARowThatCitesTheAlarmOrWhyGcncCannotGenerateIt() throws TableException {
+        ErrorBasis basis = ErrorBasis.load(TableSource.builtIn());
+        CodeTable codes = CodeTable.load(TableSource.builtIn());
+        int errors = 0;
+        for (Code c : Code.values()) {
+            java.util.Optional<CodeTable.Entry> e = codes.find(c);
+            if (e.isEmpty() || e.get().severity() != Severity.ERROR) {
+                continue;
+            }
+            errors++;
+            ErrorBasis.Row r = basis.find(c).orElse(null);
+            assertTrue(r != null, c.id() + " is an error without a row in error_basis.csv");
+            assertTrue(r.behaviour() != ErrorBasis.Behaviour.RUNS, c.id());
+            String cite = r.english();
+            switch (r.source()) {
+                case MANUAL -> assertTrue(cite.contains("Fanuc") || cite.contains("Haas"), c.id() + ": " + cite);
+                case GALIL -> assertTrue(cite.contains("TC ") || cite.contains("Galil") || cite.contains("reference"),
+                        c.id() + ": " + cite);
+                case THESIS -> assertTrue(cite.contains("thesis"), c.id() + ": " + cite);
+                case GCNC, SETUP -> assertTrue(cite.split(" ").length >= 6, c.id() + " states no reason: " + cite);
+            }
+            if (r.source() == ErrorBasis.Source.GCNC && r.behaviour() == ErrorBasis.Behaviour.ALARM) {
+                // a rule of gcnc's own is an alarm only where it says what the control does
+                assertTrue(cite.contains("TC ") || cite.contains("Fanuc") || cite.contains("Haas")
+                        || cite.contains("never"), c.id() + " is gcnc's alarm without the control's: " + cite);
+            }
+            if (r.source() == ErrorBasis.Source.GCNC && r.behaviour() == ErrorBasis.Behaviour.UNSUPPORTED) {
+                assertTrue(cite.contains("gcnc") || cite.contains("simulator"), c.id() + " names no limit: " + cite);
+            }
+        }
+        assertTrue(errors > 200, "errors.csv has its errors");
     }
 
     @Test

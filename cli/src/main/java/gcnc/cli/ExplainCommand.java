@@ -196,11 +196,11 @@ final class ExplainCommand extends StreamsCommand {
     /** The words before a basis row: the control's behaviour, then the rule's source, per language. */
     private static final java.util.Map<ErrorMessages.Lang, String[]> BASIS_LABELS = java.util.Map.of(
             ErrorMessages.Lang.EN, new String[] {"the control stops (alarm)", "the control runs the block",
-                "not supported yet by gcnc", "the manual's rule", "gcnc's rule beyond the manuals",
-                "Galil's command reference"},
+                "gcnc does not generate it", "the manual's rule", "gcnc's rule beyond the manuals",
+                "Galil's command reference", "the thesis's control", "not a block of the program"},
             ErrorMessages.Lang.ES, new String[] {"el control se detiene (alarma)", "el control ejecuta el bloque",
-                "aún no soportado por gcnc", "regla del manual", "regla de gcnc más allá de los manuales",
-                "referencia de órdenes de Galil"});
+                "gcnc no lo genera", "regla del manual", "regla de gcnc más allá de los manuales",
+                "referencia de órdenes de Galil", "el control de la tesis", "no es un bloque del programa"});
 
     /**
      * tables/error_basis.csv: built in, or from --tables DIR when that folder has one (an edited

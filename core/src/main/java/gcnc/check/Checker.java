@@ -77,6 +77,8 @@ public final class Checker {
     private final Set<String> aside = new HashSet<>();
     private long blocks;
     private boolean stopped;
+    /** Warning E053 given for the blocks after the end in force (once, not per block). */
+    private boolean warnedAfterEnd;
     /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
     private NoseCompensation nose;
     /** What the control runs but may not be meant: offset 00 cuts, a feed mode without F, C-axis codes. */
@@ -207,9 +209,16 @@ public final class Checker {
         }
         boolean isFirst = blocks++ == 0;
         if (state.ended()) {
-            out.error(Code.E053_M30_NOT_LAST, first);
+            // the control never runs a block after M30/M02 (issue 31: a warning, where the thesis
+            // made it an error; docs/thesis.md), once for the blocks after an end, none of them
+            // checked as running
+            if (!warnedAfterEnd) {
+                out.report(Diagnostic.warning(Code.E053_M30_NOT_LAST, first));
+                warnedAfterEnd = true;
+            }
             return List.of();
         }
+        warnedAfterEnd = false;
         return flow(b, isFirst);
     }
 

@@ -81,8 +81,11 @@ final class CycleExpansion {
     /**
      * A contour kept for G70: its blocks and how the cycle that read it cut; {@code axes} null when
      * the cycle or its contour had an error (a G70 over it then does nothing rather than repeat it).
+     * {@code passedOver}: the blocks between the cycle and N(P), which the cycle never ran but a G70
+     * whose P names one of them does (the control searches the program for N(P)).
      */
-    private record Stored(List<RawBlock> blocks, Axes axes, int depthSign, String name, int line) {
+    private record Stored(List<RawBlock> blocks, List<RawBlock> passedOver, Axes axes, int depthSign, String name,
+                          int line) {
         boolean usable() {
             return axes != null;
         }
@@ -235,7 +238,8 @@ final class CycleExpansion {
 
     /**
      * G70: the stored contour its P and Q name; else part of one (E643: the control finishes the
-     * blocks N(P)..N(Q) wherever they stand); else E166 (the control's alarm: no such blocks).
+     * blocks N(P)..N(Q) wherever they stand); else one that starts in the blocks a cycle passed over
+     * before its contour; else E166 (the control's alarm: no such blocks).
      */
     private void finish(CycleCall call, int line, List<CheckedBlock> done) {
         Stored s = stored.get(key(call));
@@ -248,6 +252,23 @@ final class CycleExpansion {
                     host.out().report(gcnc.diag.Diagnostic.warning(Code.E643_FINISH_PART_OF_CONTOUR, call.g().span(),
                             call.name(), call.label(Letter.P), call.label(Letter.Q), sequence(whole.blocks().get(0)),
                             sequence(whole.blocks().get(whole.blocks().size() - 1)), whole.name(), whole.line()));
+                    break;
+                }
+            }
+        }
+        if (s == null) {
+            // N(P) among the blocks a cycle passed over before its contour (a G42 block numbered
+            // as the finish's start: N5 G42 G00 X20. before N10): the control finds it and runs
+            // N(P)..N(Q) through the contour (issue 31)
+            for (Stored whole : stored.values()) {
+                if (whole.passedOver().isEmpty()) {
+                    continue;
+                }
+                List<RawBlock> all = new ArrayList<>(whole.passedOver());
+                all.addAll(whole.blocks());
+                blocks = part(all, call.label(Letter.P), call.label(Letter.Q));
+                if (blocks != null) {
+                    s = whole;
                     break;
                 }
             }
@@ -413,7 +434,7 @@ final class CycleExpansion {
         stored.remove(key(call));
         // the contour as the control follows it: its chamfers and corners made (G70 runs these blocks too)
         List<RawBlock> blocks = p.rejected ? p.blocks : host.cornersInContour(p.blocks, start);
-        Stored rejected = new Stored(List.copyOf(blocks), null, 0, call.name(), p.line);
+        Stored rejected = new Stored(List.copyOf(blocks), List.copyOf(p.before), null, 0, call.name(), p.line);
         stored.put(key(call), rejected); // until the contour is known good: a G70 over it does nothing
         if (p.rejected) {
             return List.of();
@@ -428,13 +449,32 @@ final class CycleExpansion {
                     call.kind() == GRole.PATTERN_CYCLE ? "X or Z" : axes.cutName());
             return List.of();
         }
-        Contour contour = new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()));
-        stored.put(key(call), new Stored(rejected.blocks(), axes, signs(axes, contour), call.name(), p.line));
+        Contour.Piece lead = positioning(call, axes, pieces) ? pieces.get(0) : null;
+        Contour contour = lead == null ? new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()))
+                : new Contour(lead.to(), pieces.get(1), pieces.subList(2, pieces.size()));
+        stored.put(key(call), new Stored(rejected.blocks(), rejected.passedOver(), axes, signs(axes, contour),
+                call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
             return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
         }
-        return new StockRemoval(host, call, p.line).expand(contour, blocks, start, firstBlock);
+        return new StockRemoval(host, call, p.line).expand(contour, blocks, start, firstBlock, lead);
+    }
+
+    /**
+     * Whether the contour's first move is a positioning move at the start's level (Haas,
+     * {@code cycle.type1_first_move = positions}): a G71 (G72) whose first move goes along Z (X)
+     * alone, and a second move to rough type I from. Fanuc's alarm PS0065 (E155) otherwise.
+     */
+    private boolean positioning(CycleCall call, Axes axes, List<Contour.Piece> pieces) {
+        if (!host.profile().control().cutFirstMovePositions() || call.kind() == GRole.PATTERN_CYCLE
+                || call.typeTwo() || pieces.size() < 3) {
+            return false;
+        }
+        Contour.Piece first = pieces.get(0);
+        return first.motion() instanceof gcnc.ir.Motion.Linear
+                && Math.abs(axes.depth(first.to()) - axes.depth(first.from())) <= 1e-9
+                && Math.abs(axes.cut(first.to()) - axes.cut(first.from())) > 1e-9;
     }
 
     private static String key(CycleCall call) {

@@ -5,6 +5,7 @@ import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Fault;
+import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
 import gcnc.check.cycle.PocketRoughing;
 import gcnc.check.cycle.Roughing;
@@ -50,21 +51,39 @@ final class StockRemoval {
 
     /**
      * The cycle's checked blocks for the contour followed from {@code start}; none after a
-     * finding. {@code firstBlock}: what a Fanuc first block left in force.
+     * finding. {@code firstBlock}: what a Fanuc first block left in force. {@code lead}: a first
+     * contour move the control takes as positioning (Haas, Z alone in a G71's P block), or null.
      */
-    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock) {
+    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock,
+                              Contour.Piece lead) {
         Roughing.Settings settings = settings(start, firstBlock);
         if (settings == null) {
             return List.of();
         }
-        Roughing.Outcome o = typeTwo(contour, blocks) ? new PocketRoughing(axes, settings).plan(contour)
-                : new Roughing(axes, settings).plan(contour);
+        boolean two = typeTwo(contour, blocks);
+        Roughing.Outcome o = two ? new PocketRoughing(axes, settings).plan(contour) : new Roughing(axes, settings).plan(contour);
+        if (o instanceof Fault f && f.code() == Code.E159_CYCLE_ALLOWANCE_SIGN) {
+            // the control takes U and W with their signs and roughs into the finished shape (the
+            // YASNAC LX3 manual: a wrong sign gouges the workpiece): a warning, and the cycle as written
+            report(f, blocks, false);
+            Roughing.Settings any = settings.withAnySign();
+            o = two ? new PocketRoughing(axes, any).plan(contour) : new Roughing(axes, any).plan(contour);
+        }
         if (o instanceof Fault f) {
-            report(f, blocks);
+            report(f, blocks, true);
             return List.of();
         }
         Roughing.Plan plan = (Roughing.Plan) o;
-        return CycleExpansion.write(host, call, line, plan.moves(), plan.passes(), start);
+        List<Move> moves = plan.moves();
+        if (lead != null) {
+            // Haas: the first move along the cutting axis alone positions the tool at the start's
+            // level; the passes start where it ends and the cycle ends back at its start point
+            moves = new ArrayList<>(moves.size() + 2);
+            moves.add(Move.line(((gcnc.ir.Motion.Linear) lead.motion()).rapid(), contour.start(), 1));
+            moves.addAll(plan.moves());
+            moves.add(Move.line(true, start.position(), Math.max(1, plan.passes())));
+        }
+        return CycleExpansion.write(host, call, line, moves, plan.passes(), start);
     }
 
     /**
@@ -122,11 +141,11 @@ final class StockRemoval {
         double perMmDepth = axes == Axes.TURNING ? p.x().countsPerMm() : p.z().countsPerMm();
         double perMmCut = axes == Axes.TURNING ? p.z().countsPerMm() : p.x().countsPerMm();
         return new Roughing.Settings(dx, dz, depthCounts, retractMm * perMmDepth, retractMm * perMmCut,
-                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES, p.control().pocketWalls());
+                EPS_MM * Math.min(p.x().countsPerMm(), p.z().countsPerMm()), MAX_PASSES, p.control().pocketWalls(), false);
     }
 
     /** Reports why a cycle cannot be expanded, where its fault says. */
-    private void report(Fault f, List<RawBlock> blocks) {
+    private void report(Fault f, List<RawBlock> blocks, boolean error) {
         List<Object> args = new ArrayList<>();
         args.add(call.name());
         Span at = call.g().span();
@@ -146,6 +165,10 @@ final class StockRemoval {
             args.add(w != null ? w : f.word());
         }
         args.addAll(f.args());
-        host.out().error(f.code(), at, args.toArray());
+        if (error) {
+            host.out().error(f.code(), at, args.toArray());
+        } else {
+            host.out().report(gcnc.diag.Diagnostic.warning(f.code(), at, args.toArray()));
+        }
     }
 }

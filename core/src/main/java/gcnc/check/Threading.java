@@ -44,7 +44,10 @@ final class Threading {
      * as written, with warning E640 (a 1/2-14 NPT pipe thread is 0.8 x its pitch; docs/threading.md).
      */
     static final double HEIGHT_PER_LEAD = 0.65;
-    /** The sharp V (H = 0.866 P): no 60-degree thread is deeper, so a greater height is error E193. */
+    /**
+     * The sharp V (H = 0.866 P): no 60-degree thread is deeper, so a greater height is warning E193
+     * (the control cuts it as written; no Haas or Fanuc manual alarms on the height against the lead).
+     */
     static final double SHARP_V_PER_LEAD = 0.866;
     private static final Set<Integer> FANUC_ANGLES = Set.of(0, 29, 30, 55, 60, 80);
 
@@ -447,12 +450,17 @@ final class Threading {
         if (Double.isNaN(lead)) {
             return;
         }
-        if (!(height > 0) || height > SHARP_V_PER_LEAD * lead + 1e-9) {
-            host.out().error(Code.E193_THREAD_TOO_DEEP, hw.span(), label, hw, NumberText.plain(SHARP_V_PER_LEAD * lead, 4),
-                    NumberText.plain(lead));
+        if (!(height > 0)) {
+            // Fanuc PS0062 (G71-G76 illegal command): zero or a negative thread height in G76
+            host.out().error(Code.E180_PECK_NOT_POSITIVE, hw.span(), label, hw, "the thread height");
             return;
         }
-        if (height > HEIGHT_PER_LEAD * lead + 1e-9) {
+        if (height > SHARP_V_PER_LEAD * lead + 1e-9) {
+            // the control cuts it (no manual alarms on a height against the lead; issue 31): a
+            // warning with the reason, which stands in for E640's
+            host.out().report(Diagnostic.warning(Code.E193_THREAD_TOO_DEEP, hw.span(), label, hw,
+                    NumberText.plain(SHARP_V_PER_LEAD * lead, 4), NumberText.plain(lead)));
+        } else if (height > HEIGHT_PER_LEAD * lead + 1e-9) {
             host.out().report(Diagnostic.warning(Code.E640_THREAD_DEEPER_THAN_STANDARD, hw.span(), label, hw,
                     NumberText.plain(HEIGHT_PER_LEAD * lead, 4), NumberText.plain(lead)));
         }

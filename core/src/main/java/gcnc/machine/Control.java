@@ -55,6 +55,11 @@ import java.util.TreeMap;
  *                          Fusion fanuc post writes it (parameter 5102#6 RAB, systems B and C);
  *                          else R is the distance from the initial level (the 0i-TF manual's
  *                          default, and always in incremental mode)
+ * @param cutFirstMovePositions a type I G71/G72 whose first contour move goes along the cutting
+ *                          axis alone (Z for G71, X for G72) at the start's level takes it as a
+ *                          positioning move, and roughs type I from where it ends (key
+ *                          {@code cycle.type1_first_move = positions}: Haas, issue 31); else such a
+ *                          first move is E155 (Fanuc alarm PS0065: Z in a type I G71's first block)
  * @param stop              what the control does at a program stop (M00, and M01 with the optional
  *                          stop switch on): the M codes it applies when the stop begins (keys
  *                          {@code stop.off}, {@code stop.optional}; docs/galil.md, "Program stops")
@@ -65,7 +70,7 @@ public record Control(String name, String description, Set<Letter> letters, Map<
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, BareG28 bareG28,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
                       double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners,
-                      boolean fanucDrilling, boolean drillRAbsolute, ProgramStop stop) {
+                      boolean fanucDrilling, boolean drillRAbsolute, ProgramStop stop, boolean cutFirstMovePositions) {
     /**
      * A program stop (M00; M01 when the optional stop switch is on) as the control makes it: the
      * axes at rest, then {@code off} applied (Haas: M05 and M09, the spindle stopped and the coolant
@@ -94,7 +99,7 @@ public record Control(String name, String description, Set<Letter> letters, Map<
         return new Control(name, description, letters, g, m, powerUp, powerUpUnits, powerUpTool, powerUpOffset,
                 clampFromG50, chuckByProgram, increasingN, noPointLiteral, dwellPSeconds, bareG28, blockDelete,
                 builderM, cycleRetractMm, calls, macros, peckRetractMm, pocketWalls, lineComments, corners,
-                fanucDrilling, drillRAbsolute, new ProgramStop(stop.off(), on));
+                fanucDrilling, drillRAbsolute, new ProgramStop(stop.off(), on), cutFirstMovePositions);
     }
 
     /** Whether M code {@code code} stops the program here: M00 always, M01 when the optional stop switch is on. */

@@ -25,7 +25,7 @@ public final class ControlLoader {
     private static final List<String> KEYS = List.of("name", "description", "letters", "power_up", "power_up.tool",
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
-            "cycle.peck_retract_mm", "cycle.pocket_allowance", "comments", "g01.corner",
+            "cycle.peck_retract_mm", "cycle.pocket_allowance", "cycle.type1_first_move", "comments", "g01.corner",
             "cycle.drill_words", "cycle.drill_r", "stop.off", "stop.optional");
 
     private ControlLoader() {
@@ -107,7 +107,8 @@ public final class ControlLoader {
                 Control.Corners.valueOf(f.choice("g01.corner", "none", "none", "comma", "letters").toUpperCase()),
                 f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"),
                 f.choice("cycle.drill_r", "incremental", "incremental", "absolute").equals("absolute"),
-                new Control.ProgramStop(stopOff(f, m), f.choice("stop.optional", "off", "off", "on").equals("on")));
+                new Control.ProgramStop(stopOff(f, m), f.choice("stop.optional", "off", "off", "on").equals("on")),
+                f.choice("cycle.type1_first_move", "depth_axis", "depth_axis", "positions").equals("positions"));
     }
 
     /**

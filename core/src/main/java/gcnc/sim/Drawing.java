@@ -18,10 +18,18 @@ import java.util.List;
  * @param program     where the program's coordinates are, for the grid; null when not known (a bare DMC replay)
  * @param machine     the machine: its name, control, chuck face and travel, for the view and the title block
  * @param scrub       the stock before and after one block, when asked for ({@link SimOptions#withScrub}); else null
+ * @param pathTolerance the tolerance, mm, the path was compacted to past its budget (0: as recorded; {@code PathRecorder})
  */
 public record Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace,
                       double stockRadius, double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks,
-                      ProgramAxes program, Machine machine, Scrub scrub) {
+                      ProgramAxes program, Machine machine, Scrub scrub, double pathTolerance) {
+    /** A drawing whose path is as recorded. */
+    public Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace, double stockRadius,
+                   double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks, ProgramAxes program,
+                   Machine machine, Scrub scrub) {
+        this(chuck, tailstock, stockBack, stockFace, stockRadius, finalZ, finalR, moves, marks, program, machine, scrub, 0);
+    }
+
     /** A drawing without a scrub. */
     public Drawing(List<Shape> chuck, List<Shape> tailstock, double stockBack, double stockFace, double stockRadius,
                    double[] finalZ, double[] finalR, List<Move> moves, List<Mark> marks, ProgramAxes program,

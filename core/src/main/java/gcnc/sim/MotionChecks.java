@@ -78,14 +78,14 @@ final class MotionChecks {
         }
         if (s != null && !Double.isNaN(machine.chuckFace())) {
             double face = machine.chuckFace() / kz + s.stickout();
-            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2);
+            stock = new Stock(face - s.length(), face, s.bore() / 2, s.diameter() / 2, options.referenceStock());
             blank = s;
         } else {
             stock = null;
             blank = null;
         }
         terms = new ProgramTerms(profile);
-        path = options.keepPath() ? new PathRecorder(profile, machine.centreX()) : null;
+        path = options.keepPath() ? new PathRecorder(profile, machine.centreX(), options.scrubLine() == 0) : null;
         scrub = path == null || options.scrubLine() == 0 ? null : new StockScrub(options.scrubLine(), stock);
         conformance = new Conformance(out, path, tol, Simulator.threadTolerance(profile, options));
         toolShape = machine.defaultTool();
@@ -289,7 +289,7 @@ final class MotionChecks {
                 terms.frame(frame);
             }
             if (poly != null && at != polyLine && !poly.isEmpty()) {
-                path.move(rapid, poly, polyLine, frame == null ? null : frame.file());
+                path.move(rapid, poly, polyLine, frame == null ? null : frame.file(), tool);
                 poly = new ArrayList<>();
             }
             polyLine = at;
@@ -330,7 +330,7 @@ final class MotionChecks {
         }
         terms.move(tool, line, seconds - secondsBefore);
         if (poly != null) {
-            path.move(rapid, poly, polyLine, frame == null ? null : frame.file());
+            path.move(rapid, poly, polyLine, frame == null ? null : frame.file(), tool);
             path.frame(frame, rapid);
         }
         if (scrub != null && scrub.inRun() && !segs.isEmpty()) {

@@ -16,7 +16,8 @@ import org.locationtech.jts.operation.overlayng.OverlayNGRobust;
  * <p>An overlap counts only when it is real: thicker than {@link #DEPTH} (the overlap, shrunk by
  * half of it, is not empty), never because of how the stock is held. The exact upper envelope of
  * the material ({@link UpperEnvelope}: the largest radius at each z, never below the material)
- * lets the many moves that pass above the material skip the polygon work. A cut is taken from
+ * lets the many moves that pass above the material skip the polygon work, and the bore
+ * ({@link LowerEnvelope}: the smallest, never above it) those that pass in a drilled or bored hole. A cut is taken from
  * the envelope at once and from the polygons only when they are next asked (a rapid or a holder that may reach into material, the
  * drawing), many cuts in one boolean ({@link #cut}): a program whose rapids stay clear of the
  * material does almost no polygon work.
@@ -40,12 +41,25 @@ final class Stock {
 
     /** A blank from {@code back} to {@code face}, its material from radius {@code inner} (a bore; 0 for a bar) to {@code radius}. */
     Stock(double back, double face, double inner, double radius) {
+        this(back, face, inner, radius, false);
+    }
+
+    /**
+     * The same; {@code reference} true: the full model, without the shortcuts the envelopes give
+     * beyond the blank's own bore (the bore is not raised by cuts from inside, and the drawing's
+     * outline always comes from the polygons), for tests to hold the fast path against.
+     */
+    Stock(double back, double face, double inner, double radius, boolean reference) {
         this.back = back;
         this.face = face;
         this.radius = radius;
-        this.envelope = new UpperEnvelope(back, face, inner, radius);
+        this.reference = reference;
+        this.envelope = new UpperEnvelope(back, face, inner, radius, !reference);
         this.material = new Material(factory, back, face, inner, radius);
     }
+
+    /** The full model ({@link #Stock(double, double, double, double, boolean)}). */
+    private final boolean reference;
 
     double back() {
         return back;
@@ -170,6 +184,8 @@ final class Stock {
         }
         pending.add(full);
         envelope.lower(full);
+        recent[recentNext] = full;
+        recentNext = (recentNext + 1) % recent.length;
         if (pending.size() >= PENDING_MAX) {
             settle();
         }
@@ -219,9 +235,49 @@ final class Stock {
         remove(cuts);
     }
 
-    /** Whether the hull dips below the upper envelope somewhere (the envelope is never below the material). */
+    /**
+     * Whether the hull dips below the upper envelope somewhere and is not in the bore (the
+     * envelope is never below the material, the bore never above it: a no is certain).
+     */
     private boolean under(Hull h) {
-        return envelope.dips(h.zMin(), h.zMax(), h, 0);
+        return envelope.dips(h.zMin(), h.zMax(), h, 0) && (reference || !envelope.inBore(h) && !cutAlready(h));
+    }
+
+    /**
+     * The last few cuts: a sweep inside one of them meets no material (material is never added),
+     * such as a drill's retract along the hole it has just drilled, whose hull is the feed's.
+     */
+    private final Hull[] recent = new Hull[4];
+    private int recentNext;
+
+    private boolean cutAlready(Hull h) {
+        for (Hull c : recent) {
+            if (c != null && inside(h, c)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether every corner of {@code h} is in the convex {@code c} (its corners counterclockwise), within 1e-9 mm. */
+    static boolean inside(Hull h, Hull c) {
+        double[] cz = c.z();
+        double[] cr = c.r();
+        int n = cz.length;
+        for (int k = 0; k < h.z().length; k++) {
+            double pz = h.z()[k];
+            double pr = h.r()[k];
+            for (int i = 0; i < n; i++) {
+                int j = (i + 1) % n;
+                double ez = cz[j] - cz[i];
+                double er = cr[j] - cr[i];
+                double len = Math.hypot(ez, er);
+                if (len > 0 && (ez * (pr - cr[i]) - er * (pz - cz[i])) / len < -1e-9) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     /**
@@ -347,7 +403,7 @@ final class Stock {
      * pending cuts go into the polygons first and the envelope is rebuilt from them.
      */
     double[][] profile() {
-        if (!envelope.solid()) {
+        if (reference || !envelope.solid()) {
             settle(); // the polygons know what a cut under material took
         }
         return envelope.outline(4096);
@@ -356,6 +412,11 @@ final class Stock {
     /** Whether the envelope is the material's outline without the polygons ({@link UpperEnvelope#solid}). */
     boolean envelopeSolid() {
         return envelope.solid();
+    }
+
+    /** The bore's radius at z ({@link LowerEnvelope}; tests read it). */
+    double boreAt(double z) {
+        return envelope.bore().at(z);
     }
 
     /** How many straight pieces the envelope holds (tests bound it). */

@@ -36,9 +36,13 @@ final class SvgTitle {
         double tip = d.tailstockTip();
         String tail = Double.isNaN(tip) || tip <= v.zMax() ? ""
                 : "; the tailstock's centre, beyond the view, at Z " + MotionChecks.mm(tip) + " mm";
+        // a long path drawn to what its pixels show (PathRecorder): said, so that no one reads it as every move
+        String compacted = d.pathTolerance() > 0 ? String.format(Locale.ROOT, "; path drawn to %s mm",
+                d.pathTolerance() >= 0.001 ? MotionChecks.mm(d.pathTolerance())
+                        : String.format(Locale.ROOT, "%.1e", d.pathTolerance())) : "";
         w.write(text(10, y + 52, String.format(Locale.ROOT, "machine frame: Z %s .. %s mm, radius %s .. %s mm;"
-                + " path above the centreline, part mirrored below%s", MotionChecks.mm(v.zMin()),
-                MotionChecks.mm(v.zMax()), MotionChecks.mm(v.rMin()), MotionChecks.mm(v.rMax()), tail)));
+                + " path above the centreline, part mirrored below%s%s", MotionChecks.mm(v.zMin()),
+                MotionChecks.mm(v.zMax()), MotionChecks.mm(v.rMin()), MotionChecks.mm(v.rMax()), tail, compacted)));
         titleBlock(w, y + 70, report, file, number);
     }
 

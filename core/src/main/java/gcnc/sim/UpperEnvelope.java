@@ -69,42 +69,51 @@ final class UpperEnvelope {
     static final int CHUNK = 32;
     /** Pieces kept at most (about 3 MiB); past it the envelope is coarsened ({@link #coarsen}). */
     static final int MAX_PIECES = 1 << 16;
-    /**
-     * A joint this close to the line through its neighbours' ends is dropped, mm: the polygons'
-     * own rounding (their corners sit on a 0.00001 mm grid) is ten thousand times coarser.
-     */
-    private static final double STRAIGHT = 1e-9;
 
     private final double back;
     private final double face;
     private final List<Chunk> chunks = new ArrayList<>();
     private int pieces;
-    /** The bore's radius (0 for a bar). */
-    private final double inner;
+    /** The bore: the smallest radius of material at each z, never above it ({@link LowerEnvelope}). */
+    private final LowerEnvelope bore;
     /**
-     * Whether each z's material is still one run from the bore (or the centreline) up to the
-     * envelope, so that the envelope is the material's outline exactly ({@link #solid}).
+     * The floor of the top run: from it to this envelope each z's material is one run (below it,
+     * down to the bore, there may be what a cut passed above: the pip a drill's point leaves off
+     * the centreline, the floor of an undercut).
      */
-    private boolean solid = true;
+    private final LowerEnvelope floor;
+    /** Whether every cut from above ended in the top run or took everything: the envelope is the outline. */
+    private boolean exact = true;
+    /** Whether cuts raise the bore (false: the bore stays the blank's, the reference model's way). */
+    private final boolean raiseBore;
 
     /** A blank of {@code radius} from {@code back} to {@code face}, bored to {@code inner} (0 for a bar). */
     UpperEnvelope(double back, double face, double inner, double radius) {
+        this(back, face, inner, radius, true);
+    }
+
+    /** The same; {@code raiseBore} false keeps the bore at {@code inner} whatever is cut from inside. */
+    UpperEnvelope(double back, double face, double inner, double radius, boolean raiseBore) {
         this.back = back;
         this.face = face;
-        this.inner = inner;
+        this.bore = new LowerEnvelope(back, face, inner);
+        this.floor = new LowerEnvelope(back, face, inner);
+        this.raiseBore = raiseBore;
         chunks.add(new Chunk(List.of(new Piece(back, face, radius, radius))));
         pieces = 1;
     }
 
     /**
-     * Whether the envelope is the material's outline exactly: every cut so far took everything
-     * above its lower edge, or nothing, and left material above the bore (a cut that passes under
-     * material, such as a groove under a shoulder, leaves it above the sweep, and the envelope
-     * cannot tell that the material below is gone too; a cut through the bore leaves none). While
-     * it holds, a drawing needs no polygons. Coarsening ends it.
+     * Whether the envelope is the material's outline exactly: every cut from above so far ended in
+     * the top run (the material from the floor up to the envelope, one run at each z) or took
+     * everything at its z (its lower edge at or below the bore). Cuts from inside (a drill, a
+     * boring bar) and cuts under the envelope (an undercut, the pip a drill's point leaves) raise
+     * the floor and leave it so. A cut from above whose lower edge ends under the floor (a groove
+     * under a shoulder deepened from outside, a turned diameter down into an internal groove) cannot
+     * tell what is left below it. While it holds, a drawing needs no polygons. Coarsening ends it.
      */
     boolean solid() {
-        return solid;
+        return exact && bore.exact() && floor.exact();
     }
 
     /** How many pieces the envelope has (tests bound it). */
@@ -198,9 +207,11 @@ final class UpperEnvelope {
     }
 
     /**
-     * Lowers the envelope under a sweep: wherever the hull covers from its lower edge to the
-     * envelope or above, nothing is left above the lower edge (or the centreline, if the edge
-     * dips below it). Returns whether anything changed.
+     * Takes a sweep from the envelopes ({@link EnvelopeCut#stretch}): lowers this one wherever the
+     * hull covers from its lower edge to the envelope or above (nothing is left above the lower
+     * edge, and nothing at all where the lower edge is at or below the bore), raises the bore where
+     * the sweep cuts from inside, and the top run's floor where it passes under the envelope.
+     * Returns whether this envelope changed.
      */
     boolean lower(Stock.Hull h) {
         double lo = Math.max(back, h.zMin());
@@ -210,9 +221,12 @@ final class UpperEnvelope {
         }
         HullSide bottom = HullSide.bottom(h);
         HullSide top = HullSide.top(h);
-        double[] corners = corners(h, lo, hi);
+        // between these both of the hull's edges, the bore and the floor are straight, as each piece is
+        double[] corners = EnvelopeCut.breaks(h, lo, hi, both(bore.breaks(lo, hi), floor.breaks(lo, hi)));
         List<Piece> out = new ArrayList<>();
-        boolean changed = false;
+        List<Piece> inner = new ArrayList<>();
+        List<Piece> under = new ArrayList<>();
+        int changed = 0;
         for (int c = chunkAt(lo); c < chunks.size() && chunks.get(c).z0() < hi; c++) {
             for (Piece piece : chunks.get(c).pieces) {
                 double s0 = Math.max(piece.z0(), lo);
@@ -220,97 +234,55 @@ final class UpperEnvelope {
                 if (!(s0 < s1)) {
                     continue;
                 }
-                // between the hull's corners both its edges are straight, as the piece is
                 double s = s0;
                 for (double corner : corners) {
                     if (corner > s && corner < s1) {
-                        changed |= lowerStretch(piece, bottom, top, s, corner, out);
+                        changed |= stretch(piece, bottom, top, s, corner, out, inner, under);
                         s = corner;
                     }
                 }
-                changed |= lowerStretch(piece, bottom, top, s, s1, out);
+                changed |= stretch(piece, bottom, top, s, s1, out, inner, under);
             }
         }
-        if (changed) {
+        exact &= (changed & EnvelopeCut.INEXACT) == 0;
+        if ((changed & EnvelopeCut.UPPER) != 0) {
             replace(lo, hi, out);
         }
-        return changed;
+        if (raiseBore && (changed & EnvelopeCut.BORE) != 0) {
+            bore.replace(lo, hi, inner);
+        }
+        if ((changed & EnvelopeCut.RUN) != 0) {
+            floor.replace(lo, hi, under);
+        }
+        return (changed & EnvelopeCut.UPPER) != 0;
     }
 
-    /** The z of every corner of the hull strictly inside (lo, hi), ascending. */
-    private static double[] corners(Stock.Hull h, double lo, double hi) {
-        double[] z = h.z();
-        double[] in = new double[z.length];
-        int n = 0;
-        for (double v : z) {
-            if (v > lo && v < hi) {
-                in[n++] = v;
-            }
+    private static double[] both(double[] a, double[] b) {
+        if (b.length == 0) {
+            return a;
         }
-        double[] sorted = java.util.Arrays.copyOf(in, n);
-        java.util.Arrays.sort(sorted);
-        return sorted;
+        double[] c = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, c, a.length, b.length);
+        return c;
     }
 
-    /**
-     * One stretch [s, t] where the piece and both of the hull's edges are straight: split where the
-     * top edge crosses the envelope, where the lower edge does, and where the lower edge crosses
-     * the centreline; each part is lowered or kept whole. Appends the parts to {@code out}.
-     */
-    private boolean lowerStretch(Piece piece, HullSide bottom, HullSide top, double s, double t, List<Piece> out) {
-        double u0 = piece.at(s);
-        double u1 = piece.at(t);
-        double b0 = bottom.at(s, t, true);
-        double b1 = bottom.at(s, t, false);
-        double t0 = top.at(s, t, true);
-        double t1 = top.at(s, t, false);
-        boolean known = !Double.isNaN(b0 + b1 + t0 + t1);
-        if (!known || Math.min(b0, b1) >= Math.max(u0, u1)) { // the usual case: the sweep passes above
-            out.add(new Piece(s, t, u0, u1));
-            return false;
-        }
-        double[] at = {s, root(s, t, t0 - u0, t1 - u1), root(s, t, b0 - u0, b1 - u1), root(s, t, b0, b1), t};
-        java.util.Arrays.sort(at);
-        boolean changed = false;
-        for (int i = 0; i + 1 < at.length; i++) {
-            double x = at[i];
-            double y = at[i + 1];
-            if (Double.isNaN(x) || Double.isNaN(y) || !(x < y)) {
-                continue;
-            }
-            double m = (x + y) / 2;
-            double um = lerp(s, t, u0, u1, m);
-            double bm = lerp(s, t, b0, b1, m);
-            if (lerp(s, t, t0, t1, m) >= um && bm < um) {
-                double bx = lerp(s, t, b0, b1, x);
-                double by = lerp(s, t, b0, b1, y);
-                out.add(new Piece(x, y, Math.max(0, bx), Math.max(0, by)));
-                changed = true;
-                solid &= inner == 0 || Math.min(bx, by) > inner; // through the bore: nothing left there
-            } else {
-                solid &= bm >= um; // a sweep under material: what it cut stays hidden under what is left
-                out.add(new Piece(x, y, lerp(s, t, u0, u1, x), lerp(s, t, u0, u1, y)));
-            }
-        }
-        return changed;
+    /** One stretch [s, t] where the piece, the bore, the floor and both of the hull's edges are straight. */
+    private int stretch(Piece piece, HullSide bottom, HullSide top, double s, double t, List<Piece> out,
+                        List<Piece> inner, List<Piece> under) {
+        Piece in = bore.over(s, t);
+        Piece run = floor.over(s, t);
+        return EnvelopeCut.stretch(s, t, piece.at(s), piece.at(t), in.at(s), in.at(t), run.at(s), run.at(t),
+                bottom.at(s, t, true), bottom.at(s, t, false), top.at(s, t, true), top.at(s, t, false), out, inner, under);
     }
 
-    /** Where a straight line from f0 at s to f1 at t crosses zero strictly inside, or NaN. */
-    private static double root(double s, double t, double f0, double f1) {
-        if ((f0 < 0 && f1 > 0) || (f0 > 0 && f1 < 0)) {
-            return s + (t - s) * f0 / (f0 - f1);
-        }
-        return Double.NaN;
+    /** Whether the hull is in the bore, touching no material ({@link LowerEnvelope#holds}). */
+    boolean inBore(Stock.Hull h) {
+        return bore.holds(h);
     }
 
-    private static double lerp(double s, double t, double v0, double v1, double x) {
-        if (x <= s) {
-            return v0;
-        }
-        if (x >= t) {
-            return v1;
-        }
-        return v0 + (v1 - v0) * (x - s) / (t - s);
+    /** The bore (tests read it). */
+    LowerEnvelope bore() {
+        return bore;
     }
 
     /**
@@ -342,7 +314,7 @@ final class UpperEnvelope {
         }
         all.addAll(fresh);
         all.addAll(after);
-        List<Piece> joined = join(all);
+        List<Piece> joined = Pieces.join(all, true);
         List<Chunk> made = new ArrayList<>();
         for (int i = 0; i < joined.size(); i += CHUNK) {
             made.add(new Chunk(new ArrayList<>(joined.subList(i, Math.min(joined.size(), i + CHUNK)))));
@@ -355,35 +327,9 @@ final class UpperEnvelope {
         }
     }
 
-    /** Drops empty pieces and the joints that lie on the line through their neighbours (within {@link #STRAIGHT}). */
-    private static List<Piece> join(List<Piece> in) {
-        List<Piece> out = new ArrayList<>(in.size());
-        for (Piece p : in) {
-            if (!(p.z0() < p.z1())) {
-                continue;
-            }
-            if (!out.isEmpty()) {
-                Piece last = out.get(out.size() - 1);
-                if (Math.abs(last.b() - p.a()) <= STRAIGHT) {
-                    Piece line = new Piece(last.z0(), p.z1(), last.a(), p.b());
-                    if (Math.abs(line.at(p.z0()) - Math.max(p.a(), last.b())) <= STRAIGHT) {
-                        out.set(out.size() - 1, line);
-                        continue;
-                    }
-                    // a corner, its two sides a rounding apart: one point, the higher
-                    double m = Math.max(last.b(), p.a());
-                    out.set(out.size() - 1, new Piece(last.z0(), last.z1(), last.a(), m));
-                    p = new Piece(p.z0(), p.z1(), m, p.b());
-                }
-            }
-            out.add(p);
-        }
-        return out;
-    }
-
     /** Level steps at the largest radius of each, MAX_PIECES / 2 of them over the blank: higher, never lower. */
     private void coarsen() {
-        solid = false;
+        exact = false;
         int n = MAX_PIECES / 2;
         double w = (face - back) / n;
         List<Piece> steps = new ArrayList<>(n);
@@ -393,7 +339,7 @@ final class UpperEnvelope {
             double m = max(s, t);
             steps.add(new Piece(s, t, m, m));
         }
-        List<Piece> joined = join(steps);
+        List<Piece> joined = Pieces.join(steps, true);
         chunks.clear();
         for (int i = 0; i < joined.size(); i += CHUNK) {
             chunks.add(new Chunk(new ArrayList<>(joined.subList(i, Math.min(joined.size(), i + CHUNK)))));

@@ -23,7 +23,11 @@ public final class ErrorBasis {
         /** gcnc's own judgement beyond the manuals. */
         GCNC,
         /** Galil's firmware command reference: a value the controller refuses or rounds (tables/galil_models.csv). */
-        GALIL
+        GALIL,
+        /** The thesis's own control (Table 5; the thesis-2004 profile), where its rule is not Fanuc's or Haas's. */
+        THESIS,
+        /** Not a block of the program: the machine profile, a table, the command line, a file or the controller link. */
+        SETUP
     }
 
     /** What the control does with the block. */

@@ -93,7 +93,7 @@ public final class Explanations {
             m.put(Code.byNumber(n), form);
         }
         m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table);
-        m.put(Code.E850_CYCLE_START_INPUT, table); // a profile's key (stop.cycle_start), numbered with the program stop's codes // a profile's key (plan.on_the_fly), numbered with the planner's codes
+        m.put(Code.E850_CYCLE_START_INPUT, table); // a profile's key (stop.cycle_start), numbered with the program stop's codes
         String files = "the command line's files (reading, writing, links), not the program's text";
         for (int n : new int[] {500, 501, 502, 510}) {
             m.put(Code.byNumber(n), files);
@@ -113,8 +113,10 @@ public final class Explanations {
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         for (Code c : Code.values()) {
-            // E830-E849: the probe and the controller the profile names; E890-E899: feeding a running sequence
-            if (c.number() >= 815 && c.number() < 850 || c.number() >= 890 && c.number() < 900 || c == Code.E865_PORT_NOT_A_DEVICE) {
+            // E830-E849: the probe and the controller the profile names; E851: the link dropped during a run;
+            // E890-E899: feeding a running sequence
+            if (c.number() >= 815 && c.number() < 850 || c.number() >= 890 && c.number() < 900
+                    || c == Code.E851_LINK_DROPPED_RUNNING || c == Code.E865_PORT_NOT_A_DEVICE) {
                 m.put(c, link);
             }
         }

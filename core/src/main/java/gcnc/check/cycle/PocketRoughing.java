@@ -154,10 +154,10 @@ public final class PocketRoughing {
         Point shift = new Point(s.dx(), s.dz());
         Letter depthWord = axes == Axes.TURNING ? Letter.U : Letter.W;
         Letter cutWord = axes == Axes.TURNING ? Letter.W : Letter.U;
-        if (axes.depth(shift) * f.depthSign() < -eps) {
+        if (!s.anySign() && axes.depth(shift) * f.depthSign() < -eps) {
             return Fault.atWord(Code.E159_CYCLE_ALLOWANCE_SIGN, depthWord, f.depthSign() > 0 ? "positive" : "negative");
         }
-        if (axes.cut(shift) * f.cutSign() < -eps) {
+        if (!s.anySign() && axes.cut(shift) * f.cutSign() < -eps) {
             return Fault.atWord(Code.E159_CYCLE_ALLOWANCE_SIGN, cutWord, f.cutSign() > 0 ? "positive" : "negative");
         }
         double reached = Double.NEGATIVE_INFINITY;

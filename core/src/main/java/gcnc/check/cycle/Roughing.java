@@ -38,7 +38,14 @@ public final class Roughing {
      * passes to expand.
      */
     public record Settings(double dx, double dz, double depth, double retractDepth, double retractCut, double eps,
-                           int maxPasses, boolean pocketWalls) {
+                           int maxPasses, boolean pocketWalls, boolean anySign) {
+        /**
+         * The same with the allowance taken whichever way its sign points (after warning E159: the
+         * control roughs into the finished shape as written).
+         */
+        public Settings withAnySign() {
+            return new Settings(dx, dz, depth, retractDepth, retractCut, eps, maxPasses, pocketWalls, true);
+        }
     }
 
     private final Axes axes;
@@ -71,10 +78,10 @@ public final class Roughing {
             return Fault.atWord(Code.E163_CONTOUR_EMPTY, null, axes.cutName());
         }
         Point shift = new Point(s.dx(), s.dz());
-        if (axes.depth(shift) * depthSign < -eps) {
+        if (!s.anySign() && axes.depth(shift) * depthSign < -eps) {
             return allowance(axes == Axes.TURNING ? Letter.U : Letter.W, depthSign);
         }
-        if (axes.cut(shift) * cutSign < -eps) {
+        if (!s.anySign() && axes.cut(shift) * cutSign < -eps) {
             return allowance(axes == Axes.TURNING ? Letter.W : Letter.U, cutSign);
         }
         Fault f = typeOne(c, depthSign, cutSign);

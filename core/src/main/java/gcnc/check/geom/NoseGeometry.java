@@ -194,7 +194,14 @@ public final class NoseGeometry {
 
     /**
      * Whether the offset element from {@code s} to {@code t} still runs the way the programmed one
-     * does: false when a concave corner has cut it back past its other end (interference).
+     * does: false when a concave corner has cut it back past its other end (interference). This is
+     * the Fanuc interference check (PS0041, "interference in CRC"; Fanuc 0i/30i manual, tool nose
+     * radius compensation, interference check): a straight move is interference when its
+     * compensated direction differs from the programmed one by 90 to 270 degrees (it runs
+     * backwards), an arc when the angle from the compensated start to the compensated end differs
+     * from the programmed arc's by more than 180 degrees. A compensated arc a little longer or
+     * shorter than the programmed one (a concave corner met beyond its end) passes that check and
+     * the control runs it (issue 31).
      */
     public static boolean forward(Element el, Point s, Point t) {
         if (s.distanceTo(t) <= NOTHING) {
@@ -205,7 +212,7 @@ public final class NoseGeometry {
             return (t.x() - s.x()) * dir[0] + (t.z() - s.z()) * dir[1] > 0;
         }
         double programmed = sweep(el, el.from(), el.to());
-        return sweep(el, s, t) <= programmed + 1e-9;
+        return Math.abs(sweep(el, s, t) - programmed) <= Math.PI + 1e-9;
     }
 
     /** The sweep in radians (0, 2 pi] from {@code s} to {@code t} about the element's centre, in its direction. */

@@ -1,0 +1,56 @@
+package gcnc.sim;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/** Tidies a run of envelope pieces end to end ({@link UpperEnvelope}, {@link LowerEnvelope}). */
+final class Pieces {
+    /**
+     * A joint this close to the line through its neighbours' ends is dropped, mm: the polygons'
+     * own rounding (their corners sit on a 0.00001 mm grid) is ten thousand times coarser.
+     */
+    static final double STRAIGHT = 1e-9;
+    /**
+     * A piece narrower than this is a rounding between two cuts' ends (a face at z 149.5 and one
+     * at 149.50000000000003), not material: its neighbour goes on over it. The polygons' grid is
+     * ten thousand times coarser, and no overlap of {@link Stock#DEPTH} fits in it.
+     */
+    static final double SLIVER = 1e-9;
+
+    private Pieces() {
+    }
+
+    /**
+     * Drops empty pieces and slivers, and the joints that lie on the line through their neighbours
+     * (within {@link #STRAIGHT}); a corner whose two sides are a rounding apart becomes one point,
+     * the higher ({@code higher}: an upper envelope, never below the material) or the lower.
+     */
+    static List<UpperEnvelope.Piece> join(List<UpperEnvelope.Piece> in, boolean higher) {
+        List<UpperEnvelope.Piece> out = new ArrayList<>(in.size());
+        for (UpperEnvelope.Piece p : in) {
+            if (!(p.z0() < p.z1())) {
+                continue;
+            }
+            if (p.z1() - p.z0() < SLIVER && !out.isEmpty()) { // a rounding's width: its neighbour goes on over it
+                UpperEnvelope.Piece last = out.get(out.size() - 1);
+                out.set(out.size() - 1, new UpperEnvelope.Piece(last.z0(), p.z1(), last.a(), last.b()));
+                continue;
+            }
+            if (!out.isEmpty()) {
+                UpperEnvelope.Piece last = out.get(out.size() - 1);
+                if (Math.abs(last.b() - p.a()) <= STRAIGHT) {
+                    double m = higher ? Math.max(last.b(), p.a()) : Math.min(last.b(), p.a());
+                    UpperEnvelope.Piece line = new UpperEnvelope.Piece(last.z0(), p.z1(), last.a(), p.b());
+                    if (Math.abs(line.at(p.z0()) - m) <= STRAIGHT) {
+                        out.set(out.size() - 1, line);
+                        continue;
+                    }
+                    out.set(out.size() - 1, new UpperEnvelope.Piece(last.z0(), last.z1(), last.a(), m));
+                    p = new UpperEnvelope.Piece(p.z0(), p.z1(), m, p.b());
+                }
+            }
+            out.add(p);
+        }
+        return out;
+    }
+}
