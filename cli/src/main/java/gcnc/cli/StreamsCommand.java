@@ -6,8 +6,9 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /**
- * A command that is not about one machine's programs (those are {@link RunCommand}s): its picocli
- * spec (for usage errors), and its work given the command line's standard output and error.
+ * A command with a frame of its own (not a {@link RunCommand}'s: the controller, the studio, machines,
+ * tables, explain, path, offsets, probe): its picocli spec (for usage errors), and its work given the
+ * command line's standard output and error.
  */
 abstract class StreamsCommand implements Callable<Integer> {
     @Spec
