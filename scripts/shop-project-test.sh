@@ -9,7 +9,11 @@
 #      then edits a program so that it stays clean but breaks the shop's staysWithin assertion: the
 #      shop's tests must run again and fail (the plugin declares the programs as their inputs);
 #   4. builds a copy with a faulty program: it must fail at that program's line and column, and the
-#      shop's JUnit test of that program must fail too.
+#      shop's JUnit test of that program must fail too;
+#   5. a shop's library (stage library): a copy with a program that calls O9010.nc beside it, through a
+#      build cache of its own: an edit of the called file judges it and its caller again and keeps the
+#      other results; a second clone with the same build cache takes gcncCheck and gcncCompile FROM-CACHE;
+#      a removed program's findings and outputs are gone, nothing else judged again.
 # Each stage prints "== stage NAME" and Gradle's output; the last line is "shop-project: all passed"
 # or the script exits 1 at the first outcome that is wrong.
 # Usage: scripts/shop-project-test.sh [--repo DIR] [--keep]
@@ -148,4 +152,60 @@ loc = [(x["ruleId"], x["locations"][0]["physicalLocation"]["artifactLocation"]["
         x["locations"][0]["physicalLocation"]["region"]["startLine"]) for x in r]
 sys.exit(0 if loc == [("E051", "src/main/gcode/o1299-faulty.gcode", 6)] else 1)
 PY
+echo "== stage library"
+# The bushing faces, then calls O9010 in the file beside it (M98 P9010); T100 is a warning (E646) of its own.
+mkdir "$work/library"
+(cd "$root/samples/shop-project" && tar --exclude=build --exclude=.gradle -cf - .) | tar -xf - -C "$work/library"
+cat > "$work/library/src/main/gcode/ops/o1204-bushing.gcode" <<'NC'
+O1204 (BUSHING - FACE, THEN THE RETRACT IN O9010)
+G21 G18 G40 G99
+G28 U0. W0.
+T100
+G50 S3000
+G96 S200 M03
+G54 G00 X44. Z2. M08
+G01 Z0. F0.2
+X-1.6
+G00 Z2.
+M98 P9010
+M09
+G28 U0. W0.
+M05
+M30
+NC
+cat > "$work/library/src/main/gcode/ops/O9010.nc" <<'NC'
+O9010 (RETRACT CLEAR OF THE PART)
+G21 G54 G00 X46. Z5.
+M99
+NC
+printf '\nbuildCache { local(DirectoryBuildCache) { directory = new File("%s") } }\n' "$work/cache" \
+    >> "$work/library/settings.gradle"
+run "$work/library" gcncCheck gcncCompile --build-cache || fail "the library did not build"
+grep -q "^gcncCheck: 5 programs checked" "$work/last.log" || fail "gcncCheck did not check the library's 5 programs"
+grep -q "o1204-bushing.gcode:8:1: warning\[E646\]" "$work/last.log" || fail "no warning E646 of the bushing"
+sed -i 's/Z5\.$/Z6./' "$work/library/src/main/gcode/ops/O9010.nc"
+run "$work/library" gcncCheck gcncCompile --build-cache --info || fail "the library did not build after an edit of O9010.nc"
+for t in gcncCheck gcncCompile; do
+    grep -q "^$t: 2 programs judged again (changed, new, or calling a file that changed), 3 kept from the last run" \
+        "$work/last.log" || fail "$t did not judge only the edited O9010.nc and its caller again"
+    grep -q "^$t: judged again: src/main/gcode/ops/O9010.nc, src/main/gcode/ops/o1204-bushing.gcode$" "$work/last.log" \
+        || fail "$t judged other programs again than O9010.nc and o1204-bushing.gcode"
+done
+grep -c "o1204-bushing.gcode:8:1: warning\[E646\]" "$work/last.log" | grep -qx 1 || fail "the kept warning was not printed once"
+mkdir "$work/library2"
+(cd "$work/library" && tar --exclude=build --exclude=.gradle -cf - .) | tar -xf - -C "$work/library2"
+run "$work/library2" gcncCheck gcncCompile --build-cache || fail "the second clone did not build"
+for t in gcncCheck gcncCompile; do
+    grep -q "^:$t FROM-CACHE" "$work/last.log" || fail "$t was not taken from the build cache in a second clone"
+done
+cmp -s "$work/library/build/reports/gcnc/gcncCheck.json" "$work/library2/build/reports/gcnc/gcncCheck.json" \
+    || fail "the second clone's gcncCheck.json is not the first's"
+[ -s "$work/library2/build/gcnc/ops/o1204-bushing.dmc" ] || fail "no build/gcnc/ops/o1204-bushing.dmc from the cache"
+rm "$work/library2/src/main/gcode/ops/o1204-bushing.gcode"
+run "$work/library2" gcncCheck gcncCompile --build-cache || fail "the second clone did not build without the bushing"
+grep -q "^gcncCheck: 0 programs judged again (changed, new, or calling a file that changed), 4 kept from the last run" \
+    "$work/last.log" || fail "removing the bushing judged other programs again"
+grep -q "o1204-bushing" "$work/library2/build/reports/gcnc/gcncCheck.json" && fail "the removed bushing's findings are still in gcncCheck.json"
+grep -q '"code": "E139"' "$work/library2/build/reports/gcnc/gcncCheck.json" || fail "O9010.nc's own finding (E139) is gone"
+[ -e "$work/library2/build/gcnc/ops/o1204-bushing.dmc" ] && fail "the removed bushing's .dmc is still in build/gcnc"
 echo "shop-project: all passed"

@@ -64,8 +64,21 @@ public final class Compiler {
         }
     }
 
-    /** What a run found: every diagnostic, how many blocks, and the simulator's summary if it ran to the end. */
-    public record Result(Diagnostics diagnostics, long blocks, Optional<SimReport> simulation) {
+    /**
+     * What a run found: every diagnostic, how many blocks, the simulator's summary if it ran to the
+     * end, and every file beside the program that its calls looked for, found or not ({@code
+     * O1000.nc}, {@code 1000.nc}; with the folder of {@link Settings#programs}): the verdict can
+     * change when one of them changes.
+     */
+    public record Result(Diagnostics diagnostics, long blocks, Optional<SimReport> simulation, List<Path> calledFiles) {
+        public Result {
+            calledFiles = List.copyOf(calledFiles);
+        }
+
+        public Result(Diagnostics diagnostics, long blocks, Optional<SimReport> simulation) {
+            this(diagnostics, blocks, simulation, List.of());
+        }
+
         public boolean ok() {
             return !diagnostics.hasErrors();
         }
@@ -123,7 +136,7 @@ public final class Compiler {
             blocks++;
         }
         checker.finish(reader.lines());
-        return new Result(diags, blocks, Optional.empty());
+        return new Result(diags, blocks, Optional.empty(), calledFiles(reader));
     }
 
     /**
@@ -231,7 +244,7 @@ public final class Compiler {
                 }
             }
             report.ifPresent(observer::simulated);
-            return new Result(diags, blocks, report);
+            return new Result(diags, blocks, report, calledFiles(reader));
         }
     }
 
@@ -304,6 +317,11 @@ public final class Compiler {
         }
         return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), control, diags,
                 settings.programs());
+    }
+
+    /** The files beside the program its calls looked for (none without program flow). */
+    private static List<Path> calledFiles(BlockSource reader) {
+        return reader instanceof ProgramFlow flow ? flow.calledFiles() : List.of();
     }
 
     /**

@@ -127,6 +127,49 @@ class ShopAlarmsTest {
         assertEquals("12:1:error E155, 29:1:warning E053", found(Run.of("fanuc", program)));
     }
 
+    /**
+     * A Fanuc shop program (written for this test, in the style of a two-block-cycle post): G71
+     * roughing, G42 on its own block before the G70, a two-block G76 cut 1.3 mm deep on a 1.5 lead
+     * (past the sharp V's 1.299: the control cuts it) and an old tool change left after M30. The
+     * control runs it all but the blocks after M30: two warnings on their lines, nothing else.
+     */
+    @Test
+    void aFanucShopProgramWithADeepThreadAndAFinishUnderG42RunsWithTwoWarnings() {
+        String program =
+            "O1234 (SHAFT M24X1.5)\n"
+            + "G21 G40 G99\n"
+            + "G28 U0. W0.\n"
+            + "T0101\n"
+            + "G50 S2500\n"
+            + "G96 S200 M03\n"
+            + "G00 X42. Z2. M08\n"
+            + "G71 U1.5 R0.5\n"
+            + "G71 P100 Q200 U0.4 W0.1 F0.25\n"
+            + "N100 G00 X20.\n"
+            + "G01 Z0. F0.15\n"
+            + "X24. Z-2.\n"
+            + "Z-30.\n"
+            + "X36.\n"
+            + "Z-45.\n"
+            + "N200 X42.\n"
+            + "G42\n"
+            + "G70 P100 Q200\n"
+            + "G40 G00 X100. Z100. M09\n"
+            + "T0303\n"
+            + "G97 S600 M03\n"
+            + "G00 X26. Z5.\n"
+            + "G76 P020060 Q100 R0.05\n"
+            + "G76 X21.4 Z-26. P1300 Q400 F1.5\n"
+            + "G00 X100. Z100.\n"
+            + "M05\n"
+            + "M30\n"
+            + "T0202\n";
+        Run r = Run.of("fanuc", program);
+        assertEquals("24:17:warning E193, 28:1:warning E053", found(r));
+        assertTrue(threads(r) > 1, "the thread is cut");
+        assertTrue(r.blocks.stream().anyMatch(b -> b.line() == 18 && !b.motions().isEmpty()), "G70 finishes");
+    }
+
     /** A G71 roughing and its G70, metric, on the fanuc machine from X52 Z2 (lines 1-14). */
     private static final String ROUGH_AND_FINISH = "G21 G99\nT0101\nG96 S180 M03\nG50 S2000\nG00 X52. Z2.\n"
             + "G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20.\nX30.\nZ-35.\nN20 X52.\n"

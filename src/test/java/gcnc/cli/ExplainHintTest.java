@@ -30,7 +30,8 @@ class ExplainHintTest {
         CliTest.Run r = CliTest.gcnc("explain", "E051");
         assertEquals(0, r.status(), r.err());
         assertTrue(r.out().contains("  Why: A feed move before the spindle's direction was ever given"), r.out());
-        assertTrue(r.out().contains("  What the control does: it stops with an alarm at this block"), r.out());
+        assertTrue(r.out().contains("  the control stops (alarm) (gcnc's rule beyond the manuals): a cut before the spindle"
+                + " was ever started"), r.out());
         assertTrue(r.out().contains("  Fix: Start the spindle with M03"), r.out());
         assertTrue(r.out().contains("  Example (machine haas):\n      G21 G99\n      G01 X20. Z-5. F0.2\n"), r.out());
     }

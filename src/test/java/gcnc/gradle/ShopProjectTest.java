@@ -20,15 +20,16 @@ import org.junit.jupiter.api.Test;
  * The Gradle plugin end to end, as a shop meets it (docs/gradle-plugin.md): scripts/shop-project-test.sh
  * publishes the library and plugin to a throwaway Maven local repository and builds copies of
  * samples/shop-project with them. The script checks the outcomes too; this test reads Gradle's own output of each stage,
- * so that a script that stopped checking would not pass it. Six Gradle builds through one Gradle daemon
- * (about 30 s at load 10; 90 s when each started a JVM of its own).
+ * so that a script that stopped checking would not pass it. Ten Gradle builds through one Gradle daemon
+ * (about 30 s at load 10 for the first six; the four of stage library, a shop's library through a
+ * build cache, add about 25 s).
  */
 class ShopProjectTest {
     private static final String FAULT = "src/main/gcode/o1299-faulty.gcode:6:1: error[E051]";
     private static final String WARNED = java.util.regex.Pattern.quote("o1201-pin.gcode:10:1: warning[E646]");
 
     @Test
-    void theSampleBuildsIsUpToDateTheSecondTimeAndAFaultyProgramFailsAtItsLine() throws Exception {
+    void theSampleBuildsIsUpToDateTheSecondTimeAFaultyProgramFailsAtItsLineAndALibraryIsJudgedIncrementally() throws Exception {
         Assumptions.assumeTrue(onPath("gradle"), "needs gradle on PATH; absent here");
         List<String> command = List.of("bash", "scripts/shop-project-test.sh");
         Path log = Files.createTempFile("gcnc-shop", ".log");
@@ -50,6 +51,13 @@ class ShopProjectTest {
                     // three tasks judge the warned program; Gradle's log shows its warning once (issue 34)
                     () -> assertEquals(1, stage.getOrDefault("warned", "").split(WARNED, -1).length - 1,
                             "the warning " + WARNED + " printed once"),
+                    () -> assertTrue(stage.getOrDefault("library", "").contains(
+                            "gcncCheck: judged again: src/main/gcode/ops/O9010.nc, src/main/gcode/ops/o1204-bushing.gcode\n"),
+                            "an edit of a called file judges it and its caller again, no other program"),
+                    () -> assertTrue(stage.getOrDefault("library", "").contains(":gcncCheck FROM-CACHE"),
+                            "a second clone takes gcncCheck from the build cache"),
+                    () -> assertTrue(stage.getOrDefault("library", "").contains(":gcncCompile FROM-CACHE"),
+                            "a second clone takes gcncCompile from the build cache"),
                     () -> assertEquals(0, p.exitValue(), "the script's own verdict"));
         } finally {
             Files.deleteIfExists(log);

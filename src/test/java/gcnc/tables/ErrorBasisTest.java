@@ -70,6 +70,14 @@ class ErrorBasisTest {
                 case THESIS -> assertTrue(cite.contains("thesis"), c.id() + ": " + cite);
                 case GCNC, SETUP -> assertTrue(cite.split(" ").length >= 6, c.id() + " states no reason: " + cite);
             }
+            if (r.source() == ErrorBasis.Source.GCNC && r.behaviour() == ErrorBasis.Behaviour.ALARM) {
+                // a rule of gcnc's own is an alarm only where it says what the control does
+                assertTrue(cite.contains("TC ") || cite.contains("Fanuc") || cite.contains("Haas")
+                        || cite.contains("never"), c.id() + " is gcnc's alarm without the control's: " + cite);
+            }
+            if (r.source() == ErrorBasis.Source.GCNC && r.behaviour() == ErrorBasis.Behaviour.UNSUPPORTED) {
+                assertTrue(cite.contains("gcnc") || cite.contains("simulator"), c.id() + " names no limit: " + cite);
+            }
         }
         assertTrue(errors > 200, "errors.csv has its errors");
     }

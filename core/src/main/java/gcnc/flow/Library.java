@@ -33,6 +33,8 @@ public final class Library {
     private final Set<Integer> called = new LinkedHashSet<>();
     /** Numbers looked for beside the file and not found (looked for once). */
     private final Set<Integer> missing = new LinkedHashSet<>();
+    /** Every file beside the program a call looked for, found or not (in the order looked for). */
+    private final Set<Path> lookedFor = new LinkedHashSet<>();
     private final Optional<Path> folder;
     private final Diagnostics diags;
     private final int limit;
@@ -98,6 +100,9 @@ public final class Library {
     /** The file beside the program named after {@code number}, read whole; null if there is none (or after E137, E500). */
     private Program beside(int number, Span call) throws IOException {
         Path dir = folder.get();
+        for (String name : names(number)) {
+            lookedFor.add(dir.resolve(name));
+        }
         java.util.Optional<Path> found = fileFor(dir, number);
         if (found.isPresent()) {
             return read(number, found.get(), call);
@@ -186,6 +191,15 @@ public final class Library {
         names.add("O" + plain + ".nc");
         names.add(plain + ".nc");
         return List.copyOf(names);
+    }
+
+    /**
+     * Every file beside the program that a call looked for, whether it was there or not: the run's
+     * verdict can change when one of them is edited, added or removed (the Gradle plugin re-checks
+     * the program then).
+     */
+    Set<Path> lookedFor() {
+        return java.util.Collections.unmodifiableSet(lookedFor);
     }
 
     /** The note E138 for each program after the main program's end that no call reached. */

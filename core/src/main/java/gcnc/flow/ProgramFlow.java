@@ -115,6 +115,11 @@ public final class ProgramFlow implements BlockSource {
         stack.push(Frame.main(mainBlocks));
     }
 
+    /** Every file beside the program that a call looked for, found or not ({@link Library#lookedFor}). */
+    public java.util.List<Path> calledFiles() {
+        return java.util.List.copyOf(library.lookedFor());
+    }
+
     /** The most blocks this JVM holds: {@link #HOLD_LIMIT}, or one per KiB of its largest heap if that is fewer. */
     public static int holdLimit() {
         return (int) Math.min(HOLD_LIMIT, Runtime.getRuntime().maxMemory() / HEAP_PER_BLOCK);

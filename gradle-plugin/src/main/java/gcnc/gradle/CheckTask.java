@@ -1,17 +1,18 @@
 package gcnc.gradle;
 
-import gcnc.Compiler;
 import gcnc.Session;
 import java.io.IOException;
 import java.io.Reader;
+import java.util.List;
+import org.gradle.api.tasks.CacheableTask;
 
 /** {@code gcncCheck}: parse and every check of every program, as {@code gcnc check} does; no output but the reports. */
+@CacheableTask
 public class CheckTask extends GcncTask {
     @Override
-    protected void process(Session session, Program program, Findings findings) throws IOException {
+    protected Outcome process(Session session, Program program) throws IOException {
         try (Reader in = program.open()) {
-            Compiler.Result r = session.check(in);
-            findings.report(program.shown(), r.diagnostics());
+            return outcome(session.check(in), List.of());
         }
     }
 }

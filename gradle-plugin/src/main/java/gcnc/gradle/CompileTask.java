@@ -9,7 +9,9 @@ import java.io.IOException;
 import java.io.Reader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Optional;
+import org.gradle.api.tasks.CacheableTask;
 import org.gradle.api.tasks.OutputDirectory;
 
 /**
@@ -17,8 +19,10 @@ import org.gradle.api.tasks.OutputDirectory;
  * compile} does, into build/gcnc/&lt;path under the programs&gt;.dmc with its .dmc.map beside it.
  * A program longer than the profile's controller memory is written in the stream form (a resident
  * .dmc and a .stream). A program with an error gets no output; a clean one gets all its files or
- * none, through {@link FormOutputs} as on the command line. The outputs of an earlier run are cleared first.
+ * none, through {@link FormOutputs} as on the command line. The outputs of a program judged again,
+ * or removed, are deleted first; those of the others are kept ({@link LibraryRun}).
  */
+@CacheableTask
 public class CompileTask extends GcncTask {
     @OutputDirectory
     public File getOutputDir() {
@@ -26,13 +30,24 @@ public class CompileTask extends GcncTask {
     }
 
     @Override
-    protected void begin() {
+    protected void clearOutputs() {
         getProject().delete(getOutputDir());
         getOutputDir().mkdirs();
     }
 
+    /** A program's .dmc and .dmc.map, and in the stream form its .stream and .stream.map. */
     @Override
-    protected void process(Session session, Program program, Findings findings) throws IOException {
+    protected void clearOutputs(String relativePath) throws IOException {
+        Path dmc = getOutputDir().toPath().resolve(GcncTask.withExtension(relativePath, ".dmc"));
+        Path stream = FormOutputs.streamFile(dmc);
+        for (Path p : List.of(dmc, dmc.resolveSibling(dmc.getFileName() + ".map"), stream,
+                stream.resolveSibling(stream.getFileName() + ".map"))) {
+            Files.deleteIfExists(p);
+        }
+    }
+
+    @Override
+    protected Outcome process(Session session, Program program) throws IOException {
         Path dmc = getOutputDir().toPath().resolve(program.withExtension(".dmc"));
         Files.createDirectories(dmc.getParent());
         FormOutputs outputs;
@@ -50,10 +65,18 @@ public class CompileTask extends GcncTask {
             if (r.ok()) {
                 outputs.finish(r.diagnostics());
             }
-            findings.report(program.shown(), r.diagnostics());
+            Outcome o = outcome(r, List.of());
             if (r.ok()) {
-                outputs.commit();
+                try {
+                    outputs.commit();
+                } catch (IOException e) {
+                    List<gcnc.diag.Diagnostic> all = new java.util.ArrayList<>(o.diagnostics());
+                    all.add(gcnc.diag.Diagnostic.error(gcnc.diag.Code.E500_IO, gcnc.diag.Span.of(1, 1),
+                            gcnc.diag.Phrase.IO_CANNOT_READ_OR_WRITE.arg(), gcnc.diag.Phrase.reason(e)));
+                    return new Outcome(all, o.calls(), o.extra());
+                }
             }
+            return o;
         }
     }
 }

@@ -2,7 +2,6 @@ package gcnc.gradle;
 
 import gcnc.Session;
 import gcnc.diag.Diagnostic;
-import gcnc.diag.Diagnostics;
 import gcnc.diag.Finding;
 import gcnc.diag.GnuRenderer;
 import gcnc.diag.JsonRenderer;
@@ -46,8 +45,8 @@ final class Findings {
     }
 
     /** Every diagnostic of one program, in the order of the program. */
-    void report(String file, Diagnostics diagnostics) {
-        for (Diagnostic d : diagnostics.sorted()) {
+    void report(String file, List<Diagnostic> sorted) {
+        for (Diagnostic d : sorted) {
             report(file, d);
         }
     }

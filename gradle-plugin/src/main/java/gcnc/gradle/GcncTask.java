@@ -1,9 +1,7 @@
 package gcnc.gradle;
 
+import gcnc.Compiler;
 import gcnc.Session;
-import gcnc.diag.Code;
-import gcnc.diag.Diagnostic;
-import gcnc.diag.Span;
 import gcnc.tables.TableException;
 import java.io.File;
 import java.io.IOException;
@@ -18,6 +16,7 @@ import org.gradle.api.tasks.Input;
 import org.gradle.api.tasks.InputFiles;
 import org.gradle.api.tasks.Internal;
 import org.gradle.api.tasks.Optional;
+import org.gradle.api.tasks.OutputDirectory;
 import org.gradle.api.tasks.OutputFile;
 import org.gradle.api.tasks.PathSensitive;
 import org.gradle.api.tasks.PathSensitivity;
@@ -25,20 +24,22 @@ import org.gradle.api.tasks.SkipWhenEmpty;
 import org.gradle.api.tasks.TaskAction;
 
 /**
- * What the three gcnc tasks share: their inputs (the programs, the machine, the control, the
- * tables and any file among them), one gcnc session for the run, every program in turn, and the
- * run's findings, printed GCC-style as they come and written at the end as one JSON and one SARIF
- * report under build/reports/gcnc/. Any error fails the task, after every program was looked at.
- * Since inputs and outputs are declared, a second run with nothing changed is UP-TO-DATE.
+ * What the three gcnc tasks share: their inputs (the programs, the files their calls can read beside
+ * them, the machine, the control, the tables and any file among them, gcnc's version), one gcnc
+ * session for the run, the programs judged on a pool of threads and only those that changed or call
+ * a file that changed ({@link LibraryRun}; the others' results kept in {@link #getResultsDir}), and
+ * the run's findings, printed GCC-style in the programs' order and written at the end as one JSON and
+ * one SARIF report under build/reports/gcnc/. Any error fails the task, after every program was looked
+ * at. Since inputs and outputs are declared, a second run with nothing changed is UP-TO-DATE, and the
+ * subclasses are {@code @CacheableTask}: every input is named relative to the project, so another
+ * clone with the same build cache takes the outputs FROM-CACHE.
  */
 public abstract class GcncTask extends DefaultTask {
     /** One part program: the file, its path under the program tree (for outputs), and how findings name it. */
     public record Program(File file, String relativePath, String shown) {
         /** The relative path with {@code extension} in place of the program's own. */
         String withExtension(String extension) {
-            int slash = relativePath.lastIndexOf('/');
-            int dot = relativePath.lastIndexOf('.');
-            return (dot > slash ? relativePath.substring(0, dot) : relativePath) + extension;
+            return GcncTask.withExtension(relativePath, extension);
         }
 
         /** The program's text, decoded as every gcnc front end decodes it. */
@@ -59,6 +60,32 @@ public abstract class GcncTask extends DefaultTask {
     public FileTree getPrograms() {
         return settings.getPrograms().getAsFileTree();
     }
+
+    /**
+     * The files a call can read beside a program ({@code O1000.nc}, {@code 1000.nc}: gcnc.flow.Library's
+     * names) that are not among the programs: editing one judges its callers again, as editing a program does.
+     */
+    @InputFiles
+    @PathSensitive(PathSensitivity.RELATIVE)
+    public FileCollection getCalledFiles() {
+        java.util.Set<File> programs = new java.util.HashSet<>(getPrograms().getFiles());
+        java.util.Set<File> folders = new java.util.TreeSet<>();
+        programs.forEach(f -> folders.add(f.getAbsoluteFile().getParentFile()));
+        List<File> called = new ArrayList<>();
+        for (File folder : folders) {
+            File[] files = folder.listFiles((dir, name) -> CALLED_NAME.matcher(name).matches());
+            for (File f : files == null ? new File[0] : files) {
+                if (f.isFile() && !programs.contains(f)) {
+                    called.add(f);
+                }
+            }
+        }
+        called.sort(null);
+        return getProject().files(called.toArray());
+    }
+
+    /** The names a call looks for beside its program (gcnc.flow.Library: O1000.nc, 1000.nc, O0100.nc). */
+    static final java.util.regex.Pattern CALLED_NAME = java.util.regex.Pattern.compile("O?[0-9]+\\.nc");
 
     /** How the reports name the programs (relative to the root project): moving the tree runs the task again. */
     @Input
@@ -113,11 +140,25 @@ public abstract class GcncTask extends DefaultTask {
         return new File(getReportsDir(), getName() + extension);
     }
 
+    /**
+     * The task's results kept between runs: one file per program and the call graph
+     * ({@link ResultStore}). An output, so the build cache restores it with the reports.
+     */
+    @OutputDirectory
+    public File getResultsDir() {
+        return new File(getProject().getBuildDir(), "gcnc-results/" + getName());
+    }
+
+    /** gcnc's version: a result of another gcnc is not taken from the build cache. */
+    @Input
+    public String getGcncVersion() {
+        return Findings.version();
+    }
+
     @TaskAction
     public void run() {
         Session session = open();
         Findings findings = new Findings(session, getLogger(), settings.printed);
-        begin();
         List<Program> programs = programs();
         List<File> skipped = settings.skipped();
         if (!skipped.isEmpty()) {
@@ -126,20 +167,22 @@ public abstract class GcncTask extends DefaultTask {
                     getName(), plural(skipped.size(), "file"), String.join(", .", settings.getExtensions()),
                     skipped.stream().map(f -> shown(getProject().getRootDir(), f)).toList());
         }
-        for (Program p : programs) {
-            try {
-                process(session, p, findings);
-            } catch (IOException e) {
-                findings.report(p.shown(), Diagnostic.error(Code.E500_IO, Span.of(1, 1),
-                        gcnc.diag.Phrase.IO_CANNOT_READ_OR_WRITE.arg(), gcnc.diag.Phrase.reason(e)));
-            }
-        }
+        LibraryRun library;
         try {
-            finish(programs);
+            library = LibraryRun.judge(this, session, programs, findings);
+            long t = System.nanoTime();
+            finish(programs, library.outcomes());
             findings.write(getJsonReport(), getSarifReport());
             findings.writeHtml(getHtmlReport(), getName(), programs);
+            library.keep();
+            getLogger().info("{}: reports and index {} s", getName(), LibraryRun.seconds(System.nanoTime() - t));
         } catch (IOException e) {
             throw new GradleException(getName() + ": cannot write the reports under " + getReportsDir() + ": " + reason(e));
+        }
+        if (library.kept() > 0) {
+            getLogger().lifecycle("{}: {} judged again (changed, new, or calling a file that changed), {} kept from the last run",
+                    getName(), plural(library.judged().size(), "program"), library.kept());
+            getLogger().info("{}: judged again: {}", getName(), String.join(", ", library.judged()));
         }
         if (findings.errors() > 0) {
             String failed = String.format(Locale.ROOT, "%s: %s in %s of %s; see the report at %s",
@@ -156,15 +199,34 @@ public abstract class GcncTask extends DefaultTask {
                 findings.waived() == 0 ? "" : ", " + findings.waived() + " waived", getReportsDir());
     }
 
-    /** Before the first program: e.g. clear the outputs of an earlier run. */
-    protected void begin() {
+    /** Every output of an earlier run, before all programs are judged afresh. */
+    protected void clearOutputs() {
     }
 
-    /** What the task does with one program; findings go to {@code findings}. */
-    protected abstract void process(Session session, Program program, Findings findings) throws IOException;
+    /** The outputs of one program of an earlier run, before it is judged again or after it was removed. */
+    protected void clearOutputs(String relativePath) throws IOException {
+    }
 
-    /** After the last program: e.g. a summary of them all. */
-    protected void finish(List<Program> programs) throws IOException {
+    /**
+     * What the task does with one program: its findings and the task's own lines about it
+     * ({@link #outcome}). Called on several threads at once, one program each.
+     */
+    protected abstract Outcome process(Session session, Program program) throws IOException;
+
+    /** After the last program, with every program's outcome in the programs' order: e.g. a summary of them all. */
+    protected void finish(List<Program> programs, List<Outcome> outcomes) throws IOException {
+    }
+
+    /** The outcome of a gcnc run over a program, every file named relative to the root project. */
+    protected Outcome outcome(Compiler.Result r, List<String> extra) {
+        File root = getProject().getRootDir();
+        return new Outcome(Outcome.relocated(r.diagnostics().sorted(), f -> shown(root, new File(f))),
+                r.calledFiles().stream().map(f -> shown(root, f.toFile())).toList(), extra);
+    }
+
+    /** The settings, for {@link LibraryRun}'s fingerprint. */
+    GcncExtension settings() {
+        return settings;
     }
 
     private Session open() {
@@ -203,7 +265,7 @@ public abstract class GcncTask extends DefaultTask {
         return GcncExtension.isPath(nameOrPath) ? getProject().file(nameOrPath).getAbsolutePath() : nameOrPath;
     }
 
-    private List<Program> programs() {
+    List<Program> programs() {
         List<Program> list = new ArrayList<>();
         File root = getProject().getRootDir();
         getPrograms().visit(d -> {
@@ -216,10 +278,17 @@ public abstract class GcncTask extends DefaultTask {
     }
 
     /** A program's path relative to the root project (where CI runs and SARIF's %SRCROOT% is), else absolute. */
-    private static String shown(File root, File f) {
+    static String shown(File root, File f) {
         java.nio.file.Path r = root.toPath().toAbsolutePath().normalize();
         java.nio.file.Path p = f.toPath().toAbsolutePath().normalize();
         return p.startsWith(r) ? r.relativize(p).toString().replace(File.separatorChar, '/') : p.toString();
+    }
+
+    /** {@code relativePath} with {@code extension} in place of the program's own. */
+    static String withExtension(String relativePath, String extension) {
+        int slash = relativePath.lastIndexOf('/');
+        int dot = relativePath.lastIndexOf('.');
+        return (dot > slash ? relativePath.substring(0, dot) : relativePath) + extension;
     }
 
     static String reason(IOException e) {

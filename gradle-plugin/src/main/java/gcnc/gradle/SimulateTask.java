@@ -15,6 +15,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import org.gradle.api.tasks.CacheableTask;
 import org.gradle.api.tasks.OutputDirectory;
 
 /**
@@ -24,32 +25,38 @@ import org.gradle.api.tasks.OutputDirectory;
  * work zero, tools, cycle time, the program's spindle limit, findings, envelope and the drawing) as HTML and as a PNG, and
  * for all of them summary.txt, one line a program.
  */
+@CacheableTask
 public class SimulateTask extends GcncTask {
-    private final List<String> summary = new ArrayList<>();
-
     @OutputDirectory
     public File getOutputDir() {
         return new File(getReportsDir(), getName());
     }
 
     @Override
-    protected void begin() {
+    protected void clearOutputs() {
         getProject().delete(getOutputDir());
         getOutputDir().mkdirs();
-        summary.clear();
     }
 
+    /** A program's drawing and setup sheet (HTML and PNG). */
     @Override
-    protected void process(Session session, Program program, Findings findings) throws IOException {
+    protected void clearOutputs(String relativePath) throws IOException {
+        for (String x : List.of(".svg", ".html", ".png")) {
+            Files.deleteIfExists(getOutputDir().toPath().resolve(GcncTask.withExtension(relativePath, x)));
+        }
+    }
+
+    /** The program's line of summary.txt is the outcome's one extra line. */
+    @Override
+    protected Outcome process(Session session, Program program) throws IOException {
         Compiler.Result r;
         try (Reader in = program.open()) {
             r = session.compile(in, Optional.of(session.simulation().withPath()), false, line -> { });
         }
-        findings.report(program.shown(), r.diagnostics());
         Optional<SimReport> sim = r.simulation();
         if (sim.isEmpty()) {
-            summary.add(program.shown() + ": not simulated, " + GcncTask.plural(r.diagnostics().errorCount(), "error"));
-            return;
+            return outcome(r, List.of(program.shown() + ": not simulated, "
+                    + GcncTask.plural(r.diagnostics().errorCount(), "error")));
         }
         String number;
         try (Reader in = program.open()) {
@@ -61,7 +68,7 @@ public class SimulateTask extends GcncTask {
         Files.createDirectories(svgFile.getParent());
         gcnc.output.AtomicOutput.write(svgFile, gcnc.output.AtomicOutput.Name.DERIVED, w -> w.write(svg.toString()));
         SetupSheet of = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
-                findings.messages());
+                session.tables().messages().in(Findings.LANG));
         SetupSheet sheet;
         try (Reader in = program.open()) {
             sheet = of.withClamps(session, in);
@@ -76,11 +83,14 @@ public class SimulateTask extends GcncTask {
             o.bytes(png.toByteArray());
             o.commit();
         }
-        summary.add(program.shown() + ": " + sheet.summary());
+        return outcome(r, List.of(program.shown() + ": " + sheet.summary()));
     }
 
+    /** summary.txt: each program's line, in the programs' order, from this run or kept from the last. */
     @Override
-    protected void finish(List<Program> programs) throws IOException {
+    protected void finish(List<Program> programs, List<Outcome> outcomes) throws IOException {
+        List<String> summary = new ArrayList<>();
+        outcomes.forEach(o -> summary.addAll(o.extra()));
         gcnc.output.AtomicOutput.write(getOutputDir().toPath().resolve("summary.txt"), gcnc.output.AtomicOutput.Name.DERIVED, w -> {
             for (String line : summary) {
                 w.write(line);
