@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
  * Issue 35 item 4: SIGTERM ends any command at once, with nothing at an output's name and no
  * part-written file. Each command reads a long program from a named pipe in a JVM of its own; a
  * write to the pipe returns only once the command has read what was before it (the pipe holds
- * 64 KiB), so after 2 MB written the command is busy in the middle of the program when the signal
+ * 64 KiB), so after 600 KB written the command is busy in the middle of the program when the signal
  * comes: no polling, no sleep. {@link DrawingMemoryTest} signals a drawing while it simulates,
  * {@code AtomicPairTest} a compile waiting on its input.
  */
@@ -41,7 +41,7 @@ class SigtermTest {
         }
     }
 
-    /** Runs {@code gcnc ARGS PROGRAM-ON-A-PIPE}, signals it after 2 MB of program, and returns what is left in dir. */
+    /** Runs {@code gcnc ARGS PROGRAM-ON-A-PIPE}, signals it after 600 KB of program, and returns what is left in dir. */
     private List<String> signalled(String... args) throws Exception {
         Path fifo = TestFiles.mkfifo(dir.resolve("long.nc"));
         Path log = dir.resolve("said.txt");
@@ -65,7 +65,7 @@ class SigtermTest {
                     .getBytes(StandardCharsets.US_ASCII));
             long written = 0;
             double d = 50;
-            while (written < 2_000_000) {
+            while (written < 600_000) {
                 byte[] pass = String.format(Locale.ROOT, "G00 X%.3f Z2.\nG01 Z-40.5 F120.\nG02 X%.3f Z-41.5 R1.\n"
                         + "G01 X%.3f\nG00 Z2.\n", d, d + 2, d + 4).getBytes(StandardCharsets.US_ASCII);
                 program.write(pass);
