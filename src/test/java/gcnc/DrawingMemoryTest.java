@@ -103,17 +103,39 @@ class DrawingMemoryTest {
     @Test
     void aSigtermEndsADrawingAndLeavesNoFile() throws Exception {
         Path svg = dir.resolve("stopped.svg");
-        Path out = dir.resolve("stopped.txt");
-        // with --trace it says where it is as it goes: the signal comes once it is simulating
-        Process p = gcnc(out, "simulate", program.toString(), "--svg", svg.toString(), "--trace").start();
-        long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(5);
-        while (Files.size(out) < 100_000 && p.isAlive() && System.nanoTime() < deadline) {
-            Thread.onSpinWait();
+        List<String> command = new ArrayList<>(gcnc(dir.resolve("unused.txt"), "simulate", program.toString(),
+                "--svg", svg.toString(), "--trace").command());
+        // with --trace it says where it is as it goes, on a pipe read here: the signal comes once it
+        // has said 100,000 bytes of it, that is once it is simulating (a blocking read, no polling)
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        java.util.concurrent.CountDownLatch simulating = new java.util.concurrent.CountDownLatch(1);
+        Thread reader = new Thread(() -> {
+            byte[] buffer = new byte[8192];
+            long said = 0;
+            try (java.io.InputStream in = p.getInputStream()) {
+                for (int n; (n = in.read(buffer)) >= 0; ) {
+                    said += n;
+                    if (said >= 100_000) {
+                        simulating.countDown();
+                    }
+                }
+            } catch (IOException ended) {
+                // the pipe closes with the process
+            }
+        }, "drawing-trace-reader");
+        reader.setDaemon(true);
+        reader.start();
+        try {
+            assertTrue(simulating.await(5, TimeUnit.MINUTES) && p.isAlive(), "still simulating when the signal comes");
+            long signalled = System.nanoTime();
+            p.destroy(); // SIGTERM
+            // measured at 0.1 s; a generous guard on a loaded machine, where it was 15 s with the heap full
+            assertTrue(p.waitFor(10, TimeUnit.SECONDS), "SIGTERM did not end the run");
+            long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - signalled);
+            assertEquals(143, p.exitValue(), "ended by the signal (128 + 15), after " + tookMs + " ms");
+        } finally {
+            p.destroyForcibly();
         }
-        assertTrue(p.isAlive(), "still simulating when the signal comes");
-        p.destroy(); // SIGTERM
-        // measured at 0.1 s; a generous guard on a loaded machine, where it was 15 s with the heap full
-        assertTrue(p.waitFor(10, TimeUnit.SECONDS), "SIGTERM did not end the run");
         assertFalse(Files.exists(svg), "no drawing at its name");
         try (java.util.stream.Stream<Path> s = Files.list(dir)) {
             List<Path> left = s.filter(f -> f.getFileName().toString().contains("stopped.svg")).toList();

@@ -1,6 +1,8 @@
 package gcnc;
 
+import gcnc.dmc.Form;
 import gcnc.machine.MachineProfile;
+import gcnc.output.FormOutputs;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
 import gcnc.sim.StockSize;
@@ -221,6 +223,29 @@ public final class Session {
                                    java.util.function.Consumer<gcnc.dmc.Instruction> out, CompileObserver observer)
             throws IOException {
         return waived(Compiler.compile(program, settings(simulation, inlineSourceMap), out, observer), true);
+    }
+
+    /**
+     * The compile-to-file wiring every front end shares ({@code gcnc compile}, {@code gcnc run}, the
+     * studio, the Gradle plugin): {@code program} compiled into {@code outputs}, whose maps name
+     * {@code sourceName} ({@code source}: its SHA-256; null for standard input), through the sink
+     * the dialect and form call for (the thesis's format has no form; else the form {@code asked},
+     * or the one that fits the profile's controller). After a clean compile the form is decided and
+     * what does not fit is reported (E238, E239, E243). Nothing is put in place: the caller reports,
+     * then {@link FormOutputs#commit()}s when the result is clean.
+     */
+    public Compiler.Result compileInto(FormOutputs outputs, String sourceName, Path source, Reader program,
+                                       Optional<SimOptions> simulation, boolean inlineSourceMap, Optional<Form> asked,
+                                       boolean exactStop, CompileObserver observer) throws IOException {
+        outputs.mapSource(sourceName, source);
+        java.util.function.Consumer<gcnc.dmc.Instruction> sink = options.dialect().equals("thesis") ? outputs.programSink()
+                : outputs.sink(asked, profile.controllerLimits());
+        Compiler.Settings s = settings(simulation, inlineSourceMap);
+        Compiler.Result r = waived(Compiler.compile(program, exactStop ? s.withExactStop() : s, sink, observer), true);
+        if (r.ok()) {
+            outputs.finish(r.diagnostics());
+        }
+        return r;
     }
 
     /** Check, translate and simulate a program file as the command line's {@code compile} does, output discarded. */

@@ -121,7 +121,8 @@ class ControlRulesTest {
         assertEquals("", check("generic", "haas", "S1000 M03\n" + CUT + "M30\n"));
         // the generic machine turns at most 4000 rpm
         assertEquals("1:1:E119", check("generic", "haas", "S5000 M03\nM30\n"));
-        assertEquals("2:1:E048", check("generic", "haas", "G50 S2000\nS2500 M03\nM30\n"));
+        // above the program's G50 clamp: Haas turns at the clamp (E280 warning, SpindleClampTest)
+        assertEquals("2:1:E280", check("generic", "haas", "G50 S2000\nS2500 M03\nM30\n"));
     }
 
     @Test

@@ -80,19 +80,14 @@ final class CompileCommand extends RunCommand {
             return reporter.ioFault(e.path(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e.problem());
         }
         try (outputs) {
-            outputs.mapSource(SourceFiles.isStdin(file) ? name : file.getFileName().toString(), SourceFiles.fileOf(file));
-            // the thesis's format is no Galil program: it has no form
-            java.util.function.Consumer<gcnc.dmc.Instruction> sink = dialect.kind() == gcnc.galil.Dialect.Kind.THESIS ? outputs.programSink()
-                    : outputs.sink(asked, profile.controllerLimits());
             Compiler.Result r;
             try (Reader in = SourceFiles.open(file, streams().in())) {
-                r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)).compile(in, sim, sourceMap,
-                        sink);
+                // the form decided when clean; what does not fit is an error here
+                r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)).compileInto(outputs,
+                        SourceFiles.isStdin(file) ? name : file.getFileName().toString(), SourceFiles.fileOf(file), in, sim,
+                        sourceMap, asked, false, gcnc.CompileObserver.NONE);
             } catch (IOException e) {
                 return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
-            }
-            if (r.ok()) {
-                outputs.finish(r.diagnostics()); // the form decided; what does not fit is an error here
             }
             reporter.report(name, r.diagnostics());
             if (!r.ok()) {

@@ -9,13 +9,10 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code gcnc controller --virtual}: a virtual Galil on loopback TCP or a pty (gcnc.controller,
@@ -27,7 +24,7 @@ import picocli.CommandLine.Spec;
                 "TCP listens on 127.0.0.1 only; a pty is one end of a pair made with socat. Ctrl+C stops it."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:stopped", "2:usage, a bad --fault or --model, the port is taken or the pty cannot be opened"})
-final class ControllerCommand implements Callable<Integer> {
+final class ControllerCommand extends StreamsCommand {
     @Option(names = "--virtual",
             description = "The virtual controller (gcnc controller probe asks a real one).")
     boolean virtual;
@@ -71,13 +68,8 @@ final class ControllerCommand implements Callable<Integer> {
             description = "Language of the messages: en or es (default: es when LANG or LC_ALL starts with es, else en).")
     ErrorMessages.Lang lang;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+    Integer call(PrintWriter out, PrintWriter err) {
         ErrorMessages.Lang language = lang != null ? lang
                 : spec.root().userObject() instanceof Main m && m.lang != null ? m.lang
                 : CommonOptions.fromEnvironment(System.getenv());

@@ -16,13 +16,10 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code gcnc explain E305}: what a diagnostic code means: its message (errors.csv), which control
@@ -41,7 +38,7 @@ import picocli.CommandLine.Spec;
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:every code was explained", "2:no such code (or a G or M code no control in question knows),"
                 + " or a broken table or profile"})
-final class ExplainCommand implements Callable<Integer> {
+final class ExplainCommand extends StreamsCommand {
     @Parameters(arity = "1..*", paramLabel = "CODE", description = "A diagnostic code (E305, e305 or 305) or a G or M code"
             + " (G71, g1, M00).")
     List<String> codes;
@@ -60,12 +57,8 @@ final class ExplainCommand implements Callable<Integer> {
     @Option(names = "--lang", paramLabel = "en|es", defaultValue = "en", description = "The language shown first: en (default) or es.")
     ErrorMessages.Lang lang;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
+    Integer call(PrintWriter out, PrintWriter err) {
         if (codes.stream().anyMatch(FunctionText::isWord)) {
             if (!codes.stream().allMatch(FunctionText::isWord)) {
                 throw new ParameterException(spec.commandLine(), "explain G and M codes or diagnostic codes, not both at once");

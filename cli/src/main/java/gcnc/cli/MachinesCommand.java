@@ -17,13 +17,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code gcnc machines}: the machine profiles gcnc ships (or --tables holds), one shown, one file validated. */
 @Command(name = "machines", mixinStandardHelpOptions = true,
@@ -32,17 +29,12 @@ import picocli.CommandLine.Spec;
         subcommands = {MachinesCommand.Show.class, MachinesCommand.Validate.class},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:listed; every profile loads", "2:a profile is broken (reported where), or a broken table"})
-final class MachinesCommand implements Callable<Integer> {
+final class MachinesCommand extends StreamsCommand {
     @Mixin
     CommonOptions common;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+    Integer call(PrintWriter out, PrintWriter err) {
         Tables tables;
         List<String> names;
         try {
@@ -134,19 +126,15 @@ final class MachinesCommand implements Callable<Integer> {
     /** {@code gcnc machines show NAME}: the profile file as it is, after checking that it loads. */
     @Command(name = "show", mixinStandardHelpOptions = true,
             description = "Print a machine profile (a name or a .machine file) as written, once it has loaded.")
-    static final class Show implements Callable<Integer> {
+    static final class Show extends StreamsCommand {
         @Mixin
         CommonOptions common;
 
         @Parameters(paramLabel = "NAME|PATH", description = "A profile name (gcnc machines lists them) or a .machine file.")
         String name;
 
-        @Spec
-        CommandSpec spec;
-
         @Override
-        public Integer call() {
-            PrintWriter out = spec.commandLine().getOut();
+        Integer call(PrintWriter out, PrintWriter err) {
             try {
                 Tables tables = common.loadTables();
                 ProfileLoader.load(name, common.source(), tables, null);
@@ -169,7 +157,7 @@ final class MachinesCommand implements Callable<Integer> {
             description = "Load machine profiles as a run would and report every fault found, with its line.",
             exitCodeListHeading = "%nExit status:%n",
             exitCodeList = {"0:every profile is valid", "2:a profile has a fault (printed with its line and column)"})
-    static final class Validate implements Callable<Integer> {
+    static final class Validate extends StreamsCommand {
         @Mixin
         CommonOptions common;
 
@@ -179,13 +167,8 @@ final class MachinesCommand implements Callable<Integer> {
         @Parameters(arity = "1..*", paramLabel = "FILE", description = ".machine files to validate (or profile names).")
         List<String> files;
 
-        @Spec
-        CommandSpec spec;
-
         @Override
-        public Integer call() {
-            PrintWriter out = spec.commandLine().getOut();
-            PrintWriter err = spec.commandLine().getErr();
+        Integer call(PrintWriter out, PrintWriter err) {
             Reporter reporter = new Reporter(report.format, report.quiet, out, err, common.language());
             int status = validate(reporter);
             reporter.finish();

@@ -18,13 +18,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalInt;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code gcnc offsets wear T01 --measured X25.37 --programmed X25.40 PART.nc}: the test cut
@@ -33,13 +30,10 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "offsets", mixinStandardHelpOptions = true, subcommands = OffsetsCommand.Wear.class,
         description = "The tools' offsets: gcnc offsets wear adjusts a tool's wear from a measured test cut.")
-final class OffsetsCommand implements Callable<Integer> {
-    @Spec
-    CommandSpec spec;
-
+final class OffsetsCommand extends StreamsCommand {
     @Override
-    public Integer call() {
-        spec.commandLine().usage(spec.commandLine().getOut());
+    Integer call(PrintWriter out, PrintWriter err) {
+        spec.commandLine().usage(out);
         return ExitCode.USAGE;
     }
 
@@ -52,15 +46,12 @@ final class OffsetsCommand implements Callable<Integer> {
             exitCodeList = {"0:the wear was saved", "1:refused (a limit, a new error with the new wear, the program"
                     + " unclean before, the offset not used): nothing was saved",
                     "2:usage, unreadable program, unwritable offsets file, broken table or profile"})
-    static final class Wear implements Callable<Integer> {
+    static final class Wear extends StreamsCommand {
         @Mixin
         CommonOptions common;
 
         @Mixin
         StockOptions stock;
-
-        @Spec
-        CommandSpec spec;
 
         @Parameters(index = "0", paramLabel = "OFFSET", description = "The tool offset: T01, T0101 (the second pair) or 1.")
         String offset;
@@ -81,9 +72,7 @@ final class OffsetsCommand implements Callable<Integer> {
         boolean quiet;
 
         @Override
-        public Integer call() {
-            PrintWriter out = spec.commandLine().getOut();
-            PrintWriter err = spec.commandLine().getErr();
+        Integer call(PrintWriter out, PrintWriter err) {
             Reporter reporter = new Reporter(Reporter.Format.GNU, quiet, out, err, common.language());
             return RunCommand.loaded(reporter, out, err, common, true, setup -> run(setup, reporter));
         }

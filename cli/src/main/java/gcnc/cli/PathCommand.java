@@ -8,13 +8,10 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Reader;
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code gcnc path FILE}: the interpreted path, every move as the control makes it (docs/path.md),
@@ -29,12 +26,9 @@ import picocli.CommandLine.Spec;
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:no errors; the path was written", "1:the program has errors; nothing was written",
                 "2:usage, unreadable input, unwritable or refused output, broken table or profile"})
-final class PathCommand implements Callable<Integer> {
+final class PathCommand extends StreamsCommand {
     @Mixin
     CommonOptions common;
-
-    @Spec
-    CommandSpec spec;
 
     @Parameters(paramLabel = "FILE", description = "The G-code program; - reads standard input.")
     Path file;
@@ -52,9 +46,7 @@ final class PathCommand implements Callable<Integer> {
     boolean quiet;
 
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+    Integer call(PrintWriter out, PrintWriter err) {
         PathFormat chosen = switch (format.toLowerCase(java.util.Locale.ROOT)) {
             case "csv" -> PathFormat.CSV;
             case "json" -> PathFormat.JSON;

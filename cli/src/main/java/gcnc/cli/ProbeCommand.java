@@ -18,13 +18,10 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code gcnc controller probe}: what a real Galil answers, held against the reference (gcnc.send.Probe,
@@ -37,15 +34,12 @@ import picocli.CommandLine.Spec;
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:every fact asked was confirmed (or could not be asked)", "1:the unit contradicted a fact (named in"
                 + " the report)", "2:usage, connection, no confirmation, or the motion test could not start"})
-final class ProbeCommand implements Callable<Integer> {
+final class ProbeCommand extends StreamsCommand {
     /** The word the operator types to let the motion test move the axes. */
     static final String WORD = "move";
 
     @Mixin
     CommonOptions common;
-
-    @Spec
-    CommandSpec spec;
 
     static final class Target {
         @Option(names = "--port", paramLabel = "DEV", required = true, description = "Serial device of the controller.")
@@ -85,9 +79,7 @@ final class ProbeCommand implements Callable<Integer> {
     int speed;
 
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+    Integer call(PrintWriter out, PrintWriter err) {
         Reporter reporter = new Reporter(Reporter.Format.GNU, false, out, err, common.language());
         CommonOptions.Setup setup;
         try {

@@ -2,7 +2,6 @@ package gcnc.cli;
 
 import gcnc.Compiler;
 import gcnc.Session;
-import gcnc.dmc.Instruction;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Messages;
@@ -37,7 +36,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
-import java.util.function.Consumer;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -201,8 +199,6 @@ final class SendCommand implements Callable<Integer> {
         BlockTable blocks;
         gcnc.dmc.Form chosen;
         try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
-            outputs.mapSource(file.getFileName().toString(), file);
-            Consumer<Instruction> written = outputs.sink(asked, setup.profile().controllerLimits());
             String text;
             try (Reader in = SourceFiles.open(file)) {
                 text = CompiledRun.text(in); // read once: the compile's input and the comments a stop shows
@@ -210,10 +206,10 @@ final class SendCommand implements Callable<Integer> {
             Session session = setup.session().withPrograms(SourceFiles.programsFolder(file));
             // blended as the profile plans it; step mode runs one block at a time, so every motion
             // stops at its end there (docs/run.md, "Step mode")
-            Compiler.Result r = step ? session.compileExactStop(new StringReader(text), sim, written, seen)
-                    : session.compile(new StringReader(text), sim, false, written, seen);
             // a program form asked for that does not fit is E238, a finding of the compile's
-            chosen = r.ok() ? outputs.finish(r.diagnostics()) : null;
+            Compiler.Result r = session.compileInto(outputs, file.getFileName().toString(), file, new StringReader(text), sim,
+                    false, asked, step, seen);
+            chosen = r.ok() ? outputs.form() : null;
             if (!r.ok()) {
                 if (json) {
                     for (Diagnostic d : r.diagnostics().sorted()) {

@@ -6,14 +6,11 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code gcnc studio}: the local web editor (gcnc.studio, docs/studio.md); runs until stopped. */
 @Command(name = "studio", mixinStandardHelpOptions = true,
@@ -22,7 +19,7 @@ import picocli.CommandLine.Spec;
                 "Serves 127.0.0.1 only; prints the URL with this launch's token. Ctrl+C stops it."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:stopped", "2:usage, DIR is not a folder, the port is taken, or a broken table or profile"})
-final class StudioCommand implements Callable<Integer> {
+final class StudioCommand extends StreamsCommand {
     @Mixin
     CommonOptions common;
 
@@ -41,13 +38,8 @@ final class StudioCommand implements Callable<Integer> {
             description = "Run: the studio's virtual controller runs the motion X times faster than real time (default: ${DEFAULT-VALUE}).")
     double virtualSpeed;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+    Integer call(PrintWriter out, PrintWriter err) {
         Phrases say = new Phrases(common.language());
         if (!Files.isDirectory(dir)) {
             err.println("gcnc: " + say.get("studio.not_folder", dir));

@@ -8,25 +8,18 @@ import gcnc.machine.MFunction;
 import gcnc.tables.TableException;
 import gcnc.tables.Tables;
 import java.io.PrintWriter;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 @Command(name = "tables", mixinStandardHelpOptions = true,
         description = "Print the preparatory (G) and miscellaneous (M) functions of the machine's control"
                 + " (--machine, --control) and every diagnostic code.")
-final class TablesCommand implements Callable<Integer> {
+final class TablesCommand extends StreamsCommand {
     @Mixin
     CommonOptions common;
 
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
+    Integer call(PrintWriter out, PrintWriter err) {
         Tables t;
         Control c;
         try {

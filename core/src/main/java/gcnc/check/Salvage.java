@@ -73,6 +73,8 @@ final class Salvage {
                         n.surfaceSpeed = s;
                     } else if (s <= profile.maxRpm() && !(s > n.rpmClamp)) {
                         n.rpm = s;
+                    } else if (s > n.rpmClamp && n.rpmClamp <= profile.maxRpm() && functions.control().clampAboveLimit()) {
+                        n.rpm = n.rpmClamp; // E280: the control turns at the limit
                     }
                 }
             }

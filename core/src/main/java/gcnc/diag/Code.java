@@ -465,6 +465,11 @@ public enum Code {
     E261_DENFORD_SETUP_LINE(261),
     /** G43 / G44 / G49 (tool length compensation, machining-centre codes) on a lathe control that has none. */
     E262_MILL_TOOL_LENGTH_G(262),
+    /**
+     * (warning) An rpm S above the G50 (G92 on Fanuc system B) S limit on a control that clamps it
+     * ({@code spindle_above_clamp = clamp}: Fanuc, Haas): the spindle turns at the limit.
+     */
+    E280_S_CLAMPED_BY_LIMIT(280),
     /** During a cut, an insert edge that does not cut (its back) meets material first: turning back toward the tailstock too deep. */
     E320_SIM_BACK_OF_INSERT(320),
     /**

@@ -29,19 +29,13 @@ public final class GalilFrame {
         spindleIndex = channel(p.spindleAxis());
     }
 
-    /** 0 for A or X, 1 for B or Y, 2 for C or Z, 3 for D or W, 4.. for E..H. */
+    /** 0 for A or X, 1 for B or Y, 2 for C or Z, 3 for D or W, 4.. for E..H ({@link gcnc.dmc.Channels#index}). */
     public static int channel(char letter) {
-        switch (letter) {
-            case 'X': return 0;
-            case 'Y': return 1;
-            case 'Z': return 2;
-            case 'W': return 3;
-            default:
-                if (letter >= 'A' && letter <= 'H') {
-                    return letter - 'A';
-                }
-                throw new IllegalArgumentException("not a Galil channel: " + letter);
+        int i = gcnc.dmc.Channels.index(letter);
+        if (i < 0) {
+            throw new IllegalArgumentException("not a Galil channel: " + letter);
         }
+        return i;
     }
 
     /** The two vector channels in Galil order, e.g. {@code XY}. */

@@ -320,7 +320,7 @@ final class MachineCode {
             c.add(new Command.End());
         }
         if (spindleWaitUsed && io.atSpeed() instanceof MachineIo.AtSpeed.Input in) {
-            waitFor(c, SPINDLE_WAIT, "SPW", in.input(), in.timeoutSeconds(), List.of(), "SPINDLE NOT AT SPEED");
+            Subroutines.waitFor(c, SPINDLE_WAIT, "SPW", in.input(), in.timeoutSeconds(), List.of(), "SPINDLE NOT AT SPEED");
         }
         if (bufferWait > 0) {
             // #LMWAIT: back to itself while fewer slots are free than the next batch needs (COMALL VM, LM)
@@ -330,84 +330,27 @@ final class MachineCode {
         }
         if (turretUsed) {
             MachineIo.Turret t = io.turret().get();
-            waitFor(c, TURRET, "TUW", t.inPosition(), t.timeoutSeconds(), List.of(new Command.Output(t.strobe(), false)),
+            Subroutines.waitFor(c, TURRET, "TUW", t.inPosition(), t.timeoutSeconds(), List.of(new Command.Output(t.strobe(), false)),
                     "TURRET NOT IN POSITION");
         }
         if (stopUsed) {
-            stopRoutine(c, io.cycleStart());
+            Subroutines.stopRoutine(c, io.cycleStart());
         }
-        handler(c, "CMDERR", false, "COMMAND ERROR", LINE, "_TC");
-        handler(c, "LIMSWI", false, "LIMIT SWITCH", LINE);
-        handler(c, "POSERR", true, "POSITION ERROR", LINE);
-        handler(c, "AMPERR", true, "AMPLIFIER FAULT", LINE);
+        Subroutines.handler(c, "CMDERR", false, "COMMAND ERROR", LINE, "_TC");
+        Subroutines.handler(c, "LIMSWI", false, "LIMIT SWITCH", LINE);
+        Subroutines.handler(c, "POSERR", true, "POSITION ERROR", LINE);
+        Subroutines.handler(c, "AMPERR", true, "AMPLIFIER FAULT", LINE);
         c.add(new Command.Label(FAULT));
         c.add(new Command.Stop());
         c.add(new Command.AfterMotion(frame.plane()));
         c.add(volts(0));
         MRole stop = MRole.SPINDLE_STOP;
-        profile.control().mFor(stop).ifPresent(f -> c.addAll(GalilDialect.directives(profile, f.code())));
+        profile.control().mFor(stop).ifPresent(f -> c.addAll(MFunctions.directives(profile, f.code())));
         c.add(new Command.ClearStack()); // EN then ends the program, not the interrupted routine
         c.add(new Command.End());
         for (Command x : c) {
             sink.accept(new Instruction(x, Source.NONE));
         }
-    }
-
-    /**
-     * A wait for {@code input} with a timeout: {@code twt=TIME+ms}, a loop on the input and the
-     * clock, and on timeout {@code then}, the message and the stop ({@code JP #FAULT}).
-     */
-    private static void waitFor(List<Command> c, String label, String loop, int input, double seconds,
-                                List<Command> then, String message) {
-        String ok = label.substring(0, 2) + "OK";
-        c.add(new Command.Label(label));
-        c.add(new Command.SetDeadline(DEADLINE, GalilNumbers.round(seconds * 1000)));
-        c.add(new Command.Label(loop));
-        c.add(new Command.Jump(ok, Optional.of(new Command.Condition.InputIs(input, true))));
-        c.add(new Command.Jump(loop, Optional.of(new Command.Condition.Before(DEADLINE))));
-        c.addAll(then);
-        c.add(new Command.Message(message + " AT G-CODE LINE", List.of(LINE)));
-        c.add(new Command.Jump(FAULT, Optional.empty()));
-        c.add(new Command.Label(ok));
-        c.addAll(then);
-        c.add(new Command.End());
-    }
-
-    /**
-     * {@code #PSTOP}: the message, then the wait. With a cycle start input the button must first be
-     * seen released ({@code #PSR}: a button held, or an input that reads on unwired, does not end
-     * the stop at once), then pressed ({@code #PSW}); the host's {@code gstop=0} ends either loop.
-     * The routine leaves {@code gstop} at 0.
-     */
-    private static void stopRoutine(List<Command> c, java.util.OptionalInt cycleStart) {
-        Command.Condition waiting = new Command.Condition.VariableIs(STOP_FLAG, 1);
-        c.add(new Command.Label(PROGRAM_STOP));
-        c.add(new Command.Message("PROGRAM STOP AT G-CODE LINE", List.of(LINE)));
-        if (cycleStart.isPresent()) {
-            Command.Condition pressed = new Command.Condition.InputIs(cycleStart.getAsInt(), true);
-            c.add(new Command.Label("PSR"));
-            c.add(new Command.Jump("PSOK", Optional.of(new Command.Condition.VariableIs(STOP_FLAG, 0))));
-            c.add(new Command.Jump("PSR", Optional.of(pressed)));
-            c.add(new Command.Label("PSW"));
-            c.add(new Command.Jump("PSOK", Optional.of(pressed)));
-            c.add(new Command.Jump("PSW", Optional.of(waiting)));
-            c.add(new Command.Label("PSOK"));
-            c.add(new Command.SetVariable(STOP_FLAG, 0));
-        } else {
-            c.add(new Command.Label("PSW"));
-            c.add(new Command.Jump("PSW", Optional.of(waiting)));
-        }
-        c.add(new Command.End());
-    }
-
-    /** An automatic error subroutine: an abort for a following or amplifier fault, the message, the common stop. */
-    private static void handler(List<Command> c, String label, boolean abort, String message, String... operands) {
-        c.add(new Command.Label(label));
-        if (abort) {
-            c.add(new Command.Abort());
-        }
-        c.add(new Command.Message(message + " AT G-CODE LINE", List.of(operands)));
-        c.add(new Command.Jump(FAULT, Optional.empty()));
     }
 
     private static Span at(CheckedBlock b) {

@@ -137,7 +137,7 @@ final class ThesisDialect implements Dialect {
 
     private void outputs(List<MCall> calls, BlockWriter out) {
         for (MCall m : calls) {
-            List<Command> directives = GalilDialect.directives(profile, m.code());
+            List<Command> directives = MFunctions.directives(profile, m.code());
             if (directives.isEmpty()) {
                 out.emit(new Command.PassThroughM(m.code())); // §7.2: any other M passes through unpadded
             }

@@ -63,6 +63,9 @@ import java.util.TreeMap;
  * @param stop              what the control does at a program stop (M00, and M01 with the optional
  *                          stop switch on): the M codes it applies when the stop begins (keys
  *                          {@code stop.off}, {@code stop.optional}; docs/galil.md, "Program stops")
+ * @param clampAboveLimit   an rpm S above the G50 (G92 on system B) S limit runs at the limit, with
+ *                          the warning E280 (key {@code spindle_above_clamp = clamp}: Fanuc, Haas);
+ *                          else it is E048 (the thesis's control, Table 5 error 48)
  */
 public record Control(String name, String description, Set<Letter> letters, Map<Integer, GFunction> g,
                       Map<Integer, MFunction> m, List<GFunction> powerUp, Optional<Units> powerUpUnits,
@@ -70,7 +73,8 @@ public record Control(String name, String description, Set<Letter> letters, Map<
                       boolean increasingN, boolean noPointLiteral, boolean dwellPSeconds, BareG28 bareG28,
                       BlockDelete blockDelete, boolean builderM, double cycleRetractMm, Calls calls, boolean macros,
                       double peckRetractMm, boolean pocketWalls, boolean lineComments, Corners corners,
-                      boolean fanucDrilling, boolean drillRAbsolute, ProgramStop stop, boolean cutFirstMovePositions) {
+                      boolean fanucDrilling, boolean drillRAbsolute, ProgramStop stop, boolean cutFirstMovePositions,
+                      boolean clampAboveLimit) {
     /**
      * A program stop (M00; M01 when the optional stop switch is on) as the control makes it: the
      * axes at rest, then {@code off} applied (Haas: M05 and M09, the spindle stopped and the coolant
@@ -99,7 +103,7 @@ public record Control(String name, String description, Set<Letter> letters, Map<
         return new Control(name, description, letters, g, m, powerUp, powerUpUnits, powerUpTool, powerUpOffset,
                 clampFromG50, chuckByProgram, increasingN, noPointLiteral, dwellPSeconds, bareG28, blockDelete,
                 builderM, cycleRetractMm, calls, macros, peckRetractMm, pocketWalls, lineComments, corners,
-                fanucDrilling, drillRAbsolute, new ProgramStop(stop.off(), on), cutFirstMovePositions);
+                fanucDrilling, drillRAbsolute, new ProgramStop(stop.off(), on), cutFirstMovePositions, clampAboveLimit);
     }
 
     /** Whether M code {@code code} stops the program here: M00 always, M01 when the optional stop switch is on. */

@@ -26,7 +26,7 @@ public final class ControlLoader {
             "spindle_clamp", "chuck", "sequence_numbers", "no_point", "dwell.p", "g28.bare", "block_delete",
             "m.unlisted", "cycle.retract_mm", "call.p", "call.depth", "macros",
             "cycle.peck_retract_mm", "cycle.pocket_allowance", "cycle.type1_first_move", "comments", "g01.corner",
-            "cycle.drill_words", "cycle.drill_r", "stop.off", "stop.optional");
+            "cycle.drill_words", "cycle.drill_r", "stop.off", "stop.optional", "spindle_above_clamp");
 
     private ControlLoader() {
     }
@@ -108,7 +108,8 @@ public final class ControlLoader {
                 f.choice("cycle.drill_words", "haas", "haas", "fanuc").equals("fanuc"),
                 f.choice("cycle.drill_r", "incremental", "incremental", "absolute").equals("absolute"),
                 new Control.ProgramStop(stopOff(f, m), f.choice("stop.optional", "off", "off", "on").equals("on")),
-                f.choice("cycle.type1_first_move", "depth_axis", "depth_axis", "positions").equals("positions"));
+                f.choice("cycle.type1_first_move", "depth_axis", "depth_axis", "positions").equals("positions"),
+                f.choice("spindle_above_clamp", "alarm", "alarm", "clamp").equals("clamp"));
     }
 
     /**

@@ -4,7 +4,6 @@ import static gcnc.machine.ProfileFile.written;
 
 import gcnc.diag.Phrase;
 import gcnc.ir.Point;
-import gcnc.tables.Offset;
 import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
@@ -29,13 +28,7 @@ public final class ProfileLoader {
     public static final String DEFAULT = "generic";
 
     /** The largest value of a Galil register (positions, VS, VA, VD are 32-bit). */
-    private static final double REGISTER_MAX = Integer.MAX_VALUE;
-    /**
-     * Counts per mm gcnc takes: one count from 1 mm (the thesis machine has 1.5 counts per mm)
-     * down to 1 nm; outside that a value is a slip (a zero too many or too few), E402.
-     */
-    private static final double MIN_COUNTS_PER_MM = 1;
-    private static final double MAX_COUNTS_PER_MM = 1_000_000;
+    static final double REGISTER_MAX = Integer.MAX_VALUE;
     /** Spindle speed (and drive gain per volt) gcnc takes: up to 100,000 r/min, beyond any lathe spindle. */
     private static final double MAX_RPM = 100_000;
     /** feed.per_f: counts/s per unit of F (the thesis machine: 20; by default counts per mm / 60). */
@@ -133,21 +126,21 @@ public final class ProfileLoader {
         boolean chuckByProgram = f.choice("chuck.driven_by", c.chuckByProgram() ? "program" : "operator",
                 "program", "operator").equals("program");
         Blending.read(f, c); // checked here, at the key's line; the planner reads it again (Blending.of)
-        Axis x = axis(f, "x");
-        Axis z = axis(f, "z");
-        if (channel(x.galil()) == channel(z.galil())) {
+        Axis x = ProfileAxes.axis(f, "x");
+        Axis z = ProfileAxes.axis(f, "z");
+        if (ProfileAxes.channel(x.galil()) == ProfileAxes.channel(z.galil())) {
             throw f.fault(f.required("z.galil"), Phrase.SAME_CHANNEL.arg());
         }
-        char spindleAxis = spindleAxis(f, x, z);
+        char spindleAxis = ProfileAxes.spindleAxis(f, x, z);
         boolean counts = f.choice("offsets.unit", "mm", "mm", "counts").equals("counts");
-        Point home = position(f, "home", x, z);
-        Point machineZero = f.entry("machine_zero").isPresent() ? position(f, "machine_zero", x, z) : home;
+        Point home = ProfileAxes.position(f, "home", x, z);
+        Point machineZero = f.entry("machine_zero").isPresent() ? ProfileAxes.position(f, "machine_zero", x, z) : home;
         for (int n = 2; n <= 4; n++) {
             if (f.entry("reference." + n).isPresent()) {
-                position(f, "reference." + n, x, z); // G30's reference points, read by MachineProfile.reference
+                ProfileAxes.position(f, "reference." + n, x, z); // G30's reference points, read by MachineProfile.reference
             }
         }
-        Map<Integer, Point> tools = toolOffsets(f, data, counts, x, z);
+        Map<Integer, Point> tools = ProfileOffsets.toolOffsets(f, data, counts, x, z);
         boolean diameterX = f.choice("x.programming", "diameter", "diameter", "radius").equals("diameter");
         ToolWear wear = WearReader.read(f, f.text("name"), tools, counts, x, offsets, newOffsets);
         lengthsInCounts(f, Math.max(x.countsPerMm(), z.countsPerMm()));
@@ -166,9 +159,9 @@ public final class ProfileLoader {
                 register(f, "vector.deceleration", 256000, Phrase.REGISTER_DECELERATION),
                 f.within("spindle.max_rpm", 1, MAX_RPM), f.within("spindle.rpm_per_volt", 1, MAX_RPM), spindleAxis,
                 f.choice("tool_post", "front", "front", "rear").equals("rear"),
-                workOffsets(f, counts, x, z, model), tools, toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
-                machineZero, chuckByProgram, model, encoder(f, x, z),
-                noses(f, counts, x), threadChamfer(f), wear);
+                ProfileOffsets.workOffsets(f, counts, x, z, model), tools, ProfileOffsets.toolCount(f, tools), outputs(f), feedPerF(f), f, c, units,
+                machineZero, chuckByProgram, model, ProfileAxes.encoder(f, x, z),
+                ProfileOffsets.noses(f, counts, x), threadChamfer(f), wear);
         GalilModels.holds(p, f); // channels, speeds, accelerations and outputs the model has (E421-E424)
         MachineIo.read(f, spindleAxis, p.tools(), p.galilModel()); // the spindle drive, turret, homing (E424, E430-E434)
         return p;
@@ -233,37 +226,6 @@ public final class ProfileLoader {
         return new ThreadChamfer(leads, angle);
     }
 
-    /** The largest encoder resolution gcnc accepts: 2^20 counts per revolution. */
-    private static final int MAX_ENCODER_COUNTS = 1 << 20;
-
-    /**
-     * {@code spindle.encoder} (counts per revolution, a whole number 4 to 2^20) and
-     * {@code spindle.encoder_axis} (the channel whose main encoder reads it, by default
-     * {@code spindle.axis}; not a channel that moves the tool); null when the profile has none.
-     */
-    private static SpindleEncoder encoder(ProfileFile f, Axis x, Axis z) throws TableException {
-        if (f.entry("spindle.encoder").isEmpty()) {
-            if (f.entry("spindle.encoder_axis").isPresent()) {
-                throw f.fault(f.required("spindle.encoder_axis"),
-                        Phrase.ENCODER_AXIS_NEEDS_ENCODER.arg());
-            }
-            return null;
-        }
-        ProfileFile.Entry e = f.required("spindle.encoder");
-        double counts = f.number(e);
-        if (counts != Math.rint(counts) || counts < 4 || counts > MAX_ENCODER_COUNTS) {
-            throw f.fault(e, Phrase.ENCODER_COUNTS.with(MAX_ENCODER_COUNTS));
-        }
-        char channel = channelLetter(f, "spindle.encoder_axis", f.text("spindle.axis", "C"));
-        for (Axis a : new Axis[] {x, z}) {
-            if (channel(channel) == channel(a.galil())) {
-                throw f.fault(f.entry("spindle.encoder_axis").orElse(e), Phrase.ENCODER_ON_TOOL_AXIS.with(channel,
-                        a == x ? "X" : "Z", a == x ? "x" : "z", a.galil()));
-            }
-        }
-        return new SpindleEncoder((int) counts, channel);
-    }
-
     /** The control the profile names (or {@code override}); a fault in it is also shown at the profile's key. */
     private static Control control(ProfileFile f, TableSource tables, String override) throws TableException {
         String name = override != null ? override : f.text("control", "thesis-2004");
@@ -287,76 +249,6 @@ public final class ProfileLoader {
         return f.within("feed.per_f", MIN_PER_F, MAX_PER_F);
     }
 
-    private static Axis axis(ProfileFile f, String a) throws TableException {
-        char letter = channelLetter(f, a + ".galil", null);
-        double perMm = f.within(a + ".counts_per_mm", MIN_COUNTS_PER_MM, MAX_COUNTS_PER_MM);
-        double perInch = f.entry(a + ".counts_per_inch").isPresent()
-                ? f.within(a + ".counts_per_inch", MIN_COUNTS_PER_MM * 25.4, MAX_COUNTS_PER_MM * 25.4) : perMm * 25.4;
-        double sign = f.number(a + ".sign", 1);
-        if (sign != 1 && sign != -1) {
-            throw f.fault(f.required(a + ".sign"), Phrase.SIGN.with(a));
-        }
-        ProfileFile.Entry te = f.required(a + ".travel");
-        double[] travel = f.pair(te);
-        if (travel[0] >= travel[1]) {
-            throw f.fault(te, Phrase.TRAVEL_ORDER.with(a, "min, max"));
-        }
-        for (double end : travel) {
-            if (Math.abs(end * perMm) > REGISTER_MAX) {
-                throw f.fault(te, Phrase.TRAVEL_REGISTER.with(a, written(end),
-                        written(Math.rint(end * perMm))));
-            }
-        }
-        return new Axis(letter, perMm, perInch, (int) sign, travel[0] * perMm, travel[1] * perMm);
-    }
-
-    /** One Galil channel letter; {@code otherwise} when the key is absent (null: required). */
-    private static char channelLetter(ProfileFile f, String key, String otherwise) throws TableException {
-        String letter = otherwise == null ? f.text(key) : f.text(key, otherwise);
-        if (!letter.matches("[A-HXYZW]")) {
-            throw f.fault(f.required(key), Phrase.CHANNEL_LETTER.with(key, "A-H, X, Y, Z, W"));
-        }
-        return letter.charAt(0);
-    }
-
-    /** The spindle's OF channel, which cannot be one of the two that move the tool. */
-    private static char spindleAxis(ProfileFile f, Axis x, Axis z) throws TableException {
-        char s = channelLetter(f, "spindle.axis", "C");
-        for (Axis a : new Axis[] {x, z}) {
-            if (channel(s) == channel(a.galil())) {
-                throw f.fault(f.required("spindle.axis"), Phrase.SPINDLE_ON_TOOL_AXIS.with(s,
-                        a == x ? "X" : "Z", a == x ? "x" : "z", a.galil()));
-            }
-        }
-        return s;
-    }
-
-    /** A Galil channel's number: X, Y, Z, W are the first four channels, A, B, C, D. */
-    private static int channel(char letter) {
-        int xyzw = "XYZW".indexOf(letter);
-        return xyzw >= 0 ? xyzw : letter - 'A';
-    }
-
-    /**
-     * A machine position {@code x, z} in mm (home, machine_zero), in counts. It must be inside the
-     * travel: the machine cannot start at, or return to, a place its axes cannot reach.
-     */
-    private static Point position(ProfileFile f, String key, Axis x, Axis z) throws TableException {
-        ProfileFile.Entry e = f.required(key);
-        double[] v = f.pair(e);
-        inTravel(f, e, "x", v[0]);
-        inTravel(f, e, "z", v[1]);
-        return new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm());
-    }
-
-    private static void inTravel(ProfileFile f, ProfileFile.Entry e, String axis, double mm) throws TableException {
-        double[] travel = f.pair(axis + ".travel");
-        if (mm < travel[0] || mm > travel[1]) {
-            throw f.fault(e, Phrase.OUTSIDE_TRAVEL.with(e.key(), axis.toUpperCase(), written(mm), axis,
-                    written(travel[0]), written(travel[1])));
-        }
-    }
-
     /**
      * A value the backend writes into a 32-bit Galil register (VS, VA, VD): below 1 it rounds to
      * 0, which the controller refuses, above 2^31 - 1 it does not fit. Either way every move, or
@@ -375,119 +267,11 @@ public final class ProfileLoader {
         return f.entry(key).isPresent() ? register(f, key, what) : otherwise;
     }
 
-    /**
-     * {@code work.G54 = x, z}, or {@code x, face} ({@code face} alone: X 0): Z on the face of the blank (chuck.face_z + the
-     * stick-out, in mm whatever offsets.unit says), which a run's own blank moves
-     * ({@link MachineProfile#withStickout}); {@link MachineModel#workZero} checked it has a chuck and a blank.
-     */
-    private static Map<Integer, Point> workOffsets(ProfileFile f, boolean counts, Axis x, Axis z, MachineModel model)
-            throws TableException {
-        Map<Integer, Point> work = new HashMap<>();
-        for (ProfileFile.Entry e : f.withPrefix("work.")) {
-            int g = Integer.parseInt(e.key().substring("work.G".length())); // ProfileKeys: work.G54 .. work.G59
-            if (model.workZero().atFace().contains(g)) {
-                String[] xz = e.value().split(",", -1);
-                double xValue = xz.length == 1 ? 0 : f.number(e, xz[0]);
-                double faceMm = model.chuck().orElseThrow().faceZ() + model.workZero().stickout();
-                work.put(g, new Point(counts ? xValue : xValue * x.countsPerMm(), faceMm * z.countsPerMm()));
-            } else {
-                work.put(g, offset(f, e, counts, x, z));
-            }
-        }
-        for (int g = 54; g <= 59; g++) {
-            work.putIfAbsent(g, Point.ORIGIN);
-        }
-        return work;
-    }
-
-    private static Map<Integer, Point> toolOffsets(ProfileFile f, Tables data, boolean counts, Axis x, Axis z)
-            throws TableException {
-        Map<Integer, Point> tools = new HashMap<>();
-        String toolTable = f.choice("tools.table", "none", "none", "thesis");
-        if (toolTable.equals("thesis")) {
-            List<Offset> t8 = data.toolOffsets();
-            for (int i = 0; i < t8.size(); i++) {
-                tools.put(i + 1, offset(new double[] {t8.get(i).x(), t8.get(i).z()}, counts, x, z));
-            }
-        }
-        Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
-        for (ProfileFile.Entry e : f.withPrefix("tool.")) {
-            int n = numberOf(f, e, "tool.", seen);
-            if (n < 1) {
-                throw f.faultAtKey(e, Phrase.TOOL_OFFSET_FROM_ONE.with(e.key()));
-            }
-            tools.put(n, offset(f, e, counts, x, z));
-        }
-        if (f.entry("tools.offsets").isPresent()) {
-            int n = whole(f, "tools.offsets", Phrase.TOOLS_OFFSETS_RANGE);
-            for (int i = 1; i <= n; i++) {
-                tools.putIfAbsent(i, Point.ORIGIN);
-            }
-        }
-        return tools;
-    }
-
-    /**
-     * {@code nose.N = RADIUS, TIP}: the nose radius (mm, or counts with offsets.unit = counts; at
-     * least 0, below 25 mm) and the tip direction (a whole number 0 to 9) of tool offset N
-     * (docs/nose-compensation.md). The radius is turned into counts along X, as arcs are.
-     */
-    private static Map<Integer, Nose> noses(ProfileFile f, boolean counts, Axis x) throws TableException {
-        Map<Integer, Nose> noses = new HashMap<>();
-        Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
-        for (ProfileFile.Entry e : f.withPrefix("nose.")) {
-            int n = numberOf(f, e, "nose.", seen);
-            if (n < 1) {
-                throw f.faultAtKey(e, Phrase.NOSE_FROM_ONE.with(e.key()));
-            }
-            double[] v = f.pair(e);
-            double mm = counts ? v[0] / x.countsPerMm() : v[0];
-            if (!(mm >= 0) || mm >= 25) {
-                throw f.fault(e, Phrase.NOSE_RADIUS.with(written(v[0]), e.key()));
-            }
-            if (v[1] != Math.rint(v[1]) || v[1] < 0 || v[1] > 9) {
-                throw f.fault(e, Phrase.TIP_DIRECTION.with(written(v[1]), e.key()));
-            }
-            noses.put(n, new Nose(mm * x.countsPerMm(), (int) v[1]));
-        }
-        // a station of the tool table that names its nose gives it to the offset of its number (T0303)
-        for (ToolTable.Station s : ToolTable.read(f).values()) {
-            if (!s.hasNose()) {
-                continue;
-            }
-            if (seen.containsKey(s.number())) {
-                throw f.faultAtKey(s.entry(), Phrase.NOSE_TWICE.with(s.number()));
-            }
-            double radius = Double.isNaN(s.noseRadius()) ? 0 : s.noseRadius();
-            double mm = counts ? radius / x.countsPerMm() : radius;
-            noses.put(s.number(), new Nose(mm * x.countsPerMm(), Math.max(0, s.tip())));
-        }
-        return noses;
-    }
-
-    /** Turret stations: T numbers 1..count; by default the highest tool offset number. */
-    private static int toolCount(ProfileFile f, Map<Integer, Point> tools) throws TableException {
-        if (f.entry("tools.count").isEmpty()) {
-            return tools.keySet().stream().mapToInt(i -> i).max().orElse(1);
-        }
-        return whole(f, "tools.count", Phrase.TOOLS_COUNT_RANGE);
-    }
-
-    /** A count of tools or offsets, which T's two-digit fields bound to 1..99. */
-    private static int whole(ProfileFile f, String key, Phrase rule) throws TableException {
-        ProfileFile.Entry e = f.required(key);
-        double n = f.number(e);
-        if (n != Math.rint(n) || n < 1 || n > 99) {
-            throw f.fault(e, rule.with(written(n)));
-        }
-        return (int) n;
-    }
-
     private static Map<Integer, List<String>> outputs(ProfileFile f) throws TableException {
         Map<Integer, List<String>> outputs = new HashMap<>();
         Map<Integer, ProfileFile.Entry> seen = new HashMap<>();
         for (ProfileFile.Entry e : f.withPrefix("m.")) {
-            int m = numberOf(f, e, "m.", seen);
+            int m = ProfileOffsets.numberOf(f, e, "m.", seen);
             List<String> dirs = new ArrayList<>();
             for (String d : e.value().split(",")) {
                 String t = d.trim();
@@ -499,24 +283,6 @@ public final class ProfileLoader {
             outputs.put(m, List.copyOf(dirs));
         }
         return outputs;
-    }
-
-    /**
-     * The number that ends a numbered key ({@code tool.3}, {@code m.03}; ProfileKeys has checked
-     * that it is digits). Two keys for one number are a fault rather than one silently winning.
-     */
-    private static int numberOf(ProfileFile f, ProfileFile.Entry e, String prefix, Map<Integer, ProfileFile.Entry> seen)
-            throws TableException {
-        int n = Integer.parseInt(e.key().substring(prefix.length()));
-        ProfileFile.Entry before = seen.putIfAbsent(n, e);
-        if (before != null) {
-            throw f.faultAtKey(e, Phrase.NUMBER_AGAIN.with(e.key(), n, before.key(), before.line()));
-        }
-        return n;
-    }
-
-    private static Point offset(double[] v, boolean counts, Axis x, Axis z) {
-        return counts ? new Point(v[0], v[1]) : new Point(v[0] * x.countsPerMm(), v[1] * z.countsPerMm());
     }
 
     /** The simulator's lengths in mm (chuck, tailstock, blank, spindle centre), each of which becomes counts. */
@@ -538,21 +304,4 @@ public final class ProfileLoader {
         }
     }
 
-    /**
-     * An offset as {@link #offset}, which must fit a 32-bit position register in counts (E403 at
-     * its value): an offset past it would overflow every position it is added to.
-     */
-    private static Point offset(ProfileFile f, ProfileFile.Entry e, boolean counts, Axis x, Axis z)
-            throws TableException {
-        double[] v = f.pair(e);
-        Point p = offset(v, counts, x, z);
-        double[] inCounts = {p.x(), p.z()};
-        for (int k = 0; k < 2; k++) {
-            if (Math.abs(inCounts[k]) > REGISTER_MAX) {
-                throw f.fault(e, gcnc.diag.Code.E403_PROFILE_COUNTS_OVERFLOW, e.key(), written(v[k]),
-                        written(Math.rint(inCounts[k])), written(REGISTER_MAX));
-            }
-        }
-        return p;
-    }
 }

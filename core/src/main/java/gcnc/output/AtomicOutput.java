@@ -130,13 +130,10 @@ public final class AtomicOutput implements AutoCloseable {
     private final Path temp;
     private final OutputStream out;
     /** Our own buffer for {@link #line}: no lock and no copy per line (a compile writes millions). */
-    private final byte[] buffer = new byte[1 << 16];
-    private int buffered;
+    private final LineBuffer lines;
     private Writer writer;
     private boolean closed;
     private boolean committed;
-    /** The first write error, or null. */
-    private IOException failure;
     /** The SHA-256 of every byte written once {@link #hashed} is called, for the source map to record which DMC it belongs to. */
     private final java.security.MessageDigest sha = sha256Digest();
     private java.security.DigestOutputStream digesting;
@@ -168,6 +165,7 @@ public final class AtomicOutput implements AutoCloseable {
             keepPermissions();
         }
         this.out = open(opener);
+        this.lines = new LineBuffer(out);
     }
 
     private AtomicOutput(OutputStream stream) throws IOException {
@@ -176,6 +174,7 @@ public final class AtomicOutput implements AutoCloseable {
         this.stream = stream;
         this.temp = TempFiles.create(null, "gcnc-", ".part");
         this.out = open(p -> Files.newOutputStream(p));
+        this.lines = new LineBuffer(out);
     }
 
     /**
@@ -270,110 +269,23 @@ public final class AtomicOutput implements AutoCloseable {
         return writer;
     }
 
+
     /**
-     * Writes one line with an LF end (decision D5: files use LF; the sender sends CR). The line is
-     * encoded by the String itself (a copy for ASCII text) and copied into the buffer: a loop over
-     * its characters here was a tenth of a long compile's main thread.
+     * Writes one line with an LF end (decision D5: files use LF; the sender sends CR); after a write
+     * failure nothing more is written, and the failure is thrown at commit ({@link LineBuffer}).
      */
     public void line(String text) {
-        if (failure != null) {
-            return;
-        }
-        try {
-            int n = text.length();
-            if (n < ASCII_DIRECT) {
-                // a DMC line is short ASCII: its chars are its bytes, copied without an array per line
-                if (buffered + n + 1 > buffer.length) {
-                    drain();
-                }
-                int start = buffered;
-                int i = 0;
-                for (char c; i < n && (c = text.charAt(i)) < 0x80; i++) {
-                    buffer[buffered++] = (byte) c;
-                }
-                if (i == n) {
-                    buffer[buffered++] = '\n';
-                    return;
-                }
-                buffered = start; // not ASCII: encoded below
-            }
-            byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
-            if (buffered + bytes.length + 1 > buffer.length) {
-                drain();
-            }
-            if (bytes.length + 1 > buffer.length) {
-                out.write(bytes);
-                out.write('\n');
-                return;
-            }
-            System.arraycopy(bytes, 0, buffer, buffered, bytes.length);
-            buffered += bytes.length;
-            buffer[buffered++] = '\n';
-        } catch (IOException e) {
-            failure = e;
-        }
+        lines.line(text);
     }
 
-    /** Lines shorter than this are copied char by char while they are ASCII. */
-    private static final int ASCII_DIRECT = 256;
-
-    /**
-     * Writes a line of two whole numbers, "{@code a b}" (a source map entry), their digits straight
-     * into the buffer: a map has an entry per block, and making a String of each showed in the
-     * profile of a long compile.
-     */
+    /** Writes a line of two whole numbers, "{@code a b}" (a source map entry), digits straight into the buffer. */
     public void line(long a, long b) {
-        line(a, 0, b);
+        lines.line(a, 0, b);
     }
 
     /** "{@code a.k b}", or "{@code a b}" when {@code k} is 0: a map entry that starts inside a packed line. */
     public void line(long a, int k, long b) {
-        if (failure != null) {
-            return;
-        }
-        try {
-            if (buffered + 54 > buffer.length) {
-                drain();
-            }
-            digits(a);
-            if (k != 0) {
-                buffer[buffered++] = '.';
-                digits(k);
-            }
-            buffer[buffered++] = ' ';
-            digits(b);
-            buffer[buffered++] = '\n';
-        } catch (IOException e) {
-            failure = e;
-        }
-    }
-
-    private void digits(long v) {
-        if (v < 0) {
-            buffer[buffered++] = '-';
-            if (v == Long.MIN_VALUE) {
-                byte[] rest = Long.toString(v).substring(1).getBytes(StandardCharsets.US_ASCII);
-                System.arraycopy(rest, 0, buffer, buffered, rest.length);
-                buffered += rest.length;
-                return;
-            }
-            v = -v;
-        }
-        int start = buffered;
-        do {
-            buffer[buffered++] = (byte) ('0' + v % 10);
-            v /= 10;
-        } while (v > 0);
-        for (int i = start, j = buffered - 1; i < j; i++, j--) {
-            byte t = buffer[i];
-            buffer[i] = buffer[j];
-            buffer[j] = t;
-        }
-    }
-
-    private void drain() throws IOException {
-        out.write(buffer, 0, buffered);
-        buffered = 0;
+        lines.line(a, k, b);
     }
 
     public void commit() throws IOException {
@@ -457,8 +369,8 @@ public final class AtomicOutput implements AutoCloseable {
 
     /** Ends the temporary file: the first write failure, or one on closing, is thrown. */
     private void finish() throws IOException {
-        if (failure != null) {
-            throw failure;
+        if (lines.failure() != null) {
+            throw lines.failure();
         }
         closeStreams();
     }
@@ -550,9 +462,7 @@ public final class AtomicOutput implements AutoCloseable {
         if (writer != null) {
             writer.close();
         } else {
-            if (failure == null) {
-                drain();
-            }
+            lines.flush();
             out.close();
         }
     }

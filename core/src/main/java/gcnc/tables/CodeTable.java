@@ -28,17 +28,21 @@ public final class CodeTable {
         this.entries = List.copyOf(entries);
     }
 
+    /** The row's diagnostic code ({@code code}, its number), a located fault when there is no such code. */
+    static Code code(Csv.Row r) throws TableException {
+        try {
+            return Code.byNumber(r.integer("code"));
+        } catch (IllegalArgumentException e) {
+            throw r.faultAt("code", Phrase.NO_SUCH_CODE.with(r.integer("code")));
+        }
+    }
+
     public static CodeTable load(TableSource source) throws TableException {
         String name = "errors.csv";
         Csv csv = Csv.parse(source.describe(name), source.read(name));
         List<Entry> entries = new ArrayList<>();
         for (Csv.Row r : csv.rows()) {
-            Code code;
-            try {
-                code = Code.byNumber(r.integer("code"));
-            } catch (IllegalArgumentException e) {
-                throw r.faultAt("code", Phrase.NO_SUCH_CODE.with(r.integer("code")));
-            }
+            Code code = code(r);
             entries.add(new Entry(code, severity(r), r.get("en"), r.get("es"), explanation(r)));
         }
         return new CodeTable(entries);

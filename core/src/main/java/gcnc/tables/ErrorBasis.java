@@ -64,12 +64,7 @@ public final class ErrorBasis {
         Csv csv = Csv.parse(source.describe(FILE), source.read(FILE));
         Map<Code, Row> rows = new EnumMap<>(Code.class);
         for (Csv.Row r : csv.rows()) {
-            Code code;
-            try {
-                code = Code.byNumber(r.integer("code"));
-            } catch (IllegalArgumentException e) {
-                throw r.faultAt("code", Phrase.NO_SUCH_CODE.with(r.integer("code")));
-            }
+            Code code = CodeTable.code(r);
             Row row = new Row(code, value(r, "source", Source.class), value(r, "control", Behaviour.class),
                     r.get("en"), r.get("es"));
             rows.put(code, row); // ErrorBasisTest keeps each code to one row

@@ -111,14 +111,12 @@ final class Analysis {
         JsonObject doc = new JsonObject();
         Compiler.Result r;
         try (FormOutputs outputs = FormOutputs.open(program, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
-            outputs.mapSource(program.getFileName().toString(), program); // its name and SHA-256, as gcnc compile writes them
             try (Reader in = Session.decode(Files.newInputStream(program))) {
-                // the form that fits the profile's controller, as gcnc compile chooses it
-                r = session.withPrograms(Optional.ofNullable(program.getParent())).compile(in,
-                        Optional.of(session.simulation()), false, outputs.sink(Optional.empty(), session.profile().controllerLimits()));
-            }
-            if (r.ok()) {
-                outputs.finish(r.diagnostics());
+                // the form that fits the profile's controller, as gcnc compile chooses it; the maps name the
+                // program and its SHA-256, as gcnc compile writes them
+                r = session.withPrograms(Optional.ofNullable(program.getParent())).compileInto(outputs,
+                        program.getFileName().toString(), program, in, Optional.of(session.simulation()), false,
+                        Optional.empty(), false, gcnc.CompileObserver.NONE);
             }
             doc.add("diagnostics", report(name, r));
             doc.addProperty("ok", r.ok());

@@ -7,14 +7,9 @@ import gcnc.Session;
 import gcnc.diag.Messages;
 import gcnc.output.AtomicOutput;
 import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * The studio's JSON API (docs/studio.md lists each endpoint with its request and answer). Reads
@@ -35,17 +30,14 @@ final class Api implements AutoCloseable {
     }
 
     private volatile Engine engine;
-    /** The open event streams, closed when the studio stops. */
-    private final Set<OutputStream> streams = ConcurrentHashMap.newKeySet();
     /** What the event streams carry besides the list of files: a run's events. */
     private final EventHub hub = new EventHub();
     /** The Run screen: MEMORY mode on a controller. */
     private final Runs runs;
     /** The test-cut form after a run. */
     private final TestCuts testCuts;
-    private volatile boolean closed;
-    /** Each stream holds one of the server's threads: a few pages, and the rest keep answering. */
-    static final int MAX_STREAMS = 3;
+    /** GET /api/events: the open event streams, closed when the studio stops. */
+    private final EventStreams events;
     /**
      * The checks, simulations and compiles that run at once (each may hold a program of 8 MB and its
      * path): the rest wait their turn, while the light endpoints (the file list, save, Run's hold and
@@ -63,6 +55,7 @@ final class Api implements AutoCloseable {
             return new Runs.Context(e.session(), e.analysis(), e.profileFile());
         }, messages, hub, config.running());
         this.testCuts = new TestCuts(workspace, messages);
+        this.events = new EventStreams(hub, ex -> files(ex).toString());
     }
 
     private Engine engine(Session session, ProfileEdit profile, String profileFile) {
@@ -82,7 +75,7 @@ final class Api implements AutoCloseable {
             case "info" -> Http.json(ex, 200, info(get(ex)));
             case "files" -> Http.json(ex, 200, files(get(ex)));
             case "file" -> Http.json(ex, 200, open(get(ex)));
-            case "events" -> events(get(ex));
+            case "events" -> events.serve(get(ex));
             case "save" -> Http.json(ex, 200, save(post(ex)));
             case "check" -> timed(ex, () -> check(post(ex)));
             case "simulate" -> timed(ex, () -> simulate(post(ex)));
@@ -394,73 +387,11 @@ final class Api implements AutoCloseable {
         return o;
     }
 
-    /**
-     * GET /api/events: server-sent events. {@code files} whenever the list of programs changes
-     * (a program made or removed outside the studio), so the page's list stays true; {@code run} for
-     * each event of a run (docs/studio.md, "Run"); a comment every ten seconds of quiet keeps the
-     * stream open. The page's EventSource reconnects by itself.
-     */
-    private void events(HttpExchange ex) throws IOException, Http.Fail {
-        if (streams.size() >= MAX_STREAMS) {
-            throw new Http.Fail(503, "too many event streams open (" + MAX_STREAMS + "); close another studio tab");
-        }
-        ex.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
-        ex.getResponseHeaders().set("Cache-Control", "no-store");
-        ex.sendResponseHeaders(200, 0);
-        OutputStream out = ex.getResponseBody();
-        streams.add(out);
-        java.util.concurrent.BlockingQueue<String> queue = hub.join();
-        try {
-            String last = null;
-            long nextList = 0;
-            long quietSince = System.nanoTime();
-            while (!closed) {
-                long now = System.nanoTime();
-                if (now >= nextList) {
-                    // the folder is looked at once a second
-                    String files = files(ex).toString();
-                    if (!files.equals(last)) {
-                        out.write(("event: files\ndata: " + files + "\n\n").getBytes(StandardCharsets.UTF_8));
-                        last = files;
-                        quietSince = now;
-                    } else if (now - quietSince > 10_000_000_000L) {
-                        out.write(": still here\n\n".getBytes(StandardCharsets.UTF_8));
-                        quietSince = now;
-                    }
-                    out.flush();
-                    nextList = now + 1_000_000_000L;
-                }
-                String frame = queue.poll(Math.max(1, (nextList - System.nanoTime()) / 1_000_000), java.util.concurrent.TimeUnit.MILLISECONDS);
-                if (frame != null) {
-                    // what has come meanwhile goes in one write
-                    StringBuilder b = new StringBuilder(frame);
-                    for (String more = queue.poll(); more != null && b.length() < 1 << 16; more = queue.poll()) {
-                        b.append(more);
-                    }
-                    out.write(b.toString().getBytes(StandardCharsets.UTF_8));
-                    out.flush();
-                    quietSince = System.nanoTime();
-                }
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } finally {
-            hub.leave(queue);
-            streams.remove(out);
-        }
-    }
-
     @Override
     public void close() {
-        closed = true;
+        events.stop();
         runs.close();
-        for (OutputStream s : List.copyOf(streams)) {
-            try {
-                s.close();
-            } catch (IOException e) {
-                // already gone
-            }
-        }
+        events.close();
     }
 
     /** The folder a program's calls (M98) are looked for in: its own, when the name is a sound one. */
