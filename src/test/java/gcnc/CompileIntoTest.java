@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.dmc.DmcPrinter;
 import gcnc.dmc.Form;
+import gcnc.galil.Dialect;
 import gcnc.output.AtomicOutput;
 import gcnc.output.FormOutputs;
 import java.io.StringReader;
@@ -40,7 +41,7 @@ class CompileIntoTest {
 
     @Test
     void theThesisDialectWritesOneCommandALineNoForm() throws Exception {
-        Session thesis = Session.open(Session.Options.defaults().withMachine("thesis-2004").withDialect("thesis"));
+        Session thesis = Session.open(Session.Options.defaults().withMachine("thesis-2004").withDialect(Dialect.Kind.THESIS));
         List<String> printed = new ArrayList<>();
         thesis.compile(new StringReader(program()), Optional.empty(), false, i -> printed.add(DmcPrinter.print(i.command())));
         Path dmc = Files.createTempDirectory("gcnc-into").resolve("p.dmc");

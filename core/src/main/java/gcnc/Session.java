@@ -238,7 +238,7 @@ public final class Session {
                                        Optional<SimOptions> simulation, boolean inlineSourceMap, Optional<Form> asked,
                                        boolean exactStop, CompileObserver observer) throws IOException {
         outputs.mapSource(sourceName, source);
-        java.util.function.Consumer<gcnc.dmc.Instruction> sink = options.dialect().equals("thesis") ? outputs.programSink()
+        java.util.function.Consumer<gcnc.dmc.Instruction> sink = options.dialect() == gcnc.galil.Dialect.Kind.THESIS ? outputs.programSink()
                 : outputs.sink(asked, profile.controllerLimits());
         Compiler.Settings s = settings(simulation, inlineSourceMap);
         Compiler.Result r = waived(Compiler.compile(program, exactStop ? s.withExactStop() : s, sink, observer), true);

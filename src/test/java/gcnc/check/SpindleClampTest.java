@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import gcnc.Compiler;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Severity;
+import gcnc.galil.Dialect;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.ProfileLoader;
 import gcnc.sim.SimOptions;
@@ -77,7 +78,7 @@ class SpindleClampTest {
     void theBlockRecordsTheLimitsSpeed() throws IOException {
         List<Double> rpm = new ArrayList<>();
         Compiler.check(new StringReader("G50 S2000\nG97 S2500 M03\n" + CUT),
-                new Compiler.Settings(Run.TABLES, machine("haas"), "galil", Optional.empty()),
+                new Compiler.Settings(Run.TABLES, machine("haas"), Dialect.Kind.GALIL, Optional.empty()),
                 b -> {
                     if (b.line() == 2) {
                         rpm.add(b.spindleRpm().getAsDouble());
@@ -98,7 +99,7 @@ class SpindleClampTest {
     private static String dmc(String program, double[] seconds) throws IOException {
         StringBuilder out = new StringBuilder();
         Compiler.Result r = Compiler.compile(new StringReader(program),
-                new Compiler.Settings(Run.TABLES, machine("haas"), "galil", Optional.of(SimOptions.defaults().withoutBlank())),
+                new Compiler.Settings(Run.TABLES, machine("haas"), Dialect.Kind.GALIL, Optional.of(SimOptions.defaults().withoutBlank())),
                 l -> out.append(l.text()).append('\n'));
         for (Diagnostic d : r.diagnostics().sorted()) {
             assertTrue(d.severity() == Severity.NOTE || d.code().id().equals("E280") && d.severity() == Severity.WARNING,
