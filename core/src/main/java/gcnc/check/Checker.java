@@ -249,11 +249,11 @@ public final class Checker {
         }
         Word g10 = OffsetSetting.word(b, functions);
         if (g10 != null) {
-            return new OffsetSetting(this).run(b, g10, isFirst); // G10 L2: a work offset written by the program
+            return setOffset(b, g10, isFirst); // G10 L2: a work offset written by the program
         }
         Word g30 = ReferenceReturn.word(b, functions);
         if (g30 != null) {
-            return new ReferenceReturn(this).run(b, g30, isFirst); // G30: to the profile's reference.N
+            return returnToReference(b, g30, isFirst); // G30: to the profile's reference.N
         }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
@@ -269,6 +269,45 @@ public final class Checker {
         cycles.note(b);
         CheckedBlock made = checked(b, isFirst, null, null, null, 0);
         return made == null ? List.of() : List.of(made);
+    }
+
+    /** G10 L2: the block of its other words checked and committed, then the offset it writes ({@link OffsetSetting}). */
+    private List<CheckedBlock> setOffset(RawBlock b, Word g, boolean isFirst) {
+        CycleBlocks.Split split = OffsetSetting.read(b, g, out);
+        List<CheckedBlock> done = new java.util.ArrayList<>(1);
+        if (split.words() == null) {
+            return done;
+        }
+        if (split.passOn() != null) {
+            one(split.passOn(), isFirst, null).ifPresent(done::add);
+        }
+        OffsetSetting.offset(g, split.words(), state, profile, coordinates, out)
+                .ifPresent(w -> coordinates.setWork(w.index(), w.at()));
+        return done;
+    }
+
+    /** G30: the block of its other words, then the two rapids, each checked and committed ({@link ReferenceReturn}). */
+    private List<CheckedBlock> returnToReference(RawBlock b, Word g, boolean isFirst) {
+        CycleBlocks.Split split = ReferenceReturn.read(b, g, out);
+        List<CheckedBlock> done = new java.util.ArrayList<>(3);
+        if (split.passOn() != null) {
+            one(split.passOn(), isFirst, null).ifPresent(done::add);
+        }
+        if (split.words() == null) {
+            return done;
+        }
+        Optional<gcnc.ir.Point> ref = ReferenceReturn.reference(g, split.words(), profile, out);
+        if (ref.isEmpty()) {
+            return done;
+        }
+        ModalState start = state;
+        gcnc.ir.Point via = CycleBlocks.target(this, b, split.words().axes(), start);
+        if (via == null) {
+            return done;
+        }
+        List<gcnc.check.cycle.Move> moves = ReferenceReturn.moves(split.words(), ref.get(), via);
+        done.addAll(CycleBlocks.write(this, "G" + g.number(), b.line(), g.span(), moves, 1, start, -1, null));
+        return done;
     }
 
     /**
