@@ -88,6 +88,17 @@ public final class Checker {
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
     /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
     private CornerInsertion corners = new CornerInsertion(this);
+    private final Lookahead lookahead = new Lookahead() {
+        @Override
+        public Dry peek(RawBlock b, ModalState from, Diagnostics found) {
+            return Checker.this.peek(b, from, found);
+        }
+
+        @Override
+        public boolean startsCycle(RawBlock b) {
+            return Checker.this.startsCycle(b);
+        }
+    };
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
     private static final class Cause {
@@ -271,7 +282,10 @@ public final class Checker {
         return made == null ? List.of() : List.of(made);
     }
 
-    /** G10 L2: the block of its other words checked and committed, then the offset it writes ({@link OffsetSetting}). */
+    /**
+     * G10 L2: the block of its other words checked and committed, then the offset it writes
+     * ({@link OffsetSetting}).
+     */
     private List<CheckedBlock> setOffset(RawBlock b, Word g, boolean isFirst) {
         CycleBlocks.Split split = OffsetSetting.read(b, g, out);
         List<CheckedBlock> done = new java.util.ArrayList<>(1);
@@ -465,6 +479,11 @@ public final class Checker {
     /** Whether the block starts or runs again a cycle (not a plain move). */
     boolean startsCycle(RawBlock b) {
         return cycles.cycleWord(b) != null || cycles.repeats(b);
+    }
+
+    /** This checker seen by a class that only looks ({@link ContourCorners}): peeks and questions, no commit. */
+    Lookahead lookahead() {
+        return lookahead;
     }
 
     FunctionIndex functions() {

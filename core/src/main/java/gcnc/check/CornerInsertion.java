@@ -68,7 +68,8 @@ final class CornerInsertion {
 
     /** A cycle's contour with its corners made ({@link ContourCorners#made}). */
     List<RawBlock> inContour(List<RawBlock> blocks, ModalState start) {
-        return new ContourCorners(this, host, words, angles).made(blocks, start);
+        return new ContourCorners(this, host.lookahead(), host.functions(), host.out(), words, angles)
+                .made(blocks, start);
     }
 
     /** The next block of the program's flow: held, released with the corner, or passed on. */
