@@ -86,8 +86,7 @@ public final class Checker {
     /** Consecutive G32 blocks: one continuous thread (docs/threading.md). */
     private final ThreadChain threadChain;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
-    /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
-    private CornerInsertion corners = new CornerInsertion(this);
+    /** This checker to a class that only looks (made before {@link #corners}, which hands it on). */
     private final Lookahead lookahead = new Lookahead() {
         @Override
         public Dry peek(RawBlock b, ModalState from, Diagnostics found) {
@@ -98,7 +97,24 @@ public final class Checker {
         public boolean startsCycle(RawBlock b) {
             return Checker.this.startsCycle(b);
         }
+
+        @Override
+        public ModalState fixed(RawBlock fixed) {
+            return Checker.this.fixed(fixed);
+        }
+
+        @Override
+        public boolean cAxisOn() {
+            return Checker.this.cAxisOn();
+        }
+
+        @Override
+        public MachineProfile profile() {
+            return profile;
+        }
     };
+    /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
+    private CornerInsertion corners = new CornerInsertion(this);
 
     /** A root cause already reported, and the later blocks that broke the same rule. */
     private static final class Cause {
@@ -441,19 +457,23 @@ public final class Checker {
 
     /**
      * A block refused for one word that is not part of its move (the thesis's R on a G01): when
-     * the block without it ({@code fixed}) is sound, the state it would leave is taken, as if the
-     * programmer had fixed what was reported, and true (the caller reports the error; the block
-     * itself is not run). False, nothing changed, when {@code fixed} has errors of its own.
+     * the block without it ({@code fixed}) is sound, the state it would leave, as if the
+     * programmer had fixed what was reported; null when {@code fixed} has errors of its own.
+     * Nothing is committed: {@link #takeFixed} takes it.
      */
-    boolean takeFixed(RawBlock fixed) {
+    ModalState fixed(RawBlock fixed) {
         BlockDraft d = draft.start(fixed, state, false);
         Diagnostics none = new Diagnostics();
         if (!words(d, none, false) || motions.build(d, none) == null) {
-            return false;
+            return null;
         }
         // as a block whose move failed (recover): its motion G and its end point, nothing else of it
-        state = Salvage.moved(fixed, state, d, functions, profile);
-        return true;
+        return Salvage.moved(fixed, state, d, functions, profile);
+    }
+
+    /** Takes the state {@link #fixed} gave for a refused block (the caller reported the error; the block is not run). */
+    void takeFixed(ModalState fixed) {
+        state = fixed;
     }
 
     /** Whether the C axis is engaged (after a C-axis option code): C is then an axis word, not a chamfer. */

@@ -52,7 +52,7 @@ final class CornerInsertion {
 
     CornerInsertion(Checker host) {
         this.host = host;
-        this.words = new CornerWords(host);
+        this.words = new CornerWords(host.lookahead());
         this.angles = new AngleLine(host);
     }
 
@@ -101,7 +101,8 @@ final class CornerInsertion {
         if (r == null) {
             return host.flowOn(b, isFirst);
         }
-        if (r == Request.REFUSED) {
+        if (r.taken() != null) {
+            host.takeFixed(r.taken());
             return List.of(); // the thesis's R on a G01 (E025): refused, the state taken past it
         }
         RawBlock stripped = b.called(rest, b.last(), b.depth());

@@ -14,4 +14,12 @@ interface Lookahead {
 
     /** Whether the block starts or runs again a cycle (not a plain move). */
     boolean startsCycle(RawBlock b);
+
+    /** The state a block refused for one word would leave were the word struck out ({@code fixed}), or null. */
+    ModalState fixed(RawBlock fixed);
+
+    /** Whether the C axis is engaged (after a C-axis option code): C is then an axis word, not a chamfer. */
+    boolean cAxisOn();
+
+    gcnc.machine.MachineProfile profile();
 }
