@@ -112,6 +112,11 @@ public final class Checker {
         public MachineProfile profile() {
             return profile;
         }
+
+        @Override
+        public Coordinates coordinates() {
+            return coordinates;
+        }
     };
     /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
     private CornerInsertion corners = new CornerInsertion(this);

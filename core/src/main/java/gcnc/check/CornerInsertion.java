@@ -53,7 +53,7 @@ final class CornerInsertion {
     CornerInsertion(Checker host) {
         this.host = host;
         this.words = new CornerWords(host.lookahead());
-        this.angles = new AngleLine(host);
+        this.angles = new AngleLine(host.lookahead());
     }
 
     /** The same insertion for the other position of the block delete switch (Checker.fork). */

@@ -483,11 +483,15 @@ final class CycleExpansion {
 
     /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
     static MoveWriter.Frame frame(Checker host, ModalState s) {
-        Coordinates c = host.coordinates();
+        return frame(host.coordinates(), host.profile(), s);
+    }
+
+    /** As above, from the checker's coordinates and profile. */
+    static MoveWriter.Frame frame(Coordinates c, gcnc.machine.MachineProfile profile, ModalState s) {
         Units u = s.units();
         List<String> codes = new ArrayList<>(4);
         for (GRole r : new GRole[] {GRole.RAPID, GRole.LINEAR, GRole.ARC_CW, GRole.ARC_CCW}) {
-            codes.add(host.profile().control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
+            codes.add(profile.control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
         }
         return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
     }

@@ -22,4 +22,7 @@ interface Lookahead {
     boolean cAxisOn();
 
     gcnc.machine.MachineProfile profile();
+
+    /** The checker's coordinate frames (read here: only the checker writes a work offset, G10). */
+    gcnc.check.geom.Coordinates coordinates();
 }
