@@ -327,7 +327,7 @@ final class CycleExpansion {
         double nan = Double.NaN;
         FirstBlock said;
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            double passes = call.has(Letter.R) ? PatternRepeat.passes(host, call, Letter.R) : nan;
+            double passes = call.has(Letter.R) ? PatternRepeat.passes(host.out(), call, Letter.R) : nan;
             if (Double.isNaN(passes) && call.has(Letter.R)) {
                 return;
             }
@@ -456,7 +456,9 @@ final class CycleExpansion {
                 call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
+            // G73 only plans its passes; they are written and checked here, one by one
+            return new PatternRepeat(host.coordinates(), host.out(), call).expand(contour, start, firstBlock)
+                    .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
         }
         return new StockRemoval(host, call, p.line).expand(contour, blocks, start, firstBlock, lead);
     }
