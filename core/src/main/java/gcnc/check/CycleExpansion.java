@@ -456,11 +456,13 @@ final class CycleExpansion {
                 call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            // G73 only plans its passes; they are written and checked here, one by one
+            // G71-G73 only plan their passes; they are written and checked here, one by one
             return new PatternRepeat(host.coordinates(), host.out(), call).expand(contour, start, firstBlock)
                     .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
         }
-        return new StockRemoval(host, call, p.line).expand(contour, blocks, start, firstBlock, lead);
+        return new StockRemoval(host.coordinates(), host.profile(), host.out(), call, p.line)
+                .expand(contour, blocks, start, firstBlock, lead)
+                .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
     }
 
     /**
@@ -481,6 +483,10 @@ final class CycleExpansion {
 
     private static String key(CycleCall call) {
         return call.label(Letter.P) + "/" + call.label(Letter.Q);
+    }
+
+    /** A roughing cycle's moves (G71-G73), planned from what it read, to be written and checked by {@link #write}. */
+    record Passes(List<Move> moves, int passes) {
     }
 
     /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */

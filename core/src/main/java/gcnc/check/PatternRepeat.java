@@ -3,7 +3,6 @@ package gcnc.check;
 import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.FirstBlock;
-import gcnc.check.cycle.Move;
 import gcnc.check.cycle.Pattern;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
@@ -23,10 +22,6 @@ final class PatternRepeat {
     private final Coordinates coordinates;
     private final Diagnostics out;
     private final CycleCall call;
-
-    /** The G73's passes, to be written and checked by the cycle expansion ({@link CycleExpansion#write}). */
-    record Passes(List<Move> moves, int passes) {
-    }
 
     PatternRepeat(Coordinates coordinates, Diagnostics out, CycleCall call) {
         this.coordinates = coordinates;
@@ -58,7 +53,7 @@ final class PatternRepeat {
     }
 
     /** The cycle's passes; empty after a finding. {@code firstBlock}: what a Fanuc first block left in force. */
-    java.util.Optional<Passes> expand(Contour contour, ModalState start, FirstBlock firstBlock) {
+    java.util.Optional<CycleExpansion.Passes> expand(Contour contour, ModalState start, FirstBlock firstBlock) {
         double n = call.has(Letter.D) ? passes(out, call, Letter.D) : firstBlock.passes();
         if (Double.isNaN(n)) {
             if (!call.has(Letter.D)) {
@@ -74,7 +69,7 @@ final class PatternRepeat {
         double ux = call.has(Letter.U) ? call.value(Letter.U) * c.perX(u) : 0;
         double wz = call.has(Letter.W) ? call.value(Letter.W) * c.perZ(u) : 0;
         int passes = (int) n;
-        return java.util.Optional.of(new Passes(
+        return java.util.Optional.of(new CycleExpansion.Passes(
                 Pattern.moves(contour, ux, wz, reliefX * c.perRadius(u), reliefZ * c.perZ(u), passes), passes));
     }
 
