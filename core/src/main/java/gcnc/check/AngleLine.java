@@ -36,9 +36,10 @@ import java.util.List;
  * end" as gcnc's authors read the alarm list; an angle on a block that is not a G01 move is E633.
  */
 final class AngleLine {
-    private final Checker host;
+    /** The checker, to look only: this class returns the blocks it resolves and commits nothing. */
+    private final Lookahead host;
 
-    AngleLine(Checker host) {
+    AngleLine(Lookahead host) {
         this.host = host;
     }
 
@@ -115,7 +116,7 @@ final class AngleLine {
             double dx = (p1.z() - p0.z()) / pz * sin / cos;
             end = new Point(p0.x() + dx * px, p1.z());
         }
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, dry.next()), b.line(), angle.span());
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), dry.next()), b.line(), angle.span());
         return CornerInsertion.moveTo(plain, writer, end, p0);
     }
 
@@ -189,7 +190,7 @@ final class AngleLine {
         }
         double t = (dx * Math.cos(t2) - dz * Math.sin(t2)) / -det;
         Point corner = new Point(s.x() + t * Math.sin(t1) * px, s.z() + t * Math.cos(t1) * pz);
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, dry1.next()), first.line(), a1.span());
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), dry1.next()), first.line(), a1.span());
         return new RawBlock[] {CornerInsertion.moveTo(one, writer, corner, s), two};
     }
 

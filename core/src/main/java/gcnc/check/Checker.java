@@ -86,6 +86,38 @@ public final class Checker {
     /** Consecutive G32 blocks: one continuous thread (docs/threading.md). */
     private final ThreadChain threadChain;
     private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new java.util.IdentityHashMap<>();
+    /** This checker to a class that only looks (made before {@link #corners}, which hands it on). */
+    private final Lookahead lookahead = new Lookahead() {
+        @Override
+        public Dry peek(RawBlock b, ModalState from, Diagnostics found) {
+            return Checker.this.peek(b, from, found);
+        }
+
+        @Override
+        public boolean startsCycle(RawBlock b) {
+            return Checker.this.startsCycle(b);
+        }
+
+        @Override
+        public ModalState fixed(RawBlock fixed) {
+            return Checker.this.fixed(fixed);
+        }
+
+        @Override
+        public boolean cAxisOn() {
+            return Checker.this.cAxisOn();
+        }
+
+        @Override
+        public MachineProfile profile() {
+            return profile;
+        }
+
+        @Override
+        public Coordinates coordinates() {
+            return coordinates;
+        }
+    };
     /** G01 chamfering and corner rounding: a corner block held until its next move (docs/chamfer.md). */
     private CornerInsertion corners = new CornerInsertion(this);
 
@@ -249,11 +281,11 @@ public final class Checker {
         }
         Word g10 = OffsetSetting.word(b, functions);
         if (g10 != null) {
-            return new OffsetSetting(this).run(b, g10, isFirst); // G10 L2: a work offset written by the program
+            return setOffset(b, g10, isFirst); // G10 L2: a work offset written by the program
         }
         Word g30 = ReferenceReturn.word(b, functions);
         if (g30 != null) {
-            return new ReferenceReturn(this).run(b, g30, isFirst); // G30: to the profile's reference.N
+            return returnToReference(b, g30, isFirst); // G30: to the profile's reference.N
         }
         Word cycle = cycles.cycleWord(b);
         if (cycle != null) {
@@ -269,6 +301,48 @@ public final class Checker {
         cycles.note(b);
         CheckedBlock made = checked(b, isFirst, null, null, null, 0);
         return made == null ? List.of() : List.of(made);
+    }
+
+    /**
+     * G10 L2: the block of its other words checked and committed, then the offset it writes
+     * ({@link OffsetSetting}).
+     */
+    private List<CheckedBlock> setOffset(RawBlock b, Word g, boolean isFirst) {
+        CycleBlocks.Split split = OffsetSetting.read(b, g, out);
+        List<CheckedBlock> done = new java.util.ArrayList<>(1);
+        if (split.words() == null) {
+            return done;
+        }
+        if (split.passOn() != null) {
+            one(split.passOn(), isFirst, null).ifPresent(done::add);
+        }
+        OffsetSetting.offset(g, split.words(), state, profile, coordinates, out)
+                .ifPresent(w -> coordinates.setWork(w.index(), w.at()));
+        return done;
+    }
+
+    /** G30: the block of its other words, then the two rapids, each checked and committed ({@link ReferenceReturn}). */
+    private List<CheckedBlock> returnToReference(RawBlock b, Word g, boolean isFirst) {
+        CycleBlocks.Split split = ReferenceReturn.read(b, g, out);
+        List<CheckedBlock> done = new java.util.ArrayList<>(3);
+        if (split.passOn() != null) {
+            one(split.passOn(), isFirst, null).ifPresent(done::add);
+        }
+        if (split.words() == null) {
+            return done;
+        }
+        Optional<gcnc.ir.Point> ref = ReferenceReturn.reference(g, split.words(), profile, out);
+        if (ref.isEmpty()) {
+            return done;
+        }
+        ModalState start = state;
+        gcnc.ir.Point via = CycleBlocks.target(this, b, split.words().axes(), start);
+        if (via == null) {
+            return done;
+        }
+        List<gcnc.check.cycle.Move> moves = ReferenceReturn.moves(split.words(), ref.get(), via);
+        done.addAll(CycleBlocks.write(this, "G" + g.number(), b.line(), g.span(), moves, 1, start, -1, null));
+        return done;
     }
 
     /**
@@ -388,19 +462,23 @@ public final class Checker {
 
     /**
      * A block refused for one word that is not part of its move (the thesis's R on a G01): when
-     * the block without it ({@code fixed}) is sound, the state it would leave is taken, as if the
-     * programmer had fixed what was reported, and true (the caller reports the error; the block
-     * itself is not run). False, nothing changed, when {@code fixed} has errors of its own.
+     * the block without it ({@code fixed}) is sound, the state it would leave, as if the
+     * programmer had fixed what was reported; null when {@code fixed} has errors of its own.
+     * Nothing is committed: {@link #takeFixed} takes it.
      */
-    boolean takeFixed(RawBlock fixed) {
+    ModalState fixed(RawBlock fixed) {
         BlockDraft d = draft.start(fixed, state, false);
         Diagnostics none = new Diagnostics();
         if (!words(d, none, false) || motions.build(d, none) == null) {
-            return false;
+            return null;
         }
         // as a block whose move failed (recover): its motion G and its end point, nothing else of it
-        state = Salvage.moved(fixed, state, d, functions, profile);
-        return true;
+        return Salvage.moved(fixed, state, d, functions, profile);
+    }
+
+    /** Takes the state {@link #fixed} gave for a refused block (the caller reported the error; the block is not run). */
+    void takeFixed(ModalState fixed) {
+        state = fixed;
     }
 
     /** Whether the C axis is engaged (after a C-axis option code): C is then an axis word, not a chamfer. */
@@ -426,6 +504,11 @@ public final class Checker {
     /** Whether the block starts or runs again a cycle (not a plain move). */
     boolean startsCycle(RawBlock b) {
         return cycles.cycleWord(b) != null || cycles.repeats(b);
+    }
+
+    /** This checker seen by a class that only looks ({@link ContourCorners}): peeks and questions, no commit. */
+    Lookahead lookahead() {
+        return lookahead;
     }
 
     FunctionIndex functions() {

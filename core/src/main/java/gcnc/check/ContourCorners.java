@@ -19,13 +19,19 @@ import java.util.List;
  */
 final class ContourCorners {
     private final CornerInsertion insertion;
-    private final Checker host;
+    /** The checker, to look only: nothing here commits a block or a state. */
+    private final Lookahead look;
+    private final FunctionIndex functions;
+    private final Diagnostics out;
     private final CornerWords words;
     private final AngleLine angles;
 
-    ContourCorners(CornerInsertion insertion, Checker host, CornerWords words, AngleLine angles) {
+    ContourCorners(CornerInsertion insertion, Lookahead look, FunctionIndex functions, Diagnostics out,
+                   CornerWords words, AngleLine angles) {
         this.insertion = insertion;
-        this.host = host;
+        this.look = look;
+        this.functions = functions;
+        this.out = out;
         this.words = words;
         this.angles = angles;
     }
@@ -50,19 +56,19 @@ final class ContourCorners {
                 continue;
             }
             if (angles.alone(b) && i + 1 < in.size()) {
-                RawBlock[] pair = angles.pair(b, in.get(i + 1), s, host.out());
+                RawBlock[] pair = angles.pair(b, in.get(i + 1), s, out);
                 if (pair != null) {
                     b = pair[0];
                     in.set(i + 1, pair[1]);
                 }
             }
             if (angles.asks(b)) {
-                b = angles.resolve(b, s, host.out());
+                b = angles.resolve(b, s, out);
             }
             List<Word> rest = new ArrayList<>(b.words().size());
-            Request r = words.mayAsk(b) ? words.read(b, s, rest, host.out()) : null;
+            Request r = words.mayAsk(b) ? words.read(b, s, rest, out) : null;
             RawBlock stripped = r == null ? b : b.called(rest, b.last(), b.depth());
-            Checker.Dry dry = host.peek(stripped, s, new Diagnostics());
+            Checker.Dry dry = look.peek(stripped, s, new Diagnostics());
             CornerInsertion.Made m = r == null || r.word() == null || dry == null ? null : contourCorner(stripped, r, dry, in, i);
             if (m == null) {
                 made.add(stripped);
@@ -72,8 +78,8 @@ final class ContourCorners {
             made.add(m.shortened());
             made.add(m.insert());
             in.set(i + 1, m.next());
-            Checker.Dry cut = host.peek(m.shortened(), s, new Diagnostics());
-            Checker.Dry round = cut == null ? null : host.peek(m.insert(), cut.next(), new Diagnostics());
+            Checker.Dry cut = look.peek(m.shortened(), s, new Diagnostics());
+            Checker.Dry round = cut == null ? null : look.peek(m.insert(), cut.next(), new Diagnostics());
             s = round == null ? dry.next() : round.next();
         }
         return made;
@@ -82,12 +88,12 @@ final class ContourCorners {
     /** The corner of contour block {@code at} (run as {@code dry}) with the block after it, or null after its error. */
     private CornerInsertion.Made contourCorner(RawBlock b, Request r, Checker.Dry dry, List<RawBlock> in, int at) {
         Motion.Linear line = CornerInsertion.feedLine(dry.block());
-        if (line == null || host.startsCycle(b)) {
-            host.out().error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
+        if (line == null || look.startsCycle(b)) {
+            out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return null;
         }
         if (at + 1 >= in.size()) {
-            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), b.line());
+            out.error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), b.line());
             return null;
         }
         RawBlock next = in.get(at + 1);
@@ -95,23 +101,23 @@ final class ContourCorners {
             return null;
         }
         if (angles.asks(next)) {
-            next = angles.resolve(next, dry.next(), host.out());
+            next = angles.resolve(next, dry.next(), out);
             in.set(at + 1, next);
         }
         List<Word> rest = new ArrayList<>(next.words().size());
         RawBlock plain = !words.mayAsk(next) || words.read(next, dry.next(), rest, new Diagnostics()) == null ? next
                 : next.called(rest, next.last(), next.depth());
-        Checker.Dry after = host.peek(plain, dry.next(), new Diagnostics());
+        Checker.Dry after = look.peek(plain, dry.next(), new Diagnostics());
         if (after == null) {
             return null; // its own errors are reported when the contour is followed
         }
         if (!CornerInsertion.moves(after.block())) {
-            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), next.line());
+            out.error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), next.line());
             return null;
         }
         Motion.Linear to = CornerInsertion.feedLine(after.block());
         if (to == null) {
-            host.out().error(Code.E610_CORNER_NEXT_NOT_G01, r.word().span(), r.name(), next.line());
+            out.error(Code.E610_CORNER_NEXT_NOT_G01, r.word().span(), r.name(), next.line());
             return null;
         }
         CornerInsertion.Made m = insertion.make(b, r, line.from(), line.to(), dry.next(), next, to.to(), after.next());
@@ -124,12 +130,12 @@ final class ContourCorners {
     /** {@code b} with a G01 first when it has no motion G of its own (after an inserted arc). */
     private RawBlock withFeed(RawBlock b) {
         for (Word w : b.words()) {
-            gcnc.machine.GFunction f = w.letter() == Letter.G && !w.number().isEmpty() ? host.functions().g(w.code()) : null;
+            gcnc.machine.GFunction f = w.letter() == Letter.G && !w.number().isEmpty() ? functions.g(w.code()) : null;
             if (f != null && f.role().motion()) {
                 return b;
             }
         }
-        String code = String.format("%02d", host.functions().g(gcnc.machine.GRole.LINEAR).code());
+        String code = String.format("%02d", functions.g(gcnc.machine.GRole.LINEAR).code());
         Word g01 = new Word(Letter.G, code, b.words().isEmpty() ? b.last() : b.words().get(0).span());
         List<Word> ws = new ArrayList<>(b.words().size() + 1);
         int at = 0;

@@ -52,8 +52,8 @@ final class CornerInsertion {
 
     CornerInsertion(Checker host) {
         this.host = host;
-        this.words = new CornerWords(host);
-        this.angles = new AngleLine(host);
+        this.words = new CornerWords(host.lookahead());
+        this.angles = new AngleLine(host.lookahead());
     }
 
     /** The same insertion for the other position of the block delete switch (Checker.fork). */
@@ -68,7 +68,8 @@ final class CornerInsertion {
 
     /** A cycle's contour with its corners made ({@link ContourCorners#made}). */
     List<RawBlock> inContour(List<RawBlock> blocks, ModalState start) {
-        return new ContourCorners(this, host, words, angles).made(blocks, start);
+        return new ContourCorners(this, host.lookahead(), host.functions(), host.out(), words, angles)
+                .made(blocks, start);
     }
 
     /** The next block of the program's flow: held, released with the corner, or passed on. */
@@ -100,7 +101,8 @@ final class CornerInsertion {
         if (r == null) {
             return host.flowOn(b, isFirst);
         }
-        if (r == Request.REFUSED) {
+        if (r.taken() != null) {
+            host.takeFixed(r.taken());
             return List.of(); // the thesis's R on a G01 (E025): refused, the state taken past it
         }
         RawBlock stripped = b.called(rest, b.last(), b.depth());

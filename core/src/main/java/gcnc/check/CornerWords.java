@@ -27,10 +27,20 @@ final class CornerWords {
      * whether it is a 90-degree form (every form but Haas's comma words). {@link #FAILED}: the
      * block's corner words were wrong, which was reported; the block runs without them.
      */
-    record Request(Word word, boolean round, double size, boolean square) {
+    record Request(Word word, boolean round, double size, boolean square, ModalState taken) {
         static final Request FAILED = new Request(null, false, 0, false);
-        /** The block was refused for its corner word, the error reported and the state taken past it: nothing runs. */
-        static final Request REFUSED = new Request(null, true, 0, false);
+
+        Request(Word word, boolean round, double size, boolean square) {
+            this(word, round, size, square, null);
+        }
+
+        /**
+         * The block was refused for its corner word, the error reported: nothing runs, and the
+         * checker takes the state {@code taken} past it (the block as if the word were struck out).
+         */
+        static Request refused(ModalState taken) {
+            return new Request(null, true, 0, false, taken);
+        }
 
         String name() {
             return word.toString();
@@ -42,10 +52,11 @@ final class CornerWords {
         }
     }
 
-    private final Checker host;
+    /** The checker, to look only: this class returns what it finds and commits nothing. */
+    private final Lookahead host;
 
     /** (made while the checker is made: its profile is read when a block comes) */
-    CornerWords(Checker host) {
+    CornerWords(Lookahead host) {
         this.host = host;
     }
 
@@ -67,8 +78,8 @@ final class CornerWords {
     /**
      * The corner the block asks for, run from {@code from}, its other words put in {@code rest};
      * null when it asks for none, {@link Request#FAILED} after an error reported to {@code out}.
-     * On the thesis's control (no corners) an R on a sound G01 is {@link Request#REFUSED}: E025
-     * reported and the checker's state taken past the block ({@link Checker#takeFixed}), so this
+     * On the thesis's control (no corners) an R on a sound G01 is {@link Request#refused}: E025
+     * reported and the checker's state taken past the block ({@link Checker#fixed}, committed by {@link CornerInsertion}), so this
      * is called for such a control only for the block the flow is at.
      */
     Request read(RawBlock b, ModalState from, List<Word> rest, Diagnostics out) {
@@ -122,9 +133,11 @@ final class CornerWords {
                         rest.add(w);
                     }
                 }
-                if (r != null && candidates.size() == 1 && host.takeFixed(b.called(rest, b.last(), b.depth()))) {
+                ModalState taken = r != null && candidates.size() == 1
+                        ? host.fixed(b.called(rest, b.last(), b.depth())) : null;
+                if (taken != null) {
                     out.error(Code.E025_R_NOT_ALLOWED, r.span(), "G01");
-                    return Request.REFUSED;
+                    return Request.refused(taken);
                 }
                 return null; // the block's own checks report it
             }

@@ -78,13 +78,25 @@ final class CycleBlocks {
         return kept;
     }
 
+    /**
+     * A block split as G10 and G30 read it: the words of other functions as a block of their own
+     * (null when none), and the function's words (null after their error).
+     */
+    record Split(RawBlock passOn, gcnc.check.cycle.CycleWords words) {
+    }
+
+    /** The words of other functions as a block of their own at the block's line, or null when none. */
+    static RawBlock passOnBlock(RawBlock b, List<Word> passOn) {
+        if (passOn.isEmpty()) {
+            return null;
+        }
+        return new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete());
+    }
+
     /** The words of other functions as a block of their own, checked and committed; empty when none. */
     static Optional<CheckedBlock> passOn(Checker host, RawBlock b, List<Word> passOn, boolean isFirst) {
-        if (passOn.isEmpty()) {
-            return Optional.empty();
-        }
-        return host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                isFirst, null);
+        RawBlock block = passOnBlock(b, passOn);
+        return block == null ? Optional.empty() : host.one(block, isFirst, null);
     }
 
     /** Where the block's axis words lead from {@code start} (a rapid followed aside), or null after its error. */

@@ -327,7 +327,7 @@ final class CycleExpansion {
         double nan = Double.NaN;
         FirstBlock said;
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            double passes = call.has(Letter.R) ? PatternRepeat.passes(host, call, Letter.R) : nan;
+            double passes = call.has(Letter.R) ? PatternRepeat.passes(host.out(), call, Letter.R) : nan;
             if (Double.isNaN(passes) && call.has(Letter.R)) {
                 return;
             }
@@ -456,9 +456,13 @@ final class CycleExpansion {
                 call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
-            return new PatternRepeat(host, call, p.line).expand(contour, start, firstBlock);
+            // G71-G73 only plan their passes; they are written and checked here, one by one
+            return new PatternRepeat(host.coordinates(), host.out(), call).expand(contour, start, firstBlock)
+                    .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
         }
-        return new StockRemoval(host, call, p.line).expand(contour, blocks, start, firstBlock, lead);
+        return new StockRemoval(host.coordinates(), host.profile(), host.out(), call, p.line)
+                .expand(contour, blocks, start, firstBlock, lead)
+                .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
     }
 
     /**
@@ -481,13 +485,21 @@ final class CycleExpansion {
         return call.label(Letter.P) + "/" + call.label(Letter.Q);
     }
 
+    /** A roughing cycle's moves (G71-G73), planned from what it read, to be written and checked by {@link #write}. */
+    record Passes(List<Move> moves, int passes) {
+    }
+
     /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
     static MoveWriter.Frame frame(Checker host, ModalState s) {
-        Coordinates c = host.coordinates();
+        return frame(host.coordinates(), host.profile(), s);
+    }
+
+    /** As above, from the checker's coordinates and profile. */
+    static MoveWriter.Frame frame(Coordinates c, gcnc.machine.MachineProfile profile, ModalState s) {
         Units u = s.units();
         List<String> codes = new ArrayList<>(4);
         for (GRole r : new GRole[] {GRole.RAPID, GRole.LINEAR, GRole.ARC_CW, GRole.ARC_CCW}) {
-            codes.add(host.profile().control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
+            codes.add(profile.control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
         }
         return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
     }

@@ -1,20 +1,21 @@
 package gcnc.check;
 
 import gcnc.check.cycle.CycleWords;
+import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
-import gcnc.ir.CheckedBlock;
+import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
+import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 import gcnc.tables.Tables.Param;
-import java.util.ArrayList;
 import java.util.EnumSet;
-import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 
 /**
@@ -25,14 +26,19 @@ import java.util.Set;
  * diameter where X is); U and W, or X and Z under G91, add to it. The
  * blocks after it use the new value, the block's own frame and the moves already made do not
  * change. Other L numbers (tool offsets, parameters) are not supported yet (E625).
+ *
+ * <p>It only checks: {@link #read} splits the block, {@link #offset} says which offset the words
+ * write and where; the checker checks the block of other words and commits the offset
+ * ({@code Checker.setOffset}), findings go to the sink it is given.
  */
 final class OffsetSetting {
     private static final Set<Letter> OWN = EnumSet.of(Letter.L, Letter.P);
 
-    private final Checker host;
+    private OffsetSetting() {
+    }
 
-    OffsetSetting(Checker host) {
-        this.host = host;
+    /** Work offset {@code index} (0 the external one, 54-59 for G54-G59) to be set to {@code at}. */
+    record Write(int index, Point at) {
     }
 
     /** The block's G10 word, or null. */
@@ -50,66 +56,65 @@ final class OffsetSetting {
         return null;
     }
 
-    /** The G10 block: its other words as a block of their own, then the offset written. */
-    List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
+    /** The G10 block's words: its other words as a block of their own, and its L, P and axes (null after their error). */
+    static CycleBlocks.Split read(RawBlock b, Word g, Diagnostics out) {
+        CycleWords words = CycleWords.read(b, g, "G" + g.number(), OWN, OWN, 1, 1, w -> false, out);
+        return new CycleBlocks.Split(CycleBlocks.passOnBlock(b, words != null ? words.passOn() : java.util.List.of()),
+                words);
+    }
+
+    /**
+     * The offset the words write, from the state {@code s} after the block of other words and the
+     * offsets in {@code now}; empty after an error (to {@code out}).
+     */
+    static Optional<Write> offset(Word g, CycleWords words, ModalState s, MachineProfile profile, Coordinates now,
+                                  Diagnostics out) {
         String label = "G" + g.number();
-        CycleWords words = CycleWords.read(b, g, label, OWN, OWN, 1, 1, w -> false, host.out());
-        List<CheckedBlock> done = new ArrayList<>(1);
-        List<Word> passOn = words != null ? words.passOn() : List.of();
-        if (!passOn.isEmpty()) {
-            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                    isFirst, null).ifPresent(done::add);
-        }
-        if (words == null) {
-            return done;
-        }
         if (!words.has(Letter.L) || words.value(Letter.L) != 2) {
             Word l = words.word(Letter.L);
-            host.out().error(Code.E625_G10_NOT_SUPPORTED, l != null ? l.span() : g.span(), label,
+            out.error(Code.E625_G10_NOT_SUPPORTED, l != null ? l.span() : g.span(), label,
                     l != null ? l.toString() : "without L");
-            return done;
+            return Optional.empty();
         }
         Word p = words.word(Letter.P);
         long n = p == null ? -1 : Math.round(words.value(Letter.P));
         if (n < 0 || n > 6) {
-            host.out().error(Code.E626_G10_WORK_OFFSET_NUMBER, p != null ? p.span() : g.span(), label,
+            out.error(Code.E626_G10_WORK_OFFSET_NUMBER, p != null ? p.span() : g.span(), label,
                     p != null ? p.toString() : "no P");
-            return done;
+            return Optional.empty();
         }
-        boolean uw = host.profile().control().gFor(GRole.RAPID).map(f -> f.words() == null
+        boolean uw = profile.control().gFor(GRole.RAPID).map(f -> f.words() == null
                 || f.words().contains(Param.U)).orElse(true);
-        ModalState s = host.state();
         Units u = s.units();
-        double noPoint = u == Units.INCH ? host.profile().noPointInch() : host.profile().noPointMm();
+        double noPoint = u == Units.INCH ? profile.noPointInch() : profile.noPointMm();
         int index = n == 0 ? 0 : 53 + (int) n;
-        Point now = host.coordinates().work(index);
-        double x = now.x();
-        double z = now.z();
+        Point was = now.work(index);
+        double x = was.x();
+        double z = was.z();
         for (Word w : words.axes()) {
             boolean incremental = w.letter() == Letter.U || w.letter() == Letter.W;
             if (incremental && !uw) {
-                host.out().error(Code.E161_CYCLE_WORD, w.span(), label, w);
-                return done;
+                out.error(Code.E161_CYCLE_WORD, w.span(), label, w);
+                return Optional.empty();
             }
             double v = NumberText.decimal(w.number());
             if (Double.isNaN(v)) {
-                host.out().error(Code.E014_DECIMAL_EXPECTED, w.span(), w.letter());
-                return done;
+                out.error(Code.E014_DECIMAL_EXPECTED, w.span(), w.letter());
+                return Optional.empty();
             }
             v = NumberText.hasPoint(w.number()) ? v : v * noPoint;
             boolean add = incremental || s.incremental();
             // an offset is a machine position, as G53's words are: from the control's machine zero;
             // the external offset is a shift that the others add
-            Point zero = index == 0 ? Point.ORIGIN : host.profile().machineZero();
+            Point zero = index == 0 ? Point.ORIGIN : profile.machineZero();
             if (w.letter() == Letter.X || w.letter() == Letter.U) {
-                double c = v * host.coordinates().perX(u);
+                double c = v * now.perX(u);
                 x = add ? x + c : zero.x() + c;
             } else {
-                double c = v * host.coordinates().perZ(u);
+                double c = v * now.perZ(u);
                 z = add ? z + c : zero.z() + c;
             }
         }
-        host.coordinates().setWork(index, new Point(x, z));
-        return done;
+        return Optional.of(new Write(index, new Point(x, z)));
     }
 }

@@ -7,7 +7,7 @@ import gcnc.check.cycle.Pattern;
 import gcnc.check.geom.Coordinates;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
-import gcnc.ir.CheckedBlock;
+import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
 import gcnc.ir.Word;
 import gcnc.machine.Units;
@@ -19,58 +19,58 @@ import java.util.List;
  * {@link Pattern} written as blocks at the cycle's line and checked one by one.
  */
 final class PatternRepeat {
-    private final Checker host;
+    private final Coordinates coordinates;
+    private final Diagnostics out;
     private final CycleCall call;
-    private final int line;
 
-    PatternRepeat(Checker host, CycleCall call, int line) {
-        this.host = host;
+    PatternRepeat(Coordinates coordinates, Diagnostics out, CycleCall call) {
+        this.coordinates = coordinates;
+        this.out = out;
         this.call = call;
-        this.line = line;
     }
 
     /**
      * The number of passes a word gives (R of a first block, D): a whole number of at least one,
      * read as written (no no-point rule: it counts passes); NaN after E013, E008 or E167.
      */
-    static double passes(Checker host, CycleCall call, Letter l) {
+    static double passes(Diagnostics out, CycleCall call, Letter l) {
         Word w = call.words().get(l);
         double v = NumberText.decimal(w.number());
         if (v != Math.rint(v)) {
-            host.out().error(Code.E013_INTEGER_EXPECTED, w.span(), l);
+            out.error(Code.E013_INTEGER_EXPECTED, w.span(), l);
             return Double.NaN;
         }
         if (v < 1) {
-            host.out().error(Code.E008_PARAMETER_TOO_SMALL, w.span(), l, w.number(), 1);
+            out.error(Code.E008_PARAMETER_TOO_SMALL, w.span(), l, w.number(), 1);
             return Double.NaN;
         }
         if (v > StockRemoval.MAX_PASSES) {
-            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, w.span(), call.name(), w, (long) v,
+            out.error(Code.E167_CYCLE_TOO_MANY_PASSES, w.span(), call.name(), w, (long) v,
                     StockRemoval.MAX_PASSES);
             return Double.NaN;
         }
         return v;
     }
 
-    /** The cycle's checked blocks; none after a finding. {@code firstBlock}: what a Fanuc first block left in force. */
-    List<CheckedBlock> expand(Contour contour, ModalState start, FirstBlock firstBlock) {
-        double n = call.has(Letter.D) ? passes(host, call, Letter.D) : firstBlock.passes();
+    /** The cycle's passes; empty after a finding. {@code firstBlock}: what a Fanuc first block left in force. */
+    java.util.Optional<CycleExpansion.Passes> expand(Contour contour, ModalState start, FirstBlock firstBlock) {
+        double n = call.has(Letter.D) ? passes(out, call, Letter.D) : firstBlock.passes();
         if (Double.isNaN(n)) {
             if (!call.has(Letter.D)) {
-                host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
+                out.error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
                         "D, or a " + call.name() + " U W R block before it");
             }
-            return List.of();
+            return java.util.Optional.empty();
         }
-        Coordinates c = host.coordinates();
+        Coordinates c = coordinates;
         Units u = start.units();
         double reliefX = call.has(Letter.I) ? call.value(Letter.I) : zeroIfNone(firstBlock.reliefX());
         double reliefZ = call.has(Letter.K) ? call.value(Letter.K) : zeroIfNone(firstBlock.reliefZ());
         double ux = call.has(Letter.U) ? call.value(Letter.U) * c.perX(u) : 0;
         double wz = call.has(Letter.W) ? call.value(Letter.W) * c.perZ(u) : 0;
         int passes = (int) n;
-        return CycleExpansion.write(host, call, line,
-                Pattern.moves(contour, ux, wz, reliefX * c.perRadius(u), reliefZ * c.perZ(u), passes), passes, start);
+        return java.util.Optional.of(new CycleExpansion.Passes(
+                Pattern.moves(contour, ux, wz, reliefX * c.perRadius(u), reliefZ * c.perZ(u), passes), passes));
     }
 
     private static double zeroIfNone(double v) {

@@ -3,14 +3,14 @@ package gcnc.check;
 import gcnc.check.cycle.CycleWords;
 import gcnc.check.cycle.Move;
 import gcnc.diag.Code;
-import gcnc.ir.CheckedBlock;
+import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
-import java.util.ArrayList;
+import gcnc.machine.MachineProfile;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Optional;
@@ -22,14 +22,15 @@ import java.util.Set;
  * G28 does to the first: two rapids. The reference points are the machine's, so they are data of
  * the profile ({@code reference.2} .. {@code reference.4}); a G30 to one the profile does not give
  * is E631, a P other than 2-4 E630, no axis word E030.
+ *
+ * <p>It only checks: {@link #read} splits the block, {@link #reference} finds the point,
+ * {@link #moves} gives the two rapids; the checker checks the block of other words, follows the
+ * intermediate point and checks and commits the moves ({@code Checker.returnToReference}).
  */
 final class ReferenceReturn {
     private static final Set<Letter> OWN = EnumSet.of(Letter.P);
 
-    private final Checker host;
-
-    ReferenceReturn(Checker host) {
-        this.host = host;
+    private ReferenceReturn() {
     }
 
     /** The block's G30 word, or null. */
@@ -47,40 +48,35 @@ final class ReferenceReturn {
         return null;
     }
 
-    /** The G30 block: its other words as a block of their own, then the two rapids. */
-    List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
+    /** The G30 block's words: its other words as a block of their own, and its P and axes (null after their error). */
+    static CycleBlocks.Split read(RawBlock b, Word g, Diagnostics out) {
+        CycleWords words = CycleWords.read(b, g, "G" + g.number(), OWN, OWN, 1, 1, w -> false, out);
+        return new CycleBlocks.Split(CycleBlocks.passOnBlock(b, words != null ? words.passOn() : List.of()), words);
+    }
+
+    /** The reference point P names (2 without P) in the profile; empty after an error (to {@code out}). */
+    static Optional<Point> reference(Word g, CycleWords words, MachineProfile profile, Diagnostics out) {
         String label = "G" + g.number();
-        CycleWords words = CycleWords.read(b, g, label, OWN, OWN, 1, 1, w -> false, host.out());
-        List<CheckedBlock> done = new ArrayList<>(3);
-        List<Word> passOn = words != null ? words.passOn() : List.of();
-        CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
-        if (words == null) {
-            return done;
-        }
         int n = words.has(Letter.P) ? (int) Math.round(words.value(Letter.P)) : 2;
         if (n < 2 || n > 4) {
             Word p = words.word(Letter.P);
-            host.out().error(Code.E630_G30_REFERENCE_NUMBER, p.span(), label, p);
-            return done;
+            out.error(Code.E630_G30_REFERENCE_NUMBER, p.span(), label, p);
+            return Optional.empty();
         }
         if (words.axes().isEmpty()) {
-            host.out().error(Code.E030_PARAMETER_EXPECTED, g.span(), label);
-            return done;
+            out.error(Code.E030_PARAMETER_EXPECTED, g.span(), label);
+            return Optional.empty();
         }
-        Optional<Point> reference = host.profile().reference(n);
+        Optional<Point> reference = profile.reference(n);
         if (reference.isEmpty()) {
-            host.out().error(Code.E631_G30_NO_REFERENCE, g.span(), label, n, host.profile().name());
-            return done;
+            out.error(Code.E631_G30_NO_REFERENCE, g.span(), label, n, profile.name());
         }
-        ModalState start = host.state();
-        Point via = CycleBlocks.target(host, b, words.axes(), start);
-        if (via == null) {
-            return done;
-        }
-        Point ref = reference.get();
+        return reference;
+    }
+
+    /** The two rapids: to the intermediate point {@code via}, then the axes named to {@code ref}. */
+    static List<Move> moves(CycleWords words, Point ref, Point via) {
         Point end = new Point(words.hasAxis(true) ? ref.x() : via.x(), words.hasAxis(false) ? ref.z() : via.z());
-        List<Move> moves = List.of(Move.line(true, via, 1), Move.line(true, end, 1));
-        done.addAll(CycleBlocks.write(host, label, b.line(), g.span(), moves, 1, start, -1, null));
-        return done;
+        return List.of(Move.line(true, via, 1), Move.line(true, end, 1));
     }
 }

@@ -11,8 +11,8 @@ import gcnc.check.cycle.PocketRoughing;
 import gcnc.check.cycle.Roughing;
 import gcnc.check.geom.Coordinates;
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
-import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
@@ -33,13 +33,17 @@ final class StockRemoval {
     /** Geometric tolerance, mm. */
     private static final double EPS_MM = 0.001;
 
-    private final Checker host;
+    private final Coordinates coordinates;
+    private final MachineProfile profile;
+    private final Diagnostics out;
     private final CycleCall call;
     private final int line;
     private final Axes axes;
 
-    StockRemoval(Checker host, CycleCall call, int line) {
-        this.host = host;
+    StockRemoval(Coordinates coordinates, MachineProfile profile, Diagnostics out, CycleCall call, int line) {
+        this.coordinates = coordinates;
+        this.profile = profile;
+        this.out = out;
         this.call = call;
         this.line = line;
         this.axes = call.kind() == GRole.TURNING_CYCLE ? Axes.TURNING : Axes.FACING;
@@ -50,15 +54,15 @@ final class StockRemoval {
     }
 
     /**
-     * The cycle's checked blocks for the contour followed from {@code start}; none after a
+     * The cycle's passes for the contour followed from {@code start}; empty after a
      * finding. {@code firstBlock}: what a Fanuc first block left in force. {@code lead}: a first
      * contour move the control takes as positioning (Haas, Z alone in a G71's P block), or null.
      */
-    List<CheckedBlock> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock,
+    java.util.Optional<CycleExpansion.Passes> expand(Contour contour, List<RawBlock> blocks, ModalState start, FirstBlock firstBlock,
                               Contour.Piece lead) {
         Roughing.Settings settings = settings(start, firstBlock);
         if (settings == null) {
-            return List.of();
+            return java.util.Optional.empty();
         }
         boolean two = typeTwo(contour, blocks);
         Roughing.Outcome o = two ? new PocketRoughing(axes, settings).plan(contour) : new Roughing(axes, settings).plan(contour);
@@ -71,7 +75,7 @@ final class StockRemoval {
         }
         if (o instanceof Fault f) {
             report(f, blocks, true);
-            return List.of();
+            return java.util.Optional.empty();
         }
         Roughing.Plan plan = (Roughing.Plan) o;
         List<Move> moves = plan.moves();
@@ -83,7 +87,7 @@ final class StockRemoval {
             moves.addAll(plan.moves());
             moves.add(Move.line(true, start.position(), Math.max(1, plan.passes())));
         }
-        return CycleExpansion.write(host, call, line, moves, plan.passes(), start);
+        return java.util.Optional.of(new CycleExpansion.Passes(moves, plan.passes()));
     }
 
     /**
@@ -110,28 +114,28 @@ final class StockRemoval {
 
     /** The cycle's allowances, depth and retract in counts; null after E156, E157 or E158. */
     private Roughing.Settings settings(ModalState start, FirstBlock firstBlock) {
-        Coordinates c = host.coordinates();
-        MachineProfile p = host.profile();
+        Coordinates c = coordinates;
+        MachineProfile p = profile;
         Units u = start.units();
         double depth;
         if (call.has(Letter.D)) {
             depth = call.value(Letter.D);
             if (depth <= 0) {
-                host.out().error(Code.E156_CYCLE_DEPTH, call.words().get(Letter.D).span(), call.name(),
+                out.error(Code.E156_CYCLE_DEPTH, call.words().get(Letter.D).span(), call.name(),
                         call.words().get(Letter.D));
                 return null;
             }
         } else if (!Double.isNaN(firstBlock.depth())) {
             depth = firstBlock.depth();
         } else {
-            host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
+            out.error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
                     "D, or a " + call.name() + (axes == Axes.TURNING ? " U" : " W") + " R block before it");
             return null;
         }
         double retractMm = Double.isNaN(firstBlock.retractMm()) ? p.control().cycleRetractMm()
                 : firstBlock.retractMm();
         if (Double.isNaN(retractMm)) {
-            host.out().error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
+            out.error(Code.E157_CYCLE_DEPTH_MISSING, call.g().span(), call.name(),
                     "a " + call.name() + " R block before it, or cycle.retract_mm in the control");
             return null;
         }
@@ -166,9 +170,9 @@ final class StockRemoval {
         }
         args.addAll(f.args());
         if (error) {
-            host.out().error(f.code(), at, args.toArray());
+            out.error(f.code(), at, args.toArray());
         } else {
-            host.out().report(gcnc.diag.Diagnostic.warning(f.code(), at, args.toArray()));
+            out.report(gcnc.diag.Diagnostic.warning(f.code(), at, args.toArray()));
         }
     }
 }
