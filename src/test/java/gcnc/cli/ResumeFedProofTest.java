@@ -69,6 +69,9 @@ class ResumeFedProofTest {
             RunOnControllerTest.Run again = gcnc("", resumeArgs(resume));
             assertEquals(0, again.status(), again.all());
             assertFalse(again.all().contains("E827"), again.all());
+            // the pre-flight gives where the axes stopped as the program writes it, the counts after it
+            assertTrue(java.util.regex.Pattern.compile("axes at X4[0-9]\\.\\d{3} Z-\\d+\\.\\d{3} \\(Galil counts -?\\d+,-?\\d+\\)")
+                    .matcher(again.out()).find(), again.out());
             assertFalse(vc.controller().output(COOLANT), "M09 switched the coolant off on the way");
         }
         assertEquals(downloaded ? 2 : 0, tripped(stopped), "each trip point passed once over both runs: none dropped");

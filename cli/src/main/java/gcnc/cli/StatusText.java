@@ -96,7 +96,7 @@ final class StatusText implements EventSink {
             return say.get("run.preflight", p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(),
                     p.labelsLeft(), p.variablesNeeded(), p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()),
                     p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
-                    Math.round(p.position()[0]) + "," + Math.round(p.position()[1]));
+                    p.where());
         }
         if (e instanceof Event.Wear w) {
             return say.get("run.wear", w.file(),
