@@ -96,7 +96,7 @@ final class StatusText implements EventSink {
             return say.get("run.preflight", p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(),
                     p.labelsLeft(), p.variablesNeeded(), p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()),
                     p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
-                    Math.round(p.position()[0]) + "," + Math.round(p.position()[1]));
+                    p.where());
         }
         if (e instanceof Event.Wear w) {
             return say.get("run.wear", w.file(),
@@ -141,10 +141,17 @@ final class StatusText implements EventSink {
             b.append('N').append(s.number()).append(' ');
         }
         b.append(say.get("run.line", s.line()));
+        // program terms first (X as the program writes it, Z from work zero, the program's units), the
+        // counts after them, as every position gcnc run prints (send/PositionText)
+        String counts = s.counts() == null ? null : Math.round(s.counts()[0]) + "," + Math.round(s.counts()[1]);
         if (s.program() != null) {
-            b.append(String.format(Locale.ROOT, "  X%.3f Z%.3f", s.program()[0], s.program()[1]));
-        } else if (s.counts() != null) {
-            b.append(String.format(Locale.ROOT, "  at %d,%d counts", Math.round(s.counts()[0]), Math.round(s.counts()[1])));
+            String f = s.inch() ? "%.4f" : "%.3f";
+            b.append(String.format(Locale.ROOT, "  X" + f + " Z" + f, s.program()[0], s.program()[1]));
+            if (counts != null) {
+                b.append(" (Galil counts ").append(counts).append(')');
+            }
+        } else if (counts != null) {
+            b.append("  ").append(counts).append(" (Galil counts)");
         }
         if (!Double.isNaN(s.feed())) {
             b.append(String.format(Locale.ROOT, "  F%s%s", trim(s.feed()), s.perRev() ? "/rev" : "/min"));

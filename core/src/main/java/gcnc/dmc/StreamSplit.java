@@ -35,6 +35,12 @@ public final class StreamSplit implements Consumer<Instruction> {
     public static final String BUFFER_WAIT = "LMWAIT";
     /** The segments given after each wait for room. */
     public static final int BUFFER_BATCH = 100;
+    /**
+     * How many segments inside the buffer a trip point's segment is before its {@code AV} is written
+     * in a sequence fed while it runs (at a wait for room, or after {@code VE}): the compile's and a
+     * resume's rule alike (docs/galil.md, "Continuous contouring").
+     */
+    public static final int TRIP_LEAD = BUFFER_BATCH;
     /** The most commands of one block held back to see whether the block must be moved. */
     public static final int RUN_LIMIT = 4096;
     /** The moved blocks' labels: {@code #B1}, {@code #B2} ... */

@@ -89,7 +89,7 @@ final class GroupWriter {
      * the next wait for room, the trip point is still ahead of the path (at most 510 segments are in the
      * buffer, so the path is at least 210 behind it when the program runs as fast as the motion needs).
      */
-    static final int TRIP_LEAD = BATCH;
+    static final int TRIP_LEAD = gcnc.dmc.StreamSplit.TRIP_LEAD;
 
     GroupWriter(GalilDialect dialect, Consumer<Instruction> sink) {
         this.d = dialect;

@@ -93,6 +93,8 @@ public final class BlockTable {
      */
     public static final class View implements gcnc.CompileObserver {
         private final Map<Integer, Block> out = new HashMap<>();
+        /** The frame of the last main-program block that had one: the frame in force. */
+        private ProgramFrame last;
 
         @Override
         public void block(RawBlock raw, gcnc.diag.Origin from, java.util.List<CheckedBlock> checked, ModalState s) {
@@ -105,7 +107,16 @@ public final class BlockTable {
             if (raw.depth() > 0) {
                 return; // a called program's line: its own file's numbering
             }
-            out.put(raw.line(), new Block(frame, frame == null ? null : frame.number(), s.feed(), s.feedPerRev(),
+            String number = frame == null ? null : frame.number();
+            if (frame != null) {
+                last = frame;
+            } else if (checked.isEmpty() && last != null) {
+                // a line that makes no block of its own: a contour block a cycle reads (G71's N(p)..N(q)),
+                // whose segments the cycle's passes and G70 run with this line's name; its positions are
+                // in the frame in force (offsets change only in a block of their own), without its N
+                frame = new ProgramFrame(last.origin(), last.perX(), last.perZ(), null, null, last.file());
+            }
+            out.put(raw.line(), new Block(frame, number, s.feed(), s.feedPerRev(),
                     s.units() == Units.INCH, s.rpm(), s.css(), s.surfaceSpeed(), s.rpmClamp(), s.spindle(), s.tool(), s.toolOffset(), s.workOffset()));
         }
 

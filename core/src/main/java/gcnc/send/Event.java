@@ -13,11 +13,14 @@ public sealed interface Event {
 
     /**
      * Pre-flight: what the controller has and what the program needs (never fewer than needed, or
-     * the run stops here with E819).
+     * the run stops here with E819); where the axes are in Galil counts ({@code position}) and as a
+     * person reads it ({@code where}: program terms in the frame of the resume point's block, or of
+     * the first motion's, then the counts in parentheses).
      */
     record Preflight(String model, int programLines, int programLinesNeeded, int labelsLeft, int labelsNeeded,
                      int variablesLeft, int variablesNeeded, int arraySpace, int vectorSlots, int vectorSlotsNeeded,
-                     String pendingError, String limitSwitches, String motorsOff, double[] position) implements Event {
+                     String pendingError, String limitSwitches, String motorsOff, double[] position, String where)
+            implements Event {
     }
 
     /**

@@ -158,7 +158,7 @@ public final class Progress {
         if (k >= 0 && total > 0) {
             // a blended sequence: the path of the segments before the executing one, and along it
             Sequence.Piece p = s.pieces().get(k);
-            double along = Math.min(p.length(), Resume.along(p, counts));
+            double along = Math.min(p.length(), Replan.along(p, counts));
             return s.seconds() * Math.min(1, (s.lengthBefore(k) + along) / total);
         }
         double from = Math.hypot(counts[0] - s.start()[0], counts[1] - s.start()[1]);

@@ -2,7 +2,6 @@ package gcnc.send;
 
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
-import gcnc.dmc.Fixed;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -24,8 +23,10 @@ import java.util.TreeMap;
  *     one motion stopped part way), the rest of that sequence re-planned as a new sequence from
  *     where the axes are: the remaining part of the segment they are on (the line to its end, the
  *     arc from their angle), then the sequence's later segments, each with its own speeds, VPs
- *     measured from the new origin, the spindle changes on the way ({@code AV}) moved back by the
- *     path already run;
+ *     measured from the new origin; every trip point still ahead ({@code AV}, with the outputs and
+ *     spindle speeds it sets: a coolant switch, a G96 speed) measured on the new path, and, for a rest
+ *     longer than the buffer, {@code BGS} after the first fill and a wait for room before each further
+ *     batch, as the compile feeds a long sequence ({@link Replan});
  * <li>the program's lines after that sequence (or from the resume point) to its end, unchanged.
  * </ol>
  * The axes must be at the point's start, or on the path of the sequence from there (they stopped
@@ -134,13 +135,13 @@ public final class Resume {
                     ranOn = "the controller finished the sequence's blocks: line " + at.line() + " to "
                             + program.sourceLine(s.pieces().get(k - 1).line());
                 }
-                return build(s.last() + 1, s.first(), replan(s, k, false, axes));
+                return build(s.last() + 1, s.first(), new Replan(program, fill).of(s, k, false, axes, at));
             }
             if (!near(axes, p.to()) && onPiece(p, axes)) {
                 if (k > m.from()) {
                     ranOn = "the controller ran on along the sequence into line " + program.sourceLine(p.line());
                 }
-                return build(s.last() + 1, s.first(), replan(s, k, true, axes));
+                return build(s.last() + 1, s.first(), new Replan(program, fill).of(s, k, true, axes, at));
             }
         }
         // a controller that ran on without the host (a dropped link) stands at the end of a later sequence:
@@ -245,16 +246,12 @@ public final class Resume {
         return p;
     }
 
-    /** The re-planned rest of a sequence, and the spindle changes on its way the axes are already past. */
-    private record Replanned(Download.Builder lines, List<Integer> passed) {
-    }
-
     /**
      * @param from      the first of the program's lines to run unchanged
      * @param stateEnd  the state is what the lines before this one set
      * @param replanned the rest of an interrupted sequence, or null
      */
-    private Download build(int from, int stateEnd, Replanned replanned) {
+    private Download build(int from, int stateEnd, Replan.Result replanned) {
         Download.Builder b = new Download.Builder();
         int size = program.size();
         int header = 0;
@@ -349,106 +346,29 @@ public final class Resume {
     private double maxRpm = Double.POSITIVE_INFINITY;
     private boolean diameterX = true;
 
-    /** This resume with {@code profile}'s spindle, so that G96 is restored as its surface speed (without it: as the r/min last set). */
+    /**
+     * The segments a re-planned sequence gives before its {@code BGS} when it is longer than the
+     * buffer: the model's buffer less the slot VE takes; without a machine, as many as the interrupted
+     * sequence gave (one fed while it ran is fed again from the same fill).
+     */
+    private int fill = Integer.MAX_VALUE;
+
+    /**
+     * This resume with {@code profile}'s spindle, so that G96 is restored as its surface speed (without it: as
+     * the r/min last set), and its controller's vector buffer, for a re-planned sequence's feeding.
+     */
     public Resume spindle(gcnc.machine.MachineProfile profile) {
         rpmPerVolt = profile.rpmPerVolt();
         maxRpm = profile.maxRpm();
         diameterX = profile.diameterX();
+        fill = (int) profile.controllerLimits().model().range(gcnc.machine.GalilModel.Limit.BUFFER_SEGMENTS).max() - 1;
         return this;
     }
 
-    /**
-     * The rest of sequence {@code s} from {@code axes} as a sequence of its own: its piece {@code k}
-     * from where the axes are ({@code partial}) or whole, then the later pieces; each line's origin
-     * is the compiled line it continues, so the controller's segment numbers ({@code _CSS}) of the
-     * new sequence still name the G-code blocks.
-     */
-    private Replanned replan(Sequence s, int k, boolean partial, double[] axes) {
-        Download.Builder b = new Download.Builder();
-        int vs = s.first();
-        Command speed = program.command(vs);
-        b.add(speed instanceof Command.VectorSpeed ? speed
-                : new Command.VectorSpeed(Fixed.of(Math.round(s.speed()))), vs);
-        double[] cursor = axes;
-        List<Sequence.Piece> pieces = s.pieces();
-        for (int j = k; j < pieces.size(); j++) {
-            Sequence.Piece p = pieces.get(j);
-            Command c = program.command(p.line());
-            if (p instanceof Sequence.Arc a) {
-                Command.CircularArc cr = (Command.CircularArc) c;
-                if (j == k && partial) {
-                    double theta = Math.toDegrees(Math.atan2(axes[1] - a.centre()[1], axes[0] - a.centre()[0]));
-                    double delta = sweepTo(theta, a.theta() + a.delta(), a.delta());
-                    cr = new Command.CircularArc(cr.radius(), Fixed.fourDecimals(theta), Fixed.fourDecimals(delta), cr.speeds());
-                }
-                b.add(cr, p.line());
-                double[] g = Command.CircularArc.geometry(cursor[0], cursor[1], cr.radius().value(), cr.start().value(),
-                        cr.sweep().value());
-                cursor = new double[] {g[2], g[3]};
-                boolean closes = j == pieces.size() - 1 || pieces.get(j + 1) instanceof Sequence.Arc;
-                if (closes && Math.hypot(cursor[0] - a.to()[0], cursor[1] - a.to()[1]) >= 0.5) {
-                    // the arc from the stop ends a count or so off: close on the target
-                    b.add(vp(a.to(), axes, cr.speeds()), p.line());
-                    cursor = a.to();
-                }
-            } else {
-                Command.Speeds speeds = c instanceof Command.VectorPosition v ? v.speeds() : Command.Speeds.NONE;
-                b.add(vp(p.to(), axes, speeds), p.line());
-                cursor = p.to();
-            }
-        }
-        // the path already run: the spindle changes on the way (AV n, then the change) before it have
-        // happened. AV is relative ("from the start of a coordinated move sequence or from the last AV
-        // command", command reference AV): each trip point is the sum of the AVs so far; the first one
-        // kept is written from the new sequence's start, the later ones as they were
-        double run = s.lengthBefore(k) + (partial ? along(pieces.get(k), axes) : 0);
-        List<Integer> passed = new ArrayList<>();
-        boolean begun = false;
-        boolean skip = false;
-        long trip = 0; // the trip point of the AV, counts from the original sequence's start
-        double from = run; // where the next AV kept measures from, in the original's counts
-        for (int i = pieces.get(pieces.size() - 1).line() + 1; i <= s.last(); i++) {
-            Command c = program.command(i);
-            if (c instanceof Command.BeginSequence) {
-                begun = true;
-            }
-            if (c instanceof Command.AfterVector av && begun) {
-                trip += av.counts();
-                skip = trip <= run;
-                if (!skip) {
-                    long n = Math.round(trip - from);
-                    b.add(new Command.AfterVector(n), i);
-                    from += n; // the controller's trip point, a fraction of a count off the original's at most
-                }
-                continue;
-            }
-            if (skip && !(c instanceof Command.AwaitSequence)) {
-                passed.add(i);
-                continue;
-            }
-            b.add(program.command(i), i);
-        }
-        return new Replanned(b, passed);
-    }
-
-    /** How far along piece {@code p} a point on it is, counts of path. */
-    static double along(Sequence.Piece p, double[] q) {
-        if (p instanceof Sequence.Arc a) {
-            double ang = Math.toDegrees(Math.atan2(q[1] - a.centre()[1], q[0] - a.centre()[0]));
-            return Math.abs(Math.toRadians(sweepTo(a.theta(), ang, a.delta()))) * a.radius();
-        }
-        return Math.hypot(q[0] - p.from()[0], q[1] - p.from()[1]);
-    }
-
     /** The sweep from {@code theta} to {@code end} in the direction of {@code sense}, degrees. */
-    private static double sweepTo(double theta, double end, double sense) {
+    static double sweepTo(double theta, double end, double sense) {
         double d = ((end - theta) % 360 + 360) % 360; // [0, 360)
         return sense < 0 && d > 0 ? d - 360 : d;
-    }
-
-    /** {@code VP} to {@code to} from the new sequence's origin {@code origin}, whole counts. */
-    private static Command vp(double[] to, double[] origin, Command.Speeds speeds) {
-        return new Command.VectorPosition(Math.round(to[0] - origin[0]), Math.round(to[1] - origin[1]), speeds);
     }
 
     private boolean onPiece(Sequence.Piece p, double[] q) {

@@ -157,6 +157,11 @@ public final class Sender {
         return options.resumeAt() == null ? 0 : Math.max(0, program.firstLineOf(options.resumeAt().line()));
     }
 
+    /** The G-code line of the program's first motion (the frame its start was verified in), 0 when it has none. */
+    private int firstMotionLine() {
+        return program.sequences().isEmpty() ? 0 : program.sourceLine(program.sequences().get(0).first());
+    }
+
     /** Pre-flight; returns what to download (the program, or the resume program built from where the axes are). */
     private Download preflight(MachineLink c, String link) throws IOException, RunFault {
         MachineLink.Facts f = c.preflight();
@@ -195,7 +200,9 @@ public final class Sender {
         int needSlots = program.mostSegments();
         events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), needLabels,
                 f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
-                f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position()));
+                f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position(),
+                new PositionText(program, blocks).at(options.resumeAt() != null ? options.resumeAt().line() : firstMotionLine(),
+                        f.position())));
         // the wear the DMC was compiled with: the operator sees which file's wear moves the tools (docs/run.md)
         for (int n : blocks.toolOffsets()) {
             profile.wear().of(n).ifPresent(w -> events.accept(new Event.Wear(w.file(), n, w.x(), w.z(),
@@ -249,7 +256,7 @@ public final class Sender {
             double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();
             if (Math.hypot(f.position()[0] - home[0], f.position()[1] - home[1]) > tolerance()) {
                 // in the terms of the first motion's block (the frame the home was verified in), then the counts
-                int line = program.sequences().isEmpty() ? 0 : program.sourceLine(program.sequences().get(0).first());
+                int line = firstMotionLine();
                 PositionText where = new PositionText(program, blocks);
                 throw new RunFault(Code.E826_NOT_AT_START, 0, false, where.at(line, f.position()), where.at(line, home));
             }

@@ -84,7 +84,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
   function preflight(p) {
     const parts = [p.model, t.pfLines(p.programLinesNeeded, p.programLines), t.pfLabels(p.labelsNeeded, p.labelsLeft),
       t.pfSlots(p.vectorSlotsNeeded, p.vectorSlots), p.limitSwitches ? t.pfLimits(p.limitSwitches) : t.pfLimitsClear,
-      t.pfAxes(p.position.map((v) => fmt(v, 0)).join(","))];
+      t.pfAxes(p.where || p.position.map((v) => fmt(v, 0)).join(","))];
     return t.preflight + ": " + parts.join(", ");
   }
 
