@@ -52,7 +52,13 @@ class SigtermTest {
         Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         // were gcnc to end without opening the pipe, opening our end would wait for ever: then open
         // and close a reader's end (read-write, which on Linux never waits) to free it
+        // (only while our end is not open: afterwards the callback, running late, would create a
+        // plain file at the pipe's name after the test had removed the folder's files)
+        java.util.concurrent.atomic.AtomicBoolean opened = new java.util.concurrent.atomic.AtomicBoolean();
         p.onExit().thenRun(() -> {
+            if (opened.get()) {
+                return;
+            }
             try (java.io.RandomAccessFile unblock = new java.io.RandomAccessFile(fifo.toFile(), "rw")) {
                 // nothing to read
             } catch (IOException gone) {
@@ -64,6 +70,7 @@ class SigtermTest {
         OutputStream program = null;
         try {
             program = Files.newOutputStream(fifo); // opens once gcnc opens its end
+            opened.set(true);
             program.write("O2000\nG21 G90 G98\nG50 S2500\nM11\nT0101\nS1200 M03\nG00 X52. Z2.\n"
                     .getBytes(StandardCharsets.US_ASCII));
             long written = 0;

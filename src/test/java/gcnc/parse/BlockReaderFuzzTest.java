@@ -27,7 +27,8 @@ class BlockReaderFuzzTest {
             Code.E006_NUMBER_EXPECTED, Code.E010_SYNTAX, Code.E013_INTEGER_EXPECTED, Code.E014_DECIMAL_EXPECTED,
             Code.E054_NESTED_COMMENT, Code.E109_TEXT_OUTSIDE_COMMENT, Code.E111_MACRO_NOT_SUPPORTED_YET,
             Code.E120_LETTER_O_IN_NUMBER, Code.E121_DECIMAL_COMMA, Code.E600_SPACE_IN_NUMBER,
-            Code.E602_TEXT_AFTER_END_OF_FILE_MARK, Code.E702_DOTTED_G_NOT_SUPPORTED);
+            Code.E602_TEXT_AFTER_END_OF_FILE_MARK, Code.E702_DOTTED_G_NOT_SUPPORTED,
+            Code.E261_DENFORD_SETUP_LINE); // a "[" and a word at a line's start: a training control's set-up line
     private static final Pattern INTEGER = Pattern.compile("[0-9]+");
     private static final Pattern FEED = Pattern.compile("([0-9]+(\\.[0-9]*)?|\\.[0-9]+)");
     private static final Pattern COORD = Pattern.compile("[+-]?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)");
