@@ -145,25 +145,7 @@ final class LowerEnvelope {
             first--; // the piece ending at lo may join the first fresh one
         }
         int last = index(hi);
-        List<UpperEnvelope.Piece> all = new ArrayList<>();
-        List<UpperEnvelope.Piece> after = new ArrayList<>();
-        for (int i = first; i <= last; i++) {
-            UpperEnvelope.Piece p = pieces.get(i);
-            if (p.z1() <= lo) {
-                all.add(p);
-            } else if (p.z0() >= hi) {
-                after.add(p);
-            } else {
-                if (p.z0() < lo) {
-                    all.add(p.cut(p.z0(), lo));
-                }
-                if (p.z1() > hi) {
-                    after.add(p.cut(hi, p.z1()));
-                }
-            }
-        }
-        all.addAll(fresh);
-        all.addAll(after);
+        List<UpperEnvelope.Piece> all = Pieces.spliced(pieces.subList(first, last + 1), lo, hi, fresh);
         pieces.subList(first, last + 1).clear();
         pieces.addAll(first, Pieces.join(all, false));
         if (pieces.size() > MAX_PIECES) {

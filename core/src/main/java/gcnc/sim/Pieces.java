@@ -21,6 +21,34 @@ final class Pieces {
     }
 
     /**
+     * What an envelope holds once {@code fresh} (pieces covering [lo, hi] end to end) takes the place
+     * of what {@code covered} (consecutive pieces reaching over [lo, hi]) had there: the parts of
+     * {@code covered} before lo, {@code fresh}, the parts after hi, in order and not yet joined.
+     */
+    static List<UpperEnvelope.Piece> spliced(Iterable<UpperEnvelope.Piece> covered, double lo, double hi,
+            List<UpperEnvelope.Piece> fresh) {
+        List<UpperEnvelope.Piece> all = new java.util.ArrayList<>();
+        List<UpperEnvelope.Piece> after = new java.util.ArrayList<>();
+        for (UpperEnvelope.Piece p : covered) {
+            if (p.z1() <= lo) {
+                all.add(p);
+            } else if (p.z0() >= hi) {
+                after.add(p);
+            } else {
+                if (p.z0() < lo) {
+                    all.add(p.cut(p.z0(), lo));
+                }
+                if (p.z1() > hi) {
+                    after.add(p.cut(hi, p.z1()));
+                }
+            }
+        }
+        all.addAll(fresh);
+        all.addAll(after);
+        return all;
+    }
+
+    /**
      * Drops empty pieces and slivers, and the joints that lie on the line through their neighbours
      * (within {@link #STRAIGHT}); a corner whose two sides are a rounding apart becomes one point,
      * the higher ({@code higher}: an upper envelope, never below the material) or the lower.

@@ -292,28 +292,12 @@ final class UpperEnvelope {
     void replace(double lo, double hi, List<Piece> fresh) {
         int c0 = firstChunk(lo); // the piece ending at lo may join the first fresh one
         int c1 = chunkAt(hi);
-        List<Piece> all = new ArrayList<>();
-        List<Piece> after = new ArrayList<>();
-        int removed = 0;
+        List<Piece> covered = new ArrayList<>();
         for (int c = c0; c <= c1; c++) {
-            for (Piece p : chunks.get(c).pieces) {
-                removed++;
-                if (p.z1() <= lo) {
-                    all.add(p);
-                } else if (p.z0() >= hi) {
-                    after.add(p);
-                } else {
-                    if (p.z0() < lo) {
-                        all.add(p.cut(p.z0(), lo));
-                    }
-                    if (p.z1() > hi) {
-                        after.add(p.cut(hi, p.z1()));
-                    }
-                }
-            }
+            covered.addAll(chunks.get(c).pieces);
         }
-        all.addAll(fresh);
-        all.addAll(after);
+        int removed = covered.size();
+        List<Piece> all = Pieces.spliced(covered, lo, hi, fresh);
         List<Piece> joined = Pieces.join(all, true);
         List<Chunk> made = new ArrayList<>();
         for (int i = 0; i < joined.size(); i += CHUNK) {
