@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
  * gcnc lsp driven by real editors' clients (docs/editors.md): the pytest-lsp suite in src/test/lsp
  * (pygls's client: open, edit, diagnostics equal to gcnc check's, hover, definition, references,
  * symbols, code actions, .gcnc settings, the simulator's findings, bad input), and Neovim's own
- * client, headless (src/test/lsp/nvim.lua). Both mostly wait for the server's JVMs: the second lane. Each needs its program: pytest-lsp in the virtual
+ * client, headless (src/test/lsp/nvim.lua). Both mostly wait for the server's JVMs: lane 3 (build.gradle's `lanes`). Each needs its program: pytest-lsp in the virtual
  * environment setup.sh makes (.venv-lsp), Debian's neovim; without it the test is skipped, saying so.
  */
 class LspClientTest {
