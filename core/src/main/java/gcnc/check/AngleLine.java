@@ -83,7 +83,7 @@ final class AngleLine {
             out.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle);
             return plain;
         }
-        Checker.Dry dry = host.peek(bare(plain), from, new Diagnostics());
+        Dry dry = host.peek(bare(plain), from, new Diagnostics());
         if (dry == null) {
             return plain; // its own errors are reported when it runs
         }
@@ -160,11 +160,11 @@ final class AngleLine {
         if (host.startsCycle(one) || host.startsCycle(two)) {
             return null;
         }
-        Checker.Dry dry1 = host.peek(bare(one), from, new Diagnostics());
+        Dry dry1 = host.peek(bare(one), from, new Diagnostics());
         if (dry1 == null) {
             return new RawBlock[] {one, two};
         }
-        Checker.Dry dry2 = host.peek(bare(two), dry1.next(), new Diagnostics());
+        Dry dry2 = host.peek(bare(two), dry1.next(), new Diagnostics());
         if (dry2 == null || dry2.next().incremental()) {
             return dry2 == null ? new RawBlock[] {one, two} : null;
         }

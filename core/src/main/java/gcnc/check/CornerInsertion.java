@@ -42,7 +42,7 @@ final class CornerInsertion {
                         ModalState after, List<RawBlock> still, ModalState afterStill) {
     }
 
-    private final Checker host;
+    private final CornerHost host;
     private final CornerWords words;
     private final AngleLine angles;
     private Held held;
@@ -50,14 +50,14 @@ final class CornerInsertion {
     private RawBlock angleAlone;
     private boolean angleAloneFirst;
 
-    CornerInsertion(Checker host) {
+    CornerInsertion(CornerHost host) {
         this.host = host;
-        this.words = new CornerWords(host.lookahead());
-        this.angles = new AngleLine(host.lookahead());
+        this.words = new CornerWords(host);
+        this.angles = new AngleLine(host);
     }
 
-    /** The same insertion for the other position of the block delete switch (Checker.fork). */
-    CornerInsertion copy(Checker other) {
+    /** The same insertion for the other position of the block delete switch (the checker's fork). */
+    CornerInsertion copy(CornerHost other) {
         CornerInsertion c = new CornerInsertion(other);
         c.held = held == null ? null : new Held(held.block, held.request, held.isFirst, held.from, held.corner,
                 held.after, new ArrayList<>(held.still), held.afterStill);
@@ -68,7 +68,7 @@ final class CornerInsertion {
 
     /** A cycle's contour with its corners made ({@link ContourCorners#made}). */
     List<RawBlock> inContour(List<RawBlock> blocks, ModalState start) {
-        return new ContourCorners(this, host.lookahead(), host.functions(), host.out(), words, angles)
+        return new ContourCorners(this, host, host.functions(), host.out(), words, angles)
                 .made(blocks, start);
     }
 
@@ -113,7 +113,7 @@ final class CornerInsertion {
             out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return host.flowOn(stripped, isFirst);
         }
-        Checker.Dry dry = host.peek(stripped, host.state(), new Diagnostics());
+        Dry dry = host.peek(stripped, host.state(), new Diagnostics());
         if (dry == null) {
             return host.flowOn(stripped, isFirst); // its own errors are reported when it runs
         }
@@ -173,7 +173,7 @@ final class CornerInsertion {
         List<Word> rest = new ArrayList<>(b.words().size());
         RawBlock plain = !words.mayAsk(b) || words.read(b, h.afterStill, rest, new Diagnostics()) == null ? b
                 : b.called(rest, b.last(), b.depth());
-        Checker.Dry dry = host.peek(plain, h.afterStill, new Diagnostics());
+        Dry dry = host.peek(plain, h.afterStill, new Diagnostics());
         if (dry == null) {
             return release(b); // its own errors are reported when it runs
         }
@@ -246,7 +246,7 @@ final class CornerInsertion {
             }
             return null;
         }
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, after), block.line(), r.word().span());
+        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), after), block.line(), r.word().span());
         Point start = counts(c.start(), px, pz);
         Point stop = counts(c.end(), px, pz);
         Move.Kind kind = c.centre() == null ? Move.Kind.FEED
@@ -256,7 +256,7 @@ final class CornerInsertion {
         // the next move now starts where the corner ends: written as increments it is rewritten
         // from there, so that it still ends where the program put it
         RawBlock moved = incremental(next, nextState)
-                ? moveTo(next, new MoveWriter(CycleExpansion.frame(host, nextState), next.line(),
+                ? moveTo(next, new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), nextState), next.line(),
                         next.words().get(0).span()), end, stop)
                 : next;
         return new Made(moveTo(block, writer, start, from), insert, moved);

@@ -26,7 +26,7 @@ final class CycleBlocks {
     }
 
     /** The G function a G word names in the control, or null (another letter, no number, no such G). */
-    static gcnc.machine.GFunction function(Checker host, Word w) {
+    static gcnc.machine.GFunction function(CycleHost host, Word w) {
         if (w.letter() != Letter.G || w.number().isEmpty() || w.code() < 0 || w.code() > 999) {
             return null;
         }
@@ -38,7 +38,7 @@ final class CycleBlocks {
      * and no G that {@code ends} the cycle nor a one-shot G (group 0: G04 U1., G28 U0, G50 X), whose
      * words those would be.
      */
-    static boolean repeats(Checker host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
+    static boolean repeats(CycleHost host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
         boolean axis = false;
         for (Word w : b.words()) {
             gcnc.machine.GFunction f = function(host, w);
@@ -52,7 +52,7 @@ final class CycleBlocks {
     }
 
     /** Whether a G of the block ends the modal cycle in force, as {@code ends} says. */
-    static boolean ends(Checker host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
+    static boolean ends(CycleHost host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
         for (Word w : b.words()) {
             gcnc.machine.GFunction f = function(host, w);
             if (f != null && ends.test(f)) {
@@ -94,13 +94,13 @@ final class CycleBlocks {
     }
 
     /** The words of other functions as a block of their own, checked and committed; empty when none. */
-    static Optional<CheckedBlock> passOn(Checker host, RawBlock b, List<Word> passOn, boolean isFirst) {
+    static Optional<CheckedBlock> passOn(CycleHost host, RawBlock b, List<Word> passOn, boolean isFirst) {
         RawBlock block = passOnBlock(b, passOn);
         return block == null ? Optional.empty() : host.one(block, isFirst, null);
     }
 
     /** Where the block's axis words lead from {@code start} (a rapid followed aside), or null after its error. */
-    static Point target(Checker host, RawBlock b, List<Word> axes, ModalState start) {
+    static Point target(CycleHost host, RawBlock b, List<Word> axes, ModalState start) {
         if (axes.isEmpty()) {
             return start.position();
         }
@@ -109,7 +109,7 @@ final class CycleBlocks {
         words.add(new Word(Letter.G, rapid, axes.get(0).span()));
         words.addAll(axes);
         Diagnostics found = new Diagnostics();
-        Checker.Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
+        Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
                 found);
         host.out().addAll(found);
         return dry == null ? null : dry.block().end();
@@ -120,7 +120,7 @@ final class CycleBlocks {
      * simulator's findings; {@code dwell} (when not null) is checked right after move
      * {@code dwellAfter}. After the first that fails, a rapid back to the start ends the cycle.
      */
-    static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
+    static List<CheckedBlock> write(CycleHost host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, int dwellAfter, RawBlock dwell) {
         return write(host, name, line, at, moves, passes, start,
                 dwell == null ? java.util.Map.of() : java.util.Map.of(dwellAfter, List.of(dwell)));
@@ -130,7 +130,7 @@ final class CycleBlocks {
      * The moves as blocks, as above, with the blocks of {@code after} checked right after the move
      * of their index (a dwell at a hole's bottom, a tap's spindle reversal).
      */
-    static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
+    static List<CheckedBlock> write(CycleHost host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, java.util.Map<Integer, List<RawBlock>> after) {
         MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
         List<CheckedBlock> done = new ArrayList<>();

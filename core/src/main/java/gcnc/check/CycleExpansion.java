@@ -40,7 +40,7 @@ final class CycleExpansion {
     /** How many contours are kept for a later G70 (the oldest is forgotten first). */
     static final int STORED = 100;
 
-    private final Checker host;
+    private final CycleHost host;
     private final ContourReader contours;
     private final SingleCycle single;
     private final Grooving grooving;
@@ -111,7 +111,7 @@ final class CycleExpansion {
         return below >= above ? 1 : -1;
     }
 
-    CycleExpansion(Checker host) {
+    CycleExpansion(CycleHost host) {
         this.host = host;
         this.contours = new ContourReader(host, this::role);
         this.single = new SingleCycle(host);
@@ -490,7 +490,7 @@ final class CycleExpansion {
     }
 
     /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
-    static MoveWriter.Frame frame(Checker host, ModalState s) {
+    static MoveWriter.Frame frame(CycleHost host, ModalState s) {
         return frame(host.coordinates(), host.profile(), s);
     }
 
@@ -509,7 +509,7 @@ final class CycleExpansion {
      * is not followed further: a rapid back to the start point ends it, so that the blocks after
      * the cycle are judged from where the cycle leaves the tool (one finding, not one per pass).
      */
-    static List<CheckedBlock> write(Checker host, CycleCall call, int line, List<Move> moves, int passes,
+    static List<CheckedBlock> write(CycleHost host, CycleCall call, int line, List<Move> moves, int passes,
                                     ModalState start) {
         MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
         List<CheckedBlock> done = new ArrayList<>();
@@ -529,7 +529,7 @@ final class CycleExpansion {
     }
 
     /** After a move of a cycle failed: a rapid from where the checker left the tool to the cycle's end point. */
-    static Optional<CheckedBlock> abandon(Checker host, MoveWriter writer, Point end, CycleOrigin origin) {
+    static Optional<CheckedBlock> abandon(CycleHost host, MoveWriter writer, Point end, CycleOrigin origin) {
         Point at = host.state().position();
         if (at.distanceTo(end) <= 1e-9) {
             return Optional.empty();

@@ -19,9 +19,9 @@ import java.util.Optional;
  * along the axis that leaves the part.
  */
 final class Finishing {
-    private final Checker host;
+    private final CycleHost host;
 
-    Finishing(Checker host) {
+    Finishing(CycleHost host) {
         this.host = host;
     }
 

@@ -47,7 +47,7 @@ final class HoleDrilling {
     private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.L,
             Letter.C, Letter.H);
 
-    private final Checker host;
+    private final CycleHost host;
     /** The cycle in force, or null; its name, group and what later blocks keep. */
     private final ModalCycle modal = new ModalCycle(f -> f.role().motion() || f.role().singleCycle());
     private double bottom;
@@ -59,7 +59,7 @@ final class HoleDrilling {
     private double least;
     private Word dwell;
 
-    HoleDrilling(Checker host) {
+    HoleDrilling(CycleHost host) {
         this.host = host;
     }
 

@@ -29,7 +29,7 @@ import java.util.Set;
  *
  * <p>It only checks: {@link #read} splits the block, {@link #offset} says which offset the words
  * write and where; the checker checks the block of other words and commits the offset
- * ({@code Checker.setOffset}), findings go to the sink it is given.
+ * ({@link OffsetAndReturn#setOffset}), findings go to the sink it is given.
  */
 final class OffsetSetting {
     private static final Set<Letter> OWN = EnumSet.of(Letter.L, Letter.P);

@@ -25,7 +25,7 @@ import java.util.Set;
  *
  * <p>It only checks: {@link #read} splits the block, {@link #reference} finds the point,
  * {@link #moves} gives the two rapids; the checker checks the block of other words, follows the
- * intermediate point and checks and commits the moves ({@code Checker.returnToReference}).
+ * intermediate point and checks and commits the moves ({@link OffsetAndReturn#returnToReference}).
  */
 final class ReferenceReturn {
     private static final Set<Letter> OWN = EnumSet.of(Letter.P);

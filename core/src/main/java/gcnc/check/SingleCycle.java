@@ -27,14 +27,14 @@ import java.util.Optional;
  * (the other end coordinate, the taper) as before; a G of the group ends it (docs/cycles.md).
  */
 final class SingleCycle {
-    private final Checker host;
+    private final CycleHost host;
     /** The cycle in force, if any. */
     private final ModalCycle modal = new ModalCycle();
     /** The end point of the cycle in force, counts, and its taper (counts along X for G90, Z for G94). */
     private Point end;
     private double taper;
 
-    SingleCycle(Checker host) {
+    SingleCycle(CycleHost host) {
         this.host = host;
     }
 

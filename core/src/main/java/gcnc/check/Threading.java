@@ -32,7 +32,7 @@ import java.util.Set;
  * the Fanuc two-block form ({@code G76 P(mmrraa) Q(min depth) R(allowance)} then
  * {@code G76 X Z R(taper) P(height) Q(first depth) F}) and the Haas one-block form
  * ({@code G76 X Z K(height) D(first depth) F [I A P]}). Every thread pass is a G01 block checked
- * like a cut and built as a spindle-synchronised motion ({@link Checker#thread}); the rapids are
+ * like a cut and built as a spindle-synchronised motion ({@link CycleHost#thread}); the rapids are
  * ordinary G00 blocks. Under Haas M23 each G92/G76 pass ends with the profile's chamfered pull-out
  * ({@link PullOut}, made by {@code MotionBuilder}); G32 never does.
  */
@@ -51,7 +51,7 @@ final class Threading {
     static final double SHARP_V_PER_LEAD = 0.866;
     private static final Set<Integer> FANUC_ANGLES = Set.of(0, 29, 30, 55, 60, 80);
 
-    private final Checker host;
+    private final CycleHost host;
     /** The modal thread in force (G32 or G92), if any. */
     private final ModalCycle modal = new ModalCycle();
     /** G92 in force: its end point (counts), taper (radius counts) and lead (as written). */
@@ -77,7 +77,7 @@ final class Threading {
      */
     private boolean chamfer;
 
-    Threading(Checker host) {
+    Threading(CycleHost host) {
         this.host = host;
         this.chamfer = host.profile().control().allM().stream()
                 .anyMatch(f -> f.role() == gcnc.machine.MRole.THREAD_CHAMFER_ON);
@@ -327,7 +327,7 @@ final class Threading {
         ws.add(new Word(Letter.G, rapid, axes.get(0).span()));
         ws.addAll(axes);
         Diagnostics found = new Diagnostics();
-        Checker.Dry dry = host.dry(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false), host.state(),
+        Dry dry = host.dry(new RawBlock(b.line(), ws, ws.get(ws.size() - 1).span(), false), host.state(),
                 found);
         host.out().addAll(found);
         return dry == null ? null : dry.block().end();
