@@ -249,7 +249,7 @@ public final class Checker {
         }
         commit(d, sequence);
         advisories.accepted(d, result, out);
-        if (findings.open() && Cutting.cuts(result)) {
+        if (findings.open() && MotionKind.cuts(result)) {
             findings.closeCauses();
         }
         if (out.place() != gcnc.diag.Origin.PROGRAM) {

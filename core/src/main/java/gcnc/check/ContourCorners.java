@@ -111,7 +111,7 @@ final class ContourCorners {
         if (after == null) {
             return null; // its own errors are reported when the contour is followed
         }
-        if (!CornerInsertion.moves(after.block())) {
+        if (!MotionKind.moves(after.block())) {
             out.error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), next.line());
             return null;
         }

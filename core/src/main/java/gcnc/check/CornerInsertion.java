@@ -177,7 +177,7 @@ final class CornerInsertion {
         if (dry == null) {
             return release(b); // its own errors are reported when it runs
         }
-        if (!moves(dry.block())) {
+        if (!MotionKind.moves(dry.block())) {
             boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
             if (dry.next().ended() || letters || h.still.size() >= STILL_LIMIT) {
                 // the end of the program; Fanuc: the very next block must move (PS0051); Haas: bounded
@@ -330,39 +330,6 @@ final class CornerInsertion {
     static Motion.Linear feedLine(CheckedBlock c) {
         return CornerWords.feedLine(c.motions());
     }
-
-    /** Whether the block moves the tool (a dwell does not). */
-    static boolean moves(CheckedBlock c) {
-        for (Motion m : c.motions()) {
-            if (m.accept(MOVES)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether a motion moves the tool: everything but a dwell. */
-    private static final Motion.Visitor<Boolean> MOVES = new Motion.Visitor<>() {
-        @Override
-        public Boolean linear(Motion.Linear l) {
-            return true;
-        }
-
-        @Override
-        public Boolean arc(Motion.Arc a) {
-            return true;
-        }
-
-        @Override
-        public Boolean dwell(Motion.Dwell d) {
-            return false;
-        }
-
-        @Override
-        public Boolean thread(Motion.Thread t) {
-            return true;
-        }
-    };
 
     private static Point counts(Point p, double px, double pz) {
         return new Point(p.x() * px, p.z() * pz);

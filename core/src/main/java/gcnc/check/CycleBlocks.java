@@ -85,6 +85,31 @@ final class CycleBlocks {
     record Split(RawBlock passOn, gcnc.check.cycle.CycleWords words) {
     }
 
+    /**
+     * The block split as G10 and G30 read it ({@code g} the function's word, {@code own} the letters
+     * it reads); an error in its words to {@code out}.
+     */
+    static Split split(RawBlock b, Word g, java.util.Set<Letter> own, Diagnostics out) {
+        gcnc.check.cycle.CycleWords words = gcnc.check.cycle.CycleWords.read(b, g, "G" + g.number(), own, own, 1, 1,
+                w -> false, out);
+        return new Split(passOnBlock(b, words != null ? words.passOn() : List.of()), words);
+    }
+
+    /** The block's G word of the function with {@code role} (G10 L2, G30), or null. */
+    static Word gWord(RawBlock b, FunctionIndex functions, GRole role) {
+        List<Word> ws = b.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
+            if (w.letter() == Letter.G && !w.number().isEmpty()) {
+                gcnc.machine.GFunction f = functions.g(w.code());
+                if (f != null && f.role() == role) {
+                    return w;
+                }
+            }
+        }
+        return null;
+    }
+
     /** The words of other functions as a block of their own at the block's line, or null when none. */
     static RawBlock passOnBlock(RawBlock b, List<Word> passOn) {
         if (passOn.isEmpty()) {

@@ -28,14 +28,11 @@ import java.util.Optional;
  * ({@link CycleHost#thread}); the rapids are ordinary G00 blocks. Under Haas M23 each G92/G76 pass ends with the profile's chamfered pull-out
  * ({@link PullOut}, made by {@code MotionBuilder}); G32 never does.
  */
-final class Threading {
-    private final CycleHost host;
+final class Threading extends ModalExpansion {
     private final ThreadValues values;
     private final ThreadPassWriter writer;
     /** G76, with what a Fanuc first block left in force. */
     private final MultipleThread multiple;
-    /** The modal thread in force (G32 or G92), if any. */
-    private final ModalCycle modal = new ModalCycle();
     /** G92 in force: its end point (counts), taper (radius counts) and lead (as written). */
     private Point end;
     private double taper;
@@ -48,7 +45,7 @@ final class Threading {
     private boolean chamfer;
 
     Threading(CycleHost host) {
-        this.host = host;
+        super(host, new ModalCycle()); // the modal thread in force (G32 or G92), if any
         this.values = new ThreadValues(host);
         this.writer = new ThreadPassWriter(host);
         this.multiple = new MultipleThread(host, values, writer);
@@ -70,20 +67,6 @@ final class Threading {
         }
     }
 
-    private GFunction function(Word w) {
-        return CycleBlocks.function(host, w);
-    }
-
-    /** The thread in force as the program wrote it ("G92"), for a finding about running it again. */
-    String name() {
-        return modal.name();
-    }
-
-    /** Whether the block makes the G32/G92 in force again: an axis word and no G of its group or one-shot G. */
-    boolean repeats(RawBlock b) {
-        return modal.repeats(host, b);
-    }
-
     /**
      * Where the last G32 pass ended, while nothing has moved since; null otherwise. A G32 that
      * starts there continues the thread without a break: {@link ThreadChain} joins them.
@@ -96,6 +79,7 @@ final class Threading {
     }
 
     /** An ordinary block (or another cycle): a G of the thread's group ends it; an axis word breaks a thread's continuity. */
+    @Override
     void note(RawBlock b) {
         chamferWords(b);
         for (Word w : b.words()) {
@@ -105,13 +89,14 @@ final class Threading {
                 break;
             }
         }
-        modal.note(host, b);
+        super.note(b);
     }
 
     /** A G32/G92/G76 block ({@code g} its word), or one that makes the G32/G92 in force again (g null). */
+    @Override
     List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
-        GRole role = g == null ? modal.kind() : function(g).role();
-        String label = g == null ? modal.name() : "G" + g.number();
+        GRole role = role(g);
+        String label = label(g);
         if (role != GRole.THREAD) {
             continued = null;
         }
