@@ -116,7 +116,7 @@ final class AngleLine {
             double dx = (p1.z() - p0.z()) / pz * sin / cos;
             end = new Point(p0.x() + dx * px, p1.z());
         }
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), dry.next()), b.line(), angle.span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), dry.next()), b.line(), angle.span());
         return CornerInsertion.moveTo(plain, writer, end, p0);
     }
 
@@ -190,7 +190,7 @@ final class AngleLine {
         }
         double t = (dx * Math.cos(t2) - dz * Math.sin(t2)) / -det;
         Point corner = new Point(s.x() + t * Math.sin(t1) * px, s.z() + t * Math.cos(t1) * pz);
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), dry1.next()), first.line(), a1.span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), dry1.next()), first.line(), a1.span());
         return new RawBlock[] {CornerInsertion.moveTo(one, writer, corner, s), two};
     }
 

@@ -246,7 +246,7 @@ final class CornerInsertion {
             }
             return null;
         }
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), after), block.line(), r.word().span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), after), block.line(), r.word().span());
         Point start = counts(c.start(), px, pz);
         Point stop = counts(c.end(), px, pz);
         Move.Kind kind = c.centre() == null ? Move.Kind.FEED
@@ -256,7 +256,7 @@ final class CornerInsertion {
         // the next move now starts where the corner ends: written as increments it is rewritten
         // from there, so that it still ends where the program put it
         RawBlock moved = incremental(next, nextState)
-                ? moveTo(next, new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), nextState), next.line(),
+                ? moveTo(next, new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), nextState), next.line(),
                         next.words().get(0).span()), end, stop)
                 : next;
         return new Made(moveTo(block, writer, start, from), insert, moved);

@@ -2,6 +2,7 @@ package gcnc.check;
 
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
+import gcnc.check.geom.Coordinates;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
@@ -10,6 +11,7 @@ import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GRole;
+import gcnc.machine.Units;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -157,7 +159,7 @@ final class CycleBlocks {
      */
     static List<CheckedBlock> write(CycleHost host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, java.util.Map<Integer, List<RawBlock>> after) {
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
+        MoveWriter writer = new MoveWriter(frame(host, start), line, at);
         List<CheckedBlock> done = new ArrayList<>();
         Point from = start.position();
         for (int i = 0; i < moves.size(); i++) {
@@ -172,12 +174,60 @@ final class CycleBlocks {
                 r = host.one(extra, false, origin);
             }
             if (r.isEmpty()) {
-                CycleExpansion.abandon(host, writer, start.position(), origin).ifPresent(done::add);
+                abandon(host, writer, start.position(), origin).ifPresent(done::add);
                 break;
             }
             done.add(r.get());
             from = host.state().position();
         }
         return done;
+    }
+
+    /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
+    static MoveWriter.Frame frame(CycleHost host, ModalState s) {
+        return frame(host.coordinates(), host.profile(), s);
+    }
+
+    /** As above, from the checker's coordinates and profile. */
+    static MoveWriter.Frame frame(Coordinates c, gcnc.machine.MachineProfile profile, ModalState s) {
+        Units u = s.units();
+        List<String> codes = new ArrayList<>(4);
+        for (GRole r : new GRole[] {GRole.RAPID, GRole.LINEAR, GRole.ARC_CW, GRole.ARC_CCW}) {
+            codes.add(profile.control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
+        }
+        return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
+    }
+
+    /**
+     * The moves as blocks at the cycle's line, each checked. After the first that fails the cycle
+     * is not followed further: a rapid back to the start point ends it, so that the blocks after
+     * the cycle are judged from where the cycle leaves the tool (one finding, not one per pass).
+     */
+    static List<CheckedBlock> write(CycleHost host, gcnc.check.cycle.CycleCall call, int line, List<Move> moves, int passes,
+                                    ModalState start) {
+        MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
+        List<CheckedBlock> done = new ArrayList<>();
+        Point at = start.position();
+        for (Move m : moves) {
+            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
+                    call.label(Letter.Q), false);
+            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
+            if (b.isEmpty()) {
+                abandon(host, writer, start.position(), origin).ifPresent(done::add);
+                break;
+            }
+            done.add(b.get());
+            at = host.state().position();
+        }
+        return done;
+    }
+
+    /** After a move of a cycle failed: a rapid from where the checker left the tool to the cycle's end point. */
+    static Optional<CheckedBlock> abandon(CycleHost host, MoveWriter writer, Point end, CycleOrigin origin) {
+        Point at = host.state().position();
+        if (at.distanceTo(end) <= 1e-9) {
+            return Optional.empty();
+        }
+        return host.one(writer.block(Move.line(true, end, origin.pass()), at), false, origin);
     }
 }

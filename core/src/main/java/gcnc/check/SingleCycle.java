@@ -139,7 +139,7 @@ final class SingleCycle extends ModalExpansion {
             path = new Point[] {new Point(a.x(), end.z() + taper), end, new Point(end.x(), a.z()), a};
         }
         boolean[] rapid = {true, false, false, true};
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at.span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host, start), line, at.span());
         CycleOrigin origin = CycleOrigin.single(modal.name(), line);
         Point from = a;
         for (int i = 0; i < path.length; i++) {
@@ -148,7 +148,7 @@ final class SingleCycle extends ModalExpansion {
             }
             Optional<CheckedBlock> r = host.one(writer.block(Move.line(rapid[i], path[i], 1), from), false, origin);
             if (r.isEmpty()) {
-                CycleExpansion.abandon(host, writer, a, origin).ifPresent(done::add);
+                CycleBlocks.abandon(host, writer, a, origin).ifPresent(done::add);
                 break;
             }
             done.add(r.get());

@@ -32,7 +32,7 @@ final class ThreadPassWriter {
     void write(List<CheckedBlock> done, int line, Span at, ModalState start, List<Move> moves, double lead,
                        String label, java.util.function.IntFunction<CycleOrigin> origins, PullOut pullOut,
                        double startAngle) {
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host, start), line, at);
         Point a = start.position();
         Point from = a;
         Word f = new Word(Letter.F, MoveWriter.number(lead), at);
@@ -51,7 +51,7 @@ final class ThreadPassWriter {
                 r = host.one(block, false, origin);
             }
             if (r.isEmpty()) {
-                CycleExpansion.abandon(host, writer, a, origin).ifPresent(done::add);
+                CycleBlocks.abandon(host, writer, a, origin).ifPresent(done::add);
                 break;
             }
             done.add(r.get());
