@@ -104,7 +104,7 @@ final class Advisories {
                 offsetZero = null;
             }
         }
-        if (offsetZero != null && d.next.toolOffset == 0 && Checker.cuts(made)) {
+        if (offsetZero != null && d.next.toolOffset == 0 && MotionKind.cuts(made)) {
             out.report(Diagnostic.warning(Code.E646_CUT_WITHOUT_TOOL_OFFSET, d.blame(), offsetZero, offsetZeroLine));
             offsetZero = null; // once per T word: the next cuts are the same mistake
         }
@@ -121,7 +121,7 @@ final class Advisories {
             surfaceSpeed = Diagnostic.warning(Code.E648_CSS_TAKES_RPM, d.g96.span(), NumberText.plain(d.prior.rpm()),
                     d.next.units == Units.INCH ? "ft/min" : "m/min");
         }
-        if (surfaceSpeed != null && Checker.cuts(made)) {
+        if (surfaceSpeed != null && MotionKind.cuts(made)) {
             out.report(surfaceSpeed);
             surfaceSpeed = null;
         }
@@ -149,7 +149,7 @@ final class Advisories {
                         length + (d.next.feedPerRev ? "/rev" : "/min"));
             }
         }
-        if (feedMode != null && Checker.cuts(made)) {
+        if (feedMode != null && MotionKind.cuts(made)) {
             out.report(feedMode);
             feedMode = null;
         }

@@ -83,7 +83,7 @@ final class AngleLine {
             out.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle);
             return plain;
         }
-        Checker.Dry dry = host.peek(bare(plain), from, new Diagnostics());
+        Dry dry = host.peek(bare(plain), from, new Diagnostics());
         if (dry == null) {
             return plain; // its own errors are reported when it runs
         }
@@ -116,7 +116,7 @@ final class AngleLine {
             double dx = (p1.z() - p0.z()) / pz * sin / cos;
             end = new Point(p0.x() + dx * px, p1.z());
         }
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), dry.next()), b.line(), angle.span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), dry.next()), b.line(), angle.span());
         return CornerInsertion.moveTo(plain, writer, end, p0);
     }
 
@@ -160,11 +160,11 @@ final class AngleLine {
         if (host.startsCycle(one) || host.startsCycle(two)) {
             return null;
         }
-        Checker.Dry dry1 = host.peek(bare(one), from, new Diagnostics());
+        Dry dry1 = host.peek(bare(one), from, new Diagnostics());
         if (dry1 == null) {
             return new RawBlock[] {one, two};
         }
-        Checker.Dry dry2 = host.peek(bare(two), dry1.next(), new Diagnostics());
+        Dry dry2 = host.peek(bare(two), dry1.next(), new Diagnostics());
         if (dry2 == null || dry2.next().incremental()) {
             return dry2 == null ? new RawBlock[] {one, two} : null;
         }
@@ -190,7 +190,7 @@ final class AngleLine {
         }
         double t = (dx * Math.cos(t2) - dz * Math.sin(t2)) / -det;
         Point corner = new Point(s.x() + t * Math.sin(t1) * px, s.z() + t * Math.cos(t1) * pz);
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host.coordinates(), host.profile(), dry1.next()), first.line(), a1.span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), dry1.next()), first.line(), a1.span());
         return new RawBlock[] {CornerInsertion.moveTo(one, writer, corner, s), two};
     }
 

@@ -68,7 +68,7 @@ final class ContourCorners {
             List<Word> rest = new ArrayList<>(b.words().size());
             Request r = words.mayAsk(b) ? words.read(b, s, rest, out) : null;
             RawBlock stripped = r == null ? b : b.called(rest, b.last(), b.depth());
-            Checker.Dry dry = look.peek(stripped, s, new Diagnostics());
+            Dry dry = look.peek(stripped, s, new Diagnostics());
             CornerInsertion.Made m = r == null || r.word() == null || dry == null ? null : contourCorner(stripped, r, dry, in, i);
             if (m == null) {
                 made.add(stripped);
@@ -78,15 +78,15 @@ final class ContourCorners {
             made.add(m.shortened());
             made.add(m.insert());
             in.set(i + 1, m.next());
-            Checker.Dry cut = look.peek(m.shortened(), s, new Diagnostics());
-            Checker.Dry round = cut == null ? null : look.peek(m.insert(), cut.next(), new Diagnostics());
+            Dry cut = look.peek(m.shortened(), s, new Diagnostics());
+            Dry round = cut == null ? null : look.peek(m.insert(), cut.next(), new Diagnostics());
             s = round == null ? dry.next() : round.next();
         }
         return made;
     }
 
     /** The corner of contour block {@code at} (run as {@code dry}) with the block after it, or null after its error. */
-    private CornerInsertion.Made contourCorner(RawBlock b, Request r, Checker.Dry dry, List<RawBlock> in, int at) {
+    private CornerInsertion.Made contourCorner(RawBlock b, Request r, Dry dry, List<RawBlock> in, int at) {
         Motion.Linear line = CornerInsertion.feedLine(dry.block());
         if (line == null || look.startsCycle(b)) {
             out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
@@ -107,11 +107,11 @@ final class ContourCorners {
         List<Word> rest = new ArrayList<>(next.words().size());
         RawBlock plain = !words.mayAsk(next) || words.read(next, dry.next(), rest, new Diagnostics()) == null ? next
                 : next.called(rest, next.last(), next.depth());
-        Checker.Dry after = look.peek(plain, dry.next(), new Diagnostics());
+        Dry after = look.peek(plain, dry.next(), new Diagnostics());
         if (after == null) {
             return null; // its own errors are reported when the contour is followed
         }
-        if (!CornerInsertion.moves(after.block())) {
+        if (!MotionKind.moves(after.block())) {
             out.error(Code.E609_CORNER_NO_NEXT_MOVE, r.word().span(), r.name(), next.line());
             return null;
         }

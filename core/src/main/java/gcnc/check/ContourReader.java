@@ -20,10 +20,10 @@ import java.util.function.IntFunction;
  * cannot hold is E162. Its chamfers and corners were made before ({@link CornerInsertion#inContour}).
  */
 final class ContourReader {
-    private final Checker host;
+    private final CycleHost host;
     private final IntFunction<GRole> role;
 
-    ContourReader(Checker host, IntFunction<GRole> role) {
+    ContourReader(CycleHost host, IntFunction<GRole> role) {
         this.host = host;
         this.role = role;
     }
@@ -48,7 +48,7 @@ final class ContourReader {
                 continue;
             }
             Diagnostics found = new Diagnostics();
-            Checker.Dry dry = host.dry(b, s, found);
+            Dry dry = host.dry(b, s, found);
             host.reportAside(found);
             if (dry == null) {
                 ok = false;

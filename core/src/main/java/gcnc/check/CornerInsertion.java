@@ -42,7 +42,7 @@ final class CornerInsertion {
                         ModalState after, List<RawBlock> still, ModalState afterStill) {
     }
 
-    private final Checker host;
+    private final CornerHost host;
     private final CornerWords words;
     private final AngleLine angles;
     private Held held;
@@ -50,14 +50,14 @@ final class CornerInsertion {
     private RawBlock angleAlone;
     private boolean angleAloneFirst;
 
-    CornerInsertion(Checker host) {
+    CornerInsertion(CornerHost host) {
         this.host = host;
-        this.words = new CornerWords(host.lookahead());
-        this.angles = new AngleLine(host.lookahead());
+        this.words = new CornerWords(host);
+        this.angles = new AngleLine(host);
     }
 
-    /** The same insertion for the other position of the block delete switch (Checker.fork). */
-    CornerInsertion copy(Checker other) {
+    /** The same insertion for the other position of the block delete switch (the checker's fork). */
+    CornerInsertion copy(CornerHost other) {
         CornerInsertion c = new CornerInsertion(other);
         c.held = held == null ? null : new Held(held.block, held.request, held.isFirst, held.from, held.corner,
                 held.after, new ArrayList<>(held.still), held.afterStill);
@@ -68,7 +68,7 @@ final class CornerInsertion {
 
     /** A cycle's contour with its corners made ({@link ContourCorners#made}). */
     List<RawBlock> inContour(List<RawBlock> blocks, ModalState start) {
-        return new ContourCorners(this, host.lookahead(), host.functions(), host.out(), words, angles)
+        return new ContourCorners(this, host, host.functions(), host.out(), words, angles)
                 .made(blocks, start);
     }
 
@@ -113,7 +113,7 @@ final class CornerInsertion {
             out.error(Code.E607_CORNER_NOT_ON_G01, r.word().span(), r.name());
             return host.flowOn(stripped, isFirst);
         }
-        Checker.Dry dry = host.peek(stripped, host.state(), new Diagnostics());
+        Dry dry = host.peek(stripped, host.state(), new Diagnostics());
         if (dry == null) {
             return host.flowOn(stripped, isFirst); // its own errors are reported when it runs
         }
@@ -173,11 +173,11 @@ final class CornerInsertion {
         List<Word> rest = new ArrayList<>(b.words().size());
         RawBlock plain = !words.mayAsk(b) || words.read(b, h.afterStill, rest, new Diagnostics()) == null ? b
                 : b.called(rest, b.last(), b.depth());
-        Checker.Dry dry = host.peek(plain, h.afterStill, new Diagnostics());
+        Dry dry = host.peek(plain, h.afterStill, new Diagnostics());
         if (dry == null) {
             return release(b); // its own errors are reported when it runs
         }
-        if (!moves(dry.block())) {
+        if (!MotionKind.moves(dry.block())) {
             boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
             if (dry.next().ended() || letters || h.still.size() >= STILL_LIMIT) {
                 // the end of the program; Fanuc: the very next block must move (PS0051); Haas: bounded
@@ -246,7 +246,7 @@ final class CornerInsertion {
             }
             return null;
         }
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, after), block.line(), r.word().span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), after), block.line(), r.word().span());
         Point start = counts(c.start(), px, pz);
         Point stop = counts(c.end(), px, pz);
         Move.Kind kind = c.centre() == null ? Move.Kind.FEED
@@ -256,7 +256,7 @@ final class CornerInsertion {
         // the next move now starts where the corner ends: written as increments it is rewritten
         // from there, so that it still ends where the program put it
         RawBlock moved = incremental(next, nextState)
-                ? moveTo(next, new MoveWriter(CycleExpansion.frame(host, nextState), next.line(),
+                ? moveTo(next, new MoveWriter(CycleBlocks.frame(host.coordinates(), host.profile(), nextState), next.line(),
                         next.words().get(0).span()), end, stop)
                 : next;
         return new Made(moveTo(block, writer, start, from), insert, moved);
@@ -330,39 +330,6 @@ final class CornerInsertion {
     static Motion.Linear feedLine(CheckedBlock c) {
         return CornerWords.feedLine(c.motions());
     }
-
-    /** Whether the block moves the tool (a dwell does not). */
-    static boolean moves(CheckedBlock c) {
-        for (Motion m : c.motions()) {
-            if (m.accept(MOVES)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether a motion moves the tool: everything but a dwell. */
-    private static final Motion.Visitor<Boolean> MOVES = new Motion.Visitor<>() {
-        @Override
-        public Boolean linear(Motion.Linear l) {
-            return true;
-        }
-
-        @Override
-        public Boolean arc(Motion.Arc a) {
-            return true;
-        }
-
-        @Override
-        public Boolean dwell(Motion.Dwell d) {
-            return false;
-        }
-
-        @Override
-        public Boolean thread(Motion.Thread t) {
-            return true;
-        }
-    };
 
     private static Point counts(Point p, double px, double pz) {
         return new Point(p.x() * px, p.z() * pz);

@@ -79,7 +79,7 @@ final class CornerWords {
      * The corner the block asks for, run from {@code from}, its other words put in {@code rest};
      * null when it asks for none, {@link Request#FAILED} after an error reported to {@code out}.
      * On the thesis's control (no corners) an R on a sound G01 is {@link Request#refused}: E025
-     * reported and the checker's state taken past the block ({@link Checker#fixed}, committed by {@link CornerInsertion}), so this
+     * reported and the checker's state taken past the block ({@link Lookahead#fixed}, committed by {@link CornerInsertion}), so this
      * is called for such a control only for the block the flow is at.
      */
     Request read(RawBlock b, ModalState from, List<Word> rest, Diagnostics out) {
@@ -189,7 +189,7 @@ final class CornerWords {
         }
         List<Word> without = new ArrayList<>(b.words());
         without.removeAll(candidates);
-        Checker.Dry dry = host.peek(b.called(without, b.last(), b.depth()), from, new Diagnostics());
+        Dry dry = host.peek(b.called(without, b.last(), b.depth()), from, new Diagnostics());
         return dry != null && feedLine(dry.block().motions()) != null;
     }
 

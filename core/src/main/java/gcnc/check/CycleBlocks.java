@@ -2,6 +2,7 @@ package gcnc.check;
 
 import gcnc.check.cycle.Move;
 import gcnc.check.cycle.MoveWriter;
+import gcnc.check.geom.Coordinates;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
@@ -10,6 +11,7 @@ import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GRole;
+import gcnc.machine.Units;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -26,7 +28,7 @@ final class CycleBlocks {
     }
 
     /** The G function a G word names in the control, or null (another letter, no number, no such G). */
-    static gcnc.machine.GFunction function(Checker host, Word w) {
+    static gcnc.machine.GFunction function(CycleHost host, Word w) {
         if (w.letter() != Letter.G || w.number().isEmpty() || w.code() < 0 || w.code() > 999) {
             return null;
         }
@@ -38,7 +40,7 @@ final class CycleBlocks {
      * and no G that {@code ends} the cycle nor a one-shot G (group 0: G04 U1., G28 U0, G50 X), whose
      * words those would be.
      */
-    static boolean repeats(Checker host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
+    static boolean repeats(CycleHost host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
         boolean axis = false;
         for (Word w : b.words()) {
             gcnc.machine.GFunction f = function(host, w);
@@ -52,7 +54,7 @@ final class CycleBlocks {
     }
 
     /** Whether a G of the block ends the modal cycle in force, as {@code ends} says. */
-    static boolean ends(Checker host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
+    static boolean ends(CycleHost host, RawBlock b, Predicate<gcnc.machine.GFunction> ends) {
         for (Word w : b.words()) {
             gcnc.machine.GFunction f = function(host, w);
             if (f != null && ends.test(f)) {
@@ -85,6 +87,31 @@ final class CycleBlocks {
     record Split(RawBlock passOn, gcnc.check.cycle.CycleWords words) {
     }
 
+    /**
+     * The block split as G10 and G30 read it ({@code g} the function's word, {@code own} the letters
+     * it reads); an error in its words to {@code out}.
+     */
+    static Split split(RawBlock b, Word g, java.util.Set<Letter> own, Diagnostics out) {
+        gcnc.check.cycle.CycleWords words = gcnc.check.cycle.CycleWords.read(b, g, "G" + g.number(), own, own, 1, 1,
+                w -> false, out);
+        return new Split(passOnBlock(b, words != null ? words.passOn() : List.of()), words);
+    }
+
+    /** The block's G word of the function with {@code role} (G10 L2, G30), or null. */
+    static Word gWord(RawBlock b, FunctionIndex functions, GRole role) {
+        List<Word> ws = b.words();
+        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
+            Word w = ws.get(at);
+            if (w.letter() == Letter.G && !w.number().isEmpty()) {
+                gcnc.machine.GFunction f = functions.g(w.code());
+                if (f != null && f.role() == role) {
+                    return w;
+                }
+            }
+        }
+        return null;
+    }
+
     /** The words of other functions as a block of their own at the block's line, or null when none. */
     static RawBlock passOnBlock(RawBlock b, List<Word> passOn) {
         if (passOn.isEmpty()) {
@@ -94,13 +121,13 @@ final class CycleBlocks {
     }
 
     /** The words of other functions as a block of their own, checked and committed; empty when none. */
-    static Optional<CheckedBlock> passOn(Checker host, RawBlock b, List<Word> passOn, boolean isFirst) {
+    static Optional<CheckedBlock> passOn(CycleHost host, RawBlock b, List<Word> passOn, boolean isFirst) {
         RawBlock block = passOnBlock(b, passOn);
         return block == null ? Optional.empty() : host.one(block, isFirst, null);
     }
 
     /** Where the block's axis words lead from {@code start} (a rapid followed aside), or null after its error. */
-    static Point target(Checker host, RawBlock b, List<Word> axes, ModalState start) {
+    static Point target(CycleHost host, RawBlock b, List<Word> axes, ModalState start) {
         if (axes.isEmpty()) {
             return start.position();
         }
@@ -109,7 +136,7 @@ final class CycleBlocks {
         words.add(new Word(Letter.G, rapid, axes.get(0).span()));
         words.addAll(axes);
         Diagnostics found = new Diagnostics();
-        Checker.Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
+        Dry dry = host.dry(new RawBlock(b.line(), words, words.get(words.size() - 1).span(), false), start,
                 found);
         host.out().addAll(found);
         return dry == null ? null : dry.block().end();
@@ -120,7 +147,7 @@ final class CycleBlocks {
      * simulator's findings; {@code dwell} (when not null) is checked right after move
      * {@code dwellAfter}. After the first that fails, a rapid back to the start ends the cycle.
      */
-    static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
+    static List<CheckedBlock> write(CycleHost host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, int dwellAfter, RawBlock dwell) {
         return write(host, name, line, at, moves, passes, start,
                 dwell == null ? java.util.Map.of() : java.util.Map.of(dwellAfter, List.of(dwell)));
@@ -130,9 +157,9 @@ final class CycleBlocks {
      * The moves as blocks, as above, with the blocks of {@code after} checked right after the move
      * of their index (a dwell at a hole's bottom, a tap's spindle reversal).
      */
-    static List<CheckedBlock> write(Checker host, String name, int line, Span at, List<Move> moves, int passes,
+    static List<CheckedBlock> write(CycleHost host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, java.util.Map<Integer, List<RawBlock>> after) {
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at);
+        MoveWriter writer = new MoveWriter(frame(host, start), line, at);
         List<CheckedBlock> done = new ArrayList<>();
         Point from = start.position();
         for (int i = 0; i < moves.size(); i++) {
@@ -147,12 +174,60 @@ final class CycleBlocks {
                 r = host.one(extra, false, origin);
             }
             if (r.isEmpty()) {
-                CycleExpansion.abandon(host, writer, start.position(), origin).ifPresent(done::add);
+                abandon(host, writer, start.position(), origin).ifPresent(done::add);
                 break;
             }
             done.add(r.get());
             from = host.state().position();
         }
         return done;
+    }
+
+    /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
+    static MoveWriter.Frame frame(CycleHost host, ModalState s) {
+        return frame(host.coordinates(), host.profile(), s);
+    }
+
+    /** As above, from the checker's coordinates and profile. */
+    static MoveWriter.Frame frame(Coordinates c, gcnc.machine.MachineProfile profile, ModalState s) {
+        Units u = s.units();
+        List<String> codes = new ArrayList<>(4);
+        for (GRole r : new GRole[] {GRole.RAPID, GRole.LINEAR, GRole.ARC_CW, GRole.ARC_CCW}) {
+            codes.add(profile.control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
+        }
+        return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
+    }
+
+    /**
+     * The moves as blocks at the cycle's line, each checked. After the first that fails the cycle
+     * is not followed further: a rapid back to the start point ends it, so that the blocks after
+     * the cycle are judged from where the cycle leaves the tool (one finding, not one per pass).
+     */
+    static List<CheckedBlock> write(CycleHost host, gcnc.check.cycle.CycleCall call, int line, List<Move> moves, int passes,
+                                    ModalState start) {
+        MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
+        List<CheckedBlock> done = new ArrayList<>();
+        Point at = start.position();
+        for (Move m : moves) {
+            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
+                    call.label(Letter.Q), false);
+            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
+            if (b.isEmpty()) {
+                abandon(host, writer, start.position(), origin).ifPresent(done::add);
+                break;
+            }
+            done.add(b.get());
+            at = host.state().position();
+        }
+        return done;
+    }
+
+    /** After a move of a cycle failed: a rapid from where the checker left the tool to the cycle's end point. */
+    static Optional<CheckedBlock> abandon(CycleHost host, MoveWriter writer, Point end, CycleOrigin origin) {
+        Point at = host.state().position();
+        if (at.distanceTo(end) <= 1e-9) {
+            return Optional.empty();
+        }
+        return host.one(writer.block(Move.line(true, end, origin.pass()), at), false, origin);
     }
 }

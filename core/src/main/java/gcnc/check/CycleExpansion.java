@@ -5,12 +5,9 @@ import gcnc.check.cycle.Contour;
 import gcnc.check.cycle.CycleCall;
 import gcnc.check.cycle.FirstBlock;
 import gcnc.check.cycle.Move;
-import gcnc.check.cycle.MoveWriter;
-import gcnc.check.geom.Coordinates;
 import gcnc.diag.Code;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Letter;
-import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.GFunction;
@@ -19,10 +16,8 @@ import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
 import java.util.ArrayList;
 import java.util.EnumMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 
 /**
  * The cycles in the checker's flow (docs/cycles.md). A G71/G72/G73 with P and Q reads its
@@ -30,17 +25,15 @@ import java.util.Optional;
  * taken out of the flow (the control skips them after the cycle) and followed from the cycle's
  * start without changing the program's state ({@link ContourReader}). {@link StockRemoval} then
  * plans the passes, writes them as blocks and checks each like any other, with its origin. A G70
- * follows the stored contour of an earlier G71/G72/G73 again ({@link Finishing}); G73 is
- * {@link PatternRepeat}, G90/G94 {@link SingleCycle}. The Fanuc first block (G71 U R, G72 W R,
+ * follows the stored contour of an earlier G71/G72/G73 again ({@link StoredContours},
+ * {@link Finishing}); G73 is {@link PatternRepeat}, G90/G94 {@link SingleCycle}. The Fanuc first block (G71 U R, G72 W R,
  * G73 U W R) only sets what the next cycles of its kind use ({@link FirstBlock}).
  */
 final class CycleExpansion {
     /** How many blocks after a G71/G72/G73 its contour's last block N(Q) may be. */
     static final int LOOK_AHEAD = 1000;
-    /** How many contours are kept for a later G70 (the oldest is forgotten first). */
-    static final int STORED = 100;
 
-    private final Checker host;
+    private final CycleHost host;
     private final ContourReader contours;
     private final SingleCycle single;
     private final Grooving grooving;
@@ -50,12 +43,8 @@ final class CycleExpansion {
     private Pending pending;
     /** What the Fanuc first blocks left in force, per cycle. */
     private final Map<GRole, FirstBlock> firstBlocks = new EnumMap<>(GRole.class);
-    private final Map<String, Stored> stored = new LinkedHashMap<>(16, 0.75f, false) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<String, Stored> eldest) {
-            return size() > STORED;
-        }
-    };
+    /** The contours G71-G73 read, for a later G70. */
+    private final StoredContours stored = new StoredContours();
 
     /**
      * A G71/G72/G73 whose contour is being read: the blocks so far, the blocks between the cycle and
@@ -79,19 +68,6 @@ final class CycleExpansion {
     }
 
     /**
-     * A contour kept for G70: its blocks and how the cycle that read it cut; {@code axes} null when
-     * the cycle or its contour had an error (a G70 over it then does nothing rather than repeat it).
-     * {@code passedOver}: the blocks between the cycle and N(P), which the cycle never ran but a G70
-     * whose P names one of them does (the control searches the program for N(P)).
-     */
-    private record Stored(List<RawBlock> blocks, List<RawBlock> passedOver, Axes axes, int depthSign, String name,
-                          int line) {
-        boolean usable() {
-            return axes != null;
-        }
-    }
-
-    /**
      * Which way the contour lies from its start along the depth axis (+1: the start is on the +
      * side): where its first move goes, or (a type II first move along the cutting axis only) where
      * the contour reaches farthest from the start's level.
@@ -111,7 +87,7 @@ final class CycleExpansion {
         return below >= above ? 1 : -1;
     }
 
-    CycleExpansion(Checker host) {
+    CycleExpansion(CycleHost host) {
         this.host = host;
         this.contours = new ContourReader(host, this::role);
         this.single = new SingleCycle(host);
@@ -229,71 +205,15 @@ final class CycleExpansion {
         if (call.firstOfTwo()) {
             first(call);
         } else if (kind == GRole.FINISHING_CYCLE) {
-            finish(call, b.line(), done);
+            StoredContours.Found found = stored.find(call, host.out());
+            if (found != null && found.contour().usable()) {
+                StoredContours.Stored s = found.contour();
+                done.addAll(new Finishing(host).expand(call, b.line(), found.blocks(), s.axes(), s.depthSign()));
+            }
         } else {
             pending = new Pending(call, b.line(), false);
         }
         return done;
-    }
-
-    /**
-     * G70: the stored contour its P and Q name; else part of one (E643: the control finishes the
-     * blocks N(P)..N(Q) wherever they stand); else one that starts in the blocks a cycle passed over
-     * before its contour; else E166 (the control's alarm: no such blocks).
-     */
-    private void finish(CycleCall call, int line, List<CheckedBlock> done) {
-        Stored s = stored.get(key(call));
-        List<RawBlock> blocks = s == null ? null : s.blocks();
-        if (s == null) {
-            for (Stored whole : stored.values()) {
-                blocks = part(whole.blocks(), call.label(Letter.P), call.label(Letter.Q));
-                if (blocks != null) {
-                    s = whole;
-                    host.out().report(gcnc.diag.Diagnostic.warning(Code.E643_FINISH_PART_OF_CONTOUR, call.g().span(),
-                            call.name(), call.label(Letter.P), call.label(Letter.Q), sequence(whole.blocks().get(0)),
-                            sequence(whole.blocks().get(whole.blocks().size() - 1)), whole.name(), whole.line()));
-                    break;
-                }
-            }
-        }
-        if (s == null) {
-            // N(P) among the blocks a cycle passed over before its contour (a G42 block numbered
-            // as the finish's start: N5 G42 G00 X20. before N10): the control finds it and runs
-            // N(P)..N(Q) through the contour (issue 31)
-            for (Stored whole : stored.values()) {
-                if (whole.passedOver().isEmpty()) {
-                    continue;
-                }
-                List<RawBlock> all = new ArrayList<>(whole.passedOver());
-                all.addAll(whole.blocks());
-                blocks = part(all, call.label(Letter.P), call.label(Letter.Q));
-                if (blocks != null) {
-                    s = whole;
-                    break;
-                }
-            }
-        }
-        if (s == null) {
-            host.out().error(Code.E166_FINISH_WITHOUT_CONTOUR, call.g().span(), call.name(), call.label(Letter.P),
-                    call.label(Letter.Q));
-        } else if (s.usable()) {
-            done.addAll(new Finishing(host).expand(call, line, blocks, s.axes(), s.depthSign()));
-        }
-    }
-
-    /** The blocks N(first)..N(last) of a contour, in order, or null when it has not both. */
-    private static List<RawBlock> part(List<RawBlock> blocks, long first, long last) {
-        int from = -1;
-        for (int i = 0; i < blocks.size(); i++) {
-            long n = sequence(blocks.get(i));
-            if (from < 0 && n == first) {
-                from = i;
-            }
-            if (from >= 0 && n == last) {
-                return blocks.subList(from, i + 1);
-            }
-        }
-        return null;
     }
 
     /**
@@ -355,7 +275,7 @@ final class CycleExpansion {
     /** The next block while a contour is read: kept aside; the cycle at its last block. */
     List<CheckedBlock> read(RawBlock b) {
         Pending p = pending;
-        long n = sequence(b);
+        long n = StoredContours.sequence(b);
         long first = p.call.label(Letter.P);
         long last = p.call.label(Letter.Q);
         if (p.blocks.isEmpty() && n != first) {
@@ -377,7 +297,7 @@ final class CycleExpansion {
         }
         p.blocks.add(b);
         if (p.blocks.size() > 1 && n == first) {
-            host.out().error(Code.E151_CYCLE_LABEL_TWICE, nWord(b).span(), p.call.name(), p.line, n);
+            host.out().error(Code.E151_CYCLE_LABEL_TWICE, StoredContours.nWord(b).span(), p.call.name(), p.line, n);
             p.broken = true;
         }
         if (n == last) {
@@ -413,29 +333,15 @@ final class CycleExpansion {
         return done;
     }
 
-    private static long sequence(RawBlock b) {
-        Word n = nWord(b);
-        return n == null ? -1 : n.code();
-    }
-
-    private static Word nWord(RawBlock b) {
-        for (Word w : b.words()) {
-            if (w.letter() == Letter.N) {
-                return w;
-            }
-        }
-        return null;
-    }
-
     /** G71/G72/G73 once its contour is read: the contour followed, the passes planned, written and checked. */
     private List<CheckedBlock> roughing(Pending p) {
         CycleCall call = p.call;
         ModalState start = host.state();
-        stored.remove(key(call));
+        stored.forget(call);
         // the contour as the control follows it: its chamfers and corners made (G70 runs these blocks too)
         List<RawBlock> blocks = p.rejected ? p.blocks : host.cornersInContour(p.blocks, start);
-        Stored rejected = new Stored(List.copyOf(blocks), List.copyOf(p.before), null, 0, call.name(), p.line);
-        stored.put(key(call), rejected); // until the contour is known good: a G70 over it does nothing
+        StoredContours.Stored rejected = new StoredContours.Stored(List.copyOf(blocks), List.copyOf(p.before), null, 0, call.name(), p.line);
+        stored.keep(call, rejected); // until the contour is known good: a G70 over it does nothing
         if (p.rejected) {
             return List.of();
         }
@@ -452,17 +358,17 @@ final class CycleExpansion {
         Contour.Piece lead = positioning(call, axes, pieces) ? pieces.get(0) : null;
         Contour contour = lead == null ? new Contour(start.position(), pieces.get(0), pieces.subList(1, pieces.size()))
                 : new Contour(lead.to(), pieces.get(1), pieces.subList(2, pieces.size()));
-        stored.put(key(call), new Stored(rejected.blocks(), rejected.passedOver(), axes, signs(axes, contour),
+        stored.keep(call, new StoredContours.Stored(rejected.blocks(), rejected.passedOver(), axes, signs(axes, contour),
                 call.name(), p.line));
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
             // G71-G73 only plan their passes; they are written and checked here, one by one
             return new PatternRepeat(host.coordinates(), host.out(), call).expand(contour, start, firstBlock)
-                    .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
+                    .map(g -> CycleBlocks.write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
         }
         return new StockRemoval(host.coordinates(), host.profile(), host.out(), call, p.line)
                 .expand(contour, blocks, start, firstBlock, lead)
-                .map(g -> write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
+                .map(g -> CycleBlocks.write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
     }
 
     /**
@@ -481,59 +387,8 @@ final class CycleExpansion {
                 && Math.abs(axes.cut(first.to()) - axes.cut(first.from())) > 1e-9;
     }
 
-    private static String key(CycleCall call) {
-        return call.label(Letter.P) + "/" + call.label(Letter.Q);
-    }
-
-    /** A roughing cycle's moves (G71-G73), planned from what it read, to be written and checked by {@link #write}. */
+    /** A roughing cycle's moves (G71-G73), planned from what it read, to be written and checked by {@link CycleBlocks#write}. */
     record Passes(List<Move> moves, int passes) {
     }
 
-    /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
-    static MoveWriter.Frame frame(Checker host, ModalState s) {
-        return frame(host.coordinates(), host.profile(), s);
-    }
-
-    /** As above, from the checker's coordinates and profile. */
-    static MoveWriter.Frame frame(Coordinates c, gcnc.machine.MachineProfile profile, ModalState s) {
-        Units u = s.units();
-        List<String> codes = new ArrayList<>(4);
-        for (GRole r : new GRole[] {GRole.RAPID, GRole.LINEAR, GRole.ARC_CW, GRole.ARC_CCW}) {
-            codes.add(profile.control().gFor(r).map(f -> f.name().substring(1)).orElseThrow());
-        }
-        return new MoveWriter.Frame(c.origin(s.next()), c.perX(u), c.perRadius(u), c.perZ(u), s.incremental(), codes);
-    }
-
-    /**
-     * The moves as blocks at the cycle's line, each checked. After the first that fails the cycle
-     * is not followed further: a rapid back to the start point ends it, so that the blocks after
-     * the cycle are judged from where the cycle leaves the tool (one finding, not one per pass).
-     */
-    static List<CheckedBlock> write(Checker host, CycleCall call, int line, List<Move> moves, int passes,
-                                    ModalState start) {
-        MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
-        List<CheckedBlock> done = new ArrayList<>();
-        Point at = start.position();
-        for (Move m : moves) {
-            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
-                    call.label(Letter.Q), false);
-            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
-            if (b.isEmpty()) {
-                abandon(host, writer, start.position(), origin).ifPresent(done::add);
-                break;
-            }
-            done.add(b.get());
-            at = host.state().position();
-        }
-        return done;
-    }
-
-    /** After a move of a cycle failed: a rapid from where the checker left the tool to the cycle's end point. */
-    static Optional<CheckedBlock> abandon(Checker host, MoveWriter writer, Point end, CycleOrigin origin) {
-        Point at = host.state().position();
-        if (at.distanceTo(end) <= 1e-9) {
-            return Optional.empty();
-        }
-        return host.one(writer.block(Move.line(true, end, origin.pass()), at), false, origin);
-    }
 }

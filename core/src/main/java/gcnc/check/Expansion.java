@@ -23,7 +23,7 @@ final class Expansion {
     }
 
     /** E330 at {@code word} when {@code pecks} is over {@link #MANY_PECKS}. */
-    static void warnIfMany(Checker host, String label, Word word, long pecks) {
+    static void warnIfMany(CycleHost host, String label, Word word, long pecks) {
         if (pecks > MANY_PECKS) {
             host.out().report(Diagnostic.warning(Code.E330_CYCLE_MANY_PECKS, word.span(), label, word, pecks,
                     MANY_PECKS));

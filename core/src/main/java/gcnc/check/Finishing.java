@@ -19,9 +19,9 @@ import java.util.Optional;
  * along the axis that leaves the part.
  */
 final class Finishing {
-    private final Checker host;
+    private final CycleHost host;
 
-    Finishing(Checker host) {
+    Finishing(CycleHost host) {
         this.host = host;
     }
 
@@ -40,7 +40,7 @@ final class Finishing {
             host.one(b, false, origin).ifPresent(done::add);
         }
         Point at = host.state().position();
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, host.state()), line, call.g().span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host, host.state()), line, call.g().span());
         CycleOrigin back = new CycleOrigin(call.name(), 1, 1, line, call.label(Letter.P), call.label(Letter.Q), false);
         for (Move m : Roughing.back(at, a, axes, depthSign, 1)) {
             Optional<CheckedBlock> r = host.one(writer.block(m, at), false, back);

@@ -50,11 +50,11 @@ final class Grooving {
     private static final Set<Letter> OWN = EnumSet.of(Letter.P, Letter.Q, Letter.R, Letter.I, Letter.K, Letter.D);
     private static final Set<Letter> INCREMENTS = EnumSet.of(Letter.P, Letter.Q);
 
-    private final Checker host;
+    private final CycleHost host;
     /** The retract a Fanuc first block left in force, mm, per cycle. */
     private final Map<GRole, Double> retracts = new EnumMap<>(GRole.class);
 
-    Grooving(Checker host) {
+    Grooving(CycleHost host) {
         this.host = host;
     }
 

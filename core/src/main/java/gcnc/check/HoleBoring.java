@@ -36,7 +36,7 @@ final class HoleBoring {
     private HoleBoring() {
     }
 
-    static List<CheckedBlock> bore(Checker host, GRole kind, String label, RawBlock b, Word at, ModalState start,
+    static List<CheckedBlock> bore(CycleHost host, GRole kind, String label, RawBlock b, Word at, ModalState start,
                                    double x, double rPlane, double bottom, double returnZ, Word dwell) {
         Point a = start.position();
         double epsX = EPS_MM * host.profile().x().countsPerMm();
@@ -81,7 +81,7 @@ final class HoleBoring {
     }
 
     /** A block of the spindle M code of {@code role} on this control, at the cycle's line. */
-    static RawBlock spindle(Checker host, RawBlock b, MRole role, Word at) {
+    static RawBlock spindle(CycleHost host, RawBlock b, MRole role, Word at) {
         int code = host.profile().control().mFor(role).orElseThrow().code();
         return new RawBlock(b.line(), List.of(new Word(Letter.M, String.format("%02d", code), at.span())), at.span(),
                 false);

@@ -32,7 +32,7 @@ import java.util.Set;
  * later block with X, U, Z or W and no G of its group, of the motion group or one-shot drills
  * again there, with what it does not give as before; G80 or a motion G (G00-G03, G90, G94) ends it.
  */
-final class HoleDrilling {
+final class HoleDrilling extends ModalExpansion {
     /** The most pecks one hole is expanded into. */
     static final int MAX_PECKS = 10_000;
     /** The most repeats (K, L) of one hole gcnc expands. */
@@ -47,9 +47,6 @@ final class HoleDrilling {
     private static final Set<Letter> FANUC_OWN = EnumSet.of(Letter.R, Letter.P, Letter.Q, Letter.K, Letter.L,
             Letter.C, Letter.H);
 
-    private final Checker host;
-    /** The cycle in force, or null; its name, group and what later blocks keep. */
-    private final ModalCycle modal = new ModalCycle(f -> f.role().motion() || f.role().singleCycle());
     private double bottom;
     private double rPlane;
     /** Fanuc: the initial level, the Z where the cycle in force was commanded (a repeat after G99 starts at the R point). */
@@ -59,33 +56,16 @@ final class HoleDrilling {
     private double least;
     private Word dwell;
 
-    HoleDrilling(Checker host) {
-        this.host = host;
-    }
-
-    private GFunction function(Word w) {
-        return CycleBlocks.function(host, w);
-    }
-
-    /** The cycle in force as the program wrote it ("G81"), for a finding about running it again. */
-    String name() {
-        return modal.name();
-    }
-
-    /** Whether the block drills again with the cycle in force: an axis word and no G that ends it or owns the words. */
-    boolean repeats(RawBlock b) {
-        return modal.repeats(host, b);
-    }
-
-    /** An ordinary block: G80, a motion G or a single-pass cycle ends the cycle. */
-    void note(RawBlock b) {
-        modal.note(host, b);
+    HoleDrilling(CycleHost host) {
+        // the cycle in force ends at G80, a motion G or a single-pass cycle
+        super(host, new ModalCycle(f -> f.role().motion() || f.role().singleCycle()));
     }
 
     /** A G81/G82/G83 block ({@code g} its cycle word), or a block that drills again (g null). */
+    @Override
     List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
-        GRole role = g == null ? modal.kind() : function(g).role();
-        String label = g == null ? modal.name() : "G" + g.number();
+        GRole role = role(g);
+        String label = label(g);
         Units u = host.state().units();
         MachineProfile p = host.profile();
         double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();

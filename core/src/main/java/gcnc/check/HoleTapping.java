@@ -28,7 +28,7 @@ final class HoleTapping {
      * tap must sit in a floating holder (docs/cycles.md). E629 when the spindle turns against the
      * tap (M04 for G84, M03 for G184).
      */
-    static List<CheckedBlock> tap(Checker host, GRole kind, String name, RawBlock b, Word at, ModalState start,
+    static List<CheckedBlock> tap(CycleHost host, GRole kind, String name, RawBlock b, Word at, ModalState start,
                                   double x, double rPlane, double bottom, double returnZ, Word dwell, String label) {
         Point a = start.position();
         List<Move> moves = new ArrayList<>(5);

@@ -51,12 +51,12 @@ final class ModalCycle {
     }
 
     /** Whether the block runs the cycle in force again: an axis word, no G that ends it and no one-shot G. */
-    boolean repeats(Checker host, RawBlock b) {
+    boolean repeats(CycleHost host, RawBlock b) {
         return kind != null && CycleBlocks.repeats(host, b, this::endedBy);
     }
 
     /** An ordinary block: a G that ends the cycle ends it. */
-    void note(Checker host, RawBlock b) {
+    void note(CycleHost host, RawBlock b) {
         if (kind != null && CycleBlocks.ends(host, b, this::endedBy)) {
             kind = null;
         }

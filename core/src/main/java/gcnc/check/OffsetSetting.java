@@ -9,7 +9,6 @@ import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
-import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
@@ -29,7 +28,7 @@ import java.util.Set;
  *
  * <p>It only checks: {@link #read} splits the block, {@link #offset} says which offset the words
  * write and where; the checker checks the block of other words and commits the offset
- * ({@code Checker.setOffset}), findings go to the sink it is given.
+ * ({@link OffsetAndReturn#setOffset}), findings go to the sink it is given.
  */
 final class OffsetSetting {
     private static final Set<Letter> OWN = EnumSet.of(Letter.L, Letter.P);
@@ -43,24 +42,12 @@ final class OffsetSetting {
 
     /** The block's G10 word, or null. */
     static Word word(RawBlock b, FunctionIndex functions) {
-        java.util.List<Word> ws = b.words();
-        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
-            Word w = ws.get(at);
-            if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GFunction f = functions.g(w.code());
-                if (f != null && f.role() == GRole.SET_OFFSETS) {
-                    return w;
-                }
-            }
-        }
-        return null;
+        return CycleBlocks.gWord(b, functions, GRole.SET_OFFSETS);
     }
 
     /** The G10 block's words: its other words as a block of their own, and its L, P and axes (null after their error). */
     static CycleBlocks.Split read(RawBlock b, Word g, Diagnostics out) {
-        CycleWords words = CycleWords.read(b, g, "G" + g.number(), OWN, OWN, 1, 1, w -> false, out);
-        return new CycleBlocks.Split(CycleBlocks.passOnBlock(b, words != null ? words.passOn() : java.util.List.of()),
-                words);
+        return CycleBlocks.split(b, g, OWN, out);
     }
 
     /**

@@ -8,7 +8,6 @@ import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
-import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import gcnc.machine.MachineProfile;
 import java.util.EnumSet;
@@ -25,7 +24,7 @@ import java.util.Set;
  *
  * <p>It only checks: {@link #read} splits the block, {@link #reference} finds the point,
  * {@link #moves} gives the two rapids; the checker checks the block of other words, follows the
- * intermediate point and checks and commits the moves ({@code Checker.returnToReference}).
+ * intermediate point and checks and commits the moves ({@link OffsetAndReturn#returnToReference}).
  */
 final class ReferenceReturn {
     private static final Set<Letter> OWN = EnumSet.of(Letter.P);
@@ -35,23 +34,12 @@ final class ReferenceReturn {
 
     /** The block's G30 word, or null. */
     static Word word(RawBlock b, FunctionIndex functions) {
-        java.util.List<Word> ws = b.words();
-        for (int at = 0; at < ws.size(); at++) { // an index: no iterator per block
-            Word w = ws.get(at);
-            if (w.letter() == Letter.G && !w.number().isEmpty()) {
-                GFunction f = functions.g(w.code());
-                if (f != null && f.role() == GRole.OTHER_HOME) {
-                    return w;
-                }
-            }
-        }
-        return null;
+        return CycleBlocks.gWord(b, functions, GRole.OTHER_HOME);
     }
 
     /** The G30 block's words: its other words as a block of their own, and its P and axes (null after their error). */
     static CycleBlocks.Split read(RawBlock b, Word g, Diagnostics out) {
-        CycleWords words = CycleWords.read(b, g, "G" + g.number(), OWN, OWN, 1, 1, w -> false, out);
-        return new CycleBlocks.Split(CycleBlocks.passOnBlock(b, words != null ? words.passOn() : List.of()), words);
+        return CycleBlocks.split(b, g, OWN, out);
     }
 
     /** The reference point P names (2 without P) in the profile; empty after an error (to {@code out}). */

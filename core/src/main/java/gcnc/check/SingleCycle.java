@@ -26,41 +26,20 @@ import java.util.Optional;
  * block with X, U, Z or W and no G of that group makes it again, with the words it does not give
  * (the other end coordinate, the taper) as before; a G of the group ends it (docs/cycles.md).
  */
-final class SingleCycle {
-    private final Checker host;
-    /** The cycle in force, if any. */
-    private final ModalCycle modal = new ModalCycle();
+final class SingleCycle extends ModalExpansion {
     /** The end point of the cycle in force, counts, and its taper (counts along X for G90, Z for G94). */
     private Point end;
     private double taper;
 
-    SingleCycle(Checker host) {
-        this.host = host;
-    }
-
-    private GFunction function(Word w) {
-        return CycleBlocks.function(host, w);
-    }
-
-    /** The cycle in force as the program wrote it ("G90"), for a finding about running it again. */
-    String name() {
-        return modal.name();
-    }
-
-    /** Whether the block makes the cycle in force again: an axis word, no G of its group and no one-shot G. */
-    boolean repeats(RawBlock b) {
-        return modal.repeats(host, b);
-    }
-
-    /** An ordinary block: a G of the cycle's group ends the cycle. */
-    void note(RawBlock b) {
-        modal.note(host, b);
+    SingleCycle(CycleHost host) {
+        super(host, new ModalCycle());
     }
 
     /** A G90/G94 block ({@code g} its cycle word) or a block that makes the cycle in force again (g null). */
+    @Override
     List<CheckedBlock> run(RawBlock b, Word g, boolean isFirst) {
-        GRole role = g == null ? modal.kind() : function(g).role();
-        String label = g == null ? modal.name() : "G" + g.number();
+        GRole role = role(g);
+        String label = label(g);
         Letter taperWord = role == GRole.TURNING_SINGLE_CYCLE ? Letter.I : Letter.K;
         List<Word> axes = new ArrayList<>();
         List<Word> passOn = new ArrayList<>();
@@ -160,7 +139,7 @@ final class SingleCycle {
             path = new Point[] {new Point(a.x(), end.z() + taper), end, new Point(end.x(), a.z()), a};
         }
         boolean[] rapid = {true, false, false, true};
-        MoveWriter writer = new MoveWriter(CycleExpansion.frame(host, start), line, at.span());
+        MoveWriter writer = new MoveWriter(CycleBlocks.frame(host, start), line, at.span());
         CycleOrigin origin = CycleOrigin.single(modal.name(), line);
         Point from = a;
         for (int i = 0; i < path.length; i++) {
@@ -169,7 +148,7 @@ final class SingleCycle {
             }
             Optional<CheckedBlock> r = host.one(writer.block(Move.line(rapid[i], path[i], 1), from), false, origin);
             if (r.isEmpty()) {
-                CycleExpansion.abandon(host, writer, a, origin).ifPresent(done::add);
+                CycleBlocks.abandon(host, writer, a, origin).ifPresent(done::add);
                 break;
             }
             done.add(r.get());

@@ -16,7 +16,7 @@ public interface BlockCheck {
     /**
      * A rule about the machine's state (spindle, chuck, feed, S limits) rather than the block's
      * form. A block that breaks only such rules is still what the programmer meant, so the
-     * checker carries on from the state it would have left (see {@code Checker#recover}).
+     * checker carries on from the state it would have left (see the checker's {@code recover}).
      */
     default boolean prerequisite() {
         return false;
