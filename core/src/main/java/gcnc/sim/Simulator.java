@@ -61,17 +61,15 @@ public final class Simulator {
             // No stock, no stock check: never collisions with a guessed blank (chuck, tailstock and travel still run).
             diagnostics.report(new Diagnostic(Code.E316_SIM_NO_STOCK, gcnc.diag.Severity.NOTE, Span.of(1, 1), List.of()));
         }
+        Events events = new Events();
+        ThreadGearing gearing = new ThreadGearing(plane, profile.encoder().map(e -> Plane.channel(e.channel())).orElse(-1),
+                profile.encoder().map(e -> e.countsPerRev()).orElse(0), profile.rpmPerVolt(),
+                threadTolerance(profile, options), events);
+        // the spindle's volts come from AO, not the OF of its channel, when an analog output drives it
+        int spindleAnalog = gcnc.machine.MachineIo.of(profile).drive()
+                instanceof gcnc.machine.MachineIo.SpindleDrive.Analog a ? a.output() : -1;
         this.dmc = new ReplayController(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
-                profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), new Events());
-        profile.encoder().ifPresent(e -> {
-            dmc.encoderChannel = Plane.channel(e.channel());
-            dmc.encoderCounts = e.countsPerRev();
-        });
-        dmc.rpmPerVolt = profile.rpmPerVolt();
-        if (gcnc.machine.MachineIo.of(profile).drive() instanceof gcnc.machine.MachineIo.SpindleDrive.Analog a) {
-            dmc.spindleAnalog = a.output(); // the spindle's volts come from AO, not the OF of its channel
-        }
-        dmc.threadTolerance = threadTolerance(profile, options);
+                profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), spindleAnalog, gearing, events);
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
         this.corners = new Corners(profile, this::report);
     }
@@ -134,9 +132,9 @@ public final class Simulator {
                 expected.add(new Expected(intended, i, ms.get(i), done, count));
             }
         }
-        dmc.checkedByCaller = true;
+        dmc.checkedByCaller(true);
         run(emitted);
-        dmc.checkedByCaller = false;
+        dmc.checkedByCaller(false);
         if (settled) {
             // (while the planner holds pieces, a sequence longer than its window may be open here: its
             // VE comes with a later block)
@@ -149,9 +147,9 @@ public final class Simulator {
 
     /** The sequences the planner held back to the end of the program's blocks. */
     public void held(List<Instruction> lines) {
-        dmc.checkedByCaller = true;
+        dmc.checkedByCaller(true);
         run(lines);
-        dmc.checkedByCaller = false;
+        dmc.checkedByCaller(false);
         closeSequences(lastLine);
     }
 
@@ -330,7 +328,7 @@ public final class Simulator {
     }
 
     /** The interpreter's events, turned into machine state and checks. */
-    private final class Events implements ReplayController.Listener {
+    private final class Events implements ReplayListener {
         @Override
         public void sequence(List<Segment> segments, double speed, int line) {
             // the runs of segments from one motion each, and the motions they carry out (kept in
@@ -377,7 +375,7 @@ public final class Simulator {
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
             boolean stopped = !rapid && outputs.spindleKnown && !outputs.running;
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
-            boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration, dmc.deceleration,
+            boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration(), dmc.deceleration(),
                     stopped || open);
             corners.check(segments, speed, line, meant.isEmpty() ? null : numbers);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With

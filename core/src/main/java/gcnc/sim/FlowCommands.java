@@ -1,0 +1,130 @@
+package gcnc.sim;
+
+import gcnc.diag.Code;
+import gcnc.dmc.Command;
+import gcnc.dmc.Instruction;
+
+/**
+ * The program's course in the replay, the half of the commands that do not act on the machine:
+ * the program's end (EN, and the routines after it, which the replay does not run), labels,
+ * marks and remarks, jumps (not taken), and the commands the replay takes as having no effect.
+ * It holds the instruction being run, whose line places the findings about it, and says for the
+ * commands that act on the machine ({@link ReplayCommands}) whether the program has ended.
+ */
+abstract class FlowCommands implements Command.Visitor<Void> {
+    final ReplayListener out;
+    /** The instruction being run and its G-code line, for the findings about it. */
+    Instruction instruction;
+    int line;
+    private boolean ended;
+    /** A label after EN has been met: what follows is a routine, not run in the replay. */
+    private boolean routine;
+
+    FlowCommands(ReplayListener out) {
+        this.out = out;
+    }
+
+    /** The instruction the commands after this refer to (the one being run): its line places their findings. */
+    final void at(Instruction i) {
+        this.instruction = i;
+        this.line = i.source().line();
+    }
+
+    /** Runs {@code i}, which becomes the instruction being run. */
+    final void run(Instruction i) {
+        at(i);
+        i.command().accept(this);
+    }
+
+    final Instruction instruction() {
+        return instruction;
+    }
+
+    final String text() {
+        return instruction.text();
+    }
+
+    /**
+     * Whether the program has ended: E312 for the command, which then does nothing. A label after
+     * {@code EN} starts a routine the main program reaches only by a jump or a fault (the homing
+     * refusal, the waits, the error handlers: docs/galil.md): its commands are not run by the replay.
+     */
+    final boolean afterEnd() {
+        if (ended && !routine) {
+            out.report(Code.E312_SIM_AFTER_END, line, text());
+        }
+        return ended;
+    }
+
+    public Void label(Command.Label c) {
+        routine |= ended;
+        return null;
+    }
+
+    public Void stock(Command.Stock c) {
+        return null;
+    }
+
+    public Void sourceMark(Command.SourceMark c) {
+        return null;
+    }
+
+    public Void remark(Command.Remark c) {
+        return null;
+    }
+
+    public Void end(Command.End c) {
+        afterEnd();
+        ended = true;
+        return null;
+    }
+
+    /**
+     * A conditional jump leaves for a routine when the machine is not ready (not at home, the
+     * spindle not at speed, the turret not in position): the replay's machine is ready, so the
+     * jump is not taken. An unconditional jump in the main program is not followed: E301.
+     */
+    public Void jump(Command.Jump c) {
+        if (!afterEnd() && c.when().isEmpty()) {
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "JP", text());
+        }
+        return null;
+    }
+
+    public Void passThroughM(Command.PassThroughM c) {
+        afterEnd(); // the thesis's pass-through: no output, no effect
+        return null;
+    }
+
+    // a message, a stop or abort of the program, the stack cleared, a variable or deadline set: no
+    // effect on the replay's machine, which is always ready (the routines they serve are not run)
+    public Void message(Command.Message c) {
+        afterEnd();
+        return null;
+    }
+
+    public Void stop(Command.Stop c) {
+        afterEnd();
+        return null;
+    }
+
+    public Void abort(Command.Abort c) {
+        afterEnd();
+        return null;
+    }
+
+    public Void clearStack(Command.ClearStack c) {
+        afterEnd();
+        return null;
+    }
+
+    public Void setVariable(Command.SetVariable c) {
+        afterEnd();
+        return null;
+    }
+
+    public Void setDeadline(Command.SetDeadline c) {
+        afterEnd();
+        return null;
+    }
+}
