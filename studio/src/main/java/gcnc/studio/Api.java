@@ -204,10 +204,16 @@ final class Api implements AutoCloseable {
         }
     }
 
-    /** POST /api/check {name, text}: the diagnostics, as gcnc check --format json. */
+    /** POST /api/check {name, text}: the diagnostics, as gcnc check --format json; its modal states kept for the hover. */
     private JsonObject check(JsonObject req) throws IOException, Http.Fail {
         String name = Http.required(req, "name");
-        return engine.analysis().check(name, Http.required(req, "text"), folder(name));
+        String text = Http.required(req, "text");
+        Engine e = engine;
+        Optional<Path> folder = folder(name);
+        java.util.Map<Integer, gcnc.ModalStates.Snapshot> states = new java.util.HashMap<>();
+        JsonObject o = e.analysis().check(name, text, folder, gcnc.ModalStates.view(states));
+        e.modal().seen(name, text, folder, states);
+        return o;
     }
 
     /** POST /api/simulate {name, text}: diagnostics, DMC, path, summary. */
