@@ -10,7 +10,9 @@
 #      shop's tests must run again and fail (the plugin declares the programs as their inputs);
 #   4. builds a copy with a faulty program: it must fail at that program's line and column, and the
 #      shop's JUnit test of that program must fail too;
-#   5. a shop's library (stage library): a copy with a program that calls O9010.nc beside it, through a
+#   5. gcnc { stock } (stage stock): a blank without units read in an inch program's inches, on the setup
+#      sheet and placing the work zero; a bad one fails the task with the command line's message;
+#   6. a shop's library (stage library): a copy with a program that calls O9010.nc beside it, through a
 #      build cache of its own: an edit of the called file judges it and its caller again and keeps the
 #      other results; a second clone with the same build cache takes gcncCheck and gcncCompile FROM-CACHE;
 #      a removed program's findings and outputs are gone, nothing else judged again.
@@ -152,6 +154,43 @@ loc = [(x["ruleId"], x["locations"][0]["physicalLocation"]["artifactLocation"]["
         x["locations"][0]["physicalLocation"]["region"]["startLine"]) for x in r]
 sys.exit(0 if loc == [("E051", "src/main/gcode/o1299-faulty.gcode", 6)] else 1)
 PY
+echo "== stage stock"
+# gcnc { stock } as gcnc compile --stock takes it: values without a unit in the program's own units
+# (G20 here: inches), the blank on the setup sheet and the work zero on its face (E662); a bore as
+# wide as the bar fails the task with the command line's message.
+mkdir "$work/stock"
+(cd "$root/samples/shop-project" && tar --exclude=build --exclude=.gradle -cf - .) | tar -xf - -C "$work/stock"
+cat > "$work/stock/src/main/gcode/o1205-inch.gcode" <<'NC'
+O1205 (BUSHING BLANK - 1.75 IN BAR, FACE)
+G20 G18 G40 G99
+G28 U0. W0.
+T101
+G50 S2500
+G96 S600 M03
+G54 G00 X1.8 Z0.1 M08
+G01 Z0. F0.008
+X-0.06 F0.006
+G00 Z0.1
+M09
+G28 U0. W0.
+M05
+M30
+NC
+printf "\ngcnc { stock = '1.75,4,2'; programs = files('src/main/gcode/o1205-inch.gcode') }\n" >> "$work/stock/build.gradle"
+run "$work/stock" gcncCompile gcncSimulate --info || fail "the build with gcnc { stock } failed"
+grep -q "o1205-inch.gcode: stock 1.75,4,2 read in inches (G20 at line 2)" "$work/last.log" \
+    || fail "gcnc { stock } did not say it read 1.75,4,2 in the program's inches"
+grep -q "Blank</th><td>diameter 1.75 in (44.45 mm), length 4 in (101.6 mm); sticks out 2 in (50.8 mm) from the jaws' face" \
+    "$work/stock/build/reports/gcnc/gcncSimulate/o1205-inch.html" || fail "the setup sheet does not show the blank of gcnc { stock }"
+grep -q '"code": "E662"' "$work/stock/build/reports/gcnc/gcncCompile.json" || fail "gcncCompile did not put the work zero on the given blank's face (E662)"
+[ -s "$work/stock/build/gcnc/o1205-inch.dmc" ] || fail "no build/gcnc/o1205-inch.dmc with gcnc { stock }"
+sed -i "s/stock = '1.75,4,2'/stock = '65,150,100,65'/" "$work/stock/build.gradle"
+if run "$work/stock" gcncCompile; then
+    fail "gcncCompile passed with a bore as wide as the bar"
+fi
+grep -q "gcncCompile: gcnc { stock }: the bore 65 must be smaller than the diameter 65" "$work/last.log" \
+    || fail "a bad gcnc { stock } did not fail with --stock's message"
+
 echo "== stage library"
 # The bushing faces, then calls O9010 in the file beside it (M98 P9010); T100 is a warning (E646) of its own.
 mkdir "$work/library"

@@ -59,13 +59,14 @@ public final class SetupSheet {
     }
 
     /**
-     * This sheet with the spindle clamps {@code program} sets (read again with {@code session}, as the
-     * checker judged its blocks: {@link ModalStates}), shown beside the top spindle speed.
+     * This sheet with the spindle clamps the program sets, shown beside the top spindle speed: read
+     * from the modal states its own compile saw ({@link ModalStates#view} as the compile's observer,
+     * the checker's state after each block), so the program is not read and checked again.
      */
-    public SetupSheet withClamps(Session session, java.io.Reader program) throws IOException {
+    public SetupSheet withClamps(java.util.Map<Integer, ModalStates.Snapshot> seen) {
         gcnc.machine.GFunction f = profile.control().gFor(gcnc.machine.GRole.REGISTER_AND_CLAMP).orElse(null);
         String g = f == null ? "G50" : "G" + f.code();
-        java.util.Map<Integer, ModalStates.Snapshot> states = new java.util.TreeMap<>(ModalStates.of(session, program));
+        java.util.Map<Integer, ModalStates.Snapshot> states = new java.util.TreeMap<>(seen);
         List<Clamp> found = new java.util.ArrayList<>();
         double last = Double.NaN;
         for (java.util.Map.Entry<Integer, ModalStates.Snapshot> e : states.entrySet()) {

@@ -220,13 +220,13 @@ class CommandsTest {
     /** --stock takes a bore as its fourth number, smaller than the diameter; a bad one is a usage error. */
     @Test
     void stockTakesABore() throws Exception {
-        assertEquals(new gcnc.sim.StockSize(65, 150, 100, 30), StockOptions.parse("65,150,100,30", 0, false));
-        assertEquals(new gcnc.sim.StockSize(65, 150, 7, 0), StockOptions.parse("65,150", 7, false));
+        assertEquals(new gcnc.sim.StockSize(65, 150, 100, 30), gcnc.StockText.parse("--stock", "65,150,100,30", 0, false));
+        assertEquals(new gcnc.sim.StockSize(65, 150, 7, 0), gcnc.StockText.parse("--stock", "65,150", 7, false));
         // a bar bought in inches, given as it is named; mm may be written too (issue 34)
-        assertEquals(new gcnc.sim.StockSize(44.45, 101.6, 50.8, 0), StockOptions.parse("1.75in,4in,2\"", 7, false));
-        assertEquals(new gcnc.sim.StockSize(44.45, 150, 7, 0), StockOptions.parse("44.45mm,150", 7, false));
+        assertEquals(new gcnc.sim.StockSize(44.45, 101.6, 50.8, 0), gcnc.StockText.parse("--stock", "1.75in,4in,2\"", 7, false));
+        assertEquals(new gcnc.sim.StockSize(44.45, 150, 7, 0), gcnc.StockText.parse("--stock", "44.45mm,150", 7, false));
         for (String bad : new String[] {"65,150,100,65", "65,150,100,70", "65,150,100,-1", "65,150,100,30,1", "65,150,100,NaN", "2ft,150", "in,150"}) {
-            org.junit.jupiter.api.Assertions.assertThrows(StockOptions.BadStock.class, () -> StockOptions.parse(bad, 0, false), bad);
+            org.junit.jupiter.api.Assertions.assertThrows(gcnc.StockText.Bad.class, () -> gcnc.StockText.parse("--stock", bad, 0, false), bad);
         }
         Path p = CliTest.program("G21 G18 G40 G99\nT0808\nG97 S800 M03\nG00 X28. Z5.\nG00 Z2.\nG01 X32. Z0. F0.1\n"
                 + "Z-20.\nX28.\nG00 Z5.\nG00 X70. Z50.\nM30\n");

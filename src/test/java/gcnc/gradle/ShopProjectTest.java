@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
  * The Gradle plugin end to end, as a shop meets it (docs/gradle-plugin.md): scripts/shop-project-test.sh
  * publishes the library and plugin to a throwaway Maven local repository and builds copies of
  * samples/shop-project with them. The script checks the outcomes too; this test reads Gradle's own output of each stage,
- * so that a script that stopped checking would not pass it. Ten Gradle builds through one Gradle daemon
+ * so that a script that stopped checking would not pass it (stage stock: gcnc { stock }). Twelve Gradle builds through one Gradle daemon
  * (about 30 s at load 10 for the first six; the four of stage library, a shop's library through a
  * build cache, add about 25 s).
  */
@@ -51,6 +51,12 @@ class ShopProjectTest {
                     // three tasks judge the warned program; Gradle's log shows its warning once (issue 34)
                     () -> assertEquals(1, stage.getOrDefault("warned", "").split(WARNED, -1).length - 1,
                             "the warning " + WARNED + " printed once"),
+                    () -> assertTrue(stage.getOrDefault("stock", "").contains(
+                            "o1205-inch.gcode: stock 1.75,4,2 read in inches (G20 at line 2)"),
+                            "gcnc { stock } without units is read in the program's inches"),
+                    () -> assertTrue(stage.getOrDefault("stock", "").contains(
+                            "gcnc { stock }: the bore 65 must be smaller than the diameter 65"),
+                            "a bad gcnc { stock } fails with the command line's message"),
                     () -> assertTrue(stage.getOrDefault("library", "").contains(
                             "gcncCheck: judged again: src/main/gcode/ops/O9010.nc, src/main/gcode/ops/o1204-bushing.gcode\n"),
                             "an edit of a called file judges it and its caller again, no other program"),

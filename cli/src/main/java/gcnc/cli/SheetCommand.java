@@ -83,17 +83,22 @@ final class SheetCommand extends RunCommand {
         }
         String name = SourceFiles.display(file);
         Compiler.Result r;
-        String number;
+        String text;
+        // read once: the compile's input, the program's number; the sheet's clamps are the modal states the compile saw
+        java.util.Map<Integer, gcnc.ModalStates.Snapshot> states = new java.util.HashMap<>();
         try (Reader in = SourceFiles.open(file, streams().in())) {
+            text = gcnc.send.CompiledRun.text(in);
             r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file))
-                    .compile(in, Optional.of(options), false, line -> { });
+                    .compile(new java.io.StringReader(text), Optional.of(options), false, line -> { },
+                            gcnc.ModalStates.view(states));
         } catch (IOException e) {
             return reporter.ioFault(name, Phrase.IO_CANNOT_READ, e);
         }
-        try (Reader in = gcnc.Session.decode(java.nio.file.Files.newInputStream(file))) {
-            number = gcnc.ProgramNumber.of(in).orElse(null);
+        String number;
+        try {
+            number = gcnc.ProgramNumber.of(new java.io.StringReader(text)).orElse(null);
         } catch (IOException e) {
-            return reporter.ioFault(name, Phrase.IO_CANNOT_READ, e);
+            throw new java.io.UncheckedIOException(e); // a StringReader does not fail
         }
         reporter.report(name, r.diagnostics());
         Optional<SimReport> sim = r.simulation();
@@ -110,12 +115,7 @@ final class SheetCommand extends RunCommand {
             throw new java.io.UncheckedIOException(e); // a StringWriter does not fail
         }
         SetupSheet sheet = SetupSheet.of(name, number, setup.profile(), sim.get(), r.diagnostics(),
-                reporter.messages());
-        try (Reader in = gcnc.Session.decode(java.nio.file.Files.newInputStream(file))) {
-            sheet = sheet.withClamps(setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)), in);
-        } catch (IOException e) {
-            return reporter.ioFault(name, Phrase.IO_CANNOT_READ, e);
-        }
+                reporter.messages()).withClamps(states);
         boolean png = !toStdout && target.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png");
         out.flush();
         try (AtomicOutput o = toStdout ? AtomicOutput.toStream(streams().out()) : AtomicOutput.open(target, output == null ? AtomicOutput.Name.DERIVED : AtomicOutput.Name.GIVEN)) {

@@ -8,17 +8,11 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.PosixFilePermission;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
-import java.util.Set;
 
 /**
  * An output that appears whole or not at all. Lines go to a temporary file; only {@link #commit()}
@@ -38,19 +32,11 @@ import java.util.Set;
  * folder);</li>
  * <li>a stream ({@link #toStream}, standard output for {@code -o -}): copied into it on commit.</li>
  * </ul>
- * A directory, or a path with no file name ({@code /}), is refused when the output is made.
+ * A directory, or a path with no file name ({@code /}), is refused when the output is made. Where the
+ * temporary file is made and how it is put in place (and taken back within a joint commit) is
+ * {@link Placement}'s job; this class writes it.
  */
 public final class AtomicOutput implements AutoCloseable {
-    /** How the finished temporary file reaches the target; also the order of a joint commit. */
-    private enum Kind {
-        /** Renamed over a regular file: can be undone while a later output of the same commit fails. */
-        REPLACE,
-        /** Copied into an existing file that is not a regular one (a device, a pipe). */
-        WRITE_THROUGH,
-        /** Copied into a stream. */
-        STREAM
-    }
-
     /** An output gcnc will not write, with the diagnostic that says why. */
     public static final class Refused extends IOException {
         private final Code code;
@@ -123,10 +109,8 @@ public final class AtomicOutput implements AutoCloseable {
         OutputStream open(Path temp) throws IOException;
     }
 
-    private final Kind kind;
-    /** Where the lines end up (a link's own file for a symbolic link); null for a stream. */
-    private final Path target;
-    private final OutputStream stream;
+    /** Where the temporary file is and how it reaches the target. */
+    private final Placement placement;
     private final Path temp;
     private final OutputStream out;
     /** Our own buffer for {@link #line}: no lock and no copy per line (a compile writes millions). */
@@ -137,63 +121,30 @@ public final class AtomicOutput implements AutoCloseable {
     /** The SHA-256 of every byte written once {@link #hashed} is called, for the source map to record which DMC it belongs to. */
     private final java.security.MessageDigest sha = sha256Digest();
     private java.security.DigestOutputStream digesting;
-    /** The target as it was before {@link #install} replaced it, kept until the whole commit is done. */
-    private Path backup;
 
     public AtomicOutput(Path target) throws IOException {
         this(target, p -> Files.newOutputStream(p));
     }
 
     public AtomicOutput(Path target, Opener opener) throws IOException {
-        Path absolute = target.toAbsolutePath();
-        if (absolute.getFileName() == null || Files.isDirectory(absolute)) {
-            throw new Refused(Code.E502_OUTPUT_IS_DIRECTORY);
-        }
-        this.stream = null;
-        if (Files.exists(absolute) && (!Files.isRegularFile(absolute) || isDescriptor(absolute))) {
-            this.kind = Kind.WRITE_THROUGH;
-            this.target = absolute;
-            this.temp = TempFiles.create(null, "gcnc-", ".part");
-        } else {
-            this.kind = Kind.REPLACE;
-            this.target = Files.isSymbolicLink(absolute) && Files.exists(absolute) ? absolute.toRealPath() : absolute;
-            if (Files.exists(this.target) && !Files.isWritable(this.target)) {
-                // A rename would replace a file its owner made read-only to keep it: write nothing.
-                throw new java.nio.file.AccessDeniedException(target.toString());
-            }
-            this.temp = TempFiles.create(this.target.getParent(), "." + this.target.getFileName(), ".part");
-            keepPermissions();
-        }
+        this(Placement.of(target), opener);
+    }
+
+    private AtomicOutput(Placement placement, Opener opener) throws IOException {
+        this.placement = placement;
+        this.temp = placement.temp();
         this.out = open(opener);
         this.lines = new LineBuffer(out);
     }
 
-    private AtomicOutput(OutputStream stream) throws IOException {
-        this.kind = Kind.STREAM;
-        this.target = null;
-        this.stream = stream;
-        this.temp = TempFiles.create(null, "gcnc-", ".part");
-        this.out = open(p -> Files.newOutputStream(p));
-        this.lines = new LineBuffer(out);
-    }
-
-    /**
-     * A name under /dev or /proc, such as /dev/stdout or /proc/self/fd/3: it stands for a descriptor
-     * the caller opened, which may be a regular file ({@code >> log}). Replacing that file would throw
-     * away what it held; it is written through (appended to) instead.
-     */
-    private static boolean isDescriptor(Path absolute) {
-        return absolute.startsWith("/dev") || absolute.startsWith("/proc");
-    }
-
     /** An output that goes to {@code stream} (standard output) once committed, and nowhere otherwise. */
     public static AtomicOutput toStream(OutputStream stream) throws IOException {
-        return new AtomicOutput(stream);
+        return new AtomicOutput(Placement.of(stream), p -> Files.newOutputStream(p));
     }
 
     /** True when the target is a regular file (or will be one): only then does a side file belong beside it. */
     public boolean replacesFile() {
-        return kind == Kind.REPLACE;
+        return placement.kind() == Placement.Kind.REPLACE;
     }
 
     /**
@@ -223,36 +174,6 @@ public final class AtomicOutput implements AutoCloseable {
         } catch (IOException | RuntimeException e) {
             TempFiles.delete(temp);
             throw e;
-        }
-    }
-
-    /** A new file is ordinary (rw-r--r--), not private like a temporary one; a replaced file keeps its mode. */
-    private void keepPermissions() throws IOException {
-        if (!temp.getFileSystem().supportedFileAttributeViews().contains("posix")) {
-            return;
-        }
-        try {
-            Set<PosixFilePermission> mode = PosixFilePermissions.fromString("rw-r--r--");
-            if (Files.isRegularFile(target)) {
-                mode = Files.getPosixFilePermissions(target);
-            }
-            Files.setPosixFilePermissions(temp, mode);
-        } catch (IOException | RuntimeException e) {
-            // a store without modes (a FAT stick) refuses them: its files have none to keep. Asked
-            // only then: reading the mount table costs a millisecond per output, every compile.
-            if (e instanceof IOException && !storeHasModes()) {
-                return;
-            }
-            TempFiles.delete(temp);
-            throw e;
-        }
-    }
-
-    private boolean storeHasModes() {
-        try {
-            return Files.getFileStore(temp).supportsFileAttributeView("posix");
-        } catch (IOException e) {
-            return true; // not known: the refusal stands
         }
     }
 
@@ -345,7 +266,7 @@ public final class AtomicOutput implements AutoCloseable {
             o.finish();
         }
         List<AtomicOutput> order = new ArrayList<>(List.of(outputs));
-        order.sort(Comparator.comparing(o -> o.kind));
+        order.sort(Comparator.comparing(o -> o.placement.kind()));
         List<AtomicOutput> done = new ArrayList<>();
         try {
             for (AtomicOutput o : order) {
@@ -355,7 +276,7 @@ public final class AtomicOutput implements AutoCloseable {
         } catch (IOException | RuntimeException e) {
             for (int i = done.size() - 1; i >= 0; i--) {
                 try {
-                    done.get(i).undo();
+                    done.get(i).placement.undo();
                 } catch (IOException | RuntimeException u) {
                     e.addSuppressed(u);
                 }
@@ -363,7 +284,7 @@ public final class AtomicOutput implements AutoCloseable {
             throw e;
         }
         for (AtomicOutput o : done) {
-            o.dropBackup();
+            o.placement.dropBackup();
         }
     }
 
@@ -376,71 +297,8 @@ public final class AtomicOutput implements AutoCloseable {
     }
 
     private void install() throws IOException {
-        switch (kind) {
-            case REPLACE -> {
-                if (Files.exists(target, LinkOption.NOFOLLOW_LINKS)) {
-                    keepBackup();
-                }
-                try {
-                    Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-                } catch (IOException | RuntimeException e) {
-                    dropBackup();
-                    throw e;
-                }
-            }
-            case WRITE_THROUGH -> {
-                try (OutputStream o = Files.newOutputStream(target, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
-                    Files.copy(temp, o);
-                }
-                TempFiles.delete(temp);
-            }
-            case STREAM -> {
-                Files.copy(temp, stream);
-                stream.flush();
-                TempFiles.delete(temp);
-            }
-        }
-        TempFiles.forget(temp);
+        placement.install();
         committed = true;
-    }
-
-    /** A second name for the old target (a hard link; a copy where links are not possible). */
-    private void keepBackup() throws IOException {
-        Path b = temp.resolveSibling(temp.getFileName() + ".old");
-        TempFiles.remember(b);
-        try {
-            try {
-                Files.createLink(b, target);
-            } catch (IOException | UnsupportedOperationException e) {
-                Files.copy(target, b, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.COPY_ATTRIBUTES);
-            }
-        } catch (IOException | RuntimeException e) {
-            TempFiles.delete(b);
-            throw e;
-        }
-        backup = b;
-    }
-
-    /** Takes back {@link #install}: the old file returns, or the new one goes if there was none. */
-    private void undo() throws IOException {
-        if (kind != Kind.REPLACE) {
-            return;
-        }
-        if (backup != null) {
-            // Should the move back fail, the old contents stay in the backup file: never deleted.
-            TempFiles.forget(backup);
-            Files.move(backup, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            backup = null;
-        } else {
-            Files.deleteIfExists(target);
-        }
-    }
-
-    private void dropBackup() throws IOException {
-        if (backup != null) {
-            TempFiles.delete(backup);
-            backup = null;
-        }
     }
 
     @Override

@@ -1,5 +1,6 @@
 package gcnc.gradle;
 
+import gcnc.CompileObserver;
 import gcnc.Compiler;
 import gcnc.Session;
 import gcnc.output.DmcOutputs;
@@ -12,7 +13,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import org.gradle.api.tasks.CacheableTask;
-import org.gradle.api.tasks.OutputDirectory;
 
 /**
  * {@code gcncCompile}: each program checked, translated to Galil and simulated, as {@code gcnc
@@ -23,16 +23,10 @@ import org.gradle.api.tasks.OutputDirectory;
  * or removed, are deleted first; those of the others are kept ({@link LibraryRun}).
  */
 @CacheableTask
-public class CompileTask extends GcncTask {
-    @OutputDirectory
-    public File getOutputDir() {
-        return new File(getProject().getBuildDir(), "gcnc");
-    }
-
+public class CompileTask extends WritingTask {
     @Override
-    protected void clearOutputs() {
-        getProject().delete(getOutputDir());
-        getOutputDir().mkdirs();
+    protected File outputFolder() {
+        return new File(getProject().getBuildDir(), "gcnc");
     }
 
     /** A program's .dmc and .dmc.map, and in the stream form its .stream and .stream.map. */
@@ -57,14 +51,10 @@ public class CompileTask extends GcncTask {
             throw new IOException("cannot write " + e.path() + ": " + e.problem().getMessage(), e.problem());
         }
         try (outputs; Reader in = program.open()) {
-            outputs.mapSource(program.file().getName(), program.file().toPath());
-            // the form that fits the profile's controller: the program, or a resident program and its .stream
-            Compiler.Result r = session.compile(in, Optional.of(session.simulation()), false,
-                    session.options().dialect() == gcnc.galil.Dialect.Kind.THESIS ? outputs.programSink()
-                            : outputs.sink(Optional.empty(), session.profile().controllerLimits()));
-            if (r.ok()) {
-                outputs.finish(r.diagnostics());
-            }
+            // as gcnc compile: the form that fits the profile's controller (the program, or a resident
+            // program and its .stream), decided when clean
+            Compiler.Result r = session.compileInto(outputs, program.file().getName(), program.file().toPath(), in,
+                    Optional.of(simulation(session, program)), false, Optional.empty(), false, CompileObserver.NONE);
             Outcome o = outcome(r, List.of());
             if (r.ok()) {
                 try {

@@ -11,14 +11,16 @@ import org.gradle.api.file.FileCollection;
  * What a shop writes in {@code gcnc { }}: the machine profile (a name among the tables' machines,
  * or a path to a .machine file), a control that replaces the profile's (a name or a folder), a
  * folder with the shop's own copy of tables/ (else the tables built into gcnc), and the part
- * programs (by default every file under src/main/gcode), and whether errors fail the build
- * ({@code ignoreFailures}). Paths are relative to the project.
+ * programs (by default every file under src/main/gcode), the blank gcncCompile and gcncSimulate
+ * simulate ({@code stock}, as {@code --stock} on the command line), and whether errors fail the
+ * build ({@code ignoreFailures}). Paths are relative to the project.
  */
 public class GcncExtension {
     private final Project project;
     private String machine = Session.Options.defaults().machine();
     private String control;
     private File tables;
+    private String stock;
     private FileCollection programs;
     private boolean ignoreFailures;
     private List<String> extensions = gcnc.ProgramFiles.EXTENSIONS;
@@ -81,6 +83,20 @@ public class GcncExtension {
 
     public void setControl(String control) {
         this.control = control;
+    }
+
+    /**
+     * The blank, as {@code gcnc compile --stock} takes it ({@code gcnc.StockText}): {@code
+     * DIA,LENGTH[,STICKOUT[,BORE]]}, each value with its unit ({@code '1.75in,4in,2in'}) or in the
+     * program's units (G20 or G21 in its head, else mm), or {@code 'none'}; null (the default): the
+     * program's stock header, else the profile's blank.
+     */
+    public String getStock() {
+        return stock;
+    }
+
+    public void setStock(String stock) {
+        this.stock = stock;
     }
 
     public File getTables() {

@@ -46,6 +46,15 @@ public abstract class GcncTask extends DefaultTask {
         java.io.Reader open() throws IOException {
             return Session.decode(java.nio.file.Files.newInputStream(file.toPath()));
         }
+
+        /** The program's text read whole, once, for a task that reads it more than once (its compile, its number). */
+        String text() throws IOException {
+            try (java.io.Reader in = open()) {
+                java.io.StringWriter all = new java.io.StringWriter();
+                in.transferTo(all);
+                return all.toString();
+            }
+        }
     }
 
     private GcncExtension settings;
@@ -102,6 +111,13 @@ public abstract class GcncTask extends DefaultTask {
     @Optional
     public String getControl() {
         return settings.getControl();
+    }
+
+    /** The blank ({@link GcncExtension#getStock}): gcncCompile's and gcncSimulate's simulations start from it. */
+    @Input
+    @Optional
+    public String getStock() {
+        return settings.getStock();
     }
 
     /** The files behind the settings, so that editing a table or a profile runs the task again. */

@@ -217,6 +217,7 @@ final class LibraryRun {
         s.append("task ").append(task.getClass().getName()).append('\n');
         s.append("machine ").append(settings.getMachine()).append('\n');
         s.append("control ").append(settings.getControl()).append('\n');
+        s.append("stock ").append(settings.getStock()).append('\n');
         s.append("tables ").append(settings.getTables() == null ? "built-in" : "given").append('\n');
         for (Class<?> c : List.of(Session.class, GcncTask.class)) {
             s.append("classes ").append(classes(c)).append('\n');

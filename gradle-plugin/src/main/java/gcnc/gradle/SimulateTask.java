@@ -1,6 +1,7 @@
 package gcnc.gradle;
 
 import gcnc.Compiler;
+import gcnc.ModalStates;
 import gcnc.ProgramNumber;
 import gcnc.Session;
 import gcnc.SetupSheet;
@@ -8,15 +9,16 @@ import gcnc.sim.SimReport;
 import gcnc.sim.SvgWriter;
 import java.io.File;
 import java.io.IOException;
-import java.io.Reader;
+import java.io.StringReader;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import org.gradle.api.tasks.CacheableTask;
-import org.gradle.api.tasks.OutputDirectory;
 
 /**
  * {@code gcncSimulate}: each program checked, translated and replayed on the machine model with
@@ -26,16 +28,10 @@ import org.gradle.api.tasks.OutputDirectory;
  * for all of them summary.txt, one line a program.
  */
 @CacheableTask
-public class SimulateTask extends GcncTask {
-    @OutputDirectory
-    public File getOutputDir() {
-        return new File(getReportsDir(), getName());
-    }
-
+public class SimulateTask extends WritingTask {
     @Override
-    protected void clearOutputs() {
-        getProject().delete(getOutputDir());
-        getOutputDir().mkdirs();
+    protected File outputFolder() {
+        return new File(getReportsDir(), getName());
     }
 
     /** A program's drawing and setup sheet (HTML and PNG). */
@@ -46,33 +42,29 @@ public class SimulateTask extends GcncTask {
         }
     }
 
-    /** The program's line of summary.txt is the outcome's one extra line. */
+    /**
+     * The program's line of summary.txt is the outcome's one extra line. The program is read once: its
+     * number from that text, the sheet's spindle clamps from the modal states its compile saw.
+     */
     @Override
     protected Outcome process(Session session, Program program) throws IOException {
-        Compiler.Result r;
-        try (Reader in = program.open()) {
-            r = session.compile(in, Optional.of(session.simulation().withPath()), false, line -> { });
-        }
+        String text = program.text();
+        Map<Integer, ModalStates.Snapshot> states = new HashMap<>();
+        Compiler.Result r = session.compile(new StringReader(text), Optional.of(simulation(session, program).withPath()),
+                false, line -> { }, ModalStates.view(states));
         Optional<SimReport> sim = r.simulation();
         if (sim.isEmpty()) {
             return outcome(r, List.of(program.shown() + ": not simulated, "
                     + GcncTask.plural(r.diagnostics().errorCount(), "error")));
         }
-        String number;
-        try (Reader in = program.open()) {
-            number = ProgramNumber.of(in).orElse(null);
-        }
+        String number = ProgramNumber.of(new StringReader(text)).orElse(null);
         StringWriter svg = new StringWriter();
         SvgWriter.write(sim.get(), program.shown(), number, svg, true);
         Path svgFile = getOutputDir().toPath().resolve(program.withExtension(".svg"));
         Files.createDirectories(svgFile.getParent());
         gcnc.output.AtomicOutput.write(svgFile, gcnc.output.AtomicOutput.Name.DERIVED, w -> w.write(svg.toString()));
-        SetupSheet of = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
-                session.tables().messages().in(TaskFindings.LANG));
-        SetupSheet sheet;
-        try (Reader in = program.open()) {
-            sheet = of.withClamps(session, in);
-        }
+        SetupSheet sheet = SetupSheet.of(program.shown(), number, session.profile(), sim.get(), r.diagnostics(),
+                session.tables().messages().in(TaskFindings.LANG)).withClamps(states);
         gcnc.output.AtomicOutput.write(getOutputDir().toPath().resolve(program.withExtension(".html")),
                 gcnc.output.AtomicOutput.Name.DERIVED, w -> sheet.write(svg.toString(), w));
         // the same sheet as one PNG image, to print or pin beside the machine (gcnc sheet -o FILE.png)

@@ -1,6 +1,7 @@
 package gcnc.lsp;
 
 import gcnc.Compiler;
+import gcnc.ModalStates;
 import gcnc.Session;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
@@ -57,6 +58,8 @@ final class Checks {
     private final Map<String, ScheduledFuture<?>> pending = new ConcurrentHashMap<>();
     private final Map<String, Long> changedAt = new ConcurrentHashMap<>();
     private final Map<String, Published> published = new ConcurrentHashMap<>();
+    /** The modal states each buffer's last check saw, for the hover: the check's own, not a second check. */
+    private final Map<String, Seen> seen = new ConcurrentHashMap<>();
     /** The .gcnc files whose problems were published, and what they were. */
     private final Map<Path, List<FolderSettings.Problem>> settingsShown = new ConcurrentHashMap<>();
     private final ScheduledExecutorService checker = Executors.newSingleThreadScheduledExecutor(r -> thread(r, "gcnc-lsp-check"));
@@ -102,6 +105,16 @@ final class Checks {
         return Optional.ofNullable(published.get(uri));
     }
 
+    /** What a check saw of a buffer's text: the state after each of its lines ({@link ModalStates#view}). */
+    private record Seen(Doc doc, Map<Integer, ModalStates.Snapshot> states) {
+    }
+
+    /** The modal states the last check of {@code d} saw; empty when that text was not checked (yet). */
+    Optional<Map<Integer, ModalStates.Snapshot>> states(Doc d) {
+        Seen s = seen.get(d.uri());
+        return s != null && s.doc() == d ? Optional.of(s.states()) : Optional.empty();
+    }
+
     /** The buffer changed (or was opened): check it in a moment. */
     void changed(String uri) {
         changedAt.put(uri, System.nanoTime());
@@ -117,6 +130,7 @@ final class Checks {
     void recheckAll() {
         config.forget();
         published.clear();
+        seen.clear();
         docs.keySet().forEach(this::changed);
     }
 
@@ -126,6 +140,7 @@ final class Checks {
             f.cancel(false);
         }
         published.remove(uri);
+        seen.remove(uri);
         changedAt.remove(uri);
         LanguageClient c = client;
         if (c != null) {
@@ -165,10 +180,12 @@ final class Checks {
             return;
         }
         Session s = r.session().get().withPrograms(d.folder());
-        Compiler.Result res = s.check(new StringReader(d.text()));
+        Map<Integer, ModalStates.Snapshot> states = new java.util.HashMap<>();
+        Compiler.Result res = s.check(new StringReader(d.text()), ModalStates.view(states));
         if (docs.get(uri) != d) {
             return; // edited meanwhile: the next check publishes
         }
+        seen.put(uri, new Seen(d, states));
         Outline outline = Outline.of(d.text(), s.profile().control());
         publish(d, Stage.CHECK, res.diagnostics().sorted(), s, outline);
         long after = simulateAfterMs;

@@ -40,7 +40,7 @@ final class Texts implements TextDocumentService {
     private final Map<String, Doc> docs;
     private final Checks checks;
     private final Config config;
-    /** The modal states of the last buffer hovered, kept while its text is the same. */
+    /** The modal states of the last buffer hovered before its check was done, kept while its text is the same. */
     private Doc statesOf;
     private Map<Integer, ModalStates.Snapshot> states = Map.of();
 
@@ -138,7 +138,12 @@ final class Texts implements TextDocumentService {
         }
     }
 
+    /** The states the buffer's check saw; a hover that comes before that check checks the text itself. */
     private synchronized Map<Integer, ModalStates.Snapshot> states(Answering a) throws IOException {
+        Optional<Map<Integer, ModalStates.Snapshot>> checked = checks.states(a.doc());
+        if (checked.isPresent()) {
+            return checked.get();
+        }
         if (statesOf != a.doc()) {
             states = ModalStates.of(a.session(), new StringReader(a.doc().text()));
             statesOf = a.doc();

@@ -47,9 +47,9 @@ final class Analysis {
         this.fileNames = fileNames;
     }
 
-    /** The program's diagnostics, as {@code gcnc check --format json} prints them. */
-    JsonObject check(String name, String text, Optional<Path> folder) throws IOException {
-        Compiler.Result r = session.withPrograms(folder).check(new StringReader(text));
+    /** The program's diagnostics, as {@code gcnc check --format json} prints them; what the check saw goes to {@code observer}. */
+    JsonObject check(String name, String text, Optional<Path> folder, gcnc.CompileObserver observer) throws IOException {
+        Compiler.Result r = session.withPrograms(folder).check(new StringReader(text), observer);
         JsonObject doc = report(name, r);
         doc.addProperty("blocks", r.blocks());
         return doc;

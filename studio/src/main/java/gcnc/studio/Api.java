@@ -38,13 +38,6 @@ final class Api implements AutoCloseable {
     private final TestCuts testCuts;
     /** GET /api/events: the open event streams, closed when the studio stops. */
     private final EventStreams events;
-    /**
-     * The checks, simulations and compiles that run at once (each may hold a program of 8 MB and its
-     * path): the rest wait their turn, while the light endpoints (the file list, save, Run's hold and
-     * stop) never wait for them.
-     */
-    private static final java.util.concurrent.Semaphore HEAVY = new java.util.concurrent.Semaphore(4);
-
     Api(Workspace workspace, Studio.Config config) {
         this.workspace = workspace;
         this.config = config;
@@ -72,21 +65,21 @@ final class Api implements AutoCloseable {
 
     void handle(String endpoint, HttpExchange ex) throws IOException, Http.Fail {
         switch (endpoint) {
-            case "info" -> Http.json(ex, 200, info(get(ex)));
-            case "files" -> Http.json(ex, 200, files(get(ex)));
-            case "file" -> Http.json(ex, 200, open(get(ex)));
-            case "events" -> events.serve(get(ex));
-            case "save" -> Http.json(ex, 200, save(post(ex)));
-            case "check" -> timed(ex, () -> check(post(ex)));
-            case "simulate" -> timed(ex, () -> simulate(post(ex)));
-            case "compile" -> timed(ex, () -> compile(post(ex)));
-            case "hover" -> timed(ex, () -> hover(post(ex)));
-            case "stock" -> timed(ex, () -> stock(post(ex)));
-            case "profile" -> Http.json(ex, 200, profile(get(ex)));
-            case "profile/impact" -> timed(ex, () -> impact(post(ex)));
-            case "profile/save" -> Http.json(ex, 200, saveProfile(post(ex)));
-            case "wear" -> timed(ex, () -> testCuts.form(engine.session(), post(ex)));
-            case "wear/cut" -> timed(ex, () -> testCut(post(ex)));
+            case "info" -> Http.json(ex, 200, info(Http.get(ex)));
+            case "files" -> Http.json(ex, 200, files(Http.get(ex)));
+            case "file" -> Http.json(ex, 200, open(Http.get(ex)));
+            case "events" -> events.serve(Http.get(ex));
+            case "save" -> Http.json(ex, 200, save(Http.post(ex)));
+            case "check" -> Http.timed(ex, () -> check(Http.post(ex)));
+            case "simulate" -> Http.timed(ex, () -> simulate(Http.post(ex)));
+            case "compile" -> Http.timed(ex, () -> compile(Http.post(ex)));
+            case "hover" -> Http.timed(ex, () -> hover(Http.post(ex)));
+            case "stock" -> Http.timed(ex, () -> stock(Http.post(ex)));
+            case "profile" -> Http.json(ex, 200, profile(Http.get(ex)));
+            case "profile/impact" -> Http.timed(ex, () -> impact(Http.post(ex)));
+            case "profile/save" -> Http.json(ex, 200, saveProfile(Http.post(ex)));
+            case "wear" -> Http.timed(ex, () -> testCuts.form(engine.session(), Http.post(ex)));
+            case "wear/cut" -> Http.timed(ex, () -> testCut(Http.post(ex)));
             case "run", "run/arm", "run/start", "run/hold", "run/resume", "run/step", "run/continue", "run/override", "run/stop" ->
                     runs.handle(endpoint, ex);
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
@@ -110,43 +103,6 @@ final class Api implements AutoCloseable {
             }
         }
         return cut.answer();
-    }
-
-    private interface Work {
-        JsonObject run() throws IOException, Http.Fail;
-    }
-
-    /**
-     * Answers with the work's JSON and, in a Server-Timing header ({@code gcnc;dur=12.3}), how long
-     * the studio took for it in milliseconds: the browser's developer tools and bench/studio-recheck.sh
-     * show it apart from the time on the wire.
-     */
-    private static void timed(HttpExchange ex, Work work) throws IOException, Http.Fail {
-        long start = System.nanoTime();
-        JsonObject answer;
-        HEAVY.acquireUninterruptibly();
-        try {
-            answer = work.run();
-        } finally {
-            HEAVY.release();
-        }
-        ex.getResponseHeaders().set("Server-Timing", String.format(Locale.ROOT, "gcnc;dur=%.1f", (System.nanoTime() - start) / 1e6));
-        Http.json(ex, 200, answer);
-    }
-
-    private static HttpExchange get(HttpExchange ex) throws Http.Fail {
-        if (!ex.getRequestMethod().equals("GET")) {
-            throw new Http.Fail(405, "use GET for " + ex.getRequestURI().getRawPath());
-        }
-        return ex;
-    }
-
-    /** The JSON body of a POST (a page's fetch sends it as application/json). */
-    private static JsonObject post(HttpExchange ex) throws IOException, Http.Fail {
-        if (!ex.getRequestMethod().equals("POST")) {
-            throw new Http.Fail(405, "use POST for " + ex.getRequestURI().getRawPath());
-        }
-        return Http.body(ex);
     }
 
     /** GET /api/info: what this studio serves: folder, machine, control, dialect, language, versions. */
@@ -204,10 +160,16 @@ final class Api implements AutoCloseable {
         }
     }
 
-    /** POST /api/check {name, text}: the diagnostics, as gcnc check --format json. */
+    /** POST /api/check {name, text}: the diagnostics, as gcnc check --format json; its modal states kept for the hover. */
     private JsonObject check(JsonObject req) throws IOException, Http.Fail {
         String name = Http.required(req, "name");
-        return engine.analysis().check(name, Http.required(req, "text"), folder(name));
+        String text = Http.required(req, "text");
+        Engine e = engine;
+        Optional<Path> folder = folder(name);
+        java.util.Map<Integer, gcnc.ModalStates.Snapshot> states = new java.util.HashMap<>();
+        JsonObject o = e.analysis().check(name, text, folder, gcnc.ModalStates.view(states));
+        e.modal().seen(name, text, folder, states);
+        return o;
     }
 
     /** POST /api/simulate {name, text}: diagnostics, DMC, path, summary. */

@@ -4,6 +4,7 @@ import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParseException;
 import com.google.gson.JsonParser;
+import com.google.gson.JsonPrimitive;
 import com.sun.net.httpserver.HttpExchange;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -11,7 +12,10 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 
-/** The small pieces every handler needs: read a JSON body (bounded), answer with JSON, bytes or an error. */
+/**
+ * The small pieces every handler needs: the method a request must use, read a JSON body (bounded)
+ * and its members, the gate and timing of heavy work, answer with JSON, bytes or an error.
+ */
 final class Http {
     /** A request refused or failed: its status and the message the page shows. */
     record Failure(int status, String message) {
@@ -53,14 +57,8 @@ final class Http {
 
     /** A string member of a request, or null when absent; 400 when it is there but not a string. */
     static String string(JsonObject o, String name) throws Fail {
-        JsonElement e = o.get(name);
-        if (e == null || e.isJsonNull()) {
-            return null;
-        }
-        if (!e.isJsonPrimitive() || !e.getAsJsonPrimitive().isString()) {
-            throw new Fail(400, "\"" + name + "\" must be a string");
-        }
-        return e.getAsString();
+        JsonPrimitive p = member(o, name, JsonPrimitive::isString, "a string");
+        return p == null ? null : p.getAsString();
     }
 
     static String required(JsonObject o, String name) throws Fail {
@@ -85,15 +83,70 @@ final class Http {
         return v.intValueExact();
     }
 
+    /** A true-or-false member, false when absent; 400 when it is anything else. */
     static boolean flag(JsonObject o, String name) throws Fail {
+        JsonPrimitive p = member(o, name, JsonPrimitive::isBoolean, "true or false");
+        return p != null && p.getAsBoolean();
+    }
+
+    /** A member that is a primitive of the kind {@code is} tells, or null when absent; 400 ("must be {@code what}") otherwise. */
+    private static JsonPrimitive member(JsonObject o, String name, java.util.function.Predicate<JsonPrimitive> is, String what)
+            throws Fail {
         JsonElement e = o.get(name);
         if (e == null || e.isJsonNull()) {
-            return false;
+            return null;
         }
-        if (!e.isJsonPrimitive() || !e.getAsJsonPrimitive().isBoolean()) {
-            throw new Fail(400, "\"" + name + "\" must be true or false");
+        if (!e.isJsonPrimitive() || !is.test(e.getAsJsonPrimitive())) {
+            throw new Fail(400, "\"" + name + "\" must be " + what);
         }
-        return e.getAsBoolean();
+        return e.getAsJsonPrimitive();
+    }
+
+    /** The exchange of a read: 405 unless it is a GET. */
+    static HttpExchange get(HttpExchange ex) throws Fail {
+        if (!ex.getRequestMethod().equals("GET")) {
+            throw new Fail(405, "use GET for " + ex.getRequestURI().getRawPath());
+        }
+        return ex;
+    }
+
+    /** The JSON body of a POST (a page's fetch sends it as application/json); 405 for another method. */
+    static JsonObject post(HttpExchange ex) throws IOException, Fail {
+        if (!ex.getRequestMethod().equals("POST")) {
+            throw new Fail(405, "use POST for " + ex.getRequestURI().getRawPath());
+        }
+        return body(ex);
+    }
+
+    /** The work behind an answer: its JSON. */
+    interface Work {
+        JsonObject run() throws IOException, Fail;
+    }
+
+    /**
+     * The checks, simulations and compiles that run at once (each may hold a program of 8 MB and its
+     * path): the rest wait their turn, while the light endpoints (the file list, save, Run's hold and
+     * stop) never wait for them.
+     */
+    private static final java.util.concurrent.Semaphore HEAVY = new java.util.concurrent.Semaphore(4);
+
+    /**
+     * Heavy work ({@link #HEAVY}) answered with its JSON and, in a Server-Timing header ({@code gcnc;dur=12.3}),
+     * how long the studio took for it in milliseconds: the browser's developer tools and
+     * bench/studio-recheck.sh show it apart from the time on the wire.
+     */
+    static void timed(HttpExchange ex, Work work) throws IOException, Fail {
+        long start = System.nanoTime();
+        JsonObject answer;
+        HEAVY.acquireUninterruptibly();
+        try {
+            answer = work.run();
+        } finally {
+            HEAVY.release();
+        }
+        ex.getResponseHeaders().set("Server-Timing", String.format(java.util.Locale.ROOT, "gcnc;dur=%.1f",
+                (System.nanoTime() - start) / 1e6));
+        json(ex, 200, answer);
     }
 
     private static byte[] read(InputStream in) throws IOException, Fail {

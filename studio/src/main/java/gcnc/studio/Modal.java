@@ -19,7 +19,8 @@ import java.util.Optional;
  * (units, feed mode and feed, G96 surface speed and the rpm it gives at the block's X, work
  * offset, tool and offset, where the tool is), as {@link ModalStates} computes it for every front
  * end's hover (the language server's too). The last text's states are kept, so hovering along one
- * version of the program checks it once.
+ * version of the program checks it once; those of the page's own check are taken as they are, so a
+ * text the page checked is not checked again for its hover.
  */
 final class Modal {
     private final Session session;
@@ -76,12 +77,25 @@ final class Modal {
 
     /** The states of a text, the last one's kept. */
     synchronized Map<Integer, Snapshot> states(String name, String text, Optional<Path> folder) throws IOException {
-        String key = name + '\u0000' + folder.map(Path::toString).orElse("") + '\u0000' + text;
+        String key = key(name, text, folder);
         if (!key.equals(lastKey)) {
             last = ModalStates.of(session.withPrograms(folder), new StringReader(text));
             lastKey = key;
         }
         return last;
+    }
+
+    /**
+     * The states a check of this text saw ({@code POST /api/check}, with {@link ModalStates#view} as its
+     * observer): kept as the last text's, so the hover that follows the check does not check it again.
+     */
+    synchronized void seen(String name, String text, Optional<Path> folder, Map<Integer, Snapshot> states) {
+        last = states;
+        lastKey = key(name, text, folder);
+    }
+
+    private static String key(String name, String text, Optional<Path> folder) {
+        return name + '\u0000' + folder.map(Path::toString).orElse("") + '\u0000' + text;
     }
 
     /** The state as the page shows it ({@link ModalStates#summary}): G names as this control writes them, offsets in machine mm. */

@@ -4,7 +4,6 @@ import com.google.gson.JsonObject;
 import gcnc.Compiler;
 import gcnc.Session;
 import gcnc.dmc.Form;
-import gcnc.dmc.Instruction;
 import gcnc.output.DmcOutputs;
 import gcnc.output.FormOutputs;
 import gcnc.send.BlockTable;
@@ -17,7 +16,6 @@ import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
-import java.util.function.Consumer;
 
 /**
  * A saved program made ready to run, step for step as {@code gcnc run FILE} makes it (SendCommand):
@@ -49,23 +47,20 @@ record RunProgram(JsonObject report, int errors, DmcProgram program, BlockTable 
         // simulator's clock, the checker's state at each block; the file is read once
         CompiledRun seen = new CompiledRun();
         try (FormOutputs outputs = FormOutputs.open(file, dmc, true, gcnc.output.AtomicOutput.Name.DERIVED)) {
-            outputs.mapSource(file.getFileName().toString(), file);
-            Consumer<Instruction> written = outputs.sink(Optional.empty(), session.profile().controllerLimits());
             String text;
             try (Reader in = Session.decode(Files.newInputStream(file))) {
                 text = CompiledRun.text(in);
             }
-            Session s = session.withPrograms(folder);
+            // as gcnc compile (Session.compileInto): the form that fits the controller, decided when clean;
             // step mode runs one block at a time, so every motion stops at its end there (docs/run.md)
-            Compiler.Result r = step ? s.compileExactStop(new StringReader(text), sim, written, seen)
-                    : s.compile(new StringReader(text), sim, false, written, seen);
+            Compiler.Result r = session.withPrograms(folder).compileInto(outputs, file.getFileName().toString(), file,
+                    new StringReader(text), sim, false, Optional.empty(), step, seen);
             if (!r.ok()) {
                 return new RunProgram(analysis.report(name, r), r.diagnostics().errorCount(), null, null, null, 0);
             }
-            Form form = outputs.finish(r.diagnostics());
             DmcProgram program = seen.program(session.profile());
             outputs.commit();
-            return new RunProgram(analysis.report(name, r), 0, program, seen.blocks(text), form, outputs.dmcLines());
+            return new RunProgram(analysis.report(name, r), 0, program, seen.blocks(text), outputs.form(), outputs.dmcLines());
         } catch (DmcOutputs.Failed e) {
             throw e.problem();
         }

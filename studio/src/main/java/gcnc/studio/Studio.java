@@ -139,7 +139,7 @@ public final class Studio implements AutoCloseable {
         AtomicInteger n = new AtomicInteger();
         // a thread for every connection the server admits: the JDK reads a request's head on the
         // executor's thread, so a fixed few were all taken by connections that never finished theirs.
-        // The heavy work (check, simulate, compile) is bounded apart (Api.HEAVY), so Stop always has a thread.
+        // The heavy work (check, simulate, compile) is bounded apart (Http.timed), so Stop always has a thread.
         ExecutorService threads = new java.util.concurrent.ThreadPoolExecutor(0, MAX_CONNECTIONS + 8, 30,
                 java.util.concurrent.TimeUnit.SECONDS, new java.util.concurrent.SynchronousQueue<>(), r -> {
                     Thread t = new Thread(r, "gcnc-studio-" + n.incrementAndGet());
