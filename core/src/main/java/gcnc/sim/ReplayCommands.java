@@ -275,7 +275,7 @@ final class ReplayCommands extends FlowCommands {
             return null;
         }
         if (plane.sameChannels(c.axes()) && gearing.settling()) {
-            ThreadGearing.Pass pass = gearing.pass(line);
+            ThreadGearing.GearedPass pass = gearing.pass(line);
             buffer.run(pass.segments(), pass.speed(), pass.end1(), pass.end2(), line);
         } else {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "BG", text());
