@@ -30,7 +30,7 @@ class LowerEnvelopeTest {
     private static final double[] TZ = {-0.4, 0.4, 0};
     private static final double[] TR = {8, 8, 0};
 
-    private static Geometry polygon(Stock.Hull h) {
+    private static Geometry polygon(Hull h) {
         Coordinate[] c = new Coordinate[h.z().length + 1];
         for (int i = 0; i < h.z().length; i++) {
             c[i] = new Coordinate(h.z()[i], h.r()[i]);
@@ -61,14 +61,14 @@ class LowerEnvelopeTest {
     void aDrilledAndBoredPartKeepsItsOutlineOnTheEnvelope() {
         Stock s = new Stock(0, 60, 20);
         Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
-        Stock.Hull[] cuts = {
-            Stock.sweep(DZ, DR, 62, 0, 35, 0), // drilled on the centreline to z 35
-            Stock.sweep(BZ, BR, 62, 6.5, 45, 6.5), // bored to 13 mm to z 45
-            Stock.sweep(BZ, BR, 62, 8, 50, 8), // and to 16 mm to z 50
-            Stock.sweep(TZ, TR, 62, 15, 30, 15), // turned outside to 30 mm
-            Stock.sweep(TZ, TR, 62, 12, 52, 12), // and to 24 mm
+        Hull[] cuts = {
+            Hull.sweep(DZ, DR, 62, 0, 35, 0), // drilled on the centreline to z 35
+            Hull.sweep(BZ, BR, 62, 6.5, 45, 6.5), // bored to 13 mm to z 45
+            Hull.sweep(BZ, BR, 62, 8, 50, 8), // and to 16 mm to z 50
+            Hull.sweep(TZ, TR, 62, 15, 30, 15), // turned outside to 30 mm
+            Hull.sweep(TZ, TR, 62, 12, 52, 12), // and to 24 mm
         };
-        for (Stock.Hull h : cuts) {
+        for (Hull h : cuts) {
             s.cut(h);
             material = OverlayNGRobust.overlay(material, polygon(h), OverlayNG.DIFFERENCE);
         }
@@ -79,21 +79,21 @@ class LowerEnvelopeTest {
             assertEquals(top(material, z), StockScrubTest.at(p[0], p[1], z), 1e-9, "at z " + z);
         }
         // a sweep in the bore touches nothing: the boring bar's rapid back out along the wall it cut
-        assertFalse(s.mayBite(Stock.sweep(BZ, BR, 50, 8, 62, 8)), "in the hole");
-        assertFalse(s.mayBite(Stock.sweep(BZ, BR, 45, 6, 62, 6)), "in the hole");
+        assertFalse(s.mayBite(Hull.sweep(BZ, BR, 50, 8, 62, 8)), "in the hole");
+        assertFalse(s.mayBite(Hull.sweep(BZ, BR, 45, 6, 62, 6)), "in the hole");
         assertEquals(6.5, s.boreAt(47), 1e-12);
         // and one that reaches the bore's step is found: the drilled hole is 5 mm in radius before z 45
-        assertTrue(s.mayBite(Stock.sweep(BZ, BR, 44, 6, 62, 6)), "into the step at z 44..45");
+        assertTrue(s.mayBite(Hull.sweep(BZ, BR, 44, 6, 62, 6)), "into the step at z 44..45");
     }
 
     @Test
     void theFullModelTakesThePolygonsWay() {
         Stock s = new Stock(0, 60, 0, 20, true);
-        s.cut(Stock.sweep(DZ, DR, 62, 0, 35, 0));
-        s.cut(Stock.sweep(TZ, TR, 62, 15, 30, 15));
+        s.cut(Hull.sweep(DZ, DR, 62, 0, 35, 0));
+        s.cut(Hull.sweep(TZ, TR, 62, 15, 30, 15));
         s.profile();
         assertTrue(s.work() > 0, "the reference reads its outline from the polygons");
-        assertTrue(s.mayBite(Stock.sweep(BZ, BR, 50, 4, 62, 4)), "its bore stays the blank's: only a may");
+        assertTrue(s.mayBite(Hull.sweep(BZ, BR, 50, 4, 62, 4)), "its bore stays the blank's: only a may");
     }
 
     @Test
@@ -101,12 +101,12 @@ class LowerEnvelopeTest {
         // a drill 0.5 mm off the centre leaves a pip under its point: material from r 0 up to its lower side
         Stock s = new Stock(0, 60, 20);
         Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
-        Stock.Hull drill = Stock.sweep(DZ, DR, 62, 0.5, 40, 0.5);
+        Hull drill = Hull.sweep(DZ, DR, 62, 0.5, 40, 0.5);
         s.cut(drill);
         material = OverlayNGRobust.overlay(material, polygon(drill), OverlayNG.DIFFERENCE);
         assertTrue(s.envelopeSolid(), "the pip is under the floor: the outline is still the envelope");
         // a parting blade from outside down to r 0.1 across the pip: what is left below it is not known
-        Stock.Hull part = Stock.sweep(new double[] {-1, 0, 0, -1}, new double[] {0, 0, 30, 30}, 41, 25, 41, 0.1);
+        Hull part = Hull.sweep(new double[] {-1, 0, 0, -1}, new double[] {0, 0, 30, 30}, 41, 25, 41, 0.1);
         s.cut(part);
         material = OverlayNGRobust.overlay(material, polygon(part), OverlayNG.DIFFERENCE);
         assertFalse(s.envelopeSolid(), "a cut from above ending under the floor");
@@ -126,9 +126,9 @@ class LowerEnvelopeTest {
             for (int cut = 0; cut < 40; cut++) {
                 boolean inside = rnd.nextBoolean();
                 double r = rnd.nextDouble() * 22;
-                Stock.Hull h = inside
-                        ? Stock.sweep(BZ, BR, 62 + rnd.nextDouble() * 5, r, rnd.nextDouble() * 60, r + rnd.nextDouble() - 0.5)
-                        : Stock.sweep(TZ, TR, 62 + rnd.nextDouble() * 5, r, rnd.nextDouble() * 60, r + rnd.nextDouble() - 0.5);
+                Hull h = inside
+                        ? Hull.sweep(BZ, BR, 62 + rnd.nextDouble() * 5, r, rnd.nextDouble() * 60, r + rnd.nextDouble() - 0.5)
+                        : Hull.sweep(TZ, TR, 62 + rnd.nextDouble() * 5, r, rnd.nextDouble() * 60, r + rnd.nextDouble() - 0.5);
                 if (h == null) {
                     continue;
                 }

@@ -86,9 +86,9 @@ class ModelTest {
     @Test
     void trapezoidAndTriangleTimes() {
         // 1000 counts at 1000 counts/s, 10000 counts/s^2 both ways: 1 s + 0.05 s + 0.05 s.
-        assertEquals(1.1, MotionChecks.time(1000, 1000, 10000, 10000), 1e-12);
+        assertEquals(1.1, Profiles.time(1000, 1000, 10000, 10000), 1e-12);
         // 10 counts cannot reach 1000 counts/s: accelerate 5, decelerate 5 -> 2 x sqrt(2*5/10000).
-        assertEquals(2 * Math.sqrt(0.001), MotionChecks.time(10, 1000, 10000, 10000), 1e-12);
+        assertEquals(2 * Math.sqrt(0.001), Profiles.time(10, 1000, 10000, 10000), 1e-12);
     }
 
     @Test

@@ -31,12 +31,12 @@ class SimCostTest {
      */
     private static long plunges(int n) {
         Stock s = new Stock(0, 150, 25);
-        double[][] in = Stock.smaller(TZ, TR);
+        double[][] in = Hull.smaller(TZ, TR);
         int deep = 0;
         for (int i = 0; i < n; i++) {
             double z = 5 + i * 0.03;
             double r = 24 - i * 0.004;
-            Stock.Sweep sweep = new Stock.Sweep(Stock.sweep(TZ, TR, z, 30, z, r), Stock.sweep(in[0], in[1], z, 30, z, r));
+            Stock.Sweep sweep = new Stock.Sweep(Hull.sweep(TZ, TR, z, 30, z, r), Hull.sweep(in[0], in[1], z, 30, z, r));
             List<Stock.Sweep> biting = s.biting(List.of(sweep));
             if (!biting.isEmpty() && s.deepOverlap(biting) != null) {
                 deep++;

@@ -39,13 +39,13 @@ class UpperEnvelopeTest {
     }
 
     /** The V tip swept between two random points over a blank {@code length} long (and a little beyond), r up to {@code rMax}. */
-    private static Stock.Hull randomSweep(Random rnd, double length, double rMax) {
+    private static Hull randomSweep(Random rnd, double length, double rMax) {
         double over = length / 12;
-        return Stock.sweep(TZ, TR, rnd.nextDouble() * (length + 2 * over) - over, rnd.nextDouble() * rMax,
+        return Hull.sweep(TZ, TR, rnd.nextDouble() * (length + 2 * over) - over, rnd.nextDouble() * rMax,
                 rnd.nextDouble() * (length + 2 * over) - over, rnd.nextDouble() * rMax);
     }
 
-    private static Geometry polygon(Stock.Hull h) {
+    private static Geometry polygon(Hull h) {
         Coordinate[] c = new Coordinate[h.z().length + 1];
         for (int i = 0; i < h.z().length; i++) {
             c[i] = new Coordinate(h.z()[i], h.r()[i]);
@@ -57,7 +57,7 @@ class UpperEnvelopeTest {
     @Test
     void aLevelPassLeavesItsStepAndTheInsertsFlank() {
         Stock s = new Stock(0, 100, 25);
-        s.cut(Stock.sweep(TZ, TR, 110, 20, 40, 20)); // tip at r 20 from beyond the face to z 40
+        s.cut(Hull.sweep(TZ, TR, 110, 20, 40, 20)); // tip at r 20 from beyond the face to z 40
         double[][] p = s.profile();
         // the flank from (39.6, 28) to the tip (40, 20) crosses r 25 at z 39.75
         assertArrayEquals(new double[] {0, 39.75, 40, 100}, p[0], 1e-5);
@@ -68,7 +68,7 @@ class UpperEnvelopeTest {
     void aSweepLowerThanTheStockIsTopAndBottomOnlyLeavesTheEnvelope() {
         // a shank 2 mm tall cannot cut a ring of material off above it: the envelope stays
         UpperEnvelope e = new UpperEnvelope(0, 100, 0, 25);
-        assertFalse(e.lower(Stock.sweep(TZ, new double[] {2, 2, 0}, 110, 20, 40, 20)));
+        assertFalse(e.lower(Hull.sweep(TZ, new double[] {2, 2, 0}, 110, 20, 40, 20)));
         assertEquals(25, e.max(0, 100));
         assertEquals(1, e.size());
     }
@@ -79,7 +79,7 @@ class UpperEnvelopeTest {
         Geometry material = F.toGeometry(new Envelope(0, 100, 0, 25));
         for (int pass = 0; pass < 40; pass++) {
             double r = 24.75 - pass * 0.25;
-            Stock.Hull h = Stock.sweep(TZ, TR, 102, r, 30 + pass * 0.5, r);
+            Hull h = Hull.sweep(TZ, TR, 102, r, 30 + pass * 0.5, r);
             e.lower(h);
             material = OverlayNGRobust.overlay(material, polygon(h), OverlayNG.DIFFERENCE);
         }
@@ -97,7 +97,7 @@ class UpperEnvelopeTest {
             UpperEnvelope e = new UpperEnvelope(0, 60, 0, 20);
             Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
             for (int cut = 0; cut < 60; cut++) {
-                Stock.Hull h = randomSweep(rnd, 60, 24);
+                Hull h = randomSweep(rnd, 60, 24);
                 if (h == null) {
                     continue;
                 }
@@ -109,7 +109,7 @@ class UpperEnvelopeTest {
                 assertTrue(e.max(z, z) >= top(material, z) - 1e-9, "trial " + trial + " at z " + z);
             }
             for (int k = 0; k < 100; k++) {
-                Stock.Hull q = randomSweep(rnd, 60, 24);
+                Hull q = randomSweep(rnd, 60, 24);
                 if (q != null && !e.dips(q.zMin(), q.zMax(), q, 0)) {
                     assertEquals(0, material.intersection(polygon(q)).getArea(), 1e-9, "trial " + trial);
                 }
@@ -130,7 +130,7 @@ class UpperEnvelopeTest {
         Random rnd = new Random(5);
         Geometry material = F.toGeometry(new Envelope(0, 60, 4, 20)); // a tube: its bore's edges do not count
         for (int cut = 0; cut < 40; cut++) {
-            Stock.Hull h = Stock.sweep(TZ, TR, rnd.nextDouble() * 70 - 5, 6 + rnd.nextDouble() * 18,
+            Hull h = Hull.sweep(TZ, TR, rnd.nextDouble() * 70 - 5, 6 + rnd.nextDouble() * 18,
                     rnd.nextDouble() * 70 - 5, 6 + rnd.nextDouble() * 18);
             if (h != null) {
                 material = OverlayNGRobust.overlay(material, polygon(h), OverlayNG.DIFFERENCE);
@@ -167,7 +167,7 @@ class UpperEnvelopeTest {
             at[i] = 0.5 + i * 0.0024; // V notches 0.0024 mm apart, each to its own depth
             deep[i] = 24 - (i % 7) * 0.01;
             int before = e.size();
-            e.lower(Stock.sweep(TZ, TR, at[i], 30, at[i], deep[i]));
+            e.lower(Hull.sweep(TZ, TR, at[i], 30, at[i], deep[i]));
             assertTrue(e.size() <= UpperEnvelope.MAX_PIECES, "pieces: " + e.size());
             coarsened |= e.size() < before - 1000;
         }
@@ -196,7 +196,7 @@ class UpperEnvelopeTest {
             Stock s = new Stock(0, 30, 12);
             Geometry material = F.toGeometry(new Envelope(0, 30, 0, 12));
             for (int cut = 0; cut < 80; cut++) {
-                Stock.Hull h = randomSweep(rnd, 30, 14);
+                Hull h = randomSweep(rnd, 30, 14);
                 if (h == null) {
                     continue;
                 }
@@ -232,7 +232,7 @@ class UpperEnvelopeTest {
         Geometry material = F.toGeometry(new Envelope(0, 60, 0, 20));
         for (int pass = 0; pass < 30; pass++) {
             double r = 19.5 - pass * 0.5;
-            Stock.Hull h = Stock.sweep(TZ, TR, 62, r, 20 + pass, r - pass * 0.05); // a slight taper
+            Hull h = Hull.sweep(TZ, TR, 62, r, 20 + pass, r - pass * 0.05); // a slight taper
             s.cut(h);
             material = OverlayNGRobust.overlay(material, polygon(h), OverlayNG.DIFFERENCE);
         }
@@ -244,15 +244,15 @@ class UpperEnvelopeTest {
         }
         // a 2 mm shank passing at r 5 under the material from z 62 to 5: material stays above it, and
         // the outline is still the envelope (the top run's floor comes up to the shank's top, issue 35)
-        s.cut(Stock.sweep(TZ, new double[] {2, 2, 0}, 62, 5, 5, 5));
+        s.cut(Hull.sweep(TZ, new double[] {2, 2, 0}, 62, 5, 5, 5));
         assertTrue(s.envelopeSolid(), "a sweep under material leaves the top run");
         // a cut from above whose lower edge ends under that floor cannot tell what is left below it
-        s.cut(Stock.sweep(TZ, TR, 62, 6, 30, 6));
+        s.cut(Hull.sweep(TZ, TR, 62, 6, 30, 6));
         assertFalse(s.envelopeSolid(), "a cut from above ending under the floor");
         // through a tube's wall at r 8: nothing is left where the tip passed, a ring of the wall under
         // the V's flank; the outline is still the envelope, 0 where the wall is gone
         Stock tube = new Stock(0, 60, 8, 20);
-        Stock.Hull through = Stock.sweep(TZ, TR, 62, 6, 40, 6);
+        Hull through = Hull.sweep(TZ, TR, 62, 6, 40, 6);
         tube.cut(through);
         Geometry wall = OverlayNGRobust.overlay(F.toGeometry(new Envelope(0, 60, 8, 20)), polygon(through),
                 OverlayNG.DIFFERENCE);

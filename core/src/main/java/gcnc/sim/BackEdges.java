@@ -59,7 +59,7 @@ final class BackEdges {
      * A back edge's band on one piece of a segment, and how many of the segment's cuts come from
      * the pieces before it: an arc's earlier pieces take their material before this one meets it.
      */
-    record Band(Stock.Hull band, int earlierCuts) {
+    record Band(Hull band, int earlierCuts) {
     }
 
     /**
@@ -73,7 +73,7 @@ final class BackEdges {
             if (advance <= 0) {
                 continue; // trailing, or running along itself: it meets nothing first
             }
-            Stock.Hull band = Stock.sweep(new double[] {e[0], e[2]}, new double[] {e[1], e[3]}, az, ar, bz, br);
+            Hull band = Hull.sweep(new double[] {e[0], e[2]}, new double[] {e[1], e[3]}, az, ar, bz, br);
             if (band != null && stock.mayBite(band)) {
                 bands.add(new Band(band, earlier));
             }
@@ -86,7 +86,7 @@ final class BackEdges {
      * in mm, or null.
      */
     static double[] met(Stock stock, List<Band> bands, List<Stock.Sweep> cuts) {
-        List<Stock.Hull> regions = new java.util.ArrayList<>(bands.size());
+        List<Hull> regions = new java.util.ArrayList<>(bands.size());
         int[] before = new int[bands.size()];
         for (int i = 0; i < bands.size(); i++) {
             regions.add(bands.get(i).band());

@@ -184,29 +184,9 @@ final class Corners {
      * taken: {@link #dx} and {@link #dz}'s numbers, each segment's length or angle worked out once.
      */
     private static double cosine(Segment a, Segment b) {
-        double ax;
-        double az;
-        if (a.arc()) {
-            double t = Math.toRadians(a.startDeg() + a.sweepDeg());
-            ax = Math.signum(a.sweepDeg()) * Math.cos(t);
-            az = -Math.signum(a.sweepDeg()) * Math.sin(t);
-        } else {
-            double len = Math.hypot(a.toX() - a.fromX(), a.toZ() - a.fromZ());
-            ax = len == 0 ? 0 : (a.toX() - a.fromX()) / len;
-            az = len == 0 ? 0 : (a.toZ() - a.fromZ()) / len;
-        }
-        double bx;
-        double bz;
-        if (b.arc()) {
-            double t = Math.toRadians(b.startDeg() + 0); // (+ 0 as dx sums it: the same number to the bit)
-            bx = Math.signum(b.sweepDeg()) * Math.cos(t);
-            bz = -Math.signum(b.sweepDeg()) * Math.sin(t);
-        } else {
-            double len = Math.hypot(b.toX() - b.fromX(), b.toZ() - b.fromZ());
-            bx = len == 0 ? 0 : (b.toX() - b.fromX()) / len;
-            bz = len == 0 ? 0 : (b.toZ() - b.fromZ()) / len;
-        }
-        return -(ax * bx + az * bz);
+        double la = length(a);
+        double lb = length(b);
+        return -(dx(a, false, la) * dx(b, true, lb) + dz(a, false, la) * dz(b, true, lb));
     }
 
     /**
@@ -215,17 +195,28 @@ final class Corners {
      * A point at angle a of an arc is (cx + r sin a, cz + r cos a); its derivative along the sweep's sign.
      */
     static double dx(Segment s, boolean start) {
+        return dx(s, start, length(s));
+    }
+
+    /** The z part of {@link #dx}'s direction. */
+    static double dz(Segment s, boolean start) {
+        return dz(s, start, length(s));
+    }
+
+    /** A straight segment's length, counts (what its direction is divided by); 0 for an arc, whose direction needs none. */
+    private static double length(Segment s) {
+        return s.arc() ? 0 : Math.hypot(s.toX() - s.fromX(), s.toZ() - s.fromZ());
+    }
+
+    private static double dx(Segment s, boolean start, double len) {
         if (!s.arc()) {
-            double len = Math.hypot(s.toX() - s.fromX(), s.toZ() - s.fromZ());
             return len == 0 ? 0 : (s.toX() - s.fromX()) / len;
         }
         return Math.signum(s.sweepDeg()) * Math.cos(Math.toRadians(s.startDeg() + (start ? 0 : s.sweepDeg())));
     }
 
-    /** The z part of {@link #dx}'s direction. */
-    static double dz(Segment s, boolean start) {
+    private static double dz(Segment s, boolean start, double len) {
         if (!s.arc()) {
-            double len = Math.hypot(s.toX() - s.fromX(), s.toZ() - s.fromZ());
             return len == 0 ? 0 : (s.toZ() - s.fromZ()) / len;
         }
         return -Math.signum(s.sweepDeg()) * Math.sin(Math.toRadians(s.startDeg() + (start ? 0 : s.sweepDeg())));

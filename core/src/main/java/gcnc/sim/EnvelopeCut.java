@@ -4,7 +4,7 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * What one sweep ({@link Stock.Hull}) does to the stock's envelopes over a stretch of z where
+ * What one sweep ({@link Hull}) does to the stock's envelopes over a stretch of z where
  * everything is straight: the hull's lower and upper sides, the upper envelope's piece, the bore's
  * and the top run's floor ({@link #stretch}). A stretch is split where any two of them cross, so
  * that on each part the sweep covers the material from above (down to its lower side, or all of
@@ -16,7 +16,7 @@ final class EnvelopeCut {
     }
 
     /** The z of every corner of the hull strictly inside (lo, hi), with {@code more} (other breaks), ascending, each once. */
-    static double[] breaks(Stock.Hull h, double lo, double hi, double[] more) {
+    static double[] breaks(Hull h, double lo, double hi, double[] more) {
         double[] z = h.z();
         double[] in = new double[z.length + more.length];
         int n = 0;

@@ -14,8 +14,8 @@ import gcnc.dmc.Instruction;
 abstract class FlowCommands implements Command.Visitor<Void> {
     final ReplayListener out;
     /** The instruction being run and its G-code line, for the findings about it. */
-    Instruction instruction;
-    int line;
+    private Instruction instruction;
+    private int line;
     private boolean ended;
     /** A label after EN has been met: what follows is a routine, not run in the replay. */
     private boolean routine;
@@ -38,6 +38,11 @@ abstract class FlowCommands implements Command.Visitor<Void> {
 
     final Instruction instruction() {
         return instruction;
+    }
+
+    /** The G-code line of the instruction being run: where the findings about it are. */
+    final int line() {
+        return line;
     }
 
     final String text() {

@@ -1,18 +1,18 @@
 package gcnc.sim;
 
 /**
- * The lower or the upper side of a sweep's hull ({@link Stock.Hull}), its corners z ascending, as
+ * The lower or the upper side of a sweep's hull ({@link Hull}), its corners z ascending, as
  * {@link UpperEnvelope#lower} reads it: on a stretch no corner of it falls inside, where the side is
  * one straight edge.
  */
 record HullSide(double[] z, double[] r) {
-    static HullSide bottom(Stock.Hull h) {
+    static HullSide bottom(Hull h) {
         int k = h.lowerEnd();
         return new HullSide(java.util.Arrays.copyOf(h.z(), k + 1), java.util.Arrays.copyOf(h.r(), k + 1));
     }
 
     /** Corner 0, then from the last corner back to where the lower side ends. */
-    static HullSide top(Stock.Hull h) {
+    static HullSide top(Hull h) {
         double[] z = h.z();
         double[] r = h.r();
         int k = h.lowerEnd();

@@ -51,17 +51,7 @@ final class LowerEnvelope {
 
     /** The index of the piece that holds z (the later one where two meet). */
     private int index(double z) {
-        int lo = 0;
-        int hi = pieces.size() - 1;
-        while (lo < hi) {
-            int mid = (lo + hi + 1) >>> 1;
-            if (pieces.get(mid).z0() <= z) {
-                lo = mid;
-            } else {
-                hi = mid - 1;
-            }
-        }
-        return lo;
+        return Pieces.holding(pieces, z);
     }
 
     /** The piece over the stretch [s, t] (no break of this envelope strictly inside it). */
@@ -98,7 +88,7 @@ final class LowerEnvelope {
      * Whether the hull is in the hole: over every z it shares with the blank its upper side is at
      * or below the bore (within {@link #ON}). A yes is certain: it touches no material.
      */
-    boolean holds(Stock.Hull h) {
+    boolean holds(Hull h) {
         double lo = Math.max(back, h.zMin());
         double hi = Math.min(face, h.zMax());
         if (!(lo <= hi)) {

@@ -20,6 +20,26 @@ final class Pieces {
     private Pieces() {
     }
 
+    /** A stretch of an envelope along z, from {@code z0}: a piece, or a chunk of pieces. */
+    interface Stretch {
+        double z0();
+    }
+
+    /** The index of the stretch that holds z among {@code stretches} (end to end, in order): the later one where two meet. */
+    static int holding(List<? extends Stretch> stretches, double z) {
+        int lo = 0;
+        int hi = stretches.size() - 1;
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (stretches.get(mid).z0() <= z) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        return lo;
+    }
+
     /**
      * What an envelope holds once {@code fresh} (pieces covering [lo, hi] end to end) takes the place
      * of what {@code covered} (consecutive pieces reaching over [lo, hi]) had there: the parts of

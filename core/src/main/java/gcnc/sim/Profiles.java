@@ -29,4 +29,17 @@ final class Profiles {
         }
         return (peak - in) / acc + (peak - out) / dec;
     }
+
+    /** Trapezoidal speed profile from rest to rest; a triangle when the move is too short to reach v. */
+    static double time(double length, double v, double acc, double dec) {
+        if (length <= 0 || v <= 0) {
+            return 0;
+        }
+        double ramps = v * v / (2 * acc) + v * v / (2 * dec);
+        if (length >= ramps) {
+            return length / v + v / (2 * acc) + v / (2 * dec);
+        }
+        double peak = Math.sqrt(2 * length * acc * dec / (acc + dec));
+        return peak / acc + peak / dec;
+    }
 }

@@ -46,7 +46,7 @@ final class ReplayCommands extends FlowCommands {
 
     /** Starts the sequence buffered (if any) at the vector speed, located at the instruction being run. */
     void startSequence() {
-        buffer.start(speed, line);
+        buffer.start(speed, line());
     }
 
     double acceleration() {
@@ -69,7 +69,7 @@ final class ReplayCommands extends FlowCommands {
     private void onTheWay() {
         java.util.List<gcnc.dmc.Source> around = buffer.around();
         if (around != null) {
-            out.onTheWay(instruction.source(), around, buffer.trip(), text(), line);
+            out.onTheWay(instruction().source(), around, buffer.trip(), text(), line());
         }
     }
 
@@ -77,7 +77,7 @@ final class ReplayCommands extends FlowCommands {
     private void spindle(double volts) {
         gearing.spindle(volts);
         onTheWay();
-        out.spindleVolts(volts, line);
+        out.spindleVolts(volts, line());
     }
 
     public Void feedMark(Command.FeedMark c) {
@@ -88,14 +88,14 @@ final class ReplayCommands extends FlowCommands {
     public Void servoHere(Command.ServoHere c) {
         boolean spindle = c.axes().length() == 1 && Plane.channel(c.axes().charAt(0)) == spindleChannel;
         if (!afterEnd() && !spindle && !plane.sameChannels(c.axes())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, line, "SH", c.axes(), plane.letters);
+            out.report(Code.E313_SIM_VECTOR_PLANE, line(), "SH", c.axes(), plane.letters);
         }
         return null;
     }
 
     public Void vectorMode(Command.VectorMode c) {
         if (!afterEnd() && !plane.sameChannels(c.axes())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, line, "VM", c.axes(), plane.letters);
+            out.report(Code.E313_SIM_VECTOR_PLANE, line(), "VM", c.axes(), plane.letters);
         }
         return null;
     }
@@ -123,7 +123,7 @@ final class ReplayCommands extends FlowCommands {
 
     public Void vectorPosition(Command.VectorPosition c) {
         if (!afterEnd()) {
-            buffer.vp(c, instruction);
+            buffer.vp(c, instruction());
         }
         return null;
     }
@@ -131,9 +131,9 @@ final class ReplayCommands extends FlowCommands {
     public Void circularArc(Command.CircularArc c) {
         if (!afterEnd()) {
             if (c.sweep().value() == 0 && !checkedByCaller) {
-                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, text());
+                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line(), text());
             }
-            buffer.cr(c, instruction);
+            buffer.cr(c, instruction());
         }
         return null;
     }
@@ -155,7 +155,7 @@ final class ReplayCommands extends FlowCommands {
             // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
             // room that gcnc writes right after such a BGS (JS #LMWAIT) says it is one
             if (buffer.begin()) {
-                buffer.start(speed, line);
+                buffer.start(speed, line());
             }
         }
         return null;
@@ -164,7 +164,7 @@ final class ReplayCommands extends FlowCommands {
     public Void awaitSequence(Command.AwaitSequence c) {
         startBegun.run(); // (a hand-written BGS without VE: replayed as it stands)
         if (!afterEnd() && c.why() != null) {
-            out.stopped(c.why(), line);
+            out.stopped(c.why(), line());
         }
         buffer.atRest(); // what follows is at rest
         return null;
@@ -173,7 +173,7 @@ final class ReplayCommands extends FlowCommands {
     public Void afterVector(Command.AfterVector c) {
         // the sequence has been replayed whole at BGS: what follows acts on the state after it
         if (!afterEnd()) {
-            buffer.afterVector(c, line);
+            buffer.afterVector(c, line());
         }
         return null;
     }
@@ -187,21 +187,21 @@ final class ReplayCommands extends FlowCommands {
 
     public Void await(Command.Wait c) {
         if (!afterEnd()) {
-            out.dwell(c.milliseconds() / 1000.0, line);
+            out.dwell(c.milliseconds() / 1000.0, line());
         }
         return null;
     }
 
     public Void toolNumber(Command.ToolNumber c) {
         if (!afterEnd()) {
-            out.tool(c.station(), line);
+            out.tool(c.station(), line());
         }
         return null;
     }
 
     public Void revolver(Command.Revolver c) {
         if (!afterEnd()) {
-            out.tool(c.station(), line);
+            out.tool(c.station(), line());
         }
         return null;
     }
@@ -209,63 +209,63 @@ final class ReplayCommands extends FlowCommands {
     public Void output(Command.Output c) {
         if (!afterEnd()) {
             onTheWay();
-            out.output(c.bit(), c.on(), line);
+            out.output(c.bit(), c.on(), line());
         }
         return null;
     }
 
     public Void gearMaster(Command.GearMaster c) {
         if (!afterEnd()) {
-            gearing.master(c, instruction);
+            gearing.master(c, instruction());
         }
         return null;
     }
 
     public Void syncPoint(Command.SyncPoint c) {
         if (!afterEnd()) {
-            gearing.syncPoint(c, instruction);
+            gearing.syncPoint(c, instruction());
         }
         return null;
     }
 
     public Void waitPast(Command.WaitPast c) {
         if (!afterEnd()) {
-            gearing.waitPast(c, instruction);
+            gearing.waitPast(c, instruction());
         }
         return null;
     }
 
     public Void gearRatio(Command.GearRatio c) {
         if (!afterEnd()) {
-            gearing.ratio(c, instruction, buffer.galil1(), buffer.galil2());
+            gearing.ratio(c, instruction(), buffer.galil1(), buffer.galil2());
         }
         return null;
     }
 
     public Void positionAbsolute(Command.PositionAbsolute c) {
         if (!afterEnd()) {
-            gearing.settle(c, instruction);
+            gearing.settle(c, instruction());
         }
         return null;
     }
 
     public Void phaseError(Command.PhaseError c) {
         if (!afterEnd()) {
-            gearing.phaseError(c, instruction);
+            gearing.phaseError(c, instruction());
         }
         return null;
     }
 
     public Void incrementPosition(Command.IncrementPosition c) {
         if (!afterEnd()) {
-            gearing.phaseCorrection(c, instruction);
+            gearing.phaseCorrection(c, instruction());
         }
         return null;
     }
 
     public Void definePosition(Command.DefinePosition c) {
         if (!afterEnd()) {
-            gearing.definePosition(c, instruction);
+            gearing.definePosition(c, instruction());
         }
         return null;
     }
@@ -275,17 +275,17 @@ final class ReplayCommands extends FlowCommands {
             return null;
         }
         if (plane.sameChannels(c.axes()) && gearing.settling()) {
-            ThreadGearing.Pass pass = gearing.pass(line);
-            buffer.run(pass.segments(), pass.speed(), pass.end1(), pass.end2(), line);
+            ThreadGearing.GearedPass pass = gearing.pass(line());
+            buffer.run(pass.segments(), pass.speed(), pass.end1(), pass.end2(), line());
         } else {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "BG", text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line(), "BG", text());
         }
         return null;
     }
 
     public Void afterMotion(Command.AfterMotion c) {
         if (!afterEnd() && !plane.sameChannels(c.axes())) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "AM", text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line(), "AM", text());
         }
         return null;
     }
@@ -309,19 +309,19 @@ final class ReplayCommands extends FlowCommands {
         }
         if (c.setting() == Command.Setting.IT) {
             if (c.value().value() != 1) {
-                out.report(Code.E336_SIM_SMOOTHING, line, text());
+                out.report(Code.E336_SIM_SMOOTHING, line(), text());
             }
             return null;
         }
         if (c.channel() != spindleChannel) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, c.setting().name(), text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, line(), c.setting().name(), text());
         }
         return null;
     }
 
     public Void softLimit(Command.SoftLimit c) {
         if (!afterEnd() && !plane.sameChannels("" + c.first() + c.second())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, line, c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
+            out.report(Code.E313_SIM_VECTOR_PLANE, line(), c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
                     plane.letters);
         }
         return null;
@@ -333,7 +333,7 @@ final class ReplayCommands extends FlowCommands {
             buffer.feed();
         }
         if (!afterEnd() && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
-            out.programStop(line);
+            out.programStop(line());
         }
         return null;
     }

@@ -29,9 +29,10 @@ final class ReplayController {
     private boolean deferring;
 
     /**
-     * @param x, z          where the axes start, machine counts
-     * @param spindleAnalog the analog output that drives the spindle ({@code spindle.output = AO n}),
-     *                      or -1 when the spindle is the OF of its channel
+     * The axes start at ({@code x}, {@code z}), machine counts, at vector acceleration {@code acc},
+     * deceleration {@code dec} and speed {@code speed}; {@code spindleAnalog} is the analog output
+     * that drives the spindle ({@code spindle.output = AO n}), or -1 when the spindle is the OF of
+     * its channel.
      */
     ReplayController(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
                      int spindleAnalog, ThreadGearing gearing, ReplayListener out) {

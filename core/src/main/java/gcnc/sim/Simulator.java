@@ -5,10 +5,8 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.dmc.Instruction;
-import gcnc.ir.ArcGeometry;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
-import gcnc.ir.Point;
 import gcnc.machine.MachineProfile;
 import java.util.ArrayList;
 import java.util.List;
@@ -31,16 +29,8 @@ public final class Simulator {
     private final java.util.Set<Integer> undescribed = new java.util.HashSet<>();
     private final Trace trace;
     private final Corners corners;
-    /**
-     * The motions the checker meant that the DMC has not carried out yet, in program order; null
-     * for a bare replay (nothing to compare with). The planner holds at most a sequence's worth of
-     * motions back, so this holds at most that many and one block's.
-     */
-    private java.util.ArrayDeque<Expected> expected;
-
-    /** A motion the checker meant: its block, its index there, the motion; {@code done} counts the block's carried out. */
-    private record Expected(CheckedBlock block, int index, Motion motion, int[] done, int count) {
-    }
+    /** The motions the checker meant that the DMC has not carried out yet; null for a bare replay (nothing to compare with). */
+    private ExpectedMotions expected;
     private int findings;
     private int lastLine = 1;
     /** Where the block being replayed was run from (a called program's file and calls): its findings go there. */
@@ -119,19 +109,9 @@ public final class Simulator {
      */
     public void block(CheckedBlock intended, List<Instruction> emitted, boolean settled) {
         if (expected == null) {
-            expected = new java.util.ArrayDeque<>();
+            expected = new ExpectedMotions(options.tolerance(), this::missed);
         }
-        int count = 0;
-        for (Motion m : intended.motions()) {
-            count += m instanceof Motion.Dwell ? 0 : 1;
-        }
-        int[] done = {0};
-        List<Motion> ms = intended.motions();
-        for (int i = 0; i < ms.size(); i++) {
-            if (!(ms.get(i) instanceof Motion.Dwell)) {
-                expected.add(new Expected(intended, i, ms.get(i), done, count));
-            }
-        }
+        expected.add(intended);
         dmc.checkedByCaller(true);
         run(emitted);
         dmc.checkedByCaller(false);
@@ -140,8 +120,8 @@ public final class Simulator {
             // VE comes with a later block)
             closeSequences(intended.line());
         }
-        while (settled && !expected.isEmpty()) {
-            skip(expected.poll());
+        if (settled) {
+            expected.skipAll();
         }
     }
 
@@ -157,9 +137,7 @@ public final class Simulator {
         run(footer);
         closeSequences(lastLine);
         if (expected != null) {
-            while (!expected.isEmpty()) {
-                skip(expected.poll());
-            }
+            expected.skipAll();
         }
     }
 
@@ -202,118 +180,18 @@ public final class Simulator {
         }
     }
 
-    /**
-     * The motion the segments from {@code source} carry out: the next one meant, after the motions
-     * that do not move (G28 U0 W0's intermediate point, an arc shorter than a count), which the
-     * backend may leave out. A motion that moves and was left out is E311 at its block.
-     */
-    private Expected match(gcnc.dmc.Source source, Segment first, Segment last) {
-        while (!expected.isEmpty()) {
-            Expected e = expected.peek();
-            // the motion the run names (a hand-made DMC line names none, -1: its block's next one); a
-            // motion that does not move is the run only when the run does not move either, since the
-            // backend may have left it out and the next block's motion can have the same line and index
-            // (asked in this order: the line first, the geometry only for a motion on that line)
-            if (source != null && e.block().line() == source.line()
-                    && (source.motion() < 0 || e.index() == source.motion())
-                    && (!standing(e.motion()) || sameDisplacement(first, last, e.motion()))
-                    && java.util.Objects.equals(e.block().origin().file(), source.file())) {
-                expected.poll();
-                e.done()[0]++;
-                return e;
-            }
-            skip(expected.poll());
-        }
-        return null;
-    }
-
-    /** A motion meant and not carried out: nothing when it does not move, else E311 at its block (once). */
-    private void skip(Expected e) {
-        if (standing(e.motion())) {
-            e.done()[0]++;
-        } else if (e.done()[0] >= 0) {
-            origin = e.block().origin();
-            report(Code.E311_SIM_SEQUENCE_COUNT, e.block().line(), e.count(), e.done()[0]);
-            e.done()[0] = -1; // reported: once per block
-        }
-    }
-
-    /**
-     * Ends within the tolerance; for an arc also no more than half a turn (so it bulges no more)
-     * or a diameter within the tolerance (a circle that small).
-     */
-    private boolean standing(Motion m) {
-        return m.accept(endsStanding); // one visitor for the simulator: asked for every motion matched, it makes no object
-    }
-
-    private final Motion.Visitor<Boolean> endsStanding = new Motion.Visitor<>() {
-        @Override
-        public Boolean linear(Motion.Linear l) {
-            return distance(l.from(), l.to()) <= options.tolerance();
-        }
-
-        @Override
-        public Boolean thread(Motion.Thread t) {
-            return distance(t.from(), t.to()) <= options.tolerance();
-        }
-
-        @Override
-        public Boolean arc(Motion.Arc a) {
-            double tol = options.tolerance();
-            return distance(a.from(), a.to()) <= tol
-                    && (Math.abs(ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(), a.clockwise())) <= 180
-                            || Conformance.pointLike(a, tol));
-        }
-
-        @Override
-        public Boolean dwell(Motion.Dwell d) {
-            return true;
-        }
-    };
-
-    /** Where a motion that moves starts ({@code end} false) or ends. */
-    private static Point end(Motion m, boolean end) {
-        return m.accept(new Motion.Visitor<Point>() {
-            @Override
-            public Point linear(Motion.Linear l) {
-                return end ? l.to() : l.from();
-            }
-
-            @Override
-            public Point arc(Motion.Arc a) {
-                return end ? a.to() : a.from();
-            }
-
-            @Override
-            public Point thread(Motion.Thread t) {
-                return end ? t.to() : t.from();
-            }
-
-            @Override
-            public Point dwell(Motion.Dwell d) {
-                throw new IllegalArgumentException("a dwell does not move");
-            }
-        });
-    }
-
-    /** Whether the segments from {@code first} to {@code last} move as the motion moves, within the tolerance. */
-    private boolean sameDisplacement(Segment first, Segment last, Motion m) {
-        Point from = end(m, false);
-        Point to = end(m, true);
-        return Geometry.length(last.toX() - first.fromX() - (to.x() - from.x()),
-                last.toZ() - first.fromZ() - (to.z() - from.z())) <= options.tolerance();
-    }
-
-    private static double distance(Point a, Point b) {
-        return Geometry.length(b.x() - a.x(), b.z() - a.z());
-    }
-
     private void closeSequences(int line) {
         dmc.startBegun(); // a BGS whose VE never came (a hand-written program): it runs as it stands
         if (dmc.hasPending()) {
             report(Code.E314_SIM_SEQUENCE_NOT_STARTED, line);
             dmc.dropPending();
         }
+    }
+
+    /** A motion meant that moves and was not carried out: E311 at its block. */
+    private void missed(CheckedBlock block, int count, int done) {
+        origin = block.origin();
+        report(Code.E311_SIM_SEQUENCE_COUNT, block.line(), count, done);
     }
 
     /** A DMC line that could not be read (a replay of a file by itself), reported where it came from. */
@@ -342,7 +220,7 @@ public final class Simulator {
                     while (j < segments.size() && java.util.Objects.equals(segments.get(j).source(), from)) {
                         j++;
                     }
-                    Expected e = match(from, segments.get(i), segments.get(j - 1));
+                    ExpectedMotions.Expected e = expected.match(from, segments.get(i), segments.get(j - 1));
                     if (e == null) {
                         report(Code.E311_SIM_SEQUENCE_COUNT, line, 0, 1); // a sequence no motion of the program asked for
                     } else {
@@ -389,7 +267,7 @@ public final class Simulator {
                 report(Code.E307_SIM_FEED_CHUCK_OPEN, line, outputs.describe());
             }
             for (int k = 0; k < meant.size(); k++) {
-                Expected e = meant.get(k);
+                ExpectedMotions.Expected e = meant.get(k);
                 origin = e.block().origin();
                 checks.frame(e.block().frame());
                 List<Segment> run = meant.size() == 1 && runFrom[0] == 0 && runTo[0] == segments.size() ? segments
@@ -402,7 +280,7 @@ public final class Simulator {
         }
 
         /** The motions the last sequence carried out, in order, and the segments of each: runFrom[k] to runTo[k]. */
-        private final List<Expected> meant = new ArrayList<>();
+        private final List<ExpectedMotions.Expected> meant = new ArrayList<>();
         private int[] runFrom = new int[8];
         private int[] runTo = new int[8];
         /**

@@ -23,7 +23,7 @@ final class ThreadGearing {
     static final double SAMPLE = 0.001;
 
     /** A geared pass and its settling move: the segments, their speed, and where they leave the plane axes (Galil counts). */
-    record Pass(List<Segment> segments, double speed, double end1, double end2) {
+    record GearedPass(List<Segment> segments, double speed, double end1, double end2) {
     }
 
     private final Plane plane;
@@ -325,7 +325,7 @@ final class ThreadGearing {
      * the PA target, at the speed the spindle gives it; E317 when the gearing ended further than the
      * tolerance from that target (the ratios make the wrong lead or taper). The gearing is then done.
      */
-    Pass pass(int line) {
+    GearedPass pass(int line) {
         double off = Math.hypot(geared1 - target1, geared2 - target2);
         if (off > threadTolerance) {
             double zOff = Math.abs(plane.machineZ(geared1, geared2) - plane.machineZ(target1, target2));
@@ -352,7 +352,7 @@ final class ThreadGearing {
             speed = seconds > 0 && length / seconds > 1 ? length / seconds : 1;
             geared.clear();
         }
-        Pass pass = new Pass(one, speed, target1, target2);
+        GearedPass pass = new GearedPass(one, speed, target1, target2);
         target1 = Double.NaN;
         target2 = Double.NaN;
         geared1 = Double.NaN;

@@ -22,7 +22,7 @@ import java.util.List;
  */
 final class UpperEnvelope {
     /** One straight stretch from (z0, a) to (z1, b), z0 < z1, mm. */
-    record Piece(double z0, double z1, double a, double b) {
+    record Piece(double z0, double z1, double a, double b) implements Pieces.Stretch {
         double at(double z) {
             if (z <= z0) {
                 return a;
@@ -44,7 +44,7 @@ final class UpperEnvelope {
     }
 
     /** Pieces in order, and the largest radius among them. */
-    private static final class Chunk {
+    private static final class Chunk implements Pieces.Stretch {
         final List<Piece> pieces;
         final double max;
 
@@ -57,7 +57,8 @@ final class UpperEnvelope {
             this.max = m;
         }
 
-        double z0() {
+        @Override
+        public double z0() {
             return pieces.get(0).z0();
         }
 
@@ -123,17 +124,7 @@ final class UpperEnvelope {
 
     /** The chunk that holds z (the later one where two meet). */
     private int chunkAt(double z) {
-        int lo = 0;
-        int hi = chunks.size() - 1;
-        while (lo < hi) {
-            int mid = (lo + hi + 1) >>> 1;
-            if (chunks.get(mid).z0() <= z) {
-                lo = mid;
-            } else {
-                hi = mid - 1;
-            }
-        }
-        return lo;
+        return Pieces.holding(chunks, z);
     }
 
     /** The first chunk with a piece over z: where two chunks meet, the earlier (at a face both sides' radii hold). */
@@ -147,7 +138,7 @@ final class UpperEnvelope {
      * (its lower edge is what counts), or with a null hull everything at or above {@code floor}.
      * The envelope is never below the material, so a no is certain.
      */
-    boolean dips(double zLo, double zHi, Stock.Hull region, double floor) {
+    boolean dips(double zLo, double zHi, Hull region, double floor) {
         if (zHi < back || zLo > face || zHi < zLo) {
             return false;
         }
@@ -176,7 +167,7 @@ final class UpperEnvelope {
         return false;
     }
 
-    private static double lowest(Stock.Hull region, double floor, double a, double b) {
+    private static double lowest(Hull region, double floor, double a, double b) {
         return region == null ? floor : region.lowest(a, b);
     }
 
@@ -184,7 +175,7 @@ final class UpperEnvelope {
      * Whether the region comes below one piece over [s, t]: the lower edge is convex and the piece
      * straight, so their difference is least at an end or at one of the edge's corners.
      */
-    private static boolean below(Stock.Hull region, double floor, Piece piece, double s, double t) {
+    private static boolean below(Hull region, double floor, Piece piece, double s, double t) {
         double us = piece.at(s);
         double ut = piece.at(t);
         if (region == null) {
@@ -213,7 +204,7 @@ final class UpperEnvelope {
      * the sweep cuts from inside, and the top run's floor where it passes under the envelope.
      * Returns whether this envelope changed.
      */
-    boolean lower(Stock.Hull h) {
+    boolean lower(Hull h) {
         double lo = Math.max(back, h.zMin());
         double hi = Math.min(face, h.zMax());
         if (!(lo < hi)) {
@@ -276,7 +267,7 @@ final class UpperEnvelope {
     }
 
     /** Whether the hull is in the bore, touching no material ({@link LowerEnvelope#holds}). */
-    boolean inBore(Stock.Hull h) {
+    boolean inBore(Hull h) {
         return bore.holds(h);
     }
 
