@@ -150,13 +150,7 @@ final class CompileCommand extends RunCommand {
     /** The simulation to run (none for --no-simulate and the thesis dialect), said on standard error. */
     private Optional<SimOptions> simulation(MachineProfile profile, PrintWriter err, Phrases phrases) {
         boolean simulate = !noSimulate && dialect.simulatedByDefault();
-        Optional<SimOptions> sim;
-        try {
-            sim = simulate ? Optional.of(stock.options(profile, SourceFiles.isStdin(file) ? null : file, phrases)) : Optional.empty();
-        } catch (StockOptions.BadStock e) {
-            throw new ParameterException(spec.commandLine(), e.getMessage());
-        }
-        stock.unitsNote().ifPresent(err::println);
+        Optional<SimOptions> sim = simulate ? Optional.of(stock.options(profile, file, phrases, spec, err::println)) : Optional.empty();
         if (noSimulate) {
             err.println(phrases.get("compile.no_simulate"));
         } else if (!simulate) {

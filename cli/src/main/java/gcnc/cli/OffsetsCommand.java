@@ -99,13 +99,7 @@ final class OffsetsCommand extends StreamsCommand {
                 }
                 ms.add(m.get());
             }
-            SimOptions sim;
-            try {
-                sim = stock.options(setup.profile(), file, reporter.phrases());
-                stock.unitsNote().ifPresent(reporter::say);
-            } catch (StockOptions.BadStock e) {
-                throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-            }
+            SimOptions sim = stock.options(setup.profile(), file, reporter.phrases(), spec, reporter::say);
             TestCut.Saved saved;
             try {
                 saved = TestCut.cut(setup.session(), file, sim, n.getAsInt(), ms, reporter.messages());

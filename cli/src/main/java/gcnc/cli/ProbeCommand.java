@@ -41,25 +41,14 @@ final class ProbeCommand extends StreamsCommand {
     @Mixin
     CommonOptions common;
 
-    static final class Target {
-        @Option(names = "--port", paramLabel = "DEV", required = true, description = "Serial device of the controller.")
-        String port;
-
-        @Option(names = "--tcp", paramLabel = "HOST[:PORT]", required = true, description = "Ethernet: the controller's address (port 23 unless given).")
-        String tcp;
-    }
-
     @ArgGroup(exclusive = true, multiplicity = "1")
-    Target target;
+    ControllerTarget.Where target;
+
+    @Mixin
+    ControllerTarget serial;
 
     @Option(names = "--report", paramLabel = "FILE", required = true, description = "Where to write the report (JSON).")
     Path report;
-
-    @Option(names = "--baud", paramLabel = "N", defaultValue = "115200", description = "Serial speed (default: ${DEFAULT-VALUE}).")
-    int baud;
-
-    @Option(names = "--handshake", paramLabel = "hardware|none", defaultValue = "hardware", description = "Serial flow control.")
-    String handshake;
 
     @Option(names = "--timeout", paramLabel = "MS", defaultValue = "2000", description = "How long to wait for each reply.")
     int timeoutMs;
@@ -110,7 +99,7 @@ final class ProbeCommand extends StreamsCommand {
         }
         gcnc.send.Link link;
         try {
-            link = target.port != null ? SerialLink.open(target.port, baud, !handshake.equals("none"))
+            link = target.port != null ? serial.open(target.port)
                     : TcpLink.open(target.tcp, timeoutMs);
         } catch (RunFault f) {
             return fault(err, messages, f.code(), f.args().toArray());

@@ -72,23 +72,11 @@ final class SendCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "The G-code program.")
     Path file;
 
-    static final class Target {
-        @Option(names = "--port", paramLabel = "DEV", required = true, description = "Serial device of the controller (/dev/ttyUSB0).")
-        String port;
-
-        @Option(names = "--tcp", paramLabel = "HOST[:PORT]", required = true, description = "Ethernet: the controller's address (port 23 unless given).")
-        String tcp;
-    }
-
     @ArgGroup(exclusive = true, multiplicity = "1")
-    Target target;
+    ControllerTarget.Where target;
 
-    @Option(names = "--baud", paramLabel = "N", defaultValue = "115200", description = "Serial speed (default: ${DEFAULT-VALUE}).")
-    int baud;
-
-    @Option(names = "--handshake", paramLabel = "hardware|none", defaultValue = "hardware",
-            description = "Serial flow control (default: ${DEFAULT-VALUE}, as Galil's own library).")
-    String handshake;
+    @Mixin
+    ControllerTarget serial;
 
     @Option(names = "--step", description = "One G-code block at a time: each runs on Enter (the thesis's Trace).")
     boolean step;
@@ -174,13 +162,7 @@ final class SendCommand implements Callable<Integer> {
         String name = SourceFiles.display(file);
         Messages messages = setup.tables().messages().in(common.language());
         EventSink events = json ? new JsonEvents(out) : new StatusText(out, err, name, quiet, System.console() != null, reporter.phrases());
-        Optional<SimOptions> sim;
-        try {
-            sim = Optional.of(stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, reporter.phrases()));
-        } catch (StockOptions.BadStock e) {
-            throw new ParameterException(spec.commandLine(), e.getMessage());
-        }
-        stock.unitsNote().ifPresent(err::println);
+        Optional<SimOptions> sim = Optional.of(stock.options(setup.profile(), file, reporter.phrases(), spec, err::println));
         // 0. a bus card (ISA, PCI) answers on the computer's bus only: refused before anything is compiled
         // or opened (the profile still compiles for it with gcnc compile)
         gcnc.machine.GalilModel busModel = setup.profile().galilModel();
@@ -244,7 +226,7 @@ final class SendCommand implements Callable<Integer> {
         // 4. the link
         Link link;
         try {
-            link = target.port != null ? SerialLink.open(target.port, baud, !handshake.equals("none"))
+            link = target.port != null ? serial.open(target.port)
                     : openTcp(target.tcp);
         } catch (RunFault f) {
             events.accept(new Event.Finding(f.code().id(), "error", 0, messages.render(f.code(), f.args())));

@@ -53,14 +53,7 @@ final class SheetCommand extends RunCommand {
 
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
-        SimOptions options;
-        try {
-            options = stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, setup.reporter().phrases())
-                    .withPath();
-        } catch (StockOptions.BadStock e) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-        }
-        stock.unitsNote().ifPresent(err::println);
+        SimOptions options = stock.options(setup.profile(), file, setup.reporter().phrases(), spec, err::println).withPath();
         Reporter reporter = setup.reporter();
         if (SourceFiles.isStdin(file)) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "sheet reads a program file, not standard input");

@@ -54,13 +54,7 @@ final class SimulateCommand extends RunCommand {
 
     @Override
     int run(CommonOptions.Setup setup, PrintWriter out, PrintWriter err) throws TableException {
-        SimOptions options;
-        try {
-            options = stock.options(setup.profile(), SourceFiles.isStdin(file) ? null : file, setup.reporter().phrases());
-        } catch (StockOptions.BadStock e) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-        }
-        stock.unitsNote().ifPresent(err::println);
+        SimOptions options = stock.options(setup.profile(), file, setup.reporter().phrases(), spec, err::println);
         Reporter reporter = setup.reporter();
         boolean svgToStdout = svg != null && SourceFiles.isStdin(svg);
         if (svgToStdout && reporter.format() != Reporter.Format.GNU) {

@@ -10,18 +10,12 @@ import java.nio.file.attribute.BasicFileAttributes;
  * The jar a server runs, as it was when the server started: its real path, size and modification
  * time. A client whose launcher runs another jar, or this one replaced since (a new build, a new
  * install), runs cold: the server's classes would not be the jar's.
+ *
+ * @param path     the jar's real path
+ * @param size     its size in bytes
+ * @param modified its modification time, in milliseconds
  */
-final class JarIdentity {
-    private final String path;
-    private final long size;
-    private final long modified;
-
-    private JarIdentity(String path, long size, long modified) {
-        this.path = path;
-        this.size = size;
-        this.modified = modified;
-    }
-
+record JarIdentity(String path, long size, long modified) {
     static JarIdentity ofRunningJar() throws IOException {
         try {
             Path p = Path.of(DaemonServer.class.getProtectionDomain().getCodeSource().getLocation().toURI());
@@ -35,10 +29,6 @@ final class JarIdentity {
         Path real = jar.toRealPath();
         BasicFileAttributes a = Files.readAttributes(real, BasicFileAttributes.class);
         return new JarIdentity(real.toString(), a.size(), a.lastModifiedTime().toMillis());
-    }
-
-    String path() {
-        return path;
     }
 
     /** The jar at the path is no longer the one loaded (replaced, rebuilt or gone). */

@@ -54,8 +54,9 @@ public final class LspServer implements LanguageServer, LanguageClientAware {
     private final Log log;
     private final String version;
     private ExplainFiles explain;
-    private Checks checks;
-    private Texts texts;
+    /** Replaced by initialize (the client's language); {@link #texts} reads the one in force. */
+    private volatile Checks checks;
+    private final Texts texts;
     private volatile LanguageClient client;
     private volatile boolean showDocument;
     private volatile boolean watchedFiles;
@@ -75,7 +76,7 @@ public final class LspServer implements LanguageServer, LanguageClientAware {
         this.log = log;
         this.explain = explainFiles.make(lang, Optional.empty(), log);
         this.checks = new Checks(docs, config, explain, lang, log);
-        this.texts = new Texts(docs, checks, config);
+        this.texts = new Texts(docs, () -> checks, config);
         config.client(base);
     }
 
@@ -115,7 +116,6 @@ public final class LspServer implements LanguageServer, LanguageClientAware {
             checks.stop();
             checks = new Checks(docs, config, explain, lang, log);
             checks.connect(client);
-            texts = new Texts(docs, checks, config);
             settings(options);
         }
         var caps = params.getCapabilities();
@@ -196,55 +196,7 @@ public final class LspServer implements LanguageServer, LanguageClientAware {
 
     @Override
     public TextDocumentService getTextDocumentService() {
-        return new TextDocumentService() { // delegates, so that initialize may replace the service (its language)
-            @Override
-            public void didOpen(org.eclipse.lsp4j.DidOpenTextDocumentParams p) {
-                texts.didOpen(p);
-            }
-
-            @Override
-            public void didChange(org.eclipse.lsp4j.DidChangeTextDocumentParams p) {
-                texts.didChange(p);
-            }
-
-            @Override
-            public void didClose(org.eclipse.lsp4j.DidCloseTextDocumentParams p) {
-                texts.didClose(p);
-            }
-
-            @Override
-            public void didSave(org.eclipse.lsp4j.DidSaveTextDocumentParams p) {
-                texts.didSave(p);
-            }
-
-            @Override
-            public CompletableFuture<org.eclipse.lsp4j.Hover> hover(org.eclipse.lsp4j.HoverParams p) {
-                return texts.hover(p);
-            }
-
-            @Override
-            public CompletableFuture<Either<List<? extends org.eclipse.lsp4j.Location>, List<? extends org.eclipse.lsp4j.LocationLink>>>
-                    definition(org.eclipse.lsp4j.DefinitionParams p) {
-                return texts.definition(p);
-            }
-
-            @Override
-            public CompletableFuture<List<? extends org.eclipse.lsp4j.Location>> references(org.eclipse.lsp4j.ReferenceParams p) {
-                return texts.references(p);
-            }
-
-            @Override
-            public CompletableFuture<List<Either<org.eclipse.lsp4j.SymbolInformation, org.eclipse.lsp4j.DocumentSymbol>>>
-                    documentSymbol(org.eclipse.lsp4j.DocumentSymbolParams p) {
-                return texts.documentSymbol(p);
-            }
-
-            @Override
-            public CompletableFuture<List<Either<org.eclipse.lsp4j.Command, org.eclipse.lsp4j.CodeAction>>>
-                    codeAction(org.eclipse.lsp4j.CodeActionParams p) {
-                return texts.codeAction(p);
-            }
-        };
+        return texts; // one for the server's life: it reads the checks initialize put in force
     }
 
     @Override

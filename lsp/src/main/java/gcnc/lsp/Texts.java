@@ -25,6 +25,7 @@ import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.LocationLink;
 import org.eclipse.lsp4j.MarkupContent;
 import org.eclipse.lsp4j.MarkupKind;
+import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.ReferenceParams;
 import org.eclipse.lsp4j.SymbolInformation;
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
@@ -38,13 +39,14 @@ import org.eclipse.lsp4j.services.TextDocumentService;
  */
 final class Texts implements TextDocumentService {
     private final Map<String, Doc> docs;
-    private final Checks checks;
+    /** The checks in force (initialize replaces them with the client's language). */
+    private final java.util.function.Supplier<Checks> checks;
     private final Config config;
     /** The modal states of the last buffer hovered before its check was done, kept while its text is the same. */
     private Doc statesOf;
     private Map<Integer, ModalStates.Snapshot> states = Map.of();
 
-    Texts(Map<String, Doc> docs, Checks checks, Config config) {
+    Texts(Map<String, Doc> docs, java.util.function.Supplier<Checks> checks, Config config) {
         this.docs = docs;
         this.checks = checks;
         this.config = config;
@@ -54,7 +56,7 @@ final class Texts implements TextDocumentService {
     public void didOpen(DidOpenTextDocumentParams params) {
         var t = params.getTextDocument();
         docs.put(t.getUri(), Doc.of(t.getUri(), t.getText() == null ? "" : t.getText(), t.getVersion()));
-        checks.changed(t.getUri());
+        checks.get().changed(t.getUri());
     }
 
     @Override
@@ -69,14 +71,14 @@ final class Texts implements TextDocumentService {
         TextDocumentContentChangeEvent last = changes.get(changes.size() - 1);
         Integer version = params.getTextDocument().getVersion();
         docs.put(uri, d.edited(last.getText() == null ? "" : last.getText(), version == null ? d.version() : version));
-        checks.changed(uri);
+        checks.get().changed(uri);
     }
 
     @Override
     public void didClose(DidCloseTextDocumentParams params) {
         String uri = params.getTextDocument().getUri();
         docs.remove(uri);
-        checks.closed(uri);
+        checks.get().closed(uri);
     }
 
     @Override
@@ -84,7 +86,7 @@ final class Texts implements TextDocumentService {
         // the buffer's text is already what was checked; a called file saved changes what its callers find
         for (String uri : docs.keySet()) {
             if (!uri.equals(params.getTextDocument().getUri())) {
-                checks.changed(uri);
+                checks.get().changed(uri);
             }
         }
     }
@@ -121,7 +123,7 @@ final class Texts implements TextDocumentService {
             Answering at = a.get();
             StringBuilder md = new StringBuilder();
             Optional<Word> w = at.outline().wordAt(line, column);
-            w.flatMap(word -> Hovers.function(at.session().profile(), word.letter().name() + word.number(), checks.lang()))
+            w.flatMap(word -> Hovers.function(at.session().profile(), word.letter().name() + word.number(), checks.get().lang()))
                     .ifPresent(text -> md.append(text).append("\n\n"));
             ModalStates.Snapshot s = states(at).get(line);
             if (s != null) {
@@ -140,7 +142,7 @@ final class Texts implements TextDocumentService {
 
     /** The states the buffer's check saw; a hover that comes before that check checks the text itself. */
     private synchronized Map<Integer, ModalStates.Snapshot> states(Answering a) throws IOException {
-        Optional<Map<Integer, ModalStates.Snapshot>> checked = checks.states(a.doc());
+        Optional<Map<Integer, ModalStates.Snapshot>> checked = checks.get().states(a.doc());
         if (checked.isPresent()) {
             return checked.get();
         }
@@ -153,43 +155,36 @@ final class Texts implements TextDocumentService {
 
     @Override
     public CompletableFuture<Either<List<? extends Location>, List<? extends LocationLink>>> definition(DefinitionParams params) {
-        return CompletableFuture.supplyAsync(() -> {
-            try {
-                return Either.forLeft(answering(params.getTextDocument().getUri())
-                        .map(a -> Navigation.definition(a.outline(), a.doc(), params.getPosition().getLine() + 1,
-                                params.getPosition().getCharacter() + 1))
-                        .orElse(List.of()));
-            } catch (IOException e) {
-                return Either.forLeft(List.of());
-            }
-        });
+        Position at = params.getPosition();
+        return answer(params.getTextDocument().getUri(), Either.forLeft(List.of()),
+                a -> Either.forLeft(Navigation.definition(a.outline(), a.doc(), at.getLine() + 1, at.getCharacter() + 1)));
     }
 
     @Override
     public CompletableFuture<List<? extends Location>> references(ReferenceParams params) {
-        return CompletableFuture.supplyAsync(() -> {
-            try {
-                boolean declaration = params.getContext() == null || params.getContext().isIncludeDeclaration();
-                return answering(params.getTextDocument().getUri())
-                        .map(a -> Navigation.references(a.outline(), a.doc(), params.getPosition().getLine() + 1,
-                                params.getPosition().getCharacter() + 1, declaration))
-                        .orElse(List.of());
-            } catch (IOException e) {
-                return List.of();
-            }
-        });
+        boolean declaration = params.getContext() == null || params.getContext().isIncludeDeclaration();
+        Position at = params.getPosition();
+        return answer(params.getTextDocument().getUri(), List.of(),
+                a -> Navigation.references(a.outline(), a.doc(), at.getLine() + 1, at.getCharacter() + 1, declaration));
     }
 
     @Override
     public CompletableFuture<List<Either<SymbolInformation, DocumentSymbol>>> documentSymbol(DocumentSymbolParams params) {
+        return answer(params.getTextDocument().getUri(), List.of(),
+                a -> Navigation.symbols(a.outline(), new Findings.Lines(a.doc().text()), checks.get().lang()).stream()
+                        .map(Either::<SymbolInformation, DocumentSymbol>forRight).toList());
+    }
+
+    /**
+     * An answer about a buffer, made on a pool thread from its {@link Answering}; {@code none} when the
+     * buffer is not open, its profile is broken, or a file could not be read.
+     */
+    private <T> CompletableFuture<T> answer(String uri, T none, java.util.function.Function<Answering, T> make) {
         return CompletableFuture.supplyAsync(() -> {
             try {
-                return answering(params.getTextDocument().getUri())
-                        .map(a -> Navigation.symbols(a.outline(), new Findings.Lines(a.doc().text()), checks.lang()).stream()
-                                .map(Either::<SymbolInformation, DocumentSymbol>forRight).toList())
-                        .orElse(List.of());
+                return answering(uri).map(make).orElse(none);
             } catch (IOException e) {
-                return List.of();
+                return none;
             }
         });
     }
@@ -202,7 +197,7 @@ final class Texts implements TextDocumentService {
             if (d == null || params.getContext() == null || params.getContext().getDiagnostics() == null) {
                 return List.of();
             }
-            Checks.Published last = checks.published(uri).filter(p -> p.doc() == d).orElse(null);
+            Checks.Published last = checks.get().published(uri).filter(p -> p.doc() == d).orElse(null);
             return Actions.of(uri, params.getContext().getDiagnostics(), last, new Findings.Lines(d.text()));
         });
     }

@@ -44,9 +44,10 @@ function inputsFor(field) {
 
 /**
  * The Configure panel. `program()` gives {name, text} of the open program (or null); `goTo(line)` moves the
- * cursor; `saved(answer)` is called after a save.
+ * cursor; `saved(answer)` is called after a save; `apiOverwriting` is the studio's write that asks before
+ * replacing a file (409).
  */
-export function configure({ api, program, units, goTo, saved, status }) {
+export function configure({ api, apiOverwriting, program, units, goTo, saved, status }) {
   const panel = $("configure");
   const fields = new Map(); // key -> {inputs, initial, program, file}
   let timer = null;
@@ -235,13 +236,7 @@ export function configure({ api, program, units, goTo, saved, status }) {
     if (!file) return;
     const body = { file, ...changes() };
     try {
-      let r;
-      try {
-        r = await api("profile/save", body);
-      } catch (e) {
-        if (e.status !== 409 || !confirm(t.overwrite(file))) throw e;
-        r = await api("profile/save", { ...body, force: true });
-      }
+      const r = await apiOverwriting("profile/save", body, file);
       status(t.profileSaved(r.file), "ok");
       await open();
       saved(r);

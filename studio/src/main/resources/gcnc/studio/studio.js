@@ -48,6 +48,20 @@ async function api(endpoint, body) {
   return json;
 }
 
+/**
+ * A write the server answers with 409 when it would replace a file it was not told to (a save over a
+ * changed file, a profile saved under a name that exists): asked again with force once the user
+ * confirms overwriting {@code shown}; any other failure throws.
+ */
+async function apiOverwriting(endpoint, body, shown) {
+  try {
+    return await api(endpoint, body);
+  } catch (e) {
+    if (e.status !== 409 || !confirm(t.overwrite(shown))) throw e;
+    return api(endpoint, { ...body, force: true });
+  }
+}
+
 function status(text, kind) {
   const s = $("status");
   s.textContent = text;
@@ -489,13 +503,7 @@ async function save(asNew, name) {
   const text = view.state.doc.toString();
   const body = { name: target, text, version: asNew ? null : current.version };
   try {
-    let p;
-    try {
-      p = await api("save", body);
-    } catch (e) {
-      if (e.status !== 409 || !confirm(t.overwrite(target))) throw e;
-      p = await api("save", { ...body, force: true });
-    }
+    const p = await apiOverwriting("save", body, target);
     current.name = p.name;
     current.version = p.version;
     current.saved = text;
@@ -559,6 +567,7 @@ $("compile").addEventListener("click", compile);
 $("scrub").addEventListener("input", scrubbed);
 configure({
   api,
+  apiOverwriting,
   program: () => (current.name ? { name: current.name, text: view.state.doc.toString() } : null),
   units: () => programUnits,
   goTo: (line) => goTo(line, 1),
