@@ -152,6 +152,13 @@ public final class DaemonServer {
             out.flush();
             return;
         }
+        boolean[] held = {true};
+        Runnable release = () -> {
+            if (held[0]) {
+                held[0] = false;
+                running.release();
+            }
+        };
         try {
             Frames.write(out, 'Y', "");
             out.flush();
@@ -186,11 +193,13 @@ public final class DaemonServer {
                 status = 2;
             }
             outputs.flushAll();
+            served.incrementAndGet();
+            // free before the client hears the end: a client that runs again at once is served, not told "busy"
+            release.run();
             Frames.write(out, 'X', Integer.toString(status));
             out.flush();
-            served.incrementAndGet();
         } finally {
-            running.release();
+            release.run();
         }
     }
 
