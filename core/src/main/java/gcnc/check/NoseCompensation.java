@@ -161,17 +161,13 @@ final class NoseCompensation {
         if (mode == Mode.OFF) {
             return;
         }
-        out.report(Diagnostic.warning(Code.E175_NOSE_AT_END, at, sideName()));
+        out.report(Diagnostic.warning(Code.E175_NOSE_AT_END, at, e < 0 ? "G41" : "G42"));
         if (pending != null) {
             closePerpendicular(emit);
         }
         flushHeld(emit);
         mode = Mode.OFF;
         exiting = false;
-    }
-
-    private String sideName() {
-        return e < 0 ? "G41" : "G42";
     }
 
     private void arm(NoseInfo info) {
@@ -331,23 +327,18 @@ final class NoseCompensation {
         return end;
     }
 
-    /** Sends the pending start-up block (type A), its move ending with the nose centre at {@code end}. */
+    /**
+     * Sends the pending start-up block (type A), its move ending with the nose centre at
+     * {@code end}; the move begins at its programmed start, or where a block without a move under a
+     * suspension ({@link #suspend}) left the tool.
+     */
     private void sendStartUp(Point end, List<CheckedBlock> emit) {
         Motion m = path(pending).get(0);
         List<Motion> ms = new ArrayList<>(before(pending, m));
-        ms.add(line(m, startUpFrom(m), tipAt(end)));
+        ms.add(line(m, restartFrom != null ? restartFrom : from(m), tipAt(end)));
+        restartFrom = null;
         ms.addAll(after(pending, m));
         emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
-    }
-
-    /**
-     * Where the start-up move {@code m} begins: its programmed start, or where a block without a
-     * move under a suspension ({@link #suspend}) left the tool.
-     */
-    private Point startUpFrom(Motion m) {
-        Point p = restartFrom != null ? restartFrom : from(m);
-        restartFrom = null;
-        return p;
     }
 
     /**
@@ -357,39 +348,16 @@ final class NoseCompensation {
      */
     private void close(Point end, List<Point> around, boolean meet, List<CheckedBlock> emit) {
         Element el = pendingElement;
-        Motion m = path(pending).get(0);
         if (!meet || !NoseGeometry.forward(el, pendingStart, end)) {
             out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
         }
-        List<Motion> ms = new ArrayList<>(before(pending, m));
-        if (lead != null) {
-            ms.add(lead);
-            lead = null;
-        }
-        Point s = tipAt(pendingStart);
-        Point t = tipAt(end);
-        if (el.arc()) {
-            double radius = el.offsetRadius(e);
-            Point c = tipAt(el.centre());
-            if (s.distanceTo(t) > NoseGeometry.NOTHING && radius > NoseGeometry.NOTHING) {
-                Motion.Arc a = MotionKind.arc(m); // el.arc(): the block's move is an arc
-                Motion.ArcWords w = a.words().r() != null
-                        ? new Motion.ArcWords(Math.copySign(radius, a.words().r()), null, null)
-                        : new Motion.ArcWords(null, c.x() - s.x(), c.z() - s.z());
-                ms.add(new Motion.Arc(a.clockwise(), s, t, c, radius, a.feed(), w));
-            }
-        } else if (s.distanceTo(t) > NoseGeometry.NOTHING) {
-            ms.add(line(m, s, t));
-        }
-        Point at = t;
+        List<Point> corner = new ArrayList<>(around.size());
         for (Point q : around) {
-            Point next = tipAt(q);
-            if (at.distanceTo(next) > NoseGeometry.NOTHING) {
-                ms.add(line(m, at, next));
-                at = next;
-            }
+            corner.add(tipAt(q));
         }
-        ms.addAll(after(pending, m));
+        List<Motion> ms = NoseMoves.offset(pending, lead, el.arc(), tipAt(pendingStart), tipAt(end),
+                el.arc() ? tipAt(el.centre()) : null, el.arc() ? el.offsetRadius(e) : 0, corner);
+        lead = null;
         emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         pendingStart = null;
     }
