@@ -52,57 +52,13 @@ enum MotionKind {
 
     /** The motion as an arc, or null when it is not one. */
     static Motion.Arc arc(Motion m) {
-        return m.accept(ARC_OF);
+        return gcnc.check.geom.MotionParts.arc(m);
     }
 
     /** The motion as a thread pass, or null when it is not one (its lead, rpm and end are read then). */
     static Motion.Thread thread(Motion m) {
-        return m.accept(THREAD_OF);
+        return gcnc.check.geom.MotionParts.thread(m);
     }
-
-    private static final Motion.Visitor<Motion.Thread> THREAD_OF = new Motion.Visitor<>() {
-        @Override
-        public Motion.Thread linear(Motion.Linear l) {
-            return null;
-        }
-
-        @Override
-        public Motion.Thread arc(Motion.Arc a) {
-            return null;
-        }
-
-        @Override
-        public Motion.Thread dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Motion.Thread thread(Motion.Thread t) {
-            return t;
-        }
-    };
-
-    private static final Motion.Visitor<Motion.Arc> ARC_OF = new Motion.Visitor<>() {
-        @Override
-        public Motion.Arc linear(Motion.Linear l) {
-            return null;
-        }
-
-        @Override
-        public Motion.Arc arc(Motion.Arc a) {
-            return a;
-        }
-
-        @Override
-        public Motion.Arc dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Motion.Arc thread(Motion.Thread t) {
-            return null;
-        }
-    };
 
     private static final Motion.Visitor<MotionKind> KIND = new Motion.Visitor<>() {
         @Override
