@@ -345,32 +345,6 @@ public final class BlockDraft {
 
     public static final Letter[] MOTION_WORDS = {Letter.X, Letter.Z, Letter.U, Letter.W, Letter.R, Letter.I, Letter.K};
 
-    /**
-     * The word written right after {@code w} with no space between them, or null. Only a number
-     * can end a word, so an O there is a zero typed as a letter inside that number ({@code Z-1O0}).
-     */
-    public Word gluedAfter(Word w) {
-        List<Word> ws = block.words();
-        for (int i = 0; i + 1 < ws.size(); i++) {
-            if (ws.get(i) == w) {
-                Word next = ws.get(i + 1);
-                return w.span().column() + 1 + w.number().length() == next.span().column() ? next : null;
-            }
-        }
-        return null;
-    }
-
-    /** The word written right before {@code w} with no space between them, or null. */
-    public Word gluedBefore(Word w) {
-        List<Word> ws = block.words();
-        for (int i = 1; i < ws.size(); i++) {
-            if (ws.get(i) == w) {
-                return gluedAfter(ws.get(i - 1)) == w ? ws.get(i - 1) : null;
-            }
-        }
-        return null;
-    }
-
     /** The first word of the block, where block-level errors such as 53 are reported. */
     public Span firstSpan() {
         return block.words().isEmpty() ? block.last() : block.words().get(0).span();

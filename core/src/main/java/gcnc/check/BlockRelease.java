@@ -21,7 +21,7 @@ final class BlockRelease {
     private final Diagnostics out;
     /** G41/G42: the compensated path, and what it needs to know of each block the flow made. */
     private final NoseCompensation nose;
-    private final Map<CheckedBlock, NoseCompensation.Info> noseInfo = new IdentityHashMap<>();
+    private final Map<CheckedBlock, NoseInfo> noseInfo = new IdentityHashMap<>();
     /** Consecutive G32 blocks: one continuous thread (docs/threading.md). */
     private final ThreadChain threadChain;
 
@@ -54,7 +54,7 @@ final class BlockRelease {
      */
     void made(CheckedBlock made, RawBlock b, ModalState prior, ModalState state, CycleOrigin origin, boolean thread) {
         if (state.nose() != NoseSide.OFF || prior.nose() != NoseSide.OFF) {
-            noseInfo.put(made, new NoseCompensation.Info(state.nose(), profile.nose(state.toolOffset()),
+            noseInfo.put(made, new NoseInfo(state.nose(), profile.nose(state.toolOffset()),
                     state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span(),
                     NoseConflict.suspend(b, functions, prior.nose(), origin == null ? null : origin.cycle(), thread)));
         }
@@ -83,8 +83,8 @@ final class BlockRelease {
         }
         List<CheckedBlock> emit = new ArrayList<>(made.size() + 1);
         for (CheckedBlock c : made) {
-            NoseCompensation.Info info = noseInfo.get(c);
-            nose.accept(c, info != null ? info : new NoseCompensation.Info(NoseSide.OFF,
+            NoseInfo info = noseInfo.get(c);
+            nose.accept(c, info != null ? info : new NoseInfo(NoseSide.OFF,
                     profile.nose(state.toolOffset()), state.toolOffset(), Span.of(c.line(), 1)), emit);
         }
         noseInfo.clear();

@@ -214,11 +214,7 @@ public final class Checker {
         return made == null ? List.of() : List.of(made);
     }
 
-    /**
-     * One block through every check, committing its state: a block of the program, or one that a
-     * cycle made or follows again ({@code origin} not null: its findings get a note saying which
-     * pass, and its frame names the pass for the simulator's findings).
-     */
+    /** One block through every check, committing its state ({@link CycleHost#one}: a cycle's origin, or null). */
     Optional<CheckedBlock> one(RawBlock b, boolean isFirst, CycleOrigin origin) {
         return Optional.ofNullable(checked(b, isFirst, origin, null, null, 0));
     }
@@ -317,10 +313,7 @@ public final class Checker {
         return cycles.reading() ? cycles.readingName() : null;
     }
 
-    /**
-     * Puts the motion G back after an inserted corner arc: the program's G01 stays in force (the
-     * arc is the control's, not a G02/G03 of the program).
-     */
+    /** Puts the motion G back after an inserted corner arc ({@link CornerHost#keepMotion}). */
     void keepMotion(int motion) {
         ModalState.Next n = state.next();
         n.motion = motion;

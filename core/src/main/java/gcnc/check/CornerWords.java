@@ -204,29 +204,7 @@ final class CornerWords {
 
     /** A block's one feed move (a G01), or null. */
     static Motion.Linear feedLine(List<Motion> motions) {
-        return motions.size() == 1 ? motions.get(0).accept(FEED_LINE) : null;
+        Motion.Linear l = motions.size() == 1 ? gcnc.check.geom.MotionParts.line(motions.get(0)) : null;
+        return l != null && !l.rapid() ? l : null;
     }
-
-    /** A feed line itself; null for anything else. */
-    private static final Motion.Visitor<Motion.Linear> FEED_LINE = new Motion.Visitor<>() {
-        @Override
-        public Motion.Linear linear(Motion.Linear l) {
-            return l.rapid() ? null : l;
-        }
-
-        @Override
-        public Motion.Linear arc(Motion.Arc a) {
-            return null;
-        }
-
-        @Override
-        public Motion.Linear dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Motion.Linear thread(Motion.Thread t) {
-            return null;
-        }
-    };
 }

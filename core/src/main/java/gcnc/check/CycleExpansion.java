@@ -382,7 +382,7 @@ final class CycleExpansion {
             return false;
         }
         Contour.Piece first = pieces.get(0);
-        return first.motion() instanceof gcnc.ir.Motion.Linear
+        return MotionKind.of(first.motion()).linear()
                 && Math.abs(axes.depth(first.to()) - axes.depth(first.from())) <= 1e-9
                 && Math.abs(axes.cut(first.to()) - axes.cut(first.from())) > 1e-9;
     }

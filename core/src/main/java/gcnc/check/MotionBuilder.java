@@ -106,7 +106,8 @@ final class MotionBuilder {
                 return null;
             }
             motions.add(m);
-            if (m instanceof Motion.Thread t) {
+            Motion.Thread t = MotionKind.thread(m);
+            if (t != null) {
                 end = t.to(); // a chamfered pull-out (M23) ends out of the groove, not at the block's X
             }
         }

@@ -21,6 +21,11 @@ enum MotionKind {
         this.moves = moves;
     }
 
+    /** Whether the motion is a straight line of the path (a rapid or a feed; not a thread pass). */
+    boolean linear() {
+        return this == RAPID || this == FEED;
+    }
+
     static MotionKind of(Motion m) {
         return m.accept(KIND);
     }
@@ -43,6 +48,16 @@ enum MotionKind {
             }
         }
         return false;
+    }
+
+    /** The motion as an arc, or null when it is not one. */
+    static Motion.Arc arc(Motion m) {
+        return gcnc.check.geom.MotionParts.arc(m);
+    }
+
+    /** The motion as a thread pass, or null when it is not one (its lead, rpm and end are read then). */
+    static Motion.Thread thread(Motion m) {
+        return gcnc.check.geom.MotionParts.thread(m);
     }
 
     private static final Motion.Visitor<MotionKind> KIND = new Motion.Visitor<>() {

@@ -38,7 +38,7 @@ import java.util.List;
  * <p>To place a corner it must see the next move: the block before it is held back until then,
  * with at most {@value #STILL_LIMIT} blocks without a move between (E176 past that). Blocks the
  * control runs under G41/G42 without offsetting them (G28, a T word, a cycle other than G70, a side
- * change: {@link Suspend}) end the compensated path and start it again after them. Errors:
+ * change: {@link NoseSuspend}) end the compensated path and start it again after them. Errors:
  * E170 (start-up shorter than the radius), E171 (an arc starts or cancels), E172 (a concave corner
  * the nose does not fit), E173 (a concave arc tighter than the nose), E175 (the program ends under
  * G41/G42, a warning), E177 (a note: the offset has no nose radius, nothing is moved), E179 (a
@@ -47,34 +47,6 @@ import java.util.List;
 final class NoseCompensation {
     /** Blocks without a move gcnc holds while it looks for the next corner. */
     static final int STILL_LIMIT = 10;
-
-    /**
-     * What the checker knows of a block besides the block: the side after it, the nose in force,
-     * where it is, and whether its moves are made with the compensation suspended.
-     */
-    record Info(NoseSide side, Nose nose, int offset, Span at, Suspend suspend) {
-        Info(NoseSide side, Nose nose, int offset, Span at) {
-            this(side, nose, offset, at, Suspend.NONE);
-        }
-    }
-
-    /**
-     * Blocks the control runs under G41/G42 without offsetting their moves (docs/nose-compensation.md,
-     * "Under G41/G42"): the compensated path ends perpendicular before them, their moves go as
-     * programmed (the first from where the tool stands), and the next move starts the compensation
-     * again as a start-up does.
-     */
-    enum Suspend {
-        /** An ordinary block: offset as the side says. */
-        NONE,
-        /**
-         * Fanuc's temporary cancel: G28, G29, G30, G53, a G50/G92 position register, and a T word
-         * (the new offset's nose applies from the next move).
-         */
-        FOR_THE_BLOCK,
-        /** A block a cycle other than G70 made (roughing, single-pass, thread, peck and drilling cycles) or a G32. */
-        CYCLE
-    }
 
     private enum Mode { OFF, ARMED, ACTIVE }
 
@@ -87,7 +59,7 @@ final class NoseCompensation {
     private double[] tip = {0, 0};
     /** The block whose end waits for the next move, and its element (null: the start-up block). */
     private CheckedBlock pending;
-    private Info pendingInfo;
+    private NoseInfo pendingInfo;
     private Element pendingElement;
     /** Where the pending element's offset starts (nose centre); for the start-up block, unused. */
     private Point pendingStart;
@@ -132,8 +104,8 @@ final class NoseCompensation {
     }
 
     /** Takes the next checked block; what can be sent on is added to {@code emit}, in order. */
-    void accept(CheckedBlock b, Info info, List<CheckedBlock> emit) {
-        if (info.suspend() != Suspend.NONE && info.side() != NoseSide.OFF && mode != Mode.OFF && !exiting) {
+    void accept(CheckedBlock b, NoseInfo info, List<CheckedBlock> emit) {
+        if (info.suspend() != NoseSuspend.NONE && info.side() != NoseSide.OFF && mode != Mode.OFF && !exiting) {
             suspend(b, info, emit);
             return;
         }
@@ -189,7 +161,7 @@ final class NoseCompensation {
         if (mode == Mode.OFF) {
             return;
         }
-        out.report(Diagnostic.warning(Code.E175_NOSE_AT_END, at, sideName()));
+        out.report(Diagnostic.warning(Code.E175_NOSE_AT_END, at, e < 0 ? "G41" : "G42"));
         if (pending != null) {
             closePerpendicular(emit);
         }
@@ -198,11 +170,7 @@ final class NoseCompensation {
         exiting = false;
     }
 
-    private String sideName() {
-        return e < 0 ? "G41" : "G42";
-    }
-
-    private void arm(Info info) {
+    private void arm(NoseInfo info) {
         Nose n = info.nose();
         double sign = info.side() == NoseSide.RIGHT ? 1 : -1;
         e = sign * n.radius();
@@ -218,23 +186,21 @@ final class NoseCompensation {
     }
 
     /** G41/G42 given, no move yet: the first move is the start-up. */
-    private void armed(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+    private void armed(CheckedBlock b, NoseInfo info, List<CheckedBlock> emit) {
         List<Motion> path = path(b);
         if (info.side() == NoseSide.OFF) {
             mode = Mode.OFF;
             emit.add(resumed(b));
             return;
         }
-        if (path.isEmpty() || info.suspend() == Suspend.CYCLE || path.get(0) instanceof Motion.Thread) {
+        if (path.isEmpty() || info.suspend() == NoseSuspend.CYCLE || MotionKind.of(path.get(0)) == MotionKind.THREAD) {
             // a cycle's block or a thread is not offset (E624): the next move is the start-up. (Reached here
             // when the block that gave G41/G42 had an error, so that this block arms the compensation.)
             emit.add(b);
             return;
         }
         Motion first = path.get(0);
-        if (first instanceof Motion.Arc) {
-            out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (((Motion.Arc) first).clockwise() ? 2 : 3));
-        } else if (e != 0 && Element.of(first).length() < Math.abs(e)) {
+        if (!arcAtEnd(first, info) && e != 0 && Element.of(first).length() < Math.abs(e)) {
             out.error(Code.E170_NOSE_START_UP_TOO_SHORT, info.at(), info.side().g(),
                     mm(Element.of(first).length()), mm(Math.abs(e)));
         }
@@ -246,16 +212,12 @@ final class NoseCompensation {
     }
 
     /** A move under G41/G42 after another: the corner between them ends the held block. */
-    private void follow(CheckedBlock b, Info info, Element next, List<CheckedBlock> emit) {
+    private void follow(CheckedBlock b, NoseInfo info, Element next, List<CheckedBlock> emit) {
         Point startNext;
         if (pendingElement == null) {
             // the start-up block (type A): the nose goes to the next element's offset start
             startNext = next.offsetAt(next.from(), e);
-            Motion m = path(pending).get(0);
-            List<Motion> ms = new ArrayList<>(before(pending, m));
-            ms.add(line(m, startUpFrom(m), tipAt(startNext)));
-            ms.addAll(after(pending, m));
-            emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
+            sendStartUp(startNext, emit);
         } else {
             Corner c = NoseGeometry.corner(pendingElement, next, e);
             boolean meet = c != null;
@@ -278,11 +240,9 @@ final class NoseCompensation {
     }
 
     /** G40 with a move (or the move after a G40 alone): type A, from the perpendicular offset to the programmed point. */
-    private void cancel(CheckedBlock b, Info info, List<Motion> path, List<CheckedBlock> emit) {
+    private void cancel(CheckedBlock b, NoseInfo info, List<Motion> path, List<CheckedBlock> emit) {
         Motion first = path.get(0);
-        if (first instanceof Motion.Arc a) {
-            out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (a.clockwise() ? 2 : 3));
-        }
+        arcAtEnd(first, info);
         Point end = closePerpendicular(emit);
         flushHeld(emit);
         Point from = end != null ? tipAt(end) : restartFrom != null ? restartFrom : from(first);
@@ -297,12 +257,12 @@ final class NoseCompensation {
     }
 
     /**
-     * A block the control runs without offsetting it ({@link Suspend}): the compensated path ends
+     * A block the control runs without offsetting it ({@link NoseSuspend}): the compensated path ends
      * perpendicular before it, its first move goes from where the tool stands to its programmed end
      * (for G28, to the intermediate point: the offset is cancelled there), the rest as programmed;
      * the next move starts the compensation again (type A), with the nose in force after the block.
      */
-    private void suspend(CheckedBlock b, Info info, List<CheckedBlock> emit) {
+    private void suspend(CheckedBlock b, NoseInfo info, List<CheckedBlock> emit) {
         Point stands = restartFrom;
         if (mode == Mode.ACTIVE) {
             Point end = closePerpendicular(emit);
@@ -313,7 +273,7 @@ final class NoseCompensation {
         flushHeld(emit);
         Motion first = null;
         for (Motion m : b.motions()) {
-            if (!(m instanceof Motion.Dwell)) {
+            if (MotionKind.of(m).moves) {
                 first = m;
                 break;
             }
@@ -339,7 +299,7 @@ final class NoseCompensation {
             return b;
         }
         for (Motion m : b.motions()) {
-            if (!(m instanceof Motion.Dwell)) {
+            if (MotionKind.of(m).moves) {
                 CheckedBlock r = startingAt(b, m, restartFrom);
                 restartFrom = null;
                 return r;
@@ -357,11 +317,7 @@ final class NoseCompensation {
         if (pendingElement == null) {
             Element self = Element.of(path(pending).get(0));
             end = self.length() > 0 ? self.offsetAt(self.to(), e) : self.to();
-            Motion m = path(pending).get(0);
-            List<Motion> ms = new ArrayList<>(before(pending, m));
-            ms.add(line(m, startUpFrom(m), tipAt(end)));
-            ms.addAll(after(pending, m));
-            emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
+            sendStartUp(end, emit);
         } else {
             end = pendingElement.offsetAt(pendingElement.to(), e);
             close(end, List.of(), true, emit);
@@ -372,13 +328,17 @@ final class NoseCompensation {
     }
 
     /**
-     * Where the start-up move {@code m} begins: its programmed start, or where a block without a
-     * move under a suspension ({@link #suspend}) left the tool.
+     * Sends the pending start-up block (type A), its move ending with the nose centre at
+     * {@code end}; the move begins at its programmed start, or where a block without a move under a
+     * suspension ({@link #suspend}) left the tool.
      */
-    private Point startUpFrom(Motion m) {
-        Point p = restartFrom != null ? restartFrom : from(m);
+    private void sendStartUp(Point end, List<CheckedBlock> emit) {
+        Motion m = path(pending).get(0);
+        List<Motion> ms = new ArrayList<>(before(pending, m));
+        ms.add(line(m, restartFrom != null ? restartFrom : from(m), tipAt(end)));
         restartFrom = null;
-        return p;
+        ms.addAll(after(pending, m));
+        emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
     }
 
     /**
@@ -388,52 +348,38 @@ final class NoseCompensation {
      */
     private void close(Point end, List<Point> around, boolean meet, List<CheckedBlock> emit) {
         Element el = pendingElement;
-        Motion m = path(pending).get(0);
         if (!meet || !NoseGeometry.forward(el, pendingStart, end)) {
             out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
         }
-        List<Motion> ms = new ArrayList<>(before(pending, m));
-        if (lead != null) {
-            ms.add(lead);
-            lead = null;
-        }
-        Point s = tipAt(pendingStart);
-        Point t = tipAt(end);
-        if (el.arc()) {
-            double radius = el.offsetRadius(e);
-            Point c = tipAt(el.centre());
-            if (s.distanceTo(t) > NoseGeometry.NOTHING && radius > NoseGeometry.NOTHING) {
-                Motion.Arc a = (Motion.Arc) m;
-                Motion.ArcWords w = a.words().r() != null
-                        ? new Motion.ArcWords(Math.copySign(radius, a.words().r()), null, null)
-                        : new Motion.ArcWords(null, c.x() - s.x(), c.z() - s.z());
-                ms.add(new Motion.Arc(a.clockwise(), s, t, c, radius, a.feed(), w));
-            }
-        } else if (s.distanceTo(t) > NoseGeometry.NOTHING) {
-            ms.add(line(m, s, t));
-        }
-        Point at = t;
+        List<Point> corner = new ArrayList<>(around.size());
         for (Point q : around) {
-            Point next = tipAt(q);
-            if (at.distanceTo(next) > NoseGeometry.NOTHING) {
-                ms.add(line(m, at, next));
-                at = next;
-            }
+            corner.add(tipAt(q));
         }
-        ms.addAll(after(pending, m));
+        List<Motion> ms = NoseMoves.offset(pending, lead, el.arc(), tipAt(pendingStart), tipAt(end),
+                el.arc() ? tipAt(el.centre()) : null, el.arc() ? el.offsetRadius(e) : 0, corner);
+        lead = null;
         emit.add(travel(with(pending, ms, pending.end()), pendingInfo));
         pendingStart = null;
     }
 
+    /** E171 when the start-up or cancel move {@code m} is an arc (the control alarms); whether it is one. */
+    private boolean arcAtEnd(Motion m, NoseInfo info) {
+        Motion.Arc a = MotionKind.arc(m);
+        if (a != null) {
+            out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (a.clockwise() ? 2 : 3));
+        }
+        return a != null;
+    }
+
     /** E173: a concave arc whose offset radius would be nothing or less. */
-    private void checkArc(Element el, Info info) {
+    private void checkArc(Element el, NoseInfo info) {
         if (el.arc() && el.offsetRadius(e) <= NoseGeometry.NOTHING) {
             out.error(Code.E173_NOSE_ARC_TOO_TIGHT, info.at(), mm(el.radius()), mm(Math.abs(e)));
         }
     }
 
     /** E179, once per block: a compensated move beyond the travel ({@link NoseTravel}). */
-    private CheckedBlock travel(CheckedBlock b, Info info) {
+    private CheckedBlock travel(CheckedBlock b, NoseInfo info) {
         NoseTravel.check(b, info.at(), profile, out);
         return b;
     }

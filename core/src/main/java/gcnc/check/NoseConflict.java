@@ -156,28 +156,28 @@ final class NoseConflict {
      * a temporary cancel: G28, G29, G30, G53, a position register with X or Z, a T word, or a
      * change of side (G42 under G41: the warning E174).
      */
-    static NoseCompensation.Suspend suspend(RawBlock b, FunctionIndex functions, NoseSide before, String cycle,
+    static NoseSuspend suspend(RawBlock b, FunctionIndex functions, NoseSide before, String cycle,
                                             boolean thread) {
         boolean inForce = before != NoseSide.OFF;
         if (thread) {
-            return NoseCompensation.Suspend.CYCLE;
+            return NoseSuspend.CYCLE;
         }
         if (cycle != null) {
             GFunction f = named(cycle, functions);
-            return f != null && f.role() == GRole.FINISHING_CYCLE ? NoseCompensation.Suspend.NONE
-                    : NoseCompensation.Suspend.CYCLE;
+            return f != null && f.role() == GRole.FINISHING_CYCLE ? NoseSuspend.NONE
+                    : NoseSuspend.CYCLE;
         }
         if (!inForce || cancels(b, functions)) {
-            return NoseCompensation.Suspend.NONE;
+            return NoseSuspend.NONE;
         }
         Found found = find(b, functions);
         String on = turningOn(b, functions);
         if (found != null && found.under() == Under.FOR_THE_BLOCK
                 || b.words().stream().anyMatch(w -> w.letter() == Letter.T)
                 || on != null && !on.equals(before.g())) {
-            return NoseCompensation.Suspend.FOR_THE_BLOCK;
+            return NoseSuspend.FOR_THE_BLOCK;
         }
-        return NoseCompensation.Suspend.NONE;
+        return NoseSuspend.NONE;
     }
 
     /** The function of a G code as a finding names it ("G71"), or null. */

@@ -20,8 +20,8 @@ final class NoseMoves {
     static List<Motion> path(CheckedBlock b) {
         List<Motion> ms = new ArrayList<>(1);
         for (Motion m : b.motions()) {
-            if (!(m instanceof Motion.Dwell) && !(m instanceof Motion.Linear l
-                    && l.from().distanceTo(l.to()) <= NoseGeometry.NOTHING)) {
+            MotionKind k = MotionKind.of(m);
+            if (k.moves && !(k.linear() && from(m).distanceTo(to(m)) <= NoseGeometry.NOTHING)) {
                 ms.add(m);
             }
         }
@@ -32,7 +32,7 @@ final class NoseMoves {
     static List<Motion> still(CheckedBlock b) {
         List<Motion> ms = new ArrayList<>(b.motions().size());
         for (Motion m : b.motions()) {
-            if (m instanceof Motion.Dwell) {
+            if (!MotionKind.of(m).moves) {
                 ms.add(m);
             }
         }
@@ -52,26 +52,25 @@ final class NoseMoves {
 
     /** A straight move of the kind {@code m} is (rapid or at its feed) between two points. */
     static Motion line(Motion m, Point from, Point to) {
-        Feed feed = m instanceof Motion.Linear l ? l.feed() : ((Motion.Arc) m).feed();
-        boolean rapid = m instanceof Motion.Linear l && l.rapid();
-        return new Motion.Linear(rapid, from, to, rapid ? null : feed);
+        boolean rapid = MotionKind.of(m) == MotionKind.RAPID;
+        return new Motion.Linear(rapid, from, to, rapid ? null : m.accept(FEED));
     }
 
     /** Where a line, an arc or a thread pass starts. */
     static Point from(Motion m) {
-        return m instanceof Motion.Linear l ? l.from() : m instanceof Motion.Thread t ? t.from() : ((Motion.Arc) m).from();
+        return m.accept(FROM);
     }
 
     /** Where a line, an arc or a thread pass ends. */
     static Point to(Motion m) {
-        return m instanceof Motion.Linear l ? l.to() : m instanceof Motion.Thread t ? t.to() : ((Motion.Arc) m).to();
+        return m.accept(TO);
     }
 
     /** The block with other motions, its end where the last of them ends. */
     static CheckedBlock with(CheckedBlock b, List<Motion> motions, Point end) {
         Point last = end;
         for (Motion m : motions) {
-            if (!(m instanceof Motion.Dwell)) {
+            if (MotionKind.of(m).moves) {
                 last = to(m);
             }
         }
@@ -85,11 +84,12 @@ final class NoseMoves {
      */
     static CheckedBlock startingAt(CheckedBlock b, Motion first, Point from) {
         List<Motion> ms = new ArrayList<>(before(b, first));
-        if (first instanceof Motion.Linear) {
+        MotionKind k = MotionKind.of(first);
+        if (k.linear()) {
             ms.add(line(first, from, to(first)));
         } else {
             if (from.distanceTo(from(first)) > NoseGeometry.NOTHING) {
-                ms.add(first instanceof Motion.Arc a ? line(a, from, a.from())
+                ms.add(k == MotionKind.ARC ? line(first, from, from(first))
                         : new Motion.Linear(true, from, from(first), null));
             }
             ms.add(first);
@@ -97,4 +97,107 @@ final class NoseMoves {
         ms.addAll(after(b, first));
         return with(b, ms, b.end());
     }
+
+    /**
+     * The motions of {@code pending} with its move offset: after the motions before the move (and
+     * {@code lead}, when not null: the rapid after E176), the move from {@code s} to {@code t} (an
+     * arc about {@code c} of {@code radius} when {@code arc}, else a line), then straight moves
+     * through the {@code corner} points, then the motions after the move. Moves of no length are
+     * left out.
+     */
+    static List<Motion> offset(CheckedBlock pending, Motion lead, boolean arc, Point s, Point t, Point c, double radius,
+                               List<Point> corner) {
+        Motion m = path(pending).get(0);
+        List<Motion> ms = new ArrayList<>(before(pending, m));
+        if (lead != null) {
+            ms.add(lead);
+        }
+        if (arc) {
+            if (s.distanceTo(t) > NoseGeometry.NOTHING && radius > NoseGeometry.NOTHING) {
+                Motion.Arc a = MotionKind.arc(m); // an arc element: the block's move is an arc
+                Motion.ArcWords w = a.words().r() != null
+                        ? new Motion.ArcWords(Math.copySign(radius, a.words().r()), null, null)
+                        : new Motion.ArcWords(null, c.x() - s.x(), c.z() - s.z());
+                ms.add(new Motion.Arc(a.clockwise(), s, t, c, radius, a.feed(), w));
+            }
+        } else if (s.distanceTo(t) > NoseGeometry.NOTHING) {
+            ms.add(line(m, s, t));
+        }
+        Point at = t;
+        for (Point next : corner) {
+            if (at.distanceTo(next) > NoseGeometry.NOTHING) {
+                ms.add(line(m, at, next));
+                at = next;
+            }
+        }
+        ms.addAll(after(pending, m));
+        return ms;
+    }
+
+    /** Where a motion starts, where it ends, its feed: a dwell has none (the callers pass moves only). */
+    private static final Motion.Visitor<Point> FROM = new Motion.Visitor<>() {
+        @Override
+        public Point linear(Motion.Linear l) {
+            return l.from();
+        }
+
+        @Override
+        public Point arc(Motion.Arc a) {
+            return a.from();
+        }
+
+        @Override
+        public Point dwell(Motion.Dwell d) {
+            return null;
+        }
+
+        @Override
+        public Point thread(Motion.Thread t) {
+            return t.from();
+        }
+    };
+
+    private static final Motion.Visitor<Point> TO = new Motion.Visitor<>() {
+        @Override
+        public Point linear(Motion.Linear l) {
+            return l.to();
+        }
+
+        @Override
+        public Point arc(Motion.Arc a) {
+            return a.to();
+        }
+
+        @Override
+        public Point dwell(Motion.Dwell d) {
+            return null;
+        }
+
+        @Override
+        public Point thread(Motion.Thread t) {
+            return t.to();
+        }
+    };
+
+    private static final Motion.Visitor<Feed> FEED = new Motion.Visitor<>() {
+        @Override
+        public Feed linear(Motion.Linear l) {
+            return l.feed();
+        }
+
+        @Override
+        public Feed arc(Motion.Arc a) {
+            return a.feed();
+        }
+
+        @Override
+        public Feed dwell(Motion.Dwell d) {
+            return null;
+        }
+
+        @Override
+        public Feed thread(Motion.Thread t) {
+            return t.feed();
+        }
+    };
 }

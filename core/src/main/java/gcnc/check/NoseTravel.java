@@ -22,11 +22,13 @@ final class NoseTravel {
     static void check(CheckedBlock b, Span at, MachineProfile profile, Diagnostics out) {
         for (Motion m : b.motions()) {
             double[] box;
-            if (m instanceof Motion.Arc a) {
+            Motion.Arc a = MotionKind.arc(m);
+            if (a != null) {
                 box = gcnc.ir.ArcGeometry.bounds(a);
-            } else if (m instanceof Motion.Linear l) {
+            } else if (MotionKind.of(m).linear()) {
                 // its start is the end of the move before, judged there
-                box = new double[] {l.to().x(), l.to().x(), l.to().z(), l.to().z()};
+                gcnc.ir.Point to = NoseMoves.to(m);
+                box = new double[] {to.x(), to.x(), to.z(), to.z()};
             } else {
                 continue;
             }

@@ -95,8 +95,8 @@ final class ThreadChain {
 
     /** The one thread pass of a G32 block, or null. */
     private static Motion.Thread thread(CheckedBlock b) {
-        return b.motions().size() == 1 && b.motions().get(0) instanceof Motion.Thread t && !t.chamfered()
-                && t.joints().isEmpty() ? t : null;
+        Motion.Thread t = b.motions().size() == 1 ? MotionKind.thread(b.motions().get(0)) : null;
+        return t != null && !t.chamfered() && t.joints().isEmpty() ? t : null;
     }
 
     private boolean sameLead(CheckedBlock c) {

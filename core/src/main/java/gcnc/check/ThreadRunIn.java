@@ -44,7 +44,8 @@ final class ThreadRunIn {
     static void check(List<CheckedBlock> blocks, MachineProfile p, Diagnostics out) {
         for (CheckedBlock b : blocks) {
             for (Motion m : b.motions()) {
-                if (m instanceof Motion.Thread t) {
+                Motion.Thread t = MotionKind.thread(m);
+                if (t != null) {
                     check(b, t, p, out);
                 }
             }

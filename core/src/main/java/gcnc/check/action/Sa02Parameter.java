@@ -90,7 +90,7 @@ public final class Sa02Parameter implements SyntaxAction {
         if (Math.abs(last) < FAR * Math.abs(read)) {
             return;
         }
-        Word next = d.gluedAfter(w);
+        Word next = GluedWords.after(d.block, w);
         if (next != null && next.letter() == Letter.O) {
             return; // Z-1O0: not Z-1 without its point but Z-100 with an O for a zero (E120, Sa03)
         }

@@ -47,7 +47,7 @@ public final class Sa03FeedOrName implements SyntaxAction {
     }
 
     private static void name(Word w, BlockDraft d, Diagnostics out) {
-        Word before = d.gluedBefore(w);
+        Word before = GluedWords.before(d.block, w);
         if (before != null && before.letter() != Letter.O) {
             // Z-1O5 lexes as Z-1 and a program number O5: the O is a zero typed as a letter, even in
             // the first block (a program number stands on its own, not against a number)

@@ -1,5 +1,6 @@
 package gcnc.check.cycle;
 
+import gcnc.check.geom.MotionParts;
 import gcnc.ir.ArcGeometry;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
@@ -25,26 +26,41 @@ public record Contour(Point start, Piece approach, List<Piece> shape) {
     /** One move of the contour: a line (rapid or feed) or an arc, from its block at {@code line}. */
     public record Piece(Motion motion, int line) {
         public Piece {
-            if (!(motion instanceof Motion.Linear) && !(motion instanceof Motion.Arc)) {
+            if (MotionParts.line(motion) == null && MotionParts.arc(motion) == null) {
                 throw new IllegalArgumentException("a contour piece is a line or an arc: " + motion);
             }
         }
 
+        /** The piece's arc, or null for a line. */
+        public Motion.Arc arc() {
+            return MotionParts.arc(motion);
+        }
+
         public Point from() {
-            return motion instanceof Motion.Arc a ? a.from() : ((Motion.Linear) motion).from();
+            Motion.Arc a = arc();
+            return a != null ? a.from() : MotionParts.line(motion).from();
         }
 
         public Point to() {
-            return motion instanceof Motion.Arc a ? a.to() : ((Motion.Linear) motion).to();
+            Motion.Arc a = arc();
+            return a != null ? a.to() : MotionParts.line(motion).to();
         }
 
         public boolean rapid() {
-            return motion instanceof Motion.Linear l && l.rapid();
+            Motion.Linear l = MotionParts.line(motion);
+            return l != null && l.rapid();
+        }
+
+        /** The piece's feed (null for a rapid). */
+        public gcnc.ir.Feed feed() {
+            Motion.Arc a = arc();
+            return a != null ? a.feed() : MotionParts.line(motion).feed();
         }
 
         /** {depthMin, depthMax, cutMin, cutMax} of the piece, arcs with their bulge. */
         double[] extent(Axes axes) {
-            if (motion instanceof Motion.Arc a) {
+            Motion.Arc a = arc();
+            if (a != null) {
                 return axes.byAxes(ArcGeometry.bounds(a));
             }
             Point f = from();
@@ -56,11 +72,12 @@ public record Contour(Point start, Piece approach, List<Piece> shape) {
         /** The same piece moved by (dx, dz) counts: the contour with its finishing allowance. */
         Piece shifted(double dx, double dz) {
             Motion m;
-            if (motion instanceof Motion.Arc a) {
+            Motion.Arc a = arc();
+            if (a != null) {
                 m = new Motion.Arc(a.clockwise(), a.from().plus(dx, dz), a.to().plus(dx, dz), a.centre().plus(dx, dz),
                         a.radius(), a.feed(), a.words());
             } else {
-                Motion.Linear l = (Motion.Linear) motion;
+                Motion.Linear l = MotionParts.line(motion);
                 m = new Motion.Linear(l.rapid(), l.from().plus(dx, dz), l.to().plus(dx, dz), l.feed());
             }
             return new Piece(m, line);

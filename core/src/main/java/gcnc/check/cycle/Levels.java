@@ -34,7 +34,8 @@ final class Levels {
             }
             List<Double> cuts = new ArrayList<>(List.of(Math.min(v0, v1), Math.max(v0, v1)));
             Depth depth;
-            if (p.motion() instanceof Motion.Arc arc) {
+            Motion.Arc arc = p.arc();
+            if (arc != null) {
                 depth = arcDepth(arc, p, g, eps);
                 Point c = arc.centre();
                 double uc = g.u(c);

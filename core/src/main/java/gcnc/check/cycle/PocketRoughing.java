@@ -229,7 +229,7 @@ public final class PocketRoughing {
         for (int i = 0; i < n; i++) {
             double du = f.u(shape.get(i).to()) - f.u(shape.get(i).from());
             way[i] = du > eps ? 1 : du < -eps ? -1 : 0;
-            if (way[i] == 0 && !(shape.get(i).motion() instanceof gcnc.ir.Motion.Linear)) {
+            if (way[i] == 0 && shape.get(i).arc() != null) {
                 return null;
             }
         }
@@ -272,10 +272,8 @@ public final class PocketRoughing {
 
     /** A straight piece from {@code from} to {@code to}, fed as {@code like} is, at its line. */
     private static Contour.Piece line(Contour.Piece like, Point from, Point to) {
-        gcnc.ir.Motion m = like.motion();
-        gcnc.ir.Feed feed = m instanceof gcnc.ir.Motion.Linear l ? l.feed() : ((gcnc.ir.Motion.Arc) m).feed();
-        boolean rapid = m instanceof gcnc.ir.Motion.Linear l && l.rapid();
-        return new Contour.Piece(new gcnc.ir.Motion.Linear(rapid, from, to, rapid ? null : feed), like.line());
+        boolean rapid = like.rapid();
+        return new Contour.Piece(new gcnc.ir.Motion.Linear(rapid, from, to, rapid ? null : like.feed()), like.line());
     }
 
     /** The line of the contour's first pocket (where it first goes back in), or 0 when it has none. */

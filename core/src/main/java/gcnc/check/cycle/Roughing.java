@@ -163,7 +163,8 @@ public final class Roughing {
             if ((td - level) * depthSign < -eps) {
                 continue;
             }
-            if (p.motion() instanceof Motion.Arc arc) {
+            Motion.Arc arc = p.arc();
+            if (arc != null) {
                 return new double[] {arcCrossing(arc, level), p.line()};
             }
             double fc = axes.cut(p.from());
@@ -222,7 +223,8 @@ public final class Roughing {
     /** The moved contour's pieces as moves of {@code pass}, each as its block wrote it; where the tool ends. */
     static Point follow(List<Move> out, Point at, List<Contour.Piece> moved, int pass) {
         for (Contour.Piece p : moved) {
-            if (p.motion() instanceof Motion.Arc arc) {
+            Motion.Arc arc = p.arc();
+            if (arc != null) {
                 at = add(out, at, new Move(arc.clockwise() ? Move.Kind.ARC_CW : Move.Kind.ARC_CCW, arc.to(),
                         arc.centre(), pass));
             } else {
