@@ -12,15 +12,7 @@ import java.util.List;
  * that must not switch while the axes move (every output but those of the profile's {@code
  * plan.on_the_fly}).
  */
-final class BlockStops {
-    private final MachineProfile profile;
-    private final Blending blending;
-
-    BlockStops(MachineProfile profile, Blending blending) {
-        this.profile = profile;
-        this.blending = blending;
-    }
-
+record BlockStops(MachineProfile profile, Blending blending) {
     /** Why the block's start stops the machine (its spindle, tool or outputs), or null when it does not. */
     Stop before(CheckedBlock b) {
         if (b.spindleRpm().isPresent()) {
