@@ -117,10 +117,9 @@ public final class Compiler {
         long blocks = 0;
         boolean observed = observer != CompileObserver.NONE;
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
-            gcnc.diag.Origin from = observed ? diags.place() : null; // where the flow read it (before the check moves on)
             List<CheckedBlock> checked = checker.check(raw);
             if (observed) {
-                observer.block(raw, from, checked, checker.state());
+                observer.block(raw, raw.origin(), checked, checker.state());
             }
             if (each != null) {
                 for (int i = 0; i < checked.size(); i++) {
@@ -199,10 +198,9 @@ public final class Compiler {
             boolean heldJudged = false;
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                gcnc.diag.Origin from = observed ? diags.place() : null;
                 List<CheckedBlock> checked = checker.check(raw);
                 if (observed) {
-                    observer.block(raw, from, checked, checker.state());
+                    observer.block(raw, raw.origin(), checked, checker.state());
                 }
                 translate(checked, planner, lower, diags, lines, sim, out, arcs);
                 heldJudged = heldJudged || judgeHeld(planner, diags, arcs);

@@ -26,9 +26,10 @@ import java.util.Set;
  * but not kept. At most {@link #OTHER_CAP} warnings and notes are kept; past it a note E681 says
  * so, once. (docs/program-flow.md, "Caps and folding".)
  *
- * <p>Placing: the stage that follows the program's flow says where the blocks it hands on come
- * from ({@link #placeIn}); a finding reported without an origin of its own is put there (the
- * program file as written, unless said otherwise). A finding
+ * <p>Placing: a block says where it comes from ({@code RawBlock.origin}); the stage that follows
+ * the program's flow, and the one that reads a called program's file, say so here too ({@link
+ * #placeIn}): a finding reported without an origin of its own is put there (the program file as
+ * written, unless said otherwise). A finding
  * inside a subprogram gets one note per call that led to it (E136), and is reported once even when
  * the subprogram runs again (a repeat or a second call finds the same thing at the same place).
  */
@@ -86,11 +87,6 @@ public final class Diagnostics {
     /** From now on, findings reported without an origin of their own belong to {@code origin}. */
     public void placeIn(Origin origin) {
         place.origin = java.util.Objects.requireNonNull(origin);
-    }
-
-    /** Where findings reported without an origin of their own are put now (the program file if nobody said). */
-    public Origin place() {
-        return place.origin == null ? Origin.PROGRAM : place.origin;
     }
 
     public void report(Diagnostic d) {

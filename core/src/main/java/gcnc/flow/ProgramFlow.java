@@ -24,8 +24,9 @@ import java.util.Set;
  * number) and returns (M99), and running Fanuc macro B statements (variables, expressions,
  * GOTO, IF, WHILE; {@link MacroLine}). The checker is handed each block once per time it runs,
  * without its flow words (M98 P L, M99), at its call depth, with the values of its macro words
- * worked out; findings in a called program are placed in its file with a note per call
- * (Diagnostics.placeIn, E136). docs/program-flow.md.
+ * worked out, and with where it comes from ({@link RawBlock#origin}: a called program's file and
+ * the calls that led to it); findings in a called program are placed there with a note per call
+ * (E136). docs/program-flow.md.
  *
  * <p>Memory: a program without a call is read one line at a time, as before. At the first call
  * the rest of the file is read and held (the called programs are after the main program's end),
@@ -136,7 +137,8 @@ public final class ProgramFlow implements BlockSource {
                 return null;
             }
             int at = f.next++;
-            diags.placeIn(f.origin);
+            b = b.from(f.origin);
+            diags.placeIn(b.origin()); // findings made without an origin of their own belong to it
             boolean again = f.isMain() && at < mainReached;
             if (f.isMain() && !again) {
                 mainReached = at + 1;
@@ -232,7 +234,8 @@ public final class ProgramFlow implements BlockSource {
         MacroLine.Outcome o = MacroLine.run(b, vars, diags, control.blockDelete());
         if (o instanceof MacroLine.Words w) {
             List<Word> words = w.words();
-            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0);
+            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0,
+                    null, 0, b.origin());
         }
         if (spent) {
             return null; // jumps are no longer followed: the program runs on to its end
@@ -340,7 +343,7 @@ public final class ProgramFlow implements BlockSource {
         if (!stack.mayCall(name, at)) {
             return null;
         }
-        Program program = library.find(number, w.p(), at.span());
+        Program program = library.find(number, w.p(), at.span(), caller.origin);
         if (program == null) {
             return null;
         }

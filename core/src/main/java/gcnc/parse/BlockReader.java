@@ -3,6 +3,7 @@ package gcnc.parse;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.diag.Origin;
 import gcnc.diag.Span;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
@@ -75,7 +76,7 @@ public final class BlockReader implements BlockSource {
     private final WaiverComments waivers;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
-        this(in, diagnostics, true, false, false);
+        this(in, diagnostics, true, false, false, Origin.PROGRAM);
     }
 
     /**
@@ -93,23 +94,29 @@ public final class BlockReader implements BlockSource {
      * it stops at the closing '%' as a control does ({@link #tapeEnd}).
      */
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments) {
-        BlockReader r = new BlockReader(in, diagnostics, true, macros, lineComments);
-        r.tape = true;
+        return forControl(in, diagnostics, macros, lineComments, Origin.PROGRAM);
+    }
+
+    /** {@link #forControl(Reader, Diagnostics, boolean, boolean)} for the file {@code origin} names (its waivers' file). */
+    public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments,
+                                         Origin origin) {
+        BlockReader r = new BlockReader(in, diagnostics, true, macros, lineComments, origin);
+        r.tapeEnd = new TapeEnd(r.source, diagnostics);
         return r;
     }
 
     BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath) {
-        this(in, diagnostics, fastPath, false, false);
+        this(in, diagnostics, fastPath, false, false, Origin.PROGRAM);
     }
 
-    BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros, boolean lineComments) {
+    BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros, boolean lineComments,
+                Origin origin) {
         this.source = new LineSource(in);
         this.diagnostics = diagnostics;
         this.fastPath = fastPath;
         this.macros = macros;
         this.lineComments = lineComments;
-        this.waivers = new WaiverComments(diagnostics, lineComments);
-        this.tapeEnd = new TapeEnd(source, diagnostics);
+        this.waivers = new WaiverComments(diagnostics, lineComments, origin.file());
     }
 
     /** The next block, or null at the end of the input (or of the tape: {@link #tapeEnd}). */
@@ -120,7 +127,7 @@ public final class BlockReader implements BlockSource {
             if (mark >= 0 && eofMark == null) {
                 eofMark = Span.of(source.number(), mark + 1);
             }
-            if (tape && !inComment && tapeEnd.betweenTapes()) {
+            if (tapeEnd != null && !inComment && tapeEnd.betweenTapes()) {
                 continue;
             }
             waivers.line(source.chars(), source.length(), source.number());
@@ -131,7 +138,9 @@ public final class BlockReader implements BlockSource {
                     diagnostics.report(Diagnostic.warning(Code.E602_TEXT_AFTER_END_OF_FILE_MARK, eofMark));
                     eofMark = null;
                 }
-                tapeEnd.block();
+                if (tapeEnd != null) {
+                    tapeEnd.block();
+                }
                 return block;
             }
         }
@@ -143,10 +152,8 @@ public final class BlockReader implements BlockSource {
         return null;
     }
 
-    /** Stop at the closing '%' (a control's reading; the grammar's reading goes on). */
-    private boolean tape;
-    /** Where the closing '%' ends the tape ({@link #tape}). */
-    private final TapeEnd tapeEnd;
+    /** Where the closing '%' ends the tape: a control's reading stops there; null: the grammar's reading goes on. */
+    private TapeEnd tapeEnd;
 
     /** Lines read so far (at the end: the number of lines in the input). */
     @Override
@@ -275,18 +282,11 @@ public final class BlockReader implements BlockSource {
         int stop = stream.offset(t.getStopIndex()) + 1;
         char[] buf = source.chars();
         boolean comma = buf[at] == ',';
-        int l = comma ? skipBlanks(buf, at + 1) : at;
+        int l = comma ? SpacedNumbers.skipBlanks(buf, at + 1) : at;
         Letter letter = letter(buf[l]);
         Span span = Span.of(source.number(), at + 1, stop + 1);
         String number = SpacedNumbers.number(letter, buf, at, l + 1, stop, source.number(), diagnostics);
         words.add(comma ? Word.comma(letter, number, span) : new Word(letter, number, span));
-    }
-
-    private static int skipBlanks(char[] buf, int i) {
-        while (buf[i] == ' ' || buf[i] == '\t') {
-            i++;
-        }
-        return i;
     }
 
     /**

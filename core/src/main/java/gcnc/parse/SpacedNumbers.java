@@ -15,6 +15,14 @@ final class SpacedNumbers {
     private SpacedNumbers() {
     }
 
+    /** The index of the first character from {@code i} on that is not a blank (a space or a tab). */
+    static int skipBlanks(char[] buf, int i) {
+        while (buf[i] == ' ' || buf[i] == '\t') {
+            i++;
+        }
+        return i;
+    }
+
     /**
      * The number of a word, {@code buf[from, stop)} after its letter (the word starts at {@code
      * word}, on line {@code line}), without the spaces the control ignores ({@code G 01}, {@code X-
