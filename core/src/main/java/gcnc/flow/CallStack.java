@@ -21,7 +21,9 @@ final class CallStack implements Iterable<Frame> {
     private final int depth;
     private final Diagnostics diags;
 
-    CallStack(MainFile main, int depth, Diagnostics diags) {
+    /** A stack of the main program alone ({@code bottom}, read from {@code main}); at most {@code depth} calls on it. */
+    CallStack(Frame bottom, MainFile main, int depth, Diagnostics diags) {
+        frames.push(bottom);
         this.main = main;
         this.depth = depth;
         this.diags = diags;

@@ -105,9 +105,8 @@ public final class ProgramFlow implements BlockSource {
         this.diags = diags;
         this.library = new Library(folder, diags, holdLimit, control.macros(), control.lineComments());
         this.jumps = new MacroJumps(diags, vars);
-        this.stack = new CallStack(main, control.calls().depth(), diags);
+        this.stack = new CallStack(Frame.main(mainBlocks), main, control.calls().depth(), diags);
         this.afterEnd = new ReachableAfterEnd(codes, diags);
-        stack.push(Frame.main(mainBlocks));
     }
 
     /** Every file beside the program that a call looked for, found or not ({@link Library#lookedFor}). */

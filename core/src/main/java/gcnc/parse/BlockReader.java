@@ -101,7 +101,7 @@ public final class BlockReader implements BlockSource {
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments,
                                          Origin origin) {
         BlockReader r = new BlockReader(in, diagnostics, true, macros, lineComments, origin);
-        r.tapeEnd = new TapeEnd(r.source, diagnostics);
+        r.tapeEnd = new TapeEnd();
         return r;
     }
 
@@ -127,7 +127,7 @@ public final class BlockReader implements BlockSource {
             if (mark >= 0 && eofMark == null) {
                 eofMark = Span.of(source.number(), mark + 1);
             }
-            if (tapeEnd != null && !inComment && tapeEnd.betweenTapes()) {
+            if (tapeEnd != null && !inComment && tapeEnd.betweenTapes(source, diagnostics)) {
                 continue;
             }
             waivers.line(source.chars(), source.length(), source.number());

@@ -5,23 +5,17 @@ import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 
 /**
- * The closing '%' (end of tape), as a Fanuc or Haas control reads it for {@link BlockReader}: a
- * '%' line after the first block ends the tape, and the lines after it are not read until one
- * starts the next program (an O word); anything else there is the note E705, once.
+ * The closing '%' (end of tape), as a Fanuc or Haas control reads it, for {@link BlockReader} (the
+ * line it reads now is given to {@link #betweenTapes}): a '%' line after the first block ends the
+ * tape, and the lines after it are not read until one starts the next program (an O word);
+ * anything else there is the note E705, once.
  */
 final class TapeEnd {
-    private final LineSource source;
-    private final Diagnostics diagnostics;
     /** Blocks handed on so far: a '%' line after the first block is the end of the tape. */
     private int blocks;
     /** The line of the closing '%' while between tapes (0: reading a tape); whether E705 was said since. */
     private int tapeEndLine;
     private boolean skippedNoted;
-
-    TapeEnd(LineSource source, Diagnostics diagnostics) {
-        this.source = source;
-        this.diagnostics = diagnostics;
-    }
 
     /** One more block was handed on. */
     void block() {
@@ -35,8 +29,8 @@ final class TapeEnd {
      * another tape) is read again. Anything else after the mark (a note, a DOS end-of-file byte)
      * is not read: the note E705, once, at its first character (a lone DOS end-of-file byte is silent).
      */
-    boolean betweenTapes() {
-        int at = firstNonBlank();
+    boolean betweenTapes(LineSource source, Diagnostics diagnostics) {
+        int at = firstNonBlank(source);
         char c = at < 0 ? ' ' : source.chars()[at];
         if (tapeEndLine == 0) {
             if (blocks > 0 && c == '%') {
@@ -63,7 +57,7 @@ final class TapeEnd {
      * end-of-file byte (Ctrl-Z) a file sent from Windows ends with counts as a blank here: it is no
      * text, and after the closing '%' it needs no note.
      */
-    private int firstNonBlank() {
+    private static int firstNonBlank(LineSource source) {
         char[] cs = source.chars();
         for (int i = 0; i < source.length(); i++) {
             if (cs[i] != ' ' && cs[i] != '\t' && cs[i] != '\u001a') {
