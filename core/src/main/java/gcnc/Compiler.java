@@ -107,7 +107,7 @@ public final class Compiler {
                                CompileObserver observer) throws IOException {
         Diagnostics diags = new Diagnostics();
         // check does not simulate; a blank in its settings only places the work zero (work.G54 = face)
-        settings = onTheBlank(settings);
+        settings = StockSettings.onTheBlank(settings);
         observer.placed(settings.profile());
         WorkZeroNotes.report(settings.profile(), settings.simulation().flatMap(SimOptions::stock), diags);
         BlockSource reader = blocks(source, settings, diags);
@@ -117,10 +117,9 @@ public final class Compiler {
         long blocks = 0;
         boolean observed = observer != CompileObserver.NONE;
         for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
-            gcnc.diag.Origin from = observed ? diags.place() : null; // where the flow read it (before the check moves on)
             List<CheckedBlock> checked = checker.check(raw);
             if (observed) {
-                observer.block(raw, from, checked, checker.state());
+                observer.block(raw, raw.origin(), checked, checker.state());
             }
             if (each != null) {
                 for (int i = 0; i < checked.size(); i++) {
@@ -157,12 +156,12 @@ public final class Compiler {
     public static Result compile(Reader source, Settings settings, java.util.function.Consumer<Instruction> out,
                                  CompileObserver observer) throws IOException {
         Diagnostics diags = new Diagnostics();
-        java.io.BufferedReader buffered = new java.io.BufferedReader(source, HEADER_PEEK);
+        java.io.BufferedReader buffered = new java.io.BufferedReader(source, StockSettings.HEADER_PEEK);
         // the blank given for the run sets the work zero; a header's blank does not (the program's
         // DMC does not change with its first comment)
-        settings = onTheBlank(settings);
+        settings = StockSettings.onTheBlank(settings);
         Optional<gcnc.sim.StockSize> given = settings.simulation().flatMap(SimOptions::stock);
-        settings = withStockHeader(buffered, settings);
+        settings = StockSettings.withStockHeader(buffered, settings);
         WorkZeroNotes.report(settings.profile(), given, diags);
         observer.placed(settings.profile());
         boolean observed = observer != CompileObserver.NONE;
@@ -199,10 +198,9 @@ public final class Compiler {
             boolean heldJudged = false;
             for (RawBlock raw = reader.next(); raw != null; raw = reader.next()) {
                 blocks++;
-                gcnc.diag.Origin from = observed ? diags.place() : null;
                 List<CheckedBlock> checked = checker.check(raw);
                 if (observed) {
-                    observer.block(raw, from, checked, checker.state());
+                    observer.block(raw, raw.origin(), checked, checker.state());
                 }
                 translate(checked, planner, lower, diags, lines, sim, out, arcs);
                 heldJudged = heldJudged || judgeHeld(planner, diags, arcs);
@@ -337,30 +335,6 @@ public final class Compiler {
                 : gcnc.plan.Planner.forProfile(settings.profile());
     }
 
-    /** The longest first line read for a stock header; the program is read once, from the start. */
-    private static final int HEADER_PEEK = 1 << 16;
-
-    /**
-     * The blank from the program's stock header (an EMCO-style first-line comment, {@code (length
-     * diameter ...)}), when the simulation has none given and the profile reads headers: the same
-     * for the command line, the JUnit fixtures and any other front end. The first line is peeked
-     * at and the program is then read from its start.
-     */
-    private static Settings withStockHeader(java.io.BufferedReader in, Settings settings) throws IOException {
-        if (settings.simulation().isEmpty() || settings.simulation().get().stock().isPresent()) {
-            return settings;
-        }
-        in.mark(HEADER_PEEK);
-        StringBuilder first = new StringBuilder();
-        for (int c = in.read(); c >= 0 && c != '\n' && c != '\r' && first.length() < HEADER_PEEK - 1; c = in.read()) {
-            first.append((char) c);
-        }
-        in.reset();
-        SimOptions o = withStockHeader(first.toString(), settings.profile(), settings.simulation().get());
-        return new Settings(settings.tables(), settings.profile(), settings.dialect(), Optional.of(o),
-                settings.inlineSourceMap(), settings.programs(), settings.exactStop());
-    }
-
     /**
      * {@code options} with the blank of a program's first line if it is a stock header, the
      * options have no blank yet and the profile reads headers ({@code stock.header = use}); else
@@ -375,21 +349,6 @@ public final class Compiler {
         }
         double stickout = profile.model().stock().map(gcnc.machine.MachineModel.Blank::stickout).orElse(0.0);
         return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
-    }
-
-    /**
-     * The machine with the work offsets a shop sets on the blank's face ({@code work.G54 = 0, face})
-     * moved to the face of the blank the simulation is given ({@code --stock D,L,S}): the program's
-     * Z0 is where the operator would have touched off.
-     */
-    static Settings onTheBlank(Settings s) {
-        Optional<gcnc.sim.StockSize> blank = s.simulation().flatMap(SimOptions::stock);
-        if (blank.isEmpty()) {
-            return s;
-        }
-        MachineProfile p = s.profile().withStickout(blank.get().stickout());
-        return p == s.profile() ? s
-                : new Settings(s.tables(), p, s.dialect(), s.simulation(), s.inlineSourceMap(), s.programs(), s.exactStop());
     }
 
     private static void flush(List<Instruction> lines, java.util.function.Consumer<Instruction> out) {

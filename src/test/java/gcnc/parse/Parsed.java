@@ -19,7 +19,8 @@ record Parsed(List<RawBlock> blocks, List<Diagnostic> diagnostics, int lines) {
     /** With {@code lineComments}: as a Haas or Fanuc control reads comments (they end at their line's end). */
     static Parsed of(String source, boolean lineComments) {
         Diagnostics diagnostics = new Diagnostics();
-        BlockReader reader = new BlockReader(new StringReader(source), diagnostics, true, false, lineComments);
+        BlockReader reader = new BlockReader(new StringReader(source), diagnostics, true, false, lineComments,
+                gcnc.diag.Origin.PROGRAM);
         List<RawBlock> blocks = new ArrayList<>();
         try {
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {

@@ -50,6 +50,8 @@ public final class Checker {
     private final RepeatWarnings repeats;
     /** The block delete switch as this checker follows the program: true = '/' blocks are skipped. */
     private final boolean skipDeleted;
+    /** Where the block being checked comes from ({@link RawBlock#origin}): its checked blocks go there. */
+    private gcnc.diag.Origin from = gcnc.diag.Origin.PROGRAM;
     /** The other position of the switch, from the first '/' block on; null before (and in the other itself). */
     private Checker other;
     private final boolean isOther;
@@ -114,6 +116,7 @@ public final class Checker {
      * a G90/G94 block gives its moves.
      */
     public List<CheckedBlock> check(RawBlock b) {
+        from = b.origin();
         List<CheckedBlock> made = checkBlock(b); // first: the state after it is the one released with
         return release.release(b, made, state);
     }
@@ -248,8 +251,8 @@ public final class Checker {
         if (findings.open() && MotionKind.cuts(result)) {
             findings.closeCauses();
         }
-        if (out.place() != gcnc.diag.Origin.PROGRAM) {
-            result = result.from(out.place()); // a called program's block: the simulator places its findings there
+        if (from != gcnc.diag.Origin.PROGRAM) {
+            result = result.from(from); // a called program's block: the simulator places its findings there
         }
         CheckedBlock made = origin == null ? result : origin.label(result);
         release.made(made, b, d.prior, state, origin, thread != null);
@@ -385,6 +388,7 @@ public final class Checker {
 
     /** End of the program: it must have ended (52: M30, or what the control's table says ends one). */
     public void finish(int lastLine) {
+        from = gcnc.diag.Origin.PROGRAM; // past the last block
         corners.finish(lastLine);
         cycles.finish();
         release.finish(lastLine);

@@ -1,8 +1,5 @@
 package gcnc.diag;
 
-import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.Collections;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -29,9 +26,10 @@ import java.util.Set;
  * but not kept. At most {@link #OTHER_CAP} warnings and notes are kept; past it a note E681 says
  * so, once. (docs/program-flow.md, "Caps and folding".)
  *
- * <p>Placing: the stage that follows the program's flow says where the blocks it hands on come
- * from ({@link #placeIn}); a finding reported without an origin of its own is put there (the
- * program file as written, unless said otherwise). A finding
+ * <p>Placing: a block says where it comes from ({@code RawBlock.origin}); the stage that follows
+ * the program's flow, and the one that reads a called program's file, say so here too ({@link
+ * #placeIn}): a finding reported without an origin of its own is put there (the program file as
+ * written, unless said otherwise). A finding
  * inside a subprogram gets one note per call that led to it (E136), and is reported once even when
  * the subprogram runs again (a repeat or a second call finds the same thing at the same place).
  */
@@ -41,25 +39,12 @@ public final class Diagnostics {
     /** The most warnings and notes a run keeps (E681 past it). */
     public static final int OTHER_CAP = 10_000;
 
-    private final List<Diagnostic> all = new ArrayList<>();
-    /** How many times each kept finding was found (1: once); parallel to {@link #all}. */
-    private int[] counts = new int[16];
+    /** The findings kept, each with how often it was found. */
+    private final KeptFindings all = new KeptFindings();
     /** Where each kept error or warning is in {@link #all}, by code, severity, file and place. */
     private final Map<String, Integer> byPlace = new HashMap<>();
     /** Where each kept warning is in {@link #all}, by code, file and arguments (not place): a repeat elsewhere is folded. */
     private final Map<String, Integer> warningByArgs = new HashMap<>();
-    /** For a kept warning repeated elsewhere: how many later places, and their lines (the first few). */
-    private final Map<Integer, Later> later = new HashMap<>();
-
-    /** The later places of a folded warning, as E115 lists them. */
-    private static final class Later {
-        int count;
-        final StringBuilder lines = new StringBuilder();
-    }
-
-    /** The most lines E115 lists for a folded warning; past it "...". */
-    static final int LATER_LINES = 10;
-
     /** Notes kept, exactly (code, file, place, text): a note is never repeated. */
     private final Set<String> notes = new HashSet<>();
     /** The last error or warning reported: the index in {@link #all} of it or of the one it was folded into; -1 past a cap. */
@@ -102,11 +87,6 @@ public final class Diagnostics {
     /** From now on, findings reported without an origin of their own belong to {@code origin}. */
     public void placeIn(Origin origin) {
         place.origin = java.util.Objects.requireNonNull(origin);
-    }
-
-    /** Where findings reported without an origin of their own are put now (the program file if nobody said). */
-    public Origin place() {
-        return place.origin == null ? Origin.PROGRAM : place.origin;
     }
 
     public void report(Diagnostic d) {
@@ -159,7 +139,7 @@ public final class Diagnostics {
         Integer at = byPlace.get(key);
         lastSpan = d.span();
         if (at != null) {
-            counts[at]++;
+            all.count(at, 1);
             last = at;
             lastNotKept = true;
             return false;
@@ -177,7 +157,7 @@ public final class Diagnostics {
             return false;
         }
         lastNotKept = false;
-        last = keep(d);
+        last = all.keep(d);
         byPlace.put(key, last);
         if (d.severity() == Severity.WARNING) {
             warningByArgs.putIfAbsent(argsKey(d), last);
@@ -200,13 +180,7 @@ public final class Diagnostics {
         if (at == null) {
             return false;
         }
-        Later l = later.computeIfAbsent(at, k -> new Later());
-        l.count++;
-        if (l.count <= LATER_LINES) {
-            l.lines.append(l.lines.length() == 0 ? "" : ", ").append(d.span().line());
-        } else if (l.count == LATER_LINES + 1) {
-            l.lines.append(", ...");
-        }
+        all.laterAt(at, d.span().line());
         last = at;
         lastNotKept = true;
         lastSpan = d.span();
@@ -221,7 +195,7 @@ public final class Diagnostics {
     private boolean addNote(Diagnostic d) {
         if (d.code() == Code.E680_FOLDED) {
             if (last >= 0) {
-                counts[last] += Integer.parseInt(d.args().get(0)) - 1;
+                all.count(last, Integer.parseInt(d.args().get(0)) - 1);
             }
             return false;
         }
@@ -232,7 +206,7 @@ public final class Diagnostics {
             return false;
         }
         others++;
-        keep(d);
+        all.keep(d);
         return true;
     }
 
@@ -249,7 +223,7 @@ public final class Diagnostics {
         if (!errorCapReached) {
             errorCapReached = true;
             keptErrors++;
-            keep(new Diagnostic(Code.E116_ERROR_CAP, Severity.ERROR, d.span(), List.of(Integer.toString(ERROR_CAP)),
+            all.keep(new Diagnostic(Code.E116_ERROR_CAP, Severity.ERROR, d.span(), List.of(Integer.toString(ERROR_CAP)),
                     d.origin()));
         }
         return false;
@@ -262,19 +236,10 @@ public final class Diagnostics {
         }
         if (!otherCapReached) {
             otherCapReached = true;
-            keep(new Diagnostic(Code.E681_OTHER_CAP, Severity.NOTE, d.span(), List.of(Integer.toString(OTHER_CAP)),
+            all.keep(new Diagnostic(Code.E681_OTHER_CAP, Severity.NOTE, d.span(), List.of(Integer.toString(OTHER_CAP)),
                     d.origin()));
         }
         return false;
-    }
-
-    private int keep(Diagnostic d) {
-        if (all.size() == counts.length) {
-            counts = Arrays.copyOf(counts, counts.length * 2);
-        }
-        counts[all.size()] = 1;
-        all.add(d);
-        return all.size() - 1;
     }
 
     /**
@@ -282,7 +247,8 @@ public final class Diagnostics {
      * placed in a called program gets its notes here, once per place, as the checker's do.
      */
     public void addAll(Diagnostics other) {
-        for (Diagnostic d : other.all) {
+        for (int k = 0; k < other.all.size(); k++) {
+            Diagnostic d = other.all.get(k);
             if (d.origin() != Origin.UNPLACED && !d.origin().calls().isEmpty()) {
                 withCalls(d);
             } else {
@@ -301,29 +267,7 @@ public final class Diagnostics {
      */
     public void withdraw(java.util.function.Predicate<Diagnostic> which) {
         // the counts, the folded repeats and the indexes by place follow the findings that stay
-        int[] moved = new int[all.size()];
-        List<Diagnostic> kept = new ArrayList<>(all.size());
-        int[] keptCounts = new int[counts.length];
-        Map<Integer, Later> keptLater = new HashMap<>();
-        for (int k = 0; k < all.size(); k++) {
-            Diagnostic d = all.get(k);
-            if (d.severity() != Severity.ERROR && which.test(d)) {
-                moved[k] = -1;
-                continue;
-            }
-            moved[k] = kept.size();
-            keptCounts[kept.size()] = counts[k];
-            Later l = later.get(k);
-            if (l != null) {
-                keptLater.put(kept.size(), l);
-            }
-            kept.add(d);
-        }
-        all.clear();
-        all.addAll(kept);
-        counts = keptCounts;
-        later.clear();
-        later.putAll(keptLater);
+        int[] moved = all.withdraw(which);
         for (Map<String, Integer> index : List.of(byPlace, warningByArgs)) {
             index.replaceAll((key, at) -> moved[at]);
             index.values().removeIf(at -> at < 0);
@@ -413,7 +357,6 @@ public final class Diagnostics {
         all.clear();
         byPlace.clear();
         warningByArgs.clear();
-        later.clear();
         notes.clear();
         last = -1;
         lastNotKept = false;
@@ -451,29 +394,6 @@ public final class Diagnostics {
      * each found more than once followed by its count (E680).
      */
     public List<Diagnostic> sorted() {
-        List<Diagnostic> copy = new ArrayList<>(all.size());
-        Diagnostic count = null; // the E680 of the last finding, after the notes that go with it
-        for (int k = 0; k < all.size(); k++) {
-            Diagnostic d = all.get(k);
-            if (count != null && (d.severity() != Severity.NOTE || !d.span().equals(count.span()))) {
-                copy.add(count);
-                count = null;
-            }
-            copy.add(d);
-            Later l = later.get(k);
-            if (l != null) {
-                copy.add(new Diagnostic(Code.E115_SAME_CAUSE, Severity.NOTE, d.span(),
-                        List.of(Integer.toString(l.count), l.lines.toString()), d.origin().withoutCalls()));
-            }
-            if (counts[k] > 1) {
-                count = new Diagnostic(Code.E680_FOLDED, Severity.NOTE, d.span(),
-                        List.of(Integer.toString(counts[k])), d.origin().withoutCalls());
-            }
-        }
-        if (count != null) {
-            copy.add(count);
-        }
-        Collections.sort(copy);
-        return Collections.unmodifiableList(copy);
+        return all.sorted();
     }
 }

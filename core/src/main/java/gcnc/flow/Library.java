@@ -76,10 +76,10 @@ public final class Library {
      * The program a call names, or null after reporting why there is none: not in the file nor
      * beside it (E130, E131 at {@code at}), too long to hold (E137), or unreadable (E500).
      */
-    Program find(long number, Word at, Span call) throws IOException {
+    Program find(long number, Word at, Span call, Origin caller) throws IOException {
         Program p = number >= 0 && number <= Integer.MAX_VALUE ? programs.get((int) number) : null;
         if (p == null && folder.isPresent() && number >= 0 && number <= 99_999 && !missing.contains((int) number)) {
-            p = beside((int) number, call);
+            p = beside((int) number, call, caller);
             if (p == null && !missing.contains((int) number)) {
                 return null; // reported while reading
             }
@@ -98,14 +98,14 @@ public final class Library {
     }
 
     /** The file beside the program named after {@code number}, read whole; null if there is none (or after E137, E500). */
-    private Program beside(int number, Span call) throws IOException {
+    private Program beside(int number, Span call, Origin caller) throws IOException {
         Path dir = folder.get();
         for (String name : names(number)) {
             lookedFor.add(dir.resolve(name));
         }
         java.util.Optional<Path> found = fileFor(dir, number);
         if (found.isPresent()) {
-            return read(number, found.get(), call);
+            return read(number, found.get(), call, caller);
         }
         for (String name : names(number)) {
             Path file = dir.resolve(name);
@@ -119,14 +119,17 @@ public final class Library {
         return null;
     }
 
-    private Program read(int number, Path file, Span call) {
+    /**
+     * The program in {@code file}, read whole: the parser's findings are placed in that file, and
+     * then again where the caller's blocks come from ({@code caller}).
+     */
+    private Program read(int number, Path file, Span call, Origin caller) {
         String shown = file.toString();
         List<RawBlock> blocks = new ArrayList<>();
         Span start = Span.of(1, 1);
-        Origin caller = diags.place();
         diags.placeIn(Origin.file(shown));
         try (Reader in = new gcnc.parse.BoundedReader(open(file), diags, Origin.file(shown))) {
-            BlockReader reader = BlockReader.forControl(in, diags, macros, lineComments);
+            BlockReader reader = BlockReader.forControl(in, diags, macros, lineComments, Origin.file(shown));
             for (RawBlock b = reader.next(); b != null; b = reader.next()) {
                 if (held + blocks.size() >= limit) {
                     diags.placeIn(caller);

@@ -177,16 +177,14 @@ final class MacroLine extends MacroExpression {
         }
         int start = i;
         if (keyword("GOTO")) {
-            long label = whole(expr(), start);
-            return end(new Jump(label, true, span(start), text(start)));
+            return goTo(start, true, start);
         }
         if (keyword("IF")) {
             boolean holds = bracketedCondition();
             blank();
             int then = i;
             if (keyword("GOTO")) {
-                long label = whole(expr(), then);
-                return end(new Jump(label, holds, span(start), text(start)));
+                return goTo(then, holds, start);
             }
             if (keyword("THEN")) {
                 if (holds) {
@@ -215,6 +213,15 @@ final class MacroLine extends MacroExpression {
             return DONE;
         }
         return words(n);
+    }
+
+    /**
+     * The rest of a GOTO (its label, from {@code from}; {@code holds}: whether an IF before it holds)
+     * as the jump of the statement that starts at {@code start}.
+     */
+    private Outcome goTo(int from, boolean holds, int start) throws Fault {
+        long label = whole(expr(), from);
+        return end(new Jump(label, holds, span(start), text(start)));
     }
 
     /** {@code #n = expr}; {@code #3000 = n (text)} is the program's alarm (E148). */

@@ -11,12 +11,9 @@ import gcnc.machine.MRole;
 import gcnc.parse.BlockSource;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.BitSet;
 import java.util.HashSet;
-import java.util.Deque;
-import java.util.Iterator;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
@@ -27,8 +24,9 @@ import java.util.Set;
  * number) and returns (M99), and running Fanuc macro B statements (variables, expressions,
  * GOTO, IF, WHILE; {@link MacroLine}). The checker is handed each block once per time it runs,
  * without its flow words (M98 P L, M99), at its call depth, with the values of its macro words
- * worked out; findings in a called program are placed in its file with a note per call
- * (Diagnostics.placeIn, E136). docs/program-flow.md.
+ * worked out, and with where it comes from ({@link RawBlock#origin}: a called program's file and
+ * the calls that led to it); findings in a called program are placed there with a note per call
+ * (E136). docs/program-flow.md.
  *
  * <p>Memory: a program without a call is read one line at a time, as before. At the first call
  * the rest of the file is read and held (the called programs are after the main program's end),
@@ -60,9 +58,6 @@ public final class ProgramFlow implements BlockSource {
      * from two nested WHILEs).
      */
     public static final int STEP_LIMIT = 5_000_000;
-    /** The largest repeat count (L, or the leading digits of a Fanuc P): four digits. */
-    private static final int MAX_REPEAT = 9999;
-
     private final MainFile main;
     private final MainBlocks mainBlocks;
     private final Control control;
@@ -71,15 +66,13 @@ public final class ProgramFlow implements BlockSource {
     private final Library library;
     private final Variables vars = new Variables();
     /** The programs being run, innermost first; the main program at the bottom. */
-    private final Deque<Frame> stack = new ArrayDeque<>();
+    private final CallStack stack;
     /** The programs (file and name) already reported for ending without M99 (E140). */
     private final Set<String> reportedNoM99 = new HashSet<>();
     /** The main program's blocks that an M97 call ran (a local subprogram after M30 is not "after the end"). */
     private final BitSet ranLocally = new BitSet();
-    /** The labels a GOTO (taken or not) or an M97 names: a stretch after M30 from one of them can be reached. */
-    private final BitSet named = new BitSet();
-    /** After the main program's end: in a stretch from a named label to the next end code (M30, M02, M99). */
-    private boolean inReachable;
+    /** The blocks after the main program's end that a GOTO's or an M97's label can reach. */
+    private final ReachableAfterEnd afterEnd;
     private final MacroJumps jumps;
     /** The first call read the rest of the file into the library. */
     private boolean libraryRead;
@@ -112,7 +105,8 @@ public final class ProgramFlow implements BlockSource {
         this.diags = diags;
         this.library = new Library(folder, diags, holdLimit, control.macros(), control.lineComments());
         this.jumps = new MacroJumps(diags, vars);
-        stack.push(Frame.main(mainBlocks));
+        this.stack = new CallStack(Frame.main(mainBlocks), main, control.calls().depth(), diags);
+        this.afterEnd = new ReachableAfterEnd(codes, diags);
     }
 
     /** Every file beside the program that a call looked for, found or not ({@link Library#lookedFor}). */
@@ -142,7 +136,8 @@ public final class ProgramFlow implements BlockSource {
                 return null;
             }
             int at = f.next++;
-            diags.placeIn(f.origin);
+            b = b.from(f.origin);
+            diags.placeIn(b.origin()); // findings made without an origin of their own belong to it
             boolean again = f.isMain() && at < mainReached;
             if (f.isMain() && !again) {
                 mainReached = at + 1;
@@ -159,7 +154,7 @@ public final class ProgramFlow implements BlockSource {
                     diags.error(Code.E137_TOO_LONG_TO_HOLD, b.last(), mainBlocks.limit());
                 }
                 if (finished) {
-                    if (ranLocally.get(at) || reachable(b)) {
+                    if (ranLocally.get(at) || afterEnd.reachable(b)) {
                         continue; // an M97 local subprogram or a GOTO's label after M30: not "after the end"
                     }
                     return b; // after the end: never run (the checker reports it, E053); its calls are not followed
@@ -231,38 +226,6 @@ public final class ProgramFlow implements BlockSource {
         return steps;
     }
 
-    /** N numbers go up to 9999999 (the checker's E009 past it): a computed GOTO cannot grow the set past that. */
-    private static final long MAX_LABEL = 10_000_000;
-
-    /** A label a GOTO or M97 names (a bit each: a loop of computed GOTOs holds no more than 1.25 MB). */
-    private void name(long label) {
-        if (label >= 0 && label < MAX_LABEL) {
-            named.set((int) label);
-        }
-    }
-
-    /**
-     * Whether a block after the main program's end can be reached from a GOTO or M97 that names its
-     * label (or one before it in the same stretch, up to an end code), though this run did not go
-     * there: such a block is not "after the end"; it is only parsed, and a note says so (E138).
-     */
-    private boolean reachable(RawBlock b) {
-        long label = MacroJumps.label(b);
-        if (!inReachable && label >= 0 && label < MAX_LABEL && named.get((int) label)) {
-            inReachable = true;
-            diags.report(new Diagnostic(Code.E138_NEVER_CALLED, gcnc.diag.Severity.NOTE,
-                    b.words().isEmpty() ? b.last() : b.words().get(0).span(), List.of("N" + label), Origin.PROGRAM));
-        }
-        if (!inReachable) {
-            return false;
-        }
-        boolean ends = b.macro() != null ? codes.endsText(b.macro()) : (codes.scan(b.words()) & FlowCodes.END) != 0;
-        if (ends) {
-            inReachable = false;
-        }
-        return true;
-    }
-
     // ---- macro statements ----
 
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
@@ -270,13 +233,14 @@ public final class ProgramFlow implements BlockSource {
         MacroLine.Outcome o = MacroLine.run(b, vars, diags, control.blockDelete());
         if (o instanceof MacroLine.Words w) {
             List<Word> words = w.words();
-            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0);
+            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0,
+                    null, 0, b.origin());
         }
         if (spent) {
             return null; // jumps are no longer followed: the program runs on to its end
         }
         if (o instanceof MacroLine.Jump j) {
-            name(j.label());
+            afterEnd.name(j.label());
             if (j.taken()) {
                 jumps.goTo(f, j, at);
             }
@@ -359,37 +323,11 @@ public final class ProgramFlow implements BlockSource {
     /** The frame an M98 starts, or null after reporting why it does not run. */
     private Frame call(RawBlock b, FlowWords w, Frame caller) throws IOException {
         Word at = w.flow();
-        if (w.p() == null) {
-            diags.error(Code.E132_CALL_WITHOUT_P, at.span(), at);
+        CallTarget target = CallTarget.program(w, control.calls().countInP(), diags);
+        if (target == null) {
             return null;
         }
-        long p = FlowWords.digits(w.p().number());
-        if (p < 0) {
-            diags.error(Code.E130_NO_PROGRAM_HERE, w.p().span(), w.p().number());
-            return null;
-        }
-        long number = p;
-        long repeats = 1;
-        boolean countInP = control.calls().countInP() && w.p().number().length() > 4;
-        if (countInP) {
-            number = p % 10_000;
-            repeats = p / 10_000 == 0 ? 1 : p / 10_000;
-            if (repeats > MAX_REPEAT) {
-                diags.error(Code.E135_BAD_REPEAT_COUNT, w.p().span(), w.p());
-                return null;
-            }
-        }
-        if (w.l() != null) {
-            if (countInP && p / 10_000 > 0) {
-                diags.error(Code.E143_TWO_REPEAT_COUNTS, w.l().span(), w.written());
-                return null;
-            }
-            repeats = FlowWords.digits(w.l().number());
-            if (repeats < 1 || repeats > MAX_REPEAT) {
-                diags.error(Code.E135_BAD_REPEAT_COUNT, w.l().span(), w.l());
-                return null;
-            }
-        }
+        long number = target.number();
         if (!libraryRead && !callsOff) {
             libraryRead = true;
             if (!main.readAll(library.room(), library::add)) {
@@ -401,15 +339,15 @@ public final class ProgramFlow implements BlockSource {
             return null;
         }
         String name = "O" + Program.name(number);
-        if (!mayCall(name, at)) {
+        if (!stack.mayCall(name, at)) {
             return null;
         }
-        Program program = library.find(number, w.p(), at.span());
+        Program program = library.find(number, w.p(), at.span(), caller.origin);
         if (program == null) {
             return null;
         }
         return new Frame(program, "O" + program.name(), program.file(), program.start(), 0,
-                calledFrom(caller, "O" + program.name(), program.file(), b, w), (int) repeats);
+                calledFrom(caller, "O" + program.name(), program.file(), b, w), target.repeats());
     }
 
     /**
@@ -419,27 +357,13 @@ public final class ProgramFlow implements BlockSource {
      */
     private Frame localCall(RawBlock b, FlowWords w, Frame caller) throws IOException {
         Word at = w.flow();
-        if (w.p() == null) {
-            diags.error(Code.E132_CALL_WITHOUT_P, at.span(), at);
+        CallTarget called = CallTarget.label(w, diags);
+        String name = called == null ? null : "N" + w.p().number();
+        if (called == null || !stack.mayCall(name, at)) {
             return null;
         }
-        long label = FlowWords.digits(w.p().number());
-        long repeats = 1;
-        if (w.l() != null) {
-            repeats = FlowWords.digits(w.l().number());
-            if (repeats < 1 || repeats > MAX_REPEAT) {
-                diags.error(Code.E135_BAD_REPEAT_COUNT, w.l().span(), w.l());
-                return null;
-            }
-        }
-        String name = "N" + w.p().number();
-        if (label < 0 || !mayCall(name, at)) {
-            if (label < 0) {
-                diags.error(Code.E013_INTEGER_EXPECTED, w.p().span(), "P");
-            }
-            return null;
-        }
-        name(label);
+        long label = called.number();
+        afterEnd.name(label);
         if (caller.blocks == mainBlocks) {
             mainBlocks.hold();
         }
@@ -451,54 +375,7 @@ public final class ProgramFlow implements BlockSource {
         RawBlock first = caller.blocks.get(target);
         gcnc.diag.Span start = first.words().isEmpty() ? first.last() : first.words().get(0).span();
         return new Frame(caller.blocks, name, caller.file, start, target,
-                calledFrom(caller, name, caller.file, b, w), (int) repeats);
-    }
-
-    /** Whether one more call to {@code name} may be made: not recursive (E133), not too deep (E134). */
-    private boolean mayCall(String name, Word at) {
-        String chain = recursion(name);
-        if (chain != null) {
-            diags.error(Code.E133_RECURSIVE_CALL, at.span(), name, chain);
-            return false;
-        }
-        if (stack.size() - 1 >= control.calls().depth()) {
-            diags.error(Code.E134_CALLS_TOO_DEEP, at.span(), control.calls().depth(), path(name));
-            return false;
-        }
-        return true;
-    }
-
-    /** The chain of calls that comes back to {@code name} ("O1000 > O2000 > O1000"), or null. */
-    private String recursion(String name) {
-        List<String> names = running();
-        if (main.number() >= 0) {
-            names.add(0, "O" + Program.name(main.number()));
-        }
-        int from = names.indexOf(name);
-        if (from < 0) {
-            return null;
-        }
-        names.add(name);
-        return String.join(" > ", names.subList(from, names.size()));
-    }
-
-    /** The calls in progress and the one asked for: "O1000 > O2000 > ... > O5000". */
-    private String path(String name) {
-        List<String> names = running();
-        names.add(name);
-        return String.join(" > ", names);
-    }
-
-    /** The names of the calls in progress, outermost first. */
-    private List<String> running() {
-        List<String> names = new ArrayList<>();
-        for (Iterator<Frame> i = stack.descendingIterator(); i.hasNext(); ) {
-            Frame f = i.next();
-            if (!f.isMain()) {
-                names.add(f.name);
-            }
-        }
-        return names;
+                calledFrom(caller, name, caller.file, b, w), called.repeats());
     }
 
     /** Where a called program's findings go: its file, and this call before the caller's. */

@@ -1,5 +1,6 @@
 package gcnc.ir;
 
+import gcnc.diag.Origin;
 import gcnc.diag.Span;
 import java.util.List;
 
@@ -17,12 +18,15 @@ import java.util.List;
  * hands the checker the words it comes to, never the statement. {@code deleteColumn} is the column
  * of a block delete '/' in the middle of the block (Haas, Fanuc: with the switch on, the block runs
  * up to it and the rest is skipped), 0 when the '/' (if any) marks the whole block; its level is
- * {@code blockDelete}.
+ * {@code blockDelete}. {@code origin} is where the block comes from: the file it was read from
+ * ({@link Origin#PROGRAM}: the program's own) and, as gcnc.flow hands it on, the calls that led to
+ * it; the checker and the later stages place the block's findings there (E136).
  */
 public record RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete, int depth,
-                       String macro, int deleteColumn) {
+                       String macro, int deleteColumn, Origin origin) {
     public RawBlock {
         words = List.copyOf(words);
+        java.util.Objects.requireNonNull(origin);
         if (blockDelete < 0 || blockDelete > 9) {
             throw new IllegalArgumentException("block delete level is 0-9: " + blockDelete);
         }
@@ -32,6 +36,12 @@ public record RawBlock(int line, List<Word> words, Span last, boolean malformed,
         if (deleteColumn < 0 || deleteColumn > 0 && blockDelete == 0) {
             throw new IllegalArgumentException("a mid-block '/' has a column and a level: " + deleteColumn);
         }
+    }
+
+    /** A block of the program's own file. */
+    public RawBlock(int line, List<Word> words, Span last, boolean malformed, int blockDelete, int depth,
+                    String macro, int deleteColumn) {
+        this(line, words, last, malformed, blockDelete, depth, macro, deleteColumn, Origin.PROGRAM);
     }
 
     /** A block whose '/' (if any) marks the whole block. */
@@ -47,7 +57,7 @@ public record RawBlock(int line, List<Word> words, Span last, boolean malformed,
     public RawBlock beforeDelete() {
         List<Word> kept = words.stream().filter(w -> w.span().column() < deleteColumn).toList();
         return kept.isEmpty() ? null : new RawBlock(line, kept, kept.get(kept.size() - 1).span(), malformed, 0, depth,
-                macro, 0);
+                macro, 0, origin);
     }
 
     /** A block of words. */
@@ -72,6 +82,12 @@ public record RawBlock(int line, List<Word> words, Span last, boolean malformed,
 
     /** The same block run {@code depth} calls deep, with {@code words} only (the flow words taken out, or a macro line's words). */
     public RawBlock called(List<Word> words, Span last, int depth) {
-        return new RawBlock(line, words, last, malformed, blockDelete, depth, null, deleteColumn);
+        return new RawBlock(line, words, last, malformed, blockDelete, depth, null, deleteColumn, origin);
+    }
+
+    /** The same block coming from {@code origin} (this one when it already does). */
+    public RawBlock from(Origin origin) {
+        return origin == this.origin ? this
+                : new RawBlock(line, words, last, malformed, blockDelete, depth, macro, deleteColumn, origin);
     }
 }

@@ -3,6 +3,7 @@ package gcnc.parse;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
+import gcnc.diag.Origin;
 import gcnc.diag.Span;
 import gcnc.ir.Letter;
 import gcnc.ir.RawBlock;
@@ -71,9 +72,11 @@ public final class BlockReader implements BlockSource {
     private int blockDelete;
     /** The column of the current line's '/' when it stands in the middle of the block, else 0. */
     private int deleteColumn;
+    /** The shop's waivers in the comments, {@code (GCNC ALLOW E642: reason)}, handed to the run's {@link gcnc.diag.Waivers}. */
+    private final WaiverComments waivers;
 
     public BlockReader(Reader in, Diagnostics diagnostics) {
-        this(in, diagnostics, true, false, false);
+        this(in, diagnostics, true, false, false, Origin.PROGRAM);
     }
 
     /**
@@ -91,26 +94,30 @@ public final class BlockReader implements BlockSource {
      * it stops at the closing '%' as a control does ({@link #tapeEnd}).
      */
     public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments) {
-        BlockReader r = new BlockReader(in, diagnostics, true, macros, lineComments);
-        r.tape = true;
+        return forControl(in, diagnostics, macros, lineComments, Origin.PROGRAM);
+    }
+
+    /** {@link #forControl(Reader, Diagnostics, boolean, boolean)} for the file {@code origin} names (its waivers' file). */
+    public static BlockReader forControl(Reader in, Diagnostics diagnostics, boolean macros, boolean lineComments,
+                                         Origin origin) {
+        BlockReader r = new BlockReader(in, diagnostics, true, macros, lineComments, origin);
+        r.tapeEnd = new TapeEnd();
         return r;
     }
 
     BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath) {
-        this(in, diagnostics, fastPath, false, false);
+        this(in, diagnostics, fastPath, false, false, Origin.PROGRAM);
     }
 
-    BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros, boolean lineComments) {
+    BlockReader(Reader in, Diagnostics diagnostics, boolean fastPath, boolean macros, boolean lineComments,
+                Origin origin) {
         this.source = new LineSource(in);
         this.diagnostics = diagnostics;
         this.fastPath = fastPath;
         this.macros = macros;
         this.lineComments = lineComments;
-        this.waivers = new WaiverComments(diagnostics, lineComments);
+        this.waivers = new WaiverComments(diagnostics, lineComments, origin.file());
     }
-
-    /** The shop's waivers in the comments, {@code (GCNC ALLOW E642: reason)}, handed to the run's {@link gcnc.diag.Waivers}. */
-    private final WaiverComments waivers;
 
     /** The next block, or null at the end of the input (or of the tape: {@link #tapeEnd}). */
     @Override
@@ -120,7 +127,7 @@ public final class BlockReader implements BlockSource {
             if (mark >= 0 && eofMark == null) {
                 eofMark = Span.of(source.number(), mark + 1);
             }
-            if (tape && !inComment && betweenTapes()) {
+            if (tapeEnd != null && !inComment && tapeEnd.betweenTapes(source, diagnostics)) {
                 continue;
             }
             waivers.line(source.chars(), source.length(), source.number());
@@ -131,7 +138,9 @@ public final class BlockReader implements BlockSource {
                     diagnostics.report(Diagnostic.warning(Code.E602_TEXT_AFTER_END_OF_FILE_MARK, eofMark));
                     eofMark = null;
                 }
-                blocks++;
+                if (tapeEnd != null) {
+                    tapeEnd.block();
+                }
                 return block;
             }
         }
@@ -143,58 +152,8 @@ public final class BlockReader implements BlockSource {
         return null;
     }
 
-    /** Blocks handed on so far: a '%' line after the first block is the end of the tape. */
-    private int blocks;
-    /** Stop at the closing '%' (a control's reading; the grammar's reading goes on). */
-    private boolean tape;
-    /** The line of the closing '%' while between tapes (0: reading a tape); whether E705 was said since. */
-    private int tapeEndLine;
-    private boolean skippedNoted;
-
-    /**
-     * The closing '%' (end of tape): a Fanuc or Haas control stops reading there. Whether the
-     * current line is that mark or a line after it before the next program: a line starting with
-     * an O word ({@code O2000}, {@code :2000}; a file holding several programs, or a '%' opening
-     * another tape) is read again. Anything else after the mark (a note, a DOS end-of-file byte)
-     * is not read: the note E705, once, at its first character (a lone DOS end-of-file byte is silent).
-     */
-    private boolean betweenTapes() {
-        int at = firstNonBlank();
-        char c = at < 0 ? ' ' : source.chars()[at];
-        if (tapeEndLine == 0) {
-            if (blocks > 0 && c == '%') {
-                tapeEndLine = source.number();
-                skippedNoted = false;
-                return true;
-            }
-            return false;
-        }
-        if ((c == 'O' || c == 'o' || c == ':') && at + 1 < source.length() && Character.isDigit(source.chars()[at + 1])) {
-            tapeEndLine = 0;
-            return false;
-        }
-        if (at >= 0 && c != '%' && !skippedNoted) {
-            skippedNoted = true;
-            diagnostics.report(new gcnc.diag.Diagnostic(Code.E705_AFTER_TAPE_END, gcnc.diag.Severity.NOTE,
-                    Span.of(source.number(), at + 1), java.util.List.of(Integer.toString(tapeEndLine))));
-        }
-        return true;
-    }
-
-    /**
-     * The index of the current line's first character that is not a blank, or -1. The DOS
-     * end-of-file byte (Ctrl-Z) a file sent from Windows ends with counts as a blank here: it is no
-     * text, and after the closing '%' it needs no note.
-     */
-    private int firstNonBlank() {
-        char[] cs = source.chars();
-        for (int i = 0; i < source.length(); i++) {
-            if (cs[i] != ' ' && cs[i] != '\t' && cs[i] != '\u001a') {
-                return i;
-            }
-        }
-        return -1;
-    }
+    /** Where the closing '%' ends the tape: a control's reading stops there; null: the grammar's reading goes on. */
+    private TapeEnd tapeEnd;
 
     /** Lines read so far (at the end: the number of lines in the input). */
     @Override
@@ -255,27 +214,11 @@ public final class BlockReader implements BlockSource {
         int end = source.length();
         char[] fixed = java.util.Arrays.copyOf(source.chars(), end);
         Slips.Slip s = Slips.find(fixed, end, open, errorAt.column() - 1);
-        if (s != null && readsCleanly(fixed, end, open)) {
+        if (s != null && Slips.readsCleanly(lexer, probe, fixed, end, open)) {
             errorAt = Span.of(source.number(), s.at() + 1);
             errorCode = s.code();
             errorArgs = new Object[] {s.written(), s.meant()};
         }
-    }
-
-    /** Whether the lexer finds no error token in {@code text[0, end)} (the grammar's verdict on a fixed line). */
-    private boolean readsCleanly(char[] text, int end, boolean open) {
-        probe.reset(text, 0, end, open);
-        lexer.setInputStream(probe);
-        for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
-            switch (t.getType()) {
-                case GCodeLexer.BARE_LETTER, GCodeLexer.TEXT, GCodeLexer.NOT_INTEGER, GCodeLexer.BAD_NUMBER,
-                        GCodeLexer.MACRO, GCodeLexer.STRAY, GCodeLexer.ILLEGAL, GCodeLexer.NESTED_COMMENT -> {
-                    return false;
-                }
-                default -> { }
-            }
-        }
-        return true;
     }
 
     /**
@@ -339,52 +282,11 @@ public final class BlockReader implements BlockSource {
         int stop = stream.offset(t.getStopIndex()) + 1;
         char[] buf = source.chars();
         boolean comma = buf[at] == ',';
-        int l = comma ? skipBlanks(buf, at + 1) : at;
+        int l = comma ? SpacedNumbers.skipBlanks(buf, at + 1) : at;
         Letter letter = letter(buf[l]);
         Span span = Span.of(source.number(), at + 1, stop + 1);
-        String number = number(letter, buf, at, l + 1, stop);
+        String number = SpacedNumbers.number(letter, buf, at, l + 1, stop, source.number(), diagnostics);
         words.add(comma ? Word.comma(letter, number, span) : new Word(letter, number, span));
-    }
-
-    private static int skipBlanks(char[] buf, int i) {
-        while (buf[i] == ' ' || buf[i] == '\t') {
-            i++;
-        }
-        return i;
-    }
-
-    /**
-     * The number of a word, {@code buf[from, stop)} after its letter, without the spaces the
-     * control ignores ({@code G 01}, {@code X- 2.5}, {@code T1 01}). A space between two characters
-     * of the number itself ({@code X10 5} = X105) is warned about (E600), as it may be a lost
-     * letter, except in a T word: {@code T1 01} (tool 1, offset 01) is how shops write a tool change.
-     */
-    private String number(Letter letter, char[] buf, int word, int from, int stop) {
-        StringBuilder sb = null;
-        int split = -1;
-        for (int i = from; i < stop; i++) {
-            char c = buf[i];
-            if (c == ' ' || c == '\t') {
-                if (sb == null) {
-                    sb = new StringBuilder(stop - from).append(buf, from, i - from);
-                }
-                char before = sb.length() > 0 ? sb.charAt(sb.length() - 1) : ' ';
-                if (split < 0 && (Character.isDigit(before) || before == '.')) {
-                    split = i;
-                }
-            } else if (sb != null) {
-                sb.append(c);
-            }
-        }
-        if (sb == null) {
-            return new String(buf, from, stop - from);
-        }
-        String number = sb.toString();
-        if (split >= 0 && letter != Letter.T) {
-            diagnostics.report(Diagnostic.warning(Code.E600_SPACE_IN_NUMBER, Span.of(source.number(), split + 1),
-                    new String(buf, word, stop - word), (buf[word] == ',' ? "," : "") + letter.name() + number));
-        }
-        return number;
     }
 
     /**
@@ -438,10 +340,6 @@ public final class BlockReader implements BlockSource {
     }
 
     /**
-     * Keeps the line's first error, reported at the end of the line; later ones on the same line
-     * are dropped (thesis §10).
-     */
-    /**
      * A G, M, N, O, S or T word with a sign or a point: E013; but a G code written with a decimal
      * point (G12.1, G54.1, G50.3) is a code of the Fanuc manual gcnc does not follow yet: E702 names it.
      */
@@ -456,6 +354,10 @@ public final class BlockReader implements BlockSource {
 
     private static final java.util.regex.Pattern DOTTED_G = java.util.regex.Pattern.compile("[Gg][0-9]+\\.[0-9]+");
 
+    /**
+     * Keeps the line's first error, reported at the end of the line; later ones on the same line
+     * are dropped (thesis §10).
+     */
     private void fail(Code code, int index, Object... args) {
         if (errorAt == null) {
             errorAt = span(index);

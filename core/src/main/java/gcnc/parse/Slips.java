@@ -1,6 +1,8 @@
 package gcnc.parse;
 
 import gcnc.diag.Code;
+import gcnc.parse.gen.GCodeLexer;
+import org.antlr.v4.runtime.Token;
 
 /**
  * Two typing slips that the lexer can only call malformed, though a machinist sees at once what
@@ -23,6 +25,25 @@ final class Slips {
     }
 
     private Slips() {
+    }
+
+    /**
+     * Whether {@code lexer} finds no error token in {@code text[0, end)} (the grammar's verdict on a
+     * fixed line), read through {@code probe}.
+     */
+    static boolean readsCleanly(GCodeLexer lexer, LineCharStream probe, char[] text, int end, boolean open) {
+        probe.reset(text, 0, end, open);
+        lexer.setInputStream(probe);
+        for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
+            switch (t.getType()) {
+                case GCodeLexer.BARE_LETTER, GCodeLexer.TEXT, GCodeLexer.NOT_INTEGER, GCodeLexer.BAD_NUMBER,
+                        GCodeLexer.MACRO, GCodeLexer.STRAY, GCodeLexer.ILLEGAL, GCodeLexer.NESTED_COMMENT -> {
+                    return false;
+                }
+                default -> { }
+            }
+        }
+        return true;
     }
 
     /**

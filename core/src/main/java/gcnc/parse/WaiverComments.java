@@ -29,6 +29,8 @@ final class WaiverComments {
             Pattern.CASE_INSENSITIVE | Pattern.DOTALL);
 
     private final Diagnostics diags;
+    /** The file whose comments these are (null: the program's own). */
+    private final String file;
     /** Haas, Fanuc: a comment ends at its line's end at the latest; else it may go on to later lines. */
     private final boolean lineComments;
     /** The text of a comment that goes on past its line, and where its '(' is; null when none is open. */
@@ -37,8 +39,9 @@ final class WaiverComments {
     /** Block waivers read whose block has not come yet (a waiver on a line of its own). */
     private final List<Waivers.Waiver> pending = new ArrayList<>();
 
-    WaiverComments(Diagnostics diags, boolean lineComments) {
+    WaiverComments(Diagnostics diags, boolean lineComments, String file) {
         this.diags = diags;
+        this.file = file;
         this.lineComments = lineComments;
     }
 
@@ -132,7 +135,6 @@ final class WaiverComments {
             diags.report(Diagnostic.warning(Code.E670_WAIVER_NO_REASON, at, code.get().id()));
             return;
         }
-        String file = diags.place().file();
         Waivers.Waiver w = new Waivers.Waiver(code.get(), form.group(2) != null, reason, at, file, line);
         if (w.wholeFile()) {
             diags.waivers().add(w);

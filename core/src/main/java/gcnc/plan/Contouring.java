@@ -1,7 +1,6 @@
 package gcnc.plan;
 
 import gcnc.ir.CheckedBlock;
-import gcnc.ir.MCall;
 import gcnc.ir.Motion;
 import gcnc.ir.StopAt;
 import gcnc.machine.Blending;
@@ -71,7 +70,7 @@ public final class Contouring implements Planner {
      * parts it has (SegmentLimit). The numbers are in arrays, not lists of boxes: one piece a motion.
      */
     private final List<CheckedBlock> blocks = new ArrayList<>();
-    private final List<Path> paths = new ArrayList<>();
+    private final List<PlannedPath> paths = new ArrayList<>();
     private final List<List<Switch>> switchesAt = new ArrayList<>();
     private int[] motions = new int[16];
     private boolean[] spindles = new boolean[16];
@@ -85,6 +84,8 @@ public final class Contouring implements Planner {
     private double[] entry = new double[16];
     private final Blending blending;
     private final SegmentLimit limit;
+    /** What a block asks of the path: a stop, or an output switched on the fly. */
+    private final BlockStops stops;
     private double length;
     /**
      * Whether the held pieces continue a sequence of which windows were handed on already, and the
@@ -97,22 +98,23 @@ public final class Contouring implements Planner {
         this.profile = profile;
         this.blending = blending;
         this.limit = SegmentLimit.of(profile);
+        this.stops = new BlockStops(profile, blending);
         this.acceleration = Math.min(profile.acceleration(), profile.deceleration());
         this.deviation = blending.deviationMm() * Math.min(profile.x().countsPerMm(), profile.z().countsPerMm());
     }
 
     @Override
     public void accept(CheckedBlock b, Consumer<Step> out) {
-        Stop before = before(b);
+        Stop before = stops.before(b);
         // a new spindle speed alone (G96 following the diameter) is set on the way, not at a stop
         // (whether the block joins is asked last: it plans the block's first motion once more)
-        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !stops(b.before()) && !firstRapid(b)
+        boolean onTheWay = before == Stop.SPINDLE && b.tool().isEmpty() && !stops.stops(b.before()) && !firstRapid(b)
                 && joinsFirst(b);
         List<Switch> own = List.of();
         if (before != null && !onTheWay) {
             flush(before, out);
             out.accept(new Step.Before(b));
-        } else if (switches(b.before())) {
+        } else if (stops.switches(b.before())) {
             // outputs that may switch on the fly (plan.on_the_fly): where the path reaches the block
             Switch s = new Switch(b, b.before(), false);
             if (joinsFirst(b)) {
@@ -127,7 +129,7 @@ public final class Contouring implements Planner {
         List<Motion> ms = b.motions();
         for (int i = 0; i < ms.size(); i++) {
             Motion m = ms.get(i);
-            Path p = Path.of(m, profile.rapidSpeed(), acceleration);
+            PlannedPath p = PlannedPath.of(m, profile.rapidSpeed(), acceleration);
             if (p == null) {
                 flush(m instanceof Motion.Thread ? Stop.THREAD : Stop.DWELL, out);
                 out.accept(new Step.Alone(b, i));
@@ -173,14 +175,14 @@ public final class Contouring implements Planner {
         if (b.stopAt() == StopAt.BLOCK_END) {
             flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
-        if (programStop(b.after())) {
+        if (stops.programStop(b.after())) {
             // M00 (M01 with the switch on): the axes at rest before the stop's outputs and the wait
             flush(Stop.PROGRAM_STOP, out);
             out.accept(new Step.After(b));
-        } else if (switches(b.after())) {
+        } else if (stops.switches(b.after())) {
             int held = paths.size();
             boolean endsHere = held > 0 && blocks.get(held - 1) == b && motions[held - 1] == ms.size() - 1;
-            if (!stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
+            if (!stops.stops(b.after()) && (endsHere || ms.isEmpty() && holding())) {
                 // the block's end on the fly: where the next motion starts, if it joins
                 pending.add(new Switch(b, b.after(), true));
             } else {
@@ -191,7 +193,7 @@ public final class Contouring implements Planner {
     }
 
     /** Holds one more piece: part {@code part} of {@code count} of motion {@code motion} of {@code b}. */
-    private void hold(CheckedBlock b, int motion, Path p, boolean spindle, List<Switch> switches, int part, int count) {
+    private void hold(CheckedBlock b, int motion, PlannedPath p, boolean spindle, List<Switch> switches, int part, int count) {
         int at = paths.size();
         if (at == motions.length) {
             int size = 2 * at;
@@ -253,7 +255,7 @@ public final class Contouring implements Planner {
             return Stop.OUTPUT;
         }
         Motion m = b.motions().get(0);
-        Path p = Path.of(m, profile.rapidSpeed(), acceleration);
+        PlannedPath p = PlannedPath.of(m, profile.rapidSpeed(), acceleration);
         if (p == null) {
             return m instanceof Motion.Thread ? Stop.THREAD : Stop.DWELL;
         }
@@ -263,50 +265,9 @@ public final class Contouring implements Planner {
         return joins(b, p, m instanceof Motion.Linear ? limit.parts(p.length()) : 1);
     }
 
-    /** Why the block's start stops the machine (its spindle, tool or outputs), or null when it does not. */
-    private Stop before(CheckedBlock b) {
-        if (b.spindleRpm().isPresent()) {
-            return Stop.SPINDLE;
-        }
-        if (b.tool().isPresent()) {
-            return Stop.TOOL;
-        }
-        return stops(b.before()) ? Stop.OUTPUT : null;
-    }
-
-    /** Whether one of the M functions stops the program (M00; M01 when the optional stop switch is on). */
-    private boolean programStop(List<MCall> calls) {
-        for (MCall m : calls) {
-            if (profile.control().stopsProgram(m.code())) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether any of the M functions switches an output (one without outputs writes nothing: no stop). */
-    private boolean switches(List<MCall> calls) {
-        for (MCall m : calls) {
-            if (!profile.outputsFor(m.code()).isEmpty()) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether any of the M functions switches an output that must not switch while the axes move. */
-    private boolean stops(List<MCall> calls) {
-        for (MCall m : calls) {
-            if (!profile.outputsFor(m.code()).isEmpty() && !blending.flies(m.code())) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     /** Why {@code p}, written as {@code n} pieces, cannot join the sequence gathered so far, or null when it can. */
-    private Stop joins(CheckedBlock b, Path p, int n) {
-        Path last = paths.get(paths.size() - 1);
+    private Stop joins(CheckedBlock b, PlannedPath p, int n) {
+        PlannedPath last = paths.get(paths.size() - 1);
         if (last.rapid() != p.rapid()) {
             return Stop.RAPID_FEED;
         }
@@ -320,11 +281,10 @@ public final class Contouring implements Planner {
     }
 
     /** The junction-deviation speed of the corner from {@code a} into {@code b}, at most either's speed. */
-    double corner(Path a, Path b) {
+    double corner(PlannedPath a, PlannedPath b) {
         double cos = -(a.exitX() * b.entryX() + a.exitZ() * b.entryZ()); // Grbl: -1 straight on, +1 back
         return Math.min(Math.min(a.speed(), b.speed()), MARGIN * Blending.junctionSpeed(cos, acceleration, deviation));
     }
-
 
     private void flush(Stop stop, Consumer<Step> out) {
         int n = paths.size();
@@ -433,62 +393,4 @@ public final class Contouring implements Planner {
      * program's; the simulator checks the written ones (E332).
      */
     static final double MARGIN = 0.9;
-
-    /**
-     * A straight move or an arc as the planner sees it: its length (counts), its speed limit
-     * (counts/s), and its unit directions where it starts and where it ends, in machine counts.
-     */
-    record Path(boolean rapid, double length, double speed, double entryX, double entryZ, double exitX,
-                double exitZ) {
-        /** One of {@code n} equal pieces of this straight move. */
-        Path part(int n) {
-            return new Path(rapid, length / n, speed, entryX, entryZ, exitX, exitZ);
-        }
-
-        /** A motion of no length after this one: it goes on in this one's direction. */
-        Path standing(double speed) {
-            return new Path(rapid, 0, speed, exitX, exitZ, exitX, exitZ);
-        }
-
-        /** The path of a straight move or an arc; null for a dwell or a thread. */
-        static Path of(Motion m, double rapidSpeed, double acceleration) {
-            if (m instanceof Motion.Linear l) {
-                // between whole counts, as the move is written (VP to the rounded target): a short move's
-                // direction is the written one, which the replay checks the corner speeds against (E332)
-                double dx = Math.rint(l.to().x()) - Math.rint(l.from().x());
-                double dz = Math.rint(l.to().z()) - Math.rint(l.from().z());
-                double len = Math.hypot(dx, dz);
-                double ux = len == 0 ? 0 : dx / len;
-                double uz = len == 0 ? 0 : dz / len;
-                return new Path(l.rapid(), len, l.rapid() ? rapidSpeed : l.feed().countsPerSecond(), ux, uz, ux, uz);
-            }
-            if (m instanceof Motion.Arc a) {
-                double sweep = Math.toRadians(Math.abs(gcnc.ir.ArcGeometry.sweepDegrees(a.from(), a.to(), a.centre(),
-                        a.clockwise())));
-                double r = a.radius();
-                double[] in = tangent(a, a.from());
-                double[] out = tangent(a, a.to());
-                double speed = Math.min(a.feed().countsPerSecond(), Math.sqrt(acceleration * r));
-                return new Path(false, sweep * r, speed, in[0], in[1], out[0], out[1]);
-            }
-            return null;
-        }
-
-        /**
-         * The unit direction of travel at {@code p} on the arc, in machine counts (x, z). The
-         * drawing has z to the right and x up, and the arc turns clockwise or not as drawn there.
-         */
-        private static double[] tangent(Motion.Arc a, gcnc.ir.Point p) {
-            double rh = p.z() - a.centre().z();
-            double rv = p.x() - a.centre().x();
-            double len = Math.hypot(rh, rv);
-            if (len == 0) {
-                return new double[] {0, 0};
-            }
-            // counter-clockwise in (h, v) = (-rv, rh); back in (x, z) = (v, h)
-            double tx = a.clockwise() ? -rh : rh;
-            double tz = a.clockwise() ? rv : -rv;
-            return new double[] {tx / len, tz / len};
-        }
-    }
 }
