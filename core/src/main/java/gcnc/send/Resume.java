@@ -175,9 +175,26 @@ public final class Resume {
         return java.util.Optional.ofNullable(wayBack);
     }
 
+    /** The first compiled line of the sequence the last {@link #wayBack()} goes back to (of its block, without one). */
+    private int wayBackFrom;
+
+    /**
+     * The first compiled line of the sequence (or block) the last {@link #wayBack()} goes back to: the program
+     * before it has cut the stock as it stood, or with more left on it, when the axes left the path.
+     */
+    public int wayBackFrom() {
+        return wayBackFrom;
+    }
+
     /** E827's advice, kept as {@link #wayBack()}: never straight, X away from the part first, then Z, then X. */
     private String wayTo(int line, int index, double[] axes, double[] start) {
         wayBack = WayBack.of(program, where, tolerance, line, index, axes, start);
+        wayBackFrom = index;
+        for (Sequence q : program.sequences()) {
+            if (q.first() <= index && index <= q.last()) {
+                wayBackFrom = q.first();
+            }
+        }
         return wayBack.text();
     }
 
