@@ -272,7 +272,7 @@ public final class Sender {
         }
         if (wayBack != null) {
             new WayBackRun(program, blocks, profile, messages, options.wayBack()).make(wayBack, options.resumeAt(), c,
-                    events, cut);
+                    events, operator, cut);
         }
         if (options.resumeAt() == null) {
             double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();

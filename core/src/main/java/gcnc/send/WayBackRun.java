@@ -130,9 +130,10 @@ public final class WayBackRun {
 
     /**
      * Makes the way back after the operator typed the word: the program's header's servo on, vector mode,
-     * acceleration and deceleration, then each leg, waiting for it to end (_BGS = 0) before the next.
+     * acceleration and deceleration, then each leg, waiting for it to end (_BGS = 0) before the next; a
+     * hold or a stop of the operator's stops the axes (E828).
      */
-    void make(WayBack way, ResumePoint at, MachineLink c, EventSink events, int cut)
+    void make(WayBack way, ResumePoint at, MachineLink c, EventSink events, Operator operator, int cut)
             throws RunFault, IOException {
         long[] speeds = speeds(way, at);
         check(way, at, cut);
@@ -159,6 +160,11 @@ public final class WayBackRun {
             }
             long until = System.currentTimeMillis() + 600_000;
             while (c.client().number("_BGS") != 0) {
+                if (operator.stopped() || operator.held()) {
+                    // q, Ctrl-C or the studio's Stop: the way back ends where it is, and so does the resume
+                    c.stopAll();
+                    throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, at.line(), true, at.line());
+                }
                 if (System.currentTimeMillis() > until) {
                     c.stopAll();
                     throw new RunFault(Code.E827_CANNOT_RESUME, at.line(), true, at, "the way back's "
