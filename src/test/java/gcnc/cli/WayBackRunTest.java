@@ -94,6 +94,21 @@ class WayBackRunTest {
         assertTrue(err.contains("part.nc:9:1: error[E838]: the way back's leg X in to the block's start to X40.000"
                 + " Z-30.000 (Galil counts "), err);
         assertTrue(err.contains("the simulator found E"), err);
+        // a dry run checks the legs as well, and refuses the same
+        String dry = refused("9", "3000", "", "--dry-run");
+        assertTrue(dry.contains("error[E838]: the way back's leg X in to the block's start"), dry);
+    }
+
+    @Test
+    void aDryRunChecksTheWayBackAndMakesNone() throws Exception {
+        try (VirtualController vc = traced(RunOnControllerTest.FAST, model("DMC-4040"), null)) {
+            homed(vc);
+            RunOnControllerTest.Run r = resume(vc, part(PART), "7", "3000", "", "--dry-run");
+            assertEquals(0, r.status(), r.all());
+            assertTrue(r.out().contains("dry run: the way back was checked and not made: move X away from the part first,"
+                    + " to X423.999 Z363.000 (Galil counts " + home()[0] + "," + home()[1] + "), then Z, to "), r.out());
+            assertArrayEquals(home(), axes(vc));
+        }
     }
 
     @Test

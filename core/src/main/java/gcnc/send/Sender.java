@@ -28,7 +28,8 @@ public final class Sender {
      * @param dryRun   everything but motion (connect, pre-flight, download, read back)
      * @param resumeAt where to continue an interrupted run, or null
      * @param pollMs   how often the controller is asked where it is
-     * @param wayBack  with a resume: make the way back E827 advises first, at its feed ({@link WayBackRun}), or null
+     * @param wayBack  with a resume: make the way back E827 advises first, at its feed ({@link WayBackRun}; a dry
+     *                 run checks it and does not make it), or null
      */
     public record Options(boolean step, boolean dryRun, ResumePoint resumeAt, int pollMs, WayBackRun.Ask wayBack) {
         public Options(boolean step, boolean dryRun, ResumePoint resumeAt, int pollMs) {
@@ -197,7 +198,7 @@ public final class Sender {
             try {
                 piece = resume.plan(options.resumeAt(), f.position());
             } catch (RunFault e) {
-                if (options.wayBack() == null || resume.wayBack().isEmpty() || options.dryRun()) {
+                if (options.wayBack() == null || resume.wayBack().isEmpty()) {
                     throw e;
                 }
                 // the resume as it will be once the way back has brought the axes to the block's start
@@ -271,8 +272,12 @@ public final class Sender {
             finding(Code.E829_MOTORS_OFF, 0, List.of(axes.toString()));
         }
         if (wayBack != null) {
-            new WayBackRun(program, blocks, profile, messages, options.wayBack()).make(wayBack, options.resumeAt(), c,
-                    events, operator, cut);
+            WayBackRun back = new WayBackRun(program, blocks, profile, messages, options.wayBack());
+            if (options.dryRun()) {
+                back.verify(wayBack, options.resumeAt(), events, cut);
+            } else {
+                back.make(wayBack, options.resumeAt(), c, events, operator, cut);
+            }
         }
         if (options.resumeAt() == null) {
             double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();

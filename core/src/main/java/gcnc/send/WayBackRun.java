@@ -128,6 +128,13 @@ public final class WayBackRun {
                 new Command.VectorEnd(), new Command.BeginSequence());
     }
 
+    /** The checks of {@link #make} without the word or the motion, for a dry run: the feed's and the simulator's. */
+    void verify(WayBack way, ResumePoint at, EventSink events, int cut) throws RunFault {
+        speeds(way, at);
+        check(way, at, cut);
+        events.accept(new Event.Message("dry run: the way back was checked and not made: " + way.text()));
+    }
+
     /**
      * Makes the way back after the operator typed the word: the program's header's servo on, vector mode,
      * acceleration and deceleration, then each leg, waiting for it to end (_BGS = 0) before the next; a
