@@ -66,6 +66,9 @@ final class SendCommand implements Callable<Integer> {
     @Mixin
     StockOptions stock;
 
+    @Mixin
+    WayBackOptions wayBack;
+
     @Spec
     CommandSpec spec;
 
@@ -135,6 +138,9 @@ final class SendCommand implements Callable<Integer> {
             resume = resumeAt == null ? null : ResumePoint.parse(resumeAt);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        if (wayBack.feed != null && resume == null) {
+            throw new ParameterException(spec.commandLine(), "--way-back goes with --resume-at: the way back is to a resume point");
         }
         if (SourceFiles.isStdin(file)) {
             throw new ParameterException(spec.commandLine(), "run reads the keyboard on standard input: name the program's file");
@@ -235,7 +241,8 @@ final class SendCommand implements Callable<Integer> {
         // 5. the run, with the operator's keys and Ctrl-C
         Operator operator = new Operator();
         Sender sender = new Sender(setup.profile(), program, blocks, events, messages, operator,
-                new Sender.Options(step, dryRun, resume, pollMs), chosen == gcnc.dmc.Form.STREAM
+                new Sender.Options(step, dryRun, resume, pollMs, wayBack.ask(operator, json ? err : out, seen.onBlank(),
+                        sim.get())), chosen == gcnc.dmc.Form.STREAM
                         ? new StreamForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds)
                         : new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
         Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
@@ -352,6 +359,8 @@ final class SendCommand implements Callable<Integer> {
                         default -> {
                             if (k.matches("\\d{1,3}%?")) {
                                 operator.override(Math.max(0.1, Math.min(2, Integer.parseInt(k.replace("%", "")) / 100.0)));
+                            } else {
+                                operator.typed(k); // a word the run asks for (the way back's)
                             }
                         }
                     }
@@ -359,6 +368,7 @@ final class SendCommand implements Callable<Integer> {
             } catch (IOException e) {
                 // standard input closed: the keys are gone, Ctrl-C still works
             }
+            operator.typed(Operator.END);
         }
 
         @Override

@@ -813,6 +813,14 @@ public enum Code {
     E835_PROBE_NOT_READY(835),
     /** Probe (warning): the controller answered against a reference fact (a row of the report). */
     E836_PROBE_CONTRADICTION(836),
+    /** Sender: the way back's feed is missing, not above 0, or above the machine's fastest cutting feed. */
+    E837_WAY_BACK_FEED(837),
+    /** Sender: the simulator finds a leg of the way back touching the part or the machine. */
+    E838_WAY_BACK_COLLIDES(838),
+    /** Sender: the way back was asked for without the operator's typed confirmation. */
+    E839_WAY_BACK_NOT_CONFIRMED(839),
+    /** Sender: the way back cannot be checked by the simulator (no stock). */
+    E840_WAY_BACK_UNCHECKED(840),
     /** Profile: stop.cycle_start is not IN n. */
     E850_CYCLE_START_INPUT(850),
     /**

@@ -66,6 +66,21 @@ public final class Operator {
         return stop;
     }
 
+    /** The lines typed that are no key (a confirmation word), and {@link #END} once the keyboard is closed. */
+    private final LinkedBlockingQueue<String> words = new LinkedBlockingQueue<>();
+    /** What {@link #word} gives once standard input has ended. */
+    public static final String END = "\0";
+
+    /** A line typed that is no key: a confirmation word, or {@link #END}. */
+    public void typed(String line) {
+        words.offer(line);
+    }
+
+    /** The next line typed that is no key, waiting up to {@code ms}; null when none came. */
+    public String word(long ms) throws InterruptedException {
+        return words.poll(ms, TimeUnit.MILLISECONDS);
+    }
+
     /** Forgets the Enters pressed before now: a program stop waits for one pressed after it began. */
     public void forgetEnters() {
         enters.clear();

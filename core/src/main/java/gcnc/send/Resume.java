@@ -92,6 +92,7 @@ public final class Resume {
 
     public Download plan(ResumePoint at, double[] axes) throws RunFault {
         ranOn = null;
+        wayBack = null;
         point = at;
         this.axes = axes.clone();
         int first = program.firstLineOf(at.line());
@@ -163,72 +164,38 @@ public final class Resume {
                 + " and resume again");
     }
 
+    /** The way back of the last refusal that gave one (null: none); see {@link #wayBack()}. */
+    private WayBack wayBack;
+
     /**
-     * The safe way from {@code axes} to {@code start}, the start of G-code line {@code line} whose
-     * motion is compiled line {@code index}: never straight, as that can cut through the part; X
-     * away from the part first, then Z, then X (docs/run.md, "Resume"). The clear X is where the
-     * tool came in: the end of its first motion after its {@code TOOL=} (the approach the simulator
-     * checked), or, for the block that makes that motion, its own start (where the tool came from).
-     * The part is on the side the tool went to next from there: toward the centre line for a turning
-     * tool, so away is outward; outward for a boring bar, so away is toward the centre line. Axes
-     * already farther away than the clear X stay where they are.
+     * The way back to the resume point the last {@link #plan} advised when it refused with E827 because
+     * the axes were off the path: the legs {@code gcnc run --way-back} makes.
      */
-    private String wayTo(int line, int index, double[] axes, double[] start) {
-        int tool = -1; // the TOOL= before the block, and the next one after it
-        int next = program.size();
-        for (int i = 0; i < program.size(); i++) {
-            if (program.command(i) instanceof Command.ToolNumber) {
-                if (i < index) {
-                    tool = i;
-                } else {
-                    next = i;
-                    break;
-                }
-            }
-        }
-        // where the tool went from its TOOL= to the next (the end of each motion, and its compiled line)
-        List<double[]> ends = new ArrayList<>();
-        List<Integer> lines = new ArrayList<>();
-        for (Sequence q : program.sequences()) {
-            if (q.first() <= tool) {
-                continue;
-            }
-            if (q.first() > next) {
-                break;
-            }
-            for (Sequence.Piece p : q.pieces()) {
-                ends.add(p.to());
-                lines.add(p.line());
-            }
-            if (q.isThreadPass()) {
-                ends.add(q.end());
-                lines.add(q.first());
-            }
-        }
-        boolean approaching = ends.isEmpty() || lines.get(0) >= index; // the block makes the tool's first motion
-        double[] clear = approaching ? start : ends.get(0);
-        double cx = Math.abs(x(line, clear));
-        boolean outward = true;
-        for (int k = approaching ? 0 : 1; k < ends.size(); k++) {
-            double[] e = program.plane().machine(ends.get(k));
-            if (Math.abs(e[0] - program.plane().machine(clear)[0]) > tolerance) {
-                outward = Math.abs(x(line, ends.get(k))) < cx; // the tool went in toward the centre line: the part is inside
-                break;
-            }
-        }
-        double[] a = program.plane().machine(axes);
-        double ax = Math.abs(x(line, axes));
-        double retract = outward == ax > cx ? a[0] : program.plane().machine(clear)[0];
-        double[] out = program.plane().galil(retract, a[1]);
-        double[] over = program.plane().galil(retract, program.plane().machine(start)[1]);
-        return "move X away from the part first, to " + where.at(line, out) + ", then Z, to " + where.at(line, over)
-                + ", then X, to " + where.at(line, start);
+    public java.util.Optional<WayBack> wayBack() {
+        return java.util.Optional.ofNullable(wayBack);
     }
 
-    /** The X of {@code galil} as line {@code line} writes it, or its machine counts without a frame. */
-    private double x(int line, double[] galil) {
-        double[] p = where.program(line, galil);
-        return p == null ? program.plane().machine(galil)[0] : p[0];
+    /** The first compiled line of the sequence the last {@link #wayBack()} goes back to (of its block, without one). */
+    private int wayBackFrom;
+
+    /**
+     * The first compiled line of the sequence (or block) the last {@link #wayBack()} goes back to: the program
+     * before it has cut the stock as it stood, or with more left on it, when the axes left the path.
+     */
+    public int wayBackFrom() {
+        return wayBackFrom;
+    }
+
+    /** E827's advice, kept as {@link #wayBack()}: never straight, X away from the part first, then Z, then X. */
+    private String wayTo(int line, int index, double[] axes, double[] start) {
+        wayBack = WayBack.of(program, where, tolerance, line, index, axes, start);
+        wayBackFrom = index;
+        for (Sequence q : program.sequences()) {
+            if (q.first() <= index && index <= q.last()) {
+                wayBackFrom = q.first();
+            }
+        }
+        return wayBack.text();
     }
 
     /** Where the axes are when program line {@code index} starts. */

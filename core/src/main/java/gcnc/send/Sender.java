@@ -28,8 +28,13 @@ public final class Sender {
      * @param dryRun   everything but motion (connect, pre-flight, download, read back)
      * @param resumeAt where to continue an interrupted run, or null
      * @param pollMs   how often the controller is asked where it is
+     * @param wayBack  with a resume: make the way back E827 advises first, at its feed ({@link WayBackRun}; a dry
+     *                 run checks it and does not make it), or null
      */
-    public record Options(boolean step, boolean dryRun, ResumePoint resumeAt, int pollMs) {
+    public record Options(boolean step, boolean dryRun, ResumePoint resumeAt, int pollMs, WayBackRun.Ask wayBack) {
+        public Options(boolean step, boolean dryRun, ResumePoint resumeAt, int pollMs) {
+            this(step, dryRun, resumeAt, pollMs, null);
+        }
     }
 
     private final MachineProfile profile;
@@ -162,6 +167,10 @@ public final class Sender {
         return program.sequences().isEmpty() ? 0 : program.sourceLine(program.sequences().get(0).first());
     }
 
+    /** The way back the resume makes first (null: none), and the first compiled line of the sequence it goes back to. */
+    private WayBack wayBack;
+    private int cut;
+
     /** Pre-flight; returns what to download (the program, or the resume program built from where the axes are). */
     private Download preflight(MachineLink c, String link) throws IOException, RunFault {
         MachineLink.Facts f = c.preflight();
@@ -186,7 +195,17 @@ public final class Sender {
             // the position read again on this connection (the preflight's TP, after _XQ0 and _BGS said it is
             // at rest): a controller that ran on after a dropped link is resumed from where it really is
             Resume resume = new Resume(program, blocks, tolerance()).spindle(profile);
-            piece = resume.plan(options.resumeAt(), f.position());
+            try {
+                piece = resume.plan(options.resumeAt(), f.position());
+            } catch (RunFault e) {
+                if (options.wayBack() == null || resume.wayBack().isEmpty()) {
+                    throw e;
+                }
+                // the resume as it will be once the way back has brought the axes to the block's start
+                wayBack = resume.wayBack().get();
+                cut = resume.wayBackFrom();
+                piece = resume.plan(options.resumeAt(), wayBack.legs().get(wayBack.legs().size() - 1).to());
+            }
             resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
             // what the controller holds against what the program needs there, and what the resume changes
             int line = options.resumeAt().line();
@@ -251,6 +270,14 @@ public final class Sender {
             StringBuilder axes = new StringBuilder();
             f.motorsOff().forEach(axes::append);
             finding(Code.E829_MOTORS_OFF, 0, List.of(axes.toString()));
+        }
+        if (wayBack != null) {
+            WayBackRun back = new WayBackRun(program, blocks, profile, messages, options.wayBack());
+            if (options.dryRun()) {
+                back.verify(wayBack, options.resumeAt(), events, cut);
+            } else {
+                back.make(wayBack, options.resumeAt(), c, events, operator, cut);
+            }
         }
         if (options.resumeAt() == null) {
             double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();

@@ -147,6 +147,14 @@ public final class Simulator {
         run(lines);
     }
 
+    /**
+     * Puts the axes at machine counts {@code x}, {@code z} without a move: where a stopped run left them,
+     * for a way back checked from there after a replay of the program up to the stop (gcnc.send.WayBackRun).
+     */
+    public void placeAxes(double x, double z) {
+        dmc.moveTo(x, z);
+    }
+
     public SimReport report() {
         java.util.Map<String, Integer> byReason = new java.util.LinkedHashMap<>();
         for (gcnc.plan.Stop why : gcnc.plan.Stop.values()) {
