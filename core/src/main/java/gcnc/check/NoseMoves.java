@@ -1,8 +1,8 @@
 package gcnc.check;
 
+import gcnc.check.geom.MotionParts;
 import gcnc.check.geom.NoseGeometry;
 import gcnc.ir.CheckedBlock;
-import gcnc.ir.Feed;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
 import java.util.ArrayList;
@@ -53,17 +53,19 @@ final class NoseMoves {
     /** A straight move of the kind {@code m} is (rapid or at its feed) between two points. */
     static Motion line(Motion m, Point from, Point to) {
         boolean rapid = MotionKind.of(m) == MotionKind.RAPID;
-        return new Motion.Linear(rapid, from, to, rapid ? null : m.accept(FEED));
+        return new Motion.Linear(rapid, from, to, rapid ? null : MotionParts.path(m).feed());
     }
 
     /** Where a line, an arc or a thread pass starts. */
     static Point from(Motion m) {
-        return m.accept(FROM);
+        Motion.PathMotion p = MotionParts.path(m);
+        return p == null ? null : p.from(); // a dwell has none (the callers pass moves only)
     }
 
     /** Where a line, an arc or a thread pass ends. */
     static Point to(Motion m) {
-        return m.accept(TO);
+        Motion.PathMotion p = MotionParts.path(m);
+        return p == null ? null : p.to();
     }
 
     /** The block with other motions, its end where the last of them ends. */
@@ -133,71 +135,4 @@ final class NoseMoves {
         ms.addAll(after(pending, m));
         return ms;
     }
-
-    /** Where a motion starts, where it ends, its feed: a dwell has none (the callers pass moves only). */
-    private static final Motion.Visitor<Point> FROM = new Motion.Visitor<>() {
-        @Override
-        public Point linear(Motion.Linear l) {
-            return l.from();
-        }
-
-        @Override
-        public Point arc(Motion.Arc a) {
-            return a.from();
-        }
-
-        @Override
-        public Point dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Point thread(Motion.Thread t) {
-            return t.from();
-        }
-    };
-
-    private static final Motion.Visitor<Point> TO = new Motion.Visitor<>() {
-        @Override
-        public Point linear(Motion.Linear l) {
-            return l.to();
-        }
-
-        @Override
-        public Point arc(Motion.Arc a) {
-            return a.to();
-        }
-
-        @Override
-        public Point dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Point thread(Motion.Thread t) {
-            return t.to();
-        }
-    };
-
-    private static final Motion.Visitor<Feed> FEED = new Motion.Visitor<>() {
-        @Override
-        public Feed linear(Motion.Linear l) {
-            return l.feed();
-        }
-
-        @Override
-        public Feed arc(Motion.Arc a) {
-            return a.feed();
-        }
-
-        @Override
-        public Feed dwell(Motion.Dwell d) {
-            return null;
-        }
-
-        @Override
-        public Feed thread(Motion.Thread t) {
-            return t.feed();
-        }
-    };
 }

@@ -4,7 +4,7 @@ package gcnc.ir;
  * What one block makes the machine do, in machine counts. A block may hold several
  * (G28 = rapid to the intermediate point, then rapid to the reference point).
  */
-public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, Motion.Thread {
+public sealed interface Motion permits Motion.PathMotion, Motion.Dwell {
 
     /**
      * The dispatch the compiler checks: every consumer of motions (the backends, the simulator,
@@ -23,8 +23,18 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
 
     <R> R accept(Visitor<R> v);
 
+    /** A motion along the path (a line, an arc, a thread pass: all but a dwell), from a point to a point at a feed. */
+    sealed interface PathMotion extends Motion permits Linear, Arc, Thread {
+        Point from();
+
+        Point to();
+
+        /** The feed, or null for a rapid. */
+        Feed feed();
+    }
+
     /** G00 (rapid: feed is null) or G01. */
-    record Linear(boolean rapid, Point from, Point to, Feed feed) implements Motion {
+    record Linear(boolean rapid, Point from, Point to, Feed feed) implements PathMotion {
         @Override
         public <R> R accept(Visitor<R> v) {
             return v.linear(this);
@@ -36,7 +46,7 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
      * {@code words} keeps R / I,K as programmed (in counts) for the thesis dialect's formulas.
      */
     record Arc(boolean clockwise, Point from, Point to, Point centre, double radius, Feed feed, ArcWords words)
-            implements Motion {
+            implements PathMotion {
         @Override
         public <R> R accept(Visitor<R> v) {
             return v.arc(this);
@@ -70,7 +80,7 @@ public sealed interface Motion permits Motion.Linear, Motion.Arc, Motion.Dwell, 
      *                      revolution, 0 to less than 360: a multi-start thread's start (G92/Haas G76 Q)
      */
     record Thread(Point from, Point to, double lead, double rpm, boolean reverse, Feed feed, Point chamferStart,
-                  java.util.List<Point> joints, double startAngle) implements Motion {
+                  java.util.List<Point> joints, double startAngle) implements PathMotion {
         public Thread {
             joints = java.util.List.copyOf(joints);
             if (!(startAngle >= 0 && startAngle < 360)) {

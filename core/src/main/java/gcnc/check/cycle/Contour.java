@@ -37,13 +37,11 @@ public record Contour(Point start, Piece approach, List<Piece> shape) {
         }
 
         public Point from() {
-            Motion.Arc a = arc();
-            return a != null ? a.from() : MotionParts.line(motion).from();
+            return MotionParts.path(motion).from();
         }
 
         public Point to() {
-            Motion.Arc a = arc();
-            return a != null ? a.to() : MotionParts.line(motion).to();
+            return MotionParts.path(motion).to();
         }
 
         public boolean rapid() {
@@ -53,8 +51,7 @@ public record Contour(Point start, Piece approach, List<Piece> shape) {
 
         /** The piece's feed (null for a rapid). */
         public gcnc.ir.Feed feed() {
-            Motion.Arc a = arc();
-            return a != null ? a.feed() : MotionParts.line(motion).feed();
+            return MotionParts.path(motion).feed();
         }
 
         /** {depthMin, depthMax, cutMin, cutMax} of the piece, arcs with their bulge. */

@@ -26,68 +26,68 @@ public final class MotionParts {
         return m.accept(THREAD);
     }
 
-    private static final Motion.Visitor<Motion.Linear> LINE = new Motion.Visitor<>() {
+    /** The motion as a move along the path (a line, an arc, a thread pass), or null for a dwell. */
+    public static Motion.PathMotion path(Motion m) {
+        return m.accept(PATH);
+    }
+
+    /** Null for every kind of motion: each visitor below answers for its own kind. */
+    private abstract static class Only<R> implements Motion.Visitor<R> {
+        @Override
+        public R linear(Motion.Linear l) {
+            return null;
+        }
+
+        @Override
+        public R arc(Motion.Arc a) {
+            return null;
+        }
+
+        @Override
+        public R dwell(Motion.Dwell d) {
+            return null;
+        }
+
+        @Override
+        public R thread(Motion.Thread t) {
+            return null;
+        }
+    }
+
+    private static final Motion.Visitor<Motion.Linear> LINE = new Only<>() {
         @Override
         public Motion.Linear linear(Motion.Linear l) {
             return l;
         }
-    
-        @Override
-        public Motion.Linear arc(Motion.Arc a) {
-            return null;
-        }
-    
-        @Override
-        public Motion.Linear dwell(Motion.Dwell d) {
-            return null;
-        }
-    
-        @Override
-        public Motion.Linear thread(Motion.Thread t) {
-            return null;
-        }
     };
 
-    private static final Motion.Visitor<Motion.Arc> ARC = new Motion.Visitor<>() {
-        @Override
-        public Motion.Arc linear(Motion.Linear l) {
-            return null;
-        }
-    
+    private static final Motion.Visitor<Motion.Arc> ARC = new Only<>() {
         @Override
         public Motion.Arc arc(Motion.Arc a) {
             return a;
         }
-    
+    };
+
+    private static final Motion.Visitor<Motion.Thread> THREAD = new Only<>() {
         @Override
-        public Motion.Arc dwell(Motion.Dwell d) {
-            return null;
-        }
-    
-        @Override
-        public Motion.Arc thread(Motion.Thread t) {
-            return null;
+        public Motion.Thread thread(Motion.Thread t) {
+            return t;
         }
     };
 
-    private static final Motion.Visitor<Motion.Thread> THREAD = new Motion.Visitor<>() {
+    private static final Motion.Visitor<Motion.PathMotion> PATH = new Only<>() {
         @Override
-        public Motion.Thread linear(Motion.Linear l) {
-            return null;
+        public Motion.PathMotion linear(Motion.Linear l) {
+            return l;
         }
-    
+
         @Override
-        public Motion.Thread arc(Motion.Arc a) {
-            return null;
+        public Motion.PathMotion arc(Motion.Arc a) {
+            return a;
         }
-    
+
         @Override
-        public Motion.Thread dwell(Motion.Dwell d) {
-            return null;
-        }
-    
-        @Override
-        public Motion.Thread thread(Motion.Thread t) {
+        public Motion.PathMotion thread(Motion.Thread t) {
             return t;
         }
     };
