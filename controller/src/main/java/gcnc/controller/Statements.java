@@ -118,11 +118,7 @@ final class Statements {
         if (value.isEmpty()) {
             return number(c.variable(name)) + "\r\n";
         }
-        double v = eval(value);
-        if (!c.variables.containsKey(name) && c.variables.size() >= c.model.variables) {
-            throw new GalilException(Tc.TOO_MANY_VARIABLES);
-        }
-        c.variables.put(name, v);
+        c.assign(name, eval(value));
         return "";
     }
 
@@ -223,14 +219,14 @@ final class Statements {
                 return "";
             case "MC":
                 onlyInProgram(th);
-                th.waitingFor = () -> !mo.running();
+                th.waitingFor = ThreadWaits.sequenceStill(mo);
                 return "";
             case "AI": {
                 onlyInProgram(th);
                 int n = (int) eval(args);
                 int bit = Math.abs(n);
                 c.io("IN", bit);
-                th.waitingFor = () -> ((c.inputs >> (bit - 1) & 1) != 0) == n > 0;
+                th.waitingFor = ThreadWaits.input(c, bit, n > 0);
                 return "";
             }
             case "ST":
@@ -275,7 +271,7 @@ final class Statements {
                 }
                 int n = (int) range(eval(a.get(0)), 1, c.model.outputs);
                 boolean on = eval(a.get(1)) != 0;
-                c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
+                c.setOutput(n, on);
                 return "";
             }
             case "LM":

@@ -338,6 +338,19 @@ public final class VirtualGalil implements Expressions.Scope {
         }
     }
 
+    /** Sets variable {@code name}; a new one when the model's variables are all taken is refused. */
+    void assign(String name, double v) throws GalilException {
+        if (!variables.containsKey(name) && variables.size() >= model.variables) {
+            throw new GalilException(Tc.TOO_MANY_VARIABLES);
+        }
+        variables.put(name, v);
+    }
+
+    /** Sets digital output {@code n} (from 1) on or off ({@code SB}, {@code CB}, {@code OB}). */
+    void setOutput(int n, boolean on) {
+        outputs = on ? outputs | 1L << (n - 1) : outputs & ~(1L << (n - 1));
+    }
+
     /** A statement of a thread failed: #CMDERR takes the thread over, or every thread stops (Galil's rule). */
     void programError(ProgramThread t, int line, String statement, GalilException e) {
         lastError = e.tc;
