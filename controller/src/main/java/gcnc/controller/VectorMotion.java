@@ -101,6 +101,17 @@ final class VectorMotion {
         this.position = new double[Math.max(axes, 2)];
     }
 
+    /** Arms the segment faults of {@code faults} that name a segment ({@code stall}, {@code limit-at}). */
+    void arm(java.util.List<InjectedFault> faults) {
+        for (InjectedFault f : faults) {
+            if (f.kind() == InjectedFault.Kind.STALL) {
+                stallAfter = f.n();
+            } else if (f.kind() == InjectedFault.Kind.LIMIT_AT) {
+                limitAt = f.n();
+            }
+        }
+    }
+
     boolean running() {
         return running;
     }
