@@ -191,7 +191,7 @@ final class Expressions {
         return enclosed(']', Tc.BAD_FUNCTION);
     }
 
-    /** After an opening bracket (at {@code at}): the expression inside, up to {@code close}; {@code unclosed} without it. */
+    /** After an opening bracket: the expression inside, up to {@code close}; {@code unclosed} without it. */
     private double enclosed(char close, Tc unclosed) throws GalilException {
         at++;
         double v = expression();

@@ -15,7 +15,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * drives {@link #advance} itself gets the same run every time.
  *
  * <p>{@link Statements} executes a command, from the host or from a thread; this class holds what the
- * commands act on and reads the operands ({@code _LMS}, {@code _CSS}, ...) for them.
+ * commands act on and answers the operands ({@code _LMS}, {@code _CSS}, ...: {@link Operands}) for them.
  */
 public final class VirtualGalil implements Expressions.Scope {
     /** Where the controller's unsolicited output (a program's MG, a program error) goes. */
@@ -64,7 +64,7 @@ public final class VirtualGalil implements Expressions.Scope {
     private final SegmentTrace trace;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     final Statements statements;
-    /** Where within 2 samples each MF/MR trip is seen (DmcCommands.waitPast); seeded, so a run repeats. */
+    /** Where within 2 samples each MF/MR trip is seen (ThreadWaits.past); seeded, so a run repeats. */
     final java.util.Random tripPhase;
 
     /** The spindle drive and encoder of the haas profile: 410 r/min a volt, 4,096 counts a revolution. */
