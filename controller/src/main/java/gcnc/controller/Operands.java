@@ -11,13 +11,18 @@ final class Operands {
     private Operands() {
     }
 
-    /** The operand {@code _name} of controller {@code c}; TC 1 for a name it does not have. */
-    static double read(VirtualGalil c, String name) throws GalilException {
-        VectorMotion mo = c.motion;
+    /** The array elements the arrays of {@code c} take up ({@code DM}). */
+    static int elementsUsed(VirtualGalil c) {
         int elements = 0;
         for (double[] a : c.arrays.values()) {
             elements += a.length;
         }
+        return elements;
+    }
+
+    /** The operand {@code _name} of controller {@code c}; TC 1 for a name it does not have. */
+    static double read(VirtualGalil c, String name) throws GalilException {
+        VectorMotion mo = c.motion;
         switch (name) {
             case "LMS": return mo.free();
             case "CSS": return mo.css();
@@ -32,7 +37,7 @@ final class Operands {
             case "DL": return c.model.labels - c.program.labelCount();
             case "UL": return c.model.variables - c.variables.size();
             case "DA": return Model.ARRAYS - c.arrays.size();
-            case "DM": return c.model.arrayElements - elements;
+            case "DM": return c.model.arrayElements - elementsUsed(c);
             case "CF": return c.cf; // "the decimal value of the ASCII letter" (COMALL CF)
             case "EO": return c.echo ? 1 : 0;
             default: break;

@@ -298,10 +298,7 @@ final class OwnCommands {
                 throw new GalilException(Tc.OPERAND);
             }
             int n = (int) range(eval(m.group(2)), 1, c.model.arrayElements);
-            int used = 0;
-            for (double[] arr : c.arrays.values()) {
-                used += arr.length;
-            }
+            int used = Operands.elementsUsed(c);
             double[] old = c.arrays.get(m.group(1));
             if (used - (old == null ? 0 : old.length) + n > c.model.arrayElements) {
                 throw new GalilException(Tc.ARRAY_SPACE);
