@@ -4,7 +4,6 @@ import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.DmcReader;
 import gcnc.machine.GalilModel;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 
@@ -14,9 +13,10 @@ import java.util.Set;
  * arguments as expressions ({@code WT dwms}, {@code VP p0[i],p1[i]}) and segment speeds
  * ({@code VP a,b <o >p}), which gcnc does not write: the expressions are evaluated and the speeds taken
  * off first ({@link Literal}), then the literal command is read. What the reader refuses is {@code ?}: E300 as TC 1,
- * E301 as TC 4, E310 as TC 6.
+ * E301 as TC 4, E310 as TC 6. The commands it does not execute are {@link UnexecutedCommands}'; what a
+ * thread waits on after a trippoint, {@link ThreadWaits}.
  */
-final class DmcCommands implements Command.Visitor<Void> {
+final class DmcCommands extends UnexecutedCommands {
     /** The heads of the commands of gcnc.dmc that take arguments; {@code TOOL=} too. */
     private static final Set<String> HEADS = Set.of("VP", "CR", "VS", "VA", "VD", "BG", "AM", "SH", "VM", "VE", "EN",
             "WT", "SB", "CB", "OF", "GA", "MF", "MR", "GR", "PA", "AV", "IP");
@@ -61,64 +61,27 @@ final class DmcCommands implements Command.Visitor<Void> {
         }
     }
 
-    /** A GalilException through the visitor, whose methods cannot throw it. */
-    private static final class Refused extends RuntimeException {
-        final GalilException reason;
-
-        Refused(GalilException reason) {
-            super(null, null, false, false);
-            this.reason = reason;
-        }
-    }
-
-    private static Refused refuse(Tc tc) {
-        return new Refused(new GalilException(tc));
-    }
-
-    private interface Action {
-        void run() throws GalilException;
-    }
-
-    private static Void doing(Action a) {
-        try {
-            a.run();
-        } catch (GalilException e) {
-            throw new Refused(e);
-        }
-        return null;
-    }
-
     private static double range(double v, double min, double max) {
         if (v < min || v > max) {
-            throw refuse(Tc.RANGE);
+            throw Refused.refuse(Tc.RANGE);
         }
         return v;
     }
 
     private void onlyInProgram() {
         if (th == null) {
-            throw refuse(Tc.ONLY_IN_PROGRAM);
+            throw Refused.refuse(Tc.ONLY_IN_PROGRAM);
         }
     }
 
     private void waitUntilStill() {
         onlyInProgram();
-        VectorMotion mo = c.motion;
-        th.waitingFor = () -> !mo.running();
-    }
-
-    private Void notModelled() {
-        throw refuse(Tc.UNRECOGNIZED);
-    }
-
-    @Override
-    public Void label(Command.Label x) {
-        return null;
+        th.waitingFor = ThreadWaits.sequenceStill(c.motion);
     }
 
     @Override
     public Void servoHere(Command.ServoHere x) {
-        return doing(() -> {
+        return Refused.doing(() -> {
             for (int a : c.axes(x.axes())) {
                 c.servo[a] = true;
             }
@@ -127,7 +90,7 @@ final class DmcCommands implements Command.Visitor<Void> {
 
     @Override
     public Void vectorMode(Command.VectorMode x) {
-        return doing(() -> {
+        return Refused.doing(() -> {
             List<Integer> a = c.axes(x.axes());
             if (a.size() != 2) {
                 throw new GalilException(Tc.OPERAND);
@@ -145,7 +108,7 @@ final class DmcCommands implements Command.Visitor<Void> {
     private double within(double v, GalilModel.Limit limit) {
         GalilModel.Range r = c.model.galil.range(limit);
         if (!r.holds(v, limit.below())) {
-            throw refuse(Tc.RANGE);
+            throw Refused.refuse(Tc.RANGE);
         }
         return v;
     }
@@ -166,30 +129,10 @@ final class DmcCommands implements Command.Visitor<Void> {
     @Override
     public Void vectorDeceleration(Command.VectorDeceleration x) {
         if (c.motion.running()) {
-            throw refuse(Tc.WHILE_RUNNING); // "VD Not Valid while in motion"
+            throw Refused.refuse(Tc.WHILE_RUNNING); // "VD Not Valid while in motion"
         }
         c.motion.vd = acceleration(x.countsPerSecond2().value());
         c.motion.changed();
-        return null;
-    }
-
-    @Override
-    public Void stock(Command.Stock x) {
-        return null;
-    }
-
-    @Override
-    public Void feedMark(Command.FeedMark x) {
-        return null;
-    }
-
-    @Override
-    public Void sourceMark(Command.SourceMark x) {
-        return null;
-    }
-
-    @Override
-    public Void remark(Command.Remark x) {
         return null;
     }
 
@@ -202,22 +145,22 @@ final class DmcCommands implements Command.Visitor<Void> {
 
     @Override
     public Void vectorPosition(Command.VectorPosition x) {
-        return doing(() -> c.motion.vp(x.first(), x.second(), o, p));
+        return Refused.doing(() -> c.motion.vp(x.first(), x.second(), o, p));
     }
 
     @Override
     public Void circularArc(Command.CircularArc x) {
-        return doing(() -> c.motion.cr(x.radius().value(), x.start().value(), x.sweep().value(), o, p));
+        return Refused.doing(() -> c.motion.cr(x.radius().value(), x.start().value(), x.sweep().value(), o, p));
     }
 
     @Override
     public Void vectorEnd(Command.VectorEnd x) {
-        return doing(c.motion::ve);
+        return Refused.doing(c.motion::ve);
     }
 
     @Override
     public Void beginSequence(Command.BeginSequence x) {
-        return doing(() -> {
+        return Refused.doing(() -> {
             VectorMotion mo = c.motion;
             if (mo.axis1 < 0) {
                 throw new GalilException(Tc.NO_SEQUENCE);
@@ -238,40 +181,18 @@ final class DmcCommands implements Command.Visitor<Void> {
         return null;
     }
 
-    /**
-     * {@code AV n}: the program thread waits until the sequence has run n counts past the last AV's trip
-     * point (past its start for the first: command reference AV, "measured from the start of a
-     * coordinated move sequence or from the last AV command"), or was cut short (a stop, an abort). A
-     * sequence that ran to its end short of the trip point never trips it: the thread waits there (the
-     * reference is silent; docs/virtual-controller.md), and the trace says so once.
-     */
+    /** {@code AV n}: the thread waits for the trip point ({@link ThreadWaits#afterVector}). */
     @Override
     public Void afterVector(Command.AfterVector x) {
         onlyInProgram();
-        VectorMotion mo = c.motion;
-        long n = x.counts();
-        double trip = mo.afterVector(n);
-        boolean[] told = new boolean[1];
-        th.waitingFor = () -> {
-            if (mo.travelled() >= trip) {
-                c.traceEvent(String.format(java.util.Locale.ROOT, "av %d tripped at %.0f of path (trip point %.0f)",
-                        n, Math.floor(mo.travelled()), trip));
-                return true;
-            }
-            if (mo.endedShortOf(trip) && !told[0]) {
-                told[0] = true;
-                c.traceEvent(String.format(java.util.Locale.ROOT, "av %d never reached: trip point %.0f past the path's"
-                        + " end %.0f, the thread waits", n, trip, Math.floor(mo.travelled())));
-            }
-            return mo.cutShort();
-        };
+        th.waitingFor = ThreadWaits.afterVector(c, x.counts());
         return null;
     }
 
     @Override
     public Void offset(Command.Offset x) {
         if (x.channel() >= c.model.axes) {
-            throw refuse(Tc.OPERAND);
+            throw Refused.refuse(Tc.OPERAND);
         }
         c.offsets[x.channel()] = range(x.volts().value(), -9.9982, 9.9982);
         return null;
@@ -282,33 +203,19 @@ final class DmcCommands implements Command.Visitor<Void> {
         onlyInProgram();
         // WT: 2 to 2,147,483,646 ms (command reference WT)
         double until = c.time() + within(x.milliseconds(), GalilModel.Limit.DWELL) / 1000;
-        th.waitingFor = () -> c.time() >= until - 1e-9;
+        th.waitingFor = ThreadWaits.until(c, until);
         return null;
     }
 
     @Override
     public Void toolNumber(Command.ToolNumber x) {
-        if (!c.variables.containsKey("TOOL") && c.variables.size() >= c.model.variables) {
-            throw refuse(Tc.TOO_MANY_VARIABLES);
-        }
-        c.variables.put("TOOL", (double) x.station());
-        return null;
-    }
-
-    @Override
-    public Void revolver(Command.Revolver x) {
-        return notModelled(); // the thesis dialect's own words, not a Galil command
-    }
-
-    @Override
-    public Void passThroughM(Command.PassThroughM x) {
-        return notModelled();
+        return Refused.doing(() -> c.assign("TOOL", x.station()));
     }
 
     @Override
     public Void output(Command.Output x) {
         int n = (int) range(x.bit(), 1, c.model.outputs);
-        c.outputs = x.on() ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
+        c.setOutput(n, x.on());
         return null;
     }
 
@@ -318,7 +225,7 @@ final class DmcCommands implements Command.Visitor<Void> {
     private int axis(char letter) {
         int a = c.axis(letter);
         if (a < 0) {
-            throw refuse(Tc.OPERAND);
+            throw Refused.refuse(Tc.OPERAND);
         }
         return a;
     }
@@ -326,7 +233,7 @@ final class DmcCommands implements Command.Visitor<Void> {
     @Override
     public Void gearMaster(Command.GearMaster x) {
         int m = axis(x.master());
-        return doing(() -> {
+        return Refused.doing(() -> {
             c.gearing.master(axis(x.first()), m);
             c.gearing.master(axis(x.second()), m);
         });
@@ -338,11 +245,8 @@ final class DmcCommands implements Command.Visitor<Void> {
         double tp = Math.rint(c.motion.position[axis(x.encoder())]);
         double turns = tp / x.countsPerRev();
         turns = turns < 0 ? Math.ceil(turns) : Math.floor(turns);
-        if (!c.variables.containsKey(x.variable()) && c.variables.size() >= c.model.variables) {
-            throw refuse(Tc.TOO_MANY_VARIABLES);
-        }
-        c.variables.put(x.variable(), (turns + (x.reverse() ? -1 : 1)) * x.countsPerRev() + x.phase());
-        return null;
+        double value = (turns + (x.reverse() ? -1 : 1)) * x.countsPerRev() + x.phase();
+        return Refused.doing(() -> c.assign(x.variable(), value));
     }
 
     /** {@code MF}/{@code MR}: the thread waits until the axis has passed the count forward (backward). */
@@ -352,47 +256,23 @@ final class DmcCommands implements Command.Visitor<Void> {
         int a = axis(x.axis());
         double at = x.at() instanceof Command.Operand.Count n ? n.counts()
                 : doingValue(((Command.Operand.Variable) x.at()).name());
-        double[] position = c.motion.position;
-        java.util.function.BooleanSupplier past = x.reverse() ? () -> position[a] <= at : () -> position[a] >= at;
-        // "The accuracy of the MF command is the number of counts that occur in 2*TM" (COMALL MF, MR):
-        // the trip is seen 0, 1 or 2 samples after the first sample past the count, at the
-        // controller's seeded trip phase (VirtualGalil.tripPhase), so passes do not start alike
-        int[] late = {-1};
-        th.waitingFor = () -> {
-            if (late[0] < 0) {
-                if (!past.getAsBoolean()) {
-                    return false;
-                }
-                late[0] = c.tripPhase.nextInt(3);
-            }
-            return late[0]-- == 0;
-        };
+        th.waitingFor = ThreadWaits.past(c, a, at, x.reverse()); // accurate to 2 samples (ThreadWaits.past)
         return null;
     }
 
     private double doingValue(String variable) {
-        try {
-            return c.variable(variable);
-        } catch (GalilException e) {
-            throw new Refused(e);
-        }
+        return Refused.reading(() -> c.variable(variable));
     }
 
     @Override
     public Void gearRatio(Command.GearRatio x) {
         int a = axis(x.first());
         int b = axis(x.second());
-        return doing(() -> {
+        return Refused.doing(() -> {
             // COMALL GR: "Min -127, Max 127, Resolution 1/65,536"
             c.gearing.ratio(a, range(x.firstRatio().value(), -127, 127));
             c.gearing.ratio(b, range(x.secondRatio().value(), -127, 127));
         });
-    }
-
-    /** Read as an assignment by {@link Statements} (its expression is evaluated there); not a command here. */
-    @Override
-    public Void phaseError(Command.PhaseError x) {
-        return notModelled();
     }
 
     /**
@@ -406,7 +286,7 @@ final class DmcCommands implements Command.Visitor<Void> {
         int b = x.second() == 0 ? -1 : axis(x.second());
         double na = doingValue(x.firstVariable());
         double nb = b < 0 ? 0 : doingValue(x.secondVariable());
-        return doing(() -> {
+        return Refused.doing(() -> {
             c.gearing.increment(a, Math.rint(na));
             if (b >= 0) {
                 c.gearing.increment(b, Math.rint(nb));
@@ -414,17 +294,11 @@ final class DmcCommands implements Command.Visitor<Void> {
         });
     }
 
-    /** {@code DP} is the controller's own statement (Statements.define); not reached here. */
-    @Override
-    public Void definePosition(Command.DefinePosition x) {
-        return notModelled();
-    }
-
     @Override
     public Void positionAbsolute(Command.PositionAbsolute x) {
         int a = axis(x.first());
         int b = axis(x.second());
-        return doing(() -> {
+        return Refused.doing(() -> {
             c.gearing.target(a, x.firstCount());
             c.gearing.target(b, x.secondCount());
         });
@@ -433,7 +307,7 @@ final class DmcCommands implements Command.Visitor<Void> {
     /** {@code BG XY}: independent moves of these axes to their PA targets; not while their sequence runs (TC 21). */
     @Override
     public Void begin(Command.Begin x) {
-        return doing(() -> {
+        return Refused.doing(() -> {
             List<Integer> axes = c.axes(x.axes());
             for (int a : axes) {
                 if (c.motion.running() && (a == c.motion.axis1 || a == c.motion.axis2)) {
@@ -449,88 +323,19 @@ final class DmcCommands implements Command.Visitor<Void> {
     /** {@code AM XY}: the thread waits until these axes' moves are complete (the vector sequence's too for its axes). */
     @Override
     public Void afterMotion(Command.AfterMotion x) {
-        return doing(() -> {
+        return Refused.doing(() -> {
             onlyInProgram();
             List<Integer> axes = c.axes(x.axes());
-            VectorMotion mo = c.motion;
-            Gearing g = c.gearing;
-            th.waitingFor = () -> {
-                for (int a : axes) {
-                    if (g.moving[a] || mo.running() && (a == mo.axis1 || a == mo.axis2)) {
-                        return false;
-                    }
-                }
-                return true;
-            };
+            th.waitingFor = ThreadWaits.axesStill(c, axes);
         });
     }
 
     @Override
     public Void end(Command.End x) {
         if (th == null) {
-            throw refuse(Tc.ONLY_IN_PROGRAM); // COMALL EN: "Not Valid in terminal"
+            throw Refused.refuse(Tc.ONLY_IN_PROGRAM); // COMALL EN: "Not Valid in terminal"
         }
         th.back();
         return null;
-    }
-
-    // The machine around the motion (gcnc.galil.MachineCode): program flow, messages, stops, the
-    // servo settings, soft limits and assignments are the controller's own statements (Statements,
-    // Expressions), which run them from the text before this class is asked (handles() is false
-    // for their heads); reaching one here is a command this controller does not model.
-
-    @Override
-    public Void analogOut(Command.AnalogOut x) {
-        return notModelled(); // AO addresses a Modbus device: none is attached to the virtual controller
-    }
-
-    @Override
-    public Void axisSetting(Command.AxisSetting x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void softLimit(Command.SoftLimit x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void jump(Command.Jump x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void call(Command.Call x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void message(Command.Message x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void stop(Command.Stop x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void abort(Command.Abort x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void clearStack(Command.ClearStack x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void setVariable(Command.SetVariable x) {
-        return notModelled();
-    }
-
-    @Override
-    public Void setDeadline(Command.SetDeadline x) {
-        return notModelled();
     }
 }

@@ -121,14 +121,7 @@ final class Expressions {
         }
         char c = s.charAt(at);
         if (c == '(') {
-            at++;
-            double v = expression();
-            blanks();
-            if (at >= s.length() || s.charAt(at) != ')') {
-                throw new GalilException(Tc.PARENTHESES);
-            }
-            at++;
-            return v;
+            return enclosed(')', Tc.PARENTHESES);
         }
         if (Character.isDigit(c) || c == '.') {
             int from = at;
@@ -195,11 +188,16 @@ final class Expressions {
         if (at >= s.length() || s.charAt(at) != '[') {
             throw new GalilException(Tc.BAD_FUNCTION);
         }
+        return enclosed(']', Tc.BAD_FUNCTION);
+    }
+
+    /** After an opening bracket: the expression inside, up to {@code close}; {@code unclosed} without it. */
+    private double enclosed(char close, Tc unclosed) throws GalilException {
         at++;
         double v = expression();
         blanks();
-        if (at >= s.length() || s.charAt(at) != ']') {
-            throw new GalilException(Tc.BAD_FUNCTION);
+        if (at >= s.length() || s.charAt(at) != close) {
+            throw new GalilException(unclosed);
         }
         at++;
         return v;

@@ -9,7 +9,8 @@ import java.util.regex.Pattern;
 /**
  * Executes one Galil statement for the host (thread null) or for a program thread: the commands gcnc
  * writes go to {@link DmcCommands} (read by gcnc.dmc), program flow to {@link ThreadFlow}, MG to
- * {@link MgFormat}; the protocol's own commands, variables and arrays are here. The command set is what a
+ * {@link MgFormat}, the controller's own two-letter commands to {@link OwnCommands}; assignments to
+ * variables, arrays and axis settings are here. The command set is what a
  * gcnc program (downloaded, or streamed with its resident program) and its sender use, listed in
  * docs/virtual-controller.md; anything else is {@code ?} with TC 1, never ignored.
  */
@@ -17,10 +18,12 @@ final class Statements {
     private final VirtualGalil c;
 
     final ThreadFlow flow;
+    private final OwnCommands own;
 
     Statements(VirtualGalil c) {
         this.c = c;
         this.flow = new ThreadFlow(c, this);
+        this.own = new OwnCommands(c, flow);
     }
 
     /** {@code name=expr}, {@code name[i]=expr}, {@code KPC=0}; group 1 the target, 2 the index, 3 the value. */
@@ -29,10 +32,6 @@ final class Statements {
     /** Commands with a per-axis assignment form ({@code OFC=0}); the value is accepted and, but for OF, not used. */
     private static final java.util.Set<String> AXIS_ASSIGNABLE = java.util.Set.of("KP", "KI", "KD", "ER", "OF", "BL",
             "FL", "TL", "AC", "DC", "SP", "IT", "OE");
-
-    /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link VirtualGalil#smooth}. */
-    private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",
-            "OE", "NO");
 
     String execute(String st, ProgramThread th) throws GalilException {
         if (st.isEmpty()) {
@@ -69,7 +68,7 @@ final class Statements {
         }
         String cmd = st.substring(0, 2);
         String args = st.substring(2).strip();
-        return command(cmd, args, th);
+        return own.command(cmd, args, th);
     }
 
     private static boolean upper(char ch) {
@@ -96,7 +95,7 @@ final class Statements {
                 }
                 c.offsets[a] = v;
             } else if (name.startsWith("IT")) {
-                c.smooth(a, v);
+                own.smooth(a, v);
             }
             return "";
         }
@@ -118,11 +117,7 @@ final class Statements {
         if (value.isEmpty()) {
             return number(c.variable(name)) + "\r\n";
         }
-        double v = eval(value);
-        if (!c.variables.containsKey(name) && c.variables.size() >= c.model.variables) {
-            throw new GalilException(Tc.TOO_MANY_VARIABLES);
-        }
-        c.variables.put(name, v);
+        c.assign(name, eval(value));
         return "";
     }
 
@@ -140,202 +135,6 @@ final class Statements {
         return (v < 0 && !zero ? "-" : " ") + digits;
     }
 
-    private String command(String cmd, String args, ProgramThread th) throws GalilException {
-        VectorMotion mo = c.motion;
-        switch (cmd) {
-            case "IT": {
-                // IT n,n,...: one value per axis in order, an empty place leaves that axis as it is
-                String[] places = args.split(",", -1);
-                for (int i = 0; i < places.length; i++) {
-                    if (!places[i].isBlank()) {
-                        c.smooth(i, eval(places[i].strip()));
-                    }
-                }
-                return "";
-            }
-            case "TC": {
-                double n = args.isEmpty() ? 0 : eval(args);
-                Tc e = c.lastError;
-                c.lastError = Tc.NONE;
-                return (n == 1 && e != Tc.NONE ? e.code + " " + e.text : String.valueOf(e.code)) + "\r\n";
-            }
-            case "MG":
-                return MgFormat.message(c, args, th);
-            case "CW": {
-                List<String> a = split(args);
-                double n = eval(a.get(0));
-                if (n != 1 && n != 2) {
-                    throw new GalilException(Tc.RANGE);
-                }
-                c.cw = (int) n;
-                return "";
-            }
-            case "CF":
-                return configureUnsolicited(args, th);
-            case "EO":
-                return echo(args, th);
-            case "WH":
-                if (th != null) {
-                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL WH: Not Valid in program
-                }
-                return (c.port == 'S' ? "SERIAL" : "IH" + c.port) + "\r\n";
-            case "XQ":
-                return flow.execute(args);
-            case "HX":
-                return flow.halt(args);
-            case "UL":
-                if (th != null) {
-                    throw new GalilException(Tc.NOT_IN_PROGRAM);
-                }
-                return c.program.upload() + "\\";
-            case "DL":
-                throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
-            case "ZS":
-                // zero the subroutine stack (COMALL ZS): an error routine's EN then ends the thread
-                // instead of returning into the motion it interrupted (gcnc's #FAULT does this)
-                onlyInProgram(th);
-                th.stack.clear();
-                return "";
-            case "RE":
-                onlyInProgram(th); // COMALL RE: "Not Valid in terminal"
-                th.back();
-                return "";
-            case "JP":
-            case "JS":
-                return flow.jump(cmd, args, th);
-            case "MO":
-                for (int a : axesOrAll(args)) {
-                    c.servo[a] = false;
-                    if (a == mo.axis1 || a == mo.axis2) {
-                        mo.abort(0, c.time());
-                    }
-                }
-                c.gearing.stop();
-                return "";
-            case "CA":
-                if (!args.equals("S")) {
-                    throw new GalilException(Tc.S_OPERAND);
-                }
-                return "";
-            case "VR":
-                mo.vr = range(eval(args), 0, 10);
-                mo.changed();
-                return "";
-            case "MC":
-                onlyInProgram(th);
-                th.waitingFor = () -> !mo.running();
-                return "";
-            case "AI": {
-                onlyInProgram(th);
-                int n = (int) eval(args);
-                int bit = Math.abs(n);
-                c.io("IN", bit);
-                th.waitingFor = () -> ((c.inputs >> (bit - 1) & 1) != 0) == n > 0;
-                return "";
-            }
-            case "ST":
-                if (args.isEmpty()) {
-                    for (ProgramThread t : c.threads) {
-                        if (t != th) {
-                            t.halt();
-                        }
-                    }
-                }
-                mo.stop(4);
-                c.gearing.stop(); // gearing off, a settling move ends where it is (assumed: docs/virtual-controller.md)
-                return "";
-            case "AB": {
-                double n = args.isEmpty() ? 0 : eval(args);
-                if (n != 1) {
-                    for (ProgramThread t : c.threads) {
-                        if (t != th) {
-                            t.halt();
-                        }
-                    }
-                }
-                mo.abort(7, c.time());
-                c.gearing.stop();
-                return "";
-            }
-            case "CS":
-                if (!args.isEmpty() && !args.equals("S")) {
-                    throw new GalilException(Tc.S_OPERAND);
-                }
-                mo.clear();
-                return "";
-            case "DP":
-                return define(args);
-            case "TP":
-            case "RP":
-                return tell(args);
-            case "OB": {
-                List<String> a = split(args);
-                if (a.size() != 2) {
-                    throw new GalilException(Tc.OPERAND);
-                }
-                int n = (int) range(eval(a.get(0)), 1, c.model.outputs);
-                boolean on = eval(a.get(1)) != 0;
-                c.outputs = on ? c.outputs | 1L << (n - 1) : c.outputs & ~(1L << (n - 1));
-                return "";
-            }
-            case "LM":
-                if (args.equals("?")) {
-                    return mo.free() + "\r\n";
-                }
-                throw new GalilException(Tc.UNRECOGNIZED); // LM/LI linear mode is not modelled
-            case "DM":
-                return dimension(args);
-            case "RS":
-                if (th != null) {
-                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL RS: "Not Valid in program"
-                }
-                return reset();
-            default:
-                if (NO_EFFECT.contains(cmd)) {
-                    return "";
-                }
-                throw new GalilException(Tc.UNRECOGNIZED);
-        }
-    }
-
-    /**
-     * CF: where unsolicited messages go (COMALL CF): {@code CF S} the main serial port (the power-up
-     * value), {@code CF A}..{@code CF H} an Ethernet handle, {@code CF I} the port the command came in on
-     * ("Not valid in program"). The reference offers {@code T} for an aux serial port the virtual
-     * controller does not have.
-     */
-    private String configureUnsolicited(String args, ProgramThread th) throws GalilException {
-        String a = args.strip();
-        if (a.equals("I")) {
-            if (th != null) {
-                throw new GalilException(Tc.NOT_IN_PROGRAM);
-            }
-            c.cf = c.port;
-        } else if (a.equals("S") || a.length() == 1 && a.charAt(0) >= 'A' && a.charAt(0) <= 'H') {
-            c.cf = a.charAt(0);
-        } else {
-            throw new GalilException(Tc.OPERAND);
-        }
-        return "";
-    }
-
-    /**
-     * EO: the serial port's echo (COMALL EO: "defaulted to EO1", "accepted over the serial port only";
-     * "The ethernet port will not echo commands"). From an Ethernet handle it is refused: the reference
-     * does not say with which code, TC 1 is assumed (docs/virtual-controller.md).
-     */
-    private String echo(String args, ProgramThread th) throws GalilException {
-        if (th == null && c.port != 'S') {
-            throw new GalilException(Tc.UNRECOGNIZED);
-        }
-        double n = eval(args.isEmpty() ? "1" : args);
-        if (n != 0 && n != 1) {
-            throw new GalilException(Tc.RANGE);
-        }
-        c.echo = n == 1;
-        return "";
-    }
-
     static void onlyInProgram(ProgramThread th) throws GalilException {
         if (th == null) {
             throw new GalilException(Tc.ONLY_IN_PROGRAM);
@@ -347,94 +146,6 @@ final class Statements {
             throw new GalilException(Tc.RANGE);
         }
         return v;
-    }
-
-    private List<Integer> axesOrAll(String args) throws GalilException {
-        if (args.isEmpty()) {
-            List<Integer> all = new ArrayList<>();
-            for (int i = 0; i < c.model.axes; i++) {
-                all.add(i);
-            }
-            return all;
-        }
-        return c.axes(args);
-    }
-
-    private String define(String args) throws GalilException {
-        if (c.motion.running()) {
-            throw new GalilException(Tc.WHILE_RUNNING);
-        }
-        List<String> a = split(args);
-        if (a.size() > c.model.axes) {
-            throw new GalilException(Tc.OPERAND);
-        }
-        for (int i = 0; i < a.size(); i++) {
-            if (!a.get(i).isEmpty()) {
-                c.motion.position[i] = (long) eval(a.get(i));
-            }
-        }
-        c.motion.clear();
-        return "";
-    }
-
-    private String tell(String args) throws GalilException {
-        List<Integer> axes = axesOrAll(args);
-        StringBuilder b = new StringBuilder();
-        for (int a : axes) {
-            b.append(b.length() == 0 ? "" : ", ").append((long) Math.rint(c.motion.position[a]));
-        }
-        return b + "\r\n";
-    }
-
-    /** DM name[n], ...; {@code DM ?} answers the array elements still free (a sender's pre-flight). */
-    private String dimension(String args) throws GalilException {
-        if (args.equals("?")) {
-            return (int) c.operand("DM") + "\r\n";
-        }
-        for (String d : split(args)) {
-            Matcher m = Pattern.compile("([A-Za-z][A-Za-z0-9]{0,7})\\[(.+)\\]").matcher(d);
-            if (!m.matches()) {
-                throw new GalilException(Tc.OPERAND);
-            }
-            int n = (int) range(eval(m.group(2)), 1, c.model.arrayElements);
-            int used = 0;
-            for (double[] arr : c.arrays.values()) {
-                used += arr.length;
-            }
-            double[] old = c.arrays.get(m.group(1));
-            if (used - (old == null ? 0 : old.length) + n > c.model.arrayElements) {
-                throw new GalilException(Tc.ARRAY_SPACE);
-            }
-            if (old == null && c.arrays.size() >= Model.ARRAYS) {
-                throw new GalilException(Tc.TOO_MANY_VARIABLES);
-            }
-            c.arrays.put(m.group(1), new double[n]);
-        }
-        return "";
-    }
-
-    /** RS: motion, threads, variables, arrays, outputs and errors back to power-up; the program stays; #AUTO runs. */
-    private String reset() {
-        for (ProgramThread t : c.threads) {
-            t.halt();
-        }
-        c.motion.abort(7, c.time());
-        c.gearing.stop();
-        c.variables.clear();
-        c.arrays.clear();
-        c.outputs = 0;
-        java.util.Arrays.fill(c.offsets, 0);
-        java.util.Arrays.fill(c.servo, false);
-        c.lastError = Tc.NONE;
-        c.cw = 2;
-        c.cf = 'S';
-        c.echo = c.model.galil.serialEcho();
-        java.util.Arrays.fill(c.smoothing, 1);
-        int auto = c.program.label("AUTO");
-        if (auto >= 0) {
-            c.threads[0].start(auto);
-        }
-        return "";
     }
 
     // ---- argument lists ----

@@ -1,8 +1,6 @@
 package gcnc.controller;
 
 import gcnc.machine.GalilModel;
-import java.util.ArrayDeque;
-import java.util.Iterator;
 
 /**
  * The coordinated (vector) motion of coordinate system S in time: the segment buffer (511 slots), the
@@ -20,7 +18,8 @@ import java.util.Iterator;
  * time; a look-ahead (backward) pass over the buffer caps each segment's end speed so that every later
  * {@code >p} and the VE stop are reachable at VD. Slot accounting: a segment frees its slot when it starts
  * executing, VE holds one until the end, so {@code _LMS = 511 - waiting segments - VE} and a sender that
- * keeps {@code sent - _CSS <= 511} never overflows (the EPICS driver's rule).
+ * keeps {@code sent - _CSS <= 511} never overflows (the EPICS driver's rule). The buffer, the sequence's
+ * geometry and the look-ahead over the buffer are {@link SegmentBuffer}'s; this class is the profiler.
  */
 final class VectorMotion {
     /** What becomes of a segment and a sequence; the trace and the program threads listen. */
@@ -33,16 +32,9 @@ final class VectorMotion {
         void limitTripped();
     }
 
-    /** TC 31 "Total move distance in a sequence > 2 billion" (the table's sequence_max is LI's 2^30, stricter). */
-    static final double MAX_SEQUENCE = 2_000_000_000;
     static final double STEP = 0.001;
 
-    private final int slots;
-    /** The model's ranges (tables/galil_models.csv): segment length, radius, arc, segment speeds. */
-    private final GalilModel.Range segment;
-    private final GalilModel.Range radius;
-    private final GalilModel.Range arc;
-    private final GalilModel.Range speed;
+    private final SegmentBuffer buffer;
     private final Events events;
     /** The two plane axes (channel indices), -1 before VM. */
     int axis1 = -1;
@@ -54,13 +46,10 @@ final class VectorMotion {
     double vd = 256_000;
     double vr = 1;
 
-    private final ArrayDeque<VectorSegment> waiting = new ArrayDeque<>();
     private VectorSegment current;
     private double s;
     private double v;
-    private boolean ve;
     private boolean running;
-    private int given;
     private int css;
     /**
      * The trip point of the last {@code AV} of the running sequence, counts of path from its start (0
@@ -70,14 +59,7 @@ final class VectorMotion {
     private double avFrom;
     /** Whether the last sequence ran to its end (VE reached), not stopped, aborted or run dry. */
     private boolean ranToEnd;
-    private double pathTotal;
-    private double origin1;
-    private double origin2;
-    private double cursor1;
-    private double cursor2;
     private int sequence;
-    private double corner1;
-    private double corner2;
     /** Nonzero while a stop decelerates the sequence: the stop code it will leave (4 ST, 2 limit). */
     private int stopping;
     int stopCode = 0;
@@ -91,14 +73,21 @@ final class VectorMotion {
     private boolean dirty = true;
 
     VectorMotion(GalilModel model, Events events) {
-        this.slots = (int) model.range(GalilModel.Limit.BUFFER_SEGMENTS).max();
-        this.segment = model.range(GalilModel.Limit.SEGMENT_LENGTH);
-        this.radius = model.range(GalilModel.Limit.ARC_RADIUS);
-        this.arc = model.range(GalilModel.Limit.ARC_LENGTH);
-        this.speed = model.range(GalilModel.Limit.SEGMENT_SPEED);
+        this.buffer = new SegmentBuffer(model);
         int axes = model.axes();
         this.events = events;
         this.position = new double[Math.max(axes, 2)];
+    }
+
+    /** Arms the segment faults of {@code faults} that name a segment ({@code stall}, {@code limit-at}). */
+    void arm(java.util.List<InjectedFault> faults) {
+        for (InjectedFault f : faults) {
+            if (f.kind() == InjectedFault.Kind.STALL) {
+                stallAfter = f.n();
+            } else if (f.kind() == InjectedFault.Kind.LIMIT_AT) {
+                limitAt = f.n();
+            }
+        }
     }
 
     boolean running() {
@@ -107,7 +96,7 @@ final class VectorMotion {
 
     /** {@code _LMS}: free slots. */
     int free() {
-        return slots - waiting.size() - (ve ? 1 : 0);
+        return buffer.free();
     }
 
     /**
@@ -126,7 +115,7 @@ final class VectorMotion {
     }
 
     double corner(int axis) {
-        return axis == axis1 ? corner1 : axis == axis2 ? corner2 : position[axis];
+        return axis == axis1 ? buffer.corner1() : axis == axis2 ? buffer.corner2() : position[axis];
     }
 
     /** Path speed now (counts/s), {@code _VPS}-like; used by the status of a test. */
@@ -134,88 +123,25 @@ final class VectorMotion {
         return v;
     }
 
-    /** A new sequence takes its origin from where the axes stand. */
-    private void startIfNeeded() {
-        if (!running && waiting.isEmpty() && given == 0) {
-            origin1 = position[axis1];
-            origin2 = position[axis2];
-            cursor1 = origin1;
-            cursor2 = origin2;
-            pathTotal = 0;
-            corner1 = origin1;
-            corner2 = origin2;
-        }
-    }
-
+    /** Room for a segment: the plane set (VM), then the buffer's ({@link SegmentBuffer#room}). */
     private void room() throws GalilException {
         if (axis1 < 0) {
             throw new GalilException(Tc.S_OPERAND);
         }
-        if (ve) {
-            throw new GalilException(Tc.WHILE_RUNNING);
-        }
-        if (free() <= 0) {
-            throw new GalilException(Tc.BUFFER_FULL);
-        }
+        buffer.room();
     }
 
     /** {@code VP a,b <o >p}: o and p NaN when not given. */
     void vp(double a, double b, double o, double p) throws GalilException {
         room();
-        speeds(o, p);
-        startIfNeeded();
-        double e1 = origin1 + a;
-        double e2 = origin2 + b;
-        if (Math.abs(e1 - cursor1) > segment.max() || Math.abs(e2 - cursor2) > segment.max()) {
-            throw new GalilException(Tc.RANGE);
-        }
-        double length = Math.hypot(e1 - cursor1, e2 - cursor2);
-        if (length == 0) {
-            throw new GalilException(Tc.SEGMENT_TOO_SHORT);
-        }
-        add(new VectorSegment(given + 1, false, cursor1, cursor2, e1, e2, 0, 0, 0, 0, 0, length, o, p, 0), e1, e2);
+        buffer.vp(a, b, o, p, running, position[axis1], position[axis2]);
+        dirty = true;
     }
 
     /** {@code CR r,start,sweep <o >p}, angles in degrees. */
     void cr(double r, double startDeg, double sweepDeg, double o, double p) throws GalilException {
         room();
-        speeds(o, p);
-        if (!radius.holds(r, false) || Math.abs(startDeg) > 32000 || Math.abs(sweepDeg) > 32000
-                || !arc.holds(r * Math.abs(sweepDeg), true)) {
-            throw new GalilException(Tc.RANGE);
-        }
-        if (sweepDeg == 0) {
-            throw new GalilException(Tc.SEGMENT_TOO_SHORT);
-        }
-        startIfNeeded();
-        // the simulator's own arithmetic for a CR (gcnc.dmc's), so that the two end every arc on the same
-        // double and the trace compares count for count
-        double[] g = gcnc.dmc.Command.CircularArc.geometry(cursor1, cursor2, r, startDeg, sweepDeg);
-        double c1 = g[0];
-        double c2 = g[1];
-        double e1 = g[2];
-        double e2 = g[3];
-        double th = Math.toRadians(startDeg);
-        double sweep = Math.toRadians(sweepDeg);
-        add(new VectorSegment(given + 1, true, cursor1, cursor2, e1, e2, c1, c2, r, th, sweep, Math.abs(sweep) * r, o, p, 0),
-                e1, e2);
-    }
-
-    private void speeds(double o, double p) throws GalilException {
-        if (!Double.isNaN(o) && !speed.holds(o, false) || !Double.isNaN(p) && (p < 0 || p > speed.max())) {
-            throw new GalilException(Tc.RANGE);
-        }
-    }
-
-    private void add(VectorSegment seg, double e1, double e2) throws GalilException {
-        if (pathTotal + seg.length() > MAX_SEQUENCE) {
-            throw new GalilException(Tc.SEQUENCE_TOO_LONG);
-        }
-        pathTotal += seg.length();
-        given++;
-        waiting.add(seg);
-        cursor1 = e1;
-        cursor2 = e2;
+        buffer.cr(r, startDeg, sweepDeg, o, p, running, position[axis1], position[axis2]);
         dirty = true;
     }
 
@@ -224,14 +150,7 @@ final class VectorMotion {
         if (axis1 < 0) {
             throw new GalilException(Tc.S_OPERAND);
         }
-        if (given == 0 && !running) {
-            return; // nothing to end: accepted, no effect
-        }
-        if (!ve) {
-            if (free() <= 0) {
-                throw new GalilException(Tc.BUFFER_FULL);
-            }
-            ve = true;
+        if (buffer.ve(running)) {
             dirty = true;
         }
     }
@@ -241,7 +160,7 @@ final class VectorMotion {
         if (running) {
             throw new GalilException(Tc.BEGIN_WHILE_RUNNING);
         }
-        if (waiting.isEmpty()) {
+        if (buffer.isEmpty()) {
             throw new GalilException(Tc.NO_SEQUENCE);
         }
         running = true;
@@ -294,9 +213,7 @@ final class VectorMotion {
         if (running) {
             throw new GalilException(Tc.WHILE_RUNNING);
         }
-        waiting.clear();
-        ve = false;
-        given = 0;
+        buffer.clear();
         css = 0;
         dirty = true;
     }
@@ -380,9 +297,9 @@ final class VectorMotion {
 
     /** Takes the next segment from the buffer; false when the sequence ended (VE reached or underrun). */
     private boolean next(double time) {
-        VectorSegment seg = waiting.poll();
+        VectorSegment seg = buffer.poll();
         if (seg == null) {
-            end(101, ve ? "end" : "underrun", time);
+            end(101, buffer.ended() ? "end" : "underrun", time);
             return false;
         }
         executed++;
@@ -400,8 +317,7 @@ final class VectorMotion {
         doneLength += done.length();
         position[axis1] = done.end1();
         position[axis2] = done.end2();
-        corner1 = Math.rint(done.end1());
-        corner2 = Math.rint(done.end2());
+        buffer.reached(done.end1(), done.end2());
         current = null;
         events.segmentDone(sequence, done.number(), done, free(), time);
         if (stopping != 0 && v == 0) {
@@ -416,15 +332,15 @@ final class VectorMotion {
             s = done.length();
             return;
         }
-        if (waiting.isEmpty() && !ve) {
+        if (buffer.isEmpty() && !buffer.ended()) {
             // an underrun: no controlled deceleration, the axes stop on the last vector
             v = 0;
         }
-        if (waiting.isEmpty()) {
+        if (buffer.isEmpty()) {
             if (stopping == 0) {
                 css = done.number(); // every segment finished: the counter reads how many
             }
-            end(stopping != 0 ? stopping : 101, stopping != 0 ? "stop" : ve ? "end" : "underrun", time);
+            end(stopping != 0 ? stopping : 101, stopping != 0 ? "stop" : buffer.ended() ? "end" : "underrun", time);
         }
     }
 
@@ -436,9 +352,7 @@ final class VectorMotion {
         stopCode = code;
         v = 0;
         current = null;
-        waiting.clear();
-        ve = false;
-        given = 0;
+        buffer.clear();
         position[axis1] = Math.rint(position[axis1]);
         position[axis2] = Math.rint(position[axis2]);
         dirty = true;
@@ -447,22 +361,7 @@ final class VectorMotion {
 
     /** The end-speed cap of the current segment and of every waiting one, from the last back (look-ahead). */
     private void capsFor() {
-        int n = waiting.size() + 1;
-        if (caps.length < n) {
-            caps = new double[Math.max(n, 2 * caps.length)];
-        }
-        VectorSegment[] order = new VectorSegment[n];
-        order[0] = current;
-        Iterator<VectorSegment> it = waiting.iterator();
-        for (int i = 1; i < n; i++) {
-            order[i] = it.next();
-        }
-        double after = ve ? 0 : Double.POSITIVE_INFINITY;
-        for (int i = n - 1; i >= 0; i--) {
-            double own = Double.isNaN(order[i].p()) ? Double.POSITIVE_INFINITY : order[i].p() * vr;
-            caps[i] = Math.min(own, after);
-            after = Math.sqrt(caps[i] * caps[i] + 2 * vd * order[i].length());
-        }
+        caps = buffer.endSpeedCaps(current, vr, vd, caps);
         dirty = false;
     }
 }

@@ -4,7 +4,6 @@ import java.io.Writer;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 
@@ -16,7 +15,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * drives {@link #advance} itself gets the same run every time.
  *
  * <p>{@link Statements} executes a command, from the host or from a thread; this class holds what the
- * commands act on and reads the operands ({@code _LMS}, {@code _CSS}, ...) for them.
+ * commands act on and answers the operands ({@code _LMS}, {@code _CSS}, ...: {@link Operands}) for them.
  */
 public final class VirtualGalil implements Expressions.Scope {
     /** Where the controller's unsolicited output (a program's MG, a program error) goes. */
@@ -37,7 +36,6 @@ public final class VirtualGalil implements Expressions.Scope {
     final VectorMotion motion;
     /** The spindle encoder, gearing to it and independent moves: a thread pass. */
     final Gearing gearing;
-    private int passes;
     final boolean[] servo;
     final double[] offsets;
     /**
@@ -66,7 +64,7 @@ public final class VirtualGalil implements Expressions.Scope {
     private final SegmentTrace trace;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     final Statements statements;
-    /** Where within 2 samples each MF/MR trip is seen (DmcCommands.waitPast); seeded, so a run repeats. */
+    /** Where within 2 samples each MF/MR trip is seen (ThreadWaits.past); seeded, so a run repeats. */
     final java.util.Random tripPhase;
 
     /** The spindle drive and encoder of the haas profile: 410 r/min a volt, 4,096 counts a revolution. */
@@ -104,76 +102,20 @@ public final class VirtualGalil implements Expressions.Scope {
         for (int i = 0; i < threads.length; i++) {
             threads[i] = new ProgramThread(i);
         }
-        this.motion = new VectorMotion(model.galil, new VectorMotion.Events() {
-            @Override
-            public void segmentDone(int sequence, int number, VectorSegment s, int free, double t) {
-                if (VirtualGalil.this.trace != null) {
-                    VirtualGalil.this.trace.segment(sequence, number, s, free, t);
-                }
-            }
-
-            @Override
-            public void sequenceEnded(int sequence, String why, double p1, double p2, double t) {
-                limitTripped = false;
-                event(String.format(Locale.ROOT, "%s %d at %d,%d", why, sequence, (long) p1, (long) p2), t);
-            }
-
-            @Override
-            public void limitTripped() {
-                tripLimit();
-            }
-        });
-        this.gearing = new Gearing(model.axes, motion.position, servo, offsets, spindleRate, (axes, ends, t) -> {
-            // a thread pass ends when both plane axes have settled (PA, BG, AM): one line of the trace
-            VectorMotion mo = VirtualGalil.this.motion;
-            boolean plane = false;
-            for (int a : axes) {
-                plane |= a == mo.axis1 || a == mo.axis2;
-            }
-            if (plane && mo.axis1 >= 0 && !VirtualGalil.this.gearing.moving[mo.axis1] && !VirtualGalil.this.gearing.moving[mo.axis2]) {
-                passes++;
-                if (VirtualGalil.this.trace != null) {
-                    VirtualGalil.this.trace.pass(passes, mo.position[mo.axis1], mo.position[mo.axis2], mo.free(), t);
-                }
-                event(String.format(Locale.ROOT, "pass %d at %d,%d", passes, (long) Math.rint(mo.position[mo.axis1]),
-                        (long) Math.rint(mo.position[mo.axis2])), t);
-            }
-        });
-        for (InjectedFault f : faults) {
-            if (f.kind() == InjectedFault.Kind.STALL) {
-                motion.stallAfter = f.n();
-            } else if (f.kind() == InjectedFault.Kind.LIMIT_AT) {
-                motion.limitAt = f.n();
-            }
-        }
+        MotionEvents events = new MotionEvents(this, this.trace);
+        this.motion = new VectorMotion(model.galil, events);
+        this.gearing = new Gearing(model.axes, motion.position, servo, offsets, spindleRate, events);
+        motion.arm(faults);
         this.statements = new Statements(this);
         if (this.trace != null) {
             this.trace.header(model.revision);
         }
     }
 
-    private void event(String text, double t) {
+    /** An event of the trace at time {@code t}. */
+    void event(String text, double t) {
         if (trace != null) {
             trace.event(text, t);
-        }
-    }
-
-    /**
-     * {@code IT} of axis {@code a}: 0.004 to 1, resolution 1/256 (command reference IT). Below 1 the real
-     * controller filters the axis in VM and the motion takes longer; the virtual one does not smooth, so it
-     * says so in the trace (docs/virtual-controller.md).
-     */
-    void smooth(int a, double v) throws GalilException {
-        if (a < 0 || a >= model.axes) {
-            throw new GalilException(Tc.OPERAND);
-        }
-        if (v < 0.004 || v > 1) {
-            throw new GalilException(Tc.RANGE);
-        }
-        smoothing[a] = v;
-        if (v != 1) {
-            event(String.format(Locale.ROOT, "IT %c %.4f: smoothing not modelled, the motion runs unfiltered (IT 1)",
-                    (char) ('A' + a), v), time);
         }
     }
 
@@ -308,16 +250,6 @@ public final class VirtualGalil implements Expressions.Scope {
         return false;
     }
 
-    /** The limit fault: the switch is active until the stop it causes ends, and #LIMSWI runs if there is one. */
-    private void tripLimit() {
-        limitTripped = true;
-        event("limit switch tripped", time);
-        int line = program.label("LIMSWI");
-        if (line >= 0) {
-            threads[0].interrupt(line);
-        }
-    }
-
     /**
      * Sends unsolicited text (a program's MG, a program's error) to the CF port only (COMALL MG: "The CF
      * command sets the default communication port for routing unsolicited messages"): every character's
@@ -336,6 +268,19 @@ public final class VirtualGalil implements Expressions.Scope {
                 l.unsolicited(b);
             }
         }
+    }
+
+    /** Sets variable {@code name}; a new one when the model's variables are all taken is refused. */
+    void assign(String name, double v) throws GalilException {
+        if (!variables.containsKey(name) && variables.size() >= model.variables) {
+            throw new GalilException(Tc.TOO_MANY_VARIABLES);
+        }
+        variables.put(name, v);
+    }
+
+    /** Sets digital output {@code n} (from 1) on or off ({@code SB}, {@code CB}, {@code OB}). */
+    void setOutput(int n, boolean on) {
+        outputs = on ? outputs | 1L << (n - 1) : outputs & ~(1L << (n - 1));
     }
 
     /** A statement of a thread failed: #CMDERR takes the thread over, or every thread stops (Galil's rule). */
@@ -417,57 +362,7 @@ public final class VirtualGalil implements Expressions.Scope {
 
     @Override
     public double operand(String name) throws GalilException {
-        int elements = 0;
-        for (double[] a : arrays.values()) {
-            elements += a.length;
-        }
-        switch (name) {
-            case "LMS": return motion.free();
-            case "CSS": return motion.css();
-            case "AVS": return Math.floor(motion.travelled()); // the path run since the sequence began (AV's distance)
-            case "BGS": return motion.running() ? 1 : 0;
-            case "SCS": return motion.stopCode;
-            case "VRS": return motion.vr;
-            case "VSS": return motion.vs;
-            case "TC": return lastError.code;
-            case "ED": return errorLine;
-            case "ED1": return errorThread;
-            case "DL": return model.labels - program.labelCount();
-            case "UL": return model.variables - variables.size();
-            case "DA": return Model.ARRAYS - arrays.size();
-            case "DM": return model.arrayElements - elements;
-            case "CF": return cf; // "the decimal value of the ASCII letter" (COMALL CF)
-            case "EO": return echo ? 1 : 0;
-            default: break;
-        }
-        if (name.length() == 3 && name.startsWith("XQ") && Character.isDigit(name.charAt(2))) {
-            int n = name.charAt(2) - '0';
-            if (n > 7) {
-                throw new GalilException(Tc.OPERAND);
-            }
-            return threads[n].running() ? threads[n].line : -1;
-        }
-        if (name.length() == 3) {
-            int a = axis(name.charAt(2));
-            if (a >= 0) {
-                switch (name.substring(0, 2)) {
-                    case "TP", "RP": return Math.rint(motion.position[a]);
-                    case "GR": return gearing.ratio[a]; // as GR set it, at its resolution 1/65,536
-                    case "VP": return motion.corner(a);
-                    case "BG": return motion.running() && (a == motion.axis1 || a == motion.axis2) || gearing.moving[a] ? 1 : 0;
-                    case "SC": return a == motion.axis1 || a == motion.axis2 ? motion.stopCode : 1;
-                    case "MO": return servo[a] ? 0 : 1;
-                    case "OF": return offsets[a];
-                    case "IT": return smoothing[a];
-                    // limit inputs are active low: 0 while the switch is tripped
-                    case "LF": return limitTripped && a == motion.axis1 ? 0 : 1;
-                    case "LR": return 1;
-                    case "HM": return 1; // the home input, inactive: no homing is modelled
-                    default: break;
-                }
-            }
-        }
-        throw new GalilException(Tc.UNRECOGNIZED);
+        return Operands.read(this, name);
     }
 
     // ---- reading state for a status line or a test ----
