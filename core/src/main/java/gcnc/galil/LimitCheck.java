@@ -41,17 +41,45 @@ public final class LimitCheck implements Consumer<Instruction> {
     @Override
     public void accept(Instruction i) {
         lines++;
-        Command c = i.command();
-        if (c instanceof Command.VectorSpeed s) {
-            report(limits.vectorSpeed(s.countsPerSecond().unscaled()), i);
-        } else if (c instanceof Command.VectorAcceleration a) {
-            report(limits.acceleration(a.countsPerSecond2().unscaled()), i);
-        } else if (c instanceof Command.VectorDeceleration d) {
-            report(limits.acceleration(d.countsPerSecond2().unscaled()), i);
-        } else if (c instanceof Command.VectorPosition p) {
+        i.command().accept(new Limits(i));
+        next.accept(i);
+    }
+
+    /**
+     * The limits one command is held against, a method per command (Command.Visitor), so that a new
+     * command does not compile until it is said here whether it has a limit.
+     */
+    private final class Limits implements Command.Visitor<Void> {
+        private final Instruction i;
+
+        Limits(Instruction i) {
+            this.i = i;
+        }
+
+        private Void none() {
+            return null;
+        }
+
+        /** A command whose one limit is {@code v}. */
+        private Void held(Optional<ControllerLimits.Violation> v) {
+            report(v, i);
+            return null;
+        }
+
+        @Override public Void vectorSpeed(Command.VectorSpeed s) { return held(limits.vectorSpeed(s.countsPerSecond().unscaled())); }
+        @Override public Void vectorAcceleration(Command.VectorAcceleration a) { return held(limits.acceleration(a.countsPerSecond2().unscaled())); }
+        @Override public Void vectorDeceleration(Command.VectorDeceleration d) { return held(limits.acceleration(d.countsPerSecond2().unscaled())); }
+        @Override public Void await(Command.Wait w) { return held(limits.dwell(w.milliseconds())); }
+
+        @Override
+        public Void vectorPosition(Command.VectorPosition p) {
             report(limits.segment(Math.round(p.first() - u), Math.round(p.second() - v)), i);
             segment(i, Math.hypot(p.first() - u, p.second() - v), p.first(), p.second(), p.speeds());
-        } else if (c instanceof Command.CircularArc a) {
+            return null;
+        }
+
+        @Override
+        public Void circularArc(Command.CircularArc a) {
             long r = a.radius().unscaled();
             Optional<ControllerLimits.Violation> range = limits.arcRadius(r);
             report(range.isPresent() ? range : limits.arc(r, a.sweep().value()), i); // one finding per CR
@@ -60,7 +88,11 @@ public final class LimitCheck implements Consumer<Instruction> {
             double radius = a.radius().value();
             segment(i, Math.abs(Math.toRadians(a.sweep().value())) * radius,
                     u + radius * (Math.cos(to) - Math.cos(from)), v + radius * (Math.sin(to) - Math.sin(from)), a.speeds());
-        } else if (c instanceof Command.BeginSequence) {
+            return null;
+        }
+
+        @Override
+        public Void beginSequence(Command.BeginSequence c) {
             report(limits.bufferSegments(segments), i); // the segments given before BGS (COMALL VM)
             if (ended) {
                 sequenceEnd(i);
@@ -68,19 +100,63 @@ public final class LimitCheck implements Consumer<Instruction> {
                 begun = true; // a sequence fed while it runs: its VE comes later, its segments count from here
                 segments = 0;
             }
-        } else if (c instanceof Command.VectorEnd) {
+            return null;
+        }
+
+        @Override
+        public Void vectorEnd(Command.VectorEnd c) {
             if (begun) {
                 sequenceEnd(i);
             } else {
                 ended = true;
             }
-        } else if (c instanceof Command.Wait w) {
-            report(limits.dwell(w.milliseconds()), i);
-        } else if (c instanceof Command.Label l) {
+            return null;
+        }
+
+        @Override
+        public Void label(Command.Label l) {
             labels++;
             report(limits.labelLength(l.name().length()), i);
+            return null;
         }
-        next.accept(i);
+
+        // the commands without a limit of their own
+
+        @Override public Void servoHere(Command.ServoHere c) { return none(); }
+        @Override public Void vectorMode(Command.VectorMode c) { return none(); }
+        @Override public Void stock(Command.Stock c) { return none(); }
+        @Override public Void feedMark(Command.FeedMark c) { return none(); }
+        @Override public Void sourceMark(Command.SourceMark c) { return none(); }
+        @Override public Void remark(Command.Remark c) { return none(); }
+        @Override public Void awaitSequence(Command.AwaitSequence c) { return none(); }
+        @Override public Void afterVector(Command.AfterVector c) { return none(); }
+        @Override public Void offset(Command.Offset c) { return none(); }
+        @Override public Void toolNumber(Command.ToolNumber c) { return none(); }
+        @Override public Void revolver(Command.Revolver c) { return none(); }
+        @Override public Void passThroughM(Command.PassThroughM c) { return none(); }
+        @Override public Void output(Command.Output c) { return none(); }
+        @Override public Void gearMaster(Command.GearMaster c) { return none(); }
+        @Override public Void syncPoint(Command.SyncPoint c) { return none(); }
+        @Override public Void waitPast(Command.WaitPast c) { return none(); }
+        @Override public Void gearRatio(Command.GearRatio c) { return none(); }
+        @Override public Void phaseError(Command.PhaseError c) { return none(); }
+        @Override public Void incrementPosition(Command.IncrementPosition c) { return none(); }
+        @Override public Void definePosition(Command.DefinePosition c) { return none(); }
+        @Override public Void positionAbsolute(Command.PositionAbsolute c) { return none(); }
+        @Override public Void begin(Command.Begin c) { return none(); }
+        @Override public Void afterMotion(Command.AfterMotion c) { return none(); }
+        @Override public Void end(Command.End c) { return none(); }
+        @Override public Void analogOut(Command.AnalogOut c) { return none(); }
+        @Override public Void axisSetting(Command.AxisSetting c) { return none(); }
+        @Override public Void softLimit(Command.SoftLimit c) { return none(); }
+        @Override public Void jump(Command.Jump c) { return none(); }
+        @Override public Void call(Command.Call c) { return none(); }
+        @Override public Void message(Command.Message c) { return none(); }
+        @Override public Void stop(Command.Stop c) { return none(); }
+        @Override public Void abort(Command.Abort c) { return none(); }
+        @Override public Void clearStack(Command.ClearStack c) { return none(); }
+        @Override public Void setVariable(Command.SetVariable c) { return none(); }
+        @Override public Void setDeadline(Command.SetDeadline c) { return none(); }
     }
 
     /** The sequence's whole length against the model's, and the next one starts from its origin. */
