@@ -110,6 +110,10 @@ final class ResumeState {
         try {
             return c.client().number(operand);
         } catch (GalilClient.Rejected r) {
+            // a variable the controller does not hold (one that never ran the program: TOOL undefined);
+            // TC1 clears the error the question left (COMALL TC: "After TC has been read, the error code is
+            // set to zero"), else the resumed program's end reads it in _TC and is taken for an error stop
+            c.client().query("TC1");
             return null;
         }
     }
