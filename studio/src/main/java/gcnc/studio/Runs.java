@@ -43,19 +43,6 @@ final class Runs implements AutoCloseable {
     /** The events of one run kept for a page that opens (or reloads) while it goes on; status aside. */
     static final int LOG = 1000;
 
-    /** The run going on. */
-    private static final class Run {
-        final RunArm arm;
-        final Operator operator = new Operator();
-        volatile boolean stepWaiting;
-        /** The program waits at a program stop (M00; M01 with the switch on) for Start. */
-        volatile boolean stopWaiting;
-
-        Run(RunArm arm) {
-            this.arm = arm;
-        }
-    }
-
     private final Workspace workspace;
     private final Supplier<Context> context;
     private final EventHub hub;
@@ -64,7 +51,7 @@ final class Runs implements AutoCloseable {
     private final SecureRandom random = new SecureRandom();
     // guarded by this
     private RunArm arm;
-    private Run run;
+    private LiveRun run;
     private Thread thread;
     private final List<JsonElement> log = new ArrayList<>();
     private JsonElement lastStatus;
@@ -93,12 +80,15 @@ final class Runs implements AutoCloseable {
         JsonObject answer = switch (endpoint) {
             case "run/arm" -> arm(req);
             case "run/start" -> start(req);
-            case "run/hold" -> hold();
-            case "run/resume" -> resume();
-            case "run/step" -> step();
-            case "run/continue" -> continueStop();
-            case "run/override" -> override(req);
-            case "run/stop" -> stop();
+            case "run/hold" -> RunKeys.hold(running());
+            case "run/resume" -> RunKeys.resume(running());
+            case "run/step" -> RunKeys.step(running());
+            case "run/continue" -> RunKeys.continueStop(running());
+            case "run/override" -> {
+                int percent = Http.integer(req, "percent", 10, 200); // a bad request is 400, run or no run
+                yield RunKeys.override(running(), percent);
+            }
+            case "run/stop" -> RunKeys.stop(running());
             default -> throw new Http.Fail(404, "no endpoint /api/" + Workspace.shown(endpoint));
         };
         Http.json(ex, 200, answer);
@@ -201,7 +191,7 @@ final class Runs implements AutoCloseable {
     /** POST /api/run/start {arm}: runs what that arm armed, once. */
     private JsonObject start(JsonObject req) throws IOException, Http.Fail {
         String id = Http.required(req, "arm");
-        Run r;
+        LiveRun r;
         synchronized (this) {
             if (run != null) {
                 throw new Http.Fail(409, "a run is going on (" + run.arm.name() + "): one at a time");
@@ -218,7 +208,7 @@ final class Runs implements AutoCloseable {
             if (context.get().session() != a.context().session()) {
                 throw new Http.Fail(409, "the machine profile changed since the program was armed: arm it again");
             }
-            r = new Run(a);
+            r = new LiveRun(a);
             run = r;
             log.clear();
             lastStatus = null;
@@ -239,7 +229,7 @@ final class Runs implements AutoCloseable {
     }
 
     /** The run's thread: the sender to its end, every event to the pages, then {@code run-ended}. */
-    private void follow(Run r) {
+    private void follow(LiveRun r) {
         EventSink events = e -> publish(r, e);
         int status;
         try {
@@ -265,7 +255,7 @@ final class Runs implements AutoCloseable {
         hub.publish("run", end.toString());
     }
 
-    private void publish(Run r, Event e) {
+    private void publish(LiveRun r, Event e) {
         String json = JsonEvents.json(e);
         if (e instanceof Event.StepWait) {
             r.stepWaiting = true;
@@ -285,80 +275,11 @@ final class Runs implements AutoCloseable {
         hub.publish("run", json);
     }
 
-    private synchronized Run running() throws Http.Fail {
+    private synchronized LiveRun running() throws Http.Fail {
         if (run == null) {
             throw new Http.Fail(409, "no run is going on");
         }
         return run;
-    }
-
-    /** POST /api/run/hold: feed hold (VR 0; the spindle keeps turning), as the first Ctrl-C. */
-    private JsonObject hold() throws Http.Fail {
-        Run r = running();
-        synchronized (r) {
-            if (r.operator.held()) {
-                throw new Http.Fail(409, "the run is already held");
-            }
-            r.operator.interrupt(); // one interrupt holds; a second would stop, hence held() first
-        }
-        return state(r);
-    }
-
-    /** POST /api/run/resume: the end of a feed hold (in step mode the next block still waits for Step). */
-    private JsonObject resume() throws Http.Fail {
-        Run r = running();
-        synchronized (r) {
-            if (!r.operator.held()) {
-                throw new Http.Fail(409, "the run is not held");
-            }
-            r.operator.resume();
-        }
-        return state(r);
-    }
-
-    /** POST /api/run/step: the next block in step mode, as Enter. */
-    private JsonObject step() throws Http.Fail {
-        Run r = running();
-        if (!r.arm.step()) {
-            throw new Http.Fail(409, "the run is not in step mode");
-        }
-        r.stepWaiting = false;
-        r.operator.enter();
-        return state(r);
-    }
-
-    /** POST /api/run/continue: Start at a program stop (M00; M01 with the switch on), as Enter. */
-    private JsonObject continueStop() throws Http.Fail {
-        Run r = running();
-        if (!r.stopWaiting) {
-            throw new Http.Fail(409, "the program is not at a program stop");
-        }
-        r.operator.enter();
-        return state(r);
-    }
-
-    /** POST /api/run/override {percent}: the feed override, 10 to 200 % (VR), as the keys + and -. */
-    private JsonObject override(JsonObject req) throws Http.Fail {
-        int percent = Http.integer(req, "percent", 10, 200);
-        Run r = running();
-        r.operator.override(percent / 100.0);
-        return state(r);
-    }
-
-    /** POST /api/run/stop: stop now (ST, spindle and coolant off), as q or the second Ctrl-C. */
-    private JsonObject stop() throws Http.Fail {
-        Run r = running();
-        r.operator.stop();
-        return state(r);
-    }
-
-    private static JsonObject state(Run r) {
-        JsonObject o = new JsonObject();
-        o.addProperty("running", true);
-        o.addProperty("held", r.operator.held());
-        o.addProperty("stopping", r.operator.stopped());
-        o.addProperty("override", r.operator.override());
-        return o;
     }
 
     /**
