@@ -36,7 +36,7 @@ import picocli.CommandLine.Option;
                 + " the report)", "2:usage, connection, no confirmation, or the motion test could not start"})
 final class ProbeCommand extends StreamsCommand {
     /** The word the operator types to let the motion test move the axes. */
-    static final String WORD = "move";
+    static final String WORD = gcnc.send.Operator.MOTION_WORD;
 
     @Mixin
     CommonOptions common;

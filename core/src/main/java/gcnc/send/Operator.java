@@ -66,6 +66,9 @@ public final class Operator {
         return stop;
     }
 
+    /** The word the operator types before gcnc moves the axes on its own (the way back, the probe's motion test). */
+    public static final String MOTION_WORD = "move";
+
     /** The lines typed that are no key (a confirmation word), and {@link #END} once the keyboard is closed. */
     private final LinkedBlockingQueue<String> words = new LinkedBlockingQueue<>();
     /** What {@link #word} gives once standard input has ended. */

@@ -83,7 +83,11 @@ final class ResumeState {
         return rpm;
     }
 
-    private static String trim(double v) {
+    /** {@code v} to three decimals, without trailing zeros ("3000", "0.25"). */
+    static String trim(double v) {
+        if (!Double.isFinite(v)) {
+            return String.valueOf(v); // a feed typed as NaN or Infinity is refused by name, not by a stack trace
+        }
         return java.math.BigDecimal.valueOf(Math.rint(v * 1000) / 1000).stripTrailingZeros().toPlainString();
     }
 

@@ -16,7 +16,6 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Set;
 import java.util.function.Supplier;
 
@@ -28,8 +27,8 @@ import java.util.function.Supplier;
  * the resume point's sequence (E838, E840), and the operator types the word (E839).
  */
 public final class WayBackRun {
-    /** The word the operator types to let the way back move the axes (the probe's motion test asks for it too). */
-    public static final String WORD = "move";
+    /** The word the operator types to let the way back move the axes. */
+    public static final String WORD = Operator.MOTION_WORD;
 
     /**
      * What the way back needs of the run.
@@ -69,12 +68,12 @@ public final class WayBackRun {
         }
         long fastest = java.util.Arrays.stream(speeds).max().orElse(0);
         if (!(ask.feed() > 0) || fastest < 1) {
-            throw fault(Code.E837_WAY_BACK_FEED, at, number(ask.feed()), "give a feed above 0 (never a rapid)");
+            throw fault(Code.E837_WAY_BACK_FEED, at, ResumeState.trim(ask.feed()), "give a feed above 0 (never a rapid)");
         }
         if (fastest > profile.maxFeed()) {
             double top = profile.maxFeed() * 60 / Math.max(perX, perZ) / (b != null && b.inch() ? 25.4 : 1);
-            throw fault(Code.E837_WAY_BACK_FEED, at, number(ask.feed()), "the machine's fastest cutting feed is F"
-                    + number(Math.floor(top * 1000) / 1000));
+            throw fault(Code.E837_WAY_BACK_FEED, at, ResumeState.trim(ask.feed()), "the machine's fastest cutting feed is F"
+                    + ResumeState.trim(Math.floor(top * 1000) / 1000));
         }
         return speeds;
     }
@@ -200,10 +199,6 @@ public final class WayBackRun {
             case Z -> "Z";
             case X_IN -> "X in to the block's start";
         };
-    }
-
-    private static String number(double v) {
-        return String.format(Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "");
     }
 
     private static RunFault fault(Code code, ResumePoint at, String... args) {
