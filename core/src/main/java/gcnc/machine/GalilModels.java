@@ -38,7 +38,7 @@ public final class GalilModels {
     }
 
     public static GalilModels load(TableSource source) throws TableException {
-        Csv csv = Csv.parse(source.describe(FILE), source.read(FILE));
+        Csv csv = source.csv(FILE);
         Map<String, GalilModel> models = new LinkedHashMap<>();
         Map<String, Integer> lines = new LinkedHashMap<>();
         for (Csv.Row r : csv.rows()) {

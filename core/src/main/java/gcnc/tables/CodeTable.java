@@ -38,8 +38,7 @@ public final class CodeTable {
     }
 
     public static CodeTable load(TableSource source) throws TableException {
-        String name = "errors.csv";
-        Csv csv = Csv.parse(source.describe(name), source.read(name));
+        Csv csv = source.csv("errors.csv");
         List<Entry> entries = new ArrayList<>();
         for (Csv.Row r : csv.rows()) {
             Code code = code(r);

@@ -61,7 +61,7 @@ public final class ErrorBasis {
     }
 
     public static ErrorBasis load(TableSource source) throws TableException {
-        Csv csv = Csv.parse(source.describe(FILE), source.read(FILE));
+        Csv csv = source.csv(FILE);
         Map<Code, Row> rows = new EnumMap<>(Code.class);
         for (Csv.Row r : csv.rows()) {
             Code code = CodeTable.code(r);

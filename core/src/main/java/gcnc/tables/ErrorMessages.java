@@ -121,8 +121,7 @@ public final class ErrorMessages {
         private static ErrorMessages read() {
             try {
                 TableSource src = TableSource.builtIn();
-                return load(Csv.parse(src.describe("errors.csv"), src.read("errors.csv")),
-                        Csv.parse(src.describe("phrases.csv"), src.read("phrases.csv")));
+                return load(src.csv("errors.csv"), src.csv("phrases.csv"));
             } catch (TableException | RuntimeException e) {
                 return null;
             }

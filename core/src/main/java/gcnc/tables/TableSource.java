@@ -18,6 +18,11 @@ public interface TableSource {
     /** A name to print in diagnostics for the named file. */
     String describe(String name);
 
+    /** The named file read as a table, its faults located under {@link #describe}'s name. */
+    default Csv csv(String name) throws TableException {
+        return Csv.parse(describe(name), read(name));
+    }
+
     /** The copy inside the jar: its tables are checked when gcnc is built (Tables reads some lazily). */
     default boolean isBuiltIn() {
         return false;

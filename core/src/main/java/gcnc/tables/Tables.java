@@ -52,13 +52,13 @@ public final class Tables {
      * a cold 2,000-block check's main thread).
      */
     public static Tables load(TableSource src) throws TableException {
-        return new Tables(limits(csv(src, "parameter_limits.csv")), offsets(src, "tool_offsets.csv"),
+        return new Tables(limits(src.csv("parameter_limits.csv")), offsets(src, "tool_offsets.csv"),
                 offsets(src, "work_offsets.csv"), src.isBuiltIn() ? null : messages(src),
                 src.isBuiltIn() ? src : null);
     }
 
     private static ErrorMessages messages(TableSource src) throws TableException {
-        return ErrorMessages.load(csv(src, "errors.csv"), csv(src, "phrases.csv"));
+        return ErrorMessages.load(src.csv("errors.csv"), src.csv("phrases.csv"));
     }
 
     /** Table 6: one row per word; a second row for a word would silently replace the first. */
@@ -95,17 +95,13 @@ public final class Tables {
 
     private static List<Offset> offsets(TableSource src, String name) throws TableException {
         List<Offset> list = new java.util.ArrayList<>();
-        for (Csv.Row r : csv(src, name).rows()) {
+        for (Csv.Row r : src.csv(name).rows()) {
             if (r.integer("offset") != list.size() + 1) {
                 throw r.faultAt("offset", Phrase.OFFSETS_IN_ORDER.with("1, 2, 3..."));
             }
             list.add(new Offset(r.decimal("x"), r.decimal("z")));
         }
         return list;
-    }
-
-    private static Csv csv(TableSource src, String name) throws TableException {
-        return Csv.parse(src.describe(name), src.read(name));
     }
 
     public Optional<ParameterLimit> limit(char word) {
