@@ -63,8 +63,8 @@ public final class ControlLoader {
                         .map(k -> Phrase.UNKNOWN_KEY_TYPO.with(key, k)).orElse(Phrase.UNKNOWN_CONTROL_KEY.with(key)));
             }
         }
-        Map<Integer, GFunction> g = gTable(Csv.parse(src.describe(dir + "g_codes.csv"), src.read(dir + "g_codes.csv")));
-        Map<Integer, MFunction> m = mTable(Csv.parse(src.describe(dir + "m_codes.csv"), src.read(dir + "m_codes.csv")));
+        Map<Integer, GFunction> g = gTable(src.csv(dir + "g_codes.csv"));
+        Map<Integer, MFunction> m = mTable(src.csv(dir + "m_codes.csv"));
 
         Set<Letter> letters = EnumSet.noneOf(Letter.class);
         ProfileFile.Entry le = f.required("letters");
@@ -166,14 +166,8 @@ public final class ControlLoader {
     private static Map<Integer, GFunction> gTable(Csv csv) throws TableException {
         Map<Integer, GFunction> g = new HashMap<>();
         for (Csv.Row r : csv.rows()) {
-            int code = code(r, 999);
-            if (g.containsKey(code)) {
-                throw r.faultAt("code", Phrase.LISTED_TWICE.with("G" + code));
-            }
-            GRole role = GRole.named(r.get("function"));
-            if (role == null) {
-                throw r.faultAt("function", Phrase.UNKNOWN_FUNCTION.with(r.get("function")));
-            }
+            int code = code(r, "G", g);
+            GRole role = role(r, GRole::named);
             g.put(code, new GFunction(code, group(r), role, words(r), r.get("en"), r.get("es")));
         }
         return g;
@@ -182,18 +176,12 @@ public final class ControlLoader {
     private static Map<Integer, MFunction> mTable(Csv csv) throws TableException {
         Map<Integer, MFunction> m = new HashMap<>();
         for (Csv.Row r : csv.rows()) {
-            int code = code(r, 999);
-            if (m.containsKey(code)) {
-                throw r.faultAt("code", Phrase.LISTED_TWICE.with("M" + code));
-            }
+            int code = code(r, "M", m);
             int moment = r.integer("moment");
             if (moment != 0 && moment != 1 && moment != 99) {
                 throw r.faultAt("moment", Phrase.MOMENT.with("0, 1", moment));
             }
-            MRole role = MRole.named(r.get("function"));
-            if (role == null) {
-                throw r.faultAt("function", Phrase.UNKNOWN_FUNCTION.with(r.get("function")));
-            }
+            MRole role = role(r, MRole::named);
             String out = r.get("output");
             if (!out.equals("yes") && !out.equals("no")) {
                 throw r.faultAt("output", Phrase.OUTPUT_YES_NO.with(out));
@@ -203,12 +191,25 @@ public final class ControlLoader {
         return m;
     }
 
-    private static int code(Csv.Row r, int max) throws TableException {
+    /** The row's code, 0 to 999, on no earlier row of its table ({@code letter} G or M: how the fault names it). */
+    private static int code(Csv.Row r, String letter, Map<Integer, ?> earlier) throws TableException {
         int code = r.integer("code");
-        if (code < 0 || code > max) {
-            throw r.faultAt("code", Phrase.CODE_RANGE.with(max, code));
+        if (code < 0 || code > 999) {
+            throw r.faultAt("code", Phrase.CODE_RANGE.with(999, code));
+        }
+        if (earlier.containsKey(code)) {
+            throw r.faultAt("code", Phrase.LISTED_TWICE.with(letter + code));
         }
         return code;
+    }
+
+    /** The row's function column: one of gcnc's roles, as {@code named} (GRole's or MRole's) finds it. */
+    private static <R> R role(Csv.Row r, java.util.function.Function<String, R> named) throws TableException {
+        R role = named.apply(r.get("function"));
+        if (role == null) {
+            throw r.faultAt("function", Phrase.UNKNOWN_FUNCTION.with(r.get("function")));
+        }
+        return role;
     }
 
     private static int group(Csv.Row r) throws TableException {
