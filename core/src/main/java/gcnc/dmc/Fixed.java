@@ -49,7 +49,7 @@ public record Fixed(long unscaled, int scale) {
     }
 
     /** Nearest integer, halves away from zero (as the thesis and the galil dialect round). */
-    static long halfAway(double v) {
+    public static long halfAway(double v) {
         double a = Math.abs(v);
         double f = Math.floor(a);
         long n = (long) f + (a - f >= 0.5 ? 1 : 0);
