@@ -131,15 +131,22 @@ final class AxisReader {
         return new WaitPast(cmd.equals("MR"), Channels.letter(at[0]), operand);
     }
 
-    static Command gearRatio(String args, String text, Faults faults) {
+    /** Two numbers at two axes' places, in channel order ({@code GR}, {@code PA}, {@code BL}/{@code FL}). */
+    private record Two(char first, Fixed p, char second, Fixed q) {
+    }
+
+    /** The two numbers {@code args} holds at their axes' places ({@code whole}: no point allowed), or null. */
+    private static Two two(String args, boolean whole) {
         String[] slots = places(args);
         int[] at = filled(slots, 2);
-        Fixed r1 = value(slots, at, 0, false);
-        Fixed r2 = value(slots, at, 1, false);
-        if (r1 == null || r2 == null) {
-            return bad(faults, "GR", text);
-        }
-        return new GearRatio(Channels.letter(at[0]), r1, Channels.letter(at[1]), r2);
+        Fixed p = value(slots, at, 0, whole);
+        Fixed q = value(slots, at, 1, whole);
+        return p == null || q == null ? null : new Two(Channels.letter(at[0]), p, Channels.letter(at[1]), q);
+    }
+
+    static Command gearRatio(String args, String text, Faults faults) {
+        Two r = two(args, false);
+        return r == null ? bad(faults, "GR", text) : new GearRatio(r.first(), r.p(), r.second(), r.q());
     }
 
     /** {@code IP gpz,gpx} or {@code IP gpz}: one or two variables at their axes' places. */
@@ -174,14 +181,9 @@ final class AxisReader {
     }
 
     static Command positionAbsolute(String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 2);
-        Fixed p = value(slots, at, 0, true);
-        Fixed q = value(slots, at, 1, true);
-        if (p == null || q == null) {
-            return bad(faults, "PA", text);
-        }
-        return new PositionAbsolute(Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]), q.unscaled());
+        Two p = two(args, true);
+        return p == null ? bad(faults, "PA", text)
+                : new PositionAbsolute(p.first(), p.p().unscaled(), p.second(), p.q().unscaled());
     }
 
     static Command analogOut(String args, String text, Faults faults) {
@@ -206,18 +208,14 @@ final class AxisReader {
     }
 
     static Command softLimit(String cmd, String args, String text, Faults faults) {
-        String[] slots = places(args);
-        int[] at = filled(slots, 2);
-        Fixed p = value(slots, at, 0, true);
-        Fixed q = value(slots, at, 1, true);
-        if (p == null || q == null) {
+        Two l = two(args, true);
+        if (l == null) {
             return bad(faults, cmd, text);
         }
-        if (Math.abs(p.unscaled()) > INT32 || Math.abs(q.unscaled()) > INT32) {
+        if (Math.abs(l.p().unscaled()) > INT32 || Math.abs(l.q().unscaled()) > INT32) {
             faults.fault(Code.E310_SIM_COUNT_RANGE, text);
             return null;
         }
-        return new SoftLimit(cmd.equals("FL"), Channels.letter(at[0]), p.unscaled(), Channels.letter(at[1]),
-                q.unscaled());
+        return new SoftLimit(cmd.equals("FL"), l.first(), l.p().unscaled(), l.second(), l.q().unscaled());
     }
 }
