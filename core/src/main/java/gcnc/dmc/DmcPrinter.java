@@ -95,12 +95,7 @@ public final class DmcPrinter {
         }
 
         public String offset(Offset c) {
-            StringBuilder sb = new StringBuilder(16).append("OF ");
-            for (int i = 0; i < c.channel(); i++) {
-                sb.append(',');
-            }
-            c.volts().appendTo(sb);
-            return sb.toString();
+            return atChannel(new StringBuilder(16).append("OF "), c.channel(), c.volts());
         }
 
         public String await(Wait c) {
@@ -185,12 +180,7 @@ public final class DmcPrinter {
         }
 
         public String axisSetting(AxisSetting c) {
-            StringBuilder sb = new StringBuilder(16).append(c.setting().name()).append(' ');
-            for (int i = 0; i < c.channel(); i++) {
-                sb.append(',');
-            }
-            c.value().appendTo(sb);
-            return sb.toString();
+            return atChannel(new StringBuilder(16).append(c.setting().name()).append(' '), c.channel(), c.value());
         }
 
         public String softLimit(SoftLimit c) {
@@ -262,6 +252,15 @@ public final class DmcPrinter {
         if (s.end() != 0) {
             sb.append(" >").append(s.end());
         }
+        return sb.toString();
+    }
+
+    /** One value at its channel's place (0 = A/X), a comma for each place before it: {@code ,,3.0000}. */
+    private static String atChannel(StringBuilder sb, int channel, Fixed value) {
+        for (int i = 0; i < channel; i++) {
+            sb.append(',');
+        }
+        value.appendTo(sb);
         return sb.toString();
     }
 
