@@ -72,62 +72,51 @@ public final class Explanations {
     private static Map<Code, String> internal() {
         Map<Code, String> m = new EnumMap<>(Code.class);
         String table = "a broken table or machine profile (tables/, --tables, --machine FILE), not a program";
-        for (Code c : Code.values()) {
-            if (c.number() >= 400 && c.number() < 500) { // the tables' and profiles' range (docs/architecture.md)
-                m.put(c, table);
-            }
-        }
+        range(m, 400, 500, table); // the tables' and profiles' range (docs/architecture.md)
         // E220-E239: the DMC gcnc writes held against the controller's own limits (gcnc.galil.LimitCheck);
         // docs/galil.md explains each, with the reference's page
-        String limits = "the DMC gcnc writes held against the Galil model's limits (tables/galil_models.csv;"
-                + " docs/galil.md, \"The controller's limits\")";
-        for (Code c : Code.values()) {
-            if (c.number() >= 220 && c.number() < 240) {
-                m.put(c, limits);
-            }
-        }
+        range(m, 220, 240, "the DMC gcnc writes held against the Galil model's limits (tables/galil_models.csv;"
+                + " docs/galil.md, \"The controller's limits\")");
         // E243-E245: the stream form's own limits and its two files (docs/galil.md, "Two forms")
-        String form = "the form gcnc writes for a long program: its resident program and its stream (docs/galil.md,"
-                + " \"Two forms\"), and the pair given to simulate";
-        for (int n : new int[] {243, 244, 245}) {
-            m.put(Code.byNumber(n), form);
-        }
+        each(m, "the form gcnc writes for a long program: its resident program and its stream (docs/galil.md,"
+                + " \"Two forms\"), and the pair given to simulate", 243, 244, 245);
         m.put(Code.E253_ON_THE_FLY_NOT_OUTPUT, table);
         m.put(Code.E850_CYCLE_START_INPUT, table); // a profile's key (stop.cycle_start), numbered with the program stop's codes
-        String files = "the command line's files (reading, writing, links), not the program's text";
-        for (int n : new int[] {500, 501, 502, 510}) {
-            m.put(Code.byNumber(n), files);
-        }
-        String dmc = "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)";
-        for (int n : new int[] {300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335, 336, 864}) {
-            m.put(Code.byNumber(n), dmc);
-        }
-        String second = "the backend's or the simulator's guard behind a check that comes first for any program"
-                + " (E015 the travel; E102 an arc off its circle)";
-        for (int n : new int[] {205, 206, 302}) {
-            m.put(Code.byNumber(n), second);
-        }
+        each(m, "the command line's files (reading, writing, links), not the program's text", 500, 501, 502, 510);
+        each(m, "the simulator checking the DMC gcnc wrote (a gcnc bug, or a DMC file given to simulate)",
+                300, 301, 308, 309, 310, 311, 312, 313, 314, 317, 318, 319, 331, 340, 332, 333, 334, 335, 336, 864);
+        each(m, "the backend's or the simulator's guard behind a check that comes first for any program"
+                + " (E015 the travel; E102 an arc off its circle)", 205, 206, 302);
         m.put(Code.byNumber(45), "the thesis's out-of-memory error: gcnc reports E116 at its cap instead");
         m.put(Code.byNumber(506), "the Java heap running out (an input gcnc failed to bound, or -Xmx set too small),"
                 + " not the program's text");
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
-        for (Code c : Code.values()) {
-            // E830-E849: the probe and the controller the profile names; E851: the link dropped during a run;
-            // E890-E899: feeding a running sequence
-            if (c.number() >= 815 && c.number() < 850 || c.number() >= 890 && c.number() < 900
-                    || c == Code.E851_LINK_DROPPED_RUNNING || c == Code.E865_PORT_NOT_A_DEVICE) {
-                m.put(c, link);
-            }
-        }
-        String testCut = "the test cut (gcnc offsets wear): its arguments, the wear limits and the offsets file,"
-                + " not the program's text (docs/command-line.md)";
-        for (Code c : Code.values()) {
-            if (c.number() >= 870 && c.number() < 880) {
-                m.put(c, testCut);
-            }
-        }
+        // E815-E849: the link, the probe and the controller the profile names; E851: the link dropped during a run;
+        // E890-E899: feeding a running sequence
+        range(m, 815, 850, link);
+        range(m, 890, 900, link);
+        m.put(Code.E851_LINK_DROPPED_RUNNING, link);
+        m.put(Code.E865_PORT_NOT_A_DEVICE, link);
+        range(m, 870, 880, "the test cut (gcnc offsets wear): its arguments, the wear limits and the offsets file,"
+                + " not the program's text (docs/command-line.md)");
         return java.util.Collections.unmodifiableMap(m);
+    }
+
+    /** Every code numbered from {@code from} up to {@code to} (not included) is internal for {@code why}. */
+    private static void range(Map<Code, String> m, int from, int to, String why) {
+        for (Code c : Code.values()) {
+            if (c.number() >= from && c.number() < to) {
+                m.put(c, why);
+            }
+        }
+    }
+
+    /** The codes numbered {@code numbers} are internal for {@code why}. */
+    private static void each(Map<Code, String> m, String why, int... numbers) {
+        for (int n : numbers) {
+            m.put(Code.byNumber(n), why);
+        }
     }
 
     public static final String DIR = "explain/";
