@@ -40,14 +40,14 @@ class ControllerLimitsTest {
         m.put(Limit.ARC_RADIUS, v -> c.arcRadius((long) v));
         m.put(Limit.ARC_LENGTH, v -> c.arc(1000, v / 1000));
         m.put(Limit.DWELL, v -> c.dwell((long) v));
-        m.put(Limit.LINE_LENGTH, v -> c.lineLength((int) v));
-        m.put(Limit.PROGRAM_LINES, v -> c.programLines((int) v));
-        m.put(Limit.LABELS, v -> c.labels((int) v));
-        m.put(Limit.LABEL_LENGTH, v -> c.labelLength((int) v));
-        m.put(Limit.VARIABLES, v -> c.variables((int) v));
-        m.put(Limit.ARRAY_ELEMENTS, v -> c.arrayElements((int) v));
-        m.put(Limit.SEQUENCE_LENGTH, c::sequenceLength);
-        m.put(Limit.BUFFER_SEGMENTS, v -> c.bufferSegments((int) v));
+        m.put(Limit.LINE_LENGTH, v -> c.check(Limit.LINE_LENGTH, v));
+        m.put(Limit.PROGRAM_LINES, v -> c.check(Limit.PROGRAM_LINES, v));
+        m.put(Limit.LABELS, v -> c.check(Limit.LABELS, v));
+        m.put(Limit.LABEL_LENGTH, v -> c.check(Limit.LABEL_LENGTH, v));
+        m.put(Limit.VARIABLES, v -> c.check(Limit.VARIABLES, v));
+        m.put(Limit.ARRAY_ELEMENTS, v -> c.check(Limit.ARRAY_ELEMENTS, v));
+        m.put(Limit.SEQUENCE_LENGTH, v -> c.check(Limit.SEQUENCE_LENGTH, v));
+        m.put(Limit.BUFFER_SEGMENTS, v -> c.check(Limit.BUFFER_SEGMENTS, v));
         return m;
     }
 
@@ -186,13 +186,13 @@ class ControllerLimitsTest {
     void firmware12aDoublesTheProgramLinesWhereTheReferenceSaysSo() {
         GalilModel old = MODELS.find("DMC-4040").orElseThrow();
         ControllerLimits newer = new ControllerLimits(old.withFirmware12a());
-        assertTrue(DMC4040.programLines(2001).isPresent());
-        assertTrue(newer.programLines(4000).isEmpty());
-        assertTrue(newer.programLines(4001).isPresent());
-        assertTrue(newer.arrayElements(24_000).isEmpty());
-        assertTrue(newer.arrayElements(24_001).isPresent());
+        assertTrue(DMC4040.check(Limit.PROGRAM_LINES, 2001).isPresent());
+        assertTrue(newer.check(Limit.PROGRAM_LINES, 4000).isEmpty());
+        assertTrue(newer.check(Limit.PROGRAM_LINES, 4001).isPresent());
+        assertTrue(newer.check(Limit.ARRAY_ELEMENTS, 24_000).isEmpty());
+        assertTrue(newer.check(Limit.ARRAY_ELEMENTS, 24_001).isPresent());
         // a model whose firmware numbering is not verified keeps the smaller memory
         ControllerLimits dmc2143 = new ControllerLimits(MODELS.find("DMC-2143").orElseThrow().withFirmware12a());
-        assertTrue(dmc2143.programLines(2001).isPresent());
+        assertTrue(dmc2143.check(Limit.PROGRAM_LINES, 2001).isPresent());
     }
 }

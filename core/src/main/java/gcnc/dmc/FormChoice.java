@@ -5,7 +5,7 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.machine.ControllerLimits;
-import gcnc.machine.GalilModel;
+import gcnc.machine.GalilModel.Limit;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -52,7 +52,7 @@ public final class FormChoice implements Consumer<Instruction> {
         this.limits = limits;
         this.dmc = dmc;
         this.stream = stream;
-        this.memory = limits.model().range(GalilModel.Limit.PROGRAM_LINES).max();
+        this.memory = limits.model().range(Limit.PROGRAM_LINES).max();
         this.width = limits.lineWidth();
         this.packer = new LinePacker(width, this::line);
         if (asked.equals(Optional.of(Form.STREAM))) {
@@ -131,7 +131,7 @@ public final class FormChoice implements Consumer<Instruction> {
             diagnostics.report(Diagnostic.error(Code.E239_RESIDENT_DOES_NOT_FIT, first, s.residentLines(), memory,
                     limits.model().name(), s.moved()));
         } else {
-            limits.labels(s.residentLabels()).ifPresent(v -> diagnostics.report(v.diagnostic(first)));
+            limits.check(Limit.LABELS, s.residentLabels()).ifPresent(v -> diagnostics.report(v.diagnostic(first)));
         }
         LinePacker.pack(s.resident(), width).forEach(dmc);
         return Form.STREAM;

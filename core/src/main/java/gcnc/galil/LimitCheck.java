@@ -6,6 +6,7 @@ import gcnc.diag.Span;
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
 import gcnc.machine.ControllerLimits;
+import gcnc.machine.GalilModel.Limit;
 import java.util.Optional;
 import java.util.function.Consumer;
 
@@ -93,7 +94,7 @@ public final class LimitCheck implements Consumer<Instruction> {
 
         @Override
         public Void beginSequence(Command.BeginSequence c) {
-            report(limits.bufferSegments(segments), i); // the segments given before BGS (COMALL VM)
+            report(limits.check(Limit.BUFFER_SEGMENTS, segments), i); // the segments given before BGS (COMALL VM)
             if (ended) {
                 sequenceEnd(i);
             } else {
@@ -116,7 +117,7 @@ public final class LimitCheck implements Consumer<Instruction> {
         @Override
         public Void label(Command.Label l) {
             labels++;
-            report(limits.labelLength(l.name().length()), i);
+            report(limits.check(Limit.LABEL_LENGTH, l.name().length()), i);
             return null;
         }
 
@@ -161,7 +162,7 @@ public final class LimitCheck implements Consumer<Instruction> {
 
     /** The sequence's whole length against the model's, and the next one starts from its origin. */
     private void sequenceEnd(Instruction i) {
-        report(limits.sequenceLength(length), i);
+        report(limits.check(Limit.SEQUENCE_LENGTH, length), i);
         segments = 0;
         length = 0;
         u = 0;
@@ -188,7 +189,7 @@ public final class LimitCheck implements Consumer<Instruction> {
      * longer than the memory is written in the stream form ({@link gcnc.dmc.FormChoice}).
      */
     public void finish() {
-        limits.labels(labels).ifPresent(x -> diagnostics.report(x.diagnostic(Span.of(1, 1))));
+        limits.check(Limit.LABELS, labels).ifPresent(x -> diagnostics.report(x.diagnostic(Span.of(1, 1))));
     }
 
     /** How many lines have passed. */

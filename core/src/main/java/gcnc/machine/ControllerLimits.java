@@ -116,49 +116,9 @@ public final class ControllerLimits {
         return check(Limit.DWELL, ms);
     }
 
-    /** The characters of one program line. */
-    public Optional<Violation> lineLength(int chars) {
-        return check(Limit.LINE_LENGTH, chars);
-    }
-
     /** The most characters on one program line: what a packed line is filled to. */
     public int lineWidth() {
         return (int) model.range(Limit.LINE_LENGTH).max();
-    }
-
-    /** The lines of a downloaded program. */
-    public Optional<Violation> programLines(int lines) {
-        return check(Limit.PROGRAM_LINES, lines);
-    }
-
-    /** The labels of a downloaded program. */
-    public Optional<Violation> labels(int count) {
-        return check(Limit.LABELS, count);
-    }
-
-    /** The characters of a label's name, without the #. */
-    public Optional<Violation> labelLength(int chars) {
-        return check(Limit.LABEL_LENGTH, chars);
-    }
-
-    /** The variables a program creates. */
-    public Optional<Violation> variables(int count) {
-        return check(Limit.VARIABLES, count);
-    }
-
-    /** The array elements of all arrays a program dimensions. */
-    public Optional<Violation> arrayElements(int count) {
-        return check(Limit.ARRAY_ELEMENTS, count);
-    }
-
-    /** The path length of one sequence up to its BGS, counts. */
-    public Optional<Violation> sequenceLength(double countsTotal) {
-        return check(Limit.SEQUENCE_LENGTH, countsTotal);
-    }
-
-    /** The segments given before BGS. */
-    public Optional<Violation> bufferSegments(int count) {
-        return check(Limit.BUFFER_SEGMENTS, count);
     }
 
     /**
@@ -205,7 +165,12 @@ public final class ControllerLimits {
         r.diagnostic(span).ifPresent(out::report);
     }
 
-    private Optional<Violation> check(Limit limit, double value) {
+    /**
+     * A value against one limit: what the named checks above come to, and the check itself for the
+     * counts a program is held to as a whole (its lines, labels, label names, variables, arrays, a
+     * sequence's length and segments), which need no conversion.
+     */
+    public Optional<Violation> check(Limit limit, double value) {
         Range r = ranges[limit.ordinal()];
         return r.holds(value, limit.below()) ? Optional.empty() : Optional.of(new Violation(limit, value, r, model));
     }
