@@ -94,23 +94,24 @@ class MacroExpression extends MacroCursor {
                 v = held(value(v) * value(unary()), start);
             } else if (c == '/') {
                 i++;
-                double b = value(unary());
-                if (b == 0) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, excerpt(start, i));
-                }
-                v = held(value(v) / b, start);
+                v = held(value(v) / divisor(start), start);
             } else if (keyword("MOD")) {
-                double b = value(unary());
-                if (b == 0) {
-                    throw new Fault(Code.E146_MACRO_NO_VALUE, start, excerpt(start, i));
-                }
-                v = held(value(v) % b, start);
+                v = held(value(v) % divisor(start), start);
             } else if (keywordAhead("AND")) {
                 throw new Fault(Code.E111_MACRO_NOT_SUPPORTED_YET, i, excerpt(start));
             } else {
                 return v;
             }
         }
+    }
+
+    /** The value a / or MOD divides by: E146 for zero, the term from {@code start} shown (no value comes of it). */
+    private double divisor(int start) throws Fault {
+        double b = value(unary());
+        if (b == 0) {
+            throw new Fault(Code.E146_MACRO_NO_VALUE, start, excerpt(start, i));
+        }
+        return b;
     }
 
     /** Signs before a value, any number of them: counted in a loop (no recursion, no depth). */
