@@ -267,12 +267,12 @@ final class MotionChecks {
 
     /**
      * Where the findings about segment {@code s} of a sequence started at {@code start} go: its own
-     * line, or the start's for a segment with none (made by hand, or from no block); in the start's
-     * file and calls.
+     * source, line, file and calls (a sequence may run on from the main program into a subprogram of
+     * its file), or the start's for a segment with none (made by hand, or from no block).
      */
     static Source place(Segment s, Source start) {
         Source own = s.source();
-        return own != null && own.line() > 0 ? new Source(start.origin(), own.line(), own.motion(), own.block()) : start;
+        return own != null && own.line() > 0 ? own : start;
     }
 
     private double centre() {

@@ -265,8 +265,6 @@ public final class Simulator {
                 }
             }
             Motion m = meant.isEmpty() ? null : meant.get(0).motion();
-            // the sequence's findings go to its first motion's file and calls
-            Source where = m == null ? at : new Source(meant.get(0).block().origin(), at.line(), at.motion(), at.block());
             if (m != null) {
                 checks.frame(meant.get(0).block().frame());
                 if (meant.size() > 1) {
@@ -282,18 +280,18 @@ public final class Simulator {
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
             boolean stopped = !rapid && outputs.spindleKnown && !outputs.running;
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
-            boolean removed = checks.sequence(segments, speed, rapid, where, dmc.acceleration(), dmc.deceleration(),
+            boolean removed = checks.sequence(segments, speed, rapid, at, dmc.acceleration(), dmc.deceleration(),
                     stopped || open);
-            corners.check(segments, speed, where, meant.isEmpty() ? null : numbers);
+            corners.check(segments, speed, at, meant.isEmpty() ? null : numbers);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
             boolean cut = checks.hasStock() ? removed : expected == null;
             if (stopped && cut) {
-                report(Code.E306_SIM_FEED_SPINDLE_STOPPED, where, outputs.describe());
+                report(Code.E306_SIM_FEED_SPINDLE_STOPPED, at, outputs.describe());
             }
             if (open && cut) {
-                report(Code.E307_SIM_FEED_CHUCK_OPEN, where, outputs.describe());
+                report(Code.E307_SIM_FEED_CHUCK_OPEN, at, outputs.describe());
             }
             for (int k = 0; k < meant.size(); k++) {
                 ExpectedMotions.Expected e = meant.get(k);
