@@ -54,7 +54,8 @@ public final class ArcVerdict {
         SimOptions options = SimOptions.defaults();
         this.conformance = new Conformance((code, at, args) -> {
             found = true;
-            out.error(code, Span.of(at.line(), 1), args); // unplaced: the checker's Diagnostics puts it in the block's file
+            // unplaced: the checker's Diagnostics puts it in the file of the block it checks
+            out.error(code, Span.of(at.line(), 1), args);
         }, null, options.tolerance(), Simulator.threadTolerance(profile, options));
     }
 

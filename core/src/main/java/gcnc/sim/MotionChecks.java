@@ -63,7 +63,8 @@ final class MotionChecks {
         if (beyond.isPresent()) {
             // a stock header's or NO STOCK's size the machine cannot hold: said at the program's first
             // line (where the header is), and the run goes on without a blank rather than model it
-            out.report(beyond.get().code(), Source.line(1), StockSize.shown(beyond.get().value()), mm(beyond.get().limit()), profile.name());
+            out.report(beyond.get().code(), Source.line(1), StockSize.shown(beyond.get().value()),
+                    mm(beyond.get().limit()), profile.name());
             s = null;
         }
         if (s != null && !Double.isNaN(machine.chuckFace())) {

@@ -33,7 +33,7 @@ public final class Simulator {
     /** The motions the checker meant that the DMC has not carried out yet; null for a bare replay (nothing to compare with). */
     private ExpectedMotions expected;
     private int findings;
-    /** The last DMC line replayed (none yet: {@link Source#NONE}): where a sequence still open at the end is reported. */
+    /** The last DMC line replayed ({@link Source#NONE} before any): where a sequence still open at the end is. */
     private Source lastRun = Source.NONE;
     /**
      * The last DMC line replayed that has a G-code line of its own. A line from no block (the header,
@@ -228,7 +228,7 @@ public final class Simulator {
         return Span.of(Math.max(1, at.line()), 1);
     }
 
-    /** The file and calls a finding at {@code at} goes to: its own, or for a line from no block the last located line's. */
+    /** The file and calls a finding at {@code at} goes to: its own, or for a line from no block the last located's. */
     private gcnc.diag.Origin origin(Source at) {
         return at.line() > 0 ? at.origin() : lastLocated.origin();
     }
