@@ -19,11 +19,11 @@ class ConformanceTest {
         Point to = new Point(100_000, 13_100_000);
         Motion.Linear rapid = new Motion.Linear(true, from, to, null);
         Point half = new Point(100_000, 20_550_000);
-        assertEquals(null, c.check(rapid, List.of(line(from, half), line(half, to)), 6));
+        assertEquals(null, c.check(rapid, List.of(line(from, half), line(half, to)), gcnc.dmc.Source.line(6)));
         assertEquals(List.of(), found);
         // the joint 40 counts off the line, the end still right: the path between is not the program's
         Point off = new Point(100_040, 20_550_000);
-        c.check(rapid, List.of(line(from, off), line(off, to)), 6);
+        c.check(rapid, List.of(line(from, off), line(off, to)), gcnc.dmc.Source.line(6));
         assertEquals(List.of("E308 path (a piece of a straight move off its line)"), found);
     }
 

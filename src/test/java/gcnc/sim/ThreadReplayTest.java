@@ -163,15 +163,15 @@ class ThreadReplayTest {
         gcnc.ir.Point end = new gcnc.ir.Point(2500, 0);
         gcnc.ir.Motion.Thread t = new gcnc.ir.Motion.Thread(from, end, 1500, 800, false, new gcnc.ir.Feed(1.5, 20000),
                 corner);
-        assertEquals(null, c.check(t, List.of(line(from, corner), line(corner, end)), 6));
+        assertEquals(null, c.check(t, List.of(line(from, corner), line(corner, end)), gcnc.dmc.Source.line(6)));
         assertEquals(List.of(), found);
         // the ratios change 10 counts late along Z, and the chamfer still ends where it should
         gcnc.ir.Point late = new gcnc.ir.Point(1000, 1490);
-        c.check(t, List.of(line(from, late), line(late, end)), 6);
+        c.check(t, List.of(line(from, late), line(late, end)), gcnc.dmc.Source.line(6));
         assertEquals(List.of("E308 start of the thread's chamfer"), found);
         found.clear();
         // one straight geared move where the pass has a chamfer
-        c.check(t, List.of(line(from, end)), 6);
+        c.check(t, List.of(line(from, end)), gcnc.dmc.Source.line(6));
         assertEquals(List.of("E308 path (a chamfered thread pass is two straight geared moves)"), found);
     }
 

@@ -52,9 +52,10 @@ public final class ArcVerdict {
         this.plane = new Plane(profile);
         this.out = out;
         SimOptions options = SimOptions.defaults();
-        this.conformance = new Conformance((code, line, args) -> {
+        this.conformance = new Conformance((code, at, args) -> {
             found = true;
-            out.error(code, Span.of(line, 1), args);
+            // unplaced: the checker's Diagnostics puts it in the file of the block it checks
+            out.error(code, Span.of(at.line(), 1), args);
         }, null, options.tolerance(), Simulator.threadTolerance(profile, options));
     }
 
@@ -115,7 +116,7 @@ public final class ArcVerdict {
                     false, 0, 0, 0, 0, 0, null));
         }
         found = false;
-        conformance.check(a, segs, line);
+        conformance.check(a, segs, gcnc.dmc.Source.line(line));
         return !found;
     }
 

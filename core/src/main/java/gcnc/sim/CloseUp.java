@@ -16,7 +16,7 @@ import java.util.List;
 final class CloseUp {
     /** Places a finding at machine position {@code p} (counts), the tool's tip then at {@code tip}. */
     interface Marker {
-        void mark(Code code, int line, double[] p, double[] tip, Object... lead);
+        void mark(Code code, gcnc.dmc.Source place, double[] p, double[] tip, Object... lead);
     }
 
     private final SimMachine machine;
@@ -78,7 +78,7 @@ final class CloseUp {
      * the drawing), followed piece by piece. Kept out of {@link MotionChecks#sequence}, whose loop runs
      * for every segment: the JIT compiles that loop small and this once, on its own.
      */
-    void segment(Segment s, boolean rapid, int line, List<double[]> poly, boolean nearChuck,
+    void segment(Segment s, boolean rapid, gcnc.dmc.Source place, List<double[]> poly, boolean nearChuck,
                  boolean nearTail, boolean nearStock) {
         Quiet key = poly == null && !nearChuck && !nearTail ? new Quiet(tool, s.fromX(), s.fromZ(), s.toX(), s.toZ(),
                 s.arc() ? s.centreX() : 0, s.arc() ? s.centreZ() : 0, s.arc() ? s.sweepDeg() : 0) : null;
@@ -103,11 +103,11 @@ final class CloseUp {
             tip = b;
             if (nearChuck && !chuckHit && hits(machine.chuck(), a[1], ar, b[1], br)) {
                 chuckHit = true;
-                marker.mark(Code.E303_SIM_CHUCK_COLLISION, line, b, tip, toolName());
+                marker.mark(Code.E303_SIM_CHUCK_COLLISION, place, b, tip, toolName());
             }
             if (nearTail && !tailHit && hits(machine.tailstock(), a[1], ar, b[1], br)) {
                 tailHit = true;
-                marker.mark(Code.E304_SIM_TAILSTOCK_COLLISION, line, b, tip, toolName());
+                marker.mark(Code.E304_SIM_TAILSTOCK_COLLISION, place, b, tip, toolName());
             }
             if (nearStock) {
                 outline.sweeps(stock, a[1], ar, b[1], br, cuts, holders, backs);
@@ -120,10 +120,10 @@ final class CloseUp {
             if (at != null) {
                 backHit = true;
                 Code code = outline.shape.kind().axial() ? Code.E323_SIM_AXIAL_TOOL_SIDEWAYS : Code.E320_SIM_BACK_OF_INSERT;
-                marker.mark(code, line, machinePoint(at), tip, toolName());
+                marker.mark(code, place, machinePoint(at), tip, toolName());
             }
         }
-        boolean touched = (!cuts.isEmpty() || !holders.isEmpty()) && stockMove(cuts, holders, rapid, line);
+        boolean touched = (!cuts.isEmpty() || !holders.isEmpty()) && stockMove(cuts, holders, rapid, place);
         if (!touched && key != null) {
             if (quiet.size() >= QUIET_MAX) {
                 quiet.clear();
@@ -175,7 +175,7 @@ final class CloseUp {
      * through is gone: no echo in the next moves. Returns whether the segment reached into
      * material at all (a rapid or holder that only came near did not: the segment is quiet).
      */
-    private boolean stockMove(List<Stock.Sweep> cuts, List<Stock.Sweep> holders, boolean rapid, int line) {
+    private boolean stockMove(List<Stock.Sweep> cuts, List<Stock.Sweep> holders, boolean rapid, gcnc.dmc.Source place) {
         if (rapid || judgeCut) {
             cuts = stock.biting(cuts);
             removed |= !rapid && !cuts.isEmpty();
@@ -190,7 +190,7 @@ final class CloseUp {
             at = at != null || holders.isEmpty() ? at : stock.deepOverlap(holders);
             if (at != null) {
                 stockHit = crashed = true;
-                marker.mark(Code.E305_SIM_RAPID_INTO_STOCK, line, machinePoint(at), tip);
+                marker.mark(Code.E305_SIM_RAPID_INTO_STOCK, place, machinePoint(at), tip);
             }
         }
         for (Stock.Sweep s : cuts) {
@@ -200,7 +200,7 @@ final class CloseUp {
             double[] at = stock.deepOverlap(holders);
             if (at != null) {
                 holderHit = crashed = true;
-                marker.mark(Code.E315_SIM_HOLDER_IN_STOCK, line, machinePoint(at), tip, toolName());
+                marker.mark(Code.E315_SIM_HOLDER_IN_STOCK, place, machinePoint(at), tip, toolName());
             }
         }
         if (crashed) {

@@ -1,6 +1,7 @@
 package gcnc.sim;
 
 import gcnc.diag.Code;
+import gcnc.dmc.Source;
 import gcnc.ir.ArcGeometry;
 import gcnc.ir.Motion;
 import gcnc.ir.Point;
@@ -25,28 +26,29 @@ final class Conformance {
     }
 
     /**
-     * Compares; returns the intended end {x, z} to resynchronise to after a finding (one bad
-     * sequence is one finding), else null.
+     * Compares the sequence with the motion of the block at {@code at} (where its findings go);
+     * returns the intended end {x, z} to resynchronise to after a finding (one bad sequence is one
+     * finding), else null.
      */
-    double[] check(Motion m, java.util.List<Segment> segs, int line) {
+    double[] check(Motion m, java.util.List<Segment> segs, Source at) {
         Segment last = segs.get(segs.size() - 1);
         if (m instanceof Motion.Linear lin) {
             if (segs.size() == 1 && last.arc()) {
-                return mismatch(line, "path (an arc for a straight move)", last.length(), lin.to());
+                return mismatch(at, "path (an arc for a straight move)", last.length(), lin.to());
             }
             // a move longer than one VP segment is written as pieces: each joint on the programmed line
             for (int i = 0; i < segs.size() - 1; i++) {
                 Segment g = segs.get(i);
                 double off = g.arc() ? Double.POSITIVE_INFINITY : offLine(g.toX(), g.toZ(), lin.from(), lin.to());
                 if (off > tol) {
-                    return mismatch(line, "path (a piece of a straight move off its line)", off, lin.to());
+                    return mismatch(at, "path (a piece of a straight move off its line)", off, lin.to());
                 }
             }
-            return endPoint(last, lin.to(), line);
+            return endPoint(last, lin.to(), at);
         }
         if (m instanceof Motion.Thread t) {
             if (segs.size() != geared(t) || segs.get(0).arc() || last.arc()) {
-                return mismatch(line, !t.joints().isEmpty()
+                return mismatch(at, !t.joints().isEmpty()
                         ? "path (a continuous thread is one straight geared move per block)"
                         : t.chamfered() ? "path (a chamfered thread pass is two straight geared moves)"
                         : "path (a thread pass is one straight geared move)", last.length(), t.to());
@@ -58,11 +60,11 @@ final class Conformance {
                 double corner = distance(segs.get(i), corners.get(i));
                 if (corner > threadTol) {
                     boolean chamfer = t.chamfered() && i == corners.size() - 1;
-                    return mismatch(line, chamfer ? "start of the thread's chamfer" : "joint of the continuous thread",
+                    return mismatch(at, chamfer ? "start of the thread's chamfer" : "joint of the continuous thread",
                             corner, threadTol, t.to());
                 }
             }
-            return endPoint(last, t.to(), line);
+            return endPoint(last, t.to(), at);
         }
         Motion.Arc arc = (Motion.Arc) m; // a dwell has no sequence: the simulator never pairs one
         Point to = arc.to();
@@ -70,19 +72,19 @@ final class Conformance {
         // (the galil dialect's whole-count radius), so the end point is the last segment's.
         Segment first = segs.get(0);
         if (!first.arc() && pointLike(arc, tol)) {
-            return endPoint(last, to, line); // a circle within the tolerance: a straight move is as good
+            return endPoint(last, to, at); // a circle within the tolerance: a straight move is as good
         }
         if (!first.arc()) {
-            return mismatch(line, "path (a straight move for an arc)", distance(last, to), to);
+            return mismatch(at, "path (a straight move for an arc)", distance(last, to), to);
         }
         if (first.sweepDeg() == 0) {
-            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line, first.text());
-            mark("E309", line, to);
+            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, at, first.text());
+            mark("E309", at.line(), to);
             return new double[] {to.x(), to.z()};
         }
         double centre = Geometry.length(first.centreX() - arc.centre().x(), first.centreZ() - arc.centre().z());
         if (centre > tol) {
-            return mismatch(line, "arc centre", centre, to);
+            return mismatch(at, "arc centre", centre, to);
         }
         double sweep = ArcGeometry.sweepDegrees(arc.from(), to, arc.centre(), arc.clockwise());
         double a = Math.atan2(arc.from().x() - arc.centre().x(), arc.from().z() - arc.centre().z())
@@ -91,9 +93,9 @@ final class Conformance {
         double off = Geometry.length(mid[0] - (arc.centre().x() + arc.radius() * Math.sin(a)),
                 mid[1] - (arc.centre().z() + arc.radius() * Math.cos(a)));
         if (off > tol) {
-            return mismatch(line, "arc direction or sweep (midpoint)", off, to);
+            return mismatch(at, "arc direction or sweep (midpoint)", off, to);
         }
-        return endPoint(last, to, line);
+        return endPoint(last, to, at);
     }
 
     /** How many geared segments a thread pass replays as: one per block of a continuous thread, and its chamfer (M23). */
@@ -118,22 +120,22 @@ final class Conformance {
         return 2 * arc.radius() <= tolerance;
     }
 
-    private double[] endPoint(Segment last, Point to, int line) {
+    private double[] endPoint(Segment last, Point to, Source at) {
         double d = distance(last, to);
-        return d > tol ? mismatch(line, "end point", d, to) : null;
+        return d > tol ? mismatch(at, "end point", d, to) : null;
     }
 
     private static double distance(Segment s, Point p) {
         return Geometry.length(s.toX() - p.x(), s.toZ() - p.z());
     }
 
-    private double[] mismatch(int line, String what, double by, Point to) {
-        return mismatch(line, what, by, tol, to);
+    private double[] mismatch(Source at, String what, double by, Point to) {
+        return mismatch(at, what, by, tol, to);
     }
 
-    private double[] mismatch(int line, String what, double by, double tolerance, Point to) {
-        out.report(Code.E308_SIM_PATH_MISMATCH, line, what, MotionChecks.mm(by), MotionChecks.mm(tolerance));
-        mark("E308", line, to);
+    private double[] mismatch(Source at, String what, double by, double tolerance, Point to) {
+        out.report(Code.E308_SIM_PATH_MISMATCH, at, what, MotionChecks.mm(by), MotionChecks.mm(tolerance));
+        mark("E308", at.line(), to);
         return new double[] {to.x(), to.z()};
     }
 

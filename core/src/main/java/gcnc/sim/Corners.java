@@ -21,14 +21,10 @@ final class Corners {
     /** Room for the even rounding of the written speeds, counts/s. */
     private static final double ROUNDING = 4;
 
-    interface Report {
-        void report(Code code, int line, Object... args);
-    }
-
     private final double acceleration;
     private final double deviation;
     private final double countsPerMm;
-    private final Report out;
+    private final MotionChecks.Reporter out;
     /** The slowest corners so far, for the report. */
     final SlowestCorners slowest = new SlowestCorners();
     /** The last segment of the sequence before, and whether the planner stopped there for a reversal. */
@@ -38,7 +34,7 @@ final class Corners {
     /** The share of the junction speed the planner takes (gcnc.plan.Contouring.MARGIN). */
     private static final double MARGIN = 0.9;
 
-    Corners(MachineProfile profile, Report out) {
+    Corners(MachineProfile profile, MotionChecks.Reporter out) {
         this.acceleration = Math.min(profile.acceleration(), profile.deceleration());
         this.countsPerMm = Math.min(profile.x().countsPerMm(), profile.z().countsPerMm());
         this.deviation = Blending.of(profile).deviationMm() * countsPerMm;
@@ -54,7 +50,7 @@ final class Corners {
      * Checks a sequence's corners and notes the slow ones. {@code numbers}: the N word of each
      * segment's block by the segment's index (null where none is known), or null; asked during the call only.
      */
-    void check(List<Segment> segs, double speed, int line, java.util.function.IntFunction<String> numbers) {
+    void check(List<Segment> segs, double speed, gcnc.dmc.Source start, java.util.function.IntFunction<String> numbers) {
         if (segs.isEmpty()) {
             return;
         }
@@ -79,7 +75,7 @@ final class Corners {
         double length = segs.get(0).length();
         for (int k = 0; k < segs.size(); k++) {
             Segment s = segs.get(k);
-            int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
+            gcnc.dmc.Source at = MotionChecks.place(s, start);
             double v = Double.isNaN(s.speed()) ? speed : s.speed();
             boolean last = k == segs.size() - 1;
             double exit = last ? 0 : Double.isNaN(s.end()) ? v : s.end();

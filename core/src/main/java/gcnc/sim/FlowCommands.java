@@ -13,9 +13,8 @@ import gcnc.dmc.Instruction;
  */
 abstract class FlowCommands implements Command.Visitor<Void> {
     final ReplayListener out;
-    /** The instruction being run and its G-code line, for the findings about it. */
+    /** The instruction being run: its source places the findings about it. */
     private Instruction instruction;
-    private int line;
     private boolean ended;
     /** A label after EN has been met: what follows is a routine, not run in the replay. */
     private boolean routine;
@@ -24,10 +23,9 @@ abstract class FlowCommands implements Command.Visitor<Void> {
         this.out = out;
     }
 
-    /** The instruction the commands after this refer to (the one being run): its line places their findings. */
+    /** The instruction the commands after this refer to (the one being run): its source places their findings. */
     final void at(Instruction i) {
         this.instruction = i;
-        this.line = i.source().line();
     }
 
     /** Runs {@code i}, which becomes the instruction being run. */
@@ -40,9 +38,14 @@ abstract class FlowCommands implements Command.Visitor<Void> {
         return instruction;
     }
 
-    /** The G-code line of the instruction being run: where the findings about it are. */
+    /** Where the instruction being run comes from: where the findings about it are. */
+    final gcnc.dmc.Source source() {
+        return instruction.source();
+    }
+
+    /** The G-code line of the instruction being run. */
     final int line() {
-        return line;
+        return instruction.source().line();
     }
 
     final String text() {
@@ -56,7 +59,7 @@ abstract class FlowCommands implements Command.Visitor<Void> {
      */
     final boolean afterEnd() {
         if (ended && !routine) {
-            out.report(Code.E312_SIM_AFTER_END, line, text());
+            out.report(Code.E312_SIM_AFTER_END, source(), text());
         }
         return ended;
     }
@@ -91,7 +94,7 @@ abstract class FlowCommands implements Command.Visitor<Void> {
      */
     public Void jump(Command.Jump c) {
         if (!afterEnd() && c.when().isEmpty()) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line, "JP", text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, source(), "JP", text());
         }
         return null;
     }

@@ -1,6 +1,7 @@
 package gcnc.sim;
 
 import gcnc.diag.Code;
+import gcnc.dmc.Source;
 import gcnc.ir.ArcGeometry;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineModel;
@@ -14,8 +15,9 @@ import java.util.List;
  * drawing). One finding per check per sequence, so one bad move is one finding.
  */
 final class MotionChecks {
+    /** Where the findings go, each with the source of the DMC line, segment or block it is about. */
     interface Reporter {
-        void report(Code code, int line, Object... args);
+        void report(Code code, Source at, Object... args);
     }
 
     private final MachineProfile profile;
@@ -61,7 +63,8 @@ final class MotionChecks {
         if (beyond.isPresent()) {
             // a stock header's or NO STOCK's size the machine cannot hold: said at the program's first
             // line (where the header is), and the run goes on without a blank rather than model it
-            out.report(beyond.get().code(), 1, StockSize.shown(beyond.get().value()), mm(beyond.get().limit()), profile.name());
+            out.report(beyond.get().code(), Source.line(1), StockSize.shown(beyond.get().value()),
+                    mm(beyond.get().limit()), profile.name());
             s = null;
         }
         if (s != null && !Double.isNaN(machine.chuckFace())) {
@@ -157,13 +160,15 @@ final class MotionChecks {
     }
 
     /**
-     * Replays one sequence. With {@code judgeCut} the stock is asked exactly whether the move takes
-     * more than {@link Stock#DEPTH} of material (a feed with the spindle stopped or the chuck open:
-     * a bar puller's pull in the air is no cut, E306/E307 are for a real one); returns that answer,
-     * false without {@code judgeCut}.
+     * Replays one sequence, started at {@code start} (its findings go to each segment's own line, or
+     * there for a segment with none: {@link #place}). With {@code judgeCut} the stock is asked exactly
+     * whether the move takes more than {@link Stock#DEPTH} of material (a feed with the spindle stopped
+     * or the chuck open: a bar puller's pull in the air is no cut, E306/E307 are for a real one);
+     * returns that answer, false without {@code judgeCut}.
      */
-    boolean sequence(List<Segment> segs, double speed, boolean rapid, int line, double acc, double dec,
+    boolean sequence(List<Segment> segs, double speed, boolean rapid, Source start, double acc, double dec,
                      boolean judgeCut) {
+        int line = start.line();
         if (scrub != null) {
             scrub.before(line, sequences);
         }
@@ -185,7 +190,8 @@ final class MotionChecks {
         for (int k = 0; k < segs.size(); k++) {
             Segment s = segs.get(k);
             // a sequence may carry several blocks: each segment's findings go to its own block's line
-            int at = s.source() != null && s.source().line() > 0 ? s.source().line() : line;
+            Source place = place(s, start);
+            int at = place.line();
             long block = s.source() == null ? -1 : s.source().block();
             if (k > 0 && (at != polyLine || block != lastBlock)) {
                 // one finding per check per motion's block: a sequence of several blocks reports each one's
@@ -208,9 +214,9 @@ final class MotionChecks {
             zMin = Math.min(zMin, box[2]);
             zMax = Math.max(zMax, box[3]);
             terms.box(box, rapid);
-            travelX = travelX || travel(at, "X", box[0], box[1], profile.x().min(), profile.x().max(),
+            travelX = travelX || travel(place, "X", box[0], box[1], profile.x().min(), profile.x().max(),
                     profile.x().countsPerMm());
-            travelZ = travelZ || travel(at, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
+            travelZ = travelZ || travel(place, "Z", box[2], box[3], profile.z().min(), profile.z().max(),
                     profile.z().countsPerMm());
             double rMin = radius(box[0], box[1]);
             boolean nearChuck = near(chuckBox, box);
@@ -221,7 +227,7 @@ final class MotionChecks {
                     && outline.shape.kind() != MachineModel.ToolKind.PULLER && stock.mayTouch((box[2] + reach[2]) / kz,
                     (box[3] + reach[3]) / kz, (rMin + reach[0]) / kx);
             if (poly != null || nearChuck || nearTail || nearStock) {
-                closeUp.segment(s, rapid, at, poly, nearChuck, nearTail, nearStock);
+                closeUp.segment(s, rapid, place, poly, nearChuck, nearTail, nearStock);
             }
             if (blended) {
                 // the segment at its own speed, from the corner before it to the corner after it
@@ -256,8 +262,18 @@ final class MotionChecks {
     private final StockScrub scrub;
 
     /** See {@link Conformance#check}. */
-    double[] conformance(Motion m, List<Segment> segs, int line) {
-        return conformance.check(m, segs, line);
+    double[] conformance(Motion m, List<Segment> segs, Source block) {
+        return conformance.check(m, segs, block);
+    }
+
+    /**
+     * Where the findings about segment {@code s} of a sequence started at {@code start} go: its own
+     * source, line, file and calls (a sequence may run on from the main program into a subprogram of
+     * its file), or the start's for a segment with none (made by hand, or from no block).
+     */
+    static Source place(Segment s, Source start) {
+        Source own = s.source();
+        return own != null && own.line() > 0 ? own : start;
     }
 
     private double centre() {
@@ -281,7 +297,7 @@ final class MotionChecks {
      * are not in it) the place is the DMC's line, "DMC line 57", whatever line the finding is
      * reported at (a source map's G-code line). The tool's outline is drawn with its tip at {@code tip}.
      */
-    private void mark(Code code, int line, double[] p, double[] tip, Object... lead) {
+    private void mark(Code code, Source at, double[] p, double[] tip, Object... lead) {
         Object[] args = new Object[lead.length + 4];
         System.arraycopy(lead, 0, args, 0, lead.length);
         if (frame == null) {
@@ -294,8 +310,9 @@ final class MotionChecks {
         }
         args[lead.length + 2] = mm(p[0] / profile.x().countsPerMm());
         args[lead.length + 3] = mm(p[1] / profile.z().countsPerMm());
-        out.report(code, line, args);
+        out.report(code, at, args);
         if (path != null) {
+            int line = at.line();
             String block = frame != null && !frame.sequence().isEmpty() ? frame.sequence() : "line " + line;
             path.mark(code.id(), block, line, p[0], p[1], outline.shape, outline.side, tip);
         }
@@ -312,7 +329,7 @@ final class MotionChecks {
      * in the machine frame against the travel; without the program frame (a DMC replayed by itself)
      * the place is the DMC's line.
      */
-    private boolean travel(int line, String axis, double lo, double hi, double min, double max, double perMm) {
+    private boolean travel(Source at, String axis, double lo, double hi, double min, double max, double perMm) {
         if (lo >= min - tol && hi <= max + tol) {
             return false;
         }
@@ -326,7 +343,7 @@ final class MotionChecks {
             where = axis + programmed((bad - (x ? frame.origin().x() : frame.origin().z())) / (x ? frame.perX() : frame.perZ()));
             block = frame.sequence().isEmpty() ? "" : frame.sequence() + "; ";
         }
-        out.report(Code.E302_SIM_TRAVEL, line, axis, where, block, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
+        out.report(Code.E302_SIM_TRAVEL, at, axis, where, block, mm(bad / perMm), mm(min / perMm), mm(max / perMm));
         return true;
     }
 

@@ -46,7 +46,7 @@ final class ReplayCommands extends FlowCommands {
 
     /** Starts the sequence buffered (if any) at the vector speed, located at the instruction being run. */
     void startSequence() {
-        buffer.start(speed, line());
+        buffer.start(speed, source());
     }
 
     double acceleration() {
@@ -69,7 +69,7 @@ final class ReplayCommands extends FlowCommands {
     private void onTheWay() {
         java.util.List<gcnc.dmc.Source> around = buffer.around();
         if (around != null) {
-            out.onTheWay(instruction().source(), around, buffer.trip(), text(), line());
+            out.onTheWay(source(), around, buffer.trip(), text());
         }
     }
 
@@ -88,14 +88,14 @@ final class ReplayCommands extends FlowCommands {
     public Void servoHere(Command.ServoHere c) {
         boolean spindle = c.axes().length() == 1 && Plane.channel(c.axes().charAt(0)) == spindleChannel;
         if (!afterEnd() && !spindle && !plane.sameChannels(c.axes())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, line(), "SH", c.axes(), plane.letters);
+            out.report(Code.E313_SIM_VECTOR_PLANE, source(), "SH", c.axes(), plane.letters);
         }
         return null;
     }
 
     public Void vectorMode(Command.VectorMode c) {
         if (!afterEnd() && !plane.sameChannels(c.axes())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, line(), "VM", c.axes(), plane.letters);
+            out.report(Code.E313_SIM_VECTOR_PLANE, source(), "VM", c.axes(), plane.letters);
         }
         return null;
     }
@@ -131,7 +131,7 @@ final class ReplayCommands extends FlowCommands {
     public Void circularArc(Command.CircularArc c) {
         if (!afterEnd()) {
             if (c.sweep().value() == 0 && !checkedByCaller) {
-                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, line(), text());
+                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, source(), text());
             }
             buffer.cr(c, instruction());
         }
@@ -155,7 +155,7 @@ final class ReplayCommands extends FlowCommands {
             // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
             // room that gcnc writes right after such a BGS (JS #LMWAIT) says it is one
             if (buffer.begin()) {
-                buffer.start(speed, line());
+                buffer.start(speed, source());
             }
         }
         return null;
@@ -173,7 +173,7 @@ final class ReplayCommands extends FlowCommands {
     public Void afterVector(Command.AfterVector c) {
         // the sequence has been replayed whole at BGS: what follows acts on the state after it
         if (!afterEnd()) {
-            buffer.afterVector(c, line());
+            buffer.afterVector(c, source());
         }
         return null;
     }
@@ -194,14 +194,14 @@ final class ReplayCommands extends FlowCommands {
 
     public Void toolNumber(Command.ToolNumber c) {
         if (!afterEnd()) {
-            out.tool(c.station(), line());
+            out.tool(c.station(), source());
         }
         return null;
     }
 
     public Void revolver(Command.Revolver c) {
         if (!afterEnd()) {
-            out.tool(c.station(), line());
+            out.tool(c.station(), source());
         }
         return null;
     }
@@ -275,17 +275,17 @@ final class ReplayCommands extends FlowCommands {
             return null;
         }
         if (plane.sameChannels(c.axes()) && gearing.settling()) {
-            ThreadGearing.GearedPass pass = gearing.pass(line());
-            buffer.run(pass.segments(), pass.speed(), pass.end1(), pass.end2(), line());
+            ThreadGearing.GearedPass pass = gearing.pass(source());
+            buffer.run(pass.segments(), pass.speed(), pass.end1(), pass.end2(), source());
         } else {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line(), "BG", text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, source(), "BG", text());
         }
         return null;
     }
 
     public Void afterMotion(Command.AfterMotion c) {
         if (!afterEnd() && !plane.sameChannels(c.axes())) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line(), "AM", text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, source(), "AM", text());
         }
         return null;
     }
@@ -309,19 +309,19 @@ final class ReplayCommands extends FlowCommands {
         }
         if (c.setting() == Command.Setting.IT) {
             if (c.value().value() != 1) {
-                out.report(Code.E336_SIM_SMOOTHING, line(), text());
+                out.report(Code.E336_SIM_SMOOTHING, source(), text());
             }
             return null;
         }
         if (c.channel() != spindleChannel) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, line(), c.setting().name(), text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, source(), c.setting().name(), text());
         }
         return null;
     }
 
     public Void softLimit(Command.SoftLimit c) {
         if (!afterEnd() && !plane.sameChannels("" + c.first() + c.second())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, line(), c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
+            out.report(Code.E313_SIM_VECTOR_PLANE, source(), c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
                     plane.letters);
         }
         return null;

@@ -1,32 +1,36 @@
 package gcnc.sim;
 
 import gcnc.diag.Code;
+import gcnc.dmc.Source;
 import java.util.List;
 
 /**
  * What the replayed program makes the machine do, as the {@link ReplayController} hands it on:
  * vector sequences when BGS starts them, dwells, tool changes, output changes, and the findings
- * about the commands; the {@link Simulator} turns them into machine state and checks.
+ * about the commands; the {@link Simulator} turns them into machine state and checks. A finding,
+ * and what may make one (a sequence, a tool change), comes with the {@link Source} of the DMC line
+ * that caused it: its file and calls travel with its line.
  */
 interface ReplayListener {
-    void sequence(List<Segment> segments, double speed, int line);
+    void sequence(List<Segment> segments, double speed, Source at);
 
     void dwell(double seconds, int line);
 
-    void tool(int n, int line);
+    void tool(int n, Source at);
 
     void output(int bit, boolean on, int line);
 
     void spindleVolts(double volts, int line);
 
-    void report(Code code, int line, Object... args);
+    void report(Code code, Source at, Object... args);
 
     /**
      * A command set on the way: after {@code AV trip}, while the last sequence runs. {@code around}:
      * the sources of the segments the path is on at that point (one, or two where it is at their
-     * joint), for the check that it is where the program has it (docs/galil.md).
+     * joint), for the check that it is where the program has it (docs/galil.md); {@code what}: the
+     * command's own.
      */
-    default void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
+    default void onTheWay(Source what, List<Source> around, long trip, String text) {
     }
 
     /**

@@ -5,6 +5,7 @@ import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.dmc.Instruction;
+import gcnc.dmc.Source;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
@@ -32,9 +33,16 @@ public final class Simulator {
     /** The motions the checker meant that the DMC has not carried out yet; null for a bare replay (nothing to compare with). */
     private ExpectedMotions expected;
     private int findings;
-    private int lastLine = 1;
-    /** Where the block being replayed was run from (a called program's file and calls): its findings go there. */
-    private gcnc.diag.Origin origin = gcnc.diag.Origin.PROGRAM;
+    /** The last DMC line replayed ({@link Source#NONE} before any): where a sequence still open at the end is. */
+    private Source lastRun = Source.NONE;
+    /**
+     * The last DMC line replayed that has a G-code line of its own. A line from no block (the header,
+     * the footer, which the backend writes with line 0) has no file either, yet its finding must be in
+     * one: it goes to line 1 of this one's file, the file the replay was last in (the main program's
+     * until a located line has run). Kept so on purpose: it is where the replay has always put them,
+     * and a value taken here rather than a file set wherever a finding is made.
+     */
+    private Source lastLocated = Source.NONE;
 
     /** How far a geared thread pass may end from its exact end before it is E317, mm. */
     static final double THREAD_TOLERANCE_MM = 0.005;
@@ -118,7 +126,7 @@ public final class Simulator {
         if (settled) {
             // (while the planner holds pieces, a sequence longer than its window may be open here: its
             // VE comes with a later block)
-            closeSequences(intended.line());
+            closeSequences(at(intended));
         }
         if (settled) {
             expected.skipAll();
@@ -130,12 +138,12 @@ public final class Simulator {
         dmc.checkedByCaller(true);
         run(lines);
         dmc.checkedByCaller(false);
-        closeSequences(lastLine);
+        closeSequences(lastRun);
     }
 
     public void end(List<Instruction> footer) {
         run(footer);
-        closeSequences(lastLine);
+        closeSequences(lastRun);
         if (expected != null) {
             expected.skipAll();
         }
@@ -172,65 +180,77 @@ public final class Simulator {
         for (Instruction i : lines) {
             // every line of the DMC passes here in order: the count is the line's number in the file
             checks.dmcLine(++dmcLines);
-            int line = i.source().line();
-            if (line > 0) {
-                origin = i.source().origin(); // a called program's file: its findings go there
+            if (i.source().line() > 0) {
+                lastLocated = i.source();
             }
             double before = replayed == null ? 0 : checks.seconds();
             dmc.run(i);
             if (replayed != null) {
                 replayed.line(i, before, checks.seconds());
             }
-            lastLine = Math.max(1, line);
+            lastRun = i.source();
             if (trace != null) {
                 trace.line(i, dmc.x(), dmc.z(), checks.tool(), outputs.describe());
             }
         }
     }
 
-    private void closeSequences(int line) {
+    private void closeSequences(Source at) {
         dmc.startBegun(); // a BGS whose VE never came (a hand-written program): it runs as it stands
         if (dmc.hasPending()) {
-            report(Code.E314_SIM_SEQUENCE_NOT_STARTED, line);
+            report(Code.E314_SIM_SEQUENCE_NOT_STARTED, at);
             dmc.dropPending();
         }
     }
 
     /** A motion meant that moves and was not carried out: E311 at its block. */
     private void missed(CheckedBlock block, int count, int done) {
-        origin = block.origin();
-        report(Code.E311_SIM_SEQUENCE_COUNT, block.line(), count, done);
+        report(Code.E311_SIM_SEQUENCE_COUNT, at(block), count, done);
+    }
+
+    /** A block's place: its file and calls, and its line (the findings about its motions as a whole). */
+    private static Source at(CheckedBlock block) {
+        return new Source(block.origin(), block.line(), -1);
     }
 
     /** A DMC line that could not be read (a replay of a file by itself), reported where it came from. */
-    void fault(gcnc.dmc.Source at, Code code, Object... args) {
-        origin = at.origin();
-        report(code, at.line(), args);
+    void fault(Source at, Code code, Object... args) {
+        report(code, at, args);
     }
 
-    private void report(Code code, int line, Object... args) {
+    private void report(Code code, Source at, Object... args) {
         findings++;
-        diagnostics.report(Diagnostic.error(code, Span.of(Math.max(1, line), 1), args).in(origin));
+        diagnostics.report(Diagnostic.error(code, span(at), args).in(origin(at)));
+    }
+
+    /** The line a finding at {@code at} is reported at: its own, or the first for a line from no block. */
+    private static Span span(Source at) {
+        return Span.of(Math.max(1, at.line()), 1);
+    }
+
+    /** The file and calls a finding at {@code at} goes to: its own, or for a line from no block the last located's. */
+    private gcnc.diag.Origin origin(Source at) {
+        return at.line() > 0 ? at.origin() : lastLocated.origin();
     }
 
     /** The interpreter's events, turned into machine state and checks. */
     private final class Events implements ReplayListener {
         @Override
-        public void sequence(List<Segment> segments, double speed, int line) {
+        public void sequence(List<Segment> segments, double speed, Source at) {
             // the runs of segments from one motion each, and the motions they carry out (kept in
             // fields, reused from one sequence to the next: a sequence is a handful of segments)
             meant.clear();
             int runs = 0;
             if (expected != null) {
                 for (int i = 0; i < segments.size(); ) {
-                    gcnc.dmc.Source from = segments.get(i).source();
+                    Source from = segments.get(i).source();
                     int j = i + 1;
                     while (j < segments.size() && java.util.Objects.equals(segments.get(j).source(), from)) {
                         j++;
                     }
                     ExpectedMotions.Expected e = expected.match(from, segments.get(i), segments.get(j - 1));
                     if (e == null) {
-                        report(Code.E311_SIM_SEQUENCE_COUNT, line, 0, 1); // a sequence no motion of the program asked for
+                        report(Code.E311_SIM_SEQUENCE_COUNT, at, 0, 1); // a sequence no motion of the program asked for
                     } else {
                         meant.add(e);
                         if (runs == runFrom.length) {
@@ -246,7 +266,6 @@ public final class Simulator {
             }
             Motion m = meant.isEmpty() ? null : meant.get(0).motion();
             if (m != null) {
-                origin = meant.get(0).block().origin();
                 checks.frame(meant.get(0).block().frame());
                 if (meant.size() > 1) {
                     // a sequence of several blocks: each segment's findings in its own block's coordinates
@@ -261,26 +280,25 @@ public final class Simulator {
                     : m instanceof Motion.Linear && ((Motion.Linear) m).rapid();
             boolean stopped = !rapid && outputs.spindleKnown && !outputs.running;
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
-            boolean removed = checks.sequence(segments, speed, rapid, line, dmc.acceleration(), dmc.deceleration(),
+            boolean removed = checks.sequence(segments, speed, rapid, at, dmc.acceleration(), dmc.deceleration(),
                     stopped || open);
-            corners.check(segments, speed, line, meant.isEmpty() ? null : numbers);
+            corners.check(segments, speed, at, meant.isEmpty() ? null : numbers);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
             boolean cut = checks.hasStock() ? removed : expected == null;
             if (stopped && cut) {
-                report(Code.E306_SIM_FEED_SPINDLE_STOPPED, line, outputs.describe());
+                report(Code.E306_SIM_FEED_SPINDLE_STOPPED, at, outputs.describe());
             }
             if (open && cut) {
-                report(Code.E307_SIM_FEED_CHUCK_OPEN, line, outputs.describe());
+                report(Code.E307_SIM_FEED_CHUCK_OPEN, at, outputs.describe());
             }
             for (int k = 0; k < meant.size(); k++) {
                 ExpectedMotions.Expected e = meant.get(k);
-                origin = e.block().origin();
                 checks.frame(e.block().frame());
                 List<Segment> run = meant.size() == 1 && runFrom[0] == 0 && runTo[0] == segments.size() ? segments
                         : segments.subList(runFrom[k], runTo[k]);
-                double[] resync = checks.conformance(e.motion(), run, e.block().line());
+                double[] resync = checks.conformance(e.motion(), run, at(e.block()));
                 if (resync != null && k == meant.size() - 1) {
                     dmc.moveTo(resync[0], resync[1]);
                 }
@@ -316,14 +334,14 @@ public final class Simulator {
         }
 
         @Override
-        public void tool(int n, int line) {
+        public void tool(int n, Source at) {
             checks.selectTool(n);
             if (n != 0 && !machine.described(n) && undescribed.add(n)) {
                 // never silently the default outline: say which station, and what its checks rest on
                 boolean tipOnly = machine.defaultTool().kind() == gcnc.machine.MachineModel.ToolKind.TIP;
                 diagnostics.report(Diagnostic.warning(tipOnly ? Code.E322_SIM_STATION_TIP_ONLY
-                        : Code.E321_SIM_STATION_ASSUMED, Span.of(Math.max(1, line), 1), n, profile.name(),
-                        machine.defaultTool().name()).in(origin));
+                        : Code.E321_SIM_STATION_ASSUMED, span(at), n, profile.name(),
+                        machine.defaultTool().name()).in(origin(at)));
             }
         }
 
@@ -340,8 +358,8 @@ public final class Simulator {
         }
 
         @Override
-        public void report(Code code, int line, Object... args) {
-            Simulator.this.report(code, line, args);
+        public void report(Code code, Source at, Object... args) {
+            Simulator.this.report(code, at, args);
         }
 
         @Override
@@ -357,13 +375,13 @@ public final class Simulator {
          * file read back may number its own lines); a path that runs lines backwards there (a loop) is not.
          */
         @Override
-        public void onTheWay(gcnc.dmc.Source what, List<gcnc.dmc.Source> around, long trip, String text, int line) {
+        public void onTheWay(Source what, List<Source> around, long trip, String text) {
             if (around.isEmpty() || what.line() <= 0 || what.block() < 0) {
                 return;
             }
             int lo = Integer.MAX_VALUE;
             int hi = Integer.MIN_VALUE;
-            for (gcnc.dmc.Source s : around) {
+            for (Source s : around) {
                 if (!java.util.Objects.equals(s.origin(), what.origin())) {
                     return;
                 }
@@ -374,7 +392,7 @@ public final class Simulator {
                 return;
             }
             if (what.line() < lo || what.line() > hi) {
-                report(Code.E335_SIM_SWITCHED_ELSEWHERE, line, text, trip, lo == hi ? String.valueOf(lo) : lo + "-" + hi);
+                report(Code.E335_SIM_SWITCHED_ELSEWHERE, what, text, trip, lo == hi ? String.valueOf(lo) : lo + "-" + hi);
             }
         }
     }

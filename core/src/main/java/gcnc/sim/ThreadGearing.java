@@ -112,7 +112,7 @@ final class ThreadGearing {
     void master(Command.GearMaster c, Instruction at) {
         if (encoderChannel < 0 || Plane.channel(c.master()) != encoderChannel
                 || !plane.sameChannels("" + c.first() + c.second())) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "GA", at.text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "GA", at.text());
             return;
         }
         gearMaster = true;
@@ -125,7 +125,7 @@ final class ThreadGearing {
     void syncPoint(Command.SyncPoint c, Instruction at) {
         if (encoderChannel < 0 || Plane.channel(c.encoder()) != encoderChannel || c.countsPerRev() != encoderCounts
                 || Math.abs(c.phase()) >= encoderCounts) {
-            out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, at.source().line(), at.text());
+            out.report(Code.E300_SIM_UNKNOWN_INSTRUCTION, at.source(), at.text());
             return;
         }
         syncVariable = c.variable();
@@ -146,11 +146,11 @@ final class ThreadGearing {
         }
         int axis = planeAxis(ch);
         if (axis < 0 || !(c.at() instanceof Command.Operand.Count n) || !engaged) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), cmd, at.text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), cmd, at.text());
             return;
         }
         if (phaseLag[0] >= 0) {
-            closePhase(at.source().line());
+            closePhase(at.source());
         }
         tripAxis = axis;
         trip = n.counts();
@@ -166,7 +166,7 @@ final class ThreadGearing {
         double start = axis == 0 ? engaged1 : engaged2;
         if (!engaged || axis < 0 || Plane.channel(c.encoder()) != encoderChannel || !c.sync().equals(syncVariable)
                 || c.slaveStart() != Math.rint(start) || phaseLag[axis] < 0) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "phase error", at.text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "phase error", at.text());
             return;
         }
         phaseVariable[axis] = c.variable();
@@ -179,7 +179,7 @@ final class ThreadGearing {
         for (int i = 0; i < axes.length; i++) {
             int axis = planeAxis(Plane.channel(axes[i]));
             if (!engaged || axis < 0 || !vars[i].equals(phaseVariable[axis])) {
-                out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "IP", at.text());
+                out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "IP", at.text());
                 return;
             }
             phaseLag[axis] = 0.5;
@@ -188,12 +188,13 @@ final class ThreadGearing {
     }
 
     /** The pass's first trip point: its phase offset is what it is now; the thread's spread keeps the largest. */
-    private void closePhase(int line) {
+    private void closePhase(gcnc.dmc.Source at) {
+        int line = at.line();
         double lag = Math.max(phaseLag[0], phaseLag[1]);
         Double before = phaseSpread.merge(line, lag, Math::max);
         if (lag > PHASE_TOLERANCE && (before == lag) && !phaseReported.contains(line)) {
             phaseReported.add(line);
-            out.report(Code.E340_SIM_THREAD_PHASE, line, String.format(java.util.Locale.ROOT, "%.0f", lag));
+            out.report(Code.E340_SIM_THREAD_PHASE, at, String.format(java.util.Locale.ROOT, "%.0f", lag));
         }
         phaseLag[0] = -1;
         phaseLag[1] = -1;
@@ -202,7 +203,7 @@ final class ThreadGearing {
     /** {@code DP}: gcnc defines the spindle count only. */
     void definePosition(Command.DefinePosition c, Instruction at) {
         if (Plane.channel(c.axis()) != encoderChannel) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "DP", at.text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "DP", at.text());
         }
     }
 
@@ -216,7 +217,7 @@ final class ThreadGearing {
         double r2 = (firstIsFirst ? c.secondRatio() : c.firstRatio()).value();
         if (!plane.sameChannels("" + c.first() + c.second()) || Math.abs(r1) > gcnc.machine.SpindleEncoder.MAX_RATIO
                 || Math.abs(r2) > gcnc.machine.SpindleEncoder.MAX_RATIO) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "GR", at.text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "GR", at.text());
             return;
         }
         if (r1 == 0 && r2 == 0) {
@@ -230,9 +231,9 @@ final class ThreadGearing {
             return;
         }
         if (!gearMaster) {
-            out.report(Code.E318_SIM_THREAD_NO_MASTER, at.source().line(), at.text());
+            out.report(Code.E318_SIM_THREAD_NO_MASTER, at.source(), at.text());
         } else if (!synchronised) {
-            out.report(Code.E319_SIM_THREAD_UNSYNCHRONISED, at.source().line(), at.text());
+            out.report(Code.E319_SIM_THREAD_UNSYNCHRONISED, at.source(), at.text());
         }
         engaged = true;
         synchronised = false;
@@ -294,7 +295,7 @@ final class ThreadGearing {
     private double[] tripped(Instruction at, String why) {
         double r = tripAxis == 0 ? ratio1 : ratio2;
         if (tripAxis < 0 || r == 0) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "GR", at.text() + why);
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "GR", at.text() + why);
             return null;
         }
         double master = (trip - (tripAxis == 0 ? engaged1 : engaged2)) / r;
@@ -308,7 +309,7 @@ final class ThreadGearing {
         long p = firstIsFirst ? c.firstCount() : c.secondCount();
         long q = firstIsFirst ? c.secondCount() : c.firstCount();
         if (!plane.sameChannels("" + c.first() + c.second()) || Double.isNaN(geared1) || engaged) {
-            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source().line(), "PA", at.text());
+            out.report(Code.E301_SIM_BAD_ARGUMENTS, at.source(), "PA", at.text());
             return;
         }
         target1 = p;
@@ -325,11 +326,11 @@ final class ThreadGearing {
      * the PA target, at the speed the spindle gives it; E317 when the gearing ended further than the
      * tolerance from that target (the ratios make the wrong lead or taper). The gearing is then done.
      */
-    GearedPass pass(int line) {
+    GearedPass pass(gcnc.dmc.Source at) {
         double off = Math.hypot(geared1 - target1, geared2 - target2);
         if (off > threadTolerance) {
             double zOff = Math.abs(plane.machineZ(geared1, geared2) - plane.machineZ(target1, target2));
-            out.report(Code.E317_SIM_THREAD_LEAD, line, String.format(java.util.Locale.ROOT, "%.1f", off),
+            out.report(Code.E317_SIM_THREAD_LEAD, at, String.format(java.util.Locale.ROOT, "%.1f", off),
                     zOff > threadTolerance ? "Z" : "X");
         }
         double rpm = volts * rpmPerVolt;

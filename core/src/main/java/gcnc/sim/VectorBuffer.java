@@ -169,7 +169,7 @@ final class VectorBuffer {
             s = s.withSpeeds(speeds.speed() == 0 ? Double.NaN : speeds.speed(), speeds.end() == 0 ? Double.NaN : speeds.end());
         }
         if (Math.abs(e1) > INT32 || Math.abs(e2) > INT32) {
-            out.report(Code.E310_SIM_COUNT_RANGE, at.source().line(), "the end point of '" + s.text() + "'");
+            out.report(Code.E310_SIM_COUNT_RANGE, at.source(), "the end point of '" + s.text() + "'");
         }
         pending.add(s);
         cursor1 = e1;
@@ -177,7 +177,7 @@ final class VectorBuffer {
     }
 
     /** Starts the sequence buffered (if any) at {@code speed}: the listener hears it, the axes end where it does. */
-    void start(double speed, int line) {
+    void start(double speed, gcnc.dmc.Source at) {
         begun = false;
         vectorEnded = false;
         if (pending.isEmpty()) {
@@ -189,7 +189,7 @@ final class VectorBuffer {
         g2 = Math.rint(cursor2);
         avTrip = -1;
         // The listener reads the segments during the call and keeps none of them.
-        out.sequence(pending, speed, line);
+        out.sequence(pending, speed, at);
         // kept for the trip points after it (the path lengths only when an AV asks: most sequences have none)
         List<Segment> free = last;
         last = pending;
@@ -200,11 +200,11 @@ final class VectorBuffer {
     }
 
     /** A sequence that is not the buffer's (a geared thread pass, which always cuts), ending at (end1, end2). */
-    void run(List<Segment> segments, double speed, double end1, double end2, int line) {
+    void run(List<Segment> segments, double speed, double end1, double end2, gcnc.dmc.Source at) {
         g1 = end1;
         g2 = end2;
         feedMarked = true;
-        out.sequence(segments, speed, line);
+        out.sequence(segments, speed, at);
         feedMarked = false;
     }
 
@@ -235,12 +235,12 @@ final class VectorBuffer {
      * reaches the reference does not say, so the safe reading is that it waits there for ever
      * (docs/simulator.md): E334.
      */
-    void afterVector(Command.AfterVector c, int line) {
+    void afterVector(Command.AfterVector c, gcnc.dmc.Source at) {
         measure();
         double total = reachedCount == 0 ? 0 : reached[reachedCount - 1];
         long trip = Math.max(0, avTrip) + c.counts();
         if (trip > total + 1) {
-            out.report(Code.E334_SIM_TRIP_PAST_END, line, c.counts(), trip, Math.round(total));
+            out.report(Code.E334_SIM_TRIP_PAST_END, at, c.counts(), trip, Math.round(total));
         }
         avTrip = trip;
     }
