@@ -26,6 +26,14 @@ abstract class ModalExpansion {
         return CycleBlocks.function(host, w);
     }
 
+    /**
+     * Whether {@code f} is the G of a cycle or a thread: it takes the block's axis words, so beside
+     * the G of the cycle being expanded it is a foreign word (E161).
+     */
+    static boolean cycleOrThread(GFunction f) {
+        return f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread());
+    }
+
     /** The cycle in force as the program wrote it ("G90"), for a finding about running it again. */
     final String name() {
         return modal.name();

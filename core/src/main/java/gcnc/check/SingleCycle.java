@@ -54,7 +54,7 @@ final class SingleCycle extends ModalExpansion {
                 case X, U, Z, W -> axes.add(w);
                 case N, F, S, T, M -> passOn.add(w);
                 case G -> {
-                    if (f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread())) {
+                    if (cycleOrThread(f)) {
                         foreign = foreign == null ? w : foreign;
                     } else {
                         passOn.add(w);
@@ -70,10 +70,7 @@ final class SingleCycle extends ModalExpansion {
             }
         }
         List<CheckedBlock> done = new ArrayList<>();
-        if (!passOn.isEmpty()) {
-            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                    isFirst, null).ifPresent(done::add);
-        }
+        CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         Word at = g != null ? g : axes.get(0);
         if (foreign != null) {
             host.out().error(Code.E161_CYCLE_WORD, foreign.span(), label, foreign);

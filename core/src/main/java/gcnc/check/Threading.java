@@ -112,7 +112,7 @@ final class Threading extends ModalExpansion {
             switch (w.letter()) {
                 case N, S, T, M -> passOn.add(w);
                 case G -> {
-                    if (f != null && (f.role().thread() || f.role().singleCycle() || f.role().contourCycle())) {
+                    if (cycleOrThread(f)) {
                         foreign = foreign == null ? w : foreign;
                     } else {
                         passOn.add(w);
@@ -128,10 +128,7 @@ final class Threading extends ModalExpansion {
             }
         }
         List<CheckedBlock> done = new ArrayList<>();
-        if (!passOn.isEmpty()) {
-            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                    isFirst, null).ifPresent(done::add);
-        }
+        CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         if (foreign != null) {
             host.out().error(Code.E161_CYCLE_WORD, foreign.span(), label, foreign);
             return done;
