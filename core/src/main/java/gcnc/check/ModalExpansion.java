@@ -27,11 +27,17 @@ abstract class ModalExpansion {
     }
 
     /**
-     * Whether {@code f} is the G of a cycle or a thread: it takes the block's axis words, so beside
-     * the G of the cycle being expanded it is a foreign word (E161).
+     * A G word beside the cycle's own: handed on (into {@code passOn}) unless it is the G of a cycle
+     * or a thread, which takes the block's axis words too and is foreign here (E161). Returns the
+     * block's first foreign word: {@code foreign}, else this G when it is one.
      */
-    static boolean cycleOrThread(GFunction f) {
-        return f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread());
+    final Word otherG(Word w, List<Word> passOn, Word foreign) {
+        GFunction f = function(w);
+        if (f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread())) {
+            return foreign == null ? w : foreign;
+        }
+        passOn.add(w);
+        return foreign;
     }
 
     /** The cycle in force as the program wrote it ("G90"), for a finding about running it again. */
