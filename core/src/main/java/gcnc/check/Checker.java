@@ -93,7 +93,7 @@ public final class Checker {
         this.isOther = isOther;
         this.state = ModalState.initial(profile);
         this.cycles = new CycleExpansion(ports);
-        this.offsets = new OffsetAndReturn(ports, coordinates);
+        this.offsets = new OffsetAndReturn(ports);
         this.findings = new FindingReport(out);
         this.repeats = new RepeatWarnings(profile, out);
         this.release = new BlockRelease(profile, functions, out);

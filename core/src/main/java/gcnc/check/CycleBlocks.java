@@ -159,28 +159,8 @@ final class CycleBlocks {
      */
     static List<CheckedBlock> write(CycleHost host, String name, int line, Span at, List<Move> moves, int passes,
                                     ModalState start, java.util.Map<Integer, List<RawBlock>> after) {
-        MoveWriter writer = new MoveWriter(frame(host, start), line, at);
-        List<CheckedBlock> done = new ArrayList<>();
-        Point from = start.position();
-        for (int i = 0; i < moves.size(); i++) {
-            Move m = moves.get(i);
-            CycleOrigin origin = new CycleOrigin(name, m.pass(), passes, line, -1, -1, false);
-            Optional<CheckedBlock> r = host.one(writer.block(m, from), false, origin);
-            for (RawBlock extra : after.getOrDefault(i, List.of())) {
-                if (r.isEmpty()) {
-                    break;
-                }
-                done.add(r.get());
-                r = host.one(extra, false, origin);
-            }
-            if (r.isEmpty()) {
-                abandon(host, writer, start.position(), origin).ifPresent(done::add);
-                break;
-            }
-            done.add(r.get());
-            from = host.state().position();
-        }
-        return done;
+        return write(host, new MoveWriter(frame(host, start), line, at), moves, start, after,
+                pass -> new CycleOrigin(name, pass, passes, line, -1, -1, false));
     }
 
     /** The program frame a cycle's moves are written in: the state's work zero, units and G91. */
@@ -205,19 +185,35 @@ final class CycleBlocks {
      */
     static List<CheckedBlock> write(CycleHost host, gcnc.check.cycle.CycleCall call, int line, List<Move> moves, int passes,
                                     ModalState start) {
-        MoveWriter writer = new MoveWriter(frame(host, start), line, call.g().span());
+        long p = call.label(Letter.P);
+        long q = call.label(Letter.Q);
+        return write(host, new MoveWriter(frame(host, start), line, call.g().span()), moves, start, java.util.Map.of(),
+                pass -> new CycleOrigin(call.name(), pass, passes, line, p, q, false));
+    }
+
+    /** The loop of both writes above: {@code origins} labels the blocks of each pass. */
+    private static List<CheckedBlock> write(CycleHost host, MoveWriter writer, List<Move> moves, ModalState start,
+                                            java.util.Map<Integer, List<RawBlock>> after,
+                                            java.util.function.IntFunction<CycleOrigin> origins) {
         List<CheckedBlock> done = new ArrayList<>();
-        Point at = start.position();
-        for (Move m : moves) {
-            CycleOrigin origin = new CycleOrigin(call.name(), m.pass(), passes, line, call.label(Letter.P),
-                    call.label(Letter.Q), false);
-            Optional<CheckedBlock> b = host.one(writer.block(m, at), false, origin);
-            if (b.isEmpty()) {
+        Point from = start.position();
+        for (int i = 0; i < moves.size(); i++) {
+            Move m = moves.get(i);
+            CycleOrigin origin = origins.apply(m.pass());
+            Optional<CheckedBlock> r = host.one(writer.block(m, from), false, origin);
+            for (RawBlock extra : after.getOrDefault(i, List.of())) {
+                if (r.isEmpty()) {
+                    break;
+                }
+                done.add(r.get());
+                r = host.one(extra, false, origin);
+            }
+            if (r.isEmpty()) {
                 abandon(host, writer, start.position(), origin).ifPresent(done::add);
                 break;
             }
-            done.add(b.get());
-            at = host.state().position();
+            done.add(r.get());
+            from = host.state().position();
         }
         return done;
     }

@@ -189,10 +189,7 @@ final class CycleExpansion {
         CycleCall call = CycleCall.read(b, g, kind, this::role, noPoint, host.out());
         List<CheckedBlock> done = new ArrayList<>();
         List<Word> passOn = call != null ? call.passOn() : passOn(b);
-        if (!passOn.isEmpty()) {
-            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                    isFirst, null).ifPresent(done::add);
-        }
+        CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         if (call == null) {
             // rejected: as after the operator fixed this block, its contour is still skipped and
             // kept for the G70, so that neither is judged as an echo of this error
@@ -363,7 +360,7 @@ final class CycleExpansion {
         FirstBlock firstBlock = firstBlocks.getOrDefault(call.kind(), FirstBlock.NONE);
         if (call.kind() == GRole.PATTERN_CYCLE) {
             // G71-G73 only plan their passes; they are written and checked here, one by one
-            return new PatternRepeat(host.coordinates(), host.out(), call).expand(contour, start, firstBlock)
+            return PatternRepeat.expand(host.out(), call, host.coordinates(), contour, start, firstBlock)
                     .map(g -> CycleBlocks.write(host, call, p.line, g.moves(), g.passes(), start)).orElse(List.of());
         }
         return new StockRemoval(host.coordinates(), host.profile(), host.out(), call, p.line)

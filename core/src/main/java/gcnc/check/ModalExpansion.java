@@ -26,6 +26,20 @@ abstract class ModalExpansion {
         return CycleBlocks.function(host, w);
     }
 
+    /**
+     * A G word beside the cycle's own: handed on (into {@code passOn}) unless it is the G of a cycle
+     * or a thread, which takes the block's axis words too and is foreign here (E161). Returns the
+     * block's first foreign word: {@code foreign}, else this G when it is one.
+     */
+    final Word otherG(Word w, List<Word> passOn, Word foreign) {
+        GFunction f = function(w);
+        if (f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread())) {
+            return foreign == null ? w : foreign;
+        }
+        passOn.add(w);
+        return foreign;
+    }
+
     /** The cycle in force as the program wrote it ("G90"), for a finding about running it again. */
     final String name() {
         return modal.name();

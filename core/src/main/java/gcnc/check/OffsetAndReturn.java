@@ -18,12 +18,9 @@ import java.util.Optional;
  */
 final class OffsetAndReturn {
     private final CycleHost host;
-    /** The checker's coordinate frames, where a G10 L2 writes its work offset. */
-    private final Coordinates coordinates;
 
-    OffsetAndReturn(CycleHost host, Coordinates coordinates) {
+    OffsetAndReturn(CycleHost host) {
         this.host = host;
-        this.coordinates = coordinates;
     }
 
     /**
@@ -39,6 +36,8 @@ final class OffsetAndReturn {
         if (split.passOn() != null) {
             host.one(split.passOn(), isFirst, null).ifPresent(done::add);
         }
+        // the checker's coordinate frames, where a G10 L2 writes its work offset
+        Coordinates coordinates = host.coordinates();
         OffsetSetting.offset(g, split.words(), host.state(), host.profile(), coordinates, host.out())
                 .ifPresent(w -> coordinates.setWork(w.index(), w.at()));
         return done;

@@ -19,14 +19,7 @@ import java.util.List;
  * {@link Pattern} written as blocks at the cycle's line and checked one by one.
  */
 final class PatternRepeat {
-    private final Coordinates coordinates;
-    private final Diagnostics out;
-    private final CycleCall call;
-
-    PatternRepeat(Coordinates coordinates, Diagnostics out, CycleCall call) {
-        this.coordinates = coordinates;
-        this.out = out;
-        this.call = call;
+    private PatternRepeat() {
     }
 
     /**
@@ -52,8 +45,12 @@ final class PatternRepeat {
         return v;
     }
 
-    /** The cycle's passes; empty after a finding. {@code firstBlock}: what a Fanuc first block left in force. */
-    java.util.Optional<CycleExpansion.Passes> expand(Contour contour, ModalState start, FirstBlock firstBlock) {
+    /**
+     * The cycle's passes over {@code contour} from {@code start}, in the counts of {@code c}; empty
+     * after a finding. {@code firstBlock}: what a Fanuc first block left in force.
+     */
+    static java.util.Optional<CycleExpansion.Passes> expand(Diagnostics out, CycleCall call, Coordinates c,
+                                                            Contour contour, ModalState start, FirstBlock firstBlock) {
         double n = call.has(Letter.D) ? passes(out, call, Letter.D) : firstBlock.passes();
         if (Double.isNaN(n)) {
             if (!call.has(Letter.D)) {
@@ -62,7 +59,6 @@ final class PatternRepeat {
             }
             return java.util.Optional.empty();
         }
-        Coordinates c = coordinates;
         Units u = start.units();
         double reliefX = call.has(Letter.I) ? call.value(Letter.I) : zeroIfNone(firstBlock.reliefX());
         double reliefZ = call.has(Letter.K) ? call.value(Letter.K) : zeroIfNone(firstBlock.reliefZ());

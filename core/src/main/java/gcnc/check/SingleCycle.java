@@ -10,7 +10,6 @@ import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
-import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import gcnc.machine.Units;
 import java.util.ArrayList;
@@ -46,20 +45,13 @@ final class SingleCycle extends ModalExpansion {
         Word taperGiven = null;
         Word foreign = null;
         for (Word w : b.words()) {
-            GFunction f = function(w);
             if (w == g) {
                 continue;
             }
             switch (w.letter()) {
                 case X, U, Z, W -> axes.add(w);
                 case N, F, S, T, M -> passOn.add(w);
-                case G -> {
-                    if (f != null && (f.role().singleCycle() || f.role().contourCycle() || f.role().thread())) {
-                        foreign = foreign == null ? w : foreign;
-                    } else {
-                        passOn.add(w);
-                    }
-                }
+                case G -> foreign = otherG(w, passOn, foreign);
                 default -> {
                     if ((w.letter() == Letter.R || w.letter() == taperWord) && taperGiven == null) {
                         taperGiven = w;
@@ -70,10 +62,7 @@ final class SingleCycle extends ModalExpansion {
             }
         }
         List<CheckedBlock> done = new ArrayList<>();
-        if (!passOn.isEmpty()) {
-            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                    isFirst, null).ifPresent(done::add);
-        }
+        CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         Word at = g != null ? g : axes.get(0);
         if (foreign != null) {
             host.out().error(Code.E161_CYCLE_WORD, foreign.span(), label, foreign);

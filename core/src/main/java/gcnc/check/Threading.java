@@ -9,7 +9,6 @@ import gcnc.ir.Letter;
 import gcnc.ir.Point;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
-import gcnc.machine.GFunction;
 import gcnc.machine.GRole;
 import java.util.ArrayList;
 import java.util.EnumMap;
@@ -108,16 +107,9 @@ final class Threading extends ModalExpansion {
             if (w == g) {
                 continue;
             }
-            GFunction f = function(w);
             switch (w.letter()) {
                 case N, S, T, M -> passOn.add(w);
-                case G -> {
-                    if (f != null && (f.role().thread() || f.role().singleCycle() || f.role().contourCycle())) {
-                        foreign = foreign == null ? w : foreign;
-                    } else {
-                        passOn.add(w);
-                    }
-                }
+                case G -> foreign = otherG(w, passOn, foreign);
                 default -> {
                     if (!takes(role, w.letter())) {
                         foreign = foreign == null ? w : foreign;
@@ -128,10 +120,7 @@ final class Threading extends ModalExpansion {
             }
         }
         List<CheckedBlock> done = new ArrayList<>();
-        if (!passOn.isEmpty()) {
-            host.one(new RawBlock(b.line(), passOn, passOn.get(passOn.size() - 1).span(), false, b.blockDelete()),
-                    isFirst, null).ifPresent(done::add);
-        }
+        CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         if (foreign != null) {
             host.out().error(Code.E161_CYCLE_WORD, foreign.span(), label, foreign);
             return done;

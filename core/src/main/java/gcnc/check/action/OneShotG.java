@@ -11,19 +11,12 @@ import gcnc.ir.Word;
  * 20 G50/G92). These actions do not touch the modal G state.
  */
 abstract class OneShotG implements SyntaxAction {
-    private final int number;
     private final int g;
     private final Code conflict;
 
-    OneShotG(int number, int g, Code conflict) {
-        this.number = number;
+    OneShotG(int g, Code conflict) {
         this.g = g;
         this.conflict = conflict;
-    }
-
-    @Override
-    public final int number() {
-        return number;
     }
 
     @Override

@@ -14,11 +14,6 @@ import gcnc.machine.GRole;
  */
 public final class Sa01ModalG implements SyntaxAction {
     @Override
-    public int number() {
-        return 1;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         GFunction f = d.functions.g(w.code());
         if (!d.claimG(f.group(), w, out)) {

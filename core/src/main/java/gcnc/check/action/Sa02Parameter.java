@@ -21,11 +21,6 @@ import gcnc.machine.Units;
  */
 public final class Sa02Parameter implements SyntaxAction {
     @Override
-    public int number() {
-        return 2;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         Letter l = w.letter();
         if (!d.fresh(w, out)) {

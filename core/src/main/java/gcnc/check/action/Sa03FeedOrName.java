@@ -17,11 +17,6 @@ import gcnc.ir.Word;
  */
 public final class Sa03FeedOrName implements SyntaxAction {
     @Override
-    public int number() {
-        return 3;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         if (w.letter() == Letter.O) {
             name(w, d, out);

@@ -19,11 +19,6 @@ import gcnc.ir.Word;
  */
 public final class Sa04SpeedOrTool implements SyntaxAction {
     @Override
-    public int number() {
-        return 4;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         Letter l = w.letter();
         if (!d.fresh(w, out)) {

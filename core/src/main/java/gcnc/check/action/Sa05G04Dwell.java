@@ -8,6 +8,6 @@ import gcnc.diag.Code;
  */
 public final class Sa05G04Dwell extends OneShotG {
     public Sa05G04Dwell() {
-        super(5, 4, Code.E017_G04_WITH_OTHER);
+        super(4, Code.E017_G04_WITH_OTHER);
     }
 }

@@ -8,6 +8,6 @@ import gcnc.diag.Code;
  */
 public final class Sa06G28Home extends OneShotG {
     public Sa06G28Home() {
-        super(6, 28, Code.E018_G28_WITH_OTHER);
+        super(28, Code.E018_G28_WITH_OTHER);
     }
 }

@@ -8,6 +8,6 @@ import gcnc.diag.Code;
  */
 public final class Sa07G29FromHome extends OneShotG {
     public Sa07G29FromHome() {
-        super(7, 29, Code.E019_G29_WITH_OTHER);
+        super(29, Code.E019_G29_WITH_OTHER);
     }
 }

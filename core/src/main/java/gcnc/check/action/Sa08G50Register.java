@@ -8,6 +8,6 @@ import gcnc.diag.Code;
  */
 public final class Sa08G50Register extends OneShotG {
     public Sa08G50Register() {
-        super(8, 50, Code.E020_G50_G92_WITH_OTHER);
+        super(50, Code.E020_G50_G92_WITH_OTHER);
     }
 }

@@ -8,6 +8,6 @@ import gcnc.diag.Code;
  */
 public final class Sa09G92Register extends OneShotG {
     public Sa09G92Register() {
-        super(9, 92, Code.E020_G50_G92_WITH_OTHER);
+        super(92, Code.E020_G50_G92_WITH_OTHER);
     }
 }

@@ -10,11 +10,6 @@ import gcnc.ir.Word;
  */
 public final class Sa10SkipNoOp implements SyntaxAction {
     @Override
-    public int number() {
-        return 10;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         // G31 has no effect, as in the thesis.
     }

@@ -13,11 +13,6 @@ import gcnc.ir.Word;
  */
 public final class Sa11ExactStop implements SyntaxAction {
     @Override
-    public int number() {
-        return 11;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         d.exactStop = true;
     }

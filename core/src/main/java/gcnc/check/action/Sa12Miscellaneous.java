@@ -20,11 +20,6 @@ import gcnc.machine.MRole;
  */
 public final class Sa12Miscellaneous implements SyntaxAction {
     @Override
-    public int number() {
-        return 12;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         int code = (int) w.code();
         MFunction f = d.functions.m(code);

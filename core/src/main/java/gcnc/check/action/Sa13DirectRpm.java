@@ -11,11 +11,6 @@ import gcnc.ir.Word;
  */
 public final class Sa13DirectRpm implements SyntaxAction {
     @Override
-    public int number() {
-        return 13;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         if (!d.claimG(d.functions.g(w.code()).group(), w, out)) {
             return;

@@ -19,11 +19,6 @@ import gcnc.machine.GRole;
  * {@code mode_only}) is the note E700. Emits E016, E112, E174, E700. Writes next.css, next.nose, next.exactStopMode, d.g96.
  */
 public final class Sa14ModalNoMotion implements SyntaxAction {
-    @Override
-    public int number() {
-        return 14;
-    }
-
     /**
      * E700 (note): the mode changes nothing gcnc writes. E701 (warning) when the block gives the
      * mode values (G22's forbidden area X Z I K): the machine acts on them and gcnc does not check them.

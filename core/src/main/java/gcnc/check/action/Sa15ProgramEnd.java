@@ -12,11 +12,6 @@ import gcnc.ir.Word;
  */
 public final class Sa15ProgramEnd implements SyntaxAction {
     @Override
-    public int number() {
-        return 15;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         int group = d.functions.m(w.code()).group();
         if (!d.claimM(group, w, out)) {

@@ -12,11 +12,6 @@ import gcnc.ir.Word;
  */
 public final class Sa16MachineCoordinates implements SyntaxAction {
     @Override
-    public int number() {
-        return 16;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         if (d.oneShot != BlockDraft.NONE) {
             d.fail(out, Code.E035_TWO_G_WITH_PARAMETERS, w.span(), d.oneShotWord, w);

@@ -16,11 +16,6 @@ import gcnc.machine.MFunction;
  */
 public final class Sa17NotSupportedYet implements SyntaxAction {
     @Override
-    public int number() {
-        return 17;
-    }
-
-    @Override
     public void apply(Word w, BlockDraft d, Diagnostics out) {
         long code = w.code();
         String name;

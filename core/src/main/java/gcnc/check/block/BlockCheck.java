@@ -5,12 +5,10 @@ import gcnc.diag.Diagnostics;
 
 /**
  * One of the 8 end-of-block operations of thesis §4.2.2 (L879-887; reading §6, §7.2), run once
- * every word of the block has been read. Reports through {@link BlockDraft#fail}.
+ * every word of the block has been read. Reports through {@link BlockDraft#fail}. Its thesis
+ * number is the one in its class's name (Eb07...), paired with it in {@link BlockChecks} alone.
  */
 public interface BlockCheck {
-    /** The thesis's operation number, 1..8. */
-    int number();
-
     void run(BlockDraft d, Diagnostics out);
 
     /**

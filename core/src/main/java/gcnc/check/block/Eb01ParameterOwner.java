@@ -24,11 +24,6 @@ public final class Eb01ParameterOwner implements BlockCheck {
     private static final Param[] PARAMS = {Param.X, Param.Z, Param.U, Param.W, Param.R, Param.I, Param.K};
 
     @Override
-    public int number() {
-        return 1;
-    }
-
-    @Override
     public void run(BlockDraft d, Diagnostics out) {
         if (SpindleOrientAngle.owns(d, out)) {
             return; // Haas M19 P/R: the angle is the M19's (E703)

@@ -11,11 +11,6 @@ import gcnc.ir.Point;
  */
 public final class Eb02G28Point implements BlockCheck {
     @Override
-    public int number() {
-        return 2;
-    }
-
-    @Override
     public void run(BlockDraft d, Diagnostics out) {
         if (d.function != 28) {
             return;

@@ -10,11 +10,6 @@ import gcnc.diag.Diagnostics;
  */
 public final class Eb03G29NeedsG28 implements BlockCheck {
     @Override
-    public int number() {
-        return 3;
-    }
-
-    @Override
     public void run(BlockDraft d, Diagnostics out) {
         if (d.function == 29 && d.prior.g28() == null) {
             d.fail(out, Code.E042_G29_WITHOUT_G28, d.oneShotWord.span());

@@ -15,11 +15,6 @@ import gcnc.ir.Letter;
  */
 public final class Eb04EnoughParameters implements BlockCheck {
     @Override
-    public int number() {
-        return 4;
-    }
-
-    @Override
     public void run(BlockDraft d, Diagnostics out) {
         boolean axis = d.has(Letter.X) || d.has(Letter.Z) || d.has(Letter.U) || d.has(Letter.W);
         switch (d.function) {

@@ -15,11 +15,6 @@ import gcnc.diag.Span;
  */
 public final class Eb05SingleParameterFunction implements BlockCheck {
     @Override
-    public int number() {
-        return 5;
-    }
-
-    @Override
     public void run(BlockDraft d, Diagnostics out) {
         boolean rapidAlong = d.motionG == 0 && (d.oneShot == 28 || d.oneShot == 29 || d.oneShot == 53);
         if (d.oneShot != BlockDraft.NONE && d.motionG != BlockDraft.NONE && !rapidAlong) {

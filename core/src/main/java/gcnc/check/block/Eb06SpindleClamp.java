@@ -10,11 +10,6 @@ import gcnc.ir.Letter;
  */
 public final class Eb06SpindleClamp implements BlockCheck {
     @Override
-    public int number() {
-        return 6;
-    }
-
-    @Override
     public void run(BlockDraft d, Diagnostics out) {
         if (d.function == 50 && d.has(Letter.S)) {
             d.next.rpmClamp = d.value(Letter.S);

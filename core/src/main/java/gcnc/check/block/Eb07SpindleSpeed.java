@@ -23,11 +23,6 @@ import gcnc.ir.Word;
  */
 public final class Eb07SpindleSpeed implements BlockCheck {
     @Override
-    public int number() {
-        return 7;
-    }
-
-    @Override
     public boolean prerequisite() {
         return true;
     }

@@ -29,11 +29,6 @@ import gcnc.diag.Diagnostics;
  */
 public final class Eb08CuttingPrerequisites implements BlockCheck {
     @Override
-    public int number() {
-        return 8;
-    }
-
-    @Override
     public boolean prerequisite() {
         return true;
     }
