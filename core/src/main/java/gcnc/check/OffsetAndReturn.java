@@ -15,16 +15,10 @@ import java.util.Optional;
  * read the block and return what they found; here the block of its other words is checked and
  * committed, then the work offset is written (G10) or the two rapids are checked and committed
  * (G30), each through the checker.
+ *
+ * @param coordinates the checker's coordinate frames, where a G10 L2 writes its work offset
  */
-final class OffsetAndReturn {
-    private final CycleHost host;
-    /** The checker's coordinate frames, where a G10 L2 writes its work offset. */
-    private final Coordinates coordinates;
-
-    OffsetAndReturn(CycleHost host, Coordinates coordinates) {
-        this.host = host;
-        this.coordinates = coordinates;
-    }
+record OffsetAndReturn(CycleHost host, Coordinates coordinates) {
 
     /**
      * G10 L2: the block of its other words checked and committed, then the offset it writes

@@ -16,8 +16,12 @@ import java.util.List;
  * the checker checks them like any other block. Every word stands where the cycle's G word does:
  * a finding in a pass lands on the cycle's line. Numbers always carry a decimal point (the
  * no-point rule never applies) and six decimals, a thousandth of the smallest increment.
+ *
+ * @param frame the cycle block's program frame
+ * @param line  the cycle block's line, every written block's
+ * @param at    where the cycle's G word stands, every written word's place
  */
-public final class MoveWriter {
+public record MoveWriter(Frame frame, int line, Span at) {
     /**
      * The cycle block's program frame: its work zero (counts), counts per programmed unit of X, of
      * an I (a radius) and of Z, whether X/Z are incremental (G91), and the control's G00-G03 as
@@ -28,16 +32,6 @@ public final class MoveWriter {
         public Frame {
             motionCodes = List.copyOf(motionCodes);
         }
-    }
-
-    private final Frame frame;
-    private final int line;
-    private final Span at;
-
-    public MoveWriter(Frame frame, int line, Span at) {
-        this.frame = frame;
-        this.line = line;
-        this.at = at;
     }
 
     /** The block of {@code m}, made from {@code from} (where the tool is before it). */
