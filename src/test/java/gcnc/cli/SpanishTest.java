@@ -35,10 +35,10 @@ class SpanishTest {
 
     @Test
     void theLocaleChoosesWhenLangIsNotGiven() {
-        assertEquals(ErrorMessages.Lang.ES, CommonOptions.fromEnvironment(Map.of("LANG", "es_MX.UTF-8")));
-        assertEquals(ErrorMessages.Lang.EN, CommonOptions.fromEnvironment(Map.of("LC_ALL", "C", "LANG", "es_ES")));
-        assertEquals(ErrorMessages.Lang.ES, CommonOptions.fromEnvironment(Map.of("LC_ALL", "es_ES.UTF-8")));
-        assertEquals(ErrorMessages.Lang.EN, CommonOptions.fromEnvironment(Map.of()));
+        assertEquals(ErrorMessages.Lang.ES, LanguageOption.fromEnvironment(Map.of("LANG", "es_MX.UTF-8")));
+        assertEquals(ErrorMessages.Lang.EN, LanguageOption.fromEnvironment(Map.of("LC_ALL", "C", "LANG", "es_ES")));
+        assertEquals(ErrorMessages.Lang.ES, LanguageOption.fromEnvironment(Map.of("LC_ALL", "es_ES.UTF-8")));
+        assertEquals(ErrorMessages.Lang.EN, LanguageOption.fromEnvironment(Map.of()));
     }
 
     @Test

@@ -7,6 +7,7 @@ import gcnc.tables.TableException;
 import gcnc.tables.TableSource;
 import gcnc.tables.Tables;
 import java.nio.file.Path;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -30,10 +31,8 @@ final class CommonOptions {
             description = "The tools' wear offsets: a file of wear.N = X, Z lines (default: the profile's offsets.file, if any).")
     Path offsets;
 
-    @Option(names = "--lang", paramLabel = "en|es",
-            description = "Language of the messages and summaries: en or es (default: es when LANG or LC_ALL"
-                    + " starts with es, else en).")
-    ErrorMessages.Lang lang;
+    @Mixin
+    LanguageOption lang;
 
     /** The command these options belong to: its root holds a {@code --lang} given before the command. */
     @Spec(Spec.Target.MIXEE)
@@ -93,26 +92,6 @@ final class CommonOptions {
 
     /** This command's {@code --lang}, else one before the command ({@code gcnc --lang es check}), else the locale's. */
     ErrorMessages.Lang language() {
-        if (lang != null) {
-            return lang;
-        }
-        if (mixee != null && mixee.root().userObject() instanceof Main m && m.lang != null) {
-            return m.lang;
-        }
-        if (mixee != null && mixee.root().userObject() instanceof Main m) {
-            return fromEnvironment(m.streams().env()); // the client's environment, under the resident checker
-        }
-        return fromEnvironment(System.getenv());
-    }
-
-    /** Spanish when the user's locale is Spanish (LC_ALL, then LANG, as POSIX orders them), else English. */
-    static ErrorMessages.Lang fromEnvironment(java.util.Map<String, String> env) {
-        for (String name : new String[] {"LC_ALL", "LC_MESSAGES", "LANG"}) {
-            String v = env.get(name);
-            if (v != null && !v.isEmpty()) {
-                return v.startsWith("es") ? ErrorMessages.Lang.ES : ErrorMessages.Lang.EN;
-            }
-        }
-        return ErrorMessages.Lang.EN;
+        return lang.language(mixee);
     }
 }

@@ -62,11 +62,8 @@ final class CompileCommand extends RunCommand {
         boolean toStdout = output != null && SourceFiles.isStdin(output);
         // -o /dev/stdout (or the file stdout goes to) is standard output too: the DMC alone on it
         boolean stdoutTaken = output != null && (SourceFiles.isStdin(output) || streams().isStandardOutput().test(output));
-        refuseUsage(reporter.format(), stdoutTaken);
+        refuseUsage(reporter, stdoutTaken);
         Optional<SimOptions> sim = simulation(profile, err, reporter.phrases());
-        if (stdoutTaken) {
-            reporter.stdoutTaken();
-        }
         Path target = output != null ? output : DmcOutputs.defaultOutput(file);
         String name = SourceFiles.display(file);
         String targetName = toStdout ? "<stdout>" : target.toString();
@@ -135,11 +132,10 @@ final class CompileCommand extends RunCommand {
         return Optional.of(f);
     }
 
-    /** Combinations that cannot work, refused before anything is read or written. */
-    private void refuseUsage(Reporter.Format format, boolean toStdout) {
-        if (toStdout && format != Reporter.Format.GNU) {
-            throw new ParameterException(spec.commandLine(), "-o " + output + " and --format "
-                    + format.name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name an output file");
+    /** Combinations that cannot work, refused before anything is read or written; standard output taken by -o. */
+    private void refuseUsage(Reporter reporter, boolean stdoutTaken) {
+        if (stdoutTaken) {
+            takeStandardOutput("-o " + output, reporter);
         }
         if (output == null && SourceFiles.isStdin(file)) {
             throw new ParameterException(spec.commandLine(),

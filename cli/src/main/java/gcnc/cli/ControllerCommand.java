@@ -9,9 +9,9 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CountDownLatch;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -64,15 +64,12 @@ final class ControllerCommand extends StreamsCommand {
                     + " the controller, which thread passes are geared to (default: ${DEFAULT-VALUE}, the haas profile's).")
     String spindle;
 
-    @Option(names = "--lang", paramLabel = "en|es",
-            description = "Language of the messages: en or es (default: es when LANG or LC_ALL starts with es, else en).")
-    ErrorMessages.Lang lang;
+    @Mixin
+    LanguageOption lang;
 
     @Override
     Integer call(PrintWriter out, PrintWriter err) {
-        ErrorMessages.Lang language = lang != null ? lang
-                : spec.root().userObject() instanceof Main m && m.lang != null ? m.lang
-                : CommonOptions.fromEnvironment(System.getenv());
+        ErrorMessages.Lang language = lang.language(spec);
         Phrases say = new Phrases(language);
         if (!virtual || link == null) {
             err.println("gcnc: " + say.get("controller.what"));
@@ -125,19 +122,11 @@ final class ControllerCommand extends StreamsCommand {
                     SourceFiles.reason(e, language)));
             return ExitCode.USAGE;
         }
-        CountDownLatch stopped = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            vc.close();
-            stopped.countDown();
-        }));
-        out.println(say.get("controller.serving", m.revision, link.tcp != null ? "127.0.0.1:" + vc.port() : link.pty,
-                speed, parsed.isEmpty() ? "-" : parsed.toString()));
-        out.flush();
-        try {
-            stopped.await();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        serveUntilStopped(vc::close, () -> {
+            out.println(say.get("controller.serving", m.revision, link.tcp != null ? "127.0.0.1:" + vc.port() : link.pty,
+                    speed, parsed.isEmpty() ? "-" : parsed.toString()));
+            out.flush();
+        });
         return ExitCode.CLEAN;
     }
 }

@@ -1,6 +1,10 @@
 package gcnc.cli;
 
+import gcnc.diag.Code;
+import gcnc.send.Link;
 import gcnc.send.RunFault;
+import gcnc.send.TcpLink;
+import java.io.IOException;
 import picocli.CommandLine.Option;
 
 /**
@@ -8,8 +12,8 @@ import picocli.CommandLine.Option;
  * device ({@code --port DEV}, opened at {@code --baud N} with or without the hardware handshake) or
  * Ethernet ({@code --tcp HOST[:PORT]}), exactly one of them ({@link Where}, the commands' argument
  * group: picocli lists a group's options twice in the help when a mixin holds it). This mixin holds the
- * serial settings. The descriptions' Spanish are the commands' own keys (Help_es.properties:
- * {@code gcnc.run.baud}, {@code gcnc.controller.probe.baud}).
+ * serial settings and how long a reply may take. The descriptions' Spanish are the commands' own keys
+ * (Help_es.properties: {@code gcnc.run.baud}, {@code gcnc.controller.probe.baud}).
  */
 final class ControllerTarget {
     /** The one way to the controller: {@code @ArgGroup(exclusive = true, multiplicity = "1")} in each command. */
@@ -28,8 +32,23 @@ final class ControllerTarget {
             description = "Serial flow control (default: ${DEFAULT-VALUE}, as Galil's own library).")
     String handshake;
 
-    /** The serial {@code device} opened at {@code --baud} with {@code --handshake}. */
-    SerialLink open(String device) throws RunFault {
-        return SerialLink.open(device, baud, !handshake.equals("none"));
+    @Option(names = "--timeout", paramLabel = "MS", defaultValue = "2000",
+            description = "How long to wait for each reply (default: ${DEFAULT-VALUE} ms).")
+    int timeoutMs;
+
+    /**
+     * The link {@code where} names: the serial device opened at {@code --baud} with {@code --handshake},
+     * or Ethernet; E817 when the address cannot be reached.
+     */
+    Link open(Where where) throws RunFault {
+        if (where.port != null) {
+            return SerialLink.open(where.port, baud, !handshake.equals("none"));
+        }
+        try {
+            return TcpLink.open(where.tcp, timeoutMs);
+        } catch (IOException e) {
+            throw new RunFault(Code.E817_NO_CONNECTION, 0, false, where.tcp,
+                    e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
+        }
     }
 }

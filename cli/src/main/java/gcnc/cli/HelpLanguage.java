@@ -18,7 +18,7 @@ import picocli.CommandLine;
  * {@code Help_es.properties}, keys qualified by the command ({@code gcnc.check.usage.description},
  * {@code gcnc.compile.output}) or not (picocli's own headings, options every command shares). The
  * language must be known before picocli builds the command model, so it is read from the raw arguments
- * ({@code --lang es}, {@code --lang=es}), else from the environment as {@link CommonOptions#fromEnvironment}
+ * ({@code --lang es}, {@code --lang=es}), else from the environment as {@link LanguageOption#fromEnvironment}
  * reads it. Picocli's usage errors are English sentences; {@link #usageError} puts the common ones into
  * Spanish.
  */
@@ -49,7 +49,7 @@ final class HelpLanguage {
                 }
             }
         }
-        return CommonOptions.fromEnvironment(env);
+        return LanguageOption.fromEnvironment(env);
     }
 
     /**
@@ -125,11 +125,8 @@ final class HelpLanguage {
                         m -> "indique un comando: check, compile, simulate, tables, explain, machines o completion"),
                 new Rule("- names standard input, which can be read once: give it once",
                         m -> "- es la entrada estándar, que solo se puede leer una vez: indíquela una sola vez"),
-                new Rule("-o - and --format (\\w+) would both write standard output: name an output file",
-                        m -> "-o - y --format " + m.group(1) + " escribirían los dos en la salida estándar:"
-                                + " indique un archivo de salida"),
-                new Rule("--svg - and --format (\\w+) would both write standard output: name a file",
-                        m -> "--svg - y --format " + m.group(1) + " escribirían los dos en la salida estándar:"
+                new Rule("(.+) and --format (\\w+) would both write standard output: name a file",
+                        m -> m.group(1) + " y --format " + m.group(2) + " escribirían los dos en la salida estándar:"
                                 + " indique un archivo"),
                 new Rule("the program comes from standard input: name the output with -o \\(- for standard output\\)",
                         m -> "el programa llega por la entrada estándar: indique la salida con -o (- para la salida estándar)"),

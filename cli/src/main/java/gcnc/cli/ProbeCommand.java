@@ -9,7 +9,6 @@ import gcnc.send.LinkFault;
 import gcnc.send.Probe;
 import gcnc.send.ProbeReport;
 import gcnc.send.RunFault;
-import gcnc.send.TcpLink;
 import gcnc.tables.TableException;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -45,13 +44,10 @@ final class ProbeCommand extends StreamsCommand {
     ControllerTarget.Where target;
 
     @Mixin
-    ControllerTarget serial;
+    ControllerTarget connection;
 
     @Option(names = "--report", paramLabel = "FILE", required = true, description = "Where to write the report (JSON).")
     Path report;
-
-    @Option(names = "--timeout", paramLabel = "MS", defaultValue = "2000", description = "How long to wait for each reply.")
-    int timeoutMs;
 
     @Option(names = "--allow-motion", description = "Also run the motion test: three VP segments of --distance counts along"
             + " the profile's first plane axis and back, reading _CSS and _AVS; asks for the word '" + WORD + "' first.")
@@ -99,16 +95,13 @@ final class ProbeCommand extends StreamsCommand {
         }
         gcnc.send.Link link;
         try {
-            link = target.port != null ? serial.open(target.port)
-                    : TcpLink.open(target.tcp, timeoutMs);
+            link = connection.open(target);
         } catch (RunFault f) {
             return fault(err, messages, f.code(), f.args().toArray());
-        } catch (IOException e) {
-            return fault(err, messages, Code.E817_NO_CONNECTION, target.tcp, String.valueOf(e.getMessage()));
         }
         ProbeReport r;
         Probe probe;
-        try (GalilClient client = new GalilClient(link, timeoutMs, m -> out.println("controller: " + m))) {
+        try (GalilClient client = new GalilClient(link, connection.timeoutMs, m -> out.println("controller: " + m))) {
             probe = new Probe(client, model);
             try {
                 r = probe.run(motion, new char[] {first, second});

@@ -2,9 +2,11 @@ package gcnc.cli;
 
 import gcnc.tables.TableException;
 import java.io.PrintWriter;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
@@ -66,6 +68,19 @@ abstract class RunCommand implements Callable<Integer> {
     /** Standard input and output as bytes ({@code -} as a program, {@code -o -}). */
     Main.Streams streams() {
         return ((Main) spec.root().userObject()).streams();
+    }
+
+    /**
+     * An output the user sent to standard output ({@code given}: the option as written, {@code -o -}):
+     * refused beside a JSON or SARIF report, which standard output carries too; else the summaries go
+     * to standard error from here on, leaving standard output to that output alone.
+     */
+    void takeStandardOutput(String given, Reporter reporter) {
+        if (reporter.format() != Reporter.Format.GNU) {
+            throw new ParameterException(spec.commandLine(), given + " and --format "
+                    + reporter.format().name().toLowerCase(Locale.ROOT) + " would both write standard output: name a file");
+        }
+        reporter.stdoutTaken();
     }
 
     /** The command's work; returns the exit status (see {@link ExitCode}). */

@@ -20,7 +20,6 @@ import gcnc.send.ResumePoint;
 import gcnc.send.RunFault;
 import gcnc.send.Sender;
 import gcnc.send.StreamForm;
-import gcnc.send.TcpLink;
 import gcnc.sim.SimOptions;
 import gcnc.tables.TableException;
 import java.io.BufferedReader;
@@ -79,7 +78,7 @@ final class SendCommand implements Callable<Integer> {
     ControllerTarget.Where target;
 
     @Mixin
-    ControllerTarget serial;
+    ControllerTarget connection;
 
     @Option(names = "--step", description = "One G-code block at a time: each runs on Enter (the thesis's Trace).")
     boolean step;
@@ -110,9 +109,6 @@ final class SendCommand implements Callable<Integer> {
     @Option(names = "--format", paramLabel = "text|json", defaultValue = "text",
             description = "text (default): a status line; json: one event object per line on standard output (docs/run.md).")
     String format;
-
-    @Option(names = "--timeout", paramLabel = "MS", defaultValue = "2000", description = "How long to wait for each reply (default: ${DEFAULT-VALUE} ms).")
-    int timeoutMs;
 
     @Option(names = "--poll", paramLabel = "MS", defaultValue = "100", description = "How often to ask where the program is (default: ${DEFAULT-VALUE} ms).")
     int pollMs;
@@ -232,8 +228,7 @@ final class SendCommand implements Callable<Integer> {
         // 4. the link
         Link link;
         try {
-            link = target.port != null ? serial.open(target.port)
-                    : openTcp(target.tcp);
+            link = connection.open(target);
         } catch (RunFault f) {
             events.accept(new Event.Finding(f.code().id(), "error", 0, messages.render(f.code(), f.args())));
             return Sender.CONNECTION;
@@ -247,7 +242,7 @@ final class SendCommand implements Callable<Integer> {
                         : new ProgramForm(pollMs, Sender.tolerance(setup.profile()), stallSeconds), this::resumeCommand);
         Keys keys = new Keys(operator, ((Main) spec.root().userObject()).streams().in());
         try (keys) {
-            return sender.run(link, timeoutMs);
+            return sender.run(link, connection.timeoutMs);
         }
     }
 
@@ -289,15 +284,6 @@ final class SendCommand implements Callable<Integer> {
         }
         return bad.isEmpty() ? java.util.Optional.empty() : java.util.Optional.of(new RunFault(Code.E832_PROBE_CONTRADICTS,
                 0, false, probeReport.toString(), String.join("; ", bad)));
-    }
-
-    private Link openTcp(String hostPort) throws RunFault {
-        try {
-            return TcpLink.open(hostPort, timeoutMs);
-        } catch (IOException e) {
-            throw new RunFault(Code.E817_NO_CONNECTION, 0, false, hostPort,
-                    e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
-        }
     }
 
     /** The command line that resumes at {@code at}: this one with {@code --resume-at} set (and no --dry-run). */

@@ -59,12 +59,8 @@ final class SheetCommand extends RunCommand {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "sheet reads a program file, not standard input");
         }
         boolean toStdout = output != null && SourceFiles.isStdin(output);
-        if (toStdout && reporter.format() != Reporter.Format.GNU) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "-o - and --format "
-                    + reporter.format().name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name a file");
-        }
         if (toStdout) {
-            reporter.stdoutTaken();
+            takeStandardOutput("-o -", reporter);
         }
         Path target = output != null ? output : withExtension(file, ".html");
         if (!toStdout) {

@@ -57,12 +57,8 @@ final class SimulateCommand extends RunCommand {
         SimOptions options = stock.options(setup.profile(), file, setup.reporter().phrases(), spec, err::println);
         Reporter reporter = setup.reporter();
         boolean svgToStdout = svg != null && SourceFiles.isStdin(svg);
-        if (svgToStdout && reporter.format() != Reporter.Format.GNU) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--svg - and --format "
-                    + reporter.format().name().toLowerCase(java.util.Locale.ROOT) + " would both write standard output: name a file");
-        }
         if (svgToStdout) {
-            reporter.stdoutTaken();
+            takeStandardOutput("--svg -", reporter);
         }
         if (svg != null) {
             options = options.withPath();

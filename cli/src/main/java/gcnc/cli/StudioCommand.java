@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.CountDownLatch;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -64,22 +63,14 @@ final class StudioCommand extends StreamsCommand {
             err.println("gcnc: " + say.get("studio.cannot_start", port, SourceFiles.reason(e, common.language())));
             return ExitCode.USAGE;
         }
-        CountDownLatch stopped = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            studio.close();
-            stopped.countDown();
-        }));
-        out.println(say.get("studio.serving", studio.root(), setup.profile().name()));
-        out.println(studio.url());
-        out.flush();
-        if (open) {
-            openInBrowser(studio.url().toString(), err, say);
-        }
-        try {
-            stopped.await();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        serveUntilStopped(studio::close, () -> {
+            out.println(say.get("studio.serving", studio.root(), setup.profile().name()));
+            out.println(studio.url());
+            out.flush();
+            if (open) {
+                openInBrowser(studio.url().toString(), err, say);
+            }
+        });
         return ExitCode.CLEAN;
     }
 

@@ -18,14 +18,7 @@ import java.util.regex.Pattern;
  * axes' ({@code IT}, {@code VR}, {@code CS}, {@code DP}, {@code TP}, {@code OB}); what the virtual controller
  * does not model is {@code ?} with TC 1.
  */
-final class OwnCommands {
-    private final VirtualGalil c;
-    private final ThreadFlow flow;
-
-    OwnCommands(VirtualGalil c, ThreadFlow flow) {
-        this.c = c;
-        this.flow = flow;
-    }
+record OwnCommands(VirtualGalil c, ThreadFlow flow) {
 
     /** Accepted and stored nowhere: servo tuning, soft limits (not modelled; docs say so). IT: {@link #smooth}. */
     private static final java.util.Set<String> NO_EFFECT = java.util.Set.of("KP", "KI", "KD", "ER", "BL", "FL", "TL",

@@ -7,14 +7,7 @@ import java.util.List;
  * loop that runs a thread's statements until it waits on a trippoint (AM, WT, AI) or its budget of
  * statements for this millisecond is spent.
  */
-final class ThreadFlow {
-    private final VirtualGalil c;
-    private final Statements statements;
-
-    ThreadFlow(VirtualGalil c, Statements statements) {
-        this.c = c;
-        this.statements = statements;
-    }
+record ThreadFlow(VirtualGalil c, Statements statements) {
 
     private double eval(String e) throws GalilException {
         return Expressions.eval(e, c);

@@ -16,12 +16,7 @@ import java.util.Optional;
  * committed, then the work offset is written (G10) or the two rapids are checked and committed
  * (G30), each through the checker.
  */
-final class OffsetAndReturn {
-    private final CycleHost host;
-
-    OffsetAndReturn(CycleHost host) {
-        this.host = host;
-    }
+record OffsetAndReturn(CycleHost host) {
 
     /**
      * G10 L2: the block of its other words checked and committed, then the offset it writes

@@ -9,14 +9,7 @@ import java.util.Locale;
  * {@code X40.000 Z2.000 (Galil counts 147589,23634)}. Without a frame (the program could not be
  * read again) only the counts.
  */
-final class PositionText {
-    private final DmcProgram program;
-    private final BlockTable blocks;
-
-    PositionText(DmcProgram program, BlockTable blocks) {
-        this.program = program;
-        this.blocks = blocks;
-    }
+record PositionText(DmcProgram program, BlockTable blocks) {
 
     /** {@code galil} (plane coordinates) in the terms of G-code line {@code line}, then its counts. */
     String at(int line, double[] galil) {

@@ -13,23 +13,13 @@ import java.util.List;
  * axes ({@code TP}) until the thread ends; then {@code _TC} tells an end from an error stop. In step
  * mode (the thesis's Trace) each G-code block's lines are downloaded and run as a program of their
  * own, after Enter. The program must fit the controller's program memory (checked in pre-flight).
+ *
+ * @param pollMs       how often (ms) the controller is asked where the program is
+ * @param tolerance    how far (counts) the axes may end from the program's end point
+ * @param stallSeconds how long the axes may stand still inside a vector sequence (no feed hold)
+ *                     before the run is stopped as stalled
  */
-public final class ProgramForm implements Delivery {
-    private final int pollMs;
-    private final double tolerance;
-    private final double stallSeconds;
-
-    /**
-     * @param tolerance    how far (counts) the axes may end from the program's end point
-     * @param stallSeconds how long the axes may stand still inside a vector sequence (no feed hold)
-     *                     before the run is stopped as stalled
-     */
-    public ProgramForm(int pollMs, double tolerance, double stallSeconds) {
-        this.pollMs = pollMs;
-        this.tolerance = tolerance;
-        this.stallSeconds = stallSeconds;
-    }
-
+public record ProgramForm(int pollMs, double tolerance, double stallSeconds) implements Delivery {
     @Override
     public String name() {
         return "program";

@@ -27,14 +27,7 @@ import java.util.TreeSet;
  * does: this class only reads the form and answers JSON. A saved wear is in force from then on
  * ({@link Api} replaces its session), so the next arm's pre-flight names it.
  */
-final class TestCuts {
-    private final Workspace workspace;
-    private final Messages messages;
-
-    TestCuts(Workspace workspace, Messages messages) {
-        this.workspace = workspace;
-        this.messages = messages;
-    }
+record TestCuts(Workspace workspace, Messages messages) {
 
     /**
      * POST /api/wear {name}: the tool offsets the saved program selects, each with its wear in force,

@@ -15,10 +15,13 @@ import java.util.List;
  * cycle block's program coordinates (X a diameter where the machine programs diameters), so that
  * the checker checks them like any other block. Every word stands where the cycle's G word does:
  * a finding in a pass lands on the cycle's line. Numbers always carry a decimal point (the
- * no-point rule never applies) and six decimals, a thousandth of the smallest increment. The
- * blocks are at {@code line}, their words at {@code at} (the cycle's G word), in {@code frame}.
+ * no-point rule never applies) and six decimals, a thousandth of the smallest increment.
+ *
+ * @param frame the cycle block's program frame
+ * @param line  the cycle block's line, every written block's
+ * @param at    where the cycle's G word stands, every written word's place
  */
-public record MoveWriter(MoveWriter.Frame frame, int line, Span at) {
+public record MoveWriter(Frame frame, int line, Span at) {
     /**
      * The cycle block's program frame: its work zero (counts), counts per programmed unit of X, of
      * an I (a radius) and of Z, whether X/Z are incremental (G91), and the control's G00-G03 as
