@@ -315,7 +315,7 @@ public final class DmcProgram {
         return n;
     }
 
-    /** The variables the program assigns ({@code TOOL}, {@code gline}, {@code gsp}, a deadline's), sorted. */
+    /** The variables the program assigns ({@code TOOL}, {@code gline}, {@code gsp}, a thread's phase errors, a deadline's), sorted. */
     public List<String> variables() {
         java.util.Set<String> names = new java.util.TreeSet<>();
         for (Instruction i : instructions) {
@@ -334,12 +334,12 @@ public final class DmcProgram {
             case SET_VARIABLE -> ((Command.SetVariable) c).name();
             case SET_DEADLINE -> ((Command.SetDeadline) c).name();
             case SYNC_POINT -> ((Command.SyncPoint) c).variable();
+            case PHASE_ERROR -> ((Command.PhaseError) c).variable();
             case LABEL, SERVO_HERE, VECTOR_MODE, VECTOR_ACCELERATION, VECTOR_DECELERATION, STOCK, FEED_MARK,
                     SOURCE_MARK, REMARK, VECTOR_SPEED, VECTOR_POSITION, CIRCULAR_ARC, VECTOR_END, BEGIN_SEQUENCE,
                     AWAIT_SEQUENCE, AFTER_VECTOR, OFFSET, WAIT, REVOLVER, PASS_THROUGH_M, OUTPUT, GEAR_MASTER,
-                    WAIT_PAST, GEAR_RATIO, PHASE_ERROR, INCREMENT_POSITION, DEFINE_POSITION, POSITION_ABSOLUTE, BEGIN,
-                    AFTER_MOTION, END, ANALOG_OUT, AXIS_SETTING, SOFT_LIMIT, JUMP, CALL, MESSAGE, STOP, ABORT,
-                    CLEAR_STACK -> null;
+                    WAIT_PAST, GEAR_RATIO, INCREMENT_POSITION, DEFINE_POSITION, POSITION_ABSOLUTE, BEGIN, AFTER_MOTION, END,
+                    ANALOG_OUT, AXIS_SETTING, SOFT_LIMIT, JUMP, CALL, MESSAGE, STOP, ABORT, CLEAR_STACK -> null;
         };
     }
 
