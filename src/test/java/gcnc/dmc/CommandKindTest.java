@@ -2,13 +2,9 @@ package gcnc.dmc;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.lang.reflect.Constructor;
-import java.lang.reflect.RecordComponent;
-import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -16,60 +12,9 @@ import org.junit.jupiter.api.Test;
  * over the kind are exhaustive only if no two commands share a kind and none is left without one.
  */
 class CommandKindTest {
-    /** One command of each record {@link Command} permits, its components at plain values. */
-    private static List<Command> everyCommand() throws ReflectiveOperationException {
-        List<Command> all = new ArrayList<>();
-        for (Class<?> record : Command.class.getPermittedSubclasses()) {
-            RecordComponent[] parts = record.getRecordComponents();
-            Class<?>[] types = new Class<?>[parts.length];
-            Object[] values = new Object[parts.length];
-            for (int i = 0; i < parts.length; i++) {
-                types[i] = parts[i].getType();
-                values[i] = plain(types[i]);
-            }
-            Constructor<?> canonical = record.getDeclaredConstructor(types);
-            all.add((Command) canonical.newInstance(values));
-        }
-        return all;
-    }
-
-    private static Object plain(Class<?> type) {
-        if (type == int.class) {
-            return 1;
-        }
-        if (type == long.class) {
-            return 1L;
-        }
-        if (type == char.class) {
-            return 'X';
-        }
-        if (type == boolean.class) {
-            return true;
-        }
-        if (type == String.class) {
-            return "A";
-        }
-        if (type == Fixed.class) {
-            return Fixed.of(1);
-        }
-        if (type == Optional.class) {
-            return Optional.empty();
-        }
-        if (type == List.class) {
-            return List.of();
-        }
-        if (type == Command.Speeds.class) {
-            return Command.Speeds.NONE;
-        }
-        if (type == Command.Setting.class) {
-            return Command.Setting.KP;
-        }
-        return null; // a stop's reason, an operand: not read by the kind
-    }
-
     @Test
     void everyCommandHasItsOwnKind() throws ReflectiveOperationException {
-        List<Command> all = everyCommand();
+        List<Command> all = gcnc.SealedSamples.oneOfEach(Command.class);
         Map<CommandKind, String> seen = new EnumMap<>(CommandKind.class);
         for (Command c : all) {
             CommandKind k = CommandKind.of(c);
