@@ -34,38 +34,111 @@ final class StatusText implements EventSink {
 
     @Override
     public synchronized void accept(Event e) {
-        if (e instanceof Event.Finding f) {
-            endLine();
-            err.println(file + (f.line() > 0 ? ":" + f.line() + ":1" : "") + ": " + f.severity() + "[" + f.code() + "]: "
-                    + f.message());
-            err.flush();
-        } else if (e instanceof Event.Status s) {
-            if (quiet) {
-                return;
+        String text = switch (e.kind()) {
+            case FINDING -> {
+                Event.Finding f = (Event.Finding) e;
+                endLine();
+                err.println(file + (f.line() > 0 ? ":" + f.line() + ":1" : "") + ": " + f.severity() + "[" + f.code()
+                        + "]: " + f.message());
+                err.flush();
+                yield null;
             }
-            if (terminal) {
-                out.print("\r" + line(s) + "\u001b[K");
-                out.flush();
-                lineOpen = true;
-            } else if (blockChanged) {
-                out.println(line(s));
-                out.flush();
+            case STATUS -> {
+                status((Event.Status) e);
+                yield null;
             }
-            blockChanged = false;
-        } else if (e instanceof Event.Block) {
-            blockChanged = true;
-        } else if (e instanceof Event.Stopped s) {
-            endLine();
-            // a dropped link did not stop the controller: it may run on without the host (E851)
-            out.println(say.get("E851".equals(s.reason()) ? "run.link_dropped" : "run.stopped", block(s.completed()),
-                    block(s.executing())));
-            if (s.resume() != null) {
-                out.println(say.get("run.resume", s.resume()));
+            case BLOCK -> {
+                blockChanged = true;
+                yield null;
             }
-            out.flush();
-        } else if (!quiet) {
-            say(text(e));
+            case STOPPED -> {
+                stopped((Event.Stopped) e);
+                yield null;
+            }
+            case CONNECTED -> {
+                Event.Connected c = (Event.Connected) e;
+                yield say.get("run.connected", c.link(), c.controller());
+            }
+            case PREFLIGHT -> {
+                Event.Preflight p = (Event.Preflight) e;
+                yield say.get("run.preflight", p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(),
+                        p.labelsLeft(), p.variablesNeeded(),
+                        p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()), p.vectorSlots(),
+                        p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
+                        p.where());
+            }
+            case WEAR -> {
+                Event.Wear w = (Event.Wear) e;
+                yield say.get("run.wear", w.file(),
+                        gcnc.machine.ToolWear.describe(w.offset(), w.x(), w.z(), w.diameter(), w.unit()));
+            }
+            case DOWNLOADED -> {
+                Event.Downloaded d = (Event.Downloaded) e;
+                yield say.get("run.downloaded", d.lines());
+            }
+            case STARTED -> {
+                Event.Started s = (Event.Started) e;
+                yield say.get(s.dryRun() ? "run.started_dry" : "run.started", file,
+                        s.resumeAt() != null ? say.get("run.from_line", s.resumeAt()) : "", s.blocks(), s.lines(),
+                        clock(s.seconds()), say.get(s.step() ? "run.keys_step" : "run.keys"));
+            }
+            case STEP_WAIT -> {
+                Event.StepWait w = (Event.StepWait) e;
+                yield say.get("run.step_wait", w.line(), w.number() != null ? " (N" + w.number() + ")" : "");
+            }
+            case PROGRAM_STOP -> {
+                Event.ProgramStop p = (Event.ProgramStop) e;
+                yield say.get("run.program_stop", p.line(), p.number() != null ? " (N" + p.number() + ")" : "",
+                        p.comment().isEmpty() ? "" : ": " + p.comment());
+            }
+            case PROGRAM_STOP_CONTINUED -> {
+                Event.ProgramStopContinued p = (Event.ProgramStopContinued) e;
+                yield say.get(p.by().equals("operator") ? "run.program_stop_continued" : "run.program_stop_cycle_start",
+                        p.line());
+            }
+            case HOLD -> {
+                Event.Hold h = (Event.Hold) e;
+                yield h.held() ? say.get("run.hold") : say.get("run.feed", Math.round(h.override() * 100),
+                        String.format(Locale.ROOT, "%.2f", h.override()));
+            }
+            case MESSAGE -> {
+                Event.Message m = (Event.Message) e;
+                yield say.get("run.message", m.text());
+            }
+            case FINISHED -> {
+                Event.Finished f = (Event.Finished) e;
+                yield f.dryRun() ? say.get("run.finished_dry") : say.get("run.finished", clock(f.seconds()));
+            }
+        };
+        if (text != null && !quiet) {
+            say(text);
         }
+    }
+
+    private void status(Event.Status s) {
+        if (quiet) {
+            return;
+        }
+        if (terminal) {
+            out.print("\r" + line(s) + "\u001b[K");
+            out.flush();
+            lineOpen = true;
+        } else if (blockChanged) {
+            out.println(line(s));
+            out.flush();
+        }
+        blockChanged = false;
+    }
+
+    private void stopped(Event.Stopped s) {
+        endLine();
+        // a dropped link did not stop the controller: it may run on without the host (E851)
+        out.println(say.get("E851".equals(s.reason()) ? "run.link_dropped" : "run.stopped", block(s.completed()),
+                block(s.executing())));
+        if (s.resume() != null) {
+            out.println(say.get("run.resume", s.resume()));
+        }
+        out.flush();
     }
 
     private String block(int line) {
@@ -86,52 +159,6 @@ final class StatusText implements EventSink {
             out.println();
             lineOpen = false;
         }
-    }
-
-    private String text(Event e) {
-        if (e instanceof Event.Connected c) {
-            return say.get("run.connected", c.link(), c.controller());
-        }
-        if (e instanceof Event.Preflight p) {
-            return say.get("run.preflight", p.model(), p.programLinesNeeded(), p.programLines(), p.labelsNeeded(),
-                    p.labelsLeft(), p.variablesNeeded(), p.variablesLeft() < 0 ? "?" : Integer.toString(p.variablesLeft()),
-                    p.vectorSlots(), p.vectorSlotsNeeded(), p.limitSwitches().isEmpty() ? say.get("run.clear") : p.limitSwitches(),
-                    p.where());
-        }
-        if (e instanceof Event.Wear w) {
-            return say.get("run.wear", w.file(),
-                    gcnc.machine.ToolWear.describe(w.offset(), w.x(), w.z(), w.diameter(), w.unit()));
-        }
-        if (e instanceof Event.Downloaded d) {
-            return say.get("run.downloaded", d.lines());
-        }
-        if (e instanceof Event.Started s) {
-            return say.get(s.dryRun() ? "run.started_dry" : "run.started", file,
-                    s.resumeAt() != null ? say.get("run.from_line", s.resumeAt()) : "", s.blocks(), s.lines(), clock(s.seconds()),
-                    say.get(s.step() ? "run.keys_step" : "run.keys"));
-        }
-        if (e instanceof Event.StepWait w) {
-            return say.get("run.step_wait", w.line(), w.number() != null ? " (N" + w.number() + ")" : "");
-        }
-        if (e instanceof Event.ProgramStop p) {
-            return say.get("run.program_stop", p.line(), p.number() != null ? " (N" + p.number() + ")" : "",
-                    p.comment().isEmpty() ? "" : ": " + p.comment());
-        }
-        if (e instanceof Event.ProgramStopContinued p) {
-            return say.get(p.by().equals("operator") ? "run.program_stop_continued" : "run.program_stop_cycle_start",
-                    p.line());
-        }
-        if (e instanceof Event.Hold h) {
-            return h.held() ? say.get("run.hold")
-                    : say.get("run.feed", Math.round(h.override() * 100), String.format(Locale.ROOT, "%.2f", h.override()));
-        }
-        if (e instanceof Event.Message m) {
-            return say.get("run.message", m.text());
-        }
-        if (e instanceof Event.Finished f) {
-            return f.dryRun() ? say.get("run.finished_dry") : say.get("run.finished", clock(f.seconds()));
-        }
-        return null;
     }
 
     /** The status line: block, position in program coordinates, feed, spindle, progress, time left. */

@@ -24,18 +24,32 @@ import java.util.List;
 final class MacroLine extends MacroExpression {
     /** What a line comes to. */
     sealed interface Outcome permits Words, Done, Jump, Loop, EndLoop {
+        /** Which outcome it is, for a switch over every one: each record names its own. */
+        Kind kind();
+
+        enum Kind { WORDS, DONE, JUMP, LOOP, END_LOOP }
     }
 
     /** Words for the checker, their values worked out; {@code malformed}: the words before an error (reported). */
     record Words(List<Word> words, boolean malformed, int blockDelete) implements Outcome {
+        public Kind kind() {
+            return Kind.WORDS;
+        }
     }
 
     /** Nothing to hand on: an assignment, an IF that does not hold, or an error already reported. */
     record Done() implements Outcome {
+        public Kind kind() {
+            return Kind.DONE;
+        }
     }
 
     /** GOTO, or IF [..] GOTO: go to the block labelled N{@code label} when {@code taken} (the IF holds). */
     record Jump(long label, boolean taken, Span at, String written) implements Outcome {
+        public Kind kind() {
+            return Kind.JUMP;
+        }
+
         /** The statement as messages show it. */
         String text() {
             return MacroCursor.clean(written);
@@ -44,6 +58,10 @@ final class MacroLine extends MacroExpression {
 
     /** WHILE [..] DO id: whether the condition holds. */
     record Loop(boolean holds, int id, Span at, String written) implements Outcome {
+        public Kind kind() {
+            return Kind.LOOP;
+        }
+
         String text() {
             return MacroCursor.clean(written);
         }
@@ -51,6 +69,10 @@ final class MacroLine extends MacroExpression {
 
     /** END id: back to the WHILE of loop id. */
     record EndLoop(int id, Span at, String written) implements Outcome {
+        public Kind kind() {
+            return Kind.END_LOOP;
+        }
+
         String text() {
             return MacroCursor.clean(written);
         }

@@ -231,25 +231,34 @@ public final class ProgramFlow implements BlockSource {
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
     private RawBlock macro(RawBlock b, Frame f, int at) throws IOException {
         MacroLine.Outcome o = MacroLine.run(b, vars, diags, control.blockDelete());
-        if (o instanceof MacroLine.Words w) {
-            List<Word> words = w.words();
-            return new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(), 0,
-                    null, 0, b.origin());
-        }
-        if (spent) {
+        if (spent && o.kind() != MacroLine.Outcome.Kind.WORDS) {
             return null; // jumps are no longer followed: the program runs on to its end
         }
-        if (o instanceof MacroLine.Jump j) {
-            afterEnd.name(j.label());
-            if (j.taken()) {
-                jumps.goTo(f, j, at);
+        return switch (o.kind()) {
+            case WORDS -> {
+                MacroLine.Words w = (MacroLine.Words) o;
+                List<Word> words = w.words();
+                yield new RawBlock(b.line(), words, words.get(words.size() - 1).span(), w.malformed(), w.blockDelete(),
+                        0, null, 0, b.origin());
             }
-        } else if (o instanceof MacroLine.Loop l) {
-            jumps.loop(f, l, at);
-        } else if (o instanceof MacroLine.EndLoop e) {
-            jumps.endLoop(f, e);
-        }
-        return null;
+            case DONE -> null;
+            case JUMP -> {
+                MacroLine.Jump j = (MacroLine.Jump) o;
+                afterEnd.name(j.label());
+                if (j.taken()) {
+                    jumps.goTo(f, j, at);
+                }
+                yield null;
+            }
+            case LOOP -> {
+                jumps.loop(f, (MacroLine.Loop) o, at);
+                yield null;
+            }
+            case END_LOOP -> {
+                jumps.endLoop(f, (MacroLine.EndLoop) o);
+                yield null;
+            }
+        };
     }
 
     // ---- calls and returns ----

@@ -119,14 +119,22 @@ final class MachineCode {
         }
         emit.accept(new Command.SoftLimit(false, p1, low[0], p2, low[1]));
         emit.accept(new Command.SoftLimit(true, p1, high[0], p2, high[1]));
-        if (io.homing() instanceof MachineIo.Homing.Position pos) {
-            long home1 = GalilNumbers.round(frame.u(profile.home()));
-            long home2 = GalilNumbers.round(frame.v(profile.home()));
-            emit.accept(homeCheck(p1, home1, pos.toleranceMm()));
-            emit.accept(homeCheck(p2, home2, pos.toleranceMm()));
-        } else if (io.homing() instanceof MachineIo.Homing.Input in) {
-            emit.accept(new Command.Jump(NOHOME, Optional.of(new Command.Condition.InputIs(in.input(), false))));
-        }
+        List<Command> proof = io.homing().accept(new MachineIo.Homing.Visitor<>() {
+            public List<Command> position(MachineIo.Homing.Position pos) {
+                long home1 = GalilNumbers.round(frame.u(profile.home()));
+                long home2 = GalilNumbers.round(frame.v(profile.home()));
+                return List.of(homeCheck(p1, home1, pos.toleranceMm()), homeCheck(p2, home2, pos.toleranceMm()));
+            }
+
+            public List<Command> input(MachineIo.Homing.Input in) {
+                return List.of(new Command.Jump(NOHOME, Optional.of(new Command.Condition.InputIs(in.input(), false))));
+            }
+
+            public List<Command> none(MachineIo.Homing.None none) {
+                return List.of();
+            }
+        });
+        proof.forEach(emit);
     }
 
     private gcnc.machine.Axis axis(char letter) {
@@ -239,11 +247,22 @@ final class MachineCode {
             return;
         }
         waitForSpeed = false;
-        if (io.atSpeed() instanceof MachineIo.AtSpeed.Dwell d) {
-            out.emit(new Command.Wait(Math.max(MIN_WAIT_MS, GalilNumbers.round(d.seconds() * 1000))));
-        } else if (io.atSpeed() instanceof MachineIo.AtSpeed.Input) {
-            out.emit(new Command.Call(SPINDLE_WAIT));
-            spindleWaitUsed = true;
+        Command wait = io.atSpeed().accept(new MachineIo.AtSpeed.Visitor<>() {
+            public Command input(MachineIo.AtSpeed.Input in) {
+                spindleWaitUsed = true;
+                return new Command.Call(SPINDLE_WAIT);
+            }
+
+            public Command dwell(MachineIo.AtSpeed.Dwell d) {
+                return new Command.Wait(Math.max(MIN_WAIT_MS, GalilNumbers.round(d.seconds() * 1000)));
+            }
+
+            public Command none(MachineIo.AtSpeed.None none) {
+                return null; // no wait: the drive is fast, or the operator waits
+            }
+        });
+        if (wait != null) {
+            out.emit(wait);
         }
     }
 

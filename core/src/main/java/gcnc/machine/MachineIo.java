@@ -45,16 +45,36 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
 
     /** What "at speed" is. */
     public sealed interface AtSpeed {
+        <R> R accept(Visitor<R> v);
+
         /** An input from the spindle drive, on at speed; waited for with a timeout. */
         record Input(int input, double timeoutSeconds) implements AtSpeed {
+            public <R> R accept(Visitor<R> v) {
+                return v.input(this);
+            }
         }
 
         /** A dwell long enough for the spindle to run up. */
         record Dwell(double seconds) implements AtSpeed {
+            public <R> R accept(Visitor<R> v) {
+                return v.dwell(this);
+            }
         }
 
         /** No wait (the drive is fast, or the operator waits). */
         record None() implements AtSpeed {
+            public <R> R accept(Visitor<R> v) {
+                return v.none(this);
+            }
+        }
+
+        /** One method per kind of wait: a new one does not compile until each visitor handles it. */
+        interface Visitor<R> {
+            R input(Input a);
+
+            R dwell(Dwell a);
+
+            R none(None a);
         }
     }
 
@@ -72,16 +92,36 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
 
     /** What proves the machine is at home when the program starts. */
     public sealed interface Homing {
+        <R> R accept(Visitor<R> v);
+
         /** Both axes stand at the profile's {@code home} within the tolerance ({@code _TP}, after homing and DP). */
         record Position(double toleranceMm) implements Homing {
+            public <R> R accept(Visitor<R> v) {
+                return v.position(this);
+            }
         }
 
         /** An input that is on once the machine has been homed (a PLC's reference-done signal). */
         record Input(int input) implements Homing {
+            public <R> R accept(Visitor<R> v) {
+                return v.input(this);
+            }
         }
 
         /** No check (the operator's responsibility). */
         record None() implements Homing {
+            public <R> R accept(Visitor<R> v) {
+                return v.none(this);
+            }
+        }
+
+        /** One method per proof of home: a new one does not compile until each visitor handles it. */
+        interface Visitor<R> {
+            R position(Position h);
+
+            R input(Input h);
+
+            R none(None h);
         }
     }
 

@@ -315,22 +315,32 @@ public final class DmcProgram {
         return n;
     }
 
-    /** The variables the program assigns ({@code TOOL}, {@code gline}, {@code gsp}, a deadline's), sorted. */
+    /** The variables the program assigns ({@code TOOL}, {@code gline}, {@code gsp}, a thread's phase errors, a deadline's), sorted. */
     public List<String> variables() {
         java.util.Set<String> names = new java.util.TreeSet<>();
         for (Instruction i : instructions) {
-            Command c = i.command();
-            if (c instanceof Command.ToolNumber) {
-                names.add("TOOL");
-            } else if (c instanceof Command.SetVariable v) {
-                names.add(v.name());
-            } else if (c instanceof Command.SetDeadline d) {
-                names.add(d.name());
-            } else if (c instanceof Command.SyncPoint s) {
-                names.add(s.variable());
+            String name = assigned(i.command());
+            if (name != null) {
+                names.add(name);
             }
         }
         return List.copyOf(names);
+    }
+
+    /** The variable {@code c} assigns, or null: each command is decided, so that the preflight counts a new one's. */
+    private static String assigned(Command c) {
+        return switch (gcnc.dmc.CommandKind.of(c)) {
+            case TOOL_NUMBER -> "TOOL";
+            case SET_VARIABLE -> ((Command.SetVariable) c).name();
+            case SET_DEADLINE -> ((Command.SetDeadline) c).name();
+            case SYNC_POINT -> ((Command.SyncPoint) c).variable();
+            case PHASE_ERROR -> ((Command.PhaseError) c).variable();
+            case LABEL, SERVO_HERE, VECTOR_MODE, VECTOR_ACCELERATION, VECTOR_DECELERATION, STOCK, FEED_MARK,
+                    SOURCE_MARK, REMARK, VECTOR_SPEED, VECTOR_POSITION, CIRCULAR_ARC, VECTOR_END, BEGIN_SEQUENCE,
+                    AWAIT_SEQUENCE, AFTER_VECTOR, OFFSET, WAIT, REVOLVER, PASS_THROUGH_M, OUTPUT, GEAR_MASTER,
+                    WAIT_PAST, GEAR_RATIO, INCREMENT_POSITION, DEFINE_POSITION, POSITION_ABSOLUTE, BEGIN, AFTER_MOTION, END,
+                    ANALOG_OUT, AXIS_SETTING, SOFT_LIMIT, JUMP, CALL, MESSAGE, STOP, ABORT, CLEAR_STACK -> null;
+        };
     }
 
     /**
@@ -356,22 +366,23 @@ public final class DmcProgram {
         return m;
     }
 
-    /** Is {@code c} a segment of a vector sequence ({@code VP}, {@code CR})? */
     /**
      * Whether compiled line {@code index} belongs to the program stop's wait routine ({@code #PSTOP}
      * to its {@code EN}): thread 0 standing there waits for the operator.
      */
     public boolean inProgramStop(int index) {
         if (stopRoutine == null) {
+            // the routine's label, then the first EN after it
             int from = -1;
-            int to = -1;
-            for (int i = 0; i < size(); i++) {
-                Command c = command(i);
-                if (from < 0 && c instanceof Command.Label l && l.name().equals(gcnc.dmc.ProgramStop.LABEL)) {
+            for (int i = 0; i < size() && from < 0; i++) {
+                if (command(i) instanceof Command.Label l && l.name().equals(gcnc.dmc.ProgramStop.LABEL)) {
                     from = i;
-                } else if (from >= 0 && c instanceof Command.End) {
+                }
+            }
+            int to = -1;
+            for (int i = from + 1; from >= 0 && i < size() && to < 0; i++) {
+                if (command(i) instanceof Command.End) {
                     to = i;
-                    break;
                 }
             }
             stopRoutine = new int[] {from, to};
@@ -391,7 +402,8 @@ public final class DmcProgram {
 
     private int[] stopRoutine;
 
+    /** Is {@code c} a segment of a vector sequence ({@code VP}, {@code CR})? */
     public static boolean isSegment(Command c) {
-        return c instanceof Command.VectorPosition || c instanceof Command.CircularArc;
+        return gcnc.dmc.SequencePart.of(c) == gcnc.dmc.SequencePart.SEGMENT;
     }
 }

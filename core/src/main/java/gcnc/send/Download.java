@@ -3,6 +3,7 @@ package gcnc.send;
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.LinePacker;
+import gcnc.dmc.SequencePart;
 import gcnc.dmc.Source;
 import java.util.ArrayList;
 import java.util.List;
@@ -94,12 +95,11 @@ public record Download(List<Command> commands, int[] origin, List<String> lines,
     public Segments segmentsAt(int n, DmcProgram program) {
         int start = n;
         for (; start >= 0; start--) {
-            Command c = program.command(originOf(start));
-            if (c instanceof Command.VectorSpeed) {
+            SequencePart part = SequencePart.of(program.command(originOf(start)));
+            if (part == SequencePart.SPEED) {
                 break;
             }
-            if (start != n && (c instanceof Command.AwaitSequence || c instanceof Command.AfterMotion
-                    || c instanceof Command.End)) {
+            if (start != n && (part == SequencePart.AWAIT || part == SequencePart.OUTSIDE)) {
                 return null;
             }
         }
@@ -109,13 +109,13 @@ public record Download(List<Command> commands, int[] origin, List<String> lines,
         List<Integer> origins = new ArrayList<>();
         boolean begun = false;
         for (int j = start + 1; j < commands.size(); j++) {
-            Command c = program.command(originOf(j));
-            if (c instanceof Command.AwaitSequence) {
+            SequencePart part = SequencePart.of(program.command(originOf(j)));
+            if (part == SequencePart.AWAIT) {
                 break;
             }
-            if (DmcProgram.isSegment(c)) {
+            if (part == SequencePart.SEGMENT) {
                 origins.add(originOf(j));
-            } else if (c instanceof Command.BeginSequence && j <= n) {
+            } else if (part == SequencePart.BEGIN && j <= n) {
                 begun = true;
             }
         }

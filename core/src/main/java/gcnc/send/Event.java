@@ -7,8 +7,19 @@ package gcnc.send;
  * fields, in this order, after {@code "event"} (the record's name in kebab case).
  */
 public sealed interface Event {
+    /** Which event it is, for a switch over every one (Java 17 has no pattern switch): each record names its own. */
+    Kind kind();
+
+    enum Kind {
+        CONNECTED, PREFLIGHT, WEAR, DOWNLOADED, STARTED, STATUS, BLOCK, STEP_WAIT, PROGRAM_STOP,
+        PROGRAM_STOP_CONTINUED, HOLD, FINDING, MESSAGE, STOPPED, FINISHED
+    }
+
     /** The link is open and the controller said what it is ({@code ^R^V}). */
     record Connected(String link, String controller) implements Event {
+        public Kind kind() {
+            return Kind.CONNECTED;
+        }
     }
 
     /**
@@ -21,6 +32,9 @@ public sealed interface Event {
                      int variablesLeft, int variablesNeeded, int arraySpace, int vectorSlots, int vectorSlotsNeeded,
                      String pendingError, String limitSwitches, String motorsOff, double[] position, String where)
             implements Event {
+        public Kind kind() {
+            return Kind.PREFLIGHT;
+        }
     }
 
     /**
@@ -29,15 +43,24 @@ public sealed interface Event {
      * writes X: a diameter when {@code diameter}) and Z wear in {@code unit} (mm or counts).
      */
     record Wear(String file, int offset, double x, double z, String unit, boolean diameter) implements Event {
+        public Kind kind() {
+            return Kind.WEAR;
+        }
     }
 
     /** The program (or one step of it) is on the controller and was read back identical. */
     record Downloaded(int lines, boolean verified) implements Event {
+        public Kind kind() {
+            return Kind.DOWNLOADED;
+        }
     }
 
     /** The program starts; {@code lines} DMC lines from {@code blocks} G-code blocks, {@code seconds} estimated. */
     record Started(String form, int lines, int blocks, double seconds, boolean dryRun, boolean step,
                    String resumeAt) implements Event {
+        public Kind kind() {
+            return Kind.STARTED;
+        }
     }
 
     /**
@@ -50,14 +73,23 @@ public sealed interface Event {
     record Status(int dmcLine, int line, String number, String file, double[] program, double[] counts,
                   double feed, boolean perRev, boolean inch, double rpm, String spindle, double progress,
                   double secondsLeft, double override, boolean held) implements Event {
+        public Kind kind() {
+            return Kind.STATUS;
+        }
     }
 
     /** The executing G-code block changed: {@code completed} is the one before it (0: none yet). */
     record Block(int line, String number, int completed) implements Event {
+        public Kind kind() {
+            return Kind.BLOCK;
+        }
     }
 
     /** Step mode waits for Enter before running {@code line}. */
     record StepWait(int line, String number) implements Event {
+        public Kind kind() {
+            return Kind.STEP_WAIT;
+        }
     }
 
     /**
@@ -67,22 +99,37 @@ public sealed interface Event {
      * goes on ({@link ProgramStopContinued}).
      */
     record ProgramStop(int line, String number, String comment) implements Event {
+        public Kind kind() {
+            return Kind.PROGRAM_STOP;
+        }
     }
 
     /** The program stop at {@code line} ended: the program goes on with the next block ({@code by}: "operator" or "cycle-start"). */
     record ProgramStopContinued(int line, String by) implements Event {
+        public Kind kind() {
+            return Kind.PROGRAM_STOP_CONTINUED;
+        }
     }
 
     /** Feed hold on ({@code held}) or off; the override in force. */
     record Hold(boolean held, double override) implements Event {
+        public Kind kind() {
+            return Kind.HOLD;
+        }
     }
 
     /** A diagnostic of the run (a fault, a warning of the pre-flight), with its code and G-code line (0: none). */
     record Finding(String code, String severity, int line, String message) implements Event {
+        public Kind kind() {
+            return Kind.FINDING;
+        }
     }
 
     /** A message the controller sent on its own (MG of a program, its error text), or a note of the sender. */
     record Message(String text) implements Event {
+        public Kind kind() {
+            return Kind.MESSAGE;
+        }
     }
 
     /**
@@ -90,9 +137,15 @@ public sealed interface Event {
      * lines; 0 = none), and the command that resumes it (null when there is nothing to resume).
      */
     record Stopped(String reason, int completed, int executing, String resumeAt, String resume) implements Event {
+        public Kind kind() {
+            return Kind.STOPPED;
+        }
     }
 
     /** The program ran to its end (or the dry run did everything but motion). */
     record Finished(double seconds, boolean dryRun) implements Event {
+        public Kind kind() {
+            return Kind.FINISHED;
+        }
     }
 }

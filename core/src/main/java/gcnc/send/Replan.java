@@ -3,6 +3,7 @@ package gcnc.send;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.Fixed;
+import gcnc.dmc.SequencePart;
 import gcnc.dmc.StreamSplit;
 import java.util.ArrayList;
 import java.util.List;
@@ -76,34 +77,48 @@ final class Replan {
         Trip open = null;
         for (int i = s.first(); i <= s.last(); i++) {
             Command c = program.command(i);
-            if (i == s.first() && c instanceof Command.VectorSpeed || i == s.last()) {
-                open = null;
-            } else if (DmcProgram.isSegment(c)) {
-                given++;
-                open = null;
-            } else if (c instanceof Command.BeginSequence) {
-                bgs = i;
-                if (ve < 0) {
-                    fedFill = given;
-                }
-                open = null;
-            } else if (c instanceof Command.Call call && call.label().equals(StreamSplit.BUFFER_WAIT)) {
-                wait = i;
-                open = null;
-            } else if (c instanceof Command.VectorEnd) {
-                ve = i;
-                open = null;
-            } else if (c instanceof Command.AfterVector av) {
-                trip += av.counts();
-                open = new Trip(trip, i, new ArrayList<>());
-                trips.add(open);
-            } else if (open != null) {
-                open.sets().add(i);
-            } else if (i < firstKept) {
-                passed.add(i); // between segments already run: part of the state
-            } else {
-                loose.add(i);
+            SequencePart part = SequencePart.of(c);
+            if (i == s.first() && part == SequencePart.SPEED || i == s.last()) {
+                open = null; // the sequence's own VS and its AMS
+                continue;
             }
+            open = switch (part) {
+                case SEGMENT -> {
+                    given++;
+                    yield null;
+                }
+                case BEGIN -> {
+                    bgs = i;
+                    if (ve < 0) {
+                        fedFill = given;
+                    }
+                    yield null;
+                }
+                case ROOM_WAIT -> {
+                    wait = i;
+                    yield null;
+                }
+                case VECTOR_END -> {
+                    ve = i;
+                    yield null;
+                }
+                case TRIP -> {
+                    trip += ((Command.AfterVector) c).counts();
+                    Trip t = new Trip(trip, i, new ArrayList<>());
+                    trips.add(t);
+                    yield t;
+                }
+                case SPEED, AWAIT, OUTSIDE, NONE -> {
+                    if (open != null) {
+                        open.sets().add(i);
+                    } else if (i < firstKept) {
+                        passed.add(i); // between segments already run: part of the state
+                    } else {
+                        loose.add(i);
+                    }
+                    yield open;
+                }
+            };
         }
         int feedFrom = fedFill >= 0 ? fedFill : fill;
         if (segments.size() > feedFrom && wait < 0) {

@@ -242,14 +242,13 @@ public final class Resume {
         }
         for (int i : state) {
             Command c = program.command(i);
-            if (c instanceof Command.Offset || c instanceof Command.AnalogOut) {
-                of = i; // the spindle's speed: OF of its channel, or AO of an analog drive
-            } else if (c instanceof Command.ToolNumber) {
-                tool = i;
-            } else if (c instanceof Command.Output o) {
-                bits.put(o.bit(), i);
-            } else if (c instanceof Command.SetVariable v) {
-                variables.put(v.name(), i);
+            switch (Restore.of(c)) {
+                case SPINDLE -> of = i;
+                case TOOL -> tool = i;
+                case OUTPUT -> bits.put(((Command.Output) c).bit(), i);
+                case VARIABLE -> variables.put(((Command.SetVariable) c).name(), i);
+                case NOTHING -> {
+                }
             }
         }
         restored = new ArrayList<>();

@@ -30,38 +30,15 @@ final class ResumeState {
         List<String> out = new ArrayList<>();
         List<String> kept = new ArrayList<>();
         for (Command r : restored) {
-            if (r instanceof Command.ToolNumber t) {
-                Double held = read(c, "TOOL");
-                String need = "tool " + t.station();
-                if (held != null && Math.round(held) == t.station()) {
-                    kept.add(need);
-                } else {
-                    out.add(need + " (the controller held " + (held == null ? "no TOOL" : "TOOL=" + Math.round(held))
-                            + "): TOOL=" + t.station() + "; the turret must hold station " + t.station());
-                }
-            } else if (r instanceof Command.Output o) {
-                Double held = read(c, "@OUT[" + o.bit() + "]");
-                String need = "output " + o.bit() + names(profile, o.bit()) + (o.on() ? " on" : " off");
-                if (held != null && (held != 0) == o.on()) {
-                    kept.add(need);
-                } else {
-                    out.add(need + " (the controller held it " + (held == null ? "unknown" : held != 0 ? "on" : "off")
-                            + "): " + (o.on() ? "SB" : "CB") + o.bit());
-                }
-            } else if (r instanceof Command.Offset of) {
-                Double held = read(c, "_OF" + MachineLink.letter(of.channel()));
-                double v = of.volts().value();
-                String need = spindle(profile, v, at, line);
-                if (held != null && Math.abs(held - v) < 0.001) {
-                    kept.add(need);
-                } else {
-                    out.add(need + " (the controller held " + (held == null ? "an unknown speed"
-                            : String.format(Locale.ROOT, "%.4f V", held)) + ")");
-                }
-            } else if (r instanceof Command.AnalogOut ao) {
-                out.add(spindle(profile, ao.volts().value(), at, line) + " (AO" + ao.output() + " set; the controller"
-                        + " gives no operand to read it back)");
-            }
+            Said s = switch (Restore.of(r)) {
+                case TOOL -> tool(c, (Command.ToolNumber) r);
+                case OUTPUT -> output(c, profile, (Command.Output) r);
+                case SPINDLE -> r instanceof Command.Offset of ? offset(c, profile, of, at, line)
+                        : analog(profile, (Command.AnalogOut) r, at, line);
+                // the variables are gcnc's own (gline, gstop): restored, not said
+                case VARIABLE, NOTHING -> throw new IllegalArgumentException("a resume says nothing of " + r);
+            };
+            (s.kept() ? kept : out).add(s.text());
         }
         List<String> said = new ArrayList<>();
         for (String o : out) {
@@ -71,6 +48,47 @@ final class ResumeState {
             said.add("the controller already holds what line " + line + " needs: " + String.join(", ", kept));
         }
         return said;
+    }
+
+    /** One line of what the resume finds: the controller {@code kept} it as the program needs it, or it changes. */
+    private record Said(String text, boolean kept) {
+    }
+
+    private static Said tool(MachineLink c, Command.ToolNumber t) throws IOException {
+        Double held = read(c, "TOOL");
+        String need = "tool " + t.station();
+        if (held != null && Math.round(held) == t.station()) {
+            return new Said(need, true);
+        }
+        return new Said(need + " (the controller held " + (held == null ? "no TOOL" : "TOOL=" + Math.round(held))
+                + "): TOOL=" + t.station() + "; the turret must hold station " + t.station(), false);
+    }
+
+    private static Said output(MachineLink c, MachineProfile profile, Command.Output o) throws IOException {
+        Double held = read(c, "@OUT[" + o.bit() + "]");
+        String need = "output " + o.bit() + names(profile, o.bit()) + (o.on() ? " on" : " off");
+        if (held != null && (held != 0) == o.on()) {
+            return new Said(need, true);
+        }
+        return new Said(need + " (the controller held it " + (held == null ? "unknown" : held != 0 ? "on" : "off")
+                + "): " + (o.on() ? "SB" : "CB") + o.bit(), false);
+    }
+
+    private static Said offset(MachineLink c, MachineProfile profile, Command.Offset of, BlockTable.Block at, int line)
+            throws IOException {
+        Double held = read(c, "_OF" + MachineLink.letter(of.channel()));
+        double v = of.volts().value();
+        String need = spindle(profile, v, at, line);
+        if (held != null && Math.abs(held - v) < 0.001) {
+            return new Said(need, true);
+        }
+        return new Said(need + " (the controller held " + (held == null ? "an unknown speed"
+                : String.format(Locale.ROOT, "%.4f V", held)) + ")", false);
+    }
+
+    private static Said analog(MachineProfile profile, Command.AnalogOut ao, BlockTable.Block at, int line) {
+        return new Said(spindle(profile, ao.volts().value(), at, line) + " (AO" + ao.output() + " set; the controller"
+                + " gives no operand to read it back)", false);
     }
 
     /** The spindle's speed as the program writes it: r/min (and G96's surface speed when it is in force). */

@@ -2,7 +2,9 @@ package gcnc.send;
 
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
+import gcnc.dmc.CommandKind;
 import gcnc.dmc.Instruction;
+import gcnc.dmc.SequencePart;
 import gcnc.dmc.StreamRole;
 import gcnc.dmc.StreamSplit;
 import java.io.IOException;
@@ -221,10 +223,11 @@ public final class StreamForm implements Delivery {
 
         private void send(Sent s) throws IOException, RunFault, InterruptedException {
             Command cmd = s.command();
-            if (cmd instanceof Command.VectorSpeed) {
+            SequencePart part = SequencePart.of(cmd);
+            if (part == SequencePart.SPEED) {
                 segments.clear();
             }
-            if (DmcProgram.isSegment(cmd)) {
+            if (part == SequencePart.SEGMENT) {
                 // one slot stays free for VE (Galil's own vector example keeps it); _LMS is asked again only
                 // when the slots counted since the last answer run out
                 while (free < 2) {
@@ -240,52 +243,73 @@ public final class StreamForm implements Delivery {
                 Sequence q = progress.program().sequenceAt(s.origin());
                 end = q == null ? end : q.end();
             }
-            if (cmd instanceof Command.VectorEnd) {
+            if (part == SequencePart.VECTOR_END) {
                 starved(s); // a fed sequence must still run when its VE comes
                 vectorEnded = true;
             }
             c.require(gcnc.dmc.DmcPrinter.print(cmd));
-            if (cmd instanceof Command.BeginSequence) {
+            if (part == SequencePart.BEGIN) {
                 progress.started();
                 tripped = 0;
                 feeding = !vectorEnded;
                 vectorEnded = false;
             }
-            if (!progress.hasStarted() || !(cmd instanceof Command.BeginSequence)) {
+            if (!progress.hasStarted() || part != SequencePart.BEGIN) {
                 progress.pointAt(s.origin());
             }
         }
 
         private void host(Sent s) throws IOException, RunFault, InterruptedException {
             Command cmd = s.command();
-            if (cmd instanceof Command.AwaitSequence) {
-                StallWatch stall = new StallWatch(stallSeconds);
-                while (c.client().number("_BGS") != 0) {
-                    double[] at = follow();
-                    if (stall.stalled(at, !hold.held() && op.override() > 0)) {
-                        c.stopAll();
-                        throw stall.fault(progress.executingLine());
-                    }
-                    Thread.sleep(pollMs);
-                    operator();
+            switch (CommandKind.of(cmd)) {
+                case AWAIT_SEQUENCE -> awaitSequence();
+                case WAIT -> await(s, ((Command.Wait) cmd).milliseconds());
+                case AFTER_VECTOR -> trip(s, ((Command.AfterVector) cmd).counts());
+                case CALL -> call(s, ((Command.Call) cmd).label());
+                // StreamRole.of, exhaustive over the commands, gives the host these four
+                default -> throw new IllegalStateException("the host has no wait for " + cmd);
+            }
+        }
+
+        /** {@code AMS}: until {@code _BGS} is 0, stopping a sequence that stalls. */
+        private void awaitSequence() throws IOException, RunFault, InterruptedException {
+            StallWatch stall = new StallWatch(stallSeconds);
+            while (c.client().number("_BGS") != 0) {
+                double[] at = follow();
+                if (stall.stalled(at, !hold.held() && op.override() > 0)) {
+                    c.stopAll();
+                    throw stall.fault(progress.executingLine());
                 }
-                endedAtItsEnd();
-            } else if (cmd instanceof Command.Wait w) {
-                progress.pointAt(s.origin());
-                long until = System.nanoTime() + w.milliseconds() * 1_000_000L;
-                while (System.nanoTime() < until) {
-                    operator();
-                    Thread.sleep(Math.max(1, Math.min(pollMs, (until - System.nanoTime()) / 1_000_000L)));
-                }
-            } else if (cmd instanceof Command.AfterVector av) {
-                tripped += av.counts();
-                while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < tripped) {
-                    follow();
-                    Thread.sleep(pollMs);
-                    operator();
-                }
-                starved(s); // a fed sequence that ran dry while the host waited: no output switches after it
-            } else if (cmd instanceof Command.Call call && call.label().equals(StreamSplit.BUFFER_WAIT)) {
+                Thread.sleep(pollMs);
+                operator();
+            }
+            endedAtItsEnd();
+        }
+
+        /** {@code WT n}: n ms after the previous command was taken. */
+        private void await(Sent s, long milliseconds) throws IOException, RunFault, InterruptedException {
+            progress.pointAt(s.origin());
+            long until = System.nanoTime() + milliseconds * 1_000_000L;
+            while (System.nanoTime() < until) {
+                operator();
+                Thread.sleep(Math.max(1, Math.min(pollMs, (until - System.nanoTime()) / 1_000_000L)));
+            }
+        }
+
+        /** {@code AV n}: until {@code _AVS} reaches the sum of the sequence's AVs so far. */
+        private void trip(Sent s, long counts) throws IOException, RunFault, InterruptedException {
+            tripped += counts;
+            while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < tripped) {
+                follow();
+                Thread.sleep(pollMs);
+                operator();
+            }
+            starved(s); // a fed sequence that ran dry while the host waited: no output switches after it
+        }
+
+        /** {@code JS #L}: the wait for room, or the resident routine run with {@code XQ #L,0} until {@code _XQ0} is -1. */
+        private void call(Sent s, String label) throws IOException, RunFault, InterruptedException {
+            if (label.equals(StreamSplit.BUFFER_WAIT)) {
                 // the program form's wait for room (JS #LMWAIT): the host polls _LMS itself, every pollMs,
                 // until the next batch and VE fit (gclib's vector example reads _LMS every 100 ms)
                 for (free = (int) c.client().number("_LMS"); free < StreamSplit.BUFFER_BATCH + 1;
@@ -296,25 +320,25 @@ public final class StreamForm implements Delivery {
                     operator();
                 }
                 starved(s);
-            } else if (cmd instanceof Command.Call call) {
-                c.require("XQ #" + call.label() + ",0");
-                progress.started();
-                if (call.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
-                    // a program stop: the resident routine waits for gstop=0 or the cycle start input
-                    progress.at(s.origin(), c.position(), op);
-                    ProgramStopWait.await(c, progress, op, s.origin(), pollMs, () -> c.executing() >= 0);
-                    operator();
-                }
-                for (int xq = c.executing(); xq >= 0; xq = c.executing()) {
-                    progress.at(s.origin(), c.position(), op);
-                    Thread.sleep(pollMs);
-                    operator();
-                }
-                if (c.errorCode() != 0) {
-                    RunFault f = c.refused("JS #" + call.label(), progress.executingLine(), true);
-                    c.stopAll();
-                    throw f;
-                }
+                return;
+            }
+            c.require("XQ #" + label + ",0");
+            progress.started();
+            if (label.equals(gcnc.dmc.ProgramStop.LABEL)) {
+                // a program stop: the resident routine waits for gstop=0 or the cycle start input
+                progress.at(s.origin(), c.position(), op);
+                ProgramStopWait.await(c, progress, op, s.origin(), pollMs, () -> c.executing() >= 0);
+                operator();
+            }
+            for (int xq = c.executing(); xq >= 0; xq = c.executing()) {
+                progress.at(s.origin(), c.position(), op);
+                Thread.sleep(pollMs);
+                operator();
+            }
+            if (c.errorCode() != 0) {
+                RunFault f = c.refused("JS #" + label, progress.executingLine(), true);
+                c.stopAll();
+                throw f;
             }
         }
 

@@ -2,6 +2,7 @@ package gcnc.sim;
 
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
+import gcnc.dmc.SequencePart;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -102,8 +103,9 @@ final class ReplayController {
     void run(Instruction i) {
         commands.at(i);
         Command cmd = i.command();
-        boolean wait = cmd instanceof Command.Call c && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT);
-        if (buffer.begun() && (cmd instanceof Command.AfterVector || deferring && !wait && !joinsRunning(cmd))) {
+        SequencePart part = SequencePart.of(cmd);
+        boolean wait = part == SequencePart.ROOM_WAIT;
+        if (buffer.begun() && (part == SequencePart.TRIP || deferring && !wait && !joinsRunning(part))) {
             // a trip point of the sequence running and what it sets (GroupWriter writes them while it is
             // fed): run after the sequence, which the replay runs whole at its VE
             deferred.add(i);
@@ -121,9 +123,11 @@ final class ReplayController {
     }
 
     /** A command that goes on with the sequence begun: a segment, its VE, the end of the wait. */
-    private static boolean joinsRunning(Command c) {
-        return c instanceof Command.VectorPosition || c instanceof Command.CircularArc || c instanceof Command.VectorEnd
-                || c instanceof Command.AwaitSequence;
+    private static boolean joinsRunning(SequencePart part) {
+        return switch (part) {
+            case SEGMENT, VECTOR_END, AWAIT -> true;
+            case SPEED, BEGIN, ROOM_WAIT, TRIP, OUTSIDE, NONE -> false;
+        };
     }
 
     /** Runs the trip points deferred while the sequence was fed, after the replay of the sequence. */

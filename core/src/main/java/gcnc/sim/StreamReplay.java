@@ -102,14 +102,17 @@ public final class StreamReplay {
                 label = l.name();
                 body = new ArrayList<>();
                 jumps = false;
-            } else if (label != null && c instanceof Command.End) {
-                if (!jumps) {
-                    out.put(label, body);
-                }
-                label = null;
             } else if (label != null) {
-                jumps |= c instanceof Command.Jump || c instanceof Command.Call || c instanceof Command.ClearStack;
-                body.add(program.get(i));
+                // inside a routine: its EN closes it, any other line is its body
+                if (c instanceof Command.End) {
+                    if (!jumps) {
+                        out.put(label, body);
+                    }
+                    label = null;
+                } else {
+                    jumps |= c instanceof Command.Jump || c instanceof Command.Call || c instanceof Command.ClearStack;
+                    body.add(program.get(i));
+                }
             }
         }
         return out;

@@ -260,11 +260,13 @@ final class Runs implements AutoCloseable {
         if (e instanceof Event.StepWait) {
             r.stepWaiting = true;
         }
-        if (e instanceof Event.ProgramStop) {
-            r.stopWaiting = true;
-        } else if (e instanceof Event.ProgramStopContinued) {
-            r.stopWaiting = false;
-        }
+        // whether the run waits at a program stop, decided for every event (a new one may end the wait)
+        r.stopWaiting = switch (e.kind()) {
+            case PROGRAM_STOP -> true;
+            case PROGRAM_STOP_CONTINUED -> false;
+            case CONNECTED, PREFLIGHT, WEAR, DOWNLOADED, STARTED, STATUS, BLOCK, STEP_WAIT, HOLD, FINDING, MESSAGE,
+                    STOPPED, FINISHED -> r.stopWaiting;
+        };
         synchronized (this) {
             if (e instanceof Event.Status) {
                 lastStatus = JsonParser.parseString(json);
