@@ -8,7 +8,6 @@ import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
-import gcnc.machine.Control;
 import gcnc.machine.MachineProfile;
 import gcnc.tables.Tables;
 import java.util.List;
@@ -28,7 +27,7 @@ import java.util.Optional;
  * without S, C-axis codes) is judged after each accepted block by {@link Advisories} (issue 17).
  * <p>Block delete: once a '/' block appears, a second checker follows the program with the
  * switch in the other position, so both variants are checked; what only the other finds is
- * reported with a note saying so.
+ * reported with a note saying so ({@link DeleteSwitch}).
  * <p>The cycles and the corner flow reach the checker only through {@link CheckerPorts}
  * ({@link CycleHost}, {@link CornerHost}); the blocks leave it through {@link BlockRelease}.
  */
@@ -48,13 +47,10 @@ public final class Checker {
     private final Diagnostics scratch = new Diagnostics();
     private final FindingReport findings;
     private final RepeatWarnings repeats;
-    /** The block delete switch as this checker follows the program: true = '/' blocks are skipped. */
-    private final boolean skipDeleted;
+    /** The block delete switch as this checker follows it, and the checker in its other position. */
+    private final DeleteSwitch deletes;
     /** Where the block being checked comes from ({@link RawBlock#origin}): its checked blocks go there. */
     private gcnc.diag.Origin from = gcnc.diag.Origin.PROGRAM;
-    /** The other position of the switch, from the first '/' block on; null before (and in the other itself). */
-    private Checker other;
-    private final boolean isOther;
     private ModalState state;
     /** The cycles (G70-G73, G90/G94): the contour read ahead, the stored contours, the expansion. */
     private final CycleExpansion cycles;
@@ -77,11 +73,10 @@ public final class Checker {
     }
 
     Checker(Tables tables, MachineProfile profile, Diagnostics out, int errorCap) {
-        this(tables, profile, out, errorCap, profile.control().blockDelete() == Control.BlockDelete.ON, false);
+        this(tables, profile, out, errorCap, new DeleteSwitch(profile.control()));
     }
 
-    private Checker(Tables tables, MachineProfile profile, Diagnostics out, int errorCap, boolean skipDeleted,
-                    boolean isOther) {
+    private Checker(Tables tables, MachineProfile profile, Diagnostics out, int errorCap, DeleteSwitch deletes) {
         this.tables = tables;
         this.profile = profile;
         this.out = out;
@@ -89,8 +84,7 @@ public final class Checker {
         this.coordinates = new Coordinates(profile);
         this.run = new BlockRun(tables, functions, profile, coordinates);
         this.errorCap = errorCap;
-        this.skipDeleted = skipDeleted;
-        this.isOther = isOther;
+        this.deletes = deletes;
         this.state = ModalState.initial(profile);
         this.cycles = new CycleExpansion(ports);
         this.offsets = new OffsetAndReturn(ports);
@@ -131,27 +125,14 @@ public final class Checker {
             stopped = true;
             return List.of();
         }
-        if (b.blockDelete() > 0) {
-            if (profile.control().blockDelete() == Control.BlockDelete.NONE) {
-                blocks++;
-                int at = b.deleteColumn() > 0 ? b.deleteColumn() : Math.max(1, first.column() - 1);
-                out.error(Code.E010_SYNTAX, Span.of(b.line(), at), "'/'");
-                return List.of();
-            }
-            if (other == null && !isOther) {
-                other = fork();
-            }
+        if (deletes.refused(b, first, out)) {
+            blocks++;
+            return List.of();
         }
-        if (other != null) {
-            other.check(b);
-        }
-        if (b.blockDelete() > 0 && skipDeleted) {
-            // with the switch on a '/' block is skipped; a '/' in the middle runs the words before it
-            RawBlock kept = b.deleteColumn() > 0 ? b.beforeDelete() : null;
-            if (kept == null) {
-                return List.of();
-            }
-            b = kept;
+        deletes.follow(b, this);
+        b = deletes.running(b);
+        if (b == null) {
+            return List.of();
         }
         boolean isFirst = blocks++ == 0;
         if (state.ended()) {
@@ -341,8 +322,8 @@ public final class Checker {
     }
 
     /** The checker for the other position of the block delete switch, from the state reached so far. */
-    private Checker fork() {
-        Checker c = new Checker(tables, profile, out.sibling(), errorCap, !skipDeleted, true);
+    Checker fork() {
+        Checker c = new Checker(tables, profile, out.sibling(), errorCap, deletes.otherPosition());
         c.state = state;
         c.release = release.copy(c.functions, c.out);
         c.advisories = advisories.copy();
@@ -396,9 +377,6 @@ public final class Checker {
         if (!stopped && !state.ended()) {
             out.error(Code.E052_NO_M30, Span.of(Math.max(1, lastLine), 1), profile.control().endCodes());
         }
-        if (other != null) {
-            other.finish(lastLine);
-            findings.merge(other.out, !skipDeleted);
-        }
+        deletes.finish(lastLine, findings);
     }
 }

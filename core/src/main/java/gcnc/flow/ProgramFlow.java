@@ -82,10 +82,8 @@ public final class ProgramFlow implements BlockSource {
     private boolean mainFullReported;
     /** The block that ends the main program has been handed on. */
     private boolean finished;
-    /** Blocks of called programs, macro statements and main-program blocks run again, gone through so far. */
-    private long steps;
-    /** The budget was spent (E710 or E149): calls and jumps are no longer followed. */
-    private boolean spent;
+    /** The blocks gone through again, against {@link #STEP_LIMIT}. */
+    private final StepBudget budget;
     /** One past the furthest block of the main program's own frame run so far: a block before it runs again. */
     private int mainReached;
 
@@ -107,6 +105,7 @@ public final class ProgramFlow implements BlockSource {
         this.jumps = new MacroJumps(diags, vars);
         this.stack = new CallStack(Frame.main(mainBlocks), main, control.calls().depth(), diags);
         this.afterEnd = new ReachableAfterEnd(codes, diags);
+        this.budget = new StepBudget(STEP_LIMIT, diags, jumps, stack);
     }
 
     /** Every file beside the program that a call looked for, found or not ({@link Library#lookedFor}). */
@@ -143,7 +142,7 @@ public final class ProgramFlow implements BlockSource {
                 mainReached = at + 1;
             }
             if (!f.isMain() || b.macro() != null || again) {
-                step(b);
+                budget.step(b);
             }
             if (f.blocks == mainBlocks && !f.isMain()) {
                 ranLocally.set(at);
@@ -195,35 +194,9 @@ public final class ProgramFlow implements BlockSource {
         }
     }
 
-    /**
-     * Counts a block against the run's {@link #budget}: past it, the loop that last came round is
-     * E710 with its passes (E149 when no loop runs: repeats of calls), and each call finishes the
-     * pass it is in, and no more.
-     */
-    private void step(RawBlock b) {
-        if (spent || ++steps <= budget()) {
-            return;
-        }
-        spent = true;
-        MacroJumps.Pass loop = jumps.last();
-        if (loop != null) {
-            diags.error(Code.E710_MACRO_BUDGET, loop.at(), loop.text(), loop.at().line(), loop.passes(), steps - 1);
-        } else {
-            diags.error(Code.E149_MACRO_ENDLESS_LOOP, b.last(), "the program", b.line(), steps - 1);
-        }
-        for (Frame running : stack) {
-            running.repeats = 1; // each call finishes the pass it is in, and no more
-        }
-    }
-
-    /** The run's budget ({@link #STEP_LIMIT}). */
-    private long budget() {
-        return STEP_LIMIT;
-    }
-
-    /** Blocks gone through again so far ({@link #budget}): what a test bounds instead of the time. */
+    /** Blocks gone through again so far ({@link StepBudget}): what a test bounds instead of the time. */
     long steps() {
-        return steps;
+        return budget.steps();
     }
 
     // ---- macro statements ----
@@ -231,7 +204,7 @@ public final class ProgramFlow implements BlockSource {
     /** Runs a macro line of frame {@code f} at index {@code at}: the words it comes to, or null (it moved the frame, or only set variables). */
     private RawBlock macro(RawBlock b, Frame f, int at) throws IOException {
         MacroLine.Outcome o = MacroLine.run(b, vars, diags, control.blockDelete());
-        if (spent && o.kind() != MacroLine.Outcome.Kind.WORDS) {
+        if (budget.spent() && o.kind() != MacroLine.Outcome.Kind.WORDS) {
             return null; // jumps are no longer followed: the program runs on to its end
         }
         return switch (o.kind()) {
@@ -282,7 +255,7 @@ public final class ProgramFlow implements BlockSource {
         if (w.role() == MRole.RETURN) {
             return giveBack(b, w, f, depth);
         }
-        Frame callee = spent ? null : w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
+        Frame callee = budget.spent() ? null : w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
         RawBlock rest = b.called(w.rest(), last(w.rest(), w.flow()), depth);
         if (callee != null) {
             stack.push(callee);

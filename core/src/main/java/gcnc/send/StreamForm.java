@@ -3,15 +3,13 @@ package gcnc.send;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.CommandKind;
-import gcnc.dmc.Instruction;
 import gcnc.dmc.SequencePart;
 import gcnc.dmc.StreamRole;
 import gcnc.dmc.StreamSplit;
+import gcnc.send.PieceSplit.Sent;
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * The stream form (docs/galil.md, "Two forms"; docs/run.md): the resident program (set-up,
@@ -26,7 +24,7 @@ import java.util.Map;
  * ({@code _CSS}) names the G-code block, as in the program form.
  *
  * <p>The split is the compile's own ({@link StreamSplit}) applied to the piece being run, so a
- * resume (a piece that starts at the resume point) is streamed the same way.
+ * resume (a piece that starts at the resume point) is streamed the same way ({@link PieceSplit}).
  */
 public final class StreamForm implements Delivery {
     private final int pollMs;
@@ -49,78 +47,22 @@ public final class StreamForm implements Delivery {
         return splitOnce(piece, program).residentLines(program.lineWidth()).size();
     }
 
-    /** A command of the run and the compiled program's line it stands for. */
-    private record Sent(Command command, int origin) {
-    }
-
-    /** The piece as the two parts of the stream form, each command with its compiled line. */
-    record Split(List<Sent> resident, List<Sent> stream) {
-        /** The resident program as it is downloaded: packed into lines as the compile writes it. */
-        List<String> residentLines(int width) {
-            return Download.packedLines(resident.stream().map(Sent::command).toList(), width);
-        }
-    }
-
     /** The piece pre-flight counted and the run sends: split once for both. */
     private Download splitPiece;
-    private Split splitOfPiece;
+    private PieceSplit splitOfPiece;
 
-    private Split splitOnce(Download piece, DmcProgram program) {
+    private PieceSplit splitOnce(Download piece, DmcProgram program) {
         if (piece != splitPiece) {
-            splitOfPiece = split(piece, program);
+            splitOfPiece = PieceSplit.of(piece, program);
             splitPiece = piece;
         }
         return splitOfPiece;
     }
 
-    /** {@code piece} split as the compile splits a program ({@link StreamSplit}), each command keeping its compiled line. */
-    static Split split(Download piece, DmcProgram program) {
-        Map<Instruction, Integer> origins = new IdentityHashMap<>();
-        List<Instruction> stream = new ArrayList<>();
-        StreamSplit split = new StreamSplit(stream::add, Long.MAX_VALUE, program.lineWidth());
-        for (int j = 0; j < piece.commands().size(); j++) {
-            int o = Math.max(0, piece.originOf(j));
-            Instruction i = new Instruction(piece.commands().get(j), program.instructions().get(o).source());
-            origins.put(i, o);
-            split.accept(i);
-        }
-        List<Instruction> resident = split.finish().resident();
-        // a command the split made (gready, a routine's label and EN, the call of a moved block) stands
-        // for the compiled line of the command beside it
-        List<Sent> r = new ArrayList<>();
-        Map<String, Integer> routineStart = new java.util.HashMap<>();
-        int last = 0;
-        String label = null;
-        for (int k = 0; k < resident.size(); k++) {
-            Instruction i = resident.get(k);
-            Integer o = origins.get(i);
-            if (i.command() instanceof Command.Label l) {
-                label = l.name();
-                Integer next = k + 1 < resident.size() ? origins.get(resident.get(k + 1)) : null;
-                if (next != null) {
-                    routineStart.put(label, next);
-                }
-            }
-            last = o != null ? o : last;
-            r.add(new Sent(i.command(), o != null ? o : last));
-        }
-        List<Sent> s = new ArrayList<>(stream.size());
-        last = 0;
-        for (Instruction i : stream) {
-            Integer o = origins.get(i);
-            if (o == null && i.command() instanceof Command.Call call) {
-                o = routineStart.get(call.label());
-            }
-            last = o != null ? o : last;
-            s.add(new Sent(i.command(), last));
-        }
-        return new Split(r, s);
-    }
-
     @Override
     public void run(Download piece, MachineLink c, Progress progress, Operator op, boolean step, boolean dryRun)
             throws RunFault, IOException, InterruptedException {
-        Split split = splitOnce(piece, progress.program());
+        PieceSplit split = splitOnce(piece, progress.program());
         List<String> resident = split.residentLines(progress.program().lineWidth());
         c.halt();
         GalilClient.Reply dl = c.client().download(resident);
