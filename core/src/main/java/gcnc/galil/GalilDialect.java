@@ -27,7 +27,8 @@ import java.util.function.Consumer;
 final class GalilDialect implements Dialect {
     private final MachineProfile profile;
     private final Diagnostics diagnostics;
-    private final boolean inlineSourceMap;
+    /** One writer a block, and the blocks of the run counted. */
+    private final BlockWriters writers;
     private final GalilFrame frame;
     private final gcnc.machine.ControllerLimits limits;
     long posU;
@@ -42,7 +43,7 @@ final class GalilDialect implements Dialect {
     GalilDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
         this.profile = profile;
         this.diagnostics = diagnostics;
-        this.inlineSourceMap = inlineSourceMap;
+        this.writers = new BlockWriters(inlineSourceMap);
         this.frame = new GalilFrame(profile);
         this.limits = profile.controllerLimits();
         this.machine = new MachineCode(profile, frame, diagnostics);
@@ -154,27 +155,24 @@ final class GalilDialect implements Dialect {
         });
     }
 
-    /** The writer of block {@code b}'s instructions: one per block, so that its inline map comment comes once. */
+    /**
+     * The writer of block {@code b}'s instructions ({@link BlockWriters}); a new block's, outside a
+     * multi-motion group, sets gline=<line> before its first instruction ({@link MachineCode#marking}).
+     */
     BlockWriter writer(CheckedBlock b, Consumer<Instruction> sink) {
-        if (writer == null || writer.block() != b) {
-            writer = new BlockWriter(grouping ? sink : machine.marking(b, sink), b, inlineSourceMap, blocks++);
-        }
-        return writer;
+        BlockWriter w = writers.current(b);
+        return w != null ? w : writers.start(b, grouping ? sink : machine.marking(b, sink));
     }
-
-    private BlockWriter writer;
 
     /** Goes on writing with {@code w} (its block's writer), after trip points written for earlier blocks in between. */
     void resume(BlockWriter w) {
-        writer = w;
+        writers.resume(w);
     }
 
     /** The writer of the last sequence begun: a sequence that goes on is written on by it. */
     private GroupWriter sequence;
     /** A multi-motion group is being written: its blocks after the first get no gline=<line> (MachineCode). */
     private boolean grouping;
-    /** The blocks written so far: each new one's number in the run (Source#block). */
-    private long blocks;
 
     private void motion(CheckedBlock b, Motion m, BlockWriter out) {
         m.accept(new Motion.Visitor<Void>() {

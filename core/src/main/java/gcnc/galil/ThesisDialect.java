@@ -21,13 +21,14 @@ import java.util.List;
 final class ThesisDialect implements Dialect {
     private final MachineProfile profile;
     private final Diagnostics diagnostics;
-    private final boolean inlineSourceMap;
+    /** One writer a block, and the blocks of the run counted. */
+    private final BlockWriters writers;
     private final GalilFrame frame;
 
     ThesisDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
         this.profile = profile;
         this.diagnostics = diagnostics;
-        this.inlineSourceMap = inlineSourceMap;
+        this.writers = new BlockWriters(inlineSourceMap);
         this.frame = new GalilFrame(profile);
     }
 
@@ -89,15 +90,9 @@ final class ThesisDialect implements Dialect {
         });
     }
 
-    private BlockWriter writer;
-    /** The blocks written so far: each new one's number in the run (Source#block). */
-    private long blocks;
-
     private BlockWriter writer(CheckedBlock b, java.util.function.Consumer<gcnc.dmc.Instruction> sink) {
-        if (writer == null || writer.block() != b) {
-            writer = new BlockWriter(sink, b, inlineSourceMap, blocks++);
-        }
-        return writer;
+        BlockWriter w = writers.current(b);
+        return w != null ? w : writers.start(b, sink);
     }
 
     private void motion(CheckedBlock b, Motion m, BlockWriter out) {
