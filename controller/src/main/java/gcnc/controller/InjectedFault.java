@@ -20,7 +20,7 @@ public record InjectedFault(Kind kind, long n) {
         SLOW,
         /**
          * Every statement of a program thread takes N milliseconds of controller time (Galil decodes one in
-         * about 0.05 ms): a program too slow to keep a sequence fed while it runs, as the slow host is in the
+         * about 0.05 ms; counted as VirtualGalil counts the 20 a millisecond, a line's end a step too): a program too slow to keep a sequence fed while it runs, as the slow host is in the
          * stream form.
          */
         SLOW_THREAD,

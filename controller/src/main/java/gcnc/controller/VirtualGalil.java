@@ -232,7 +232,7 @@ public final class VirtualGalil implements Expressions.Scope {
             int budget = Math.max(1, (int) Math.round(h * 20_000));
             if (statementMillis > 0) {
                 statementsOwed += h * 1000 / statementMillis;
-                budget = (int) statementsOwed;
+                budget = (int) (statementsOwed + 1e-9); // ten steps of 0.1 owed are one statement, not 0.999...
                 statementsOwed -= budget;
             }
             for (ProgramThread t : threads) {
