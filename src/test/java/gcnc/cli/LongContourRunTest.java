@@ -22,8 +22,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  * way (M08 at chord 300, M09 at chord 800: AV trip points while the buffer is fed), is one vector
  * sequence in both forms and runs as one on the virtual Galil: one BGS, no stop between its first
  * and last chord (every chord run at about its feed), both trip points tripped where their chords
- * start; with a slow host the stream form either keeps up or reports the starvation (E890) at its
- * segment and block, never a normal end.
+ * start; with a slow host (the stream form) or a slow program thread (the program form) the run
+ * reports the starvation (E890) at its segment and block, never a normal end.
  */
 class LongContourRunTest {
     static final int CHORDS = 1000;
@@ -104,18 +104,22 @@ class LongContourRunTest {
     }
 
     /**
-     * A host slower than the chords: every reply of the controller takes 5 ms, a chord runs in 2.5 ms
-     * (12.7 ms of controller time at five times real time), so the stream cannot keep the buffer fed.
-     * The controller's buffer runs dry before VE (its trace: an underrun, not an end), and gcnc says so,
-     * E890 at the segment where the axes stopped and its block, never a normal end.
+     * A feeder slower than the chords, in each form: in the stream form the host, every reply of the
+     * controller taking 5 ms while a chord runs in 2.5 ms (12.7 ms of controller time at five times real
+     * time); in the program form thread 0, every statement taking 50 ms of controller time (at twenty
+     * times real time). Neither can keep the buffer fed: the controller's buffer runs dry before VE (its
+     * trace: an underrun, not an end), and gcnc says so, E890 at the segment where the axes stopped and
+     * its block, never a normal end (in the program form not the E825 of a program ended away from its
+     * end either).
      */
-    @org.junit.jupiter.api.Test
-    void aHostTooSlowForTheChordsReportsTheStarvationAtItsSegment() throws Exception {
+    @ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource({"stream, 5, slow=5", "program, 20, slow-thread=50"})
+    void aFeederTooSlowForTheChordsReportsTheStarvationAtItsSegment(String form, double speed, String fault) throws Exception {
         Path p = part(contour());
         Path trace = p.resolveSibling("slow.trace");
-        try (VirtualController vc = traced(model("DMC-4040"), trace, "slow=5")) {
+        try (VirtualController vc = traced(speed, model("DMC-4040"), trace, fault)) {
             homed(vc);
-            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--form", "stream", "--tcp",
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--form", form, "--tcp",
                     tcp(vc), "--poll", "10");
             assertEquals(3, r.status(), r.all()); // the run failed on the machine (docs/run.md)
             java.util.regex.Matcher m = java.util.regex.Pattern.compile(

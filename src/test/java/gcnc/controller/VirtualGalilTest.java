@@ -86,6 +86,27 @@ class VirtualGalilTest {
         small.download("EN\r".repeat(2000), false);
     }
 
+    /**
+     * {@code --fault slow-thread=MS}: each step of a thread (a statement, or the move to the next line, as the
+     * 20 a millisecond are counted without the fault) takes MS ms of controller time.
+     */
+    @Test
+    void aSlowThreadFaultGivesEveryStatementItsMilliseconds() throws GalilException {
+        VirtualGalil slow = new VirtualGalil(Model.standard(), List.of(InjectedFault.parse("slow-thread=10")), null);
+        slow.download(String.join("\r", "#A", "a=1", "b=2", "c=3", "EN"), false);
+        slow.command("XQ #A,0");
+        slow.advance(0.0355); // 3.55 steps: the label, its line's end, a=1
+        assertEquals(" 1.0000\r\n", slow.command("MG a"));
+        assertThrows(GalilException.class, () -> slow.command("MG b"), "b=2 has not run yet");
+        slow.advance(0.0145); // 1.45 steps and the 0.55 owed: a=1's line end, b=2
+        assertEquals(" 2.0000\r\n", slow.command("MG b"), "the fraction owed carries over");
+        assertThrows(GalilException.class, () -> slow.command("MG c"), "c=3 has not run yet");
+        c.download(String.join("\r", "#A", "a=1", "b=2", "c=3", "EN"), false);
+        ok("XQ #A,0");
+        c.advance(0.001);
+        assertEquals(" 3.0000\r\n", ok("MG c"), "without the fault all in a millisecond");
+    }
+
     @Test
     void threadsRunJumpsSubroutinesAndConditions() throws GalilException {
         c.download(String.join("\r", "#MAIN", "i=0;n=0", "#LOOP", "JS #ADD,i<3", "i=i+1", "JP #LOOP,i<5",

@@ -52,7 +52,7 @@ final class ControllerCommand extends StreamsCommand {
 
     @Option(names = "--fault", paramLabel = "SPEC",
             description = "A fault to inject, repeatable: garbage-after=BYTES, reject=COMMAND, disconnect-after=BYTES,"
-                    + " slow=MS, stall=SEGMENT, limit-at=SEGMENT.")
+                    + " slow=MS, slow-thread=MS, stall=SEGMENT, limit-at=SEGMENT.")
     List<String> faults = new ArrayList<>();
 
     @Option(names = "--trace", paramLabel = "FILE",

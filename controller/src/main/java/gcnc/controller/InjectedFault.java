@@ -18,6 +18,12 @@ public record InjectedFault(Kind kind, long n) {
         DISCONNECT_AFTER,
         /** Every reply waits N milliseconds (real time) before it is sent. */
         SLOW,
+        /**
+         * Every statement of a program thread takes N milliseconds of controller time (Galil decodes one in
+         * about 0.05 ms; counted as VirtualGalil counts the 20 a millisecond, a line's end a step too): a program too slow to keep a sequence fed while it runs, as the slow host is in the
+         * stream form.
+         */
+        SLOW_THREAD,
         /** The profiler stops taking segments from the buffer after segment N: the motion halts there. */
         STALL,
         /** A limit switch trips half way through segment N: decelerating stop, #LIMSWI if the program has it. */
@@ -52,7 +58,7 @@ public record InjectedFault(Kind kind, long n) {
         if (kind == null || n < (kind == Kind.GARBAGE_AFTER || kind == Kind.DISCONNECT_AFTER || kind == Kind.SLOW ? 0 : 1)
                 || kind == Kind.ECHO_ETHERNET && n != 1) {
             throw new IllegalArgumentException("'" + spec + "' is not a fault: give one of garbage-after=BYTES,"
-                    + " reject=COMMAND, disconnect-after=BYTES, slow=MS, stall=SEGMENT, limit-at=SEGMENT, echo-ethernet=1"
+                    + " reject=COMMAND, disconnect-after=BYTES, slow=MS, slow-thread=MS, stall=SEGMENT, limit-at=SEGMENT, echo-ethernet=1"
                     + " (commands and segments counted from 1)");
         }
         return new InjectedFault(kind, n);

@@ -850,7 +850,10 @@ public enum Code {
     E876_WEAR_NOWHERE_TO_SAVE(876),
     /** Test cut: the program does not use the offset named (its DMC is the same with the new wear). */
     E877_WEAR_OFFSET_UNUSED(877),
-    /** Sender: the vector buffer ran dry before VE (the host did not keep a fed sequence fed): the axes stopped mid-sequence. */
+    /**
+     * Sender: the vector buffer ran dry before VE (the host, in the stream form, or the program's thread, in the
+     * program form, did not keep a fed sequence fed): the axes stopped mid-sequence.
+     */
     E890_BUFFER_STARVED(890);
 
     private final int number;

@@ -122,6 +122,37 @@ public record Download(List<Command> commands, int[] origin, List<String> lines,
         return new Segments(origins.stream().mapToInt(Integer::intValue).toArray(), begun);
     }
 
+    /**
+     * The sequence fed while it runs that the controller's line {@code n} lies wholly inside, as the
+     * index of its {@code VS}; -1 when there is none. Wholly inside: the line's first command is past the
+     * sequence's {@code BGS} and neither the line nor anything before it is its {@code VE}, so thread 0,
+     * anywhere on the line, has begun the motion and not yet ended the segments: the sequence must be
+     * moving ({@code _BGS} 1) unless its buffer ran dry.
+     */
+    public int fedSequenceOn(int n, DmcProgram program) {
+        int first = firstOf(n);
+        boolean begun = false;
+        for (int j = lastOf(n); first >= 0 && j >= 0; j--) {
+            switch (SequencePart.of(program.command(originOf(j)))) {
+                case SPEED -> {
+                    return begun ? j : -1;
+                }
+                case VECTOR_END, AWAIT, OUTSIDE -> {
+                    return -1;
+                }
+                case BEGIN -> {
+                    if (j >= first) {
+                        return -1; // the thread may stand before it
+                    }
+                    begun = true;
+                }
+                case SEGMENT, ROOM_WAIT, TRIP, NONE -> {
+                }
+            }
+        }
+        return -1;
+    }
+
     /** The segments of one vector sequence of a piece: see {@link #segmentsAt}. */
     public record Segments(int[] origins, boolean begun) {
         /**

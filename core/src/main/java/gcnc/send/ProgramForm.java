@@ -299,6 +299,17 @@ public record ProgramForm(int pollMs, double tolerance, double stallSeconds) imp
                 Thread.sleep(pollMs);
                 continue;
             }
+            int fed = piece.fedSequenceOn(xq, progress.program());
+            // thread 0 inside a sequence fed while it runs, past its BGS and before its VE, and the sequence no
+            // longer moving: its buffer ran dry (E890), as the stream form's host sees it before sending VE.
+            // _XQ0 is read again after _BGS: still on a line of the same fed sequence, the thread was before
+            // VE when _BGS read 0 (a normal end comes only after VE). The manuals are silent on how a program
+            // thread goes on after an underrun (M13X8-74 says only that the motion stops at the last vector):
+            // the virtual Galil's takes the next segments as a new sequence, so the stop is made here.
+            if (fed >= 0 && c.client().number("_BGS") == 0
+                    && piece.fedSequenceOn(c.executing(), progress.program()) == fed) {
+                throw Starvation.fault(piece.segmentsAt(piece.lastOf(xq), progress.program()).origins(), c, progress, op);
+            }
             if (origin >= 0) {
                 // a poll in a fault's routine leaves the line to search for the stop from (settled) at the block's
                 lastXq = xq;

@@ -293,15 +293,8 @@ public final class StreamForm implements Delivery {
             if (!feeding || vectorEnded || c.client().number("_BGS") != 0) {
                 return;
             }
-            double[] at = c.position();
-            int css = c.segment(); // the last segment executed (SegmentCount: one place for _CSS's base)
-            int k = Math.max(1, Math.min(segments.size(), css));
-            progress.at(segments.get(k - 1), at, op);
-            int code = c.stopCode();
             feeding = false;
-            c.stopAll();
-            throw new RunFault(Code.E890_BUFFER_STARVED, progress.executingLine(), true, k, progress.executingLine(),
-                    code == 101 ? "" : " (stop code " + code + ": " + MachineLink.stopReason(code) + ")");
+            throw Starvation.fault(segments.stream().mapToInt(Integer::intValue).toArray(), c, progress, op);
         }
 
         /** One poll while a sequence runs: the segment executing names the block; the axes where they are. */

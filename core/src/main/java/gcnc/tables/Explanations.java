@@ -93,7 +93,7 @@ public final class Explanations {
         String link = "running a program on a controller (gcnc run, docs/run.md): the link and the controller,"
                 + " not the program's text";
         // E815-E849: the link, the probe and the controller the profile names; E851: the link dropped during a run;
-        // E890-E899: feeding a running sequence
+        // E890-E899: feeding a running sequence (the stream form's host or the program form's thread)
         range(m, 815, 850, link);
         range(m, 890, 900, link);
         m.put(Code.E851_LINK_DROPPED_RUNNING, link);
