@@ -4,6 +4,7 @@ import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.Fixed;
 import gcnc.dmc.StreamSplit;
+import gcnc.sim.Sequence;
 import java.util.ArrayList;
 import java.util.List;
 

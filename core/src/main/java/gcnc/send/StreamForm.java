@@ -5,6 +5,7 @@ import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.StreamRole;
 import gcnc.dmc.StreamSplit;
+import gcnc.sim.Sequence;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
