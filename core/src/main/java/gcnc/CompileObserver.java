@@ -6,6 +6,7 @@ import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
+import gcnc.sim.Sequence;
 import gcnc.sim.SimReport;
 import java.util.List;
 
@@ -18,8 +19,8 @@ import java.util.List;
  *
  * <p>{@link #placed} and {@link #block} are called on the caller's thread, in program order;
  * {@link #replayed} on the simulator's thread, in program order, each DMC line after it was replayed
- * (the same order the output is handed its lines); {@link #simulated} once, after every other call,
- * on the caller's thread. A view read after {@code Session.compile} returns sees all of them.
+ * (the same order the output is handed its lines); {@link #sequence} likewise, after the line that
+ * waits for it; {@link #simulated} once, after every other call, on the caller's thread. A view read after {@code Session.compile} returns sees all of them.
  */
 public interface CompileObserver {
     /** Observes nothing. */
@@ -51,6 +52,14 @@ public interface CompileObserver {
     default void replayed(Instruction line, double secondsBefore, double secondsAfter) {
     }
 
+    /**
+     * One motion the simulator ran ({@link Sequence}: the DMC lines it spans, its pieces in the Galil
+     * plane, its start, end and speed), called on the simulator's thread after {@link #replayed} of the
+     * line that waits for it; the sender's sequences are these (gcnc.send.CompiledRun).
+     */
+    default void sequence(Sequence s) {
+    }
+
     /** The simulator's summary of a translated program (not called when nothing was simulated or an error stopped the output). */
     default void simulated(SimReport report) {
     }
@@ -75,6 +84,12 @@ public interface CompileObserver {
             public void replayed(Instruction line, double secondsBefore, double secondsAfter) {
                 first.replayed(line, secondsBefore, secondsAfter);
                 other.replayed(line, secondsBefore, secondsAfter);
+            }
+
+            @Override
+            public void sequence(Sequence s) {
+                first.sequence(s);
+                other.sequence(s);
             }
 
             @Override

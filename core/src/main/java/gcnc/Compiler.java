@@ -177,7 +177,7 @@ public final class Compiler {
         Optional<SimOptions> simulate = settings.simulation();
         // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
         try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get(), out,
-                observed ? observer::replayed : null) : null) {
+                observed ? replay(observer) : null) : null) {
             dialect.begin(collect);
             if (simulate.isPresent() && simulate.get().noBlank()) {
                 dialect.blank(Optional.empty(), collect);
@@ -356,5 +356,20 @@ public final class Compiler {
             out.accept(l);
         }
         lines.clear();
+    }
+
+    /** The simulator's hook that tells {@code observer} of each line replayed and each motion run. */
+    private static gcnc.sim.Simulator.Replayed replay(CompileObserver observer) {
+        return new gcnc.sim.Simulator.Replayed() {
+            @Override
+            public void line(Instruction line, double secondsBefore, double secondsAfter) {
+                observer.replayed(line, secondsBefore, secondsAfter);
+            }
+
+            @Override
+            public void sequence(gcnc.sim.Sequence s) {
+                observer.sequence(s);
+            }
+        };
     }
 }

@@ -18,7 +18,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import gcnc.controller.VirtualController;
 import gcnc.send.DmcProgram;
 import gcnc.send.MapReader;
-import gcnc.send.Sequence;
+import gcnc.sim.Sequence;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;

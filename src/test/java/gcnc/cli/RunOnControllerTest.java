@@ -13,7 +13,7 @@ import gcnc.controller.VirtualController;
 import gcnc.machine.MachineProfile;
 import gcnc.send.DmcProgram;
 import gcnc.send.MapReader;
-import gcnc.send.Sequence;
+import gcnc.sim.Sequence;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;

@@ -7,6 +7,7 @@ import gcnc.Session;
 import gcnc.dmc.Command;
 import gcnc.dmc.DmcPrinter;
 import gcnc.dmc.StreamSplit;
+import gcnc.sim.Sequence;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

@@ -329,10 +329,15 @@ class ResumeTest {
         assertEquals(Code.E827_CANNOT_RESUME, f.code());
         assertTrue(why.startsWith("the axes are at X30.000 Z-15.000 (Galil counts " + PositionText.counts(c.galil(9, 30, -15))
                 + "), not on the path of line 9 (X40.000 Z-30.000 (Galil counts "), why);
-        // out to the approach's X42 (line 6) at the axes' Z, then along Z, then in: never straight through the part
-        assertTrue(why.contains(": move X away from the part first, to X42.000 Z-15.000 (Galil counts "
-                + PositionText.counts(c.galil(9, 42, -15)) + "), then Z, to X42.000 Z-30.000 (Galil counts "
-                + PositionText.counts(c.galil(9, 42, -30)) + "), then X, to X40.000 Z-30.000 (Galil counts "
+        // out to the approach's X42 (line 6) at the axes' Z, then along Z, then in: never straight through the part.
+        // The approach's X is where the controller ends it: from the whole counts it stands on at home, which
+        // on the haas are a fraction of a count from the profile's home (X41.999 in the program's terms)
+        double approach = c.blocks().at(6).program(c.program().plane().machine(c.program().sequencesOf(6).get(0).end()))[0];
+        String x = String.format(java.util.Locale.ROOT, "X%.3f", approach);
+        assertEquals("X41.999", x);
+        assertTrue(why.contains(": move X away from the part first, to " + x + " Z-15.000 (Galil counts "
+                + PositionText.counts(c.galil(9, approach, -15)) + "), then Z, to " + x + " Z-30.000 (Galil counts "
+                + PositionText.counts(c.galil(9, approach, -30)) + "), then X, to X40.000 Z-30.000 (Galil counts "
                 + PositionText.counts(c.galil(9, 40, -30)) + ") and resume again"), why);
         assertTrue(!why.contains("jog them to"), why);
         // axes already farther out than the approach stay out

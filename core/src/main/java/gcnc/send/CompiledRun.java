@@ -7,6 +7,7 @@ import gcnc.dmc.Instruction;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.RawBlock;
 import gcnc.machine.MachineProfile;
+import gcnc.sim.Sequence;
 import gcnc.sim.SimReport;
 import java.io.IOException;
 import java.io.Reader;
@@ -19,13 +20,15 @@ import java.util.Optional;
 /**
  * What {@code gcnc run} and the studio's Run take from the compile that judged the program, as it
  * publishes it ({@link CompileObserver}): the DMC lines in the order the simulator replayed them with
- * its cycle clock around each (the program sent and its time left: {@link DmcProgram}), the checker's
+ * its cycle clock around each and the motions it ran (the program sent, its sequences and its time
+ * left: {@link DmcProgram}), the checker's
  * state at each block ({@link BlockTable}) and the machine on the blank. Nothing is read, parsed,
  * checked or timed a second time, so the run's estimated time is the compile's cycle time.
  */
 public final class CompiledRun implements CompileObserver {
     private final BlockTable.View table = new BlockTable.View();
     private final List<Instruction> lines = new ArrayList<>();
+    private final List<Sequence> sequences = new ArrayList<>();
     private double[] before = new double[256];
     private double[] after = new double[256];
     private MachineProfile onBlank;
@@ -61,6 +64,11 @@ public final class CompiledRun implements CompileObserver {
     }
 
     @Override
+    public void sequence(Sequence s) {
+        sequences.add(s);
+    }
+
+    @Override
     public void simulated(SimReport r) {
         report = r;
     }
@@ -83,7 +91,7 @@ public final class CompiledRun implements CompileObserver {
         int n = lines.size();
         double total = report != null ? report.cycleSeconds() : n == 0 ? 0 : after[n - 1];
         return DmcProgram.of(lines, new DmcProgram.Clock(Arrays.copyOf(before, n), Arrays.copyOf(after, n), total),
-                profile);
+                sequences, profile);
     }
 
     /** The checker's state at each main-program line, with the comments of {@code text} (the program as compiled). */

@@ -6,15 +6,16 @@ import gcnc.dmc.DmcReader;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.Source;
 import gcnc.machine.MachineProfile;
+import gcnc.sim.Sequence;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 
 /**
  * The compiled program the sender downloads: its instructions (the typed commands of gcnc.dmc,
  * each with its {@link Source}; a downloaded {@link Download} prints and packs them as FILE.dmc holds
  * them), the motions it makes ({@link Sequence}) with their places in
- * the plane and the DMC line of every segment, and how long each line's work takes. Built from the
+ * the plane and the DMC line of every segment, as the simulator ran them, and how long each line's
+ * work takes, by the simulator's clock. Built from the
  * compiler's instructions as they come ({@link #of}), so that nothing reads DMC text back; a DMC
  * file with its map is read through {@link DmcReader}, the one reader of DMC text ({@link #read}).
  */
@@ -93,20 +94,28 @@ public final class DmcProgram {
             return i < beforeLine.length ? beforeLine[i] : total;
         }
 
-        double after(int i) {
-            return i < afterLine.length ? afterLine[i] : total;
-        }
-
-        /** The clock of {@code lines} replayed by themselves on {@code profile}'s machine (a DMC read back: no compile ran). */
-        static Clock replay(List<Instruction> lines, MachineProfile profile) {
+        /**
+         * The clock of {@code lines} replayed by themselves on {@code profile}'s machine (a DMC read back: no
+         * compile ran); {@code sequences} receives the motions the replay ran.
+         */
+        static Clock replay(List<Instruction> lines, MachineProfile profile, List<Sequence> sequences) {
             double[] before = new double[lines.size()];
             double[] after = new double[lines.size()];
-            int[] at = {0};
             gcnc.sim.Simulator sim = new gcnc.sim.Simulator(profile, gcnc.sim.SimOptions.defaults(),
                     new gcnc.diag.Diagnostics());
-            sim.onReplayed((line, b, a) -> {
-                before[at[0]] = b;
-                after[at[0]++] = a;
+            sim.onReplayed(new gcnc.sim.Simulator.Replayed() {
+                private int at;
+
+                @Override
+                public void line(Instruction line, double b, double a) {
+                    before[at] = b;
+                    after[at++] = a;
+                }
+
+                @Override
+                public void sequence(Sequence s) {
+                    sequences.add(s);
+                }
             });
             sim.replay(lines);
             return new Clock(before, after, sim.report().cycleSeconds());
@@ -115,20 +124,29 @@ public final class DmcProgram {
 
     /**
      * The program as the compiler handed it on, one instruction a line (what {@code Session.compile}
-     * gives its consumer, in order), with the simulator's clock over those lines.
+     * gives its consumer, in order), with the simulator's clock over those lines and the motions it
+     * ran ({@link gcnc.CompileObserver#sequence}, in order): nothing of where they lie is read again here.
      *
-     * @param profile the machine it was compiled for: the plane and home
+     * @param profile the machine it was compiled for: the plane, and the controller's line width
      */
-    public static DmcProgram of(List<Instruction> instructions, Clock clock, MachineProfile profile) {
-        Plane plane = Plane.of(profile);
+    public static DmcProgram of(List<Instruction> instructions, Clock clock, List<Sequence> sequences,
+                                MachineProfile profile) {
         List<Instruction> all = List.copyOf(instructions);
-        Sequences w = new Sequences(plane, plane.galil(profile.home().x(), profile.home().z()), clock);
-        for (int i = 0; i < all.size(); i++) {
-            w.line(i, all.get(i).command());
-        }
+        List<Sequence> motions = List.copyOf(sequences);
         int n = all.size();
-        return new DmcProgram(all, Collections.unmodifiableList(w.sequences),
-                w.sequenceOf(n), w.secondsBefore(n), clock.total(), plane, profile.controllerLimits().lineWidth());
+        int[] owner = new int[n];
+        java.util.Arrays.fill(owner, -1);
+        for (int s = 0; s < motions.size(); s++) {
+            java.util.Arrays.fill(owner, motions.get(s).first(), Math.min(n, motions.get(s).last() + 1), s);
+        }
+        // the work done when a line starts: the clock before it, and for a line of a sequence the clock
+        // where its sequence starts (the progress adds how far along it the axes are)
+        double[] before = new double[n];
+        for (int i = 0; i < n; i++) {
+            before[i] = clock.before(owner[i] < 0 ? i : motions.get(owner[i]).first());
+        }
+        return new DmcProgram(all, motions, owner, before, clock.total(), Plane.of(profile),
+                profile.controllerLimits().lineWidth());
     }
 
     /**
@@ -156,7 +174,9 @@ public final class DmcProgram {
                 out.add(new Instruction(c, new Source(file == null ? Origin.PROGRAM : Origin.file(file), map.line(at, k), -1)));
             }
         }
-        return of(out, Clock.replay(out, profile), profile);
+        List<Sequence> sequences = new ArrayList<>();
+        Clock clock = Clock.replay(out, profile, sequences);
+        return of(out, clock, sequences, profile);
     }
 
     /** The characters of one controller line, the model's: what a downloaded piece is packed to ({@link Download}). */

@@ -2,6 +2,7 @@ package gcnc.send;
 
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
+import gcnc.sim.Sequence;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;

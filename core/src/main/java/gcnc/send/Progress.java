@@ -1,5 +1,7 @@
 package gcnc.send;
 
+import gcnc.sim.Sequence;
+
 /**
  * Where the run is, as the last poll saw it: the compiled program's line executing, hence the
  * G-code block executing and the one completed before it; and the events that say so (a

@@ -5,6 +5,7 @@ import gcnc.dmc.Command;
 import gcnc.dmc.Fixed;
 import gcnc.dmc.SequencePart;
 import gcnc.dmc.StreamSplit;
+import gcnc.sim.Sequence;
 import java.util.ArrayList;
 import java.util.List;
 

@@ -7,6 +7,7 @@ import gcnc.dmc.SequencePart;
 import gcnc.dmc.StreamRole;
 import gcnc.dmc.StreamSplit;
 import gcnc.send.PieceSplit.Sent;
+import gcnc.sim.Sequence;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;

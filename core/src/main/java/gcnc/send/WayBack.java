@@ -1,6 +1,7 @@
 package gcnc.send;
 
 import gcnc.dmc.Command;
+import gcnc.sim.Sequence;
 import java.util.ArrayList;
 import java.util.List;
 

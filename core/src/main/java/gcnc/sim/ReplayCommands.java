@@ -117,6 +117,7 @@ final class ReplayCommands extends FlowCommands {
     public Void vectorSpeed(Command.VectorSpeed c) {
         if (!afterEnd()) {
             speed = c.countsPerSecond().value();
+            buffer.open();
         }
         return null;
     }
@@ -216,6 +217,7 @@ final class ReplayCommands extends FlowCommands {
 
     public Void gearMaster(Command.GearMaster c) {
         if (!afterEnd()) {
+            buffer.open();
             gearing.master(c, instruction());
         }
         return null;
@@ -286,6 +288,9 @@ final class ReplayCommands extends FlowCommands {
     public Void afterMotion(Command.AfterMotion c) {
         if (!afterEnd() && !plane.sameChannels(c.axes())) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, source(), "AM", text());
+        }
+        if (!afterEnd()) {
+            buffer.waited();
         }
         return null;
     }

@@ -36,8 +36,8 @@ final class ReplayController {
      * its channel.
      */
     ReplayController(Plane plane, double x, double z, double acc, double dec, double speed, char spindleAxis,
-                     int spindleAnalog, ThreadGearing gearing, ReplayListener out) {
-        this.buffer = new VectorBuffer(plane, out);
+                     int spindleAnalog, ThreadGearing gearing, ReplayListener out, SequenceLog log) {
+        this.buffer = new VectorBuffer(plane, out, log);
         this.commands = new ReplayCommands(plane, buffer, gearing, acc, dec, speed, spindleAxis, spindleAnalog,
                 this::startBegun, out);
         buffer.moveTo(x, z);

@@ -67,7 +67,8 @@ public final class Simulator {
         int spindleAnalog = gcnc.machine.MachineIo.of(profile).drive()
                 instanceof gcnc.machine.MachineIo.SpindleDrive.Analog a ? a.output() : -1;
         this.dmc = new ReplayController(plane, profile.home().x(), profile.home().z(), profile.acceleration(),
-                profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), spindleAnalog, gearing, events);
+                profile.deceleration(), profile.rapidSpeed(), profile.spindleAxis(), spindleAnalog, gearing, events,
+                sequences);
         this.trace = options.trace() == null ? null : new Trace(options.trace(), profile);
         this.corners = new Corners(profile, this::report);
     }
@@ -85,17 +86,27 @@ public final class Simulator {
     /** How many DMC lines have been replayed. */
     private int dmcLines;
 
-    /** Told of every DMC line replayed, with the cycle clock before and after it (gcnc.CompileObserver#replayed). */
+    /**
+     * Told of every DMC line replayed, with the cycle clock before and after it (gcnc.CompileObserver#replayed),
+     * and of every motion that ran, at the line that waits for it, after that line ({@link Sequence};
+     * gcnc.CompileObserver#sequence).
+     */
     @FunctionalInterface
     public interface Replayed {
         void line(Instruction line, double secondsBefore, double secondsAfter);
+
+        default void sequence(Sequence s) {
+        }
     }
 
     private Replayed replayed;
+    /** Where each motion lies, told to {@link #replayed}. */
+    private final SequenceLog sequences = new SequenceLog();
 
-    /** Tells {@code r} of every line replayed from now on (null: nobody). */
+    /** Tells {@code r} of every line replayed and every motion run from now on (null: nobody). */
     public void onReplayed(Replayed r) {
         replayed = r;
+        sequences.listen(r);
     }
 
     public void begin(List<Instruction> header) {
@@ -184,9 +195,14 @@ public final class Simulator {
                 lastLocated = i.source();
             }
             double before = replayed == null ? 0 : checks.seconds();
+            if (replayed != null) {
+                sequences.running(before);
+            }
             dmc.run(i);
             if (replayed != null) {
-                replayed.line(i, before, checks.seconds());
+                double after = checks.seconds();
+                replayed.line(i, before, after);
+                sequences.ran(after);
             }
             lastRun = i.source();
             if (trace != null) {

@@ -19,6 +19,8 @@ final class VectorBuffer {
 
     private final Plane plane;
     private final ReplayListener out;
+    /** Where each motion lies, for whoever listens (the sender's view of the program). */
+    private final SequenceLog log;
     private double g1;
     private double g2;
     private double seqStart1;
@@ -55,9 +57,20 @@ final class VectorBuffer {
      */
     private long avTrip = -1;
 
-    VectorBuffer(Plane plane, ReplayListener out) {
+    VectorBuffer(Plane plane, ReplayListener out, SequenceLog log) {
         this.plane = plane;
         this.out = out;
+        this.log = log;
+    }
+
+    /** A command of a motion runs (VS, a thread pass's GA; a segment): the log's motion starts here if none is under way. */
+    void open() {
+        log.open(g1, g2);
+    }
+
+    /** AMS, a thread pass's AM: the motion that ran is waited for. */
+    void waited() {
+        log.waited();
     }
 
     /** Puts the axes at a position (machine counts): the start, or a resync after a mismatch. */
@@ -140,6 +153,7 @@ final class VectorBuffer {
         startIfNeeded();
         double e1 = seqStart1 + c.first();
         double e2 = seqStart2 + c.second();
+        log.line(cursor1, cursor2, e1, e2);
         // made with its speeds (no copy: one per replayed segment)
         add(new Segment(plane.machineX(cursor1, cursor2), plane.machineZ(cursor1, cursor2),
                 plane.machineX(e1, e2), plane.machineZ(e1, e2), false, 0, 0, 0, 0, 0, at,
@@ -152,10 +166,16 @@ final class VectorBuffer {
         startIfNeeded();
         double[] end = new double[2];
         Segment arc = plane.cr(cursor1, cursor2, c.radius().value(), c.start().value(), c.sweep().value(), at, end);
+        if (log.listening()) {
+            // the centre back in the plane (exact: the machine frame only changes signs)
+            log.arc(cursor1, cursor2, end[0], end[1], plane.galil1(arc.centreX(), arc.centreZ()),
+                    plane.galil2(arc.centreX(), arc.centreZ()), c.radius().value(), c.start().value(), c.sweep().value());
+        }
         add(arc, end[0], end[1], c.speeds(), at);
     }
 
     private void startIfNeeded() {
+        open();
         if (pending.isEmpty()) {
             seqStart1 = g1;
             seqStart2 = g2;
@@ -183,6 +203,7 @@ final class VectorBuffer {
         if (pending.isEmpty()) {
             return;
         }
+        log.started(speed, cursor1, cursor2, false);
         // The controller's position is whole counts: an arc that ends a fraction off its target
         // leaves the axes at the nearest count, and the next sequence starts from there.
         g1 = Math.rint(cursor1);
@@ -201,6 +222,7 @@ final class VectorBuffer {
 
     /** A sequence that is not the buffer's (a geared thread pass, which always cuts), ending at (end1, end2). */
     void run(List<Segment> segments, double speed, double end1, double end2, gcnc.dmc.Source at) {
+        log.started(speed, end1, end2, true);
         g1 = end1;
         g2 = end2;
         feedMarked = true;
@@ -247,6 +269,7 @@ final class VectorBuffer {
 
     /** AMS: what follows is at rest, after no trip point. */
     void atRest() {
+        log.waited();
         avTrip = -1;
     }
 

@@ -1,17 +1,22 @@
-package gcnc.send;
+package gcnc.sim;
 
 import java.util.List;
 
 /**
- * One motion of the downloaded program as the controller runs it: a vector sequence ({@code VS},
+ * One motion of a program as the simulator's controller ran it, published to whoever listens
+ * ({@link Simulator.Replayed#sequence}; the compile's observer, gcnc.CompileObserver#sequence): the
+ * sender's sequences are these (gcnc.send.DmcProgram), so that its resume, progress and way back rest on
+ * the replay that judged the program. It is a vector sequence ({@code VS},
  * {@code VP}/{@code CR}..., {@code VE}, {@code BGS}, {@code AMS}) or a thread pass ({@code GA} ...
  * {@code PA}, {@code BG}, {@code AM}), with where it starts and ends in Galil coordinates of the
  * vector plane (absolute: the program starts at the profile's home).
  *
- * @param first    index of its first DMC line (0-based, as the controller numbers program lines)
- * @param last     index of its last line ({@code AMS} or {@code AM})
- * @param start    Galil coordinates where it starts
- * @param end      Galil coordinates where it ends
+ * @param first    index of its first DMC line (0-based, as the controller numbers program lines): its
+ *                 {@code VS}, its first segment or a thread pass's {@code GA}, the first after the last wait
+ * @param last     index of its last line ({@code AMS} or {@code AM}: the wait for it)
+ * @param start    Galil coordinates where it starts: where the axes stand, whole counts
+ * @param end      Galil coordinates where it ends: its last segment's end (an arc's may be a fraction
+ *                 of a count off; the controller ends on the nearest count, where the next one starts)
  * @param speed    its VS, counts/s (0 for a thread pass)
  * @param pieces   its segments, in order; empty for a thread pass (it cannot be entered mid-way)
  * @param seconds  how long it takes: the simulator's cycle clock over its lines (corner speeds, ramps, a
