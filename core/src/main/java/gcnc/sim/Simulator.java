@@ -253,43 +253,16 @@ public final class Simulator {
     private final class Events implements ReplayListener {
         @Override
         public void sequence(List<Segment> segments, double speed, Source at) {
-            // the runs of segments from one motion each, and the motions they carry out (kept in
-            // fields, reused from one sequence to the next: a sequence is a handful of segments)
-            meant.clear();
-            int runs = 0;
-            if (expected != null) {
-                for (int i = 0; i < segments.size(); ) {
-                    Source from = segments.get(i).source();
-                    int j = i + 1;
-                    while (j < segments.size() && java.util.Objects.equals(segments.get(j).source(), from)) {
-                        j++;
-                    }
-                    ExpectedMotions.Expected e = expected.match(from, segments.get(i), segments.get(j - 1));
-                    if (e == null) {
-                        report(Code.E311_SIM_SEQUENCE_COUNT, at, 0, 1); // a sequence no motion of the program asked for
-                    } else {
-                        meant.add(e);
-                        if (runs == runFrom.length) {
-                            runFrom = java.util.Arrays.copyOf(runFrom, 2 * runs);
-                            runTo = java.util.Arrays.copyOf(runTo, 2 * runs);
-                        }
-                        runFrom[runs] = i;
-                        runTo[runs] = j;
-                        runs++;
-                    }
-                    i = j;
-                }
+            // the runs of segments from one motion each, and the motions they carry out
+            for (int n = meant.match(segments, expected); n > 0; n--) {
+                report(Code.E311_SIM_SEQUENCE_COUNT, at, 0, 1); // a sequence no motion of the program asked for
             }
             Motion m = meant.isEmpty() ? null : meant.get(0).motion();
             if (m != null) {
                 checks.frame(meant.get(0).block().frame());
                 if (meant.size() > 1) {
                     // a sequence of several blocks: each segment's findings in its own block's coordinates
-                    gcnc.ir.ProgramFrame[] frames = new gcnc.ir.ProgramFrame[segments.size()];
-                    for (int k = 0; k < meant.size(); k++) {
-                        java.util.Arrays.fill(frames, runFrom[k], runTo[k], meant.get(k).block().frame());
-                    }
-                    checks.frames(frames);
+                    checks.frames(meant.frames());
                 }
             }
             boolean rapid = expected == null ? speed == profile.rapidSpeed() && !dmc.feedMarked()
@@ -298,7 +271,7 @@ public final class Simulator {
             boolean open = !rapid && outputs.chuckKnown && !outputs.closed;
             boolean removed = checks.sequence(segments, speed, rapid, at, dmc.acceleration(), dmc.deceleration(),
                     stopped || open);
-            corners.check(segments, speed, at, meant.isEmpty() ? null : numbers);
+            corners.check(segments, speed, at, meant.isEmpty() ? null : meant.numbers);
             // A feed that takes no material (a bar puller's pull, a move in the air) is not a cut. With
             // no blank that cannot be told: a bare replay judges every feed a cut, as nothing else judges
             // it; a compile leaves it to the checker's warning (E660/E661), errors (E037/E038) elsewhere.
@@ -312,32 +285,15 @@ public final class Simulator {
             for (int k = 0; k < meant.size(); k++) {
                 ExpectedMotions.Expected e = meant.get(k);
                 checks.frame(e.block().frame());
-                List<Segment> run = meant.size() == 1 && runFrom[0] == 0 && runTo[0] == segments.size() ? segments
-                        : segments.subList(runFrom[k], runTo[k]);
-                double[] resync = checks.conformance(e.motion(), run, at(e.block()));
+                double[] resync = checks.conformance(e.motion(), meant.run(k, segments), at(e.block()));
                 if (resync != null && k == meant.size() - 1) {
                     dmc.moveTo(resync[0], resync[1]);
                 }
             }
         }
 
-        /** The motions the last sequence carried out, in order, and the segments of each: runFrom[k] to runTo[k]. */
-        private final List<ExpectedMotions.Expected> meant = new ArrayList<>();
-        private int[] runFrom = new int[8];
-        private int[] runTo = new int[8];
-        /**
-         * The N word of the last sequence's segment k (null where its block has none, or no motion
-         * asked for it), for the corner report, which asks only for the corners it keeps.
-         */
-        private final java.util.function.IntFunction<String> numbers = k -> {
-            for (int r = 0; r < meant.size(); r++) {
-                if (k >= runFrom[r] && k < runTo[r]) {
-                    gcnc.ir.ProgramFrame f = meant.get(r).block().frame();
-                    return f == null ? null : f.number();
-                }
-            }
-            return null;
-        };
+        /** The motions of the program the last sequence carried out (reused from one to the next). */
+        private final MeantMotions meant = new MeantMotions();
 
         @Override
         public void dwell(double seconds, int line) {
