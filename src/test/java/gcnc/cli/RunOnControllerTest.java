@@ -11,6 +11,7 @@ import gcnc.controller.InjectedFault;
 import gcnc.controller.Model;
 import gcnc.controller.VirtualController;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import gcnc.send.DmcProgram;
 import gcnc.send.MapReader;
 import gcnc.sim.Sequence;
@@ -85,7 +86,7 @@ class RunOnControllerTest {
     /** The haas profile's home in Galil counts of the plane: where the program was verified to start. */
     static long[] home() throws Exception {
         MachineProfile p = haas();
-        double[] g = DmcProgram.Plane.of(p).galil(p.home().x(), p.home().z());
+        double[] g = Plane.of(p).galil(p.home().x(), p.home().z());
         return new long[] {Math.round(g[0]), Math.round(g[1])};
     }
 

@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.controller.VirtualController;
+import gcnc.machine.Plane;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -96,7 +97,7 @@ class RunStreamTest {
     void theBishopRunsThePathStreamedOverAPtyThatItRunsAsOneProgram() throws Exception {
         org.junit.jupiter.api.Assumptions.assumeTrue(gcnc.PtyPair.available(), "socat (setup.sh installs it)");
         gcnc.machine.MachineProfile thesis = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine("thesis-2004")).profile();
-        double[] g = gcnc.send.DmcProgram.Plane.of(thesis).galil(thesis.home().x(), thesis.home().z());
+        double[] g = Plane.of(thesis).galil(thesis.home().x(), thesis.home().z());
         long[] home = {Math.round(g[0]), Math.round(g[1])};
         Path dir = Files.createTempDirectory("gcnc-pty");
         Path bishop = Files.copy(Path.of("samples/bishop.nc"), dir.resolve("bishop.nc"));

@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gcnc.controller.VirtualController;
 import gcnc.machine.MachineProfile;
-import gcnc.send.DmcProgram;
+import gcnc.machine.Plane;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -103,7 +103,7 @@ class RunThreadTest {
     private static void assertOnTheSimulatorsPath(Path p, Path trace) throws Exception {
         // the simulator's replay of the same DMC: where each sequence (BGS) and each pass (BG XY) leaves the axes
         MachineProfile haas = RunOnControllerTest.haas();
-        DmcProgram.Plane plane = DmcProgram.Plane.of(haas);
+        Plane plane = Plane.of(haas);
         List<String> simulated = new ArrayList<>();
         for (String line : gcnc("", "simulate", p.resolveSibling("part.dmc").toString(), "--machine", "haas", "--trace")
                 .out().lines().toList()) {

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import gcnc.controller.VirtualController;
+import gcnc.machine.Plane;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -40,7 +41,7 @@ class RunTimeTest {
     /** The DP that defines the axes at {@code machine}'s home, as its homing routine leaves them. */
     static String home(String machine) throws Exception {
         gcnc.machine.MachineProfile p = gcnc.Session.open(gcnc.Session.Options.defaults().withMachine(machine)).profile();
-        gcnc.send.DmcProgram.Plane plane = gcnc.send.DmcProgram.Plane.of(p);
+        Plane plane = Plane.of(p);
         double[] g = plane.galil(p.home().x(), p.home().z());
         String[] at = new String[plane.second() + 1];
         java.util.Arrays.fill(at, "");

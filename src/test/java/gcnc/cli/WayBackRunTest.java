@@ -16,6 +16,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import gcnc.controller.VirtualController;
+import gcnc.machine.Plane;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -58,7 +59,7 @@ class WayBackRunTest {
             assertTrue(r.out().contains("way back: X in to the block's start, to X41.999 Z2.000 (Galil counts "), r.out());
             List<String> ends = path(trace).subList(before, path(trace).size());
             // machine X and Z of home and of each leg's end (the plane's counts in the profile's order)
-            gcnc.send.DmcProgram.Plane plane = gcnc.send.DmcProgram.Plane.of(RunOnControllerTest.haas());
+            Plane plane = Plane.of(RunOnControllerTest.haas());
             long[] h = home();
             double[] from = plane.machine(new double[] {h[0], h[1]});
             double[] z = plane.machine(end(ends.get(0)));

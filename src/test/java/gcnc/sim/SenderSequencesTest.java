@@ -7,6 +7,7 @@ import gcnc.Session;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import gcnc.send.CompiledRun;
 import gcnc.send.DmcProgram;
 import gcnc.send.MapReader;
@@ -95,7 +96,7 @@ class SenderSequencesTest {
             public void report(Code code, gcnc.dmc.Source at, Object... args) {
             }
         };
-        Plane plane = new Plane(profile);
+        Plane plane = Plane.of(profile);
         ThreadGearing gearing = new ThreadGearing(plane, profile.encoder().map(e -> Plane.channel(e.channel())).orElse(-1),
                 profile.encoder().map(e -> e.countsPerRev()).orElse(0), profile.rpmPerVolt(),
                 Simulator.threadTolerance(profile, SimOptions.defaults()), record);
@@ -110,7 +111,7 @@ class SenderSequencesTest {
     }
 
     static void same(String name, DmcProgram program, List<Ran> ran, MachineProfile profile) {
-        Plane plane = new Plane(profile);
+        Plane plane = Plane.of(profile);
         List<Sequence> sequences = program.sequences();
         assertEquals(ran.size(), sequences.size(), name + ": sequences");
         for (int k = 0; k < ran.size(); k++) {

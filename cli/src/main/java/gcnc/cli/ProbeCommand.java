@@ -4,6 +4,7 @@ import gcnc.diag.Code;
 import gcnc.diag.Messages;
 import gcnc.machine.GalilModel;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import gcnc.send.GalilClient;
 import gcnc.send.LinkFault;
 import gcnc.send.Probe;
@@ -82,7 +83,7 @@ final class ProbeCommand extends StreamsCommand {
     }
 
     private int probe(MachineProfile profile, GalilModel model, Messages messages, PrintWriter out, PrintWriter err) {
-        gcnc.send.DmcProgram.Plane plane = gcnc.send.DmcProgram.Plane.of(profile);
+        Plane plane = Plane.of(profile);
         char first = gcnc.send.MachineLink.letter(plane.first());
         char second = gcnc.send.MachineLink.letter(plane.second());
         Probe.Motion motion = null;

@@ -126,7 +126,7 @@ public sealed interface Command {
          * The arc a Galil draws for {@code CR r,θ,Δθ} from (p1, p2) in the vector plane: the centre from
          * the start angle (0° along the first plane axis, counter-clockwise positive), the end from
          * θ + Δθ; {centre1, centre2, end1, end2}. The one place of this arithmetic for the simulator's
-         * replay (gcnc.sim.Plane) and the virtual controller (gcnc.controller), so that both end every
+         * replay (gcnc.sim.Segment.cr) and the virtual controller (gcnc.controller), so that both end every
          * arc on the same double and their paths compare count for count.
          */
         public static double[] geometry(double p1, double p2, double r, double startDeg, double sweepDeg) {

@@ -193,7 +193,7 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
         String v = e.get().value().strip();
         Matcher m = OFFSET.matcher(v);
         if (m.matches() && (m.group(1) == null
-                || channel(Character.toUpperCase(m.group(1).charAt(0))) == channel(spindleAxis))) {
+                || Plane.channel(Character.toUpperCase(m.group(1).charAt(0))) == Plane.channel(spindleAxis))) {
             return new SpindleDrive.Offset(spindleAxis);
         }
         m = ANALOG.matcher(v);
@@ -287,12 +287,6 @@ public record MachineIo(SpindleDrive drive, AtSpeed atSpeed, Optional<Turret> tu
             return new Homing.None();
         }
         throw f.fault(e.get(), Code.E434_HOMING_CHECK, v);
-    }
-
-    /** A Galil channel's place: X, Y, Z, W are A, B, C, D. */
-    private static int channel(char letter) {
-        int xyzw = "XYZW".indexOf(letter);
-        return xyzw >= 0 ? xyzw : letter - 'A';
     }
 
     /** An output the model has, as the M codes' outputs must be (E424, GalilModels). */

@@ -45,7 +45,7 @@ final class ProfileAxes {
         }
         char channel = channelLetter(f, "spindle.encoder_axis", f.text("spindle.axis", "C"));
         for (Axis a : new Axis[] {x, z}) {
-            if (channel(channel) == channel(a.galil())) {
+            if (Plane.channel(channel) == Plane.channel(a.galil())) {
                 throw f.fault(f.entry("spindle.encoder_axis").orElse(e), Phrase.ENCODER_ON_TOOL_AXIS.with(channel,
                         a == x ? "X" : "Z", a == x ? "x" : "z", a.galil()));
             }
@@ -89,7 +89,7 @@ final class ProfileAxes {
     static char spindleAxis(ProfileFile f, Axis x, Axis z) throws TableException {
         char s = channelLetter(f, "spindle.axis", "C");
         for (Axis a : new Axis[] {x, z}) {
-            if (channel(s) == channel(a.galil())) {
+            if (Plane.channel(s) == Plane.channel(a.galil())) {
                 throw f.fault(f.required("spindle.axis"), Phrase.SPINDLE_ON_TOOL_AXIS.with(s,
                         a == x ? "X" : "Z", a == x ? "x" : "z", a.galil()));
             }
@@ -97,11 +97,6 @@ final class ProfileAxes {
         return s;
     }
 
-    /** A Galil channel's number: X, Y, Z, W are the first four channels, A, B, C, D. */
-    static int channel(char letter) {
-        int xyzw = "XYZW".indexOf(letter);
-        return xyzw >= 0 ? xyzw : letter - 'A';
-    }
 
     /**
      * A machine position {@code x, z} in mm (home, machine_zero), in counts. It must be inside the

@@ -128,7 +128,7 @@ public final class ProfileLoader {
         Blending.read(f, c); // checked here, at the key's line; the planner reads it again (Blending.of)
         Axis x = ProfileAxes.axis(f, "x");
         Axis z = ProfileAxes.axis(f, "z");
-        if (ProfileAxes.channel(x.galil()) == ProfileAxes.channel(z.galil())) {
+        if (Plane.channel(x.galil()) == Plane.channel(z.galil())) {
             throw f.fault(f.required("z.galil"), Phrase.SAME_CHANNEL.arg());
         }
         char spindleAxis = ProfileAxes.spindleAxis(f, x, z);

@@ -6,6 +6,7 @@ import gcnc.dmc.DmcReader;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.Source;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import gcnc.sim.Sequence;
 import java.util.ArrayList;
 import java.util.List;
@@ -30,47 +31,6 @@ public final class DmcProgram {
     private final Plane plane;
     /** The characters of one controller line: what the downloaded pieces are packed to. */
     private final int lineWidth;
-
-    /**
-     * The vector plane: the two Galil channels in channel order (A before B, as {@code VM} lists
-     * them), which lathe axis each is, and their signs.
-     *
-     * @param first      channel index (A/X = 0 ... H = 7) of the plane's first channel
-     * @param second     channel index of the second
-     * @param xFirst     lathe X is the first channel (else lathe Z is)
-     */
-    public record Plane(int first, int second, boolean xFirst, int xSign, int zSign) {
-        public static Plane of(MachineProfile p) {
-            int x = channel(p.x().galil());
-            int z = channel(p.z().galil());
-            return new Plane(Math.min(x, z), Math.max(x, z), x < z, p.x().sign(), p.z().sign());
-        }
-
-        /** The channel index of a Galil axis letter: X Y Z W = A B C D = 0 1 2 3, E..H = 4..7. */
-        public static int channel(char c) {
-            return switch (Character.toUpperCase(c)) {
-                case 'X' -> 0;
-                case 'Y' -> 1;
-                case 'Z' -> 2;
-                case 'W' -> 3;
-                default -> Character.toUpperCase(c) - 'A';
-            };
-        }
-
-        /** Machine counts (lathe X as a radius, Z) of a point in Galil plane coordinates. */
-        public double[] machine(double[] galil) {
-            double x = (xFirst ? galil[0] : galil[1]) * xSign;
-            double z = (xFirst ? galil[1] : galil[0]) * zSign;
-            return new double[] {x, z};
-        }
-
-        /** Galil plane coordinates of machine counts. */
-        public double[] galil(double x, double z) {
-            double gx = x * xSign;
-            double gz = z * zSign;
-            return xFirst ? new double[] {gx, gz} : new double[] {gz, gx};
-        }
-    }
 
     private DmcProgram(List<Instruction> instructions, List<Sequence> sequences,
                        int[] sequenceOf, double[] secondsBefore, double totalSeconds, Plane plane, int lineWidth) {

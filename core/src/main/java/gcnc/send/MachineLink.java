@@ -2,6 +2,7 @@ package gcnc.send;
 
 import gcnc.diag.Code;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -15,9 +16,9 @@ import java.util.Locale;
 public final class MachineLink {
     private final GalilClient client;
     private final MachineProfile profile;
-    private final DmcProgram.Plane plane;
+    private final Plane plane;
 
-    public MachineLink(GalilClient client, MachineProfile profile, DmcProgram.Plane plane) {
+    public MachineLink(GalilClient client, MachineProfile profile, Plane plane) {
         this.client = client;
         this.profile = profile;
         this.plane = plane;
@@ -280,7 +281,7 @@ public final class MachineLink {
 
     /** {@code OF} with 0 V in the spindle channel's place ({@code OF ,,0} for C). */
     public String spindleZero() {
-        return "OF " + ",".repeat(DmcProgram.Plane.channel(profile.spindleAxis())) + "0";
+        return "OF " + ",".repeat(Plane.channel(profile.spindleAxis())) + "0";
     }
 
     private boolean tryCommand(String c) {

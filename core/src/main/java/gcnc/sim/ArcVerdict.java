@@ -9,6 +9,7 @@ import gcnc.galil.GalilNumbers;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -23,7 +24,7 @@ import java.util.List;
  * <p>Here each arc is planned exactly as the backend plans it ({@link ArcPlanner#forMotion}, the
  * same code), from the whole-count position the controller is at (the arc's start rounded: every
  * sequence the galil dialect writes ends on its target's count), replayed into segments as the DMC
- * interpreter replays a CR (the same {@code Plane.cr}; ArcVerdictTest compares check's codes with
+ * interpreter replays a CR (the same {@code Segment.cr}; ArcVerdictTest compares check's codes with
  * compile's) and compared with the program by
  * the simulator's own {@link Conformance} at the default tolerance. Same codes, same lines.
  *
@@ -49,7 +50,7 @@ public final class ArcVerdict {
     public ArcVerdict(MachineProfile profile, Diagnostics out) {
         this.limits = profile.controllerLimits();
         this.frame = new GalilFrame(profile);
-        this.plane = new Plane(profile);
+        this.plane = Plane.of(profile);
         this.out = out;
         SimOptions options = SimOptions.defaults();
         this.conformance = new Conformance((code, at, args) -> {
@@ -106,7 +107,7 @@ public final class ArcVerdict {
         double start = GalilNumbers.printedAngle(w.cr().start()); // the value the printed angle stands for,
         double sweep = GalilNumbers.printedAngle(w.cr().sweep()); // without printing it and reading it back
         List<Segment> segs = new ArrayList<>(2);
-        segs.add(plane.cr(su, sv, w.cr().radius(), start, sweep, new gcnc.dmc.Instruction(
+        segs.add(Segment.cr(plane, su, sv, w.cr().radius(), start, sweep, new gcnc.dmc.Instruction(
                 new gcnc.dmc.Command.CircularArc(gcnc.dmc.Fixed.of(w.cr().radius()),
                         gcnc.dmc.Fixed.fourDecimals(w.cr().start()), gcnc.dmc.Fixed.fourDecimals(w.cr().sweep())),
                 gcnc.dmc.Source.line(line)), new double[2]));

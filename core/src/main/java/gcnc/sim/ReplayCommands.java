@@ -3,6 +3,7 @@ package gcnc.sim;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
+import gcnc.machine.Plane;
 
 /**
  * What each DMC command does in the replay (docs/dmc-format.md, both dialects), one visit per
@@ -88,14 +89,14 @@ final class ReplayCommands extends FlowCommands {
     public Void servoHere(Command.ServoHere c) {
         boolean spindle = c.axes().length() == 1 && Plane.channel(c.axes().charAt(0)) == spindleChannel;
         if (!afterEnd() && !spindle && !plane.sameChannels(c.axes())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, source(), "SH", c.axes(), plane.letters);
+            out.report(Code.E313_SIM_VECTOR_PLANE, source(), "SH", c.axes(), plane.letters());
         }
         return null;
     }
 
     public Void vectorMode(Command.VectorMode c) {
         if (!afterEnd() && !plane.sameChannels(c.axes())) {
-            out.report(Code.E313_SIM_VECTOR_PLANE, source(), "VM", c.axes(), plane.letters);
+            out.report(Code.E313_SIM_VECTOR_PLANE, source(), "VM", c.axes(), plane.letters());
         }
         return null;
     }
@@ -327,7 +328,7 @@ final class ReplayCommands extends FlowCommands {
     public Void softLimit(Command.SoftLimit c) {
         if (!afterEnd() && !plane.sameChannels("" + c.first() + c.second())) {
             out.report(Code.E313_SIM_VECTOR_PLANE, source(), c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
-                    plane.letters);
+                    plane.letters());
         }
         return null;
     }

@@ -3,6 +3,7 @@ package gcnc.sim;
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
 import gcnc.dmc.SequencePart;
+import gcnc.machine.Plane;
 import java.util.ArrayList;
 import java.util.List;
 

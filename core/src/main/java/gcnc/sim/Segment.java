@@ -15,6 +15,29 @@ record Segment(double fromX, double fromZ, double toX, double toZ, boolean arc, 
         this(fromX, fromZ, toX, toZ, arc, centreX, centreZ, radius, startDeg, sweepDeg, instruction, Double.NaN, Double.NaN);
     }
 
+    /**
+     * The arc a Galil {@code CR r,start,sweep} draws from the Galil-plane position (p1, p2), as the
+     * controller derives it: the centre from the start angle, the end from start + sweep. One
+     * place for the replay ({@code ReplayController}) and for check's prediction of it
+     * ({@code ArcVerdict}), so that the two cannot differ. {@code end} receives the end in the
+     * Galil plane (first, second channel).
+     */
+    static Segment cr(gcnc.machine.Plane plane, double p1, double p2, double r, double startDeg, double sweepDeg,
+                      gcnc.dmc.Instruction instruction, double[] end) {
+        double[] g = gcnc.dmc.Command.CircularArc.geometry(p1, p2, r, startDeg, sweepDeg);
+        double c1 = g[0];
+        double c2 = g[1];
+        end[0] = g[2];
+        end[1] = g[3];
+        double fx = plane.machineX(p1, p2);
+        double fz = plane.machineZ(p1, p2);
+        double cx = plane.machineX(c1, c2);
+        double cz = plane.machineZ(c1, c2);
+        double from = Math.toDegrees(Math.atan2(fx - cx, fz - cz));
+        return new Segment(fx, fz, plane.machineX(end[0], end[1]), plane.machineZ(end[0], end[1]), true, cx, cz, r, from,
+                sweepDeg * plane.handedness(), instruction);
+    }
+
     /** The same segment with the speeds its command gives ({@code <o >p}; NaN where none). */
     Segment withSpeeds(double speed, double end) {
         return new Segment(fromX, fromZ, toX, toZ, arc, centreX, centreZ, radius, startDeg, sweepDeg, instruction, speed, end);

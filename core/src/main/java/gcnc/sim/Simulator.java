@@ -9,6 +9,7 @@ import gcnc.dmc.Source;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
+import gcnc.machine.Plane;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -51,7 +52,7 @@ public final class Simulator {
         this.profile = profile;
         this.options = options;
         this.diagnostics = diagnostics;
-        this.plane = new Plane(profile);
+        this.plane = Plane.of(profile);
         this.outputs = new OutputState(profile);
         this.machine = SimMachine.read(profile);
         this.checks = new MotionChecks(profile, machine, options, this::report);

@@ -3,6 +3,7 @@ package gcnc.sim;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
+import gcnc.machine.Plane;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -100,7 +101,7 @@ final class ThreadGearing {
 
     /** The plane's two channels in plane order (0: the first of VP's arguments). */
     private int planeChannel(int i) {
-        return Plane.channel(plane.letters.charAt(i));
+        return i == 0 ? plane.first() : plane.second();
     }
 
     /** The plane index (0, 1) of a channel, -1 when it is not a plane axis. */

@@ -3,6 +3,7 @@ package gcnc.sim;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.Instruction;
+import gcnc.machine.Plane;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -165,7 +166,7 @@ final class VectorBuffer {
     void cr(Command.CircularArc c, Instruction at) {
         startIfNeeded();
         double[] end = new double[2];
-        Segment arc = plane.cr(cursor1, cursor2, c.radius().value(), c.start().value(), c.sweep().value(), at, end);
+        Segment arc = Segment.cr(plane, cursor1, cursor2, c.radius().value(), c.start().value(), c.sweep().value(), at, end);
         if (log.listening()) {
             // the centre back in the plane (exact: the machine frame only changes signs)
             log.arc(cursor1, cursor2, end[0], end[1], plane.galil1(arc.centreX(), arc.centreZ()),

@@ -3,7 +3,7 @@ package gcnc.studio;
 import gcnc.controller.Model;
 import gcnc.controller.VirtualController;
 import gcnc.machine.MachineProfile;
-import gcnc.send.DmcProgram;
+import gcnc.machine.Plane;
 import java.io.IOException;
 import java.io.InputStream;
 import java.net.InetAddress;
@@ -50,7 +50,7 @@ final class VirtualLathe implements AutoCloseable {
      */
     synchronized void home(MachineProfile profile) throws IOException {
         String address = address(profile);
-        DmcProgram.Plane plane = DmcProgram.Plane.of(profile);
+        Plane plane = Plane.of(profile);
         double[] g = plane.galil(profile.home().x(), profile.home().z());
         // DP's fields are the channels in order: the plane's two may have others between them (DP a,,b)
         String[] fields = new String[plane.second() + 1];
