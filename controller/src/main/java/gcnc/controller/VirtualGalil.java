@@ -61,10 +61,8 @@ public final class VirtualGalil implements Expressions.Scope {
     private final boolean[] handles = new boolean[8];
     boolean limitTripped;
     private double time;
-    /** A slow-thread fault's milliseconds of controller time per statement; 0: the decode rate of 20 a millisecond. */
-    private final double statementMillis;
-    /** Under a slow-thread fault, the statements each thread is owed from the steps so far (its fraction). */
-    private double statementsOwed;
+    /** How many statements each thread runs in a step (20 a millisecond, or a slow-thread fault's). */
+    private final DecodeRate decode;
     private final SegmentTrace trace;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     final Statements statements;
@@ -110,8 +108,7 @@ public final class VirtualGalil implements Expressions.Scope {
         this.motion = new VectorMotion(model.galil, events);
         this.gearing = new Gearing(model.axes, motion.position, servo, offsets, spindleRate, events);
         motion.arm(faults);
-        this.statementMillis = faults.stream().filter(f -> f.kind() == InjectedFault.Kind.SLOW_THREAD)
-                .mapToDouble(InjectedFault::n).max().orElse(0);
+        this.decode = new DecodeRate(faults);
         this.statements = new Statements(this);
         if (this.trace != null) {
             this.trace.header(model.revision);
@@ -228,13 +225,7 @@ public final class VirtualGalil implements Expressions.Scope {
             gearing.advance(h, time, motion.axis1, motion.axis2);
             time += h;
             left -= h;
-            // Galil decodes a command in about 0.05 ms (DMC-40x0 user manual): 20 a millisecond per thread
-            int budget = Math.max(1, (int) Math.round(h * 20_000));
-            if (statementMillis > 0) {
-                statementsOwed += h * 1000 / statementMillis;
-                budget = (int) (statementsOwed + 1e-9); // ten steps of 0.1 owed are one statement, not 0.999...
-                statementsOwed -= budget;
-            }
+            int budget = decode.statements(h);
             for (ProgramThread t : threads) {
                 if (t.running()) {
                     statements.flow.run(t, budget);
