@@ -23,16 +23,14 @@ final class LanguageOption {
         if (lang != null) {
             return lang;
         }
-        if (command != null && command.root().userObject() instanceof Main m && m.lang != null) {
-            return m.lang;
-        }
         if (command != null && command.root().userObject() instanceof Main m) {
-            return fromEnvironment(m.streams().env()); // the client's environment, under the resident checker
+            // the one before the command, else the client's environment (under the resident checker)
+            return m.lang != null ? m.lang : fromEnvironment(m.streams().env());
         }
         return fromEnvironment(System.getenv());
     }
 
-    /** Spanish when the user's locale is Spanish (LC_ALL, then LANG, as POSIX orders them), else English. */
+    /** Spanish when the user's locale is Spanish (LC_ALL, then LC_MESSAGES, then LANG, as POSIX orders them), else English. */
     static ErrorMessages.Lang fromEnvironment(Map<String, String> env) {
         for (String name : new String[] {"LC_ALL", "LC_MESSAGES", "LANG"}) {
             String v = env.get(name);
