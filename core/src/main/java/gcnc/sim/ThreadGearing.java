@@ -73,10 +73,16 @@ final class ThreadGearing {
     private final double[] phaseLag = {-1, -1};
     /** The variables a {@code gpu=(_TPC-gsp)*_GRX-(_RPX-..)} line measured each axis's phase error into. */
     private final String[] phaseVariable = new String[2];
-    /** The largest such offset of any pass per thread line (docs/threading.md, "One groove"). */
-    private final java.util.Map<Integer, Double> phaseSpread = new java.util.TreeMap<>();
-    /** The threads already warned of (E340), by line. */
-    private final java.util.Set<Integer> phaseReported = new java.util.HashSet<>();
+    /**
+     * The threads already warned of (E340): a thread is its G-code line in its file (a called
+     * program's line 12 is not the main program's), so each thread is warned of once, at its first
+     * pass that starts off the helix by more than {@link #PHASE_TOLERANCE}.
+     */
+    private final java.util.Set<ThreadLine> phaseReported = new java.util.HashSet<>();
+
+    /** A thread's G-code line: its file (null for the program's own) and line number. */
+    private record ThreadLine(String file, int line) {
+    }
 
     /**
      * @param encoderChannel the spindle encoder's channel, -1 when the machine has none
@@ -188,13 +194,14 @@ final class ThreadGearing {
         }
     }
 
-    /** The pass's first trip point: its phase offset is what it is now; the thread's spread keeps the largest. */
+    /**
+     * The pass's first trip point: its phase offset is what it is now. The thread's phase spread
+     * is the largest over its passes (docs/threading.md, "One groove"), so the first pass above
+     * the tolerance is the one to warn at.
+     */
     private void closePhase(gcnc.dmc.Source at) {
-        int line = at.line();
         double lag = Math.max(phaseLag[0], phaseLag[1]);
-        Double before = phaseSpread.merge(line, lag, Math::max);
-        if (lag > PHASE_TOLERANCE && (before == lag) && !phaseReported.contains(line)) {
-            phaseReported.add(line);
+        if (lag > PHASE_TOLERANCE && phaseReported.add(new ThreadLine(at.file(), at.line()))) {
             out.report(Code.E340_SIM_THREAD_PHASE, at, String.format(java.util.Locale.ROOT, "%.0f", lag));
         }
         phaseLag[0] = -1;
