@@ -50,6 +50,15 @@ class CodeTableTest {
         }
     }
 
+    /** The number is read from the name (Code.number): every name is E, three digits, an underscore and words. */
+    @Test
+    void everyNameCarriesItsNumber() {
+        for (Code c : Code.values()) {
+            assertTrue(c.name().matches("E[0-9]{3}_[A-Z0-9_]+"), c.name());
+            assertEquals(c.name().substring(0, 4), String.format("E%03d", c.number()), c.name());
+        }
+    }
+
     @Test
     void idIsThreeDigits() {
         assertEquals("E037", Code.byNumber(37).id());

@@ -9,24 +9,18 @@ package gcnc.dmc;
  * runs: any length.
  */
 public enum Form {
-    PROGRAM("program"),
-    STREAM("stream");
+    PROGRAM,
+    STREAM;
 
-    private final String key;
-
-    Form(String key) {
-        this.key = key;
-    }
-
-    /** Its name on the command line and in the outputs ({@code --form program}). */
+    /** Its name on the command line and in the outputs ({@code --form program}): the constant's, in lower case. */
     public String key() {
-        return key;
+        return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
     }
 
     /** The form named {@code key}, or null. */
     public static Form of(String key) {
         for (Form f : values()) {
-            if (f.key.equals(key)) {
+            if (f.key().equals(key)) {
                 return f;
             }
         }

@@ -37,16 +37,11 @@ public record GalilModel(String name, String family, int axes, int digitalOutput
      * "Hardware Level Communications for ISA and PCI") needs Galil's bus driver.
      */
     public enum HostLink {
-        SERIAL_ETHERNET("serial-ethernet"), BUS("bus");
+        SERIAL_ETHERNET, BUS;
 
-        private final String spelling;
-
-        HostLink(String spelling) {
-            this.spelling = spelling;
-        }
-
+        /** The constant's name in lower case with hyphens, as the table's host_link column writes it. */
         public String spelling() {
-            return spelling;
+            return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
         }
     }
 

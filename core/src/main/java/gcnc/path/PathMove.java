@@ -31,16 +31,11 @@ public record PathMove(Kind kind, String file, int line, String block, String x,
                        String spindle, String spindleDir, String tool, String seconds) {
     /** The kinds of move, with the name the formats write. */
     public enum Kind {
-        RAPID("rapid"), FEED("feed"), ARC_CW("arc_cw"), ARC_CCW("arc_ccw"), THREAD("thread"), DWELL("dwell");
+        RAPID, FEED, ARC_CW, ARC_CCW, THREAD, DWELL;
 
-        private final String written;
-
-        Kind(String written) {
-            this.written = written;
-        }
-
+        /** The constant's name in lower case ({@code arc_cw}), as the CSV and JSON write it. */
         public String written() {
-            return written;
+            return name().toLowerCase(java.util.Locale.ROOT);
         }
     }
 

@@ -23,21 +23,16 @@ import java.util.Map;
 public record ProbeReport(String revision, String link, Map<String, String> facts, List<Result> rows) {
     /** confirmed, contradicted, not-checked: the JSON spellings. */
     public enum Status {
-        CONFIRMED("confirmed"), CONTRADICTED("contradicted"), NOT_CHECKED("not-checked");
+        CONFIRMED, CONTRADICTED, NOT_CHECKED;
 
-        private final String spelling;
-
-        Status(String spelling) {
-            this.spelling = spelling;
-        }
-
+        /** The constant's name in lower case with hyphens ({@code not-checked}). */
         public String spelling() {
-            return spelling;
+            return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
         }
 
         static Status of(String s) {
             for (Status v : values()) {
-                if (v.spelling.equals(s)) {
+                if (v.spelling().equals(s)) {
                     return v;
                 }
             }

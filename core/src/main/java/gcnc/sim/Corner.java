@@ -20,23 +20,17 @@ public record Corner(String file, int line, String number, double speedMmMin, do
     /** What sets a corner's speed. */
     public enum Why {
         /** The junction-deviation speed of the angle the path turns by (Grbl's model). */
-        JUNCTION("junction"),
+        JUNCTION,
         /** An arc's centripetal limit √(a·r), below the feed. */
-        ARC("arc"),
+        ARC,
         /** A segment too short to reach the corner's own speed, or to stop from it, with the machine's acceleration. */
-        ACCELERATION("acceleration"),
+        ACCELERATION,
         /** The path turns back: the machine stops (a sequence ends there). */
-        REVERSAL("reversal");
+        REVERSAL;
 
-        private final String key;
-
-        Why(String key) {
-            this.key = key;
-        }
-
-        /** The name in the JSON report. */
+        /** The name in the JSON report: the constant's, in lower case. */
         public String key() {
-            return key;
+            return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
         }
     }
 }
