@@ -22,4 +22,11 @@ class JsonEventsTest {
                 + "\"progress\":0.25,\"secondsLeft\":8.5,\"override\":1,\"held\":false}", s);
         assertEquals("step-wait", JsonEvents.kebab("StepWait"));
     }
+
+    /** A program stop's comment is the program's text: quotes, backslashes and control characters escaped (RFC 8259 §7). */
+    @Test
+    void textIsEscaped() {
+        assertEquals("{\"event\":\"program-stop\",\"line\":4,\"number\":\"40\",\"comment\":\"C:\\\\PARTS\\n\\t\\\"A\\\"\\u0001\"}",
+                JsonEvents.json(new Event.ProgramStop(4, "40", "C:\\PARTS\n\t\"A\"\u0001")));
+    }
 }

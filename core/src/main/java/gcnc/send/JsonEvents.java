@@ -1,5 +1,6 @@
 package gcnc.send;
 
+import com.google.gson.stream.JsonWriter;
 import java.io.PrintWriter;
 import java.lang.reflect.RecordComponent;
 import java.util.Locale;
@@ -22,73 +23,59 @@ public final class JsonEvents implements EventSink {
         out.flush();
     }
 
-    /** One event as a JSON object on one line. */
+    /** One event as a JSON object on one line (Gson's writer: its string escapes, gcnc's numbers). */
     public static String json(Event e) {
-        StringBuilder b = new StringBuilder("{\"event\":\"").append(kebab(e.getClass().getSimpleName())).append('"');
-        for (RecordComponent c : e.getClass().getRecordComponents()) {
-            Object v;
-            try {
-                v = c.getAccessor().invoke(e);
-            } catch (ReflectiveOperationException x) {
-                throw new IllegalStateException(x);
+        java.io.StringWriter text = new java.io.StringWriter();
+        try (JsonWriter w = new JsonWriter(text)) {
+            w.beginObject().name("event").value(kebab(e.getClass().getSimpleName()));
+            for (RecordComponent c : e.getClass().getRecordComponents()) {
+                w.name(c.getName());
+                value(w, accessor(c, e));
             }
-            b.append(",\"").append(c.getName()).append("\":");
-            value(b, v);
+            w.endObject();
+        } catch (java.io.IOException x) {
+            throw new java.io.UncheckedIOException(x); // a StringWriter does not fail
         }
-        return b.append('}').toString();
+        return text.toString();
     }
 
-    private static void value(StringBuilder b, Object v) {
+    private static Object accessor(RecordComponent c, Event e) {
+        try {
+            return c.getAccessor().invoke(e);
+        } catch (ReflectiveOperationException x) {
+            throw new IllegalStateException(x);
+        }
+    }
+
+    private static void value(JsonWriter w, Object v) throws java.io.IOException {
         if (v == null) {
-            b.append("null");
+            w.nullValue();
         } else if (v instanceof Double d) {
-            number(b, d);
-        } else if (v instanceof Number || v instanceof Boolean) {
-            b.append(v);
+            number(w, d);
+        } else if (v instanceof Number n) {
+            w.value(n);
+        } else if (v instanceof Boolean b) {
+            w.value(b);
         } else if (v instanceof double[] a) {
-            b.append('[');
-            for (int i = 0; i < a.length; i++) {
-                if (i > 0) {
-                    b.append(',');
-                }
-                number(b, a[i]);
+            w.beginArray();
+            for (double d : a) {
+                number(w, d);
             }
-            b.append(']');
+            w.endArray();
         } else {
-            string(b, v.toString());
+            w.value(v.toString());
         }
     }
 
-    private static void number(StringBuilder b, double d) {
+    /** Not known (NaN, infinite) is null; a whole number without a point; else at most four decimals. */
+    private static void number(JsonWriter w, double d) throws java.io.IOException {
         if (Double.isNaN(d) || Double.isInfinite(d)) {
-            b.append("null");
+            w.nullValue();
         } else if (d == Math.rint(d) && Math.abs(d) < 1e15) {
-            b.append((long) d);
+            w.value((long) d);
         } else {
-            b.append(String.format(Locale.ROOT, "%.4f", d).replaceAll("0+$", ""));
+            w.jsonValue(String.format(Locale.ROOT, "%.4f", d).replaceAll("0+$", ""));
         }
-    }
-
-    private static void string(StringBuilder b, String s) {
-        b.append('"');
-        for (int i = 0; i < s.length(); i++) {
-            char c = s.charAt(i);
-            switch (c) {
-                case '"' -> b.append("\\\"");
-                case '\\' -> b.append("\\\\");
-                case '\n' -> b.append("\\n");
-                case '\r' -> b.append("\\r");
-                case '\t' -> b.append("\\t");
-                default -> {
-                    if (c < 0x20) {
-                        b.append(String.format("\\u%04x", (int) c));
-                    } else {
-                        b.append(c);
-                    }
-                }
-            }
-        }
-        b.append('"');
     }
 
     static String kebab(String name) {
