@@ -1,5 +1,6 @@
 package gcnc.path;
 
+import com.google.gson.stream.JsonWriter;
 import java.util.List;
 
 /**
@@ -8,9 +9,10 @@ import java.util.List;
  * RFC 4180 quoting where a field needs it; or JSON Lines, one object per move with the same names
  * (a number bare, an empty value null), streamable and diffable line by line.
  *
- * <p>No CSV library: every field is a number, a fixed word, a block name or a file name, and the
- * one rule that can apply (a field holding a comma, a quote or a line end is quoted, its quotes
- * doubled) is the few lines of {@link #csvField}; commons-csv would add a jar for that.
+ * <p>JSON through Gson's writer (core's JSON library). No CSV library: every field is a number, a
+ * fixed word, a block name or a file name, and the one rule that can apply (a field holding a
+ * comma, a quote or a line end is quoted, its quotes doubled) is the few lines of
+ * {@link #csvField}; commons-csv would add a jar for that.
  */
 public enum PathFormat {
     CSV, JSON;
@@ -26,8 +28,8 @@ public enum PathFormat {
     /** One move as one line, without its line end. */
     public String line(PathMove m) {
         List<String> values = m.values();
-        StringBuilder b = new StringBuilder(160);
         if (this == CSV) {
+            StringBuilder b = new StringBuilder(160);
             for (int i = 0; i < values.size(); i++) {
                 if (i > 0) {
                     b.append(',');
@@ -36,22 +38,25 @@ public enum PathFormat {
             }
             return b.toString();
         }
-        b.append('{');
-        for (int i = 0; i < values.size(); i++) {
-            if (i > 0) {
-                b.append(',');
+        java.io.StringWriter text = new java.io.StringWriter(160);
+        try (JsonWriter w = new JsonWriter(text)) {
+            w.beginObject();
+            for (int i = 0; i < values.size(); i++) {
+                w.name(PathMove.COLUMNS.get(i));
+                String v = values.get(i);
+                if (v.isEmpty()) {
+                    w.nullValue();
+                } else if (PathMove.numeric(i)) {
+                    w.jsonValue(v); // written by PathMove as a JSON number already
+                } else {
+                    w.value(v);
+                }
             }
-            b.append('"').append(PathMove.COLUMNS.get(i)).append("\":");
-            String v = values.get(i);
-            if (v.isEmpty()) {
-                b.append("null");
-            } else if (PathMove.numeric(i)) {
-                b.append(v);
-            } else {
-                jsonString(v, b);
-            }
+            w.endObject();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e); // a StringWriter does not fail
         }
-        return b.append('}').toString();
+        return text.toString();
     }
 
     /** A CSV field (RFC 4180): quoted, its quotes doubled, when it holds a comma, a quote or a line end. */
@@ -60,20 +65,5 @@ public enum PathFormat {
             return v;
         }
         return '"' + v.replace("\"", "\"\"") + '"';
-    }
-
-    private static void jsonString(String v, StringBuilder b) {
-        b.append('"');
-        for (int i = 0; i < v.length(); i++) {
-            char c = v.charAt(i);
-            if (c == '"' || c == '\\') {
-                b.append('\\').append(c);
-            } else if (c < 0x20) {
-                b.append(String.format("\\u%04x", (int) c));
-            } else {
-                b.append(c);
-            }
-        }
-        b.append('"');
     }
 }
