@@ -1,5 +1,7 @@
 package gcnc;
 
+import static gcnc.sim.SvgWriter.escape;
+
 import gcnc.diag.Finding;
 import gcnc.machine.MachineProfile;
 import gcnc.machine.Units;
@@ -334,9 +336,5 @@ public final class SetupSheet {
 
     private static String plural(long n, String what) {
         return n + " " + what + (n == 1 ? "" : "s");
-    }
-
-    static String escape(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
 }

@@ -246,7 +246,8 @@ public final class SvgWriter {
         return "<polygon fill=\"" + fill + "\" fill-opacity=\"" + opacity + "\" stroke=\"#333\" points=\"" + p + "\"/>\n";
     }
 
-    static String escape(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    /** Text for XML or HTML, in an element or a quoted attribute (the SVG here, the setup sheet's page). */
+    public static String escape(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
 }
