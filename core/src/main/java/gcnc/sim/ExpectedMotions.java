@@ -123,29 +123,12 @@ final class ExpectedMotions {
         }
     };
 
-    /** Where a motion that moves starts ({@code end} false) or ends. */
+    /** Where a motion that moves starts ({@code end} false) or ends: every motion but a dwell has both. */
     private static Point end(Motion m, boolean end) {
-        return m.accept(new Motion.Visitor<Point>() {
-            @Override
-            public Point linear(Motion.Linear l) {
-                return end ? l.to() : l.from();
-            }
-
-            @Override
-            public Point arc(Motion.Arc a) {
-                return end ? a.to() : a.from();
-            }
-
-            @Override
-            public Point thread(Motion.Thread t) {
-                return end ? t.to() : t.from();
-            }
-
-            @Override
-            public Point dwell(Motion.Dwell d) {
-                throw new IllegalArgumentException("a dwell does not move");
-            }
-        });
+        if (!(m instanceof Motion.PathMotion p)) {
+            throw new IllegalArgumentException("a dwell does not move");
+        }
+        return end ? p.to() : p.from();
     }
 
     /** Whether the segments from {@code first} to {@code last} move as the motion moves, within the tolerance. */
