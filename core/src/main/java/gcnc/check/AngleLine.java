@@ -76,11 +76,11 @@ final class AngleLine {
         }
         RawBlock plain = b.called(without, b.last(), b.depth());
         if (x == z) {
-            out.error(Code.E606_ANGLE_NOT_SUPPORTED_YET, angle.span(), angle, x ? "both X and Z" : "no end point");
+            out.report(b.error(Code.E606_ANGLE_NOT_SUPPORTED_YET, angle.span(), angle, x ? "both X and Z" : "no end point"));
             return plain;
         }
         if (host.startsCycle(plain)) {
-            out.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle);
+            out.report(b.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle));
             return plain;
         }
         Dry dry = host.peek(bare(plain), from, new Diagnostics());
@@ -89,7 +89,7 @@ final class AngleLine {
         }
         Motion.Linear line = CornerWords.feedLine(dry.block().motions());
         if (line == null) {
-            out.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle);
+            out.report(b.error(Code.E633_ANGLE_NOT_ON_G01, angle.span(), angle));
             return plain;
         }
         Units u = dry.next().units();
@@ -103,14 +103,14 @@ final class AngleLine {
         Point end;
         if (x) {
             if (Math.abs(sin) < 1e-9) {
-                out.error(Code.E632_ANGLE_NO_SOLUTION, angle.span(), angle, "X");
+                out.report(b.error(Code.E632_ANGLE_NO_SOLUTION, angle.span(), angle, "X"));
                 return plain;
             }
             double dz = (p1.x() - p0.x()) / px * cos / sin;
             end = new Point(p1.x(), p0.z() + dz * pz);
         } else {
             if (Math.abs(cos) < 1e-9) {
-                out.error(Code.E632_ANGLE_NO_SOLUTION, angle.span(), angle, "Z");
+                out.report(b.error(Code.E632_ANGLE_NO_SOLUTION, angle.span(), angle, "Z"));
                 return plain;
             }
             double dx = (p1.z() - p0.z()) / pz * sin / cos;
@@ -170,7 +170,7 @@ final class AngleLine {
         }
         Motion.Linear line = CornerWords.feedLine(dry2.block().motions());
         if (line == null || !dry1.block().motions().isEmpty()) {
-            out.error(Code.E633_ANGLE_NOT_ON_G01, a1.span(), a1);
+            out.report(first.error(Code.E633_ANGLE_NOT_ON_G01, a1.span(), a1));
             return new RawBlock[] {one, two};
         }
         Units u = dry2.next().units();
@@ -185,7 +185,7 @@ final class AngleLine {
         double dx = (e.x() - s.x()) / px;
         double det = Math.sin(t2) * Math.cos(t1) - Math.cos(t2) * Math.sin(t1);
         if (Math.abs(det) < 1e-9) {
-            out.error(Code.E634_ANGLES_PARALLEL, a1.span(), a1, a2, second.line());
+            out.report(first.error(Code.E634_ANGLES_PARALLEL, a1.span(), a1, a2, second.line()));
             return new RawBlock[] {one, two};
         }
         double t = (dx * Math.cos(t2) - dz * Math.sin(t2)) / -det;

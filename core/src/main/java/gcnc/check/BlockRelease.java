@@ -55,7 +55,7 @@ final class BlockRelease {
     void made(CheckedBlock made, RawBlock b, ModalState prior, ModalState state, CycleOrigin origin, boolean thread) {
         if (state.nose() != NoseSide.OFF || prior.nose() != NoseSide.OFF) {
             noseInfo.put(made, new NoseInfo(state.nose(), profile.nose(state.toolOffset()),
-                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span(),
+                    state.toolOffset(), b.words().isEmpty() ? b.last() : b.words().get(0).span(), made.origin(),
                     NoseConflict.suspend(b, functions, prior.nose(), origin == null ? null : origin.cycle(), thread)));
         }
     }
@@ -85,7 +85,7 @@ final class BlockRelease {
         for (CheckedBlock c : made) {
             NoseInfo info = noseInfo.get(c);
             nose.accept(c, info != null ? info : new NoseInfo(NoseSide.OFF,
-                    profile.nose(state.toolOffset()), state.toolOffset(), Span.of(c.line(), 1)), emit);
+                    profile.nose(state.toolOffset()), state.toolOffset(), Span.of(c.line(), 1), c.origin()), emit);
         }
         noseInfo.clear();
         if (state.ended()) {

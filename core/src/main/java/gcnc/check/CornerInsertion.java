@@ -151,7 +151,7 @@ final class CornerInsertion {
             flow(angles.resolve(first, host.state(), host.out()), angleAloneFirst); // a corner on it is E609 below
         }
         if (held != null) {
-            host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word().span(), held.request.name(), lastLine);
+            host.out().report(held.block.error(Code.E609_CORNER_NO_NEXT_MOVE, held.request.word().span(), held.request.name(), lastLine));
             held = null;
         }
     }
@@ -165,7 +165,7 @@ final class CornerInsertion {
         if (b.malformed() || b.macro() != null || host.startsCycle(b)) {
             // a block gcnc cannot follow (reported on its own) or a cycle: no G01 to make the corner with
             if (!b.malformed() && b.macro() == null) {
-                host.out().error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word().span(), h.request.name(), b.line());
+                host.out().report(h.block.error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word().span(), h.request.name(), b.line()));
             }
             return release(b);
         }
@@ -181,7 +181,7 @@ final class CornerInsertion {
             boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
             if (dry.next().ended() || letters || h.still.size() >= STILL_LIMIT) {
                 // the end of the program; Fanuc: the very next block must move (PS0051); Haas: bounded
-                host.out().error(Code.E609_CORNER_NO_NEXT_MOVE, h.request.word().span(), h.request.name(), b.line());
+                host.out().report(h.block.error(Code.E609_CORNER_NO_NEXT_MOVE, h.request.word().span(), h.request.name(), b.line()));
                 return release(b);
             }
             h.still.add(b);
@@ -190,7 +190,7 @@ final class CornerInsertion {
         }
         Motion.Linear line = feedLine(dry.block());
         if (line == null) {
-            host.out().error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word().span(), h.request.name(), b.line());
+            host.out().report(h.block.error(Code.E610_CORNER_NEXT_NOT_G01, h.request.word().span(), h.request.name(), b.line()));
             return release(b);
         }
         return corner(h, b, line.to(), dry.next());
@@ -233,16 +233,16 @@ final class CornerInsertion {
         Point p2 = new Point(end.x() / px, end.z() / pz);
         CornerGeometry.Corner c = r.round() ? CornerGeometry.round(p0, p1, p2, r.size())
                 : CornerGeometry.chamfer(p0, p1, p2, r.size());
-        if (c.ok() && r.square() && !squareFits(r, p0, p1, p2, next)) {
+        if (c.ok() && r.square() && !squareFits(block, r, p0, p1, p2, next)) {
             return null;
         }
         if (!c.ok()) {
             if (c.failure() == CornerGeometry.Failure.IN_LINE) {
-                host.out().error(Code.E613_CORNER_IN_LINE, r.word().span(), r.name());
+                host.out().report(block.error(Code.E613_CORNER_IN_LINE, r.word().span(), r.name()));
             } else {
-                host.out().error(Code.E611_CORNER_TOO_LARGE, r.word().span(), r.name(), length(c.taken(), u),
+                host.out().report(block.error(Code.E611_CORNER_TOO_LARGE, r.word().span(), r.name(), length(c.taken(), u),
                         length(c.length(), u), c.failure() == CornerGeometry.Failure.FIRST_TOO_SHORT
-                                ? block.line() : next.line());
+                                ? block.line() : next.line()));
             }
             return null;
         }
@@ -263,25 +263,25 @@ final class CornerInsertion {
     }
 
     /** The 90-degree forms: the moves along the two axes, and I for a first move along Z, K along X. */
-    private boolean squareFits(Request r, Point p0, Point p1, Point p2, RawBlock next) {
+    private boolean squareFits(RawBlock block, Request r, Point p0, Point p1, Point p2, RawBlock next) {
         Letter l = r.word().letter();
         boolean alongZ = CornerGeometry.firstAlongZ(p0, p1);
         boolean letters = host.profile().control().corners() == Control.Corners.LETTERS;
         if (letters && (l == Letter.C || l == Letter.R) && !CornerGeometry.square(p0, p1, p2)) {
             // Fanuc's C and R are for a corner between the two axes (PS0054); at another angle the
             // control wants the direct drawing form with its comma, which gcnc reads
-            host.out().error(Code.E210_CORNER_WANTS_COMMA, r.word().span(), r.name(), next.line(), "," + l.name());
+            host.out().report(block.error(Code.E210_CORNER_WANTS_COMMA, r.word().span(), r.name(), next.line(), "," + l.name()));
             return false;
         }
         if (!CornerGeometry.square(p0, p1, p2) || l == Letter.I && !alongZ || l == Letter.K && alongZ) {
-            host.out().error(Code.E612_CORNER_NOT_SQUARE, r.word().span(), r.name(), next.line());
+            host.out().report(block.error(Code.E612_CORNER_NOT_SQUARE, r.word().span(), r.name(), next.line()));
             return false;
         }
         // Fanuc: the sign says which way the next move goes (C-1. into a -Z move); a corner the
         // other way is not a path gcnc can follow, and not what the program meant
         double along = alongZ ? p2.x() - p1.x() : p2.z() - p1.z();
         if (letters && Math.signum(along) != r.sign()) {
-            host.out().error(Code.E615_CORNER_SIGN, r.word().span(), r.name(), next.line());
+            host.out().report(block.error(Code.E615_CORNER_SIGN, r.word().span(), r.name(), next.line()));
             return false;
         }
         return true;

@@ -127,7 +127,7 @@ final class NoseCompensation {
             }
             held.add(b.motions().isEmpty() ? b : with(b, still(b), b.end()));
             if (held.size() > STILL_LIMIT) {
-                out.error(Code.E176_NOSE_TOO_MANY_STILL_BLOCKS, info.at(), STILL_LIMIT);
+                out.report(info.error(Code.E176_NOSE_TOO_MANY_STILL_BLOCKS, STILL_LIMIT));
                 Point end = closePerpendicular(emit);
                 flushHeld(emit);
                 if (end != null) {
@@ -181,7 +181,7 @@ final class NoseCompensation {
         if (n.radius() == 0 && !noted.get(info.offset())) {
             noted.set(info.offset());
             out.report(new Diagnostic(Code.E177_NOSE_NO_RADIUS, gcnc.diag.Severity.NOTE, info.at(),
-                    List.of(info.side().g(), Integer.toString(info.offset()), profile.name())));
+                    List.of(info.side().g(), Integer.toString(info.offset()), profile.name()), info.origin()));
         }
     }
 
@@ -201,8 +201,8 @@ final class NoseCompensation {
         }
         Motion first = path.get(0);
         if (!arcAtEnd(first, info) && e != 0 && Element.of(first).length() < Math.abs(e)) {
-            out.error(Code.E170_NOSE_START_UP_TOO_SHORT, info.at(), info.side().g(),
-                    mm(Element.of(first).length()), mm(Math.abs(e)));
+            out.report(info.error(Code.E170_NOSE_START_UP_TOO_SHORT, info.side().g(),
+                    mm(Element.of(first).length()), mm(Math.abs(e))));
         }
         mode = Mode.ACTIVE;
         pending = b;
@@ -349,7 +349,7 @@ final class NoseCompensation {
     private void close(Point end, List<Point> around, boolean meet, List<CheckedBlock> emit) {
         Element el = pendingElement;
         if (!meet || !NoseGeometry.forward(el, pendingStart, end)) {
-            out.error(Code.E172_NOSE_INTERFERENCE, pendingInfo.at(), mm(Math.abs(e)));
+            out.report(pendingInfo.error(Code.E172_NOSE_INTERFERENCE, mm(Math.abs(e))));
         }
         List<Point> corner = new ArrayList<>(around.size());
         for (Point q : around) {
@@ -366,7 +366,7 @@ final class NoseCompensation {
     private boolean arcAtEnd(Motion m, NoseInfo info) {
         Motion.Arc a = MotionKind.arc(m);
         if (a != null) {
-            out.error(Code.E171_NOSE_ARC_START_OR_EXIT, info.at(), "G0" + (a.clockwise() ? 2 : 3));
+            out.report(info.error(Code.E171_NOSE_ARC_START_OR_EXIT, "G0" + (a.clockwise() ? 2 : 3)));
         }
         return a != null;
     }
@@ -374,13 +374,13 @@ final class NoseCompensation {
     /** E173: a concave arc whose offset radius would be nothing or less. */
     private void checkArc(Element el, NoseInfo info) {
         if (el.arc() && el.offsetRadius(e) <= NoseGeometry.NOTHING) {
-            out.error(Code.E173_NOSE_ARC_TOO_TIGHT, info.at(), mm(el.radius()), mm(Math.abs(e)));
+            out.report(info.error(Code.E173_NOSE_ARC_TOO_TIGHT, mm(el.radius()), mm(Math.abs(e))));
         }
     }
 
     /** E179, once per block: a compensated move beyond the travel ({@link NoseTravel}). */
     private CheckedBlock travel(CheckedBlock b, NoseInfo info) {
-        NoseTravel.check(b, info.at(), profile, out);
+        NoseTravel.check(b, info, profile, out);
         return b;
     }
 

@@ -3,7 +3,6 @@ package gcnc.check;
 import gcnc.check.geom.NumberText;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
-import gcnc.diag.Span;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.Axis;
@@ -19,7 +18,7 @@ final class NoseTravel {
     }
 
     /** Reports E179 once for the block when one of its compensated moves leaves the travel. */
-    static void check(CheckedBlock b, Span at, MachineProfile profile, Diagnostics out) {
+    static void check(CheckedBlock b, NoseInfo at, MachineProfile profile, Diagnostics out) {
         for (Motion m : b.motions()) {
             double[] box;
             Motion.Arc a = MotionKind.arc(m);
@@ -39,15 +38,15 @@ final class NoseTravel {
         }
     }
 
-    private static boolean beyond(String name, Axis a, double min, double max, Span at, MachineProfile profile,
+    private static boolean beyond(String name, Axis a, double min, double max, NoseInfo at, MachineProfile profile,
                                   Diagnostics out) {
         double where = min < a.min() - 0.5 ? min : max > a.max() + 0.5 ? max : Double.NaN;
         if (Double.isNaN(where)) {
             return false;
         }
         double per = a.countsPerMm();
-        out.error(Code.E179_NOSE_BEYOND_TRAVEL, at, name, NumberText.plain(where / per, 3),
-                NumberText.plain(a.min() / per, 3), NumberText.plain(a.max() / per, 3), profile.name());
+        out.report(at.error(Code.E179_NOSE_BEYOND_TRAVEL, name, NumberText.plain(where / per, 3),
+                NumberText.plain(a.min() / per, 3), NumberText.plain(a.max() / per, 3), profile.name()));
         return true;
     }
 }

@@ -1,6 +1,7 @@
 package gcnc.check;
 
 import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.check.geom.NumberText;
@@ -60,8 +61,9 @@ final class ThreadRunIn {
             return;
         }
         double perMm = p.z().countsPerMm();
-        out.error(Code.E260_THREAD_RUN_IN, Span.of(b.line(), 1), NumberText.plain(given / perMm, 3),
+        // placed in the block's own file: a continuous G32 thread is joined, and checked, at its last pass
+        out.report(Diagnostic.error(Code.E260_THREAD_RUN_IN, Span.of(b.line(), 1), NumberText.plain(given / perMm, 3),
                 NumberText.plain(need / perMm, 3), NumberText.plain(speed / perMm * 60, 1),
-                NumberText.plain(p.acceleration() / perMm, 0));
+                NumberText.plain(p.acceleration() / perMm, 0)).in(b.origin()));
     }
 }

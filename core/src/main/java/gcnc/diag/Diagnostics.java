@@ -89,14 +89,18 @@ public final class Diagnostics {
         place.origin = java.util.Objects.requireNonNull(origin);
     }
 
+    /**
+     * Keeps a finding: one without an origin of its own is placed where the blocks being checked
+     * come from ({@link #placeIn}); one in a called program, placed so or by its maker (a block the
+     * nose compensation held until the next, the simulator's), gets its notes of the calls.
+     */
     public void report(Diagnostic d) {
-        Origin o = place.origin;
-        if (o != null && d.origin() == Origin.UNPLACED) {
-            d = d.in(o);
-            if (!o.calls().isEmpty()) {
-                withCalls(d);
-                return;
-            }
+        if (place.origin != null && d.origin() == Origin.UNPLACED) {
+            d = d.in(place.origin);
+        }
+        if (!d.origin().calls().isEmpty()) {
+            withCalls(d);
+            return;
         }
         add(d);
     }
@@ -248,12 +252,7 @@ public final class Diagnostics {
      */
     public void addAll(Diagnostics other) {
         for (int k = 0; k < other.all.size(); k++) {
-            Diagnostic d = other.all.get(k);
-            if (d.origin() != Origin.UNPLACED && !d.origin().calls().isEmpty()) {
-                withCalls(d);
-            } else {
-                report(d);
-            }
+            report(other.all.get(k));
         }
     }
 

@@ -1,5 +1,7 @@
 package gcnc.ir;
 
+import gcnc.diag.Code;
+import gcnc.diag.Diagnostic;
 import gcnc.diag.Origin;
 import gcnc.diag.Span;
 import java.util.List;
@@ -36,6 +38,15 @@ public record RawBlock(int line, List<Word> words, Span last, boolean malformed,
         if (deleteColumn < 0 || deleteColumn > 0 && blockDelete == 0) {
             throw new IllegalArgumentException("a mid-block '/' has a column and a level: " + deleteColumn);
         }
+    }
+
+    /**
+     * An error at {@code at} in this block, placed in its file and calls: for a check that reports
+     * on a block it held while the flow went on (a corner or an angle waiting for the next move,
+     * which may come from a called program).
+     */
+    public Diagnostic error(Code code, Span at, Object... args) {
+        return Diagnostic.error(code, at, args).in(origin);
     }
 
     /** A block of the program's own file. */
