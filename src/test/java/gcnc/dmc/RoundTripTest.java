@@ -50,7 +50,8 @@ class RoundTripTest {
                 assertEquals(line, String.join(";", printed), at);
                 lines++;
             }
-            if (all.stream().anyMatch(l -> l.contains(";"))) {
+            // the DMC corpus is written by hand, a case a line (gcnc.DmcCorpus): read and printed back, not packed
+            if (!f.startsWith(gcnc.DmcCorpus.DIR) && all.stream().anyMatch(l -> l.contains(";"))) {
                 packedFiles++;
                 assertEquals(all, LinePacker.pack(commands, 80).stream().map(LinePacker.Line::text).toList(), f.toString());
             }

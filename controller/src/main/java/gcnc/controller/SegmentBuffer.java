@@ -106,10 +106,13 @@ final class SegmentBuffer {
         startIfNeeded(running, at1, at2);
         double e1 = origin1 + a;
         double e2 = origin2 + b;
-        if (Math.abs(e1 - cursor1) > segment.max() || Math.abs(e2 - cursor2) > segment.max()) {
+        // COMALL VP: "The length of each vector segment must be limited to 8,388,607": the length, not each
+        // axis's part of it (once each axis was held to it, and VP 6000000,6000000 ran: the DMC corpus's
+        // segment-too-long)
+        double length = Math.hypot(e1 - cursor1, e2 - cursor2);
+        if (length > segment.max()) {
             throw new GalilException(Tc.RANGE);
         }
-        double length = Math.hypot(e1 - cursor1, e2 - cursor2);
         if (length == 0) {
             throw new GalilException(Tc.SEGMENT_TOO_SHORT);
         }

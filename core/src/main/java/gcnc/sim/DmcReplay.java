@@ -120,6 +120,9 @@ public final class DmcReplay {
         }
         Simulator sim = new Simulator(profile, options, diagnostics);
         List<Instruction> chunk = new ArrayList<>();
+        // a DMC file by itself is held to the controller's limits as a compile's output is (a hand-edited
+        // CR 9,0,90 is refused by the controller: it must not replay clean)
+        gcnc.galil.LimitCheck limits = new gcnc.galil.LimitCheck(profile.controllerLimits(), diagnostics, chunk::add);
         int lines = 0;
         try {
             java.util.Iterator<Read> first = head.iterator();
@@ -134,7 +137,7 @@ public final class DmcReplay {
                 // a blank or unreadable line is still a line of the file: the lines after it keep their numbers
                 Command c = r.command() != null ? r.command()
                         : new Command.Remark(r.faults().isEmpty() ? r.text().strip() : "");
-                chunk.add(new Instruction(c, r.at()));
+                limits.accept(new Instruction(c, r.at()));
                 if (chunk.size() == 1024) {
                     sim.replay(chunk);
                     chunk.clear();
@@ -145,6 +148,7 @@ public final class DmcReplay {
                     gcnc.diag.Phrase.reason(e));
         }
         sim.replay(chunk);
+        limits.finish();
         sim.end(List.of());
         return sim.report();
     }
