@@ -67,6 +67,20 @@ class ReplayTest {
         assertEquals(List.of("E300@4"), codes(d));
     }
 
+    /**
+     * A DMC file by itself is held to the controller's limits as a compile's output is: a hand-edited
+     * CR of radius 9 (COMALL CR: n0 from 10) is E224 at its line and counts as a finding of the replay.
+     */
+    @Test
+    void aDmcFileAloneIsHeldToTheControllersLimits() throws Exception {
+        Diagnostics d = new Diagnostics();
+        String dmc = "#GCNC\nSH XY\nVM XY\nVS 20000\nCR 9,0,90;VE;BGS;AMS\nEN\n";
+        SimReport r = DmcReplay.replay(new BufferedReader(new StringReader(dmc)), profile("generic"),
+                SimOptions.defaults(), d);
+        assertEquals(List.of("E224@5"), codes(d));
+        assertEquals(1, r.findings());
+    }
+
     @Test
     void shippedProfilesHaveASimulatorModel() throws Exception {
         for (String name : new String[] {"generic", "thesis-2004"}) {

@@ -122,7 +122,8 @@ public final class DmcReplay {
         List<Instruction> chunk = new ArrayList<>();
         // a DMC file by itself is held to the controller's limits as a compile's output is (a hand-edited
         // CR 9,0,90 is refused by the controller: it must not replay clean)
-        gcnc.galil.LimitCheck limits = new gcnc.galil.LimitCheck(profile.controllerLimits(), diagnostics, chunk::add);
+        Diagnostics refused = new Diagnostics();
+        gcnc.galil.LimitCheck limits = new gcnc.galil.LimitCheck(profile.controllerLimits(), refused, chunk::add);
         int lines = 0;
         try {
             java.util.Iterator<Read> first = head.iterator();
@@ -150,7 +151,9 @@ public final class DmcReplay {
         sim.replay(chunk);
         limits.finish();
         sim.end(List.of());
-        return sim.report();
+        // the limit errors are findings of the replay too: in the run's diagnostics and in its count
+        refused.sorted().forEach(diagnostics::report);
+        return sim.report().withMoreFindings(refused.size());
     }
 
     /** The next line: from the lines read ahead, then from the reader; a read-ahead failure is thrown when they run out. */

@@ -59,6 +59,12 @@ public record SimReport(int sequences, int segments, int findings, double xMinMm
                 exactStopSeconds, drawing, program, feeds, setup, corners, counts, programStops);
     }
 
+    /** The same report with {@code n} more findings (a DMC file's own limit errors, found before its replay). */
+    public SimReport withMoreFindings(int n) {
+        return new SimReport(sequences, segments, findings + n, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
+                exactStopSeconds, drawing, program, feeds, setup, corners, stops, programStops);
+    }
+
     /** The same report with this count of program stops. */
     public SimReport withProgramStops(int n) {
         return new SimReport(sequences, segments, findings, xMinMm, xMaxMm, zMinMm, zMaxMm, cycleSeconds,
