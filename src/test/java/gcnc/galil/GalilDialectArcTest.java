@@ -1,5 +1,6 @@
 package gcnc.galil;
 
+import gcnc.machine.Plane;
 import static gcnc.galil.Fixtures.motions;
 import static gcnc.galil.Fixtures.rapid;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -81,10 +82,10 @@ class GalilDialectArcTest {
     private static void assertEnds(MachineProfile p, List<String> out, List<Point> ends) {
         List<long[]> got = new PathReader(0, 0).read(out);
         assertEquals(ends.size(), got.size(), "one sequence per motion");
-        GalilFrame f = new GalilFrame(p);
+        Plane f = Plane.of(p);
         for (int i = 0; i < ends.size(); i++) {
-            double eu = f.u(ends.get(i));
-            double ev = f.v(ends.get(i));
+            double eu = f.galil1(ends.get(i));
+            double ev = f.galil2(ends.get(i));
             long[] g = got.get(i);
             assertTrue(Math.abs(g[0] - eu) <= 1 && Math.abs(g[1] - ev) <= 1,
                     "sequence " + (i + 1) + " ends at " + g[0] + "," + g[1] + ", expected " + eu + "," + ev);
@@ -95,7 +96,7 @@ class GalilDialectArcTest {
     void chainsOfRandomArcsEndWhereTheBlocksEnd() {
         Random rnd = new Random(20041);
         for (MachineProfile p : new MachineProfile[] {G, V, W}) {
-            GalilFrame f = new GalilFrame(p);
+            Plane f = Plane.of(p);
             List<CheckedBlock> blocks = new ArrayList<>();
             List<Point> ends = new ArrayList<>();
             Point at = new Point(rnd.nextDouble() * 1000, rnd.nextDouble() * 1000);
@@ -126,8 +127,8 @@ class GalilDialectArcTest {
         }
     }
 
-    private static boolean sameCount(GalilFrame f, Point a, Point b) {
-        return GalilNumbers.round(f.u(a)) == GalilNumbers.round(f.u(b)) && GalilNumbers.round(f.v(a)) == GalilNumbers.round(f.v(b));
+    private static boolean sameCount(Plane f, Point a, Point b) {
+        return GalilNumbers.round(f.galil1(a)) == GalilNumbers.round(f.galil1(b)) && GalilNumbers.round(f.galil2(a)) == GalilNumbers.round(f.galil2(b));
     }
 
     /**

@@ -60,4 +60,20 @@ class PlaneTest {
         assertEquals(2, Plane.channel('Z'));
         assertEquals(7, Plane.channel('H'));
     }
+
+    /** Galil's two names of a channel (A = X ... D = W, then E..H) are one index; anything else is none. */
+    @Test
+    void channelLettersAreOneIndexAndAnythingElseIsNone() {
+        assertEquals(0, Plane.channel('A'));
+        assertEquals(0, Plane.channel('X'));
+        assertEquals(3, Plane.channel('W'));
+        assertEquals(7, Plane.channel('H'));
+        assertEquals(-1, Plane.channel('I'));
+        assertEquals(-1, Plane.channel('x'), "upper case only, as the DMC names channels");
+        assertEquals(-1, Plane.channel('1'));
+        assertEquals('Z', Plane.letter(2));
+        assertEquals('E', Plane.letter(4));
+        assertTrue(Plane.sameChannel('B', 'Y'));
+        assertFalse(Plane.sameChannel('I', 'I'), "no channel is not the same channel");
+    }
 }

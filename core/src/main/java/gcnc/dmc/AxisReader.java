@@ -1,5 +1,6 @@
 package gcnc.dmc;
 
+import gcnc.machine.Plane;
 import static gcnc.dmc.DmcReader.axes;
 import static gcnc.dmc.DmcReader.bad;
 import static gcnc.dmc.DmcReader.INT32;
@@ -85,10 +86,10 @@ final class AxisReader {
         String[] slots = places(args);
         int[] at = filled(slots, 2);
         if (at == null || slots[at[0]].length() != 1 || !slots[at[0]].equals(slots[at[1]])
-                || Channels.index(slots[at[0]].charAt(0)) < 0) {
+                || Plane.channel(slots[at[0]].charAt(0)) < 0) {
             return bad(faults, "GA", text);
         }
-        return new GearMaster(slots[at[0]].charAt(0), Channels.letter(at[0]), Channels.letter(at[1]));
+        return new GearMaster(slots[at[0]].charAt(0), Plane.letter(at[0]), Plane.letter(at[1]));
     }
 
     static Command syncPoint(String t, Faults faults) {
@@ -128,7 +129,7 @@ final class AxisReader {
             }
             operand = new Operand.Count(n.unscaled());
         }
-        return new WaitPast(cmd.equals("MR"), Channels.letter(at[0]), operand);
+        return new WaitPast(cmd.equals("MR"), Plane.letter(at[0]), operand);
     }
 
     /** Two numbers at two axes' places, in channel order ({@code GR}, {@code PA}, {@code BL}/{@code FL}). */
@@ -141,7 +142,7 @@ final class AxisReader {
         int[] at = filled(slots, 2);
         Fixed p = value(slots, at, 0, whole);
         Fixed q = value(slots, at, 1, whole);
-        return p == null || q == null ? null : new Two(Channels.letter(at[0]), p, Channels.letter(at[1]), q);
+        return p == null || q == null ? null : new Two(Plane.letter(at[0]), p, Plane.letter(at[1]), q);
     }
 
     static Command gearRatio(String args, String text, Faults faults) {
@@ -165,8 +166,8 @@ final class AxisReader {
             }
         }
         return at.length == 2
-                ? new Command.IncrementPosition(Channels.letter(at[0]), slots[at[0]], Channels.letter(at[1]), slots[at[1]])
-                : new Command.IncrementPosition(Channels.letter(at[0]), slots[at[0]], (char) 0, "");
+                ? new Command.IncrementPosition(Plane.letter(at[0]), slots[at[0]], Plane.letter(at[1]), slots[at[1]])
+                : new Command.IncrementPosition(Plane.letter(at[0]), slots[at[0]], (char) 0, "");
     }
 
     /** {@code DP ,,0}: one axis's position, a whole count. */
@@ -177,7 +178,7 @@ final class AxisReader {
         if (n == null) {
             return bad(faults, "DP", text);
         }
-        return new Command.DefinePosition(Channels.letter(at[0]), n.unscaled());
+        return new Command.DefinePosition(Plane.letter(at[0]), n.unscaled());
     }
 
     static Command positionAbsolute(String args, String text, Faults faults) {

@@ -1,5 +1,6 @@
 package gcnc.dmc;
 
+import gcnc.machine.Plane;
 import gcnc.dmc.Command.*;
 import gcnc.machine.MachineModel;
 
@@ -269,7 +270,7 @@ public final class DmcPrinter {
         int last = -1;
         int[] at = new int[axes.length];
         for (int i = 0; i < axes.length; i++) {
-            at[i] = Channels.index(axes[i]);
+            at[i] = Plane.channel(axes[i]);
             if (at[i] < 0) {
                 throw new IllegalArgumentException("not a Galil axis: " + axes[i]);
             }

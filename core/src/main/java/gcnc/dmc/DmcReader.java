@@ -1,5 +1,6 @@
 package gcnc.dmc;
 
+import gcnc.machine.Plane;
 import gcnc.diag.Code;
 import gcnc.dmc.Command.*;
 import gcnc.machine.MachineModel;
@@ -271,7 +272,7 @@ public final class DmcReader {
             return false;
         }
         for (int i = 0; i < s.length(); i++) {
-            if (Channels.index(s.charAt(i)) < 0) {
+            if (Plane.channel(s.charAt(i)) < 0) {
                 return false;
             }
         }

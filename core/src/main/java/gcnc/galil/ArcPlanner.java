@@ -1,5 +1,7 @@
 package gcnc.galil;
 
+import gcnc.machine.Plane;
+
 /**
  * Turns an arc into Galil's {@code CR r,theta,delta} so that the arc the controller runs, with the
  * radius rounded to whole counts and the angles to the 4 decimals printed, ends within one count
@@ -65,16 +67,16 @@ public final class ArcPlanner {
      * where the program has a smaller one); else the planned CR. The backend and check's
      * prediction of the replay ({@code gcnc.sim.ArcVerdict}) both decide here, so they cannot differ.
      */
-    public static Written forMotion(GalilFrame frame, long posU, long posV, gcnc.ir.Motion.Arc m) {
-        long tu = GalilNumbers.round(frame.u(m.to()));
-        long tv = GalilNumbers.round(frame.v(m.to()));
+    public static Written forMotion(Plane plane, long posU, long posV, gcnc.ir.Motion.Arc m) {
+        long tu = GalilNumbers.round(plane.galil1(m.to()));
+        long tv = GalilNumbers.round(plane.galil2(m.to()));
         gcnc.ir.Point c = m.centre();
-        double sweep = frame.handedness() * gcnc.ir.ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
+        double sweep = plane.handedness() * gcnc.ir.ArcGeometry.sweepDegrees(m.from(), m.to(), c, m.clockwise());
         if (2 * m.radius() < 1 || tu == posU && tv == posV && Math.abs(sweep) <= 180) {
             return null;
         }
-        return new Written(tu, tv, plan(posU, posV, tu, tv, new Intended(frame.u(m.from()), frame.v(m.from()),
-                frame.u(c), frame.v(c), m.radius(), sweep)));
+        return new Written(tu, tv, plan(posU, posV, tu, tv, new Intended(plane.galil1(m.from()), plane.galil2(m.from()),
+                plane.galil1(c), plane.galil2(c), m.radius(), sweep)));
     }
 
     /**

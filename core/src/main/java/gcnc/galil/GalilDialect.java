@@ -1,5 +1,6 @@
 package gcnc.galil;
 
+import gcnc.machine.Plane;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
@@ -29,7 +30,7 @@ final class GalilDialect implements Dialect {
     private final Diagnostics diagnostics;
     /** One writer a block, and the blocks of the run counted. */
     private final BlockWriters writers;
-    private final GalilFrame frame;
+    private final Plane plane;
     private final gcnc.machine.ControllerLimits limits;
     long posU;
     long posV;
@@ -44,27 +45,27 @@ final class GalilDialect implements Dialect {
         this.profile = profile;
         this.diagnostics = diagnostics;
         this.writers = new BlockWriters(inlineSourceMap);
-        this.frame = new GalilFrame(profile);
+        this.plane = Plane.of(profile);
         this.limits = profile.controllerLimits();
-        this.machine = new MachineCode(profile, frame, diagnostics);
-        this.posU = GalilNumbers.round(frame.u(profile.home()));
-        this.posV = GalilNumbers.round(frame.v(profile.home()));
+        this.machine = new MachineCode(profile, plane, diagnostics);
+        this.posU = GalilNumbers.round(plane.galil1(profile.home()));
+        this.posV = GalilNumbers.round(plane.galil2(profile.home()));
         this.threads = new ThreadPass(this, profile);
         this.mFunctions = new MFunctions(profile, machine);
     }
 
     @Override
     public void begin(Consumer<Instruction> out) {
-        String plane = frame.plane();
+        String letters = plane.letters();
         out.accept(new Instruction(new Command.Label("GCNC"), Source.NONE));
-        out.accept(new Instruction(new Command.ServoHere(plane), Source.NONE));
-        out.accept(new Instruction(new Command.VectorMode(plane), Source.NONE));
+        out.accept(new Instruction(new Command.ServoHere(letters), Source.NONE));
+        out.accept(new Instruction(new Command.VectorMode(letters), Source.NONE));
         // IT 1 on both plane axes: no smoothing. IT is burnable and "also filters the individual axes during
         // Vector Mode (VM)", which "results in longer motion time" (command reference IT): a unit with a
         // smaller value burned in would round the corners and stretch the times the simulator verified
         for (int i = 0; i < 2; i++) {
             out.accept(new Instruction(new Command.AxisSetting(Command.Setting.IT,
-                    gcnc.dmc.Channels.index(plane.charAt(i)), Fixed.of(1)), Source.NONE));
+                    Plane.channel(letters.charAt(i)), Fixed.of(1)), Source.NONE));
         }
         out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(acceleration(profile.acceleration()))),
                 Source.NONE));
@@ -231,8 +232,8 @@ final class GalilDialect implements Dialect {
 
     /** One VP sequence to {@code to} (feed null = rapid); nothing when it is the same count. */
     private void straight(CheckedBlock b, Point to, gcnc.ir.Feed feed, BlockWriter out) {
-        long tu = GalilNumbers.round(frame.u(to));
-        long tv = GalilNumbers.round(frame.v(to));
+        long tu = GalilNumbers.round(plane.galil1(to));
+        long tv = GalilNumbers.round(plane.galil2(to));
         long du = tu - posU;
         long dv = tv - posV;
         if (!inRange(b, "VP", tu) || !inRange(b, "VP", tv) || !inRange(b, "VP", du) || !inRange(b, "VP", dv)) {
@@ -250,12 +251,12 @@ final class GalilDialect implements Dialect {
     }
 
     private void arc(CheckedBlock b, Motion.Arc m, BlockWriter out) {
-        long tu = GalilNumbers.round(frame.u(m.to()));
-        long tv = GalilNumbers.round(frame.v(m.to()));
+        long tu = GalilNumbers.round(plane.galil1(m.to()));
+        long tv = GalilNumbers.round(plane.galil2(m.to()));
         if (!inRange(b, "CR", tu) || !inRange(b, "CR", tv) || !inRange(b, "CR", GalilNumbers.round(m.radius()))) {
             return;
         }
-        ArcPlanner.Written written = ArcPlanner.forMotion(frame, posU, posV, m);
+        ArcPlanner.Written written = ArcPlanner.forMotion(plane, posU, posV, m);
         if (written == null) {
             straight(b, m.to(), m.feed(), out);
             return;
@@ -338,8 +339,8 @@ final class GalilDialect implements Dialect {
         return Math.min(profile.acceleration(), profile.deceleration());
     }
 
-    GalilFrame frame() {
-        return frame;
+    Plane plane() {
+        return plane;
     }
 
     void error(Code code, CheckedBlock b, Object... args) {

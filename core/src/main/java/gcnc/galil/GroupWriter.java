@@ -178,9 +178,9 @@ final class GroupWriter {
                     }
                     // one of the equal pieces of a move longer than a VP segment: to its share of the way
                     double share = (p.part() + 1) / (double) p.parts();
-                    double fu = d.frame().u(l.from());
-                    double fv = d.frame().v(l.from());
-                    return straight(b, fu + (d.frame().u(l.to()) - fu) * share, fv + (d.frame().v(l.to()) - fv) * share,
+                    double fu = d.plane().galil1(l.from());
+                    double fv = d.plane().galil2(l.from());
+                    return straight(b, fu + (d.plane().galil1(l.to()) - fu) * share, fv + (d.plane().galil2(l.to()) - fv) * share,
                             u0, v0, speeds, out);
                 }
 
@@ -278,7 +278,7 @@ final class GroupWriter {
 
     /** A VP to {@code to}; its length, counts (0 when nothing is written or nothing is {@link #measuring}). */
     private double straight(CheckedBlock b, Point to, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
-        return straight(b, d.frame().u(to), d.frame().v(to), u0, v0, speeds, out);
+        return straight(b, d.plane().galil1(to), d.plane().galil2(to), u0, v0, speeds, out);
     }
 
     /** A VP to the Galil point (u, v), rounded to whole counts; its length, counts (0 when nothing is written). */
@@ -303,13 +303,13 @@ final class GroupWriter {
 
     /** A CR (and its closing VP) for the arc; its length, counts (0 when nothing is written). */
     private double arc(CheckedBlock b, Motion.Arc m, long u0, long v0, Command.Speeds speeds, BlockWriter out) {
-        long tu = GalilNumbers.round(d.frame().u(m.to()));
-        long tv = GalilNumbers.round(d.frame().v(m.to()));
+        long tu = GalilNumbers.round(d.plane().galil1(m.to()));
+        long tv = GalilNumbers.round(d.plane().galil2(m.to()));
         if (!d.inRange(b, "CR", tu - u0) || !d.inRange(b, "CR", tv - v0)
                 || !d.inRange(b, "CR", GalilNumbers.round(m.radius()))) {
             return 0;
         }
-        ArcPlanner.Written written = ArcPlanner.forMotion(d.frame(), d.posU, d.posV, m);
+        ArcPlanner.Written written = ArcPlanner.forMotion(d.plane(), d.posU, d.posV, m);
         if (written == null) {
             return straight(b, m.to(), u0, v0, speeds, out);
         }

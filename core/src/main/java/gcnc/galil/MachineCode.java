@@ -1,5 +1,6 @@
 package gcnc.galil;
 
+import gcnc.machine.Plane;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostic;
 import gcnc.diag.Diagnostics;
@@ -68,7 +69,7 @@ final class MachineCode {
     static final long MIN_WAIT_MS = 2;
 
     private final MachineProfile profile;
-    private final GalilFrame frame;
+    private final Plane plane;
     private final Diagnostics diagnostics;
     private final MachineIo io;
     /** The direction the spindle turns (M03's or M04's role), null when stopped. */
@@ -81,9 +82,9 @@ final class MachineCode {
     private boolean turretUsed;
     private boolean stopUsed;
 
-    MachineCode(MachineProfile profile, GalilFrame frame, Diagnostics diagnostics) {
+    MachineCode(MachineProfile profile, Plane plane, Diagnostics diagnostics) {
         this.profile = profile;
-        this.frame = frame;
+        this.plane = plane;
         this.diagnostics = diagnostics;
         this.io = MachineIo.of(profile);
     }
@@ -95,7 +96,7 @@ final class MachineCode {
         if (io.drive() instanceof MachineIo.SpindleDrive.Offset) {
             // zero gains: the motor command output is OF itself (Galil's OF page); ER -1: the
             // turning spindle's encoder is no position error, so #POSERR stays for the axes
-            int c = frame.spindleIndex();
+            int c = Plane.channel(profile.spindleAxis());
             emit.accept(new Command.AxisSetting(Command.Setting.KP, c, Fixed.of(0)));
             emit.accept(new Command.AxisSetting(Command.Setting.KI, c, Fixed.of(0)));
             emit.accept(new Command.AxisSetting(Command.Setting.KD, c, Fixed.of(0)));
@@ -106,12 +107,12 @@ final class MachineCode {
         // the spindle encoder's count from 0 where the program starts (COMALL DP; docs/threading.md):
         // _TPC is 32-bit, and a count never reset reaches 2^31 after ~8.7 h at 1,000 r/min × 4,096
         profile.encoder().ifPresent(enc -> emit.accept(new Command.DefinePosition(enc.channel(), 0)));
-        char p1 = frame.plane().charAt(0);
-        char p2 = frame.plane().charAt(1);
+        char p1 = plane.letters().charAt(0);
+        char p2 = plane.letters().charAt(1);
         long[] low = new long[2];
         long[] high = new long[2];
         for (int i = 0; i < 2; i++) {
-            gcnc.machine.Axis a = axis(frame.plane().charAt(i));
+            gcnc.machine.Axis a = axis(plane.letters().charAt(i));
             long lo = GalilNumbers.round(a.sign() * a.min());
             long hi = GalilNumbers.round(a.sign() * a.max());
             low[i] = Math.min(lo, hi);
@@ -121,8 +122,8 @@ final class MachineCode {
         emit.accept(new Command.SoftLimit(true, p1, high[0], p2, high[1]));
         List<Command> proof = io.homing().accept(new MachineIo.Homing.Visitor<>() {
             public List<Command> position(MachineIo.Homing.Position pos) {
-                long home1 = GalilNumbers.round(frame.u(profile.home()));
-                long home2 = GalilNumbers.round(frame.v(profile.home()));
+                long home1 = GalilNumbers.round(plane.galil1(profile.home()));
+                long home2 = GalilNumbers.round(plane.galil2(profile.home()));
                 return List.of(homeCheck(p1, home1, pos.toleranceMm()), homeCheck(p2, home2, pos.toleranceMm()));
             }
 
@@ -138,7 +139,7 @@ final class MachineCode {
     }
 
     private gcnc.machine.Axis axis(char letter) {
-        return gcnc.dmc.Channels.same(letter, profile.x().galil()) ? profile.x() : profile.z();
+        return Plane.sameChannel(letter, profile.x().galil()) ? profile.x() : profile.z();
     }
 
     private Command homeCheck(char letter, long home, double toleranceMm) {
@@ -204,7 +205,7 @@ final class MachineCode {
     private Command volts(double v) {
         Fixed f = Fixed.exactly(v, 4);
         return io.drive() instanceof MachineIo.SpindleDrive.Analog a ? new Command.AnalogOut(a.output(), f)
-                : new Command.Offset(frame.spindleIndex(), f);
+                : new Command.Offset(Plane.channel(profile.spindleAxis()), f);
     }
 
     /**
@@ -361,7 +362,7 @@ final class MachineCode {
         Subroutines.handler(c, "AMPERR", true, "AMPLIFIER FAULT", LINE);
         c.add(new Command.Label(FAULT));
         c.add(new Command.Stop());
-        c.add(new Command.AfterMotion(frame.plane()));
+        c.add(new Command.AfterMotion(plane.letters()));
         c.add(volts(0));
         MRole stop = MRole.SPINDLE_STOP;
         profile.control().mFor(stop).ifPresent(f -> c.addAll(MFunctions.directives(profile, f.code())));

@@ -1,5 +1,6 @@
 package gcnc.galil;
 
+import gcnc.machine.Plane;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
@@ -23,13 +24,13 @@ final class ThesisDialect implements Dialect {
     private final Diagnostics diagnostics;
     /** One writer a block, and the blocks of the run counted. */
     private final BlockWriters writers;
-    private final GalilFrame frame;
+    private final Plane plane;
 
     ThesisDialect(MachineProfile profile, Diagnostics diagnostics, boolean inlineSourceMap) {
         this.profile = profile;
         this.diagnostics = diagnostics;
         this.writers = new BlockWriters(inlineSourceMap);
-        this.frame = new GalilFrame(profile);
+        this.plane = Plane.of(profile);
     }
 
     @Override
@@ -56,7 +57,7 @@ final class ThesisDialect implements Dialect {
                 if (b.spindleRpm().isPresent()) {
                     // The thesis divides the integer S by 300 as integers (L4236).
                     long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
-                    out.emit(new Command.Offset(frame.spindleIndex(), Fixed.of(volts)));
+                    out.emit(new Command.Offset(Plane.channel(profile.spindleAxis()), Fixed.of(volts)));
                 }
                 if (b.tool().isPresent()) {
                     out.emit(new Command.Revolver(b.tool().getAsInt()));
@@ -179,8 +180,8 @@ final class ThesisDialect implements Dialect {
     }
 
     private Command vp(CheckedBlock b, double dx, double dz) {
-        String u = number(b, "VP", frame.u(dx, dz));
-        String v = number(b, "VP", frame.v(dx, dz));
+        String u = number(b, "VP", plane.galil1(dx, dz));
+        String v = number(b, "VP", plane.galil2(dx, dz));
         return u == null || v == null ? null : new Command.VectorPosition(Long.parseLong(u), Long.parseLong(v));
     }
 

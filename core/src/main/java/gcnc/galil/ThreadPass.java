@@ -1,5 +1,6 @@
 package gcnc.galil;
 
+import gcnc.machine.Plane;
 import gcnc.diag.Code;
 import gcnc.dmc.Command;
 import gcnc.dmc.Fixed;
@@ -18,12 +19,12 @@ import java.util.List;
 final class ThreadPass {
     private final GalilDialect dialect;
     private final MachineProfile profile;
-    private final GalilFrame frame;
+    private final Plane plane;
 
     ThreadPass(GalilDialect dialect, MachineProfile profile) {
         this.dialect = dialect;
         this.profile = profile;
-        this.frame = dialect.frame();
+        this.plane = dialect.plane();
     }
 
     /** Galil's GR range: a gear ratio between -127 and 127 (COMALL GR). */
@@ -63,8 +64,8 @@ final class ThreadPass {
         u[0] = dialect.posU;
         v[0] = dialect.posV;
         for (int i = 1; i < n; i++) {
-            u[i] = GalilNumbers.round(frame.u(points.get(i)));
-            v[i] = GalilNumbers.round(frame.v(points.get(i)));
+            u[i] = GalilNumbers.round(plane.galil1(points.get(i)));
+            v[i] = GalilNumbers.round(plane.galil2(points.get(i)));
             String cmd = i == n - 1 ? "PA" : "MF";
             if (!dialect.inRange(b, cmd, u[i]) || !dialect.inRange(b, cmd, v[i])) {
                 return;
@@ -76,15 +77,15 @@ final class ThreadPass {
             // from the geometry, not from each pass's rounded counts: every pass of a thread writes
             // the same ratio text, so the controller holds the same ratio on every pass
             ratios[i - 1] = ratios(enc, t, points.get(i - 1), points.get(i),
-                    frame.u(points.get(i)) - frame.u(points.get(i - 1)), frame.v(points.get(i)) - frame.v(points.get(i - 1)));
+                    plane.galil1(points.get(i)) - plane.galil1(points.get(i - 1)), plane.galil2(points.get(i)) - plane.galil2(points.get(i - 1)));
             largest = Math.max(largest, Math.max(Math.abs(ratios[i - 1][0]), Math.abs(ratios[i - 1][1])));
         }
         if (largest > MAX_RATIO) {
             dialect.error(Code.E208_GEAR_RATIO_RANGE, b, ratio(largest));
             return;
         }
-        char p1 = frame.plane().charAt(0);
-        char p2 = frame.plane().charAt(1);
+        char p1 = plane.letters().charAt(0);
+        char p2 = plane.letters().charAt(1);
         char encoder = enc.channel();
         boolean zFirst = p1 == profile.z().galil();
         long[] z = zFirst ? u : v;
@@ -106,8 +107,8 @@ final class ThreadPass {
         }
         out.emit(new Command.GearRatio(p1, Fixed.of(0), p2, Fixed.of(0)));
         out.emit(new Command.PositionAbsolute(p1, u[n - 1], p2, v[n - 1]));
-        out.emit(new Command.Begin(frame.plane()));
-        out.emit(new Command.AfterMotion(frame.plane()));
+        out.emit(new Command.Begin(plane.letters()));
+        out.emit(new Command.AfterMotion(plane.letters()));
         dialect.posU = u[n - 1];
         dialect.posV = v[n - 1];
     }

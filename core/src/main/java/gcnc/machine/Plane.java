@@ -13,16 +13,23 @@ package gcnc.machine;
  * @param zSign   the sign of lathe Z on its channel
  */
 public record Plane(String letters, boolean xFirst, int xSign, int zSign) {
+    /** The letters Galil names the channels by in a DMC program: X Y Z W, then E..H. */
+    private static final String LETTERS = "XYZWEFGH";
+
+    /** The profile's plane; its axes on two different channels (the profile's reader refuses the rest). */
     public static Plane of(MachineProfile p) {
         char x = p.x().galil();
         char z = p.z().galil();
-        boolean xFirst = channel(z) >= channel(x);
+        if (channel(x) < 0 || channel(z) < 0 || channel(x) == channel(z)) {
+            throw new IllegalArgumentException("lathe X and Z must be two Galil channels, not " + x + " and " + z);
+        }
+        boolean xFirst = channel(z) > channel(x);
         return new Plane(xFirst ? "" + x + z : "" + z + x, xFirst, p.x().sign(), p.z().sign());
     }
 
     /**
      * The channel index of a Galil axis letter: X Y Z W = A B C D = 0 1 2 3, E..H = 4..7. Upper
-     * case only, as the profile and the DMC name channels: any other character is outside 0..7.
+     * case only, as the profile and the DMC name channels; -1 for any other character.
      */
     public static int channel(char c) {
         return switch (c) {
@@ -30,8 +37,18 @@ public record Plane(String letters, boolean xFirst, int xSign, int zSign) {
             case 'Y' -> 1;
             case 'Z' -> 2;
             case 'W' -> 3;
-            default -> c - 'A';
+            default -> c >= 'A' && c <= 'H' ? c - 'A' : -1;
         };
+    }
+
+    /** The letter a DMC program names channel {@code index} (0..7) by: X Y Z W E F G H. */
+    public static char letter(int index) {
+        return LETTERS.charAt(index);
+    }
+
+    /** Whether two letters name the same channel ({@code A} and {@code X}). */
+    public static boolean sameChannel(char a, char b) {
+        return channel(a) >= 0 && channel(a) == channel(b);
     }
 
     /** Channel index (A/X = 0 ... H = 7) of the plane's first channel. */
@@ -79,6 +96,16 @@ public record Plane(String letters, boolean xFirst, int xSign, int zSign) {
     /** The second Galil plane coordinate of machine counts. */
     public double galil2(double x, double z) {
         return xFirst ? zSign * z : xSign * x;
+    }
+
+    /** The first Galil plane coordinate of a point in machine counts. */
+    public double galil1(gcnc.ir.Point p) {
+        return galil1(p.x(), p.z());
+    }
+
+    /** The second Galil plane coordinate of a point in machine counts. */
+    public double galil2(gcnc.ir.Point p) {
+        return galil2(p.x(), p.z());
     }
 
     /** Galil plane coordinates of machine counts. */

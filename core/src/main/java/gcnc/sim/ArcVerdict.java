@@ -1,15 +1,14 @@
 package gcnc.sim;
 
+import gcnc.machine.Plane;
 import gcnc.diag.Code;
 import gcnc.diag.Diagnostics;
 import gcnc.diag.Span;
 import gcnc.galil.ArcPlanner;
-import gcnc.galil.GalilFrame;
 import gcnc.galil.GalilNumbers;
 import gcnc.ir.CheckedBlock;
 import gcnc.ir.Motion;
 import gcnc.machine.MachineProfile;
-import gcnc.machine.Plane;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -35,7 +34,6 @@ import java.util.List;
  * verdicts are remembered, so every finding is still reported at its own line.
  */
 public final class ArcVerdict {
-    private final GalilFrame frame;
     private final Plane plane;
     private final Diagnostics out;
     private final Conformance conformance;
@@ -49,7 +47,6 @@ public final class ArcVerdict {
 
     public ArcVerdict(MachineProfile profile, Diagnostics out) {
         this.limits = profile.controllerLimits();
-        this.frame = new GalilFrame(profile);
         this.plane = Plane.of(profile);
         this.out = out;
         SimOptions options = SimOptions.defaults();
@@ -84,9 +81,9 @@ public final class ArcVerdict {
 
     /** Plans and replays one arc; true when it is clean (nothing reported). */
     private boolean judge(int line, Motion.Arc a) {
-        long su = GalilNumbers.round(frame.u(a.from()));
-        long sv = GalilNumbers.round(frame.v(a.from()));
-        ArcPlanner.Written w = ArcPlanner.forMotion(frame, su, sv, a);
+        long su = GalilNumbers.round(plane.galil1(a.from()));
+        long sv = GalilNumbers.round(plane.galil2(a.from()));
+        ArcPlanner.Written w = ArcPlanner.forMotion(plane, su, sv, a);
         if (w == null) {
             return true; // a straight move to the end count: within a count of the arc
         }
