@@ -33,16 +33,9 @@ class DmcCorpusSimTest {
 
     static List<String> run(String program) {
         List<String> ran = new ArrayList<>();
-        // the lines holding a BG of the plane's axes, as a thread pass's settling move is started
+        // the lines holding a BG of the plane's axes, as a thread pass's settling move is started (each
+        // noted before its BG runs, which is when the controller hands the pass on)
         java.util.Set<Integer> passes = new java.util.HashSet<>();
-        List<String> text = program.lines().toList();
-        for (int k = 0; k < text.size(); k++) {
-            for (String statement : DmcReader.statements(text.get(k))) {
-                if (DmcReader.read(statement, (code, args) -> { }) instanceof Command.Begin) {
-                    passes.add(k + 1);
-                }
-            }
-        }
         Plane plane = new Plane("XY", true, 1, 1);
         long[] lastTrip = {-1};
         ReplayListener record = new ReplayListener() {
@@ -108,6 +101,9 @@ class DmcCorpusSimTest {
             int line = k + 1;
             for (String statement : DmcReader.statements(lines.get(k))) {
                 Command cmd = DmcReader.read(statement, (code, args) -> refused.error(code, gcnc.diag.Span.of(line, 1), args));
+                if (cmd instanceof Command.Begin) {
+                    passes.add(line);
+                }
                 if (cmd != null) {
                     limits.accept(new Instruction(cmd, Source.line(line)));
                 }

@@ -95,14 +95,16 @@ public final class Diagnostics {
      * nose compensation held until the next, the simulator's), gets its notes of the calls.
      */
     public void report(Diagnostic d) {
-        if (place.origin != null && d.origin() == Origin.UNPLACED) {
-            d = d.in(place.origin);
-        }
-        if (!d.origin().calls().isEmpty()) {
+        keep(place.origin != null && d.origin() == Origin.UNPLACED ? d.in(place.origin) : d);
+    }
+
+    /** Keeps a finding where it is placed, with its notes of the calls when that is in a called program. */
+    private void keep(Diagnostic d) {
+        if (d.origin().calls().isEmpty()) {
+            add(d);
+        } else {
             withCalls(d);
-            return;
         }
-        add(d);
     }
 
     /** A finding in a called program: once per place, with a note per call. */
@@ -248,11 +250,12 @@ public final class Diagnostics {
 
     /**
      * Takes over every finding of another part of the run (the simulator's), in its order; one
-     * placed in a called program gets its notes here, once per place, as the checker's do.
+     * placed in a called program gets its notes here, once per place, as the checker's do; one the other
+     * part left unplaced stays so (it is not put where the flow happens to stand at the end).
      */
     public void addAll(Diagnostics other) {
         for (int k = 0; k < other.all.size(); k++) {
-            report(other.all.get(k));
+            keep(other.all.get(k));
         }
     }
 

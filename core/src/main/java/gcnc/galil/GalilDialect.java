@@ -65,7 +65,7 @@ final class GalilDialect implements Dialect {
         // smaller value burned in would round the corners and stretch the times the simulator verified
         for (int i = 0; i < 2; i++) {
             out.accept(new Instruction(new Command.AxisSetting(Command.Setting.IT,
-                    Plane.channel(letters.charAt(i)), Fixed.of(1)), Source.NONE));
+                    i == 0 ? plane.first() : plane.second(), Fixed.of(1)), Source.NONE));
         }
         out.accept(new Instruction(new Command.VectorAcceleration(Fixed.of(acceleration(profile.acceleration()))),
                 Source.NONE));

@@ -152,7 +152,7 @@ public final class DmcReplay {
         limits.finish();
         sim.end(List.of());
         // the limit errors are findings of the replay too: in the run's diagnostics and in its count
-        refused.sorted().forEach(diagnostics::report);
+        diagnostics.addAll(refused);
         return sim.report().withMoreFindings(refused.size());
     }
 
