@@ -244,6 +244,15 @@ class SimulatorTest {
         assertEquals(List.of("E312@1"), f.codes());
     }
 
+    /** After EN a remark is taken, a command is E312 and does nothing, and a routine (after a label) is not run or reported. */
+    @Test
+    void afterEnOnlyRemarksAreTakenAndRoutinesAreNotRun() throws Exception {
+        SimFixture f = new SimFixture();
+        f.sim.end(SimFixture.lines(0, "EN", "NO a remark", "WT 5000", "#HOMEFAIL", "WT 7000", "SB1", "EN"));
+        assertEquals(List.of("E312@1"), f.codes()); // the WT 5000 only
+        assertEquals(0, f.sim.report().cycleSeconds(), 1e-9, "neither WT is run");
+    }
+
     @Test
     void thesisDialectLinesAreAccepted() throws Exception {
         SimFixture f = new SimFixture();

@@ -88,84 +88,70 @@ final class ReplayCommands extends FlowCommands {
 
     public Void servoHere(Command.ServoHere c) {
         boolean spindle = c.axes().length() == 1 && Plane.channel(c.axes().charAt(0)) == spindleChannel;
-        if (!afterEnd() && !spindle && !plane.sameChannels(c.axes())) {
+        if (!spindle && !plane.sameChannels(c.axes())) {
             out.report(Code.E313_SIM_VECTOR_PLANE, source(), "SH", c.axes(), plane.letters());
         }
         return null;
     }
 
     public Void vectorMode(Command.VectorMode c) {
-        if (!afterEnd() && !plane.sameChannels(c.axes())) {
+        if (!plane.sameChannels(c.axes())) {
             out.report(Code.E313_SIM_VECTOR_PLANE, source(), "VM", c.axes(), plane.letters());
         }
         return null;
     }
 
     public Void vectorAcceleration(Command.VectorAcceleration c) {
-        if (!afterEnd()) {
-            acceleration = c.countsPerSecond2().value();
-        }
+        acceleration = c.countsPerSecond2().value();
         return null;
     }
 
     public Void vectorDeceleration(Command.VectorDeceleration c) {
-        if (!afterEnd()) {
-            deceleration = c.countsPerSecond2().value();
-        }
+        deceleration = c.countsPerSecond2().value();
         return null;
     }
 
     public Void vectorSpeed(Command.VectorSpeed c) {
-        if (!afterEnd()) {
-            speed = c.countsPerSecond().value();
-            buffer.open();
-        }
+        speed = c.countsPerSecond().value();
+        buffer.open();
         return null;
     }
 
     public Void vectorPosition(Command.VectorPosition c) {
-        if (!afterEnd()) {
-            buffer.vp(c, instruction());
-        }
+        buffer.vp(c, instruction());
         return null;
     }
 
     public Void circularArc(Command.CircularArc c) {
-        if (!afterEnd()) {
-            if (c.sweep().value() == 0 && !checkedByCaller) {
-                out.report(Code.E309_SIM_ZERO_SWEEP_ARC, source(), text());
-            }
-            buffer.cr(c, instruction());
+        if (c.sweep().value() == 0 && !checkedByCaller) {
+            out.report(Code.E309_SIM_ZERO_SWEEP_ARC, source(), text());
         }
+        buffer.cr(c, instruction());
         return null;
     }
 
     public Void vectorEnd(Command.VectorEnd c) {
-        if (!afterEnd()) {
-            if (buffer.begun()) {
-                startBegun.run(); // a sequence fed while it ran: its last segment came before this VE
-            } else {
-                buffer.end();
-            }
+        if (buffer.begun()) {
+            startBegun.run(); // a sequence fed while it ran: its last segment came before this VE
+        } else {
+            buffer.end();
         }
         return null;
     }
 
     public Void beginSequence(Command.BeginSequence c) {
-        if (!afterEnd()) {
-            // BGS after the first fill, VE after the last segment (a sequence longer than the
-            // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
-            // room that gcnc writes right after such a BGS (JS #LMWAIT) says it is one
-            if (buffer.begin()) {
-                buffer.start(speed, source());
-            }
+        // BGS after the first fill, VE after the last segment (a sequence longer than the
+        // buffer, fed while it runs: COMALL VM): replayed whole at its VE, once the wait for
+        // room that gcnc writes right after such a BGS (JS #LMWAIT) says it is one
+        if (buffer.begin()) {
+            buffer.start(speed, source());
         }
         return null;
     }
 
     public Void awaitSequence(Command.AwaitSequence c) {
         startBegun.run(); // (a hand-written BGS without VE: replayed as it stands)
-        if (!afterEnd() && c.why() != null) {
+        if (c.why() != null) {
             out.stopped(c.why(), line());
         }
         buffer.atRest(); // what follows is at rest
@@ -174,109 +160,80 @@ final class ReplayCommands extends FlowCommands {
 
     public Void afterVector(Command.AfterVector c) {
         // the sequence has been replayed whole at BGS: what follows acts on the state after it
-        if (!afterEnd()) {
-            buffer.afterVector(c, source());
-        }
+        buffer.afterVector(c, source());
         return null;
     }
 
     public Void offset(Command.Offset c) {
-        if (!afterEnd() && c.channel() == spindleChannel && spindleAnalog < 0) {
+        if (c.channel() == spindleChannel && spindleAnalog < 0) {
             spindle(c.volts().value());
         }
         return null;
     }
 
     public Void await(Command.Wait c) {
-        if (!afterEnd()) {
-            out.dwell(c.milliseconds() / 1000.0, line());
-        }
+        out.dwell(c.milliseconds() / 1000.0, line());
         return null;
     }
 
     public Void toolNumber(Command.ToolNumber c) {
-        if (!afterEnd()) {
-            out.tool(c.station(), source());
-        }
+        out.tool(c.station(), source());
         return null;
     }
 
     public Void revolver(Command.Revolver c) {
-        if (!afterEnd()) {
-            out.tool(c.station(), source());
-        }
+        out.tool(c.station(), source());
         return null;
     }
 
     public Void output(Command.Output c) {
-        if (!afterEnd()) {
-            onTheWay();
-            out.output(c.bit(), c.on(), line());
-        }
+        onTheWay();
+        out.output(c.bit(), c.on(), line());
         return null;
     }
 
     public Void gearMaster(Command.GearMaster c) {
-        if (!afterEnd()) {
-            buffer.open();
-            gearing.master(c, instruction());
-        }
+        buffer.open();
+        gearing.master(c, instruction());
         return null;
     }
 
     public Void syncPoint(Command.SyncPoint c) {
-        if (!afterEnd()) {
-            gearing.syncPoint(c, instruction());
-        }
+        gearing.syncPoint(c, instruction());
         return null;
     }
 
     public Void waitPast(Command.WaitPast c) {
-        if (!afterEnd()) {
-            gearing.waitPast(c, instruction());
-        }
+        gearing.waitPast(c, instruction());
         return null;
     }
 
     public Void gearRatio(Command.GearRatio c) {
-        if (!afterEnd()) {
-            gearing.ratio(c, instruction(), buffer.galil1(), buffer.galil2());
-        }
+        gearing.ratio(c, instruction(), buffer.galil1(), buffer.galil2());
         return null;
     }
 
     public Void positionAbsolute(Command.PositionAbsolute c) {
-        if (!afterEnd()) {
-            gearing.settle(c, instruction());
-        }
+        gearing.settle(c, instruction());
         return null;
     }
 
     public Void phaseError(Command.PhaseError c) {
-        if (!afterEnd()) {
-            gearing.phaseError(c, instruction());
-        }
+        gearing.phaseError(c, instruction());
         return null;
     }
 
     public Void incrementPosition(Command.IncrementPosition c) {
-        if (!afterEnd()) {
-            gearing.phaseCorrection(c, instruction());
-        }
+        gearing.phaseCorrection(c, instruction());
         return null;
     }
 
     public Void definePosition(Command.DefinePosition c) {
-        if (!afterEnd()) {
-            gearing.definePosition(c, instruction());
-        }
+        gearing.definePosition(c, instruction());
         return null;
     }
 
     public Void begin(Command.Begin c) {
-        if (afterEnd()) {
-            return null;
-        }
         if (plane.sameChannels(c.axes()) && gearing.settling()) {
             ThreadGearing.GearedPass pass = gearing.pass(source());
             buffer.run(pass.segments(), pass.speed(), pass.end1(), pass.end2(), source());
@@ -287,17 +244,15 @@ final class ReplayCommands extends FlowCommands {
     }
 
     public Void afterMotion(Command.AfterMotion c) {
-        if (!afterEnd() && !plane.sameChannels(c.axes())) {
+        if (!plane.sameChannels(c.axes())) {
             out.report(Code.E301_SIM_BAD_ARGUMENTS, source(), "AM", text());
         }
-        if (!afterEnd()) {
-            buffer.waited();
-        }
+        buffer.waited();
         return null;
     }
 
     public Void analogOut(Command.AnalogOut c) {
-        if (!afterEnd() && c.output() == spindleAnalog) {
+        if (c.output() == spindleAnalog) {
             spindle(c.volts().value());
         }
         return null;
@@ -310,9 +265,6 @@ final class ReplayCommands extends FlowCommands {
      * reference IT) is not simulated yet: E336.
      */
     public Void axisSetting(Command.AxisSetting c) {
-        if (afterEnd()) {
-            return null;
-        }
         if (c.setting() == Command.Setting.IT) {
             if (c.value().value() != 1) {
                 out.report(Code.E336_SIM_SMOOTHING, source(), text());
@@ -326,7 +278,7 @@ final class ReplayCommands extends FlowCommands {
     }
 
     public Void softLimit(Command.SoftLimit c) {
-        if (!afterEnd() && !plane.sameChannels("" + c.first() + c.second())) {
+        if (!plane.sameChannels("" + c.first() + c.second())) {
             out.report(Code.E313_SIM_VECTOR_PLANE, source(), c.forward() ? "FL" : "BL", "" + c.first() + c.second(),
                     plane.letters());
         }
@@ -338,7 +290,7 @@ final class ReplayCommands extends FlowCommands {
         if (buffer.begun() && c.label().equals(gcnc.dmc.StreamSplit.BUFFER_WAIT)) {
             buffer.feed();
         }
-        if (!afterEnd() && c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
+        if (c.label().equals(gcnc.dmc.ProgramStop.LABEL)) {
             out.programStop(line());
         }
         return null;
