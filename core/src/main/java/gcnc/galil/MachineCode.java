@@ -96,7 +96,7 @@ final class MachineCode {
         if (io.drive() instanceof MachineIo.SpindleDrive.Offset) {
             // zero gains: the motor command output is OF itself (Galil's OF page); ER -1: the
             // turning spindle's encoder is no position error, so #POSERR stays for the axes
-            int c = Plane.channel(profile.spindleAxis());
+            int c = profile.spindleChannel();
             emit.accept(new Command.AxisSetting(Command.Setting.KP, c, Fixed.of(0)));
             emit.accept(new Command.AxisSetting(Command.Setting.KI, c, Fixed.of(0)));
             emit.accept(new Command.AxisSetting(Command.Setting.KD, c, Fixed.of(0)));
@@ -205,7 +205,7 @@ final class MachineCode {
     private Command volts(double v) {
         Fixed f = Fixed.exactly(v, 4);
         return io.drive() instanceof MachineIo.SpindleDrive.Analog a ? new Command.AnalogOut(a.output(), f)
-                : new Command.Offset(Plane.channel(profile.spindleAxis()), f);
+                : new Command.Offset(profile.spindleChannel(), f);
     }
 
     /**

@@ -57,7 +57,7 @@ final class ThesisDialect implements Dialect {
                 if (b.spindleRpm().isPresent()) {
                     // The thesis divides the integer S by 300 as integers (L4236).
                     long volts = (long) (b.spindleRpm().getAsDouble() / profile.rpmPerVolt());
-                    out.emit(new Command.Offset(Plane.channel(profile.spindleAxis()), Fixed.of(volts)));
+                    out.emit(new Command.Offset(profile.spindleChannel(), Fixed.of(volts)));
                 }
                 if (b.tool().isPresent()) {
                     out.emit(new Command.Revolver(b.tool().getAsInt()));

@@ -70,6 +70,11 @@ public record MachineProfile(String name, GalilModel galilModel, Axis x, Axis z,
         return new ControllerLimits(galilModel);
     }
 
+    /** The Galil channel of {@link #spindleAxis} (0 = A/X): the OF or gains that drive the spindle address it. */
+    public int spindleChannel() {
+        return Plane.channel(spindleAxis);
+    }
+
     /** The spindle encoder threads are geared to; empty on a machine that cannot cut threads (E190). */
     public Optional<SpindleEncoder> encoder() {
         return Optional.ofNullable(spindleEncoder);

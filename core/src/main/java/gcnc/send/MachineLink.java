@@ -281,7 +281,7 @@ public final class MachineLink {
 
     /** {@code OF} with 0 V in the spindle channel's place ({@code OF ,,0} for C). */
     public String spindleZero() {
-        return "OF " + ",".repeat(Plane.channel(profile.spindleAxis())) + "0";
+        return "OF " + ",".repeat(profile.spindleChannel()) + "0";
     }
 
     private boolean tryCommand(String c) {
