@@ -80,20 +80,69 @@ final class MultipleThread {
             host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label, Phrase.THREAD_END_BOTH.arg());
             return;
         }
+        Height h = height(g, words, label, haas);
+        if (h == null) {
+            return;
+        }
+        Infeed in = infeed(words, label, haas);
+        if (in == null) {
+            return;
+        }
+        if (in.allowance() >= h.height()) {
+            host.out().error(Code.E197_THREAD_WORD_VALUE, h.heightWord().span(), label, h.heightWord(),
+                    Phrase.THREAD_DEEPER_THAN_ALLOWANCE.with(NumberText.plain(in.allowance())));
+            return;
+        }
+        double[] depths = ThreadPasses.depths(h.height(), h.first(), in.minimum(), in.allowance(), in.finishing(),
+                in.kind(), MAX_PASSES);
+        if (depths == null) {
+            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, h.depthWord().span(), label, h.depthWord(),
+                    ThreadPasses.count(h.height(), h.first(), in.minimum(), in.allowance(), in.finishing(), in.kind()),
+                    MAX_PASSES);
+            return;
+        }
+        Word taperWord = words.get(haas ? Letter.I : Letter.R);
+        double taper = 0;
+        if (taperWord != null) {
+            taper = values.length(taperWord);
+            if (Double.isNaN(taper)) {
+                return;
+            }
+        }
+        cut(done, b, g, words, label, pullsOut, h, in, depths, taper);
+    }
+
+    /** The thread's height, first depth and lead, as the cutting block gives them (program units). */
+    private record Height(Word heightWord, Word depthWord, double height, double first, double lead) { }
+
+    /**
+     * How the passes go in: the thread's angle, the infeed (Haas P1-P4: constant area or depth, one
+     * flank or both), the finishing passes, the minimum depth and the allowance (a Fanuc first block's,
+     * none on Haas), and the Haas Q start angle (degrees, 0 when none).
+     */
+    private record Infeed(int angle, boolean bothFlanks, ThreadPasses.Infeed kind, int finishing, double minimum,
+                          double allowance, double startAngle) { }
+
+    /**
+     * The height (Haas K, Fanuc P) and first depth (Haas D, Fanuc Q) of the cutting block, and its
+     * lead; null after the error that says what is missing or wrong. A height past the standard
+     * form is cut as written, with a warning.
+     */
+    private Height height(Word g, Map<Letter, Word> words, String label, boolean haas) {
         Letter heightLetter = haas ? Letter.K : Letter.P;
         Letter depthLetter = haas ? Letter.D : Letter.Q;
         for (Letter l : new Letter[] {heightLetter, depthLetter}) {
             if (!words.containsKey(l)) {
                 host.out().error(Code.E195_THREAD_WORD_MISSING, g.span(), label,
                         (l == heightLetter ? Phrase.THREAD_HEIGHT : Phrase.THREAD_FIRST_DEPTH).with(l));
-                return;
+                return null;
             }
         }
         for (Letter l : haas ? new Letter[] {Letter.R}
                 : new Letter[] {Letter.K, Letter.D, Letter.A, Letter.I}) {
             if (words.containsKey(l)) {
                 host.out().error(Code.E161_CYCLE_WORD, words.get(l).span(), label, words.get(l));
-                return;
+                return null;
             }
         }
         Word hw = words.get(heightLetter);
@@ -101,16 +150,16 @@ final class MultipleThread {
         double height = haas ? values.length(hw) : values.increments(hw, label);
         double first = haas ? values.length(dw) : values.increments(dw, label);
         if (Double.isNaN(height) || Double.isNaN(first)) {
-            return;
+            return null;
         }
         double lead = values.lead(words, label, g.span());
         if (Double.isNaN(lead)) {
-            return;
+            return null;
         }
         if (!(height > 0)) {
             // Fanuc PS0062 (G71-G76 illegal command): zero or a negative thread height in G76
             host.out().error(Code.E180_PECK_NOT_POSITIVE, hw.span(), label, hw, "the thread height");
-            return;
+            return null;
         }
         if (height > SHARP_V_PER_LEAD * lead + 1e-9) {
             // the control cuts it (no manual alarms on a height against the lead; issue 31): a
@@ -123,66 +172,59 @@ final class MultipleThread {
         }
         if (!(first > 0)) {
             host.out().error(Code.E194_THREAD_FIRST_DEPTH, dw.span(), label, dw);
-            return;
+            return null;
         }
-        int angle = this.angle;
+        return new Height(hw, dw, height, first, lead);
+    }
+
+    /**
+     * The infeed: on Fanuc what the first block left in force; on Haas a 60-degree thread unless A
+     * says otherwise, P's infeed, no finishing passes or allowance, and Q's start angle. Null after
+     * the error about a word out of range.
+     */
+    private Infeed infeed(Map<Letter, Word> words, String label, boolean haas) {
+        if (!haas) {
+            return new Infeed(angle, false, ThreadPasses.Infeed.CONSTANT_AREA, finishes, minimum, allowance, 0);
+        }
+        int degrees = 60;
+        if (words.containsKey(Letter.A)) {
+            Word a = words.get(Letter.A);
+            long v = ThreadWords.degrees(a.number());
+            if (v == NumberText.NOT_INTEGER || v > 120) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, Phrase.THREAD_ANGLE_RANGE.arg());
+                return null;
+            }
+            degrees = (int) v;
+        }
+        ThreadPasses.Infeed kind = ThreadPasses.Infeed.CONSTANT_AREA;
         boolean bothFlanks = false; // Haas P2/P4
-        ThreadPasses.Infeed infeed = ThreadPasses.Infeed.CONSTANT_AREA;
-        int finishing = this.finishes;
-        double min = this.minimum;
-        double allow = this.allowance;
-        if (haas) {
-            finishing = 0;
-            min = 0;
-            allow = 0;
-            angle = 60;
-            if (words.containsKey(Letter.A)) {
-                Word a = words.get(Letter.A);
-                long v = ThreadWords.degrees(a.number());
-                if (v == NumberText.NOT_INTEGER || v > 120) {
-                    host.out().error(Code.E197_THREAD_WORD_VALUE, a.span(), label, a, Phrase.THREAD_ANGLE_RANGE.arg());
-                    return;
-                }
-                angle = (int) v;
+        if (words.containsKey(Letter.P)) {
+            Word p = words.get(Letter.P);
+            long v = NumberText.integer(p.number());
+            if (v < 1 || v > 4) {
+                host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p, Phrase.THREAD_INFEED.arg());
+                return null;
             }
-            if (words.containsKey(Letter.P)) {
-                Word p = words.get(Letter.P);
-                long v = NumberText.integer(p.number());
-                if (v < 1 || v > 4) {
-                    host.out().error(Code.E197_THREAD_WORD_VALUE, p.span(), label, p,
-                            Phrase.THREAD_INFEED.arg());
-                    return;
-                }
-                infeed = v == 3 || v == 4 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
-                bothFlanks = v == 2 || v == 4;
-            }
+            kind = v == 3 || v == 4 ? ThreadPasses.Infeed.CONSTANT_DEPTH : ThreadPasses.Infeed.CONSTANT_AREA;
+            bothFlanks = v == 2 || v == 4;
         }
         double q = 0;
-        if (haas && words.containsKey(Letter.Q)) {
+        if (words.containsKey(Letter.Q)) {
             q = values.startAngle(words.get(Letter.Q), label);
             if (Double.isNaN(q)) {
-                return;
+                return null;
             }
         }
-        if (allow >= height) {
-            host.out().error(Code.E197_THREAD_WORD_VALUE, hw.span(), label, hw,
-                    Phrase.THREAD_DEEPER_THAN_ALLOWANCE.with(NumberText.plain(allow)));
-            return;
-        }
-        double[] depths = ThreadPasses.depths(height, first, min, allow, finishing, infeed, MAX_PASSES);
-        if (depths == null) {
-            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, dw.span(), label, dw,
-                    ThreadPasses.count(height, first, min, allow, finishing, infeed), MAX_PASSES);
-            return;
-        }
-        Word taperWord = words.get(haas ? Letter.I : Letter.R);
-        double taperProgram = 0;
-        if (taperWord != null) {
-            taperProgram = values.length(taperWord);
-            if (Double.isNaN(taperProgram)) {
-                return;
-            }
-        }
+        return new Infeed(degrees, bothFlanks, kind, 0, 0, 0, q);
+    }
+
+    /**
+     * The passes, each four moves from the start point {@code a}: in to its depth (on the taper), along
+     * Z to the end, out, and back; handed to the writer with the pull-out each pass ends with. Errors
+     * where the start leaves no side to cut from (E160) or the thread does not run along Z (E196).
+     */
+    private void cut(List<CheckedBlock> done, RawBlock b, Word g, Map<Letter, Word> words, String label,
+                     boolean pullsOut, Height h, Infeed in, double[] depths, double taperProgram) {
         Point root = values.target(b, ThreadValues.axes(words));
         if (root == null) {
             return;
@@ -196,7 +238,7 @@ final class MultipleThread {
         double t = taperProgram * perRadius;
         // +1: the start is above the thread (outside), -1 below it (a bore): the side the depth goes from
         double side = Math.signum(a.x() - root.x());
-        double top = root.x() + side * height * perRadius;
+        double top = root.x() + side * h.height() * perRadius;
         if (side == 0) {
             host.out().error(Code.E160_CYCLE_START_INSIDE, g.span(), label, b.line());
             return;
@@ -212,14 +254,14 @@ final class MultipleThread {
             return;
         }
         double dir = Math.signum(root.z() - a.z());
-        double flank = Math.tan(Math.toRadians(angle / 2.0));
+        double flank = Math.tan(Math.toRadians(in.angle() / 2.0));
         List<Move> moves = new ArrayList<>(depths.length * 4);
         for (int i = 0; i < depths.length; i++) {
             double depth = depths[i];
             double xEnd = top - side * depth * perRadius;
             // flank infeed: the pass moves back along Z by depth x tan(angle / 2), so one flank cuts;
             // both flanks in turn (Haas P2/P4): ThreadWords.alternate
-            double shift = bothFlanks ? -dir * ThreadWords.alternate(i, height, depth, flank) * perZ
+            double shift = in.bothFlanks() ? -dir * ThreadWords.alternate(i, h.height(), depth, flank) * perZ
                     : -dir * depth * flank * perZ;
             int pass = i + 1;
             moves.add(Move.line(true, new Point(xEnd + t, a.z() + shift), pass));
@@ -230,8 +272,9 @@ final class MultipleThread {
         int passes = depths.length;
         PullOut pullOut = pullsOut ? new PullOut(host.profile().threadChamfer(), (int) side)
                 : m23() ? null : PullOut.fanuc(runOut, host.profile().threadChamfer(), (int) side);
-        writer.write(done, b.line(), g.span(), s, moves, lead, label,
-                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut, q);
+        writer.write(done, b.line(), g.span(), s, moves, h.lead(), label,
+                i -> CycleOrigin.thread(label, i, passes, b.line(), Math.round(depths[i - 1] * 1e6)), pullOut,
+                in.startAngle());
     }
 
     /** The Fanuc first block G76 P(mmrraa) Q(minimum depth) R(finishing allowance): what stays in force. */
