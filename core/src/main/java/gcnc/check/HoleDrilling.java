@@ -68,34 +68,20 @@ final class HoleDrilling extends ModalExpansion {
         String label = label(g);
         Units u = host.state().units();
         MachineProfile p = host.profile();
-        double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
         boolean fanuc = p.control().fanucDrilling();
-        // Fanuc's Q without a decimal point counts least increments of input (IS-B), as G74/G75's
-        // P and Q do; with a point it is a length in the program's unit, as the Fusion fanuc post
-        // writes it (Q2.5: docs/language.md), since a point is never read as increments
-        double increment = u == Units.INCH ? 0.0001 : 0.001;
-        boolean qInIncrements = fanuc && b.words().stream()
-                .noneMatch(w -> w.letter() == Letter.Q && NumberText.hasPoint(w.number()));
         Word at = g;
-        CycleWords words = CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN,
-                qInIncrements ? Set.of(Letter.Q) : Set.of(), noPoint, increment, w -> isCycle(w), host.out());
+        CycleWords words = words(b, g, label, u, fanuc);
         List<CheckedBlock> done = new ArrayList<>();
         List<Word> passOn = words != null ? words.passOn() : CycleBlocks.passOn(b, g, this::isCycle);
         CycleBlocks.passOn(host, b, passOn, isFirst).ifPresent(done::add);
         if (words == null) {
-            if (g != null) {
-                modal.end();
-            }
-            return done;
+            return refused(g, done);
         }
         if (at == null) {
             at = words.axes().get(0);
         }
         if (!(fanuc ? checkFanuc(words, role, label) : check(words, role, label, g))) {
-            if (g != null) {
-                modal.end();
-            }
-            return done;
+            return refused(g, done);
         }
         ModalState start = host.state();
         Point end = CycleBlocks.target(host, b, words.axes(), start);
@@ -108,61 +94,26 @@ final class HoleDrilling extends ModalExpansion {
         boolean newZ = words.hasAxis(false);
         if (g != null && !newZ) {
             host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), label, Phrase.DRILL_BOTTOM.arg());
-            modal.end();
-            return done;
+            return refused(g, done);
         }
-        double zOrigin = c.origin(start.next()).z();
         double holeBottom = newZ ? end.z() : bottom;
         // Haas: R is the R plane's Z; Fanuc: the distance from the initial level (where the cycle
         // starts) to it, or with cycle.drill_r = absolute (parameter RAB) in G90 mode its Z
         boolean rFromStart = fanuc && (!p.control().drillRAbsolute() || start.incremental());
         double initial = fanuc && g == null ? initialZ : a.z();
+        double zOrigin = c.origin(start.next()).z();
         double plane = !words.has(Letter.R) ? g != null ? a.z() : rPlane
                 : (rFromStart ? initial : zOrigin) + words.value(Letter.R) * perZ;
-        double eps = EPS_MM * p.z().countsPerMm();
-        double toBottom = holeBottom - a.z();
-        double toPlane = plane - a.z();
-        if (Math.abs(holeBottom - plane) <= eps || Math.signum(toPlane) * Math.signum(toBottom) < 0
-                || Math.abs(toPlane) > Math.abs(toBottom)) {
-            Word r = words.word(Letter.R);
-            host.out().error(Code.E187_DRILL_R_PLANE, r != null ? r.span() : at.span(), label,
-                    NumberText.plain((plane - zOrigin) / perZ, 4), NumberText.plain((a.z() - zOrigin) / perZ, 4),
-                    NumberText.plain((holeBottom - zOrigin) / perZ, 4));
-            if (g != null) {
-                modal.end();
-            }
-            return done;
+        if (!between(words, at, label, a.z(), plane, holeBottom, zOrigin, perZ)) {
+            return refused(g, done);
         }
         if (g != null) {
-            initialZ = a.z();
-            modal.start(role, function(g), label);
-            first = Double.NaN;
-            reduce = 0;
-            least = Double.NaN;
-            dwell = null;
+            begin(g, role, label, a.z());
         }
         bottom = holeBottom;
         rPlane = plane;
-        if (words.has(Letter.Q)) {
-            first = words.value(Letter.Q) * perZ;
-            least = first;
-            reduce = 0;
-        } else if (words.has(Letter.I)) {
-            first = words.value(Letter.I) * perZ;
-            reduce = words.has(Letter.J) ? words.value(Letter.J) * perZ : 0;
-            least = words.has(Letter.K) ? words.value(Letter.K) * perZ : first;
-        }
-        if (words.has(Letter.P)) {
-            dwell = words.word(Letter.P);
-        }
-        double xOrigin = c.origin(start.next()).x();
-        double holeX = (end.x() - xOrigin) / c.perX(u);
-        if (Math.abs(end.x() - xOrigin) > EPS_MM * p.x().countsPerMm()) {
-            Word x = words.axes().stream().filter(w -> w.letter() == Letter.X || w.letter() == Letter.U).findFirst()
-                    .orElse(at);
-            host.out().report(gcnc.diag.Diagnostic.warning(Code.E186_DRILL_OFF_CENTRE, x.span(), label,
-                    NumberText.plain(holeX, 4)));
-        }
+        pecks(words, perZ);
+        offCentre(words, at, label, end.x(), c.origin(start.next()).x(), c.perX(u));
         // Fanuc B/C G99: back to the R point after the hole; G98 (and Haas, Fanuc A): to the initial level
         double returnZ = start.returnToR() ? rPlane : initial;
         // K (Fanuc) or L (Haas, Fanuc Series 15): the same hole that many times, each from the
@@ -176,6 +127,86 @@ final class HoleDrilling extends ModalExpansion {
             }
         }
         return done;
+    }
+
+    /** After an error: a cycle word's cycle ends there (a block that drills again leaves it in force). */
+    private List<CheckedBlock> refused(Word g, List<CheckedBlock> done) {
+        if (g != null) {
+            modal.end();
+        }
+        return done;
+    }
+
+    /** A cycle word starts the cycle: from the level {@code z}, with no pecks or dwell until its words give them. */
+    private void begin(Word g, GRole role, String label, double z) {
+        initialZ = z;
+        modal.start(role, function(g), label);
+        first = Double.NaN;
+        reduce = 0;
+        least = Double.NaN;
+        dwell = null;
+    }
+
+    /**
+     * The cycle's words of the block; null after the error about one. Fanuc's Q without a decimal
+     * point counts least increments of input (IS-B), as G74/G75's P and Q do; with a point it is a
+     * length in the program's unit, as the Fusion fanuc post writes it (Q2.5: docs/language.md),
+     * since a point is never read as increments.
+     */
+    private CycleWords words(RawBlock b, Word g, String label, Units u, boolean fanuc) {
+        MachineProfile p = host.profile();
+        double noPoint = u == Units.INCH ? p.noPointInch() : p.noPointMm();
+        double increment = u == Units.INCH ? 0.0001 : 0.001;
+        boolean qInIncrements = fanuc && b.words().stream()
+                .noneMatch(w -> w.letter() == Letter.Q && NumberText.hasPoint(w.number()));
+        return CycleWords.read(b, g, label, fanuc ? FANUC_OWN : OWN,
+                qInIncrements ? Set.of(Letter.Q) : Set.of(), noPoint, increment, w -> isCycle(w), host.out());
+    }
+
+    /**
+     * Whether the R plane lies between the start and the bottom of the hole (the tool feeds from it
+     * to the bottom, so it must): else E187, naming the three levels in the program's Z.
+     */
+    private boolean between(CycleWords words, Word at, String label, double startZ, double plane, double holeBottom,
+                            double zOrigin, double perZ) {
+        double eps = EPS_MM * host.profile().z().countsPerMm();
+        double toBottom = holeBottom - startZ;
+        double toPlane = plane - startZ;
+        if (Math.abs(holeBottom - plane) <= eps || Math.signum(toPlane) * Math.signum(toBottom) < 0
+                || Math.abs(toPlane) > Math.abs(toBottom)) {
+            Word r = words.word(Letter.R);
+            host.out().error(Code.E187_DRILL_R_PLANE, r != null ? r.span() : at.span(), label,
+                    NumberText.plain((plane - zOrigin) / perZ, 4), NumberText.plain((startZ - zOrigin) / perZ, 4),
+                    NumberText.plain((holeBottom - zOrigin) / perZ, 4));
+            return false;
+        }
+        return true;
+    }
+
+    /** The pecks this block gives (Q, or Haas I J K), kept in force for the blocks that drill again; a P dwell too. */
+    private void pecks(CycleWords words, double perZ) {
+        if (words.has(Letter.Q)) {
+            first = words.value(Letter.Q) * perZ;
+            least = first;
+            reduce = 0;
+        } else if (words.has(Letter.I)) {
+            first = words.value(Letter.I) * perZ;
+            reduce = words.has(Letter.J) ? words.value(Letter.J) * perZ : 0;
+            least = words.has(Letter.K) ? words.value(Letter.K) * perZ : first;
+        }
+        if (words.has(Letter.P)) {
+            dwell = words.word(Letter.P);
+        }
+    }
+
+    /** Warning E186 when the hole is off the centre line (X not 0): a lathe drills on it. */
+    private void offCentre(CycleWords words, Word at, String label, double x, double xOrigin, double perX) {
+        if (Math.abs(x - xOrigin) > EPS_MM * host.profile().x().countsPerMm()) {
+            Word xw = words.axes().stream().filter(w -> w.letter() == Letter.X || w.letter() == Letter.U).findFirst()
+                    .orElse(at);
+            host.out().report(gcnc.diag.Diagnostic.warning(Code.E186_DRILL_OFF_CENTRE, xw.span(), label,
+                    NumberText.plain((x - xOrigin) / perX, 4)));
+        }
     }
 
     /** One hole from {@code start}'s position, its blocks added to {@code done}; false after an error. */
