@@ -75,12 +75,7 @@ final class Grooving {
         }
         String name = "G" + g.number();
         if (words.axes().isEmpty() && words.words().keySet().equals(Set.of(Letter.R))) {
-            double e = words.value(Letter.R);
-            if (e < 0) {
-                host.out().error(Code.E158_CYCLE_RETRACT, words.word(Letter.R).span(), name, words.word(Letter.R));
-            } else {
-                retracts.put(kind, e * (u == Units.INCH ? 25.4 : 1));
-            }
+            retract(words, kind, name, u);
             return done;
         }
         boolean haas = words.has(Letter.I) || words.has(Letter.K) || words.has(Letter.D);
@@ -101,6 +96,62 @@ final class Grooving {
         if (end == null) {
             return done;
         }
+        Cut cut = cut(g, words, name, haas, alongX, start.position(), end);
+        if (cut == null) {
+            return done;
+        }
+        Point a = start.position();
+        double retractMm = retracts.getOrDefault(kind, p.control().peckRetractMm());
+        double perMmPeck = alongX ? p.x().countsPerMm() : p.z().countsPerMm();
+        Pecking plan = new Pecking(alongX, a, cut.peckEnd(), cut.steps() ? cut.stepEnd() : (alongX ? a.z() : a.x()),
+                cut.peck(), cut.steps() ? cut.step() : Double.NaN, Double.isNaN(retractMm) ? 0 : retractMm * perMmPeck,
+                cut.relief());
+        if (plan.pecksPerCut() > 1 && Double.isNaN(retractMm)) {
+            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), name,
+                    Phrase.PECK_RETRACT.with(name));
+            return done;
+        }
+        long pecks = (long) plan.cuts() * plan.pecksPerCut();
+        if (pecks > MAX_PECKS) {
+            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, g.span(), name, cut.word(words), pecks, MAX_PECKS);
+            return done;
+        }
+        Expansion.warnIfMany(host, name, cut.word(words), pecks);
+        Pecking.Plan moves = plan.plan();
+        done.addAll(CycleBlocks.write(host, name, b.line(), g.span(), moves.moves(), moves.passes(), start,
+                -1, null));
+        return done;
+    }
+
+    /** A Fanuc first block {@code G75 R(e)}: the retract after each peck, kept for later cycles of its kind. */
+    private void retract(CycleWords words, GRole kind, String name, Units u) {
+        double e = words.value(Letter.R);
+        if (e < 0) {
+            host.out().error(Code.E158_CYCLE_RETRACT, words.word(Letter.R).span(), name, words.word(Letter.R));
+        } else {
+            retracts.put(kind, e * (u == Units.INCH ? 25.4 : 1));
+        }
+    }
+
+    /**
+     * The cut a cycle block asks for, machine counts: the peck, the step between cuts and the relief
+     * at the bottom, the ends along the peck and step axes, and whether it steps at all.
+     */
+    private record Cut(Letter peckLetter, Letter stepLetter, double peck, double step, double relief, double peckEnd,
+                       double stepEnd, boolean steps) {
+        /** The word that sets the cycle's count of pecks (the peck, else the step), where E167 and E330 point. */
+        Word word(CycleWords words) {
+            return words.word(peckLetter) != null ? words.word(peckLetter) : words.word(stepLetter);
+        }
+    }
+
+    /**
+     * The cut from the block's peck, step and relief words (Haas I K D, Fanuc P Q R) from {@code a}
+     * to {@code end}; null after the error about one of them (E180, E181, E183-E185).
+     */
+    private Cut cut(Word g, CycleWords words, String name, boolean haas, boolean alongX, Point a, Point end) {
+        Units u = host.state().units();
+        MachineProfile p = host.profile();
         Letter peckL = haas ? (alongX ? Letter.I : Letter.K) : (alongX ? Letter.P : Letter.Q);
         Letter stepL = haas ? (alongX ? Letter.K : Letter.I) : (alongX ? Letter.Q : Letter.P);
         Letter reliefL = haas ? Letter.D : Letter.R;
@@ -109,7 +160,6 @@ final class Grooving {
         double perStep = alongX ? c.perZ(u) : c.perRadius(u);
         double perMmPeck = alongX ? p.x().countsPerMm() : p.z().countsPerMm();
         double perMmStep = alongX ? p.z().countsPerMm() : p.x().countsPerMm();
-        Point a = start.position();
         double peckEnd = alongX ? end.x() : end.z();
         double stepEnd = words.hasAxis(!alongX) ? (alongX ? end.z() : end.x()) : (alongX ? a.z() : a.x());
         double depth = Math.abs(peckEnd - (alongX ? a.x() : a.z()));
@@ -120,7 +170,7 @@ final class Grooving {
         if (peck <= 0) {
             host.out().error(Code.E180_PECK_NOT_POSITIVE, words.word(peckL).span(), name, words.word(peckL),
                     "the peck depth");
-            return done;
+            return null;
         }
         double eps = EPS_MM * Math.min(perMmPeck, perMmStep);
         // a step of zero is an error only where the cycle steps: drilling on the centreline
@@ -128,48 +178,30 @@ final class Grooving {
         if (step <= 0 && span > eps) {
             host.out().error(Code.E180_PECK_NOT_POSITIVE, words.word(stepL).span(), name, words.word(stepL),
                     "the step between cuts");
-            return done;
+            return null;
         }
         if (peck > depth + eps) {
             host.out().error(Code.E181_PECK_DEEPER_THAN_CUT, words.word(peckL).span(), name, words.word(peckL),
                     NumberText.plain(depth / perPeck, 4) + (alongX ? " on the radius" : " along Z"));
-            return done;
+            return null;
         }
         boolean steps = span > eps;
         if (steps && Double.isNaN(step)) {
             host.out().error(Code.E185_STEP_MISSING, g.span(), name, NumberText.plain(span / perMmStep, 3),
                     alongX ? "Z" : "X", stepL + (haas ? " in the Haas form" : " in the Fanuc form"));
-            return done;
+            return null;
         }
         if (steps && relief < 0) {
             host.out().error(Code.E184_RELIEF_SIGN, words.word(reliefL).span(), name, words.word(reliefL),
                     alongX ? "Z" : "X");
-            return done;
+            return null;
         }
         if (steps && relief > step + eps) {
             host.out().error(Code.E183_RELIEF_TOO_LARGE, words.word(reliefL).span(), name, words.word(reliefL),
                     words.word(stepL));
-            return done;
+            return null;
         }
-        double retractMm = retracts.getOrDefault(kind, p.control().peckRetractMm());
-        Pecking plan = new Pecking(alongX, a, peckEnd, steps ? stepEnd : (alongX ? a.z() : a.x()), peck,
-                steps ? step : Double.NaN, Double.isNaN(retractMm) ? 0 : retractMm * perMmPeck, relief);
-        if (plan.pecksPerCut() > 1 && Double.isNaN(retractMm)) {
-            host.out().error(Code.E182_PECK_CYCLE_MISSING, g.span(), name,
-                    Phrase.PECK_RETRACT.with(name));
-            return done;
-        }
-        long pecks = (long) plan.cuts() * plan.pecksPerCut();
-        if (pecks > MAX_PECKS) {
-            host.out().error(Code.E167_CYCLE_TOO_MANY_PASSES, g.span(), name, words.word(peckL) != null
-                    ? words.word(peckL) : words.word(stepL), pecks, MAX_PECKS);
-            return done;
-        }
-        Expansion.warnIfMany(host, name, words.word(peckL) != null ? words.word(peckL) : words.word(stepL), pecks);
-        Pecking.Plan moves = plan.plan();
-        done.addAll(CycleBlocks.write(host, name, b.line(), g.span(), moves.moves(), moves.passes(), start,
-                -1, null));
-        return done;
+        return new Cut(peckL, stepL, peck, step, relief, peckEnd, stepEnd, steps);
     }
 
     private static Word first(CycleWords words, Letter... letters) {
