@@ -175,71 +175,117 @@ public final class Sender {
     private Download preflight(MachineLink c, String link) throws IOException, RunFault {
         MachineLink.Facts f = c.preflight();
         events.accept(new Event.Connected(link, f.revision()));
+        gcnc.machine.GalilModel model = model(f);
+        Download piece = options.resumeAt() == null ? Download.whole(program) : resume(c, f);
+        int needLines = form.linesNeeded(piece, program, options.step());
+        int needSlots = program.mostSegments();
+        announce(f, model, needLines, needSlots);
+        fits(f, model, needLines);
+        ready(c, f, model, needSlots);
+        if (wayBack != null) {
+            WayBackRun back = new WayBackRun(program, blocks, profile, messages, options.wayBack());
+            if (options.dryRun()) {
+                back.verify(wayBack, options.resumeAt(), events, cut);
+            } else {
+                back.make(wayBack, options.resumeAt(), c, events, operator, cut);
+            }
+        }
+        if (options.resumeAt() == null) {
+            double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();
+            if (Math.hypot(f.position()[0] - home[0], f.position()[1] - home[1]) > tolerance()) {
+                // in the terms of the first motion's block (the frame the home was verified in), then the counts
+                int line = firstMotionLine();
+                PositionText where = new PositionText(program, blocks);
+                throw new RunFault(Code.E826_NOT_AT_START, 0, false, where.at(line, f.position()), where.at(line, home));
+            }
+        }
+        return piece;
+    }
+
+    /**
+     * The profile's Galil model, which the controller must be (E818), with the memory of the firmware it
+     * reported (tables/galil_models.csv; a profile that counted on firmware 1.2a's, on an older one, gets the older).
+     */
+    private gcnc.machine.GalilModel model(MachineLink.Facts f) throws RunFault {
         gcnc.machine.GalilModel model = profile.galilModel();
         if (f.model().isEmpty() || !MachineLink.sameModel(f.model(), model.name())) {
             String what = f.model().isEmpty() ? "the controller did not name a Galil model ('"
                     + GalilClient.printable(f.revision()) + "' to ^R^V)" : "the controller is a " + f.revision();
             throw new RunFault(Code.E818_WRONG_CONTROLLER, 0, false, what, profile.name(), model.name());
         }
-        // the model's memory (tables/galil_models.csv, the lead's GalilModel) with the firmware the controller reported
-        if (model.newFirmware() && !f.firmware12a()) {
-            // the profile counted on firmware 1.2a's memory; this controller runs older firmware
-            model = model.withOlderFirmware();
-        }
-        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
-        int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
+        return model.newFirmware() && !f.firmware12a() ? model.withOlderFirmware() : model;
+    }
+
+    /**
+     * The resume program, from the position read again on this connection (the preflight's TP, after
+     * _XQ0 and _BGS said it is at rest: a controller that ran on after a dropped link is resumed from
+     * where it really is), or from the block's start once a way back has brought the axes there; what
+     * the controller holds against what the program needs there, and what the resume changes, said.
+     */
+    private Download resume(MachineLink c, MachineLink.Facts f) throws IOException, RunFault {
+        Resume resume = new Resume(program, blocks, tolerance()).spindle(profile);
         Download piece;
-        if (options.resumeAt() == null) {
-            piece = Download.whole(program);
-        } else {
-            // the position read again on this connection (the preflight's TP, after _XQ0 and _BGS said it is
-            // at rest): a controller that ran on after a dropped link is resumed from where it really is
-            Resume resume = new Resume(program, blocks, tolerance()).spindle(profile);
-            try {
-                piece = resume.plan(options.resumeAt(), f.position());
-            } catch (RunFault e) {
-                if (options.wayBack() == null || resume.wayBack().isEmpty()) {
-                    throw e;
-                }
-                // the resume as it will be once the way back has brought the axes to the block's start
-                wayBack = resume.wayBack().get();
-                cut = resume.wayBackFrom();
-                piece = resume.plan(options.resumeAt(), wayBack.legs().get(wayBack.legs().size() - 1).to());
+        try {
+            piece = resume.plan(options.resumeAt(), f.position());
+        } catch (RunFault e) {
+            if (options.wayBack() == null || resume.wayBack().isEmpty()) {
+                throw e;
             }
-            resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
-            // what the controller holds against what the program needs there, and what the resume changes
-            int line = options.resumeAt().line();
-            for (String said : ResumeState.changes(c, profile, resume.restored(), line, blocks.at(line))) {
-                events.accept(new Event.Message(said));
-            }
+            wayBack = resume.wayBack().get();
+            cut = resume.wayBackFrom();
+            piece = resume.plan(options.resumeAt(), wayBack.legs().get(wayBack.legs().size() - 1).to());
         }
-        int needLines = form.linesNeeded(piece, program, options.step());
-        int needLabels = program.labels();
-        List<String> vars = program.variables();
-        int needSlots = program.mostSegments();
-        events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), needLabels,
-                f.variablesLeft(), vars.size(), f.arraySpace(), f.vectorSlots(), needSlots, f.pendingError(),
-                f.limits(), f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position(),
-                new PositionText(program, blocks).at(options.resumeAt() != null ? options.resumeAt().line() : firstMotionLine(),
-                        f.position())));
-        // the wear the DMC was compiled with: the operator sees which file's wear moves the tools (docs/run.md)
+        resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
+        int line = options.resumeAt().line();
+        for (String said : ResumeState.changes(c, profile, resume.restored(), line, blocks.at(line))) {
+            events.accept(new Event.Message(said));
+        }
+        return piece;
+    }
+
+    /** The pre-flight's facts against the program's needs, and the wear the DMC was compiled with (docs/run.md). */
+    private void announce(MachineLink.Facts f, gcnc.machine.GalilModel model, int needLines, int needSlots) {
+        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+        events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), program.labels(),
+                f.variablesLeft(), program.variables().size(), f.arraySpace(), f.vectorSlots(), needSlots,
+                f.pendingError(), f.limits(),
+                f.motorsOff().stream().map(String::valueOf).collect(java.util.stream.Collectors.joining()), f.position(),
+                new PositionText(program, blocks).at(options.resumeAt() != null ? options.resumeAt().line()
+                        : firstMotionLine(), f.position())));
+        // the operator sees which file's wear moves the tools
         for (int n : blocks.toolOffsets()) {
             profile.wear().of(n).ifPresent(w -> events.accept(new Event.Wear(w.file(), n, w.x(), w.z(),
                     profile.wear().unit(), profile.diameterX())));
         }
+    }
+
+    /** E819 when the program's lines, labels or variables do not fit the controller. */
+    private void fits(MachineLink.Facts f, gcnc.machine.GalilModel model, int needLines) throws RunFault {
+        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+        int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
+        List<String> vars = program.variables();
         if (needLines > programLines) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, needLines + " program lines", programLines
                     + " (" + f.revision() + ")", form.name().equals("program") ? "run it in the stream form (--form stream)"
                     : "the resident program does not fit: fewer threads per program, or a controller with more memory");
         }
-        if (needLabels > maxLabels) {
-            throw new RunFault(Code.E819_CAPACITY, 0, false, needLabels + " labels", Integer.toString(maxLabels),
+        if (program.labels() > maxLabels) {
+            throw new RunFault(Code.E819_CAPACITY, 0, false, program.labels() + " labels", Integer.toString(maxLabels),
                     "the program has too many labels");
         }
         if (f.variablesLeft() >= 0 && vars.size() > f.variablesLeft()) {
             throw new RunFault(Code.E819_CAPACITY, 0, false, vars.size() + " variables " + vars,
                     f.variablesLeft() + " free", "clear the controller's variables (reset) and run again");
         }
+    }
+
+    /**
+     * Whether the controller is ready to take the program: no program running, nothing moving, the
+     * vector buffer emptied (CS S) and large enough, no limit switch active (E825, E831, E819); motors
+     * off are a finding (E829), and an error it had pending is said.
+     */
+    private void ready(MachineLink c, MachineLink.Facts f, gcnc.machine.GalilModel model, int needSlots)
+            throws IOException, RunFault {
         if (!f.pendingError().isEmpty()) {
             events.accept(new Event.Message("the controller had an error pending, read and cleared with TC1: "
                     + f.pendingError()));
@@ -271,24 +317,6 @@ public final class Sender {
             f.motorsOff().forEach(axes::append);
             finding(Code.E829_MOTORS_OFF, 0, List.of(axes.toString()));
         }
-        if (wayBack != null) {
-            WayBackRun back = new WayBackRun(program, blocks, profile, messages, options.wayBack());
-            if (options.dryRun()) {
-                back.verify(wayBack, options.resumeAt(), events, cut);
-            } else {
-                back.make(wayBack, options.resumeAt(), c, events, operator, cut);
-            }
-        }
-        if (options.resumeAt() == null) {
-            double[] home = program.sequences().isEmpty() ? f.position() : program.sequences().get(0).start();
-            if (Math.hypot(f.position()[0] - home[0], f.position()[1] - home[1]) > tolerance()) {
-                // in the terms of the first motion's block (the frame the home was verified in), then the counts
-                int line = firstMotionLine();
-                PositionText where = new PositionText(program, blocks);
-                throw new RunFault(Code.E826_NOT_AT_START, 0, false, where.at(line, f.position()), where.at(line, home));
-            }
-        }
-        return piece;
     }
 
     private int stopped(RunFault f, Progress progress) {
