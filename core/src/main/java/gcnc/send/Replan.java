@@ -64,8 +64,88 @@ final class Replan {
         double run = s.lengthBefore(k) + (partial ? along(pieces.get(k), axes) : 0);
         int firstKept = pieces.get(k).line();
 
-        // the original's structure: its BGS (before VE when it was fed), its wait for room, its VE, its
-        // trip points, and the commands between its segments that belong to none of them
+        Layout o = layout(s, firstKept);
+        int feedFrom = o.fedFill() >= 0 ? o.fedFill() : fill;
+        int wait = roomWait(o, segments.size(), feedFrom, s, at);
+        List<Integer> loose = o.loose();
+        List<Integer> passed = o.passed();
+        // the trip points the axes are past set the state; the others are kept, measured on the new path
+        List<Trip> ahead = new ArrayList<>();
+        for (Trip t : o.trips()) {
+            if (t.at() <= run) {
+                passed.addAll(t.sets());
+            } else {
+                ahead.add(t);
+            }
+        }
+        int[] tripSegment = tripSegments(ahead, segments, run);
+
+        Download.Builder b = new Download.Builder();
+        int vs = s.first();
+        Command speed = program.command(vs);
+        b.add(speed instanceof Command.VectorSpeed ? speed : new Command.VectorSpeed(Fixed.of(Math.round(s.speed()))), vs);
+        Writer w = new Writer(b, ahead, tripSegment, run);
+        boolean begun = false;
+        int li = 0;
+        for (int j = 0; j < segments.size(); j++) {
+            if (j >= feedFrom && (j - feedFrom) % StreamSplit.BUFFER_BATCH == 0) {
+                if (!begun) {
+                    b.add(new Command.BeginSequence(), o.bgs());
+                    begun = true;
+                }
+                w.trips(j - StreamSplit.TRIP_LEAD);
+                b.add(new Command.Call(StreamSplit.BUFFER_WAIT), wait);
+            }
+            Segment g = segments.get(j);
+            b.add(g.command(), g.origin());
+            // what the original gave after this segment, before its next one
+            int next = j + 1 < segments.size() ? segments.get(j + 1).origin() : o.ve() < 0 ? s.last() : o.ve();
+            for (; li < loose.size() && loose.get(li) < next; li++) {
+                b.add(program.command(loose.get(li)), loose.get(li));
+            }
+        }
+        b.add(new Command.VectorEnd(), o.ve());
+        for (; li < loose.size(); li++) {
+            b.add(program.command(loose.get(li)), loose.get(li));
+        }
+        if (!begun) {
+            b.add(new Command.BeginSequence(), o.bgs());
+        }
+        w.trips(Integer.MAX_VALUE);
+        b.add(program.command(s.last()), s.last());
+        return new Result(b, passed);
+    }
+
+    /**
+     * The wait for room the new sequence feeds its later batches with: the original's, else the
+     * program's routine when the rest is longer than the buffer holds before BGS; E827 when there is none.
+     */
+    private int roomWait(Layout o, int segments, int feedFrom, Sequence s, ResumePoint at) throws RunFault {
+        if (segments <= feedFrom || o.roomWait() >= 0) {
+            return o.roomWait();
+        }
+        int wait = waitRoutine();
+        if (wait < 0) {
+            throw new RunFault(Code.E827_CANNOT_RESUME, at.line(), false, at, "the rest of the sequence from line "
+                    + at.line() + " is " + segments + " segments, more than the buffer holds before BGS ("
+                    + feedFrom + "), and the program has no wait for room (#" + StreamSplit.BUFFER_WAIT
+                    + ") to feed it with: resume at the sequence's first block, line "
+                    + program.sourceLine(s.pieces().get(0).line()));
+        }
+        return wait;
+    }
+
+    /**
+     * The original sequence's structure: its BGS (before VE when it was fed; {@code fedFill} the
+     * segments given before it then, else -1), its wait for room ({@code roomWait}), its VE (-1 for each it lacks), its trip
+     * points with what each sets, the commands between its segments that belong to none of them
+     * ({@code loose}) and those of them before the first kept piece ({@code passed}: the state).
+     */
+    private record Layout(int bgs, int roomWait, int ve, int fedFill, List<Trip> trips, List<Integer> loose,
+                          List<Integer> passed) {
+    }
+
+    private Layout layout(Sequence s, int firstKept) {
         int bgs = -1;
         int wait = -1;
         int ve = -1;
@@ -121,28 +201,14 @@ final class Replan {
                 }
             };
         }
-        int feedFrom = fedFill >= 0 ? fedFill : fill;
-        if (segments.size() > feedFrom && wait < 0) {
-            wait = waitRoutine();
-            if (wait < 0) {
-                throw new RunFault(Code.E827_CANNOT_RESUME, at.line(), false, at, "the rest of the sequence from line "
-                        + at.line() + " is " + segments.size() + " segments, more than the buffer holds before BGS ("
-                        + feedFrom + "), and the program has no wait for room (#" + StreamSplit.BUFFER_WAIT
-                        + ") to feed it with: resume at the sequence's first block, line "
-                        + program.sourceLine(s.pieces().get(0).line()));
-            }
-        }
-        // the trip points the axes are past set the state; the others are kept, measured on the new path
-        List<Trip> ahead = new ArrayList<>();
-        for (Trip t : trips) {
-            if (t.at() <= run) {
-                passed.addAll(t.sets());
-            } else {
-                ahead.add(t);
-            }
-        }
-        // the segment of the new sequence each kept trip point's motion starts with: the segments that
-        // end at or before it (a trip point is the whole count at or before its motion's start)
+        return new Layout(bgs, wait, ve, fedFill, trips, loose, passed);
+    }
+
+    /**
+     * The segment of the new sequence each kept trip point's motion starts with: the segments that
+     * end at or before it (a trip point is the whole count at or before its motion's start).
+     */
+    private static int[] tripSegments(List<Trip> ahead, List<Segment> segments, double run) {
         int[] tripSegment = new int[ahead.size()];
         double end = 0;
         int n = 0;
@@ -154,41 +220,7 @@ final class Replan {
             }
             tripSegment[t] = n;
         }
-
-        Download.Builder b = new Download.Builder();
-        int vs = s.first();
-        Command speed = program.command(vs);
-        b.add(speed instanceof Command.VectorSpeed ? speed : new Command.VectorSpeed(Fixed.of(Math.round(s.speed()))), vs);
-        Writer w = new Writer(b, ahead, tripSegment, run);
-        boolean begun = false;
-        int li = 0;
-        for (int j = 0; j < segments.size(); j++) {
-            if (j >= feedFrom && (j - feedFrom) % StreamSplit.BUFFER_BATCH == 0) {
-                if (!begun) {
-                    b.add(new Command.BeginSequence(), bgs);
-                    begun = true;
-                }
-                w.trips(j - StreamSplit.TRIP_LEAD);
-                b.add(new Command.Call(StreamSplit.BUFFER_WAIT), wait);
-            }
-            Segment g = segments.get(j);
-            b.add(g.command(), g.origin());
-            // what the original gave after this segment, before its next one
-            int next = j + 1 < segments.size() ? segments.get(j + 1).origin() : ve < 0 ? s.last() : ve;
-            for (; li < loose.size() && loose.get(li) < next; li++) {
-                b.add(program.command(loose.get(li)), loose.get(li));
-            }
-        }
-        b.add(new Command.VectorEnd(), ve);
-        for (; li < loose.size(); li++) {
-            b.add(program.command(loose.get(li)), loose.get(li));
-        }
-        if (!begun) {
-            b.add(new Command.BeginSequence(), bgs);
-        }
-        w.trips(Integer.MAX_VALUE);
-        b.add(program.command(s.last()), s.last());
-        return new Result(b, passed);
+        return tripSegment;
     }
 
     /** Writes the kept trip points, each AV from the one before it (the first from the new start). */
