@@ -178,18 +178,8 @@ public final class Compiler {
         // with a simulation, the simulator's thread writes the lines after replaying them (see SimulatorThread)
         try (SimulatorThread sim = simulate.isPresent() ? new SimulatorThread(settings.profile(), simulate.get(), out,
                 observed ? replay(observer) : null) : null) {
-            dialect.begin(collect);
-            if (simulate.isPresent() && simulate.get().noBlank()) {
-                dialect.blank(Optional.empty(), collect);
-            }
-            simulate.flatMap(SimOptions::stock).ifPresent(b -> dialect.blank(Optional.of(
-                    new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout(), b.bore())), collect));
-            if (sim != null) {
-                sim.begin(List.copyOf(lines));
-                lines.clear();
-            } else {
-                flush(lines, out);
-            }
+            header(dialect, simulate, collect);
+            handOn(lines, sim, SimulatorThread::begin, out);
             gcnc.plan.Planner planner = planner(settings);
             // after the first error nothing is written: the arcs are then judged as check judges them (E202,
             // E224/E225 where the writer would have found them), so that both report the same errors
@@ -209,12 +199,7 @@ public final class Compiler {
                 // the motions the planner still holds are of blocks already checked: replayed before the
                 // end-of-program checks, as each block's own sequences are
                 planner.finish(lower);
-                if (sim != null) {
-                    sim.held(List.copyOf(lines));
-                    lines.clear();
-                } else {
-                    flush(lines, out);
-                }
+                handOn(lines, sim, SimulatorThread::held, out);
             }
             checker.finish(reader.lines());
             boolean translated = !diags.hasErrors();
@@ -223,24 +208,9 @@ public final class Compiler {
                 if (limits != null) {
                     limits.finish(); // the whole program against the controller's memory
                 }
-                if (sim != null) {
-                    sim.end(List.copyOf(lines));
-                    lines.clear();
-                } else {
-                    flush(lines, out);
-                }
+                handOn(lines, sim, SimulatorThread::end, out);
             }
-            Optional<SimReport> report = Optional.empty();
-            if (sim != null) {
-                diags.addAll(sim.finish());
-                report = translated ? Optional.of(sim.report()) : Optional.empty();
-                if (translated && diags.sorted().stream().noneMatch(d -> d.code() == Code.E316_SIM_NO_STOCK)) {
-                    // the simulation cut the blank: it judged every feed check left open (E306/E307 where
-                    // one really took material), so check's "compile decides" warnings are settled
-                    diags.withdraw(d -> d.code() == Code.E660_FEED_SPINDLE_STOPPED_NOT_JUDGED
-                            || d.code() == Code.E661_PULL_NOT_JUDGED);
-                }
-            }
+            Optional<SimReport> report = sim == null ? Optional.empty() : simulated(sim, diags, translated);
             report.ifPresent(observer::simulated);
             return new Result(diags, blocks, report, calledFiles(reader));
         }
@@ -349,6 +319,50 @@ public final class Compiler {
         }
         double stickout = profile.model().stock().map(gcnc.machine.MachineModel.Blank::stickout).orElse(0.0);
         return gcnc.sim.StockHeader.parse(firstLine, stickout).map(options::withStock).orElse(options);
+    }
+
+    /** The program's header, and its blank (or the note that it has none) when the run gives one. */
+    private static void header(Dialect dialect, Optional<SimOptions> simulate, java.util.function.Consumer<Instruction> collect) {
+        dialect.begin(collect);
+        if (simulate.isPresent() && simulate.get().noBlank()) {
+            dialect.blank(Optional.empty(), collect);
+        }
+        simulate.flatMap(SimOptions::stock).ifPresent(b -> dialect.blank(Optional.of(
+                new gcnc.machine.MachineModel.Blank(b.diameter(), b.length(), b.stickout(), b.bore())), collect));
+    }
+
+    /** One stage of the simulator's run: the header, the motions the planner held to the end, the footer. */
+    private interface Stage {
+        void take(SimulatorThread sim, List<Instruction> lines) throws java.io.InterruptedIOException;
+    }
+
+    /** Hands the lines written so far on: to the simulator's {@code stage}, which writes them after replaying them, or else to {@code out}. */
+    private static void handOn(List<Instruction> lines, SimulatorThread sim, Stage stage,
+                               java.util.function.Consumer<Instruction> out) throws java.io.InterruptedIOException {
+        if (sim != null) {
+            stage.take(sim, List.copyOf(lines));
+            lines.clear();
+        } else {
+            flush(lines, out);
+        }
+    }
+
+    /**
+     * The simulator's findings joined to the compile's, and its summary when the program was translated.
+     * A simulation that cut the blank judged every feed check left open (E306/E307 where one really took
+     * material), so the checker's "compile decides" warnings (E660, E661) are settled and withdrawn.
+     */
+    private static Optional<SimReport> simulated(SimulatorThread sim, Diagnostics diags, boolean translated)
+            throws java.io.InterruptedIOException {
+        diags.addAll(sim.finish());
+        if (!translated) {
+            return Optional.empty();
+        }
+        if (diags.sorted().stream().noneMatch(d -> d.code() == Code.E316_SIM_NO_STOCK)) {
+            diags.withdraw(d -> d.code() == Code.E660_FEED_SPINDLE_STOPPED_NOT_JUDGED
+                    || d.code() == Code.E661_PULL_NOT_JUDGED);
+        }
+        return Optional.of(sim.report());
     }
 
     private static void flush(List<Instruction> lines, java.util.function.Consumer<Instruction> out) {
