@@ -67,6 +67,22 @@ class ProbeCommandTest {
         }
     }
 
+    /** Garbage in the reply to ^R^V over Ethernet once threw NullPointerException; now the revision's row says so. */
+    @Test
+    void anUnreadableRevisionOverEthernetIsNamedByItsRow() throws Exception {
+        Path report = Files.createTempDirectory("gcnc-probe").resolve("probe.json");
+        try (VirtualController v = vc(20, "garbage-after=55")) { // the bytes before the reply to ^R^V
+            RunOnControllerTest.Run r = RunOnControllerTest.gcnc("", "controller", "probe", "--machine", "haas",
+                    "--tcp", "127.0.0.1:" + v.port(), "--report", report.toString());
+            assertEquals(1, r.status(), r.all());
+            assertFalse(r.all().contains("Exception"), r.all());
+            Map<String, String> s = statuses(report);
+            assertEquals("confirmed", s.get("eo-no-echo-ethernet"), s.toString());
+            assertEquals("contradicted", s.get("rv-revision"), s.toString());
+            assertTrue(r.err().contains("warning[E836]: the controller contradicts rv-revision"), r.err());
+        }
+    }
+
     @Test
     void theMotionTestNeedsTheTypedWordAndMovesNothingWithoutIt() throws Exception {
         Path report = Files.createTempDirectory("gcnc-probe").resolve("probe.json");

@@ -48,40 +48,88 @@ public final class Probe {
     /** Probes; {@code motion} null for the questions only. */
     public ProbeReport run(Motion motion, char[] axes) throws IOException, NotReady {
         boolean serial = client.link().serial();
-        String revision;
-        if (serial) {
-            boolean echoed = client.disableEcho();
-            set(ProbeRow.ECHO_SERIAL, echoed == model.serialEcho() ? Status.CONFIRMED : Status.CONTRADICTED,
-                    model.serialEcho() ? "echo until EO 0" : "no echo", echoed ? "echoed EO 0" : "no echo");
-            revision = revisionOrGarbage();
-            set(ProbeRow.ECHO_OFF, revision != null ? Status.CONFIRMED : Status.CONTRADICTED, "no echo after EO 0",
-                    revision != null ? "no echo" : "the reply to ^R^V was not readable");
-            if (revision == null) {
-                return report("");
-            }
-        } else {
-            // the first question, before ^R^V (whose echoed control bytes are no protocol): an echo shows as its text
-            GalilClient.Reply r = client.query("MG 20261127");
-            boolean echoed = r.data().startsWith("MG");
-            set(ProbeRow.NO_ECHO_ETHERNET, echoed ? Status.CONTRADICTED : Status.CONFIRMED, "no echo",
-                    echoed ? "echoed: '" + GalilClient.printable(r.data()) + "'" : "no echo");
-            if (echoed) {
-                return report(""); // every further reply would carry the echo: nothing more can be read
-            }
-            GalilClient.Reply eo = client.command("EO 0");
-            if (!eo.ok()) {
-                client.query("TC1");
-            }
-            set(ProbeRow.EO_SERIAL_ONLY, eo.ok() ? Status.CONTRADICTED : Status.CONFIRMED, "? (not accepted over Ethernet)",
-                    eo.ok() ? ":" : "?");
-            revision = revisionOrGarbage();
+        String revision = serial ? serialEcho() : ethernetEcho();
+        if (revision == null) {
+            return report(""); // no reply can be read: nothing more can be asked
         }
         String found = MachineLink.model(revision);
         set(ProbeRow.REVISION, found.isEmpty() ? Status.CONTRADICTED : Status.CONFIRMED, "DMCnnnn Rev x.yz",
                 "'" + GalilClient.printable(revision) + "'");
         client.command("CW 1");
         facts.put("pending error (TC1)", text("TC1"));
-        // the reference's own example of an unknown command and its TC1 text
+        refusals();
+        configuration(serial);
+        facts.put("labels free (_DL)", num("_DL"));
+        facts.put("variables free (_UL)", num("_UL"));
+        facts.put("array elements free (DM ?)", text("DM ?"));
+        facts.put("program lines (firmware " + (MachineLink.firmware12a(revision) ? "1.2a or later" : "before 1.2a") + ")",
+                MachineLink.firmware12a(revision) ? "4000" : "2000");
+        boolean running = number("_XQ0") >= 0;
+        boolean moving = number("_BGS") != 0;
+        facts.put("program running (_XQ0)", running ? "yes" : "no");
+        facts.put("sequence moving (_BGS)", moving ? "yes" : "no");
+        buffer(running, moving);
+        String limits = axes(axes);
+        set(ProbeRow.AV_RELATIVE, Status.NOT_CHECKED, "each AV from the last", "not asked: AV is a trippoint, \"Not Valid"
+                + " in terminal\", and the probe downloads no program");
+        if (motion == null) {
+            set(ProbeRow.CS_FROM_ZERO, Status.NOT_CHECKED, "0 during the first segment", "not asked: no --allow-motion");
+            set(ProbeRow.AVS_FROM_START, Status.NOT_CHECKED, "the path from the sequence start", "not asked: no --allow-motion");
+            return report(revision);
+        }
+        if (running || moving || limits != null) {
+            String why = running ? "a program runs in thread 0 (_XQ0 >= 0)" : moving ? "a sequence moves (_BGS = 1)"
+                    : "a limit switch is active (" + limits + ")";
+            lastReport = report(revision);
+            throw new NotReady(why);
+        }
+        move(motion);
+        return report(revision);
+    }
+
+    /**
+     * Over a serial link: whether the unit echoes until {@code EO 0} (sent first), and that it no longer
+     * does; the reply to {@code ^R^V}, or null when it is not readable.
+     */
+    private String serialEcho() throws IOException {
+        boolean echoed = client.disableEcho();
+        set(ProbeRow.ECHO_SERIAL, echoed == model.serialEcho() ? Status.CONFIRMED : Status.CONTRADICTED,
+                model.serialEcho() ? "echo until EO 0" : "no echo", echoed ? "echoed EO 0" : "no echo");
+        String revision = revisionOrGarbage();
+        set(ProbeRow.ECHO_OFF, revision != null ? Status.CONFIRMED : Status.CONTRADICTED, "no echo after EO 0",
+                revision != null ? "no echo" : "the reply to ^R^V was not readable");
+        return revision;
+    }
+
+    /**
+     * Over Ethernet: that the unit does not echo, and refuses {@code EO}; the reply to {@code ^R^V},
+     * or null when the unit echoes (every further reply would carry the echo) or that reply is not
+     * readable (the revision's row says so).
+     */
+    private String ethernetEcho() throws IOException {
+        // the first question, before ^R^V (whose echoed control bytes are no protocol): an echo shows as its text
+        GalilClient.Reply r = client.query("MG 20261127");
+        boolean echoed = r.data().startsWith("MG");
+        set(ProbeRow.NO_ECHO_ETHERNET, echoed ? Status.CONTRADICTED : Status.CONFIRMED, "no echo",
+                echoed ? "echoed: '" + GalilClient.printable(r.data()) + "'" : "no echo");
+        if (echoed) {
+            return null;
+        }
+        GalilClient.Reply eo = client.command("EO 0");
+        if (!eo.ok()) {
+            client.query("TC1");
+        }
+        set(ProbeRow.EO_SERIAL_ONLY, eo.ok() ? Status.CONTRADICTED : Status.CONFIRMED, "? (not accepted over Ethernet)",
+                eo.ok() ? ":" : "?");
+        String revision = revisionOrGarbage();
+        if (revision == null) {
+            set(ProbeRow.REVISION, Status.CONTRADICTED, "DMCnnnn Rev x.yz", "the reply to ^R^V was not readable");
+        }
+        return revision;
+    }
+
+    /** The reference's own example of an unknown command and its TC1 text, and a command refused in the terminal. */
+    private void refusals() throws IOException {
         GalilClient.Reply bad = client.command("GF32");
         String tc = text("TC1");
         set(ProbeRow.TC1_TEXT, !bad.ok() && tc.equals("1 Unrecognized command") ? Status.CONFIRMED : Status.CONTRADICTED,
@@ -90,6 +138,10 @@ public final class Probe {
         String wtTc = wt.ok() ? "" : text("TC1");
         set(ProbeRow.NOT_IN_TERMINAL, !wt.ok() && wtTc.startsWith("2 ") ? Status.CONFIRMED : Status.CONTRADICTED,
                 "? then 2 Command only valid from program", wt.ok() ? ":" : "? then " + wtTc);
+    }
+
+    /** Where the unit sends its unsolicited messages ({@code _CF}): serial at power-up, this port after {@code CF I}. */
+    private void configuration(boolean serial) throws IOException {
         double cf = number("_CF");
         if (cf == 'S') {
             set(ProbeRow.CF_DEFAULT_SERIAL, Status.CONFIRMED, "83 (S)", "83 (S)");
@@ -102,15 +154,10 @@ public final class Probe {
         double after = cfi.ok() ? number("_CF") : -1;
         set(ProbeRow.CF_THIS_PORT, cfi.ok() && port.length() == 1 && after == port.charAt(0) ? Status.CONFIRMED
                 : Status.CONTRADICTED, "_CF = this port (" + port + ")", cfi.ok() ? letter(after) : "CF I refused");
-        facts.put("labels free (_DL)", num("_DL"));
-        facts.put("variables free (_UL)", num("_UL"));
-        facts.put("array elements free (DM ?)", text("DM ?"));
-        facts.put("program lines (firmware " + (MachineLink.firmware12a(revision) ? "1.2a or later" : "before 1.2a") + ")",
-                MachineLink.firmware12a(revision) ? "4000" : "2000");
-        boolean running = number("_XQ0") >= 0;
-        boolean moving = number("_BGS") != 0;
-        facts.put("program running (_XQ0)", running ? "yes" : "no");
-        facts.put("sequence moving (_BGS)", moving ? "yes" : "no");
+    }
+
+    /** That {@code CS S} empties the vector buffer ({@code _LMS} the whole buffer after it); not asked while anything runs. */
+    private void buffer(boolean running, boolean moving) throws IOException {
         int whole = (int) model.range(GalilModel.Limit.BUFFER_SEGMENTS).max();
         if (!running && !moving) {
             GalilClient.Reply cs = client.command("CS S");
@@ -120,6 +167,13 @@ public final class Probe {
         } else {
             set(ProbeRow.CS_CLEARS_BUFFER, Status.NOT_CHECKED, "_LMS = " + whole, "not asked: CS S is not valid while in motion");
         }
+    }
+
+    /**
+     * Each axis's limit switches ({@code _LF}, {@code _LR}: 0 or 1) and smoothing ({@code _IT}: 1, none);
+     * the switches as read when one is active, else null.
+     */
+    private String axes(char[] axes) throws IOException {
         boolean readable = true;
         boolean smoothing = false;
         StringBuilder limits = new StringBuilder();
@@ -138,21 +192,7 @@ public final class Probe {
         }
         set(ProbeRow.LIMITS_READABLE, readable ? Status.CONFIRMED : Status.CONTRADICTED, "0 or 1", limits.toString());
         set(ProbeRow.NO_SMOOTHING, smoothing ? Status.CONTRADICTED : Status.CONFIRMED, "1", its.toString());
-        set(ProbeRow.AV_RELATIVE, Status.NOT_CHECKED, "each AV from the last", "not asked: AV is a trippoint, \"Not Valid"
-                + " in terminal\", and the probe downloads no program");
-        if (motion == null) {
-            set(ProbeRow.CS_FROM_ZERO, Status.NOT_CHECKED, "0 during the first segment", "not asked: no --allow-motion");
-            set(ProbeRow.AVS_FROM_START, Status.NOT_CHECKED, "the path from the sequence start", "not asked: no --allow-motion");
-            return report(revision);
-        }
-        if (running || moving || active) {
-            String why = running ? "a program runs in thread 0 (_XQ0 >= 0)" : moving ? "a sequence moves (_BGS = 1)"
-                    : "a limit switch is active (" + limits + ")";
-            lastReport = report(revision);
-            throw new NotReady(why);
-        }
-        move(motion);
-        return report(revision);
+        return active ? limits.toString() : null;
     }
 
     private ProbeReport lastReport;
