@@ -464,6 +464,13 @@ class RunOnControllerTest {
             assertTrue(m.find(), r.err());
             int line = Integer.parseInt(m.group(1));
             assertTrue(r.out().contains("executing: line " + line), r.out());
+            // where the axes stopped, in the program's terms and then the counts the controller holds
+            Matcher where = Pattern.compile("(?m)^axes at X-?[0-9.]+ Z-?[0-9.]+ \\(Galil counts (-?\\d+),(-?\\d+)\\)$")
+                    .matcher(r.out());
+            assertTrue(where.find(), r.out());
+            long[] stood = axes(vc);
+            assertEquals(stood[0], Long.parseLong(where.group(1)), r.out());
+            assertEquals(stood[1], Long.parseLong(where.group(2)), r.out());
             assertFalse(vc.controller().moving());
             assertEquals(0.0, vc.controller().offset(2), "the spindle reference OF on C is back to 0 V");
             assertFalse(vc.controller().output(1), "M05's output (CB1)");
@@ -502,6 +509,9 @@ class RunOnControllerTest {
             assertTrue(m.find(), r.err());
             assertFalse(r.out().contains("stopped:"), r.out());
             assertTrue(r.out().contains("the link dropped; the controller may run on without the host"), r.out());
+            // the position is the last poll's, and said so (the controller may have moved on)
+            assertTrue(Pattern.compile("(?m)^axes last seen at X-?[0-9.]+ Z-?[0-9.]+ \\(Galil counts -?\\d+,-?\\d+\\)"
+                    + " \\(the controller may have moved them since\\)$").matcher(r.out()).find(), r.out());
             assertTrue(Integer.parseInt(m.group(1)) < Integer.parseInt(m.group(2)), r.err());
             assertTrue(r.out().contains("resume with: gcnc run"), r.out());
         }
@@ -515,6 +525,9 @@ class RunOnControllerTest {
             assertEquals(3, r.status(), r.all());
             assertTrue(r.err().contains("error[E823]: the controller's reply to"), r.err());
             assertTrue(r.err().contains("is not Galil protocol"), r.err());
+            // where the axes are: read after the stop, or (the link garbled past reading) the last poll's, said so
+            assertTrue(Pattern.compile("(?m)^axes (at|last seen at) X-?[0-9.]+ Z-?[0-9.]+ \\(Galil counts -?\\d+,-?\\d+\\)"
+                    + "( \\(the controller may have moved them since\\))?$").matcher(r.out()).find(), r.out());
             assertFalse(vc.controller().moving());
         }
     }

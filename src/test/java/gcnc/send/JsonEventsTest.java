@@ -8,9 +8,11 @@ import org.junit.jupiter.api.Test;
 class JsonEventsTest {
     @Test
     void anEventIsOneObjectWithItsFieldsInOrder() {
-        assertEquals("{\"event\":\"stopped\",\"reason\":\"E821\",\"completed\":7,\"executing\":8,\"resumeAt\":\"8\","
+        assertEquals("{\"event\":\"stopped\",\"reason\":\"E821\",\"completed\":7,\"executing\":8,"
+                + "\"where\":\"X40.000 Z-1.500 (Galil counts 131927,19685)\",\"wherePolled\":false,\"resumeAt\":\"8\","
                 + "\"resume\":\"gcnc run \\\"a b\\\".nc --resume-at 8\"}",
-                JsonEvents.json(new Event.Stopped("E821", 7, 8, "8", "gcnc run \"a b\".nc --resume-at 8")));
+                JsonEvents.json(new Event.Stopped("E821", 7, 8, "X40.000 Z-1.500 (Galil counts 131927,19685)", false, "8",
+                        "gcnc run \"a b\".nc --resume-at 8")));
     }
 
     @Test

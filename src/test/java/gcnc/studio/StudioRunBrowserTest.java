@@ -203,6 +203,7 @@ class StudioRunBrowserTest {
         String where = browser.findElement(By.id("runstopped")).getText();
         int executing = Integer.parseInt(browser.findElement(By.id("dro")).getAttribute("data-line"));
         assertTrue(where.contains("executing: line " + executing), where);
+        assertTrue(where.matches("(?s).*\\nAxes at X-?[0-9.]+ Z-?[0-9.]+ \\(Galil counts -?\\d+,-?\\d+\\)\\n.*"), where);
         assertTrue(where.contains("--resume-at " + executing), where); // the command line that does the same
         assertTrue(browser.findElement(By.id("runlog")).getText().contains("E828"), browser.findElement(By.id("runlog")).getText());
         wait.until(d -> d.findElement(By.id("run-resumeat")).isEnabled()); // once the stopped run's thread ended

@@ -264,6 +264,8 @@ class StudioRunServerTest {
         JsonObject stopped = events("stopped").get(0);
         assertEquals("E828", stopped.get("reason").getAsString());
         int at = stopped.get("executing").getAsInt();
+        assertTrue(stopped.get("where").getAsString().matches("X-?[0-9.]+ Z-?[0-9.]+ \\(Galil counts -?\\d+,-?\\d+\\)"),
+                stopped.toString());
         assertTrue(stopped.get("resume").getAsString().matches("gcnc run bishop\\.nc --machine thesis-2004 --tcp 127\\.0\\.0\\.1:\\d+"
                 + " --resume-at " + stopped.get("resumeAt").getAsString()), stopped.toString());
         assertEquals(at, Integer.parseInt(stopped.get("resumeAt").getAsString().split(":")[0]));

@@ -133,8 +133,12 @@ final class StatusText implements EventSink {
     private void stopped(Event.Stopped s) {
         endLine();
         // a dropped link did not stop the controller: it may run on without the host (E851)
-        out.println(say.get("E851".equals(s.reason()) ? "run.link_dropped" : "run.stopped", block(s.completed()),
+        boolean dropped = "E851".equals(s.reason());
+        out.println(say.get(dropped ? "run.link_dropped" : "run.stopped", block(s.completed()),
                 block(s.executing())));
+        if (s.where() != null) {
+            out.println(say.get(s.wherePolled() ? "run.axes_last_seen" : "run.axes_at", s.where()));
+        }
         if (s.resume() != null) {
             out.println(say.get("run.resume", s.resume()));
         }

@@ -134,9 +134,13 @@ public sealed interface Event {
 
     /**
      * The run stopped before the end: why, the last block completed and the block executing (G-code
-     * lines; 0 = none), and the command that resumes it (null when there is nothing to resume).
+     * lines; 0 = none), where the axes are ({@code where}: program terms in the frame of the block
+     * executing, then the Galil counts, as read after the stop or, when the link no longer answered,
+     * at the last poll ({@code wherePolled}); null when they were never read), and the command that
+     * resumes it (null when there is nothing to resume).
      */
-    record Stopped(String reason, int completed, int executing, String resumeAt, String resume) implements Event {
+    record Stopped(String reason, int completed, int executing, String where, boolean wherePolled, String resumeAt,
+                   String resume) implements Event {
         public Kind kind() {
             return Kind.STOPPED;
         }

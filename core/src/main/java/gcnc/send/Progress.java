@@ -16,6 +16,8 @@ public final class Progress {
     private boolean started;
     /** Where the axes were last seen (Galil plane counts), null before any poll. */
     private double[] axes;
+    /** Whether {@link #axes} were read after the stop ({@link #axes(double[])}), not only at the last poll. */
+    private boolean readAfterStop;
     private final long began = System.nanoTime();
 
     /** How far (counts) the axes may be from a sequence's start and still stand at it. */
@@ -123,7 +125,26 @@ public final class Progress {
     public void axes(double[] counts) {
         if (counts != null) {
             axes = counts.clone();
+            readAfterStop = true;
         }
+    }
+
+    /** Whether {@link #where} is the last poll's position: nothing was read after the stop (the link no longer answered). */
+    public boolean wherePolled() {
+        return !readAfterStop;
+    }
+
+    /**
+     * Where the axes were last read (after a stop, else at the last poll: {@link #wherePolled}) in the program's terms, in
+     * the frame of the block executing (or the last completed), then the Galil counts; null when they
+     * were never read.
+     */
+    public String where() {
+        if (axes == null) {
+            return null;
+        }
+        int line = executingLine() > 0 ? executingLine() : completedLine();
+        return new PositionText(program, blocks).at(line, axes);
     }
 
     /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */
@@ -131,7 +152,9 @@ public final class Progress {
         if (index >= 0) {
             executing = index;
         }
-        axes(counts);
+        if (counts != null) {
+            axes = counts.clone();
+        }
         int line = executingLine();
         BlockTable.Block b = blocks.at(line);
         if (line != lastBlock && line > 0) {

@@ -326,7 +326,7 @@ public final class Sender {
         }
         ResumePoint at = progress.resumePoint();
         events.accept(new Event.Stopped(f.code().id(), progress.completedLine(), progress.executingLine(),
-                at == null ? null : at.toString(), at == null ? null : resumeCommand.apply(at)));
+                progress.where(), progress.wherePolled(), at == null ? null : at.toString(), at == null ? null : resumeCommand.apply(at)));
         return STOPPED;
     }
 

@@ -259,6 +259,7 @@ export function runPanel({ api, program, saveFirst, showLine, tool, goTo, proble
     const box = $("runstopped");
     box.replaceChildren();
     line(box, t.stoppedAt(e.completed, e.executing), "head");
+    if (e.where) line(box, e.wherePolled ? t.axesLastSeen(e.where) : t.axesAt(e.where));
     if (e.resumeAt) {
       const b = document.createElement("button");
       b.id = "run-resumeat";
