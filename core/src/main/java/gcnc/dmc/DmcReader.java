@@ -89,7 +89,7 @@ public final class DmcReader {
         if (t.isEmpty()) {
             return null;
         }
-        if (t.startsWith("'") || t.equals("NO") || t.startsWith("NO ")) {
+        if (isComment(t)) {
             return comment(t);
         }
         if (t.charAt(0) == '#') {
@@ -126,31 +126,15 @@ public final class DmcReader {
             }
             return AxisReader.syncPoint(t, faults);
         }
-        String cmd = t.substring(0, 2);
-        String args = t.substring(2).strip();
+        return command(t.substring(0, 2), t.substring(2).strip(), t, faults);
+    }
+
+    /** A two-letter Galil command {@code cmd} with its arguments {@code args} ({@code t} the whole line). */
+    private static Command command(String cmd, String args, String t, Faults faults) {
         switch (cmd) {
             case "VP":
-            case "CR": {
-                // the segment's own speeds follow its arguments: VP a,b <o >p
-                int lt = args.indexOf('<');
-                int gt = args.indexOf('>');
-                int cut = lt < 0 ? gt : gt < 0 ? lt : Math.min(lt, gt);
-                Command.Speeds speeds = Command.Speeds.NONE;
-                if (cut >= 0) {
-                    speeds = speeds(args.substring(cut));
-                    if (speeds == null) {
-                        return bad(faults, cmd, t);
-                    }
-                    args = args.substring(0, cut).strip();
-                }
-                Command c = cmd.equals("VP") ? vectorPosition(args, t, faults) : arc(args, t, faults);
-                if (c == null || !speeds.any()) {
-                    return c;
-                }
-                return c instanceof VectorPosition v ? new VectorPosition(v.first(), v.second(), speeds)
-                        : new CircularArc(((CircularArc) c).radius(), ((CircularArc) c).start(),
-                                ((CircularArc) c).sweep(), speeds);
-            }
+            case "CR":
+                return segment(cmd, args, t, faults);
             case "VS":
                 return positive(args, cmd, t, faults, VectorSpeed::new);
             case "VA":
@@ -233,6 +217,28 @@ public final class DmcReader {
         }
     }
 
+    /** A segment, {@code VP a,b} or {@code CR r,θ,δ}, with its own speeds after its arguments ({@code <o >p}). */
+    private static Command segment(String cmd, String args, String t, Faults faults) {
+        int lt = args.indexOf('<');
+        int gt = args.indexOf('>');
+        int cut = lt < 0 ? gt : gt < 0 ? lt : Math.min(lt, gt);
+        Command.Speeds speeds = Command.Speeds.NONE;
+        String operands = args;
+        if (cut >= 0) {
+            speeds = speeds(args.substring(cut));
+            if (speeds == null) {
+                return bad(faults, cmd, t);
+            }
+            operands = args.substring(0, cut).strip();
+        }
+        if (cmd.equals("VP")) {
+            VectorPosition v = vectorPosition(operands, t, faults);
+            return v == null || !speeds.any() ? v : new VectorPosition(v.first(), v.second(), speeds);
+        }
+        CircularArc a = arc(operands, t, faults);
+        return a == null || !speeds.any() ? a : new CircularArc(a.radius(), a.start(), a.sweep(), speeds);
+    }
+
     private static Command comment(String t) {
         if (t.equals(FEED_MARK)) {
             return new FeedMark();
@@ -300,12 +306,13 @@ public final class DmcReader {
         return new Command.Speeds(o, p);
     }
 
-    private static Command vectorPosition(String args, String text, Faults faults) {
+    private static VectorPosition vectorPosition(String args, String text, Faults faults) {
         int comma = args.indexOf(',');
         Fixed p = comma < 0 ? null : Fixed.parse(args, 0, comma, true);
         Fixed q = comma < 0 ? null : Fixed.parse(args, comma + 1, args.length(), true);
         if (p == null || q == null) {
-            return bad(faults, "VP", text);
+            bad(faults, "VP", text);
+            return null;
         }
         if (Math.abs(p.unscaled()) > INT32 || Math.abs(q.unscaled()) > INT32) {
             faults.fault(Code.E310_SIM_COUNT_RANGE, text);
@@ -314,14 +321,15 @@ public final class DmcReader {
         return new VectorPosition(p.unscaled(), q.unscaled());
     }
 
-    private static Command arc(String args, String text, Faults faults) {
+    private static CircularArc arc(String args, String text, Faults faults) {
         String[] a = args.split(",", -1);
         Fixed[] v = new Fixed[3];
         for (int i = 0; a.length == 3 && i < 3; i++) {
             v[i] = Fixed.parse(a[i], 0, a[i].length(), false);
         }
         if (v[2] == null || v[0] == null || v[1] == null || v[0].value() <= 0 || Math.abs(v[2].value()) > 360 * 1000) {
-            return bad(faults, "CR", text);
+            bad(faults, "CR", text);
+            return null;
         }
         return new CircularArc(v[0], v[1], v[2]);
     }
