@@ -88,6 +88,29 @@ class RunStreamTest {
     }
 
     /**
+     * A limit switch trips at the last segment of a sequence of the stream: the resident program's
+     * #LIMSWI stops the axes and turns the spindle off (#FAULT), and the sequence stands at its end, so
+     * only the routine's message says so. The host stops there (E825 with the controller's words) and
+     * sends no next sequence: it used to go on cutting from where the axes stood, the spindle off, and
+     * report "ran to the end".
+     */
+    @Test
+    void aFaultRoutinesMessageStopsTheStream() throws Exception {
+        Path p = part(Files.readString(Path.of("docs/examples/bushing.nc")));
+        try (VirtualController vc = RunOnControllerTest.traced(100, model("DMC-4040"), null, "limit-at=10")) {
+            homed(vc);
+            RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--stock",
+                    "1.5in,200mm,150mm", "--tcp", RunOnControllerTest.tcp(vc), "--form", "stream");
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("part.nc:14:1: error[E825]: the controller cannot run the program: its fault routine"
+                    + " stopped it ('LIMIT SWITCH AT G-CODE LINE 14')"), r.err());
+            assertFalse(r.out().contains("ran to the end"), r.out());
+            assertTrue(r.out().contains("executing: line 14"), r.out());
+            assertFalse(vc.controller().moving());
+        }
+    }
+
+    /**
      * The thesis's bishop on its own lathe over a real pseudo-terminal pair, in both forms: the same
      * executed path, segment for segment. The thesis's DMC-1700 is an ISA card gcnc run cannot reach
      * (E830, galil_models.csv host_link = bus), so the lathe's profile is run with a networked DMC-4040

@@ -26,7 +26,7 @@ final class Subroutines {
         c.add(new Command.Jump(ok, Optional.of(new Command.Condition.InputIs(input, true))));
         c.add(new Command.Jump(loop, Optional.of(new Command.Condition.Before(MachineCode.DEADLINE))));
         c.addAll(then);
-        c.add(new Command.Message(message + " AT G-CODE LINE", List.of(MachineCode.LINE)));
+        c.add(new Command.Message(message + gcnc.dmc.FaultMessage.AT, List.of(MachineCode.LINE)));
         c.add(new Command.Jump(MachineCode.FAULT, Optional.empty()));
         c.add(new Command.Label(ok));
         c.addAll(then);
@@ -42,7 +42,7 @@ final class Subroutines {
     static void stopRoutine(List<Command> c, java.util.OptionalInt cycleStart) {
         Command.Condition waiting = new Command.Condition.VariableIs(MachineCode.STOP_FLAG, 1);
         c.add(new Command.Label(MachineCode.PROGRAM_STOP));
-        c.add(new Command.Message("PROGRAM STOP AT G-CODE LINE", List.of(MachineCode.LINE)));
+        c.add(new Command.Message(gcnc.dmc.FaultMessage.PROGRAM_STOP + gcnc.dmc.FaultMessage.AT, List.of(MachineCode.LINE)));
         if (cycleStart.isPresent()) {
             Command.Condition pressed = new Command.Condition.InputIs(cycleStart.getAsInt(), true);
             c.add(new Command.Label("PSR"));
@@ -66,7 +66,7 @@ final class Subroutines {
         if (abort) {
             c.add(new Command.Abort());
         }
-        c.add(new Command.Message(message + " AT G-CODE LINE", List.of(operands)));
+        c.add(new Command.Message(message + gcnc.dmc.FaultMessage.AT, List.of(operands)));
         c.add(new Command.Jump(MachineCode.FAULT, Optional.empty()));
     }
 }

@@ -16,6 +16,8 @@ public final class Progress {
     private boolean started;
     /** Where the axes were last seen (Galil plane counts), null before any poll. */
     private double[] axes;
+    /** The first fault a routine of the program reported (an unsolicited {@link gcnc.dmc.FaultMessage}), or null. */
+    private volatile gcnc.dmc.FaultMessage.Fault fault;
     /** Whether {@link #axes} were read after the stop ({@link #axes(double[])}), not only at the last poll. */
     private boolean readAfterStop;
     private final long began = System.nanoTime();
@@ -145,6 +147,18 @@ public final class Progress {
         }
         int line = executingLine() > 0 ? executingLine() : completedLine();
         return new PositionText(program, blocks).at(line, axes);
+    }
+
+    /** An unsolicited line from the controller: a fault routine's message is kept ({@link #controllerFault}). */
+    public void heard(String line) {
+        if (fault == null) {
+            gcnc.dmc.FaultMessage.read(line).ifPresent(f -> fault = f);
+        }
+    }
+
+    /** The first fault a routine of the program reported on the controller (it then stopped the axes and the spindle). */
+    public java.util.Optional<gcnc.dmc.FaultMessage.Fault> controllerFault() {
+        return java.util.Optional.ofNullable(fault);
     }
 
     /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */

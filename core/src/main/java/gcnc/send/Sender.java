@@ -73,7 +73,10 @@ public final class Sender {
     /** Runs the program over {@code link} (which it closes); returns the exit status. */
     public int run(Link link, int timeoutMs) {
         Progress progress = new Progress(program, blocks, events, tolerance());
-        GalilClient client = new GalilClient(link, timeoutMs, m -> events.accept(new Event.Message(m)));
+        GalilClient client = new GalilClient(link, timeoutMs, m -> {
+            events.accept(new Event.Message(m));
+            progress.heard(m);
+        });
         MachineLink c = new MachineLink(client, profile, program.plane());
         // closed in finally, not by try-with-resources: the catches below still talk to the controller
         try {

@@ -329,8 +329,19 @@ public final class StreamForm implements Delivery {
                     + where.at(progress.executingLine(), end) + " (stop code " + code + ": " + MachineLink.stopReason(code) + ")");
         }
 
-        /** The operator's stop, hold and override, between commands and polls. */
+        /**
+         * The operator's stop, hold and override, between commands and polls; and a fault routine of the
+         * resident program (#LIMSWI, #POSERR, #AMPERR, a wait that timed out) that stopped the axes and the
+         * spindle: nothing more is sent (the next segments would move on from where it stopped, the
+         * spindle off), E825 with the controller's words.
+         */
         private void operator() throws IOException, RunFault {
+            if (progress.controllerFault().isPresent()) {
+                c.stopAll();
+                throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "its fault routine stopped it ('"
+                        + progress.controllerFault().get() + "'): the axes and the spindle were stopped and nothing more"
+                        + " is sent");
+            }
             if (op.stopped()) {
                 c.stopAll();
                 throw new RunFault(Code.E828_STOPPED_BY_OPERATOR, progress.executingLine(), true, progress.executingLine());
