@@ -496,6 +496,35 @@ class RunOnControllerTest {
         return Arrays.copyOfRange(w, 1, w.length);
     }
 
+    /**
+     * A poll refused while the program runs far ahead of the last poll (a hundred times real time,
+     * ten seconds of program a poll): the report and the resume name the block where the machine
+     * stopped, found from the axes, not the last poll's. The resume it printed once named the rapid
+     * from home (line 9) with the axes in the roughing passes, and was refused (E827); now it
+     * finishes the part.
+     */
+    @Test
+    void aRefusedPollNamesTheBlockWhereTheMachineStopped() throws Exception {
+        Path p = part(Files.readString(Path.of("docs/examples/bushing.nc")));
+        try (VirtualController vc = traced(100, model("DMC-4040"), null, "reject=30")) {
+            homed(vc);
+            String[] stock = {"--machine", "haas", "--stock", "1.5in,200mm,150mm", "--tcp", tcp(vc)};
+            Run r = gcnc("", concat(new String[] {"run", p.toString(), "--form", "program"}, stock));
+            assertEquals(3, r.status(), r.all());
+            assertTrue(r.err().contains("error[E820]: the controller refused TP"), r.err());
+            String resume = resumeCommand(r.out());
+            Run again = gcnc("", resumeArgs(resume));
+            assertEquals(0, again.status(), again.all());
+            assertTrue(again.out().contains("ran to the end"), again.out());
+        }
+    }
+
+    private static String[] concat(String[] a, String[] b) {
+        String[] all = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
+    }
+
     @Test
     void aDroppedConnectionNamesTheLastCompletedAndTheExecutingBlock() throws Exception {
         try (VirtualController vc = controller(model("DMC-4040"), "disconnect-after=1300")) {

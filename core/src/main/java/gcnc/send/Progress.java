@@ -131,6 +131,37 @@ public final class Progress {
         }
     }
 
+    /**
+     * After a stop, the axes read where it left them ({@code TP}), and the block they stand in: the
+     * piece of the sequence executing when they are on it (where the last poll saw them), else the
+     * first piece from that sequence on whose path they are. Between the last poll and the stop the
+     * program may have run on (a refused or garbled poll, a high speed, a long poll period), so the
+     * report and the resume point are where the machine stopped; axes on no path (a thread pass, a
+     * move off the program) leave the last poll's block.
+     */
+    public void settle(double[] counts) {
+        axes(counts);
+        if (counts == null || executing < 0) {
+            return;
+        }
+        Sequence now = program.sequenceAt(executing);
+        int k = now == null ? -1 : now.pieceAt(executing);
+        if (k >= 0 && Resume.onPiece(now.pieces().get(k), counts, tolerance)) {
+            return;
+        }
+        for (Sequence s : program.sequences()) {
+            if (s.last() < executing || s.isThreadPass()) {
+                continue;
+            }
+            for (Sequence.Piece p : s.pieces()) {
+                if (Resume.onPiece(p, counts, tolerance)) {
+                    executing = p.line();
+                    return;
+                }
+            }
+        }
+    }
+
     /** Whether {@link #where} is the last poll's position: nothing was read after the stop (the link no longer answered). */
     public boolean wherePolled() {
         return !readAfterStop;

@@ -93,16 +93,19 @@ public final class Sender {
             }
             return stopped(f, progress);
         } catch (GalilClient.Rejected r) {
-            RunFault f = c.refused(r.command(), progress.executingLine(), progress.hasStarted());
+            RunFault f = c.refused(r.command(), progress.executingLine(), progress.hasStarted()); // TC1 before the stop
             if (progress.hasStarted()) {
                 c.stopAll();
                 readAxes(c, progress);
+                // at the block where the machine stopped, which the report and the resume name
+                f = new RunFault(f.code(), progress.executingLine(), true, f.args().toArray());
             }
             return stopped(f, progress);
         } catch (LinkFault lf) {
             if (progress.hasStarted() && lf.kind() != LinkFault.Kind.DROPPED) {
                 client.resync(300);
                 c.stopAll();
+                readAxes(c, progress);
             }
             String done = block(progress.completedLine());
             String now = block(progress.executingLine());
@@ -136,10 +139,13 @@ public final class Sender {
                 block(progress.executingLine()));
     }
 
-    /** The axes read after a stop, for the resume point; a link that no longer answers leaves the last poll's. */
+    /**
+     * The axes read after a stop and the block they stand in ({@link Progress#settle}), for the report
+     * and the resume point; a link that no longer answers leaves the last poll's.
+     */
     private static void readAxes(MachineLink c, Progress progress) {
         try {
-            progress.axes(c.position());
+            progress.settle(c.position());
         } catch (IOException | RuntimeException e) {
             // the last poll's position stands
         }
