@@ -305,6 +305,33 @@ class RunOnControllerTest {
     }
 
     /**
+     * What an operator's terminal left on the serial line (commands sent, their echoes and replies never
+     * read) is not taken for the run's replies: the pre-flight once read the stale ':' as the answer to
+     * its own commands and stopped with E823 ("'DMC4040 Rev 1.2d' where only : or ? belongs").
+     */
+    @Test
+    void whatATerminalLeftOnTheSerialLineIsNotTakenForAReply() throws Exception {
+        assumeTrue(gcnc.PtyPair.available(), "socat (setup.sh installs it)");
+        try (gcnc.PtyPair pty = gcnc.PtyPair.open(Files.createTempDirectory("gcnc-pty"), "")) {
+            Path p = part(PART);
+            try (VirtualController vc = VirtualController.pty(pty.controller,
+                    new VirtualController.Options(model("DMC-4040"), FAST, List.of(), null))) {
+                long[] h = home();
+                try (var io = java.nio.channels.FileChannel.open(pty.host, java.nio.file.StandardOpenOption.WRITE)) {
+                    // echoed until EO 0, then ':' each: nothing reads them
+                    io.write(java.nio.ByteBuffer.wrap(("EO 0\rDP " + h[0] + "," + h[1] + "\rMG 1\r")
+                            .getBytes(StandardCharsets.ISO_8859_1)));
+                }
+                Thread.sleep(500);
+                Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--port", pty.host.toString(), "--poll", "20");
+                assertEquals(0, r.status(), r.all());
+                assertTrue(r.out().contains("ran to the end"), r.out());
+                assertArrayEquals(programEnd(p), axes(vc));
+            }
+        }
+    }
+
+    /**
      * DP over the pty, as an operator's terminal would send it; the virtual controller echoes it, as a
      * factory unit does until a host sends EO 0 (COMALL EO); after a gcnc run has sent it, no echo.
      */
