@@ -217,7 +217,7 @@ class ResumeTest {
         Progress progress = new Progress(p, BlockTable.none(), e -> { });
         progress.at(BLENDED.indexOf("VP 1000,1000 <800"), home(p), new Operator());
         assertEquals(new ResumePoint(6, 0), progress.resumePoint(), "the axes at the sequence's start");
-        progress.axes(plus(home(p), 1000, 200));
+        progress.settle(plus(home(p), 1000, 200)); // the axes read after the stop
         assertEquals(new ResumePoint(7, 0), progress.resumePoint(), "the axes on line 7's segment");
         // and that point resumes from where the axes are: the sequence whole
         Download r = new Resume(p, 3).plan(new ResumePoint(6, 0), home(p));

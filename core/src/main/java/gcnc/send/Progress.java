@@ -123,8 +123,8 @@ public final class Progress {
         executing = index;
     }
 
-    /** Where the axes are, read after a stop (Galil plane counts): what {@link #resumePoint} judges by. */
-    public void axes(double[] counts) {
+    /** The axes read after a stop (Galil plane counts): what {@link #resumePoint} judges by ({@link #settle}). */
+    private void axes(double[] counts) {
         if (counts != null) {
             axes = counts.clone();
             readAfterStop = true;
@@ -134,23 +134,25 @@ public final class Progress {
     /**
      * After a stop, the axes read where it left them ({@code TP}), and the block they stand in: the
      * piece of the sequence executing when they are on it (where the last poll saw them), else the
-     * first piece from that sequence on whose path they are. Between the last poll and the stop the
-     * program may have run on (a refused or garbled poll, a high speed, a long poll period), so the
-     * report and the resume point are where the machine stopped; axes on no path (a thread pass, a
-     * move off the program) leave the last poll's block.
+     * first piece from that sequence on (from the program's start before any poll) whose path they
+     * are on. Between the last poll and the stop the program may have run on (a refused or garbled
+     * poll, a high speed, a long poll period), so the report and the resume point are where the
+     * machine stopped; axes on no path (a thread pass, a move off the program) leave the last poll's.
      */
     public void settle(double[] counts) {
         axes(counts);
-        if (counts == null || executing < 0) {
+        if (counts == null) {
             return;
         }
-        Sequence now = program.sequenceAt(executing);
-        int k = now == null ? -1 : now.pieceAt(executing);
+        // before the first poll (a first poll refused), from the program's start
+        int from = Math.max(executing, 0);
+        Sequence now = program.sequenceAt(from);
+        int k = now == null || executing < 0 ? -1 : now.pieceAt(from);
         if (k >= 0 && Resume.onPiece(now.pieces().get(k), counts, tolerance)) {
             return;
         }
         for (Sequence s : program.sequences()) {
-            if (s.last() < executing || s.isThreadPass()) {
+            if (s.last() < from || s.isThreadPass()) {
                 continue;
             }
             for (Sequence.Piece p : s.pieces()) {
@@ -192,10 +194,33 @@ public final class Progress {
         return java.util.Optional.ofNullable(fault);
     }
 
+    /**
+     * A poll's piece (from {@code _CSS}) held against the axes read with it: at a sequence's start the
+     * count can still be the sequence before's (the controller keeps it after a sequence ends, and
+     * sets it anew only once the new one moves), naming a later piece than the axes are on; then the
+     * earlier piece of the same sequence they are on is taken. Anything else stands as polled.
+     */
+    private int onTheAxes(int index, double[] counts) {
+        Sequence s = program.sequenceAt(index);
+        if (s == null || s.isThreadPass() || counts == null) {
+            return index;
+        }
+        int k = s.pieceAt(index);
+        if (k <= 0 || Resume.onPiece(s.pieces().get(k), counts, tolerance)) {
+            return index;
+        }
+        for (int j = 0; j < k; j++) {
+            if (Resume.onPiece(s.pieces().get(j), counts, tolerance)) {
+                return s.pieces().get(j).line();
+            }
+        }
+        return index;
+    }
+
     /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */
     public void at(int index, double[] counts, Operator operator) {
         if (index >= 0) {
-            executing = index;
+            executing = onTheAxes(index, counts);
         }
         if (counts != null) {
             axes = counts.clone();
