@@ -170,9 +170,9 @@ public final class Progress {
     }
 
     /**
-     * Where the axes were last read (after a stop, else at the last poll: {@link #wherePolled}) in the program's terms, in
-     * the frame of the block executing (or the last completed), then the Galil counts; null when they
-     * were never read.
+     * Where the axes were last read (after a stop, else at the last poll: {@link #wherePolled}) in the
+     * program's terms, in the frame of the block executing (or the last completed), then the Galil
+     * counts; null when they were never read.
      */
     public String where() {
         if (axes == null) {
