@@ -70,14 +70,21 @@ public final class GalilClient implements AutoCloseable {
         return commands;
     }
 
+    /** How long a serial line is read and its bytes dropped before its first command (a quiet line costs this once). */
+    static final int STALE_MS = 200;
+
     /**
      * {@code EO 0} on a serial link: turns the port's echo off (COMALL EO: "This command is defaulted to
      * EO1. Galil software upon connection will set EO0. The EO command is accepted over the serial port
      * only"). Sent first, before any other command, so that it is the only command whose reply may carry
      * the echo: the echo of {@code EO 0} and its CR (and an LF, should a unit add one) is taken off before
-     * the reply is read. Returns whether the controller echoed it; a {@code ?} is {@link Rejected}.
+     * the reply is read. Before it, what the line held from before this connection (an operator's
+     * terminal session, the replies of a host that went away, a program's messages) is read for
+     * {@link #STALE_MS} and dropped, so that the first reply read is its own. Returns whether the
+     * controller echoed it; a {@code ?} is {@link Rejected}.
      */
     public boolean disableEcho() throws IOException {
+        resync(STALE_MS);
         String cmd = "EO 0";
         String sent = cmd + "\r";
         write(cmd, sent);

@@ -40,9 +40,6 @@ public final class MachineLink {
         return r.ok() ? r.data().strip() : "";
     }
 
-    /** How long a serial line is read and its bytes dropped before the first command (a quiet line costs this once). */
-    static final int STALE_MS = 200;
-
     /**
      * The pre-flight: model and firmware, memory, the vector buffer, a pending error, limit switches,
      * motors, where the axes are, whether a program or a sequence runs. Asks, and changes only how the
@@ -52,12 +49,6 @@ public final class MachineLink {
      * is {@link #clearSequence}, once the sender knows nothing moves.)
      */
     public Facts preflight() throws IOException {
-        if (client.link().serial()) {
-            // a serial line keeps what came before this connection (an operator's terminal session, the
-            // replies of a host that went away, a program's messages): dropped, so that the first reply
-            // read is the first command's
-            client.resync(STALE_MS);
-        }
         boolean echoed = client.link().serial() && client.disableEcho();
         String rev = revision();
         // unsolicited output with the high bit set, to tell it from replies (COMALL CW; gclib sets it too)

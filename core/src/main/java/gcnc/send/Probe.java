@@ -92,7 +92,6 @@ public final class Probe {
      * does; the reply to {@code ^R^V}, or null when it is not readable.
      */
     private String serialEcho() throws IOException {
-        client.resync(MachineLink.STALE_MS); // what the line held from before (a terminal's replies): dropped
         boolean echoed = client.disableEcho();
         set(ProbeRow.ECHO_SERIAL, echoed == model.serialEcho() ? Status.CONFIRMED : Status.CONTRADICTED,
                 model.serialEcho() ? "echo until EO 0" : "no echo", echoed ? "echoed EO 0" : "no echo");

@@ -152,16 +152,22 @@ public final class Progress {
             return;
         }
         for (Sequence s : program.sequences()) {
-            if (s.last() < from || s.isThreadPass()) {
-                continue;
-            }
-            for (Sequence.Piece p : s.pieces()) {
-                if (Resume.onPiece(p, counts, tolerance)) {
-                    executing = p.line();
-                    return;
-                }
+            int line = s.last() < from || s.isThreadPass() ? -1 : pieceOn(s, s.pieces().size(), counts);
+            if (line >= 0) {
+                executing = line;
+                return;
             }
         }
+    }
+
+    /** The compiled line of the first of {@code s}'s first {@code count} pieces whose path the axes are on, or -1. */
+    private int pieceOn(Sequence s, int count, double[] counts) {
+        for (int j = 0; j < count; j++) {
+            if (Resume.onPiece(s.pieces().get(j), counts, tolerance)) {
+                return s.pieces().get(j).line();
+            }
+        }
+        return -1;
     }
 
     /** Whether {@link #where} is the last poll's position: nothing was read after the stop (the link no longer answered). */
@@ -209,12 +215,8 @@ public final class Progress {
         if (k <= 0 || Resume.onPiece(s.pieces().get(k), counts, tolerance)) {
             return index;
         }
-        for (int j = 0; j < k; j++) {
-            if (Resume.onPiece(s.pieces().get(j), counts, tolerance)) {
-                return s.pieces().get(j).line();
-            }
-        }
-        return index;
+        int earlier = pieceOn(s, k, counts);
+        return earlier >= 0 ? earlier : index;
     }
 
     /** A poll: {@code index} executing (compiled program's line), the axes at {@code counts}. */

@@ -188,8 +188,9 @@ public final class Sender {
         Download piece = options.resumeAt() == null ? Download.whole(program) : resume(c, f);
         int needLines = form.linesNeeded(piece, program, options.step());
         int needSlots = program.mostSegments();
-        announce(f, model, needLines, needSlots);
-        fits(f, model, needLines);
+        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+        announce(f, programLines, needLines, needSlots);
+        fits(f, model, programLines, needLines);
         ready(c, f, model, needSlots);
         if (wayBack != null) {
             WayBackRun back = new WayBackRun(program, blocks, profile, messages, options.wayBack());
@@ -253,8 +254,7 @@ public final class Sender {
     }
 
     /** The pre-flight's facts against the program's needs, and the wear the DMC was compiled with (docs/run.md). */
-    private void announce(MachineLink.Facts f, gcnc.machine.GalilModel model, int needLines, int needSlots) {
-        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+    private void announce(MachineLink.Facts f, int programLines, int needLines, int needSlots) {
         events.accept(new Event.Preflight(f.model(), programLines, needLines, f.labelsLeft(), program.labels(),
                 f.variablesLeft(), program.variables().size(), f.arraySpace(), f.vectorSlots(), needSlots,
                 f.pendingError(), f.limits(),
@@ -269,8 +269,8 @@ public final class Sender {
     }
 
     /** E819 when the program's lines, labels or variables do not fit the controller. */
-    private void fits(MachineLink.Facts f, gcnc.machine.GalilModel model, int needLines) throws RunFault {
-        int programLines = (int) model.range(gcnc.machine.GalilModel.Limit.PROGRAM_LINES).max();
+    private void fits(MachineLink.Facts f, gcnc.machine.GalilModel model, int programLines, int needLines)
+            throws RunFault {
         int maxLabels = (int) model.range(gcnc.machine.GalilModel.Limit.LABELS).max();
         List<String> vars = program.variables();
         if (needLines > programLines) {
