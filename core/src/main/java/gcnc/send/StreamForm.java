@@ -156,7 +156,7 @@ public final class StreamForm implements Delivery {
 
         void run(Sent s) throws IOException, RunFault, InterruptedException {
             Command cmd = s.command();
-            operator();
+            between();
             switch (StreamRole.of(cmd)) {
                 case SEND -> send(s);
                 case HOST -> host(s);
@@ -224,7 +224,7 @@ public final class StreamForm implements Delivery {
                     throw stall.fault(progress.executingLine());
                 }
                 Thread.sleep(pollMs);
-                operator();
+                between();
             }
             endedAtItsEnd();
         }
@@ -234,7 +234,7 @@ public final class StreamForm implements Delivery {
             progress.pointAt(s.origin());
             long until = System.nanoTime() + milliseconds * 1_000_000L;
             while (System.nanoTime() < until) {
-                operator();
+                between();
                 Thread.sleep(Math.max(1, Math.min(pollMs, (until - System.nanoTime()) / 1_000_000L)));
             }
         }
@@ -245,7 +245,7 @@ public final class StreamForm implements Delivery {
             while (c.client().number("_BGS") != 0 && c.client().number("_AVS") < tripped) {
                 follow();
                 Thread.sleep(pollMs);
-                operator();
+                between();
             }
             starved(s); // a fed sequence that ran dry while the host waited: no output switches after it
         }
@@ -260,7 +260,7 @@ public final class StreamForm implements Delivery {
                     starved(s);
                     follow();
                     Thread.sleep(pollMs);
-                    operator();
+                    between();
                 }
                 starved(s);
                 return;
@@ -271,12 +271,12 @@ public final class StreamForm implements Delivery {
                 // a program stop: the resident routine waits for gstop=0 or the cycle start input
                 progress.at(s.origin(), c.position(), op);
                 ProgramStopWait.await(c, progress, op, s.origin(), pollMs, () -> c.executing() >= 0);
-                operator();
+                between();
             }
             for (int xq = c.executing(); xq >= 0; xq = c.executing()) {
                 progress.at(s.origin(), c.position(), op);
                 Thread.sleep(pollMs);
-                operator();
+                between();
             }
             if (c.errorCode() != 0) {
                 RunFault f = c.refused("JS #" + label, progress.executingLine(), true);
@@ -330,17 +330,17 @@ public final class StreamForm implements Delivery {
         }
 
         /**
-         * The operator's stop, hold and override, between commands and polls; and a fault routine of the
-         * resident program (#LIMSWI, #POSERR, #AMPERR, a wait that timed out) that stopped the axes and the
-         * spindle: nothing more is sent (the next segments would move on from where it stopped, the
-         * spindle off), E825 with the controller's words.
+         * What is checked between commands and polls: a fault routine of the resident program (#LIMSWI,
+         * #POSERR, #AMPERR, a wait that timed out) that stopped the axes and the spindle, after which
+         * nothing more is sent (the next segments would move on from where it stopped, the spindle off:
+         * E825 with the controller's words); then the operator's stop, hold and override.
          */
-        private void operator() throws IOException, RunFault {
-            if (progress.controllerFault().isPresent()) {
+        private void between() throws IOException, RunFault {
+            java.util.Optional<gcnc.dmc.FaultMessage.Fault> fault = progress.controllerFault();
+            if (fault.isPresent()) {
                 c.stopAll();
                 throw new RunFault(Code.E825_NOT_READY, progress.executingLine(), true, "its fault routine stopped it ('"
-                        + progress.controllerFault().get() + "'): the axes and the spindle were stopped and nothing more"
-                        + " is sent");
+                        + fault.get() + "'): the axes and the spindle were stopped and nothing more is sent");
             }
             if (op.stopped()) {
                 c.stopAll();
