@@ -54,6 +54,8 @@ public final class GalilClient implements AutoCloseable {
     private final StringBuilder unsolicitedLine = new StringBuilder();
     private final byte[] buffer = new byte[4096];
     private long commands;
+    /** The deadline whose one look past it {@link #fill} has taken (0: none yet). */
+    private long lookedPast;
 
     public GalilClient(Link link, int timeoutMs, Consumer<String> unsolicited) {
         this.link = link;
@@ -298,21 +300,31 @@ public final class GalilClient implements AutoCloseable {
         }
     }
 
-    /** Reads more bytes into {@link #pending}; unsolicited ones (high bit) go to their own stream. */
+    /**
+     * Reads more bytes into {@link #pending}; unsolicited ones (high bit) go to their own stream. Past
+     * the deadline the link is still read once (a wait of 1 ms) before the reply is called late: a
+     * host that was not scheduled for a while (a busy shop PC, a long pause of its own) finds the
+     * reply that came in time waiting for it, and does not stop a run for it.
+     */
     private void fill(String command, long deadline) throws IOException {
         long left = deadline - System.currentTimeMillis();
+        if (left <= 0 && lookedPast == deadline) {
+            throw late(command); // the one look past the deadline was taken: a stream of bytes does not keep it open
+        }
         if (left <= 0) {
-            throw new LinkFault(LinkFault.Kind.TIMEOUT, command, pending.length() == 0 ? "nothing"
-                    : "'" + printable(pending.toString()) + "' and no : or ?");
+            lookedPast = deadline;
         }
         int n;
         try {
-            n = link.read(buffer, (int) Math.min(left, 200));
+            n = link.read(buffer, (int) Math.max(1, Math.min(left, 200)));
         } catch (IOException e) {
             throw new LinkFault(LinkFault.Kind.DROPPED, command, e.getMessage() == null ? "read failed" : e.getMessage());
         }
         if (n < 0) {
             throw new LinkFault(LinkFault.Kind.DROPPED, command, "the link closed");
+        }
+        if (n == 0 && left <= 0) {
+            throw late(command);
         }
         for (int i = 0; i < n; i++) {
             int b = buffer[i] & 0xff;
@@ -325,6 +337,11 @@ public final class GalilClient implements AutoCloseable {
                 throw new LinkFault(LinkFault.Kind.GARBAGE, command, "'" + printable(pending.toString()) + "'");
             }
         }
+    }
+
+    private LinkFault late(String command) {
+        return new LinkFault(LinkFault.Kind.TIMEOUT, command, pending.length() == 0 ? "nothing"
+                : "'" + printable(pending.toString()) + "' and no : or ?");
     }
 
     private void unsolicitedByte(int c) {
