@@ -39,9 +39,14 @@ fail() { echo "shop-project: FAILED: $*" >&2; exit 1; }
 # Through a Gradle daemon: the six builds share one warm JVM instead of starting (and warming) one
 # each (a third of this script's time, issue 23). It may be one already idle on this machine;
 # one started here stops by itself after a minute with nothing to do (CI leaves none behind).
+# The daemon's JVM: C1 alone and the serial collector, as for the test JVMs (build.gradle): twelve
+# short builds spend most of a default JVM's CPU on the C2 compiler warming code that runs a few times.
+daemon_jvm="-Xmx512m -XX:TieredStopAtLevel=1 -XX:+UseSerialGC"
+# and the same for each build's short-lived client JVM (Debian's gradle script reads GRADLE_OPTS)
+export GRADLE_OPTS="${GRADLE_OPTS:-} -XX:TieredStopAtLevel=1 -XX:+UseSerialGC"
 run() {
     local dir="$1"; shift
-    gradle --daemon -Dorg.gradle.daemon.idletimeout=60000 --console=plain -p "$dir" -Dmaven.repo.local="$repo" "$@" 2>&1 \
+    gradle --daemon -Dorg.gradle.daemon.idletimeout=60000 "-Dorg.gradle.jvmargs=$daemon_jvm" --console=plain -p "$dir" -Dmaven.repo.local="$repo" "$@" 2>&1 \
         | tee "$work/last.log"
     return "${PIPESTATUS[0]}"
 }

@@ -54,7 +54,7 @@ class BoundedRunTest {
     private static Run gcncIn(String heap, String... args) throws Exception {
         Path out = Files.createTempFile(dir, "run", ".txt");
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                heap, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main"));
+                heap, "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main"));
         command.addAll(List.of(args));
         Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(out.toFile()).start();
         // a guard so that a regression fails instead of hanging the build; not a measure of speed

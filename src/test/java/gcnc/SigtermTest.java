@@ -46,7 +46,7 @@ class SigtermTest {
         Path fifo = TestFiles.mkfifo(dir.resolve("long.nc"));
         Path log = dir.resolve("said.txt");
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx64m", "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main"));
+                "-Xmx64m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "gcnc.cli.Main"));
         command.addAll(List.of(args));
         command.add(fifo.toString());
         Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
