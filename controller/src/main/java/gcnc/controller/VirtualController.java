@@ -165,6 +165,7 @@ public final class VirtualController implements Closeable {
             // waits for one slice, not for the whole tick
             while (dt > 1e-12 && !closed) {
                 double slice = Math.min(dt, 0.01);
+                controller.letCommandsIn();
                 controller.advance(slice);
                 dt -= slice;
             }

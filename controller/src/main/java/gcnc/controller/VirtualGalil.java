@@ -28,6 +28,9 @@ public final class VirtualGalil implements Expressions.Scope {
         }
     }
 
+    /** Host commands waiting for the controller's lock: the clock lets them in first ({@link #letCommandsIn}). */
+    private final java.util.concurrent.atomic.AtomicInteger asking = new java.util.concurrent.atomic.AtomicInteger();
+
     final Model model;
     final ProgramMemory program = new ProgramMemory();
     final Map<String, Double> variables = new HashMap<>();
@@ -145,7 +148,16 @@ public final class VirtualGalil implements Expressions.Scope {
      * controller sends before its {@code :} ("" for a command without data, "data\r\n" for an
      * interrogation); a rejected command throws, sets the error {@code TC1} reports, and changes nothing.
      */
-    synchronized String command(String statement, char from) throws GalilException {
+    String command(String statement, char from) throws GalilException {
+        asking.incrementAndGet();
+        try {
+            return answer(statement, from);
+        } finally {
+            asking.decrementAndGet();
+        }
+    }
+
+    private synchronized String answer(String statement, char from) throws GalilException {
         port = from;
         try {
             return statements.execute(statement, null);
@@ -213,6 +225,19 @@ public final class VirtualGalil implements Expressions.Scope {
         } catch (GalilException e) {
             lastError = e.tc;
             throw e;
+        }
+    }
+
+    /**
+     * Lets a waiting host command in before the clock's next slice, waiting at most 50 ms of real time:
+     * a Galil answers its host while its motion runs, but a Java monitor is not fair, and a clock that
+     * takes the lock back at once could keep a command out for seconds on a busy machine (a poll then
+     * timed out, E822, with the controller idle at the program's end).
+     */
+    void letCommandsIn() {
+        long until = System.nanoTime() + 50_000_000L;
+        while (asking.get() > 0 && System.nanoTime() < until) {
+            java.util.concurrent.locks.LockSupport.parkNanos(100_000L);
         }
     }
 
