@@ -15,6 +15,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * {@code gcnc controller probe} against the virtual controller (issue 30 item 5): the report it writes,
@@ -80,6 +82,32 @@ class ProbeCommandTest {
             assertEquals("confirmed", s.get("eo-no-echo-ethernet"), s.toString());
             assertEquals("contradicted", s.get("rv-revision"), s.toString());
             assertTrue(r.err().contains("warning[E836]: the controller contradicts rv-revision"), r.err());
+        }
+    }
+
+    /**
+     * A link that fails while the probe asks is said in the probe's words (they once ended with a run's
+     * "last block completed: none; executing: none"), and a refused command is not called a dropped
+     * link: its TC1 says why. No report is written.
+     */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "reject=28 | error[E844]: the controller refused the probe's 'SH XY' | (TC1: 1 Unrecognized command); no report was written",
+        "disconnect-after=60 | error[E841]: the link to the controller closed while the probe asked | ; no report was written",
+        "slow=1500 | error[E842]: the controller did not answer the probe's | in time (nothing); no report was written",
+        "garbage-after=80 | error[E843]: the controller's reply to the probe's | is not Galil protocol"})
+    void aLinkThatFailsWhileTheProbeAsksIsSaidInTheProbesWords(String fault, String says, String then) throws Exception {
+        Path report = Files.createTempDirectory("gcnc-probe").resolve("probe.json");
+        try (VirtualController v = vc(20, fault)) {
+            // the motion test's commands (SH XY the 28th) are the ones the probe cannot do without
+            RunOnControllerTest.Run r = RunOnControllerTest.gcnc("move\n", "controller", "probe", "--machine", "haas",
+                    "--tcp", "127.0.0.1:" + v.port(), "--report", report.toString(), "--timeout", "500", "--allow-motion",
+                    "--confirm-from-stdin", "--distance", "400", "--speed", "1000");
+            assertEquals(2, r.status(), r.all());
+            assertTrue(r.err().contains(says), r.err());
+            assertTrue(r.err().contains(then), r.err());
+            assertFalse(r.all().contains("last block completed"), r.all());
+            assertFalse(Files.exists(report), "no report");
         }
     }
 

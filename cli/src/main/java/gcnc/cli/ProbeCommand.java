@@ -109,13 +109,19 @@ final class ProbeCommand extends StreamsCommand {
             } catch (Probe.NotReady e) {
                 write(probe.report(), out, err, messages);
                 return fault(err, messages, Code.E835_PROBE_NOT_READY, e.getMessage());
+            } catch (GalilClient.Rejected e) {
+                return fault(err, messages, Code.E844_PROBE_REFUSED, "'" + GalilClient.printable(e.command()) + "'",
+                        refusal(client));
             }
         } catch (LinkFault f) {
-            return fault(err, messages, f.kind() == LinkFault.Kind.TIMEOUT ? Code.E822_NO_REPLY : f.kind()
-                    == LinkFault.Kind.DROPPED ? Code.E821_CONNECTION_DROPPED : Code.E823_GARBAGE,
-                    linkArgs(f));
+            Code code = switch (f.kind()) {
+                case DROPPED -> Code.E841_PROBE_DROPPED;
+                case TIMEOUT -> Code.E842_PROBE_NO_REPLY;
+                case GARBAGE -> Code.E843_PROBE_GARBAGE;
+            };
+            return fault(err, messages, code, "'" + GalilClient.printable(f.command()) + "'", f.detail());
         } catch (IOException e) {
-            return fault(err, messages, Code.E821_CONNECTION_DROPPED, String.valueOf(e.getMessage()), "none", "none");
+            return fault(err, messages, Code.E841_PROBE_DROPPED, "its first command", String.valueOf(e.getMessage()));
         }
         Integer failed = write(r, out, err, messages);
         if (failed != null) {
@@ -124,9 +130,14 @@ final class ProbeCommand extends StreamsCommand {
         return r.contradicted().isEmpty() ? ExitCode.CLEAN : ExitCode.PROGRAM_ERRORS;
     }
 
-    private static Object[] linkArgs(LinkFault f) {
-        return f.kind() == LinkFault.Kind.DROPPED ? new Object[] {f.detail(), "none", "none"}
-                : new Object[] {"'" + GalilClient.printable(f.command()) + "'", f.detail(), "none", "none"};
+    /** TC1's code and text for a command the unit refused, or why it could not be read. */
+    private static String refusal(GalilClient client) {
+        try {
+            GalilClient.Reply tc = client.query("TC1");
+            return tc.ok() ? "TC1: " + tc.data().strip() : "TC1 refused too";
+        } catch (IOException e) {
+            return "TC1 unanswered: " + e.getMessage();
+        }
     }
 
     /** Prints each row, a warning per contradiction, and writes the file; an exit status when it cannot. */

@@ -821,6 +821,14 @@ public enum Code {
     E839_WAY_BACK_NOT_CONFIRMED,
     /** Sender: the way back cannot be checked by the simulator (no stock). */
     E840_WAY_BACK_UNCHECKED,
+    /** Probe: the link closed while the probe asked the controller; no report is written. */
+    E841_PROBE_DROPPED,
+    /** Probe: no reply within the timeout to one of the probe's questions; no report is written. */
+    E842_PROBE_NO_REPLY,
+    /** Probe: a reply that is not Galil's protocol; no report is written. */
+    E843_PROBE_GARBAGE,
+    /** Probe: the unit answered ? to a command the probe needs (TC1 says why); no report is written. */
+    E844_PROBE_REFUSED,
     /** Profile: stop.cycle_start is not IN n. */
     E850_CYCLE_START_INPUT,
     /**

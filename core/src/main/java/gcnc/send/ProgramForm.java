@@ -182,6 +182,14 @@ public record ProgramForm(int pollMs, double tolerance, double stallSeconds) imp
     }
 
     /**
+     * The compiled command thread 0 stands at on the controller's line {@code xq}, in a routine after
+     * the program's EN too ({@code #PSTOP}: a program stop's wait), or -1 beyond the piece.
+     */
+    static int standing(Download piece, int xq) {
+        return piece.originOf(piece.lastOf(xq));
+    }
+
+    /**
      * The compiled instruction executing when thread 0 is at the controller's line {@code xq} and the
      * sequence's segment counter {@code _CSS} reads {@code css} (from zero): the line's last command, except in a vector sequence, where
      * the thread waits at {@code AMS} while the segments run: there the segment executing names the
@@ -190,14 +198,6 @@ public record ProgramForm(int pollMs, double tolerance, double stallSeconds) imp
      * {@code EN}: #LIMSWI, #FAULT ...), where a fault sent the thread while the axes come to rest: no
      * block executes there, and the last poll's block stands.
      */
-    /**
-     * The compiled command thread 0 stands at on the controller's line {@code xq}, in a routine after
-     * the program's EN too ({@code #PSTOP}: a program stop's wait), or -1 beyond the piece.
-     */
-    static int standing(Download piece, int xq) {
-        return piece.originOf(piece.lastOf(xq));
-    }
-
     static int executing(Download piece, int xq, int css, DmcProgram program) {
         int at = piece.lastOf(xq); // a packed line ends at its wait: that is where the thread stands
         if (at >= routines(piece.commands())) {
