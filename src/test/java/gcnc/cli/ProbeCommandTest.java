@@ -93,6 +93,8 @@ class ProbeCommandTest {
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
         "reject=28 | error[E844]: the controller refused the probe's 'SH XY' | (TC1: 1 Unrecognized command); no report was written",
+        "reject=38 | note: the motion test had started (BGS): axis X may stand up to 1200 counts (3 x --distance) from where"
+                + " it was, or still move; ST before anything else | error[E844]: the controller refused the probe's 'MG _CSS,_AVS,_BGS'",
         "disconnect-after=60 | error[E841]: the link to the controller closed while the probe asked | ; no report was written",
         "slow=1500 | error[E842]: the controller did not answer the probe's | in time (nothing); no report was written",
         "garbage-after=80 | error[E843]: the controller's reply to the probe's | is not Galil protocol"})

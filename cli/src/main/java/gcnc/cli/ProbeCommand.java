@@ -101,7 +101,7 @@ final class ProbeCommand extends StreamsCommand {
             return fault(err, messages, f.code(), f.args().toArray());
         }
         ProbeReport r;
-        Probe probe;
+        Probe probe = null;
         try (GalilClient client = new GalilClient(link, connection.timeoutMs, m -> out.println("controller: " + m))) {
             probe = new Probe(client, model);
             try {
@@ -110,10 +110,12 @@ final class ProbeCommand extends StreamsCommand {
                 write(probe.report(), out, err, messages);
                 return fault(err, messages, Code.E835_PROBE_NOT_READY, e.getMessage());
             } catch (GalilClient.Rejected e) {
+                moving(probe, err);
                 return fault(err, messages, Code.E844_PROBE_REFUSED, "'" + GalilClient.printable(e.command()) + "'",
                         refusal(client));
             }
         } catch (LinkFault f) {
+            moving(probe, err);
             Code code = switch (f.kind()) {
                 case DROPPED -> Code.E841_PROBE_DROPPED;
                 case TIMEOUT -> Code.E842_PROBE_NO_REPLY;
@@ -128,6 +130,13 @@ final class ProbeCommand extends StreamsCommand {
             return failed;
         }
         return r.contradicted().isEmpty() ? ExitCode.CLEAN : ExitCode.PROGRAM_ERRORS;
+    }
+
+    /** After a fault in the motion test: where the axis may be, before the error line. */
+    private static void moving(Probe probe, PrintWriter err) {
+        if (probe != null && probe.moving() != null) {
+            err.println("note: " + probe.moving());
+        }
     }
 
     /** TC1's code and text for a command the unit refused, or why it could not be read. */

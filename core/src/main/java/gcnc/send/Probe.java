@@ -196,6 +196,8 @@ public final class Probe {
     }
 
     private ProbeReport lastReport;
+    /** What {@link #moving()} says (null: no move begun, or back at rest). */
+    private String moving;
 
     /** The report as far as it got when {@link NotReady} was thrown. */
     public ProbeReport report() {
@@ -220,6 +222,8 @@ public final class Probe {
             require("VP " + k * d + ",0");
         }
         require("VE");
+        moving = "the motion test had started (BGS): axis " + m.first() + " may stand up to " + 3 * d
+                + " counts (3 x --distance) from where it was, or still move; ST before anything else";
         require("BGS");
         List<Sample> samples = new ArrayList<>();
         long until = System.currentTimeMillis() + 5000L + 3000L * d / Math.max(1, m.speed()) * 3;
@@ -241,6 +245,15 @@ public final class Probe {
         while (System.currentTimeMillis() < until + 10_000 && number("_BGS") != 0) {
             client.query("MG _BGS");
         }
+        moving = null;
+    }
+
+    /**
+     * After a fault during the motion test, where axis {@code first} may be and what to do first; null
+     * when the test had not begun a move, or had come back to rest.
+     */
+    public String moving() {
+        return moving;
     }
 
     private void judge(List<Sample> samples, int d, double end) {
