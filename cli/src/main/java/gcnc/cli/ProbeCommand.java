@@ -123,7 +123,7 @@ final class ProbeCommand extends StreamsCommand {
             };
             return fault(err, messages, code, "'" + GalilClient.printable(f.command()) + "'", f.detail());
         } catch (IOException e) {
-            return fault(err, messages, Code.E841_PROBE_DROPPED, "its first command", String.valueOf(e.getMessage()));
+            return fault(err, messages, Code.E841_PROBE_DROPPED, "a question", String.valueOf(e.getMessage()));
         }
         Integer failed = write(r, out, err, messages);
         if (failed != null) {
