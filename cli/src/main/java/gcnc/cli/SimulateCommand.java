@@ -75,72 +75,91 @@ final class SimulateCommand extends RunCommand {
                 return reporter.ioFault(svg.toString(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
             }
         }
-        Diagnostics diags;
-        Optional<SimReport> report;
-        String shown = name;
+        Replayed done;
         try (Reader in = SourceFiles.open(file, streams().in())) {
             if (file.toString().endsWith(".stream") && !SourceFiles.isStdin(file)) {
-                diags = new Diagnostics();
                 Path resident = residentOf(file);
-                gcnc.dmc.SourceMap.Table residentMap = sourceMap(resident, diags);
-                gcnc.dmc.SourceMap.Table streamMap = sourceMap(file, diags);
-                pairedStream(resident, residentMap, file, diags);
-                try (BufferedReader r = java.nio.file.Files.newBufferedReader(resident, java.nio.charset.StandardCharsets.UTF_8)) {
-                    report = Optional.of(gcnc.sim.StreamReplay.replay(r, residentMap == null ? null : residentMap.at(),
-                            new BufferedReader(in), streamMap == null ? null : streamMap.at(), profile, options, diags));
+                try {
+                    done = replayedStream(in, resident, profile, options, name);
                 } catch (java.nio.file.NoSuchFileException e) {
                     return reporter.ioFault(resident.toString(), gcnc.diag.Phrase.IO_CANNOT_READ, e);
                 }
-                if (streamMap != null) {
-                    shown = streamMap.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);
-                }
             } else if (file.toString().endsWith(".dmc")) {
-                diags = new Diagnostics();
-                gcnc.dmc.SourceMap.Table map = sourceMap(file, diags);
-                report = Optional.of(DmcReplay.replay(new BufferedReader(in), profile, options, diags,
-                        map == null ? null : map.at()));
-                Path stream = gcnc.output.FormOutputs.streamFile(file);
-                if (report.get().sequences() == 0 && (map != null && map.streamSha256().isPresent() || Files.isRegularFile(stream))) {
-                    // a resident program moves nothing itself: "0 sequences, 0 findings" said nothing of where its motion is
-                    diags.report(new gcnc.diag.Diagnostic(gcnc.diag.Code.E864_RESIDENT_WITHOUT_STREAM, gcnc.diag.Severity.NOTE,
-                            gcnc.diag.Span.of(1, 1), java.util.List.of(file.toString(), stream.toString()),
-                            gcnc.diag.Origin.file(file.toString())));
-                }
-                if (map != null) {
-                    // the findings are at G-code lines: name the G-code file the map names
-                    shown = map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(shown);
-                }
+                done = replayedDmc(in, profile, options, name);
             } else {
                 java.util.function.Consumer<gcnc.dmc.Instruction> discard = line -> { };
                 Compiler.Result r = setup.session().withDialect(dialect.kind()).withPrograms(SourceFiles.programsFolder(file)).compile(in, Optional.of(options), false,
                         discard);
-                diags = r.diagnostics();
-                report = r.simulation();
+                done = new Replayed(r.diagnostics(), r.simulation(), name);
             }
         } catch (IOException e) {
             return reporter.ioFault(name, gcnc.diag.Phrase.IO_CANNOT_READ, e);
         }
         out.flush();
-        reporter.report(shown, diags);
-        if (report.isPresent()) {
-            reporter.say(SimSummary.format(report.get(), reporter.phrases()));
-            corners.say(report.get(), shown, reporter);
-            reporter.simulation(shown, corners.kept(report.get()));
-            if (svg != null) {
-                out.flush();
-                try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : AtomicOutput.open(svg, AtomicOutput.Name.GIVEN)) {
-                    String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
-                    SvgWriter.write(report.get(), title, number(file), o.writer(), !hideRapids);
-                    o.commit();
-                    reporter.say(reporter.phrases().get("simulate.drawing", svgToStdout ? "<stdout>" : svg));
-                } catch (IOException e) {
-                    return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
-                }
-            }
-        } else {
+        Diagnostics diags = done.diags();
+        reporter.report(done.shown(), diags);
+        if (done.report().isEmpty()) {
             reporter.say(reporter.phrases().get("simulate.nothing", name, reporter.phrases().count(diags.errorCount(), "error")));
+            return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
+        }
+        SimReport report = done.report().get();
+        reporter.say(SimSummary.format(report, reporter.phrases()));
+        corners.say(report, done.shown(), reporter);
+        reporter.simulation(done.shown(), corners.kept(report));
+        if (svg != null) {
+            out.flush();
+            try (AtomicOutput o = svgToStdout ? AtomicOutput.toStream(streams().out()) : AtomicOutput.open(svg, AtomicOutput.Name.GIVEN)) {
+                String title = SourceFiles.isStdin(file) ? name : file.getFileName().toString();
+                SvgWriter.write(report, title, number(file), o.writer(), !hideRapids);
+                o.commit();
+                reporter.say(reporter.phrases().get("simulate.drawing", svgToStdout ? "<stdout>" : svg));
+            } catch (IOException e) {
+                return reporter.ioFault(svgToStdout ? "<stdout>" : svg.toString(), gcnc.diag.Phrase.IO_CANNOT_WRITE, e);
+            }
         }
         return diags.hasErrors() ? ExitCode.PROGRAM_ERRORS : ExitCode.CLEAN;
+    }
+
+    /** What a replay found: its findings, the simulation (none where the compile stopped first), and the file they are shown at. */
+    private record Replayed(Diagnostics diags, Optional<SimReport> report, String shown) {
+    }
+
+    /**
+     * A stream ({@code part.stream}) replayed after its resident program ({@code part.dmc}); the findings
+     * are shown at the G-code file the stream's map names. A resident program that is not there throws.
+     */
+    private Replayed replayedStream(Reader in, Path resident, MachineProfile profile, SimOptions options, String name)
+            throws IOException {
+        Diagnostics diags = new Diagnostics();
+        gcnc.dmc.SourceMap.Table residentMap = sourceMap(resident, diags);
+        gcnc.dmc.SourceMap.Table streamMap = sourceMap(file, diags);
+        pairedStream(resident, residentMap, file, diags);
+        SimReport report;
+        try (BufferedReader r = java.nio.file.Files.newBufferedReader(resident, java.nio.charset.StandardCharsets.UTF_8)) {
+            report = gcnc.sim.StreamReplay.replay(r, residentMap == null ? null : residentMap.at(),
+                    new BufferedReader(in), streamMap == null ? null : streamMap.at(), profile, options, diags);
+        }
+        String shown = streamMap == null ? name : streamMap.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(name);
+        return new Replayed(diags, Optional.of(report), shown);
+    }
+
+    /**
+     * A DMC program replayed as it is, against its source map when one is beside it (the findings then
+     * at the G-code lines, shown at the G-code file the map names).
+     */
+    private Replayed replayedDmc(Reader in, MachineProfile profile, SimOptions options, String name) throws IOException {
+        Diagnostics diags = new Diagnostics();
+        gcnc.dmc.SourceMap.Table map = sourceMap(file, diags);
+        SimReport report = DmcReplay.replay(new BufferedReader(in), profile, options, diags, map == null ? null : map.at());
+        Path stream = gcnc.output.FormOutputs.streamFile(file);
+        if (report.sequences() == 0 && (map != null && map.streamSha256().isPresent() || Files.isRegularFile(stream))) {
+            // a resident program moves nothing itself: "0 sequences, 0 findings" said nothing of where its motion is
+            diags.report(new gcnc.diag.Diagnostic(gcnc.diag.Code.E864_RESIDENT_WITHOUT_STREAM, gcnc.diag.Severity.NOTE,
+                    gcnc.diag.Span.of(1, 1), java.util.List.of(file.toString(), stream.toString()),
+                    gcnc.diag.Origin.file(file.toString())));
+        }
+        String shown = map == null ? name : map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(name);
+        return new Replayed(diags, Optional.of(report), shown);
     }
 
     /** The resident program a stream goes with: {@code part.stream} is fed after {@code part.dmc} (docs/galil.md). */
