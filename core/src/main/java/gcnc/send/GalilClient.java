@@ -54,8 +54,6 @@ public final class GalilClient implements AutoCloseable {
     private final StringBuilder unsolicitedLine = new StringBuilder();
     private final byte[] buffer = new byte[4096];
     private long commands;
-    /** The deadline whose one look past it {@link #fill} has taken (0: none yet). */
-    private long lookedPast;
 
     public GalilClient(Link link, int timeoutMs, Consumer<String> unsolicited) {
         this.link = link;
@@ -299,6 +297,9 @@ public final class GalilClient implements AutoCloseable {
             fill(command, deadline);
         }
     }
+
+    /** The deadline whose one look past it {@link #fill} has taken (0: none yet): fill's own state. */
+    private long lookedPast;
 
     /**
      * Reads more bytes into {@link #pending}; unsolicited ones (high bit) go to their own stream. Past
