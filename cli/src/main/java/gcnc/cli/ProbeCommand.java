@@ -142,8 +142,8 @@ final class ProbeCommand extends StreamsCommand {
     /** TC1's code and text for a command the unit refused, or why it could not be read. */
     private static String refusal(GalilClient client) {
         try {
-            GalilClient.Reply tc = client.query("TC1");
-            return tc.ok() ? "TC1: " + tc.data().strip() : "TC1 refused too";
+            String tc = client.lastError();
+            return tc.isEmpty() ? "TC1 refused too" : "TC1: " + tc;
         } catch (IOException e) {
             return "TC1 unanswered: " + e.getMessage();
         }

@@ -130,6 +130,12 @@ public final class GalilClient implements AutoCloseable {
         return exchange(command, true);
     }
 
+    /** {@code TC1}: "code text" of the last error (and clears it); "" when TC1 itself is refused. */
+    public String lastError() throws IOException {
+        Reply r = query("TC1");
+        return r.ok() ? r.data().strip() : "";
+    }
+
     /** {@code MG operand}: the operand's value; anything but a number is not the protocol. */
     public double number(String operand) throws IOException {
         String cmd = "MG " + operand;

@@ -228,12 +228,6 @@ public final class MachineLink {
         };
     }
 
-    /** {@code TC1}: "code text" of the last error (and clears it). */
-    public String explain() throws IOException {
-        GalilClient.Reply r = client.query("TC1");
-        return r.ok() ? r.data().strip() : "";
-    }
-
     /** {@code VR n}: the vector speed ratio, 0 (a feed hold, decelerating at VD) to 10 (COMALL VR). */
     public void ratio(double r) throws IOException {
         require("VR " + String.format(Locale.ROOT, "%.4f", r).replaceAll("\\.?0+$", ""));
@@ -300,7 +294,7 @@ public final class MachineLink {
     public RunFault refused(String command, int line, boolean moved) {
         String tc;
         try {
-            tc = explain();
+            tc = client.lastError();
         } catch (IOException e) {
             tc = "";
         }
