@@ -18,8 +18,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * {@code gcnc run}'s estimated time is {@code gcnc compile}'s cycle time, on every sample and doc
- * example, on each shipped lathe: the run takes its time from the simulator's clock as the compile
+ * {@code gcnc run}'s estimated time is {@code gcnc compile}'s cycle time, and the blocks it names the
+ * blocks the compile counted, on every sample and doc example, on each shipped lathe: the run takes its time from the simulator's clock as the compile
  * replayed the program (CompiledRun), never from a timing of its own (issue 32: bushing on haas was
  * 85.3 s against 102.2 s when the sender timed a thread pass as nothing).
  */
@@ -84,6 +84,11 @@ class RunTimeTest {
                     }
                     assertTrue(started != null, sample + " on " + machine + ": " + r.all());
                     assertEquals(cycle, started.get("seconds").asDouble(), 0.0015, sample + " on " + machine);
+                    // and its blocks are the blocks the compile counted ("N blocks -> c.dmc")
+                    java.util.regex.Matcher counted = java.util.regex.Pattern.compile(": ([0-9,]+) blocks? -> ").matcher(c.err());
+                    assertTrue(counted.find(), c.err());
+                    assertEquals(Long.parseLong(counted.group(1).replace(",", "")), started.get("blocks").asLong(),
+                            sample + " on " + machine);
                     compared.add(sample.getFileName() + " " + machine);
                 }
             }

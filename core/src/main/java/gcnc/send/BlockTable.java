@@ -48,15 +48,29 @@ public final class BlockTable {
     private final Map<Integer, Block> blocks;
     /** The text of the first comment of each main-program line that has one (a program stop shows it). */
     private final Map<Integer, String> comments;
+    /** How many blocks the compile judged in all, and before each main-program line's first block. */
+    private final long judged;
+    private final Map<Integer, Long> before;
 
-    private BlockTable(Map<Integer, Block> blocks, Map<Integer, String> comments) {
+    private BlockTable(Map<Integer, Block> blocks, Map<Integer, String> comments, long judged, Map<Integer, Long> before) {
         this.blocks = blocks;
         this.comments = comments;
+        this.judged = judged;
+        this.before = before;
     }
 
     /** An empty table (the program could not be read again): the status line then shows machine counts. */
     public static BlockTable none() {
-        return new BlockTable(Map.of(), Map.of());
+        return new BlockTable(Map.of(), Map.of(), 0, Map.of());
+    }
+
+    /**
+     * The blocks the compile judged from the first block of main-program line {@code line} on (0: the
+     * whole program): the count {@code gcnc compile} prints, for the part of the program a run sends.
+     * A subprogram's blocks count once per call, as the compile counts them.
+     */
+    public long blocksFrom(int line) {
+        return judged - (line == 0 ? 0 : before.getOrDefault(line, judged));
     }
 
     /** The first comment on G-code line {@code line}, without its parentheses ("" when it has none). */
@@ -93,11 +107,17 @@ public final class BlockTable {
      */
     public static final class View implements gcnc.CompileObserver {
         private final Map<Integer, Block> out = new HashMap<>();
+        private final Map<Integer, Long> before = new HashMap<>();
+        private long judged;
         /** The frame of the last main-program block that had one: the frame in force. */
         private ProgramFrame last;
 
         @Override
         public void block(RawBlock raw, gcnc.diag.Origin from, java.util.List<CheckedBlock> checked, ModalState s) {
+            if (raw.depth() == 0) {
+                before.putIfAbsent(raw.line(), judged);
+            }
+            judged++;
             ProgramFrame frame = null;
             for (CheckedBlock b : checked) {
                 if (b.frame() != null && b.origin().file() == null) {
@@ -122,7 +142,7 @@ public final class BlockTable {
 
         /** The table of the blocks seen, with the comments of {@code text} (the program as the compile read it). */
         public BlockTable table(String text) {
-            return new BlockTable(Map.copyOf(out), comments(text));
+            return new BlockTable(Map.copyOf(out), comments(text), judged, Map.copyOf(before));
         }
     }
 

@@ -55,8 +55,8 @@ public sealed interface Event {
         }
     }
 
-    /** The program starts; {@code lines} DMC lines from {@code blocks} G-code blocks, {@code seconds} estimated. */
-    record Started(String form, int lines, int blocks, double seconds, boolean dryRun, boolean step,
+    /** The program starts: {@code lines} DMC lines; {@code blocks}, the blocks the compile judged from where it starts (BlockTable#blocksFrom); {@code seconds} estimated. */
+    record Started(String form, int lines, long blocks, double seconds, boolean dryRun, boolean step,
                    String resumeAt) implements Event {
         public Kind kind() {
             return Kind.STARTED;

@@ -81,7 +81,8 @@ public final class Sender {
         // closed in finally, not by try-with-resources: the catches below still talk to the controller
         try {
             Download piece = preflight(c, link.name());
-            events.accept(new Event.Started(form.name(), piece.lines().size(), countBlocks(piece),
+            events.accept(new Event.Started(form.name(), piece.lines().size(), blocks.blocksFrom(
+                    options.resumeAt() == null ? 0 : options.resumeAt().line()),
                     program.totalSeconds() - program.secondsBefore(firstMotion()), options.dryRun(),
                     options.step(), options.resumeAt() == null ? null : options.resumeAt().toString()));
             form.run(piece, c, progress, operator, options.step(), options.dryRun());
@@ -153,16 +154,6 @@ public final class Sender {
 
     private static String block(int line) {
         return line == 0 ? "none" : "line " + line;
-    }
-
-    private int countBlocks(Download piece) {
-        java.util.Set<Integer> lines = new java.util.HashSet<>();
-        for (int o : piece.origin()) {
-            if (program.sourceLine(o) > 0) {
-                lines.add(program.sourceLine(o));
-            }
-        }
-        return lines.size();
     }
 
     private int firstMotion() {
