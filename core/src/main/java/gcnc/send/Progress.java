@@ -233,24 +233,33 @@ public final class Progress {
             lastBlock = line;
             events.accept(new Event.Block(line, b == null ? null : b.number(), completedLine()));
         }
-        double done = program.secondsBefore(Math.max(executing, 0)) + partDone(counts);
         double total = program.totalSeconds();
+        double left = secondsLeft(executing, counts);
+        double done = total - left;
         double[] machine = counts == null ? null : program.plane().machine(counts);
         double[] prog = b == null || machine == null ? null : b.program(machine);
         events.accept(new Event.Status(executing + 1, line, b == null ? null : b.number(),
                 program.sourceFile(executing), prog, counts, b == null ? Double.NaN : b.feed(), b != null && b.perRev(),
                 b != null && b.inch(), b == null ? Double.NaN : b.rpm(), b == null ? null : spindle(b.spindle()),
-                total <= 0 ? 0 : Math.min(1, done / total), Math.max(0, total - done), operator.override(),
+                total <= 0 ? 0 : Math.min(1, done / total), left, operator.override(),
                 operator.held()));
     }
 
-    /** Seconds of the executing motion already done, from how far along it the axes are (the chord, for arcs). */
-    private double partDone(double[] counts) {
-        Sequence s = counts == null || executing < 0 ? null : program.sequenceAt(executing);
+    /**
+     * The program's clock left from compiled line {@code index} with the axes at {@code counts} (how far
+     * along its motion they are): what the status line shows there, and a resume's estimate.
+     */
+    public double secondsLeft(int index, double[] counts) {
+        return Math.max(0, program.totalSeconds() - program.secondsBefore(Math.max(index, 0)) - partDone(index, counts));
+    }
+
+    /** Seconds of the motion of compiled line {@code index} already done, from how far along it the axes are (the chord, for arcs). */
+    private double partDone(int index, double[] counts) {
+        Sequence s = counts == null || index < 0 ? null : program.sequenceAt(index);
         if (s == null || s.seconds() <= 0) {
             return 0;
         }
-        int k = s.pieceAt(executing);
+        int k = s.pieceAt(index);
         double total = s.lengthBefore(s.pieces().size());
         if (k >= 0 && total > 0) {
             // a blended sequence: the path of the segments before the executing one, and along it

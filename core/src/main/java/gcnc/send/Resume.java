@@ -90,6 +90,28 @@ public final class Resume {
     /** The resume point and the axes of the last {@link #plan}: G96's speed is the surface speed's there. */
     private ResumePoint point;
     private double[] axes;
+    /** The compiled program's line the last {@link #plan} picks the program up at, where the axes are. */
+    private int resumedAt;
+
+    /**
+     * The compiled program's line the last {@link #plan} picks the program up at: the line of the
+     * motion the axes stand at the start of or on (with {@link #axes()}, how much of the program's
+     * clock is left: {@link Progress#secondsLeft}), or the line after what the controller finished.
+     */
+    public int resumedAt() {
+        return resumedAt;
+    }
+
+    /** The axes the last {@link #plan} was made from (Galil counts of the plane). */
+    public double[] axes() {
+        return axes.clone();
+    }
+
+    /** {@code piece}, which takes the program up at compiled line {@code index}. */
+    private Download from(int index, Download piece) {
+        resumedAt = index;
+        return piece;
+    }
 
     public Download plan(ResumePoint at, double[] axes) throws RunFault {
         ranOn = null;
@@ -109,7 +131,7 @@ public final class Resume {
         if (m == null) {
             double[] start = positionAt(first);
             if (near(axes, start)) {
-                return build(first, first, null);
+                return from(first, build(first, first, null));
             }
             throw fault(at, "the axes are at " + where.at(at.line(), axes) + " and the block starts at "
                     + where.at(at.line(), start) + ": " + wayTo(at.line(), first, axes, start) + " and resume again");
@@ -119,11 +141,11 @@ public final class Resume {
         if (m.from() == 0 && near(axes, start)) {
             // the motion starts its sequence: the program from the block's first line (or the motion's), unchanged
             int from = at.motion() > 0 ? s.first() : Math.min(first, s.first());
-            return build(from, from, null);
+            return from(from, build(from, from, null));
         }
         if (near(axes, s.end())) {
             ranOn = "the controller finished the sequence: " + lines(s);
-            return build(s.last() + 1, s.last() + 1, null);
+            return from(s.last() + 1, build(s.last() + 1, s.last() + 1, null));
         }
         if (s.isThreadPass()) {
             throw fault(at, "a thread pass cannot be entered part way (the spindle and Z are geared at its start): "
@@ -137,13 +159,13 @@ public final class Resume {
                     ranOn = "the controller finished the sequence's blocks: line " + at.line() + " to "
                             + program.sourceLine(s.pieces().get(k - 1).line());
                 }
-                return build(s.last() + 1, s.first(), new Replan(program, fill).of(s, k, false, axes, at));
+                return from(p.line(), build(s.last() + 1, s.first(), new Replan(program, fill).of(s, k, false, axes, at)));
             }
             if (!near(axes, p.to()) && onPiece(p, axes)) {
                 if (k > m.from()) {
                     ranOn = "the controller ran on along the sequence into line " + program.sourceLine(p.line());
                 }
-                return build(s.last() + 1, s.first(), new Replan(program, fill).of(s, k, true, axes, at));
+                return from(p.line(), build(s.last() + 1, s.first(), new Replan(program, fill).of(s, k, true, axes, at)));
             }
         }
         // a controller that ran on without the host (a dropped link) stands at the end of a later sequence:
@@ -156,7 +178,7 @@ public final class Resume {
                 int last = program.sourceLine(later.isThreadPass() ? later.first()
                         : later.pieces().get(later.pieces().size() - 1).line());
                 ranOn = "the controller ran on without the host and finished the sequences: line " + at.line() + " to " + last;
-                return build(later.last() + 1, later.last() + 1, null);
+                return from(later.last() + 1, build(later.last() + 1, later.last() + 1, null));
             }
         }
         throw fault(at, "the axes are at " + where.at(at.line(), axes) + ", not on the path of line " + at.line() + " ("

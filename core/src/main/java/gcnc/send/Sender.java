@@ -83,7 +83,8 @@ public final class Sender {
             Download piece = preflight(c, link.name());
             events.accept(new Event.Started(form.name(), piece.lines().size(), blocks.blocksFrom(
                     options.resumeAt() == null ? 0 : options.resumeAt().line()),
-                    program.totalSeconds() - program.secondsBefore(firstMotion()), options.dryRun(),
+                    resumed == null ? program.totalSeconds() : progress.secondsLeft(resumed.resumedAt(), resumed.axes()),
+                    options.dryRun(),
                     options.step(), options.resumeAt() == null ? null : options.resumeAt().toString()));
             form.run(piece, c, progress, operator, options.step(), options.dryRun());
             events.accept(new Event.Finished(progress.seconds(), options.dryRun()));
@@ -156,17 +157,13 @@ public final class Sender {
         return line == 0 ? "none" : "line " + line;
     }
 
-    private int firstMotion() {
-        // a whole run: all of the program's time, header and all (its total is the compile's cycle time);
-        // a resume: from the block it resumes at
-        return options.resumeAt() == null ? 0 : Math.max(0, program.firstLineOf(options.resumeAt().line()));
-    }
-
     /** The G-code line of the program's first motion (the frame its start was verified in), 0 when it has none. */
     private int firstMotionLine() {
         return program.sequences().isEmpty() ? 0 : program.sourceLine(program.sequences().get(0).first());
     }
 
+    /** The resume planned (null: a run from the start): where it takes the program up, for the estimate. */
+    private Resume resumed;
     /** The way back the resume makes first (null: none), and the first compiled line of the sequence it goes back to. */
     private WayBack wayBack;
     private int cut;
@@ -236,6 +233,7 @@ public final class Sender {
             cut = resume.wayBackFrom();
             piece = resume.plan(options.resumeAt(), wayBack.legs().get(wayBack.legs().size() - 1).to());
         }
+        resumed = resume;
         resume.ranOn().ifPresent(what -> events.accept(new Event.Message(what)));
         int line = options.resumeAt().line();
         for (String said : ResumeState.changes(c, profile, resume.restored(), line, blocks.at(line))) {
