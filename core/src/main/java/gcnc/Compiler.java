@@ -283,8 +283,8 @@ public final class Compiler {
             // no calls, no macros
             return BlockReader.forControl(source, diags, false, control.lineComments());
         }
-        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), control, diags,
-                settings.programs());
+        return new ProgramFlow(BlockReader.forControl(source, diags, control.macros(), control.lineComments()), settings.profile(),
+                diags, settings.programs());
     }
 
     /** The files beside the program its calls looked for (none without program flow). */

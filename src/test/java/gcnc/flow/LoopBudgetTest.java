@@ -31,8 +31,9 @@ class LoopBudgetTest {
         Diagnostics d = new Diagnostics();
         ProgramFlow flow;
         try {
-            gcnc.machine.Control c = ProfileLoader.load("generic", TableSource.builtIn(), Tables.builtIn(), control).control();
-            flow = new ProgramFlow(BlockReader.forControl(new StringReader(program), d, c.macros(), c.lineComments()), c, d,
+            gcnc.machine.MachineProfile m = ProfileLoader.load("generic", TableSource.builtIn(), Tables.builtIn(), control);
+            gcnc.machine.Control c = m.control();
+            flow = new ProgramFlow(BlockReader.forControl(new StringReader(program), d, c.macros(), c.lineComments()), m, d,
                     Optional.empty());
         } catch (gcnc.tables.TableException e) {
             throw new AssertionError(e);

@@ -41,10 +41,9 @@ class MacroTest {
     }
 
     /** The blocks handed to the checker, "line: words", separated by " | "; then the findings. */
-    private static String run(String program) {
+    static String run(String program) {
         Diagnostics d = new Diagnostics();
-        gcnc.machine.Control c = machine("fanuc-a").control();
-        ProgramFlow flow = new ProgramFlow(BlockReader.forControl(new StringReader(program), d, true), c, d,
+        ProgramFlow flow = new ProgramFlow(BlockReader.forControl(new StringReader(program), d, true), machine("fanuc-a"), d,
                 Optional.empty());
         List<String> out = new ArrayList<>();
         try {
@@ -72,7 +71,7 @@ class MacroTest {
         return r.startsWith("1: X") ? r.substring(4) : r;
     }
 
-    private static Compiler.Result check(String control, String program) {
+    static Compiler.Result check(String control, String program) {
         try {
             return Compiler.check(new StringReader(program),
                     new Compiler.Settings(TABLES, machine(control), Dialect.Kind.GALIL, Optional.empty()));
@@ -373,7 +372,7 @@ class MacroTest {
     void randomMacroSoupOnlyEverReports() {
         String[] parts = {"#", "#1", "#100", "#5001", "#3000", "[", "]", "=", "+", "-", "*", "/", " ", "1", "2.5", "0",
             "X", "G", "M", "GOTO", "IF", "WHILE", "DO", "END", "EQ", "GT", "SIN", "ATAN", "SQRT", "(", ")", "N1", "THEN",
-            "MOD", ",", "\n", "M98 P1000", "M98 P21000", "M99", "M97 P1", "L2", "O1000", "M30", "/"};
+            "MOD", ",", "\n", "M98 P1000", "M98 P21000", "M99", "M97 P1", "L2", "O1000", "M30", "/", "G65 P1000", "A1.", "I2", "I3."};
         Random random = new Random(20261123);
         for (int n = 0; n < 300; n++) {
             StringBuilder p = new StringBuilder();

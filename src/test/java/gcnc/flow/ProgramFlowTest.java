@@ -67,7 +67,7 @@ class ProgramFlowTest {
     /** The blocks as the flow hands them on: "line" or "line/depth" for a block in a call, space separated. */
     private static String order(String control, String program) {
         Diagnostics d = new Diagnostics();
-        ProgramFlow flow = new ProgramFlow(new BlockReader(new StringReader(program), d), machine(control).control(),
+        ProgramFlow flow = new ProgramFlow(new BlockReader(new StringReader(program), d), machine(control),
                 d, Optional.empty());
         List<String> out = new ArrayList<>();
         try {
@@ -447,7 +447,7 @@ class ProgramFlowTest {
     /** Codes reported by the flow stage alone with a hold limit of {@code limit} blocks. */
     private static String flowCodes(String program, int limit) throws IOException {
         Diagnostics d = new Diagnostics();
-        ProgramFlow flow = new ProgramFlow(new BlockReader(new StringReader(program), d), machine("fanuc-a").control(),
+        ProgramFlow flow = new ProgramFlow(new BlockReader(new StringReader(program), d), machine("fanuc-a"),
                 d, Optional.empty(), limit);
         while (flow.next() != null) {
             // run through

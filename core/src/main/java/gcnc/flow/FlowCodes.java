@@ -3,18 +3,25 @@ package gcnc.flow;
 import gcnc.ir.Letter;
 import gcnc.ir.Word;
 import gcnc.machine.Control;
+import gcnc.machine.GRole;
 import gcnc.machine.MFunction;
 import gcnc.machine.MRole;
+import gcnc.machine.Units;
 import java.util.List;
 
 /**
- * What the control's M codes mean for the program's flow, looked up by number in an array: the
- * flow stage asks it of every M word of every block, so a program without calls pays one array
- * read per M word.
+ * What the control's codes mean for the program's flow: its M codes, looked up by number in an
+ * array (the flow stage asks it of every M word of every block, so a program without calls pays
+ * one array read per M word), its macro call (G65) and its G20/G21, by which a macro call's
+ * arguments written without a decimal point are read.
  */
 final class FlowCodes {
     private static final int SIZE = 1000;
     private final MRole[] roles = new MRole[SIZE];
+    /** The G numbers of the macro call, inch and metric input; -1: the control has none. */
+    private final long macroCall;
+    private final long inch;
+    private final long metric;
 
     FlowCodes(Control control) {
         for (MFunction f : control.allM()) {
@@ -22,6 +29,32 @@ final class FlowCodes {
                 roles[f.code()] = f.role();
             }
         }
+        macroCall = gNumber(control, GRole.MACRO_CALL);
+        inch = gNumber(control, GRole.INCH);
+        metric = gNumber(control, GRole.METRIC);
+    }
+
+    private static long gNumber(Control control, GRole role) {
+        return control.gFor(role).map(g -> (long) g.code()).orElse(-1L);
+    }
+
+    /** Whether a word is the control's macro call (G65). */
+    boolean macroCall(Word w) {
+        return w.letter() == Letter.G && macroCall >= 0 && FlowWords.digits(w.number()) == macroCall;
+    }
+
+    /** The input units a G word selects (G20, G21), or null for any other word. */
+    Units units(Word w) {
+        if (w.letter() != Letter.G) {
+            return null;
+        }
+        long g = FlowWords.digits(w.number());
+        return g < 0 ? null : g == inch ? Units.INCH : g == metric ? Units.MM : null;
+    }
+
+    /** The role of a flow word in the program's flow: a macro call calls, as M98 does ({@link MRole#CALL}). */
+    MRole flowRole(Word w) {
+        return macroCall(w) ? MRole.CALL : role(w);
     }
 
     /** The role of an M word's code, or null (not an M word, not a code of the control). */
@@ -50,6 +83,8 @@ final class FlowCodes {
                 if (r == MRole.END || r == MRole.RETURN) {
                     bits |= END;
                 }
+            } else if (macroCall(w)) {
+                bits |= FLOW;
             }
         }
         return bits;
@@ -57,7 +92,7 @@ final class FlowCodes {
 
     /** Whether a word calls or returns. */
     boolean flow(Word w) {
-        MRole r = role(w);
+        MRole r = flowRole(w);
         return r == MRole.CALL || r == MRole.LOCAL_CALL || r == MRole.RETURN;
     }
 

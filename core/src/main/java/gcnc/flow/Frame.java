@@ -5,8 +5,8 @@ import gcnc.diag.Span;
 
 /**
  * One program being run: what it is, where it is, how many more times it runs, its loops, and
- * where its findings go. The main program, a called program (M98), or the blocks of the program
- * it is called from, from an N label on (Haas M97).
+ * where its findings go. The main program, a called program (M98, or G65 with locals of its own),
+ * or the blocks of the program it is called from, from an N label on (Haas M97).
  */
 final class Frame {
     final Blocks blocks;
@@ -27,6 +27,8 @@ final class Frame {
     final int[] turns = new int[4];
     /** The last jump was an END going back to its WHILE. */
     boolean cameBack;
+    /** A macro call's program (G65): it has a level of local variables of its own, left when it returns. */
+    boolean ownLocals;
 
     Frame(Blocks blocks, String name, String file, Span start, int first, Origin origin, int repeats) {
         this.blocks = blocks;

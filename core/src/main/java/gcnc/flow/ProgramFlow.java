@@ -7,7 +7,9 @@ import gcnc.diag.Origin;
 import gcnc.ir.RawBlock;
 import gcnc.ir.Word;
 import gcnc.machine.Control;
+import gcnc.machine.MachineProfile;
 import gcnc.machine.MRole;
+import gcnc.machine.Units;
 import gcnc.parse.BlockSource;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -21,9 +23,10 @@ import java.util.Set;
 /**
  * The program-flow stage: the blocks of a program in the order the control runs them, following
  * subprogram calls (M98 P, repeated by L or, on Fanuc, by the digits of P before the program
- * number) and returns (M99), and running Fanuc macro B statements (variables, expressions,
- * GOTO, IF, WHILE; {@link MacroLine}). The checker is handed each block once per time it runs,
- * without its flow words (M98 P L, M99), at its call depth, with the values of its macro words
+ * number), macro calls (G65 P with arguments, {@link MacroArguments}) and returns (M99), and running
+ * Fanuc macro B statements (variables, expressions, GOTO, IF, WHILE; {@link MacroLine}). The checker
+ * is handed each block once per time it runs, without its flow words (M98 P L, G65 P L and its
+ * arguments, M99), at its call depth, with the values of its macro words
  * worked out, and with where it comes from ({@link RawBlock#origin}: a called program's file and
  * the calls that led to it); findings in a called program are placed there with a note per call
  * (E136). docs/program-flow.md.
@@ -65,6 +68,11 @@ public final class ProgramFlow implements BlockSource {
     private final Diagnostics diags;
     private final Library library;
     private final Variables vars = new Variables();
+    /** How a number written without a decimal point reads, in G21 (mm) and in G20 (in): a macro call's arguments. */
+    private final double noPointMm;
+    private final double noPointInch;
+    /** The input units in force (G20/G21) as the blocks handed on set them: a macro call's arguments read in them. */
+    private Units units;
     /** The programs being run, innermost first; the main program at the bottom. */
     private final CallStack stack;
     /** The programs (file and name) already reported for ending without M99 (E140). */
@@ -88,14 +96,20 @@ public final class ProgramFlow implements BlockSource {
     private int mainReached;
 
     /**
-     * @param folder where the files of called programs that are not in the program's own file are
-     *               looked for (the program file's folder); empty: only its own file
+     * @param machine the machine the program runs on: its control, and how it reads a number
+     *                without a decimal point in its power-up units (a macro call's arguments)
+     * @param folder  where the files of called programs that are not in the program's own file are
+     *                looked for (the program file's folder); empty: only its own file
      */
-    public ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder) {
-        this(reader, control, diags, folder, holdLimit());
+    public ProgramFlow(BlockSource reader, MachineProfile machine, Diagnostics diags, Optional<Path> folder) {
+        this(reader, machine, diags, folder, holdLimit());
     }
 
-    ProgramFlow(BlockSource reader, Control control, Diagnostics diags, Optional<Path> folder, int holdLimit) {
+    ProgramFlow(BlockSource reader, MachineProfile machine, Diagnostics diags, Optional<Path> folder, int holdLimit) {
+        Control control = machine.control();
+        this.noPointMm = machine.noPointMm();
+        this.noPointInch = machine.noPointInch();
+        this.units = machine.units();
         this.codes = new FlowCodes(control);
         this.main = new MainFile(reader, control, codes, p -> diags.report(MainFile.neverCalled(p)));
         this.mainBlocks = new MainBlocks(main, holdLimit);
@@ -147,6 +161,7 @@ public final class ProgramFlow implements BlockSource {
             if (f.blocks == mainBlocks && !f.isMain()) {
                 ranLocally.set(at);
             }
+            units(b);
             if (f.isMain()) {
                 if (mainBlocks.full() && !mainFullReported) {
                     mainFullReported = true;
@@ -168,6 +183,7 @@ public final class ProgramFlow implements BlockSource {
                 if (b == null) {
                     continue;
                 }
+                units(b);
             }
             b = follow(b, f);
             if (b != null) {
@@ -189,6 +205,9 @@ public final class ProgramFlow implements BlockSource {
         }
         if (--f.repeats == 0) {
             stack.pop();
+            if (f.ownLocals) {
+                vars.leave();
+            }
         } else {
             f.restart();
         }
@@ -255,7 +274,8 @@ public final class ProgramFlow implements BlockSource {
         if (w.role() == MRole.RETURN) {
             return giveBack(b, w, f, depth);
         }
-        Frame callee = budget.spent() ? null : w.role() == MRole.LOCAL_CALL ? localCall(b, w, f) : call(b, w, f);
+        Frame callee = budget.spent() ? null : w.role() == MRole.LOCAL_CALL ? localCall(b, w, f)
+                : w.arguments() != null ? macroCall(b, w, f) : call(b, w, f, control.calls().countInP());
         RawBlock rest = b.called(w.rest(), last(w.rest(), w.flow()), depth);
         if (callee != null) {
             stack.push(callee);
@@ -302,10 +322,38 @@ public final class ProgramFlow implements BlockSource {
         return b.called(w.rest(), last(w.rest(), w.flow()), depth);
     }
 
-    /** The frame an M98 starts, or null after reporting why it does not run. */
-    private Frame call(RawBlock b, FlowWords w, Frame caller) throws IOException {
+    /**
+     * The frame a macro call G65 starts, with its arguments as its own level of locals, or null after
+     * reporting why it does not run. Its P is the program number alone (L counts the repeats).
+     */
+    private Frame macroCall(RawBlock b, FlowWords w, Frame caller) throws IOException {
+        Double[] arguments = MacroArguments.read(w, units, units == Units.INCH ? noPointInch : noPointMm, diags);
+        Frame callee = arguments == null ? null : call(b, w, caller, false);
+        if (callee != null) {
+            callee.ownLocals = true;
+            vars.enter(arguments);
+        }
+        return callee;
+    }
+
+    /** The input units a block's G20 or G21 sets, in force for the blocks after it. */
+    private void units(RawBlock b) {
+        List<Word> words = b.words();
+        for (int i = 0, n = words.size(); i < n; i++) {
+            Units u = codes.units(words.get(i));
+            if (u != null) {
+                units = u;
+            }
+        }
+    }
+
+    /**
+     * The frame an M98 (or a G65) starts, or null after reporting why it does not run;
+     * {@code countInP}: a P of more than four digits gives the repeats (Fanuc's M98).
+     */
+    private Frame call(RawBlock b, FlowWords w, Frame caller, boolean countInP) throws IOException {
         Word at = w.flow();
-        CallTarget target = CallTarget.program(w, control.calls().countInP(), diags);
+        CallTarget target = CallTarget.program(w, countInP, diags);
         if (target == null) {
             return null;
         }

@@ -81,6 +81,13 @@ public enum GRole {
      * its own and move nothing).
      */
     MODE_ONLY(-3),
+    /**
+     * G65 P L, the macro call (Fanuc custom macro B, Haas macros): the program P runs with a new
+     * level of local variables #1-#33, the block's other addresses its arguments (A #1, B #2, ...).
+     * Followed by gcnc.flow, which hands the checker the called program's blocks; met by the
+     * checker (a block it sees without the flow in front of it) it is not followed, E110.
+     */
+    MACRO_CALL(65),
     /** A function gcnc cannot follow yet: using it is E110, never a misreading. */
     UNSUPPORTED(-2);
 

@@ -124,6 +124,7 @@ final class Outline {
     private void references(RawBlock b, List<Reference> out) {
         Target target = null;
         boolean range = false;
+        boolean macroCall = false;
         for (Word w : b.words()) {
             if (w.letter() == Letter.M) {
                 MFunction f = control.m().get((int) Math.min(Integer.MAX_VALUE, Math.max(-1, digits(w))));
@@ -134,10 +135,11 @@ final class Outline {
                 }
             } else if (w.letter() == Letter.G) {
                 long code = digits(w);
-                if (code == 65 && control.macros()) {
-                    target = Target.PROGRAM;
-                }
                 GFunction g = code >= 0 && code < 1000 ? control.g().get((int) code) : null;
+                if (g != null && g.role() == GRole.MACRO_CALL) {
+                    target = Target.PROGRAM; // G65 P: the program number alone, as gcnc.flow reads it
+                    macroCall = true;
+                }
                 if (g != null && rangeCycle(g.role())) {
                     range = true;
                 }
@@ -149,7 +151,7 @@ final class Outline {
                 continue;
             }
             if (w.letter() == Letter.P && target == Target.PROGRAM) {
-                boolean countInP = control.calls().countInP() && w.number().length() > 4;
+                boolean countInP = !macroCall && control.calls().countInP() && w.number().length() > 4;
                 out.add(new Reference(w, Target.PROGRAM, countInP ? n % 10_000 : n, b));
             } else if (w.letter() == Letter.P && target == Target.SEQUENCE) {
                 out.add(new Reference(w, Target.SEQUENCE, n, b));

@@ -46,6 +46,8 @@ public final class SyntaxActions {
                  EXACT_STOP_MODE, CUTTING_MODE, MODE_ONLY -> 14;
             case MACHINE_COORDINATES -> 16;
             case UNSUPPORTED -> 17;
+            // a macro call reaches the checker only where gcnc.flow did not follow it, as an M98 does
+            case MACRO_CALL -> 17;
             // expanded before the syntax actions (gcnc.check.cycle): a cycle word met here is in a
             // block the expansion hands on, where it cannot be followed
             case FINISHING_CYCLE, TURNING_CYCLE, FACING_CYCLE, PATTERN_CYCLE, TURNING_SINGLE_CYCLE, FACING_SINGLE_CYCLE,
