@@ -76,7 +76,7 @@ class StudioRunBrowserTest {
         waitFor("armed");
         String armed = browser.findElement(By.id("runarmed")).getText();
         // what will move, on what, and what pre-flight found: before anything moves
-        assertTrue(armed.contains("Program: bishop.nc, 58 blocks"), armed);
+        assertTrue(armed.contains("Program: bishop.nc, 59 blocks"), armed); // the compile's count (gcnc check: 59 blocks)
         assertTrue(armed.contains("DMC1700 Rev 1.0h"), armed);
         // the program form (the bishop fits the DMC-1700's 2,000 lines), as many lines as the compile wrote
         java.util.regex.Matcher lines = java.util.regex.Pattern.compile("(\\d+) DMC lines, about .*, program form").matcher(armed);
