@@ -73,8 +73,8 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
             // its sequence after each); the path is the same, only the corners are not blended
             d.next.set(f.role());
         } else if (f.role() == GRole.MODE_ONLY) {
-            // G61/G64, G22/G23: the control's mode; every block gcnc writes ends at rest and the
-            // travel is the profile's, so the path is the same either way (docs/language.md)
+            // G22/G23: the control's stored stroke check; the travel gcnc checks is the profile's,
+            // so the path is the same either way (docs/language.md)
             modeOnly(w, d, f, out);
         }
     }
