@@ -29,161 +29,211 @@ record OwnCommands(VirtualGalil c, ThreadFlow flow) {
     }
 
     String command(String cmd, String args, ProgramThread th) throws GalilException {
-        VectorMotion mo = c.motion;
-        switch (cmd) {
-            case "IT": {
-                // IT n,n,...: one value per axis in order, an empty place leaves that axis as it is
-                String[] places = args.split(",", -1);
-                for (int i = 0; i < places.length; i++) {
-                    if (!places[i].isBlank()) {
-                        smooth(i, eval(places[i].strip()));
-                    }
-                }
-                return "";
-            }
-            case "TC": {
-                double n = args.isEmpty() ? 0 : eval(args);
-                Tc e = c.lastError;
-                c.lastError = Tc.NONE;
-                return (n == 1 && e != Tc.NONE ? e.code + " " + e.text : String.valueOf(e.code)) + "\r\n";
-            }
-            case "MG":
-                return MgFormat.message(c, args, th);
-            case "CW": {
-                List<String> a = split(args);
-                double n = eval(a.get(0));
-                if (n != 1 && n != 2) {
-                    throw new GalilException(Tc.RANGE);
-                }
-                c.cw = (int) n;
-                return "";
-            }
-            case "CF":
-                return configureUnsolicited(args, th);
-            case "EO":
-                return echo(args, th);
-            case "WH":
-                if (th != null) {
-                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL WH: Not Valid in program
-                }
-                return (c.port == 'S' ? "SERIAL" : "IH" + c.port) + "\r\n";
-            case "XQ":
-                return flow.execute(args);
-            case "HX":
-                return flow.halt(args);
-            case "UL":
-                if (th != null) {
-                    throw new GalilException(Tc.NOT_IN_PROGRAM);
-                }
-                return c.program.upload() + "\\";
-            case "DL":
-                throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
-            case "ZS":
-                // zero the subroutine stack (COMALL ZS): an error routine's EN then ends the thread
-                // instead of returning into the motion it interrupted (gcnc's #FAULT does this)
-                onlyInProgram(th);
-                th.stack.clear();
-                return "";
-            case "RE":
-                onlyInProgram(th); // COMALL RE: "Not Valid in terminal"
-                th.back();
-                return "";
-            case "JP":
-            case "JS":
-                return flow.jump(cmd, args, th);
-            case "MO":
-                for (int a : axesOrAll(args)) {
-                    c.servo[a] = false;
-                    if (a == mo.axis1 || a == mo.axis2) {
-                        mo.abort(0, c.time());
-                    }
-                }
-                c.gearing.stop();
-                return "";
-            case "CA":
-                if (!args.equals("S")) {
-                    throw new GalilException(Tc.S_OPERAND);
-                }
-                return "";
-            case "VR":
-                mo.vr = range(eval(args), 0, 10);
-                mo.changed();
-                return "";
-            case "MC":
-                onlyInProgram(th);
-                th.waitingFor = ThreadWaits.sequenceStill(mo);
-                return "";
-            case "AI": {
-                onlyInProgram(th);
-                int n = (int) eval(args);
-                int bit = Math.abs(n);
-                c.io("IN", bit);
-                th.waitingFor = ThreadWaits.input(c, bit, n > 0);
-                return "";
-            }
-            case "ST":
-                if (args.isEmpty()) {
-                    for (ProgramThread t : c.threads) {
-                        if (t != th) {
-                            t.halt();
-                        }
-                    }
-                }
-                mo.stop(4);
-                c.gearing.stop(); // gearing off, a settling move ends where it is (assumed: docs/virtual-controller.md)
-                return "";
-            case "AB": {
-                double n = args.isEmpty() ? 0 : eval(args);
-                if (n != 1) {
-                    for (ProgramThread t : c.threads) {
-                        if (t != th) {
-                            t.halt();
-                        }
-                    }
-                }
-                mo.abort(7, c.time());
-                c.gearing.stop();
-                return "";
-            }
-            case "CS":
-                if (!args.isEmpty() && !args.equals("S")) {
-                    throw new GalilException(Tc.S_OPERAND);
-                }
-                mo.clear();
-                return "";
-            case "DP":
-                return define(args);
-            case "TP":
-            case "RP":
-                return tell(args);
-            case "OB": {
-                List<String> a = split(args);
-                if (a.size() != 2) {
-                    throw new GalilException(Tc.OPERAND);
-                }
-                int n = (int) range(eval(a.get(0)), 1, c.model.outputs);
-                boolean on = eval(a.get(1)) != 0;
-                c.setOutput(n, on);
-                return "";
-            }
-            case "LM":
-                if (args.equals("?")) {
-                    return mo.free() + "\r\n";
-                }
-                throw new GalilException(Tc.UNRECOGNIZED); // LM/LI linear mode is not modelled
-            case "DM":
-                return dimension(args);
-            case "RS":
-                if (th != null) {
-                    throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL RS: "Not Valid in program"
-                }
-                return reset();
-            default:
+        return switch (cmd) {
+            // the protocol's
+            case "TC" -> tellError(args);
+            case "MG" -> MgFormat.message(c, args, th);
+            case "CW" -> dataAdjustment(args);
+            case "CF" -> configureUnsolicited(args, th);
+            case "EO" -> echo(args, th);
+            case "WH" -> whichHandle(th);
+            case "UL" -> upload(th);
+            case "DL" -> throw new GalilException(th != null ? Tc.NOT_IN_PROGRAM : Tc.UNRECOGNIZED);
+            case "LM" -> linearMode(args);
+            case "DM" -> dimension(args);
+            case "RS" -> reset(th);
+            // the threads' and their waits
+            case "XQ" -> flow.execute(args);
+            case "HX" -> flow.halt(args);
+            case "ZS" -> zeroStack(th);
+            case "RE" -> returnFromError(th);
+            case "JP", "JS" -> flow.jump(cmd, args, th);
+            case "MC" -> waitForSequence(th);
+            case "AI" -> waitForInput(args, th);
+            // the stops
+            case "ST" -> stop(args, th);
+            case "AB" -> abort(args, th);
+            case "MO" -> motorsOff(args);
+            // the axes'
+            case "IT" -> smoothing(args);
+            case "CA" -> coordinateAxes(args);
+            case "VR" -> vectorRatio(args);
+            case "CS" -> clearSequence(args);
+            case "DP" -> define(args);
+            case "TP", "RP" -> tell(args);
+            case "OB" -> outputBit(args);
+            default -> {
                 if (NO_EFFECT.contains(cmd)) {
-                    return "";
+                    yield "";
                 }
                 throw new GalilException(Tc.UNRECOGNIZED);
+            }
+        };
+    }
+
+    /** TC n: the last error's code (n = 1: with its text), then no error. */
+    private String tellError(String args) throws GalilException {
+        double n = args.isEmpty() ? 0 : eval(args);
+        Tc e = c.lastError;
+        c.lastError = Tc.NONE;
+        return (n == 1 && e != Tc.NONE ? e.code + " " + e.text : String.valueOf(e.code)) + "\r\n";
+    }
+
+    /** CW 1 or 2: whether unsolicited characters have their high bit set (1) or not (2). */
+    private String dataAdjustment(String args) throws GalilException {
+        double n = eval(split(args).get(0));
+        if (n != 1 && n != 2) {
+            throw new GalilException(Tc.RANGE);
         }
+        c.cw = (int) n;
+        return "";
+    }
+
+    /** WH: the handle the command came in on (COMALL WH: not valid in a program). */
+    private String whichHandle(ProgramThread th) throws GalilException {
+        if (th != null) {
+            throw new GalilException(Tc.NOT_IN_PROGRAM);
+        }
+        return (c.port == 'S' ? "SERIAL" : "IH" + c.port) + "\r\n";
+    }
+
+    /** UL: the program in memory, ended by a backslash (not valid in a program). */
+    private String upload(ProgramThread th) throws GalilException {
+        if (th != null) {
+            throw new GalilException(Tc.NOT_IN_PROGRAM);
+        }
+        return c.program.upload() + "\\";
+    }
+
+    /** LM ?: the vector buffer's free slots (what gcnc asks); LM/LI linear mode is not modelled. */
+    private String linearMode(String args) throws GalilException {
+        if (args.equals("?")) {
+            return c.motion.free() + "\r\n";
+        }
+        throw new GalilException(Tc.UNRECOGNIZED);
+    }
+
+    /**
+     * ZS: zero the subroutine stack (COMALL ZS): an error routine's EN then ends the thread instead of
+     * returning into the motion it interrupted (gcnc's #FAULT does this).
+     */
+    private String zeroStack(ProgramThread th) throws GalilException {
+        onlyInProgram(th);
+        th.stack.clear();
+        return "";
+    }
+
+    /** RE: back from an error routine (COMALL RE: "Not Valid in terminal"). */
+    private String returnFromError(ProgramThread th) throws GalilException {
+        onlyInProgram(th);
+        th.back();
+        return "";
+    }
+
+    /** MC: the thread waits until the sequence is still. */
+    private String waitForSequence(ProgramThread th) throws GalilException {
+        onlyInProgram(th);
+        th.waitingFor = ThreadWaits.sequenceStill(c.motion);
+        return "";
+    }
+
+    /** AI n: the thread waits until input n is on (n above 0) or off (n below 0). */
+    private String waitForInput(String args, ProgramThread th) throws GalilException {
+        onlyInProgram(th);
+        int n = (int) eval(args);
+        int bit = Math.abs(n);
+        c.io("IN", bit);
+        th.waitingFor = ThreadWaits.input(c, bit, n > 0);
+        return "";
+    }
+
+    /** ST: the sequence decelerates to a stop; without an operand the other threads halt too. */
+    private String stop(String args, ProgramThread th) {
+        if (args.isEmpty()) {
+            haltOthers(th);
+        }
+        c.motion.stop(4);
+        c.gearing.stop(); // gearing off, a settling move ends where it is (assumed: docs/virtual-controller.md)
+        return "";
+    }
+
+    /** AB: the motion ends at once; AB 1 leaves the threads running. */
+    private String abort(String args, ProgramThread th) throws GalilException {
+        double n = args.isEmpty() ? 0 : eval(args);
+        if (n != 1) {
+            haltOthers(th);
+        }
+        c.motion.abort(7, c.time());
+        c.gearing.stop();
+        return "";
+    }
+
+    /** Every program thread but {@code th} (the one that gave the command; null: the host) halts. */
+    private void haltOthers(ProgramThread th) {
+        for (ProgramThread t : c.threads) {
+            if (t != th) {
+                t.halt();
+            }
+        }
+    }
+
+    /** MO: the axes' motors off (all without an operand); a sequence on one of them ends. */
+    private String motorsOff(String args) throws GalilException {
+        VectorMotion mo = c.motion;
+        for (int a : axesOrAll(args)) {
+            c.servo[a] = false;
+            if (a == mo.axis1 || a == mo.axis2) {
+                mo.abort(0, c.time());
+            }
+        }
+        c.gearing.stop();
+        return "";
+    }
+
+    /** IT n,n,...: one value per axis in order, an empty place leaves that axis as it is. */
+    private String smoothing(String args) throws GalilException {
+        String[] places = args.split(",", -1);
+        for (int i = 0; i < places.length; i++) {
+            if (!places[i].isBlank()) {
+                smooth(i, eval(places[i].strip()));
+            }
+        }
+        return "";
+    }
+
+    /** CA S: the coordinate system gcnc uses, the only one modelled. */
+    private String coordinateAxes(String args) throws GalilException {
+        if (!args.equals("S")) {
+            throw new GalilException(Tc.S_OPERAND);
+        }
+        return "";
+    }
+
+    /** VR r: the vector speed ratio, 0 to 10. */
+    private String vectorRatio(String args) throws GalilException {
+        c.motion.vr = range(eval(args), 0, 10);
+        c.motion.changed();
+        return "";
+    }
+
+    /** CS (or CS S): the sequence buffer cleared. */
+    private String clearSequence(String args) throws GalilException {
+        if (!args.isEmpty() && !args.equals("S")) {
+            throw new GalilException(Tc.S_OPERAND);
+        }
+        c.motion.clear();
+        return "";
+    }
+
+    /** OB n,v: output n on (v not 0) or off. */
+    private String outputBit(String args) throws GalilException {
+        List<String> a = split(args);
+        if (a.size() != 2) {
+            throw new GalilException(Tc.OPERAND);
+        }
+        int n = (int) range(eval(a.get(0)), 1, c.model.outputs);
+        c.setOutput(n, eval(a.get(1)) != 0);
+        return "";
     }
 
     /**
@@ -305,7 +355,10 @@ record OwnCommands(VirtualGalil c, ThreadFlow flow) {
     }
 
     /** RS: motion, threads, variables, arrays, outputs and errors back to power-up; the program stays; #AUTO runs. */
-    private String reset() {
+    private String reset(ProgramThread th) throws GalilException {
+        if (th != null) {
+            throw new GalilException(Tc.NOT_IN_PROGRAM); // COMALL RS: "Not Valid in program"
+        }
         for (ProgramThread t : c.threads) {
             t.halt();
         }
