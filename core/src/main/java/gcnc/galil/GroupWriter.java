@@ -123,22 +123,7 @@ final class GroupWriter {
     /** Writes a group: a whole sequence, or one window of it (the next group goes on from where this one ends). */
     void write(Step.Group g) {
         if (!g.continues()) {
-            u0 = d.posU;
-            v0 = d.posV;
-            atU = u0;
-            atV = v0;
-            started = false;
-            out = null;
-            along = 0; // the path written so far, counts, as the controller measures it for AV
-            segments = 0;
-            begun = false;
-            // the pieces with something on the way and the path before each (always array lists: a group
-            // that measures after many that do not must not meet another list type in compiled code)
-            onTheWay = new java.util.ArrayList<>();
-            at = new java.util.ArrayList<>();
-            atSegment = new java.util.ArrayList<>();
-            tripsWritten = 0;
-            tripped = -1;
+            begin();
         }
         int n = g.pieces().size();
         // a sequence in windows is measured throughout: a trip point in a later window counts the path before it
@@ -165,35 +150,7 @@ final class GroupWriter {
                 at.add(along);
                 atSegment.add(segments);
             }
-            along += m.accept(new Motion.Visitor<Double>() {
-                @Override
-                public Double arc(Motion.Arc a) {
-                    return GroupWriter.this.arc(b, a, u0, v0, speeds, out);
-                }
-
-                @Override
-                public Double linear(Motion.Linear l) {
-                    if (p.parts() == 1) {
-                        return straight(b, l.to(), u0, v0, speeds, out);
-                    }
-                    // one of the equal pieces of a move longer than a VP segment: to its share of the way
-                    double share = (p.part() + 1) / (double) p.parts();
-                    double fu = d.plane().galil1(l.from());
-                    double fv = d.plane().galil2(l.from());
-                    return straight(b, fu + (d.plane().galil1(l.to()) - fu) * share, fv + (d.plane().galil2(l.to()) - fv) * share,
-                            u0, v0, speeds, out);
-                }
-
-                @Override
-                public Double dwell(Motion.Dwell w) {
-                    return straight(b, null, u0, v0, speeds, out);
-                }
-
-                @Override
-                public Double thread(Motion.Thread t) {
-                    return straight(b, null, u0, v0, speeds, out);
-                }
-            });
+            along += written(p, b, m, speeds);
         }
         if (!started || g.goesOn()) {
             return;
@@ -204,6 +161,59 @@ final class GroupWriter {
         }
         BlockWriter out = trips(Integer.MAX_VALUE, this.out);
         out.emit(new Command.AwaitSequence(g.stop()));
+    }
+
+    /** The start of a sequence: its position, and nothing written or measured of it yet. */
+    private void begin() {
+        u0 = d.posU;
+        v0 = d.posV;
+        atU = u0;
+        atV = v0;
+        started = false;
+        out = null;
+        along = 0; // the path written so far, counts, as the controller measures it for AV
+        segments = 0;
+        begun = false;
+        // the pieces with something on the way and the path before each (always array lists: a group
+        // that measures after many that do not must not meet another list type in compiled code)
+        onTheWay = new java.util.ArrayList<>();
+        at = new java.util.ArrayList<>();
+        atSegment = new java.util.ArrayList<>();
+        tripsWritten = 0;
+        tripped = -1;
+    }
+
+    /** Writes piece {@code p} (motion {@code m} of block {@code b}) at {@code speeds}; returns the path it adds (counts). */
+    private double written(Piece p, CheckedBlock b, Motion m, Command.Speeds speeds) {
+        return m.accept(new Motion.Visitor<Double>() {
+            @Override
+            public Double arc(Motion.Arc a) {
+                return GroupWriter.this.arc(b, a, u0, v0, speeds, out);
+            }
+
+            @Override
+            public Double linear(Motion.Linear l) {
+                if (p.parts() == 1) {
+                    return straight(b, l.to(), u0, v0, speeds, out);
+                }
+                // one of the equal pieces of a move longer than a VP segment: to its share of the way
+                double share = (p.part() + 1) / (double) p.parts();
+                double fu = d.plane().galil1(l.from());
+                double fv = d.plane().galil2(l.from());
+                return straight(b, fu + (d.plane().galil1(l.to()) - fu) * share, fv + (d.plane().galil2(l.to()) - fv) * share,
+                        u0, v0, speeds, out);
+            }
+
+            @Override
+            public Double dwell(Motion.Dwell w) {
+                return straight(b, null, u0, v0, speeds, out);
+            }
+
+            @Override
+            public Double thread(Motion.Thread t) {
+                return straight(b, null, u0, v0, speeds, out);
+            }
+        });
     }
 
     /**

@@ -172,6 +172,12 @@ public final class Contouring implements Planner {
                 flush(Stop.EXACT_STOP_MODE, out); // G61: every move ends at rest
             }
         }
+        after(b, out);
+    }
+
+    /** What the block asks after its motions: a stop at its end (G09), a program stop, outputs at rest or on the fly. */
+    private void after(CheckedBlock b, Consumer<Step> out) {
+        List<Motion> ms = b.motions();
         if (b.stopAt() == StopAt.BLOCK_END) {
             flush(Stop.EXACT_STOP_BLOCK, out); // G09: the block's move ends at rest
         }
