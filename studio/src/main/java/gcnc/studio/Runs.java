@@ -101,20 +101,36 @@ final class Runs implements AutoCloseable {
      * and tried on the controller without motion. Answers {@code armed} and, when armed, the
      * {@code arm} to start with.
      */
-    private JsonObject arm(JsonObject req) throws IOException, Http.Fail {
-        String name = Http.required(req, "name");
-        RunTarget target = RunTarget.of(req.get("target"));
-        boolean step = Http.flag(req, "step");
-        // the optional stop switch (M01 stops as M00 when on): the page's toggle; absent, the control's default
-        Boolean optionalStop = req.has("optionalStop") && !req.get("optionalStop").isJsonNull()
-                ? Http.flag(req, "optionalStop") : null;
-        String at = Http.string(req, "resumeAt");
-        ResumePoint resumeAt;
-        try {
-            resumeAt = at == null || at.isBlank() ? null : ResumePoint.parse(at);
-        } catch (IllegalArgumentException e) {
-            throw new Http.Fail(400, "\"resumeAt\" is a G-code line, N or N:K (K: the block's K-th motion)");
+    /**
+     * What an arm asks for, read once from its request.
+     *
+     * @param optionalStop the optional stop switch (M01 stops as M00 when on): the page's toggle; null, the control's default
+     * @param resumeAt     null: from the start
+     */
+    private record ArmRequest(String name, RunTarget target, boolean step, Boolean optionalStop, ResumePoint resumeAt) {
+        static ArmRequest of(JsonObject req) throws Http.Fail {
+            String name = Http.required(req, "name");
+            RunTarget target = RunTarget.of(req.get("target"));
+            boolean step = Http.flag(req, "step");
+            Boolean optionalStop = req.has("optionalStop") && !req.get("optionalStop").isJsonNull()
+                    ? Http.flag(req, "optionalStop") : null;
+            String at = Http.string(req, "resumeAt");
+            try {
+                return new ArmRequest(name, target, step, optionalStop,
+                        at == null || at.isBlank() ? null : ResumePoint.parse(at));
+            } catch (IllegalArgumentException e) {
+                throw new Http.Fail(400, "\"resumeAt\" is a G-code line, N or N:K (K: the block's K-th motion)");
+            }
         }
+    }
+
+    private JsonObject arm(JsonObject json) throws IOException, Http.Fail {
+        ArmRequest req = ArmRequest.of(json);
+        String name = req.name();
+        RunTarget target = req.target();
+        boolean step = req.step();
+        Boolean optionalStop = req.optionalStop();
+        ResumePoint resumeAt = req.resumeAt();
         if (target instanceof RunTarget.Serial && !controllers.serial()) {
             throw new Http.Fail(400, "this studio cannot open serial ports (start it with gcnc studio, from gcnc.jar)");
         }
@@ -167,22 +183,26 @@ final class Runs implements AutoCloseable {
             if (address != null) {
                 o.addProperty("address", address);
             }
-            RunArm tried = new RunArm(newId(), name, version, target, address, step, resumeAt, program, ctx, o);
-            List<JsonElement> events = new ArrayList<>();
-            int status = controllers.dryRun(tried, e -> events.add(JsonParser.parseString(JsonEvents.json(e))));
-            JsonArray list = new JsonArray();
-            events.forEach(list::add);
-            o.add("events", list);
-            o.addProperty("armed", status == Sender.RAN);
-            if (status == Sender.RAN) {
-                o.addProperty("arm", tried.id());
-                synchronized (this) {
-                    arm = tried;
-                }
-            }
+            tryWithoutMotion(new RunArm(newId(), name, version, target, address, step, resumeAt, program, ctx, o), o);
             return o;
         } finally {
             arming.unlock();
+        }
+    }
+
+    /** The dry run of an arm (gcnc run --dry-run): its events into {@code o}; when it ran, the arm to start with. */
+    private void tryWithoutMotion(RunArm tried, JsonObject o) throws IOException {
+        List<JsonElement> events = new ArrayList<>();
+        int status = controllers.dryRun(tried, e -> events.add(JsonParser.parseString(JsonEvents.json(e))));
+        JsonArray list = new JsonArray();
+        events.forEach(list::add);
+        o.add("events", list);
+        o.addProperty("armed", status == Sender.RAN);
+        if (status == Sender.RAN) {
+            o.addProperty("arm", tried.id());
+            synchronized (this) {
+                arm = tried;
+            }
         }
     }
 
