@@ -131,90 +131,69 @@ public final class DmcReader {
 
     /** A two-letter Galil command {@code cmd} with its arguments {@code args} ({@code t} the whole line). */
     private static Command command(String cmd, String args, String t, Faults faults) {
-        switch (cmd) {
-            case "VP":
-            case "CR":
-                return segment(cmd, args, t, faults);
-            case "VS":
-                return positive(args, cmd, t, faults, VectorSpeed::new);
-            case "VA":
-                return positive(args, cmd, t, faults, VectorAcceleration::new);
-            case "VD":
-                return positive(args, cmd, t, faults, VectorDeceleration::new);
-            case "BG":
-                return args.equals("S") ? new BeginSequence() : axes(args) ? new Begin(args) : bad(faults, cmd, t);
-            case "AM":
-                return args.equals("S") ? new AwaitSequence() : axes(args) ? new AfterMotion(args) : bad(faults, cmd, t);
-            case "SH":
-                return axes(args) ? new ServoHere(args) : bad(faults, cmd, t);
-            case "VM":
-                return axes(args) ? new VectorMode(args) : bad(faults, cmd, t);
-            case "VE":
-                return args.isEmpty() ? new VectorEnd() : bad(faults, cmd, t);
-            case "EN":
-                return args.isEmpty() ? new End() : bad(faults, cmd, t);
-            case "WT": {
-                int ms = integer(args, 0, Integer.MAX_VALUE);
-                return ms < 0 ? bad(faults, cmd, t) : new Wait(ms);
-            }
-            case "SB":
-            case "CB": {
-                int bit = integer(args, 0, 999);
-                return bit < 0 ? bad(faults, cmd, t) : new Output(bit, cmd.equals("SB"));
-            }
-            case "OF":
-                return AxisReader.offset(args, t, faults);
-            case "AV": {
-                Fixed n = Fixed.parse(args, 0, args.length(), true);
-                return n == null || n.unscaled() < 0 ? bad(faults, cmd, t) : new AfterVector(n.unscaled());
-            }
-            case "GA":
-                return AxisReader.gearMaster(args, t, faults);
-            case "MF":
-            case "MR":
-                return AxisReader.waitPast(cmd, args, t, faults);
-            case "GR":
-                return AxisReader.gearRatio(args, t, faults);
-            case "PA":
-                return AxisReader.positionAbsolute(args, t, faults);
-            case "IP":
-                return AxisReader.incrementPosition(args, t, faults);
-            case "DP":
-                return AxisReader.definePosition(args, t, faults);
-            case "AO":
-                return AxisReader.analogOut(args, t, faults);
-            case "KP":
-            case "KI":
-            case "KD":
-            case "ER":
-            case "IT":
-                return AxisReader.axisSetting(Setting.valueOf(cmd), args, t, faults);
-            case "BL":
-            case "FL":
-                return AxisReader.softLimit(cmd, args, t, faults);
-            case "JP":
-            case "JS":
-                return jump(cmd, args, t, faults);
-            case "MG": {
-                Matcher m = MESSAGE.matcher(args);
-                if (!m.matches()) {
-                    return bad(faults, cmd, t);
-                }
-                String ops = m.group(2);
-                return new Message(m.group(1), ops.isEmpty() ? java.util.List.of()
-                        : java.util.List.of(ops.substring(1).split(",")));
-            }
-            case "ST":
-                return args.isEmpty() ? new Stop() : bad(faults, cmd, t);
-            case "AB":
-                return args.equals("1") ? new Abort() : bad(faults, cmd, t); // gcnc aborts the motion only
-            case "ZS":
-                return args.isEmpty() ? new ClearStack() : bad(faults, cmd, t);
-            default:
+        return switch (cmd) {
+            case "VP", "CR" -> segment(cmd, args, t, faults);
+            case "VS" -> positive(args, cmd, t, faults, VectorSpeed::new);
+            case "VA" -> positive(args, cmd, t, faults, VectorAcceleration::new);
+            case "VD" -> positive(args, cmd, t, faults, VectorDeceleration::new);
+            case "BG" -> args.equals("S") ? new BeginSequence() : axes(args) ? new Begin(args) : bad(faults, cmd, t);
+            case "AM" -> args.equals("S") ? new AwaitSequence() : axes(args) ? new AfterMotion(args) : bad(faults, cmd, t);
+            case "SH" -> axes(args) ? new ServoHere(args) : bad(faults, cmd, t);
+            case "VM" -> axes(args) ? new VectorMode(args) : bad(faults, cmd, t);
+            case "VE" -> args.isEmpty() ? new VectorEnd() : bad(faults, cmd, t);
+            case "EN" -> args.isEmpty() ? new End() : bad(faults, cmd, t);
+            case "WT" -> await(args, t, faults);
+            case "SB", "CB" -> output(cmd, args, t, faults);
+            case "OF" -> AxisReader.offset(args, t, faults);
+            case "AV" -> afterVector(args, t, faults);
+            case "GA" -> AxisReader.gearMaster(args, t, faults);
+            case "MF", "MR" -> AxisReader.waitPast(cmd, args, t, faults);
+            case "GR" -> AxisReader.gearRatio(args, t, faults);
+            case "PA" -> AxisReader.positionAbsolute(args, t, faults);
+            case "IP" -> AxisReader.incrementPosition(args, t, faults);
+            case "DP" -> AxisReader.definePosition(args, t, faults);
+            case "AO" -> AxisReader.analogOut(args, t, faults);
+            case "KP", "KI", "KD", "ER", "IT" -> AxisReader.axisSetting(Setting.valueOf(cmd), args, t, faults);
+            case "BL", "FL" -> AxisReader.softLimit(cmd, args, t, faults);
+            case "JP", "JS" -> jump(cmd, args, t, faults);
+            case "MG" -> message(args, t, faults);
+            case "ST" -> args.isEmpty() ? new Stop() : bad(faults, cmd, t);
+            case "AB" -> args.equals("1") ? new Abort() : bad(faults, cmd, t); // gcnc aborts the motion only
+            case "ZS" -> args.isEmpty() ? new ClearStack() : bad(faults, cmd, t);
+            default -> {
                 // BGS and AMS are read as BG S and AM S above; anything else is not a command gcnc writes
                 faults.fault(Code.E300_SIM_UNKNOWN_INSTRUCTION, t);
-                return null;
+                yield null;
+            }
+        };
+    }
+
+    /** {@code WT n}: n ms. */
+    private static Command await(String args, String t, Faults faults) {
+        int ms = integer(args, 0, Integer.MAX_VALUE);
+        return ms < 0 ? bad(faults, "WT", t) : new Wait(ms);
+    }
+
+    /** {@code SB n} (on) or {@code CB n} (off): a digital output. */
+    private static Command output(String cmd, String args, String t, Faults faults) {
+        int bit = integer(args, 0, 999);
+        return bit < 0 ? bad(faults, cmd, t) : new Output(bit, cmd.equals("SB"));
+    }
+
+    /** {@code AV n}: a trip point n counts along the sequence's path (never negative). */
+    private static Command afterVector(String args, String t, Faults faults) {
+        Fixed n = Fixed.parse(args, 0, args.length(), true);
+        return n == null || n.unscaled() < 0 ? bad(faults, "AV", t) : new AfterVector(n.unscaled());
+    }
+
+    /** {@code MG "text",op,...}: a message with the operands after it. */
+    private static Command message(String args, String t, Faults faults) {
+        Matcher m = MESSAGE.matcher(args);
+        if (!m.matches()) {
+            return bad(faults, "MG", t);
         }
+        String ops = m.group(2);
+        return new Message(m.group(1), ops.isEmpty() ? java.util.List.of() : java.util.List.of(ops.substring(1).split(",")));
     }
 
     /** A segment, {@code VP a,b} or {@code CR r,θ,δ}, with its own speeds after its arguments ({@code <o >p}). */
