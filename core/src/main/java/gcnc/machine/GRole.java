@@ -82,6 +82,13 @@ public enum GRole {
      */
     MODE_ONLY(-3),
     /**
+     * Haas G103 P n, limit block lookahead (0-15 blocks; P0 or no P: no limit): on the Haas it decides
+     * how far ahead of the motion macro statements run and blocks are prepared. gcnc works out every
+     * macro before the run and plans over a look-ahead of its own, so the path is the same: the
+     * note E700, and P is held to 0-15.
+     */
+    LOOKAHEAD_LIMIT(103),
+    /**
      * G65 P L, the macro call (Fanuc custom macro B, Haas macros): the program P runs with a new
      * level of local variables #1-#33, the block's other addresses its arguments (A #1, B #2, ...).
      * Followed by gcnc.flow, which hands the checker the called program's blocks; met by the

@@ -7,6 +7,7 @@ import gcnc.diag.Diagnostic;
 import gcnc.ir.Point;
 import gcnc.diag.Diagnostics;
 import gcnc.ir.Letter;
+import gcnc.machine.GRole;
 import gcnc.ir.Word;
 import gcnc.machine.Units;
 
@@ -49,7 +50,17 @@ public final class Sa02Parameter implements SyntaxAction {
                 }
             }
         }
-        if (pSeconds ? !positive(w, v, d, out) : !Limits.within(w, v, d, out)) {
+        if (l == Letter.P && d.oneShot == GRole.LOOKAHEAD_LIMIT.number()) {
+            // Haas G103 P: 0 (no limit) to 15 blocks, not Table 6's P; a count, never seconds
+            if (pSeconds) {
+                d.fail(out, Code.E013_INTEGER_EXPECTED, w.span(), l);
+                return;
+            }
+            if (v > Sa14ModalNoMotion.MOST_LOOKAHEAD) {
+                d.fail(out, Code.E009_PARAMETER_TOO_LARGE, w.span(), l, w.number(), Sa14ModalNoMotion.MOST_LOOKAHEAD);
+                return;
+            }
+        } else if (pSeconds ? !positive(w, v, d, out) : !Limits.within(w, v, d, out)) {
             return;
         }
         if (l == Letter.N) {

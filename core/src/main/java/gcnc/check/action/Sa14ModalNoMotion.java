@@ -16,7 +16,7 @@ import gcnc.machine.GRole;
  * real safe-start lines, G80 (canned cycle cancel) and the plane: G18 (ZX, the lathe's plane) is
  * accepted, G17 and G19 are E112; G61/G64 (exact stop mode, cutting mode) set the mode the planner
  * follows; a control's mode that changes nothing in the path (G22/G23: function
- * {@code mode_only}) is the note E700. Emits E016, E112, E174, E700. Writes next.css, next.nose, next.exactStopMode, d.g96.
+ * {@code mode_only}; Haas G103: {@code lookahead_limit}) is the note E700. Emits E016, E112, E174, E700. Writes next.css, next.nose, next.exactStopMode, d.g96.
  */
 public final class Sa14ModalNoMotion implements SyntaxAction {
     /**
@@ -43,6 +43,32 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
             }
             out.report(gcnc.diag.Diagnostic.warning(Code.E701_MODE_VALUES_NOT_CHECKED, w.span(), w, name, values));
         }
+    }
+
+    /** The most blocks Haas G103 limits the look-ahead to (Haas lathe manual, G103: "Range 0-15"). */
+    public static final int MOST_LOOKAHEAD = 15;
+
+    /**
+     * Haas G103 (P n): the note E700, the path being the same for gcnc; the block's P is G103's, 0 to
+     * 15 as the Haas takes it (a P after the G103 is held to that by its own syntax action, Sa02; one
+     * before it to Table 6's P, and above 15 here: E009).
+     */
+    private static void lookahead(Word w, BlockDraft d, GFunction f, Diagnostics out) {
+        if (d.oneShot == BlockDraft.NONE) {
+            d.oneShot = GRole.LOOKAHEAD_LIMIT.number(); // the block's P is G103's (Sa02: 0 to 15)
+            d.oneShotWord = w;
+        }
+        for (Word p : d.block.words()) {
+            if (p == w) {
+                break; // a P after the G103: Sa02's
+            }
+            if (p.letter() == gcnc.ir.Letter.P && p.code() > MOST_LOOKAHEAD) {
+                d.fail(out, Code.E009_PARAMETER_TOO_LARGE, p.span(), p.letter(), p.number(), MOST_LOOKAHEAD);
+            }
+        }
+        String name = Character.toLowerCase(f.english().charAt(0)) + f.english().substring(1);
+        out.report(new gcnc.diag.Diagnostic(Code.E700_MODE_ONLY, gcnc.diag.Severity.NOTE, w.span(),
+                java.util.List.of(w.toString(), name)));
     }
 
     @Override
@@ -72,6 +98,8 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
             // G61 until G64: every move of this block and the next ends at rest (the planner ends
             // its sequence after each); the path is the same, only the corners are not blended
             d.next.set(f.role());
+        } else if (f.role() == GRole.LOOKAHEAD_LIMIT) {
+            lookahead(w, d, f, out);
         } else if (f.role() == GRole.MODE_ONLY) {
             // G22/G23: the control's stored stroke check; the travel gcnc checks is the profile's,
             // so the path is the same either way (docs/language.md)

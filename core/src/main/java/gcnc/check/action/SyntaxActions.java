@@ -43,7 +43,7 @@ public final class SyntaxActions {
             case EXACT_STOP -> 11;
             case RPM -> 13;
             case NOSE_COMP_CANCEL, NOSE_COMP_LEFT, NOSE_COMP_RIGHT, CSS, CYCLE_CANCEL, PLANE_XY, PLANE_ZX, PLANE_YZ,
-                 EXACT_STOP_MODE, CUTTING_MODE, MODE_ONLY -> 14;
+                 EXACT_STOP_MODE, CUTTING_MODE, MODE_ONLY, LOOKAHEAD_LIMIT -> 14;
             case MACHINE_COORDINATES -> 16;
             case UNSUPPORTED -> 17;
             // a macro call reaches the checker only where gcnc.flow did not follow it, as an M98 does
