@@ -31,18 +31,27 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
                 default -> { }
             }
         }
-        String name = f.english().isEmpty() ? "" : Character.toLowerCase(f.english().charAt(0)) + f.english().substring(1);
         if (values.length() == 0) {
-            out.report(new gcnc.diag.Diagnostic(Code.E700_MODE_ONLY, gcnc.diag.Severity.NOTE, w.span(),
-                    java.util.List.of(w.toString(), name)));
+            noteMode(w, f, out);
         } else {
             // the block's words are the mode's (G22's area), not a move of the modal G00/G01
             if (d.oneShot == BlockDraft.NONE) {
                 d.oneShot = GRole.MODE_ONLY.number();
                 d.oneShotWord = w;
             }
-            out.report(gcnc.diag.Diagnostic.warning(Code.E701_MODE_VALUES_NOT_CHECKED, w.span(), w, name, values));
+            out.report(gcnc.diag.Diagnostic.warning(Code.E701_MODE_VALUES_NOT_CHECKED, w.span(), w, name(f), values));
         }
+    }
+
+    /** E700 at {@code w}: the mode {@code f} changes nothing in the path gcnc checks and writes. */
+    private static void noteMode(Word w, GFunction f, Diagnostics out) {
+        out.report(new gcnc.diag.Diagnostic(Code.E700_MODE_ONLY, gcnc.diag.Severity.NOTE, w.span(),
+                java.util.List.of(w.toString(), name(f))));
+    }
+
+    /** "Stored stroke check on" as it reads after the code: "G22 stored stroke check on". */
+    private static String name(GFunction f) {
+        return f.english().isEmpty() ? "" : Character.toLowerCase(f.english().charAt(0)) + f.english().substring(1);
     }
 
     /** The most blocks Haas G103 limits the look-ahead to (Haas lathe manual, G103: "Range 0-15"). */
@@ -50,8 +59,9 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
 
     /**
      * Haas G103 (P n): the note E700, the path being the same for gcnc; the block's P is G103's, 0 to
-     * 15 as the Haas takes it (a P after the G103 is held to that by its own syntax action, Sa02; one
-     * before it to Table 6's P, and above 15 here: E009).
+     * 15 as the Haas takes it. A P after the G103 is held to that by its own syntax action (Sa02), one
+     * before it here, after Table 6's P: the checker stops a block at its first error, and each word's
+     * check where it is read keeps the note at the G103 in both orders.
      */
     private static void lookahead(Word w, BlockDraft d, GFunction f, Diagnostics out) {
         if (d.oneShot == BlockDraft.NONE) {
@@ -66,9 +76,7 @@ public final class Sa14ModalNoMotion implements SyntaxAction {
                 d.fail(out, Code.E009_PARAMETER_TOO_LARGE, p.span(), p.letter(), p.number(), MOST_LOOKAHEAD);
             }
         }
-        String name = Character.toLowerCase(f.english().charAt(0)) + f.english().substring(1);
-        out.report(new gcnc.diag.Diagnostic(Code.E700_MODE_ONLY, gcnc.diag.Severity.NOTE, w.span(),
-                java.util.List.of(w.toString(), name)));
+        noteMode(w, f, out);
     }
 
     @Override
