@@ -59,7 +59,7 @@ final class MacroArguments {
                         "in one macro call (argument specification II, or an address given twice)");
                 return null;
             }
-            double v = number(a.number());
+            double v = Word.decimal(a.number());
             if (Double.isNaN(v)) {
                 diags.error(Code.E014_DECIMAL_EXPECTED, a.span(), a.letter());
                 return null;
@@ -75,10 +75,5 @@ final class MacroArguments {
     /** M, S and T take whole numbers: a value without a point is read as written. */
     private static boolean whole(Letter l) {
         return l == Letter.M || l == Letter.S || l == Letter.T;
-    }
-
-    /** The value of a signed decimal number as a block writes it, or NaN. */
-    private static double number(String s) {
-        return s.matches("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)") ? Double.parseDouble(s) : Double.NaN;
     }
 }
