@@ -7,8 +7,6 @@ import static gcnc.cli.RunOnControllerTest.tell;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import gcnc.Session;
 import gcnc.controller.VirtualController;
 import gcnc.send.CompiledRun;
@@ -49,14 +47,7 @@ class ResumeEstimateTest {
             RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", "haas", "--tcp", tcp(vc),
                     "--resume-at", "14:" + k, "--dry-run", "--format", "json");
             assertEquals(0, r.status(), r.all());
-            JsonNode started = null;
-            for (String l : r.out().split("\n")) {
-                if (l.startsWith("{\"event\":\"started\"")) {
-                    started = new ObjectMapper().readTree(l);
-                }
-            }
-            assertTrue(started != null, r.all());
-            assertEquals(expected, started.get("seconds").asDouble(), 0.0015, r.out());
+            assertEquals(expected, RunTimeTest.started(r).get("seconds").asDouble(), 0.0015, r.out());
         }
     }
 }

@@ -50,6 +50,18 @@ class RunTimeTest {
         return "DP " + String.join(",", at);
     }
 
+    /** The run's {@code started} event ({@code --format json}), which it must have printed. */
+    static JsonNode started(RunOnControllerTest.Run r) throws IOException {
+        JsonNode started = null;
+        for (String l : r.out().split("\n")) {
+            if (l.startsWith("{\"event\":\"started\"")) {
+                started = JSON.readTree(l);
+            }
+        }
+        assertTrue(started != null, r.all());
+        return started;
+    }
+
     @Test
     void theRunsEstimateIsTheCompilesCycleTimeOnEverySample() throws Exception {
         List<String> compared = new ArrayList<>();
@@ -76,13 +88,7 @@ class RunTimeTest {
                     assertEquals(":", RunOnControllerTest.tell(vc, home(machine)), machine);
                     RunOnControllerTest.Run r = gcnc("", "run", p.toString(), "--machine", machine, "--tcp", RunOnControllerTest.tcp(vc),
                             "--dry-run", "--format", "json");
-                    JsonNode started = null;
-                    for (String l : r.out().split("\n")) {
-                        if (l.startsWith("{\"event\":\"started\"")) {
-                            started = JSON.readTree(l);
-                        }
-                    }
-                    assertTrue(started != null, sample + " on " + machine + ": " + r.all());
+                    JsonNode started = started(r);
                     assertEquals(cycle, started.get("seconds").asDouble(), 0.0015, sample + " on " + machine);
                     // and its blocks are the blocks the compile counted ("N blocks -> c.dmc")
                     java.util.regex.Matcher counted = java.util.regex.Pattern.compile(": ([0-9,]+) blocks? -> ").matcher(c.err());
