@@ -139,8 +139,7 @@ final class SimulateCommand extends RunCommand {
             report = gcnc.sim.StreamReplay.replay(r, residentMap == null ? null : residentMap.at(),
                     new BufferedReader(in), streamMap == null ? null : streamMap.at(), profile, options, diags);
         }
-        String shown = streamMap == null ? name : streamMap.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(name);
-        return new Replayed(diags, Optional.of(report), shown);
+        return new Replayed(diags, Optional.of(report), shownAt(streamMap, name));
     }
 
     /**
@@ -158,8 +157,12 @@ final class SimulateCommand extends RunCommand {
                     gcnc.diag.Span.of(1, 1), java.util.List.of(file.toString(), stream.toString()),
                     gcnc.diag.Origin.file(file.toString())));
         }
-        String shown = map == null ? name : map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(name);
-        return new Replayed(diags, Optional.of(report), shown);
+        return new Replayed(diags, Optional.of(report), shownAt(map, name));
+    }
+
+    /** Where findings at G-code lines are shown: the G-code file beside FILE that its map names, else {@code name}. */
+    private String shownAt(gcnc.dmc.SourceMap.Table map, String name) {
+        return map == null ? name : map.source().map(s -> String.valueOf(file.resolveSibling(s))).orElse(name);
     }
 
     /** The resident program a stream goes with: {@code part.stream} is fed after {@code part.dmc} (docs/galil.md). */

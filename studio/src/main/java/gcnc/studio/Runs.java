@@ -97,11 +97,6 @@ final class Runs implements AutoCloseable {
     // ---- arm --------------------------------------------------------------------------------------------
 
     /**
-     * POST /api/run/arm {name, target, step?, resumeAt?}: the saved program compiled as gcnc run does
-     * and tried on the controller without motion. Answers {@code armed} and, when armed, the
-     * {@code arm} to start with.
-     */
-    /**
      * What an arm asks for, read once from its request.
      *
      * @param optionalStop the optional stop switch (M01 stops as M00 when on): the page's toggle; null, the control's default
@@ -124,6 +119,11 @@ final class Runs implements AutoCloseable {
         }
     }
 
+    /**
+     * POST /api/run/arm {name, target, step?, resumeAt?}: the saved program compiled as gcnc run does
+     * and tried on the controller without motion. Answers {@code armed} and, when armed, the
+     * {@code arm} to start with.
+     */
     private JsonObject arm(JsonObject json) throws IOException, Http.Fail {
         ArmRequest req = ArmRequest.of(json);
         String name = req.name();
